@@ -1,0 +1,2 @@
+//! `bsv <recipe-id> [args] [--out DIR]`. PLACEHOLDER until the CLI lands.
+fn main() {}

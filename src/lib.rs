@@ -1,0 +1,28 @@
+//! BSV Playground: the twelve BotShelf Vampire robotics recipes as plain-Rust kernels,
+//! a command line (`bsv`), a thin wasm API and a bilingual canvas UI.
+//!
+//! - [`recipes`]: one kernel per recipe, numbers in, tables out; no web-sys.
+//! - [`planar2r`]: planar two-link kinematics shared by the 2R recipes and the IK page.
+//! - [`rng`]: numpy-compatible `default_rng` (PCG64 + SeedSequence + ziggurat normal).
+//! - [`numpy`]: `np.arange` and friends, operation for operation.
+//! - [`pyfmt`]: numbers printed exactly as Python prints them.
+//! - [`args`]: command-line style argument parsing shared by the CLI and `runRecipe`.
+//! - [`error`]: the one error type every kernel returns.
+//! - [`i18n`]: Fluent bundles embedded from `locales/`.
+//! - [`api`]: the `#[wasm_bindgen]` surface for the kernels.
+//! - `ui` (wasm32 only): the pages.
+
+pub mod api;
+pub mod args;
+pub mod error;
+pub mod i18n;
+pub mod numpy;
+pub mod planar2r;
+pub mod pyfmt;
+pub mod recipes;
+pub mod rng;
+
+#[cfg(target_arch = "wasm32")]
+pub mod ui;
+
+pub use error::RecipeError;
