@@ -1,2 +1,197 @@
-//! `bsv <recipe-id> [args] [--out DIR]`. PLACEHOLDER until the CLI lands.
-fn main() {}
+//! `bsv`: the BSV recipes from a command line, with the Python recipes' arguments and outputs.
+//!
+//! ```text
+//! bsv <recipe-id> [the recipe's positional arguments] [--flag value ...] [--out DIR]
+//! bsv --help | bsv <recipe-id> --help
+//! ```
+//! Writes the recipe's CSV file(s) into `DIR` (default: the current folder) and prints the
+//! recipe's summary line exactly as the Python recipe does. Bad input: exit code 2 and a
+//! one-line message naming the argument, with nothing written. Files are written to temporary
+//! names first and renamed only when every file is complete.
+
+use std::fs;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use bsv_playground::recipes::{self, Recipe, RecipeOutput};
+
+/// Recipes whose positional argument at this index is a path to an input file.
+const INPUT_PATH_ARGS: &[(&str, usize)] = &[("traj-resample", 0)];
+
+/// Input files larger than this are refused before reading (the kernel has its own limit too).
+const MAX_INPUT_BYTES: u64 = 128 * 1024 * 1024;
+
+fn main() -> ExitCode {
+    let raw: Vec<String> = std::env::args().skip(1).collect();
+    match cli(&raw) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Usage(msg)) => {
+            eprintln!("bsv: {msg}");
+            ExitCode::from(2)
+        }
+        Err(Failure::Io(msg)) => {
+            eprintln!("bsv: {msg}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+enum Failure {
+    /// Bad input: exit code 2.
+    Usage(String),
+    /// Could not write the output: exit code 1.
+    Io(String),
+}
+
+fn cli(raw: &[String]) -> Result<(), Failure> {
+    let Some(id) = raw.first() else {
+        print!("{}", general_help());
+        return Err(Failure::Usage("no recipe given (see the list above)".to_string()));
+    };
+    if id == "--help" || id == "-h" || id == "help" {
+        print!("{}", general_help());
+        return Ok(());
+    }
+    if id == "--version" {
+        println!("bsv {}", env!("CARGO_PKG_VERSION"));
+        return Ok(());
+    }
+    let recipe = recipes::find(id).ok_or_else(|| {
+        Failure::Usage(format!("unknown recipe '{id}'; recipes: {}", recipe_ids().join(", ")))
+    })?;
+    let rest = &raw[1..];
+    if rest.iter().any(|a| a == "--help" || a == "-h") {
+        print!("{}", recipe_help(recipe));
+        return Ok(());
+    }
+    let (args, out_dir) = split_out_dir(rest).map_err(Failure::Usage)?;
+    let inputs = read_inputs(recipe, &args)?;
+    let output = recipes::run_with_inputs(id, &args, inputs)
+        .map_err(|e| Failure::Usage(format!("{id}: {e}")))?;
+    write_files(&out_dir, &output)?;
+    println!("{}", output.summary);
+    Ok(())
+}
+
+/// Removes `--out DIR` / `--out=DIR` from the arguments.
+fn split_out_dir(args: &[String]) -> Result<(Vec<String>, PathBuf), String> {
+    let mut rest = Vec::new();
+    let mut out = PathBuf::from(".");
+    let mut iter = args.iter();
+    while let Some(arg) = iter.next() {
+        if arg == "--out" {
+            out = iter.next().map(PathBuf::from).ok_or("--out needs a folder")?;
+        } else if let Some(dir) = arg.strip_prefix("--out=") {
+            out = PathBuf::from(dir);
+        } else {
+            rest.push(arg.clone());
+        }
+    }
+    Ok((rest, out))
+}
+
+/// Reads the files that path arguments name, so the kernel gets their text.
+fn read_inputs(recipe: &Recipe, args: &[String]) -> Result<Vec<(String, String)>, Failure> {
+    let mut inputs = Vec::new();
+    let positional: Vec<&String> = args.iter().filter(|a| !a.starts_with("--")).collect();
+    for &(id, index) in INPUT_PATH_ARGS {
+        if id != recipe.info.id {
+            continue;
+        }
+        let Some(path) = positional.get(index).filter(|p| !p.is_empty()) else {
+            continue;
+        };
+        let fail = |e: std::io::Error| Failure::Usage(format!("{id}: cannot read '{path}': {e}"));
+        let len = fs::metadata(path.as_str()).map_err(fail)?.len();
+        if len > MAX_INPUT_BYTES {
+            return Err(Failure::Usage(format!(
+                "{id}: '{path}' is {len} bytes; the limit is {MAX_INPUT_BYTES} bytes"
+            )));
+        }
+        let bytes = fs::read(path.as_str()).map_err(fail)?;
+        let text = String::from_utf8(bytes)
+            .map_err(|_| Failure::Usage(format!("{id}: '{path}' is not UTF-8 text")))?;
+        inputs.push(((*path).clone(), text));
+    }
+    Ok(inputs)
+}
+
+/// Writes every file under a temporary name, then renames them all: nothing half-written.
+fn write_files(dir: &Path, output: &RecipeOutput) -> Result<(), Failure> {
+    let io = |what: &str, path: &Path, e: std::io::Error| {
+        Failure::Io(format!("cannot {what} '{}': {e}", path.display()))
+    };
+    fs::create_dir_all(dir).map_err(|e| io("create folder", dir, e))?;
+    let mut staged = Vec::new();
+    for file in &output.files {
+        let final_path = dir.join(&file.name);
+        let tmp_path = dir.join(format!(".{}.partial-{}", file.name, std::process::id()));
+        let result = fs::File::create(&tmp_path)
+            .and_then(|mut f| f.write_all(file.text.as_bytes()).and_then(|_| f.sync_all()));
+        if let Err(e) = result {
+            let _ = fs::remove_file(&tmp_path);
+            for (tmp, _) in &staged {
+                let _ = fs::remove_file(tmp);
+            }
+            return Err(io("write", &final_path, e));
+        }
+        staged.push((tmp_path, final_path));
+    }
+    for (tmp, final_path) in &staged {
+        fs::rename(tmp, final_path).map_err(|e| io("write", final_path, e))?;
+    }
+    Ok(())
+}
+
+fn recipe_ids() -> Vec<&'static str> {
+    recipes::RECIPES.iter().map(|r| r.info.id).collect()
+}
+
+fn general_help() -> String {
+    let mut s = String::from(
+        "bsv: the BotShelf Vampire robotics recipes (research, education and simulation only)\n\n\
+         usage: bsv <recipe-id> [arguments] [--out DIR]\n       bsv <recipe-id> --help\n\n\
+         recipes (arguments with their defaults):\n",
+    );
+    for r in &recipes::RECIPES {
+        let args: Vec<String> =
+            r.info.args.iter().map(|a| format!("{}={}", a.name, a.default)).collect();
+        s.push_str(&format!("  {:<18} {:<40} ({})\n", r.info.id, args.join(" "), r.info.python));
+    }
+    s.push_str("\nEach writes the same CSV file(s) and prints the same line as its Python recipe.\n");
+    s
+}
+
+fn recipe_help(recipe: &Recipe) -> String {
+    let info = recipe.info;
+    let names: Vec<String> = info.args.iter().map(|a| format!("[{}]", a.name)).collect();
+    let mut s = format!(
+        "usage: bsv {} {}{} [--out DIR]\n\nSame as: python {} {}\nWrites: {}\n\narguments:\n",
+        info.id,
+        names.join(" "),
+        if info.flags.is_empty() { "" } else { " [options]" },
+        info.python,
+        info.args.iter().map(|a| a.name).collect::<Vec<_>>().join(" "),
+        info.writes.join(", "),
+    );
+    for a in info.args {
+        s.push_str(&format!("  {:<14} {} (default {})\n", a.name, a.help, show_default(a.default)));
+    }
+    if !info.flags.is_empty() {
+        s.push_str("\noptions (beyond the Python recipe):\n");
+        for f in info.flags {
+            s.push_str(&format!("  --{:<12} {} (default {})\n", f.name, f.help, show_default(f.default)));
+        }
+    }
+    s.push_str("  --out DIR      folder for the CSV files (default: current folder)\n");
+    s
+}
+
+fn show_default(d: &str) -> &str {
+    if d.is_empty() {
+        "none"
+    } else {
+        d
+    }
+}

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Every check and test, in the order a failure is cheapest to find: formatting, clippy (native
+# and wasm32), native tests (unit, golden parity, CLI, properties, doctests), the same golden
+# tests as wasm under Node, then the release app in headless Chromium. Fails on the first error.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
+export CARGO_TERM_COLOR=never
+
+step() { printf '\n\033[1m== %s\033[0m\n' "$*"; }
+t0=$SECONDS
+
+step "rustfmt"
+cargo fmt --all -- --check
+
+step "clippy (native, all targets)"
+cargo clippy --all-targets --locked -- -D warnings
+
+step "clippy (wasm32, lib and tests)"
+cargo clippy --target wasm32-unknown-unknown --lib --tests --locked -- -D warnings
+
+step "native tests"
+cargo test --locked
+
+step "wasm tests under Node (wasm-pack test --node)"
+log=$(mktemp)
+wasm-pack test --node --mode no-install 2>&1 | tee "$log"
+passed=$(grep -Eo '[0-9]+ passed' "$log" | awk '{s += $1} END {print s + 0}')
+if [[ "$passed" -eq 0 ]]; then
+  echo "wasm-pack test --node ran no test: that is a failure" >&2
+  exit 1
+fi
+echo "wasm tests under Node: $passed passed"
+
+step "release build of the app (dist/)"
+scripts/build-dist.sh
+
+step "browser end-to-end tests (headless Chromium)"
+node --test tests/e2e/*.test.mjs
+
+printf '\nall checks passed in %ss\n' "$((SECONDS - t0))"
