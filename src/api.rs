@@ -58,3 +58,43 @@ pub fn run_recipe(
         recipes::run_with_inputs(id, &args, files).map_err(|e| JsError::new(&e.to_string()))?;
     serde_wasm_bindgen::to_value(&JsRun::from(out)).map_err(|e| JsError::new(&e.to_string()))
 }
+
+/// `benchCase(index, reps)`: runs `bench::CASES[index]` `reps` times, returning the times in
+/// milliseconds (only in builds with the `bench` feature, for `make bench`).
+#[cfg(feature = "bench")]
+#[wasm_bindgen(js_name = benchCase)]
+pub fn bench_case(index: usize, reps: u32) -> Result<Vec<f64>, JsError> {
+    let case = crate::bench::CASES
+        .get(index)
+        .ok_or_else(|| JsError::new("no such case"))?;
+    let perf: js_sys::Function = js_sys::Reflect::get(&js_sys::global(), &"performance".into())
+        .and_then(|p| {
+            js_sys::Reflect::get(&p, &"now".into())
+                .map(|f| f.unchecked_into::<js_sys::Function>().bind(&p))
+        })
+        .map_err(|_| JsError::new("no performance.now"))?;
+    let now = || {
+        perf.call0(&JsValue::NULL)
+            .ok()
+            .and_then(|v| v.as_f64())
+            .unwrap_or(f64::NAN)
+    };
+    let mut times = Vec::new();
+    for _ in 0..reps {
+        let inputs = crate::bench::inputs(case);
+        let start = now();
+        crate::bench::run(case, inputs).map_err(|e| JsError::new(&e.to_string()))?;
+        times.push(now() - start);
+    }
+    Ok(times)
+}
+
+/// `benchCaseNames()`: the names of the benchmark cases, in order.
+#[cfg(feature = "bench")]
+#[wasm_bindgen(js_name = benchCaseNames)]
+pub fn bench_case_names() -> Vec<String> {
+    crate::bench::CASES
+        .iter()
+        .map(|c| c.name.to_string())
+        .collect()
+}

@@ -74,6 +74,8 @@ pub enum RecipeError {
     CsvTimeNotIncreasing { row: usize },
     /// A quoted field that never closes.
     CsvUnterminatedQuote { row: usize },
+    /// A path argument naming an input file that was not attached (opened) with the run.
+    InputMissing { name: String },
 }
 
 impl RecipeError {
@@ -101,6 +103,7 @@ impl RecipeError {
             CsvBadCell { .. } => "err-csv-bad-cell",
             CsvTimeNotIncreasing { .. } => "err-csv-time-not-increasing",
             CsvUnterminatedQuote { .. } => "err-csv-unterminated-quote",
+            InputMissing { .. } => "err-input-missing",
         }
     }
 
@@ -176,6 +179,7 @@ impl RecipeError {
             CsvTimeNotIncreasing { row } | CsvUnterminatedQuote { row } => {
                 vec![("row", row.to_string())]
             }
+            InputMissing { name } => vec![("name", name.clone())],
         }
     }
 
@@ -273,6 +277,9 @@ impl fmt::Display for RecipeError {
             }
             CsvUnterminatedQuote { row } => {
                 write!(f, "CSV row {row}: a quoted field is never closed")
+            }
+            InputMissing { name } => {
+                write!(f, "input file '{name}' not found (open it first)")
             }
         }
     }

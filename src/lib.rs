@@ -7,6 +7,7 @@
 //! - [`numpy`]: `np.arange` and friends, operation for operation.
 //! - [`pyfmt`]: numbers printed exactly as Python prints them.
 //! - [`args`]: command-line style argument parsing shared by the CLI and `runRecipe`.
+//! - [`bench`]: the cases of `make bench`.
 //! - [`error`]: the one error type every kernel returns.
 //! - [`i18n`]: Fluent bundles embedded from `locales/`.
 //! - [`api`]: the `#[wasm_bindgen]` surface for the kernels.
@@ -14,6 +15,7 @@
 
 pub mod api;
 pub mod args;
+pub mod bench;
 pub mod error;
 pub mod i18n;
 pub mod numpy;

@@ -13,8 +13,9 @@
 //! `q2 = ±acos(c2)`, `q1 = atan2(y, x) − atan2(L2 sin q2, L1 + L2 cos q2)`. The recipes' branch is
 //! `q2 = +acos(c2)` ("elbow-down"); `q2 = −acos(c2)` is elbow-up.
 //!
-//! Determinants are computed as numpy does (LU with partial pivoting), so that recipe CSVs
-//! agree with `np.linalg.det` to the last digits.
+//! Determinants, `J Jᵀ` and singular values are computed as numpy does (LU with partial
+//! pivoting and `exp(log|det|)`, OpenBLAS's fused product, LAPACK's Householder + `dlas2`), so
+//! that recipe CSVs agree with `np.linalg.det` / `np.linalg.svd` to the last digits.
 
 /// Which of the two IK solutions to take.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -162,20 +163,38 @@ impl Arm {
     }
 }
 
-/// Determinant the way `np.linalg.det` gets it: LU with partial pivoting (LAPACK `getrf`).
+/// Determinant the way `np.linalg.det` gets it: LU with partial pivoting (LAPACK `getrf`,
+/// row swap when `|m10| > |m00|`, the multiplier formed with the reciprocal of the pivot), then
+/// numpy's `det = sign * exp(sum(log|u_ii|))` (numpy computes `det` from `slogdet`). A zero
+/// pivot (singular matrix) gives `0.0`, as numpy does.
 pub fn det(m: &Mat2) -> f64 {
     let [[a, b], [c, d]] = *m;
-    let (p, q, r, s, sign) = if c.abs() > a.abs() {
+    let (p, q, r, s, mut sign) = if c.abs() > a.abs() {
         (c, d, a, b, -1.0)
     } else {
         (a, b, c, d, 1.0)
     };
     if p == 0.0 {
-        return 0.0 * sign;
+        return 0.0;
     }
-    let l = r * (1.0 / p);
+    // getf2 scales by the reciprocal unless the pivot is subnormal (then it divides).
+    let l = if p.abs() >= f64::MIN_POSITIVE {
+        r * (1.0 / p)
+    } else {
+        r / p
+    };
     let u22 = s - l * q;
-    sign * p * u22
+    if u22 == 0.0 {
+        return 0.0;
+    }
+    let mut log_det = 0.0;
+    for u in [p, u22] {
+        if u < 0.0 {
+            sign = -sign;
+        }
+        log_det += u.abs().ln();
+    }
+    sign * log_det.exp()
 }
 
 /// `J Jᵀ`.
@@ -187,34 +206,124 @@ pub fn j_jt(j: &Mat2) -> Mat2 {
     ]
 }
 
-/// Yoshikawa manipulability `sqrt(max(0, det(J Jᵀ)))`, as the jacobian-2r recipe computes it.
+/// `J @ J.T` as numpy's matmul gets it (OpenBLAS `dgemm`: the first product, then the second
+/// fused-multiply-added onto it). Differs from [`j_jt`] only in the last bits; used where the
+/// recipe CSV must match numpy digit for digit.
+pub fn j_jt_numpy(j: &Mat2) -> Mat2 {
+    let [[a, b], [c, d]] = *j;
+    [
+        [b.mul_add(b, a * a), b.mul_add(d, a * c)],
+        [d.mul_add(b, c * a), d.mul_add(d, c * c)],
+    ]
+}
+
+/// Yoshikawa manipulability `sqrt(max(0, det(J Jᵀ)))`, as the jacobian-2r recipe computes it
+/// (numpy product and determinant; Python's `max(0.0, nan)` is `0.0`, as here).
 pub fn manipulability(j: &Mat2) -> f64 {
-    det(&j_jt(j)).max(0.0).sqrt()
-}
-
-/// Singular values `(sigma_min, sigma_max)` of a 2×2 matrix.
-pub fn singular_values(m: &Mat2) -> (f64, f64) {
-    let e = ellipse(m);
-    (e.sigma_min, e.sigma_max)
-}
-
-/// The manipulability ellipse of `J`: singular values and the major axis direction.
-pub fn ellipse(m: &Mat2) -> Ellipse {
-    let [[a, b], [c, d]] = *m;
-    // sigma_max = Q + R, sigma_min = |Q - R| with the stable product form for sigma_min.
-    let e = (a + d) / 2.0;
-    let f = (a - d) / 2.0;
-    let g = (c + b) / 2.0;
-    let h = (c - b) / 2.0;
-    let q = e.hypot(h);
-    let r = f.hypot(g);
-    let sigma_max = q + r;
-    let det_abs = (a * d - b * c).abs();
-    let sigma_min = if sigma_max > 0.0 {
-        det_abs / sigma_max
+    let d = det(&j_jt_numpy(j));
+    if d > 0.0 {
+        d.sqrt()
     } else {
         0.0
+    }
+}
+
+/// Singular values `(sigma_min, sigma_max)` of a 2×2 matrix, as `np.linalg.svd(m,
+/// compute_uv=False)` gets them: LAPACK `dgesdd` reduces `m` to upper bidiagonal form with one
+/// Householder reflection (`dgebd2`), and the 2×2 bidiagonal's singular values come from `dlas2`.
+/// (dgesdd's rescaling of matrices whose largest entry is below ~1e-138 or above ~1e138 is not
+/// reproduced; no kinematic Jacobian of sane link lengths gets there.)
+pub fn singular_values(m: &Mat2) -> (f64, f64) {
+    let [[a11, a12], [a21, a22]] = *m;
+    let (d1, e1, d2) = if a21 == 0.0 {
+        (a11, a12, a22)
+    } else {
+        // dlarfg(2, a11, a21): H = I - tau v vᵀ with v = (1, v2) maps (a11, a21) to (beta, 0).
+        let (beta, tau, v2) = householder(a11, a21);
+        // dlarf: apply H to the second column, w = Cᵀ v, C -= tau v wᵀ.
+        let w = a12 + a22 * v2;
+        let t = -tau * w;
+        (beta, a12 + t, a22 + v2 * t)
     };
+    dlas2(d1, e1, d2)
+}
+
+/// LAPACK `dlarfg` for a 2-vector `(alpha, x)` with `x != 0`: `(beta, tau, v2)`.
+fn householder(alpha: f64, x: f64) -> (f64, f64, f64) {
+    // dlamch('S') / dlamch('E'): 2^-1022 / 2^-53.
+    let safmin = f64::MIN_POSITIVE / (f64::EPSILON / 2.0);
+    let (mut alpha, mut x) = (alpha, x);
+    let mut beta = -lapy2(alpha, x.abs()).copysign(alpha);
+    let mut rescaled = 0;
+    if beta.abs() < safmin {
+        // Scale up tiny vectors (at most 20 times), as dlarfg does.
+        while beta.abs() < safmin && rescaled < 20 {
+            rescaled += 1;
+            x /= safmin;
+            beta /= safmin;
+            alpha /= safmin;
+        }
+        beta = -lapy2(alpha, x.abs()).copysign(alpha);
+    }
+    let tau = (beta - alpha) / beta;
+    let v2 = x * (1.0 / (alpha - beta));
+    for _ in 0..rescaled {
+        beta *= safmin;
+    }
+    (beta, tau, v2)
+}
+
+/// LAPACK `dlapy2`: `sqrt(x² + y²)` as `w sqrt(1 + (z/w)²)`.
+fn lapy2(x: f64, y: f64) -> f64 {
+    let (xa, ya) = (x.abs(), y.abs());
+    let w = xa.max(ya);
+    let z = xa.min(ya);
+    if z == 0.0 || w > f64::MAX {
+        w
+    } else {
+        w * (1.0 + (z / w) * (z / w)).sqrt()
+    }
+}
+
+/// LAPACK `dlas2`: singular values `(ssmin, ssmax)` of the upper triangular `[[f, g], [0, h]]`.
+fn dlas2(f: f64, g: f64, h: f64) -> (f64, f64) {
+    let (fa, ga, ha) = (f.abs(), g.abs(), h.abs());
+    let fhmn = fa.min(ha);
+    let fhmx = fa.max(ha);
+    if fhmn == 0.0 {
+        let ssmax = if fhmx == 0.0 {
+            ga
+        } else {
+            let (big, small) = (fhmx.max(ga), fhmx.min(ga));
+            big * (1.0 + (small / big) * (small / big)).sqrt()
+        };
+        (0.0, ssmax)
+    } else if ga < fhmx {
+        let at_s = 1.0 + fhmn / fhmx;
+        let at_d = (fhmx - fhmn) / fhmx;
+        let au = (ga / fhmx) * (ga / fhmx);
+        let c = 2.0 / ((at_s * at_s + au).sqrt() + (at_d * at_d + au).sqrt());
+        (fhmn * c, fhmx / c)
+    } else {
+        let au = fhmx / ga;
+        if au == 0.0 {
+            ((fhmn * fhmx) / ga, ga)
+        } else {
+            let at_s = 1.0 + fhmn / fhmx;
+            let at_d = (fhmx - fhmn) / fhmx;
+            let c = 1.0
+                / ((1.0 + (at_s * au) * (at_s * au)).sqrt()
+                    + (1.0 + (at_d * au) * (at_d * au)).sqrt());
+            let ssmin = (fhmn * c) * au;
+            (ssmin + ssmin, ga / (c + c))
+        }
+    }
+}
+
+/// The manipulability ellipse of `J`: singular values (as [`singular_values`]) and the major
+/// axis direction.
+pub fn ellipse(m: &Mat2) -> Ellipse {
+    let (sigma_min, sigma_max) = singular_values(m);
     // Major axis: eigenvector of J Jᵀ for the larger eigenvalue.
     let [[p, pq], [_, s]] = j_jt(m);
     let angle_rad = 0.5 * (2.0 * pq).atan2(p - s);
@@ -269,6 +378,60 @@ mod tests {
         assert!(close(rep.ellipse.sigma_min, 0.03864146032693336));
         assert!(close(rep.ellipse.sigma_max, 0.22277297539902366));
         assert!(close(rep.det_j, arm.l1 * arm.l2 * 0.8f64.sin()));
+    }
+
+    #[test]
+    fn det_manipulability_and_svd_match_numpy_bit_for_bit() {
+        // golden/jacobian_default rows q1 = 0.2 and 1.5 (q2 = 0.8): det_j, manipulability,
+        // sigma_min, sigma_max exactly as numpy printed them.
+        let arm = Arm::DEFAULT;
+        let rows = [
+            (
+                0.2,
+                [
+                    0.008608273090794276,
+                    0.008608273090794283,
+                    0.038641460326933365,
+                    0.22277297539902366,
+                ],
+            ),
+            (
+                1.5,
+                [
+                    0.008608273090794268,
+                    0.008608273090794276,
+                    0.038641460326933344,
+                    0.2227729753990237,
+                ],
+            ),
+        ];
+        for (q1, want) in rows {
+            let j = arm.jacobian(q1, 0.8);
+            let (sigma_min, sigma_max) = singular_values(&j);
+            assert_eq!(
+                [det(&j), manipulability(&j), sigma_min, sigma_max],
+                want,
+                "q1={q1}"
+            );
+        }
+    }
+
+    #[test]
+    fn det_and_svd_edge_cases() {
+        assert_eq!(det(&[[0.0, 1.0], [0.0, 2.0]]), 0.0);
+        assert_eq!(det(&[[1.0, 2.0], [2.0, 4.0]]), 0.0);
+        assert_eq!(det(&[[0.0, 1.0], [1.0, 0.0]]), -1.0);
+        assert!(close(det(&[[3.0, -1.0], [4.0, 2.0]]), 10.0));
+        assert_eq!(singular_values(&[[0.0, 0.0], [0.0, 0.0]]), (0.0, 0.0));
+        let (lo, hi) = singular_values(&[[0.0, -2.0], [3.0, 0.0]]);
+        assert!(close(lo, 2.0) && close(hi, 3.0));
+        // Tiny entries go through dlarfg's rescaling without under/overflow.
+        // [[1, 0], [1, 1]] has singular values phi - 1 and phi.
+        let phi = (1.0 + 5f64.sqrt()) / 2.0;
+        let (lo, hi) = singular_values(&[[1e-300, 0.0], [1e-300, 1e-300]]);
+        assert!(((lo / 1e-300) / (phi - 1.0) - 1.0).abs() < 1e-12, "{lo:e}");
+        assert!(((hi / 1e-300) / phi - 1.0).abs() < 1e-12, "{hi:e}");
+        assert_eq!(manipulability(&[[1.0, 2.0], [2.0, 4.0]]), 0.0);
     }
 
     #[test]

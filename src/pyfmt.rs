@@ -27,22 +27,92 @@ pub fn py_float(x: f64) -> String {
     if x == 0.0 {
         return if x.is_sign_negative() { "-0.0" } else { "0.0" }.to_string();
     }
+    let (digits, exp) = shortest_digits(x.abs());
+    layout(x < 0.0, &digits, exp)
+}
+
+/// Shortest round-trip significant digits of `x > 0` and its decimal exponent, with ties
+/// between two equally short candidates broken to the even last digit as Python's `repr`
+/// (David Gay's dtoa) does; Rust's formatter breaks such exact ties upwards.
+fn shortest_digits(x: f64) -> (String, i32) {
     let sci = format!("{x:e}");
-    let (mantissa, exp) = match sci.split_once('e') {
+    let (mantissa, exp) = split_sci(&sci);
+    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    let n = digits.len();
+    // A tie: the exact value has exactly n + 1 significant digits, the last a 5. Cheap
+    // filter first (n + 3 digits end in "500"), exact confirmation second.
+    let probe = format!("{x:.prec$e}", prec = n + 2);
+    let (probe_mantissa, probe_exp) = split_sci(&probe);
+    let probe_digits: String = probe_mantissa
+        .chars()
+        .filter(char::is_ascii_digit)
+        .collect();
+    if !probe_digits.ends_with("500") {
+        return (digits, exp);
+    }
+    let exact = format!("{x:.800e}");
+    let (exact_mantissa, _) = split_sci(&exact);
+    let exact_digits: String = exact_mantissa
+        .chars()
+        .filter(char::is_ascii_digit)
+        .collect();
+    let is_tie = exact_digits.as_bytes().get(n) == Some(&b'5')
+        && exact_digits.bytes().skip(n + 1).all(|b| b == b'0');
+    let low = &probe_digits[..n];
+    let low_is_even = low.bytes().last().is_some_and(|d| (d - b'0') % 2 == 0);
+    if is_tie && low_is_even {
+        let trimmed = low.trim_end_matches('0');
+        let trimmed = if trimmed.is_empty() { "0" } else { trimmed };
+        return (trimmed.to_string(), probe_exp);
+    }
+    (digits, exp)
+}
+
+fn split_sci(s: &str) -> (&str, i32) {
+    match s.split_once('e') {
         Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
-        None => (sci.as_str(), 0),
-    };
+        None => (s, 0),
+    }
+}
+
+/// Python's layout of significant `digits` with decimal exponent `exp`: fixed notation for
+/// `-4 <= exp < 16`, else `d.ddde±XX`.
+fn layout(negative: bool, digits: &str, exp: i32) -> String {
+    let mut out = String::with_capacity(digits.len() + 8);
+    if negative {
+        out.push('-');
+    }
     if (-4..16).contains(&exp) {
-        let fixed = format!("{x}");
-        if fixed.contains('.') {
-            fixed
+        if exp >= 0 {
+            let int_len = exp as usize + 1;
+            if digits.len() <= int_len {
+                out.push_str(digits);
+                out.extend(std::iter::repeat_n('0', int_len - digits.len()));
+                out.push_str(".0");
+            } else {
+                out.push_str(&digits[..int_len]);
+                out.push('.');
+                out.push_str(&digits[int_len..]);
+            }
         } else {
-            fixed + ".0"
+            out.push_str("0.");
+            out.extend(std::iter::repeat_n('0', (-exp - 1) as usize));
+            out.push_str(digits);
         }
     } else {
-        let sign = if exp < 0 { '-' } else { '+' };
-        format!("{mantissa}e{sign}{:02}", exp.unsigned_abs())
+        out.push_str(&digits[..1]);
+        if digits.len() > 1 {
+            out.push('.');
+            out.push_str(&digits[1..]);
+        }
+        out.push('e');
+        out.push(if exp < 0 { '-' } else { '+' });
+        if exp.unsigned_abs() < 10 {
+            out.push('0');
+        }
+        out.push_str(&exp.unsigned_abs().to_string());
     }
+    out
 }
 
 /// Python's `f"{x:.{digits}f}"`.
@@ -147,6 +217,8 @@ mod tests {
             (1.5e16, "1.5e+16"),
             (1e100, "1e+100"),
             (-2.5e-7, "-2.5e-07"),
+            // An exact tie between two 16-digit candidates: Python picks the even one.
+            (577343969884.53125, "577343969884.5312"),
             (7.199999999999999, "7.199999999999999"),
             (-200.0, "-200.0"),
             (f64::INFINITY, "inf"),

@@ -1,19 +1,307 @@
-//! Recipe `cubic-path`: PLACEHOLDER until its kernel lands (replace this whole file).
+//! Recipe `cubic-path` (`cubic_joint_path.py`): the interpolating cubic from q0 to q1 in time T
+//! with zero velocity at both ends, sampled every dt.
+//!
+//! ```text
+//! q(t) = a0 + a1 t + a2 t² + a3 t³,   a0 = q0, a1 = 0,
+//! a2 = 3 (q1 - q0) / T²,   a3 = -2 (q1 - q0) / T³
+//! qd = a1 + 2 a2 t + 3 a3 t²,   qdd = 2 a2 + 6 a3 t
+//! t = np.arange(0.0, T + 1e-12, dt)
+//! ```
+//!
+//! Decisions where the Python recipe is silent or crashes:
+//! - `T` and `dt` must be > 0 (the recipe's own check: "T and dt must be positive");
+//! - `T` must lie in `[DURATION_MIN_S, DURATION_MAX_S]` (below ~1e-108 s `T*T*T` underflows and
+//!   Python divides by zero) and `q0`, `q1` in `[-ANGLE_MAX_RAD, ANGLE_MAX_RAD]`, which keeps
+//!   every coefficient finite;
+//! - at most [`MAX_ROWS`] samples.
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::Args;
+use super::ik_workspace::finite;
+use super::{CsvFile, RecipeInfo, RecipeOutput};
+use crate::args::{in_range, positive, ArgSpec, Args};
 use crate::error::RecipeError;
+use crate::numpy;
+use crate::pyfmt::{py_float, CsvText};
 
+/// Largest waypoint magnitude, rad (or whatever unit the user means): keeps `q1 - q0` and the
+/// coefficients finite.
+pub const ANGLE_MAX_RAD: f64 = 1e9;
+/// Shortest move duration, s: keeps `T³` far from underflow.
+pub const DURATION_MIN_S: f64 = 1e-9;
+/// Longest move duration, s.
+pub const DURATION_MAX_S: f64 = 1e9;
+/// Most samples: a CSV of about 80 MB is the most a browser tab should build.
+pub const MAX_ROWS: u64 = 1_000_000;
+
+/// The CSV this recipe writes.
+pub const FILE_NAME: &str = "cubic_path.csv";
+const HEADER: [&str; 4] = ["t_s", "q", "qd", "qdd"];
+
+const ARGS: [ArgSpec; 4] = [
+    ArgSpec {
+        name: "q0",
+        default: "0.0",
+        help: "start joint angle, rad",
+    },
+    ArgSpec {
+        name: "q1",
+        default: "1.2",
+        help: "end joint angle, rad",
+    },
+    ArgSpec {
+        name: "T",
+        default: "1.0",
+        help: "move duration, s",
+    },
+    ArgSpec {
+        name: "dt",
+        default: "0.02",
+        help: "sample period, s",
+    },
+];
+
+/// `cubic-path`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
     id: "cubic-path",
-    python: "TODO.py",
-    args: &[],
+    python: "cubic_joint_path.py",
+    args: &ARGS,
     flags: &[],
-    writes: &[],
+    writes: &[FILE_NAME],
 };
 
-pub fn run_args(_args: &Args) -> Result<RecipeOutput, RecipeError> {
-    Err(RecipeError::UnknownRecipe {
-        id: INFO.id.to_string(),
+/// Parameters of the path (the recipe's defaults: 0.0 → 1.2 rad in 1.0 s, dt 0.02 s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CubicParams {
+    /// Start angle, rad.
+    pub q0: f64,
+    /// End angle, rad.
+    pub q1: f64,
+    /// Move duration T, s.
+    pub duration_s: f64,
+    /// Sample period, s.
+    pub dt_s: f64,
+}
+
+impl Default for CubicParams {
+    fn default() -> Self {
+        CubicParams {
+            q0: 0.0,
+            q1: 1.2,
+            duration_s: 1.0,
+            dt_s: 0.02,
+        }
+    }
+}
+
+impl CubicParams {
+    /// Checks every parameter; the error names the first bad one.
+    pub fn validate(&self) -> Result<(), RecipeError> {
+        self.times().map(|_| ())
+    }
+
+    /// Validates and returns the sample times.
+    fn times(&self) -> Result<Vec<f64>, RecipeError> {
+        for (param, q) in [("q0", self.q0), ("q1", self.q1)] {
+            finite(param, q)?;
+            in_range(param, q, -ANGLE_MAX_RAD, ANGLE_MAX_RAD)?;
+        }
+        finite("T", self.duration_s)?;
+        positive("T", self.duration_s)?;
+        in_range("T", self.duration_s, DURATION_MIN_S, DURATION_MAX_S)?;
+        finite("dt", self.dt_s)?;
+        positive("dt", self.dt_s)?;
+        numpy::arange(0.0, self.duration_s + 1e-12, self.dt_s, "dt", MAX_ROWS)
+    }
+}
+
+/// One row: time, angle, velocity, acceleration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CubicSample {
+    pub t: f64,
+    pub q: f64,
+    pub qd: f64,
+    pub qdd: f64,
+}
+
+/// The sampled path and what the summary line repeats.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CubicPath {
+    pub q0: f64,
+    pub q1: f64,
+    pub duration_s: f64,
+    pub samples: Vec<CubicSample>,
+}
+
+/// Samples the cubic, operation for operation as the recipe.
+///
+/// # Example
+/// ```
+/// use bsv_playground::recipes::cubic_path::{compute, CubicParams};
+/// let path = compute(&CubicParams::default()).unwrap();
+/// assert_eq!(path.samples.len(), 51);
+/// assert_eq!(path.summary(), "wrote 51 cubic samples q0=0.0→q1=1.2 T=1.0s -> cubic_path.csv");
+/// ```
+pub fn compute(params: &CubicParams) -> Result<CubicPath, RecipeError> {
+    let ts = params.times()?;
+    let (q0, q1, big_t) = (params.q0, params.q1, params.duration_s);
+    let (a0, a1) = (q0, 0.0);
+    let a2 = 3.0 * (q1 - q0) / (big_t * big_t);
+    let a3 = -2.0 * (q1 - q0) / (big_t * big_t * big_t);
+    let samples = ts
+        .into_iter()
+        .map(|t| CubicSample {
+            t,
+            q: a0 + a1 * t + a2 * t * t + a3 * t * t * t,
+            qd: a1 + 2.0 * a2 * t + 3.0 * a3 * t * t,
+            qdd: 2.0 * a2 + 6.0 * a3 * t,
+        })
+        .collect();
+    Ok(CubicPath {
+        q0,
+        q1,
+        duration_s: big_t,
+        samples,
     })
+}
+
+impl CubicPath {
+    /// `cubic_path.csv` exactly as the recipe writes it.
+    pub fn to_csv(&self) -> String {
+        let mut csv = CsvText::with_header(&HEADER);
+        for s in &self.samples {
+            csv.floats(&[s.t, s.q, s.qd, s.qdd]);
+        }
+        csv.finish()
+    }
+
+    /// The line the recipe prints (numbers as Python's `repr`).
+    pub fn summary(&self) -> String {
+        format!(
+            "wrote {} cubic samples q0={}→q1={} T={}s -> {FILE_NAME}",
+            self.samples.len(),
+            py_float(self.q0),
+            py_float(self.q1),
+            py_float(self.duration_s)
+        )
+    }
+}
+
+/// Parses the recipe's arguments.
+pub fn params_from_args(args: &Args) -> Result<CubicParams, RecipeError> {
+    Ok(CubicParams {
+        q0: args.f64(0, &ARGS[0])?,
+        q1: args.f64(1, &ARGS[1])?,
+        duration_s: args.f64(2, &ARGS[2])?,
+        dt_s: args.f64(3, &ARGS[3])?,
+    })
+}
+
+/// Runs the recipe from command-line style arguments.
+pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
+    let path = compute(&params_from_args(args)?)?;
+    Ok(RecipeOutput {
+        files: vec![CsvFile {
+            name: FILE_NAME.to_string(),
+            text: path.to_csv(),
+        }],
+        summary: path.summary(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
+        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
+        crate::recipes::run(INFO.id, &raw)
+    }
+
+    #[test]
+    fn defaults_in_one_place() {
+        assert_eq!(
+            params_from_args(&Args::default()).unwrap(),
+            CubicParams::default()
+        );
+    }
+
+    #[test]
+    fn reference_rows_and_boundary_conditions() {
+        let path = compute(&CubicParams::default()).unwrap();
+        // golden/cubic_default rows 1 and 2, exact.
+        assert_eq!(
+            path.samples[0],
+            CubicSample {
+                t: 0.0,
+                q: 0.0,
+                qd: 0.0,
+                qdd: 7.199999999999999
+            }
+        );
+        assert_eq!(path.samples[1].q, 0.0014207999999999998);
+        let last = path.samples[path.samples.len() - 1];
+        assert!((last.t - 1.0).abs() < 1e-12);
+        assert!((last.q - 1.2).abs() < 1e-12 && last.qd.abs() < 1e-12);
+    }
+
+    #[test]
+    fn typed_api_agrees_with_csv_path() {
+        let path = compute(&CubicParams {
+            q0: -0.5,
+            q1: 2.0,
+            duration_s: 0.3,
+            dt_s: 0.1,
+        })
+        .unwrap();
+        let out = run(&["-0.5", "2", "0.3", "0.1"]).unwrap();
+        assert_eq!(out.file(FILE_NAME), Some(path.to_csv().as_str()));
+        // np.arange(0, 0.3 + 1e-12, 0.1) has 4 values: 0.30000000000000004 is the last.
+        assert_eq!(
+            out.summary,
+            "wrote 4 cubic samples q0=-0.5→q1=2.0 T=0.3s -> cubic_path.csv"
+        );
+        assert_eq!(path.samples[3].t, 0.30000000000000004);
+    }
+
+    #[test]
+    fn rejections_name_the_parameter() {
+        let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
+            let e = run(raw).unwrap_err();
+            assert!(ok(&e), "{raw:?}: {e:?}");
+            assert_eq!(e.param(), Some(param), "{raw:?}");
+        };
+        use RecipeError as E;
+        check(&["0", "1", "0"], "T", |e| {
+            matches!(e, E::NotPositive { .. })
+        });
+        check(&["0", "1", "-1"], "T", |e| {
+            matches!(e, E::NotPositive { .. })
+        });
+        check(&["0", "1", "1e-12"], "T", |e| {
+            matches!(e, E::OutOfRange { .. })
+        });
+        check(&["0", "1", "1", "0"], "dt", |e| {
+            matches!(e, E::NotPositive { .. })
+        });
+        check(
+            &["0", "1", "1", "1e-7"],
+            "dt",
+            |e| matches!(e, E::TooLarge { limit, .. } if *limit == MAX_ROWS),
+        );
+        check(&["1e10"], "q0", |e| matches!(e, E::OutOfRange { .. }));
+        check(&["0", "zero"], "q1", |e| matches!(e, E::NotANumber { .. }));
+        let nan = CubicParams {
+            dt_s: f64::NAN,
+            ..CubicParams::default()
+        };
+        assert!(matches!(nan.validate(), Err(E::NotFinite { .. })));
+        // A dt longer than T gives the start sample only.
+        assert_eq!(
+            run(&["0", "1", "1", "5"])
+                .unwrap()
+                .summary
+                .split(' ')
+                .nth(1),
+            Some("1")
+        );
+    }
 }

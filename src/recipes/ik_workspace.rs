@@ -1,19 +1,396 @@
-//! Recipe `ik-workspace`: PLACEHOLDER until its kernel lands (replace this whole file).
+//! Recipe `ik-workspace` (`planar_ik_workspace.py`): grid the plane around a planar 2R arm,
+//! mark the reachable cells and record the elbow-down IK plus the FK round-trip error.
+//!
+//! ```text
+//! xs = ys = np.arange(-half, half + 1e-9, step)        half = half_mm/1000, step = step_mm/1000
+//! c2 = (x² + y² − L1² − L2²) / (2 L1 L2)              reachable when |c2| ≤ 1
+//! q2 = acos(c2),  q1 = atan2(y, x) − atan2(L2 sin q2, L1 + L2 cos q2)
+//! fk_err_mm = ((x_fk − x)**2 + (y_fk − y)**2)**0.5 · 1000     (C pow, as numpy)
+//! ```
+//!
+//! Cells are visited x-major (`for x in xs: for y in ys`), so cell `k = ix * ys.len() + iy`.
+//! An unreachable cell prints `x_mm,y_mm,0,,,`.
+//!
+//! Decisions where the Python recipe is silent or crashes:
+//! - link lengths must lie in [`LINK_MIN_M`, `LINK_MAX_M`] (zero gives a division by zero in
+//!   Python; tiny links make `c2` NaN and print `nan` rows);
+//! - `half_mm` must lie in `[0, HALF_MAX_MM]` (a negative half-extent gives an empty grid);
+//! - `step_mm` must be > 0 (Python divides by zero or builds an empty grid) and the grid may
+//!   hold at most [`MAX_CELLS`] cells.
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::Args;
+use super::trapezoid_profile::py_pow;
+use super::{CsvFile, RecipeInfo, RecipeOutput};
+use crate::args::{in_range, positive, within_limit, ArgSpec, Args};
 use crate::error::RecipeError;
+use crate::numpy;
+use crate::planar2r::{Arm, Elbow};
+use crate::pyfmt::{py_float, CsvText};
 
+/// Shortest link accepted by the 2R recipes, metres: keeps `2 L1 L2` far from underflow.
+pub const LINK_MIN_M: f64 = 1e-6;
+/// Longest link accepted by the 2R recipes, metres: keeps `J Jᵀ` and `x²` far from overflow.
+pub const LINK_MAX_M: f64 = 1e6;
+/// Largest grid half-extent, mm (1 km): beyond it nothing about a tabletop arm is left to see.
+pub const HALF_MAX_MM: f64 = 1e6;
+/// Most samples per axis: 1001 (e.g. half 500 mm at 1 mm steps).
+pub const MAX_AXIS_SAMPLES: u64 = 1001;
+/// Most grid cells, `MAX_AXIS_SAMPLES²` = 1 002 001: one CSV of about 60 MB, the most a browser
+/// tab builds and offers for download without stalling.
+pub const MAX_CELLS: u64 = MAX_AXIS_SAMPLES * MAX_AXIS_SAMPLES;
+
+/// The CSV this recipe writes.
+pub const FILE_NAME: &str = "ik_workspace.csv";
+const HEADER: [&str; 6] = ["x_mm", "y_mm", "reachable", "q1_rad", "q2_rad", "fk_err_mm"];
+
+const ARGS: [ArgSpec; 4] = [
+    ArgSpec {
+        name: "L1",
+        default: "0.12",
+        help: "upper link length, m",
+    },
+    ArgSpec {
+        name: "L2",
+        default: "0.10",
+        help: "forearm link length, m",
+    },
+    ArgSpec {
+        name: "half_mm",
+        default: "200",
+        help: "grid half-extent, mm",
+    },
+    ArgSpec {
+        name: "step_mm",
+        default: "10",
+        help: "grid step, mm",
+    },
+];
+
+/// `ik-workspace`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
     id: "ik-workspace",
-    python: "TODO.py",
-    args: &[],
+    python: "planar_ik_workspace.py",
+    args: &ARGS,
     flags: &[],
-    writes: &[],
+    writes: &[FILE_NAME],
 };
 
-pub fn run_args(_args: &Args) -> Result<RecipeOutput, RecipeError> {
-    Err(RecipeError::UnknownRecipe {
-        id: INFO.id.to_string(),
+/// Parameters of the workspace grid (the recipe's defaults: 0.12 m, 0.10 m, 200 mm, 10 mm).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WorkspaceParams {
+    /// Upper link length, m.
+    pub l1: f64,
+    /// Forearm link length, m.
+    pub l2: f64,
+    /// Grid half-extent, mm: x and y run from `-half_mm` to `+half_mm`.
+    pub half_mm: f64,
+    /// Grid step, mm.
+    pub step_mm: f64,
+}
+
+impl Default for WorkspaceParams {
+    fn default() -> Self {
+        WorkspaceParams {
+            l1: 0.12,
+            l2: 0.10,
+            half_mm: 200.0,
+            step_mm: 10.0,
+        }
+    }
+}
+
+/// Checks a link length: finite, > 0 and within [`LINK_MIN_M`, `LINK_MAX_M`].
+pub(crate) fn check_link_m(param: &str, value: f64) -> Result<(), RecipeError> {
+    finite(param, value)?;
+    positive(param, value)?;
+    in_range(param, value, LINK_MIN_M, LINK_MAX_M)?;
+    Ok(())
+}
+
+/// Rejects NaN and infinities (typed callers bypass the argument parser).
+pub(crate) fn finite(param: &str, value: f64) -> Result<f64, RecipeError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(RecipeError::NotFinite {
+            param: param.to_string(),
+        })
+    }
+}
+
+impl WorkspaceParams {
+    /// Checks every parameter; the error names the first bad one.
+    pub fn validate(&self) -> Result<(), RecipeError> {
+        self.axis().map(|_| ())
+    }
+
+    /// Validates and returns the axis in metres (`np.arange(-half, half + 1e-9, step)`).
+    fn axis(&self) -> Result<Vec<f64>, RecipeError> {
+        check_link_m("L1", self.l1)?;
+        check_link_m("L2", self.l2)?;
+        finite("half_mm", self.half_mm)?;
+        in_range("half_mm", self.half_mm, 0.0, HALF_MAX_MM)?;
+        finite("step_mm", self.step_mm)?;
+        positive("step_mm", self.step_mm)?;
+        let half = self.half_mm / 1000.0;
+        let step = self.step_mm / 1000.0;
+        let (start, stop) = (-half, half + 1e-9);
+        let per_axis = numpy::arange_len(start, stop, step);
+        within_limit("step_mm", per_axis * per_axis, MAX_CELLS)?;
+        numpy::arange(start, stop, step, "step_mm", MAX_AXIS_SAMPLES)
+    }
+}
+
+/// The sampled grid. Cell `k = ix * ys_mm.len() + iy`; `q1`, `q2`, `err_mm` are NaN where the
+/// cell is unreachable.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Workspace {
+    /// Grid x values, mm (`x * 1000` as the recipe prints them).
+    pub xs_mm: Vec<f64>,
+    /// Grid y values, mm.
+    pub ys_mm: Vec<f64>,
+    /// Whether `|c2| <= 1` in each cell.
+    pub reachable: Vec<bool>,
+    /// Elbow-down shoulder angle, rad.
+    pub q1: Vec<f64>,
+    /// Elbow-down elbow angle (`+acos c2`), rad.
+    pub q2: Vec<f64>,
+    /// FK(IK(x)) distance from the cell centre, mm.
+    pub err_mm: Vec<f64>,
+}
+
+/// Runs the recipe's grid: validation, then IK and the FK check in every cell.
+///
+/// # Example
+/// ```
+/// use bsv_playground::recipes::ik_workspace::{compute, WorkspaceParams};
+/// let ws = compute(&WorkspaceParams::default()).unwrap();
+/// assert_eq!((ws.xs_mm.len(), ws.reachable_count()), (41, 1450));
+/// ```
+pub fn compute(params: &WorkspaceParams) -> Result<Workspace, RecipeError> {
+    let axis = params.axis()?;
+    let arm = Arm {
+        l1: params.l1,
+        l2: params.l2,
+    };
+    let cells = axis.len() * axis.len();
+    let mut ws = Workspace {
+        xs_mm: axis.iter().map(|x| x * 1000.0).collect(),
+        ys_mm: axis.iter().map(|y| y * 1000.0).collect(),
+        reachable: Vec::with_capacity(cells),
+        q1: Vec::with_capacity(cells),
+        q2: Vec::with_capacity(cells),
+        err_mm: Vec::with_capacity(cells),
+    };
+    for &x in &axis {
+        for &y in &axis {
+            match arm.ik(x, y, Elbow::Down) {
+                Some((q1, q2)) => {
+                    let (xr, yr) = arm.fk(q1, q2);
+                    let (dx, dy) = (xr - x, yr - y);
+                    ws.reachable.push(true);
+                    ws.q1.push(q1);
+                    ws.q2.push(q2);
+                    let err = py_pow(py_pow(dx, 2.0) + py_pow(dy, 2.0), 0.5) * 1000.0;
+                    ws.err_mm.push(err);
+                }
+                None => {
+                    ws.reachable.push(false);
+                    ws.q1.push(f64::NAN);
+                    ws.q2.push(f64::NAN);
+                    ws.err_mm.push(f64::NAN);
+                }
+            }
+        }
+    }
+    Ok(ws)
+}
+
+impl Workspace {
+    /// Number of reachable cells.
+    pub fn reachable_count(&self) -> usize {
+        self.reachable.iter().filter(|&&r| r).count()
+    }
+
+    /// `ik_workspace.csv` exactly as the recipe writes it.
+    pub fn to_csv(&self) -> String {
+        let mut csv = CsvText::with_header(&HEADER);
+        let ny = self.ys_mm.len();
+        for (ix, x_mm) in self.xs_mm.iter().enumerate() {
+            let x = py_float(*x_mm);
+            for (iy, y_mm) in self.ys_mm.iter().enumerate() {
+                let k = ix * ny + iy;
+                let y = py_float(*y_mm);
+                if self.reachable.get(k).copied().unwrap_or(false) {
+                    let cell = |v: &[f64]| py_float(v.get(k).copied().unwrap_or(f64::NAN));
+                    let (q1, q2, err) = (cell(&self.q1), cell(&self.q2), cell(&self.err_mm));
+                    csv.raw_row([x.as_str(), &y, "1", &q1, &q2, &err]);
+                } else {
+                    csv.raw_row([x.as_str(), &y, "0", "", "", ""]);
+                }
+            }
+        }
+        csv.finish()
+    }
+
+    /// The line the recipe prints.
+    pub fn summary(&self) -> String {
+        let (nx, ny) = (self.xs_mm.len(), self.ys_mm.len());
+        format!(
+            "grid {nx}×{ny} = {} cells, reachable {} -> {FILE_NAME}",
+            nx * ny,
+            self.reachable_count()
+        )
+    }
+}
+
+/// Parses the recipe's arguments.
+pub fn params_from_args(args: &Args) -> Result<WorkspaceParams, RecipeError> {
+    Ok(WorkspaceParams {
+        l1: args.f64(0, &ARGS[0])?,
+        l2: args.f64(1, &ARGS[1])?,
+        half_mm: args.f64(2, &ARGS[2])?,
+        step_mm: args.f64(3, &ARGS[3])?,
     })
+}
+
+/// Runs the recipe from command-line style arguments.
+pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
+    let ws = compute(&params_from_args(args)?)?;
+    Ok(RecipeOutput {
+        files: vec![CsvFile {
+            name: FILE_NAME.to_string(),
+            text: ws.to_csv(),
+        }],
+        summary: ws.summary(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
+        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
+        crate::recipes::run(INFO.id, &raw)
+    }
+
+    fn param_of(err: RecipeError) -> String {
+        err.param().unwrap_or("").to_string()
+    }
+
+    #[test]
+    fn defaults_in_one_place() {
+        let parsed = params_from_args(&Args::default()).unwrap();
+        assert_eq!(parsed, WorkspaceParams::default());
+    }
+
+    #[test]
+    fn default_grid_counts_and_cells() {
+        let ws = compute(&WorkspaceParams::default()).unwrap();
+        assert_eq!(
+            ws.summary(),
+            "grid 41×41 = 1681 cells, reachable 1450 -> ik_workspace.csv"
+        );
+        assert_eq!(ws.xs_mm.first(), Some(&-200.0));
+        assert_eq!(ws.reachable.len(), 1681);
+        // golden/ik_default line 1257: cell (ix, iy) = (30, 25), exact.
+        let k = 30 * 41 + 25;
+        assert_eq!(
+            (ws.xs_mm[30], ws.ys_mm[25]),
+            (100.00000000000026, 50.00000000000021)
+        );
+        assert!(ws.reachable[k]);
+        assert_eq!(
+            (ws.q1[k], ws.q2[k], ws.err_mm[k]),
+            (
+                -0.42581978074352284,
+                2.089590495500249,
+                1.3877787807814457e-14
+            )
+        );
+        // The cell nearest the origin (x = 1.7e-13 mm) is inside the inner hole
+        // (|L1 - L2| = 20 mm).
+        let origin = 20 * 41 + 20;
+        assert!(!ws.reachable[origin] && ws.q1[origin].is_nan());
+    }
+
+    #[test]
+    fn typed_api_agrees_with_csv_path() {
+        let params = WorkspaceParams {
+            l1: 0.2,
+            l2: 0.15,
+            half_mm: 60.0,
+            step_mm: 7.5,
+        };
+        let ws = compute(&params).unwrap();
+        let out = run(&["0.2", "0.15", "60", "7.5"]).unwrap();
+        assert_eq!(out.file(FILE_NAME), Some(ws.to_csv().as_str()));
+        assert_eq!(out.summary, ws.summary());
+        let text = ws.to_csv();
+        let lines: Vec<&str> = text.split("\r\n").collect();
+        assert_eq!(lines[0], "x_mm,y_mm,reachable,q1_rad,q2_rad,fk_err_mm");
+        assert_eq!(lines.len(), ws.reachable.len() + 2);
+        assert!(!text.contains("nan"));
+    }
+
+    #[test]
+    fn half_zero_is_one_cell() {
+        let out = run(&["0.12", "0.10", "0", "10"]).unwrap();
+        assert_eq!(
+            out.summary,
+            "grid 1×1 = 1 cells, reachable 0 -> ik_workspace.csv"
+        );
+        assert_eq!(
+            out.file(FILE_NAME),
+            Some("x_mm,y_mm,reachable,q1_rad,q2_rad,fk_err_mm\r\n-0.0,-0.0,0,,,\r\n")
+        );
+    }
+
+    #[test]
+    fn rejections_name_the_parameter() {
+        let e = run(&["0"]).unwrap_err();
+        assert!(matches!(e, RecipeError::NotPositive { .. }) && param_of(e) == "L1");
+        let e = run(&["0.12", "2e6"]).unwrap_err();
+        assert!(matches!(e, RecipeError::OutOfRange { .. }) && param_of(e) == "L2");
+        let e = run(&["0.12", "0.1", "-5"]).unwrap_err();
+        assert!(matches!(e, RecipeError::OutOfRange { .. }) && param_of(e) == "half_mm");
+        let e = run(&["0.12", "0.1", "200", "0"]).unwrap_err();
+        assert!(matches!(e, RecipeError::NotPositive { .. }) && param_of(e) == "step_mm");
+        let e = run(&["0.12", "0.1", "200", "abc"]).unwrap_err();
+        assert!(matches!(e, RecipeError::NotANumber { .. }) && param_of(e) == "step_mm");
+        let e = run(&["0.12", "0.1", "nan"]).unwrap_err();
+        assert!(matches!(e, RecipeError::NotFinite { .. }) && param_of(e) == "half_mm");
+        let e = run(&["0.12", "0.1", "1", "2", "3"]).unwrap_err();
+        assert!(matches!(e, RecipeError::TooManyArgs { max: 4, got: 5 }));
+        // The typed API rejects what the parser cannot produce.
+        let nan = WorkspaceParams {
+            l2: f64::NAN,
+            ..WorkspaceParams::default()
+        };
+        assert!(matches!(nan.validate(), Err(RecipeError::NotFinite { .. })));
+    }
+
+    #[test]
+    fn grid_size_limit() {
+        // 1001 per axis is the most: half 500 mm at 1 mm.
+        let ok = WorkspaceParams {
+            half_mm: 500.0,
+            step_mm: 1.0,
+            ..WorkspaceParams::default()
+        };
+        assert_eq!(ok.validate(), Ok(()));
+        let too_fine = WorkspaceParams {
+            half_mm: 500.0,
+            step_mm: 0.999,
+            ..WorkspaceParams::default()
+        };
+        match too_fine.validate() {
+            Err(RecipeError::TooLarge { param, limit, .. }) => {
+                assert_eq!((param.as_str(), limit), ("step_mm", MAX_CELLS));
+            }
+            other => panic!("{other:?}"),
+        }
+        let e = run(&["0.12", "0.1", "1e6", "1e-300"]).unwrap_err();
+        assert!(matches!(e, RecipeError::TooLarge { .. }) && param_of(e) == "step_mm");
+    }
 }

@@ -1,19 +1,390 @@
-//! Recipe `manip-grid`: PLACEHOLDER until its kernel lands (replace this whole file).
+//! Recipe `manip-grid` (`manip_ellipse_2r.py`): |det J| of a planar 2R arm over an n × n grid
+//! of joint angles (the recipe is called "ellipse" but writes |det J| only).
+//!
+//! ```text
+//! q_i = -pi + 2 pi i / max(n - 1, 1),   i = 0 .. n-1   (same angles for q1 and q2)
+//! det J = (-L1 s1 - L2 s12)(L2 c12) - (-L2 s12)(L1 c1 + L2 c12)   (= L1 L2 sin q2)
+//! ```
+//!
+//! Rows run `i` over q1 (outer) and `j` over q2 (inner). The summary's maximum is the first
+//! maximum in row order, as Python's `max()`. The CSV path evaluates the recipe's formula
+//! operation for operation ([`Arm::det_explicit`]); [`fill_abs_det`] is a table-driven fast path
+//! for heatmaps that agrees to ~1e-17.
+//!
+//! Decisions where the Python recipe is silent or crashes:
+//! - `n` must be a whole number in `[1, MAX_N]` (n <= 0 makes Python's `max()` of no rows crash);
+//! - link lengths must lie in [`LINK_MIN_M`](super::ik_workspace::LINK_MIN_M),
+//!   [`LINK_MAX_M`](super::ik_workspace::LINK_MAX_M).
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::Args;
+use super::ik_workspace::check_link_m;
+use super::{CsvFile, RecipeInfo, RecipeOutput};
+use crate::args::{parse_i64, ArgSpec, Args};
 use crate::error::RecipeError;
+use crate::planar2r::Arm;
+use crate::pyfmt::{fixed, CsvText};
+use std::f64::consts::PI;
 
+/// Largest grid side: 1024² ≈ 1M rows (a CSV of ~80 MB), the most a browser tab should build;
+/// also the size of the fast path's stack tables.
+pub const MAX_N: i64 = 1024;
+
+/// The CSV this recipe writes.
+pub const FILE_NAME: &str = "manip_ellipse.csv";
+const HEADER: [&str; 4] = ["q1", "q2", "detJ", "manip"];
+
+const ARGS: [ArgSpec; 3] = [
+    ArgSpec {
+        name: "L1",
+        default: "0.12",
+        help: "upper link length, m",
+    },
+    ArgSpec {
+        name: "L2",
+        default: "0.10",
+        help: "forearm link length, m",
+    },
+    ArgSpec {
+        name: "n",
+        default: "24",
+        help: "grid side: n × n joint configurations",
+    },
+];
+
+/// `manip-grid`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
     id: "manip-grid",
-    python: "TODO.py",
-    args: &[],
+    python: "manip_ellipse_2r.py",
+    args: &ARGS,
     flags: &[],
-    writes: &[],
+    writes: &[FILE_NAME],
 };
 
-pub fn run_args(_args: &Args) -> Result<RecipeOutput, RecipeError> {
-    Err(RecipeError::UnknownRecipe {
-        id: INFO.id.to_string(),
+/// Parameters of the grid (the recipe's defaults: 0.12 m, 0.10 m, n = 24).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GridParams {
+    /// Upper link length, m.
+    pub l1: f64,
+    /// Forearm link length, m.
+    pub l2: f64,
+    /// Grid side (whole number in `[1, MAX_N]`).
+    pub n: i64,
+}
+
+impl Default for GridParams {
+    fn default() -> Self {
+        GridParams {
+            l1: 0.12,
+            l2: 0.10,
+            n: 24,
+        }
+    }
+}
+
+/// Parses a whole-number argument like Python's `int()` and checks `min <= value <= max`.
+/// A well-formed integer too long for i64 is out of range, not "not a whole number".
+pub(crate) fn parse_count(param: &str, text: &str, min: i64, max: i64) -> Result<i64, RecipeError> {
+    let value = match parse_i64(param, text) {
+        Ok(v) => v,
+        Err(e) => {
+            let digits = text.trim().trim_start_matches(['+', '-']);
+            let integral = !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit());
+            return match text.trim().parse::<f64>() {
+                Ok(v) if integral => Err(out_of_range(param, v, min, max)),
+                _ => Err(e),
+            };
+        }
+    };
+    check_count(param, value, min, max)
+}
+
+/// Checks `min <= value <= max` for a whole-number parameter.
+pub(crate) fn check_count(param: &str, value: i64, min: i64, max: i64) -> Result<i64, RecipeError> {
+    if (min..=max).contains(&value) {
+        Ok(value)
+    } else {
+        Err(out_of_range(param, value as f64, min, max))
+    }
+}
+
+fn out_of_range(param: &str, value: f64, min: i64, max: i64) -> RecipeError {
+    RecipeError::OutOfRange {
+        param: param.to_string(),
+        value,
+        min: min as f64,
+        max: max as f64,
+    }
+}
+
+impl GridParams {
+    /// Checks every parameter; the error names the first bad one.
+    pub fn validate(&self) -> Result<(), RecipeError> {
+        self.side().map(|_| ())
+    }
+
+    fn side(&self) -> Result<usize, RecipeError> {
+        check_link_m("L1", self.l1)?;
+        check_link_m("L2", self.l2)?;
+        let n = check_count("n", self.n, 1, MAX_N)?;
+        Ok(usize::try_from(n).unwrap_or(1))
+    }
+}
+
+/// `q_i = -pi + 2 pi i / max(n - 1, 1)`, evaluated as the recipe does.
+fn grid_angle(i: usize, n: usize) -> f64 {
+    -PI + 2.0 * PI * i as f64 / n.saturating_sub(1).max(1) as f64
+}
+
+/// The sampled grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ManipGrid {
+    /// Grid side.
+    pub n: usize,
+    /// The n joint angles (shared by q1 and q2), rad.
+    pub q: Vec<f64>,
+    /// det J, row-major: index `i * n + j`, `i` over q1, `j` over q2.
+    pub det_j: Vec<f64>,
+}
+
+/// Runs the recipe's grid.
+///
+/// # Example
+/// ```
+/// use bsv_playground::recipes::manip_grid::{grid, GridParams};
+/// let g = grid(&GridParams::default()).unwrap();
+/// assert_eq!(g.det_j.len(), 576);
+/// assert!(g.summary().starts_with("wrote 576 configs max|detJ|=0.01197"));
+/// ```
+pub fn grid(params: &GridParams) -> Result<ManipGrid, RecipeError> {
+    let n = params.side()?;
+    let arm = Arm {
+        l1: params.l1,
+        l2: params.l2,
+    };
+    let q: Vec<f64> = (0..n).map(|i| grid_angle(i, n)).collect();
+    let mut det_j = Vec::with_capacity(n * n);
+    for &q1 in &q {
+        for &q2 in &q {
+            det_j.push(arm.det_explicit(q1, q2));
+        }
+    }
+    Ok(ManipGrid { n, q, det_j })
+}
+
+impl ManipGrid {
+    /// `manip_ellipse.csv` exactly as the recipe writes it.
+    pub fn to_csv(&self) -> String {
+        let mut csv = CsvText::with_header(&HEADER);
+        for (k, det) in self.det_j.iter().enumerate() {
+            let (i, j) = (k / self.n.max(1), k % self.n.max(1));
+            let q1 = self.q.get(i).copied().unwrap_or(f64::NAN);
+            let q2 = self.q.get(j).copied().unwrap_or(f64::NAN);
+            csv.floats(&[q1, q2, *det, det.abs()]);
+        }
+        csv.finish()
+    }
+
+    /// Index of the first largest |det J| in row order (Python's `max()`), if any.
+    pub fn argmax(&self) -> Option<usize> {
+        let mut best: Option<(usize, f64)> = None;
+        for (k, det) in self.det_j.iter().enumerate() {
+            let m = det.abs();
+            match best {
+                // Python's max(): only a strictly greater key replaces (NaN never does).
+                Some((_, b)) if m.partial_cmp(&b) != Some(std::cmp::Ordering::Greater) => {}
+                _ => best = Some((k, m)),
+            }
+        }
+        best.map(|(k, _)| k)
+    }
+
+    /// The line the recipe prints.
+    pub fn summary(&self) -> String {
+        let rows = self.det_j.len();
+        match self.argmax() {
+            Some(k) => {
+                let n = self.n.max(1);
+                let q1 = self.q.get(k / n).copied().unwrap_or(f64::NAN);
+                let q2 = self.q.get(k % n).copied().unwrap_or(f64::NAN);
+                let manip = self.det_j.get(k).map_or(f64::NAN, |d| d.abs());
+                format!(
+                    "wrote {rows} configs max|detJ|={} at q=({},{}) -> {FILE_NAME}",
+                    fixed(manip, 5),
+                    fixed(q1, 3),
+                    fixed(q2, 3)
+                )
+            }
+            None => format!("wrote {rows} configs -> {FILE_NAME}"),
+        }
+    }
+}
+
+/// Fast path for heatmaps: writes |det J| of the recipe's n × n grid into `out` (row-major,
+/// `i * n + j`, `i` over q1) as f32, without allocating, and returns the largest value.
+///
+/// Uses one sin/cos table for the n angles and the angle-addition formulas for `q1 + q2`, so
+/// values differ from the CSV path by rounding only (~1e-17 for the default arm). `out` must
+/// hold exactly `n * n` values.
+pub fn fill_abs_det(l1: f64, l2: f64, n: i64, out: &mut [f32]) -> Result<f32, RecipeError> {
+    let n = GridParams { l1, l2, n }.side()?;
+    if out.len() != n * n {
+        return Err(RecipeError::WrongCount {
+            param: "out".to_string(),
+            expected: n * n,
+            got: out.len(),
+        });
+    }
+    const TABLE: usize = MAX_N as usize;
+    let mut sin_q = [0.0f64; TABLE];
+    let mut cos_q = [0.0f64; TABLE];
+    for (i, (s, c)) in sin_q.iter_mut().zip(cos_q.iter_mut()).take(n).enumerate() {
+        let q = grid_angle(i, n);
+        (*s, *c) = (q.sin(), q.cos());
+    }
+    let mut max = 0.0f32;
+    for (row, (&s1, &c1)) in out.chunks_exact_mut(n).zip(sin_q.iter().zip(&cos_q)) {
+        for (cell, (&s2, &c2)) in row.iter_mut().zip(sin_q.iter().zip(&cos_q)) {
+            let s12 = s1 * c2 + c1 * s2;
+            let c12 = c1 * c2 - s1 * s2;
+            let det = (-l1 * s1 - l2 * s12) * (l2 * c12) - (-l2 * s12) * (l1 * c1 + l2 * c12);
+            let v = det.abs() as f32;
+            *cell = v;
+            max = max.max(v);
+        }
+    }
+    Ok(max)
+}
+
+/// Parses the recipe's arguments.
+pub fn params_from_args(args: &Args) -> Result<GridParams, RecipeError> {
+    Ok(GridParams {
+        l1: args.f64(0, &ARGS[0])?,
+        l2: args.f64(1, &ARGS[1])?,
+        n: parse_count(ARGS[2].name, args.text(2, &ARGS[2]), 1, MAX_N)?,
     })
+}
+
+/// Runs the recipe from command-line style arguments.
+pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
+    let g = grid(&params_from_args(args)?)?;
+    Ok(RecipeOutput {
+        files: vec![CsvFile {
+            name: FILE_NAME.to_string(),
+            text: g.to_csv(),
+        }],
+        summary: g.summary(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
+        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
+        crate::recipes::run(INFO.id, &raw)
+    }
+
+    #[test]
+    fn defaults_in_one_place() {
+        assert_eq!(
+            params_from_args(&Args::default()).unwrap(),
+            GridParams::default()
+        );
+    }
+
+    #[test]
+    fn default_grid_matches_reference() {
+        let g = grid(&GridParams::default()).unwrap();
+        assert_eq!(
+            g.summary(),
+            "wrote 576 configs max|detJ|=0.01197 at q=(-1.229,1.503) -> manip_ellipse.csv"
+        );
+        // golden/manip_default first row, exact.
+        assert_eq!(g.q[0], -PI);
+        assert_eq!(g.det_j[0], -1.469576158976824e-18);
+        assert_eq!(g.q[1], -2.86841068371242);
+    }
+
+    #[test]
+    fn typed_api_agrees_with_csv_path() {
+        let g = grid(&GridParams {
+            l1: 0.3,
+            l2: 0.2,
+            n: 5,
+        })
+        .unwrap();
+        let out = run(&["0.3", "0.2", "5"]).unwrap();
+        assert_eq!(out.file(FILE_NAME), Some(g.to_csv().as_str()));
+        assert_eq!(out.summary, g.summary());
+        // n = 5: q = -pi, -pi/2, 0, pi/2, pi; the maximum |det| = L1 L2 is first reached at
+        // (q1, q2) = (-pi, -pi/2).
+        assert_eq!(
+            out.summary,
+            "wrote 25 configs max|detJ|=0.06000 at q=(-3.142,-1.571) -> manip_ellipse.csv"
+        );
+    }
+
+    #[test]
+    fn n_one_is_a_single_config() {
+        let out = run(&["0.12", "0.10", "1"]).unwrap();
+        assert_eq!(
+            out.file(FILE_NAME),
+            Some("q1,q2,detJ,manip\r\n-3.141592653589793,-3.141592653589793,-1.469576158976824e-18,1.469576158976824e-18\r\n")
+        );
+    }
+
+    #[test]
+    fn fast_path_agrees_with_recipe_formula() {
+        for (l1, l2, n) in [(0.12, 0.10, 24), (0.5, 0.05, 37), (1.0, 1.0, 1)] {
+            let g = grid(&GridParams { l1, l2, n }).unwrap();
+            let mut out = vec![0.0f32; g.det_j.len()];
+            let max = fill_abs_det(l1, l2, n, &mut out).unwrap();
+            for (fast, exact) in out.iter().zip(&g.det_j) {
+                assert!((f64::from(*fast) - exact.abs()).abs() <= 1e-6 * l1 * l2 + 1e-15);
+            }
+            let exact_max = g.argmax().map(|k| g.det_j[k].abs()).unwrap();
+            assert!((f64::from(max) - exact_max).abs() <= 1e-6 * exact_max);
+        }
+        let mut wrong = [0.0f32; 3];
+        assert!(matches!(
+            fill_abs_det(0.1, 0.1, 2, &mut wrong),
+            Err(RecipeError::WrongCount {
+                expected: 4,
+                got: 3,
+                ..
+            })
+        ));
+        assert!(matches!(
+            fill_abs_det(0.1, 0.1, 0, &mut []),
+            Err(RecipeError::OutOfRange { .. })
+        ));
+    }
+
+    #[test]
+    fn rejections_name_the_parameter() {
+        for (raw, param) in [
+            (&["0.12", "0.10", "0"][..], "n"),
+            (&["0.12", "0.10", "-3"][..], "n"),
+            (&["0.12", "0.10", "1025"][..], "n"),
+            (&["0.12", "0.10", "99999999999999999999999"][..], "n"),
+        ] {
+            let e = run(raw).unwrap_err();
+            assert!(matches!(e, RecipeError::OutOfRange { .. }), "{raw:?} {e:?}");
+            assert_eq!(e.param(), Some(param));
+        }
+        let e = run(&["0.12", "0.10", "24.0"]).unwrap_err();
+        assert!(matches!(e, RecipeError::NotAnInteger { .. }) && e.param() == Some("n"));
+        let e = run(&["0.12", "0"]).unwrap_err();
+        assert!(matches!(e, RecipeError::NotPositive { .. }) && e.param() == Some("L2"));
+        let e = run(&["1e7"]).unwrap_err();
+        assert!(matches!(e, RecipeError::OutOfRange { .. }) && e.param() == Some("L1"));
+        assert_eq!(
+            GridParams {
+                n: 1024,
+                ..GridParams::default()
+            }
+            .validate(),
+            Ok(())
+        );
+    }
 }

@@ -1,19 +1,359 @@
-//! Recipe `pid-step`: PLACEHOLDER until its kernel lands (replace this whole file).
+//! Recipe `pid-step` (`pid_step_response.py`): a discrete PID loop closed around a first-order
+//! plant, driven by a unit step.
+//!
+//! ```text
+//! dt = 0.05 s,  a = dt / (tau + dt),  r = 1
+//! e = r - y;  integ += e dt;  deriv = (e - e_prev) / dt
+//! u = Kp e + Ki integ + Kd deriv;  y += a (u - y)          (row: t = round(k dt, 4), r, y, u, e)
+//! ```
+//!
+//! `round(k*dt, 4)` is Python's: round half to even on the exact binary value, which Rust's
+//! `{:.4}` formatting also does (see [`py_round`]).
+//!
+//! Decisions where the Python recipe is silent or crashes:
+//! - `steps` must be a whole number in `[0, MAX_STEPS]` (a negative count gives an empty table
+//!   in Python; we reject it; 0 is allowed: header only, `final_y=0.0000`);
+//! - `tau` must lie in `[0, TAU_MAX_S]` (`tau = -dt` divides by zero; a negative time constant
+//!   has no physical meaning);
+//! - the gains may be any finite numbers. An unstable loop grows until it overflows to `inf` and
+//!   then `nan`, and the table shows that exactly as Python prints it.
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::Args;
+use super::ik_workspace::finite;
+use super::manip_grid::{check_count, parse_count};
+use super::{CsvFile, RecipeInfo, RecipeOutput};
+use crate::args::{in_range, ArgSpec, Args};
 use crate::error::RecipeError;
+use crate::pyfmt::{fixed, CsvText};
 
+/// Controller and plant sample period, s (fixed in the recipe).
+pub const DT_S: f64 = 0.05;
+/// Setpoint of the step.
+pub const SETPOINT: f64 = 1.0;
+/// Most simulation steps: a CSV of about 80 MB is the most a browser tab should build.
+pub const MAX_STEPS: i64 = 1_000_000;
+/// Largest plant time constant, s (about 11.6 days of plant lag; the loop is 0.05 s).
+pub const TAU_MAX_S: f64 = 1e6;
+
+/// The CSV this recipe writes.
+pub const FILE_NAME: &str = "pid_step.csv";
+const HEADER: [&str; 5] = ["t", "r", "y", "u", "e"];
+
+const ARGS: [ArgSpec; 5] = [
+    ArgSpec {
+        name: "Kp",
+        default: "1.2",
+        help: "proportional gain",
+    },
+    ArgSpec {
+        name: "Ki",
+        default: "0.4",
+        help: "integral gain, 1/s",
+    },
+    ArgSpec {
+        name: "Kd",
+        default: "0.05",
+        help: "derivative gain, s",
+    },
+    ArgSpec {
+        name: "tau",
+        default: "0.8",
+        help: "plant time constant, s",
+    },
+    ArgSpec {
+        name: "steps",
+        default: "80",
+        help: "number of 0.05 s steps",
+    },
+];
+
+/// `pid-step`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
     id: "pid-step",
-    python: "TODO.py",
-    args: &[],
+    python: "pid_step_response.py",
+    args: &ARGS,
     flags: &[],
-    writes: &[],
+    writes: &[FILE_NAME],
 };
 
-pub fn run_args(_args: &Args) -> Result<RecipeOutput, RecipeError> {
-    Err(RecipeError::UnknownRecipe {
-        id: INFO.id.to_string(),
+/// Python's `round(x, ndigits)` for a float: the exact binary value rounded half to even to
+/// `ndigits` decimals, read back as the nearest double. Rust's fixed-precision formatting is
+/// exact and rounds half to even, so formatting and parsing back is Python's algorithm.
+///
+/// ```
+/// use bsv_playground::recipes::pid_step::py_round;
+/// assert_eq!(py_round(7.0 * 0.05, 4), 0.35); // 0.35000000000000003
+/// assert_eq!(py_round(0.125, 2), 0.12); // an exact tie goes to even
+/// assert_eq!(py_round(2.675, 2), 2.67); // 2.67499999...
+/// ```
+pub fn py_round(x: f64, ndigits: usize) -> f64 {
+    if !x.is_finite() {
+        return x;
+    }
+    format!("{x:.ndigits$}").parse().unwrap_or(x)
+}
+
+/// Controller gains, plant time constant and run length (the recipe's defaults: 1.2, 0.4, 0.05,
+/// 0.8 s, 80 steps).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PidParams {
+    pub kp: f64,
+    pub ki: f64,
+    pub kd: f64,
+    /// Plant time constant, s.
+    pub tau: f64,
+    /// Number of steps of [`DT_S`].
+    pub steps: i64,
+}
+
+impl Default for PidParams {
+    fn default() -> Self {
+        PidParams {
+            kp: 1.2,
+            ki: 0.4,
+            kd: 0.05,
+            tau: 0.8,
+            steps: 80,
+        }
+    }
+}
+
+impl PidParams {
+    /// Checks every parameter; the error names the first bad one.
+    pub fn validate(&self) -> Result<(), RecipeError> {
+        finite("Kp", self.kp)?;
+        finite("Ki", self.ki)?;
+        finite("Kd", self.kd)?;
+        finite("tau", self.tau)?;
+        in_range("tau", self.tau, 0.0, TAU_MAX_S)?;
+        check_count("steps", self.steps, 0, MAX_STEPS)?;
+        Ok(())
+    }
+}
+
+/// One row of the response.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PidSample {
+    /// `round(k dt, 4)`, s.
+    pub t: f64,
+    /// Setpoint.
+    pub r: f64,
+    /// Plant output after the step.
+    pub y: f64,
+    /// Controller output.
+    pub u: f64,
+    /// Error before the step.
+    pub e: f64,
+}
+
+/// Runs the loop, operation for operation as the recipe.
+///
+/// # Example
+/// ```
+/// use bsv_playground::recipes::pid_step::{simulate, summary, PidParams};
+/// let rows = simulate(&PidParams::default()).unwrap();
+/// assert_eq!(summary(&rows), "wrote 80 PID samples final_y=0.7967 -> pid_step.csv");
+/// ```
+pub fn simulate(params: &PidParams) -> Result<Vec<PidSample>, RecipeError> {
+    params.validate()?;
+    let (kp, ki, kd) = (params.kp, params.ki, params.kd);
+    let dt = DT_S;
+    let r = SETPOINT;
+    let (mut y, mut integ, mut prev_e) = (0.0f64, 0.0f64, 0.0f64);
+    let a = dt / (params.tau + dt);
+    let steps = usize::try_from(params.steps).unwrap_or(0);
+    let mut rows = Vec::with_capacity(steps);
+    for k in 0..steps {
+        let e = r - y;
+        integ += e * dt;
+        let deriv = (e - prev_e) / dt;
+        let u = kp * e + ki * integ + kd * deriv;
+        y = y + a * (u - y);
+        prev_e = e;
+        rows.push(PidSample {
+            t: py_round(k as f64 * dt, 4),
+            r,
+            y,
+            u,
+            e,
+        });
+    }
+    Ok(rows)
+}
+
+/// `pid_step.csv` exactly as the recipe writes it.
+pub fn to_csv(samples: &[PidSample]) -> String {
+    let mut csv = CsvText::with_header(&HEADER);
+    for s in samples {
+        csv.floats(&[s.t, s.r, s.y, s.u, s.e]);
+    }
+    csv.finish()
+}
+
+/// The line the recipe prints: the final plant output (0 before any step) with 4 decimals.
+pub fn summary(samples: &[PidSample]) -> String {
+    let final_y = samples.last().map_or(0.0, |s| s.y);
+    format!(
+        "wrote {} PID samples final_y={} -> {FILE_NAME}",
+        samples.len(),
+        fixed(final_y, 4)
+    )
+}
+
+/// Parses the recipe's arguments.
+pub fn params_from_args(args: &Args) -> Result<PidParams, RecipeError> {
+    Ok(PidParams {
+        kp: args.f64(0, &ARGS[0])?,
+        ki: args.f64(1, &ARGS[1])?,
+        kd: args.f64(2, &ARGS[2])?,
+        tau: args.f64(3, &ARGS[3])?,
+        steps: parse_count(ARGS[4].name, args.text(4, &ARGS[4]), 0, MAX_STEPS)?,
     })
+}
+
+/// Runs the recipe from command-line style arguments.
+pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
+    let rows = simulate(&params_from_args(args)?)?;
+    Ok(RecipeOutput {
+        files: vec![CsvFile {
+            name: FILE_NAME.to_string(),
+            text: to_csv(&rows),
+        }],
+        summary: summary(&rows),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
+        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
+        crate::recipes::run(INFO.id, &raw)
+    }
+
+    #[test]
+    fn defaults_in_one_place() {
+        assert_eq!(
+            params_from_args(&Args::default()).unwrap(),
+            PidParams::default()
+        );
+    }
+
+    #[test]
+    fn round_is_pythons() {
+        // Values checked against CPython 3.11 `round(k * 0.05, 4)` / `round(x, n)`.
+        assert_eq!(py_round(3.0 * 0.05, 4), 0.15);
+        assert_eq!(py_round(0.15000000000000002, 4), 0.15);
+        assert_eq!(py_round(1e-5 * 0.5, 5), 1e-05);
+        assert_eq!(py_round(0.000015, 5), 2e-05);
+        assert_eq!(py_round(0.0625, 3), 0.062);
+        assert_eq!(py_round(-0.00001, 4), -0.0);
+        assert!(py_round(-0.00001, 4).is_sign_negative());
+        assert_eq!(py_round(49999.950000000004, 4), 49999.95);
+        assert_eq!(py_round(1e300, 4), 1e300);
+        // Every t of a long run is the nearest double to k/20 (what round(k*dt, 4) yields).
+        for k in 0..20_000u32 {
+            let t = py_round(f64::from(k) * DT_S, 4);
+            assert_eq!(t, f64::from(k) / 20.0, "k={k}");
+        }
+    }
+
+    #[test]
+    fn reference_rows() {
+        let rows = simulate(&PidParams::default()).unwrap();
+        // golden/pid_default rows 1 and 3, exact.
+        assert_eq!(
+            rows[0],
+            PidSample {
+                t: 0.0,
+                r: 1.0,
+                y: 0.13058823529411764,
+                u: 2.2199999999999998,
+                e: 1.0
+            }
+        );
+        assert_eq!(rows[2].u, 0.9910527612456748);
+        assert_eq!(rows[7].t, 0.35);
+    }
+
+    #[test]
+    fn typed_api_agrees_with_csv_path() {
+        let params = PidParams {
+            kp: 2.0,
+            ki: 0.0,
+            kd: 0.1,
+            tau: 0.0,
+            steps: 5,
+        };
+        let rows = simulate(&params).unwrap();
+        let out = run(&["2", "0", "0.1", "0", "5"]).unwrap();
+        assert_eq!(out.file(FILE_NAME), Some(to_csv(&rows).as_str()));
+        assert_eq!(out.summary, summary(&rows));
+        // tau = 0: the plant follows u at once (a = 1).
+        assert!(rows.iter().all(|s| s.y == s.u));
+    }
+
+    #[test]
+    fn zero_steps_is_header_only() {
+        let out = run(&["1", "1", "1", "1", "0"]).unwrap();
+        assert_eq!(out.file(FILE_NAME), Some("t,r,y,u,e\r\n"));
+        assert_eq!(
+            out.summary,
+            "wrote 0 PID samples final_y=0.0000 -> pid_step.csv"
+        );
+    }
+
+    #[test]
+    fn unstable_gains_overflow_like_python() {
+        // y_{k+1} = y (1 - a (Kp + 1)) + a Kp grows by ~|1 - 101 a| ≈ 4.9 per step.
+        let rows = simulate(&PidParams {
+            kp: 100.0,
+            ki: 0.0,
+            kd: 0.0,
+            tau: 0.8,
+            steps: 600,
+        })
+        .unwrap();
+        let first_inf = rows.iter().position(|s| s.y.is_infinite()).unwrap();
+        assert!(rows[..first_inf].iter().all(|s| s.y.is_finite()));
+        assert!(rows[first_inf + 1].y.is_nan());
+    }
+
+    #[test]
+    fn rejections_name_the_parameter() {
+        let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
+            let e = run(raw).unwrap_err();
+            assert!(ok(&e), "{raw:?}: {e:?}");
+            assert_eq!(e.param(), Some(param), "{raw:?}");
+        };
+        use RecipeError as E;
+        check(&["1", "1", "1", "1", "-1"], "steps", |e| {
+            matches!(e, E::OutOfRange { .. })
+        });
+        check(
+            &["1", "1", "1", "1", "1000001"],
+            "steps",
+            |e| matches!(e, E::OutOfRange { max, .. } if *max == 1e6),
+        );
+        check(&["1", "1", "1", "1", "80.0"], "steps", |e| {
+            matches!(e, E::NotAnInteger { .. })
+        });
+        check(&["1", "1", "1", "-0.05"], "tau", |e| {
+            matches!(e, E::OutOfRange { .. })
+        });
+        check(&["1", "1", "x"], "Kd", |e| {
+            matches!(e, E::NotANumber { .. })
+        });
+        check(&["inf"], "Kp", |e| matches!(e, E::NotFinite { .. }));
+        let nan = PidParams {
+            ki: f64::NAN,
+            ..PidParams::default()
+        };
+        assert!(matches!(nan.validate(), Err(E::NotFinite { .. })));
+        let long = PidParams {
+            steps: MAX_STEPS,
+            ..PidParams::default()
+        };
+        assert_eq!(long.validate(), Ok(()));
+    }
 }

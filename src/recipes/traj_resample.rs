@@ -1,19 +1,994 @@
-//! Recipe `traj-resample`: PLACEHOLDER until its kernel lands (replace this whole file).
+//! Recipe `traj-resample` (`joint_traj_resample.py`): reads a joint trajectory CSV
+//! (`t_s,q1,q2,...`) and linearly interpolates every joint onto a uniform time grid.
+//!
+//! ```text
+//! t_new = np.arange(t[0], t[-1] + 1e-12, dt)           (crate::numpy::arange)
+//! q_j(x) = np.interp(x, t, q_j):  j = max{k : t[k] <= x}
+//!          x == t[j] or j is the last sample  ->  q[j]
+//!          otherwise  ->  slope (x - t[j]) + q[j],  slope = (q[j+1] - q[j]) / (t[j+1] - t[j])
+//!          (below t[0] -> q[0], above t[-1] -> q[-1])
+//! ```
+//!
+//! Without a path (or with an empty one, Python's `if not path:`) the recipe writes its labeled
+//! synthetic sample `traj_sample_labeled.csv` and resamples that. A path names an input file
+//! attached to the run ([`Args::input`]): the CLI reads it from disk, the browser passes what the
+//! user opened.
+//!
+//! The CSV reader follows Python's `csv.DictReader` (RFC 4180 quoting with `""` escapes, `\r\n`,
+//! `\n` or `\r` line ends, blank lines skipped), plus: a UTF-8 byte-order mark is dropped, blank
+//! lines before the header are skipped too, and the checks the reference leaves to Python
+//! tracebacks are errors naming the row and column: ragged rows, cells that are not finite
+//! numbers, fewer than 2 rows, no joint columns, and time that is not strictly increasing (the
+//! reference does not check that; np.interp silently gives nonsense). The `note` column is
+//! dropped, as in the recipe. Rows are the 1-based line of the file a record starts on (the
+//! header is row 1).
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::Args;
+use std::borrow::Cow;
+use std::collections::{HashMap, HashSet};
+use std::fmt::Write as _;
+
+use super::{CsvFile, RecipeInfo, RecipeOutput};
+use crate::args::{positive, within_limit, ArgSpec, Args};
 use crate::error::RecipeError;
+use crate::numpy::{arange, arange_len};
+use crate::pyfmt::{fixed, py_float, CsvText};
 
+/// Largest input CSV accepted, in bytes (128 MiB): a million rows of six joints is about 60 MB.
+pub const MAX_INPUT_BYTES: u64 = 128 * 1024 * 1024;
+
+/// Largest output, in cells (output rows × joints): 20 million, about 300 MB of CSV text.
+pub const MAX_OUTPUT_CELLS: u64 = 20_000_000;
+
+/// Largest input, in numeric cells (data rows × (1 + joints)): 20 million, 160 MB of `f64`.
+/// Keeps a 128 MiB file of tiny cells from exhausting a browser tab's memory; a million rows of
+/// six joints is 7 million.
+pub const MAX_INPUT_CELLS: u64 = 20_000_000;
+
+/// The output CSV.
+pub const RESAMPLED_NAME: &str = "traj_resampled.csv";
+
+/// The labeled sample the recipe writes when no path is given.
+pub const SAMPLE_NAME: &str = "traj_sample_labeled.csv";
+
+/// The recipe's synthetic sample, byte for byte (`\n` line ends, as Python writes it on Linux).
+pub const SAMPLE: &str = "t_s,q1,q2,note
+0.00,0.0,0.0,example-row
+0.10,0.2,0.1,example-row
+0.25,0.5,0.4,example-row
+0.40,0.7,0.6,example-row
+0.55,0.6,0.5,example-row
+";
+
+/// Name of the time column.
+pub const TIME_COLUMN: &str = "t_s";
+
+/// A column the recipe drops.
+pub const NOTE_COLUMN: &str = "note";
+
+/// Fewest data rows that can be interpolated.
+pub const MIN_ROWS: usize = 2;
+
+/// Added to the last time so that it lands on the grid despite rounding (the recipe's `1e-12`).
+const END_PAD_S: f64 = 1e-12;
+
+const ARGS: [ArgSpec; 2] = [
+    ArgSpec {
+        name: "csv_path",
+        default: "",
+        help: "trajectory CSV with t_s,q1,q2,... (empty: the labeled sample)",
+    },
+    ArgSpec {
+        name: "dt",
+        default: "0.02",
+        help: "time step of the uniform grid, seconds",
+    },
+];
+
+/// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
     id: "traj-resample",
-    python: "TODO.py",
-    args: &[],
+    python: "joint_traj_resample.py",
+    args: &ARGS,
     flags: &[],
-    writes: &[],
+    writes: &[RESAMPLED_NAME, SAMPLE_NAME],
 };
 
-pub fn run_args(_args: &Args) -> Result<RecipeOutput, RecipeError> {
-    Err(RecipeError::UnknownRecipe {
-        id: INFO.id.to_string(),
+/// The recipe's arguments; `Default` is the recipe's (the sample, 0.02 s).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ResampleParams {
+    /// Name of the attached input CSV; empty means the labeled sample.
+    pub csv_path: String,
+    /// Grid step, seconds.
+    pub dt: f64,
+}
+
+impl Default for ResampleParams {
+    fn default() -> Self {
+        ResampleParams {
+            csv_path: String::new(),
+            dt: 0.02,
+        }
+    }
+}
+
+impl ResampleParams {
+    /// Checks `dt > 0` (the output size is checked by [`resample`], which knows the span).
+    pub fn validate(&self) -> Result<(), RecipeError> {
+        positive(ARGS[1].name, self.dt)?;
+        Ok(())
+    }
+
+    /// Whether the run uses the labeled sample (Python's `not path`).
+    pub fn uses_sample(&self) -> bool {
+        self.csv_path.is_empty()
+    }
+
+    /// Reads the recipe's positional arguments.
+    pub fn from_args(args: &Args) -> Result<ResampleParams, RecipeError> {
+        Ok(ResampleParams {
+            csv_path: args.text(0, &ARGS[0]).to_string(),
+            dt: args.f64(1, &ARGS[1])?,
+        })
+    }
+}
+
+/// A parsed trajectory: time and one series per joint column.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trajectory {
+    /// Joint column names in file order (without `t_s` and `note`).
+    pub columns: Vec<String>,
+    /// Sample times, seconds, strictly increasing.
+    pub t: Vec<f64>,
+    /// `q[j][i]`: joint `columns[j]` at `t[i]`.
+    pub q: Vec<Vec<f64>>,
+}
+
+impl Trajectory {
+    /// Number of samples (data rows).
+    pub fn len(&self) -> usize {
+        self.t.len()
+    }
+
+    /// Whether it has no samples.
+    pub fn is_empty(&self) -> bool {
+        self.t.is_empty()
+    }
+
+    /// Checks the invariants a hand-built trajectory may break: at least [`MIN_ROWS`] samples,
+    /// one series per column, each as long as `t`, finite and strictly increasing time.
+    pub fn validate(&self) -> Result<(), RecipeError> {
+        if self.columns.is_empty() || self.q.is_empty() {
+            return Err(RecipeError::CsvNoJointColumns);
+        }
+        if self.t.len() < MIN_ROWS {
+            return Err(RecipeError::CsvTooFewRows {
+                rows: self.t.len(),
+                min: MIN_ROWS,
+            });
+        }
+        if self.q.len() != self.columns.len() {
+            return Err(RecipeError::WrongCount {
+                param: "columns".to_string(),
+                expected: self.columns.len(),
+                got: self.q.len(),
+            });
+        }
+        for (name, series) in self.columns.iter().zip(&self.q) {
+            if series.len() != self.t.len() {
+                return Err(RecipeError::WrongCount {
+                    param: name.clone(),
+                    expected: self.t.len(),
+                    got: series.len(),
+                });
+            }
+        }
+        for (i, t) in self.t.iter().enumerate() {
+            if !t.is_finite() {
+                return Err(RecipeError::CsvBadCell {
+                    row: i + 2,
+                    column: TIME_COLUMN.to_string(),
+                    value: py_float(*t),
+                });
+            }
+        }
+        if let Some(i) = self.t.windows(2).position(|w| w[1] <= w[0]) {
+            return Err(RecipeError::CsvTimeNotIncreasing { row: i + 3 });
+        }
+        Ok(())
+    }
+}
+
+/// The trajectory on the uniform grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Resampled {
+    /// Joint column names, as in the input.
+    pub columns: Vec<String>,
+    /// Grid times `np.arange(t[0], t[-1] + 1e-12, dt)`.
+    pub t: Vec<f64>,
+    /// `q[j][i]`: joint `columns[j]` at `t[i]`.
+    pub q: Vec<Vec<f64>>,
+}
+
+impl Resampled {
+    /// The recipe's `traj_resampled.csv`: `t_s` with 6 decimals, joints with 8, `\r\n` ends.
+    pub fn to_csv(&self) -> String {
+        let mut header = vec![TIME_COLUMN];
+        header.extend(self.columns.iter().map(String::as_str));
+        let mut out = CsvText::with_header(&header).finish();
+        out.reserve(self.t.len() * (10 + 12 * self.q.len()));
+        for (i, ti) in self.t.iter().enumerate() {
+            push_fixed(&mut out, *ti, 6);
+            for series in &self.q {
+                out.push(',');
+                push_fixed(&mut out, series.get(i).copied().unwrap_or(f64::NAN), 8);
+            }
+            out.push_str("\r\n");
+        }
+        out
+    }
+}
+
+/// Appends `f"{x:.{digits}f}"` without a temporary string for finite values.
+fn push_fixed(out: &mut String, x: f64, digits: usize) {
+    if x.is_finite() {
+        // Writing to a String cannot fail.
+        let _ = write!(out, "{x:.digits$}");
+    } else {
+        out.push_str(&fixed(x, digits));
+    }
+}
+
+/// Where one query point falls in the sample times (numpy's `binary_search_with_guess` result
+/// already reduced to the two cases `arr_interp` distinguishes).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Bracket {
+    /// Take sample `j` as is: `x == t[j]`, `j` is the last sample, or `x` is outside the range.
+    Sample(usize),
+    /// Interpolate between samples `j` and `j + 1`.
+    Between(usize),
+}
+
+/// Brackets every `x` in `xp` (strictly increasing, at least one value): `j` is the largest
+/// index with `xp[j] <= x`. A moving guess makes sorted queries linear time.
+fn brackets(x: &[f64], xp: &[f64]) -> Vec<Bracket> {
+    let last = xp.len().saturating_sub(1);
+    let (Some(&first_t), Some(&last_t)) = (xp.first(), xp.last()) else {
+        return Vec::new();
+    };
+    let mut j = 0usize;
+    x.iter()
+        .map(|&xv| {
+            if xv.is_nan() || xv < first_t {
+                return Bracket::Sample(0);
+            }
+            if xv > last_t {
+                return Bracket::Sample(last);
+            }
+            if xp.get(j).is_some_and(|&v| v > xv) {
+                // Unsorted query: search from scratch.
+                j = xp.partition_point(|&v| v <= xv).saturating_sub(1);
+            }
+            while xp.get(j + 1).is_some_and(|&v| v <= xv) {
+                j += 1;
+            }
+            if j >= last || xp.get(j) == Some(&xv) {
+                Bracket::Sample(j)
+            } else {
+                Bracket::Between(j)
+            }
+        })
+        .collect()
+}
+
+/// `np.interp(x, xp, fp)` with numpy's defaults (`left = fp[0]`, `right = fp[-1]`), operation for
+/// operation, for strictly increasing `xp` and `fp` as long as `xp`. NaN queries give NaN.
+///
+/// # Example
+/// ```
+/// use bsv_playground::recipes::traj_resample::interp;
+/// assert_eq!(interp(&[0.5, 2.0, -1.0], &[0.0, 1.0], &[10.0, 20.0]), vec![15.0, 20.0, 10.0]);
+/// ```
+pub fn interp(x: &[f64], xp: &[f64], fp: &[f64]) -> Vec<f64> {
+    let b = brackets(x, xp);
+    x.iter()
+        .zip(&b)
+        .map(|(&xv, &br)| interp_at(xv, br, xp, fp))
+        .collect()
+}
+
+fn interp_at(x: f64, bracket: Bracket, xp: &[f64], fp: &[f64]) -> f64 {
+    if x.is_nan() {
+        return x;
+    }
+    let at = |v: &[f64], k: usize| v.get(k).copied().unwrap_or(f64::NAN);
+    match bracket {
+        Bracket::Sample(j) => at(fp, j),
+        Bracket::Between(j) => {
+            let (x0, x1, y0, y1) = (at(xp, j), at(xp, j + 1), at(fp, j), at(fp, j + 1));
+            let slope = (y1 - y0) / (x1 - x0);
+            let value = slope * (x - x0) + y0;
+            if !value.is_nan() {
+                return value;
+            }
+            // numpy: if we get nan in one direction, try the other.
+            let value = slope * (x - x1) + y1;
+            if value.is_nan() && y0 == y1 {
+                y0
+            } else {
+                value
+            }
+        }
+    }
+}
+
+/// Resamples every joint onto `np.arange(t[0], t[-1] + 1e-12, dt)`. Rejects `dt <= 0` and
+/// outputs of more than [`MAX_OUTPUT_CELLS`] cells.
+pub fn resample(traj: &Trajectory, dt: f64) -> Result<Resampled, RecipeError> {
+    positive(ARGS[1].name, dt)?;
+    if !dt.is_finite() {
+        return Err(RecipeError::NotFinite {
+            param: ARGS[1].name.to_string(),
+        });
+    }
+    traj.validate()?;
+    let (start, stop) = match (traj.t.first(), traj.t.last()) {
+        (Some(a), Some(b)) => (*a, *b + END_PAD_S),
+        _ => {
+            return Err(RecipeError::CsvTooFewRows {
+                rows: 0,
+                min: MIN_ROWS,
+            })
+        }
+    };
+    let joints = traj.q.len() as f64;
+    within_limit(
+        ARGS[1].name,
+        arange_len(start, stop, dt) * joints,
+        MAX_OUTPUT_CELLS,
+    )?;
+    let t = arange(start, stop, dt, ARGS[1].name, MAX_OUTPUT_CELLS)?;
+    let b = brackets(&t, &traj.t);
+    let q = traj
+        .q
+        .iter()
+        .map(|fp| {
+            t.iter()
+                .zip(&b)
+                .map(|(&x, &br)| interp_at(x, br, &traj.t, fp))
+                .collect()
+        })
+        .collect();
+    Ok(Resampled {
+        columns: traj.columns.clone(),
+        t,
+        q,
     })
+}
+
+/// Parses a trajectory CSV (see the module docs for the dialect and the checks).
+pub fn parse_trajectory(text: &str) -> Result<Trajectory, RecipeError> {
+    parse_with_limits(text, MAX_INPUT_BYTES, MAX_INPUT_CELLS)
+}
+
+fn parse_with_limits(
+    text: &str,
+    max_bytes: u64,
+    max_cells: u64,
+) -> Result<Trajectory, RecipeError> {
+    let bytes = text.len() as u64;
+    if bytes > max_bytes {
+        return Err(RecipeError::InputTooLarge {
+            bytes,
+            limit: max_bytes,
+        });
+    }
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut reader = CsvReader::new(text);
+    let mut fields: Vec<Cow<'_, str>> = Vec::new();
+
+    let Some(_) = reader.next_record(&mut fields)? else {
+        return Err(RecipeError::CsvTooFewRows {
+            rows: 0,
+            min: MIN_ROWS,
+        });
+    };
+    let header: Vec<String> = fields.iter().map(|f| f.to_string()).collect();
+    let layout = ColumnLayout::new(&header)?;
+
+    let mut t: Vec<f64> = Vec::new();
+    let mut q: Vec<Vec<f64>> = vec![Vec::new(); layout.joint_names.len()];
+    let mut row_values = vec![0.0; layout.joint_names.len()];
+    let cells_per_row = 1 + layout.joint_names.len() as u64;
+    while let Some(row) = reader.next_record(&mut fields)? {
+        if fields.len() != header.len() {
+            return Err(RecipeError::CsvRagged {
+                row,
+                expected: header.len(),
+                got: fields.len(),
+            });
+        }
+        let mut time = 0.0;
+        for ((field, slot), name) in fields.iter().zip(&layout.slots).zip(&header) {
+            let target = match slot {
+                Slot::Ignored => continue,
+                Slot::Time => &mut time,
+                Slot::Joint(j) => match row_values.get_mut(*j) {
+                    Some(v) => v,
+                    None => continue,
+                },
+            };
+            *target = parse_cell(field).ok_or_else(|| RecipeError::CsvBadCell {
+                row,
+                column: name.clone(),
+                value: shorten(field),
+            })?;
+        }
+        if t.last().is_some_and(|&prev| time <= prev) {
+            return Err(RecipeError::CsvTimeNotIncreasing { row });
+        }
+        if (t.len() as u64 + 1) * cells_per_row > max_cells {
+            // Estimate the file's total from the line ends left, for the message.
+            let rows_left = reader.rest().bytes().filter(|&c| c == b'\n').count() as u64;
+            return Err(RecipeError::TooLarge {
+                param: ARGS[0].name.to_string(),
+                count: (t.len() as u64 + 1 + rows_left) * cells_per_row,
+                limit: max_cells,
+            });
+        }
+        t.push(time);
+        for (series, v) in q.iter_mut().zip(&row_values) {
+            series.push(*v);
+        }
+    }
+    if t.len() < MIN_ROWS {
+        return Err(RecipeError::CsvTooFewRows {
+            rows: t.len(),
+            min: MIN_ROWS,
+        });
+    }
+    Ok(Trajectory {
+        columns: layout.joint_names,
+        t,
+        q,
+    })
+}
+
+/// What one header position feeds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Slot {
+    Time,
+    Joint(usize),
+    Ignored,
+}
+
+/// How header positions map to time and joints, with `csv.DictReader`'s dict semantics: a
+/// repeated name keeps its first position in the column order and takes the last cell's value.
+struct ColumnLayout {
+    joint_names: Vec<String>,
+    slots: Vec<Slot>,
+}
+
+impl ColumnLayout {
+    /// Linear in the header width (a one-line file can have millions of columns).
+    fn new(header: &[String]) -> Result<ColumnLayout, RecipeError> {
+        // Last position of each name; the column order follows first appearances.
+        let mut last_index: HashMap<&str, usize> = HashMap::with_capacity(header.len());
+        for (i, name) in header.iter().enumerate() {
+            last_index.insert(name, i);
+        }
+        if !last_index.contains_key(TIME_COLUMN) {
+            return Err(RecipeError::CsvMissingColumn {
+                column: TIME_COLUMN.to_string(),
+            });
+        }
+        let mut slots = vec![Slot::Ignored; header.len()];
+        let mut joint_names = Vec::new();
+        let mut seen: HashSet<&str> = HashSet::with_capacity(header.len());
+        for name in header {
+            let Some(&last) = last_index.get(name.as_str()) else {
+                continue;
+            };
+            let first_appearance = seen.insert(name);
+            if name == TIME_COLUMN {
+                if let Some(slot) = slots.get_mut(last) {
+                    *slot = Slot::Time;
+                }
+            } else if name != NOTE_COLUMN && first_appearance {
+                if let Some(slot) = slots.get_mut(last) {
+                    *slot = Slot::Joint(joint_names.len());
+                }
+                joint_names.push(name.clone());
+            }
+        }
+        if joint_names.is_empty() {
+            return Err(RecipeError::CsvNoJointColumns);
+        }
+        Ok(ColumnLayout { joint_names, slots })
+    }
+}
+
+/// A cell as Python's `float()` reads it (surrounding whitespace, `_` between digits), but
+/// only finite values.
+fn parse_cell(cell: &str) -> Option<f64> {
+    let s = cell.trim();
+    let value = match s.parse::<f64>() {
+        Ok(v) => v,
+        Err(_) if s.contains('_') && underscores_between_digits(s) => {
+            s.replace('_', "").parse::<f64>().ok()?
+        }
+        Err(_) => return None,
+    };
+    value.is_finite().then_some(value)
+}
+
+fn underscores_between_digits(s: &str) -> bool {
+    let b = s.as_bytes();
+    b.iter().enumerate().all(|(i, &c)| {
+        c != b'_'
+            || (i > 0
+                && b.get(i - 1).is_some_and(u8::is_ascii_digit)
+                && b.get(i + 1).is_some_and(u8::is_ascii_digit))
+    })
+}
+
+/// A cell for an error message: at most 40 characters.
+fn shorten(cell: &str) -> String {
+    const MAX_CHARS: usize = 40;
+    match cell.char_indices().nth(MAX_CHARS) {
+        Some((cut, _)) => format!("{}…", &cell[..cut]),
+        None => cell.to_string(),
+    }
+}
+
+/// A minimal reader for Python's `excel` CSV dialect over borrowed text: unquoted fields and
+/// quoted fields without `""` are slices of the input, so a large file costs no allocation per
+/// cell.
+struct CsvReader<'a> {
+    text: &'a str,
+    pos: usize,
+    /// 1-based line at `pos`.
+    line: usize,
+}
+
+impl<'a> CsvReader<'a> {
+    fn new(text: &'a str) -> Self {
+        CsvReader {
+            text,
+            pos: 0,
+            line: 1,
+        }
+    }
+
+    /// The text not read yet.
+    fn rest(&self) -> &'a str {
+        self.text.get(self.pos..).unwrap_or_default()
+    }
+
+    fn byte(&self, at: usize) -> Option<u8> {
+        self.text.as_bytes().get(at).copied()
+    }
+
+    /// Consumes a line end at `pos` if there is one (`\r\n`, `\n` or `\r`).
+    fn eat_line_end(&mut self) -> bool {
+        match self.byte(self.pos) {
+            Some(b'\n') => {
+                self.pos += 1;
+                self.line += 1;
+                true
+            }
+            Some(b'\r') => {
+                self.pos += 1;
+                if self.byte(self.pos) == Some(b'\n') {
+                    self.pos += 1;
+                }
+                self.line += 1;
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// Advances to the next `,`, line end or the end; returns the slice passed over.
+    fn take_unquoted(&mut self) -> &'a str {
+        let start = self.pos;
+        let rest = self.text.as_bytes().get(start..).unwrap_or_default();
+        let len = rest
+            .iter()
+            .position(|&c| c == b',' || c == b'\n' || c == b'\r')
+            .unwrap_or(rest.len());
+        self.pos = start + len;
+        self.text.get(start..self.pos).unwrap_or_default()
+    }
+
+    /// Reads a quoted field whose opening quote is at `pos`.
+    fn take_quoted(&mut self, record_row: usize) -> Result<Cow<'a, str>, RecipeError> {
+        self.pos += 1;
+        let mut owned: Option<String> = None;
+        let mut segment_start = self.pos;
+        loop {
+            let Some(c) = self.byte(self.pos) else {
+                return Err(RecipeError::CsvUnterminatedQuote { row: record_row });
+            };
+            match c {
+                b'"' if self.byte(self.pos + 1) == Some(b'"') => {
+                    // An escaped quote: keep one.
+                    let piece = self.text.get(segment_start..=self.pos).unwrap_or_default();
+                    owned.get_or_insert_with(String::new).push_str(piece);
+                    self.pos += 2;
+                    segment_start = self.pos;
+                }
+                b'"' => break,
+                b'\n' => {
+                    self.line += 1;
+                    self.pos += 1;
+                }
+                b'\r' => {
+                    if self.byte(self.pos + 1) != Some(b'\n') {
+                        self.line += 1;
+                    }
+                    self.pos += 1;
+                }
+                _ => self.pos += 1,
+            }
+        }
+        let last_piece = self.text.get(segment_start..self.pos).unwrap_or_default();
+        // Skip the closing quote; like csv's non-strict mode, text after it joins the field.
+        self.pos += 1;
+        let tail = self.take_unquoted();
+        Ok(match owned {
+            None if tail.is_empty() => Cow::Borrowed(last_piece),
+            owned => {
+                let mut field = owned.unwrap_or_default();
+                field.push_str(last_piece);
+                field.push_str(tail);
+                Cow::Owned(field)
+            }
+        })
+    }
+
+    /// Reads the next non-blank record into `fields`; returns the line it starts on, or `None`
+    /// at the end of the text.
+    fn next_record(
+        &mut self,
+        fields: &mut Vec<Cow<'a, str>>,
+    ) -> Result<Option<usize>, RecipeError> {
+        fields.clear();
+        while self.eat_line_end() {}
+        if self.pos >= self.text.len() {
+            return Ok(None);
+        }
+        let row = self.line;
+        loop {
+            let field = if self.byte(self.pos) == Some(b'"') {
+                self.take_quoted(row)?
+            } else {
+                Cow::Borrowed(self.take_unquoted())
+            };
+            fields.push(field);
+            if self.byte(self.pos) == Some(b',') {
+                self.pos += 1;
+                continue;
+            }
+            self.eat_line_end();
+            return Ok(Some(row));
+        }
+    }
+}
+
+/// The text of the CSV `params` resamples: the sample, or the attached input it names.
+fn input_text<'a>(params: &ResampleParams, args: &'a Args) -> Result<&'a str, RecipeError> {
+    if params.uses_sample() {
+        return Ok(SAMPLE);
+    }
+    args.input(&params.csv_path)
+        .ok_or_else(|| RecipeError::InputMissing {
+            name: params.csv_path.clone(),
+        })
+}
+
+/// Runs the recipe on CSV `text` (the sample when `params.uses_sample()`).
+pub fn run_text(params: &ResampleParams, text: &str) -> Result<RecipeOutput, RecipeError> {
+    params.validate()?;
+    let traj = parse_trajectory(text)?;
+    let out = resample(&traj, params.dt)?;
+    let resampled_line = format!(
+        "resampled {} -> {} rows at dt={}s -> {RESAMPLED_NAME}",
+        traj.len(),
+        out.t.len(),
+        py_float(params.dt)
+    );
+    let mut files = vec![CsvFile {
+        name: RESAMPLED_NAME.to_string(),
+        text: out.to_csv(),
+    }];
+    let summary = if params.uses_sample() {
+        files.push(CsvFile {
+            name: SAMPLE_NAME.to_string(),
+            text: SAMPLE.to_string(),
+        });
+        format!("wrote labeled synthetic sample: {SAMPLE_NAME}\n{resampled_line}")
+    } else {
+        resampled_line
+    };
+    Ok(RecipeOutput { files, summary })
+}
+
+/// Entry point for the CLI and `runRecipe`.
+pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
+    let params = ResampleParams::from_args(args)?;
+    let text = input_text(&params, args)?;
+    run_text(&params, text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse_err(text: &str) -> RecipeError {
+        parse_trajectory(text).unwrap_err()
+    }
+
+    #[test]
+    fn arg_defaults_are_the_params_defaults() {
+        assert_eq!(
+            ResampleParams::from_args(&Args::default()).unwrap(),
+            ResampleParams::default()
+        );
+    }
+
+    #[test]
+    fn sample_resamples_like_the_recipe() {
+        let out = run_args(&Args::default()).unwrap();
+        assert_eq!(
+            out.summary,
+            "wrote labeled synthetic sample: traj_sample_labeled.csv\n\
+             resampled 5 -> 28 rows at dt=0.02s -> traj_resampled.csv"
+        );
+        assert_eq!(out.file(SAMPLE_NAME), Some(SAMPLE));
+        let csv = out.file(RESAMPLED_NAME).unwrap();
+        assert!(csv.starts_with("t_s,q1,q2\r\n0.000000,0.00000000,0.00000000\r\n"));
+        assert!(csv.ends_with("0.540000,0.60666667,0.50666667\r\n"));
+    }
+
+    #[test]
+    fn reference_runs_are_byte_identical() {
+        let out = run_args(&Args::default()).unwrap();
+        assert_eq!(
+            out.file(RESAMPLED_NAME),
+            Some(include_str!(
+                "../../tests/golden/resample_default/traj_resampled.csv"
+            ))
+        );
+        assert_eq!(
+            out.file(SAMPLE_NAME),
+            Some(include_str!(
+                "../../tests/golden/resample_default/traj_sample_labeled.csv"
+            ))
+        );
+        let input = include_str!("../../tests/golden/resample_3joint/input.csv");
+        let params = ResampleParams {
+            csv_path: "input.csv".into(),
+            dt: 0.05,
+        };
+        let out = run_text(&params, input).unwrap();
+        assert_eq!(
+            out.file(RESAMPLED_NAME),
+            Some(include_str!(
+                "../../tests/golden/resample_3joint/traj_resampled.csv"
+            ))
+        );
+        assert_eq!(
+            out.summary,
+            "resampled 40 -> 79 rows at dt=0.05s -> traj_resampled.csv"
+        );
+    }
+
+    #[test]
+    fn empty_path_means_the_sample_and_unknown_paths_are_named() {
+        let raw = vec![String::new(), "0.05".to_string()];
+        let args = Args::parse(&raw, INFO.args, INFO.flags).unwrap();
+        assert!(run_args(&args)
+            .unwrap()
+            .summary
+            .contains("resampled 5 -> 12 rows"));
+        let raw = vec!["mine.csv".to_string()];
+        let args = Args::parse(&raw, INFO.args, INFO.flags).unwrap();
+        assert_eq!(
+            run_args(&args).unwrap_err(),
+            RecipeError::InputMissing {
+                name: "mine.csv".into()
+            }
+        );
+        let args = args.with_inputs(vec![("mine.csv".into(), "t_s,a\n0,1\n1,3\n".into())]);
+        let out = run_args(&args).unwrap();
+        assert_eq!(
+            out.summary,
+            "resampled 2 -> 51 rows at dt=0.02s -> traj_resampled.csv"
+        );
+        assert_eq!(out.files.len(), 1);
+    }
+
+    #[test]
+    fn bom_crlf_quotes_and_blank_lines() {
+        let text = "\u{feff}\"t_s\",\"q,1\",note,q2\r\n\r\n0,\" 1.5 \",\"a \"\"quoted\"\"\nnote\",2\r\n1,2.5,x,4\r\n\r\n";
+        let traj = parse_trajectory(text).unwrap();
+        assert_eq!(traj.columns, vec!["q,1", "q2"]);
+        assert_eq!(traj.t, vec![0.0, 1.0]);
+        assert_eq!(traj.q, vec![vec![1.5, 2.5], vec![2.0, 4.0]]);
+        // A joint name that needs quoting is quoted in the output, as csv.writer does.
+        let out = resample(&traj, 0.5).unwrap().to_csv();
+        assert!(out.starts_with("t_s,\"q,1\",q2\r\n"));
+        // Lone \r line ends, no trailing newline, underscores like float().
+        let traj = parse_trajectory("t_s,q\r0,1_000\r1,2").unwrap();
+        assert_eq!(traj.q, vec![vec![1000.0, 2.0]]);
+    }
+
+    #[test]
+    fn repeated_column_takes_the_last_value_like_dictreader() {
+        let traj = parse_trajectory("t_s,q,q\n0,x,1\n1,y,2\n").unwrap();
+        assert_eq!(traj.columns, vec!["q"]);
+        assert_eq!(traj.q, vec![vec![1.0, 2.0]]);
+    }
+
+    #[test]
+    fn rejects_missing_time_column() {
+        assert_eq!(
+            parse_err("time,q1\n0,1\n1,2\n"),
+            RecipeError::CsvMissingColumn {
+                column: "t_s".into()
+            }
+        );
+    }
+
+    #[test]
+    fn rejects_bad_cells_naming_row_and_column() {
+        assert_eq!(
+            parse_err("t_s,q1,q2\n0,1,2\n0.1,abc,2\n"),
+            RecipeError::CsvBadCell {
+                row: 3,
+                column: "q1".into(),
+                value: "abc".into()
+            }
+        );
+        assert_eq!(
+            parse_err("t_s,q1\n\n0,1\n0.1,inf\n"),
+            RecipeError::CsvBadCell {
+                row: 4,
+                column: "q1".into(),
+                value: "inf".into()
+            }
+        );
+        assert_eq!(
+            parse_err("t_s,q1\n0,1\nnan,2\n"),
+            RecipeError::CsvBadCell {
+                row: 3,
+                column: "t_s".into(),
+                value: "nan".into()
+            }
+        );
+        assert!(matches!(
+            parse_err("t_s,q1\n0,1\n1,\n"),
+            RecipeError::CsvBadCell { row: 3, .. }
+        ));
+    }
+
+    #[test]
+    fn rejects_ragged_rows() {
+        assert_eq!(
+            parse_err("t_s,q1,q2\n0,1,2\n1,2\n"),
+            RecipeError::CsvRagged {
+                row: 3,
+                expected: 3,
+                got: 2
+            }
+        );
+        assert_eq!(
+            parse_err("t_s,q1\n0,1,9\n"),
+            RecipeError::CsvRagged {
+                row: 2,
+                expected: 2,
+                got: 3
+            }
+        );
+    }
+
+    #[test]
+    fn rejects_too_few_rows() {
+        assert_eq!(
+            parse_err("t_s,q1\n0,1\n"),
+            RecipeError::CsvTooFewRows { rows: 1, min: 2 }
+        );
+        assert_eq!(
+            parse_err(""),
+            RecipeError::CsvTooFewRows { rows: 0, min: 2 }
+        );
+    }
+
+    #[test]
+    fn rejects_time_not_strictly_increasing() {
+        assert_eq!(
+            parse_err("t_s,q1\n0,1\n0.5,2\n0.5,3\n"),
+            RecipeError::CsvTimeNotIncreasing { row: 4 }
+        );
+        assert_eq!(
+            parse_err("t_s,q1\n1,1\n0,2\n"),
+            RecipeError::CsvTimeNotIncreasing { row: 3 }
+        );
+    }
+
+    #[test]
+    fn rejects_no_joint_columns() {
+        assert_eq!(
+            parse_err("t_s,note\n0,a\n1,b\n"),
+            RecipeError::CsvNoJointColumns
+        );
+    }
+
+    #[test]
+    fn rejects_unterminated_quote() {
+        assert_eq!(
+            parse_err("t_s,q1\n0,1\n1,\"2\n"),
+            RecipeError::CsvUnterminatedQuote { row: 3 }
+        );
+    }
+
+    #[test]
+    fn rejects_oversized_input_and_output() {
+        let text = "t_s,a,b\n0,0,0\n1,0,0\n2,0,0\n3,0,0\n";
+        assert!(parse_with_limits(text, 100, 12).is_ok());
+        assert_eq!(
+            parse_with_limits(text, 20, 12).unwrap_err(),
+            RecipeError::InputTooLarge {
+                bytes: text.len() as u64,
+                limit: 20
+            }
+        );
+        // Stops at the third row; the message counts all four rows of three cells.
+        assert_eq!(
+            parse_with_limits(text, 100, 8).unwrap_err(),
+            RecipeError::TooLarge {
+                param: "csv_path".into(),
+                count: 12,
+                limit: 8
+            }
+        );
+        let traj = parse_trajectory("t_s,a,b\n0,0,0\n100,1,1\n").unwrap();
+        assert!(matches!(
+            resample(&traj, 1e-5),
+            Err(RecipeError::TooLarge {
+                count: 20_000_002,
+                limit: MAX_OUTPUT_CELLS,
+                ..
+            })
+        ));
+        assert!(matches!(
+            resample(&traj, 0.0),
+            Err(RecipeError::NotPositive { .. })
+        ));
+    }
+
+    #[test]
+    fn interp_matches_numpy_edge_cases() {
+        let xp = [0.0, 1.0, 3.0];
+        let fp = [0.0, 10.0, 30.0];
+        // Exact sample, last sample, outside on both sides, between, NaN.
+        let got = interp(&[1.0, 3.0, -1.0, 4.0, 2.0, f64::NAN], &xp, &fp);
+        assert_eq!(&got[..5], &[10.0, 30.0, 0.0, 30.0, 20.0]);
+        assert!(got[5].is_nan());
+        // Unsorted queries give the same as sorted ones.
+        assert_eq!(interp(&[2.0, 0.5], &xp, &fp), vec![20.0, 5.0]);
+    }
+
+    #[test]
+    fn hand_built_trajectory_is_checked() {
+        let traj = Trajectory {
+            columns: vec!["q1".into()],
+            t: vec![0.0, 1.0],
+            q: vec![vec![0.0]],
+        };
+        assert!(matches!(
+            resample(&traj, 0.1),
+            Err(RecipeError::WrongCount { .. })
+        ));
+    }
 }

@@ -1,19 +1,445 @@
-//! Recipe `trapezoid-profile`: PLACEHOLDER until its kernel lands (replace this whole file).
+//! Recipe `trapezoid-profile` (`trapezoid_velocity_profile.py`): accelerate at `amax`, cruise at
+//! `vmax`, decelerate at `amax` over a scalar distance `D`, sampled every `dt`.
+//!
+//! ```text
+//! D, vmax, amax = |distance|, |vmax|, |amax|
+//! t_acc = vmax / amax,  d_acc = amax t_acc² / 2
+//! if 2 d_acc >= D:  t_acc = sqrt(D / amax), t_flat = 0, vmax = amax t_acc   (triangle)
+//! else:             t_flat = (D - 2 d_acc) / vmax
+//! t_total = 2 t_acc + t_flat
+//! accel:  s = amax t² / 2                v = amax t           a = amax
+//! cruise: s = d_acc + vmax (t - t_acc)    v = vmax             a = 0
+//! decel:  s = d_acc + vmax t_flat + vmax tau - amax tau² / 2,  v = vmax - amax tau,  a = -amax
+//! ```
+//!
+//! Time advances by repeated `t += dt` while `t <= t_total + 1e-12`, so accumulated rounding
+//! decides the row count; each row prints `round(t, 5)`. In the triangle branch `d_acc` keeps the
+//! value from the untruncated `vmax`, so the decel positions are offset; the table reproduces
+//! that quirk.
+//!
+//! Decisions where the Python recipe is silent or crashes:
+//! - `dt` must be > 0 (Python loops forever on `dt <= 0`), and the run may hold at most
+//!   [`MAX_ROWS`] rows;
+//! - `|vmax|` and `|amax|` must be > 0 (Python divides by zero) and, like `|distance|`, at most
+//!   [`MAGNITUDE_MAX`]; `|vmax|`, `|amax|` at least [`MAGNITUDE_MIN`]. These keep `t_acc²` and
+//!   `d_acc` finite (Python raises OverflowError on `t_acc ** 2`). Signs are dropped as in the
+//!   recipe (`abs()`), so the range applies to the magnitude.
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::Args;
+use super::ik_workspace::finite;
+use super::pid_step::py_round;
+use super::{CsvFile, RecipeInfo, RecipeOutput};
+use crate::args::{positive, ArgSpec, Args};
 use crate::error::RecipeError;
+use crate::pyfmt::{fixed, CsvText};
 
+/// Smallest accepted `|vmax|`, `|amax|` (non-zero).
+pub const MAGNITUDE_MIN: f64 = 1e-9;
+/// Largest accepted `|distance|`, `|vmax|`, `|amax|`.
+pub const MAGNITUDE_MAX: f64 = 1e9;
+/// Most samples: a CSV of about 80 MB is the most a browser tab should build.
+pub const MAX_ROWS: u64 = 1_000_000;
+
+/// The CSV this recipe writes.
+pub const FILE_NAME: &str = "trap_profile.csv";
+const HEADER: [&str; 4] = ["t", "s", "v", "a"];
+
+const ARGS: [ArgSpec; 4] = [
+    ArgSpec {
+        name: "distance",
+        default: "1.0",
+        help: "move distance (sign ignored)",
+    },
+    ArgSpec {
+        name: "vmax",
+        default: "0.5",
+        help: "speed limit (sign ignored)",
+    },
+    ArgSpec {
+        name: "amax",
+        default: "1.0",
+        help: "acceleration limit (sign ignored)",
+    },
+    ArgSpec {
+        name: "dt",
+        default: "0.01",
+        help: "sample period, s",
+    },
+];
+
+/// `trapezoid-profile`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
     id: "trapezoid-profile",
-    python: "TODO.py",
-    args: &[],
+    python: "trapezoid_velocity_profile.py",
+    args: &ARGS,
     flags: &[],
-    writes: &[],
+    writes: &[FILE_NAME],
 };
 
-pub fn run_args(_args: &Args) -> Result<RecipeOutput, RecipeError> {
-    Err(RecipeError::UnknownRecipe {
-        id: INFO.id.to_string(),
+/// Move and sampling parameters (the recipe's defaults: 1.0, 0.5, 1.0, dt 0.01 s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TrapParams {
+    /// Distance; the recipe uses its magnitude.
+    pub distance: f64,
+    /// Speed limit; the recipe uses its magnitude.
+    pub vmax: f64,
+    /// Acceleration limit; the recipe uses its magnitude.
+    pub amax: f64,
+    /// Sample period, s.
+    pub dt: f64,
+}
+
+impl Default for TrapParams {
+    fn default() -> Self {
+        TrapParams {
+            distance: 1.0,
+            vmax: 0.5,
+            amax: 1.0,
+            dt: 0.01,
+        }
+    }
+}
+
+/// Python's `x ** y` for floats: C `pow`, the same libm call CPython and numpy make. Not
+/// folded to `x * x` (LLVM would, but glibc's `pow(x, 2)` is not always correctly rounded and
+/// the recipe's digits come from it).
+pub(crate) fn py_pow(base: f64, exponent: f64) -> f64 {
+    base.powf(std::hint::black_box(exponent))
+}
+
+fn magnitude(param: &str, value: f64, min: f64) -> Result<f64, RecipeError> {
+    let m = finite(param, value)?.abs();
+    if (min..=MAGNITUDE_MAX).contains(&m) {
+        Ok(m)
+    } else {
+        Err(RecipeError::OutOfRange {
+            param: param.to_string(),
+            value: m,
+            min,
+            max: MAGNITUDE_MAX,
+        })
+    }
+}
+
+/// The phase timing of one profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Plan {
+    triangle: bool,
+    amax: f64,
+    vmax_used: f64,
+    t_acc: f64,
+    d_acc: f64,
+    t_flat: f64,
+    t_total: f64,
+}
+
+impl TrapParams {
+    /// Checks every parameter and the row count; the error names the first bad one.
+    pub fn validate(&self) -> Result<(), RecipeError> {
+        self.plan().map(|_| ())
+    }
+
+    fn plan(&self) -> Result<Plan, RecipeError> {
+        let distance = magnitude("distance", self.distance, 0.0)?;
+        for (param, value) in [("vmax", self.vmax), ("amax", self.amax)] {
+            if value == 0.0 {
+                positive(param, value)?;
+            }
+        }
+        let mut vmax = magnitude("vmax", self.vmax, MAGNITUDE_MIN)?;
+        let amax = magnitude("amax", self.amax, MAGNITUDE_MIN)?;
+        finite("dt", self.dt)?;
+        positive("dt", self.dt)?;
+        let mut t_acc = vmax / amax;
+        let d_acc = 0.5 * amax * py_pow(t_acc, 2.0);
+        let t_flat;
+        let triangle = 2.0 * d_acc >= distance;
+        if triangle {
+            t_acc = (distance / amax).sqrt();
+            t_flat = 0.0;
+            vmax = amax * t_acc;
+        } else {
+            t_flat = (distance - 2.0 * d_acc) / vmax;
+        }
+        let t_total = 2.0 * t_acc + t_flat;
+        // Rows are about (t_total + 1e-12) / dt + 1; the loop re-checks the exact count.
+        let estimate = (t_total + 1e-12) / self.dt;
+        if estimate.is_nan() || estimate >= MAX_ROWS as f64 {
+            return Err(too_many_rows(estimate + 1.0));
+        }
+        Ok(Plan {
+            triangle,
+            amax,
+            vmax_used: vmax,
+            t_acc,
+            d_acc,
+            t_flat,
+            t_total,
+        })
+    }
+}
+
+fn too_many_rows(count: f64) -> RecipeError {
+    RecipeError::TooLarge {
+        param: "dt".to_string(),
+        count: if count.is_finite() {
+            count as u64
+        } else {
+            u64::MAX
+        },
+        limit: MAX_ROWS,
+    }
+}
+
+/// One row: time (rounded to 5 decimals), position, velocity, acceleration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TrapSample {
+    pub t: f64,
+    pub s: f64,
+    pub v: f64,
+    pub a: f64,
+}
+
+/// The sampled profile and what the summary line reports.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Profile {
+    /// `2 t_acc + t_flat`, s.
+    pub t_total: f64,
+    /// The cruise speed actually reached (lower than `vmax` for a triangle).
+    pub vmax_used: f64,
+    /// Whether the move never reaches `vmax` (no cruise phase).
+    pub triangle: bool,
+    pub samples: Vec<TrapSample>,
+}
+
+/// Samples the profile, operation for operation as the recipe.
+///
+/// # Example
+/// ```
+/// use bsv_playground::recipes::trapezoid_profile::{compute, TrapParams};
+/// let p = compute(&TrapParams::default()).unwrap();
+/// assert_eq!(p.summary(), "wrote 251 samples t_total=2.5000s vmax_used=0.5000 -> trap_profile.csv");
+/// ```
+pub fn compute(params: &TrapParams) -> Result<Profile, RecipeError> {
+    let plan = params.plan()?;
+    let Plan {
+        triangle,
+        amax,
+        vmax_used: vmax,
+        t_acc,
+        d_acc,
+        t_flat,
+        t_total,
+    } = plan;
+    let dt = params.dt;
+    let mut samples = Vec::new();
+    let mut t = 0.0f64;
+    while t <= t_total + 1e-12 {
+        if samples.len() as u64 >= MAX_ROWS {
+            return Err(too_many_rows(MAX_ROWS as f64 + 1.0));
+        }
+        let (s, v, a);
+        if t < t_acc {
+            a = amax;
+            v = amax * t;
+            s = 0.5 * amax * py_pow(t, 2.0);
+        } else if t < t_acc + t_flat {
+            a = 0.0;
+            v = vmax;
+            s = d_acc + vmax * (t - t_acc);
+        } else {
+            let tau = t - (t_acc + t_flat);
+            a = -amax;
+            v = vmax - amax * tau;
+            s = d_acc + vmax * t_flat + vmax * tau - 0.5 * amax * py_pow(tau, 2.0);
+        }
+        samples.push(TrapSample {
+            t: py_round(t, 5),
+            s,
+            v,
+            a,
+        });
+        t += dt;
+    }
+    Ok(Profile {
+        t_total,
+        vmax_used: vmax,
+        triangle,
+        samples,
     })
+}
+
+impl Profile {
+    /// `trap_profile.csv` exactly as the recipe writes it.
+    pub fn to_csv(&self) -> String {
+        let mut csv = CsvText::with_header(&HEADER);
+        for s in &self.samples {
+            csv.floats(&[s.t, s.s, s.v, s.a]);
+        }
+        csv.finish()
+    }
+
+    /// The line the recipe prints.
+    pub fn summary(&self) -> String {
+        format!(
+            "wrote {} samples t_total={}s vmax_used={} -> {FILE_NAME}",
+            self.samples.len(),
+            fixed(self.t_total, 4),
+            fixed(self.vmax_used, 4)
+        )
+    }
+}
+
+/// Parses the recipe's arguments.
+pub fn params_from_args(args: &Args) -> Result<TrapParams, RecipeError> {
+    Ok(TrapParams {
+        distance: args.f64(0, &ARGS[0])?,
+        vmax: args.f64(1, &ARGS[1])?,
+        amax: args.f64(2, &ARGS[2])?,
+        dt: args.f64(3, &ARGS[3])?,
+    })
+}
+
+/// Runs the recipe from command-line style arguments.
+pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
+    let profile = compute(&params_from_args(args)?)?;
+    Ok(RecipeOutput {
+        files: vec![CsvFile {
+            name: FILE_NAME.to_string(),
+            text: profile.to_csv(),
+        }],
+        summary: profile.summary(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
+        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
+        crate::recipes::run(INFO.id, &raw)
+    }
+
+    #[test]
+    fn defaults_in_one_place() {
+        assert_eq!(
+            params_from_args(&Args::default()).unwrap(),
+            TrapParams::default()
+        );
+    }
+
+    #[test]
+    fn trapezoid_and_triangle_reference_summaries() {
+        let p = compute(&TrapParams::default()).unwrap();
+        assert!(!p.triangle);
+        assert_eq!(p.samples[1].s, 5e-05);
+        let tri = run(&["0.2", "1.0", "2.0", "0.005"]).unwrap();
+        assert_eq!(
+            tri.summary,
+            "wrote 127 samples t_total=0.6325s vmax_used=0.6325 -> trap_profile.csv"
+        );
+    }
+
+    #[test]
+    fn signs_are_dropped_like_abs() {
+        let a = run(&["-1.0", "-0.5", "-1.0", "0.01"]).unwrap();
+        let b = run(&[]).unwrap();
+        assert_eq!(a, b);
+    }
+
+    #[test]
+    fn zero_distance_is_one_row_with_the_triangle_quirk() {
+        // Python: t_total = 0, one decel row whose s is the untruncated d_acc = 0.125.
+        let out = run(&["0", "0.5", "1.0", "0.01"]).unwrap();
+        assert_eq!(
+            out.file(FILE_NAME),
+            Some("t,s,v,a\r\n0.0,0.125,0.0,-1.0\r\n")
+        );
+        assert_eq!(
+            out.summary,
+            "wrote 1 samples t_total=0.0000s vmax_used=0.0000 -> trap_profile.csv"
+        );
+    }
+
+    #[test]
+    fn typed_api_agrees_with_csv_path() {
+        let params = TrapParams {
+            distance: 3.0,
+            vmax: 2.0,
+            amax: 4.0,
+            dt: 0.07,
+        };
+        let p = compute(&params).unwrap();
+        let out = run(&["3", "2", "4", "0.07"]).unwrap();
+        assert_eq!(out.file(FILE_NAME), Some(p.to_csv().as_str()));
+        assert_eq!(out.summary, p.summary());
+        // Cruise phase present; ends at rest at the full distance.
+        assert!(p.samples.iter().any(|s| s.a == 0.0));
+        let t_total = 2.0 * 0.5 + 1.0;
+        assert_eq!(p.t_total, t_total);
+    }
+
+    #[test]
+    fn rejections_name_the_parameter() {
+        let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
+            let e = run(raw).unwrap_err();
+            assert!(ok(&e), "{raw:?}: {e:?}");
+            assert_eq!(e.param(), Some(param), "{raw:?}");
+        };
+        use RecipeError as E;
+        check(&["1", "0.5", "1", "0"], "dt", |e| {
+            matches!(e, E::NotPositive { .. })
+        });
+        check(&["1", "0.5", "1", "-0.01"], "dt", |e| {
+            matches!(e, E::NotPositive { .. })
+        });
+        check(
+            &["1", "0.5", "1", "1e-7"],
+            "dt",
+            |e| matches!(e, E::TooLarge { limit, .. } if *limit == MAX_ROWS),
+        );
+        check(&["1", "0", "1"], "vmax", |e| {
+            matches!(e, E::NotPositive { .. })
+        });
+        check(&["1", "0.5", "0"], "amax", |e| {
+            matches!(e, E::NotPositive { .. })
+        });
+        check(&["1", "0.5", "1e-300"], "amax", |e| {
+            matches!(e, E::OutOfRange { .. })
+        });
+        check(
+            &["-2e9"],
+            "distance",
+            |e| matches!(e, E::OutOfRange { value, .. } if *value == 2e9),
+        );
+        check(&["1", "x"], "vmax", |e| matches!(e, E::NotANumber { .. }));
+        // Extremes within the ranges stay finite or are rejected by the row count.
+        for raw in [
+            ["1e9", "1e-9", "1e9", "1e12"],
+            ["1e9", "1e9", "1e-9", "1e30"],
+            ["1e-300", "1e9", "1e-9", "1"],
+        ] {
+            match run(&raw) {
+                Ok(out) => assert!(!out.file(FILE_NAME).unwrap().contains("inf")),
+                Err(e) => assert!(matches!(e, E::TooLarge { .. }), "{raw:?} {e:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn row_count_limit() {
+        // t_total = 2.5 s: dt = 2.5e-6 makes ~1e6 + 1 rows, over the limit.
+        let e = compute(&TrapParams {
+            dt: 2.5e-6,
+            ..TrapParams::default()
+        })
+        .unwrap_err();
+        assert!(matches!(e, RecipeError::TooLarge { .. }));
+        let ok = compute(&TrapParams {
+            dt: 2.6e-6,
+            ..TrapParams::default()
+        })
+        .unwrap();
+        assert!(ok.samples.len() as u64 <= MAX_ROWS);
+    }
 }

@@ -1,0 +1,20 @@
+// Wasm half of `make bench`: the same cases as examples/bench.rs, in Node, from a release
+// build with the `bench` feature (target/bench-pkg, built by scripts/bench.sh).
+import { createRequire } from 'node:module';
+const require = createRequire(import.meta.url);
+const wasm = require('../target/bench-pkg/bsv_playground.js');
+
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+};
+console.log('| case | wasm (Node) median ms | min ms |');
+console.log('|---|---:|---:|');
+wasm.benchCaseNames().forEach((name, i) => {
+  try {
+    const times = Array.from(wasm.benchCase(i, 5));
+    console.log(`| ${name} | ${median(times).toFixed(1)} | ${Math.min(...times).toFixed(1)} |`);
+  } catch (e) {
+    console.log(`| ${name} | error: ${e.message} | |`);
+  }
+});

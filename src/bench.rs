@@ -1,0 +1,102 @@
+//! The benchmark cases of `make bench`, shared by the native runner (`examples/bench.rs`) and
+//! the wasm runner (`scripts/bench-wasm.mjs`, through `benchCase` when built with the `bench`
+//! feature). Each case is a whole recipe run through the same entry point as the CLI and
+//! `runRecipe`: arguments parsed, kernel run, CSV text formatted.
+
+use crate::recipes::{self, RecipeOutput};
+use crate::RecipeError;
+
+/// One benchmark: a recipe with its arguments (and an input file for traj-resample).
+#[derive(Debug, Clone)]
+pub struct BenchCase {
+    pub name: &'static str,
+    pub id: &'static str,
+    pub args: &'static [&'static str],
+    /// `(rows, joints)` of a generated trajectory CSV passed as `traj.csv`.
+    pub trajectory: Option<(usize, usize)>,
+}
+
+/// The cases of the kernels issue: sizes that a page or a learner can really ask for.
+pub const CASES: &[BenchCase] = &[
+    BenchCase {
+        name: "ik-workspace 401x401 (1 mm over ±200 mm)",
+        id: "ik-workspace",
+        args: &["0.12", "0.10", "200", "1"],
+        trajectory: None,
+    },
+    BenchCase {
+        name: "manip-grid n=512",
+        id: "manip-grid",
+        args: &["0.12", "0.10", "512"],
+        trajectory: None,
+    },
+    BenchCase {
+        name: "jacobian-2r 62,800 samples",
+        id: "jacobian-2r",
+        args: &["0.12", "0.10", "0", "6.27995", "0.0001", "0.8"],
+        trajectory: None,
+    },
+    BenchCase {
+        name: "rrt-2d 20,000 iterations (goal unreachable)",
+        id: "rrt-2d",
+        args: &["7", "20000", "--goal-x", "0.5", "--goal-y", "0.5"],
+        trajectory: None,
+    },
+    BenchCase {
+        name: "pendulum-energy 60 s at 2 ms",
+        id: "pendulum-energy",
+        args: &["60"],
+        trajectory: None,
+    },
+    BenchCase {
+        name: "traj-resample 1,000,000 rows x 6 joints",
+        id: "traj-resample",
+        args: &["traj.csv", "0.001"],
+        trajectory: Some((1_000_000, 6)),
+    },
+];
+
+/// A smooth, irregularly sampled trajectory CSV with `rows` rows and `joints` joint columns.
+pub fn trajectory_csv(rows: usize, joints: usize) -> String {
+    let mut text = String::with_capacity(rows * (10 + joints * 12));
+    text.push_str("t_s");
+    for j in 1..=joints {
+        text.push_str(&format!(",q{j}"));
+    }
+    text.push('\n');
+    for i in 0..rows {
+        // Jittered timestamps, strictly increasing, about 1 ms apart.
+        let t = i as f64 * 0.001 + 0.0002 * ((i * 7919) % 5) as f64;
+        text.push_str(&format!("{t:.6}"));
+        for j in 0..joints {
+            let q = (t * (0.5 + j as f64 * 0.3)).sin() * (1.0 + j as f64 * 0.1);
+            text.push_str(&format!(",{q:.6}"));
+        }
+        text.push('\n');
+    }
+    text
+}
+
+/// Prepares a case's inputs (outside the timed part).
+pub fn inputs(case: &BenchCase) -> Vec<(String, String)> {
+    match case.trajectory {
+        Some((rows, joints)) => vec![("traj.csv".to_string(), trajectory_csv(rows, joints))],
+        None => Vec::new(),
+    }
+}
+
+/// Runs a case once: the timed part.
+pub fn run(case: &BenchCase, inputs: Vec<(String, String)>) -> Result<RecipeOutput, RecipeError> {
+    let args: Vec<String> = case.args.iter().map(|s| s.to_string()).collect();
+    recipes::run_with_inputs(case.id, &args, inputs)
+}
+
+/// Median of a list of timings.
+pub fn median(times: &mut [f64]) -> f64 {
+    times.sort_by(f64::total_cmp);
+    match times.len() {
+        0 => f64::NAN,
+        n if n % 2 == 1 => times[n / 2],
+        n => 0.5 * (times[n / 2 - 1] + times[n / 2]),
+    }
+}

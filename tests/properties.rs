@@ -1,0 +1,401 @@
+#![cfg(not(target_arch = "wasm32"))]
+//! Cross-recipe properties (proptest, native only):
+//!
+//! - every recipe in `RECIPES`, fed random argument strings (numbers in and out of range,
+//!   garbage, empty, huge, NaN, unknown flags), never panics and either fails with an error or
+//!   returns well-formed output without `nan` where the Python recipe would not print one;
+//! - every recipe returns `Ok` for valid arguments (its defaults, scaled), and the six recipes
+//!   with typed entry points return `Ok` across their valid ranges, with the typed API and the
+//!   CSV path agreeing;
+//! - FK(IK(p)) = p inside the reachable annulus of a planar 2R arm, for both elbow branches.
+//!
+//! Recipes that still return the placeholder error (`UnknownRecipe` for their own id) are
+//! skipped until their kernel lands. Case counts keep the whole file to a few seconds.
+
+use std::sync::OnceLock;
+
+use bsv_playground::planar2r::{Arm, Elbow};
+use bsv_playground::recipes::{
+    self, cubic_path, ik_workspace, jacobian_2r, manip_grid, pid_step, trapezoid_profile,
+    RecipeOutput, RECIPES,
+};
+use bsv_playground::RecipeError;
+use proptest::prelude::*;
+
+/// Whether each recipe of `RECIPES` has landed (its defaults do not give the placeholder error).
+fn landed() -> &'static [bool] {
+    static LANDED: OnceLock<Vec<bool>> = OnceLock::new();
+    LANDED.get_or_init(|| {
+        RECIPES
+            .iter()
+            .map(|r| {
+                !matches!(
+                    recipes::run(r.info.id, &[]),
+                    Err(RecipeError::UnknownRecipe { ref id }) if id == r.info.id
+                )
+            })
+            .collect()
+    })
+}
+
+/// `cases` cases; failures are reported with their minimal input, not persisted to a file.
+fn config(cases: u32) -> ProptestConfig {
+    ProptestConfig {
+        failure_persistence: None,
+        ..ProptestConfig::with_cases(cases)
+    }
+}
+
+fn run(id: &str, raw: &[String]) -> Result<RecipeOutput, RecipeError> {
+    recipes::run(id, raw)
+}
+
+fn has_nan(text: &str) -> bool {
+    text.contains("nan") || text.contains("NaN")
+}
+
+/// Whether a CSV shows a loop that blew up: an infinity, or a number of magnitude >= 1e100.
+fn shows_divergence(csv: &str) -> bool {
+    csv.split(['\r', '\n', ','])
+        .filter_map(|cell| cell.parse::<f64>().ok())
+        .any(|v| v.is_infinite() || v.abs() >= 1e100)
+}
+
+/// Output checks shared by every `Ok`: files are the declared ones, CSV text is Python's
+/// (`\r\n` rows, a header), and `nan` appears only where the reference prints it:
+/// rrt-2d's summary (path length when the goal is not reached) and a diverging pid-step loop.
+fn check_output(id: &str, out: &RecipeOutput, writes: &[&str]) -> Result<(), TestCaseError> {
+    prop_assert!(!out.summary.is_empty(), "{id}: empty summary");
+    prop_assert!(
+        !out.summary.ends_with('\n'),
+        "{id}: summary ends with a newline"
+    );
+    for file in &out.files {
+        prop_assert!(
+            writes.contains(&file.name.as_str()),
+            "{id}: undeclared file {}",
+            file.name
+        );
+        // csv.writer rows end in CRLF; a file Python writes verbatim (traj-resample's
+        // sample) ends in LF. Either way: a header and a complete last line.
+        prop_assert!(
+            file.text.ends_with('\n') && file.text.lines().next().is_some_and(|h| !h.is_empty()),
+            "{id}: {} is not a complete table",
+            file.name
+        );
+        let nan_ok = id == "pid-step" && shows_divergence(&file.text);
+        prop_assert!(
+            nan_ok || !has_nan(&file.text),
+            "{id}: nan in {}: {}",
+            file.name,
+            &file.text[..file.text.len().min(400)]
+        );
+    }
+    let nan_ok =
+        id == "rrt-2d" || (id == "pid-step" && out.files.iter().any(|f| shows_divergence(&f.text)));
+    prop_assert!(
+        nan_ok || !has_nan(&out.summary),
+        "{id}: nan in summary {}",
+        out.summary
+    );
+    Ok(())
+}
+
+/// One argument as a user might type it: numbers of every size and sign, integers, lists,
+/// special values, garbage.
+fn arg_text() -> impl Strategy<Value = String> {
+    prop_oneof![
+        4 => (-10.0f64..10.0).prop_map(|v| v.to_string()),
+        2 => (-1e4f64..1e4).prop_map(|v| format!("{v:e}")),
+        2 => (-50i64..3000).prop_map(|v| v.to_string()),
+        2 => any::<f64>().prop_map(|v| v.to_string()),
+        1 => any::<i64>().prop_map(|v| v.to_string()),
+        1 => (-3.0f64..3.0, -3.0f64..3.0, -3.0f64..3.0)
+            .prop_map(|(a, b, c)| format!("{a},{b},{c}")),
+        3 => prop::sample::select(vec![
+            "0", "-0", "0.0", "1", "-1", "1e308", "-1e308", "1e-308", "5e-324", "1e400",
+            "-1e400", "nan", "NaN", "inf", "-inf", "infinity", "", " ", "abc", "1,2", "1,2,3",
+            "1,,2", "1e-12", "99999999999999999999", "-99999999999999999999", "--", "-", ".",
+            "1_000", "0x10", "１", "1e", "+5", " 3 ", "euler", "rk4", "2.5e-6", "1000001",
+            "1024", "1025", "1001",
+        ])
+        .prop_map(str::to_string),
+        1 => "[ -~]{0,12}",
+    ]
+}
+
+/// A recipe index, positional arguments and (flag selector, value, unknown-flag) triples.
+fn raw_call() -> impl Strategy<Value = (usize, Vec<String>, Vec<(usize, String, bool)>)> {
+    (
+        0..RECIPES.len(),
+        prop::collection::vec(arg_text(), 0..=13),
+        prop::collection::vec(
+            (any::<usize>(), arg_text(), prop::bool::weighted(0.1)),
+            0..=3,
+        ),
+    )
+}
+
+proptest! {
+    #![proptest_config(config(160))]
+
+    #[test]
+    fn random_arguments_never_panic((index, positional, flags) in raw_call()) {
+        let recipe = &RECIPES[index];
+        let info = recipe.info;
+        let mut raw = positional;
+        for (pick, value, unknown) in flags {
+            if unknown || info.flags.is_empty() {
+                raw.push("--no-such-flag".to_string());
+            } else {
+                raw.push(format!("--{}", info.flags[pick % info.flags.len()].name));
+            }
+            raw.push(value);
+        }
+        match run(info.id, &raw) {
+            Ok(out) => check_output(info.id, &out, info.writes)?,
+            Err(e) => {
+                // Every error renders, and one naming a parameter names a real one.
+                prop_assert!(!e.to_string().is_empty());
+                if let Some(param) = e.param() {
+                    let known = info.args.iter().chain(info.flags).any(|a| a.name == param);
+                    prop_assert!(known || param == "out", "{}: unknown param {param} in {e}", info.id);
+                }
+            }
+        }
+    }
+}
+
+/// Whether every comma-separated part of a default is a number (so it can be scaled).
+fn numeric_default(text: &str) -> bool {
+    !text.is_empty() && text.split(',').all(|p| p.trim().parse::<f64>().is_ok())
+}
+
+/// A default scaled by `factor`: integers stay integers, lists scale element-wise.
+fn scaled(text: &str, factor: f64) -> String {
+    text.split(',')
+        .map(|part| {
+            let part = part.trim();
+            match part.parse::<i64>() {
+                Ok(i) => ((i as f64 * factor).round() as i64)
+                    .max(i.min(1))
+                    .to_string(),
+                Err(_) => {
+                    let v: f64 = part.parse().unwrap_or(0.0);
+                    (v * factor).to_string()
+                }
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+proptest! {
+    #![proptest_config(config(48))]
+
+    #[test]
+    fn scaled_defaults_are_accepted(
+        index in 0..RECIPES.len(),
+        factors in prop::collection::vec((0.5f64..1.5, any::<bool>()), 13),
+    ) {
+        prop_assume!(landed()[index]);
+        let info = RECIPES[index].info;
+        // Pass a prefix of the positional arguments, up to the first non-numeric default
+        // (a path, a choice), varying each numeric one or leaving its default text.
+        let mut raw = Vec::new();
+        for (spec, (factor, vary)) in info.args.iter().zip(&factors) {
+            if !numeric_default(spec.default) {
+                break;
+            }
+            raw.push(if *vary { scaled(spec.default, *factor) } else { spec.default.to_string() });
+        }
+        match run(info.id, &raw) {
+            Ok(out) => check_output(info.id, &out, info.writes)?,
+            Err(e) => prop_assert!(false, "{} {raw:?}: {e}", info.id),
+        }
+    }
+}
+
+fn single_file(out: &RecipeOutput) -> &str {
+    out.files.first().map_or("", |f| f.text.as_str())
+}
+
+fn strings(values: &[f64]) -> Vec<String> {
+    values.iter().map(|v| v.to_string()).collect()
+}
+
+proptest! {
+    #![proptest_config(config(40))]
+
+    #[test]
+    fn ik_workspace_valid_and_typed_equals_csv(
+        l1 in 0.01f64..1.0,
+        l2 in 0.01f64..1.0,
+        half_mm in 0.0f64..1500.0,
+        per_axis in 1u32..60,
+    ) {
+        let step_mm = (2.0 * half_mm / f64::from(per_axis)).max(0.5);
+        let params = ik_workspace::WorkspaceParams { l1, l2, half_mm, step_mm };
+        let ws = ik_workspace::compute(&params).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let out = run("ik-workspace", &strings(&[l1, l2, half_mm, step_mm]))
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert_eq!(single_file(&out), ws.to_csv());
+        prop_assert_eq!(&out.summary, &ws.summary());
+        check_output("ik-workspace", &out, ik_workspace::INFO.writes)?;
+        // Reachable exactly inside the annulus (away from its rims), FK error tiny.
+        let (inner, outer) = Arm { l1, l2 }.reach();
+        let ny = ws.ys_mm.len();
+        for (k, &reachable) in ws.reachable.iter().enumerate() {
+            let r = (ws.xs_mm[k / ny] / 1000.0).hypot(ws.ys_mm[k % ny] / 1000.0);
+            if r < inner * (1.0 - 1e-9) || r > outer * (1.0 + 1e-9) {
+                prop_assert!(!reachable);
+            } else if r > inner * (1.0 + 1e-9) + 1e-12 && r < outer * (1.0 - 1e-9) {
+                prop_assert!(reachable);
+                prop_assert!(ws.err_mm[k] < 1e-6 * (l1 + l2) * 1000.0);
+            }
+        }
+    }
+
+    #[test]
+    fn jacobian_valid_and_typed_equals_csv(
+        l1 in 0.01f64..2.0,
+        l2 in 0.01f64..2.0,
+        q1_start in -10.0f64..10.0,
+        span in 0.0f64..5.0,
+        q1_step in 0.005f64..1.0,
+        q2 in -7.0f64..7.0,
+    ) {
+        let params = jacobian_2r::SweepParams {
+            l1, l2, q1_start, q1_stop: q1_start + span, q1_step, q2,
+        };
+        let rows = jacobian_2r::sweep(&params).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let out = run("jacobian-2r", &strings(&[l1, l2, q1_start, q1_start + span, q1_step, q2]))
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert_eq!(single_file(&out), jacobian_2r::to_csv(&rows));
+        prop_assert_eq!(&out.summary, &jacobian_2r::summary(&rows));
+        check_output("jacobian-2r", &out, jacobian_2r::INFO.writes)?;
+        let scale = (l1 + l2) * (l1 + l2);
+        for r in &rows {
+            prop_assert!((r.det_j - l1 * l2 * q2.sin()).abs() <= 1e-12 * scale);
+            prop_assert!((r.sigma_min * r.sigma_max - r.det_j.abs()).abs() <= 1e-12 * scale);
+            prop_assert!((r.manipulability - r.det_j.abs()).abs() <= 1e-6 * (l1 + l2));
+        }
+    }
+
+    #[test]
+    fn manip_grid_valid_and_typed_equals_csv(l1 in 0.01f64..2.0, l2 in 0.01f64..2.0, n in 1i64..48) {
+        let grid = manip_grid::grid(&manip_grid::GridParams { l1, l2, n })
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let out = run("manip-grid", &[l1.to_string(), l2.to_string(), n.to_string()])
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert_eq!(single_file(&out), grid.to_csv());
+        prop_assert_eq!(&out.summary, &grid.summary());
+        check_output("manip-grid", &out, manip_grid::INFO.writes)?;
+        let mut fast = vec![0.0f32; grid.det_j.len()];
+        manip_grid::fill_abs_det(l1, l2, n, &mut fast).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        for (f, d) in fast.iter().zip(&grid.det_j) {
+            prop_assert!((f64::from(*f) - d.abs()).abs() <= 1e-6 * l1 * l2 + 1e-15);
+        }
+    }
+
+    #[test]
+    fn cubic_valid_and_typed_equals_csv(
+        q0 in -100.0f64..100.0,
+        q1 in -100.0f64..100.0,
+        duration_s in 0.01f64..100.0,
+        intervals in 1u32..2000,
+    ) {
+        let dt_s = duration_s / f64::from(intervals);
+        let path = cubic_path::compute(&cubic_path::CubicParams { q0, q1, duration_s, dt_s })
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let out = run("cubic-path", &strings(&[q0, q1, duration_s, dt_s]))
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert_eq!(single_file(&out), path.to_csv());
+        prop_assert_eq!(&out.summary, &path.summary());
+        check_output("cubic-path", &out, cubic_path::INFO.writes)?;
+        let n = path.samples.len() as i64;
+        prop_assert!((n - i64::from(intervals) - 1).abs() <= 1, "{n} rows for {intervals} intervals");
+        let first = path.samples[0];
+        prop_assert_eq!((first.q, first.qd), (q0, 0.0));
+    }
+
+    #[test]
+    fn pid_valid_and_typed_equals_csv(
+        kp in -10.0f64..10.0,
+        ki in -10.0f64..10.0,
+        kd in -1.0f64..1.0,
+        tau in 0.0f64..10.0,
+        steps in 0i64..1500,
+    ) {
+        let params = pid_step::PidParams { kp, ki, kd, tau, steps };
+        let rows = pid_step::simulate(&params).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let mut raw = strings(&[kp, ki, kd, tau]);
+        raw.push(steps.to_string());
+        let out = run("pid-step", &raw).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert_eq!(single_file(&out), pid_step::to_csv(&rows));
+        prop_assert_eq!(&out.summary, &pid_step::summary(&rows));
+        check_output("pid-step", &out, pid_step::INFO.writes)?;
+        prop_assert_eq!(rows.len() as i64, steps);
+        for (k, row) in rows.iter().enumerate() {
+            prop_assert_eq!(row.t, k as f64 / 20.0);
+        }
+    }
+
+    #[test]
+    fn trapezoid_valid_and_typed_equals_csv(
+        distance in -100.0f64..100.0,
+        vmax in 0.01f64..100.0,
+        amax in 0.01f64..100.0,
+        signs in (any::<bool>(), any::<bool>()),
+        intervals in 1u32..5000,
+    ) {
+        // 2 vmax/amax + D/vmax bounds t_total from above in both branches.
+        let bound = 2.0 * vmax / amax + distance.abs() / vmax;
+        let dt = bound / f64::from(intervals);
+        let vmax_arg = if signs.0 { -vmax } else { vmax };
+        let amax_arg = if signs.1 { -amax } else { amax };
+        let params = trapezoid_profile::TrapParams { distance, vmax: vmax_arg, amax: amax_arg, dt };
+        let profile = trapezoid_profile::compute(&params)
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let out = run("trapezoid-profile", &strings(&[distance, vmax_arg, amax_arg, dt]))
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert_eq!(single_file(&out), profile.to_csv());
+        prop_assert_eq!(&out.summary, &profile.summary());
+        check_output("trapezoid-profile", &out, trapezoid_profile::INFO.writes)?;
+        let rows = profile.samples.len() as f64;
+        let expected = (profile.t_total / dt).floor() + 1.0;
+        prop_assert!((rows - expected).abs() <= 1.0, "{rows} rows, expected about {expected}");
+        prop_assert!(profile.vmax_used <= vmax * (1.0 + 1e-12));
+        for s in &profile.samples {
+            prop_assert!(s.a == amax || s.a == 0.0 || s.a == -amax);
+            prop_assert!(s.v.abs() <= profile.vmax_used * (1.0 + 1e-9) + 1e-12);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(config(400))]
+
+    #[test]
+    fn fk_of_ik_is_identity_in_the_annulus(
+        l1 in 0.001f64..10.0,
+        l2 in 0.001f64..10.0,
+        radius_fraction in 1e-6f64..(1.0 - 1e-6),
+        angle in -std::f64::consts::PI..std::f64::consts::PI,
+    ) {
+        let arm = Arm { l1, l2 };
+        let (inner, outer) = arm.reach();
+        let r = inner + (outer - inner) * radius_fraction;
+        let (x, y) = (r * angle.cos(), r * angle.sin());
+        for elbow in [Elbow::Down, Elbow::Up] {
+            let (q1, q2) = arm.ik(x, y, elbow).ok_or_else(|| {
+                TestCaseError::fail(format!("IK failed inside the annulus at r={r}"))
+            })?;
+            prop_assert_eq!(q2 >= 0.0, elbow == Elbow::Down);
+            let (fx, fy) = arm.fk(q1, q2);
+            let tol = 1e-12 * (l1 + l2);
+            prop_assert!((fx - x).abs() <= tol && (fy - y).abs() <= tol,
+                "{elbow:?}: fk(ik({x}, {y})) = ({fx}, {fy})");
+        }
+    }
+}
