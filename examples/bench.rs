@@ -1,43 +1,33 @@
-//! Native half of `make bench`: each case of `bsv_playground::bench::CASES`, median of 5 runs.
+//! Native half of `make bench`: each case of `bsv_playground::bench::CASES`, median of 5 runs,
+//! through the typed kernel (what a page calls) and as the whole recipe (with CSV text).
 
 use std::time::Instant;
 
-use bsv_playground::bench::{self, CASES};
+use bsv_playground::bench::{self, BenchCase, CASES};
+
+fn time<T>(case: &BenchCase, mut f: impl FnMut(Vec<(String, String)>) -> T) -> (f64, T) {
+    let mut times = Vec::new();
+    let mut last = None;
+    for _ in 0..5 {
+        let inputs = bench::inputs(case);
+        let start = Instant::now();
+        last = Some(f(inputs));
+        times.push(start.elapsed().as_secs_f64() * 1e3);
+    }
+    let value = last.expect("5 runs");
+    (bench::median(&mut times), value)
+}
 
 fn main() {
-    println!("| case | native median ms | min ms | output rows |");
-    println!("|---|---:|---:|---:|");
+    println!("| case | native kernel ms | native recipe + CSV ms |");
+    println!("|---|---:|---:|");
     for case in CASES {
-        let mut times = Vec::new();
-        let mut rows = 0;
-        for _ in 0..5 {
-            let inputs = bench::inputs(case);
-            let start = Instant::now();
-            match bench::run(case, inputs) {
-                Ok(out) => {
-                    rows = out
-                        .files
-                        .iter()
-                        .map(|f| f.text.lines().count() - 1)
-                        .max()
-                        .unwrap_or(0)
-                }
-                Err(e) => {
-                    println!("| {} | error: {e} | | |", case.name);
-                    break;
-                }
-            }
-            times.push(start.elapsed().as_secs_f64() * 1e3);
-        }
-        if times.is_empty() {
+        let (kernel_ms, kernel) = time(case, |inputs| (case.kernel)(&inputs));
+        let (recipe_ms, recipe) = time(case, |inputs| bench::run(case, inputs));
+        if let Err(e) = kernel.as_ref().map(|_| ()).and(recipe.as_ref().map(|_| ())) {
+            println!("| {} | error: {e} | |", case.name);
             continue;
         }
-        let min = times.iter().copied().fold(f64::INFINITY, f64::min);
-        println!(
-            "| {} | {:.1} | {:.1} | {rows} |",
-            case.name,
-            bench::median(&mut times),
-            min
-        );
+        println!("| {} | {kernel_ms:.1} | {recipe_ms:.1} |", case.name);
     }
 }

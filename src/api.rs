@@ -59,11 +59,12 @@ pub fn run_recipe(
     serde_wasm_bindgen::to_value(&JsRun::from(out)).map_err(|e| JsError::new(&e.to_string()))
 }
 
-/// `benchCase(index, reps)`: runs `bench::CASES[index]` `reps` times, returning the times in
-/// milliseconds (only in builds with the `bench` feature, for `make bench`).
+/// `benchCase(index, reps, kernelOnly)`: runs `bench::CASES[index]` `reps` times (the typed
+/// kernel only, or the whole recipe with CSV text), returning the times in milliseconds (only
+/// in builds with the `bench` feature, for `make bench`).
 #[cfg(feature = "bench")]
 #[wasm_bindgen(js_name = benchCase)]
-pub fn bench_case(index: usize, reps: u32) -> Result<Vec<f64>, JsError> {
+pub fn bench_case(index: usize, reps: u32, kernel_only: bool) -> Result<Vec<f64>, JsError> {
     let case = crate::bench::CASES
         .get(index)
         .ok_or_else(|| JsError::new("no such case"))?;
@@ -83,7 +84,11 @@ pub fn bench_case(index: usize, reps: u32) -> Result<Vec<f64>, JsError> {
     for _ in 0..reps {
         let inputs = crate::bench::inputs(case);
         let start = now();
-        crate::bench::run(case, inputs).map_err(|e| JsError::new(&e.to_string()))?;
+        if kernel_only {
+            (case.kernel)(&inputs).map_err(|e| JsError::new(&e.to_string()))?;
+        } else {
+            crate::bench::run(case, inputs).map_err(|e| JsError::new(&e.to_string()))?;
+        }
         times.push(now() - start);
     }
     Ok(times)

@@ -14,6 +14,8 @@ pub struct BenchCase {
     pub args: &'static [&'static str],
     /// `(rows, joints)` of a generated trajectory CSV passed as `traj.csv`.
     pub trajectory: Option<(usize, usize)>,
+    /// The same work through the typed API, without formatting CSV text (what a page calls).
+    pub kernel: fn(&[(String, String)]) -> Result<usize, RecipeError>,
 }
 
 /// The cases of the kernels issue: sizes that a page or a learner can really ask for.
@@ -23,38 +25,109 @@ pub const CASES: &[BenchCase] = &[
         id: "ik-workspace",
         args: &["0.12", "0.10", "200", "1"],
         trajectory: None,
+        kernel: kernel_ik,
     },
     BenchCase {
         name: "manip-grid n=512",
         id: "manip-grid",
         args: &["0.12", "0.10", "512"],
         trajectory: None,
+        kernel: kernel_manip,
     },
     BenchCase {
         name: "jacobian-2r 62,800 samples",
         id: "jacobian-2r",
         args: &["0.12", "0.10", "0", "6.27995", "0.0001", "0.8"],
         trajectory: None,
+        kernel: kernel_jacobian,
     },
     BenchCase {
         name: "rrt-2d 20,000 iterations (goal unreachable)",
         id: "rrt-2d",
         args: &["7", "20000", "--goal-x", "0.5", "--goal-y", "0.5"],
         trajectory: None,
+        kernel: kernel_rrt,
     },
     BenchCase {
         name: "pendulum-energy 60 s at 2 ms",
         id: "pendulum-energy",
         args: &["60"],
         trajectory: None,
+        kernel: kernel_pendulum,
     },
     BenchCase {
         name: "traj-resample 1,000,000 rows x 6 joints",
         id: "traj-resample",
         args: &["traj.csv", "0.001"],
         trajectory: Some((1_000_000, 6)),
+        kernel: kernel_resample,
     },
 ];
+
+fn kernel_ik(_: &[(String, String)]) -> Result<usize, RecipeError> {
+    use crate::recipes::ik_workspace::{compute, WorkspaceParams};
+    let params = WorkspaceParams {
+        l1: 0.12,
+        l2: 0.10,
+        half_mm: 200.0,
+        step_mm: 1.0,
+    };
+    Ok(compute(&params)?.reachable_count())
+}
+
+fn kernel_manip(_: &[(String, String)]) -> Result<usize, RecipeError> {
+    use crate::recipes::manip_grid::{grid, GridParams};
+    Ok(grid(&GridParams {
+        l1: 0.12,
+        l2: 0.10,
+        n: 512,
+    })?
+    .det_j
+    .len())
+}
+
+fn kernel_jacobian(_: &[(String, String)]) -> Result<usize, RecipeError> {
+    use crate::recipes::jacobian_2r::{sweep, SweepParams};
+    let params = SweepParams {
+        q1_stop: 6.27995,
+        q1_step: 0.0001,
+        ..SweepParams::default()
+    };
+    Ok(sweep(&params)?.len())
+}
+
+fn kernel_rrt(_: &[(String, String)]) -> Result<usize, RecipeError> {
+    use crate::recipes::rrt_2d::{run, RrtParams};
+    let params = RrtParams {
+        seed: 7,
+        max_iter: 20_000,
+        goal: [0.5, 0.5],
+    };
+    Ok(run(&params)?.nodes().len())
+}
+
+fn kernel_pendulum(_: &[(String, String)]) -> Result<usize, RecipeError> {
+    use crate::recipes::pendulum_energy::{Pendulum, PendulumParams};
+    let params = PendulumParams {
+        duration_s: 60.0,
+        ..PendulumParams::default()
+    };
+    let steps = params.validate()?;
+    let mut pendulum = Pendulum::new(&params);
+    let mut rows = 0;
+    for _ in 0..steps {
+        let row = pendulum.step();
+        rows += usize::from(row.total.is_finite());
+    }
+    Ok(rows)
+}
+
+fn kernel_resample(inputs: &[(String, String)]) -> Result<usize, RecipeError> {
+    use crate::recipes::traj_resample::{parse_trajectory, resample};
+    let text = inputs.first().map(|(_, t)| t.as_str()).unwrap_or("");
+    let trajectory = parse_trajectory(text)?;
+    Ok(resample(&trajectory, 0.001)?.t.len())
+}
 
 /// A smooth, irregularly sampled trajectory CSV with `rows` rows and `joints` joint columns.
 pub fn trajectory_csv(rows: usize, joints: usize) -> String {

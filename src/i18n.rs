@@ -1,2 +1,706 @@
-//! Fluent bundles embedded from `locales/`, language choice and per-message fallback.
-//! PLACEHOLDER until the shell lands.
+//! Fluent bundles embedded from `locales/`, language choice and per-message fallback ja → en.
+//!
+//! Every `.ftl` file of both languages is compiled in with `include_str!`, so the app needs no
+//! network. [`I18n::t`] formats a message from one language's bundle; a message missing in
+//! Japanese falls back to English, a message missing in both shows its id, and each such gap
+//! (and each formatting error) is noted once and handed out by [`I18n::take_warnings`], which
+//! the browser logs with `console.warn`. Bidi isolation marks are off
+//! (`set_use_isolating(false)`) because strings are also drawn on canvas, where U+2068/U+2069
+//! would show as boxes. Japanese has only the plural category `other`, so its messages need
+//! no `[one]` variants.
+//!
+//! No web-sys: this module compiles and is tested natively.
+
+use std::cell::RefCell;
+use std::collections::BTreeSet;
+
+use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
+use unic_langid::LanguageIdentifier;
+
+use crate::error::RecipeError;
+
+/// A language of the UI.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Lang {
+    En,
+    Ja,
+}
+
+impl Lang {
+    /// Both languages, English (the fallback) first.
+    pub const ALL: [Lang; 2] = [Lang::En, Lang::Ja];
+
+    /// The BCP 47 code: `"en"` or `"ja"` (used in `?lang=`, `<html lang>` and localStorage).
+    pub fn code(self) -> &'static str {
+        match self {
+            Lang::En => "en",
+            Lang::Ja => "ja",
+        }
+    }
+
+    /// The language of a tag such as `"ja"`, `"ja-JP"`, `"EN_us"`; `None` for any other
+    /// language.
+    pub fn parse(tag: &str) -> Option<Lang> {
+        let primary = tag.trim().split(['-', '_']).next().unwrap_or("");
+        if primary.eq_ignore_ascii_case("en") {
+            Some(Lang::En)
+        } else if primary.eq_ignore_ascii_case("ja") {
+            Some(Lang::Ja)
+        } else {
+            None
+        }
+    }
+
+    /// The other language (what the language switch offers).
+    pub fn other(self) -> Lang {
+        match self {
+            Lang::En => Lang::Ja,
+            Lang::Ja => Lang::En,
+        }
+    }
+
+    /// The language's name in itself: `"English"`, `"日本語"`.
+    pub fn native_name(self) -> &'static str {
+        match self {
+            Lang::En => "English",
+            Lang::Ja => "日本語",
+        }
+    }
+}
+
+/// Every Fluent file of the app: language, file name, text. Both languages have the same
+/// files with the same message ids.
+pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
+    (
+        Lang::En,
+        "shell.ftl",
+        include_str!("../locales/en/shell.ftl"),
+    ),
+    (Lang::En, "home.ftl", include_str!("../locales/en/home.ftl")),
+    (
+        Lang::En,
+        "errors.ftl",
+        include_str!("../locales/en/errors.ftl"),
+    ),
+    (
+        Lang::En,
+        "recipes.ftl",
+        include_str!("../locales/en/recipes.ftl"),
+    ),
+    (Lang::En, "ik2r.ftl", include_str!("../locales/en/ik2r.ftl")),
+    (
+        Lang::Ja,
+        "shell.ftl",
+        include_str!("../locales/ja/shell.ftl"),
+    ),
+    (Lang::Ja, "home.ftl", include_str!("../locales/ja/home.ftl")),
+    (
+        Lang::Ja,
+        "errors.ftl",
+        include_str!("../locales/ja/errors.ftl"),
+    ),
+    (
+        Lang::Ja,
+        "recipes.ftl",
+        include_str!("../locales/ja/recipes.ftl"),
+    ),
+    (Lang::Ja, "ik2r.ftl", include_str!("../locales/ja/ik2r.ftl")),
+];
+
+/// One argument of a message: text, or a number (numbers select plural variants such as
+/// `[one]` in English and are printed without trailing zeros: `2`, `0.12`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum FluentArg {
+    Text(String),
+    Number(f64),
+}
+
+impl From<&str> for FluentArg {
+    fn from(text: &str) -> Self {
+        FluentArg::Text(text.to_string())
+    }
+}
+
+impl From<String> for FluentArg {
+    fn from(text: String) -> Self {
+        FluentArg::Text(text)
+    }
+}
+
+impl From<&String> for FluentArg {
+    fn from(text: &String) -> Self {
+        FluentArg::Text(text.clone())
+    }
+}
+
+macro_rules! number_arg {
+    ($($t:ty),*) => {$(
+        impl From<$t> for FluentArg {
+            fn from(value: $t) -> Self {
+                FluentArg::Number(value as f64)
+            }
+        }
+    )*};
+}
+number_arg!(f64, f32, i32, i64, u32, u64, usize);
+
+impl FluentArg {
+    fn to_value(&self) -> FluentValue<'static> {
+        match self {
+            FluentArg::Text(text) => FluentValue::from(text.clone()),
+            FluentArg::Number(value) => FluentValue::from(*value),
+        }
+    }
+}
+
+/// The Fluent bundles of both languages, plus the notes about missing messages and
+/// formatting errors not yet handed out.
+pub struct I18n {
+    en: FluentBundle<FluentResource>,
+    ja: FluentBundle<FluentResource>,
+    /// Every note ever made (so each is made once).
+    noted: RefCell<BTreeSet<String>>,
+    /// Notes not yet taken by [`I18n::take_warnings`].
+    pending: RefCell<Vec<String>>,
+}
+
+impl Default for I18n {
+    fn default() -> Self {
+        I18n::new()
+    }
+}
+
+impl I18n {
+    /// Both bundles built from [`LOCALE_FILES`]. A syntax error or a duplicate id does not
+    /// stop the app: the rest of the file loads and the problem becomes a warning.
+    pub fn new() -> I18n {
+        I18n::from_sources(LOCALE_FILES)
+    }
+
+    /// Bundles built from the given `(language, file name, text)` sources.
+    pub fn from_sources(sources: &[(Lang, &str, &str)]) -> I18n {
+        let i18n = I18n {
+            en: new_bundle(Lang::En),
+            ja: new_bundle(Lang::Ja),
+            noted: RefCell::new(BTreeSet::new()),
+            pending: RefCell::new(Vec::new()),
+        };
+        let mut i18n = i18n;
+        let mut problems = Vec::new();
+        for (lang, file, text) in sources {
+            let resource = match FluentResource::try_new(text.to_string()) {
+                Ok(resource) => resource,
+                Err((resource, errors)) => {
+                    for error in errors {
+                        problems.push(format!("{}/{file}: syntax error: {error}", lang.code()));
+                    }
+                    resource
+                }
+            };
+            let bundle = match lang {
+                Lang::En => &mut i18n.en,
+                Lang::Ja => &mut i18n.ja,
+            };
+            if let Err(errors) = bundle.add_resource(resource) {
+                for error in errors {
+                    problems.push(format!("{}/{file}: {error}", lang.code()));
+                }
+            }
+        }
+        for problem in problems {
+            i18n.note(problem);
+        }
+        i18n
+    }
+
+    fn bundle(&self, lang: Lang) -> &FluentBundle<FluentResource> {
+        match lang {
+            Lang::En => &self.en,
+            Lang::Ja => &self.ja,
+        }
+    }
+
+    /// Whether `lang`'s own bundle has message `id` with a value (no fallback).
+    pub fn has_message(&self, lang: Lang, id: &str) -> bool {
+        self.bundle(lang)
+            .get_message(id)
+            .and_then(|m| m.value())
+            .is_some()
+    }
+
+    /// Message `id` in `lang`, without arguments.
+    pub fn t(&self, lang: Lang, id: &str) -> String {
+        self.t_args(lang, id, &[])
+    }
+
+    /// Message `id` in `lang` with arguments. Falls back to English per message; a message
+    /// missing everywhere shows its id. Never panics.
+    pub fn t_args(&self, lang: Lang, id: &str, args: &[(&str, FluentArg)]) -> String {
+        let fluent_args = if args.is_empty() {
+            None
+        } else {
+            let mut fluent_args = FluentArgs::with_capacity(args.len());
+            for (name, value) in args {
+                fluent_args.set(name.to_string(), value.to_value());
+            }
+            Some(fluent_args)
+        };
+        let chain: &[Lang] = match lang {
+            Lang::En => &[Lang::En],
+            Lang::Ja => &[Lang::Ja, Lang::En],
+        };
+        for &source in chain {
+            let bundle = self.bundle(source);
+            let Some(pattern) = bundle.get_message(id).and_then(|m| m.value()) else {
+                continue;
+            };
+            if source != lang {
+                self.note(format!(
+                    "{}: message '{id}' is missing; showing the {} text",
+                    lang.code(),
+                    source.code()
+                ));
+            }
+            let mut errors = Vec::new();
+            let text = bundle.format_pattern(pattern, fluent_args.as_ref(), &mut errors);
+            for error in errors {
+                self.note(format!("{}: message '{id}': {error}", source.code()));
+            }
+            return text.into_owned();
+        }
+        self.note(format!("message '{id}' is missing in every language"));
+        id.to_string()
+    }
+
+    /// The message of a kernel error in `lang`, with its arguments (whole numbers such as
+    /// counts are passed as numbers so that plural variants work).
+    pub fn recipe_error(&self, lang: Lang, error: &RecipeError) -> String {
+        let args: Vec<(&str, FluentArg)> = error
+            .message_args()
+            .into_iter()
+            .map(|(name, value)| {
+                let is_count = !value.is_empty() && value.bytes().all(|b| b.is_ascii_digit());
+                let arg = match value.parse::<u64>() {
+                    Ok(count) if is_count => FluentArg::Number(count as f64),
+                    _ => FluentArg::Text(value),
+                };
+                (name, arg)
+            })
+            .collect();
+        self.t_args(lang, error.message_id(), &args)
+    }
+
+    /// The notes (missing messages, formatting and loading errors) made since the last call;
+    /// each distinct note is made only once.
+    pub fn take_warnings(&self) -> Vec<String> {
+        match self.pending.try_borrow_mut() {
+            Ok(mut pending) => std::mem::take(&mut *pending),
+            Err(_) => Vec::new(),
+        }
+    }
+
+    fn note(&self, text: String) {
+        let (Ok(mut noted), Ok(mut pending)) =
+            (self.noted.try_borrow_mut(), self.pending.try_borrow_mut())
+        else {
+            return;
+        };
+        if noted.insert(text.clone()) {
+            pending.push(text);
+        }
+    }
+}
+
+fn new_bundle(lang: Lang) -> FluentBundle<FluentResource> {
+    let langid: LanguageIdentifier = lang.code().parse().unwrap_or_default();
+    let mut bundle = FluentBundle::new(vec![langid]);
+    bundle.set_use_isolating(false);
+    bundle
+}
+
+/// The UI language for the browser's preferred languages (`navigator.languages`, best
+/// first): the first one we have (`"ja-JP"` → Japanese), else English.
+pub fn negotiate(preferred: &[String]) -> Lang {
+    preferred
+        .iter()
+        .find_map(|tag| Lang::parse(tag))
+        .unwrap_or(Lang::En)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::BTreeMap;
+    #[cfg(target_family = "wasm")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    /// Message id → its whole text block (id line plus indented continuation lines), read
+    /// straight from the `.ftl` source: terms (`-x`) and comments are skipped.
+    fn message_blocks(source: &str) -> Vec<(String, String)> {
+        let mut blocks: Vec<(String, String)> = Vec::new();
+        let mut current: Option<(String, String)> = None;
+        for line in source.lines() {
+            let starts_entry = line.starts_with(|c: char| c.is_ascii_alphabetic());
+            let ends_entry = starts_entry || line.starts_with('#') || line.starts_with('-');
+            if ends_entry {
+                if let Some(done) = current.take() {
+                    blocks.push(done);
+                }
+            }
+            if starts_entry {
+                if let Some((id, _)) = line.split_once('=') {
+                    current = Some((id.trim().to_string(), line.to_string()));
+                }
+            } else if let Some((_, text)) = current.as_mut() {
+                text.push('\n');
+                text.push_str(line);
+            }
+        }
+        if let Some(done) = current.take() {
+            blocks.push(done);
+        }
+        blocks
+    }
+
+    /// Every variable name (`$name`) in a block.
+    fn variables(block: &str) -> BTreeSet<String> {
+        let mut names = BTreeSet::new();
+        let mut rest = block;
+        while let Some(pos) = rest.find('$') {
+            let after = &rest[pos + 1..];
+            let name: String = after
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_' || *c == '-')
+                .collect();
+            if !name.is_empty() {
+                names.insert(name);
+            }
+            rest = after;
+        }
+        names
+    }
+
+    fn ids_by_lang() -> BTreeMap<Lang, BTreeMap<String, (String, String)>> {
+        let mut map: BTreeMap<Lang, BTreeMap<String, (String, String)>> = BTreeMap::new();
+        for (lang, file, text) in LOCALE_FILES {
+            for (id, block) in message_blocks(text) {
+                map.entry(*lang)
+                    .or_default()
+                    .insert(id, (file.to_string(), block));
+            }
+        }
+        map
+    }
+
+    #[test]
+    fn every_file_loads_without_syntax_errors_or_duplicates() {
+        let i18n = I18n::new();
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+
+    #[test]
+    fn both_languages_have_the_same_message_ids_in_the_same_files() {
+        let map = ids_by_lang();
+        let en = &map[&Lang::En];
+        let ja = &map[&Lang::Ja];
+        assert!(en.len() > 100, "only {} English messages found", en.len());
+        let only_en: Vec<_> = en.keys().filter(|id| !ja.contains_key(*id)).collect();
+        let only_ja: Vec<_> = ja.keys().filter(|id| !en.contains_key(*id)).collect();
+        assert!(only_en.is_empty(), "missing in Japanese: {only_en:?}");
+        assert!(only_ja.is_empty(), "missing in English: {only_ja:?}");
+        for (id, (file, _)) in en {
+            assert_eq!(&ja[id].0, file, "{id} lives in different files");
+        }
+    }
+
+    #[test]
+    fn every_message_formats_without_errors_in_both_languages() {
+        let i18n = I18n::new();
+        for (lang, messages) in ids_by_lang() {
+            for (id, (file, block)) in messages {
+                let vars = variables(&block);
+                assert!(
+                    i18n.has_message(lang, &id),
+                    "{lang:?} {file}: {id} has no value"
+                );
+                let samples = [FluentArg::Number(1.0), FluentArg::Number(2.5), "x".into()];
+                for sample in samples {
+                    let args: Vec<(&str, FluentArg)> =
+                        vars.iter().map(|v| (v.as_str(), sample.clone())).collect();
+                    let text = i18n.t_args(lang, &id, &args);
+                    assert!(!text.trim().is_empty(), "{lang:?} {id} is empty");
+                    assert!(!text.contains("{$"), "{lang:?} {id}: {text}");
+                }
+                // Attributes too.
+                let bundle = i18n.bundle(lang);
+                if let Some(message) = bundle.get_message(&id) {
+                    let mut args = FluentArgs::new();
+                    for v in &vars {
+                        args.set(v.clone(), FluentValue::from(2.0));
+                    }
+                    for attr in message.attributes() {
+                        let mut errors = Vec::new();
+                        bundle.format_pattern(attr.value(), Some(&args), &mut errors);
+                        assert!(errors.is_empty(), "{lang:?} {id}.{}: {errors:?}", attr.id());
+                    }
+                }
+            }
+        }
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+
+    #[test]
+    fn japanese_uses_only_the_other_plural_category() {
+        for (lang, file, text) in LOCALE_FILES {
+            if *lang != Lang::Ja {
+                continue;
+            }
+            for line in text.lines() {
+                let key = line.trim_start().trim_start_matches('*');
+                for category in ["[zero]", "[one]", "[two]", "[few]", "[many]"] {
+                    assert!(!key.starts_with(category), "ja/{file}: {line}");
+                }
+            }
+        }
+        // A count selects `other` in Japanese and still reads correctly for 1.
+        let i18n = I18n::new();
+        let error = RecipeError::CsvTooFewRows { rows: 1, min: 2 };
+        let ja = i18n.recipe_error(Lang::Ja, &error);
+        assert!(ja.contains('1') && ja.contains('2'), "{ja}");
+        let en = i18n.recipe_error(Lang::En, &error);
+        assert!(
+            en.contains("1 data row;") || en.contains("1 data row "),
+            "{en}"
+        );
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+
+    /// Does not compile when `RecipeError` gains a variant: add it to [`one_of_each_error`]
+    /// and give it a message in both `errors.ftl` files.
+    #[allow(dead_code)]
+    fn every_variant_is_listed(error: &RecipeError) {
+        use RecipeError::*;
+        match error {
+            UnknownRecipe { .. }
+            | UnknownFlag { .. }
+            | MissingFlagValue { .. }
+            | TooManyArgs { .. }
+            | NotANumber { .. }
+            | NotAnInteger { .. }
+            | NotFinite { .. }
+            | NotPositive { .. }
+            | OutOfRange { .. }
+            | TooLarge { .. }
+            | WrongCount { .. }
+            | BadChoice { .. }
+            | InputTooLarge { .. }
+            | CsvMissingColumn { .. }
+            | CsvNoJointColumns
+            | CsvTooFewRows { .. }
+            | CsvRagged { .. }
+            | CsvBadCell { .. }
+            | CsvTimeNotIncreasing { .. }
+            | CsvUnterminatedQuote { .. }
+            | InputMissing { .. } => {}
+        }
+    }
+
+    fn one_of_each_error() -> Vec<RecipeError> {
+        use RecipeError::*;
+        let p = || "step_mm".to_string();
+        vec![
+            UnknownRecipe { id: "foo".into() },
+            UnknownFlag {
+                flag: "--foo".into(),
+            },
+            MissingFlagValue {
+                flag: "--integrator".into(),
+            },
+            TooManyArgs { max: 4, got: 5 },
+            NotANumber {
+                param: p(),
+                value: "abc".into(),
+            },
+            NotAnInteger {
+                param: p(),
+                value: "1.5".into(),
+            },
+            NotFinite { param: p() },
+            NotPositive {
+                param: p(),
+                value: -1.0,
+            },
+            OutOfRange {
+                param: p(),
+                value: 9.0,
+                min: 0.5,
+                max: 5.0,
+            },
+            TooLarge {
+                param: p(),
+                count: 4_000_000,
+                limit: 1_000_000,
+            },
+            WrongCount {
+                param: "angles".into(),
+                expected: 3,
+                got: 2,
+            },
+            BadChoice {
+                param: "integrator".into(),
+                value: "rk5".into(),
+                choices: "euler, rk4".into(),
+            },
+            InputTooLarge {
+                bytes: 9_000_000,
+                limit: 5_000_000,
+            },
+            CsvMissingColumn {
+                column: "t_s".into(),
+            },
+            CsvNoJointColumns,
+            CsvTooFewRows { rows: 1, min: 2 },
+            CsvRagged {
+                row: 3,
+                expected: 4,
+                got: 3,
+            },
+            CsvBadCell {
+                row: 3,
+                column: "q1".into(),
+                value: "zz".into(),
+            },
+            CsvTimeNotIncreasing { row: 4 },
+            CsvUnterminatedQuote { row: 2 },
+            InputMissing {
+                name: "my_traj.csv".into(),
+            },
+        ]
+    }
+
+    #[test]
+    fn every_recipe_error_has_a_message_with_its_arguments_in_both_languages() {
+        let i18n = I18n::new();
+        let errors = one_of_each_error();
+        let ids: BTreeSet<_> = errors.iter().map(|e| e.message_id()).collect();
+        assert_eq!(ids.len(), errors.len(), "one variant per message id");
+        for error in &errors {
+            for lang in Lang::ALL {
+                assert!(
+                    i18n.has_message(lang, error.message_id()),
+                    "{lang:?}: no {}",
+                    error.message_id()
+                );
+                let text = i18n.recipe_error(lang, error);
+                for (name, value) in error.message_args() {
+                    assert!(
+                        text.contains(&value),
+                        "{lang:?} {}: ${name} = {value} not shown in {text:?}",
+                        error.message_id()
+                    );
+                }
+            }
+        }
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+
+    #[test]
+    fn every_recipe_has_a_title_a_blurb_and_a_label_per_argument() {
+        let i18n = I18n::new();
+        let mut missing = Vec::new();
+        for recipe in crate::recipes::RECIPES {
+            let info = recipe.info;
+            let mut ids = vec![
+                format!("recipe-{}-title", info.id),
+                format!("recipe-{}-blurb", info.id),
+            ];
+            ids.extend(
+                info.args
+                    .iter()
+                    .map(|a| format!("recipe-{}-arg-{}", info.id, a.name)),
+            );
+            ids.extend(
+                info.flags
+                    .iter()
+                    .map(|a| format!("recipe-{}-flag-{}", info.id, a.name)),
+            );
+            for id in ids {
+                for lang in Lang::ALL {
+                    if !i18n.has_message(lang, &id) {
+                        missing.push(format!("{}: {id}", lang.code()));
+                    }
+                }
+            }
+        }
+        assert!(
+            missing.is_empty(),
+            "no message for:\n{}",
+            missing.join("\n")
+        );
+    }
+
+    #[test]
+    fn a_message_missing_in_japanese_falls_back_to_english_and_is_noted_once() {
+        let i18n = I18n::from_sources(&[
+            (
+                Lang::En,
+                "t.ftl",
+                "greet = Hello\nonly-en = Only { $n } here\n",
+            ),
+            (Lang::Ja, "t.ftl", "greet = こんにちは\n"),
+        ]);
+        assert_eq!(i18n.t(Lang::Ja, "greet"), "こんにちは");
+        let args = [("n", FluentArg::from(3))];
+        assert_eq!(i18n.t_args(Lang::Ja, "only-en", &args), "Only 3 here");
+        assert_eq!(i18n.t_args(Lang::Ja, "only-en", &args), "Only 3 here");
+        let warnings = i18n.take_warnings();
+        assert_eq!(warnings.len(), 1, "{warnings:?}");
+        assert!(warnings[0].contains("only-en"), "{warnings:?}");
+        assert!(i18n.take_warnings().is_empty());
+        // Missing everywhere: the id itself, noted once.
+        assert_eq!(i18n.t(Lang::En, "no-such-id"), "no-such-id");
+        assert_eq!(i18n.t(Lang::Ja, "no-such-id"), "no-such-id");
+        assert_eq!(i18n.take_warnings().len(), 1);
+    }
+
+    #[test]
+    fn numbers_print_plainly_and_no_isolation_marks_are_added() {
+        let i18n = I18n::from_sources(&[(Lang::En, "t.ftl", "v = { $a } and { $b } m\n")]);
+        let text = i18n.t_args(
+            Lang::En,
+            "v",
+            &[
+                ("a", FluentArg::from(0.12)),
+                ("b", FluentArg::from(200usize)),
+            ],
+        );
+        assert_eq!(text, "0.12 and 200 m");
+        assert!(!text.contains('\u{2068}') && !text.contains('\u{2069}'));
+    }
+
+    #[test]
+    fn a_broken_file_still_loads_its_good_messages_and_warns() {
+        let i18n = I18n::from_sources(&[(Lang::En, "t.ftl", "good = Good\nbad = { oops\n")]);
+        assert_eq!(i18n.t(Lang::En, "good"), "Good");
+        assert!(!i18n.take_warnings().is_empty());
+    }
+
+    #[test]
+    fn languages_parse_from_tags_and_negotiate_from_browser_preferences() {
+        assert_eq!(Lang::parse("ja"), Some(Lang::Ja));
+        assert_eq!(Lang::parse("ja-JP"), Some(Lang::Ja));
+        assert_eq!(Lang::parse("EN_us"), Some(Lang::En));
+        assert_eq!(Lang::parse("fr"), None);
+        assert_eq!(Lang::parse(""), None);
+        let prefs = |tags: &[&str]| tags.iter().map(|t| t.to_string()).collect::<Vec<_>>();
+        assert_eq!(negotiate(&prefs(&["ja-JP", "en-US"])), Lang::Ja);
+        assert_eq!(negotiate(&prefs(&["en-US", "ja"])), Lang::En);
+        assert_eq!(negotiate(&prefs(&["fr-FR", "ja"])), Lang::Ja);
+        assert_eq!(negotiate(&prefs(&["de", "fr"])), Lang::En);
+        assert_eq!(negotiate(&[]), Lang::En);
+        for lang in Lang::ALL {
+            assert_eq!(Lang::parse(lang.code()), Some(lang));
+            assert_eq!(lang.other().other(), lang);
+        }
+    }
+}

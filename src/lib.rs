@@ -4,6 +4,7 @@
 //! - [`recipes`]: one kernel per recipe, numbers in, tables out; no web-sys.
 //! - [`planar2r`]: planar two-link kinematics shared by the 2R recipes and the IK page.
 //! - [`rng`]: numpy-compatible `default_rng` (PCG64 + SeedSequence + ziggurat normal).
+//! - [`math`]: correctly rounded sin, cos, atan2 … : the same bits natively and in wasm.
 //! - [`numpy`]: `np.arange` and friends, operation for operation.
 //! - [`pyfmt`]: numbers printed exactly as Python prints them.
 //! - [`args`]: command-line style argument parsing shared by the CLI and `runRecipe`.
@@ -18,6 +19,7 @@ pub mod args;
 pub mod bench;
 pub mod error;
 pub mod i18n;
+pub mod math;
 pub mod numpy;
 pub mod planar2r;
 pub mod pyfmt;

@@ -76,14 +76,17 @@ impl Arm {
 
     /// Tip position.
     pub fn fk(&self, q1: f64, q2: f64) -> (f64, f64) {
-        let x = self.l1 * q1.cos() + self.l2 * (q1 + q2).cos();
-        let y = self.l1 * q1.sin() + self.l2 * (q1 + q2).sin();
+        let x = self.l1 * crate::math::cos(q1) + self.l2 * crate::math::cos(q1 + q2);
+        let y = self.l1 * crate::math::sin(q1) + self.l2 * crate::math::sin(q1 + q2);
         (x, y)
     }
 
     /// Elbow (joint 2) position.
     pub fn elbow(&self, q1: f64) -> (f64, f64) {
-        (self.l1 * q1.cos(), self.l1 * q1.sin())
+        (
+            self.l1 * crate::math::cos(q1),
+            self.l1 * crate::math::sin(q1),
+        )
     }
 
     /// Inner and outer radius of the reachable annulus.
@@ -100,18 +103,19 @@ impl Arm {
         if c2.abs() > 1.0 || c2.is_nan() {
             return None;
         }
-        let mut q2 = c2.clamp(-1.0, 1.0).acos();
+        let mut q2 = crate::math::acos(c2.clamp(-1.0, 1.0));
         if elbow == Elbow::Up {
             q2 = -q2;
         }
-        let q1 = y.atan2(x) - (l2 * q2.sin()).atan2(l1 + l2 * q2.cos());
+        let q1 = crate::math::atan2(y, x)
+            - crate::math::atan2(l2 * crate::math::sin(q2), l1 + l2 * crate::math::cos(q2));
         Some((q1, q2))
     }
 
     /// The reachable point nearest to `(x, y)` and whether it had to move.
     pub fn clamp_to_reach(&self, x: f64, y: f64) -> (f64, f64, bool) {
         let (inner, outer) = self.reach();
-        let r = x.hypot(y);
+        let r = crate::math::hypot(x, y);
         // A hair inside the boundary, so that IK of the pinned point succeeds.
         let eps = 1e-12 * outer.max(1e-300);
         let target = if r > outer - eps {
@@ -130,8 +134,8 @@ impl Arm {
 
     /// Geometric Jacobian d(x, y)/d(q1, q2).
     pub fn jacobian(&self, q1: f64, q2: f64) -> Mat2 {
-        let (s1, c1) = (q1.sin(), q1.cos());
-        let (s12, c12) = ((q1 + q2).sin(), (q1 + q2).cos());
+        let (s1, c1) = (crate::math::sin(q1), crate::math::cos(q1));
+        let (s12, c12) = (crate::math::sin(q1 + q2), crate::math::cos(q1 + q2));
         [
             [-self.l1 * s1 - self.l2 * s12, -self.l2 * s12],
             [self.l1 * c1 + self.l2 * c12, self.l2 * c12],
@@ -157,8 +161,8 @@ impl Arm {
     /// `det J` as the manip-grid recipe writes it out by hand (not via LU).
     pub fn det_explicit(&self, q1: f64, q2: f64) -> f64 {
         let (l1, l2) = (self.l1, self.l2);
-        let (s1, c1) = (q1.sin(), q1.cos());
-        let (s12, c12) = ((q1 + q2).sin(), (q1 + q2).cos());
+        let (s1, c1) = (crate::math::sin(q1), crate::math::cos(q1));
+        let (s12, c12) = (crate::math::sin(q1 + q2), crate::math::cos(q1 + q2));
         (-l1 * s1 - l2 * s12) * (l2 * c12) - (-l2 * s12) * (l1 * c1 + l2 * c12)
     }
 }
@@ -192,9 +196,9 @@ pub fn det(m: &Mat2) -> f64 {
         if u < 0.0 {
             sign = -sign;
         }
-        log_det += u.abs().ln();
+        log_det += crate::math::log(u.abs());
     }
-    sign * log_det.exp()
+    sign * crate::math::exp(log_det)
 }
 
 /// `J Jᵀ`.
@@ -326,7 +330,7 @@ pub fn ellipse(m: &Mat2) -> Ellipse {
     let (sigma_min, sigma_max) = singular_values(m);
     // Major axis: eigenvector of J Jᵀ for the larger eigenvalue.
     let [[p, pq], [_, s]] = j_jt(m);
-    let angle_rad = 0.5 * (2.0 * pq).atan2(p - s);
+    let angle_rad = 0.5 * crate::math::atan2(2.0 * pq, p - s);
     Ellipse {
         sigma_max,
         sigma_min,
@@ -377,7 +381,7 @@ mod tests {
         assert!(close(rep.manipulability, 0.008608273090794276));
         assert!(close(rep.ellipse.sigma_min, 0.03864146032693336));
         assert!(close(rep.ellipse.sigma_max, 0.22277297539902366));
-        assert!(close(rep.det_j, arm.l1 * arm.l2 * 0.8f64.sin()));
+        assert!(close(rep.det_j, arm.l1 * arm.l2 * crate::math::sin(0.8f64)));
     }
 
     #[test]
@@ -440,9 +444,9 @@ mod tests {
         let j = arm.jacobian(0.4, 1.1);
         let e = ellipse(&j);
         // |Jᵀ u| = sigma_max for the unit vector u along the major axis.
-        let (u0, u1) = (e.angle_rad.cos(), e.angle_rad.sin());
+        let (u0, u1) = (crate::math::cos(e.angle_rad), crate::math::sin(e.angle_rad));
         let jt_u = (j[0][0] * u0 + j[1][0] * u1, j[0][1] * u0 + j[1][1] * u1);
-        assert!(close(jt_u.0.hypot(jt_u.1), e.sigma_max));
+        assert!(close(crate::math::hypot(jt_u.0, jt_u.1), e.sigma_max));
     }
 
     #[test]

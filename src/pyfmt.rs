@@ -18,70 +18,105 @@
 /// assert_eq!(py_float(f64::NAN), "nan");
 /// ```
 pub fn py_float(x: f64) -> String {
+    let mut out = String::with_capacity(24);
+    push_py_float(&mut out, x);
+    out
+}
+
+/// Appends `repr(x)` to `out` without allocating (the CSV writers' hot path).
+pub fn push_py_float(out: &mut String, x: f64) {
     if x.is_nan() {
-        return "nan".to_string();
+        out.push_str("nan");
+        return;
     }
     if x.is_infinite() {
-        return if x > 0.0 { "inf" } else { "-inf" }.to_string();
+        out.push_str(if x > 0.0 { "inf" } else { "-inf" });
+        return;
     }
     if x == 0.0 {
-        return if x.is_sign_negative() { "-0.0" } else { "0.0" }.to_string();
+        out.push_str(if x.is_sign_negative() { "-0.0" } else { "0.0" });
+        return;
     }
-    let (digits, exp) = shortest_digits(x.abs());
-    layout(x < 0.0, &digits, exp)
+    if x < 0.0 {
+        out.push('-');
+    }
+    let mut buffer = ryu::Buffer::new();
+    let (digits, exp) = shortest_digits(buffer.format_finite(x.abs()));
+    layout(out, digits, exp);
 }
 
-/// Shortest round-trip significant digits of `x > 0` and its decimal exponent, with ties
-/// between two equally short candidates broken to the even last digit as Python's `repr`
-/// (David Gay's dtoa) does; Rust's formatter breaks such exact ties upwards.
-fn shortest_digits(x: f64) -> (String, i32) {
-    let sci = format!("{x:e}");
-    let (mantissa, exp) = split_sci(&sci);
-    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
-    let n = digits.len();
-    // A tie: the exact value has exactly n + 1 significant digits, the last a 5. Cheap
-    // filter first (n + 3 digits end in "500"), exact confirmation second.
-    let probe = format!("{x:.prec$e}", prec = n + 2);
-    let (probe_mantissa, probe_exp) = split_sci(&probe);
-    let probe_digits: String = probe_mantissa
-        .chars()
-        .filter(char::is_ascii_digit)
-        .collect();
-    if !probe_digits.ends_with("500") {
-        return (digits, exp);
-    }
-    let exact = format!("{x:.800e}");
-    let (exact_mantissa, _) = split_sci(&exact);
-    let exact_digits: String = exact_mantissa
-        .chars()
-        .filter(char::is_ascii_digit)
-        .collect();
-    let is_tie = exact_digits.as_bytes().get(n) == Some(&b'5')
-        && exact_digits.bytes().skip(n + 1).all(|b| b == b'0');
-    let low = &probe_digits[..n];
-    let low_is_even = low.bytes().last().is_some_and(|d| (d - b'0') % 2 == 0);
-    if is_tie && low_is_even {
-        let trimmed = low.trim_end_matches('0');
-        let trimmed = if trimmed.is_empty() { "0" } else { trimmed };
-        return (trimmed.to_string(), probe_exp);
-    }
-    (digits, exp)
-}
-
-fn split_sci(s: &str) -> (&str, i32) {
-    match s.split_once('e') {
+/// Shortest round-trip significant digits and the decimal exponent, from Ryu's text of a
+/// positive finite number (`d.ddd`, `d.ddde±X` or `0.000ddd`).
+///
+/// Ryu, like Python's `repr` (David Gay's dtoa), breaks an exact tie between two equally
+/// short candidates to the even digit; Rust's own formatter breaks such ties upwards
+/// (`577343969884.53125` → `…5313`, Python `…5312`), so it is not used here.
+fn shortest_digits(text: &str) -> (Digits, i32) {
+    let (mantissa, exp10) = match text.split_once('e') {
         Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
-        None => (s, 0),
+        None => (text, 0),
+    };
+    let mut digits = Digits::default();
+    let mut int_len = 0i32;
+    let mut seen_point = false;
+    let mut leading_zeros = 0i32;
+    for b in mantissa.bytes() {
+        match b {
+            b'.' => seen_point = true,
+            b'0'..=b'9' => {
+                if !seen_point {
+                    int_len += 1;
+                }
+                if digits.len == 0 && b == b'0' {
+                    leading_zeros += 1;
+                } else {
+                    digits.push(b);
+                }
+            }
+            _ => {}
+        }
+    }
+    while digits.len > 1 && digits.bytes[digits.len - 1] == b'0' {
+        digits.len -= 1;
+    }
+    if digits.len == 0 {
+        digits.push(b'0');
+    }
+    (digits, int_len - 1 - leading_zeros + exp10)
+}
+
+/// Up to 32 ASCII digits on the stack.
+struct Digits {
+    bytes: [u8; 32],
+    len: usize,
+}
+
+impl Default for Digits {
+    fn default() -> Self {
+        Digits {
+            bytes: [0; 32],
+            len: 0,
+        }
+    }
+}
+
+impl Digits {
+    fn push(&mut self, b: u8) {
+        if self.len < self.bytes.len() {
+            self.bytes[self.len] = b;
+            self.len += 1;
+        }
+    }
+
+    fn as_str(&self) -> &str {
+        std::str::from_utf8(&self.bytes[..self.len]).unwrap_or("0")
     }
 }
 
 /// Python's layout of significant `digits` with decimal exponent `exp`: fixed notation for
 /// `-4 <= exp < 16`, else `d.ddde±XX`.
-fn layout(negative: bool, digits: &str, exp: i32) -> String {
-    let mut out = String::with_capacity(digits.len() + 8);
-    if negative {
-        out.push('-');
-    }
+fn layout(out: &mut String, digits: Digits, exp: i32) {
+    let digits = digits.as_str();
     if (-4..16).contains(&exp) {
         if exp >= 0 {
             let int_len = exp as usize + 1;
@@ -107,23 +142,77 @@ fn layout(negative: bool, digits: &str, exp: i32) -> String {
         }
         out.push('e');
         out.push(if exp < 0 { '-' } else { '+' });
-        if exp.unsigned_abs() < 10 {
+        let abs = exp.unsigned_abs();
+        if abs < 10 {
             out.push('0');
         }
-        out.push_str(&exp.unsigned_abs().to_string());
+        let mut itoa = [0u8; 4];
+        let mut n = 0;
+        let mut v = abs;
+        while v > 0 || n == 0 {
+            itoa[n] = b'0' + (v % 10) as u8;
+            v /= 10;
+            n += 1;
+        }
+        for i in (0..n).rev() {
+            out.push(itoa[i] as char);
+        }
     }
-    out
 }
 
 /// Python's `f"{x:.{digits}f}"`.
 pub fn fixed(x: f64, digits: usize) -> String {
+    let mut out = String::with_capacity(24);
+    push_fixed(&mut out, x, digits);
+    out
+}
+
+/// Appends Python's `f"{x:.{digits}f}"`: correctly rounded (half to even on the exact binary
+/// value), sign kept on negative values that round to zero.
+///
+/// Fast path, exact: for `|x * 10^digits| < 2^33` the product is within 1e-6 of the exact
+/// scaled value, so rounding it to an integer is exact unless its fraction is within 2e-6 of
+/// one half; those rare cases, and everything else, go through Rust's exact formatter.
+pub fn push_fixed(out: &mut String, x: f64, digits: usize) {
+    use std::fmt::Write;
+    const POW10: [f64; 10] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
     if x.is_nan() {
-        return "nan".to_string();
+        out.push_str("nan");
+        return;
     }
     if x.is_infinite() {
-        return if x > 0.0 { "inf" } else { "-inf" }.to_string();
+        out.push_str(if x > 0.0 { "inf" } else { "-inf" });
+        return;
     }
-    format!("{x:.digits$}")
+    if let Some(&scale) = POW10.get(digits) {
+        let scaled = (x * scale).abs();
+        if scaled < 8_589_934_592.0 {
+            let floor = scaled.floor();
+            let frac = scaled - floor;
+            if (frac - 0.5).abs() > 2e-6 {
+                let n = (if frac > 0.5 { floor + 1.0 } else { floor }) as u64;
+                if x.is_sign_negative() {
+                    out.push('-');
+                }
+                let mut buf = [b'0'; 24];
+                let mut len = 0;
+                let mut v = n;
+                while v > 0 || len <= digits {
+                    buf[len] = b'0' + (v % 10) as u8;
+                    v /= 10;
+                    len += 1;
+                }
+                for i in (0..len).rev() {
+                    out.push(buf[i] as char);
+                    if i == digits && digits > 0 {
+                        out.push('.');
+                    }
+                }
+                return;
+            }
+        }
+    }
+    let _ = write!(out, "{x:.digits$}");
 }
 
 /// One CSV cell: a float (`repr`), an integer, or empty.
@@ -167,8 +256,11 @@ impl CsvText {
                 self.text.push(',');
             }
             match cell {
-                Cell::Float(v) => self.text.push_str(&py_float(*v)),
-                Cell::Int(v) => self.text.push_str(&v.to_string()),
+                Cell::Float(v) => push_py_float(&mut self.text, *v),
+                Cell::Int(v) => {
+                    use std::fmt::Write;
+                    let _ = write!(self.text, "{v}");
+                }
                 Cell::Empty => {}
             }
         }
@@ -181,7 +273,7 @@ impl CsvText {
             if i > 0 {
                 self.text.push(',');
             }
-            self.text.push_str(&py_float(*v));
+            push_py_float(&mut self.text, *v);
         }
         self.text.push_str("\r\n");
     }
@@ -234,6 +326,12 @@ mod tests {
         assert_eq!(fixed(-0.0, 4), "-0.0000");
         assert_eq!(fixed(2.675, 2), "2.67");
         assert_eq!(fixed(0.02, 6), "0.020000");
+        assert_eq!(fixed(-1e-9, 6), "-0.000000");
+        assert_eq!(fixed(0.125, 2), "0.12");
+        assert_eq!(fixed(1.0000005, 6), "1.000001");
+        assert_eq!(fixed(123.456, 0), "123");
+        assert_eq!(fixed(-7.5, 0), "-8");
+        assert_eq!(fixed(1e300, 2).len(), 304);
     }
 
     #[test]

@@ -47,7 +47,9 @@ enum Failure {
 fn cli(raw: &[String]) -> Result<(), Failure> {
     let Some(id) = raw.first() else {
         print!("{}", general_help());
-        return Err(Failure::Usage("no recipe given (see the list above)".to_string()));
+        return Err(Failure::Usage(
+            "no recipe given (see the list above)".to_string(),
+        ));
     };
     if id == "--help" || id == "-h" || id == "help" {
         print!("{}", general_help());
@@ -58,7 +60,10 @@ fn cli(raw: &[String]) -> Result<(), Failure> {
         return Ok(());
     }
     let recipe = recipes::find(id).ok_or_else(|| {
-        Failure::Usage(format!("unknown recipe '{id}'; recipes: {}", recipe_ids().join(", ")))
+        Failure::Usage(format!(
+            "unknown recipe '{id}'; recipes: {}",
+            recipe_ids().join(", ")
+        ))
     })?;
     let rest = &raw[1..];
     if rest.iter().any(|a| a == "--help" || a == "-h") {
@@ -81,7 +86,10 @@ fn split_out_dir(args: &[String]) -> Result<(Vec<String>, PathBuf), String> {
     let mut iter = args.iter();
     while let Some(arg) = iter.next() {
         if arg == "--out" {
-            out = iter.next().map(PathBuf::from).ok_or("--out needs a folder")?;
+            out = iter
+                .next()
+                .map(PathBuf::from)
+                .ok_or("--out needs a folder")?;
         } else if let Some(dir) = arg.strip_prefix("--out=") {
             out = PathBuf::from(dir);
         } else {
@@ -155,11 +163,22 @@ fn general_help() -> String {
          recipes (arguments with their defaults):\n",
     );
     for r in &recipes::RECIPES {
-        let args: Vec<String> =
-            r.info.args.iter().map(|a| format!("{}={}", a.name, a.default)).collect();
-        s.push_str(&format!("  {:<18} {:<40} ({})\n", r.info.id, args.join(" "), r.info.python));
+        let args: Vec<String> = r
+            .info
+            .args
+            .iter()
+            .map(|a| format!("{}={}", a.name, a.default))
+            .collect();
+        s.push_str(&format!(
+            "  {:<18} {:<40} ({})\n",
+            r.info.id,
+            args.join(" "),
+            r.info.python
+        ));
     }
-    s.push_str("\nEach writes the same CSV file(s) and prints the same line as its Python recipe.\n");
+    s.push_str(
+        "\nEach writes the same CSV file(s) and prints the same line as its Python recipe.\n",
+    );
     s
 }
 
@@ -170,18 +189,36 @@ fn recipe_help(recipe: &Recipe) -> String {
         "usage: bsv {} {}{} [--out DIR]\n\nSame as: python {} {}\nWrites: {}\n\narguments:\n",
         info.id,
         names.join(" "),
-        if info.flags.is_empty() { "" } else { " [options]" },
+        if info.flags.is_empty() {
+            ""
+        } else {
+            " [options]"
+        },
         info.python,
-        info.args.iter().map(|a| a.name).collect::<Vec<_>>().join(" "),
+        info.args
+            .iter()
+            .map(|a| a.name)
+            .collect::<Vec<_>>()
+            .join(" "),
         info.writes.join(", "),
     );
     for a in info.args {
-        s.push_str(&format!("  {:<14} {} (default {})\n", a.name, a.help, show_default(a.default)));
+        s.push_str(&format!(
+            "  {:<14} {} (default {})\n",
+            a.name,
+            a.help,
+            show_default(a.default)
+        ));
     }
     if !info.flags.is_empty() {
         s.push_str("\noptions (beyond the Python recipe):\n");
         for f in info.flags {
-            s.push_str(&format!("  --{:<12} {} (default {})\n", f.name, f.help, show_default(f.default)));
+            s.push_str(&format!(
+                "  --{:<12} {} (default {})\n",
+                f.name,
+                f.help,
+                show_default(f.default)
+            ));
         }
     }
     s.push_str("  --out DIR      folder for the CSV files (default: current folder)\n");

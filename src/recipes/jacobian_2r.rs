@@ -313,7 +313,7 @@ mod tests {
         assert_eq!(first.sigma_min, 0.03864146032693336);
         // det J = L1 L2 sin q2 all along the sweep.
         for r in &rows {
-            assert!((r.det_j - 0.012 * 0.8f64.sin()).abs() < 1e-15);
+            assert!((r.det_j - 0.012 * crate::math::sin(0.8f64)).abs() < 1e-15);
             assert!(r.sigma_min <= r.sigma_max);
             assert!((r.sigma_min * r.sigma_max - r.det_j).abs() < 1e-15);
         }
@@ -341,7 +341,10 @@ mod tests {
         for r in &rows {
             assert!(r.det_j.abs() < 1e-16 && r.sigma_min < 1e-15, "{r:?}");
             // Rank one: both columns along (-s1, c1), lengths L1 + L2 and L2.
-            assert!((r.sigma_max - 0.55f64.hypot(0.25)).abs() < 1e-15, "{r:?}");
+            assert!(
+                (r.sigma_max - crate::math::hypot(0.55f64, 0.25)).abs() < 1e-15,
+                "{r:?}"
+            );
         }
     }
 

@@ -328,19 +328,22 @@ impl Pendulum {
     /// Tip position `(x, z)` in metres for the current angle: `(−L sin θ, −L cos θ)`.
     pub fn tip_xz(&self) -> (f64, f64) {
         let l = self.params.length_m;
-        (-l * self.theta.sin(), -l * self.theta.cos())
+        (
+            -l * crate::math::sin(self.theta),
+            -l * crate::math::cos(self.theta),
+        )
     }
 
     /// Capsule's mechanical energy of the current state (see [`PendulumRow::true_energy`]).
     pub fn true_energy(&self) -> f64 {
         let p = &self.params;
-        let z_com = p.length_m / 2.0 * (1.0 - self.theta.cos());
+        let z_com = p.length_m / 2.0 * (1.0 - crate::math::cos(self.theta));
         0.5 * self.inertia * self.omega * self.omega + p.mass_kg * GRAVITY * z_com
     }
 
     fn gravity_torque(&self, theta: f64) -> f64 {
         let p = &self.params;
-        -p.mass_kg * GRAVITY * (p.length_m / 2.0) * theta.sin()
+        -p.mass_kg * GRAVITY * (p.length_m / 2.0) * crate::math::sin(theta)
     }
 
     /// `a(θ, ω)` with explicit damping.
@@ -383,7 +386,7 @@ impl Pendulum {
         self.steps_taken += 1;
         let p = &self.params;
         let l = p.length_m;
-        let z_tip = -l * self.theta_evaluated.cos();
+        let z_tip = -l * crate::math::cos(self.theta_evaluated);
         let pe = p.mass_kg * GRAVITY * (z_tip + l);
         let ke = 0.5 * p.mass_kg * (l * self.omega) * (l * self.omega);
         PendulumRow {

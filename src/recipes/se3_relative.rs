@@ -183,9 +183,9 @@ pub fn matmul<const R: usize, const K: usize, const C: usize>(
 
 /// `Rz(yaw) · Ry(pitch) · Rx(roll)`, multiplied left to right as the recipe does.
 pub fn rpy_to_rotation(roll: f64, pitch: f64, yaw: f64) -> Matrix3<f64> {
-    let (sr, cr) = roll.sin_cos();
-    let (sp, cp) = pitch.sin_cos();
-    let (sy, cy) = yaw.sin_cos();
+    let (sr, cr) = crate::math::sincos(roll);
+    let (sp, cp) = crate::math::sincos(pitch);
+    let (sy, cy) = crate::math::sincos(yaw);
     #[rustfmt::skip]
     let rz = Matrix3::new(
         cy, -sy, 0.0,
@@ -210,14 +210,14 @@ pub fn rpy_to_rotation(roll: f64, pitch: f64, yaw: f64) -> Matrix3<f64> {
 /// The recipe's `R_to_rpy`: `(roll, pitch, yaw)` with `pitch = asin(clip(−R₂₀))` in
 /// `[−π/2, π/2]`; at gimbal lock (`|cos pitch| < 1e-8`) roll is 0 and yaw takes it all.
 pub fn rotation_to_rpy(r: &Matrix3<f64>) -> (f64, f64, f64) {
-    let pitch = (-r[(2, 0)]).clamp(-1.0, 1.0).asin();
-    if pitch.cos().abs() < GIMBAL_COS_EPS {
-        (0.0, pitch, (-r[(0, 1)]).atan2(r[(1, 1)]))
+    let pitch = crate::math::asin((-r[(2, 0)]).clamp(-1.0, 1.0));
+    if crate::math::cos(pitch).abs() < GIMBAL_COS_EPS {
+        (0.0, pitch, crate::math::atan2(-r[(0, 1)], r[(1, 1)]))
     } else {
         (
-            r[(2, 1)].atan2(r[(2, 2)]),
+            crate::math::atan2(r[(2, 1)], r[(2, 2)]),
             pitch,
-            r[(1, 0)].atan2(r[(0, 0)]),
+            crate::math::atan2(r[(1, 0)], r[(0, 0)]),
         )
     }
 }

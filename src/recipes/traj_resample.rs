@@ -25,13 +25,12 @@
 
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
-use std::fmt::Write as _;
 
 use super::{CsvFile, RecipeInfo, RecipeOutput};
 use crate::args::{positive, within_limit, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy::{arange, arange_len};
-use crate::pyfmt::{fixed, py_float, CsvText};
+use crate::pyfmt::{push_fixed, py_float, CsvText};
 
 /// Largest input CSV accepted, in bytes (128 MiB): a million rows of six joints is about 60 MB.
 pub const MAX_INPUT_BYTES: u64 = 128 * 1024 * 1024;
@@ -225,16 +224,6 @@ impl Resampled {
             out.push_str("\r\n");
         }
         out
-    }
-}
-
-/// Appends `f"{x:.{digits}f}"` without a temporary string for finite values.
-fn push_fixed(out: &mut String, x: f64, digits: usize) {
-    if x.is_finite() {
-        // Writing to a String cannot fail.
-        let _ = write!(out, "{x:.digits$}");
-    } else {
-        out.push_str(&fixed(x, digits));
     }
 }
 

@@ -135,7 +135,7 @@ pub fn umeyama(x: &[[f64; 2]], y: &[[f64; 2]]) -> Alignment {
         .sum();
     Alignment {
         scale,
-        rotation_deg: rotation[(1, 0)].atan2(rotation[(0, 0)]).to_degrees(),
+        rotation_deg: crate::math::atan2(rotation[(1, 0)], rotation[(0, 0)]).to_degrees(),
         tx: t[0],
         ty: t[1],
         rmse: (sum_sq_residual / count).sqrt(),
@@ -220,7 +220,7 @@ pub fn sample_points(params: &UmeyamaParams) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
         })
         .collect();
     let th = ROTATION_TRUE_DEG.to_radians();
-    let (sin, cos) = th.sin_cos();
+    let (sin, cos) = crate::math::sincos(th);
     let y = x
         .iter()
         .map(|p| {
@@ -301,7 +301,7 @@ mod tests {
     }
 
     fn transform(x: &[[f64; 2]], scale: f64, angle_deg: f64, t: [f64; 2]) -> Vec<[f64; 2]> {
-        let (sin, cos) = angle_deg.to_radians().sin_cos();
+        let (sin, cos) = crate::math::sincos(angle_deg.to_radians());
         x.iter()
             .map(|p| {
                 [

@@ -153,8 +153,8 @@ impl NumpyRng {
             if layer == 0 {
                 // The tail beyond r (Marsaglia's method); numpy uses 1 - U to avoid log(0).
                 loop {
-                    let xx = -ZIGGURAT_NOR_INV_R * (-self.random()).ln_1p();
-                    let yy = -(-self.random()).ln_1p();
+                    let xx = -ZIGGURAT_NOR_INV_R * crate::math::log1p(-self.random());
+                    let yy = -crate::math::log1p(-self.random());
                     if yy + yy > xx * xx {
                         return if (rabs >> 8) & 1 == 1 {
                             -(ZIGGURAT_NOR_R + xx)
@@ -167,7 +167,7 @@ impl NumpyRng {
             // In the wedge: accept under the density, else draw again.
             let f_outer = FI_DOUBLE[layer - 1];
             let f_inner = FI_DOUBLE[layer];
-            if (f_outer - f_inner) * self.random() + f_inner < (-0.5 * x * x).exp() {
+            if (f_outer - f_inner) * self.random() + f_inner < crate::math::exp(-0.5 * x * x) {
                 return x;
             }
         }

@@ -1,3 +1,68 @@
-//! The browser UI (wasm32 only): the app shell and its pages. PLACEHOLDER until it lands.
+//! The browser UI (wasm32 only): the app shell and its pages, started by `startApp()` from
+//! `www/bootstrap.js`.
+//!
+//! `startApp` is an ordinary export, not `#[wasm_bindgen(start)]`, because the same wasm also
+//! runs under Node (kernel tests, `runRecipe`) where there is no DOM to build.
+//!
+//! - [`page`]: the contract between the shell and a page.
+//! - [`ctx`]: current language, bundles, projector mode.
+//! - [`router`]: `#/<page>?k=v` routes and `replace_query`.
+//! - [`dom`]: element builders, localized text, storage, listeners.
+//! - [`shell`]: header, navigation, language switch, projector mode, footer, keys.
+//! - [`overlay`]: the `?` shortcut list.
+//! - [`pages`]: the page table and the pages.
+//! - [`download`]: saving CSV and PNG files from the page.
 
+use wasm_bindgen::prelude::*;
+
+pub mod ctx;
+pub mod dom;
+pub mod download;
+pub mod overlay;
 pub mod page;
+pub mod pages;
+pub mod router;
+pub mod shell;
+
+/// Builds the app into `#app` and routes to the page the URL names. Installs a panic hook
+/// first: a panic is logged with `console.error` and a localized banner says that the work is
+/// kept in the URL and offers a reload.
+#[wasm_bindgen(js_name = startApp)]
+pub fn start_app() -> Result<(), JsValue> {
+    install_panic_hook();
+    shell::start()
+}
+
+fn install_panic_hook() {
+    std::panic::set_hook(Box::new(|info| {
+        web_sys::console::error_1(&JsValue::from_str(&format!(
+            "BSV Playground stopped: {info}"
+        )));
+        let _ = show_crash_banner();
+    }));
+}
+
+/// The visible "something went wrong" banner at the top of the page. Its reload button is a
+/// plain JS function, so it works even though the wasm instance is no longer usable.
+fn show_crash_banner() -> Result<(), JsValue> {
+    let document = dom::document()?;
+    if document.get_element_by_id("crash-banner").is_some() {
+        return Ok(());
+    }
+    let body = document
+        .body()
+        .ok_or_else(|| JsValue::from_str("no body"))?;
+    let banner = dom::el_class("div", "crash-banner")?;
+    banner.set_id("crash-banner");
+    banner.set_attribute("role", "alert")?;
+    banner.set_attribute("data-testid", "crash-banner")?;
+    let title = dom::el_text("strong", "", &ctx::t("crash-title"))?;
+    dom::append(&banner, &title)?;
+    dom::append(&banner, &dom::el_text("span", "", &ctx::t("crash-body"))?)?;
+    let reload = dom::el_text("button", "tool-button", &ctx::t("crash-reload"))?;
+    reload.set_attribute("type", "button")?;
+    let action = js_sys::Function::new_no_args("location.reload()");
+    reload.add_event_listener_with_callback("click", &action)?;
+    dom::append(&banner, &reload)?;
+    body.prepend_with_node_1(&banner)
+}

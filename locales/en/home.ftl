@@ -1,0 +1,17 @@
+# The home page: the BSV page's headline and introduction, the featured in-browser tool and
+# one card per recipe (the recipe texts themselves are in recipes.ftl).
+
+home-page-title = Home
+home-headline = Robotics: simulate, sample, log — then practice teleop
+home-intro = Build short, honest simulation drills: MuJoCo energy, planar IK, trajectory resample, DH FK, Jacobian/manipulability, cubic paths, SE(3) relatives and a toy 2D RRT. For Isaac Teleop practice, use Robot Pilot Academy — BSV does not redistribute NVIDIA code.
+home-featured-label = Interactive tool, runs in your browser (English / Japanese)
+home-featured-open = Open the playground
+home-recipes-heading = Build recipes
+home-recipes-intro = Twelve short drills, each a BSV Python recipe rebuilt in Rust. On the command line, “bsv <recipe id>” takes the same values and writes the same CSV files as the Python script.
+home-card-inputs = Inputs and defaults
+home-card-writes = Writes
+home-card-options = Options
+home-card-cli = Command line
+home-card-python = Python original
+home-card-cli-only = This drill runs from the command line today.
+home-card-in-browser = In the browser:

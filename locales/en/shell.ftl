@@ -1,0 +1,37 @@
+# The app shell: header, navigation, language switch, projector mode, footer, the `?`
+# shortcut overlay, the not-found page and the crash banner.
+
+app-name = BSV Playground
+app-subtitle = Robotics drills that run in your browser
+
+nav-label = Pages
+nav-home = Home
+
+lang-switch-title = Show this page in Japanese (key: L)
+projector-toggle = Projector
+projector-toggle-title = Projector mode: larger type, thicker lines, high contrast (key: P)
+help-button-label = Keyboard shortcuts (key: ?)
+
+footer-disclaimer = Research, education and simulation only. Nothing here is a safety-rated controller, a real-hardware authority, or a claim that BSV ran your robot. Real hardware stays with the owner or partner.
+footer-offline = Works offline; no data leaves this page.
+
+overlay-title = Keyboard shortcuts
+overlay-close = Close
+overlay-shell-heading = Everywhere
+overlay-page-heading = On this page
+overlay-page-none = This page has no keys of its own.
+overlay-note = Keys do nothing while you are typing in a field. Page Up / Page Down, the arrow keys, B and . are left to the page and to presenter remotes.
+key-help = Show or hide this list
+key-projector = Projector mode on or off
+key-lang = Switch between English and Japanese
+key-escape = Close this list
+
+notfound-title = Page not found
+notfound-body = There is no page at this address. It may be an old or mistyped link.
+notfound-home = Go to the home page
+
+page-mount-failed = This page could not be opened. Details are in the browser console.
+
+crash-title = Something went wrong.
+crash-body = Your work is kept in the address (URL), so reloading picks up where you left off.
+crash-reload = Reload the page

@@ -1,0 +1,25 @@
+# `RecipeError` の各バリアントに 1 つずつのメッセージ（src/error.rs）。引数は
+# `RecipeError::message_args` のもの。CSV の行番号は、テキストエディターや表計算ソフトと
+# 同じく、ヘッダーを 1 行目として数える。
+
+err-unknown-recipe = 「{ $id }」という名前のレシピはありません。「bsv --help」で一覧を表示できます。
+err-unknown-flag = このレシピには「{ $flag }」というオプションはありません。
+err-missing-flag-value = オプション「{ $flag }」の後ろに値を指定してください。
+err-too-many-args = 値が多すぎます。このレシピが受け取る値は最大 { $max } 個ですが、{ $got } 個指定されています。
+err-not-a-number = { $param }：「{ $value }」は数値ではありません。
+err-not-an-integer = { $param }：「{ $value }」ではなく、3 や 800 のような整数を指定してください。
+err-not-finite = { $param }：NaN や無限大ではなく、通常の数値を指定してください。
+err-not-positive = { $param } は 0 より大きい値にしてください（現在の値: { $value }）。
+err-out-of-range = { $param } は { $min } 以上 { $max } 以下にしてください（現在の値: { $value }）。
+err-too-large = { $param }：この設定では { $count } 行（またはセル・反復）が必要になり、上限の { $limit } を超えます。刻みを大きくするか、範囲を狭くしてください。
+err-wrong-count = { $param }：値が { $expected } 個必要ですが、{ $got } 個指定されています。
+err-bad-choice = { $param }：「{ $value }」は選べません。次のいずれかを指定してください：{ $choices }
+err-input-too-large = ファイルのサイズが { $bytes } バイトあり、上限の { $limit } バイトを超えています。
+err-csv-missing-column = CSV には「{ $column }」という列が必要です。
+err-csv-no-joint-columns = CSV に t_s 以外の関節の列がありません。q1 などの列を少なくとも 1 つ追加してください。
+err-csv-too-few-rows = CSV のデータ行が { $rows } 行しかありません。少なくとも { $min } 行必要です。
+err-csv-ragged = CSV の { $row } 行目はセルが { $got } 個ですが、ヘッダーは { $expected } 個です。
+err-csv-bad-cell = CSV の { $row } 行目、列 { $column }：「{ $value }」は数値ではありません。
+err-csv-time-not-increasing = CSV の { $row } 行目：t_s は前の行より大きくしてください（時刻は常に増えていく必要があります）。
+err-csv-unterminated-quote = CSV の { $row } 行目：引用符（"）で始まった値が閉じられていません。
+err-input-missing = 入力ファイル「{ $name }」が開かれていません。先にファイルを開いてから、もう一度実行してください。

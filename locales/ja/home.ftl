@@ -1,0 +1,17 @@
+# ホームページ：BSV ページの見出しと紹介文、ブラウザで動く注目のツール、各レシピのカード
+# （レシピ自体の文言は recipes.ftl にある）。
+
+home-page-title = ホーム
+home-headline = ロボティクス：シミュレーションし、サンプリングし、記録する。そして遠隔操作の練習へ
+home-intro = 短く、ごまかしのないシミュレーション演習を組み立てましょう。題材は MuJoCo のエネルギー、平面 IK、軌道のリサンプリング、DH 順運動学、ヤコビアンと可操作度、3 次の関節経路、SE(3) の相対姿勢、そして簡易版の 2D RRT です。Isaac Teleop による遠隔操作の練習には Robot Pilot Academy を使ってください。BSV は NVIDIA のコードを再配布していません。
+home-featured-label = ブラウザで動くインタラクティブなツール（英語／日本語）
+home-featured-open = プレイグラウンドを開く
+home-recipes-heading = 演習レシピ
+home-recipes-intro = BSV の Python レシピを Rust で作り直した、12 の短い演習です。コマンドラインの「bsv <レシピ ID>」は、Python スクリプトと同じ値を受け取り、同じ CSV ファイルを書き出します。
+home-card-inputs = 入力と既定値
+home-card-writes = 出力ファイル
+home-card-options = オプション
+home-card-cli = コマンドライン
+home-card-python = 元の Python
+home-card-cli-only = この演習は、現在はコマンドラインで実行します。
+home-card-in-browser = ブラウザで試す：

@@ -1,0 +1,73 @@
+//! The app context of this browser tab: the Fluent bundles, the current language and whether
+//! projector mode is on. One per thread (the wasm main thread), held in `thread_local!` cells
+//! so that pages read it from anywhere without threading a handle through every call.
+//!
+//! Reading never panics: the language and projector flags are `Cell`s, the bundles are
+//! immutable, and missing messages are logged with `console.warn` (once each).
+
+use std::cell::Cell;
+
+use crate::error::RecipeError;
+use crate::i18n::{FluentArg, I18n, Lang};
+
+thread_local! {
+    static I18N: I18n = I18n::new();
+    static LANG: Cell<Lang> = const { Cell::new(Lang::En) };
+    static PROJECTOR: Cell<bool> = const { Cell::new(false) };
+}
+
+/// The current UI language.
+pub fn lang() -> Lang {
+    LANG.with(Cell::get)
+}
+
+/// Sets the current language. Only the shell calls this (it also re-renders the page).
+pub(crate) fn set_lang(lang: Lang) {
+    LANG.with(|cell| cell.set(lang));
+}
+
+/// Whether projector mode (larger type, thicker lines, high contrast) is on.
+pub fn projector() -> bool {
+    PROJECTOR.with(Cell::get)
+}
+
+/// Sets projector mode. Only the shell calls this (it also tells the page).
+pub(crate) fn set_projector(on: bool) {
+    PROJECTOR.with(|cell| cell.set(on));
+}
+
+/// Message `id` in the current language.
+pub fn t(id: &str) -> String {
+    t_in(lang(), id)
+}
+
+/// Message `id` in the current language, with arguments (numbers may be passed as numbers:
+/// `("n", 3.into())`).
+pub fn t_args(id: &str, args: &[(&str, FluentArg)]) -> String {
+    let lang = lang();
+    with_i18n(|i18n| i18n.t_args(lang, id, args)).unwrap_or_else(|| id.to_string())
+}
+
+/// Message `id` in a given language.
+pub fn t_in(lang: Lang, id: &str) -> String {
+    with_i18n(|i18n| i18n.t(lang, id)).unwrap_or_else(|| id.to_string())
+}
+
+/// The localized message of a kernel error, in the current language.
+pub fn error_text(error: &RecipeError) -> String {
+    let lang = lang();
+    with_i18n(|i18n| i18n.recipe_error(lang, error)).unwrap_or_else(|| error.to_string())
+}
+
+/// Runs `f` on the bundles and logs any new warnings with `console.warn`. `None` only while
+/// the thread is shutting down.
+fn with_i18n<R>(f: impl FnOnce(&I18n) -> R) -> Option<R> {
+    I18N.try_with(|i18n| {
+        let result = f(i18n);
+        for warning in i18n.take_warnings() {
+            web_sys::console::warn_1(&format!("i18n: {warning}").into());
+        }
+        result
+    })
+    .ok()
+}

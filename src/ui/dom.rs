@@ -1,0 +1,190 @@
+//! Small DOM helpers shared by the shell and the pages: element builders, localized text
+//! (`data-i18n="msg-id"` and `data-i18n-attr="title=msg-id;aria-label=msg-id"`, re-rendered by
+//! [`relocalize`]), localStorage that never throws (private mode, disabled storage) and event
+//! listeners that remove themselves when dropped.
+
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{Document, Element, Event, EventTarget, HtmlElement, Window};
+
+use crate::ui::ctx;
+
+/// The browser window.
+pub fn window() -> Result<Window, JsValue> {
+    web_sys::window().ok_or_else(|| JsValue::from_str("no window"))
+}
+
+/// The document of the window.
+pub fn document() -> Result<Document, JsValue> {
+    window()?
+        .document()
+        .ok_or_else(|| JsValue::from_str("no document"))
+}
+
+/// A new element `<tag>`.
+pub fn el(tag: &str) -> Result<Element, JsValue> {
+    document()?.create_element(tag)
+}
+
+/// A new element `<tag class="class">`.
+pub fn el_class(tag: &str, class: &str) -> Result<Element, JsValue> {
+    let element = el(tag)?;
+    element.set_class_name(class);
+    Ok(element)
+}
+
+/// A new element with fixed (not localized) text, such as a command line.
+pub fn el_text(tag: &str, class: &str, text: &str) -> Result<Element, JsValue> {
+    let element = el_class(tag, class)?;
+    element.set_text_content(Some(text));
+    Ok(element)
+}
+
+/// A new element whose text is message `id`, kept in the current language.
+pub fn el_i18n(tag: &str, class: &str, id: &str) -> Result<Element, JsValue> {
+    let element = el_class(tag, class)?;
+    set_i18n(&element, id)?;
+    Ok(element)
+}
+
+/// Makes `element`'s text message `id`, now and after every language switch.
+pub fn set_i18n(element: &Element, id: &str) -> Result<(), JsValue> {
+    element.set_attribute("data-i18n", id)?;
+    element.set_text_content(Some(&ctx::t(id)));
+    Ok(())
+}
+
+/// Makes attributes of `element` localized messages (`[("title", "msg-id")]`), now and after
+/// every language switch.
+pub fn set_i18n_attrs(element: &Element, attrs: &[(&str, &str)]) -> Result<(), JsValue> {
+    let spec: Vec<String> = attrs.iter().map(|(a, id)| format!("{a}={id}")).collect();
+    element.set_attribute("data-i18n-attr", &spec.join(";"))?;
+    for (attr, id) in attrs {
+        element.set_attribute(attr, &ctx::t(id))?;
+    }
+    Ok(())
+}
+
+/// Appends `child` to `parent`.
+pub fn append(parent: &Element, child: &Element) -> Result<(), JsValue> {
+    parent.append_child(child).map(|_| ())
+}
+
+/// Re-renders every `[data-i18n]` text and `[data-i18n-attr]` attribute in `root` (and root
+/// itself) in the current language.
+pub fn relocalize(root: &Element) -> Result<(), JsValue> {
+    for element in matching(root, "[data-i18n]")? {
+        if let Some(id) = element.get_attribute("data-i18n") {
+            element.set_text_content(Some(&ctx::t(&id)));
+        }
+    }
+    for element in matching(root, "[data-i18n-attr]")? {
+        let Some(spec) = element.get_attribute("data-i18n-attr") else {
+            continue;
+        };
+        for pair in spec.split(';') {
+            if let Some((attr, id)) = pair.split_once('=') {
+                element.set_attribute(attr.trim(), &ctx::t(id.trim()))?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// `root` (if it matches) and its descendants matching `selector`.
+pub fn matching(root: &Element, selector: &str) -> Result<Vec<Element>, JsValue> {
+    let mut out = Vec::new();
+    if root.matches(selector)? {
+        out.push(root.clone());
+    }
+    let list = root.query_selector_all(selector)?;
+    for index in 0..list.length() {
+        if let Some(element) = list.get(index).and_then(|n| n.dyn_into::<Element>().ok()) {
+            out.push(element);
+        }
+    }
+    Ok(out)
+}
+
+/// Removes every child of `element`.
+pub fn clear(element: &Element) {
+    while let Some(child) = element.first_child() {
+        if element.remove_child(&child).is_err() {
+            break;
+        }
+    }
+}
+
+/// Focuses `element` if it is an HTML element.
+pub fn focus(element: &Element) {
+    if let Some(html) = element.dyn_ref::<HtmlElement>() {
+        let _ = html.focus();
+    }
+}
+
+/// The value stored under `key` in localStorage; `None` when absent or when storage is
+/// unavailable (private mode, disabled cookies, sandboxed frames).
+pub fn storage_get(key: &str) -> Option<String> {
+    let storage = web_sys::window()?.local_storage().ok()??;
+    storage.get_item(key).ok()?
+}
+
+/// Stores `value` under `key` in localStorage; failures (quota, private mode) are ignored:
+/// the choice then lasts only for this visit.
+pub fn storage_set(key: &str, value: &str) {
+    if let Some(Ok(Some(storage))) = web_sys::window().map(|w| w.local_storage()) {
+        let _ = storage.set_item(key, value);
+    }
+}
+
+/// Whether a key event comes from a place where the user types text (input, textarea,
+/// select, contenteditable): shell and page keys must not fire there.
+pub fn is_typing_target(target: Option<EventTarget>) -> bool {
+    let Some(element) = target.and_then(|t| t.dyn_into::<Element>().ok()) else {
+        return false;
+    };
+    let tag = element.tag_name().to_ascii_lowercase();
+    if matches!(tag.as_str(), "input" | "textarea" | "select") {
+        return true;
+    }
+    element
+        .dyn_ref::<HtmlElement>()
+        .is_some_and(|h| h.is_content_editable())
+}
+
+/// An event listener that stays attached while this value lives and is removed on drop.
+pub struct Listener {
+    target: EventTarget,
+    event: &'static str,
+    closure: Closure<dyn FnMut(Event)>,
+}
+
+impl Listener {
+    /// Attaches `handler` for `event` on `target`.
+    pub fn new(
+        target: &EventTarget,
+        event: &'static str,
+        handler: impl FnMut(Event) + 'static,
+    ) -> Result<Listener, JsValue> {
+        let closure = Closure::<dyn FnMut(Event)>::new(handler);
+        target.add_event_listener_with_callback(event, closure.as_ref().unchecked_ref())?;
+        Ok(Listener {
+            target: target.clone(),
+            event,
+            closure,
+        })
+    }
+
+    /// Keeps the listener for the life of the page (shell listeners).
+    pub fn forever(self) {
+        std::mem::forget(self);
+    }
+}
+
+impl Drop for Listener {
+    fn drop(&mut self) {
+        let _ = self
+            .target
+            .remove_event_listener_with_callback(self.event, self.closure.as_ref().unchecked_ref());
+    }
+}

@@ -1,0 +1,217 @@
+//! The home page: the BSV page's headline and introduction, a featured card for each
+//! in-browser tool, and one card per recipe (title, description, inputs with their defaults,
+//! the files it writes, the `bsv` and `python` command lines, and a link to its page when it
+//! has one). Every text is a `data-i18n` message, so a language switch needs nothing from
+//! the page itself.
+
+use wasm_bindgen::prelude::*;
+use web_sys::Element;
+
+use crate::args::ArgSpec;
+use crate::recipes::{RecipeInfo, RECIPES};
+use crate::ui::dom::{append, el, el_class, el_i18n, el_text};
+use crate::ui::page::{MountCtx, PageDef, PageHandle};
+use crate::ui::pages;
+
+/// The home page (`#/`).
+pub const PAGE: PageDef = PageDef {
+    id: "home",
+    title_id: "home-page-title",
+    blurb_id: "home-intro",
+    mount,
+};
+
+struct HomePage;
+
+impl PageHandle for HomePage {}
+
+fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
+    let root = ctx.root;
+
+    let hero = el_class("section", "hero")?;
+    let headline = el_i18n("h1", "headline", "home-headline")?;
+    headline.set_attribute("data-testid", "home-headline")?;
+    append(&hero, &headline)?;
+    append(&hero, &el_i18n("p", "intro", "home-intro")?)?;
+    append(&root, &hero)?;
+
+    for def in pages::PAGES.iter().filter(|d| d.id != pages::HOME_ID) {
+        append(&root, &featured_card(def)?)?;
+    }
+
+    let recipes = el_class("section", "recipes")?;
+    recipes.set_attribute("aria-labelledby", "recipes-heading")?;
+    let heading = el_i18n("h2", "", "home-recipes-heading")?;
+    heading.set_id("recipes-heading");
+    append(&recipes, &heading)?;
+    append(
+        &recipes,
+        &el_i18n("p", "section-intro", "home-recipes-intro")?,
+    )?;
+    let grid = el_class("ol", "recipe-grid")?;
+    for recipe in RECIPES.iter() {
+        append(&grid, &recipe_card(recipe.info)?)?;
+    }
+    append(&recipes, &grid)?;
+    append(&root, &recipes)?;
+    Ok(Box::new(HomePage))
+}
+
+/// The big link to an in-browser tool: "Interactive tool…", its title with an arrow, its blurb.
+fn featured_card(def: &PageDef) -> Result<Element, JsValue> {
+    let card = el_class("a", "featured-card")?;
+    card.set_attribute("href", &crate::ui::router::build_hash(def.id, &[]))?;
+    card.set_attribute("data-testid", &format!("featured-{}", def.id))?;
+    append(
+        &card,
+        &el_i18n("span", "featured-label", "home-featured-label")?,
+    )?;
+    let title = el_class("span", "featured-title")?;
+    append(&title, &el_i18n("span", "", def.title_id)?)?;
+    let arrow = el_text("span", "arrow", "\u{a0}→")?;
+    arrow.set_attribute("aria-hidden", "true")?;
+    append(&title, &arrow)?;
+    append(&card, &title)?;
+    append(&card, &el_i18n("span", "featured-blurb", def.blurb_id)?)?;
+    Ok(card)
+}
+
+fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
+    let id = info.id;
+    let item = el_class("li", "recipe-card")?;
+    item.set_attribute("data-testid", &format!("recipe-card-{id}"))?;
+    item.set_attribute("data-recipe", id)?;
+    append(&item, &el_i18n("h3", "", &format!("recipe-{id}-title"))?)?;
+    append(
+        &item,
+        &el_i18n("p", "blurb", &format!("recipe-{id}-blurb"))?,
+    )?;
+
+    if !info.args.is_empty() {
+        append(&item, &el_i18n("h4", "", "home-card-inputs")?)?;
+        append(&item, &arg_list(id, "arg", info.args, false)?)?;
+    }
+    if !info.flags.is_empty() {
+        let details = el_class("details", "recipe-options")?;
+        append(&details, &el_i18n("summary", "", "home-card-options")?)?;
+        append(&details, &arg_list(id, "flag", info.flags, true)?)?;
+        append(&item, &details)?;
+    }
+    if !info.writes.is_empty() {
+        let writes = el_class("p", "recipe-writes")?;
+        append(&writes, &el_i18n("span", "label", "home-card-writes")?)?;
+        for file in info.writes {
+            append(&writes, &el_text("code", "", file)?)?;
+        }
+        append(&item, &writes)?;
+    }
+
+    let commands = el_class("div", "commands")?;
+    let args = default_command_args(info.args);
+    append(
+        &commands,
+        &command_line("home-card-cli", &format!("bsv {id}"), &args, "cli")?,
+    )?;
+    append(
+        &commands,
+        &command_line(
+            "home-card-python",
+            &format!("python {}", info.python),
+            &args,
+            "python",
+        )?,
+    )?;
+    append(&item, &commands)?;
+
+    match pages::page_for_recipe(id) {
+        Some(def) => {
+            let link = el_class("a", "card-link")?;
+            link.set_attribute("href", &crate::ui::router::build_hash(def.id, &[]))?;
+            link.set_attribute("data-testid", &format!("recipe-link-{id}"))?;
+            append(&link, &el_i18n("span", "label", "home-card-in-browser")?)?;
+            append(&link, &el_i18n("span", "title", def.title_id)?)?;
+            let arrow = el_text("span", "arrow", "\u{a0}→")?;
+            arrow.set_attribute("aria-hidden", "true")?;
+            append(&link, &arrow)?;
+            append(&item, &link)?;
+        }
+        None => append(&item, &el_i18n("p", "cli-only", "home-card-cli-only")?)?,
+    }
+    Ok(item)
+}
+
+/// `<dl>`: the localized label of each argument (or `--flag`) and its default.
+fn arg_list(
+    recipe_id: &str,
+    kind: &str,
+    specs: &[ArgSpec],
+    flags: bool,
+) -> Result<Element, JsValue> {
+    let list = el_class("dl", "recipe-args")?;
+    for spec in specs {
+        let term = el("dt")?;
+        if flags {
+            append(&term, &el_text("code", "", &format!("--{} ", spec.name))?)?;
+        }
+        append(
+            &term,
+            &el_i18n(
+                "span",
+                "",
+                &format!("recipe-{recipe_id}-{kind}-{}", spec.name),
+            )?,
+        )?;
+        append(&list, &term)?;
+        let value = el("dd")?;
+        let shown = if spec.default.is_empty() {
+            "—"
+        } else {
+            spec.default
+        };
+        append(&value, &el_text("code", "", shown)?)?;
+        append(&list, &value)?;
+    }
+    Ok(list)
+}
+
+/// The defaults as command-line words, up to the first argument without a default (it cannot
+/// be skipped positionally).
+fn default_command_args(specs: &[ArgSpec]) -> Vec<String> {
+    specs
+        .iter()
+        .take_while(|spec| !spec.default.is_empty())
+        .map(|spec| shell_word(spec.default))
+        .collect()
+}
+
+/// `text` quoted for a POSIX shell when it holds anything but plain characters.
+fn shell_word(text: &str) -> String {
+    let plain = text
+        .chars()
+        .all(|c| c.is_ascii_alphanumeric() || "-_.,+/:=".contains(c));
+    if plain {
+        text.to_string()
+    } else {
+        format!("'{}'", text.replace('\'', r"'\''"))
+    }
+}
+
+/// A labelled command line: "Command line  `bsv ik-workspace 0.12 0.10 200 10`".
+fn command_line(
+    label_id: &str,
+    program: &str,
+    args: &[String],
+    kind: &str,
+) -> Result<Element, JsValue> {
+    let row = el_class("div", "command")?;
+    row.set_attribute("data-command", kind)?;
+    append(&row, &el_i18n("span", "label", label_id)?)?;
+    let mut text = program.to_string();
+    for arg in args {
+        text.push(' ');
+        text.push_str(arg);
+    }
+    let code = el_text("code", "", &text)?;
+    append(&row, &code)?;
+    Ok(row)
+}

@@ -1,0 +1,92 @@
+//! Keyboard control (the shell forwards keys when no field has focus): arrow keys nudge the
+//! tip 1 mm by IK (Shift: 10 mm), `[` / `]` turn q1 and `-` / `=` turn q2 by 0.01 rad
+//! (Shift: 0.1 rad), `e` flips the elbow, `r` resets, `w` shows or hides the workspace grid.
+
+use web_sys::KeyboardEvent;
+
+use super::Page;
+use crate::planar2r::wrap_angle;
+use crate::ui::page::Shortcut;
+
+/// Tip nudge, metres (Shift: ten times).
+const NUDGE_M: f64 = 0.001;
+/// Joint nudge, radians (Shift: ten times).
+const TURN_RAD: f64 = 0.01;
+
+/// The page's keys for the `?` overlay.
+pub fn shortcuts() -> Vec<Shortcut> {
+    vec![
+        Shortcut {
+            keys: "← ↑ → ↓",
+            message_id: "ik2r-key-nudge",
+        },
+        Shortcut {
+            keys: "[  ]",
+            message_id: "ik2r-key-q1",
+        },
+        Shortcut {
+            keys: "-  =",
+            message_id: "ik2r-key-q2",
+        },
+        Shortcut {
+            keys: "e",
+            message_id: "ik2r-key-elbow",
+        },
+        Shortcut {
+            keys: "r",
+            message_id: "ik2r-key-reset",
+        },
+        Shortcut {
+            keys: "w",
+            message_id: "ik2r-key-workspace",
+        },
+    ]
+}
+
+/// Handles one key; `true` when it was the page's.
+pub(super) fn on_key(page: &Page, event: &KeyboardEvent) -> bool {
+    if event.ctrl_key() || event.meta_key() || event.alt_key() {
+        return false;
+    }
+    let k = if event.shift_key() { 10.0 } else { 1.0 };
+    let key = event.key();
+    let nudge = |dx: f64, dy: f64| {
+        let (arm, q1, q2) = {
+            let st = page.state.borrow();
+            (st.params.arm(), st.q1, st.q2)
+        };
+        let (x, y) = arm.fk(q1, q2);
+        page.move_tip(x + dx * NUDGE_M * k, y + dy * NUDGE_M * k);
+    };
+    let turn = |d1: f64, d2: f64| {
+        let (q1, q2) = {
+            let st = page.state.borrow();
+            (st.q1, st.q2)
+        };
+        page.set_pose(
+            wrap_angle(q1 + d1 * TURN_RAD * k),
+            wrap_angle(q2 + d2 * TURN_RAD * k),
+        );
+    };
+    match key.as_str() {
+        "ArrowLeft" => nudge(-1.0, 0.0),
+        "ArrowRight" => nudge(1.0, 0.0),
+        "ArrowUp" => nudge(0.0, 1.0),
+        "ArrowDown" => nudge(0.0, -1.0),
+        "[" | "{" => turn(-1.0, 0.0),
+        "]" | "}" => turn(1.0, 0.0),
+        "-" | "_" => turn(0.0, -1.0),
+        "=" | "+" => turn(0.0, 1.0),
+        "e" | "E" => {
+            let elbow = page.state.borrow().elbow.flipped();
+            page.set_elbow(elbow);
+        }
+        "r" | "R" => page.reset(),
+        "w" | "W" => {
+            let on = !page.state.borrow().show_ws;
+            page.set_workspace_visible(on);
+        }
+        _ => return false,
+    }
+    true
+}

@@ -1,0 +1,35 @@
+//! The page table: every page the shell can route to (and lists in its navigation), and which
+//! recipes have a page in the browser. Only pages that work are listed; a recipe without a
+//! page says on its home-page card that it runs from the command line.
+
+use crate::ui::page::PageDef;
+
+pub mod home;
+pub mod ik2r;
+
+/// Route id of the home page (`#/`, `#/home`).
+pub const HOME_ID: &str = home::PAGE.id;
+
+/// All pages, in navigation order.
+pub const PAGES: &[PageDef] = &[home::PAGE, ik2r::PAGE];
+
+/// Recipe id → the page where it runs in the browser. The IK page computes and exports the
+/// CSVs of these three recipes.
+pub const RECIPE_PAGES: &[(&str, &str)] = &[
+    ("ik-workspace", "ik-2r"),
+    ("jacobian-2r", "ik-2r"),
+    ("manip-grid", "ik-2r"),
+];
+
+/// The page with route id `id`.
+pub fn find(id: &str) -> Option<&'static PageDef> {
+    PAGES.iter().find(|def| def.id == id)
+}
+
+/// The page where recipe `recipe_id` runs in the browser, if any.
+pub fn page_for_recipe(recipe_id: &str) -> Option<&'static PageDef> {
+    RECIPE_PAGES
+        .iter()
+        .find(|(recipe, _)| *recipe == recipe_id)
+        .and_then(|(_, page)| find(page))
+}
