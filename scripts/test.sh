@@ -17,7 +17,7 @@ step "clippy (native, all targets)"
 cargo clippy --all-targets --locked -- -D warnings
 
 step "clippy (wasm32, lib and tests)"
-cargo clippy --target wasm32-unknown-unknown --lib --tests --locked -- -D warnings
+cargo clippy --target wasm32-unknown-unknown --lib --tests --features bench --locked -- -D warnings
 
 step "native tests"
 cargo test --locked

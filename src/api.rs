@@ -68,14 +68,14 @@ pub fn bench_case(index: usize, reps: u32, kernel_only: bool) -> Result<Vec<f64>
     let case = crate::bench::CASES
         .get(index)
         .ok_or_else(|| JsError::new("no such case"))?;
-    let perf: js_sys::Function = js_sys::Reflect::get(&js_sys::global(), &"performance".into())
-        .and_then(|p| {
-            js_sys::Reflect::get(&p, &"now".into())
-                .map(|f| f.unchecked_into::<js_sys::Function>().bind(&p))
-        })
-        .map_err(|_| JsError::new("no performance.now"))?;
+    let no_clock = |_| JsError::new("no performance.now");
+    let perf = js_sys::Reflect::get(&js_sys::global(), &"performance".into()).map_err(no_clock)?;
+    let now_fn: js_sys::Function = js_sys::Reflect::get(&perf, &"now".into())
+        .map_err(no_clock)?
+        .unchecked_into();
     let now = || {
-        perf.call0(&JsValue::NULL)
+        now_fn
+            .call0(&perf)
             .ok()
             .and_then(|v| v.as_f64())
             .unwrap_or(f64::NAN)

@@ -6,6 +6,9 @@
 use crate::recipes::{self, RecipeOutput};
 use crate::RecipeError;
 
+/// The typed-kernel half of a case: inputs in, a count of results out.
+pub type KernelFn = fn(&[(String, String)]) -> Result<usize, RecipeError>;
+
 /// One benchmark: a recipe with its arguments (and an input file for traj-resample).
 #[derive(Debug, Clone)]
 pub struct BenchCase {
@@ -15,7 +18,7 @@ pub struct BenchCase {
     /// `(rows, joints)` of a generated trajectory CSV passed as `traj.csv`.
     pub trajectory: Option<(usize, usize)>,
     /// The same work through the typed API, without formatting CSV text (what a page calls).
-    pub kernel: fn(&[(String, String)]) -> Result<usize, RecipeError>,
+    pub kernel: KernelFn,
 }
 
 /// The cases of the kernels issue: sizes that a page or a learner can really ask for.

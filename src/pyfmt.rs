@@ -86,18 +86,10 @@ fn shortest_digits(text: &str) -> (Digits, i32) {
 }
 
 /// Up to 32 ASCII digits on the stack.
+#[derive(Default)]
 struct Digits {
     bytes: [u8; 32],
     len: usize,
-}
-
-impl Default for Digits {
-    fn default() -> Self {
-        Digits {
-            bytes: [0; 32],
-            len: 0,
-        }
-    }
 }
 
 impl Digits {
@@ -310,7 +302,7 @@ mod tests {
             (1e100, "1e+100"),
             (-2.5e-7, "-2.5e-07"),
             // An exact tie between two 16-digit candidates: Python picks the even one.
-            (577343969884.53125, "577343969884.5312"),
+            (577343969884.0 + 17.0 / 32.0, "577343969884.5312"),
             (7.199999999999999, "7.199999999999999"),
             (-200.0, "-200.0"),
             (f64::INFINITY, "inf"),

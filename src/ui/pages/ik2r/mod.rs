@@ -702,7 +702,7 @@ impl Page {
             .borrow()
             .ws_data
             .as_ref()
-            .map_or(true, |(p, _)| *p != wp);
+            .is_none_or(|(p, _)| *p != wp);
         if stale {
             let t0 = now_ms();
             match crate::recipes::ik_workspace::compute(&wp) {

@@ -126,7 +126,7 @@ impl Page {
             .borrow()
             .commands_shown
             .get(3)
-            .map_or(true, |bsv| !bsv.ends_with(&format!(" {}", state::num(q2))));
+            .is_none_or(|bsv| !bsv.ends_with(&format!(" {}", state::num(q2))));
         if stale {
             self.update_commands();
         }
