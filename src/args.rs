@@ -201,6 +201,10 @@ pub fn within_limit(param: &str, count: f64, limit: u64) -> Result<u64, RecipeEr
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     const POS: [ArgSpec; 2] = [

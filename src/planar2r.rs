@@ -351,6 +351,10 @@ pub fn wrap_angle(q: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn close(a: f64, b: f64) -> bool {

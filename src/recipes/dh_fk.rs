@@ -15,16 +15,16 @@
 //! The chain: `(0, 0, 0.10, 0)`, `(−π/2, 0, 0, 0)`, `(0, 0.25, 0, 0)` (metres, radians).
 //! The CSV's first row is the base frame written as literal zeros `0,0.0,...`; frame numbers
 //! are integers. Products are accumulated as numpy's `matmul` does, from `+0.0` with fused
-//! multiply-adds ([`super::se3_relative::matmul`]), so the last digits match the reference and
+//! multiply-adds ([`crate::numpy::matmul`]), so the last digits match the reference and
 //! negative zeros appear exactly where the recipe makes them: `pitch = atan2(−(+0.0), 1) = −0.0`
 //! for a joint frame whose `R₂₀` is zero.
 
 use nalgebra::{Matrix3, Matrix4};
 
-use super::se3_relative::matmul;
-use super::{CsvFile, RecipeInfo, RecipeOutput};
+use super::{RecipeInfo, RecipeOutput};
 use crate::args::{parse_f64, ArgSpec, Args};
 use crate::error::RecipeError;
+use crate::numpy::matmul;
 use crate::pyfmt::{fixed, Cell, CsvText};
 
 /// The CSV file the recipe writes.
@@ -260,13 +260,7 @@ pub fn run(params: &DhParams) -> Result<RecipeOutput, RecipeError> {
         fixed(tip[1], 4),
         fixed(tip[2], 4)
     );
-    Ok(RecipeOutput {
-        files: vec![CsvFile {
-            name: CSV_NAME.to_string(),
-            text: csv.finish(),
-        }],
-        summary,
-    })
+    Ok(RecipeOutput::single(CSV_NAME, csv.finish(), summary))
 }
 
 /// Entry point for the CLI and `runRecipe`.
@@ -276,6 +270,10 @@ pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn run_with(angles: &str) -> Result<RecipeOutput, RecipeError> {

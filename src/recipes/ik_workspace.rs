@@ -18,7 +18,7 @@
 //! - `step_mm` must be > 0 (Python divides by zero or builds an empty grid) and the grid may
 //!   hold at most [`MAX_CELLS`] cells.
 
-use super::{CsvFile, RecipeInfo, RecipeOutput};
+use super::{RecipeInfo, RecipeOutput};
 use crate::args::{in_range, positive, within_limit, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy;
@@ -262,22 +262,19 @@ pub fn params_from_args(args: &Args) -> Result<WorkspaceParams, RecipeError> {
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
     let ws = compute(&params_from_args(args)?)?;
-    Ok(RecipeOutput {
-        files: vec![CsvFile {
-            name: FILE_NAME.to_string(),
-            text: ws.to_csv(),
-        }],
-        summary: ws.summary(),
-    })
+    Ok(RecipeOutput::single(FILE_NAME, ws.to_csv(), ws.summary()))
 }
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
-        crate::recipes::run(INFO.id, &raw)
+        crate::recipes::run_strs(INFO.id, raw)
     }
 
     fn param_of(err: RecipeError) -> String {

@@ -21,7 +21,7 @@
 //! - at most [`MAX_SAMPLES`] samples.
 
 use super::ik_workspace::{check_link_m, finite};
-use super::{CsvFile, RecipeInfo, RecipeOutput};
+use super::{RecipeInfo, RecipeOutput};
 use crate::args::{in_range, positive, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy;
@@ -270,22 +270,23 @@ pub fn params_from_args(args: &Args) -> Result<SweepParams, RecipeError> {
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
     let samples = sweep(&params_from_args(args)?)?;
-    Ok(RecipeOutput {
-        files: vec![CsvFile {
-            name: FILE_NAME.to_string(),
-            text: to_csv(&samples),
-        }],
-        summary: summary(&samples),
-    })
+    Ok(RecipeOutput::single(
+        FILE_NAME,
+        to_csv(&samples),
+        summary(&samples),
+    ))
 }
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
-        crate::recipes::run(INFO.id, &raw)
+        crate::recipes::run_strs(INFO.id, raw)
     }
 
     fn assert_rejects(raw: &[&str], param: &str, check: fn(&RecipeError) -> bool) {

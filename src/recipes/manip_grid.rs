@@ -17,7 +17,7 @@
 //!   [`LINK_MAX_M`](super::ik_workspace::LINK_MAX_M).
 
 use super::ik_workspace::check_link_m;
-use super::{CsvFile, RecipeInfo, RecipeOutput};
+use super::{RecipeInfo, RecipeOutput};
 use crate::args::{parse_i64, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::planar2r::Arm;
@@ -266,22 +266,19 @@ pub fn params_from_args(args: &Args) -> Result<GridParams, RecipeError> {
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
     let g = grid(&params_from_args(args)?)?;
-    Ok(RecipeOutput {
-        files: vec![CsvFile {
-            name: FILE_NAME.to_string(),
-            text: g.to_csv(),
-        }],
-        summary: g.summary(),
-    })
+    Ok(RecipeOutput::single(FILE_NAME, g.to_csv(), g.summary()))
 }
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
-        crate::recipes::run(INFO.id, &raw)
+        crate::recipes::run_strs(INFO.id, raw)
     }
 
     #[test]

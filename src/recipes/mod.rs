@@ -51,6 +51,17 @@ pub struct RecipeOutput {
 }
 
 impl RecipeOutput {
+    /// A run that wrote one file.
+    pub fn single(name: &str, text: String, summary: String) -> RecipeOutput {
+        RecipeOutput {
+            files: vec![CsvFile {
+                name: name.to_string(),
+                text,
+            }],
+            summary,
+        }
+    }
+
     /// The text of the file called `name`, if the run wrote it.
     pub fn file(&self, name: &str) -> Option<&str> {
         self.files
@@ -133,6 +144,13 @@ pub fn find(id: &str) -> Option<&'static Recipe> {
 /// ```
 pub fn run(id: &str, raw: &[String]) -> Result<RecipeOutput, RecipeError> {
     run_with_inputs(id, raw, Vec::new())
+}
+
+/// [`run`] with string slices, for the recipes' unit tests.
+#[cfg(test)]
+pub(crate) fn run_strs(id: &str, raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
+    let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
+    run(id, &raw)
 }
 
 /// Runs recipe `id` with arguments and input files `(name, text)` that path arguments name

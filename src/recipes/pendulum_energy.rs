@@ -27,7 +27,7 @@
 //! step. With `b = 0` it is conserved up to the integrator's error; the recipe's point-mass
 //! figure is not an energy of this body at all.
 
-use super::{CsvFile, RecipeInfo, RecipeOutput};
+use super::{RecipeInfo, RecipeOutput};
 use crate::args::{in_range, positive, within_limit, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::pyfmt::{fixed, CsvText};
@@ -430,13 +430,7 @@ pub fn run(params: &PendulumParams) -> Result<RecipeOutput, RecipeError> {
         rows.len(),
         fixed(energy_drift(&rows), 6)
     );
-    Ok(RecipeOutput {
-        files: vec![CsvFile {
-            name: CSV_NAME.to_string(),
-            text: csv.finish(),
-        }],
-        summary,
-    })
+    Ok(RecipeOutput::single(CSV_NAME, csv.finish(), summary))
 }
 
 /// Entry point for the CLI and `runRecipe`.
@@ -446,6 +440,10 @@ pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn args(raw: &[&str]) -> Args {

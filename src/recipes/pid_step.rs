@@ -20,7 +20,7 @@
 
 use super::ik_workspace::finite;
 use super::manip_grid::{check_count, parse_count};
-use super::{CsvFile, RecipeInfo, RecipeOutput};
+use super::{RecipeInfo, RecipeOutput};
 use crate::args::{in_range, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::pyfmt::{fixed, CsvText};
@@ -213,22 +213,23 @@ pub fn params_from_args(args: &Args) -> Result<PidParams, RecipeError> {
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
     let rows = simulate(&params_from_args(args)?)?;
-    Ok(RecipeOutput {
-        files: vec![CsvFile {
-            name: FILE_NAME.to_string(),
-            text: to_csv(&rows),
-        }],
-        summary: summary(&rows),
-    })
+    Ok(RecipeOutput::single(
+        FILE_NAME,
+        to_csv(&rows),
+        summary(&rows),
+    ))
 }
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
-        crate::recipes::run(INFO.id, &raw)
+        crate::recipes::run_strs(INFO.id, raw)
     }
 
     #[test]

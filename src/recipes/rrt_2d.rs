@@ -444,6 +444,10 @@ pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn strings(v: &[&str]) -> Vec<String> {

@@ -17,14 +17,15 @@
 //!
 //! The recipe inverts `T_A` with `np.linalg.inv` (LU); we use the exact rigid inverse above,
 //! which agrees to rounding (about 1e-16). Products are summed as numpy's `matmul` does
-//! (`acc = 0; acc = fma(a, b, acc)` in index order, see [`matmul`]), so an exactly zero entry is
+//! (`acc = 0; acc = fma(a, b, acc)` in index order, see [`crate::numpy::matmul`]), so an exactly zero entry is
 //! `+0.0` as in numpy, and `-0.0` appears only where the recipe negates (`pitch = asin(−0.0)`).
 
 use nalgebra::{Matrix3, Matrix4, SMatrix, Vector3};
 
-use super::{CsvFile, RecipeInfo, RecipeOutput};
+use super::{RecipeInfo, RecipeOutput};
 use crate::args::{ArgSpec, Args};
 use crate::error::RecipeError;
+use crate::numpy::matmul;
 use crate::pyfmt::{fixed, CsvText};
 
 /// The CSV file the recipe writes.
@@ -162,25 +163,6 @@ impl Pose {
     }
 }
 
-/// `a · b` summed as numpy's `matmul` does it through OpenBLAS `dgemm`: each entry starts at
-/// `0.0` and accumulates `a[i,k] b[k,j]` for `k` in order with a fused multiply-add. So an
-/// exactly zero sum is `+0.0`, and the last bits match the reference (the DH golden runs differ
-/// in the last digit with separate multiply and add).
-///
-/// # Example
-/// ```
-/// use bsv_playground::recipes::se3_relative::matmul;
-/// use nalgebra::Matrix2;
-/// let a = Matrix2::new(1.0, 2.0, 3.0, 4.0);
-/// assert_eq!(matmul(&a, &Matrix2::identity()), a);
-/// ```
-pub fn matmul<const R: usize, const K: usize, const C: usize>(
-    a: &SMatrix<f64, R, K>,
-    b: &SMatrix<f64, K, C>,
-) -> SMatrix<f64, R, C> {
-    SMatrix::from_fn(|i, j| (0..K).fold(0.0, |acc, k| a[(i, k)].mul_add(b[(k, j)], acc)))
-}
-
 /// `Rz(yaw) · Ry(pitch) · Rx(roll)`, multiplied left to right as the recipe does.
 pub fn rpy_to_rotation(roll: f64, pitch: f64, yaw: f64) -> Matrix3<f64> {
     let (sr, cr) = crate::math::sincos(roll);
@@ -303,13 +285,7 @@ pub fn run(params: &Se3Params) -> Result<RecipeOutput, RecipeError> {
         f(rel.pitch),
         f(rel.yaw)
     );
-    Ok(RecipeOutput {
-        files: vec![CsvFile {
-            name: CSV_NAME.to_string(),
-            text: csv.finish(),
-        }],
-        summary,
-    })
+    Ok(RecipeOutput::single(CSV_NAME, csv.finish(), summary))
 }
 
 /// Entry point for the CLI and `runRecipe`.
@@ -319,6 +295,10 @@ pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn args(raw: &[&str]) -> Args {

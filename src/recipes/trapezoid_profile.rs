@@ -27,7 +27,7 @@
 
 use super::ik_workspace::finite;
 use super::pid_step::py_round;
-use super::{CsvFile, RecipeInfo, RecipeOutput};
+use super::{RecipeInfo, RecipeOutput};
 use crate::args::{positive, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::pyfmt::{fixed, CsvText};
@@ -302,22 +302,23 @@ pub fn params_from_args(args: &Args) -> Result<TrapParams, RecipeError> {
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
     let profile = compute(&params_from_args(args)?)?;
-    Ok(RecipeOutput {
-        files: vec![CsvFile {
-            name: FILE_NAME.to_string(),
-            text: profile.to_csv(),
-        }],
-        summary: profile.summary(),
-    })
+    Ok(RecipeOutput::single(
+        FILE_NAME,
+        profile.to_csv(),
+        profile.summary(),
+    ))
 }
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
 
     fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
-        crate::recipes::run(INFO.id, &raw)
+        crate::recipes::run_strs(INFO.id, raw)
     }
 
     #[test]

@@ -216,6 +216,10 @@ fn seed_out_of_range(param: &str, value: f64) -> RecipeError {
 
 #[cfg(test)]
 mod tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
     use super::*;
     use serde_json::Value;
 
