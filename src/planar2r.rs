@@ -76,8 +76,10 @@ impl Arm {
 
     /// Tip position.
     pub fn fk(&self, q1: f64, q2: f64) -> (f64, f64) {
-        let x = self.l1 * crate::math::cos(q1) + self.l2 * crate::math::cos(q1 + q2);
-        let y = self.l1 * crate::math::sin(q1) + self.l2 * crate::math::sin(q1 + q2);
+        let (s1, c1) = crate::math::sincos(q1);
+        let (s12, c12) = crate::math::sincos(q1 + q2);
+        let x = self.l1 * c1 + self.l2 * c12;
+        let y = self.l1 * s1 + self.l2 * s12;
         (x, y)
     }
 
@@ -107,8 +109,8 @@ impl Arm {
         if elbow == Elbow::Up {
             q2 = -q2;
         }
-        let q1 = crate::math::atan2(y, x)
-            - crate::math::atan2(l2 * crate::math::sin(q2), l1 + l2 * crate::math::cos(q2));
+        let (sin_q2, cos_q2) = crate::math::sincos(q2);
+        let q1 = crate::math::atan2(y, x) - crate::math::atan2(l2 * sin_q2, l1 + l2 * cos_q2);
         Some((q1, q2))
     }
 
@@ -134,8 +136,8 @@ impl Arm {
 
     /// Geometric Jacobian d(x, y)/d(q1, q2).
     pub fn jacobian(&self, q1: f64, q2: f64) -> Mat2 {
-        let (s1, c1) = (crate::math::sin(q1), crate::math::cos(q1));
-        let (s12, c12) = (crate::math::sin(q1 + q2), crate::math::cos(q1 + q2));
+        let (s1, c1) = crate::math::sincos(q1);
+        let (s12, c12) = crate::math::sincos(q1 + q2);
         [
             [-self.l1 * s1 - self.l2 * s12, -self.l2 * s12],
             [self.l1 * c1 + self.l2 * c12, self.l2 * c12],
@@ -161,8 +163,8 @@ impl Arm {
     /// `det J` as the manip-grid recipe writes it out by hand (not via LU).
     pub fn det_explicit(&self, q1: f64, q2: f64) -> f64 {
         let (l1, l2) = (self.l1, self.l2);
-        let (s1, c1) = (crate::math::sin(q1), crate::math::cos(q1));
-        let (s12, c12) = (crate::math::sin(q1 + q2), crate::math::cos(q1 + q2));
+        let (s1, c1) = crate::math::sincos(q1);
+        let (s12, c12) = crate::math::sincos(q1 + q2);
         (-l1 * s1 - l2 * s12) * (l2 * c12) - (-l2 * s12) * (l1 * c1 + l2 * c12)
     }
 }

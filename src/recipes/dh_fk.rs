@@ -98,8 +98,8 @@ pub const INFO: RecipeInfo = RecipeInfo {
 
 /// The link transform `T_mdh(α, a, d, θ)`, entry for entry as the recipe builds it.
 pub fn mdh_transform(alpha: f64, a: f64, d: f64, theta: f64) -> Matrix4<f64> {
-    let (sa, ca) = (crate::math::sin(alpha), crate::math::cos(alpha));
-    let (st, ct) = (crate::math::sin(theta), crate::math::cos(theta));
+    let (sa, ca) = crate::math::sincos(alpha);
+    let (st, ct) = crate::math::sincos(theta);
     #[rustfmt::skip]
     let t = Matrix4::new(
         ct, -st, 0.0, a,

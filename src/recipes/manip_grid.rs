@@ -238,7 +238,7 @@ pub fn fill_abs_det(l1: f64, l2: f64, n: i64, out: &mut [f32]) -> Result<f32, Re
     let mut cos_q = [0.0f64; TABLE];
     for (i, (s, c)) in sin_q.iter_mut().zip(cos_q.iter_mut()).take(n).enumerate() {
         let q = grid_angle(i, n);
-        (*s, *c) = (crate::math::sin(q), crate::math::cos(q));
+        (*s, *c) = crate::math::sincos(q);
     }
     let mut max = 0.0f32;
     for (row, (&s1, &c1)) in out.chunks_exact_mut(n).zip(sin_q.iter().zip(&cos_q)) {
