@@ -4,7 +4,7 @@
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
-use crate::recipes::{self, RecipeOutput};
+use crate::recipes::{self, pendulum_energy, rrt_2d, RecipeOutput};
 
 /// One file of a recipe run, as JS sees it: `{ name, text }`.
 #[derive(Debug, Clone, Serialize, Deserialize)]
@@ -57,6 +57,165 @@ pub fn run_recipe(
     let out =
         recipes::run_with_inputs(id, &args, files).map_err(|e| JsError::new(&e.to_string()))?;
     serde_wasm_bindgen::to_value(&JsRun::from(out)).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// `listRecipes()`: every recipe as `{ id, python, args: [{ name, default, help }], flags,
+/// writes }`, in the order of the BSV page.
+#[wasm_bindgen(js_name = listRecipes)]
+pub fn list_recipes() -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    struct Arg {
+        name: &'static str,
+        default: &'static str,
+        help: &'static str,
+    }
+    #[derive(Serialize)]
+    struct Info {
+        id: &'static str,
+        python: &'static str,
+        args: Vec<Arg>,
+        flags: Vec<Arg>,
+        writes: &'static [&'static str],
+    }
+    let arg = |a: &crate::args::ArgSpec| Arg {
+        name: a.name,
+        default: a.default,
+        help: a.help,
+    };
+    let list: Vec<Info> = recipes::RECIPES
+        .iter()
+        .map(|r| Info {
+            id: r.info.id,
+            python: r.info.python,
+            args: r.info.args.iter().map(arg).collect(),
+            flags: r.info.flags.iter().map(arg).collect(),
+            writes: r.info.writes,
+        })
+        .collect();
+    Ok(serde_wasm_bindgen::to_value(&list)?)
+}
+
+/// `new RrtHandle(args)`: the rrt-2d tree grown a few iterations at a time (for a page that
+/// animates it), with the recipe's own arguments (`["7", "800", "--goal-x", "0.5"]`). The
+/// finished tree is identical to `runRecipe("rrt-2d", args)`'s.
+#[wasm_bindgen]
+pub struct RrtHandle {
+    rrt: rrt_2d::Rrt,
+}
+
+#[wasm_bindgen]
+impl RrtHandle {
+    #[wasm_bindgen(constructor)]
+    pub fn new(args: Vec<String>) -> Result<RrtHandle, JsError> {
+        let params = rrt_2d::params_from_args(&recipes::parse_args(rrt_2d::INFO.id, &args)?)?;
+        Ok(RrtHandle {
+            rrt: rrt_2d::Rrt::new(&params)?,
+        })
+    }
+
+    /// Runs up to `iterations` more iterations (fewer when the goal is reached or the budget
+    /// is spent); returns the number of nodes.
+    pub fn step(&mut self, iterations: u32) -> usize {
+        for _ in 0..iterations {
+            if self.rrt.is_done() {
+                break;
+            }
+            self.rrt.step();
+        }
+        self.rrt.nodes().len()
+    }
+
+    /// Node positions, flat: `[x0, y0, x1, y1, ...]` (a `Float64Array`).
+    pub fn nodes(&self) -> Vec<f64> {
+        self.rrt.nodes().iter().flatten().copied().collect()
+    }
+
+    /// Parent of each node, `-1` for the root (an `Int32Array`).
+    pub fn parents(&self) -> Vec<i32> {
+        self.rrt
+            .parents()
+            .iter()
+            .map(|p| p.and_then(|i| i32::try_from(i).ok()).unwrap_or(-1))
+            .collect()
+    }
+
+    /// The start-to-goal path, flat like `nodes` (empty until the goal is reached).
+    pub fn path(&self) -> Vec<f64> {
+        self.rrt.path().iter().flatten().copied().collect()
+    }
+
+    /// Iterations run so far.
+    pub fn iterations(&self) -> usize {
+        self.rrt.iterations()
+    }
+
+    /// Whether no further iteration will run.
+    pub fn done(&self) -> bool {
+        self.rrt.is_done()
+    }
+
+    /// Whether the goal was reached.
+    pub fn found(&self) -> bool {
+        self.rrt.found().is_some()
+    }
+
+    /// The recipe's files and summary for the tree as it is now, like `runRecipe`.
+    pub fn output(&self) -> Result<JsValue, JsError> {
+        Ok(serde_wasm_bindgen::to_value(&JsRun::from(rrt_2d::output(
+            &self.rrt,
+        )))?)
+    }
+}
+
+/// `new PendulumHandle(args)`: the pendulum-energy simulation advanced frame by frame, with the
+/// recipe's own arguments and options (`["5", "--integrator", "rk4"]`).
+#[wasm_bindgen]
+pub struct PendulumHandle {
+    pendulum: pendulum_energy::Pendulum,
+}
+
+/// Values per row of [`PendulumHandle::advance`].
+pub const PENDULUM_ROW_LEN: usize = 7;
+
+#[wasm_bindgen]
+impl PendulumHandle {
+    #[wasm_bindgen(constructor)]
+    pub fn new(args: Vec<String>) -> Result<PendulumHandle, JsError> {
+        let raw = recipes::parse_args(pendulum_energy::INFO.id, &args)?;
+        let params = pendulum_energy::PendulumParams::from_args(&raw)?;
+        params.validate()?;
+        Ok(PendulumHandle {
+            pendulum: pendulum_energy::Pendulum::new(&params),
+        })
+    }
+
+    /// Takes `steps` integrator steps; returns their rows flat, 7 values each:
+    /// `t_s, theta, omega, ke, pe, total` (the recipe's columns) and the true rigid-body
+    /// energy (a `Float64Array`).
+    pub fn advance(&mut self, steps: u32) -> Vec<f64> {
+        let mut out = Vec::with_capacity(steps as usize * PENDULUM_ROW_LEN);
+        for _ in 0..steps {
+            let r = self.pendulum.step();
+            out.extend_from_slice(&[r.t_s, r.theta, r.omega, r.ke, r.pe, r.total, r.true_energy]);
+        }
+        out
+    }
+
+    /// Current angle from hanging down, radians.
+    pub fn theta(&self) -> f64 {
+        self.pendulum.theta()
+    }
+
+    /// Current angular velocity, rad/s.
+    pub fn omega(&self) -> f64 {
+        self.pendulum.omega()
+    }
+
+    /// Simulated time, seconds.
+    #[wasm_bindgen(js_name = timeS)]
+    pub fn time_s(&self) -> f64 {
+        self.pendulum.time_s()
+    }
 }
 
 /// `benchCase(index, reps, kernelOnly)`: runs `bench::CASES[index]` `reps` times (the typed

@@ -146,6 +146,13 @@ pub fn run(id: &str, raw: &[String]) -> Result<RecipeOutput, RecipeError> {
     run_with_inputs(id, raw, Vec::new())
 }
 
+/// Parses command-line style arguments for recipe `id` (for handles that take the recipe's
+/// arguments, such as the wasm `RrtHandle`).
+pub fn parse_args(id: &str, raw: &[String]) -> Result<Args, RecipeError> {
+    let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
+    Args::parse(raw, recipe.info.args, recipe.info.flags)
+}
+
 /// [`run`] with string slices, for the recipes' unit tests.
 #[cfg(test)]
 pub(crate) fn run_strs(id: &str, raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
@@ -161,6 +168,5 @@ pub fn run_with_inputs(
     inputs: Vec<(String, String)>,
 ) -> Result<RecipeOutput, RecipeError> {
     let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
-    let args = Args::parse(raw, recipe.info.args, recipe.info.flags)?.with_inputs(inputs);
-    (recipe.run)(&args)
+    (recipe.run)(&parse_args(id, raw)?.with_inputs(inputs))
 }

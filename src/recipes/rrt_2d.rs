@@ -421,8 +421,8 @@ pub fn output(rrt: &Rrt) -> RecipeOutput {
     }
 }
 
-/// Parses `seed max_iter [--goal-x X] [--goal-y Y]`, runs, and writes the recipe's output.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
+/// Parses `seed max_iter [--goal-x X] [--goal-y Y]` into parameters (validated by [`Rrt::new`]).
+pub fn params_from_args(args: &Args) -> Result<RrtParams, RecipeError> {
     let [seed_spec, max_iter_spec] = &ARGS;
     let [goal_x_spec, goal_y_spec] = &FLAGS;
     let seed = parse_seed(seed_spec.name, args.text(0, seed_spec))?;
@@ -434,12 +434,16 @@ pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
         max: MAX_ITER_LIMIT as f64,
     })?;
     let goal = [args.flag_f64(goal_x_spec)?, args.flag_f64(goal_y_spec)?];
-    let rrt = run(&RrtParams {
+    Ok(RrtParams {
         seed,
         max_iter,
         goal,
-    })?;
-    Ok(output(&rrt))
+    })
+}
+
+/// Runs the recipe from command-line style arguments.
+pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
+    Ok(output(&run(&params_from_args(args)?)?))
 }
 
 #[cfg(test)]
