@@ -11,6 +11,8 @@ cargo run --quiet --release --example bench
 echo
 echo "== kernels, wasm in Node (release)"
 wasm-pack build --quiet --target nodejs --release --out-dir target/bench-pkg --mode no-install --no-pack -- --features bench
+# The nodejs target is CommonJS; the repo's package.json says "module".
+echo '{ "type": "commonjs" }' > target/bench-pkg/package.json
 node scripts/bench-wasm.mjs
 
 if [[ -f tests/e2e/ik2r.bench.mjs ]]; then

@@ -99,8 +99,15 @@ impl Arm {
     /// IK for one branch, exactly as the recipe computes it; `None` outside the annulus
     /// (`|c2| > 1`).
     pub fn ik(&self, x: f64, y: f64, elbow: Elbow) -> Option<(f64, f64)> {
+        let (q2, beta) = self.ik_radial(x * x + y * y, elbow)?;
+        Some((crate::math::atan2(y, x) - beta, q2))
+    }
+
+    /// The part of [`Arm::ik`] that depends only on `r2 = x² + y²`: `(q2, beta)` with
+    /// `q1 = atan2(y, x) - beta`, bit for bit as `ik` computes them (grids reuse it for cells
+    /// with the same `r2`).
+    pub fn ik_radial(&self, r2: f64, elbow: Elbow) -> Option<(f64, f64)> {
         let (l1, l2) = (self.l1, self.l2);
-        let r2 = x * x + y * y;
         let c2 = (r2 - l1 * l1 - l2 * l2) / (2.0 * l1 * l2);
         if c2.abs() > 1.0 || c2.is_nan() {
             return None;
@@ -110,8 +117,7 @@ impl Arm {
             q2 = -q2;
         }
         let (sin_q2, cos_q2) = crate::math::sincos(q2);
-        let q1 = crate::math::atan2(y, x) - crate::math::atan2(l2 * sin_q2, l1 + l2 * cos_q2);
-        Some((q1, q2))
+        Some((q2, crate::math::atan2(l2 * sin_q2, l1 + l2 * cos_q2)))
     }
 
     /// The reachable point nearest to `(x, y)` and whether it had to move.

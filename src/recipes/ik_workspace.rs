@@ -180,19 +180,33 @@ pub fn compute(params: &WorkspaceParams) -> Result<Workspace, RecipeError> {
         q2: Vec::with_capacity(cells),
         err_mm: Vec::with_capacity(cells),
     };
-    for &x in &axis {
-        for &y in &axis {
-            match arm.ik(x, y, Elbow::Down) {
-                Some((q1, q2)) => {
+    // x and y run over the same array, and x*x + y*y == y*y + x*x exactly, so the transposed
+    // cell (iy, ix) has the very same q2 and beta: compute them once per pair (the second
+    // time they are read back from the row already done). Bit-for-bit what `Arm::ik` gives.
+    let n = axis.len();
+    let mut beta = vec![f64::NAN; cells];
+    for (ix, &x) in axis.iter().enumerate() {
+        for (iy, &y) in axis.iter().enumerate() {
+            let radial = if iy < ix {
+                let k = iy * n + ix;
+                ws.reachable[k].then(|| (ws.q2[k], beta[k]))
+            } else {
+                arm.ik_radial(x * x + y * y, Elbow::Down)
+            };
+            match radial {
+                Some((q2, b)) => {
+                    let q1 = crate::math::atan2(y, x) - b;
                     let (xr, yr) = arm.fk(q1, q2);
                     let (dx, dy) = (xr - x, yr - y);
                     ws.reachable.push(true);
                     ws.q1.push(q1);
                     ws.q2.push(q2);
-                    // The recipe writes `((xr - x) ** 2 + (yr - y) ** 2) ** 0.5`; this is round-off
-                    // noise (~1e-14 mm), so plain products and sqrt are as faithful and 3× cheaper.
-                    let err = (dx * dx + dy * dy).sqrt() * 1000.0;
-                    ws.err_mm.push(err);
+                    // The recipe writes `((xr - x) ** 2 + (yr - y) ** 2) ** 0.5`; this is
+                    // round-off noise (~1e-14 mm), so plain products and sqrt are as faithful.
+                    ws.err_mm.push((dx * dx + dy * dy).sqrt() * 1000.0);
+                    if let Some(slot) = beta.get_mut(ix * n + iy) {
+                        *slot = b;
+                    }
                 }
                 None => {
                     ws.reachable.push(false);
@@ -279,6 +293,48 @@ mod tests {
 
     fn param_of(err: RecipeError) -> String {
         err.param().unwrap_or("").to_string()
+    }
+
+    #[test]
+    fn grid_equals_per_cell_ik_bit_for_bit() {
+        // The transpose reuse in `compute` must give exactly what `Arm::ik` gives per cell.
+        for params in [
+            WorkspaceParams::default(),
+            WorkspaceParams {
+                l1: 0.2,
+                l2: 0.15,
+                half_mm: 400.0,
+                step_mm: 7.0,
+            },
+            WorkspaceParams {
+                l1: 0.1,
+                l2: 0.1,
+                half_mm: 210.0,
+                step_mm: 3.0,
+            },
+        ] {
+            let ws = compute(&params).unwrap();
+            let arm = Arm {
+                l1: params.l1,
+                l2: params.l2,
+            };
+            let axis = params.axis().unwrap();
+            for (ix, &x) in axis.iter().enumerate() {
+                for (iy, &y) in axis.iter().enumerate() {
+                    let k = ix * axis.len() + iy;
+                    match arm.ik(x, y, Elbow::Down) {
+                        Some((q1, q2)) => {
+                            assert!(ws.reachable[k]);
+                            assert_eq!(
+                                (ws.q1[k].to_bits(), ws.q2[k].to_bits()),
+                                (q1.to_bits(), q2.to_bits())
+                            );
+                        }
+                        None => assert!(!ws.reachable[k]),
+                    }
+                }
+            }
+        }
     }
 
     #[test]
