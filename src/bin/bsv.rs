@@ -19,8 +19,8 @@ use bsv_playground::recipes::{self, Recipe, RecipeOutput};
 /// Recipes whose positional argument at this index is a path to an input file.
 const INPUT_PATH_ARGS: &[(&str, usize)] = &[("traj-resample", 0)];
 
-/// Input files larger than this are refused before reading (the kernel has its own limit too).
-const MAX_INPUT_BYTES: u64 = 128 * 1024 * 1024;
+/// Input files larger than the kernel accepts are refused before reading.
+use bsv_playground::recipes::traj_resample::MAX_INPUT_BYTES;
 
 fn main() -> ExitCode {
     let raw: Vec<String> = std::env::args().skip(1).collect();
