@@ -89,6 +89,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
     ),
     (Lang::En, "ik2r.ftl", include_str!("../locales/en/ik2r.ftl")),
     (
+        Lang::En,
+        "drills.ftl",
+        include_str!("../locales/en/drills.ftl"),
+    ),
+    (
         Lang::Ja,
         "shell.ftl",
         include_str!("../locales/ja/shell.ftl"),
@@ -105,6 +110,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/ja/recipes.ftl"),
     ),
     (Lang::Ja, "ik2r.ftl", include_str!("../locales/ja/ik2r.ftl")),
+    (
+        Lang::Ja,
+        "drills.ftl",
+        include_str!("../locales/ja/drills.ftl"),
+    ),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as

@@ -13,5 +13,5 @@ home-card-writes = Writes
 home-card-options = Options
 home-card-cli = Command line
 home-card-python = Python original
-home-card-cli-only = This drill runs from the command line today.
+home-card-drill = Run this drill
 home-card-in-browser = In the browser:

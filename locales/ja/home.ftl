@@ -13,5 +13,5 @@ home-card-writes = 出力ファイル
 home-card-options = オプション
 home-card-cli = コマンドライン
 home-card-python = 元の Python
-home-card-cli-only = この演習は、現在はコマンドラインで実行します。
+home-card-drill = このドリルを実行する
 home-card-in-browser = ブラウザで試す：

@@ -2,7 +2,8 @@
 //! corresponded 2-D point sets with Umeyama's method.
 //!
 //! With means `mu_x`, `mu_y`, centred sets `Xc`, `Yc` and `n` points:
-//! - `var_x = sum |Xc_i|^2 / n`, `C = Yc^T Xc / n` (2x2), `C = U diag(S) V^T`;
+//! - `var_x = sum |Xc_i|^2 / n`, `C = Yc^T Xc / n` (2x2), `C = U diag(S) V^T` (in closed form,
+//!   see [`umeyama`]);
 //! - `R = U V^T`; if `det R < 0`, negate the last column of `U` and recompute `R`;
 //! - `s = (S_1 + S_2) / var_x` (1 when `var_x <= 1e-12`); the recipe keeps the plain sum even
 //!   after the reflection fix, where Umeyama would use `S_1 - S_2`;
@@ -106,18 +107,18 @@ pub fn umeyama(x: &[[f64; 2]], y: &[[f64; 2]]) -> Alignment {
     let var_x = sum_sq_x / count;
     cov /= count;
 
-    let svd = cov.svd(true, true);
-    let singular_sum = svd.singular_values.sum();
-    let (Some(mut u), Some(v_t)) = (svd.u, svd.v_t) else {
-        return Alignment::nan();
-    };
-    let mut rotation = u * v_t;
-    if rotation.determinant() < 0.0 {
-        // nalgebra orders singular values decreasing, as numpy: the last column is the
-        // smallest one's.
-        u.column_mut(1).neg_mut();
-        rotation = u * v_t;
-    }
+    // The 2×2 SVD in closed form, with crate::math so the browser and the CLI agree to the
+    // bit: cov = [[E+F, G-H], [G+H, E-F]] = Q rot(atan2(H, E)) + R refl(atan2(G, F)) with
+    // Q = |(E, H)|, R = |(F, G)|; its singular values are Q + R and |Q - R|. U Vᵀ is
+    // rot(atan2(H, E)) when Q >= R; when Q < R it is a reflection, and the recipe's fix
+    // (negate U's last column) turns it into the same rotation, the proper rotation nearest
+    // to cov. The recipe's quirk stays: the scale uses the sum of both singular values.
+    let (a, b, c, d) = (cov[(0, 0)], cov[(0, 1)], cov[(1, 0)], cov[(1, 1)]);
+    let (e, f, g, h) = ((a + d) / 2.0, (a - d) / 2.0, (c + b) / 2.0, (c - b) / 2.0);
+    let (q, r) = (crate::math::hypot(e, h), crate::math::hypot(f, g));
+    let singular_sum = (q + r) + (q - r).abs();
+    let (sin_a, cos_a) = crate::math::sincos(crate::math::atan2(h, e));
+    let rotation = Matrix2::new(cos_a, -sin_a, sin_a, cos_a);
     let scale = if var_x > MIN_VARIANCE {
         singular_sum / var_x
     } else {

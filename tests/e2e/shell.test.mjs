@@ -48,19 +48,22 @@ test('the shell renders in English with the home page, navigation and disclaimer
     assert.match(await text(page, '[data-testid="site-footer"]'), /Works offline; no data leaves this page\./);
     assert.match(await text(page, '[data-testid="brand"]'), /BSV Playground/);
     assert.match(t.title, /^BSV Playground/);
-    // Only pages that exist are in the navigation: home and the IK page.
+    // Only pages that exist are in the navigation: home, the IK page and all drills.
     const navIds = await page.locator('[data-testid="site-nav"] a').evaluateAll((as) => as.map((a) => a.dataset.page));
-    assert.deepEqual(navIds, ['home', 'ik-2r']);
+    assert.deepEqual(navIds, ['home', 'ik-2r', 'drills']);
     assert.equal(await page.locator('[data-testid="nav-home"]').getAttribute('aria-current'), 'page');
-    // Twelve recipe cards, each with both command lines; the IK ones link to the IK page.
+    // Twelve recipe cards, each with both command lines and a link to its drill; the IK ones
+    // also link to the IK page.
     assert.equal(await page.locator('.recipe-card').count(), 12);
     const ik = page.locator('[data-testid="recipe-card-ik-workspace"]');
     assert.match(await ik.locator('[data-command="cli"] code').innerText(), /^bsv ik-workspace 0\.12 0\.10 200 10$/);
     assert.match(await ik.locator('[data-command="python"] code').innerText(), /^python planar_ik_workspace\.py 0\.12 0\.10 200 10$/);
-    assert.equal(await ik.locator('a.card-link').getAttribute('href'), '#/ik-2r');
+    assert.equal(await ik.locator('[data-testid="recipe-link-ik-workspace"]').getAttribute('href'), '#/ik-2r');
+    assert.equal(await ik.locator('[data-testid="recipe-drill-ik-workspace"]').getAttribute('href'), '#/drills?recipe=ik-workspace');
     const pid = page.locator('[data-testid="recipe-card-pid-step"]');
-    assert.match(await pid.innerText(), /runs from the command line today/);
-    assert.equal(await pid.locator('a').count(), 0);
+    assert.doesNotMatch(await pid.innerText(), /command line today/);
+    assert.deepEqual(await pid.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href'))), ['#/drills?recipe=pid-step']);
+    assert.match(await pid.innerText(), /In the browser:\s*Run this drill/);
     // The featured card is the IK playground.
     assert.equal(await page.locator('[data-testid="featured-ik-2r"]').getAttribute('href'), '#/ik-2r');
     // No message id leaked through untranslated (a missing message shows its id).

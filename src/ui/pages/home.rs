@@ -1,8 +1,8 @@
 //! The home page: the BSV page's headline and introduction, a featured card for each
 //! in-browser tool, and one card per recipe (title, description, inputs with their defaults,
-//! the files it writes, the `bsv` and `python` command lines, and a link to its page when it
-//! has one). Every text is a `data-i18n` message, so a language switch needs nothing from
-//! the page itself.
+//! the files it writes, the `bsv` and `python` command lines, and links to run it in the
+//! browser: its drill on the drills page, and its own page when it has one). Every text is a
+//! `data-i18n` message, so a language switch needs nothing from the page itself.
 
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
@@ -123,21 +123,41 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
     )?;
     append(&item, &commands)?;
 
-    match pages::page_for_recipe(id) {
-        Some(def) => {
-            let link = el_class("a", "card-link")?;
-            link.set_attribute("href", &crate::ui::router::build_hash(def.id, &[]))?;
-            link.set_attribute("data-testid", &format!("recipe-link-{id}"))?;
-            append(&link, &el_i18n("span", "label", "home-card-in-browser")?)?;
-            append(&link, &el_i18n("span", "title", def.title_id)?)?;
-            let arrow = el_text("span", "arrow", "\u{a0}→")?;
-            arrow.set_attribute("aria-hidden", "true")?;
-            append(&link, &arrow)?;
-            append(&item, &link)?;
-        }
-        None => append(&item, &el_i18n("p", "cli-only", "home-card-cli-only")?)?,
+    let links = el_class("p", "card-link")?;
+    append(&links, &el_i18n("span", "label", "home-card-in-browser")?)?;
+    append(
+        &links,
+        &card_link(
+            &pages::drills::link(id),
+            "home-card-drill",
+            &format!("recipe-drill-{id}"),
+        )?,
+    )?;
+    if let Some(def) = pages::page_for_recipe(id) {
+        append(&links, &el_text("span", "sep", " · ")?)?;
+        append(
+            &links,
+            &card_link(
+                &crate::ui::router::build_hash(def.id, &[]),
+                def.title_id,
+                &format!("recipe-link-{id}"),
+            )?,
+        )?;
     }
+    append(&item, &links)?;
     Ok(item)
+}
+
+/// One link at the foot of a recipe card: its title and an arrow.
+fn card_link(href: &str, title_id: &str, test_id: &str) -> Result<Element, JsValue> {
+    let link = el("a")?;
+    link.set_attribute("href", href)?;
+    link.set_attribute("data-testid", test_id)?;
+    append(&link, &el_i18n("span", "title", title_id)?)?;
+    let arrow = el_text("span", "arrow", "\u{a0}→")?;
+    arrow.set_attribute("aria-hidden", "true")?;
+    append(&link, &arrow)?;
+    Ok(link)
 }
 
 /// `<dl>`: the localized label of each argument (or `--flag`) and its default.

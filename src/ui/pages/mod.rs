@@ -1,9 +1,10 @@
 //! The page table: every page the shell can route to (and lists in its navigation), and which
-//! recipes have a page in the browser. Only pages that work are listed; a recipe without a
-//! page says on its home-page card that it runs from the command line.
+//! recipes have a page of their own in the browser. Only pages that work are listed; every
+//! recipe also runs on the drills page (`#/drills?recipe=<id>`).
 
 use crate::ui::page::PageDef;
 
+pub mod drills;
 pub mod home;
 pub mod ik2r;
 
@@ -11,7 +12,7 @@ pub mod ik2r;
 pub const HOME_ID: &str = home::PAGE.id;
 
 /// All pages, in navigation order.
-pub const PAGES: &[PageDef] = &[home::PAGE, ik2r::PAGE];
+pub const PAGES: &[PageDef] = &[home::PAGE, ik2r::PAGE, drills::PAGE];
 
 /// Recipe id → the page where it runs in the browser. The IK page computes and exports the
 /// CSVs of these three recipes.

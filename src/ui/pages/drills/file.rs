@@ -1,0 +1,83 @@
+//! Opening traj-resample's input CSV from an `<input type="file">`: the chosen file's name and
+//! size (checked against the kernel's limit before anything is read), then its text through
+//! `Blob.text()` (UTF-8, a byte-order mark dropped). Only `Blob` of web-sys is needed: the
+//! `File` and its list are read through `Reflect`.
+
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{Blob, HtmlInputElement};
+
+use super::plan::Shape;
+use crate::error::RecipeError;
+
+/// A CSV the user opened.
+pub struct InputFile {
+    /// The file's name (the recipe's `csv_path`).
+    pub name: String,
+    /// Size in bytes.
+    pub bytes: u64,
+    pub text: String,
+    /// Its shape, parsed when opened if it is small enough (`None`: checked by the run).
+    pub shape: Option<Result<Shape, RecipeError>>,
+}
+
+/// The file chosen in `input`: its name, size in bytes and the file itself.
+pub fn chosen(input: &HtmlInputElement) -> Option<(String, u64, Blob)> {
+    let files = js_sys::Reflect::get(input, &JsValue::from_str("files")).ok()?;
+    if files.is_null() || files.is_undefined() {
+        return None;
+    }
+    let file = js_sys::Reflect::get_u32(&files, 0).ok()?;
+    if file.is_null() || file.is_undefined() {
+        return None;
+    }
+    let name = js_sys::Reflect::get(&file, &JsValue::from_str("name"))
+        .ok()
+        .and_then(|n| n.as_string())
+        .unwrap_or_default();
+    let blob: Blob = file.unchecked_into();
+    let size = blob.size();
+    let bytes = if size.is_finite() && size > 0.0 {
+        size as u64
+    } else {
+        0
+    };
+    Some((name, bytes, blob))
+}
+
+/// Reads `blob` as UTF-8 text; `done` gets the text or the browser's reason for failing.
+pub fn read_text(blob: &Blob, done: impl FnOnce(Result<String, String>) + 'static) {
+    let done = std::rc::Rc::new(std::cell::RefCell::new(Some(done)));
+    let finish = move |result: Result<String, String>| {
+        if let Some(done) = done.borrow_mut().take() {
+            done(result);
+        }
+    };
+    let finish = std::rc::Rc::new(finish);
+    let ok = {
+        let finish = finish.clone();
+        Closure::once_into_js(move |text: JsValue| {
+            finish(text.as_string().ok_or_else(|| "not text".to_string()))
+        })
+    };
+    let fail = Closure::once_into_js(move |error: JsValue| {
+        let reason = js_sys::Reflect::get(&error, &JsValue::from_str("message"))
+            .ok()
+            .and_then(|m| m.as_string())
+            .or_else(|| error.as_string())
+            .unwrap_or_default();
+        finish(Err(reason))
+    });
+    then(&blob.text(), &ok, &fail);
+}
+
+/// `promise.then(ok, fail)`, called through `Reflect` to stay independent of js-sys's
+/// generic `Promise` signatures.
+pub fn then(promise: &js_sys::Promise, ok: &JsValue, fail: &JsValue) {
+    let method = js_sys::Reflect::get(promise, &JsValue::from_str("then"))
+        .ok()
+        .and_then(|f| f.dyn_into::<js_sys::Function>().ok());
+    if let Some(method) = method {
+        let _ = method.call2(promise, ok, fail);
+    }
+}

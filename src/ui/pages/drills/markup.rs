@@ -1,0 +1,76 @@
+//! The page's HTML skeleton and its stylesheet. Every fixed word is a `data-i18n` id filled by
+//! the shell (and `dom::relocalize`) from `locales/*/drills.ftl` and `recipes.ftl`; elements
+//! the code drives carry `data-drills="<role>"`, and the ones tests drive carry `data-testid`,
+//! `data-field`, `data-download`, `data-cmd` and `data-copy`.
+
+use super::texts::escape;
+use crate::recipes::RECIPES;
+
+/// The page's own styles (scoped under `.drills`).
+pub const STYLE: &str = include_str!("style.css");
+
+fn recipe_options() -> String {
+    let mut html = String::new();
+    for recipe in RECIPES {
+        let id = escape(recipe.info.id);
+        html.push_str(&format!(
+            "<option value=\"{id}\" data-i18n=\"recipe-{id}-title\"></option>"
+        ));
+    }
+    html
+}
+
+/// The whole page; the form, the explanation and the result are filled by the code.
+pub fn page() -> String {
+    format!(
+        "<style>{style}</style>\
+<div class=\"drills\" data-testid=\"drills-page\" data-state=\"idle\">\
+<header class=\"drills-head\"><h1 data-i18n=\"drills-title\"></h1>\
+<p class=\"drills-lede\" data-i18n=\"drills-lede\"></p>\
+<p class=\"drills-notice\" data-drills=\"url-notice\" data-testid=\"drills-url-notice\" role=\"status\" hidden></p></header>\
+<div class=\"drills-layout\">\
+<section class=\"drills-card drills-setup\" aria-labelledby=\"drills-recipe-title\">\
+<div class=\"drills-picker\"><label for=\"drills-recipe\" data-i18n=\"drills-picker-label\"></label>\
+<select id=\"drills-recipe\" data-drills=\"recipe\" data-testid=\"drills-recipe\">{options}</select></div>\
+<h2 id=\"drills-recipe-title\" data-drills=\"recipe-title\"></h2>\
+<p class=\"drills-blurb\" data-drills=\"recipe-blurb\"></p>\
+<form class=\"drills-form\" data-drills=\"form\" novalidate></form>\
+<div class=\"drills-actions\">\
+<button type=\"button\" class=\"button primary drills-run\" data-drills=\"run\" data-testid=\"drills-run\" data-i18n=\"drills-run\"></button>\
+<button type=\"button\" class=\"button\" data-drills=\"reset\" data-testid=\"drills-reset\" data-i18n=\"drills-reset\"></button></div>\
+<p class=\"drills-status\" data-drills=\"status\" data-testid=\"drills-status\" role=\"status\" aria-live=\"polite\"></p>\
+<p class=\"drills-error drills-general-error\" data-drills=\"error\" data-testid=\"drills-error\" role=\"alert\" hidden></p>\
+</section>\
+<section class=\"drills-card drills-output\" data-drills=\"output\" data-testid=\"drills-output\" data-run=\"0\" \
+aria-labelledby=\"drills-output-title\">\
+<h2 id=\"drills-output-title\" data-i18n=\"drills-output-title\"></h2>\
+<p class=\"drills-stale\" data-drills=\"stale\" data-testid=\"drills-stale\" role=\"status\" data-i18n=\"drills-stale\" hidden></p>\
+<p class=\"drills-hint\" data-drills=\"empty\" data-i18n=\"drills-output-empty\"></p>\
+<div class=\"drills-result\" data-drills=\"result\" hidden>\
+<h3 class=\"drills-sub\" data-i18n=\"drills-summary-label\"></h3>\
+<pre class=\"drills-summary\" data-drills=\"summary\" data-testid=\"drills-summary\"></pre>\
+<div class=\"drills-files\" data-drills=\"files\"></div>\
+<div class=\"drills-commands\"><h3 class=\"drills-sub\" data-i18n=\"drills-commands-title\"></h3>\
+<p class=\"drills-hint\" data-i18n=\"drills-commands-hint\"></p>\
+<div class=\"drills-cmd\"><span class=\"drills-cmd-label\" data-i18n=\"drills-cmd-python\"></span>\
+<code data-cmd=\"python\" data-testid=\"drills-cmd-python\"></code>\
+<button type=\"button\" class=\"button drills-copy\" data-copy=\"python\" data-i18n=\"drills-copy\"></button></div>\
+<p class=\"drills-hint drills-cmd-note\" data-drills=\"python-note\" hidden></p>\
+<div class=\"drills-cmd\"><span class=\"drills-cmd-label\" data-i18n=\"drills-cmd-bsv\"></span>\
+<code data-cmd=\"bsv\" data-testid=\"drills-cmd-bsv\"></code>\
+<button type=\"button\" class=\"button drills-copy\" data-copy=\"bsv\" data-i18n=\"drills-copy\"></button></div>\
+<p class=\"drills-hint drills-cmd-note\" data-drills=\"file-note\" hidden></p>\
+<p class=\"drills-copy-status\" data-drills=\"copy-status\" data-testid=\"drills-copy-status\" role=\"status\"></p>\
+</div></div></section>\
+<section class=\"drills-card drills-about\" data-testid=\"drills-about\" aria-labelledby=\"drills-about-title\">\
+<h2 id=\"drills-about-title\" data-i18n=\"drills-about-title\"></h2>\
+<p data-drills=\"about\"></p>\
+<div class=\"drills-quirks\" data-drills=\"quirk-box\" hidden><h3 data-i18n=\"drills-quirks-title\"></h3>\
+<p data-drills=\"quirk\" data-testid=\"drills-quirks\"></p></div>\
+<p class=\"drills-hint\" data-i18n=\"drills-about-parity\"></p>\
+</section>\
+</div></div>",
+        style = STYLE,
+        options = recipe_options(),
+    )
+}
