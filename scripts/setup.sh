@@ -37,7 +37,7 @@ if [[ "${1:-}" == "--browser" ]]; then
   need=()
   command -v chromium >/dev/null || need+=(chromium)
   command -v chromedriver >/dev/null || need+=(chromium-driver)
-  fc-list 2>/dev/null | grep -qi ipagothic || need+=(fonts-ipafont-gothic)
+  dpkg -s fonts-ipafont-gothic >/dev/null 2>&1 || need+=(fonts-ipafont-gothic)
   if ((${#need[@]})); then
     say "installing Debian packages: ${need[*]}"
     sudo_cmd=()
