@@ -212,10 +212,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        crate::recipes::run_strs(INFO.id, raw)
-    }
+    use crate::recipes::run_strs;
 
     #[test]
     fn defaults_in_one_place() {
@@ -253,7 +250,7 @@ mod tests {
             dt_s: 0.1,
         })
         .unwrap();
-        let out = run(&["-0.5", "2", "0.3", "0.1"]).unwrap();
+        let out = run_strs(INFO.id, &["-0.5", "2", "0.3", "0.1"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(path.to_csv().as_str()));
         // np.arange(0, 0.3 + 1e-12, 0.1) has 4 values: 0.30000000000000004 is the last.
         assert_eq!(
@@ -266,7 +263,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            let e = run(raw).unwrap_err();
+            let e = run_strs(INFO.id, raw).unwrap_err();
             assert!(ok(&e), "{raw:?}: {e:?}");
             assert_eq!(e.param(), Some(param), "{raw:?}");
         };
@@ -297,7 +294,7 @@ mod tests {
         assert!(matches!(nan.validate(), Err(E::NotFinite { .. })));
         // A dt longer than T gives the start sample only.
         assert_eq!(
-            run(&["0", "1", "1", "5"])
+            run_strs(INFO.id, &["0", "1", "1", "5"])
                 .unwrap()
                 .summary
                 .split(' ')

@@ -275,11 +275,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn run_with(angles: &str) -> Result<RecipeOutput, RecipeError> {
-        let args = Args::parse(&[angles.to_string()], INFO.args, INFO.flags)?;
-        run_args(&args)
-    }
+    use crate::recipes::run_strs;
 
     #[test]
     fn arg_defaults_are_the_params_defaults() {
@@ -300,7 +296,7 @@ mod tests {
             out.summary,
             "frames 4 -> dh_fk.csv; tip xyz=(0.2257,0.0457,0.0026)"
         );
-        let out = run_with("1.0,-0.5,2.0").unwrap();
+        let out = run_strs(INFO.id, &["1.0,-0.5,2.0"]).unwrap();
         assert_eq!(
             out.file(CSV_NAME),
             Some(include_str!("../../tests/golden/dh_other/dh_fk.csv"))
@@ -336,7 +332,7 @@ mod tests {
     #[test]
     fn angle_list_errors() {
         assert_eq!(
-            run_with("0.1,0.2").unwrap_err(),
+            run_strs(INFO.id, &["0.1,0.2"]).unwrap_err(),
             RecipeError::WrongCount {
                 param: "angles".into(),
                 expected: 3,
@@ -344,19 +340,19 @@ mod tests {
             }
         );
         assert!(matches!(
-            run_with("0.1,0.2,0.3,0.4"),
+            run_strs(INFO.id, &["0.1,0.2,0.3,0.4"]),
             Err(RecipeError::WrongCount { got: 4, .. })
         ));
         assert!(matches!(
-            run_with("0.1,,0.3"),
+            run_strs(INFO.id, &["0.1,,0.3"]),
             Err(RecipeError::NotANumber { .. })
         ));
         assert!(matches!(
-            run_with("0.1,nan,0.3"),
+            run_strs(INFO.id, &["0.1,nan,0.3"]),
             Err(RecipeError::NotFinite { .. })
         ));
         // Spaces around items are fine, as with Python's float().
-        assert!(run_with(" 0.1, 0.2 ,0.3").is_ok());
+        assert!(run_strs(INFO.id, &[" 0.1, 0.2 ,0.3"]).is_ok());
     }
 
     #[cfg(not(target_arch = "wasm32"))]

@@ -286,10 +286,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        crate::recipes::run_strs(INFO.id, raw)
-    }
+    use crate::recipes::run_strs;
 
     fn param_of(err: RecipeError) -> String {
         err.param().unwrap_or("").to_string()
@@ -382,7 +379,7 @@ mod tests {
             step_mm: 7.5,
         };
         let ws = compute(&params).unwrap();
-        let out = run(&["0.2", "0.15", "60", "7.5"]).unwrap();
+        let out = run_strs(INFO.id, &["0.2", "0.15", "60", "7.5"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(ws.to_csv().as_str()));
         assert_eq!(out.summary, ws.summary());
         let text = ws.to_csv();
@@ -394,7 +391,7 @@ mod tests {
 
     #[test]
     fn half_zero_is_one_cell() {
-        let out = run(&["0.12", "0.10", "0", "10"]).unwrap();
+        let out = run_strs(INFO.id, &["0.12", "0.10", "0", "10"]).unwrap();
         assert_eq!(
             out.summary,
             "grid 1×1 = 1 cells, reachable 0 -> ik_workspace.csv"
@@ -407,19 +404,19 @@ mod tests {
 
     #[test]
     fn rejections_name_the_parameter() {
-        let e = run(&["0"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotPositive { .. }) && param_of(e) == "L1");
-        let e = run(&["0.12", "2e6"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0.12", "2e6"]).unwrap_err();
         assert!(matches!(e, RecipeError::OutOfRange { .. }) && param_of(e) == "L2");
-        let e = run(&["0.12", "0.1", "-5"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0.12", "0.1", "-5"]).unwrap_err();
         assert!(matches!(e, RecipeError::OutOfRange { .. }) && param_of(e) == "half_mm");
-        let e = run(&["0.12", "0.1", "200", "0"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0.12", "0.1", "200", "0"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotPositive { .. }) && param_of(e) == "step_mm");
-        let e = run(&["0.12", "0.1", "200", "abc"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0.12", "0.1", "200", "abc"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotANumber { .. }) && param_of(e) == "step_mm");
-        let e = run(&["0.12", "0.1", "nan"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0.12", "0.1", "nan"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotFinite { .. }) && param_of(e) == "half_mm");
-        let e = run(&["0.12", "0.1", "1", "2", "3"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0.12", "0.1", "1", "2", "3"]).unwrap_err();
         assert!(matches!(e, RecipeError::TooManyArgs { max: 4, got: 5 }));
         // The typed API rejects what the parser cannot produce.
         let nan = WorkspaceParams {
@@ -449,7 +446,7 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
-        let e = run(&["0.12", "0.1", "1e6", "1e-300"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0.12", "0.1", "1e6", "1e-300"]).unwrap_err();
         assert!(matches!(e, RecipeError::TooLarge { .. }) && param_of(e) == "step_mm");
     }
 }

@@ -284,13 +284,10 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        crate::recipes::run_strs(INFO.id, raw)
-    }
+    use crate::recipes::run_strs;
 
     fn assert_rejects(raw: &[&str], param: &str, check: fn(&RecipeError) -> bool) {
-        let e = run(raw).unwrap_err();
+        let e = run_strs(INFO.id, raw).unwrap_err();
         assert!(check(&e), "{raw:?}: {e:?}");
         assert_eq!(e.param(), Some(param), "{raw:?}");
     }
@@ -331,7 +328,7 @@ mod tests {
             q2: 0.0,
         };
         let rows = sweep(&params).unwrap();
-        let out = run(&["0.3", "0.25", "-1", "1", "0.25", "0"]).unwrap();
+        let out = run_strs(INFO.id, &["0.3", "0.25", "-1", "1", "0.25", "0"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(to_csv(&rows).as_str()));
         assert_eq!(out.summary, summary(&rows));
         // q2 = 0 is the stretched-out singularity.
@@ -351,9 +348,9 @@ mod tests {
 
     #[test]
     fn one_point_sweep() {
-        let out = run(&["0.12", "0.10", "0.5", "0.5", "0.1"]).unwrap();
+        let out = run_strs(INFO.id, &["0.12", "0.10", "0.5", "0.5", "0.1"]).unwrap();
         assert!(out.summary.starts_with("wrote 1 Jacobian samples"));
-        let out = run(&["0.12", "0.10", "-1000", "-1000", "0.1"]).unwrap();
+        let out = run_strs(INFO.id, &["0.12", "0.10", "-1000", "-1000", "0.1"]).unwrap();
         assert!(out.summary.starts_with("wrote 1 Jacobian samples"));
     }
 

@@ -276,10 +276,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        crate::recipes::run_strs(INFO.id, raw)
-    }
+    use crate::recipes::run_strs;
 
     #[test]
     fn defaults_in_one_place() {
@@ -310,7 +307,7 @@ mod tests {
             n: 5,
         })
         .unwrap();
-        let out = run(&["0.3", "0.2", "5"]).unwrap();
+        let out = run_strs(INFO.id, &["0.3", "0.2", "5"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(g.to_csv().as_str()));
         assert_eq!(out.summary, g.summary());
         // n = 5: q = -pi, -pi/2, 0, pi/2, pi; the maximum |det| = L1 L2 is first reached at
@@ -323,7 +320,7 @@ mod tests {
 
     #[test]
     fn n_one_is_a_single_config() {
-        let out = run(&["0.12", "0.10", "1"]).unwrap();
+        let out = run_strs(INFO.id, &["0.12", "0.10", "1"]).unwrap();
         assert_eq!(
             out.file(FILE_NAME),
             Some("q1,q2,detJ,manip\r\n-3.141592653589793,-3.141592653589793,-1.469576158976824e-18,1.469576158976824e-18\r\n")
@@ -365,15 +362,15 @@ mod tests {
             (&["0.12", "0.10", "1025"][..], "n"),
             (&["0.12", "0.10", "99999999999999999999999"][..], "n"),
         ] {
-            let e = run(raw).unwrap_err();
+            let e = run_strs(INFO.id, raw).unwrap_err();
             assert!(matches!(e, RecipeError::OutOfRange { .. }), "{raw:?} {e:?}");
             assert_eq!(e.param(), Some(param));
         }
-        let e = run(&["0.12", "0.10", "24.0"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0.12", "0.10", "24.0"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotAnInteger { .. }) && e.param() == Some("n"));
-        let e = run(&["0.12", "0"]).unwrap_err();
+        let e = run_strs(INFO.id, &["0.12", "0"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotPositive { .. }) && e.param() == Some("L2"));
-        let e = run(&["1e7"]).unwrap_err();
+        let e = run_strs(INFO.id, &["1e7"]).unwrap_err();
         assert!(matches!(e, RecipeError::OutOfRange { .. }) && e.param() == Some("L1"));
         assert_eq!(
             GridParams {

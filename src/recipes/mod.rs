@@ -156,8 +156,18 @@ pub fn parse_args(id: &str, raw: &[String]) -> Result<Args, RecipeError> {
 /// [`run`] with string slices, for the recipes' unit tests.
 #[cfg(test)]
 pub(crate) fn run_strs(id: &str, raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-    let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
-    run(id, &raw)
+    run(id, &strings(raw))
+}
+
+/// [`parse_args`] with string slices, for the recipes' unit tests.
+#[cfg(test)]
+pub(crate) fn args_strs(id: &str, raw: &[&str]) -> Result<Args, RecipeError> {
+    parse_args(id, &strings(raw))
+}
+
+#[cfg(test)]
+fn strings(raw: &[&str]) -> Vec<String> {
+    raw.iter().map(|s| s.to_string()).collect()
 }
 
 /// Runs recipe `id` with arguments and input files `(name, text)` that path arguments name

@@ -445,16 +445,12 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn args(raw: &[&str]) -> Args {
-        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
-        Args::parse(&raw, INFO.args, INFO.flags).unwrap()
-    }
+    use crate::recipes::args_strs;
 
     #[test]
     fn arg_defaults_are_the_params_defaults() {
         assert_eq!(
-            PendulumParams::from_args(&args(&[])).unwrap(),
+            PendulumParams::from_args(&args_strs(INFO.id, &[]).unwrap()).unwrap(),
             PendulumParams::default()
         );
     }
@@ -511,7 +507,7 @@ mod tests {
 
     #[test]
     fn row_count_and_summary() {
-        let out = run_args(&args(&["0.1"])).unwrap();
+        let out = run_args(&args_strs(INFO.id, &["0.1"]).unwrap()).unwrap();
         let csv = out.file(CSV_NAME).unwrap();
         assert_eq!(csv.lines().count(), 1 + 50);
         assert!(out
@@ -519,13 +515,13 @@ mod tests {
             .starts_with("wrote 50 rows -> pendulum_energy.csv; energy range"));
         assert!(out.summary.ends_with(" J (damping present)"));
         // Same text without damping, as the recipe prints.
-        let out = run_args(&args(&["0.1", "--damping", "0"])).unwrap();
+        let out = run_args(&args_strs(INFO.id, &["0.1", "--damping", "0"]).unwrap()).unwrap();
         assert!(out.summary.ends_with(" J (damping present)"));
     }
 
     #[test]
     fn rejects_bad_parameters() {
-        let err = |raw: &[&str]| run_args(&args(raw)).unwrap_err();
+        let err = |raw: &[&str]| run_args(&args_strs(INFO.id, raw).unwrap()).unwrap_err();
         assert!(matches!(err(&["0"]), RecipeError::NotPositive { .. }));
         assert!(matches!(err(&["0.001"]), RecipeError::OutOfRange { .. }));
         assert!(matches!(

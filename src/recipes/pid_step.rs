@@ -227,10 +227,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        crate::recipes::run_strs(INFO.id, raw)
-    }
+    use crate::recipes::run_strs;
 
     #[test]
     fn defaults_in_one_place() {
@@ -287,7 +284,7 @@ mod tests {
             steps: 5,
         };
         let rows = simulate(&params).unwrap();
-        let out = run(&["2", "0", "0.1", "0", "5"]).unwrap();
+        let out = run_strs(INFO.id, &["2", "0", "0.1", "0", "5"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(to_csv(&rows).as_str()));
         assert_eq!(out.summary, summary(&rows));
         // tau = 0: the plant follows u at once (a = 1).
@@ -296,7 +293,7 @@ mod tests {
 
     #[test]
     fn zero_steps_is_header_only() {
-        let out = run(&["1", "1", "1", "1", "0"]).unwrap();
+        let out = run_strs(INFO.id, &["1", "1", "1", "1", "0"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some("t,r,y,u,e\r\n"));
         assert_eq!(
             out.summary,
@@ -323,7 +320,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            let e = run(raw).unwrap_err();
+            let e = run_strs(INFO.id, raw).unwrap_err();
             assert!(ok(&e), "{raw:?}: {e:?}");
             assert_eq!(e.param(), Some(param), "{raw:?}");
         };

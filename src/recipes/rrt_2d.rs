@@ -453,14 +453,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn strings(v: &[&str]) -> Vec<String> {
-        v.iter().map(|s| s.to_string()).collect()
-    }
-
-    fn run_cli(v: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        crate::recipes::run("rrt-2d", &strings(v))
-    }
+    use crate::recipes::run_strs;
 
     /// Steps a tree to the end, checking that each event changes the tree as it says.
     fn step_to_end(params: &RrtParams) -> (Rrt, Vec<RrtStep>) {
@@ -576,7 +569,7 @@ mod tests {
             }
         )));
 
-        let out = run_cli(&["7", "300", "--goal-x", "0.5", "--goal-y=0.5"]).unwrap();
+        let out = run_strs(INFO.id, &["7", "300", "--goal-x", "0.5", "--goal-y=0.5"]).unwrap();
         assert_eq!(out.file("rrt_path.csv"), Some("x,y\r\n"));
         assert_eq!(
             out.summary,
@@ -589,7 +582,7 @@ mod tests {
 
     #[test]
     fn zero_iterations_write_only_the_start() {
-        let out = run_cli(&["7", "0"]).unwrap();
+        let out = run_strs(INFO.id, &["7", "0"]).unwrap();
         assert_eq!(
             out.file("rrt_nodes.csv"),
             Some("id,x,y,parent\r\n0,0.1,0.1,-1\r\n")
@@ -615,7 +608,7 @@ mod tests {
 
     #[test]
     fn rejects_bad_arguments() {
-        let err = |v: &[&str]| run_cli(v).unwrap_err();
+        let err = |v: &[&str]| run_strs(INFO.id, v).unwrap_err();
         assert!(matches!(err(&["-1"]), RecipeError::OutOfRange { .. }));
         assert!(matches!(
             err(&["9223372036854775808"]),

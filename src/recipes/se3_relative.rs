@@ -300,11 +300,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn args(raw: &[&str]) -> Args {
-        let raw: Vec<String> = raw.iter().map(|s| s.to_string()).collect();
-        Args::parse(&raw, INFO.args, INFO.flags).unwrap()
-    }
+    use crate::recipes::args_strs;
 
     #[test]
     fn arg_defaults_are_the_params_defaults() {
@@ -334,14 +330,14 @@ mod tests {
         // T_A⁻¹ T_A = I: translation +0.0 (matmul sums), pitch = asin(-(+0.0)) = -0.0.
         let p = ["0.3", "-0.2", "0.1", "0.5", "-0.4", "1.2"];
         let raw: Vec<&str> = p.iter().chain(p.iter()).copied().collect();
-        let rel = Se3Params::from_args(&args(&raw))
+        let rel = Se3Params::from_args(&args_strs(INFO.id, &raw).unwrap())
             .unwrap()
             .relative()
             .unwrap();
         for v in rel.to_array() {
             assert!(v.abs() < 1e-15, "{rel:?}");
         }
-        let out = run_args(&args(&["0"; 12])).unwrap();
+        let out = run_args(&args_strs(INFO.id, &["0"; 12]).unwrap()).unwrap();
         assert_eq!(
             out.file(CSV_NAME).unwrap(),
             "x_m,y_m,z_m,roll_rad,pitch_rad,yaw_rad\r\n0.0,0.0,0.0,0.0,-0.0,0.0\r\n"
@@ -370,7 +366,7 @@ mod tests {
     #[test]
     fn rejects_non_numbers() {
         assert!(matches!(
-            run_args(&args(&["0", "x"])),
+            run_args(&args_strs(INFO.id, &["0", "x"]).unwrap()),
             Err(RecipeError::NotANumber { param, .. }) if param == "ay"
         ));
         let p = Se3Params {

@@ -716,6 +716,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
+    use crate::recipes::args_strs;
 
     fn parse_err(text: &str) -> RecipeError {
         parse_trajectory(text).unwrap_err()
@@ -778,14 +779,12 @@ mod tests {
 
     #[test]
     fn empty_path_means_the_sample_and_unknown_paths_are_named() {
-        let raw = vec![String::new(), "0.05".to_string()];
-        let args = Args::parse(&raw, INFO.args, INFO.flags).unwrap();
+        let args = args_strs(INFO.id, &["", "0.05"]).unwrap();
         assert!(run_args(&args)
             .unwrap()
             .summary
             .contains("resampled 5 -> 12 rows"));
-        let raw = vec!["mine.csv".to_string()];
-        let args = Args::parse(&raw, INFO.args, INFO.flags).unwrap();
+        let args = args_strs(INFO.id, &["mine.csv"]).unwrap();
         assert_eq!(
             run_args(&args).unwrap_err(),
             RecipeError::InputMissing {

@@ -316,10 +316,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn run(raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        crate::recipes::run_strs(INFO.id, raw)
-    }
+    use crate::recipes::run_strs;
 
     #[test]
     fn defaults_in_one_place() {
@@ -334,7 +331,7 @@ mod tests {
         let p = compute(&TrapParams::default()).unwrap();
         assert!(!p.triangle);
         assert_eq!(p.samples[1].s, 5e-05);
-        let tri = run(&["0.2", "1.0", "2.0", "0.005"]).unwrap();
+        let tri = run_strs(INFO.id, &["0.2", "1.0", "2.0", "0.005"]).unwrap();
         assert_eq!(
             tri.summary,
             "wrote 127 samples t_total=0.6325s vmax_used=0.6325 -> trap_profile.csv"
@@ -343,15 +340,15 @@ mod tests {
 
     #[test]
     fn signs_are_dropped_like_abs() {
-        let a = run(&["-1.0", "-0.5", "-1.0", "0.01"]).unwrap();
-        let b = run(&[]).unwrap();
+        let a = run_strs(INFO.id, &["-1.0", "-0.5", "-1.0", "0.01"]).unwrap();
+        let b = run_strs(INFO.id, &[]).unwrap();
         assert_eq!(a, b);
     }
 
     #[test]
     fn zero_distance_is_one_row_with_the_triangle_quirk() {
         // Python: t_total = 0, one decel row whose s is the untruncated d_acc = 0.125.
-        let out = run(&["0", "0.5", "1.0", "0.01"]).unwrap();
+        let out = run_strs(INFO.id, &["0", "0.5", "1.0", "0.01"]).unwrap();
         assert_eq!(
             out.file(FILE_NAME),
             Some("t,s,v,a\r\n0.0,0.125,0.0,-1.0\r\n")
@@ -371,7 +368,7 @@ mod tests {
             dt: 0.07,
         };
         let p = compute(&params).unwrap();
-        let out = run(&["3", "2", "4", "0.07"]).unwrap();
+        let out = run_strs(INFO.id, &["3", "2", "4", "0.07"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(p.to_csv().as_str()));
         assert_eq!(out.summary, p.summary());
         // Cruise phase present; ends at rest at the full distance.
@@ -383,7 +380,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            let e = run(raw).unwrap_err();
+            let e = run_strs(INFO.id, raw).unwrap_err();
             assert!(ok(&e), "{raw:?}: {e:?}");
             assert_eq!(e.param(), Some(param), "{raw:?}");
         };
@@ -420,7 +417,7 @@ mod tests {
             ["1e9", "1e9", "1e-9", "1e30"],
             ["1e-300", "1e9", "1e-9", "1"],
         ] {
-            match run(&raw) {
+            match run_strs(INFO.id, &raw) {
                 Ok(out) => assert!(!out.file(FILE_NAME).unwrap().contains("inf")),
                 Err(e) => assert!(matches!(e, E::TooLarge { .. }), "{raw:?} {e:?}"),
             }

@@ -296,14 +296,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-
-    fn strings(v: &[&str]) -> Vec<String> {
-        v.iter().map(|s| s.to_string()).collect()
-    }
-
-    fn run_cli(v: &[&str]) -> Result<RecipeOutput, RecipeError> {
-        crate::recipes::run("umeyama-2d", &strings(v))
-    }
+    use crate::recipes::run_strs;
 
     fn transform(x: &[[f64; 2]], scale: f64, angle_deg: f64, t: [f64; 2]) -> Vec<[f64; 2]> {
         let (sin, cos) = crate::math::sincos(angle_deg.to_radians());
@@ -402,7 +395,7 @@ mod tests {
 
     #[test]
     fn rejects_bad_arguments() {
-        let err = |v: &[&str]| run_cli(v).unwrap_err();
+        let err = |v: &[&str]| run_strs(INFO.id, v).unwrap_err();
         assert!(matches!(err(&["-0.1"]), RecipeError::OutOfRange { .. }));
         assert!(matches!(err(&["inf"]), RecipeError::NotFinite { .. }));
         assert!(matches!(

@@ -48,6 +48,12 @@ pub fn t_args(id: &str, args: &[(&str, FluentArg)]) -> String {
     with_i18n(|i18n| i18n.t_args(lang, id, args)).unwrap_or_else(|| id.to_string())
 }
 
+/// [`t_args`] with text arguments: `("name", value)`.
+pub fn t_strings(id: &str, args: &[(&str, String)]) -> String {
+    let args: Vec<(&str, FluentArg)> = args.iter().map(|(k, v)| (*k, v.clone().into())).collect();
+    t_args(id, &args)
+}
+
 /// Message `id` in a given language.
 pub fn t_in(lang: Lang, id: &str) -> String {
     with_i18n(|i18n| i18n.t(lang, id)).unwrap_or_else(|| id.to_string())

@@ -1,7 +1,10 @@
-//! Small DOM helpers shared by the shell and the pages: element builders, localized text
-//! (`data-i18n="msg-id"` and `data-i18n-attr="title=msg-id;aria-label=msg-id"`, re-rendered by
-//! [`relocalize`]), localStorage that never throws (private mode, disabled storage) and event
-//! listeners that remove themselves when dropped.
+//! Small DOM helpers shared by the shell and the pages: element builders and look-ups, localized
+//! text (`data-i18n="msg-id"` and `data-i18n-attr="title=msg-id;aria-label=msg-id"`,
+//! re-rendered by [`relocalize`]), showing and hiding, localStorage that never throws (private
+//! mode, disabled storage), event listeners that remove themselves when dropped, and
+//! `promise.then` for the browser's promise-returning calls.
+
+use std::rc::Weak;
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -106,6 +109,24 @@ pub fn matching(root: &Element, selector: &str) -> Result<Vec<Element>, JsValue>
     Ok(out)
 }
 
+/// The element of `root` matching `selector`, as a `T`; the error names `owner` (the page)
+/// and the selector.
+pub fn find<T: JsCast>(root: &Element, selector: &str, owner: &str) -> Result<T, JsValue> {
+    root.query_selector(selector)?
+        .ok_or_else(|| JsValue::from_str(&format!("{owner}: missing {selector}")))?
+        .dyn_into::<T>()
+        .map_err(|_| JsValue::from_str(&format!("{owner}: wrong element type for {selector}")))
+}
+
+/// Shows or hides `element` (its `hidden` attribute).
+pub fn show(element: &Element, visible: bool) {
+    if visible {
+        let _ = element.remove_attribute("hidden");
+    } else {
+        let _ = element.set_attribute("hidden", "");
+    }
+}
+
 /// Removes every child of `element`.
 pub fn clear(element: &Element) {
     while let Some(child) = element.first_child() {
@@ -175,6 +196,22 @@ impl Listener {
         })
     }
 
+    /// Attaches `handler` for `event` on `target`, called with the page behind `page` while it
+    /// is mounted (the page owns its listeners, so they hold it weakly).
+    pub fn for_page<P: 'static>(
+        target: &EventTarget,
+        event: &'static str,
+        page: &Weak<P>,
+        handler: impl Fn(&P, &Event) + 'static,
+    ) -> Result<Listener, JsValue> {
+        let page = page.clone();
+        Listener::new(target, event, move |e| {
+            if let Some(page) = page.upgrade() {
+                handler(&page, &e);
+            }
+        })
+    }
+
     /// Keeps the listener for the life of the page (shell listeners).
     pub fn forever(self) {
         std::mem::forget(self);
@@ -186,5 +223,16 @@ impl Drop for Listener {
         let _ = self
             .target
             .remove_event_listener_with_callback(self.event, self.closure.as_ref().unchecked_ref());
+    }
+}
+
+/// `promise.then(ok, fail)`, called through `Reflect` to stay independent of js-sys's generic
+/// `Promise` signatures.
+pub fn then(promise: &js_sys::Promise, ok: &JsValue, fail: &JsValue) {
+    let method = js_sys::Reflect::get(promise, &JsValue::from_str("then"))
+        .ok()
+        .and_then(|f| f.dyn_into::<js_sys::Function>().ok());
+    if let Some(method) = method {
+        let _ = method.call2(promise, ok, fail);
     }
 }

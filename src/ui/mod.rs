@@ -12,9 +12,12 @@
 //! - [`overlay`]: the `?` shortcut list.
 //! - [`pages`]: the page table and the pages.
 //! - [`download`]: saving CSV and PNG files from the page.
+//! - [`clipboard`]: copying command lines.
+//! - [`schedule`]: debounced timers, work after the next paint, the clock.
 
 use wasm_bindgen::prelude::*;
 
+pub mod clipboard;
 pub mod ctx;
 pub mod dom;
 pub mod download;
@@ -22,6 +25,7 @@ pub mod overlay;
 pub mod page;
 pub mod pages;
 pub mod router;
+pub mod schedule;
 pub mod shell;
 
 /// Builds the app into `#app` and routes to the page the URL names. Installs a panic hook

@@ -8,18 +8,18 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, readdirSync } from 'node:fs';
+import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { startServer, openApp, closeBrowser, OUT, ROOT } from './harness.mjs';
+import { BSV, buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { englishStrings } from './locales.mjs';
 
-const BSV = join(ROOT, 'target', 'debug', 'bsv');
 const RESAMPLE_INPUT = join(ROOT, 'tests', 'golden', 'resample_3joint', 'input.csv');
 let server;
 
 before(async () => {
-  // The CLI from the same sources as the wasm under test (a no-op when it is up to date).
-  execFileSync('cargo', ['build', '--quiet', '--bin', 'bsv'], { cwd: ROOT, stdio: 'inherit' });
+  buildCli();
   server = await startServer();
 }, { timeout: 600_000 });
 
@@ -45,34 +45,6 @@ const RECIPES = [
 ];
 
 // ---------- Helpers ----------
-
-/** Runs `bsv <args> --out DIR`: its stdout (trailing newline removed) and every file written. */
-function cli(args) {
-  const dir = mkdtempSync(join(tmpdir(), 'drills-cli-'));
-  const stdout = execFileSync(BSV, [...args, '--out', dir], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'] });
-  const files = new Map(readdirSync(dir).map((f) => [f, readFileSync(join(dir, f))]));
-  return { stdout: stdout.replace(/\n$/, ''), files };
-}
-
-/** Asserts identical bytes; on failure names the first differing line of both. */
-function assertSameBytes(got, want, label) {
-  if (got.equals(want)) return;
-  const a = got.toString('utf8').split('\n');
-  const b = want.toString('utf8').split('\n');
-  const i = a.findIndex((line, k) => line !== b[k]);
-  assert.fail(`${label}: ${got.length} vs ${want.length} bytes; first difference on line ${i + 1}:\n  page: ${a[i]}\n  cli:  ${b[i]}`);
-}
-
-async function download(page, file) {
-  const [dl] = await Promise.all([
-    page.waitForEvent('download'),
-    page.locator(`[data-download="${file}"]`).click(),
-  ]);
-  assert.equal(dl.suggestedFilename(), file);
-  const path = join(mkdtempSync(join(tmpdir(), 'drills-dl-')), file);
-  await dl.saveAs(path);
-  return readFileSync(path);
-}
 
 const output = (page) => page.locator('[data-testid="drills-output"]');
 const runCount = async (page) => Number(await output(page).getAttribute('data-run'));
@@ -512,64 +484,6 @@ test('keys run, download and switch drills; copy puts the command on the clipboa
 });
 
 // ---------- Japanese ----------
-
-/** Message values of an .ftl file: id → [literal text outside placeables]. */
-function ftlSegments(path) {
-  const out = new Map();
-  let id = null;
-  let value = '';
-  const flush = () => {
-    if (id === null) return;
-    const segments = [];
-    let depth = 0, cur = '';
-    for (const ch of value) {
-      if (ch === '{') {
-        if (depth === 0) { segments.push(cur); cur = ''; }
-        depth++;
-      } else if (ch === '}') {
-        depth = Math.max(0, depth - 1);
-      } else if (depth === 0) {
-        cur += ch;
-      }
-    }
-    segments.push(cur);
-    out.set(id, { raw: value, segments: segments.map((s) => s.trim()).filter(Boolean) });
-    id = null;
-    value = '';
-  };
-  for (const line of readFileSync(path, 'utf8').split('\n')) {
-    const m = /^([a-zA-Z][\w-]*)\s*=\s?(.*)$/.exec(line);
-    if (m) {
-      flush();
-      id = m[1];
-      value = m[2];
-    } else if (id !== null && /^\s+\S/.test(line) && !/^\s*\.\w/.test(line)) {
-      value += '\n' + line.trim();
-    } else if (!/^\s*$/.test(line)) {
-      flush();
-    }
-  }
-  flush();
-  return out;
-}
-
-function englishStrings() {
-  const dir = (l) => join(ROOT, 'locales', l);
-  const ja = [];
-  for (const f of readdirSync(dir('ja')).filter((f) => f.endsWith('.ftl'))) {
-    for (const { raw } of ftlSegments(join(dir('ja'), f)).values()) ja.push(raw);
-  }
-  const jaText = ja.join('\n');
-  const en = new Set();
-  for (const f of readdirSync(dir('en')).filter((f) => f.endsWith('.ftl'))) {
-    for (const { segments } of ftlSegments(join(dir('en'), f)).values()) {
-      for (const s of segments) {
-        if (s.length > 3 && /[A-Za-z]{3,}/.test(s) && !jaText.includes(s)) en.add(s);
-      }
-    }
-  }
-  return [...en];
-}
 
 test('with Japanese selected no English UI string remains on the page', async () => {
   const english = englishStrings();

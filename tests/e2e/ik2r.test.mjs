@@ -7,18 +7,16 @@
 // Screenshots (1920×1080 English and Japanese, 390×844 phone) go to tests/e2e/out/.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, readdirSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { startServer, openApp, closeBrowser, OUT, ROOT } from './harness.mjs';
+import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { englishStrings } from './locales.mjs';
 
-const BSV = join(ROOT, 'target', 'debug', 'bsv');
 let server;
 
 before(async () => {
-  // The CLI from the same sources as the wasm under test (a no-op when it is up to date).
-  execFileSync('cargo', ['build', '--quiet', '--bin', 'bsv'], { cwd: ROOT, stdio: 'inherit' });
+  buildCli();
   server = await startServer();
 }, { timeout: 600_000 });
 
@@ -271,36 +269,8 @@ test('a pointer out of reach pins the tip to the annulus and says so; links turn
 
 // ---------- Downloads = CLI ----------
 
-/** Runs `bsv <args>` into a fresh folder and returns the bytes of `file`. */
-function cli(args, file) {
-  const dir = mkdtempSync(join(tmpdir(), 'ik2r-cli-'));
-  execFileSync(BSV, [...args, '--out', dir], { stdio: ['ignore', 'ignore', 'inherit'] });
-  return readFileSync(join(dir, file));
-}
-
-async function download(page, file) {
-  const [dl] = await Promise.all([
-    page.waitForEvent('download'),
-    page.locator(`[data-download="${file}"]`).click(),
-  ]);
-  assert.equal(dl.suggestedFilename(), file);
-  const dir = mkdtempSync(join(tmpdir(), 'ik2r-dl-'));
-  const path = join(dir, file);
-  await dl.saveAs(path);
-  return readFileSync(path);
-}
-
 async function command(page, file, kind) {
   return (await page.locator(`[data-cmd="${file}:${kind}"]`).innerText()).trim();
-}
-
-/** Asserts identical bytes; on failure names the first differing line of both. */
-function assertSameBytes(got, want, label) {
-  if (got.equals(want)) return;
-  const a = got.toString('utf8').split('\r\n');
-  const b = want.toString('utf8').split('\r\n');
-  const i = a.findIndex((line, k) => line !== b[k]);
-  assert.fail(`${label}: first difference on line ${i + 1}:\n  page: ${a[i]}\n  cli:  ${b[i]}`);
 }
 
 /**
@@ -341,7 +311,7 @@ test('each download is byte for byte the CLI output for the command shown under 
       const args = bsvCmd.split(/\s+/).slice(2);
       assert.equal(bsvCmd.split(/\s+/)[1], id);
       assert.equal(pyCmd, `python ${py} ${args.join(' ')}`);
-      assertSameBytes(bytes, cli([id, ...args], file), `${file} vs bsv ${id} ${args.join(' ')}`);
+      assertSameBytes(bytes, cli([id, ...args]).files.get(file), `${file} vs bsv ${id} ${args.join(' ')}`);
       // The defaults reproduce the Python reference run.
       assertCsvClose(bytes, readFileSync(join(ROOT, 'tests', 'golden', golden, file)), file);
     }
@@ -358,7 +328,7 @@ test('each download is byte for byte the CLI output for the command shown under 
     for (const [file, id] of CSVS) {
       const bytes = await download(page, file);
       const args = (await command(page, file, 'bsv')).split(/\s+/).slice(2);
-      assertSameBytes(bytes, cli([id, ...args], file), `${file} after edits vs bsv ${id} ${args.join(' ')}`);
+      assertSameBytes(bytes, cli([id, ...args]).files.get(file), `${file} after edits vs bsv ${id} ${args.join(' ')}`);
     }
     assert.match(await command(page, 'ik_workspace.csv', 'bsv'), /^bsv ik-workspace 0\.12 0\.15 200 25$/);
     const q2 = (await readouts(page)).q2;
@@ -382,64 +352,6 @@ test('each download is byte for byte the CLI output for the command shown under 
 });
 
 // ---------- Japanese ----------
-
-/** Message values of an .ftl file: id → [literal text outside placeables]. */
-function ftlSegments(path) {
-  const out = new Map();
-  let id = null;
-  let value = '';
-  const flush = () => {
-    if (id === null) return;
-    const segments = [];
-    let depth = 0, cur = '';
-    for (const ch of value) {
-      if (ch === '{') {
-        if (depth === 0) { segments.push(cur); cur = ''; }
-        depth++;
-      } else if (ch === '}') {
-        depth = Math.max(0, depth - 1);
-      } else if (depth === 0) {
-        cur += ch;
-      }
-    }
-    segments.push(cur);
-    out.set(id, { raw: value, segments: segments.map((s) => s.trim()).filter(Boolean) });
-    id = null;
-    value = '';
-  };
-  for (const line of readFileSync(path, 'utf8').split('\n')) {
-    const m = /^([a-zA-Z][\w-]*)\s*=\s?(.*)$/.exec(line);
-    if (m) {
-      flush();
-      id = m[1];
-      value = m[2];
-    } else if (id !== null && /^\s+\S/.test(line) && !/^\s*\.\w/.test(line)) {
-      value += '\n' + line.trim();
-    } else if (!/^\s*$/.test(line)) {
-      flush();
-    }
-  }
-  flush();
-  return out;
-}
-
-function englishStrings() {
-  const dir = (l) => join(ROOT, 'locales', l);
-  const ja = [];
-  for (const f of readdirSync(dir('ja')).filter((f) => f.endsWith('.ftl'))) {
-    for (const { raw } of ftlSegments(join(dir('ja'), f)).values()) ja.push(raw);
-  }
-  const jaText = ja.join('\n');
-  const en = new Set();
-  for (const f of readdirSync(dir('en')).filter((f) => f.endsWith('.ftl'))) {
-    for (const { segments } of ftlSegments(join(dir('en'), f)).values()) {
-      for (const s of segments) {
-        if (s.length > 3 && /[A-Za-z]{3,}/.test(s) && !jaText.includes(s)) en.add(s);
-      }
-    }
-  }
-  return [...en];
-}
 
 test('with Japanese selected no English UI string remains on the page', async () => {
   const english = englishStrings();

@@ -9,6 +9,7 @@ use web_sys::{Blob, HtmlInputElement};
 
 use super::plan::Shape;
 use crate::error::RecipeError;
+use crate::ui::dom;
 
 /// A CSV the user opened.
 pub struct InputFile {
@@ -68,16 +69,5 @@ pub fn read_text(blob: &Blob, done: impl FnOnce(Result<String, String>) + 'stati
             .unwrap_or_default();
         finish(Err(reason))
     });
-    then(&blob.text(), &ok, &fail);
-}
-
-/// `promise.then(ok, fail)`, called through `Reflect` to stay independent of js-sys's
-/// generic `Promise` signatures.
-pub fn then(promise: &js_sys::Promise, ok: &JsValue, fail: &JsValue) {
-    let method = js_sys::Reflect::get(promise, &JsValue::from_str("then"))
-        .ok()
-        .and_then(|f| f.dyn_into::<js_sys::Function>().ok());
-    if let Some(method) = method {
-        let _ = method.call2(promise, ok, fail);
-    }
+    dom::then(&blob.text(), &ok, &fail);
 }

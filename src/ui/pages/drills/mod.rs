@@ -7,17 +7,17 @@
 //!   ([`plan::check`], no run), and puts the localized message beside the offending field;
 //! - a valid form whose run is small ([`plan::AUTO_RUN_MAX_WORK`] rows) runs 250 ms after the
 //!   last keystroke; a bigger one waits for Run / Enter / `r`, which first paints a "Running…"
-//!   state and then runs ([`schedule::after_paint`]), so the tab never freezes without saying so;
+//!   state and then runs ([`after_paint`]), so the tab never freezes without saying so;
 //! - the last result (summary, files, command lines) stays on screen until a new run succeeds;
 //!   a note says when the form has moved on from it.
 //!
 //! Files: [`fields`] (the form and its hints), [`plan`] (checks and run sizes), [`command`]
 //! (run arguments and command lines), [`query`] (URL state), [`output`] (result panel),
-//! [`preview`] (CSV tables), [`file`] (traj-resample's input file), [`copy`], [`keys`],
-//! [`schedule`] (timers), [`texts`] (explanations, number formats), [`markup`].
+//! [`preview`] (CSV tables), [`file`] (traj-resample's input file), [`keys`], [`texts`]
+//! (explanations, number formats), [`markup`]. Timers and the clipboard are the shared
+//! [`crate::ui::schedule`] and [`crate::ui::clipboard`].
 
 mod command;
-mod copy;
 mod fields;
 mod file;
 mod keys;
@@ -26,7 +26,6 @@ mod output;
 mod plan;
 mod preview;
 mod query;
-mod schedule;
 mod texts;
 
 use std::cell::RefCell;
@@ -42,13 +41,14 @@ use self::file::InputFile;
 use self::output::Shown;
 use self::plan::{InputCheck, Plan};
 use self::query::UrlState;
-use self::schedule::Timer;
 use crate::args::Args;
 use crate::error::RecipeError;
 use crate::recipes::{self, traj_resample, Recipe, RecipeOutput, RECIPES};
-use crate::ui::dom::{self, Listener};
+use crate::ui::ctx::{self, t_strings};
+use crate::ui::dom::{self, show, Listener};
 use crate::ui::page::{MountCtx, PageDef, PageHandle, Shortcut};
-use crate::ui::{ctx, router};
+use crate::ui::schedule::{after_paint, now_ms, Timer};
+use crate::ui::{clipboard, router};
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef {
@@ -178,9 +178,6 @@ struct State {
     copy_status: Option<&'static str>,
 }
 
-/// A control's event handler.
-type Handler = Box<dyn Fn(&Page, &Event)>;
-
 /// The mounted page.
 pub(crate) struct Page {
     els: Els,
@@ -193,36 +190,11 @@ pub(crate) struct Page {
 }
 
 fn find<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
-    root.query_selector(selector)?
-        .ok_or_else(|| JsValue::from_str(&format!("drills: missing {selector}")))?
-        .dyn_into::<T>()
-        .map_err(|_| JsValue::from_str(&format!("drills: wrong element type for {selector}")))
+    dom::find(root, selector, "drills")
 }
 
 fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
     find(root, &format!("[data-drills=\"{name}\"]"))
-}
-
-fn show(element: &Element, visible: bool) {
-    if visible {
-        let _ = element.remove_attribute("hidden");
-    } else {
-        let _ = element.set_attribute("hidden", "");
-    }
-}
-
-/// Text for Fluent arguments: `("name", value)`.
-fn t_args(id: &str, args: &[(&str, String)]) -> String {
-    let args: Vec<(&str, crate::i18n::FluentArg)> =
-        args.iter().map(|(k, v)| (*k, v.clone().into())).collect();
-    ctx::t_args(id, &args)
-}
-
-/// `performance.now()` in milliseconds.
-fn now_ms() -> f64 {
-    web_sys::window()
-        .and_then(|w| w.performance())
-        .map_or(0.0, |p| p.now())
 }
 
 /// Runs `args`; traj-resample with an opened file reads the file's text in place (the same
@@ -347,8 +319,8 @@ impl Page {
             st: RefCell::new(state),
             form: RefCell::new(form),
             listeners: RefCell::new(Vec::new()),
-            auto_timer: Timer::new(),
-            url_timer: Timer::new(),
+            auto_timer: Timer::default(),
+            url_timer: Timer::default(),
             weak: RefCell::new(Weak::new()),
         });
         *page.weak.borrow_mut() = Rc::downgrade(&page);
@@ -383,58 +355,24 @@ impl Page {
     /// result needs no new listeners) and the timers.
     fn install(&self) -> Result<(), JsValue> {
         let weak = self.weak.borrow().clone();
-        let on = |w: &Weak<Page>, f: fn(&Page)| {
-            let w = w.clone();
-            move || {
-                if let Some(page) = w.upgrade() {
-                    f(&page);
-                }
-            }
-        };
-        self.auto_timer.set_callback(on(&weak, |p| {
-            p.auto_timer.fired();
-            p.auto_run();
-        }));
-        self.url_timer.set_callback(on(&weak, |p| {
-            p.url_timer.fired();
-            p.write_url();
-        }));
+        self.auto_timer.set_callback(&weak, Page::auto_run);
+        self.url_timer.set_callback(&weak, Page::write_url);
 
-        let mut out = Vec::new();
-        let mut listen =
-            |target: &Element, event: &'static str, f: Handler| -> Result<(), JsValue> {
-                let w = weak.clone();
-                out.push(Listener::new(target, event, move |e| {
-                    if let Some(page) = w.upgrade() {
-                        f(&page, &e);
-                    }
-                })?);
-                Ok(())
-            };
-        listen(
-            &self.els.recipe,
-            "change",
-            Box::new(|p, _| {
+        let reset: Element = find(&self.els.page, "[data-drills=\"reset\"]")?;
+        *self.listeners.borrow_mut() = vec![
+            Listener::for_page(&self.els.recipe, "change", &weak, |p, _| {
                 let id = p.els.recipe.value();
                 if let Some(recipe) = recipes::find(&id) {
                     p.switch_recipe(recipe);
                 }
-            }),
-        )?;
-        listen(
-            &self.els.form,
-            "input",
-            Box::new(|p, e| {
+            })?,
+            Listener::for_page(&self.els.form, "input", &weak, |p, e| {
                 let is_field = target_element(e).is_some_and(|el| el.has_attribute("data-field"));
                 if is_field {
                     p.on_edit();
                 }
-            }),
-        )?;
-        listen(
-            &self.els.form,
-            "change",
-            Box::new(|p, e| {
+            })?,
+            Listener::for_page(&self.els.form, "change", &weak, |p, e| {
                 let Some(el) = target_element(e) else {
                     return;
                 };
@@ -442,12 +380,8 @@ impl Page {
                 if el.has_attribute("data-file-input") {
                     p.on_file_chosen();
                 }
-            }),
-        )?;
-        listen(
-            &self.els.form,
-            "keydown",
-            Box::new(|p, e| {
+            })?,
+            Listener::for_page(&self.els.form, "keydown", &weak, |p, e| {
                 let Some(key) = e.dyn_ref::<KeyboardEvent>() else {
                     return;
                 };
@@ -456,31 +390,18 @@ impl Page {
                     e.prevent_default();
                     p.request_run();
                 }
-            }),
-        )?;
-        listen(
-            &self.els.form,
-            "submit",
-            Box::new(|_, e| e.prevent_default()),
-        )?;
-        listen(
-            &self.els.form,
-            "click",
-            Box::new(|p, e| {
+            })?,
+            Listener::for_page(&self.els.form, "submit", &weak, |_, e| e.prevent_default())?,
+            Listener::for_page(&self.els.form, "click", &weak, |p, e| {
                 if target_element(e)
                     .is_some_and(|el| el.closest("[data-use-sample]").ok().flatten().is_some())
                 {
                     p.use_sample();
                 }
-            }),
-        )?;
-        listen(&self.els.run, "click", Box::new(|p, _| p.request_run()))?;
-        let reset: Element = find(&self.els.page, "[data-drills=\"reset\"]")?;
-        listen(&reset, "click", Box::new(|p, _| p.reset()))?;
-        listen(
-            &self.els.output,
-            "click",
-            Box::new(|p, e| {
+            })?,
+            Listener::for_page(&self.els.run, "click", &weak, |p, _| p.request_run())?,
+            Listener::for_page(&reset, "click", &weak, |p, _| p.reset())?,
+            Listener::for_page(&self.els.output, "click", &weak, |p, e| {
                 let Some(el) = target_element(e) else {
                     return;
                 };
@@ -491,9 +412,8 @@ impl Page {
                     let kind = button.get_attribute("data-copy").unwrap_or_default();
                     p.copy_command(&kind);
                 }
-            }),
-        )?;
-        *self.listeners.borrow_mut() = out;
+            })?,
+        ];
         Ok(())
     }
 
@@ -705,7 +625,7 @@ impl Page {
         self.st.borrow_mut().status = Status::Running;
         self.render_status();
         let weak = self.weak.borrow().clone();
-        let started = schedule::after_paint(move || {
+        let started = after_paint(move || {
             if let Some(page) = weak.upgrade() {
                 page.run_now();
             }
@@ -967,7 +887,7 @@ impl Page {
         };
         if let Err(e) = result {
             let reason = e.as_string().unwrap_or_else(|| format!("{e:?}"));
-            self.els.error.set_text_content(Some(&t_args(
+            self.els.error.set_text_content(Some(&t_strings(
                 "drills-download-failed",
                 &[("file", file.to_string()), ("error", reason)],
             )));
@@ -998,7 +918,7 @@ impl Page {
         };
         let text = code.text_content().unwrap_or_default();
         let weak = self.weak.borrow().clone();
-        copy::copy_text(&text, move |ok| {
+        clipboard::copy_text(&text, move |ok| {
             let Some(page) = weak.upgrade() else {
                 return;
             };
@@ -1037,9 +957,12 @@ impl Page {
             Status::Running => (ctx::t("drills-running"), false),
             Status::Large => (ctx::t("drills-large"), false),
             Status::Invalid => (ctx::t("drills-invalid"), true),
-            Status::Reading(name) => (t_args("drills-reading", &[("name", name.clone())]), false),
+            Status::Reading(name) => (
+                t_strings("drills-reading", &[("name", name.clone())]),
+                false,
+            ),
             Status::Done(ms) => (
-                t_args("drills-done", &[("ms", format!("{}", ms.max(0.0).round()))]),
+                t_strings("drills-done", &[("ms", format!("{}", ms.max(0.0).round()))]),
                 false,
             ),
             Status::Failed => (ctx::t("drills-failed"), true),
@@ -1091,25 +1014,25 @@ impl Page {
         let mut parts = Vec::new();
         if let Some(id) = &url.unknown_recipe {
             let title = ctx::t(&format!("recipe-{}-title", st.recipe.info.id));
-            parts.push(t_args(
+            parts.push(t_strings(
                 "drills-url-unknown-recipe",
                 &[("id", id.clone()), ("title", title)],
             ));
         }
         if !url.ignored.is_empty() {
-            parts.push(t_args(
+            parts.push(t_strings(
                 "drills-url-ignored",
                 &[("keys", url.ignored.join(", "))],
             ));
         }
         if !url.invalid.is_empty() {
-            parts.push(t_args(
+            parts.push(t_strings(
                 "drills-url-invalid",
                 &[("keys", url.invalid.join(", "))],
             ));
         }
         if let Some(name) = &url.missing_file {
-            parts.push(t_args("drills-url-file", &[("name", name.clone())]));
+            parts.push(t_strings("drills-url-file", &[("name", name.clone())]));
         }
         self.els.url_notice.set_text_content(Some(&parts.join(" ")));
         show(&self.els.url_notice, true);
@@ -1123,7 +1046,7 @@ impl Page {
         };
         let st = self.st.borrow();
         let text = if let Some(name) = &st.reading {
-            t_args("drills-reading", &[("name", name.clone())])
+            t_strings("drills-reading", &[("name", name.clone())])
         } else if let Some(file) = &st.input {
             let mut args = vec![
                 ("name", file.name.clone()),
@@ -1133,15 +1056,15 @@ impl Page {
                 Some(Ok(shape)) => {
                     args.push(("rows", texts::group(shape.rows as u64)));
                     args.push(("joints", shape.joints.to_string()));
-                    t_args("drills-file-using-rows", &args)
+                    t_strings("drills-file-using-rows", &args)
                 }
-                _ => t_args("drills-file-using", &args),
+                _ => t_strings("drills-file-using", &args),
             }
         } else if let Some(name) = &st.missing_file {
-            t_args("drills-file-missing", &[("name", name.clone())])
+            t_strings("drills-file-missing", &[("name", name.clone())])
         } else {
             let rows = plan::shape_of(traj_resample::SAMPLE).map_or(0, |s| s.rows);
-            t_args(
+            t_strings(
                 "drills-file-using-sample",
                 &[
                     ("name", traj_resample::SAMPLE_NAME.to_string()),

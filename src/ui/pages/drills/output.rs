@@ -9,10 +9,11 @@ use wasm_bindgen::JsValue;
 use super::command::RunArgs;
 use super::preview::{preview, Preview, PREVIEW_ROWS};
 use super::texts::{escape, group, size_text};
-use super::{show, t_args, Page};
+use super::Page;
 use crate::i18n::FluentArg;
 use crate::recipes::{self, RecipeOutput};
-use crate::ui::ctx;
+use crate::ui::ctx::{self, t_strings};
+use crate::ui::dom::show;
 
 /// The last successful run.
 pub struct Shown {
@@ -100,8 +101,8 @@ fn file_html(name: &str, text: &str, p: &Preview) -> String {
     size_args.push(("columns", FluentArg::from(p.total_columns)));
     size_args.push(("size", FluentArg::from(size_text(text.len() as u64))));
     let size = ctx::t_args("drills-file-size", &size_args);
-    let download = t_args("drills-download", &[("file", name.to_string())]);
-    let region = t_args("drills-preview-label", &[("file", name.to_string())]);
+    let download = t_strings("drills-download", &[("file", name.to_string())]);
+    let region = t_strings("drills-preview-label", &[("file", name.to_string())]);
     format!(
         "<article class=\"drills-file\" data-file=\"{name_attr}\">\
          <div class=\"drills-file-head\"><h3><code>{name_attr}</code></h3>\
@@ -152,7 +153,7 @@ impl Page {
                 .iter()
                 .map(|(n, v)| format!("--{n} {v}"))
                 .collect();
-            els.python_note.set_text_content(Some(&t_args(
+            els.python_note.set_text_content(Some(&t_strings(
                 "drills-python-no-options",
                 &[("options", options.join(" "))],
             )));
@@ -160,8 +161,10 @@ impl Page {
         }
         match &shown.input_name {
             Some(name) => {
-                els.file_note
-                    .set_text_content(Some(&t_args("drills-file-note", &[("name", name.clone())])));
+                els.file_note.set_text_content(Some(&t_strings(
+                    "drills-file-note",
+                    &[("name", name.clone())],
+                )));
                 show(&els.file_note, true);
             }
             None => show(&els.file_note, false),

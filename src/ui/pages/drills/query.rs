@@ -99,18 +99,17 @@ pub fn pairs(
 mod tests {
     use super::super::fields::fields;
     use super::*;
+    use crate::ui::router;
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
-    fn q(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
-        pairs
-            .iter()
-            .map(|(k, v)| (k.to_string(), v.to_string()))
-            .collect()
+    /// The query the page is handed for `#/drills?<query>` (decoded by the router).
+    fn q(query: &str) -> Vec<(String, String)> {
+        router::parse_hash(&format!("#/drills?{query}")).page_query()
     }
 
     #[test]
     fn a_url_round_trips_through_the_fields() {
-        let url = UrlState::parse(&q(&[("recipe", "pid-step"), ("Kp", "2"), ("steps", "120")]));
+        let url = UrlState::parse(&q("recipe=pid-step&Kp=2&steps=120"));
         assert_eq!(url.recipe.info.id, "pid-step");
         assert!(url.unknown_recipe.is_none() && url.ignored.is_empty());
         let fields = fields(url.recipe.info);
@@ -131,15 +130,12 @@ mod tests {
 
     #[test]
     fn options_bad_values_unknown_keys_and_recipes() {
-        let url = UrlState::parse(&q(&[
-            ("recipe", "pendulum-energy"),
-            ("integrator", "rk4"),
-            ("duration_s", "abc"),
-            ("Kp", "3"),
-        ]));
+        let url = UrlState::parse(&q(
+            "recipe=pendulum-energy&integrator=rk4&duration_s=abc&Kp=3",
+        ));
         assert_eq!(url.values.len(), 2);
         assert_eq!(url.ignored, vec!["Kp".to_string()]);
-        let url = UrlState::parse(&q(&[("recipe", "nope"), ("Kp", "3")]));
+        let url = UrlState::parse(&q("recipe=nope&Kp=3"));
         assert_eq!(url.recipe.info.id, RECIPES[0].info.id);
         assert_eq!(url.unknown_recipe.as_deref(), Some("nope"));
         assert!(url.values.is_empty());

@@ -12,7 +12,8 @@ use std::rc::Weak;
 
 use wasm_bindgen::prelude::*;
 
-use super::{heatmap, now_ms, Page};
+use super::{heatmap, Page};
+use crate::ui::schedule::now_ms;
 
 const TIMINGS: &str = "__ik2rTimings";
 const HOOKS: &str = "__ik2rBench";

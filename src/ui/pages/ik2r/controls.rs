@@ -9,11 +9,14 @@ use wasm_bindgen::JsCast;
 use web_sys::Element;
 
 use super::canvas::Layer;
+use super::frame::dirty;
+use super::mount::role;
 use super::state::{self, Field, Params, State, WsColor};
-use super::{dirty, downloads, role, show, t_args, Handler, Page};
+use super::{downloads, Page};
 use crate::planar2r::Elbow;
-use crate::ui::ctx;
-use crate::ui::dom::{self, Listener};
+use crate::ui::clipboard;
+use crate::ui::ctx::{self, t_strings};
+use crate::ui::dom::{self, show, Listener};
 
 impl Page {
     /// Toolbar, form and download listeners.
@@ -22,86 +25,61 @@ impl Page {
         weak: &Weak<Page>,
         out: &mut Vec<Listener>,
     ) -> Result<(), JsValue> {
-        let listen = |target: &Element,
-                      event: &'static str,
-                      f: Handler,
-                      out: &mut Vec<Listener>|
-         -> Result<(), JsValue> {
-            let w = weak.clone();
-            out.push(Listener::new(target, event, move |e| {
-                if let Some(page) = w.upgrade() {
-                    f(&page, &e);
-                }
-            })?);
-            Ok(())
-        };
         for (input, elbow) in [
             (&self.els.elbow_down, Elbow::Down),
             (&self.els.elbow_up, Elbow::Up),
         ] {
-            listen(
-                input,
-                "change",
-                Box::new(move |p, _| p.set_elbow(elbow)),
-                out,
-            )?;
+            out.push(Listener::for_page(input, "change", weak, move |p, _| {
+                p.set_elbow(elbow)
+            })?);
         }
-        listen(
+        out.push(Listener::for_page(
             &self.els.ws_toggle,
             "change",
-            Box::new(|p, _| {
+            weak,
+            |p, _| {
                 let on = p.els.ws_toggle.checked();
                 p.set_workspace_visible(on);
-            }),
-            out,
-        )?;
-        listen(
+            },
+        )?);
+        out.push(Listener::for_page(
             &self.els.ws_color,
             "change",
-            Box::new(|p, _| {
+            weak,
+            |p, _| {
                 if let Some(c) = WsColor::from_key(&p.els.ws_color.value()) {
                     p.state.borrow_mut().ws_color = c;
                     p.refresh_workspace_image();
                     p.schedule_url();
                 }
-            }),
-            out,
-        )?;
+            },
+        )?);
         let reset: Element = role(&self.root, "reset")?;
-        listen(&reset, "click", Box::new(|p, _| p.reset()), out)?;
+        out.push(Listener::for_page(&reset, "click", weak, |p, _| p.reset())?);
         let form: Element = role(&self.root, "form")?;
-        listen(
-            &form,
-            "input",
-            Box::new(|p, e| {
-                if let Some(key) = e
-                    .target()
-                    .and_then(|t| t.dyn_into::<Element>().ok())
-                    .and_then(|el| el.get_attribute("data-field"))
-                {
-                    p.on_field_input(&key);
-                }
-            }),
-            out,
-        )?;
-        listen(&form, "submit", Box::new(|_, e| e.prevent_default()), out)?;
+        out.push(Listener::for_page(&form, "input", weak, |p, e| {
+            if let Some(key) = e
+                .target()
+                .and_then(|t| t.dyn_into::<Element>().ok())
+                .and_then(|el| el.get_attribute("data-field"))
+            {
+                p.on_field_input(&key);
+            }
+        })?);
+        out.push(Listener::for_page(&form, "submit", weak, |_, e| {
+            e.prevent_default()
+        })?);
         for button in dom::matching(&self.root, "[data-download]")? {
             let file = button.get_attribute("data-download").unwrap_or_default();
-            listen(
-                &button,
-                "click",
-                Box::new(move |p, _| p.download(&file)),
-                out,
-            )?;
+            out.push(Listener::for_page(&button, "click", weak, move |p, _| {
+                p.download(&file)
+            })?);
         }
         for button in dom::matching(&self.root, "[data-copy]")? {
             let key = button.get_attribute("data-copy").unwrap_or_default();
-            listen(
-                &button,
-                "click",
-                Box::new(move |p, _| p.copy_command(&key)),
-                out,
-            )?;
+            out.push(Listener::for_page(&button, "click", weak, move |p, _| {
+                p.copy_command(&key)
+            })?);
         }
         Ok(())
     }
@@ -223,7 +201,7 @@ impl Page {
                 Ok(()) => show(&slot, false),
                 Err(e) => {
                     let msg = e.as_string().unwrap_or_else(|| format!("{e:?}"));
-                    slot.set_text_content(Some(&t_args("ik2r-dl-failed", &[("error", msg)])));
+                    slot.set_text_content(Some(&t_strings("ik2r-dl-failed", &[("error", msg)])));
                     show(&slot, true);
                 }
             }
@@ -252,7 +230,7 @@ impl Page {
         let text = code.text_content().unwrap_or_default();
         let element = self.els.copy_status.clone();
         let status = self.copy_status.clone();
-        downloads::copy_text(&text, move |ok| {
+        clipboard::copy_text(&text, move |ok| {
             let id = if ok {
                 "ik2r-copied"
             } else {

@@ -1,9 +1,6 @@
 //! The page's downloads: the three recipe CSVs for the current parameters, made by the same
 //! code path as `bsv <recipe-id> <args>` (so the bytes are the CLI's), the equivalent command
-//! lines (Python recipe and `bsv`) with copy buttons, and the arm view as PNG.
-
-use wasm_bindgen::prelude::*;
-use wasm_bindgen::JsCast;
+//! lines (Python recipe and `bsv`) shown with copy buttons, and the arm view as PNG.
 
 use super::state::{num, Params};
 use crate::error::RecipeError;
@@ -71,69 +68,4 @@ pub fn commands(export: &Export, p: &Params, q2: f64) -> (String, String) {
         format!("python {script} {args}"),
         format!("bsv {} {args}", export.recipe),
     )
-}
-
-/// Copies `text` to the clipboard; calls `done(true)` on success, `done(false)` when neither
-/// the Clipboard API nor the `execCommand("copy")` fallback worked (the caller then selects
-/// the text so that the user can copy it by hand).
-pub fn copy_text(text: &str, done: impl Fn(bool) + 'static) {
-    let Some(window) = web_sys::window() else {
-        done(false);
-        return;
-    };
-    let navigator = window.navigator();
-    let has_clipboard = js_sys::Reflect::get(&navigator, &JsValue::from_str("clipboard"))
-        .map(|c| !c.is_undefined() && !c.is_null())
-        .unwrap_or(false);
-    if has_clipboard {
-        let promise = navigator.clipboard().write_text(text);
-        let done = std::rc::Rc::new(done);
-        let text = text.to_string();
-        let ok = {
-            let done = done.clone();
-            Closure::once_into_js(move |_: JsValue| done(true))
-        };
-        let fail = Closure::once_into_js(move |_: JsValue| done(exec_copy(&text)));
-        // promise.then(ok, fail), called through Reflect to stay independent of js-sys's
-        // generic Promise signatures.
-        let then = js_sys::Reflect::get(&promise, &JsValue::from_str("then"))
-            .ok()
-            .and_then(|f| f.dyn_into::<js_sys::Function>().ok());
-        if let Some(then) = then {
-            let _ = then.call2(&promise, &ok, &fail);
-        }
-    } else {
-        done(exec_copy(text));
-    }
-}
-
-/// `document.execCommand("copy")` on a temporary input holding `text`.
-fn exec_copy(text: &str) -> bool {
-    let Some(document) = web_sys::window().and_then(|w| w.document()) else {
-        return false;
-    };
-    let Some(body) = document.body() else {
-        return false;
-    };
-    let Ok(input) = document
-        .create_element("input")
-        .map(|e| e.unchecked_into::<web_sys::HtmlInputElement>())
-    else {
-        return false;
-    };
-    input.set_value(text);
-    let _ = input.set_attribute("readonly", "");
-    let _ = input.set_attribute("style", "position:fixed;left:-9999px;top:0");
-    if body.append_child(&input).is_err() {
-        return false;
-    }
-    input.select();
-    let copied = js_sys::Reflect::get(&document, &JsValue::from_str("execCommand"))
-        .ok()
-        .and_then(|f| f.dyn_into::<js_sys::Function>().ok())
-        .and_then(|f| f.call1(&document, &JsValue::from_str("copy")).ok())
-        .and_then(|v| v.as_bool())
-        .unwrap_or(false);
-    input.remove();
-    copied
 }

@@ -12,8 +12,9 @@ use glam::DVec2;
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{Element, Event, HtmlCanvasElement, PointerEvent};
 
+use super::frame::dirty;
 use super::view::{self, Grab};
-use super::{dirty, heatmap, Drag, DragTarget, Page};
+use super::{heatmap, Drag, DragTarget, Page};
 use crate::planar2r::wrap_angle;
 use crate::ui::dom::Listener;
 

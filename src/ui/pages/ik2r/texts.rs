@@ -3,9 +3,10 @@
 //! copy status, the command lines under the downloads, and the toolbar controls' state.
 
 use super::state;
-use super::{downloads, readouts, show, t_args, view, Page};
+use super::{downloads, readouts, view, Page};
 use crate::planar2r::Elbow;
-use crate::ui::ctx;
+use crate::ui::ctx::{self, t_strings};
+use crate::ui::dom::show;
 
 impl Page {
     pub(super) fn update_ws_summary(&self) {
@@ -14,7 +15,7 @@ impl Page {
         match (&gfx.ws_data, st.show_ws) {
             (Some((_, ws)), true) => {
                 let (nx, ny) = (ws.xs_mm.len(), ws.ys_mm.len());
-                let text = t_args(
+                let text = t_strings(
                     "ik2r-ws-summary",
                     &[
                         ("nx", nx.to_string()),
@@ -37,7 +38,7 @@ impl Page {
         if ui.ignored_url_keys.is_empty() {
             show(&self.els.url_notice, false);
         } else {
-            let text = t_args(
+            let text = t_strings(
                 "ik2r-url-ignored",
                 &[("keys", ui.ignored_url_keys.join(", "))],
             );
@@ -49,7 +50,7 @@ impl Page {
         self.els.copy_status.set_text_content(Some(&status));
         let p = self.state.borrow().params;
         let (inner, outer) = p.arm().reach();
-        let notes = t_args(
+        let notes = t_strings(
             "ik2r-view-notes",
             &[
                 ("inner", readouts::fmt_fixed(inner * 1000.0, 1)),
@@ -67,7 +68,7 @@ impl Page {
         let text = match ui.ghost {
             Some((q1, q2)) => {
                 let arm = self.state.borrow().params.arm();
-                t_args(
+                t_strings(
                     "ik2r-heatmap-hover",
                     &[
                         ("q1", readouts::fmt_fixed(q1, 3)),

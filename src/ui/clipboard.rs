@@ -1,8 +1,10 @@
-//! Copying a command line to the clipboard: the Clipboard API where the page may use it, else
-//! `document.execCommand("copy")` on a temporary field (as the IK page does).
+//! Copying text (a command line) to the clipboard: the Clipboard API where the page may use it,
+//! else `document.execCommand("copy")` on a temporary read-only field.
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
+
+use crate::ui::dom;
 
 /// Copies `text`; calls `done(true)` on success and `done(false)` when neither way worked (the
 /// page then asks the user to select and copy by hand).
@@ -27,7 +29,7 @@ pub fn copy_text(text: &str, done: impl Fn(bool) + 'static) {
     };
     let text = text.to_string();
     let fail = Closure::once_into_js(move |_: JsValue| done(exec_copy(&text)));
-    super::file::then(&promise, &ok, &fail);
+    dom::then(&promise, &ok, &fail);
 }
 
 /// `document.execCommand("copy")` on a temporary read-only field holding `text`.

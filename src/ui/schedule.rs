@@ -1,30 +1,36 @@
-//! Deferred work: a debounced `setTimeout` ([`Timer`]) for validation-driven runs and URL
-//! writes, and [`after_paint`], which runs a callback after the browser has painted the
-//! current DOM (a `requestAnimationFrame` whose callback sets a zero `setTimeout`), so that a
-//! "Running…" state is on screen before a long computation blocks the tab.
+//! Deferred work and its clock: a debounced `setTimeout` ([`Timer`]) for recomputes, runs and
+//! URL writes; [`after_paint`], which runs a callback after the browser has painted the current
+//! DOM (a `requestAnimationFrame` whose callback sets a zero `setTimeout`), so that a
+//! "Running…" state is on screen before a long computation blocks the tab; and [`now_ms`],
+//! the clock pages time their work with.
 
 use std::cell::{Cell, RefCell};
+use std::rc::{Rc, Weak};
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
-/// A debounced `setTimeout`: [`Timer::schedule`] restarts it.
+/// A debounced `setTimeout`: [`Timer::schedule`] restarts it. `Timer::default()` has nothing
+/// to run until [`Timer::set_callback`].
+#[derive(Default)]
 pub struct Timer {
-    id: Cell<Option<i32>>,
+    /// The pending timeout (cleared by the callback as it starts).
+    id: Rc<Cell<Option<i32>>>,
     callback: RefCell<Option<Closure<dyn FnMut()>>>,
 }
 
 impl Timer {
-    pub fn new() -> Timer {
-        Timer {
-            id: Cell::new(None),
-            callback: RefCell::new(None),
-        }
-    }
-
-    /// What the timer runs (call [`Timer::fired`] first thing in it).
-    pub fn set_callback(&self, f: impl FnMut() + 'static) {
-        *self.callback.borrow_mut() = Some(Closure::new(f));
+    /// What the timer runs: `f` on the page behind `page`, if it is still mounted (the page
+    /// owns its timers, so the callback holds it weakly).
+    pub fn set_callback<P: 'static>(&self, page: &Weak<P>, f: impl Fn(&P) + 'static) {
+        let id = self.id.clone();
+        let page = page.clone();
+        *self.callback.borrow_mut() = Some(Closure::new(move || {
+            id.set(None);
+            if let Some(page) = page.upgrade() {
+                f(&page);
+            }
+        }));
     }
 
     /// (Re)starts the timer: the callback runs `ms` after the last call.
@@ -49,11 +55,6 @@ impl Timer {
             window.clear_timeout_with_handle(id);
         }
     }
-
-    /// Marks the timer as no longer waiting (the callback is running).
-    pub fn fired(&self) {
-        self.id.set(None);
-    }
 }
 
 /// Runs `f` once the browser has painted what is on the page now.
@@ -68,4 +69,11 @@ pub fn after_paint(f: impl FnOnce() + 'static) -> Result<(), JsValue> {
     });
     window.request_animation_frame(frame.unchecked_ref())?;
     Ok(())
+}
+
+/// `performance.now()` in milliseconds (0 where there is no clock).
+pub fn now_ms() -> f64 {
+    web_sys::window()
+        .and_then(|w| w.performance())
+        .map_or(0.0, |p| p.now())
 }

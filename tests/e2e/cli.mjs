@@ -1,0 +1,44 @@
+// The `bsv` CLI as the reference the pages' downloads are checked against: building it, running
+// it into a fresh folder, saving what a page downloads, and comparing the two byte for byte.
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, readdirSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { ROOT } from './harness.mjs';
+
+export const BSV = join(ROOT, 'target', 'debug', 'bsv');
+
+/** Builds the CLI from the same sources as the wasm under test (a no-op when it is up to date). */
+export function buildCli() {
+  execFileSync('cargo', ['build', '--quiet', '--bin', 'bsv'], { cwd: ROOT, stdio: 'inherit' });
+}
+
+/** Runs `bsv <args> --out DIR`: its stdout (trailing newline removed) and every file written. */
+export function cli(args) {
+  const dir = mkdtempSync(join(tmpdir(), 'bsv-cli-'));
+  const stdout = execFileSync(BSV, [...args, '--out', dir], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'] });
+  const files = new Map(readdirSync(dir).map((f) => [f, readFileSync(join(dir, f))]));
+  return { stdout: stdout.replace(/\n$/, ''), files };
+}
+
+/** Clicks the page's `[data-download="<file>"]` button and returns the bytes it saved. */
+export async function download(page, file) {
+  const [dl] = await Promise.all([
+    page.waitForEvent('download'),
+    page.locator(`[data-download="${file}"]`).click(),
+  ]);
+  assert.equal(dl.suggestedFilename(), file);
+  const path = join(mkdtempSync(join(tmpdir(), 'bsv-dl-')), file);
+  await dl.saveAs(path);
+  return readFileSync(path);
+}
+
+/** Asserts identical bytes; on failure names the first differing line of both. */
+export function assertSameBytes(got, want, label) {
+  if (got.equals(want)) return;
+  const a = got.toString('utf8').split('\n');
+  const b = want.toString('utf8').split('\n');
+  const i = a.findIndex((line, k) => line !== b[k]);
+  assert.fail(`${label}: ${got.length} vs ${want.length} bytes; first difference on line ${i + 1}:\n  page: ${a[i]}\n  cli:  ${b[i]}`);
+}
