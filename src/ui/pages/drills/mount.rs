@@ -1,0 +1,241 @@
+//! Mounting and unmounting the page: building it from its markup and the URL (values the URL
+//! gave that do not pass are named in the notice), wiring its controls (delegated listeners on
+//! stable containers) and timers, relocalizing it, and taking it all down again.
+
+use std::cell::RefCell;
+use std::rc::{Rc, Weak};
+
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{Element, Event, KeyboardEvent};
+
+use super::fields::{self, Form, Kind};
+use super::query::UrlState;
+use super::{markup, Els, Handle, Page, Slot, State, Status, UrlNotes};
+use crate::recipes;
+use crate::ui::dom::{self, Listener};
+use crate::ui::page::{MountCtx, PageHandle};
+use crate::ui::schedule::Timer;
+
+/// Builds the page into the shell's main element.
+pub(super) fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
+    let page = Page::build(ctx)?;
+    Ok(Box::new(Handle(page)))
+}
+
+fn find<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
+    dom::find(root, selector, "drills")
+}
+
+fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
+    find(root, &format!("[data-drills=\"{name}\"]"))
+}
+
+impl Page {
+    fn build(mount: MountCtx) -> Result<Rc<Page>, JsValue> {
+        let root = mount.root.clone();
+        root.set_inner_html(&markup::page());
+        let els = Els {
+            page: find(&root, ".drills")?,
+            recipe: role(&root, "recipe")?,
+            recipe_title: role(&root, "recipe-title")?,
+            recipe_blurb: role(&root, "recipe-blurb")?,
+            form: role(&root, "form")?,
+            run: role(&root, "run")?,
+            status: role(&root, "status")?,
+            error: role(&root, "error")?,
+            url_notice: role(&root, "url-notice")?,
+            about: role(&root, "about")?,
+            quirk_box: role(&root, "quirk-box")?,
+            quirk: role(&root, "quirk")?,
+            output: role(&root, "output")?,
+            stale: role(&root, "stale")?,
+            empty: role(&root, "empty")?,
+            result: role(&root, "result")?,
+            summary: role(&root, "summary")?,
+            files: role(&root, "files")?,
+            cmd_python: find(&root, "[data-cmd=\"python\"]")?,
+            cmd_bsv: find(&root, "[data-cmd=\"bsv\"]")?,
+            python_note: role(&root, "python-note")?,
+            file_note: role(&root, "file-note")?,
+            copy_status: role(&root, "copy-status")?,
+        };
+        dom::relocalize(&root)?;
+
+        let url = UrlState::parse(&mount.query);
+        let recipe = url.recipe;
+        let field_list = fields::fields(recipe.info);
+        let mut texts = url.texts(&field_list);
+        let mut missing_file = None;
+        for (field, text) in field_list.iter().zip(texts.iter_mut()) {
+            if field.kind == Kind::File {
+                missing_file = text.take().filter(|t| !t.trim().is_empty());
+            }
+        }
+        let form = Form::build(&els.form, recipe.info, &fill_values(&field_list, &texts))?;
+        let state = State {
+            recipe,
+            texts,
+            remembered: Vec::new(),
+            input: None,
+            missing_file: missing_file.clone(),
+            file_problem: None,
+            reading: None,
+            read_generation: 0,
+            errors: Vec::new(),
+            plan: None,
+            failed: None,
+            shown: None,
+            runs: 0,
+            status: Status::Idle,
+            url: UrlNotes {
+                unknown_recipe: url.unknown_recipe.clone(),
+                ignored: url.ignored.clone(),
+                invalid: Vec::new(),
+                missing_file,
+            },
+            copy_status: None,
+        };
+        let page = Rc::new(Page {
+            els,
+            st: RefCell::new(state),
+            form: RefCell::new(form),
+            listeners: RefCell::new(Vec::new()),
+            auto_timer: Timer::default(),
+            url_timer: Timer::default(),
+            weak: RefCell::new(Weak::new()),
+        });
+        *page.weak.borrow_mut() = Rc::downgrade(&page);
+        page.install()?;
+        page.els.recipe.set_value(recipe.info.id);
+        page.render_recipe_texts()?;
+        page.validate();
+        {
+            // Values from the URL that do not pass: name them in the notice.
+            let form = page.form.borrow();
+            let mut st = page.st.borrow_mut();
+            let invalid: Vec<String> = st
+                .errors
+                .iter()
+                .filter_map(|(slot, _)| match slot {
+                    Slot::Field(i) => form.fields.get(*i).map(|f| f.spec.name.to_string()),
+                    Slot::General => None,
+                })
+                .filter(|name| url.values.iter().any(|(k, _)| k == name))
+                .collect();
+            st.url.invalid = invalid;
+        }
+        page.render_notice();
+        page.render_file_status();
+        page.auto_run();
+        page.render_output()?;
+        page.render_status();
+        Ok(page)
+    }
+
+    /// Wires the controls (delegated on stable containers, so rebuilding the form or the
+    /// result needs no new listeners) and the timers.
+    fn install(&self) -> Result<(), JsValue> {
+        let weak = self.weak.borrow().clone();
+        self.auto_timer.set_callback(&weak, Page::auto_run);
+        self.url_timer.set_callback(&weak, Page::write_url);
+
+        let reset: Element = find(&self.els.page, "[data-drills=\"reset\"]")?;
+        *self.listeners.borrow_mut() = vec![
+            Listener::for_page(&self.els.recipe, "change", &weak, |p, _| {
+                let id = p.els.recipe.value();
+                if let Some(recipe) = recipes::find(&id) {
+                    p.switch_recipe(recipe);
+                }
+            })?,
+            Listener::for_page(&self.els.form, "input", &weak, |p, e| {
+                let is_field = target_element(e).is_some_and(|el| el.has_attribute("data-field"));
+                if is_field {
+                    p.on_edit();
+                }
+            })?,
+            Listener::for_page(&self.els.form, "change", &weak, |p, e| {
+                let Some(el) = target_element(e) else {
+                    return;
+                };
+                // Text fields and selects report through "input"; the file picker here.
+                if el.has_attribute("data-file-input") {
+                    p.on_file_chosen();
+                }
+            })?,
+            Listener::for_page(&self.els.form, "keydown", &weak, |p, e| {
+                let Some(key) = e.dyn_ref::<KeyboardEvent>() else {
+                    return;
+                };
+                let in_field = target_element(e).is_some_and(|el| el.has_attribute("data-field"));
+                if key.key() == "Enter" && in_field && !key.is_composing() {
+                    e.prevent_default();
+                    p.request_run();
+                }
+            })?,
+            Listener::for_page(&self.els.form, "submit", &weak, |_, e| e.prevent_default())?,
+            Listener::for_page(&self.els.form, "click", &weak, |p, e| {
+                if target_element(e)
+                    .is_some_and(|el| el.closest("[data-use-sample]").ok().flatten().is_some())
+                {
+                    p.use_sample();
+                }
+            })?,
+            Listener::for_page(&self.els.run, "click", &weak, |p, _| p.request_run())?,
+            Listener::for_page(&reset, "click", &weak, |p, _| p.reset())?,
+            Listener::for_page(&self.els.output, "click", &weak, |p, e| {
+                let Some(el) = target_element(e) else {
+                    return;
+                };
+                if let Some(button) = el.closest("[data-download]").ok().flatten() {
+                    let file = button.get_attribute("data-download").unwrap_or_default();
+                    p.download(&file);
+                } else if let Some(button) = el.closest("[data-copy]").ok().flatten() {
+                    let kind = button.get_attribute("data-copy").unwrap_or_default();
+                    p.copy_command(&kind);
+                }
+            })?,
+        ];
+        Ok(())
+    }
+
+    pub(super) fn relocalize(&self) {
+        self.form.borrow().relocalize();
+        self.render_errors();
+        self.render_status();
+        self.render_notice();
+        self.render_file_status();
+        if let Err(e) = self.render_output() {
+            web_sys::console::error_2(&"drills: result".into(), &e);
+        }
+    }
+
+    pub(super) fn unmount(&self) {
+        self.auto_timer.cancel();
+        self.url_timer.cancel();
+        self.listeners.borrow_mut().clear();
+        let mut st = self.st.borrow_mut();
+        st.read_generation += 1;
+        st.shown = None;
+        st.input = None;
+    }
+}
+
+/// The element an event happened on.
+fn target_element(event: &Event) -> Option<Element> {
+    event.target().and_then(|t| t.dyn_into::<Element>().ok())
+}
+
+/// The values to put in the fields: the text, or the default where there is none.
+pub(super) fn fill_values(fields: &[fields::Field], texts: &[Option<String>]) -> Vec<String> {
+    fields
+        .iter()
+        .enumerate()
+        .map(|(i, f)| {
+            texts
+                .get(i)
+                .and_then(|t| t.clone())
+                .unwrap_or_else(|| f.spec.default.to_string())
+        })
+        .collect()
+}

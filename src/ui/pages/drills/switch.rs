@@ -1,0 +1,95 @@
+//! Changing the whole form at once: another drill (this one's values remembered, the other's
+//! restored or its defaults), the previous / next drill, and back to the recipe's defaults.
+
+use super::fields::{self, Form};
+use super::mount::fill_values;
+use super::{Page, Status, UrlNotes};
+use crate::recipes::{Recipe, RECIPES};
+
+impl Page {
+    /// Another drill: remember this one's values, restore the other's (or its defaults).
+    pub(super) fn switch_recipe(&self, recipe: &'static Recipe) {
+        if self.st.borrow().recipe.info.id == recipe.info.id {
+            return;
+        }
+        self.auto_timer.cancel();
+        let texts = {
+            let mut st = self.st.borrow_mut();
+            let current = (st.recipe.info.id, st.texts.clone());
+            st.remembered.retain(|(id, _)| *id != current.0);
+            st.remembered.push(current);
+            st.recipe = recipe;
+            st.shown = None;
+            st.failed = None;
+            st.status = Status::Idle;
+            st.url = UrlNotes::default();
+            st.copy_status = None;
+            st.remembered
+                .iter()
+                .find(|(id, _)| *id == recipe.info.id)
+                .map(|(_, t)| t.clone())
+                .unwrap_or_default()
+        };
+        let field_list = fields::fields(recipe.info);
+        let values = fill_values(&field_list, &texts);
+        match Form::build(&self.els.form, recipe.info, &values) {
+            Ok(form) => *self.form.borrow_mut() = form,
+            Err(e) => web_sys::console::error_2(&"drills: form".into(), &e),
+        }
+        self.els.recipe.set_value(recipe.info.id);
+        if let Err(e) = self.render_recipe_texts() {
+            web_sys::console::error_2(&"drills: texts".into(), &e);
+        }
+        self.validate();
+        self.render_notice();
+        self.render_file_status();
+        self.write_url();
+        self.auto_run();
+        if let Err(e) = self.render_output() {
+            web_sys::console::error_2(&"drills: result".into(), &e);
+        }
+        self.render_status();
+    }
+
+    /// `[` / `]`: the previous / next drill.
+    pub(super) fn switch_by(&self, delta: i32) {
+        let id = self.st.borrow().recipe.info.id;
+        let n = RECIPES.len() as i32;
+        let index = RECIPES.iter().position(|r| r.info.id == id).unwrap_or(0) as i32;
+        let next = (index + delta).rem_euclid(n) as usize;
+        if let Some(recipe) = RECIPES.get(next) {
+            self.switch_recipe(recipe);
+        }
+    }
+
+    /// Back to the recipe's defaults (the labeled sample for traj-resample).
+    pub(super) fn reset(&self) {
+        self.auto_timer.cancel();
+        {
+            let mut st = self.st.borrow_mut();
+            st.input = None;
+            st.missing_file = None;
+            st.file_problem = None;
+            st.failed = None;
+            st.url = UrlNotes::default();
+            st.status = Status::Idle;
+        }
+        let form = self.form.borrow();
+        let defaults: Vec<String> = form
+            .fields
+            .iter()
+            .map(|f| f.spec.default.to_string())
+            .collect();
+        form.fill(&defaults);
+        if let Some(input) = form.file_input() {
+            input.set_value("");
+        }
+        drop(form);
+        self.validate();
+        self.render_notice();
+        self.render_file_status();
+        self.write_url();
+        self.auto_run();
+        self.render_status();
+    }
+}
