@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every check and test, in the order a failure is cheapest to find: formatting, clippy (native
-# and wasm32), native tests (unit, golden parity, CLI, properties, doctests), the same golden
+# and wasm32), rustdoc, native tests (unit, golden parity, CLI, properties, doctests), the same golden
 # tests as wasm under Node, then the release app in headless Chromium. Fails on the first error.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,6 +18,9 @@ cargo clippy --all-targets --locked -- -D warnings
 
 step "clippy (wasm32, lib and tests)"
 cargo clippy --target wasm32-unknown-unknown --lib --tests --features bench --locked -- -D warnings
+
+step "rustdoc (wasm32, warnings are errors)"
+RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --target wasm32-unknown-unknown --lib --locked
 
 step "native tests"
 cargo test --locked

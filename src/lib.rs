@@ -8,7 +8,7 @@
 //! - [`numpy`]: `np.arange` and friends, operation for operation.
 //! - [`pyfmt`]: numbers printed exactly as Python prints them.
 //! - [`args`]: command-line style argument parsing shared by the CLI and `runRecipe`.
-//! - [`bench`]: the cases of `make bench`.
+//! - [`bench`](mod@bench): the cases of `make bench`.
 //! - [`error`]: the one error type every kernel returns.
 //! - [`i18n`]: Fluent bundles embedded from `locales/`.
 //! - [`api`]: the `#[wasm_bindgen]` surface for the kernels.

@@ -4,24 +4,24 @@
 //!
 //! How a run happens:
 //! - every keystroke validates the form with the recipe's own parser and checks
-//!   ([`plan::check`], no run), and puts the localized message beside the offending field;
-//! - a valid form whose run is small ([`plan::AUTO_RUN_MAX_WORK`] rows) runs 250 ms after the
+//!   (`plan::check`, no run), and puts the localized message beside the offending field;
+//! - a valid form whose run is small (`plan::AUTO_RUN_MAX_WORK` rows) runs 250 ms after the
 //!   last keystroke; a bigger one waits for Run / Enter / `r`, which first paints a "Running…"
 //!   state and then runs ([`after_paint`](crate::ui::schedule::after_paint)), so the tab never
 //!   freezes without saying so;
 //! - the last result (summary, files, command lines) stays on screen until a new run succeeds;
 //!   a note says when the form has moved on from it.
 //!
-//! Files: [`mount`] (building the page, wiring its controls, relocalizing, unmounting),
-//! [`validate`] (checking the form as it is typed), [`run`] (when and how a drill runs),
-//! [`switch`] (another drill, back to defaults), [`picker`] (traj-resample's file on the page),
-//! [`url`] (writing the URL, the notice about it), [`status`] (recipe texts, status line, stale
-//! note), [`downloads`] (download and copy buttons), [`fields`] (the form and its hints),
-//! [`plan`] (checks and run sizes), [`command`] (run arguments and command lines), [`query`]
-//! (URL state), [`output`] (result panel), [`preview`] (CSV tables), [`file`] (reading
-//! traj-resample's input file), [`keys`], [`texts`] (explanations, number formats),
-//! [`markup`]. Timers and the clipboard are the shared [`crate::ui::schedule`] and
-//! [`crate::ui::clipboard`]. This file holds the page's types and the shell's handle on it.
+//! Files: `mount` (building the page, wiring its controls, relocalizing, unmounting),
+//! `validate` (checking the form as it is typed), `run` (when and how a drill runs),
+//! `switch` (another drill, back to defaults), `picker` (traj-resample's file on the page),
+//! `url` (writing the URL, the notice about it), `status` (recipe texts, status line, stale
+//! note), `downloads` (download and copy buttons), `fields` (the form and its hints),
+//! `plan` (checks and run sizes), `command` (run arguments and command lines), `query`
+//! (URL state), `output` (result panel), `preview` (CSV tables), `file` (reading
+//! traj-resample's input file), `keys`, `texts` (explanations, number formats),
+//! `markup`. Timers and the clipboard are the shared `crate::ui::schedule` and
+//! `crate::ui::clipboard`. This file holds the page's types and the shell's handle on it.
 
 mod command;
 mod downloads;

@@ -16,14 +16,14 @@
 //! series, once per animation frame. Heatmap and workspace recomputes are debounced and run
 //! only on parameter changes. The URL is rewritten on drag end and (debounced) on edits.
 //!
-//! Files: [`mount`] (building the page, wiring its callbacks, unmounting), [`frame`] (dirty
-//! bits, one draw per animation frame, layout), [`draw`] (what a frame draws), [`recompute`]
-//! (heatmap and workspace recomputes), [`pose`] (pose, elbow, workspace toggle, URL writes),
-//! [`state`] (state and URL), [`view`] (arm view drawing), [`pointer`] (pointer and drag),
-//! [`heatmap`], [`workspace`] (overlay), [`plots`], [`readouts`], [`form`] (parameters),
-//! [`controls`] (toolbar, form, download and copy handlers), [`texts`] (text the page formats
-//! itself), [`downloads`], [`explain`] (explanation panel), [`keys`], [`markup`], [`canvas`]
-//! (HiDPI layers), [`bench`] (timing hooks). This file holds the page's types and the shell's
+//! Files: `mount` (building the page, wiring its callbacks, unmounting), `frame` (dirty
+//! bits, one draw per animation frame, layout), `draw` (what a frame draws), `recompute`
+//! (heatmap and workspace recomputes), `pose` (pose, elbow, workspace toggle, URL writes),
+//! `state` (state and URL), `view` (arm view drawing), `pointer` (pointer and drag),
+//! `heatmap`, `workspace` (overlay), `plots`, `readouts`, `form` (parameters),
+//! `controls` (toolbar, form, download and copy handlers), `texts` (text the page formats
+//! itself), `downloads`, `explain` (explanation panel), `keys`, `markup`, `canvas`
+//! (HiDPI layers), `bench` (timing hooks). This file holds the page's types and the shell's
 //! handle on it.
 
 mod bench;
