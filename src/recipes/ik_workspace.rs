@@ -41,7 +41,8 @@ pub const MAX_CELLS: u64 = MAX_AXIS_SAMPLES * MAX_AXIS_SAMPLES;
 pub const FILE_NAME: &str = "ik_workspace.csv";
 const HEADER: [&str; 6] = ["x_mm", "y_mm", "reachable", "q1_rad", "q2_rad", "fk_err_mm"];
 
-const ARGS: [ArgSpec; 4] = [
+/// `L1` and `L2` as all three 2R recipes take them (positional arguments 0 and 1).
+pub(crate) const LINK_ARGS: [ArgSpec; 2] = [
     ArgSpec {
         name: "L1",
         default: "0.12",
@@ -52,6 +53,11 @@ const ARGS: [ArgSpec; 4] = [
         default: "0.10",
         help: "forearm link length, m",
     },
+];
+
+const ARGS: [ArgSpec; 4] = [
+    LINK_ARGS[0],
+    LINK_ARGS[1],
     ArgSpec {
         name: "half_mm",
         default: "200",

@@ -20,7 +20,7 @@
 //!   IndexError on the empty sweep (`rows[0]`); we reject both with an error naming the value;
 //! - at most [`MAX_SAMPLES`] samples.
 
-use super::ik_workspace::{check_link_m, finite};
+use super::ik_workspace::{check_link_m, finite, LINK_ARGS};
 use super::{RecipeInfo, RecipeOutput};
 use crate::args::{in_range, positive, ArgSpec, Args};
 use crate::error::RecipeError;
@@ -48,16 +48,8 @@ const HEADER: [&str; 8] = [
 ];
 
 const ARGS: [ArgSpec; 6] = [
-    ArgSpec {
-        name: "L1",
-        default: "0.12",
-        help: "upper link length, m",
-    },
-    ArgSpec {
-        name: "L2",
-        default: "0.10",
-        help: "forearm link length, m",
-    },
+    LINK_ARGS[0],
+    LINK_ARGS[1],
     ArgSpec {
         name: "q1_start",
         default: "0",

@@ -16,7 +16,7 @@
 //! - link lengths must lie in [`LINK_MIN_M`](super::ik_workspace::LINK_MIN_M),
 //!   [`LINK_MAX_M`](super::ik_workspace::LINK_MAX_M).
 
-use super::ik_workspace::check_link_m;
+use super::ik_workspace::{check_link_m, LINK_ARGS};
 use super::{RecipeInfo, RecipeOutput};
 use crate::args::{parse_i64, ArgSpec, Args};
 use crate::error::RecipeError;
@@ -33,16 +33,8 @@ pub const FILE_NAME: &str = "manip_ellipse.csv";
 const HEADER: [&str; 4] = ["q1", "q2", "detJ", "manip"];
 
 const ARGS: [ArgSpec; 3] = [
-    ArgSpec {
-        name: "L1",
-        default: "0.12",
-        help: "upper link length, m",
-    },
-    ArgSpec {
-        name: "L2",
-        default: "0.10",
-        help: "forearm link length, m",
-    },
+    LINK_ARGS[0],
+    LINK_ARGS[1],
     ArgSpec {
         name: "n",
         default: "24",
