@@ -138,12 +138,18 @@ pub fn parse_f64(param: &str, text: &str) -> Result<f64, RecipeError> {
         param: param.to_string(),
         value: text.to_string(),
     })?;
-    if !value.is_finite() {
-        return Err(RecipeError::NotFinite {
+    finite(param, value)
+}
+
+/// Rejects NaN and infinities (typed callers bypass the argument parser).
+pub fn finite(param: &str, value: f64) -> Result<f64, RecipeError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(RecipeError::NotFinite {
             param: param.to_string(),
-        });
+        })
     }
-    Ok(value)
 }
 
 /// Parses an integer like Python's `int()` (no decimal point).
@@ -153,6 +159,41 @@ pub fn parse_i64(param: &str, text: &str) -> Result<i64, RecipeError> {
         param: param.to_string(),
         value: text.to_string(),
     })
+}
+
+/// Parses a whole-number argument like Python's `int()` and checks `min <= value <= max`.
+/// A well-formed integer too long for i64 is out of range, not "not a whole number".
+pub fn parse_count(param: &str, text: &str, min: i64, max: i64) -> Result<i64, RecipeError> {
+    let value = match parse_i64(param, text) {
+        Ok(v) => v,
+        Err(e) => {
+            let digits = text.trim().trim_start_matches(['+', '-']);
+            let integral = !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit());
+            return match text.trim().parse::<f64>() {
+                Ok(v) if integral => Err(out_of_range(param, v, min, max)),
+                _ => Err(e),
+            };
+        }
+    };
+    check_count(param, value, min, max)
+}
+
+/// Checks `min <= value <= max` for a whole-number parameter.
+pub fn check_count(param: &str, value: i64, min: i64, max: i64) -> Result<i64, RecipeError> {
+    if (min..=max).contains(&value) {
+        Ok(value)
+    } else {
+        Err(out_of_range(param, value as f64, min, max))
+    }
+}
+
+fn out_of_range(param: &str, value: f64, min: i64, max: i64) -> RecipeError {
+    RecipeError::OutOfRange {
+        param: param.to_string(),
+        value,
+        min: min as f64,
+        max: max as f64,
+    }
 }
 
 /// Checks `value > 0`.

@@ -207,6 +207,23 @@ pub fn push_fixed(out: &mut String, x: f64, digits: usize) {
     let _ = write!(out, "{x:.digits$}");
 }
 
+/// Python's `round(x, ndigits)` for a float: the exact binary value rounded half to even to
+/// `ndigits` decimals, read back as the nearest double. Rust's fixed-precision formatting is
+/// exact and rounds half to even, so formatting and parsing back is Python's algorithm.
+///
+/// ```
+/// use bsv_playground::pyfmt::py_round;
+/// assert_eq!(py_round(7.0 * 0.05, 4), 0.35); // 0.35000000000000003
+/// assert_eq!(py_round(0.125, 2), 0.12); // an exact tie goes to even
+/// assert_eq!(py_round(2.675, 2), 2.67); // 2.67499999...
+/// ```
+pub fn py_round(x: f64, ndigits: usize) -> f64 {
+    if !x.is_finite() {
+        return x;
+    }
+    fixed(x, ndigits).parse().unwrap_or(x)
+}
+
 /// One CSV cell: a float (`repr`), an integer, or empty.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Cell {

@@ -15,9 +15,8 @@
 //!   every coefficient finite;
 //! - at most [`MAX_ROWS`] samples.
 
-use super::ik_workspace::finite;
 use super::{RecipeInfo, RecipeOutput};
-use crate::args::{in_range, positive, ArgSpec, Args};
+use crate::args::{finite, in_range, positive, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::pyfmt::{py_float, CsvText};

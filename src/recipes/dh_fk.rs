@@ -22,7 +22,7 @@
 use nalgebra::{Matrix3, Matrix4};
 
 use super::{RecipeInfo, RecipeOutput};
-use crate::args::{parse_f64, ArgSpec, Args};
+use crate::args::{finite, parse_f64, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy::matmul;
 use crate::pyfmt::{fixed, Cell, CsvText};
@@ -195,13 +195,10 @@ impl Default for DhParams {
 impl DhParams {
     /// The angles must be finite.
     pub fn validate(&self) -> Result<(), RecipeError> {
-        if self.q.iter().all(|v| v.is_finite()) {
-            Ok(())
-        } else {
-            Err(RecipeError::NotFinite {
-                param: ARGS[0].name.to_string(),
-            })
+        for &q in &self.q {
+            finite(ARGS[0].name, q)?;
         }
+        Ok(())
     }
 
     /// Parses `"q1,q2,q3"` like the recipe (`float()` of each comma-separated item), then

@@ -19,7 +19,7 @@
 //!   hold at most [`MAX_CELLS`] cells.
 
 use super::{RecipeInfo, RecipeOutput};
-use crate::args::{in_range, positive, within_limit, ArgSpec, Args};
+use crate::args::{finite, in_range, positive, within_limit, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{Arm, Elbow};
@@ -109,17 +109,6 @@ pub(crate) fn check_link_m(param: &str, value: f64) -> Result<(), RecipeError> {
     positive(param, value)?;
     in_range(param, value, LINK_MIN_M, LINK_MAX_M)?;
     Ok(())
-}
-
-/// Rejects NaN and infinities (typed callers bypass the argument parser).
-pub(crate) fn finite(param: &str, value: f64) -> Result<f64, RecipeError> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(RecipeError::NotFinite {
-            param: param.to_string(),
-        })
-    }
 }
 
 impl WorkspaceParams {

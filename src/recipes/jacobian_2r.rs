@@ -20,9 +20,9 @@
 //!   IndexError on the empty sweep (`rows[0]`); we reject both with an error naming the value;
 //! - at most [`MAX_SAMPLES`] samples.
 
-use super::ik_workspace::{check_link_m, finite, LINK_ARGS};
+use super::ik_workspace::{check_link_m, LINK_ARGS};
 use super::{RecipeInfo, RecipeOutput};
-use crate::args::{in_range, positive, ArgSpec, Args};
+use crate::args::{finite, in_range, positive, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{self, Arm};

@@ -18,7 +18,7 @@
 
 use super::ik_workspace::{check_link_m, LINK_ARGS};
 use super::{RecipeInfo, RecipeOutput};
-use crate::args::{parse_i64, ArgSpec, Args};
+use crate::args::{check_count, parse_count, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::planar2r::Arm;
 use crate::pyfmt::{fixed, CsvText};
@@ -69,41 +69,6 @@ impl Default for GridParams {
             l2: 0.10,
             n: 24,
         }
-    }
-}
-
-/// Parses a whole-number argument like Python's `int()` and checks `min <= value <= max`.
-/// A well-formed integer too long for i64 is out of range, not "not a whole number".
-pub(crate) fn parse_count(param: &str, text: &str, min: i64, max: i64) -> Result<i64, RecipeError> {
-    let value = match parse_i64(param, text) {
-        Ok(v) => v,
-        Err(e) => {
-            let digits = text.trim().trim_start_matches(['+', '-']);
-            let integral = !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit());
-            return match text.trim().parse::<f64>() {
-                Ok(v) if integral => Err(out_of_range(param, v, min, max)),
-                _ => Err(e),
-            };
-        }
-    };
-    check_count(param, value, min, max)
-}
-
-/// Checks `min <= value <= max` for a whole-number parameter.
-pub(crate) fn check_count(param: &str, value: i64, min: i64, max: i64) -> Result<i64, RecipeError> {
-    if (min..=max).contains(&value) {
-        Ok(value)
-    } else {
-        Err(out_of_range(param, value as f64, min, max))
-    }
-}
-
-fn out_of_range(param: &str, value: f64, min: i64, max: i64) -> RecipeError {
-    RecipeError::OutOfRange {
-        param: param.to_string(),
-        value,
-        min: min as f64,
-        max: max as f64,
     }
 }
 

@@ -28,7 +28,7 @@
 //! figure is not an energy of this body at all.
 
 use super::{RecipeInfo, RecipeOutput};
-use crate::args::{in_range, positive, within_limit, ArgSpec, Args};
+use crate::args::{finite, in_range, positive, within_limit, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::pyfmt::{fixed, CsvText};
 
@@ -177,11 +177,7 @@ impl PendulumParams {
         positive(FLAG_MASS.name, self.mass_kg)?;
         positive(FLAG_RADIUS.name, self.radius_m)?;
         in_range(FLAG_DAMPING.name, self.damping, 0.0, f64::INFINITY)?;
-        if !self.angle_deg.is_finite() {
-            return Err(RecipeError::NotFinite {
-                param: FLAG_ANGLE.name.to_string(),
-            });
-        }
+        finite(FLAG_ANGLE.name, self.angle_deg)?;
         Ok(())
     }
 

@@ -8,7 +8,7 @@
 //! ```
 //!
 //! `round(k*dt, 4)` is Python's: round half to even on the exact binary value, which Rust's
-//! `{:.4}` formatting also does (see [`py_round`]).
+//! `{:.4}` formatting also does (see [`crate::pyfmt::py_round`]).
 //!
 //! Decisions where the Python recipe is silent or crashes:
 //! - `steps` must be a whole number in `[0, MAX_STEPS]` (a negative count gives an empty table
@@ -18,12 +18,10 @@
 //! - the gains may be any finite numbers. An unstable loop grows until it overflows to `inf` and
 //!   then `nan`, and the table shows that exactly as Python prints it.
 
-use super::ik_workspace::finite;
-use super::manip_grid::{check_count, parse_count};
 use super::{RecipeInfo, RecipeOutput};
-use crate::args::{in_range, ArgSpec, Args};
+use crate::args::{check_count, finite, in_range, parse_count, ArgSpec, Args};
 use crate::error::RecipeError;
-use crate::pyfmt::{fixed, CsvText};
+use crate::pyfmt::{fixed, py_round, CsvText};
 
 /// Controller and plant sample period, s (fixed in the recipe).
 pub const DT_S: f64 = 0.05;
@@ -74,23 +72,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     flags: &[],
     writes: &[FILE_NAME],
 };
-
-/// Python's `round(x, ndigits)` for a float: the exact binary value rounded half to even to
-/// `ndigits` decimals, read back as the nearest double. Rust's fixed-precision formatting is
-/// exact and rounds half to even, so formatting and parsing back is Python's algorithm.
-///
-/// ```
-/// use bsv_playground::recipes::pid_step::py_round;
-/// assert_eq!(py_round(7.0 * 0.05, 4), 0.35); // 0.35000000000000003
-/// assert_eq!(py_round(0.125, 2), 0.12); // an exact tie goes to even
-/// assert_eq!(py_round(2.675, 2), 2.67); // 2.67499999...
-/// ```
-pub fn py_round(x: f64, ndigits: usize) -> f64 {
-    if !x.is_finite() {
-        return x;
-    }
-    format!("{x:.ndigits$}").parse().unwrap_or(x)
-}
 
 /// Controller gains, plant time constant and run length (the recipe's defaults: 1.2, 0.4, 0.05,
 /// 0.8 s, 80 steps).

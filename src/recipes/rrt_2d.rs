@@ -19,7 +19,7 @@
 //! run drives the same handle to the end, so a stepped tree equals the batch tree.
 
 use super::{CsvFile, RecipeInfo, RecipeOutput};
-use crate::args::{in_range, ArgSpec, Args};
+use crate::args::{finite, in_range, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::pyfmt::{fixed, Cell, CsvText};
 use crate::rng::{check_seed, parse_seed, NumpyRng};
@@ -141,11 +141,7 @@ impl RrtParams {
             });
         }
         for (param, value) in [("goal-x", self.goal[0]), ("goal-y", self.goal[1])] {
-            if !value.is_finite() {
-                return Err(RecipeError::NotFinite {
-                    param: param.to_string(),
-                });
-            }
+            finite(param, value)?;
             in_range(param, value, 0.0, 1.0)?;
         }
         Ok(())

@@ -23,7 +23,7 @@
 use nalgebra::{Matrix3, Matrix4, SMatrix, Vector3};
 
 use super::{RecipeInfo, RecipeOutput};
-use crate::args::{ArgSpec, Args};
+use crate::args::{finite, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy::matmul;
 use crate::pyfmt::{fixed, CsvText};
@@ -241,11 +241,7 @@ impl Se3Params {
     pub fn validate(&self) -> Result<(), RecipeError> {
         let values = self.a.to_array().into_iter().chain(self.b.to_array());
         for (value, spec) in values.zip(&ARGS) {
-            if !value.is_finite() {
-                return Err(RecipeError::NotFinite {
-                    param: spec.name.to_string(),
-                });
-            }
+            finite(spec.name, value)?;
         }
         Ok(())
     }

@@ -27,7 +27,7 @@ use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 
 use super::{CsvFile, RecipeInfo, RecipeOutput};
-use crate::args::{positive, within_limit, ArgSpec, Args};
+use crate::args::{finite, positive, within_limit, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy::{arange, arange_len};
 use crate::pyfmt::{push_fixed, py_float, CsvText};
@@ -314,11 +314,7 @@ fn interp_at(x: f64, bracket: Bracket, xp: &[f64], fp: &[f64]) -> f64 {
 /// outputs of more than [`MAX_OUTPUT_CELLS`] cells.
 pub fn resample(traj: &Trajectory, dt: f64) -> Result<Resampled, RecipeError> {
     positive(ARGS[1].name, dt)?;
-    if !dt.is_finite() {
-        return Err(RecipeError::NotFinite {
-            param: ARGS[1].name.to_string(),
-        });
-    }
+    finite(ARGS[1].name, dt)?;
     traj.validate()?;
     let (start, stop) = match (traj.t.first(), traj.t.last()) {
         (Some(a), Some(b)) => (*a, *b + END_PAD_S),

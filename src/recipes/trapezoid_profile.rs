@@ -25,12 +25,10 @@
 //!   `d_acc` finite (Python raises OverflowError on `t_acc ** 2`). Signs are dropped as in the
 //!   recipe (`abs()`), so the range applies to the magnitude.
 
-use super::ik_workspace::finite;
-use super::pid_step::py_round;
 use super::{RecipeInfo, RecipeOutput};
-use crate::args::{positive, ArgSpec, Args};
+use crate::args::{finite, positive, ArgSpec, Args};
 use crate::error::RecipeError;
-use crate::pyfmt::{fixed, CsvText};
+use crate::pyfmt::{fixed, py_round, CsvText};
 
 /// Smallest accepted `|vmax|`, `|amax|` (non-zero).
 pub const MAGNITUDE_MIN: f64 = 1e-9;
@@ -99,13 +97,6 @@ impl Default for TrapParams {
     }
 }
 
-/// Python's `x ** y` for floats: C `pow`, here correctly rounded (crate::math), so the
-/// same bits natively and in wasm. glibc's `pow(x, 2)` is off by one ulp in rare cases; those
-/// rows then differ from Python's in the last digit (well inside the 1e-9 parity tolerance).
-pub(crate) fn py_pow(base: f64, exponent: f64) -> f64 {
-    crate::math::pow(base, exponent)
-}
-
 fn magnitude(param: &str, value: f64, min: f64) -> Result<f64, RecipeError> {
     let m = finite(param, value)?.abs();
     if (min..=MAGNITUDE_MAX).contains(&m) {
@@ -150,7 +141,7 @@ impl TrapParams {
         finite("dt", self.dt)?;
         positive("dt", self.dt)?;
         let mut t_acc = vmax / amax;
-        let d_acc = 0.5 * amax * py_pow(t_acc, 2.0);
+        let d_acc = 0.5 * amax * crate::math::pow(t_acc, 2.0);
         let t_flat;
         let triangle = 2.0 * d_acc >= distance;
         if triangle {
@@ -241,7 +232,7 @@ pub fn compute(params: &TrapParams) -> Result<Profile, RecipeError> {
         if t < t_acc {
             a = amax;
             v = amax * t;
-            s = 0.5 * amax * py_pow(t, 2.0);
+            s = 0.5 * amax * crate::math::pow(t, 2.0);
         } else if t < t_acc + t_flat {
             a = 0.0;
             v = vmax;
@@ -250,7 +241,7 @@ pub fn compute(params: &TrapParams) -> Result<Profile, RecipeError> {
             let tau = t - (t_acc + t_flat);
             a = -amax;
             v = vmax - amax * tau;
-            s = d_acc + vmax * t_flat + vmax * tau - 0.5 * amax * py_pow(tau, 2.0);
+            s = d_acc + vmax * t_flat + vmax * tau - 0.5 * amax * crate::math::pow(tau, 2.0);
         }
         samples.push(TrapSample {
             t: py_round(t, 5),

@@ -14,7 +14,7 @@
 //! `default_rng(seed)`, then `Y = 1.3 R(35°) X + (0.4, -0.2) + normal(0, sigma, (n, 2))`.
 
 use super::{CsvFile, RecipeInfo, RecipeOutput};
-use crate::args::{in_range, ArgSpec, Args};
+use crate::args::{finite, in_range, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::pyfmt::{fixed, CsvText};
 use crate::rng::{parse_seed, NumpyRng};
@@ -179,11 +179,7 @@ impl Default for UmeyamaParams {
 impl UmeyamaParams {
     /// Checks `sigma >= 0` (finite), the seed range and `2 <= n <= 100_000`.
     pub fn validate(&self) -> Result<(), RecipeError> {
-        if !self.sigma.is_finite() {
-            return Err(RecipeError::NotFinite {
-                param: "sigma".to_string(),
-            });
-        }
+        finite("sigma", self.sigma)?;
         in_range("sigma", self.sigma, 0.0, f64::INFINITY)?;
         crate::rng::check_seed("seed", self.seed)?;
         if self.n > MAX_POINTS {
