@@ -13,11 +13,13 @@
 //! - [`pages`]: the page table and the pages.
 //! - [`download`]: saving CSV and PNG files from the page.
 //! - [`clipboard`]: copying command lines.
+//! - [`command_line`]: shell quoting for the command lines the pages show.
 //! - [`schedule`]: debounced timers, work after the next paint, the clock.
 
 use wasm_bindgen::prelude::*;
 
 pub mod clipboard;
+pub mod command_line;
 pub mod ctx;
 pub mod dom;
 pub mod download;

@@ -9,6 +9,7 @@ use web_sys::Element;
 
 use crate::args::ArgSpec;
 use crate::recipes::{RecipeInfo, RECIPES};
+use crate::ui::command_line::shell_word;
 use crate::ui::dom::{append, el, el_class, el_i18n, el_text};
 use crate::ui::page::{MountCtx, PageDef, PageHandle};
 use crate::ui::pages;
@@ -202,18 +203,6 @@ fn default_command_args(specs: &[ArgSpec]) -> Vec<String> {
         .take_while(|spec| !spec.default.is_empty())
         .map(|spec| shell_word(spec.default))
         .collect()
-}
-
-/// `text` quoted for a POSIX shell when it holds anything but plain characters.
-fn shell_word(text: &str) -> String {
-    let plain = text
-        .chars()
-        .all(|c| c.is_ascii_alphanumeric() || "-_.,+/:=".contains(c));
-    if plain {
-        text.to_string()
-    } else {
-        format!("'{}'", text.replace('\'', r"'\''"))
-    }
 }
 
 /// A labelled command line: "Command line  `bsv ik-workspace 0.12 0.10 200 10`".

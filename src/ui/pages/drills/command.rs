@@ -9,6 +9,7 @@
 //! are set).
 
 use super::fields::Field;
+use crate::ui::command_line::shell_word;
 
 /// The arguments of one run, as the command line spells them.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -102,20 +103,6 @@ impl RunArgs {
     }
 }
 
-/// `text` as one POSIX shell word: as it is when it holds only plain characters, else in
-/// single quotes (`''` for an empty word).
-pub fn shell_word(text: &str) -> String {
-    let plain = !text.is_empty()
-        && text
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || "-_.,+/:=@%".contains(c));
-    if plain {
-        text.to_string()
-    } else {
-        format!("'{}'", text.replace('\'', r"'\''"))
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::super::fields::fields;
@@ -176,7 +163,6 @@ mod tests {
         assert_eq!(sample.bsv_command(), "bsv traj-resample '' 0.05");
         let file = run_args("traj-resample", &[("csv_path", "my traj.csv")]);
         assert_eq!(file.bsv_command(), "bsv traj-resample 'my traj.csv' 0.02");
-        assert_eq!(shell_word("it's"), r"'it'\''s'");
     }
 
     #[test]
