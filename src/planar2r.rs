@@ -209,18 +209,8 @@ pub fn det(m: &Mat2) -> f64 {
     sign * crate::math::exp(log_det)
 }
 
-/// `J Jᵀ`.
-pub fn j_jt(j: &Mat2) -> Mat2 {
-    let [[a, b], [c, d]] = *j;
-    [
-        [a * a + b * b, a * c + b * d],
-        [c * a + d * b, c * c + d * d],
-    ]
-}
-
-/// `J @ J.T` as numpy's matmul gets it (OpenBLAS `dgemm`: the first product, then the second
-/// fused-multiply-added onto it). Differs from [`j_jt`] only in the last bits; used where the
-/// recipe CSV must match numpy digit for digit.
+/// `J Jᵀ` as numpy's `J @ J.T` gets it (OpenBLAS `dgemm`: the first product, then the second
+/// fused-multiply-added onto it), so the recipe CSV matches numpy digit for digit.
 pub fn j_jt_numpy(j: &Mat2) -> Mat2 {
     let [[a, b], [c, d]] = *j;
     [
@@ -337,7 +327,7 @@ fn dlas2(f: f64, g: f64, h: f64) -> (f64, f64) {
 pub fn ellipse(m: &Mat2) -> Ellipse {
     let (sigma_min, sigma_max) = singular_values(m);
     // Major axis: eigenvector of J Jᵀ for the larger eigenvalue.
-    let [[p, pq], [_, s]] = j_jt(m);
+    let [[p, pq], [_, s]] = j_jt_numpy(m);
     let angle_rad = 0.5 * crate::math::atan2(2.0 * pq, p - s);
     Ellipse {
         sigma_max,

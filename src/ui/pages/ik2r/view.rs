@@ -380,22 +380,16 @@ pub fn draw_foreground(layer: &Layer, xf: &ViewXf, scene: &Scene, scale: f64) {
     ctx.stroke();
 
     // Joints and tip.
-    circle(
-        ctx,
-        base,
-        7.0 * scale,
-        Some(colour::JOINT_FILL),
-        Some(colour::JOINT_EDGE),
-        2.5 * scale,
-    );
-    circle(
-        ctx,
-        elbow,
-        7.0 * scale,
-        Some(colour::JOINT_FILL),
-        Some(colour::JOINT_EDGE),
-        2.5 * scale,
-    );
+    for joint in [base, elbow] {
+        circle(
+            ctx,
+            joint,
+            7.0 * scale,
+            Some(colour::JOINT_FILL),
+            Some(colour::JOINT_EDGE),
+            2.5 * scale,
+        );
+    }
     circle(
         ctx,
         tip,
