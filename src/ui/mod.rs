@@ -11,6 +11,7 @@
 //! - [`shell`]: header, navigation, language switch, projector mode, footer, keys.
 //! - [`overlay`]: the `?` shortcut list.
 //! - [`pages`]: the page table and the pages.
+//! - [`kit`]: widgets shared by pages (the worker for long runs, its progress panel).
 //! - [`download`]: saving CSV and PNG files from the page.
 //! - [`clipboard`]: copying command lines.
 //! - [`command_line`]: shell quoting for the command lines the pages show.
@@ -23,6 +24,7 @@ pub mod command_line;
 pub mod ctx;
 pub mod dom;
 pub mod download;
+pub mod kit;
 pub mod overlay;
 pub mod page;
 pub mod pages;
