@@ -185,7 +185,7 @@ impl PendulumHandle {
         let params = pendulum_energy::PendulumParams::from_args(&raw)?;
         params.validate()?;
         Ok(PendulumHandle {
-            pendulum: pendulum_energy::Pendulum::new(&params),
+            pendulum: pendulum_energy::Pendulum::new(&params)?,
         })
     }
 

@@ -1,11 +1,16 @@
 //! The twelve BSV recipes, one module each: a parameter struct with the recipe's defaults,
 //! validation, a typed run, and the CSV table(s) plus the summary line the Python recipe prints.
 //!
-//! Every recipe is reached the same way from the CLI, from `runRecipe` and from the tests:
-//! [`run`] with the recipe id and command-line style arguments.
+//! Each module states its facts once, in its `INFO` ([`RecipeInfo`]): arguments with kind,
+//! unit, limits and hint ([`ArgSpec`]), the files it writes, its quirks text and its cost
+//! estimate. Each implements [`Kernel`], the one shape of every recipe:
+//! `params` (parse → validate) → `plan` (rows of work, without running) → `run` (with
+//! progress) → CSV. The CLI, `runRecipe`, the pages and the tests reach them all the same way:
+//! [`run`] / [`run_with_progress`] with the recipe id and command-line style arguments.
 
+pub use crate::args::Plan;
 use crate::args::{ArgSpec, Args};
-use crate::error::RecipeError;
+use crate::error::{RecipeError, RecipeWarning};
 
 pub mod cubic_path;
 pub mod dh_fk;
@@ -33,6 +38,148 @@ pub struct RecipeInfo {
     pub flags: &'static [ArgSpec],
     /// The CSV file names it writes.
     pub writes: &'static [&'static str],
+    /// Fluent id (recipes.ftl) of what this port decides where the Python recipe is silent or
+    /// crashes, in a sentence or two for the reader of the page: `recipe-<id>-quirks`.
+    pub quirks_id: &'static str,
+    /// The cost of a run with these arguments, without running it: parse + validate, then
+    /// rows of work (traj-resample reads the attached input's shape, cheaply).
+    pub plan: fn(&Args) -> Result<Plan, RecipeError>,
+    /// Route id of the live page that runs this recipe interactively (`ik-2r`), if any.
+    pub page: Option<&'static str>,
+}
+
+impl RecipeInfo {
+    /// Every argument: the positional ones in order, then the `--flag` options (`true`).
+    pub fn all_args(&self) -> impl Iterator<Item = (&'static ArgSpec, bool)> {
+        let args: &'static [ArgSpec] = self.args;
+        let flags: &'static [ArgSpec] = self.flags;
+        args.iter()
+            .map(|a| (a, false))
+            .chain(flags.iter().map(|a| (a, true)))
+    }
+
+    /// The argument (positional or flag) called `name`, and whether it is a flag.
+    pub fn arg(&self, name: &str) -> Option<(&'static ArgSpec, bool)> {
+        self.all_args().find(|(a, _)| a.name == name)
+    }
+
+    /// Fluent id of the recipe's title (recipes.ftl).
+    pub fn title_id(&self) -> String {
+        format!("recipe-{}-title", self.id)
+    }
+
+    /// Fluent id of the recipe's one-line description (recipes.ftl).
+    pub fn blurb_id(&self) -> String {
+        format!("recipe-{}-blurb", self.id)
+    }
+}
+
+/// Progress of a run: `report(done, total)` rows of work, called at most every ~1 % of
+/// `total` (and once at the end). Counting never changes what a recipe computes.
+pub struct Progress<'a> {
+    report: Option<&'a mut dyn FnMut(u64, u64)>,
+    total: u64,
+    every: u64,
+    next: u64,
+}
+
+impl<'a> Progress<'a> {
+    /// Reports to `report`, `total` rows of work in all.
+    pub fn new(report: &'a mut dyn FnMut(u64, u64), total: u64) -> Progress<'a> {
+        let every = (total / 100).max(1);
+        Progress {
+            report: Some(report),
+            total,
+            every,
+            next: every,
+        }
+    }
+
+    /// Reports nothing (the plain `run`).
+    pub fn silent() -> Progress<'static> {
+        Progress {
+            report: None,
+            total: 0,
+            every: u64::MAX,
+            next: u64::MAX,
+        }
+    }
+
+    /// The total rows of work.
+    pub fn total(&self) -> u64 {
+        self.total
+    }
+
+    /// `done` rows of work are done; reports when another ~1 % has passed.
+    #[inline]
+    pub fn at(&mut self, done: u64) {
+        if done >= self.next {
+            self.next = done.saturating_add(self.every);
+            if let Some(report) = self.report.as_mut() {
+                report(done.min(self.total), self.total);
+            }
+        }
+    }
+
+    /// Row `k` of `n` of phase `phase` (0-based) of `phases` equal phases (e.g. computing the
+    /// rows, then writing their CSV text).
+    #[inline]
+    pub fn phase_at(&mut self, phase: u64, phases: u64, k: u64, n: u64) {
+        if self.report.is_some() && n > 0 && phases > 0 {
+            let share = self.total as f64 / phases as f64;
+            let done = share * phase as f64 + share * (k as f64 / n as f64);
+            self.at(done as u64);
+        }
+    }
+
+    /// The run is over: reports `total` of `total`.
+    pub fn finish(&mut self) {
+        if let Some(report) = self.report.as_mut() {
+            report(self.total, self.total);
+        }
+        self.next = u64::MAX;
+    }
+}
+
+/// The one shape of every recipe: parse and validate the arguments, estimate the work, run
+/// with progress. A module implements it on a unit struct `Entry`; [`RECIPES`] and each
+/// `INFO.plan` are instances of the generic functions below.
+pub trait Kernel {
+    /// The typed, validated arguments.
+    type Params;
+    /// Parses and validates: every argument error a run would give, before any work.
+    fn params(args: &Args) -> Result<Self::Params, RecipeError>;
+    /// Rows of work of a run with `params` (`args` holds attached inputs).
+    fn plan(params: &Self::Params, args: &Args) -> Result<Plan, RecipeError>;
+    /// Runs, reporting rows done to `progress` (total = `plan`'s rows).
+    fn run(
+        params: &Self::Params,
+        args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError>;
+}
+
+/// [`Kernel::params`] then [`Kernel::plan`].
+pub fn plan_of<K: Kernel>(args: &Args) -> Result<Plan, RecipeError> {
+    K::plan(&K::params(args)?, args)
+}
+
+/// A run without progress.
+pub fn run_of<K: Kernel>(args: &Args) -> Result<RecipeOutput, RecipeError> {
+    K::run(&K::params(args)?, args, &mut Progress::silent())
+}
+
+/// A run reporting `progress(done, total)` rows (total from [`Kernel::plan`]).
+pub fn run_progress_of<K: Kernel>(
+    args: &Args,
+    progress: &mut dyn FnMut(u64, u64),
+) -> Result<RecipeOutput, RecipeError> {
+    let params = K::params(args)?;
+    let plan = K::plan(&params, args)?;
+    let mut tracker = Progress::new(progress, plan.rows.max(1));
+    let out = K::run(&params, args, &mut tracker)?;
+    tracker.finish();
+    Ok(out)
 }
 
 /// One CSV file a recipe writes.
@@ -48,6 +195,8 @@ pub struct RecipeOutput {
     pub files: Vec<CsvFile>,
     /// Exactly what the Python recipe prints (lines joined with `\n`, no trailing newline).
     pub summary: String,
+    /// What looks wrong with the result (diverged, unreachable goal...); not in the CSV.
+    pub warnings: Vec<RecipeWarning>,
 }
 
 impl RecipeOutput {
@@ -59,7 +208,14 @@ impl RecipeOutput {
                 text,
             }],
             summary,
+            warnings: Vec::new(),
         }
+    }
+
+    /// The same output with `warnings` added.
+    pub fn with_warnings(mut self, warnings: Vec<RecipeWarning>) -> RecipeOutput {
+        self.warnings.extend(warnings);
+        self
     }
 
     /// The text of the file called `name`, if the run wrote it.
@@ -71,62 +227,75 @@ impl RecipeOutput {
     }
 }
 
-/// A recipe: its description and its entry point.
+/// A recipe: its facts and its entry points (instances of [`run_of`] / [`run_progress_of`]).
 #[derive(Clone, Copy)]
 pub struct Recipe {
     pub info: &'static RecipeInfo,
     pub run: fn(&Args) -> Result<RecipeOutput, RecipeError>,
+    pub run_progress: fn(&Args, &mut dyn FnMut(u64, u64)) -> Result<RecipeOutput, RecipeError>,
 }
 
 /// All recipes, in the order of the BSV page.
 pub const RECIPES: [Recipe; 12] = [
     Recipe {
         info: &pendulum_energy::INFO,
-        run: pendulum_energy::run_args,
+        run: run_of::<pendulum_energy::Entry>,
+        run_progress: run_progress_of::<pendulum_energy::Entry>,
     },
     Recipe {
         info: &ik_workspace::INFO,
-        run: ik_workspace::run_args,
+        run: run_of::<ik_workspace::Entry>,
+        run_progress: run_progress_of::<ik_workspace::Entry>,
     },
     Recipe {
         info: &traj_resample::INFO,
-        run: traj_resample::run_args,
+        run: run_of::<traj_resample::Entry>,
+        run_progress: run_progress_of::<traj_resample::Entry>,
     },
     Recipe {
         info: &dh_fk::INFO,
-        run: dh_fk::run_args,
+        run: run_of::<dh_fk::Entry>,
+        run_progress: run_progress_of::<dh_fk::Entry>,
     },
     Recipe {
         info: &jacobian_2r::INFO,
-        run: jacobian_2r::run_args,
+        run: run_of::<jacobian_2r::Entry>,
+        run_progress: run_progress_of::<jacobian_2r::Entry>,
     },
     Recipe {
         info: &cubic_path::INFO,
-        run: cubic_path::run_args,
+        run: run_of::<cubic_path::Entry>,
+        run_progress: run_progress_of::<cubic_path::Entry>,
     },
     Recipe {
         info: &se3_relative::INFO,
-        run: se3_relative::run_args,
+        run: run_of::<se3_relative::Entry>,
+        run_progress: run_progress_of::<se3_relative::Entry>,
     },
     Recipe {
         info: &rrt_2d::INFO,
-        run: rrt_2d::run_args,
+        run: run_of::<rrt_2d::Entry>,
+        run_progress: run_progress_of::<rrt_2d::Entry>,
     },
     Recipe {
         info: &pid_step::INFO,
-        run: pid_step::run_args,
+        run: run_of::<pid_step::Entry>,
+        run_progress: run_progress_of::<pid_step::Entry>,
     },
     Recipe {
         info: &manip_grid::INFO,
-        run: manip_grid::run_args,
+        run: run_of::<manip_grid::Entry>,
+        run_progress: run_progress_of::<manip_grid::Entry>,
     },
     Recipe {
         info: &trapezoid_profile::INFO,
-        run: trapezoid_profile::run_args,
+        run: run_of::<trapezoid_profile::Entry>,
+        run_progress: run_progress_of::<trapezoid_profile::Entry>,
     },
     Recipe {
         info: &umeyama_2d::INFO,
-        run: umeyama_2d::run_args,
+        run: run_of::<umeyama_2d::Entry>,
+        run_progress: run_progress_of::<umeyama_2d::Entry>,
     },
 ];
 
@@ -179,4 +348,23 @@ pub fn run_with_inputs(
 ) -> Result<RecipeOutput, RecipeError> {
     let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
     (recipe.run)(&parse_args(id, raw)?.with_inputs(inputs))
+}
+
+/// [`run_with_inputs`] reporting `progress(done, total)` rows of work, at most every ~1 %.
+/// The output is bit for bit that of [`run_with_inputs`].
+pub fn run_with_progress(
+    id: &str,
+    raw: &[String],
+    inputs: Vec<(String, String)>,
+    progress: &mut dyn FnMut(u64, u64),
+) -> Result<RecipeOutput, RecipeError> {
+    let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
+    (recipe.run_progress)(&parse_args(id, raw)?.with_inputs(inputs), progress)
+}
+
+/// The cost of running recipe `id` with these arguments and inputs, without running it
+/// (argument errors come out here as they would from a run).
+pub fn plan(id: &str, raw: &[String], inputs: Vec<(String, String)>) -> Result<Plan, RecipeError> {
+    let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
+    (recipe.info.plan)(&parse_args(id, raw)?.with_inputs(inputs))
 }
