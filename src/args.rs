@@ -183,6 +183,19 @@ impl ArgSpec {
             Bound::Incl(v) => Some(format!("at most {}{unit}", human(v))),
             Bound::Excl(v) => Some(format!("less than {}{unit}", human(v))),
         };
+        if let (Bound::Incl(a), Bound::Incl(b)) = (self.min, self.max) {
+            if !matches!(
+                self.kind,
+                ArgKind::Seed | ArgKind::Choice(_) | ArgKind::File
+            ) {
+                let whole = if self.kind == ArgKind::Integer {
+                    "a whole number "
+                } else {
+                    ""
+                };
+                return format!("{whole}from {} to {}{unit}", human(a), human(b));
+            }
+        }
         match (&self.kind, low, high) {
             (ArgKind::Choice(choices), _, _) => format!("one of {}", choices.join(", ")),
             (ArgKind::File, _, _) => "a CSV file".to_string(),

@@ -16,7 +16,8 @@
 /// assert_eq!(human(-0.05), "-0.05");
 /// assert_eq!(human(1000000.0), "1,000,000");
 /// assert_eq!(human(9.223372036854776e18), "9,223,372,036,854,775,807");
-/// assert_eq!(human(1e-300), "1e-300");
+/// assert_eq!(human(1e-300), "1 × 10⁻³⁰⁰");
+/// assert_eq!(human(-1.5e30), "-1.5 × 10³⁰");
 /// ```
 pub fn human(x: f64) -> String {
     if !x.is_finite() {
@@ -31,8 +32,8 @@ pub fn human(x: f64) -> String {
         return format!("{sign}{}", group_digits(&format!("{a:.0}")));
     }
     if !(1e-9..1e21).contains(&a) {
-        // Tiny or huge: plain digits would be unreadable.
-        return py_float(x);
+        // Tiny or huge: plain digits would be unreadable; "1.5 × 10⁻¹²" reads as written.
+        return format!("{sign}{}", power_of_ten(a));
     }
     let text = format!("{a}");
     let (int, frac) = text.split_once('.').unwrap_or((&text, ""));
@@ -42,6 +43,30 @@ pub fn human(x: f64) -> String {
     } else {
         format!("{sign}{int}.{frac}")
     }
+}
+
+/// `a` (positive, finite) as `m × 10ⁿ` with the shortest round-trip mantissa.
+fn power_of_ten(a: f64) -> String {
+    let text = format!("{a:e}");
+    let (mantissa, exp) = text.split_once('e').unwrap_or((&text, "0"));
+    let sup: String = exp
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            '0' => '⁰',
+            '1' => '¹',
+            '2' => '²',
+            '3' => '³',
+            '4' => '⁴',
+            '5' => '⁵',
+            '6' => '⁶',
+            '7' => '⁷',
+            '8' => '⁸',
+            '9' => '⁹',
+            other => other,
+        })
+        .collect();
+    format!("{mantissa} × 10{sup}")
 }
 
 fn group_digits(digits: &str) -> String {

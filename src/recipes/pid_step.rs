@@ -375,11 +375,16 @@ mod tests {
         // Whole numbers in any notation (issue 8): "80.0" and "8e1" are 80 steps.
         for whole in ["80.0", "8e1"] {
             let out = run_strs(INFO.id, &["1.2", "0.4", "0.05", "0.8", whole]).unwrap();
-            assert_eq!(out.summary, "wrote 80 PID samples final_y=0.7967 -> pid_step.csv");
+            assert_eq!(
+                out.summary,
+                "wrote 80 PID samples final_y=0.7967 -> pid_step.csv"
+            );
         }
-        check(&["1", "1", "1", "1", "1e9"], "steps", |e| {
-            matches!(e, E::OutOfRange { max, .. } if *max == 1e6)
-        });
+        check(
+            &["1", "1", "1", "1", "1e9"],
+            "steps",
+            |e| matches!(e, E::OutOfRange { max, .. } if *max == 1e6),
+        );
         check(&["1", "1", "1", "-0.05"], "tau", |e| {
             matches!(e, E::OutOfRange { .. })
         });
