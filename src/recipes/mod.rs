@@ -86,7 +86,7 @@ pub struct Progress<'a> {
 impl<'a> Progress<'a> {
     /// Reports to `report`, `total` rows of work in all.
     pub fn new(report: &'a mut dyn FnMut(u64, u64), total: u64) -> Progress<'a> {
-        let every = (total / 100).max(1);
+        let every = total.div_ceil(100).max(1);
         Progress {
             report: Some(report),
             total,
