@@ -336,19 +336,15 @@ mod tests {
 
     use super::*;
     use crate::recipes::run_strs;
+    use crate::recipes::testkit::{self, assert_defaults_in_one_place};
 
     fn assert_rejects(raw: &[&str], param: &str, check: fn(&RecipeError) -> bool) {
-        let e = run_strs(INFO.id, raw).unwrap_err();
-        assert!(check(&e), "{raw:?}: {e:?}");
-        assert_eq!(e.param(), Some(param), "{raw:?}");
+        testkit::assert_rejects(INFO.id, raw, param, check)
     }
 
     #[test]
     fn defaults_in_one_place() {
-        assert_eq!(
-            params_from_args(&Args::default()).unwrap(),
-            SweepParams::default()
-        );
+        assert_defaults_in_one_place::<Entry>();
     }
 
     #[test]

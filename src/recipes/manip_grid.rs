@@ -276,13 +276,11 @@ mod tests {
 
     use super::*;
     use crate::recipes::run_strs;
+    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
 
     #[test]
     fn defaults_in_one_place() {
-        assert_eq!(
-            params_from_args(&Args::default()).unwrap(),
-            GridParams::default()
-        );
+        assert_defaults_in_one_place::<Entry>();
     }
 
     #[test]
@@ -361,9 +359,9 @@ mod tests {
             (&["0.12", "0.10", "1025"][..], "n"),
             (&["0.12", "0.10", "99999999999999999999999"][..], "n"),
         ] {
-            let e = run_strs(INFO.id, raw).unwrap_err();
-            assert!(matches!(e, RecipeError::OutOfRange { .. }), "{raw:?} {e:?}");
-            assert_eq!(e.param(), Some(param));
+            assert_rejects(INFO.id, raw, param, |e| {
+                matches!(e, RecipeError::OutOfRange { .. })
+            });
         }
         // Whole numbers in any notation are accepted (issue 8); a fraction is not.
         let e = run_strs(INFO.id, &["0.12", "0.10", "24.5"]).unwrap_err();

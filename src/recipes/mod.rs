@@ -322,22 +322,10 @@ pub fn parse_args(id: &str, raw: &[String]) -> Result<Args, RecipeError> {
     Args::parse(raw, recipe.info.args, recipe.info.flags)
 }
 
-/// [`run`] with string slices, for the recipes' unit tests.
 #[cfg(test)]
-pub(crate) fn run_strs(id: &str, raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-    run(id, &strings(raw))
-}
-
-/// [`parse_args`] with string slices, for the recipes' unit tests.
+pub(crate) mod testkit;
 #[cfg(test)]
-pub(crate) fn args_strs(id: &str, raw: &[&str]) -> Result<Args, RecipeError> {
-    parse_args(id, &strings(raw))
-}
-
-#[cfg(test)]
-fn strings(raw: &[&str]) -> Vec<String> {
-    raw.iter().map(|s| s.to_string()).collect()
-}
+pub(crate) use testkit::{args_strs, run_strs};
 
 /// Runs recipe `id` with arguments and input files `(name, text)` that path arguments name
 /// (traj-resample's CSV).

@@ -264,13 +264,11 @@ mod tests {
 
     use super::*;
     use crate::recipes::run_strs;
+    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
 
     #[test]
     fn defaults_in_one_place() {
-        assert_eq!(
-            params_from_args(&Args::default()).unwrap(),
-            PidParams::default()
-        );
+        assert_defaults_in_one_place::<Entry>();
     }
 
     #[test]
@@ -356,9 +354,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            let e = run_strs(INFO.id, raw).unwrap_err();
-            assert!(ok(&e), "{raw:?}: {e:?}");
-            assert_eq!(e.param(), Some(param), "{raw:?}");
+            assert_rejects(INFO.id, raw, param, ok)
         };
         use RecipeError as E;
         check(&["1", "1", "1", "1", "-1"], "steps", |e| {
