@@ -356,3 +356,299 @@ pub fn plan(id: &str, raw: &[String], inputs: Vec<(String, String)>) -> Result<P
     let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
     (recipe.info.plan)(&parse_args(id, raw)?.with_inputs(inputs))
 }
+
+#[cfg(test)]
+mod facts_tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    use super::testkit::strings;
+    use super::*;
+    use crate::args::{ArgKind, Bound};
+    use crate::i18n::{I18n, Lang};
+    use crate::pyfmt::human;
+
+    /// Every hint and quirks id has a message in both languages, and the English hint states
+    /// each finite limit of the argument as a person writes it (the facts and the words agree).
+    #[test]
+    fn hints_and_quirks_exist_and_state_the_limits() {
+        let i18n = I18n::new();
+        for recipe in RECIPES {
+            let info = recipe.info;
+            for lang in Lang::ALL {
+                assert!(
+                    i18n.has_message(lang, info.quirks_id),
+                    "{lang:?} {}",
+                    info.quirks_id
+                );
+            }
+            assert_eq!(info.quirks_id, format!("recipe-{}-quirks", info.id));
+            for (spec, flag) in info.all_args() {
+                assert!(
+                    !spec.hint_id.is_empty(),
+                    "{} {}: no hint",
+                    info.id,
+                    spec.name
+                );
+                for lang in Lang::ALL {
+                    assert!(
+                        i18n.has_message(lang, spec.hint_id),
+                        "{lang:?} {}",
+                        spec.hint_id
+                    );
+                    assert!(i18n.has_message(lang, &spec.label_id(info.id, flag)));
+                }
+                let en = i18n.t(Lang::En, spec.hint_id);
+                let ja = i18n.t(Lang::Ja, spec.hint_id);
+                for bound in [spec.min, spec.max] {
+                    if let Some(v) = bound.value() {
+                        let words = human(v.abs());
+                        assert!(
+                            en.contains(&words),
+                            "{}: {en:?} lacks {words}",
+                            spec.hint_id
+                        );
+                        assert!(
+                            ja.contains(&words),
+                            "{}: {ja:?} lacks {words}",
+                            spec.hint_id
+                        );
+                    }
+                }
+                if let ArgKind::Choice(choices) = spec.kind {
+                    assert!(choices.iter().all(|c| en.contains(c)), "{en}");
+                }
+            }
+        }
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+
+    /// Raw arguments with every argument at its default except `name` = `value`.
+    fn with(info: &RecipeInfo, name: &str, value: &str) -> Vec<String> {
+        let mut raw = Vec::new();
+        let index = info.args.iter().position(|a| a.name == name);
+        for (i, a) in info.args.iter().enumerate() {
+            if Some(i) == index {
+                raw.push(value.to_string());
+                break;
+            }
+            raw.push(a.default.to_string());
+        }
+        if index.is_none() {
+            raw.extend([format!("--{name}"), value.to_string()]);
+        }
+        raw
+    }
+
+    /// A value just outside each finite limit is refused, with the error naming the argument
+    /// first: the limit in the facts is the one the kernel enforces.
+    #[test]
+    fn just_outside_each_limit_is_refused_naming_the_argument() {
+        let mut checked = 0;
+        for recipe in RECIPES {
+            let info = recipe.info;
+            for (spec, _) in info.all_args() {
+                let whole = matches!(spec.kind, ArgKind::Integer | ArgKind::Seed);
+                let below = match spec.min {
+                    Bound::None => None,
+                    Bound::Excl(m) => Some(m),
+                    Bound::Incl(m) if whole => Some(m - 1.0),
+                    Bound::Incl(m) if m == 0.0 => Some(-0.001),
+                    Bound::Incl(m) => Some(m - m.abs() * 0.5),
+                };
+                let above = match spec.max {
+                    Bound::None => None,
+                    Bound::Excl(m) => Some(m),
+                    Bound::Incl(m) if whole && m > 1e18 => Some(1e19),
+                    Bound::Incl(m) if whole => Some(m + 1.0),
+                    Bound::Incl(m) => Some(m + m.abs().max(1.0)),
+                };
+                for value in [below, above].into_iter().flatten() {
+                    let raw = with(info, spec.name, &value.to_string());
+                    let err = run(info.id, &raw).unwrap_err();
+                    assert_eq!(err.param(), Some(spec.name), "{} {raw:?}: {err}", info.id);
+                    assert_eq!(plan(info.id, &raw, Vec::new()), Err(err));
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked >= 40, "{checked}");
+    }
+
+    #[test]
+    fn every_recipe_has_a_plan_and_defaults_run() {
+        for recipe in RECIPES {
+            let info = recipe.info;
+            let plan = (info.plan)(&Args::default()).unwrap();
+            assert!(plan.rows >= 1, "{}: {plan:?}", info.id);
+            assert!(run(info.id, &[]).is_ok(), "{}", info.id);
+        }
+        let rows = |id: &str, raw: &[&str]| plan(id, &strings(raw), Vec::new()).unwrap().rows;
+        assert_eq!(rows("pid-step", &["1", "1", "1", "1", "1e6"]), 1_000_000);
+        assert_eq!(rows("manip-grid", &["0.12", "0.1", "1024"]), 1_048_576);
+        assert_eq!(rows("ik-workspace", &[]), 41 * 41);
+        assert_eq!(rows("cubic-path", &[]), 51);
+        assert_eq!(rows("trapezoid-profile", &[]), 251);
+        assert_eq!(rows("pendulum-energy", &[]), 2500);
+        assert_eq!(rows("rrt-2d", &["7", "50000"]), 5_000_000);
+        assert_eq!(rows("jacobian-2r", &[]), 16);
+        // traj-resample: from the attached input's shape.
+        let text = "t_s,q1,q2\n0,0,0\n0.5,1,1\n2.0,2,2\n".to_string();
+        let inputs = vec![("in.csv".to_string(), text)];
+        let p = plan(
+            "traj-resample",
+            &strings(&["in.csv", "0.01"]),
+            inputs.clone(),
+        );
+        assert_eq!(p, Ok(Plan { rows: 201 }));
+        let out = run_with_inputs(
+            "traj-resample",
+            &strings(&["in.csv", "0.01"]),
+            inputs.clone(),
+        );
+        assert!(out.unwrap().summary.starts_with("resampled 3 -> 201 rows"));
+        let err = plan("traj-resample", &strings(&["in.csv", "1e-7"]), inputs).unwrap_err();
+        assert_eq!(err.params(), vec!["dt", "csv_path"]);
+        let err = plan("traj-resample", &strings(&["other.csv"]), Vec::new()).unwrap_err();
+        assert!(matches!(err, RecipeError::InputMissing { .. }));
+    }
+
+    #[test]
+    fn live_pages_are_in_the_facts() {
+        let pages: Vec<_> = RECIPES
+            .iter()
+            .filter_map(|r| r.info.page.map(|p| (r.info.id, p)))
+            .collect();
+        assert_eq!(
+            pages,
+            [
+                ("ik-workspace", "ik-2r"),
+                ("jacobian-2r", "ik-2r"),
+                ("manip-grid", "ik-2r")
+            ]
+        );
+    }
+
+    #[test]
+    fn warnings_flag_nonsense_and_leave_the_csv_alone() {
+        let warnings = |id: &str, raw: &[&str]| run(id, &strings(raw)).unwrap().warnings;
+        // pid-step: Kp = 1e9 overflows to nan; Kp = -5 runs away to -9,003,857.
+        assert!(matches!(
+            warnings("pid-step", &["1e9"])[..],
+            [RecipeWarning::NotFinite { .. }]
+        ));
+        match &warnings("pid-step", &["-5"])[..] {
+            [RecipeWarning::Diverged { final_value, .. }] => {
+                assert_eq!(final_value.round(), -9_003_857.0)
+            }
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(warnings("pid-step", &[]), vec![]);
+        // rrt-2d: goal inside the box; budget too small.
+        let inside = warnings(
+            "rrt-2d",
+            &["7", "300", "--goal-x", "0.5", "--goal-y", "0.5"],
+        );
+        assert_eq!(
+            inside,
+            vec![RecipeWarning::GoalInObstacle { x: 0.5, y: 0.5 }]
+        );
+        assert_eq!(
+            warnings("rrt-2d", &["7", "5"]),
+            vec![RecipeWarning::GoalNotReached { iterations: 5 }]
+        );
+        assert_eq!(warnings("rrt-2d", &[]), vec![]);
+        // umeyama-2d with two pairs fits any noise exactly.
+        assert_eq!(
+            warnings("umeyama-2d", &["0.02", "3", "2"]),
+            vec![RecipeWarning::FewPoints { n: 2 }]
+        );
+        assert_eq!(warnings("umeyama-2d", &[]), vec![]);
+        assert_eq!(warnings("pendulum-energy", &[]), vec![]);
+        // The CSV is the recipe's either way (the golden runs cover the defaults).
+        let out = run("pid-step", &strings(&["1e9"])).unwrap();
+        assert_eq!(
+            out.summary,
+            "wrote 80 PID samples final_y=nan -> pid_step.csv"
+        );
+        // Every warning has a message with its arguments in both languages.
+        let i18n = I18n::new();
+        let all = [
+            RecipeWarning::Diverged {
+                peak: 9_003_857.0,
+                final_value: -9_003_857.0,
+            },
+            RecipeWarning::NotFinite { step: 12 },
+            RecipeWarning::GoalNotReached { iterations: 800 },
+            RecipeWarning::GoalInObstacle { x: 0.5, y: 0.5 },
+            RecipeWarning::EnergyGrows { percent: 12.5 },
+            RecipeWarning::FewPoints { n: 2 },
+        ];
+        for w in &all {
+            for lang in Lang::ALL {
+                let args: Vec<(&str, crate::i18n::FluentArg)> = w
+                    .message_args()
+                    .into_iter()
+                    .map(|(k, v)| (k, v.into()))
+                    .collect();
+                let text = i18n.t_args(lang, w.message_id(), &args);
+                for (_, v) in w.message_args() {
+                    assert!(
+                        text.contains(&v),
+                        "{lang:?} {}: {v} not in {text}",
+                        w.message_id()
+                    );
+                }
+            }
+            assert!(w.to_string().starts_with("warning: "));
+        }
+        assert_eq!(all[0].message_args()[1].1, "-9,003,857");
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+
+    #[test]
+    fn cross_field_limits_name_every_argument_in_the_hints_terms() {
+        let i18n = I18n::new();
+        // ik-workspace: ±1000 mm at 1 mm is a 2001 × 2001 grid, the limit 1001 × 1001.
+        let err = run("ik-workspace", &strings(&["0.12", "0.1", "1000", "1"])).unwrap_err();
+        assert_eq!(err.params(), vec!["step_mm", "half_mm"]);
+        let en = i18n.recipe_error(Lang::En, &err);
+        assert!(
+            en.contains("2,001 × 2,001") && en.contains("1,001 × 1,001"),
+            "{en}"
+        );
+        assert!(!en.contains("1002001") && !en.contains("1,002,001"), "{en}");
+        let ja = i18n.recipe_error(Lang::Ja, &err);
+        assert!(
+            ja.contains("2,001 × 2,001") && ja.contains("1,001 × 1,001"),
+            "{ja}"
+        );
+        // trapezoid-profile: distance = 1e9 is attributable to distance (and dt).
+        let err = run("trapezoid-profile", &strings(&["1e9"])).unwrap_err();
+        assert!(err.params().contains(&"distance"), "{:?}", err.params());
+        assert!(err.params().contains(&"dt"));
+        let en = i18n.recipe_error(Lang::En, &err);
+        assert!(en.contains("1,000,000") && !en.contains("e+"), "{en}");
+        // pendulum-energy: duration ÷ timestep.
+        let err = run("pendulum-energy", &strings(&["5000"])).unwrap_err();
+        assert_eq!(err.params(), vec!["duration_s", "timestep"]);
+        // Human numbers, labels passed by the page.
+        let err = run("pid-step", &strings(&["1", "1", "1", "-1"])).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "tau: must be between 0 and 1,000,000 (it is -1)"
+        );
+        let args = err.message_args_labelled(&|_| "Plant time constant τ (s)".to_string());
+        assert!(args.contains(&("label", "Plant time constant τ (s)".to_string())));
+        let err = run("ik-workspace", &strings(&["0.0000001"])).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "L1: must be between 0.000001 and 10 (it is 0.0000001)"
+        );
+        let err = run("umeyama-2d", &strings(&["-1"])).unwrap_err();
+        assert_eq!(err.to_string(), "sigma: must be at least 0 (it is -1)");
+        assert_eq!(err.message_id(), "err-too-small");
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+}
