@@ -203,7 +203,7 @@ impl ArgSpec {
             (ArgKind::Seed, _, _) => "a whole number from 0 to 9,223,372,036,854,775,807".into(),
             (_, Some(l), Some(h)) => format!("{l} and {h}"),
             (_, Some(l), None) => format!("{l}, no upper limit"),
-            (_, None, Some(h)) => format!("{h}"),
+            (_, None, Some(h)) => h,
             (_, None, None) => "any number".to_string(),
         }
     }
@@ -373,7 +373,7 @@ pub fn parse_i64(param: &str, text: &str) -> Result<i64, RecipeError> {
     match cleaned.parse::<f64>() {
         Ok(v) if v.is_finite() && (v.fract() == 0.0 || integral_digits) => {
             // 2^63 is the first f64 beyond i64::MAX.
-            if v >= -9_223_372_036_854_775_808.0 && v < 9_223_372_036_854_775_808.0 {
+            if (-9_223_372_036_854_775_808.0..9_223_372_036_854_775_808.0).contains(&v) {
                 Ok(v as i64)
             } else {
                 Err(out_of_range(param, v, i64::MIN, i64::MAX))

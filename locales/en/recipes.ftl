@@ -85,7 +85,7 @@ recipe-pid-step-arg-steps = Number of steps (0.05 s each)
 
 ## manip-grid
 recipe-manip-grid-title = Planar 2R manipulability grid
-recipe-manip-grid-blurb = Sample |det J| over a joint grid. Pairs with the Planar 2R IK playground.
+recipe-manip-grid-blurb = Sample |det J| over a joint grid.
 recipe-manip-grid-arg-L1 = Link 1 length L1 (m)
 recipe-manip-grid-arg-L2 = Link 2 length L2 (m)
 recipe-manip-grid-arg-n = Grid size n (n × n joint configurations)

@@ -85,7 +85,7 @@ recipe-pid-step-arg-steps = ステップ数（1 ステップ 0.05 秒）
 
 ## manip-grid
 recipe-manip-grid-title = 平面 2R の可操作度グリッド
-recipe-manip-grid-blurb = 関節空間の格子上で |det J| をサンプリングします。平面 2 リンク IK プレイグラウンドと合わせて使えます。
+recipe-manip-grid-blurb = 関節空間の格子上で |det J| をサンプリングします。
 recipe-manip-grid-arg-L1 = リンク 1 の長さ L1（m）
 recipe-manip-grid-arg-L2 = リンク 2 の長さ L2（m）
 recipe-manip-grid-arg-n = 格子の大きさ n（n × n 通りの関節角）

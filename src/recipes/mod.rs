@@ -227,12 +227,15 @@ impl RecipeOutput {
     }
 }
 
+/// A run reporting `progress(done, total)` rows of work.
+pub type RunWithProgress = fn(&Args, &mut dyn FnMut(u64, u64)) -> Result<RecipeOutput, RecipeError>;
+
 /// A recipe: its facts and its entry points (instances of [`run_of`] / [`run_progress_of`]).
 #[derive(Clone, Copy)]
 pub struct Recipe {
     pub info: &'static RecipeInfo,
     pub run: fn(&Args) -> Result<RecipeOutput, RecipeError>,
-    pub run_progress: fn(&Args, &mut dyn FnMut(u64, u64)) -> Result<RecipeOutput, RecipeError>,
+    pub run_progress: RunWithProgress,
 }
 
 /// All recipes, in the order of the BSV page.
@@ -454,7 +457,7 @@ mod facts_tests {
                     Bound::None => None,
                     Bound::Excl(m) => Some(m),
                     Bound::Incl(m) if whole => Some(m - 1.0),
-                    Bound::Incl(m) if m == 0.0 => Some(-0.001),
+                    Bound::Incl(0.0) => Some(-0.001),
                     Bound::Incl(m) => Some(m - m.abs() * 0.5),
                 };
                 let above = match spec.max {
