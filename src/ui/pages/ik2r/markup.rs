@@ -1,12 +1,10 @@
-//! The page's HTML skeleton and its stylesheet. Every visible word is a `data-i18n` id that the
+//! The page's HTML skeleton (its stylesheet, `style.css` beside this file, is bundled into
+//! `www/app.css` by `scripts/build-dist.sh`). Every visible word is a `data-i18n` id that the
 //! shell (and `dom::relocalize`) fills from `locales/*/ik2r.ftl`; elements the code drives carry
 //! `data-ik2r="<role>"`, and the ones tests drive carry `data-testid` / `data-readout` /
 //! `data-download`.
 
 use super::{downloads, explain, form, plots};
-
-/// The page's own styles (scoped under `.ik2r`).
-pub const STYLE: &str = include_str!("style.css");
 
 fn readout_row(label: &str, rows: &[(&str, &str)]) -> String {
     let mut html = format!("<div class=\"ik2r-ro\"><dt data-i18n=\"{label}\"></dt><dd>");
@@ -94,7 +92,8 @@ fn plot_legend() -> String {
     let mut html = String::from("<ul class=\"ik2r-legend\">");
     for (id, colour) in plots::LEGEND {
         html.push_str(&format!(
-            "<li><span class=\"ik2r-swatch\" style=\"background:{colour}\"></span>\
+            "<li><svg class=\"ik2r-swatch\" viewBox=\"0 0 18 4\" aria-hidden=\"true\">\
+             <rect width=\"18\" height=\"4\" rx=\"2\" fill=\"{colour}\"/></svg>\
              <span data-i18n=\"{id}\"></span></li>"
         ));
     }
@@ -105,8 +104,7 @@ fn plot_legend() -> String {
 /// The whole page.
 pub fn page() -> String {
     format!(
-        "<style>{style}</style>\
-<div class=\"ik2r\" data-testid=\"ik-2r-page\">\
+        "<div class=\"ik2r\" data-testid=\"ik-2r-page\">\
 <header class=\"ik2r-head\"><h1 data-i18n=\"ik2r-title\"></h1><p class=\"ik2r-lede\" data-i18n=\"ik2r-lede\"></p>\
 <p class=\"ik2r-notice\" data-ik2r=\"url-notice\" data-testid=\"ik-2r-url-notice\" role=\"status\" hidden></p></header>\
 <div class=\"ik2r-top\">\
@@ -157,7 +155,6 @@ data-i18n-attr=\"aria-label=ik2r-plot-label\"></canvas></div>{legend}</section>\
 {downloads}\
 {explain}\
 </div>",
-        style = STYLE,
         readouts = readouts(),
         legend = plot_legend(),
         form = form::markup(),

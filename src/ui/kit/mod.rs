@@ -1,0 +1,14 @@
+//! The page kit: what every page is built from. Each widget owns its elements, state and
+//! listeners; pure parts (codecs, state machines, view models) live in [`crate::view`].
+//!
+//! - [`scope`]: listeners, timers, the frame loop and observers of a page, removed on drop.
+//! - [`url_state`]: a page's state in the URL (read, debounced write, notice of ignored keys).
+//! - [`keymap`]: the app's one keymap and the focus rule for page keys.
+//! - [`stepper`]: step / back / play / scrub toolbar over a page's model.
+//! - [`png`]: PNG export of any canvas.
+
+pub mod keymap;
+pub mod png;
+pub mod scope;
+pub mod stepper;
+pub mod url_state;
