@@ -467,8 +467,17 @@ mod facts_tests {
                     Bound::Incl(m) if whole => Some(m + 1.0),
                     Bound::Incl(m) => Some(m + m.abs().max(1.0)),
                 };
+                assert!(
+                    spec.kind == ArgKind::File || spec.check_text(spec.default).is_ok(),
+                    "{} {}: default refused by its own facts",
+                    info.id,
+                    spec.name
+                );
                 for value in [below, above].into_iter().flatten() {
                     let raw = with(info, spec.name, &value.to_string());
+                    // The field alone is refused, as the run refuses it.
+                    let field = spec.check_text(&value.to_string()).unwrap_err();
+                    assert_eq!(field.param(), Some(spec.name));
                     let err = run(info.id, &raw).unwrap_err();
                     assert_eq!(err.param(), Some(spec.name), "{} {raw:?}: {err}", info.id);
                     assert_eq!(plan(info.id, &raw, Vec::new()), Err(err));
