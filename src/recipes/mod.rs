@@ -578,6 +578,15 @@ mod facts_tests {
         );
         assert_eq!(warnings("umeyama-2d", &[]), vec![]);
         assert_eq!(warnings("pendulum-energy", &[]), vec![]);
+        // A 0.05 s Euler step without damping gains ~15 % energy: the step is too large.
+        match &warnings(
+            "pendulum-energy",
+            &["5", "--timestep", "0.05", "--damping", "0"],
+        )[..]
+        {
+            [RecipeWarning::EnergyGrows { percent }] => assert!((15.0..16.0).contains(percent)),
+            other => panic!("{other:?}"),
+        }
         // The CSV is the recipe's either way (the golden runs cover the defaults).
         let out = run("pid-step", &strings(&["1e9"])).unwrap();
         assert_eq!(
