@@ -12,6 +12,7 @@
 //! - [`error`]: the one error type every kernel returns.
 //! - [`i18n`]: Fluent bundles embedded from `locales/`.
 //! - [`api`]: the `#[wasm_bindgen]` surface for the kernels.
+//! - [`view`]: pure view models of the pages (URL state, hit tests, scales), tested natively.
 //! - `ui` (wasm32 only): the pages.
 
 pub mod api;
@@ -25,6 +26,7 @@ pub mod planar2r;
 pub mod pyfmt;
 pub mod recipes;
 pub mod rng;
+pub mod view;
 
 #[cfg(target_arch = "wasm32")]
 pub mod ui;

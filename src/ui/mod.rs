@@ -23,6 +23,7 @@ pub mod command_line;
 pub mod ctx;
 pub mod dom;
 pub mod download;
+pub mod kit;
 pub mod overlay;
 pub mod page;
 pub mod pages;
