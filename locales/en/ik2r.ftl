@@ -39,6 +39,12 @@ ik2r-unit-m2 = m²
 ik2r-unit-m-per-rad = m/rad
 ik2r-unit-cells = cells
 ik2r-unit-points = points
+ik2r-strip-q1 = q1
+ik2r-strip-q2 = q2
+ik2r-strip-x = x
+ik2r-strip-y = y
+ik2r-strip-w = w
+ik2r-live-summary = Arm at q1 { $q1 }°, q2 { $q2 }°; tip at x { $x } mm, y { $y } mm; manipulability { $w } m².
 
 ## Heatmap
 ik2r-heatmap-title = Manipulability over joint space
@@ -61,7 +67,6 @@ ik2r-plot-det = det J
 ik2r-plot-w = w
 ik2r-plot-smin = σ_min
 ik2r-plot-smax = σ_max
-ik2r-plot-now = current q1
 
 ## Parameters
 ik2r-params-title = Parameters
@@ -88,6 +93,7 @@ ik2r-field-res = Heatmap resolution
 ik2r-hint-res = Cells per axis, 64 to 1024. Default 256. Only changes the picture.
 ik2r-field-n = manip-grid n
 ik2r-hint-n = Grid points per axis in manip_ellipse.csv (n² rows), 1 to 1024. Recipe default 24.
+ik2r-field-involved = This value is part of the same limit as { $field }.
 
 ## Downloads
 ik2r-downloads-title = Downloads
@@ -103,6 +109,7 @@ ik2r-copy = Copy
 ik2r-copied = Command copied to the clipboard.
 ik2r-copy-failed = This browser blocked copying: select the command and press Ctrl+C (⌘C on a Mac).
 ik2r-dl-failed = The file could not be made: { $error }
+ik2r-dl-missing-file = the { $recipe } recipe wrote no file named { $file }.
 
 ## Shortcuts (the ? overlay)
 ik2r-key-nudge = Move the tip 1 mm (with Shift: 10 mm)

@@ -206,7 +206,7 @@ mod tests {
         let lut = viridis();
         // 2 × 3 grid: x node 1, y node 2 is the maximum, everything else 0.
         let mut v = vec![0.0f32; 6];
-        v[1 * 3 + 2] = 1.0;
+        v[3 + 2] = 1.0; // i = 1, j = 2: i * ny + j
         let rgba = fill_rgba(&v, 2, 3, (0.0, 1.0), &lut);
         assert_eq!(rgba.len(), 24);
         // Top row (y node 2), second pixel (x node 1): yellow; alpha opaque everywhere.

@@ -82,6 +82,9 @@ struct Inner<H> {
     overlay: RefCell<Vec<HtmlElement>>,
 }
 
+/// A stage listener's body.
+type Handler<H> = Box<dyn Fn(&Inner<H>, &PointerEvent)>;
+
 /// Pointer drags on one stage; listeners and overlay elements go away on drop.
 pub struct Drag<H: Copy + PartialEq + 'static> {
     inner: Rc<Inner<H>>,
@@ -126,7 +129,7 @@ impl<H: Copy + PartialEq + 'static> Drag<H> {
         let hit = Rc::new(hit);
         let on = Rc::new(on);
         let mut listeners = Vec::new();
-        let pointer = |f: Box<dyn Fn(&Inner<H>, &PointerEvent)>| {
+        let pointer = |f: Handler<H>| {
             let inner = inner.clone();
             move |e: Event| {
                 if let Some(pe) = e.dyn_ref::<PointerEvent>() {

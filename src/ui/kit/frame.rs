@@ -11,11 +11,14 @@ use std::rc::{Rc, Weak};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
+/// The `requestAnimationFrame` callback.
+type FrameCallback = Closure<dyn FnMut(f64)>;
+
 struct Shared {
     dirty: Cell<u32>,
     raf_id: Cell<Option<i32>>,
     animating: Cell<bool>,
-    callback: RefCell<Option<Closure<dyn FnMut(f64)>>>,
+    callback: RefCell<Option<FrameCallback>>,
 }
 
 impl Shared {
