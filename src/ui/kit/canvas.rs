@@ -268,3 +268,15 @@ pub fn dash(a: f64, b: f64) -> JsValue {
 pub fn solid() -> JsValue {
     js_sys::Array::new().into()
 }
+
+/// Focuses `element` (a canvas taking the page's keys) without scrolling the page: a press
+/// that gives the canvas focus must not move it under the pointer.
+pub fn focus_without_scroll(element: &Element) {
+    let options = js_sys::Object::new();
+    let _ = js_sys::Reflect::set(&options, &"preventScroll".into(), &JsValue::TRUE);
+    if let Ok(f) = js_sys::Reflect::get(element, &"focus".into())
+        .and_then(|f| f.dyn_into::<js_sys::Function>())
+    {
+        let _ = f.call1(element, &options);
+    }
+}

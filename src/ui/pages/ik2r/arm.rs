@@ -26,8 +26,8 @@ use super::{role, Page};
 use crate::planar2r::{Elbow, PoseReport};
 use crate::recipes::ik_workspace::{Workspace, WorkspaceParams};
 use crate::ui::ctx::{self, t_strings};
-use crate::ui::dom::{self, show, Listener};
-use crate::ui::kit::canvas::{dash, solid, Ink, LayeredCanvas};
+use crate::ui::dom::{show, Listener};
+use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink, LayeredCanvas};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::view::heatmap::{viridis, Rgb};
 use crate::view::ik2r::{
@@ -137,7 +137,8 @@ impl ArmView {
             move |ev: DragEvent<Grab>| {
                 if let Some(page) = w_on.upgrade() {
                     if matches!(ev, DragEvent::Start { .. }) {
-                        dom::focus(&page.arm.borrow().top);
+                        let top: Element = page.arm.borrow().top.clone().into();
+                        focus_without_scroll(&top);
                     }
                     page.on_arm(ev);
                 }
