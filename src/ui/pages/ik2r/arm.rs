@@ -183,8 +183,9 @@ impl ArmView {
         self.drag.as_ref().is_some_and(|d| d.active().is_some())
     }
 
-    pub fn pinned(&self) -> bool {
-        self.pinned_pointer.is_some()
+    /// Whether the out-of-reach note is up (a drag or a key move is pinned to the reach).
+    pub fn clamp_shown(&self) -> bool {
+        self.clamp_shown
     }
 
     /// The pointer left the reach (`Some`, world m) or came back; shows the note.

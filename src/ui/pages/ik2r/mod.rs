@@ -238,7 +238,7 @@ impl Page {
         let pinned = {
             let arm = self.arm.borrow();
             arm.draw_frame(&st, &report, ghost, ink);
-            arm.pinned()
+            arm.clamp_shown()
         };
         self.readouts.borrow_mut().update(&report, pinned);
         self.heat.borrow().draw_marker(&st, ghost, ink);
