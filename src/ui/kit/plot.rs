@@ -280,15 +280,18 @@ impl Plot {
                 rest = lower;
             }
         }
-        let x_step = nice_step(spec.x.range.0, spec.x.range.1, 6);
+        // Label decimals from a finer step than plotters' ticks, so no two ticks read alike.
+        let x_step = nice_step(spec.x.range.0, spec.x.range.1, 12);
+        let legend_row = (ink.text_px(12.0) * 1.5 * dpr).round() as i32;
         let x_desc = spec.x.desc();
         self.areas.clear();
         for (i, (area, panel)) in panels.iter().zip(&spec.panels).enumerate() {
             let bottom = i + 1 == spec.panels.len();
             let y = panel.y.range;
-            let y_step = nice_step(y.0, y.1, 5);
+            let y_step = nice_step(y.0, y.1, 10);
             let mut chart = ChartBuilder::on(area)
                 .margin(margin)
+                .margin_top(margin + legend_row)
                 .x_label_area_size(if bottom { x_label } else { 0 })
                 .y_label_area_size(y_label)
                 .build_cartesian_2d(spec.x.range.0..spec.x.range.1, y.0..y.1)
@@ -328,36 +331,33 @@ impl Plot {
                 y1: f64::from(yr.end) / dpr,
             });
         }
-        // Legends: top right inside each panel.
+        // Legends: one row above each panel's plotting area, right-aligned, so they never
+        // cover the data.
         let ctx = &layer.ctx;
         let _ = ctx.set_transform(dpr, 0.0, 0.0, dpr, 0.0, 0.0);
         ctx.set_font(&ink.font(12.0, false));
         ctx.set_text_baseline("middle");
         ctx.set_text_align("left");
+        let swatch = 18.0 * ink.line;
+        let gap = 14.0 * ink.text;
         for (area, panel) in self.areas.iter().zip(&spec.panels) {
-            let row = ink.text_px(12.0) * 1.35;
-            let swatch = 18.0 * ink.line;
-            let widest = panel
-                .series
-                .iter()
-                .filter_map(|s| ctx.measure_text(&s.name).ok().map(|m| m.width()))
-                .fold(0.0, f64::max);
-            let box_w = swatch + 8.0 + widest + 12.0;
-            let box_h = row * panel.series.len() as f64 + 6.0;
-            let (bx, by) = (area.x1 - box_w - 6.0, area.y0 + 6.0);
-            ctx.set_fill_style_str("rgba(255, 255, 255, 0.85)");
-            ctx.fill_rect(bx, by, box_w, box_h);
-            for (i, s) in panel.series.iter().enumerate() {
-                let cy = by + 3.0 + row * (i as f64 + 0.5);
+            let cy = area.y0 - f64::from(legend_row) / dpr / 2.0 - 1.0;
+            let mut x = area.x1;
+            // Right to left, so the last series ends at the right edge.
+            for s in panel.series.iter().rev() {
+                let w = ctx.measure_text(&s.name).map_or(40.0, |m| m.width());
+                x -= w;
+                ctx.set_fill_style_str("#3a4250");
+                let _ = ctx.fill_text(&s.name, x, cy);
+                x -= swatch + 6.0;
                 let (r, g, b) = s.rgb;
                 ctx.set_stroke_style_str(&format!("rgb({r},{g},{b})"));
                 ctx.set_line_width(3.0 * ink.line);
                 ctx.begin_path();
-                ctx.move_to(bx + 6.0, cy);
-                ctx.line_to(bx + 6.0 + swatch, cy);
+                ctx.move_to(x, cy);
+                ctx.line_to(x + swatch, cy);
                 ctx.stroke();
-                ctx.set_fill_style_str("#3a4250");
-                let _ = ctx.fill_text(&s.name, bx + 6.0 + swatch + 6.0, cy);
+                x -= gap;
             }
         }
         Ok(())

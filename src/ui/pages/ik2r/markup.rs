@@ -126,12 +126,12 @@ pub fn page() -> String {
 <option value=\"err\" data-i18n=\"ik2r-ws-color-err\"></option></select></label>\
 <button type=\"button\" class=\"ik2r-btn\" data-ik2r=\"reset\" data-i18n=\"ik2r-reset\"></button>\
 </div>\
-<div class=\"ik2r-stage ik2r-stage-arm\" data-ik2r=\"arm-stage\">\
+{strip}<div class=\"ik2r-stage ik2r-stage-arm\" data-ik2r=\"arm-stage\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"arm-bg\" aria-hidden=\"true\"></canvas>\
 <canvas class=\"ik2r-layer ik2r-interactive\" data-ik2r=\"arm-fg\" data-testid=\"ik-2r-canvas\" role=\"img\" tabindex=\"0\" \
 data-i18n-attr=\"aria-label=ik2r-canvas-label\"></canvas>\
 <p class=\"ik2r-clamp\" data-ik2r=\"clamp-note\" data-testid=\"ik-2r-clamp-note\" role=\"status\" data-i18n=\"ik2r-clamped\" hidden></p>\
-{strip}</div>\
+</div>\
 <p class=\"ik2r-sr-only\" data-ik2r=\"live\" data-testid=\"ik-2r-live\" role=\"status\" aria-live=\"polite\"></p>\
 <p class=\"ik2r-hint\" data-i18n=\"ik2r-drag-hint\"></p>\
 <p class=\"ik2r-hint\" data-ik2r=\"view-notes\"></p>\
