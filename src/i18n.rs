@@ -93,6 +93,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         "drills.ftl",
         include_str!("../locales/en/drills.ftl"),
     ),
+    (Lang::En, "kit.ftl", include_str!("../locales/en/kit.ftl")),
     (
         Lang::Ja,
         "shell.ftl",
@@ -115,6 +116,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         "drills.ftl",
         include_str!("../locales/ja/drills.ftl"),
     ),
+    (Lang::Ja, "kit.ftl", include_str!("../locales/ja/kit.ftl")),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as
@@ -550,6 +552,8 @@ mod tests {
                 param: p(),
                 count: 4_000_000,
                 limit: 1_000_000,
+                also: vec![],
+                square: false,
             },
             WrongCount {
                 param: "angles".into(),

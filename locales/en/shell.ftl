@@ -4,6 +4,8 @@
 app-name = BSV Playground
 app-subtitle = Robotics drills that run in your browser
 
+skip-to-content = Skip to content
+
 nav-label = Pages
 nav-home = Home
 

@@ -4,6 +4,8 @@
 app-name = BSV Playground
 app-subtitle = ブラウザで動くロボット工学ドリル
 
+skip-to-content = 本文へ移動
+
 nav-label = ページ
 nav-home = ホーム
 

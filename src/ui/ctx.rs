@@ -77,3 +77,23 @@ fn with_i18n<R>(f: impl FnOnce(&I18n) -> R) -> Option<R> {
     })
     .ok()
 }
+
+/// Smallest type in projector mode, CSS px: every text, canvas labels included, is at least
+/// this big at 1920×1080.
+pub const PROJECTOR_MIN_FONT_PX: f64 = 24.0;
+
+/// The canvas font size for a label of `base_px` CSS px: `base_px` normally, in projector mode
+/// 1.6 × `base_px` but never under [`PROJECTOR_MIN_FONT_PX`] (an 11 px tick label becomes
+/// 24 px, a 16 px title 25.6 px).
+pub fn canvas_font_px(base_px: f64) -> f64 {
+    scaled_font_px(base_px, projector())
+}
+
+/// [`canvas_font_px`] for a given projector state.
+pub fn scaled_font_px(base_px: f64, projector: bool) -> f64 {
+    if projector {
+        (base_px * 1.6).max(PROJECTOR_MIN_FONT_PX)
+    } else {
+        base_px
+    }
+}

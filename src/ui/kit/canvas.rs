@@ -2,7 +2,8 @@
 //! stores are `CSS size × devicePixelRatio` and which are drawn in CSS pixels (the context
 //! transform carries the ratio); a resize watch (ResizeObserver) that tells the page when a
 //! stage changed size; and [`Ink`], the line and type scale of normal and projector mode
-//! (in projector mode no canvas text is smaller than [`PROJECTOR_MIN_TEXT_PX`]).
+//! (text sizes come from `ctx::scaled_font_px`: in projector mode no canvas text is smaller
+//! than `ctx::PROJECTOR_MIN_FONT_PX`, 24 CSS px).
 //!
 //! Typical use: backgrounds (grids, axes, painted images) on layer 0, redrawn only when the
 //! size, the language or the data change; per-frame marks on the top layer.
@@ -193,16 +194,12 @@ impl Drop for ResizeWatch {
     }
 }
 
-/// The smallest canvas text in projector mode, CSS px (readable from the back of a room at
-/// 1920×1080).
-pub const PROJECTOR_MIN_TEXT_PX: f64 = 24.0;
-
 /// Line and type scale for canvas drawing.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ink {
     /// Line widths and marks.
     pub line: f64,
-    /// Text sizes and the room kept for text (label areas, margins).
+    /// The room kept for text (label areas, margins).
     pub text: f64,
     pub projector: bool,
 }
@@ -213,7 +210,8 @@ impl Ink {
         Ink::for_projector(ctx::projector())
     }
 
-    /// 1 normally; in projector mode lines × 1.6 and text × 2.2 (11 px labels become 24 px).
+    /// 1 normally; in projector mode lines × 1.6, text per `ctx::scaled_font_px` (at least
+    /// 24 px) and the room kept for text × 2.2.
     pub fn for_projector(on: bool) -> Ink {
         if on {
             Ink {
@@ -233,12 +231,7 @@ impl Ink {
     /// The CSS px size of text that is `base` px normally (never below the projector
     /// minimum in projector mode).
     pub fn text_px(&self, base: f64) -> f64 {
-        let px = base * self.text;
-        if self.projector {
-            px.max(PROJECTOR_MIN_TEXT_PX)
-        } else {
-            px
-        }
+        ctx::scaled_font_px(base, self.projector)
     }
 
     /// A CSS font string for canvas text of `base` px (see [`Ink::text_px`]).

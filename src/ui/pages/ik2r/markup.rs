@@ -1,13 +1,11 @@
-//! The page's HTML skeleton and its stylesheet. Every visible word is a `data-i18n` id that the
+//! The page's HTML skeleton (its stylesheet, `style.css` beside this file, is bundled into
+//! `www/app.css` by `scripts/build-dist.sh`). Every visible word is a `data-i18n` id that the
 //! shell (and `dom::relocalize`) fills from `locales/*/ik2r.ftl`; elements the code drives carry
 //! `data-ik2r="<role>"`, and the ones tests drive carry `data-testid` / `data-readout` /
 //! `data-download`.
 
 use super::{explain, params, readouts};
 use crate::view::ik2r::{ARM_PNG, EXPORTS};
-
-/// The page's own styles (scoped under `.ik2r`).
-pub const STYLE: &str = include_str!("style.css");
 
 fn readout_row(label: &str, rows: &[(&str, &str)]) -> String {
     let mut html = format!("<div class=\"ik2r-ro\"><dt data-i18n=\"{label}\"></dt><dd>");
@@ -107,8 +105,7 @@ fn strip() -> String {
 /// The whole page.
 pub fn page() -> String {
     format!(
-        "<style>{style}</style>\
-<div class=\"ik2r\" data-testid=\"ik-2r-page\">\
+        "<div class=\"ik2r\" data-testid=\"ik-2r-page\">\
 <header class=\"ik2r-head\"><h1 data-i18n=\"ik2r-title\"></h1><p class=\"ik2r-lede\" data-i18n=\"ik2r-lede\"></p>\
 <p class=\"ik2r-notice\" data-ik2r=\"url-notice\" data-testid=\"ik-2r-url-notice\" role=\"status\" hidden></p></header>\
 <div class=\"ik2r-top\">\
@@ -161,7 +158,6 @@ data-i18n-attr=\"aria-label=ik2r-plot-label\"></canvas>\
 {downloads}\
 {explain}\
 </div>",
-        style = STYLE,
         readouts = readouts(),
         strip = strip(),
         form = params::markup(),
