@@ -420,7 +420,7 @@ test('an invalid L2 is flagged beside the field, the last valid L2 stays, the ar
     await page.locator('[data-field="res"]').fill('64');
     await page.waitForFunction(() => document.querySelector('[data-testid="ik-2r-heatmap"]').dataset.gridN === '64', null, { timeout: 3000 });
     await page.locator('[data-field="res"]').fill('2000');
-    assert.match(await page.locator('[data-field-error="res"]').innerText(), /res must be between 64\.0 and 1024\.0/);
+    assert.match(await page.locator('[data-field-error="res"]').innerText(), /Heatmap resolution must be between 64 and 1,024 \(it is 2,000\)/);
     // Japanese messages for the same mistake.
     await page.locator('[data-testid="lang-switch"]').click();
     await field.fill('abc');

@@ -10,6 +10,7 @@ use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{Element, HtmlInputElement};
 
 use super::{role, Page};
+use crate::error::RecipeError;
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom::Listener;
 use crate::view::ik2r::{check, Field, Params, Refusal};
@@ -170,6 +171,12 @@ fn label_of(field: Field) -> String {
         .map_or_else(|| field.key().to_string(), |m| ctx::t(m.label))
 }
 
+/// A refusal's message, naming the fields by their labels.
+fn error_text(e: &RecipeError) -> String {
+    let label = |name: &str| Field::from_key(name).map_or_else(|| name.to_string(), label_of);
+    t_strings(e.message_id(), &e.message_args_labelled(&label))
+}
+
 impl ParamsForm {
     /// Finds the fields under `root`.
     pub fn find(root: &Element) -> Result<ParamsForm, JsValue> {
@@ -264,7 +271,7 @@ impl ParamsForm {
                 .iter()
                 .find(|(f, r)| f != field && r.involved.contains(field));
             let text = match (own, involved) {
-                (Some((_, r)), _) => Some(ctx::error_text(&r.error)),
+                (Some((_, r)), _) => Some(error_text(&r.error)),
                 (None, Some((by, _))) => Some(t_strings(
                     "ik2r-field-involved",
                     &[("field", label_of(*by))],
