@@ -19,7 +19,6 @@ ik2r-clamped = Out of reach: the tip stops at the nearest point the arm can reac
 ik2r-drag-hint = Drag the orange tip (inverse kinematics), the elbow or link 1 (turns q1 only) or link 2 (turns q2 only). Keys: arrows move the tip, [ ] turn q1, - = turn q2, e flips the elbow, r resets, w shows the grid.
 ik2r-view-notes = Shaded ring: the reachable workspace, { $inner } mm ≤ r ≤ { $outer } mm. Orange ellipse: the tip velocities that unit joint speed can produce, drawn at { $scale }× scale, its axes along the singular directions (solid: σ_max, dashed: σ_min).
 ik2r-ws-summary = Workspace grid { $nx } × { $ny } = { $cells } cells, { $reachable } reachable (elbow-down IK in each cell).
-ik2r-url-ignored = Some values in this link were not valid and were left at their defaults: { $keys }.
 
 ## Readouts
 ik2r-readouts-title = Live numbers

@@ -22,6 +22,7 @@ use crate::recipes::jacobian_2r::{self, SweepParams};
 use crate::recipes::manip_grid::{self, GridParams};
 use crate::view::drag::HandleShape;
 use crate::view::heatmap::GridAxis;
+use crate::view::url::{IgnoredKey, UrlState};
 
 /// The page's own starting values; the recipe parameters' defaults come from the kernels
 /// (`WorkspaceParams::default()`, `SweepParams::default()`, `GridParams::default()`).
@@ -397,6 +398,25 @@ pub fn elbow_of(q2: f64) -> Elbow {
         Elbow::Down
     } else {
         Elbow::Up
+    }
+}
+
+impl UrlState for State {
+    /// [`State::from_query`]: keys of other pages are left alone, values that fail are
+    /// reported as invalid.
+    fn read(query: &[(String, String)]) -> (State, Vec<IgnoredKey>) {
+        let (state, ignored) = State::from_query(query);
+        (
+            state,
+            ignored.into_iter().map(IgnoredKey::invalid).collect(),
+        )
+    }
+
+    fn write(&self) -> Vec<(String, String)> {
+        self.query_pairs()
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), v))
+            .collect()
     }
 }
 
@@ -956,6 +976,10 @@ mod tests {
         assert_eq!(back, st);
         assert!(ignored.is_empty());
         assert!(written.contains(&("q1".to_string(), "0.5123456789012345".to_string())));
+        // The kit's URL contract: read(write(s)) == s, nothing ignored.
+        assert_eq!(<State as UrlState>::read(&st.write()), (st, Vec::new()));
+        let (_, bad) = <State as UrlState>::read(&q(&[("q1", "zz")]));
+        assert_eq!(bad, vec![IgnoredKey::invalid("q1")]);
     }
 
     #[test]

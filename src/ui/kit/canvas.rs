@@ -1,7 +1,7 @@
 //! HiDPI layered canvases: a stage element holding stacked `<canvas>` layers whose backing
 //! stores are `CSS size × devicePixelRatio` and which are drawn in CSS pixels (the context
-//! transform carries the ratio); a resize watch (ResizeObserver) that tells the page when a
-//! stage changed size; and [`Ink`], the line and type scale of normal and projector mode
+//! transform carries the ratio) — resize them from the scope's `observe_resize` — and
+//! [`Ink`], the line and type scale of normal and projector mode
 //! (text sizes come from `ctx::scaled_font_px`: in projector mode no canvas text is smaller
 //! than `ctx::PROJECTOR_MIN_FONT_PX`, 24 CSS px).
 //!
@@ -10,7 +10,7 @@
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
-use web_sys::{CanvasRenderingContext2d, Document, Element, HtmlCanvasElement, ResizeObserver};
+use web_sys::{CanvasRenderingContext2d, Document, Element, HtmlCanvasElement};
 
 use crate::ui::{ctx, dom};
 
@@ -162,35 +162,6 @@ impl LayeredCanvas {
                 .draw_image_with_html_canvas_element(&layer.canvas, 0.0, 0.0)?;
         }
         Ok(out.canvas)
-    }
-}
-
-/// A ResizeObserver on some elements; disconnected when dropped.
-pub struct ResizeWatch {
-    observer: ResizeObserver,
-    _callback: Closure<dyn FnMut(JsValue)>,
-}
-
-/// Calls `on_resize` whenever one of `elements` changes size (and once when observing
-/// starts, as ResizeObserver does).
-pub fn watch_resize(
-    elements: &[&Element],
-    mut on_resize: impl FnMut() + 'static,
-) -> Result<ResizeWatch, JsValue> {
-    let callback = Closure::<dyn FnMut(JsValue)>::new(move |_entries: JsValue| on_resize());
-    let observer = ResizeObserver::new(callback.as_ref().unchecked_ref())?;
-    for e in elements {
-        observer.observe(e);
-    }
-    Ok(ResizeWatch {
-        observer,
-        _callback: callback,
-    })
-}
-
-impl Drop for ResizeWatch {
-    fn drop(&mut self) {
-        self.observer.disconnect();
     }
 }
 

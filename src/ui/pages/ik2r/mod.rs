@@ -40,13 +40,16 @@ use wasm_bindgen::JsCast;
 use web_sys::{Element, KeyboardEvent};
 
 use crate::planar2r::{wrap_angle, Elbow};
-use crate::ui::dom::{self, Listener};
-use crate::ui::kit::canvas::{watch_resize, Ink, ResizeWatch};
+use crate::ui::dom;
+use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::DragEvent;
 use crate::ui::kit::frame::FrameLoop;
+use crate::ui::kit::scope::Scope;
+use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{MountCtx, PageDef, PageHandle, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::view::ik2r::{elbow_of, Grab, Params, State, WsColor};
+use crate::view::url::UrlState;
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef {
@@ -80,9 +83,9 @@ pub(crate) struct Page {
     state: RefCell<State>,
     /// The pose of the heatmap cell under the pointer (a ghost arm in the arm view).
     ghost: RefCell<Option<(f64, f64)>>,
-    /// Values the URL had that were not valid (the notice names them).
-    ignored_url_keys: RefCell<Vec<String>>,
-    url_notice: Element,
+    /// Names the values of the opened link that were not valid.
+    url_notice: UrlNotice,
+    url: UrlWriter,
     arm: RefCell<arm::ArmView>,
     heat: RefCell<heat::HeatPanel>,
     sweep: RefCell<sweep::SweepPlot>,
@@ -90,40 +93,52 @@ pub(crate) struct Page {
     readouts: RefCell<readouts::Readouts>,
     exports: RefCell<exports::Exports>,
     frames: RefCell<Option<FrameLoop>>,
-    resize: RefCell<Option<ResizeWatch>>,
-    listeners: RefCell<Vec<Listener>>,
-    heat_timer: Timer,
-    ws_timer: Timer,
-    url_timer: Timer,
+    /// Listeners, timers and the resize observer; dropped on unmount.
+    scope: RefCell<Scope>,
+    heat_timer: Rc<Timer>,
+    ws_timer: Rc<Timer>,
     /// Hides the out-of-reach note a key press showed.
-    clamp_timer: Timer,
+    clamp_timer: Rc<Timer>,
     timings: bench::Timings,
 }
 
 fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
     let root = ctx.root.clone();
     root.set_inner_html(&markup::page());
-    let (state, ignored) = State::from_query(&ctx.query);
-    let page = Rc::new(Page {
-        url_notice: role(&root, "url-notice")?,
-        arm: RefCell::new(arm::ArmView::find(&root)?),
-        heat: RefCell::new(heat::HeatPanel::find(&root)?),
-        sweep: RefCell::new(sweep::SweepPlot::find(&root)?),
-        params: RefCell::new(params::ParamsForm::find(&root)?),
-        readouts: RefCell::new(readouts::Readouts::find(&root)?),
-        exports: RefCell::new(exports::Exports::find(&root)?),
-        root,
-        state: RefCell::new(state),
-        ghost: RefCell::new(None),
-        ignored_url_keys: RefCell::new(ignored),
-        frames: RefCell::new(None),
-        resize: RefCell::new(None),
-        listeners: RefCell::new(Vec::new()),
-        heat_timer: Timer::default(),
-        ws_timer: Timer::default(),
-        url_timer: Timer::default(),
-        clamp_timer: Timer::default(),
-        timings: bench::Timings::install(),
+    let (state, ignored) = State::read(&ctx.query);
+    let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
+    let (arm, heat, sweep) = (
+        arm::ArmView::find(&root)?,
+        heat::HeatPanel::find(&root)?,
+        sweep::SweepPlot::find(&root)?,
+    );
+    let (params, mut readouts, exports) = (
+        params::ParamsForm::find(&root)?,
+        readouts::Readouts::find(&root)?,
+        exports::Exports::find(&root)?,
+    );
+    let page = Rc::new_cyclic(|weak: &Weak<Page>| {
+        let mut scope = Scope::new();
+        readouts.set_timer(scope.timer(weak, |p: &Page| p.readouts.borrow().speak()));
+        Page {
+            heat_timer: scope.timer(weak, Page::recompute_heatmap),
+            ws_timer: scope.timer(weak, Page::recompute_workspace),
+            clamp_timer: scope.timer(weak, |p: &Page| p.arm.borrow_mut().set_clamp(false)),
+            url: UrlWriter::new(&mut scope, weak, |p: &Page| p.state.borrow().write()),
+            scope: RefCell::new(scope),
+            url_notice,
+            arm: RefCell::new(arm),
+            heat: RefCell::new(heat),
+            sweep: RefCell::new(sweep),
+            params: RefCell::new(params),
+            readouts: RefCell::new(readouts),
+            exports: RefCell::new(exports),
+            root,
+            state: RefCell::new(state),
+            ghost: RefCell::new(None),
+            frames: RefCell::new(None),
+            timings: bench::Timings::install(),
+        }
     });
     dom::relocalize(&page.root)?;
     page.install(&Rc::downgrade(&page))?;
@@ -140,52 +155,33 @@ fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
 }
 
 impl Page {
-    /// Wires the frame loop, timers, resize watch, the components' listeners and bench hooks.
+    /// Wires the frame loop, the resize observer, the components' listeners and bench hooks.
     fn install(&self, weak: &Weak<Page>) -> Result<(), JsValue> {
         *self.frames.borrow_mut() = Some(FrameLoop::new(weak, |p: &Page, bits, _| p.frame(bits)));
-        self.heat_timer.set_callback(weak, Page::recompute_heatmap);
-        self.ws_timer.set_callback(weak, Page::recompute_workspace);
-        self.url_timer.set_callback(weak, Page::write_url);
-        self.clamp_timer
-            .set_callback(weak, |p: &Page| p.arm.borrow_mut().set_clamp(false));
-        self.readouts.borrow().install(weak);
         let stages = [
             self.arm.borrow().stage(),
             self.heat.borrow().stage(),
             self.sweep.borrow().stage(),
         ];
-        let w = weak.clone();
-        *self.resize.borrow_mut() = Some(watch_resize(
-            &stages.iter().collect::<Vec<_>>(),
-            move || {
-                if let Some(p) = w.upgrade() {
-                    p.invalidate(dirty::ALL);
-                }
-            },
-        )?);
+        let mut scope = self.scope.borrow_mut();
+        scope.observe_resize(&stages.iter().collect::<Vec<_>>(), weak, |p: &Page| {
+            p.invalidate(dirty::ALL)
+        })?;
         let mut listeners = Vec::new();
         self.arm.borrow_mut().attach(weak, &mut listeners)?;
         self.heat.borrow_mut().attach(weak)?;
         self.params.borrow().attach(weak, &mut listeners)?;
         self.exports.borrow().attach(weak, &mut listeners)?;
-        *self.listeners.borrow_mut() = listeners;
+        for l in listeners {
+            scope.keep(l);
+        }
         bench::install_hooks(weak)?;
         Ok(())
     }
 
     fn unmount(&self) {
         self.frames.borrow_mut().take();
-        for t in [
-            &self.heat_timer,
-            &self.ws_timer,
-            &self.url_timer,
-            &self.clamp_timer,
-        ] {
-            t.cancel();
-        }
-        self.readouts.borrow().cancel();
-        self.resize.borrow_mut().take();
-        self.listeners.borrow_mut().clear();
+        drop(std::mem::take(&mut *self.scope.borrow_mut()));
         self.arm.borrow_mut().detach();
         self.heat.borrow_mut().detach();
         bench::remove_hooks();
@@ -247,16 +243,7 @@ impl Page {
 
     /// Texts the page formats itself, in the current language.
     fn relocalize_texts(&self) {
-        let ignored = self.ignored_url_keys.borrow();
-        if ignored.is_empty() {
-            dom::show(&self.url_notice, false);
-        } else {
-            let text =
-                crate::ui::ctx::t_strings("ik2r-url-ignored", &[("keys", ignored.join(", "))]);
-            self.url_notice.set_text_content(Some(&text));
-            dom::show(&self.url_notice, true);
-        }
-        drop(ignored);
+        self.url_notice.relocalize();
         let st = *self.state.borrow();
         self.arm.borrow().relocalize(&st);
         self.heat
@@ -277,13 +264,11 @@ impl Page {
 
     /// Writes the state into the URL now.
     fn write_url(&self) {
-        self.url_timer.cancel();
-        let query = self.state.borrow().query_pairs();
-        crate::ui::router::replace_query(&query);
+        self.url.write_now();
     }
 
     fn schedule_url(&self) {
-        self.url_timer.schedule(300);
+        self.url.schedule();
     }
 
     /// The pose changed (drag, key, heatmap): redraw the frame layers.
@@ -424,7 +409,7 @@ impl Page {
     fn reset(&self) {
         let old = self.state.borrow().params;
         *self.state.borrow_mut() = State::default();
-        self.ignored_url_keys.borrow_mut().clear();
+        self.url_notice.set(Vec::new());
         *self.ghost.borrow_mut() = None;
         let st = *self.state.borrow();
         {

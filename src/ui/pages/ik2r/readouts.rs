@@ -9,12 +9,12 @@
 //! a run of key presses is one sentence, not fifty).
 
 use std::cell::RefCell;
-use std::rc::{Rc, Weak};
+use std::rc::Rc;
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use super::{role, Page};
+use super::role;
 use crate::planar2r::PoseReport;
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::schedule::Timer;
@@ -42,7 +42,8 @@ pub(super) struct Readouts {
     /// What the live region will say (and said last).
     pending: Rc<RefCell<Option<PoseSummary>>>,
     said: Rc<RefCell<Option<PoseSummary>>>,
-    timer: Timer,
+    /// Speaks the pending summary (a timer of the page's scope).
+    timer: Option<Rc<Timer>>,
 }
 
 impl Readouts {
@@ -64,18 +65,13 @@ impl Readouts {
             live: role(root, "live")?,
             pending: Rc::new(RefCell::new(None)),
             said: Rc::new(RefCell::new(None)),
-            timer: Timer::default(),
+            timer: None,
         })
     }
 
-    /// The live region's timer.
-    pub fn install(&self, weak: &Weak<Page>) {
-        self.timer
-            .set_callback(weak, |p: &Page| p.readouts.borrow().speak());
-    }
-
-    pub fn cancel(&self) {
-        self.timer.cancel();
+    /// The live region's timer (it calls [`Readouts::speak`]).
+    pub fn set_timer(&mut self, timer: Rc<Timer>) {
+        self.timer = Some(timer);
     }
 
     /// Writes the pose's numbers (only those that changed) and queues the summary.
@@ -120,12 +116,14 @@ impl Readouts {
         }
         if self.said.borrow().as_ref() != Some(&summary) {
             *self.pending.borrow_mut() = Some(summary);
-            self.timer.schedule(SPEAK_AFTER_MS);
+            if let Some(t) = &self.timer {
+                t.schedule(SPEAK_AFTER_MS);
+            }
         }
     }
 
     /// Says the pending summary.
-    fn speak(&self) {
+    pub fn speak(&self) {
         let Some(summary) = self.pending.borrow_mut().take() else {
             return;
         };
