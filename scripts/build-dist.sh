@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Builds the wasm (release by default, `--dev` for a fast unoptimised build) and assembles
-# the static app in dist/: index.html, www/ (css, bootstrap js), pkg/ (wasm + its JS glue).
-# dist/ runs from any static host or folder served over http.
+# the static app in dist/: index.html, www/ (css, boot and bootstrap js, the worker, favicon),
+# pkg/ (wasm + its JS glue). dist/ runs from any static host or folder served over http.
+# dist/www/app.css is one stylesheet: www/app.css, then every stylesheet that sits beside the
+# Rust of a page or widget (src/ui/**/*.css, in path order); nothing injects <style> at run time,
+# so the app runs under the strict Content-Security-Policy of index.html.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -15,7 +18,16 @@ rm -rf dist
 mkdir -p dist/pkg
 cp index.html dist/
 cp -r www dist/www
+{
+  cat www/app.css
+  find src/ui -name '*.css' -print0 | LC_ALL=C sort -z | while IFS= read -r -d '' css; do
+    printf '\n/* ---- %s ---- */\n' "$css"
+    cat "$css"
+  done
+} > dist/www/app.css
 cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm dist/pkg/
+# wasm-bindgen `inline_js` / `module` snippets, if any crate uses them.
+[[ -d pkg/snippets ]] && cp -r pkg/snippets dist/pkg/
 
 size() { gzip -9 -c "$@" | wc -c; }
 printf 'dist/ ready (%s): wasm %s B (gzip %s B); wasm+js+css+html gzip %s B\n' \

@@ -48,7 +48,11 @@ fn exec_copy(text: &str) -> bool {
     };
     input.set_value(text);
     let _ = input.set_attribute("readonly", "");
-    let _ = input.set_attribute("style", "position:fixed;left:-9999px;top:0");
+    // CSSOM, not a style attribute: the strict CSP blocks inline style attributes.
+    let style = input.style();
+    let _ = style.set_property("position", "fixed");
+    let _ = style.set_property("left", "-9999px");
+    let _ = style.set_property("top", "0");
     if body.append_child(&input).is_err() {
         return false;
     }

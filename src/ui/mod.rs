@@ -51,8 +51,10 @@ fn install_panic_hook() {
     }));
 }
 
-/// The visible "something went wrong" banner at the top of the page. Its reload button is a
-/// plain JS function, so it works even though the wasm instance is no longer usable.
+/// The visible "something went wrong" banner at the top of the page. Its reload button is
+/// the browser's own `location.reload` bound to `location` (no wasm closure, so it works even
+/// though the wasm instance is no longer usable; no `Function("...")`, which the strict CSP
+/// blocks as eval).
 fn show_crash_banner() -> Result<(), JsValue> {
     let document = dom::document()?;
     if document.get_element_by_id("crash-banner").is_some() {
@@ -70,7 +72,10 @@ fn show_crash_banner() -> Result<(), JsValue> {
     dom::append(&banner, &dom::el_text("span", "", &ctx::t("crash-body"))?)?;
     let reload = dom::el_text("button", "tool-button", &ctx::t("crash-reload"))?;
     reload.set_attribute("type", "button")?;
-    let action = js_sys::Function::new_no_args("location.reload()");
+    let location = dom::window()?.location();
+    let action = js_sys::Reflect::get(&location, &JsValue::from_str("reload"))?
+        .dyn_into::<js_sys::Function>()?
+        .bind0(&location);
     reload.add_event_listener_with_callback("click", &action)?;
     dom::append(&banner, &reload)?;
     body.prepend_with_node_1(&banner)

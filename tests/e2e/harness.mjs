@@ -1,5 +1,12 @@
 // End-to-end test harness: serves dist/ on loopback and drives Debian's Chromium headless
 // through playwright-core. One browser per test file; one fresh context per openApp.
+//
+// Strict: every context of the shared browser reports each Content-Security-Policy violation
+// (`securitypolicyviolation`, listened for in the page before any page script runs) and each
+// `console.warn` of the app's i18n (a missing or broken Fluent message); any such problem
+// fails the test during which it happened (an `afterEach` hook of every file that imports this
+// harness). A test that provokes one on purpose takes it with `takeProblems()`.
+import { afterEach } from 'node:test';
 import { chromium } from 'playwright-core';
 import { mkdirSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -25,15 +32,79 @@ export function startServer() {
   return startStaticServer(join(ROOT, 'dist'), 0);
 }
 
+/** What the app's i18n logs with console.warn (src/ui/ctx.rs: `i18n: <note>`). */
+const I18N_WARNING = /^i18n: /;
+
+/** CSP violations and i18n warnings seen since the last `takeProblems()`: { kind, text, url }. */
+const problems = [];
+
+/** The problems seen so far (a copy; they stay). */
+export function seenProblems() {
+  return [...problems];
+}
+
+/** Takes (and clears) the problems seen so far. */
+export function takeProblems() {
+  return problems.splice(0, problems.length);
+}
+
+/** Throws when a CSP violation or an i18n warning was seen (and clears them). */
+export function assertNoProblems() {
+  const seen = takeProblems();
+  if (seen.length) {
+    const lines = seen.map((p) => `  ${p.kind}: ${p.text}${p.url ? ` (${p.url})` : ''}`);
+    throw new Error(`the page reported ${seen.length} problem(s):\n${lines.join('\n')}`);
+  }
+}
+
+afterEach(() => assertNoProblems());
+
+/** Reports violations of the page's CSP to the test (runs in the page before its scripts). */
+function watchCsp() {
+  document.addEventListener(
+    'securitypolicyviolation',
+    (e) => {
+      const where = e.sourceFile ? ` at ${e.sourceFile}:${e.lineNumber}:${e.columnNumber}` : '';
+      const sample = e.sample ? ` "${e.sample}"` : '';
+      // eslint-disable-next-line no-undef
+      globalThis.__bsvCspViolation(`${e.effectiveDirective} blocked ${e.blockedURI || '(inline)'}${sample}${where}`);
+    },
+    true,
+  );
+}
+
+/** Makes a context of the shared browser strict (see the top of this file). */
+async function watch(context) {
+  await context.exposeBinding('__bsvCspViolation', ({ page }, text) => {
+    problems.push({ kind: 'csp', text, url: page?.url() ?? '' });
+  });
+  await context.addInitScript(watchCsp);
+  context.on('console', (m) => {
+    if (m.type() === 'warning' && I18N_WARNING.test(m.text())) {
+      problems.push({ kind: 'i18n', text: m.text(), url: m.page()?.url() ?? '' });
+    }
+  });
+}
+
 let browserPromise = null;
 
-/** The shared headless Chromium of this test file. */
+/** The shared headless Chromium of this test file; each of its new contexts is strict. */
 export function browser() {
-  browserPromise ??= chromium.launch({
-    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-    headless: true,
-    args: CHROMIUM_ARGS,
-  });
+  browserPromise ??= chromium
+    .launch({
+      executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+      headless: true,
+      args: CHROMIUM_ARGS,
+    })
+    .then((b) => {
+      const newContext = b.newContext.bind(b);
+      b.newContext = async (options) => {
+        const context = await newContext(options);
+        await watch(context);
+        return context;
+      };
+      return b;
+    });
   return browserPromise;
 }
 

@@ -6,8 +6,18 @@
 //! - [`keymap`]: the app's one keymap and the focus rule for page keys.
 //! - [`stepper`]: step / back / play / scrub toolbar over a page's model.
 //! - [`png`]: PNG export of any canvas.
+//! - [`canvas`]: HiDPI layered canvases, resize watch, projector ink (line/type scale).
+//! - [`frame`]: one animation-frame loop with dirty flags.
+//! - [`drag`]: pointer drags (mouse, pen, touch) that leave the page scrollable.
+//! - [`plot`]: line/scatter plots: panels sharing x, legend, cursor, incremental append.
+//! - [`heatmap`]: colour-map heatmap with a legend.
 
+pub mod canvas;
+pub mod drag;
+pub mod frame;
+pub mod heatmap;
 pub mod keymap;
+pub mod plot;
 pub mod png;
 pub mod scope;
 pub mod stepper;

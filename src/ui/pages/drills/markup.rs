@@ -1,13 +1,11 @@
-//! The page's HTML skeleton and its stylesheet. Every fixed word is a `data-i18n` id filled by
+//! The page's HTML skeleton (its stylesheet, `style.css` beside this file, is bundled into
+//! `www/app.css` by `scripts/build-dist.sh`). Every fixed word is a `data-i18n` id filled by
 //! the shell (and `dom::relocalize`) from `locales/*/drills.ftl` and `recipes.ftl`; elements
 //! the code drives carry `data-drills="<role>"`, and the ones tests drive carry `data-testid`,
 //! `data-field`, `data-download`, `data-cmd` and `data-copy`.
 
 use super::texts::escape;
 use crate::recipes::RECIPES;
-
-/// The page's own styles (scoped under `.drills`).
-pub const STYLE: &str = include_str!("style.css");
 
 fn recipe_options() -> String {
     let mut html = String::new();
@@ -23,8 +21,7 @@ fn recipe_options() -> String {
 /// The whole page; the form, the explanation and the result are filled by the code.
 pub fn page() -> String {
     format!(
-        "<style>{style}</style>\
-<div class=\"drills\" data-testid=\"drills-page\" data-state=\"idle\">\
+        "<div class=\"drills\" data-testid=\"drills-page\" data-state=\"idle\">\
 <header class=\"drills-head\"><h1 data-i18n=\"drills-title\"></h1>\
 <p class=\"drills-lede\" data-i18n=\"drills-lede\"></p>\
 <p class=\"drills-notice\" data-drills=\"url-notice\" data-testid=\"drills-url-notice\" role=\"status\" hidden></p></header>\
@@ -70,7 +67,6 @@ aria-labelledby=\"drills-output-title\">\
 <p class=\"drills-hint\" data-i18n=\"drills-about-parity\"></p>\
 </section>\
 </div></div>",
-        style = STYLE,
         options = recipe_options(),
     )
 }

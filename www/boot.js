@@ -1,0 +1,67 @@
+// Shows a bilingual message in the page when the app cannot start: opened from file://
+// (browsers block module scripts there), a browser without modules or WebAssembly, or a
+// failed download of the module or the wasm (bootstrap.js calls it then). A classic script in
+// plain ES5 so that old browsers run it too; loaded from a file (not inline) so that the page
+// runs under the strict Content-Security-Policy stated in index.html.
+(function () {
+  'use strict';
+
+  window.bsvBootError = function (kind, detail) {
+    var show = function () {
+      var box = document.getElementById('boot-status');
+      if (!box) {
+        box = document.createElement('div');
+        box.id = 'boot-status';
+        document.body.insertBefore(box, document.body.firstChild);
+      }
+      var file = location.protocol === 'file:';
+      var en = file
+        ? 'This page was opened as a file. Browsers do not run the app from file:// addresses. In the project folder, run "make serve" and open http://127.0.0.1:8000/ instead.'
+        : 'The app could not be loaded. Reload the page; if this keeps happening, use a current browser (the app needs JavaScript modules and WebAssembly).';
+      var ja = file
+        ? 'このページはファイルとして開かれています。ブラウザは file:// のアドレスからはアプリを実行しません。プロジェクトのフォルダーで「make serve」を実行し、http://127.0.0.1:8000/ を開いてください。'
+        : 'アプリを読み込めませんでした。ページを再読み込みしてください。それでも表示されない場合は、最新のブラウザーを使ってください（JavaScript モジュールと WebAssembly が必要です）。';
+      box.className = 'boot-status boot-error';
+      box.setAttribute('role', 'alert');
+      box.setAttribute('data-testid', 'boot-error');
+      box.setAttribute('data-boot-error', String(kind));
+      box.innerHTML = '';
+      var add = function (lang, title, text) {
+        var h = document.createElement('p');
+        h.lang = lang;
+        h.className = 'boot-title';
+        h.textContent = title;
+        var p = document.createElement('p');
+        p.lang = lang;
+        p.textContent = text;
+        box.appendChild(h);
+        box.appendChild(p);
+      };
+      add('en', 'BSV Playground could not start.', en);
+      add('ja', 'BSV Playground を起動できませんでした。', ja);
+      if (detail && !file) {
+        var d = document.createElement('p');
+        d.className = 'boot-detail';
+        d.textContent = String(detail);
+        box.appendChild(d);
+      }
+    };
+    if (document.body) show(); else document.addEventListener('DOMContentLoaded', show);
+  };
+
+  // A module script that fails to load (404, blocked) fires `error` on its element; the event
+  // does not bubble, so listen in the capture phase. (This replaces an inline onerror=.)
+  window.addEventListener('error', function (event) {
+    var target = event.target;
+    if (target && target.tagName === 'SCRIPT' && target.type === 'module') {
+      window.bsvBootError('module');
+    }
+  }, true);
+
+  if (location.protocol === 'file:') {
+    window.bsvBootError('file');
+  } else if (!('noModule' in HTMLScriptElement.prototype) || typeof WebAssembly !== 'object') {
+    // A browser without module scripts never runs bootstrap.js (this replaces <script nomodule>).
+    window.bsvBootError('old-browser');
+  }
+})();
