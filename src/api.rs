@@ -4,6 +4,8 @@
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
+use crate::args::{ArgKind, ArgSpec, Bound};
+use crate::error::RecipeWarning;
 use crate::recipes::{self, pendulum_energy, rrt_2d, RecipeOutput};
 
 /// One file of a recipe run, as JS sees it: `{ name, text }`.
@@ -13,16 +15,42 @@ pub struct JsFile {
     pub text: String,
 }
 
-/// A recipe run, as JS sees it: `{ files: [{ name, text }], summary }`.
+/// A warning of a run, as JS sees it: `{ id, args: { name: value }, text }` (the Fluent id
+/// and its arguments in `errors.ftl`, and the CLI's English line).
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct JsWarning {
+    pub id: String,
+    pub args: std::collections::BTreeMap<String, String>,
+    pub text: String,
+}
+
+impl From<&RecipeWarning> for JsWarning {
+    fn from(w: &RecipeWarning) -> Self {
+        JsWarning {
+            id: w.message_id().to_string(),
+            args: w
+                .message_args()
+                .into_iter()
+                .map(|(k, v)| (k.to_string(), v))
+                .collect(),
+            text: w.to_string(),
+        }
+    }
+}
+
+/// A recipe run, as JS sees it: `{ files: [{ name, text }], summary, warnings }`.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct JsRun {
     pub files: Vec<JsFile>,
     pub summary: String,
+    #[serde(default)]
+    pub warnings: Vec<JsWarning>,
 }
 
 impl From<RecipeOutput> for JsRun {
     fn from(out: RecipeOutput) -> Self {
         JsRun {
+            warnings: out.warnings.iter().map(JsWarning::from).collect(),
             files: out
                 .files
                 .into_iter()
@@ -45,6 +73,14 @@ pub fn run_recipe(
     args: Vec<String>,
     inputs: Option<js_sys::Object>,
 ) -> Result<JsValue, JsError> {
+    let files = input_files(inputs);
+    let out =
+        recipes::run_with_inputs(id, &args, files).map_err(|e| JsError::new(&e.to_string()))?;
+    serde_wasm_bindgen::to_value(&JsRun::from(out)).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// `{ "name": "text" }` as `(name, text)` pairs (other values are skipped).
+fn input_files(inputs: Option<js_sys::Object>) -> Vec<(String, String)> {
     let mut files = Vec::new();
     if let Some(obj) = inputs {
         for entry in js_sys::Object::entries(&obj).iter() {
@@ -54,42 +90,145 @@ pub fn run_recipe(
             }
         }
     }
-    let out =
-        recipes::run_with_inputs(id, &args, files).map_err(|e| JsError::new(&e.to_string()))?;
+    files
+}
+
+/// `runRecipeWithProgress(id, args, inputs, onProgress)`: [`run_recipe`] calling
+/// `onProgress(done, total)` (rows of work) at most every ~1 %; the result is identical.
+#[wasm_bindgen(js_name = runRecipeWithProgress)]
+pub fn run_recipe_with_progress(
+    id: &str,
+    args: Vec<String>,
+    inputs: Option<js_sys::Object>,
+    on_progress: &js_sys::Function,
+) -> Result<JsValue, JsError> {
+    let files = input_files(inputs);
+    let mut report = |done: u64, total: u64| {
+        // A throwing callback must not abort the run.
+        let _ = on_progress.call2(
+            &JsValue::NULL,
+            &JsValue::from_f64(done as f64),
+            &JsValue::from_f64(total as f64),
+        );
+    };
+    let out = recipes::run_with_progress(id, &args, files, &mut report)
+        .map_err(|e| JsError::new(&e.to_string()))?;
     serde_wasm_bindgen::to_value(&JsRun::from(out)).map_err(|e| JsError::new(&e.to_string()))
 }
 
-/// `listRecipes()`: every recipe as `{ id, python, args: [{ name, default, help }], flags,
-/// writes }`, in the order of the BSV page.
+/// `planRecipe(id, args, inputs?)`: the rows of work of a run, without running it (argument
+/// errors are thrown as `runRecipe` would).
+#[wasm_bindgen(js_name = planRecipe)]
+pub fn plan_recipe(
+    id: &str,
+    args: Vec<String>,
+    inputs: Option<js_sys::Object>,
+) -> Result<f64, JsError> {
+    let plan =
+        recipes::plan(id, &args, input_files(inputs)).map_err(|e| JsError::new(&e.to_string()))?;
+    Ok(plan.rows as f64)
+}
+
+/// A limit as JS sees it: `{ value, inclusive }`, or `null` for none.
+#[derive(Serialize)]
+struct JsBound {
+    value: f64,
+    inclusive: bool,
+}
+
+fn js_bound(b: Bound) -> Option<JsBound> {
+    match b {
+        Bound::None => None,
+        Bound::Incl(value) => Some(JsBound {
+            value,
+            inclusive: true,
+        }),
+        Bound::Excl(value) => Some(JsBound {
+            value,
+            inclusive: false,
+        }),
+    }
+}
+
+/// `listRecipes()`: every recipe's facts, in the order of the BSV page: `{ id, python, args,
+/// flags, writes, quirksId, page, titleId, blurbId }` with each argument as `{ name, default,
+/// help, kind ("number" | "integer" | "seed" | "list" | "file" | "choice"), len (lists),
+/// choices, unit, min, max ({ value, inclusive } or null), hintId, labelId }`.
 #[wasm_bindgen(js_name = listRecipes)]
 pub fn list_recipes() -> Result<JsValue, JsError> {
     #[derive(Serialize)]
+    #[serde(rename_all = "camelCase")]
     struct Arg {
         name: &'static str,
         default: &'static str,
         help: &'static str,
+        kind: &'static str,
+        len: Option<usize>,
+        choices: &'static [&'static str],
+        unit: Option<&'static str>,
+        min: Option<JsBound>,
+        max: Option<JsBound>,
+        hint_id: &'static str,
+        label_id: String,
     }
     #[derive(Serialize)]
+    #[serde(rename_all = "camelCase")]
     struct Info {
         id: &'static str,
         python: &'static str,
         args: Vec<Arg>,
         flags: Vec<Arg>,
         writes: &'static [&'static str],
+        quirks_id: &'static str,
+        page: Option<&'static str>,
+        title_id: String,
+        blurb_id: String,
     }
-    let arg = |a: &crate::args::ArgSpec| Arg {
-        name: a.name,
-        default: a.default,
-        help: a.help,
+    let arg = |recipe: &str, a: &ArgSpec, flag: bool| {
+        let (kind, len, choices): (_, _, &'static [&'static str]) = match a.kind {
+            ArgKind::Number => ("number", None, &[]),
+            ArgKind::Integer => ("integer", None, &[]),
+            ArgKind::Seed => ("seed", None, &[]),
+            ArgKind::List { len } => ("list", Some(len), &[]),
+            ArgKind::File => ("file", None, &[]),
+            ArgKind::Choice(c) => ("choice", None, c),
+        };
+        Arg {
+            name: a.name,
+            default: a.default,
+            help: a.help,
+            kind,
+            len,
+            choices,
+            unit: a.unit,
+            min: js_bound(a.min),
+            max: js_bound(a.max),
+            hint_id: a.hint_id,
+            label_id: a.label_id(recipe, flag),
+        }
     };
     let list: Vec<Info> = recipes::RECIPES
         .iter()
         .map(|r| Info {
             id: r.info.id,
             python: r.info.python,
-            args: r.info.args.iter().map(arg).collect(),
-            flags: r.info.flags.iter().map(arg).collect(),
+            args: r
+                .info
+                .args
+                .iter()
+                .map(|a| arg(r.info.id, a, false))
+                .collect(),
+            flags: r
+                .info
+                .flags
+                .iter()
+                .map(|a| arg(r.info.id, a, true))
+                .collect(),
             writes: r.info.writes,
+            quirks_id: r.info.quirks_id,
+            page: r.info.page,
+            title_id: r.info.title_id(),
+            blurb_id: r.info.blurb_id(),
         })
         .collect();
     Ok(serde_wasm_bindgen::to_value(&list)?)
@@ -185,7 +324,7 @@ impl PendulumHandle {
         let params = pendulum_energy::PendulumParams::from_args(&raw)?;
         params.validate()?;
         Ok(PendulumHandle {
-            pendulum: pendulum_energy::Pendulum::new(&params),
+            pendulum: pendulum_energy::Pendulum::new(&params)?,
         })
     }
 

@@ -6,12 +6,260 @@
 
 use crate::error::RecipeError;
 
-/// One argument of a recipe: its name, its default as the recipe writes it, and a short help.
+/// How a value is entered and read.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ArgKind {
+    /// A real number (finite).
+    Number,
+    /// A whole number; any whole-number notation is accepted (`1e3`, `1000.0`).
+    Integer,
+    /// A seed of numpy's `default_rng`: a whole number in `[0, 2^63)`.
+    Seed,
+    /// `len` numbers separated by commas.
+    List { len: usize },
+    /// An input file, named by its path (traj-resample's CSV).
+    File,
+    /// One of a few words.
+    Choice(&'static [&'static str]),
+}
+
+/// A lower or upper limit of a value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Bound {
+    /// No limit on this side.
+    None,
+    /// The value may equal the limit.
+    Incl(f64),
+    /// The value must stay strictly on the inside of the limit.
+    Excl(f64),
+}
+
+impl Bound {
+    /// The limit's value, if there is one.
+    pub fn value(self) -> Option<f64> {
+        match self {
+            Bound::None => None,
+            Bound::Incl(v) | Bound::Excl(v) => Some(v),
+        }
+    }
+
+    /// Whether `x` satisfies this bound taken as a lower limit.
+    pub fn allows_from_below(self, x: f64) -> bool {
+        match self {
+            Bound::None => true,
+            Bound::Incl(m) => x >= m,
+            Bound::Excl(m) => x > m,
+        }
+    }
+
+    /// Whether `x` satisfies this bound taken as an upper limit.
+    pub fn allows_from_above(self, x: f64) -> bool {
+        match self {
+            Bound::None => true,
+            Bound::Incl(m) => x <= m,
+            Bound::Excl(m) => x < m,
+        }
+    }
+}
+
+/// One argument of a recipe, stated once: its name, its default as the recipe writes it, a
+/// short English help (CLI), how it is entered, its unit, its limits and the Fluent id of the
+/// hint that states those limits in words (`locales/*/recipes.ftl`).
+///
+/// The limits here are the ones the kernel enforces for this argument alone (cross-field
+/// limits, such as rows = duration ÷ step, are checked by the recipe and reported with every
+/// argument involved, see [`RecipeError::params`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ArgSpec {
     pub name: &'static str,
     pub default: &'static str,
     pub help: &'static str,
+    pub kind: ArgKind,
+    /// "m", "s", "deg", "mm", "rad", ... (`None`: a plain number).
+    pub unit: Option<&'static str>,
+    pub min: Bound,
+    pub max: Bound,
+    /// Fluent id of the hint (recipes.ftl), `recipe-<id>-hint-<name>`.
+    pub hint_id: &'static str,
+}
+
+impl ArgSpec {
+    /// A number argument without unit or limits (set them with the `const` builders).
+    pub const fn number(name: &'static str, default: &'static str, help: &'static str) -> ArgSpec {
+        ArgSpec {
+            name,
+            default,
+            help,
+            kind: ArgKind::Number,
+            unit: None,
+            min: Bound::None,
+            max: Bound::None,
+            hint_id: "",
+        }
+    }
+
+    /// A seed of numpy's `default_rng`: a whole number from 0 to 2^63 - 1.
+    pub const fn seed(name: &'static str, default: &'static str, help: &'static str) -> ArgSpec {
+        ArgSpec::number(name, default, help)
+            .kind(ArgKind::Seed)
+            .limits(Bound::Incl(0.0), Bound::Incl(crate::rng::SEED_MAX as f64))
+    }
+
+    /// A whole number from `min` to `max`.
+    pub const fn integer(
+        name: &'static str,
+        default: &'static str,
+        help: &'static str,
+        min: i64,
+        max: i64,
+    ) -> ArgSpec {
+        ArgSpec::number(name, default, help)
+            .kind(ArgKind::Integer)
+            .limits(Bound::Incl(min as f64), Bound::Incl(max as f64))
+    }
+
+    /// The same argument entered as `kind`.
+    pub const fn kind(self, kind: ArgKind) -> ArgSpec {
+        ArgSpec { kind, ..self }
+    }
+
+    /// The same argument measured in `unit`.
+    pub const fn unit(self, unit: &'static str) -> ArgSpec {
+        ArgSpec {
+            unit: Some(unit),
+            ..self
+        }
+    }
+
+    /// The same argument with these limits.
+    pub const fn limits(self, min: Bound, max: Bound) -> ArgSpec {
+        ArgSpec { min, max, ..self }
+    }
+
+    /// The same argument with its hint's Fluent id.
+    pub const fn hint(self, hint_id: &'static str) -> ArgSpec {
+        ArgSpec { hint_id, ..self }
+    }
+
+    /// Fluent id of the label: `recipe-<id>-arg-<name>`, or `recipe-<id>-flag-<name>` for a
+    /// `--flag` option.
+    pub fn label_id(&self, recipe_id: &str, flag: bool) -> String {
+        let kind = if flag { "flag" } else { "arg" };
+        format!("recipe-{recipe_id}-{kind}-{}", self.name)
+    }
+
+    /// Checks `value` against this argument's own limits (finite, `min`, `max`).
+    pub fn check(&self, value: f64) -> Result<f64, RecipeError> {
+        finite(self.name, value)?;
+        if self.min.allows_from_below(value) && self.max.allows_from_above(value) {
+            return Ok(value);
+        }
+        if self.min == Bound::Excl(0.0) && self.max == Bound::None {
+            return Err(RecipeError::NotPositive {
+                param: self.name.to_string(),
+                value,
+            });
+        }
+        Err(RecipeError::OutOfRange {
+            param: self.name.to_string(),
+            value,
+            min: self.min.value().unwrap_or(f64::NEG_INFINITY),
+            max: self.max.value().unwrap_or(f64::INFINITY),
+        })
+    }
+
+    /// Checks one field's text on its own, as the recipe reads it: a number (or whole number,
+    /// seed, list of numbers) within this argument's limits; a choice among its words. Returns
+    /// the value (the first for a list; 0 for a file or a choice). Cross-field limits are the
+    /// recipe's `plan` to check.
+    pub fn check_text(&self, text: &str) -> Result<f64, RecipeError> {
+        match self.kind {
+            ArgKind::Number => self.check(parse_f64(self.name, text)?),
+            ArgKind::Integer => {
+                let value = match parse_i64(self.name, text) {
+                    Ok(v) => v as f64,
+                    Err(RecipeError::OutOfRange { value, .. }) => value,
+                    Err(e) => return Err(e),
+                };
+                self.check(value)
+            }
+            ArgKind::Seed => parse_seed(self.name, text).map(|v| v as f64),
+            ArgKind::List { len } => {
+                let values = text
+                    .split(',')
+                    .map(|item| parse_f64(self.name, item).and_then(|v| self.check(v)))
+                    .collect::<Result<Vec<f64>, _>>()?;
+                if values.len() != len {
+                    return Err(RecipeError::WrongCount {
+                        param: self.name.to_string(),
+                        expected: len,
+                        got: values.len(),
+                    });
+                }
+                Ok(values.first().copied().unwrap_or(0.0))
+            }
+            ArgKind::Choice(choices) => {
+                let word = text.trim().to_ascii_lowercase();
+                if choices.contains(&word.as_str()) {
+                    Ok(0.0)
+                } else {
+                    Err(RecipeError::BadChoice {
+                        param: self.name.to_string(),
+                        value: text.to_string(),
+                        choices: choices.join(", "),
+                    })
+                }
+            }
+            ArgKind::File => Ok(0.0),
+        }
+    }
+
+    /// The limits in English words, for `bsv --help` ("from 0 to 1,000,000", "more than 0,
+    /// no upper limit", "any number"), with the unit.
+    pub fn limits_text(&self) -> String {
+        use crate::pyfmt::human;
+        let unit = self.unit.map(|u| format!(" {u}")).unwrap_or_default();
+        let low = match self.min {
+            Bound::None => None,
+            Bound::Incl(v) => Some(format!("at least {}{unit}", human(v))),
+            Bound::Excl(v) => Some(format!("more than {}{unit}", human(v))),
+        };
+        let high = match self.max {
+            Bound::None => None,
+            Bound::Incl(v) => Some(format!("at most {}{unit}", human(v))),
+            Bound::Excl(v) => Some(format!("less than {}{unit}", human(v))),
+        };
+        if let (Bound::Incl(a), Bound::Incl(b)) = (self.min, self.max) {
+            if !matches!(
+                self.kind,
+                ArgKind::Seed | ArgKind::Choice(_) | ArgKind::File
+            ) {
+                let whole = if self.kind == ArgKind::Integer {
+                    "a whole number "
+                } else {
+                    ""
+                };
+                return format!("{whole}from {} to {}{unit}", human(a), human(b));
+            }
+        }
+        match (&self.kind, low, high) {
+            (ArgKind::Choice(choices), _, _) => format!("one of {}", choices.join(", ")),
+            (ArgKind::File, _, _) => "a CSV file".to_string(),
+            (ArgKind::List { len }, _, _) => format!("{len} numbers separated by commas"),
+            (ArgKind::Seed, _, _) => "a whole number from 0 to 9,223,372,036,854,775,807".into(),
+            (_, Some(l), Some(h)) => format!("{l} and {h}"),
+            (_, Some(l), None) => format!("{l}, no upper limit"),
+            (_, None, Some(h)) => h,
+            (_, None, None) => "any number".to_string(),
+        }
+    }
+}
+
+/// The cost of a run before running it: rows (or cells, iterations) of work. Pages use it to
+/// decide whether to run at once, on a worker, or only on request.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Plan {
+    pub rows: u64,
 }
 
 /// Parsed arguments of one recipe call.
@@ -152,30 +400,62 @@ pub fn finite(param: &str, value: f64) -> Result<f64, RecipeError> {
     }
 }
 
-/// Parses an integer like Python's `int()` (no decimal point).
+/// Parses a whole number: Python `int()` notation (`800`, `+2`, `1_000`) or any float notation
+/// whose value is whole (`1e3`, `1000.0`). A whole value beyond i64 is out of range (reported
+/// against i64's own limits), not "not a whole number".
 pub fn parse_i64(param: &str, text: &str) -> Result<i64, RecipeError> {
     let cleaned = text.trim().replace('_', "");
-    cleaned.parse().map_err(|_| RecipeError::NotAnInteger {
+    if let Ok(v) = cleaned.parse::<i64>() {
+        return Ok(v);
+    }
+    let not_integer = || RecipeError::NotAnInteger {
         param: param.to_string(),
         value: text.to_string(),
-    })
+    };
+    let integral_digits = {
+        let digits = cleaned.trim_start_matches(['+', '-']);
+        !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit())
+    };
+    match cleaned.parse::<f64>() {
+        Ok(v) if v.is_finite() && (v.fract() == 0.0 || integral_digits) => {
+            // 2^63 is the first f64 beyond i64::MAX.
+            if (-9_223_372_036_854_775_808.0..9_223_372_036_854_775_808.0).contains(&v) {
+                Ok(v as i64)
+            } else {
+                Err(out_of_range(param, v, i64::MIN, i64::MAX))
+            }
+        }
+        _ => Err(not_integer()),
+    }
 }
 
-/// Parses a whole-number argument like Python's `int()` and checks `min <= value <= max`.
-/// A well-formed integer too long for i64 is out of range, not "not a whole number".
+/// Parses a whole-number argument ([`parse_i64`]) and checks `min <= value <= max`.
 pub fn parse_count(param: &str, text: &str, min: i64, max: i64) -> Result<i64, RecipeError> {
-    let value = match parse_i64(param, text) {
-        Ok(v) => v,
-        Err(e) => {
-            let digits = text.trim().trim_start_matches(['+', '-']);
-            let integral = !digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit());
-            return match text.trim().parse::<f64>() {
-                Ok(v) if integral => Err(out_of_range(param, v, min, max)),
-                _ => Err(e),
-            };
+    match parse_i64(param, text) {
+        Ok(v) => check_count(param, v, min, max),
+        Err(RecipeError::OutOfRange { value, .. }) => Err(out_of_range(param, value, min, max)),
+        Err(e) => Err(e),
+    }
+}
+
+/// Parses a seed of numpy's `default_rng` ([`crate::rng::parse_seed`]), also in any
+/// whole-number notation (`1e3`, `7.0`).
+pub fn parse_seed(param: &str, text: &str) -> Result<u64, RecipeError> {
+    match crate::rng::parse_seed(param, text) {
+        Err(RecipeError::NotAnInteger { .. }) => {
+            let v = parse_i64(param, text).map_err(|e| match e {
+                RecipeError::OutOfRange { value, .. } => RecipeError::OutOfRange {
+                    param: param.to_string(),
+                    value,
+                    min: 0.0,
+                    max: crate::rng::SEED_MAX as f64,
+                },
+                other => other,
+            })?;
+            crate::rng::parse_seed(param, &v.to_string())
         }
-    };
-    check_count(param, value, min, max)
+        other => other,
+    }
 }
 
 /// Checks `min <= value <= max` for a whole-number parameter.
@@ -224,6 +504,12 @@ pub fn in_range(param: &str, value: f64, min: f64, max: f64) -> Result<f64, Reci
 
 /// Checks that a derived row/cell/iteration count stays within `limit`.
 pub fn within_limit(param: &str, count: f64, limit: u64) -> Result<u64, RecipeError> {
+    rows_within(param, &[], count, limit)
+}
+
+/// [`within_limit`] for a count that several arguments set together: `param` (the step, the
+/// one to change first) and `also` (the span's arguments), all named by the error.
+pub fn rows_within(param: &str, also: &[&str], count: f64, limit: u64) -> Result<u64, RecipeError> {
     if count.is_finite() && count >= 0.0 && count <= limit as f64 {
         Ok(count as u64)
     } else {
@@ -236,6 +522,8 @@ pub fn within_limit(param: &str, count: f64, limit: u64) -> Result<u64, RecipeEr
             param: param.to_string(),
             count,
             limit,
+            also: also.iter().map(|a| a.to_string()).collect(),
+            square: false,
         })
     }
 }
@@ -249,22 +537,10 @@ mod tests {
     use super::*;
 
     const POS: [ArgSpec; 2] = [
-        ArgSpec {
-            name: "L1",
-            default: "0.12",
-            help: "",
-        },
-        ArgSpec {
-            name: "seed",
-            default: "7",
-            help: "",
-        },
+        ArgSpec::number("L1", "0.12", ""),
+        ArgSpec::number("seed", "7", ""),
     ];
-    const FLAGS: [ArgSpec; 1] = [ArgSpec {
-        name: "damping",
-        default: "0.05",
-        help: "",
-    }];
+    const FLAGS: [ArgSpec; 1] = [ArgSpec::number("damping", "0.05", "")];
 
     fn strings(v: &[&str]) -> Vec<String> {
         v.iter().map(|s| s.to_string()).collect()
@@ -310,6 +586,51 @@ mod tests {
             Err(RecipeError::NotFinite { .. })
         ));
         assert_eq!(parse_f64("x", " 1e-3 ").unwrap(), 1e-3);
+    }
+
+    #[test]
+    fn fields_check_their_own_text_by_kind_and_limits() {
+        let n = ArgSpec::integer("n", "24", "", 1, 1024);
+        assert_eq!(n.check_text("1e3"), Ok(1000.0));
+        assert_eq!(n.check_text("24.0"), Ok(24.0));
+        assert!(matches!(
+            n.check_text("2.5"),
+            Err(RecipeError::NotAnInteger { .. })
+        ));
+        assert!(matches!(
+            n.check_text("1e30"),
+            Err(RecipeError::OutOfRange { max, .. }) if max == 1024.0
+        ));
+        let dt = ArgSpec::number("dt", "0.02", "").limits(Bound::Excl(0.0), Bound::None);
+        assert!(matches!(
+            dt.check_text("0"),
+            Err(RecipeError::NotPositive { .. })
+        ));
+        assert_eq!(dt.check_text(" 1e-3 "), Ok(1e-3));
+        assert_eq!(dt.limits_text(), "more than 0, no upper limit");
+        let seed = ArgSpec::seed("seed", "7", "");
+        assert_eq!(seed.check_text("7.0"), Ok(7.0));
+        assert!(seed.check_text("-1").is_err());
+        let angles = ArgSpec::number("angles", "", "").kind(ArgKind::List { len: 3 });
+        assert_eq!(angles.check_text("0.1,0.2,0.3"), Ok(0.1));
+        assert!(matches!(
+            angles.check_text("1,2"),
+            Err(RecipeError::WrongCount { got: 2, .. })
+        ));
+        let choice =
+            ArgSpec::number("integrator", "euler", "").kind(ArgKind::Choice(&["euler", "rk4"]));
+        assert_eq!(choice.check_text("RK4"), Ok(0.0));
+        assert!(matches!(
+            choice.check_text("rk5"),
+            Err(RecipeError::BadChoice { .. })
+        ));
+        assert_eq!(
+            ArgSpec::number("L1", "", "")
+                .unit("m")
+                .limits(Bound::Incl(1e-6), Bound::Incl(10.0))
+                .limits_text(),
+            "from 0.000001 to 10 m"
+        );
     }
 
     #[test]

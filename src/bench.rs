@@ -116,7 +116,7 @@ fn kernel_pendulum(_: &[(String, String)]) -> Result<usize, RecipeError> {
         ..PendulumParams::default()
     };
     let steps = params.validate()?;
-    let mut pendulum = Pendulum::new(&params);
+    let mut pendulum = Pendulum::new(&params)?;
     let mut rows = 0;
     for _ in 0..steps {
         let row = pendulum.step();

@@ -5,6 +5,8 @@
 
 use std::fmt;
 
+use crate::pyfmt::{human, py_float};
+
 /// Everything a kernel, the argument parser or the CSV reader can reject.
 #[non_exhaustive]
 #[derive(Debug, Clone, PartialEq)]
@@ -33,10 +35,15 @@ pub enum RecipeError {
         max: f64,
     },
     /// The parameter would make `count` rows (or cells, iterations) — more than the tab allows.
+    /// `also` lists the other arguments of a cross-field limit (rows = span ÷ step: the step
+    /// is `param`, the span's arguments are `also`); `square` marks a square grid, whose
+    /// message speaks of `√count × √count` cells against `√limit × √limit`.
     TooLarge {
         param: String,
         count: u64,
         limit: u64,
+        also: Vec<String>,
+        square: bool,
     },
     /// A list parameter with the wrong number of items (e.g. DH joint angles).
     WrongCount {
@@ -91,7 +98,11 @@ impl RecipeError {
             NotAnInteger { .. } => "err-not-an-integer",
             NotFinite { .. } => "err-not-finite",
             NotPositive { .. } => "err-not-positive",
+            OutOfRange { min, .. } if min.is_infinite() => "err-too-big",
+            OutOfRange { max, .. } if max.is_infinite() => "err-too-small",
             OutOfRange { .. } => "err-out-of-range",
+            TooLarge { square: true, .. } => "err-grid-too-large",
+            TooLarge { also, .. } if !also.is_empty() => "err-too-many-rows",
             TooLarge { .. } => "err-too-large",
             WrongCount { .. } => "err-wrong-count",
             BadChoice { .. } => "err-bad-choice",
@@ -107,45 +118,70 @@ impl RecipeError {
         }
     }
 
-    /// The Fluent arguments of [`Self::message_id`], as strings (numbers already formatted).
+    /// The Fluent arguments of [`Self::message_id`], as strings (numbers already formatted as
+    /// a person writes them, see [`crate::pyfmt::human`]). Errors about an argument carry
+    /// `label`: here the argument's name; the UI replaces it with the field's localized label
+    /// ([`Self::message_args_labelled`]).
     pub fn message_args(&self) -> Vec<(&'static str, String)> {
+        self.message_args_labelled(&|name| name.to_string())
+    }
+
+    /// [`Self::message_args`] with `label` given by `label(argument name)`.
+    pub fn message_args_labelled(
+        &self,
+        label: &dyn Fn(&str) -> String,
+    ) -> Vec<(&'static str, String)> {
         use RecipeError::*;
-        let n = |v: &f64| crate::pyfmt::py_float(*v);
+        let n = |v: &f64| human(*v);
+        let c = |v: &u64| human(*v as f64);
+        let l = |p: &str| ("label", label(p));
         match self {
             UnknownRecipe { id } => vec![("id", id.clone())],
             UnknownFlag { flag } | MissingFlagValue { flag } => vec![("flag", flag.clone())],
             TooManyArgs { max, got } => vec![("max", max.to_string()), ("got", got.to_string())],
             NotANumber { param, value } | NotAnInteger { param, value } => {
-                vec![("param", param.clone()), ("value", value.clone())]
+                vec![l(param), ("value", value.clone())]
             }
-            NotFinite { param } => vec![("param", param.clone())],
-            NotPositive { param, value } => vec![("param", param.clone()), ("value", n(value))],
+            NotFinite { param } => vec![l(param)],
+            NotPositive { param, value } => vec![l(param), ("value", n(value))],
             OutOfRange {
                 param,
                 value,
                 min,
                 max,
+            } => {
+                let mut args = vec![l(param), ("value", n(value))];
+                if min.is_finite() {
+                    args.push(("min", n(min)));
+                }
+                if max.is_finite() {
+                    args.push(("max", n(max)));
+                }
+                args
+            }
+            TooLarge {
+                param,
+                count,
+                limit,
+                square: true,
+                ..
             } => vec![
-                ("param", param.clone()),
-                ("value", n(value)),
-                ("min", n(min)),
-                ("max", n(max)),
+                l(param),
+                ("side", side_text(*count)),
+                ("limit", side_text(*limit)),
             ],
             TooLarge {
                 param,
                 count,
                 limit,
-            } => vec![
-                ("param", param.clone()),
-                ("count", count.to_string()),
-                ("limit", limit.to_string()),
-            ],
+                ..
+            } => vec![l(param), ("count", c(count)), ("limit", c(limit))],
             WrongCount {
                 param,
                 expected,
                 got,
             } => vec![
-                ("param", param.clone()),
+                l(param),
                 ("expected", expected.to_string()),
                 ("got", got.to_string()),
             ],
@@ -154,13 +190,11 @@ impl RecipeError {
                 value,
                 choices,
             } => vec![
-                ("param", param.clone()),
+                l(param),
                 ("value", value.clone()),
                 ("choices", choices.clone()),
             ],
-            InputTooLarge { bytes, limit } => {
-                vec![("bytes", bytes.to_string()), ("limit", limit.to_string())]
-            }
+            InputTooLarge { bytes, limit } => vec![("bytes", c(bytes)), ("limit", c(limit))],
             CsvMissingColumn { column } => vec![("column", column.clone())],
             CsvNoJointColumns => vec![],
             CsvTooFewRows { rows, min } => {
@@ -183,8 +217,15 @@ impl RecipeError {
         }
     }
 
-    /// The parameter this error is about, if any (the UI puts the message beside that field).
+    /// The parameter this error is about, if any (the UI puts the message beside that field):
+    /// the first of [`Self::params`].
     pub fn param(&self) -> Option<&str> {
+        self.params().into_iter().next()
+    }
+
+    /// Every argument this error involves, the main one (the one to change) first: one for a
+    /// single-field limit, all of them for a cross-field limit (mark every field involved).
+    pub fn params(&self) -> Vec<&str> {
         use RecipeError::*;
         match self {
             NotANumber { param, .. }
@@ -192,18 +233,31 @@ impl RecipeError {
             | NotFinite { param }
             | NotPositive { param, .. }
             | OutOfRange { param, .. }
-            | TooLarge { param, .. }
             | WrongCount { param, .. }
-            | BadChoice { param, .. } => Some(param),
-            _ => None,
+            | BadChoice { param, .. } => vec![param.as_str()],
+            TooLarge { param, also, .. } => std::iter::once(param.as_str())
+                .chain(also.iter().map(String::as_str))
+                .collect(),
+            _ => Vec::new(),
         }
     }
+}
+
+/// The side of a square grid of `cells` cells, as a person writes it (`u64::MAX` stands for
+/// "too many to count").
+fn side_text(cells: u64) -> String {
+    if cells == u64::MAX {
+        return "∞".to_string();
+    }
+    let side = (cells as f64).sqrt().round();
+    human(side)
 }
 
 impl fmt::Display for RecipeError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         use RecipeError::*;
-        let n = crate::pyfmt::py_float;
+        let n = human;
+        let c = |v: u64| human(v as f64);
         match self {
             UnknownRecipe { id } => write!(f, "unknown recipe '{id}' (try bsv --help)"),
             UnknownFlag { flag } => write!(f, "unknown option '{flag}'"),
@@ -226,21 +280,54 @@ impl fmt::Display for RecipeError {
                 value,
                 min,
                 max,
-            } => write!(
-                f,
-                "{param}: {} is out of range [{}, {}]",
-                n(*value),
-                n(*min),
-                n(*max)
-            ),
+            } => {
+                let value = n(*value);
+                match (min.is_finite(), max.is_finite()) {
+                    (true, false) => {
+                        write!(f, "{param}: must be at least {} (it is {value})", n(*min))
+                    }
+                    (false, true) => {
+                        write!(f, "{param}: must be at most {} (it is {value})", n(*max))
+                    }
+                    _ => write!(
+                        f,
+                        "{param}: must be between {} and {} (it is {value})",
+                        n(*min),
+                        n(*max)
+                    ),
+                }
+            }
             TooLarge {
                 param,
                 count,
                 limit,
-            } => write!(
-                f,
-                "{param}: would need {count} rows/cells/iterations; the limit is {limit}"
-            ),
+                also,
+                square,
+            } => {
+                let names = std::iter::once(param.as_str())
+                    .chain(also.iter().map(String::as_str))
+                    .collect::<Vec<_>>()
+                    .join(", ");
+                if *square {
+                    let side = side_text(*count);
+                    let max = side_text(*limit);
+                    write!(
+                        f,
+                        "{names}: the grid would be {side} × {side} cells; the limit is {max} × {max}"
+                    )
+                } else {
+                    let count = if *count == u64::MAX {
+                        "too many".to_string()
+                    } else {
+                        c(*count)
+                    };
+                    write!(
+                        f,
+                        "{names}: would need {count} rows/cells/iterations; the limit is {}",
+                        c(*limit)
+                    )
+                }
+            }
             WrongCount {
                 param,
                 expected,
@@ -256,7 +343,12 @@ impl fmt::Display for RecipeError {
                 write!(f, "{param}: '{value}' is not one of {choices}")
             }
             InputTooLarge { bytes, limit } => {
-                write!(f, "input is {bytes} bytes; the limit is {limit} bytes")
+                write!(
+                    f,
+                    "input is {} bytes; the limit is {} bytes",
+                    c(*bytes),
+                    c(*limit)
+                )
             }
             CsvMissingColumn { column } => write!(f, "CSV must include a '{column}' column"),
             CsvNoJointColumns => write!(f, "CSV has no joint columns besides t_s"),
@@ -286,3 +378,112 @@ impl fmt::Display for RecipeError {
 }
 
 impl std::error::Error for RecipeError {}
+
+/// A run that finished and wrote its CSV, but whose result is probably not what was meant
+/// (the page shows it beside the result, the CLI on stderr; the CSV stays the recipe's).
+#[non_exhaustive]
+#[derive(Debug, Clone, PartialEq)]
+pub enum RecipeWarning {
+    /// A loop whose output grows without bound (finite, but far beyond the setpoint).
+    Diverged { peak: f64, final_value: f64 },
+    /// A loop whose output overflowed: not finite from step `step` (0-based row) on.
+    NotFinite { step: u64 },
+    /// The RRT did not reach the goal within its iteration budget.
+    GoalNotReached { iterations: u64 },
+    /// The RRT goal lies inside the obstacle: unreachable whatever the budget.
+    GoalInObstacle { x: f64, y: f64 },
+    /// The total energy of a damped pendulum grew (by `percent` %): the step is too large.
+    EnergyGrows { percent: f64 },
+    /// Too few point pairs for the fit error to mean anything.
+    FewPoints { n: u64 },
+}
+
+impl RecipeWarning {
+    /// The Fluent message id (in `locales/*/errors.ftl`).
+    pub fn message_id(&self) -> &'static str {
+        use RecipeWarning::*;
+        match self {
+            Diverged { .. } => "warn-diverged",
+            NotFinite { .. } => "warn-not-finite",
+            GoalNotReached { .. } => "warn-goal-not-reached",
+            GoalInObstacle { .. } => "warn-goal-in-obstacle",
+            EnergyGrows { .. } => "warn-energy-grows",
+            FewPoints { .. } => "warn-few-points",
+        }
+    }
+
+    /// The Fluent arguments of [`Self::message_id`], numbers as a person writes them.
+    pub fn message_args(&self) -> Vec<(&'static str, String)> {
+        use RecipeWarning::*;
+        let g = |v: f64| significant(v);
+        match self {
+            Diverged { peak, final_value } => vec![("peak", g(*peak)), ("final", g(*final_value))],
+            NotFinite { step } => vec![("step", human(*step as f64))],
+            GoalNotReached { iterations } => vec![("iterations", human(*iterations as f64))],
+            GoalInObstacle { x, y } => vec![("x", human(*x)), ("y", human(*y))],
+            EnergyGrows { percent } => vec![("percent", significant(*percent))],
+            FewPoints { n } => vec![("n", n.to_string())],
+        }
+    }
+}
+
+/// A measured value for a message: 4 significant digits, grouped, no exponent below 1e21.
+fn significant(x: f64) -> String {
+    if !x.is_finite() {
+        return py_float(x);
+    }
+    let a = x.abs();
+    if a >= 1e4 {
+        return human(x.round());
+    }
+    if a == 0.0 {
+        return "0".to_string();
+    }
+    let decimals = (3 - a.log10().floor() as i32).clamp(0, 12) as usize;
+    let text = format!("{x:.decimals$}");
+    let text = if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    };
+    text
+}
+
+impl fmt::Display for RecipeWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use RecipeWarning::*;
+        match self {
+            Diverged { peak, final_value } => write!(
+                f,
+                "warning: the loop is unstable: the output grows without bound (largest size {}, final value {})",
+                significant(*peak),
+                significant(*final_value)
+            ),
+            NotFinite { step } => write!(
+                f,
+                "warning: the loop blew up: the output is not finite from step {} on",
+                human(*step as f64)
+            ),
+            GoalNotReached { iterations } => write!(
+                f,
+                "warning: the goal was not reached within {} iterations (the path file is empty)",
+                human(*iterations as f64)
+            ),
+            GoalInObstacle { x, y } => write!(
+                f,
+                "warning: the goal ({}, {}) is inside the obstacle and can never be reached",
+                human(*x),
+                human(*y)
+            ),
+            EnergyGrows { percent } => write!(
+                f,
+                "warning: the total energy grew by {} % although damping never adds energy (time step too large?)",
+                significant(*percent)
+            ),
+            FewPoints { n } => write!(
+                f,
+                "warning: only {n} point pairs: the fit is exact for any noise"
+            ),
+        }
+    }
+}

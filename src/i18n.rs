@@ -552,6 +552,8 @@ mod tests {
                 param: p(),
                 count: 4_000_000,
                 limit: 1_000_000,
+                also: vec![],
+                square: false,
             },
             WrongCount {
                 param: "angles".into(),

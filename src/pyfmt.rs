@@ -4,6 +4,82 @@
 //! decimal exponent is in `[-4, 16)` and scientific otherwise (`5e-05`, `1e+16`); integral values
 //! keep `.0`. Rust's `{}` and `{:e}` give the same shortest digits, so only the layout differs.
 
+/// A number as a person writes it, for messages and hints (not for CSV): whole numbers with
+/// thousands separators (`1,000,000`), others in plain decimals without an exponent
+/// (`0.000001`, `0.12`), `-` for negatives. 2^63 (i64's bound as f64) reads as i64::MAX.
+///
+/// # Example
+/// ```
+/// use bsv_playground::pyfmt::human;
+/// assert_eq!(human(1e6), "1,000,000");
+/// assert_eq!(human(1e-6), "0.000001");
+/// assert_eq!(human(-0.05), "-0.05");
+/// assert_eq!(human(1000000.0), "1,000,000");
+/// assert_eq!(human(9.223372036854776e18), "9,223,372,036,854,775,807");
+/// assert_eq!(human(1e-300), "1 × 10⁻³⁰⁰");
+/// assert_eq!(human(-1.5e30), "-1.5 × 10³⁰");
+/// ```
+pub fn human(x: f64) -> String {
+    if !x.is_finite() {
+        return py_float(x);
+    }
+    let sign = if x < 0.0 { "-" } else { "" };
+    let a = x.abs();
+    if a == 9_223_372_036_854_775_808.0 {
+        return format!("{sign}{}", group_digits(&i64::MAX.to_string()));
+    }
+    if a.fract() == 0.0 && a < 1e21 {
+        return format!("{sign}{}", group_digits(&format!("{a:.0}")));
+    }
+    if !(1e-9..1e21).contains(&a) {
+        // Tiny or huge: plain digits would be unreadable; "1.5 × 10⁻¹²" reads as written.
+        return format!("{sign}{}", power_of_ten(a));
+    }
+    let text = format!("{a}");
+    let (int, frac) = text.split_once('.').unwrap_or((&text, ""));
+    let int = group_digits(int);
+    if frac.is_empty() {
+        format!("{sign}{int}")
+    } else {
+        format!("{sign}{int}.{frac}")
+    }
+}
+
+/// `a` (positive, finite) as `m × 10ⁿ` with the shortest round-trip mantissa.
+fn power_of_ten(a: f64) -> String {
+    let text = format!("{a:e}");
+    let (mantissa, exp) = text.split_once('e').unwrap_or((&text, "0"));
+    let sup: String = exp
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            '0' => '⁰',
+            '1' => '¹',
+            '2' => '²',
+            '3' => '³',
+            '4' => '⁴',
+            '5' => '⁵',
+            '6' => '⁶',
+            '7' => '⁷',
+            '8' => '⁸',
+            '9' => '⁹',
+            other => other,
+        })
+        .collect();
+    format!("{mantissa} × 10{sup}")
+}
+
+fn group_digits(digits: &str) -> String {
+    let mut out = String::with_capacity(digits.len() + digits.len() / 3);
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i) % 3 == 0 {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
 /// `repr(x)` for a Python float.
 ///
 /// # Example

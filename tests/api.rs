@@ -3,7 +3,9 @@
 //! stepping handles reproduce the recipes' reference runs.
 #![cfg(target_arch = "wasm32")]
 
-use bsv_playground::api::{list_recipes, run_recipe, PendulumHandle, RrtHandle};
+use bsv_playground::api::{
+    list_recipes, plan_recipe, run_recipe, run_recipe_with_progress, PendulumHandle, RrtHandle,
+};
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
@@ -46,6 +48,86 @@ fn list_recipes_describes_all_twelve() {
     let args = js_sys::Array::from(&js_sys::Reflect::get(&first, &"args".into()).unwrap());
     let default = js_sys::Reflect::get(&args.get(0), &"default".into()).unwrap();
     assert_eq!(default.as_string().as_deref(), Some("5"));
+}
+
+fn get(v: &JsValue, key: &str) -> JsValue {
+    js_sys::Reflect::get(v, &key.into()).unwrap()
+}
+
+#[test]
+fn list_recipes_exposes_the_facts() {
+    let list = js_sys::Array::from(&list_recipes().unwrap());
+    // manip-grid (10th): n is an integer from 1 to 1024 with a hint; the page is ik-2r.
+    let manip = list.get(9);
+    assert_eq!(get(&manip, "id").as_string().as_deref(), Some("manip-grid"));
+    assert_eq!(get(&manip, "page").as_string().as_deref(), Some("ik-2r"));
+    assert_eq!(
+        get(&manip, "quirksId").as_string().as_deref(),
+        Some("recipe-manip-grid-quirks")
+    );
+    let args = js_sys::Array::from(&get(&manip, "args"));
+    let l1 = args.get(0);
+    assert_eq!(get(&l1, "unit").as_string().as_deref(), Some("m"));
+    assert_eq!(get(&get(&l1, "max"), "value").as_f64(), Some(10.0));
+    let n = args.get(2);
+    assert_eq!(get(&n, "kind").as_string().as_deref(), Some("integer"));
+    assert_eq!(get(&get(&n, "min"), "value").as_f64(), Some(1.0));
+    assert_eq!(get(&get(&n, "max"), "value").as_f64(), Some(1024.0));
+    assert_eq!(get(&get(&n, "max"), "inclusive").as_bool(), Some(true));
+    assert_eq!(
+        get(&n, "hintId").as_string().as_deref(),
+        Some("recipe-manip-grid-hint-n")
+    );
+    assert_eq!(
+        get(&n, "labelId").as_string().as_deref(),
+        Some("recipe-manip-grid-arg-n")
+    );
+    // pendulum-energy's integrator is a choice.
+    let flags = js_sys::Array::from(&get(&list.get(0), "flags"));
+    let integrator = flags.get(6);
+    assert_eq!(
+        get(&integrator, "kind").as_string().as_deref(),
+        Some("choice")
+    );
+    assert_eq!(
+        js_sys::Array::from(&get(&integrator, "choices")).length(),
+        2
+    );
+    assert!(get(&integrator, "min").is_null() || get(&integrator, "min").is_undefined());
+}
+
+#[test]
+fn progress_runs_match_plain_runs_and_report_up_to_the_plan() {
+    let args = strings(&["0.12", "0.10", "64"]);
+    let plain = run_recipe("manip-grid", args.clone(), None).unwrap();
+    let calls = js_sys::Array::new();
+    let keep = calls.clone();
+    let cb = wasm_bindgen::closure::Closure::<dyn FnMut(f64, f64)>::new(move |d: f64, t: f64| {
+        keep.push(&js_sys::Array::of2(&d.into(), &t.into()));
+    });
+    let tracked = run_recipe_with_progress(
+        "manip-grid",
+        args.clone(),
+        None,
+        cb.as_ref().unchecked_ref(),
+    )
+    .unwrap();
+    let text = |v: &JsValue| {
+        let files = js_sys::Array::from(&get(v, "files"));
+        get(&files.get(0), "text").as_string().unwrap()
+    };
+    assert_eq!(text(&plain), text(&tracked));
+    assert_eq!(plan_recipe("manip-grid", args, None).unwrap(), 4096.0);
+    let last = js_sys::Array::from(&calls.get(calls.length() - 1));
+    assert_eq!(last.get(0).as_f64(), Some(4096.0));
+    assert!(calls.length() <= 102, "{}", calls.length());
+    // Warnings come with the run.
+    let run = run_recipe("pid-step", strings(&["1e9"]), None).unwrap();
+    let warnings = js_sys::Array::from(&get(&run, "warnings"));
+    assert_eq!(
+        get(&warnings.get(0), "id").as_string().as_deref(),
+        Some("warn-not-finite")
+    );
 }
 
 #[test]

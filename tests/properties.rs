@@ -9,10 +9,11 @@
 //!   CSV path agreeing;
 //! - FK(IK(p)) = p inside the reachable annulus of a planar 2R arm, for both elbow branches.
 //!
-//! Recipes that still return the placeholder error (`UnknownRecipe` for their own id) are
-//! skipped until their kernel lands. Case counts keep the whole file to a few seconds.
-
-use std::sync::OnceLock;
+//! - `plan` (parse + validate, no run) fails exactly when the run fails, with the same error,
+//!   and a run with progress gives the very same output as one without, its reports rising
+//!   to `total` in at most ~100 steps.
+//!
+//! All twelve recipes are tested. Case counts keep the whole file to a few seconds.
 
 use bsv_playground::planar2r::{Arm, Elbow};
 use bsv_playground::recipes::{
@@ -21,22 +22,6 @@ use bsv_playground::recipes::{
 };
 use bsv_playground::RecipeError;
 use proptest::prelude::*;
-
-/// Whether each recipe of `RECIPES` has landed (its defaults do not give the placeholder error).
-fn landed() -> &'static [bool] {
-    static LANDED: OnceLock<Vec<bool>> = OnceLock::new();
-    LANDED.get_or_init(|| {
-        RECIPES
-            .iter()
-            .map(|r| {
-                !matches!(
-                    recipes::run(r.info.id, &[]),
-                    Err(RecipeError::UnknownRecipe { ref id }) if id == r.info.id
-                )
-            })
-            .collect()
-    })
-}
 
 /// `cases` cases; failures are reported with their minimal input, not persisted to a file.
 fn config(cases: u32) -> ProptestConfig {
@@ -152,15 +137,22 @@ proptest! {
             }
             raw.push(value);
         }
+        let plan = recipes::plan(info.id, &raw, Vec::new());
         match run(info.id, &raw) {
-            Ok(out) => check_output(info.id, &out, info.writes)?,
+            Ok(out) => {
+                check_output(info.id, &out, info.writes)?;
+                prop_assert!(plan.is_ok(), "{}: plan {plan:?} but the run is Ok", info.id);
+            }
             Err(e) => {
-                // Every error renders, and one naming a parameter names a real one.
+                // Every error renders, and one naming parameters names real ones.
                 prop_assert!(!e.to_string().is_empty());
-                if let Some(param) = e.param() {
+                prop_assert_eq!(e.param(), e.params().first().copied());
+                for param in e.params() {
                     let known = info.args.iter().chain(info.flags).any(|a| a.name == param);
                     prop_assert!(known || param == "out", "{}: unknown param {param} in {e}", info.id);
                 }
+                // plan rejects what the run rejects, with the same error.
+                prop_assert_eq!(plan, Err(e));
             }
         }
     }
@@ -198,7 +190,6 @@ proptest! {
         index in 0..RECIPES.len(),
         factors in prop::collection::vec((0.5f64..1.5, any::<bool>()), 13),
     ) {
-        prop_assume!(landed()[index]);
         let info = RECIPES[index].info;
         // Pass a prefix of the positional arguments, up to the first non-numeric default
         // (a path, a choice), varying each numeric one or leaving its default text.
@@ -397,5 +388,38 @@ proptest! {
             prop_assert!((fx - x).abs() <= tol && (fy - y).abs() <= tol,
                 "{elbow:?}: fk(ik({x}, {y})) = ({fx}, {fy})");
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(config(24))]
+
+    #[test]
+    fn progress_never_changes_the_output(
+        index in 0..RECIPES.len(),
+        factors in prop::collection::vec((0.5f64..1.5, any::<bool>()), 13),
+    ) {
+        let info = RECIPES[index].info;
+        let mut raw = Vec::new();
+        for (spec, (factor, vary)) in info.args.iter().zip(&factors) {
+            if !numeric_default(spec.default) {
+                break;
+            }
+            raw.push(if *vary { scaled(spec.default, *factor) } else { spec.default.to_string() });
+        }
+        let plain = run(info.id, &raw).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let mut reports: Vec<(u64, u64)> = Vec::new();
+        let tracked = recipes::run_with_progress(info.id, &raw, Vec::new(), &mut |d, t| {
+            reports.push((d, t));
+        })
+        .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert_eq!(&plain, &tracked);
+        let total = recipes::plan(info.id, &raw, Vec::new())
+            .map_err(|e| TestCaseError::fail(e.to_string()))?
+            .rows
+            .max(1);
+        prop_assert!(reports.len() <= 102, "{}: {} reports", info.id, reports.len());
+        prop_assert_eq!(reports.last().copied(), Some((total, total)));
+        prop_assert!(reports.windows(2).all(|w| w[0].0 <= w[1].0 && w[0].1 == w[1].1));
     }
 }

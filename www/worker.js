@@ -42,6 +42,7 @@ self.onmessage = async ({ data }) => {
   const files = out.files.map((f) => ({
     name: f.name,
     bytes: f.data.byteLength,
+    rows: f.rows,
     head: f.head,
     blob: new Blob([f.data], { type: 'text/csv' }),
   }));

@@ -15,3 +15,4 @@ home-card-cli = Command line
 home-card-python = Python original
 home-card-drill = Run this drill
 home-card-in-browser = In the browser:
+home-card-pairs-ik-2r = Pairs with our IK playground (the one the BSV seed calls the “IK Field Lab”): drag the arm there and watch |det J| change.

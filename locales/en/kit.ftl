@@ -1,5 +1,30 @@
 # Messages of the page kit's widgets (src/ui/kit). Ids start with `kit-`.
 
+## URL state notice (kit::url_state)
+kit-url-unknown = This link asked for settings this page does not have, so they were ignored: { $keys }.
+kit-url-invalid = These settings in the link could not be used and kept their defaults: { $keys }.
+
+## Stepper (kit::stepper)
+kit-stepper-label = Step through
+kit-stepper-start = Jump to the start (Home)
+kit-stepper-back = One step back (← or Page Up)
+kit-stepper-run = Play (Space)
+kit-stepper-pause = Pause (Space)
+kit-stepper-step = One step forward (→ or Page Down)
+kit-stepper-end = Jump to the end (End)
+kit-stepper-reset = Start over (R)
+kit-stepper-speed = Speed
+kit-stepper-speed-rate = { $rate } steps / s
+kit-stepper-speed-max = As fast as possible
+kit-stepper-scrub = Position
+kit-stepper-position = Step { $index } of { $len }
+kit-stepper-position-open = Step { $index }
+kit-stepper-key-step = One step forward
+kit-stepper-key-back = One step back (exact)
+kit-stepper-key-run = Play or pause
+kit-stepper-key-ends = Jump to the start / the end
+kit-stepper-key-reset = Start over
+
 ## Progress panel of a long run (kit::progress)
 kit-progress-label = Progress of the run
 kit-progress-starting = Starting…

@@ -4,6 +4,8 @@
 app-name = BSV Playground
 app-subtitle = Robotics drills that run in your browser
 
+skip-to-content = Skip to content
+
 nav-label = Pages
 nav-home = Home
 
@@ -20,7 +22,7 @@ overlay-close = Close
 overlay-shell-heading = Everywhere
 overlay-page-heading = On this page
 overlay-page-none = This page has no keys of its own.
-overlay-note = Keys do nothing while you are typing in a field. Page Up / Page Down, the arrow keys, B and . are left to the page and to presenter remotes.
+overlay-note = Everywhere keys do nothing while you type in a field. Page keys work while the page or its drawing has focus, not while a button, link or field has it (click the page first). Keys a page does not list, such as Page Up / Page Down, B and . from a presenter remote, stay with the browser and the presentation software.
 key-help = Show or hide this list
 key-projector = Projector mode on or off
 key-lang = Switch between English and Japanese

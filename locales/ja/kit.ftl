@@ -1,3 +1,30 @@
+# ページキットの部品（src/ui/kit）のメッセージ。ID は `kit-` で始まる。
+
+## URL の状態の通知（kit::url_state）
+kit-url-unknown = このリンクには、このページにない設定が含まれていたため無視しました：{ $keys }。
+kit-url-invalid = リンクの次の設定は使えなかったため、既定値のままです：{ $keys }。
+
+## ステッパー（kit::stepper）
+kit-stepper-label = ステップ実行
+kit-stepper-start = 最初へ（Home）
+kit-stepper-back = 1 ステップ戻る（← または Page Up）
+kit-stepper-run = 再生（Space）
+kit-stepper-pause = 一時停止（Space）
+kit-stepper-step = 1 ステップ進む（→ または Page Down）
+kit-stepper-end = 最後へ（End）
+kit-stepper-reset = 最初からやり直す（R）
+kit-stepper-speed = 速さ
+kit-stepper-speed-rate = 毎秒 { $rate } ステップ
+kit-stepper-speed-max = できるだけ速く
+kit-stepper-scrub = 位置
+kit-stepper-position = { $len } ステップ中 { $index }
+kit-stepper-position-open = ステップ { $index }
+kit-stepper-key-step = 1 ステップ進む
+kit-stepper-key-back = 1 ステップ戻る（正確に）
+kit-stepper-key-run = 再生・一時停止
+kit-stepper-key-ends = 最初へ／最後へ
+kit-stepper-key-reset = 最初からやり直す
+
 # ページキットの部品（src/ui/kit）のメッセージ。ID は `kit-` で始めます。
 
 ## 長い実行の進捗パネル（kit::progress）

@@ -4,6 +4,8 @@
 app-name = BSV Playground
 app-subtitle = ブラウザで動くロボット工学ドリル
 
+skip-to-content = 本文へ移動
+
 nav-label = ページ
 nav-home = ホーム
 
@@ -20,7 +22,7 @@ overlay-close = 閉じる
 overlay-shell-heading = どのページでも
 overlay-page-heading = このページ
 overlay-page-none = このページ専用のキーはありません。
-overlay-note = 入力欄に文字を入力している間は、キー操作は働きません。Page Up / Page Down、矢印キー、B、. はページとプレゼンター用リモコンのために空けてあります。
+overlay-note = 「どこでも」のキーは、入力欄に文字を入力している間は働きません。ページのキーは、ページ本体または図にフォーカスがあるときだけ働き、ボタン・リンク・入力欄にフォーカスがあるときは働きません（先にページをクリックしてください）。ページが一覧に載せていないキー（プレゼンター用リモコンの Page Up / Page Down、B、. など）は、ブラウザーとプレゼンテーションソフトに任せます。
 key-help = この一覧を表示する／閉じる
 key-projector = プロジェクターモードの切り替え
 key-lang = 英語と日本語の切り替え

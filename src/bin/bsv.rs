@@ -14,10 +14,9 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use bsv_playground::args::ArgKind;
+use bsv_playground::pyfmt::human;
 use bsv_playground::recipes::{self, Recipe, RecipeOutput};
-
-/// Recipes whose positional argument at this index is a path to an input file.
-const INPUT_PATH_ARGS: &[(&str, usize)] = &[("traj-resample", 0)];
 
 /// Input files larger than the kernel accepts are refused before reading.
 use bsv_playground::recipes::traj_resample::MAX_INPUT_BYTES;
@@ -76,6 +75,9 @@ fn cli(raw: &[String]) -> Result<(), Failure> {
         .map_err(|e| Failure::Usage(format!("{id}: {e}")))?;
     write_files(&out_dir, &output)?;
     println!("{}", output.summary);
+    for warning in &output.warnings {
+        eprintln!("bsv: {id}: {warning}");
+    }
     Ok(())
 }
 
@@ -99,14 +101,14 @@ fn split_out_dir(args: &[String]) -> Result<(Vec<String>, PathBuf), String> {
     Ok((rest, out))
 }
 
-/// Reads the files that path arguments name, so the kernel gets their text.
+/// Reads the files that path arguments (`ArgKind::File` in the recipe's facts) name, so the
+/// kernel gets their text.
 fn read_inputs(recipe: &Recipe, args: &[String]) -> Result<Vec<(String, String)>, Failure> {
     let mut inputs = Vec::new();
+    let id = recipe.info.id;
     let positional: Vec<&String> = args.iter().filter(|a| !a.starts_with("--")).collect();
-    for &(id, index) in INPUT_PATH_ARGS {
-        if id != recipe.info.id {
-            continue;
-        }
+    let file_args = recipe.info.args.iter().enumerate();
+    for (index, _) in file_args.filter(|(_, a)| a.kind == ArgKind::File) {
         let Some(path) = positional.get(index).filter(|p| !p.is_empty()) else {
             continue;
         };
@@ -114,7 +116,9 @@ fn read_inputs(recipe: &Recipe, args: &[String]) -> Result<Vec<(String, String)>
         let len = fs::metadata(path.as_str()).map_err(fail)?.len();
         if len > MAX_INPUT_BYTES {
             return Err(Failure::Usage(format!(
-                "{id}: '{path}' is {len} bytes; the limit is {MAX_INPUT_BYTES} bytes"
+                "{id}: '{path}' is {} bytes; the limit is {} bytes",
+                human(len as f64),
+                human(MAX_INPUT_BYTES as f64)
             )));
         }
         let bytes = fs::read(path.as_str()).map_err(fail)?;
@@ -204,20 +208,22 @@ fn recipe_help(recipe: &Recipe) -> String {
     );
     for a in info.args {
         s.push_str(&format!(
-            "  {:<14} {} (default {})\n",
+            "  {:<14} {} (default {}; {})\n",
             a.name,
             a.help,
-            show_default(a.default)
+            show_default(a.default),
+            a.limits_text()
         ));
     }
     if !info.flags.is_empty() {
         s.push_str("\noptions (beyond the Python recipe):\n");
         for f in info.flags {
             s.push_str(&format!(
-                "  --{:<12} {} (default {})\n",
+                "  --{:<12} {} (default {}; {})\n",
                 f.name,
                 f.help,
-                show_default(f.default)
+                show_default(f.default),
+                f.limits_text()
             ));
         }
     }

@@ -15,8 +15,8 @@
 //!   every coefficient finite;
 //! - at most [`MAX_ROWS`] samples.
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, ArgSpec, Args};
+use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::pyfmt::{py_float, CsvText};
@@ -36,26 +36,22 @@ pub const FILE_NAME: &str = "cubic_path.csv";
 const HEADER: [&str; 4] = ["t_s", "q", "qd", "qdd"];
 
 const ARGS: [ArgSpec; 4] = [
-    ArgSpec {
-        name: "q0",
-        default: "0.0",
-        help: "start joint angle, rad",
-    },
-    ArgSpec {
-        name: "q1",
-        default: "1.2",
-        help: "end joint angle, rad",
-    },
-    ArgSpec {
-        name: "T",
-        default: "1.0",
-        help: "move duration, s",
-    },
-    ArgSpec {
-        name: "dt",
-        default: "0.02",
-        help: "sample period, s",
-    },
+    ArgSpec::number("q0", "0.0", "start joint angle, rad")
+        .unit("rad")
+        .limits(Bound::Incl(-ANGLE_MAX_RAD), Bound::Incl(ANGLE_MAX_RAD))
+        .hint("recipe-cubic-path-hint-q0"),
+    ArgSpec::number("q1", "1.2", "end joint angle, rad")
+        .unit("rad")
+        .limits(Bound::Incl(-ANGLE_MAX_RAD), Bound::Incl(ANGLE_MAX_RAD))
+        .hint("recipe-cubic-path-hint-q1"),
+    ArgSpec::number("T", "1.0", "move duration, s")
+        .unit("s")
+        .limits(Bound::Incl(DURATION_MIN_S), Bound::Incl(DURATION_MAX_S))
+        .hint("recipe-cubic-path-hint-T"),
+    ArgSpec::number("dt", "0.02", "sample period, s")
+        .unit("s")
+        .limits(Bound::Excl(0.0), Bound::None)
+        .hint("recipe-cubic-path-hint-dt"),
 ];
 
 /// `cubic-path`: id, Python file, arguments with the recipe's defaults, output file.
@@ -65,6 +61,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[FILE_NAME],
+    quirks_id: "recipe-cubic-path-quirks",
+    plan: plan_of::<Entry>,
+    page: None,
 };
 
 /// Parameters of the path (the recipe's defaults: 0.0 → 1.2 rad in 1.0 s, dt 0.02 s).
@@ -97,6 +96,11 @@ impl CubicParams {
         self.times().map(|_| ())
     }
 
+    /// Samples of the path, `len(np.arange(0, T + 1e-12, dt))` (before validation).
+    pub fn rows(&self) -> f64 {
+        numpy::arange_len(0.0, self.duration_s + 1e-12, self.dt_s)
+    }
+
     /// Validates and returns the sample times.
     fn times(&self) -> Result<Vec<f64>, RecipeError> {
         for (param, q) in [("q0", self.q0), ("q1", self.q1)] {
@@ -108,6 +112,7 @@ impl CubicParams {
         in_range("T", self.duration_s, DURATION_MIN_S, DURATION_MAX_S)?;
         finite("dt", self.dt_s)?;
         positive("dt", self.dt_s)?;
+        rows_within("dt", &["T"], self.rows(), MAX_ROWS)?;
         numpy::arange(0.0, self.duration_s + 1e-12, self.dt_s, "dt", MAX_ROWS)
     }
 }
@@ -140,18 +145,31 @@ pub struct CubicPath {
 /// assert_eq!(path.summary(), "wrote 51 cubic samples q0=0.0→q1=1.2 T=1.0s -> cubic_path.csv");
 /// ```
 pub fn compute(params: &CubicParams) -> Result<CubicPath, RecipeError> {
+    compute_with(params, &mut Progress::silent())
+}
+
+/// [`compute`] reporting its rows as the first half of `progress`.
+pub fn compute_with(
+    params: &CubicParams,
+    progress: &mut Progress,
+) -> Result<CubicPath, RecipeError> {
     let ts = params.times()?;
+    let n = ts.len() as u64;
     let (q0, q1, big_t) = (params.q0, params.q1, params.duration_s);
     let (a0, a1) = (q0, 0.0);
     let a2 = 3.0 * (q1 - q0) / (big_t * big_t);
     let a3 = -2.0 * (q1 - q0) / (big_t * big_t * big_t);
     let samples = ts
         .into_iter()
-        .map(|t| CubicSample {
-            t,
-            q: a0 + a1 * t + a2 * t * t + a3 * t * t * t,
-            qd: a1 + 2.0 * a2 * t + 3.0 * a3 * t * t,
-            qdd: 2.0 * a2 + 6.0 * a3 * t,
+        .enumerate()
+        .map(|(k, t)| {
+            progress.phase_at(0, 2, k as u64, n);
+            CubicSample {
+                t,
+                q: a0 + a1 * t + a2 * t * t + a3 * t * t * t,
+                qd: a1 + 2.0 * a2 * t + 3.0 * a3 * t * t,
+                qdd: 2.0 * a2 + 6.0 * a3 * t,
+            }
         })
         .collect();
     Ok(CubicPath {
@@ -165,8 +183,15 @@ pub fn compute(params: &CubicParams) -> Result<CubicPath, RecipeError> {
 impl CubicPath {
     /// `cubic_path.csv` exactly as the recipe writes it.
     pub fn to_csv(&self) -> String {
+        self.to_csv_with(&mut Progress::silent())
+    }
+
+    /// [`Self::to_csv`] reporting its rows as the second half of `progress`.
+    pub fn to_csv_with(&self, progress: &mut Progress) -> String {
         let mut csv = CsvText::with_header(&HEADER);
-        for s in &self.samples {
+        let n = self.samples.len() as u64;
+        for (k, s) in self.samples.iter().enumerate() {
+            progress.phase_at(1, 2, k as u64, n);
             csv.floats(&[s.t, s.q, s.qd, s.qdd]);
         }
         csv.finish()
@@ -184,24 +209,48 @@ impl CubicPath {
     }
 }
 
-/// Parses the recipe's arguments.
+/// Parses the recipe's arguments and validates them.
 pub fn params_from_args(args: &Args) -> Result<CubicParams, RecipeError> {
-    Ok(CubicParams {
+    let params = CubicParams {
         q0: args.f64(0, &ARGS[0])?,
         q1: args.f64(1, &ARGS[1])?,
         duration_s: args.f64(2, &ARGS[2])?,
         dt_s: args.f64(3, &ARGS[3])?,
-    })
+    };
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = CubicParams;
+
+    fn params(args: &Args) -> Result<CubicParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(params: &CubicParams, _args: &Args) -> Result<Plan, RecipeError> {
+        Ok(Plan {
+            rows: params.rows() as u64,
+        })
+    }
+
+    fn run(
+        params: &CubicParams,
+        _args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        let path = compute_with(params, progress)?;
+        let csv = path.to_csv_with(progress);
+        Ok(RecipeOutput::single(FILE_NAME, csv, path.summary()))
+    }
 }
 
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    let path = compute(&params_from_args(args)?)?;
-    Ok(RecipeOutput::single(
-        FILE_NAME,
-        path.to_csv(),
-        path.summary(),
-    ))
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]
@@ -212,13 +261,11 @@ mod tests {
 
     use super::*;
     use crate::recipes::run_strs;
+    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
 
     #[test]
     fn defaults_in_one_place() {
-        assert_eq!(
-            params_from_args(&Args::default()).unwrap(),
-            CubicParams::default()
-        );
+        assert_defaults_in_one_place::<Entry>();
     }
 
     #[test]
@@ -262,9 +309,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            let e = run_strs(INFO.id, raw).unwrap_err();
-            assert!(ok(&e), "{raw:?}: {e:?}");
-            assert_eq!(e.param(), Some(param), "{raw:?}");
+            assert_rejects(INFO.id, raw, param, ok)
         };
         use RecipeError as E;
         check(&["0", "1", "0"], "T", |e| {

@@ -21,8 +21,8 @@
 
 use nalgebra::{Matrix3, Matrix4};
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::{finite, parse_f64, ArgSpec, Args};
+use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{finite, parse_f64, ArgKind, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy::matmul;
 use crate::pyfmt::{fixed, Cell, CsvText};
@@ -81,11 +81,14 @@ pub const DEMO_CHAIN: [MdhLink; JOINTS] = [
     },
 ];
 
-const ARGS: [ArgSpec; 1] = [ArgSpec {
-    name: "angles",
-    default: "0.2,0.4,-0.3",
-    help: "joint angles q1,q2,q3 in radians, comma-separated",
-}];
+const ARGS: [ArgSpec; 1] = [ArgSpec::number(
+    "angles",
+    "0.2,0.4,-0.3",
+    "joint angles q1,q2,q3 in radians, comma-separated",
+)
+.kind(ArgKind::List { len: JOINTS })
+.unit("rad")
+.hint("recipe-dh-fk-hint-angles")];
 
 /// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
@@ -94,6 +97,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[CSV_NAME],
+    quirks_id: "recipe-dh-fk-quirks",
+    plan: plan_of::<Entry>,
+    page: None,
 };
 
 /// The link transform `T_mdh(α, a, d, θ)`, entry for entry as the recipe builds it.
@@ -260,9 +266,41 @@ pub fn run(params: &DhParams) -> Result<RecipeOutput, RecipeError> {
     Ok(RecipeOutput::single(CSV_NAME, csv.finish(), summary))
 }
 
+/// Reads the positional argument and validates it.
+pub fn params_from_args(args: &Args) -> Result<DhParams, RecipeError> {
+    let params = DhParams::from_args(args)?;
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = DhParams;
+
+    fn params(args: &Args) -> Result<DhParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(_params: &DhParams, _args: &Args) -> Result<Plan, RecipeError> {
+        Ok(Plan {
+            rows: JOINTS as u64 + 1,
+        })
+    }
+
+    fn run(
+        params: &DhParams,
+        _args: &Args,
+        _progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        run(params)
+    }
+}
+
 /// Entry point for the CLI and `runRecipe`.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    run(&DhParams::from_args(args)?)
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]

@@ -16,10 +16,10 @@
 //!   Python; tiny links make `c2` NaN and print `nan` rows);
 //! - `half_mm` must lie in `[0, HALF_MAX_MM]` (a negative half-extent gives an empty grid);
 //! - `step_mm` must be > 0 (Python divides by zero or builds an empty grid) and the grid may
-//!   hold at most [`MAX_CELLS`] cells.
+//!   hold at most [`MAX_AXIS_SAMPLES`] × [`MAX_AXIS_SAMPLES`] cells.
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, within_limit, ArgSpec, Args};
+use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{finite, in_range, positive, within_limit, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{Arm, Elbow};
@@ -27,8 +27,10 @@ use crate::pyfmt::{Cell, CsvText};
 
 /// Shortest link accepted by the 2R recipes, metres: keeps `2 L1 L2` far from underflow.
 pub const LINK_MIN_M: f64 = 1e-6;
-/// Longest link accepted by the 2R recipes, metres: keeps `J Jᵀ` and `x²` far from overflow.
-pub const LINK_MAX_M: f64 = 1e6;
+/// Longest link accepted by the 2R recipes, metres. A classroom or industrial arm is far
+/// below 10 m; the IK playground and the drills page state this one limit (it also keeps
+/// `J Jᵀ` and `x²` far from overflow).
+pub const LINK_MAX_M: f64 = 10.0;
 /// Largest grid half-extent, mm (1 km): beyond it nothing about a tabletop arm is left to see.
 pub const HALF_MAX_MM: f64 = 1e6;
 /// Most samples per axis: 1001 (e.g. half 500 mm at 1 mm steps).
@@ -43,31 +45,27 @@ const HEADER: [&str; 6] = ["x_mm", "y_mm", "reachable", "q1_rad", "q2_rad", "fk_
 
 /// `L1` and `L2` as all three 2R recipes take them (positional arguments 0 and 1).
 pub(crate) const LINK_ARGS: [ArgSpec; 2] = [
-    ArgSpec {
-        name: "L1",
-        default: "0.12",
-        help: "upper link length, m",
-    },
-    ArgSpec {
-        name: "L2",
-        default: "0.10",
-        help: "forearm link length, m",
-    },
+    ArgSpec::number("L1", "0.12", "upper link length, m")
+        .unit("m")
+        .limits(Bound::Incl(LINK_MIN_M), Bound::Incl(LINK_MAX_M))
+        .hint("recipe-2r-hint-L1"),
+    ArgSpec::number("L2", "0.10", "forearm link length, m")
+        .unit("m")
+        .limits(Bound::Incl(LINK_MIN_M), Bound::Incl(LINK_MAX_M))
+        .hint("recipe-2r-hint-L2"),
 ];
 
 const ARGS: [ArgSpec; 4] = [
     LINK_ARGS[0],
     LINK_ARGS[1],
-    ArgSpec {
-        name: "half_mm",
-        default: "200",
-        help: "grid half-extent, mm",
-    },
-    ArgSpec {
-        name: "step_mm",
-        default: "10",
-        help: "grid step, mm",
-    },
+    ArgSpec::number("half_mm", "200", "grid half-extent, mm")
+        .unit("mm")
+        .limits(Bound::Incl(0.0), Bound::Incl(HALF_MAX_MM))
+        .hint("recipe-ik-workspace-hint-half_mm"),
+    ArgSpec::number("step_mm", "10", "grid step, mm")
+        .unit("mm")
+        .limits(Bound::Excl(0.0), Bound::None)
+        .hint("recipe-ik-workspace-hint-step_mm"),
 ];
 
 /// `ik-workspace`: id, Python file, arguments with the recipe's defaults, output file.
@@ -77,6 +75,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[FILE_NAME],
+    quirks_id: "recipe-ik-workspace-quirks",
+    plan: plan_of::<Entry>,
+    page: Some("ik-2r"),
 };
 
 /// Parameters of the workspace grid (the recipe's defaults: 0.12 m, 0.10 m, 200 mm, 10 mm).
@@ -129,8 +130,24 @@ impl WorkspaceParams {
         let step = self.step_mm / 1000.0;
         let (start, stop) = (-half, half + 1e-9);
         let per_axis = numpy::arange_len(start, stop, step);
-        within_limit("step_mm", per_axis * per_axis, MAX_CELLS)?;
+        if let Err(RecipeError::TooLarge { count, limit, .. }) =
+            within_limit("step_mm", per_axis * per_axis, MAX_CELLS)
+        {
+            return Err(RecipeError::TooLarge {
+                param: "step_mm".to_string(),
+                count,
+                limit,
+                also: vec!["half_mm".to_string()],
+                square: true,
+            });
+        }
         numpy::arange(start, stop, step, "step_mm", MAX_AXIS_SAMPLES)
+    }
+
+    /// Cells of the grid (validating first).
+    pub fn cells(&self) -> Result<u64, RecipeError> {
+        let n = self.axis()?.len() as u64;
+        Ok(n * n)
     }
 }
 
@@ -161,6 +178,14 @@ pub struct Workspace {
 /// assert_eq!((ws.xs_mm.len(), ws.reachable_count()), (41, 1450));
 /// ```
 pub fn compute(params: &WorkspaceParams) -> Result<Workspace, RecipeError> {
+    compute_with(params, &mut Progress::silent())
+}
+
+/// [`compute`] reporting its cells as the first half of `progress`.
+pub fn compute_with(
+    params: &WorkspaceParams,
+    progress: &mut Progress,
+) -> Result<Workspace, RecipeError> {
     let axis = params.axis()?;
     let arm = Arm {
         l1: params.l1,
@@ -181,6 +206,7 @@ pub fn compute(params: &WorkspaceParams) -> Result<Workspace, RecipeError> {
     let n = axis.len();
     let mut beta = vec![f64::NAN; cells];
     for (ix, &x) in axis.iter().enumerate() {
+        progress.phase_at(0, 2, ix as u64, n as u64);
         for (iy, &y) in axis.iter().enumerate() {
             let radial = if iy < ix {
                 let k = iy * n + ix;
@@ -223,9 +249,16 @@ impl Workspace {
 
     /// `ik_workspace.csv` exactly as the recipe writes it.
     pub fn to_csv(&self) -> String {
+        self.to_csv_with(&mut Progress::silent())
+    }
+
+    /// [`Self::to_csv`] reporting its rows as the second half of `progress`.
+    pub fn to_csv_with(&self, progress: &mut Progress) -> String {
         let mut csv = CsvText::with_header(&HEADER);
         let ny = self.ys_mm.len();
+        let nx = self.xs_mm.len() as u64;
         for (ix, &x_mm) in self.xs_mm.iter().enumerate() {
+            progress.phase_at(1, 2, ix as u64, nx);
             for (iy, &y_mm) in self.ys_mm.iter().enumerate() {
                 let k = ix * ny + iy;
                 let (x, y) = (Cell::Float(x_mm), Cell::Float(y_mm));
@@ -258,20 +291,48 @@ impl Workspace {
     }
 }
 
-/// Parses the recipe's arguments.
+/// Parses the recipe's arguments and validates them.
 pub fn params_from_args(args: &Args) -> Result<WorkspaceParams, RecipeError> {
-    Ok(WorkspaceParams {
+    let params = WorkspaceParams {
         l1: args.f64(0, &ARGS[0])?,
         l2: args.f64(1, &ARGS[1])?,
         half_mm: args.f64(2, &ARGS[2])?,
         step_mm: args.f64(3, &ARGS[3])?,
-    })
+    };
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = WorkspaceParams;
+
+    fn params(args: &Args) -> Result<WorkspaceParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(params: &WorkspaceParams, _args: &Args) -> Result<Plan, RecipeError> {
+        Ok(Plan {
+            rows: params.cells()?,
+        })
+    }
+
+    fn run(
+        params: &WorkspaceParams,
+        _args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        let ws = compute_with(params, progress)?;
+        let csv = ws.to_csv_with(progress);
+        Ok(RecipeOutput::single(FILE_NAME, csv, ws.summary()))
+    }
 }
 
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    let ws = compute(&params_from_args(args)?)?;
-    Ok(RecipeOutput::single(FILE_NAME, ws.to_csv(), ws.summary()))
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]

@@ -21,8 +21,8 @@
 //! - at most [`MAX_SAMPLES`] samples.
 
 use super::ik_workspace::{check_link_m, LINK_ARGS};
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, ArgSpec, Args};
+use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{self, Arm};
@@ -47,6 +47,10 @@ const HEADER: [&str; 8] = [
     "sigma_max",
 ];
 
+const ANGLE: ArgSpec = ArgSpec::number("", "", "")
+    .unit("rad")
+    .limits(Bound::Incl(-ANGLE_MAX_RAD), Bound::Incl(ANGLE_MAX_RAD));
+
 const ARGS: [ArgSpec; 6] = [
     LINK_ARGS[0],
     LINK_ARGS[1],
@@ -54,21 +58,26 @@ const ARGS: [ArgSpec; 6] = [
         name: "q1_start",
         default: "0",
         help: "first shoulder angle of the sweep, rad",
+        hint_id: "recipe-jacobian-2r-hint-q1_start",
+        ..ANGLE
     },
     ArgSpec {
         name: "q1_stop",
         default: "1.57",
         help: "last shoulder angle of the sweep (included), rad",
+        hint_id: "recipe-jacobian-2r-hint-q1_stop",
+        ..ANGLE
     },
-    ArgSpec {
-        name: "q1_step",
-        default: "0.1",
-        help: "shoulder angle step, rad",
-    },
+    ArgSpec::number("q1_step", "0.1", "shoulder angle step, rad")
+        .unit("rad")
+        .limits(Bound::Excl(0.0), Bound::None)
+        .hint("recipe-jacobian-2r-hint-q1_step"),
     ArgSpec {
         name: "q2",
         default: "0.8",
         help: "fixed elbow angle, rad",
+        hint_id: "recipe-jacobian-2r-hint-q2",
+        ..ANGLE
     },
 ];
 
@@ -79,6 +88,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[FILE_NAME],
+    quirks_id: "recipe-jacobian-2r-quirks",
+    plan: plan_of::<Entry>,
+    page: Some("ik-2r"),
 };
 
 /// Parameters of the sweep (the recipe's defaults: 0.12 m, 0.10 m, 0 to 1.57 by 0.1, q2 0.8).
@@ -133,6 +145,12 @@ impl SweepParams {
         finite("q1_step", self.q1_step)?;
         positive("q1_step", self.q1_step)?;
         check_angle("q2", self.q2)?;
+        rows_within(
+            "q1_step",
+            &["q1_stop", "q1_start"],
+            numpy::arange_len(self.q1_start, self.q1_stop + 1e-12, self.q1_step),
+            MAX_SAMPLES,
+        )?;
         let q1 = numpy::arange(
             self.q1_start,
             self.q1_stop + 1e-12,
@@ -186,7 +204,16 @@ pub struct JacobianSample {
 /// );
 /// ```
 pub fn sweep(params: &SweepParams) -> Result<Vec<JacobianSample>, RecipeError> {
+    sweep_with(params, &mut Progress::silent())
+}
+
+/// [`sweep`] reporting its rows as the first half of `progress`.
+pub fn sweep_with(
+    params: &SweepParams,
+    progress: &mut Progress,
+) -> Result<Vec<JacobianSample>, RecipeError> {
     let q1s = params.q1_values()?;
+    let n = q1s.len() as u64;
     let arm = Arm {
         l1: params.l1,
         l2: params.l2,
@@ -194,7 +221,9 @@ pub fn sweep(params: &SweepParams) -> Result<Vec<JacobianSample>, RecipeError> {
     let q2 = params.q2;
     Ok(q1s
         .into_iter()
-        .map(|q1| {
+        .enumerate()
+        .map(|(k, q1)| {
+            progress.phase_at(0, 2, k as u64, n);
             let j = arm.jacobian(q1, q2);
             let (x, y) = arm.fk(q1, q2);
             let (sigma_min, sigma_max) = planar2r::singular_values(&j);
@@ -214,8 +243,15 @@ pub fn sweep(params: &SweepParams) -> Result<Vec<JacobianSample>, RecipeError> {
 
 /// `jacobian_2r.csv` exactly as the recipe writes it.
 pub fn to_csv(samples: &[JacobianSample]) -> String {
+    to_csv_with(samples, &mut Progress::silent())
+}
+
+/// [`to_csv`] reporting its rows as the second half of `progress`.
+pub fn to_csv_with(samples: &[JacobianSample], progress: &mut Progress) -> String {
     let mut csv = CsvText::with_header(&HEADER);
-    for s in samples {
+    let n = samples.len() as u64;
+    for (k, s) in samples.iter().enumerate() {
+        progress.phase_at(1, 2, k as u64, n);
         csv.floats(&[
             s.q1,
             s.q2,
@@ -247,26 +283,49 @@ pub fn summary(samples: &[JacobianSample]) -> String {
     }
 }
 
-/// Parses the recipe's arguments.
+/// Parses the recipe's arguments and validates them.
 pub fn params_from_args(args: &Args) -> Result<SweepParams, RecipeError> {
-    Ok(SweepParams {
+    let params = SweepParams {
         l1: args.f64(0, &ARGS[0])?,
         l2: args.f64(1, &ARGS[1])?,
         q1_start: args.f64(2, &ARGS[2])?,
         q1_stop: args.f64(3, &ARGS[3])?,
         q1_step: args.f64(4, &ARGS[4])?,
         q2: args.f64(5, &ARGS[5])?,
-    })
+    };
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = SweepParams;
+
+    fn params(args: &Args) -> Result<SweepParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(params: &SweepParams, _args: &Args) -> Result<Plan, RecipeError> {
+        let rows = numpy::arange_len(params.q1_start, params.q1_stop + 1e-12, params.q1_step);
+        Ok(Plan { rows: rows as u64 })
+    }
+
+    fn run(
+        params: &SweepParams,
+        _args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        let samples = sweep_with(params, progress)?;
+        let csv = to_csv_with(&samples, progress);
+        Ok(RecipeOutput::single(FILE_NAME, csv, summary(&samples)))
+    }
 }
 
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    let samples = sweep(&params_from_args(args)?)?;
-    Ok(RecipeOutput::single(
-        FILE_NAME,
-        to_csv(&samples),
-        summary(&samples),
-    ))
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]
@@ -277,19 +336,15 @@ mod tests {
 
     use super::*;
     use crate::recipes::run_strs;
+    use crate::recipes::testkit::{self, assert_defaults_in_one_place};
 
     fn assert_rejects(raw: &[&str], param: &str, check: fn(&RecipeError) -> bool) {
-        let e = run_strs(INFO.id, raw).unwrap_err();
-        assert!(check(&e), "{raw:?}: {e:?}");
-        assert_eq!(e.param(), Some(param), "{raw:?}");
+        testkit::assert_rejects(INFO.id, raw, param, check)
     }
 
     #[test]
     fn defaults_in_one_place() {
-        assert_eq!(
-            params_from_args(&Args::default()).unwrap(),
-            SweepParams::default()
-        );
+        assert_defaults_in_one_place::<Entry>();
     }
 
     #[test]

@@ -17,8 +17,8 @@
 //!   [`LINK_MAX_M`](super::ik_workspace::LINK_MAX_M).
 
 use super::ik_workspace::{check_link_m, LINK_ARGS};
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::{check_count, parse_count, ArgSpec, Args};
+use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{check_count, parse_count, ArgKind, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::planar2r::Arm;
 use crate::pyfmt::{fixed, CsvText};
@@ -35,11 +35,10 @@ const HEADER: [&str; 4] = ["q1", "q2", "detJ", "manip"];
 const ARGS: [ArgSpec; 3] = [
     LINK_ARGS[0],
     LINK_ARGS[1],
-    ArgSpec {
-        name: "n",
-        default: "24",
-        help: "grid side: n × n joint configurations",
-    },
+    ArgSpec::number("n", "24", "grid side: n × n joint configurations")
+        .kind(ArgKind::Integer)
+        .limits(Bound::Incl(1.0), Bound::Incl(MAX_N as f64))
+        .hint("recipe-manip-grid-hint-n"),
 ];
 
 /// `manip-grid`: id, Python file, arguments with the recipe's defaults, output file.
@@ -49,6 +48,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[FILE_NAME],
+    quirks_id: "recipe-manip-grid-quirks",
+    plan: plan_of::<Entry>,
+    page: Some("ik-2r"),
 };
 
 /// Parameters of the grid (the recipe's defaults: 0.12 m, 0.10 m, n = 24).
@@ -112,6 +114,11 @@ pub struct ManipGrid {
 /// assert!(g.summary().starts_with("wrote 576 configs max|detJ|=0.01197"));
 /// ```
 pub fn grid(params: &GridParams) -> Result<ManipGrid, RecipeError> {
+    grid_with(params, &mut Progress::silent())
+}
+
+/// [`grid`] reporting its rows as the first half of `progress`.
+pub fn grid_with(params: &GridParams, progress: &mut Progress) -> Result<ManipGrid, RecipeError> {
     let n = params.side()?;
     let arm = Arm {
         l1: params.l1,
@@ -119,7 +126,8 @@ pub fn grid(params: &GridParams) -> Result<ManipGrid, RecipeError> {
     };
     let q: Vec<f64> = (0..n).map(|i| grid_angle(i, n)).collect();
     let mut det_j = Vec::with_capacity(n * n);
-    for &q1 in &q {
+    for (i, &q1) in q.iter().enumerate() {
+        progress.phase_at(0, 2, i as u64, n as u64);
         for &q2 in &q {
             det_j.push(arm.det_explicit(q1, q2));
         }
@@ -130,8 +138,15 @@ pub fn grid(params: &GridParams) -> Result<ManipGrid, RecipeError> {
 impl ManipGrid {
     /// `manip_ellipse.csv` exactly as the recipe writes it.
     pub fn to_csv(&self) -> String {
+        self.to_csv_with(&mut Progress::silent())
+    }
+
+    /// [`Self::to_csv`] reporting its rows as the second half of `progress`.
+    pub fn to_csv_with(&self, progress: &mut Progress) -> String {
         let mut csv = CsvText::with_header(&HEADER);
+        let rows = self.det_j.len() as u64;
         for (k, det) in self.det_j.iter().enumerate() {
+            progress.phase_at(1, 2, k as u64, rows);
             let (i, j) = (k / self.n.max(1), k % self.n.max(1));
             let q1 = self.q.get(i).copied().unwrap_or(f64::NAN);
             let q2 = self.q.get(j).copied().unwrap_or(f64::NAN);
@@ -211,19 +226,46 @@ pub fn fill_abs_det(l1: f64, l2: f64, n: i64, out: &mut [f32]) -> Result<f32, Re
     Ok(max)
 }
 
-/// Parses the recipe's arguments.
+/// Parses the recipe's arguments (any whole-number notation for `n`) and validates them.
 pub fn params_from_args(args: &Args) -> Result<GridParams, RecipeError> {
-    Ok(GridParams {
+    let params = GridParams {
         l1: args.f64(0, &ARGS[0])?,
         l2: args.f64(1, &ARGS[1])?,
         n: parse_count(ARGS[2].name, args.text(2, &ARGS[2]), 1, MAX_N)?,
-    })
+    };
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = GridParams;
+
+    fn params(args: &Args) -> Result<GridParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(params: &GridParams, _args: &Args) -> Result<Plan, RecipeError> {
+        let n = params.side()? as u64;
+        Ok(Plan { rows: n * n })
+    }
+
+    fn run(
+        params: &GridParams,
+        _args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        let g = grid_with(params, progress)?;
+        let csv = g.to_csv_with(progress);
+        Ok(RecipeOutput::single(FILE_NAME, csv, g.summary()))
+    }
 }
 
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    let g = grid(&params_from_args(args)?)?;
-    Ok(RecipeOutput::single(FILE_NAME, g.to_csv(), g.summary()))
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]
@@ -234,13 +276,11 @@ mod tests {
 
     use super::*;
     use crate::recipes::run_strs;
+    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
 
     #[test]
     fn defaults_in_one_place() {
-        assert_eq!(
-            params_from_args(&Args::default()).unwrap(),
-            GridParams::default()
-        );
+        assert_defaults_in_one_place::<Entry>();
     }
 
     #[test]
@@ -319,12 +359,17 @@ mod tests {
             (&["0.12", "0.10", "1025"][..], "n"),
             (&["0.12", "0.10", "99999999999999999999999"][..], "n"),
         ] {
-            let e = run_strs(INFO.id, raw).unwrap_err();
-            assert!(matches!(e, RecipeError::OutOfRange { .. }), "{raw:?} {e:?}");
-            assert_eq!(e.param(), Some(param));
+            assert_rejects(INFO.id, raw, param, |e| {
+                matches!(e, RecipeError::OutOfRange { .. })
+            });
         }
-        let e = run_strs(INFO.id, &["0.12", "0.10", "24.0"]).unwrap_err();
+        // Whole numbers in any notation are accepted (issue 8); a fraction is not.
+        let e = run_strs(INFO.id, &["0.12", "0.10", "24.5"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotAnInteger { .. }) && e.param() == Some("n"));
+        for whole in ["24.0", "2.4e1", "24"] {
+            let out = run_strs(INFO.id, &["0.12", "0.10", whole]).unwrap();
+            assert!(out.summary.starts_with("wrote 576 configs"), "{whole}");
+        }
         let e = run_strs(INFO.id, &["0.12", "0"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotPositive { .. }) && e.param() == Some("L2"));
         let e = run_strs(INFO.id, &["1e7"]).unwrap_err();

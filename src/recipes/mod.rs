@@ -1,11 +1,16 @@
 //! The twelve BSV recipes, one module each: a parameter struct with the recipe's defaults,
 //! validation, a typed run, and the CSV table(s) plus the summary line the Python recipe prints.
 //!
-//! Every recipe is reached the same way from the CLI, from `runRecipe` and from the tests:
-//! [`run`] with the recipe id and command-line style arguments.
+//! Each module states its facts once, in its `INFO` ([`RecipeInfo`]): arguments with kind,
+//! unit, limits and hint ([`ArgSpec`]), the files it writes, its quirks text and its cost
+//! estimate. Each implements [`Kernel`], the one shape of every recipe:
+//! `params` (parse → validate) → `plan` (rows of work, without running) → `run` (with
+//! progress) → CSV. The CLI, `runRecipe`, the pages and the tests reach them all the same way:
+//! [`run`] / [`run_with_progress`] with the recipe id and command-line style arguments.
 
+pub use crate::args::Plan;
 use crate::args::{ArgSpec, Args};
-use crate::error::RecipeError;
+use crate::error::{RecipeError, RecipeWarning};
 
 pub mod cubic_path;
 pub mod dh_fk;
@@ -33,6 +38,148 @@ pub struct RecipeInfo {
     pub flags: &'static [ArgSpec],
     /// The CSV file names it writes.
     pub writes: &'static [&'static str],
+    /// Fluent id (recipes.ftl) of what this port decides where the Python recipe is silent or
+    /// crashes, in a sentence or two for the reader of the page: `recipe-<id>-quirks`.
+    pub quirks_id: &'static str,
+    /// The cost of a run with these arguments, without running it: parse + validate, then
+    /// rows of work (traj-resample reads the attached input's shape, cheaply).
+    pub plan: fn(&Args) -> Result<Plan, RecipeError>,
+    /// Route id of the live page that runs this recipe interactively (`ik-2r`), if any.
+    pub page: Option<&'static str>,
+}
+
+impl RecipeInfo {
+    /// Every argument: the positional ones in order, then the `--flag` options (`true`).
+    pub fn all_args(&self) -> impl Iterator<Item = (&'static ArgSpec, bool)> {
+        let args: &'static [ArgSpec] = self.args;
+        let flags: &'static [ArgSpec] = self.flags;
+        args.iter()
+            .map(|a| (a, false))
+            .chain(flags.iter().map(|a| (a, true)))
+    }
+
+    /// The argument (positional or flag) called `name`, and whether it is a flag.
+    pub fn arg(&self, name: &str) -> Option<(&'static ArgSpec, bool)> {
+        self.all_args().find(|(a, _)| a.name == name)
+    }
+
+    /// Fluent id of the recipe's title (recipes.ftl).
+    pub fn title_id(&self) -> String {
+        format!("recipe-{}-title", self.id)
+    }
+
+    /// Fluent id of the recipe's one-line description (recipes.ftl).
+    pub fn blurb_id(&self) -> String {
+        format!("recipe-{}-blurb", self.id)
+    }
+}
+
+/// Progress of a run: `report(done, total)` rows of work, called at most every ~1 % of
+/// `total` (and once at the end). Counting never changes what a recipe computes.
+pub struct Progress<'a> {
+    report: Option<&'a mut dyn FnMut(u64, u64)>,
+    total: u64,
+    every: u64,
+    next: u64,
+}
+
+impl<'a> Progress<'a> {
+    /// Reports to `report`, `total` rows of work in all.
+    pub fn new(report: &'a mut dyn FnMut(u64, u64), total: u64) -> Progress<'a> {
+        let every = total.div_ceil(100).max(1);
+        Progress {
+            report: Some(report),
+            total,
+            every,
+            next: every,
+        }
+    }
+
+    /// Reports nothing (the plain `run`).
+    pub fn silent() -> Progress<'static> {
+        Progress {
+            report: None,
+            total: 0,
+            every: u64::MAX,
+            next: u64::MAX,
+        }
+    }
+
+    /// The total rows of work.
+    pub fn total(&self) -> u64 {
+        self.total
+    }
+
+    /// `done` rows of work are done; reports when another ~1 % has passed.
+    #[inline]
+    pub fn at(&mut self, done: u64) {
+        if done >= self.next {
+            self.next = done.saturating_add(self.every);
+            if let Some(report) = self.report.as_mut() {
+                report(done.min(self.total), self.total);
+            }
+        }
+    }
+
+    /// Row `k` of `n` of phase `phase` (0-based) of `phases` equal phases (e.g. computing the
+    /// rows, then writing their CSV text).
+    #[inline]
+    pub fn phase_at(&mut self, phase: u64, phases: u64, k: u64, n: u64) {
+        if self.report.is_some() && n > 0 && phases > 0 {
+            let share = self.total as f64 / phases as f64;
+            let done = share * phase as f64 + share * (k as f64 / n as f64);
+            self.at(done as u64);
+        }
+    }
+
+    /// The run is over: reports `total` of `total`.
+    pub fn finish(&mut self) {
+        if let Some(report) = self.report.as_mut() {
+            report(self.total, self.total);
+        }
+        self.next = u64::MAX;
+    }
+}
+
+/// The one shape of every recipe: parse and validate the arguments, estimate the work, run
+/// with progress. A module implements it on a unit struct `Entry`; [`RECIPES`] and each
+/// `INFO.plan` are instances of the generic functions below.
+pub trait Kernel {
+    /// The typed, validated arguments.
+    type Params;
+    /// Parses and validates: every argument error a run would give, before any work.
+    fn params(args: &Args) -> Result<Self::Params, RecipeError>;
+    /// Rows of work of a run with `params` (`args` holds attached inputs).
+    fn plan(params: &Self::Params, args: &Args) -> Result<Plan, RecipeError>;
+    /// Runs, reporting rows done to `progress` (total = `plan`'s rows).
+    fn run(
+        params: &Self::Params,
+        args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError>;
+}
+
+/// [`Kernel::params`] then [`Kernel::plan`].
+pub fn plan_of<K: Kernel>(args: &Args) -> Result<Plan, RecipeError> {
+    K::plan(&K::params(args)?, args)
+}
+
+/// A run without progress.
+pub fn run_of<K: Kernel>(args: &Args) -> Result<RecipeOutput, RecipeError> {
+    K::run(&K::params(args)?, args, &mut Progress::silent())
+}
+
+/// A run reporting `progress(done, total)` rows (total from [`Kernel::plan`]).
+pub fn run_progress_of<K: Kernel>(
+    args: &Args,
+    progress: &mut dyn FnMut(u64, u64),
+) -> Result<RecipeOutput, RecipeError> {
+    let params = K::params(args)?;
+    let plan = K::plan(&params, args)?;
+    let mut tracker = Progress::new(progress, plan.rows.max(1));
+    let out = K::run(&params, args, &mut tracker)?;
+    tracker.finish();
+    Ok(out)
 }
 
 /// One CSV file a recipe writes.
@@ -48,6 +195,8 @@ pub struct RecipeOutput {
     pub files: Vec<CsvFile>,
     /// Exactly what the Python recipe prints (lines joined with `\n`, no trailing newline).
     pub summary: String,
+    /// What looks wrong with the result (diverged, unreachable goal...); not in the CSV.
+    pub warnings: Vec<RecipeWarning>,
 }
 
 impl RecipeOutput {
@@ -59,7 +208,14 @@ impl RecipeOutput {
                 text,
             }],
             summary,
+            warnings: Vec::new(),
         }
+    }
+
+    /// The same output with `warnings` added.
+    pub fn with_warnings(mut self, warnings: Vec<RecipeWarning>) -> RecipeOutput {
+        self.warnings.extend(warnings);
+        self
     }
 
     /// The text of the file called `name`, if the run wrote it.
@@ -71,62 +227,78 @@ impl RecipeOutput {
     }
 }
 
-/// A recipe: its description and its entry point.
+/// A run reporting `progress(done, total)` rows of work.
+pub type RunWithProgress = fn(&Args, &mut dyn FnMut(u64, u64)) -> Result<RecipeOutput, RecipeError>;
+
+/// A recipe: its facts and its entry points (instances of [`run_of`] / [`run_progress_of`]).
 #[derive(Clone, Copy)]
 pub struct Recipe {
     pub info: &'static RecipeInfo,
     pub run: fn(&Args) -> Result<RecipeOutput, RecipeError>,
+    pub run_progress: RunWithProgress,
 }
 
 /// All recipes, in the order of the BSV page.
 pub const RECIPES: [Recipe; 12] = [
     Recipe {
         info: &pendulum_energy::INFO,
-        run: pendulum_energy::run_args,
+        run: run_of::<pendulum_energy::Entry>,
+        run_progress: run_progress_of::<pendulum_energy::Entry>,
     },
     Recipe {
         info: &ik_workspace::INFO,
-        run: ik_workspace::run_args,
+        run: run_of::<ik_workspace::Entry>,
+        run_progress: run_progress_of::<ik_workspace::Entry>,
     },
     Recipe {
         info: &traj_resample::INFO,
-        run: traj_resample::run_args,
+        run: run_of::<traj_resample::Entry>,
+        run_progress: run_progress_of::<traj_resample::Entry>,
     },
     Recipe {
         info: &dh_fk::INFO,
-        run: dh_fk::run_args,
+        run: run_of::<dh_fk::Entry>,
+        run_progress: run_progress_of::<dh_fk::Entry>,
     },
     Recipe {
         info: &jacobian_2r::INFO,
-        run: jacobian_2r::run_args,
+        run: run_of::<jacobian_2r::Entry>,
+        run_progress: run_progress_of::<jacobian_2r::Entry>,
     },
     Recipe {
         info: &cubic_path::INFO,
-        run: cubic_path::run_args,
+        run: run_of::<cubic_path::Entry>,
+        run_progress: run_progress_of::<cubic_path::Entry>,
     },
     Recipe {
         info: &se3_relative::INFO,
-        run: se3_relative::run_args,
+        run: run_of::<se3_relative::Entry>,
+        run_progress: run_progress_of::<se3_relative::Entry>,
     },
     Recipe {
         info: &rrt_2d::INFO,
-        run: rrt_2d::run_args,
+        run: run_of::<rrt_2d::Entry>,
+        run_progress: run_progress_of::<rrt_2d::Entry>,
     },
     Recipe {
         info: &pid_step::INFO,
-        run: pid_step::run_args,
+        run: run_of::<pid_step::Entry>,
+        run_progress: run_progress_of::<pid_step::Entry>,
     },
     Recipe {
         info: &manip_grid::INFO,
-        run: manip_grid::run_args,
+        run: run_of::<manip_grid::Entry>,
+        run_progress: run_progress_of::<manip_grid::Entry>,
     },
     Recipe {
         info: &trapezoid_profile::INFO,
-        run: trapezoid_profile::run_args,
+        run: run_of::<trapezoid_profile::Entry>,
+        run_progress: run_progress_of::<trapezoid_profile::Entry>,
     },
     Recipe {
         info: &umeyama_2d::INFO,
-        run: umeyama_2d::run_args,
+        run: run_of::<umeyama_2d::Entry>,
+        run_progress: run_progress_of::<umeyama_2d::Entry>,
     },
 ];
 
@@ -153,22 +325,10 @@ pub fn parse_args(id: &str, raw: &[String]) -> Result<Args, RecipeError> {
     Args::parse(raw, recipe.info.args, recipe.info.flags)
 }
 
-/// [`run`] with string slices, for the recipes' unit tests.
 #[cfg(test)]
-pub(crate) fn run_strs(id: &str, raw: &[&str]) -> Result<RecipeOutput, RecipeError> {
-    run(id, &strings(raw))
-}
-
-/// [`parse_args`] with string slices, for the recipes' unit tests.
+pub(crate) mod testkit;
 #[cfg(test)]
-pub(crate) fn args_strs(id: &str, raw: &[&str]) -> Result<Args, RecipeError> {
-    parse_args(id, &strings(raw))
-}
-
-#[cfg(test)]
-fn strings(raw: &[&str]) -> Vec<String> {
-    raw.iter().map(|s| s.to_string()).collect()
-}
+pub(crate) use testkit::{args_strs, run_strs};
 
 /// Runs recipe `id` with arguments and input files `(name, text)` that path arguments name
 /// (traj-resample's CSV).
@@ -179,4 +339,337 @@ pub fn run_with_inputs(
 ) -> Result<RecipeOutput, RecipeError> {
     let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
     (recipe.run)(&parse_args(id, raw)?.with_inputs(inputs))
+}
+
+/// [`run_with_inputs`] reporting `progress(done, total)` rows of work, at most every ~1 %.
+/// The output is bit for bit that of [`run_with_inputs`].
+pub fn run_with_progress(
+    id: &str,
+    raw: &[String],
+    inputs: Vec<(String, String)>,
+    progress: &mut dyn FnMut(u64, u64),
+) -> Result<RecipeOutput, RecipeError> {
+    let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
+    (recipe.run_progress)(&parse_args(id, raw)?.with_inputs(inputs), progress)
+}
+
+/// The cost of running recipe `id` with these arguments and inputs, without running it
+/// (argument errors come out here as they would from a run).
+pub fn plan(id: &str, raw: &[String], inputs: Vec<(String, String)>) -> Result<Plan, RecipeError> {
+    let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
+    (recipe.info.plan)(&parse_args(id, raw)?.with_inputs(inputs))
+}
+
+#[cfg(test)]
+mod facts_tests {
+    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    use super::testkit::strings;
+    use super::*;
+    use crate::args::{ArgKind, Bound};
+    use crate::i18n::{I18n, Lang};
+    use crate::pyfmt::human;
+
+    /// Every hint and quirks id has a message in both languages, and the English hint states
+    /// each finite limit of the argument as a person writes it (the facts and the words agree).
+    #[test]
+    fn hints_and_quirks_exist_and_state_the_limits() {
+        let i18n = I18n::new();
+        for recipe in RECIPES {
+            let info = recipe.info;
+            for lang in Lang::ALL {
+                assert!(
+                    i18n.has_message(lang, info.quirks_id),
+                    "{lang:?} {}",
+                    info.quirks_id
+                );
+            }
+            assert_eq!(info.quirks_id, format!("recipe-{}-quirks", info.id));
+            for (spec, flag) in info.all_args() {
+                assert!(
+                    !spec.hint_id.is_empty(),
+                    "{} {}: no hint",
+                    info.id,
+                    spec.name
+                );
+                for lang in Lang::ALL {
+                    assert!(
+                        i18n.has_message(lang, spec.hint_id),
+                        "{lang:?} {}",
+                        spec.hint_id
+                    );
+                    assert!(i18n.has_message(lang, &spec.label_id(info.id, flag)));
+                }
+                let en = i18n.t(Lang::En, spec.hint_id);
+                let ja = i18n.t(Lang::Ja, spec.hint_id);
+                for bound in [spec.min, spec.max] {
+                    if let Some(v) = bound.value() {
+                        let words = human(v.abs());
+                        assert!(
+                            en.contains(&words),
+                            "{}: {en:?} lacks {words}",
+                            spec.hint_id
+                        );
+                        assert!(
+                            ja.contains(&words),
+                            "{}: {ja:?} lacks {words}",
+                            spec.hint_id
+                        );
+                    }
+                }
+                if let ArgKind::Choice(choices) = spec.kind {
+                    assert!(choices.iter().all(|c| en.contains(c)), "{en}");
+                }
+            }
+        }
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+
+    /// Raw arguments with every argument at its default except `name` = `value`.
+    fn with(info: &RecipeInfo, name: &str, value: &str) -> Vec<String> {
+        let mut raw = Vec::new();
+        let index = info.args.iter().position(|a| a.name == name);
+        for (i, a) in info.args.iter().enumerate() {
+            if Some(i) == index {
+                raw.push(value.to_string());
+                break;
+            }
+            raw.push(a.default.to_string());
+        }
+        if index.is_none() {
+            raw.extend([format!("--{name}"), value.to_string()]);
+        }
+        raw
+    }
+
+    /// A value just outside each finite limit is refused, with the error naming the argument
+    /// first: the limit in the facts is the one the kernel enforces.
+    #[test]
+    fn just_outside_each_limit_is_refused_naming_the_argument() {
+        let mut checked = 0;
+        for recipe in RECIPES {
+            let info = recipe.info;
+            for (spec, _) in info.all_args() {
+                let whole = matches!(spec.kind, ArgKind::Integer | ArgKind::Seed);
+                let below = match spec.min {
+                    Bound::None => None,
+                    Bound::Excl(m) => Some(m),
+                    Bound::Incl(m) if whole => Some(m - 1.0),
+                    Bound::Incl(0.0) => Some(-0.001),
+                    Bound::Incl(m) => Some(m - m.abs() * 0.5),
+                };
+                let above = match spec.max {
+                    Bound::None => None,
+                    Bound::Excl(m) => Some(m),
+                    Bound::Incl(m) if whole && m > 1e18 => Some(1e19),
+                    Bound::Incl(m) if whole => Some(m + 1.0),
+                    Bound::Incl(m) => Some(m + m.abs().max(1.0)),
+                };
+                assert!(
+                    spec.kind == ArgKind::File || spec.check_text(spec.default).is_ok(),
+                    "{} {}: default refused by its own facts",
+                    info.id,
+                    spec.name
+                );
+                for value in [below, above].into_iter().flatten() {
+                    let raw = with(info, spec.name, &value.to_string());
+                    // The field alone is refused, as the run refuses it.
+                    let field = spec.check_text(&value.to_string()).unwrap_err();
+                    assert_eq!(field.param(), Some(spec.name));
+                    let err = run(info.id, &raw).unwrap_err();
+                    assert_eq!(err.param(), Some(spec.name), "{} {raw:?}: {err}", info.id);
+                    assert_eq!(plan(info.id, &raw, Vec::new()), Err(err));
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked >= 40, "{checked}");
+    }
+
+    #[test]
+    fn every_recipe_has_a_plan_and_defaults_run() {
+        for recipe in RECIPES {
+            let info = recipe.info;
+            let plan = (info.plan)(&Args::default()).unwrap();
+            assert!(plan.rows >= 1, "{}: {plan:?}", info.id);
+            assert!(run(info.id, &[]).is_ok(), "{}", info.id);
+        }
+        let rows = |id: &str, raw: &[&str]| plan(id, &strings(raw), Vec::new()).unwrap().rows;
+        assert_eq!(rows("pid-step", &["1", "1", "1", "1", "1e6"]), 1_000_000);
+        assert_eq!(rows("manip-grid", &["0.12", "0.1", "1024"]), 1_048_576);
+        assert_eq!(rows("ik-workspace", &[]), 41 * 41);
+        assert_eq!(rows("cubic-path", &[]), 51);
+        assert_eq!(rows("trapezoid-profile", &[]), 251);
+        assert_eq!(rows("pendulum-energy", &[]), 2500);
+        assert_eq!(rows("rrt-2d", &["7", "50000"]), 5_000_000);
+        assert_eq!(rows("jacobian-2r", &[]), 16);
+        // traj-resample: from the attached input's shape.
+        let text = "t_s,q1,q2\n0,0,0\n0.5,1,1\n2.0,2,2\n".to_string();
+        let inputs = vec![("in.csv".to_string(), text)];
+        let p = plan(
+            "traj-resample",
+            &strings(&["in.csv", "0.01"]),
+            inputs.clone(),
+        );
+        assert_eq!(p, Ok(Plan { rows: 201 }));
+        let out = run_with_inputs(
+            "traj-resample",
+            &strings(&["in.csv", "0.01"]),
+            inputs.clone(),
+        );
+        assert!(out.unwrap().summary.starts_with("resampled 3 -> 201 rows"));
+        let err = plan("traj-resample", &strings(&["in.csv", "1e-7"]), inputs).unwrap_err();
+        assert_eq!(err.params(), vec!["dt", "csv_path"]);
+        let err = plan("traj-resample", &strings(&["other.csv"]), Vec::new()).unwrap_err();
+        assert!(matches!(err, RecipeError::InputMissing { .. }));
+    }
+
+    #[test]
+    fn live_pages_are_in_the_facts() {
+        let pages: Vec<_> = RECIPES
+            .iter()
+            .filter_map(|r| r.info.page.map(|p| (r.info.id, p)))
+            .collect();
+        assert_eq!(
+            pages,
+            [
+                ("ik-workspace", "ik-2r"),
+                ("jacobian-2r", "ik-2r"),
+                ("manip-grid", "ik-2r")
+            ]
+        );
+    }
+
+    #[test]
+    fn warnings_flag_nonsense_and_leave_the_csv_alone() {
+        let warnings = |id: &str, raw: &[&str]| run(id, &strings(raw)).unwrap().warnings;
+        // pid-step: Kp = 1e9 overflows to nan; Kp = -5 runs away to -9,003,857.
+        assert!(matches!(
+            warnings("pid-step", &["1e9"])[..],
+            [RecipeWarning::NotFinite { .. }]
+        ));
+        match &warnings("pid-step", &["-5"])[..] {
+            [RecipeWarning::Diverged { final_value, .. }] => {
+                assert_eq!(final_value.round(), -9_003_857.0)
+            }
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(warnings("pid-step", &[]), vec![]);
+        // rrt-2d: goal inside the box; budget too small.
+        let inside = warnings(
+            "rrt-2d",
+            &["7", "300", "--goal-x", "0.5", "--goal-y", "0.5"],
+        );
+        assert_eq!(
+            inside,
+            vec![RecipeWarning::GoalInObstacle { x: 0.5, y: 0.5 }]
+        );
+        assert_eq!(
+            warnings("rrt-2d", &["7", "5"]),
+            vec![RecipeWarning::GoalNotReached { iterations: 5 }]
+        );
+        assert_eq!(warnings("rrt-2d", &[]), vec![]);
+        // umeyama-2d with two pairs fits any noise exactly.
+        assert_eq!(
+            warnings("umeyama-2d", &["0.02", "3", "2"]),
+            vec![RecipeWarning::FewPoints { n: 2 }]
+        );
+        assert_eq!(warnings("umeyama-2d", &[]), vec![]);
+        assert_eq!(warnings("pendulum-energy", &[]), vec![]);
+        // A 0.05 s Euler step without damping gains ~15 % energy: the step is too large.
+        match &warnings(
+            "pendulum-energy",
+            &["5", "--timestep", "0.05", "--damping", "0"],
+        )[..]
+        {
+            [RecipeWarning::EnergyGrows { percent }] => assert!((15.0..16.0).contains(percent)),
+            other => panic!("{other:?}"),
+        }
+        // The CSV is the recipe's either way (the golden runs cover the defaults).
+        let out = run("pid-step", &strings(&["1e9"])).unwrap();
+        assert_eq!(
+            out.summary,
+            "wrote 80 PID samples final_y=nan -> pid_step.csv"
+        );
+        // Every warning has a message with its arguments in both languages.
+        let i18n = I18n::new();
+        let all = [
+            RecipeWarning::Diverged {
+                peak: 9_003_857.0,
+                final_value: -9_003_857.0,
+            },
+            RecipeWarning::NotFinite { step: 12 },
+            RecipeWarning::GoalNotReached { iterations: 800 },
+            RecipeWarning::GoalInObstacle { x: 0.5, y: 0.5 },
+            RecipeWarning::EnergyGrows { percent: 12.5 },
+            RecipeWarning::FewPoints { n: 2 },
+        ];
+        for w in &all {
+            for lang in Lang::ALL {
+                let args: Vec<(&str, crate::i18n::FluentArg)> = w
+                    .message_args()
+                    .into_iter()
+                    .map(|(k, v)| (k, v.into()))
+                    .collect();
+                let text = i18n.t_args(lang, w.message_id(), &args);
+                for (_, v) in w.message_args() {
+                    assert!(
+                        text.contains(&v),
+                        "{lang:?} {}: {v} not in {text}",
+                        w.message_id()
+                    );
+                }
+            }
+            assert!(w.to_string().starts_with("warning: "));
+        }
+        assert_eq!(all[0].message_args()[1].1, "-9,003,857");
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+
+    #[test]
+    fn cross_field_limits_name_every_argument_in_the_hints_terms() {
+        let i18n = I18n::new();
+        // ik-workspace: ±1000 mm at 1 mm is a 2001 × 2001 grid, the limit 1001 × 1001.
+        let err = run("ik-workspace", &strings(&["0.12", "0.1", "1000", "1"])).unwrap_err();
+        assert_eq!(err.params(), vec!["step_mm", "half_mm"]);
+        let en = i18n.recipe_error(Lang::En, &err);
+        assert!(
+            en.contains("2,001 × 2,001") && en.contains("1,001 × 1,001"),
+            "{en}"
+        );
+        assert!(!en.contains("1002001") && !en.contains("1,002,001"), "{en}");
+        let ja = i18n.recipe_error(Lang::Ja, &err);
+        assert!(
+            ja.contains("2,001 × 2,001") && ja.contains("1,001 × 1,001"),
+            "{ja}"
+        );
+        // trapezoid-profile: distance = 1e9 is attributable to distance (and dt).
+        let err = run("trapezoid-profile", &strings(&["1e9"])).unwrap_err();
+        assert!(err.params().contains(&"distance"), "{:?}", err.params());
+        assert!(err.params().contains(&"dt"));
+        let en = i18n.recipe_error(Lang::En, &err);
+        assert!(en.contains("1,000,000") && !en.contains("e+"), "{en}");
+        // pendulum-energy: duration ÷ timestep.
+        let err = run("pendulum-energy", &strings(&["5000"])).unwrap_err();
+        assert_eq!(err.params(), vec!["duration_s", "timestep"]);
+        // Human numbers, labels passed by the page.
+        let err = run("pid-step", &strings(&["1", "1", "1", "-1"])).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "tau: must be between 0 and 1,000,000 (it is -1)"
+        );
+        let args = err.message_args_labelled(&|_| "Plant time constant τ (s)".to_string());
+        assert!(args.contains(&("label", "Plant time constant τ (s)".to_string())));
+        let err = run("ik-workspace", &strings(&["0.0000001"])).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "L1: must be between 0.000001 and 10 (it is 0.0000001)"
+        );
+        let err = run("umeyama-2d", &strings(&["-1"])).unwrap_err();
+        assert_eq!(err.to_string(), "sigma: must be at least 0 (it is -1)");
+        assert_eq!(err.message_id(), "err-too-small");
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
 }

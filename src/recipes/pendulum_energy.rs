@@ -27,9 +27,9 @@
 //! step. With `b = 0` it is conserved up to the integrator's error; the recipe's point-mass
 //! figure is not an energy of this body at all.
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, within_limit, ArgSpec, Args};
-use crate::error::RecipeError;
+use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{finite, in_range, positive, rows_within, ArgKind, ArgSpec, Args, Bound};
+use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, CsvText};
 
 /// Gravity of the recipe's model, m/s².
@@ -43,47 +43,65 @@ pub const CSV_NAME: &str = "pendulum_energy.csv";
 
 const CSV_HEADER: [&str; 6] = ["t_s", "theta_rad", "omega_rad_s", "ke_j", "pe_j", "total_j"];
 
-const ARGS: [ArgSpec; 1] = [ArgSpec {
-    name: "duration_s",
-    default: "5",
-    help: "simulated time in seconds",
-}];
+const ARGS: [ArgSpec; 1] = [
+    ArgSpec::number("duration_s", "5", "simulated time in seconds")
+        .unit("s")
+        .limits(Bound::Excl(0.0), Bound::None)
+        .hint("recipe-pendulum-energy-hint-duration_s"),
+];
 
-const FLAG_DAMPING: ArgSpec = ArgSpec {
-    name: "damping",
-    default: "0.05",
-    help: "hinge damping b, N·m·s/rad",
-};
-const FLAG_ANGLE: ArgSpec = ArgSpec {
-    name: "angle-deg",
-    default: "120",
-    help: "starting angle from hanging down, degrees",
-};
+const POSITIVE: ArgSpec = ArgSpec::number("", "", "").limits(Bound::Excl(0.0), Bound::None);
+
+const FLAG_DAMPING: ArgSpec = ArgSpec::number("damping", "0.05", "hinge damping b, N·m·s/rad")
+    .unit("N·m·s/rad")
+    .limits(Bound::Incl(0.0), Bound::None)
+    .hint("recipe-pendulum-energy-hint-damping");
+const FLAG_ANGLE: ArgSpec = ArgSpec::number(
+    "angle-deg",
+    "120",
+    "starting angle from hanging down, degrees",
+)
+.unit("deg")
+.hint("recipe-pendulum-energy-hint-angle-deg");
 const FLAG_TIMESTEP: ArgSpec = ArgSpec {
     name: "timestep",
     default: "0.002",
     help: "integrator step h, seconds",
+    unit: Some("s"),
+    hint_id: "recipe-pendulum-energy-hint-timestep",
+    ..POSITIVE
 };
 const FLAG_LENGTH: ArgSpec = ArgSpec {
     name: "length",
     default: "0.3",
     help: "capsule length L, metres",
+    unit: Some("m"),
+    hint_id: "recipe-pendulum-energy-hint-length",
+    ..POSITIVE
 };
 const FLAG_MASS: ArgSpec = ArgSpec {
     name: "mass",
     default: "0.2",
     help: "capsule mass m, kg",
+    unit: Some("kg"),
+    hint_id: "recipe-pendulum-energy-hint-mass",
+    ..POSITIVE
 };
 const FLAG_RADIUS: ArgSpec = ArgSpec {
     name: "radius",
     default: "0.01",
     help: "capsule radius r, metres",
+    unit: Some("m"),
+    hint_id: "recipe-pendulum-energy-hint-radius",
+    ..POSITIVE
 };
-const FLAG_INTEGRATOR: ArgSpec = ArgSpec {
-    name: "integrator",
-    default: "euler",
-    help: "euler (MuJoCo default, implicit damping) or rk4",
-};
+const FLAG_INTEGRATOR: ArgSpec = ArgSpec::number(
+    "integrator",
+    "euler",
+    "euler (MuJoCo default, implicit damping) or rk4",
+)
+.kind(ArgKind::Choice(&["euler", "rk4"]))
+.hint("recipe-pendulum-energy-hint-integrator");
 
 const FLAGS: [ArgSpec; 7] = [
     FLAG_DAMPING,
@@ -102,6 +120,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &FLAGS,
     writes: &[CSV_NAME],
+    quirks_id: "recipe-pendulum-energy-quirks",
+    plan: plan_of::<Entry>,
+    page: None,
 };
 
 /// MuJoCo's integrator choice.
@@ -172,22 +193,40 @@ impl PendulumParams {
     /// Checks the model (what [`Pendulum::new`] needs) without the run length: positive
     /// timestep, length, mass and radius, non-negative damping, finite angle.
     pub fn validate_model(&self) -> Result<(), RecipeError> {
-        positive(FLAG_TIMESTEP.name, self.timestep_s)?;
-        positive(FLAG_LENGTH.name, self.length_m)?;
-        positive(FLAG_MASS.name, self.mass_kg)?;
-        positive(FLAG_RADIUS.name, self.radius_m)?;
+        for (spec, value) in [
+            (&FLAG_TIMESTEP, self.timestep_s),
+            (&FLAG_LENGTH, self.length_m),
+            (&FLAG_MASS, self.mass_kg),
+            (&FLAG_RADIUS, self.radius_m),
+        ] {
+            finite(spec.name, value)?;
+            positive(spec.name, value)?;
+        }
+        finite(FLAG_DAMPING.name, self.damping)?;
         in_range(FLAG_DAMPING.name, self.damping, 0.0, f64::INFINITY)?;
         finite(FLAG_ANGLE.name, self.angle_deg)?;
+        let inertia = capsule_joint_inertia(self.length_m, self.mass_kg, self.radius_m);
+        if !(inertia.is_finite() && inertia > 0.0) {
+            // Extreme sizes (a radius of 1e-200 m...) under- or overflow the capsule formula.
+            return Err(RecipeError::OutOfRange {
+                param: FLAG_RADIUS.name.to_string(),
+                value: self.radius_m,
+                min: 0.0,
+                max: f64::INFINITY,
+            });
+        }
         Ok(())
     }
 
     /// Checks everything and returns the number of steps, `int(duration_s / timestep_s)`:
     /// at least 1 (the recipe cannot report a drift without rows) and at most [`MAX_STEPS`].
     pub fn validate(&self) -> Result<u64, RecipeError> {
+        finite(ARGS[0].name, self.duration_s)?;
         positive(ARGS[0].name, self.duration_s)?;
         self.validate_model()?;
-        let steps = within_limit(
+        let steps = rows_within(
             ARGS[0].name,
+            &[FLAG_TIMESTEP.name],
             (self.duration_s / self.timestep_s).trunc(),
             MAX_STEPS,
         )?;
@@ -258,8 +297,7 @@ pub struct PendulumRow {
 /// ```
 /// use bsv_playground::recipes::pendulum_energy::{Pendulum, PendulumParams};
 /// let params = PendulumParams::default();
-/// params.validate_model().unwrap();
-/// let mut pendulum = Pendulum::new(&params);
+/// let mut pendulum = Pendulum::new(&params).unwrap();
 /// let row = pendulum.step();
 /// // The recipe's first row: potential energy at the starting 120°, m g (L + L/2).
 /// assert!((row.pe - 0.2 * 9.81 * 0.45).abs() < 1e-12);
@@ -277,18 +315,19 @@ pub struct Pendulum {
 }
 
 impl Pendulum {
-    /// The pendulum at rest at `angle_deg`. Call [`PendulumParams::validate_model`] first:
-    /// invalid parameters give NaN states, never a panic.
-    pub fn new(params: &PendulumParams) -> Pendulum {
+    /// The pendulum at rest at `angle_deg`, after [`PendulumParams::validate_model`] (the
+    /// run length is not checked: a handle steps as long as it is asked to).
+    pub fn new(params: &PendulumParams) -> Result<Pendulum, RecipeError> {
+        params.validate_model()?;
         let theta = params.angle_deg.to_radians();
-        Pendulum {
+        Ok(Pendulum {
             params: *params,
             inertia: capsule_joint_inertia(params.length_m, params.mass_kg, params.radius_m),
             theta,
             omega: 0.0,
             theta_evaluated: theta,
             steps_taken: 0,
-        }
+        })
     }
 
     /// The parameters it was built with.
@@ -399,9 +438,45 @@ impl Pendulum {
 
 /// All rows of a run: `int(duration / h)` steps from the starting angle.
 pub fn simulate(params: &PendulumParams) -> Result<Vec<PendulumRow>, RecipeError> {
+    simulate_with(params, &mut Progress::silent())
+}
+
+/// [`simulate`] reporting its steps as the first half of `progress`.
+pub fn simulate_with(
+    params: &PendulumParams,
+    progress: &mut Progress,
+) -> Result<Vec<PendulumRow>, RecipeError> {
     let steps = params.validate()?;
-    let mut pendulum = Pendulum::new(params);
-    Ok((0..steps).map(|_| pendulum.step()).collect())
+    let mut pendulum = Pendulum::new(params)?;
+    Ok((0..steps)
+        .map(|k| {
+            progress.phase_at(0, 2, k, steps);
+            pendulum.step()
+        })
+        .collect())
+}
+
+/// Relative growth of the body's true energy above its start (in %) beyond which a run is
+/// reported: damping only removes energy, so growth is the integrator's error.
+pub const ENERGY_GROWTH_WARN_PERCENT: f64 = 1.0;
+
+/// What looks wrong with a run: the body's true energy grew (the step is too large).
+pub fn warnings(params: &PendulumParams, rows: &[PendulumRow]) -> Vec<RecipeWarning> {
+    let Ok(start) = Pendulum::new(params).map(|p| p.true_energy()) else {
+        return Vec::new();
+    };
+    let peak = rows
+        .iter()
+        .map(|r| r.true_energy)
+        .fold(f64::NEG_INFINITY, f64::max);
+    // Energy is measured from the lowest point: a start at rest hanging down has none.
+    if start > 0.0 && peak.is_finite() {
+        let percent = (peak - start) / start * 100.0;
+        if percent > ENERGY_GROWTH_WARN_PERCENT {
+            return vec![RecipeWarning::EnergyGrows { percent }];
+        }
+    }
+    Vec::new()
 }
 
 /// `max(total) − min(total)` over the rows, the figure the recipe prints (0 without rows).
@@ -416,9 +491,19 @@ pub fn energy_drift(rows: &[PendulumRow]) -> f64 {
 
 /// Runs the recipe: the CSV and the line the Python recipe prints.
 pub fn run(params: &PendulumParams) -> Result<RecipeOutput, RecipeError> {
-    let rows = simulate(params)?;
+    run_with(params, &mut Progress::silent())
+}
+
+/// [`run`] reporting steps, then CSV rows, to `progress`.
+pub fn run_with(
+    params: &PendulumParams,
+    progress: &mut Progress,
+) -> Result<RecipeOutput, RecipeError> {
+    let rows = simulate_with(params, progress)?;
     let mut csv = CsvText::with_header(&CSV_HEADER);
-    for r in &rows {
+    let n = rows.len() as u64;
+    for (k, r) in rows.iter().enumerate() {
+        progress.phase_at(1, 2, k as u64, n);
         csv.floats(&[r.t_s, r.theta, r.omega, r.ke, r.pe, r.total]);
     }
     let summary = format!(
@@ -426,12 +511,47 @@ pub fn run(params: &PendulumParams) -> Result<RecipeOutput, RecipeError> {
         rows.len(),
         fixed(energy_drift(&rows), 6)
     );
-    Ok(RecipeOutput::single(CSV_NAME, csv.finish(), summary))
+    Ok(
+        RecipeOutput::single(CSV_NAME, csv.finish(), summary)
+            .with_warnings(warnings(params, &rows)),
+    )
+}
+
+/// Reads the recipe's positional argument and flags and validates them.
+pub fn params_from_args(args: &Args) -> Result<PendulumParams, RecipeError> {
+    let params = PendulumParams::from_args(args)?;
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = PendulumParams;
+
+    fn params(args: &Args) -> Result<PendulumParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(params: &PendulumParams, _args: &Args) -> Result<Plan, RecipeError> {
+        Ok(Plan {
+            rows: params.validate()?,
+        })
+    }
+
+    fn run(
+        params: &PendulumParams,
+        _args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        run_with(params, progress)
+    }
 }
 
 /// Entry point for the CLI and `runRecipe`.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    run(&PendulumParams::from_args(args)?)
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]
@@ -454,7 +574,7 @@ mod tests {
     #[test]
     fn first_row_matches_mujoco() {
         // pendulum_default golden, row 0: pe from the starting angle (120°), z_tip = +0.15 m.
-        let mut p = Pendulum::new(&PendulumParams::default());
+        let mut p = Pendulum::new(&PendulumParams::default()).unwrap();
         let row = p.step();
         assert_eq!(row.t_s, 0.0);
         assert!((row.theta - 2.0942317851818606).abs() < 1e-14);
@@ -471,7 +591,7 @@ mod tests {
             ..PendulumParams::default()
         };
         let rows = simulate(&params).unwrap();
-        let e0 = Pendulum::new(&params).true_energy();
+        let e0 = Pendulum::new(&params).unwrap().true_energy();
         let worst = rows
             .iter()
             .map(|r| (r.true_energy - e0).abs())
@@ -495,7 +615,7 @@ mod tests {
             angle_deg: 0.0,
             ..PendulumParams::default()
         };
-        let mut p = Pendulum::new(&params);
+        let mut p = Pendulum::new(&params).unwrap();
         assert_eq!(p.true_energy(), 0.0);
         let row = p.step();
         assert_eq!((row.theta, row.omega, row.total), (0.0, 0.0, 0.0));

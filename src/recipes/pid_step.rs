@@ -18,9 +18,10 @@
 //! - the gains may be any finite numbers. An unstable loop grows until it overflows to `inf` and
 //!   then `nan`, and the table shows that exactly as Python prints it.
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::{check_count, finite, in_range, parse_count, ArgSpec, Args};
+use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{check_count, finite, in_range, parse_count, ArgKind, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
+use crate::error::RecipeWarning;
 use crate::pyfmt::{fixed, py_round, CsvText};
 
 /// Controller and plant sample period, s (fixed in the recipe).
@@ -37,32 +38,26 @@ pub const FILE_NAME: &str = "pid_step.csv";
 const HEADER: [&str; 5] = ["t", "r", "y", "u", "e"];
 
 const ARGS: [ArgSpec; 5] = [
-    ArgSpec {
-        name: "Kp",
-        default: "1.2",
-        help: "proportional gain",
-    },
-    ArgSpec {
-        name: "Ki",
-        default: "0.4",
-        help: "integral gain, 1/s",
-    },
-    ArgSpec {
-        name: "Kd",
-        default: "0.05",
-        help: "derivative gain, s",
-    },
-    ArgSpec {
-        name: "tau",
-        default: "0.8",
-        help: "plant time constant, s",
-    },
-    ArgSpec {
-        name: "steps",
-        default: "80",
-        help: "number of 0.05 s steps",
-    },
+    ArgSpec::number("Kp", "1.2", "proportional gain").hint("recipe-pid-step-hint-Kp"),
+    ArgSpec::number("Ki", "0.4", "integral gain, 1/s")
+        .unit("1/s")
+        .hint("recipe-pid-step-hint-Ki"),
+    ArgSpec::number("Kd", "0.05", "derivative gain, s")
+        .unit("s")
+        .hint("recipe-pid-step-hint-Kd"),
+    ArgSpec::number("tau", "0.8", "plant time constant, s")
+        .unit("s")
+        .limits(Bound::Incl(0.0), Bound::Incl(TAU_MAX_S))
+        .hint("recipe-pid-step-hint-tau"),
+    ArgSpec::number("steps", "80", "number of 0.05 s steps")
+        .kind(ArgKind::Integer)
+        .limits(Bound::Incl(0.0), Bound::Incl(MAX_STEPS as f64))
+        .hint("recipe-pid-step-hint-steps"),
 ];
+
+/// A final output this far from the unit setpoint means the loop diverged (a stable loop ends
+/// near 1; the default ends at 0.7967).
+pub const DIVERGED_ABS: f64 = 1e3;
 
 /// `pid-step`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
@@ -71,6 +66,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[FILE_NAME],
+    quirks_id: "recipe-pid-step-quirks",
+    plan: plan_of::<Entry>,
+    page: None,
 };
 
 /// Controller gains, plant time constant and run length (the recipe's defaults: 1.2, 0.4, 0.05,
@@ -135,6 +133,14 @@ pub struct PidSample {
 /// assert_eq!(summary(&rows), "wrote 80 PID samples final_y=0.7967 -> pid_step.csv");
 /// ```
 pub fn simulate(params: &PidParams) -> Result<Vec<PidSample>, RecipeError> {
+    simulate_with(params, &mut Progress::silent())
+}
+
+/// [`simulate`] reporting its rows as the first half of `progress`.
+pub fn simulate_with(
+    params: &PidParams,
+    progress: &mut Progress,
+) -> Result<Vec<PidSample>, RecipeError> {
     params.validate()?;
     let (kp, ki, kd) = (params.kp, params.ki, params.kd);
     let dt = DT_S;
@@ -150,6 +156,7 @@ pub fn simulate(params: &PidParams) -> Result<Vec<PidSample>, RecipeError> {
         let u = kp * e + ki * integ + kd * deriv;
         y = y + a * (u - y);
         prev_e = e;
+        progress.phase_at(0, 2, k as u64, steps as u64);
         rows.push(PidSample {
             t: py_round(k as f64 * dt, 4),
             r,
@@ -163,11 +170,35 @@ pub fn simulate(params: &PidParams) -> Result<Vec<PidSample>, RecipeError> {
 
 /// `pid_step.csv` exactly as the recipe writes it.
 pub fn to_csv(samples: &[PidSample]) -> String {
+    to_csv_with(samples, &mut Progress::silent())
+}
+
+/// [`to_csv`] reporting its rows as the second half of `progress`.
+pub fn to_csv_with(samples: &[PidSample], progress: &mut Progress) -> String {
     let mut csv = CsvText::with_header(&HEADER);
-    for s in samples {
+    let n = samples.len() as u64;
+    for (k, s) in samples.iter().enumerate() {
+        progress.phase_at(1, 2, k as u64, n);
         csv.floats(&[s.t, s.r, s.y, s.u, s.e]);
     }
     csv.finish()
+}
+
+/// What looks wrong with a response: an output that overflowed (not finite from some step
+/// on) or that ends far from the setpoint (an unstable loop).
+pub fn warnings(samples: &[PidSample]) -> Vec<RecipeWarning> {
+    if let Some(step) = samples.iter().position(|s| !s.y.is_finite()) {
+        return vec![RecipeWarning::NotFinite { step: step as u64 }];
+    }
+    let final_y = samples.last().map_or(0.0, |s| s.y);
+    if (final_y - SETPOINT).abs() > DIVERGED_ABS {
+        let peak = samples.iter().fold(0.0f64, |m, s| m.max(s.y.abs()));
+        return vec![RecipeWarning::Diverged {
+            peak,
+            final_value: final_y,
+        }];
+    }
+    Vec::new()
 }
 
 /// The line the recipe prints: the final plant output (0 before any step) with 4 decimals.
@@ -180,25 +211,49 @@ pub fn summary(samples: &[PidSample]) -> String {
     )
 }
 
-/// Parses the recipe's arguments.
+/// Parses the recipe's arguments (any whole-number notation for `steps`) and validates them.
 pub fn params_from_args(args: &Args) -> Result<PidParams, RecipeError> {
-    Ok(PidParams {
+    let params = PidParams {
         kp: args.f64(0, &ARGS[0])?,
         ki: args.f64(1, &ARGS[1])?,
         kd: args.f64(2, &ARGS[2])?,
         tau: args.f64(3, &ARGS[3])?,
         steps: parse_count(ARGS[4].name, args.text(4, &ARGS[4]), 0, MAX_STEPS)?,
-    })
+    };
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = PidParams;
+
+    fn params(args: &Args) -> Result<PidParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(params: &PidParams, _args: &Args) -> Result<Plan, RecipeError> {
+        Ok(Plan {
+            rows: params.steps.unsigned_abs(),
+        })
+    }
+
+    fn run(
+        params: &PidParams,
+        _args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        let rows = simulate_with(params, progress)?;
+        let csv = to_csv_with(&rows, progress);
+        Ok(RecipeOutput::single(FILE_NAME, csv, summary(&rows)).with_warnings(warnings(&rows)))
+    }
 }
 
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    let rows = simulate(&params_from_args(args)?)?;
-    Ok(RecipeOutput::single(
-        FILE_NAME,
-        to_csv(&rows),
-        summary(&rows),
-    ))
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]
@@ -209,13 +264,11 @@ mod tests {
 
     use super::*;
     use crate::recipes::run_strs;
+    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
 
     #[test]
     fn defaults_in_one_place() {
-        assert_eq!(
-            params_from_args(&Args::default()).unwrap(),
-            PidParams::default()
-        );
+        assert_defaults_in_one_place::<Entry>();
     }
 
     #[test]
@@ -301,9 +354,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            let e = run_strs(INFO.id, raw).unwrap_err();
-            assert!(ok(&e), "{raw:?}: {e:?}");
-            assert_eq!(e.param(), Some(param), "{raw:?}");
+            assert_rejects(INFO.id, raw, param, ok)
         };
         use RecipeError as E;
         check(&["1", "1", "1", "1", "-1"], "steps", |e| {
@@ -314,9 +365,22 @@ mod tests {
             "steps",
             |e| matches!(e, E::OutOfRange { max, .. } if *max == 1e6),
         );
-        check(&["1", "1", "1", "1", "80.0"], "steps", |e| {
+        check(&["1", "1", "1", "1", "80.5"], "steps", |e| {
             matches!(e, E::NotAnInteger { .. })
         });
+        // Whole numbers in any notation (issue 8): "80.0" and "8e1" are 80 steps.
+        for whole in ["80.0", "8e1"] {
+            let out = run_strs(INFO.id, &["1.2", "0.4", "0.05", "0.8", whole]).unwrap();
+            assert_eq!(
+                out.summary,
+                "wrote 80 PID samples final_y=0.7967 -> pid_step.csv"
+            );
+        }
+        check(
+            &["1", "1", "1", "1", "1e9"],
+            "steps",
+            |e| matches!(e, E::OutOfRange { max, .. } if *max == 1e6),
+        );
         check(&["1", "1", "1", "-0.05"], "tau", |e| {
             matches!(e, E::OutOfRange { .. })
         });

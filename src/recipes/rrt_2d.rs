@@ -18,11 +18,11 @@
 //! [`Rrt`] is the stepping handle (one call of [`Rrt::step`] = one loop iteration); the recipe
 //! run drives the same handle to the end, so a stepped tree equals the batch tree.
 
-use super::{CsvFile, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, ArgSpec, Args};
-use crate::error::RecipeError;
+use super::{plan_of, CsvFile, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{finite, in_range, parse_i64, parse_seed, ArgSpec, Args, Bound};
+use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, Cell, CsvText};
-use crate::rng::{check_seed, parse_seed, NumpyRng};
+use crate::rng::{check_seed, NumpyRng};
 
 /// The axis-aligned obstacle of the recipe, closed on all sides.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -69,32 +69,40 @@ pub const DEFAULT_MAX_ITER: usize = 800;
 /// run costs O(max_iter^2) distance evaluations (50 000 iterations is about 1.25e9).
 pub const MAX_ITER_LIMIT: usize = 50_000;
 
+/// Nearest-node distance checks that cost about as much as one output row of the other
+/// recipes (for [`Kernel::plan`]).
+pub const NEAREST_CHECKS_PER_ROW: u64 = 500;
+
 /// Positional arguments of `rrt_2d_grid.py`.
 pub const ARGS: [ArgSpec; 2] = [
-    ArgSpec {
-        name: "seed",
-        default: "7",
-        help: "RNG seed of np.random.default_rng, an integer in [0, 2^63)",
-    },
-    ArgSpec {
-        name: "max_iter",
-        default: "800",
-        help: "iteration budget, 0 to 50000",
-    },
+    ArgSpec::seed(
+        "seed",
+        "7",
+        "RNG seed of np.random.default_rng, an integer in [0, 2^63)",
+    )
+    .hint("recipe-hint-seed"),
+    ArgSpec::integer(
+        "max_iter",
+        "800",
+        "iteration budget, 0 to 50000",
+        0,
+        MAX_ITER_LIMIT as i64,
+    )
+    .hint("recipe-rrt-2d-hint-max_iter"),
 ];
 
 /// Options beyond the recipe: the goal position.
 pub const FLAGS: [ArgSpec; 2] = [
-    ArgSpec {
-        name: "goal-x",
-        default: "0.9",
-        help: "goal x in [0, 1] (inside the obstacle makes it unreachable)",
-    },
-    ArgSpec {
-        name: "goal-y",
-        default: "0.9",
-        help: "goal y in [0, 1]",
-    },
+    ArgSpec::number(
+        "goal-x",
+        "0.9",
+        "goal x in [0, 1] (inside the obstacle makes it unreachable)",
+    )
+    .limits(Bound::Incl(0.0), Bound::Incl(1.0))
+    .hint("recipe-rrt-2d-hint-goal-x"),
+    ArgSpec::number("goal-y", "0.9", "goal y in [0, 1]")
+        .limits(Bound::Incl(0.0), Bound::Incl(1.0))
+        .hint("recipe-rrt-2d-hint-goal-y"),
 ];
 
 pub const INFO: RecipeInfo = RecipeInfo {
@@ -103,6 +111,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &FLAGS,
     writes: &[PATH_CSV, NODES_CSV],
+    quirks_id: "recipe-rrt-2d-quirks",
+    plan: plan_of::<Entry>,
+    page: None,
 };
 
 const PATH_CSV: &str = "rrt_path.csv";
@@ -138,6 +149,8 @@ impl RrtParams {
                 param: "max_iter".to_string(),
                 count: self.max_iter as u64,
                 limit: MAX_ITER_LIMIT as u64,
+                also: Vec::new(),
+                square: false,
             });
         }
         for (param, value) in [("goal-x", self.goal[0]), ("goal-y", self.goal[1])] {
@@ -372,11 +385,42 @@ pub fn path_length(path: &[[f64; 2]]) -> f64 {
 
 /// Grows the tree until it reaches the goal or spends `max_iter` iterations.
 pub fn run(params: &RrtParams) -> Result<Rrt, RecipeError> {
+    run_with(params, &mut Progress::silent())
+}
+
+/// [`run`] reporting iterations to `progress`. The nearest-node scan grows with the tree, so
+/// the reported rows are weighted by their cost (iteration k costs about k): the bar moves at
+/// an even pace in time.
+pub fn run_with(params: &RrtParams, progress: &mut Progress) -> Result<Rrt, RecipeError> {
     let mut rrt = Rrt::new(params)?;
+    let n = params.max_iter as u64;
+    let total = (n as f64) * (n as f64);
     while !rrt.is_done() {
         rrt.step();
+        let k = rrt.iterations() as f64;
+        if total > 0.0 {
+            progress.phase_at(0, 1, (k * k) as u64, total as u64);
+        }
     }
     Ok(rrt)
+}
+
+/// What looks wrong with a finished run: a goal inside the obstacle (never reachable), or a
+/// goal not reached within the budget.
+pub fn warnings(rrt: &Rrt) -> Vec<RecipeWarning> {
+    let goal = rrt.goal();
+    if OBSTACLE.contains(goal) {
+        vec![RecipeWarning::GoalInObstacle {
+            x: goal[0],
+            y: goal[1],
+        }]
+    } else if rrt.found().is_none() {
+        vec![RecipeWarning::GoalNotReached {
+            iterations: rrt.iterations() as u64,
+        }]
+    } else {
+        Vec::new()
+    }
 }
 
 /// The two CSVs and the summary line of a finished run, exactly as the recipe writes them.
@@ -414,32 +458,70 @@ pub fn output(rrt: &Rrt) -> RecipeOutput {
             },
         ],
         summary,
+        warnings: warnings(rrt),
     }
 }
 
-/// Parses `seed max_iter [--goal-x X] [--goal-y Y]` into parameters (validated by [`Rrt::new`]).
+/// Parses `seed max_iter [--goal-x X] [--goal-y Y]` into parameters (any whole-number notation
+/// for the seed and `max_iter`) and validates them.
 pub fn params_from_args(args: &Args) -> Result<RrtParams, RecipeError> {
     let [seed_spec, max_iter_spec] = &ARGS;
     let [goal_x_spec, goal_y_spec] = &FLAGS;
     let seed = parse_seed(seed_spec.name, args.text(0, seed_spec))?;
-    let max_iter = args.i64(1, max_iter_spec)?;
-    let max_iter = usize::try_from(max_iter).map_err(|_| RecipeError::OutOfRange {
+    let out_of_range = |value: f64| RecipeError::OutOfRange {
         param: max_iter_spec.name.to_string(),
-        value: max_iter as f64,
+        value,
         min: 0.0,
         max: MAX_ITER_LIMIT as f64,
-    })?;
+    };
+    let max_iter = match parse_i64(max_iter_spec.name, args.text(1, max_iter_spec)) {
+        Ok(v) => v,
+        Err(RecipeError::OutOfRange { value, .. }) => return Err(out_of_range(value)),
+        Err(e) => return Err(e),
+    };
+    let max_iter = usize::try_from(max_iter).map_err(|_| out_of_range(max_iter as f64))?;
     let goal = [args.flag_f64(goal_x_spec)?, args.flag_f64(goal_y_spec)?];
-    Ok(RrtParams {
+    let params = RrtParams {
         seed,
         max_iter,
         goal,
-    })
+    };
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = RrtParams;
+
+    fn params(args: &Args) -> Result<RrtParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    /// Rows of work: the iteration budget, weighted by the nearest-node search that grows
+    /// with the tree (`max_iter² / 500`, comparable with the other recipes' rows), at least
+    /// `max_iter`. A run may stop earlier, at the goal.
+    fn plan(params: &RrtParams, _args: &Args) -> Result<Plan, RecipeError> {
+        let n = params.max_iter as u64;
+        Ok(Plan {
+            rows: (n * n / NEAREST_CHECKS_PER_ROW).max(n),
+        })
+    }
+
+    fn run(
+        params: &RrtParams,
+        _args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        Ok(output(&run_with(params, progress)?))
+    }
 }
 
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    Ok(output(&run(&params_from_args(args)?)?))
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]

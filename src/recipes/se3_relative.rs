@@ -22,7 +22,7 @@
 
 use nalgebra::{Matrix3, Matrix4, SMatrix, Vector3};
 
-use super::{RecipeInfo, RecipeOutput};
+use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
 use crate::args::{finite, ArgSpec, Args};
 use crate::error::RecipeError;
 use crate::numpy::matmul;
@@ -37,66 +37,42 @@ const CSV_HEADER: [&str; 6] = ["x_m", "y_m", "z_m", "roll_rad", "pitch_rad", "ya
 pub const GIMBAL_COS_EPS: f64 = 1e-8;
 
 const ARGS: [ArgSpec; 12] = [
-    ArgSpec {
-        name: "ax",
-        default: "0",
-        help: "pose A x, metres",
-    },
-    ArgSpec {
-        name: "ay",
-        default: "0",
-        help: "pose A y, metres",
-    },
-    ArgSpec {
-        name: "az",
-        default: "0",
-        help: "pose A z, metres",
-    },
-    ArgSpec {
-        name: "ar",
-        default: "0",
-        help: "pose A roll (about x), radians",
-    },
-    ArgSpec {
-        name: "ap",
-        default: "0",
-        help: "pose A pitch (about y), radians",
-    },
-    ArgSpec {
-        name: "aw",
-        default: "0",
-        help: "pose A yaw (about z), radians",
-    },
-    ArgSpec {
-        name: "bx",
-        default: "0.1",
-        help: "pose B x, metres",
-    },
-    ArgSpec {
-        name: "by",
-        default: "0.05",
-        help: "pose B y, metres",
-    },
-    ArgSpec {
-        name: "bz",
-        default: "0.02",
-        help: "pose B z, metres",
-    },
-    ArgSpec {
-        name: "br",
-        default: "0.2",
-        help: "pose B roll (about x), radians",
-    },
-    ArgSpec {
-        name: "bp",
-        default: "0.1",
-        help: "pose B pitch (about y), radians",
-    },
-    ArgSpec {
-        name: "bw",
-        default: "-0.3",
-        help: "pose B yaw (about z), radians",
-    },
+    ArgSpec::number("ax", "0", "pose A x, metres")
+        .unit("m")
+        .hint("recipe-se3-relative-hint-position"),
+    ArgSpec::number("ay", "0", "pose A y, metres")
+        .unit("m")
+        .hint("recipe-se3-relative-hint-position"),
+    ArgSpec::number("az", "0", "pose A z, metres")
+        .unit("m")
+        .hint("recipe-se3-relative-hint-position"),
+    ArgSpec::number("ar", "0", "pose A roll (about x), radians")
+        .unit("rad")
+        .hint("recipe-se3-relative-hint-angle"),
+    ArgSpec::number("ap", "0", "pose A pitch (about y), radians")
+        .unit("rad")
+        .hint("recipe-se3-relative-hint-angle"),
+    ArgSpec::number("aw", "0", "pose A yaw (about z), radians")
+        .unit("rad")
+        .hint("recipe-se3-relative-hint-angle"),
+    ArgSpec::number("bx", "0.1", "pose B x, metres")
+        .unit("m")
+        .hint("recipe-se3-relative-hint-position"),
+    ArgSpec::number("by", "0.05", "pose B y, metres")
+        .unit("m")
+        .hint("recipe-se3-relative-hint-position"),
+    ArgSpec::number("bz", "0.02", "pose B z, metres")
+        .unit("m")
+        .hint("recipe-se3-relative-hint-position"),
+    ArgSpec::number("br", "0.2", "pose B roll (about x), radians")
+        .unit("rad")
+        .hint("recipe-se3-relative-hint-angle"),
+    ArgSpec::number("bp", "0.1", "pose B pitch (about y), radians")
+        .unit("rad")
+        .hint("recipe-se3-relative-hint-angle"),
+    ArgSpec::number("bw", "-0.3", "pose B yaw (about z), radians")
+        .unit("rad")
+        .hint("recipe-se3-relative-hint-angle"),
 ];
 
 /// What the recipe is, takes and writes.
@@ -106,6 +82,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[CSV_NAME],
+    quirks_id: "recipe-se3-relative-quirks",
+    plan: plan_of::<Entry>,
+    page: None,
 };
 
 /// A pose as the recipe takes it: position in metres, roll/pitch/yaw in radians (Z·Y·X).
@@ -284,9 +263,39 @@ pub fn run(params: &Se3Params) -> Result<RecipeOutput, RecipeError> {
     Ok(RecipeOutput::single(CSV_NAME, csv.finish(), summary))
 }
 
+/// Reads the twelve positional numbers and validates them.
+pub fn params_from_args(args: &Args) -> Result<Se3Params, RecipeError> {
+    let params = Se3Params::from_args(args)?;
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = Se3Params;
+
+    fn params(args: &Args) -> Result<Se3Params, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(_params: &Se3Params, _args: &Args) -> Result<Plan, RecipeError> {
+        Ok(Plan { rows: 1 })
+    }
+
+    fn run(
+        params: &Se3Params,
+        _args: &Args,
+        _progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        run(params)
+    }
+}
+
 /// Entry point for the CLI and `runRecipe`.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    run(&Se3Params::from_args(args)?)
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]

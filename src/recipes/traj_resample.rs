@@ -26,8 +26,8 @@
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 
-use super::{CsvFile, RecipeInfo, RecipeOutput};
-use crate::args::{finite, positive, within_limit, ArgSpec, Args};
+use super::{plan_of, CsvFile, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{finite, positive, rows_within, ArgKind, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::numpy::{arange, arange_len};
 use crate::pyfmt::{push_fixed, py_float, CsvText};
@@ -71,16 +71,17 @@ pub const MIN_ROWS: usize = 2;
 const END_PAD_S: f64 = 1e-12;
 
 const ARGS: [ArgSpec; 2] = [
-    ArgSpec {
-        name: "csv_path",
-        default: "",
-        help: "trajectory CSV with t_s,q1,q2,... (empty: the labeled sample)",
-    },
-    ArgSpec {
-        name: "dt",
-        default: "0.02",
-        help: "time step of the uniform grid, seconds",
-    },
+    ArgSpec::number(
+        "csv_path",
+        "",
+        "trajectory CSV with t_s,q1,q2,... (empty: the labeled sample)",
+    )
+    .kind(ArgKind::File)
+    .hint("recipe-traj-resample-hint-csv_path"),
+    ArgSpec::number("dt", "0.02", "time step of the uniform grid, seconds")
+        .unit("s")
+        .limits(Bound::Excl(0.0), Bound::None)
+        .hint("recipe-traj-resample-hint-dt"),
 ];
 
 /// What the recipe is, takes and writes.
@@ -90,6 +91,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[RESAMPLED_NAME, SAMPLE_NAME],
+    quirks_id: "recipe-traj-resample-quirks",
+    plan: plan_of::<Entry>,
+    page: None,
 };
 
 /// The recipe's arguments; `Default` is the recipe's (the sample, 0.02 s).
@@ -113,6 +117,7 @@ impl Default for ResampleParams {
 impl ResampleParams {
     /// Checks `dt > 0` (the output size is checked by [`resample`], which knows the span).
     pub fn validate(&self) -> Result<(), RecipeError> {
+        finite(ARGS[1].name, self.dt)?;
         positive(ARGS[1].name, self.dt)?;
         Ok(())
     }
@@ -211,11 +216,18 @@ pub struct Resampled {
 impl Resampled {
     /// The recipe's `traj_resampled.csv`: `t_s` with 6 decimals, joints with 8, `\r\n` ends.
     pub fn to_csv(&self) -> String {
+        self.to_csv_with(&mut Progress::silent(), (0, 1))
+    }
+
+    /// [`Self::to_csv`] reporting its rows as phase `phase.0` of `phase.1` of `progress`.
+    pub fn to_csv_with(&self, progress: &mut Progress, phase: (u64, u64)) -> String {
+        let n = self.t.len() as u64;
         let mut header = vec![TIME_COLUMN];
         header.extend(self.columns.iter().map(String::as_str));
         let mut out = CsvText::with_header(&header).finish();
         out.reserve(self.t.len() * (10 + 12 * self.q.len()));
         for (i, ti) in self.t.iter().enumerate() {
+            progress.phase_at(phase.0, phase.1, i as u64, n);
             push_fixed(&mut out, *ti, 6);
             for series in &self.q {
                 out.push(',');
@@ -313,6 +325,16 @@ fn interp_at(x: f64, bracket: Bracket, xp: &[f64], fp: &[f64]) -> f64 {
 /// Resamples every joint onto `np.arange(t[0], t[-1] + 1e-12, dt)`. Rejects `dt <= 0` and
 /// outputs of more than [`MAX_OUTPUT_CELLS`] cells.
 pub fn resample(traj: &Trajectory, dt: f64) -> Result<Resampled, RecipeError> {
+    resample_with(traj, dt, &mut Progress::silent(), (0, 1))
+}
+
+/// [`resample`] reporting its rows as phase `phase.0` of `phase.1` of `progress`.
+pub fn resample_with(
+    traj: &Trajectory,
+    dt: f64,
+    progress: &mut Progress,
+    phase: (u64, u64),
+) -> Result<Resampled, RecipeError> {
     positive(ARGS[1].name, dt)?;
     finite(ARGS[1].name, dt)?;
     traj.validate()?;
@@ -326,23 +348,24 @@ pub fn resample(traj: &Trajectory, dt: f64) -> Result<Resampled, RecipeError> {
         }
     };
     let joints = traj.q.len() as f64;
-    within_limit(
+    rows_within(
         ARGS[1].name,
+        &[ARGS[0].name],
         arange_len(start, stop, dt) * joints,
         MAX_OUTPUT_CELLS,
     )?;
     let t = arange(start, stop, dt, ARGS[1].name, MAX_OUTPUT_CELLS)?;
     let b = brackets(&t, &traj.t);
-    let q = traj
-        .q
-        .iter()
-        .map(|fp| {
-            t.iter()
-                .zip(&b)
-                .map(|(&x, &br)| interp_at(x, br, &traj.t, fp))
-                .collect()
-        })
-        .collect();
+    let cells = (t.len() * traj.q.len()) as u64;
+    let mut q = Vec::with_capacity(traj.q.len());
+    for (j, fp) in traj.q.iter().enumerate() {
+        let mut series = Vec::with_capacity(t.len());
+        for (i, (&x, &br)) in t.iter().zip(&b).enumerate() {
+            progress.phase_at(phase.0, phase.1, (j * t.len() + i) as u64, cells);
+            series.push(interp_at(x, br, &traj.t, fp));
+        }
+        q.push(series);
+    }
     Ok(Resampled {
         columns: traj.columns.clone(),
         t,
@@ -355,10 +378,108 @@ pub fn parse_trajectory(text: &str) -> Result<Trajectory, RecipeError> {
     parse_with_limits(text, MAX_INPUT_BYTES, MAX_INPUT_CELLS)
 }
 
+/// The shape of a trajectory CSV, enough to size its resampling, read cheaply (the header,
+/// the first and the last data line, and a count of line ends; no cell is parsed beyond
+/// those). A file whose last line the quick look cannot read (quotes) is parsed in full.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shape {
+    /// Data rows (lines after the header, blank lines included in a quick look).
+    pub rows: u64,
+    /// Joint columns (without `t_s` and `note`).
+    pub joints: usize,
+    pub t_first: f64,
+    pub t_last: f64,
+}
+
+impl Shape {
+    /// Rows of the resampled output at step `dt`.
+    pub fn out_rows(&self, dt: f64) -> f64 {
+        arange_len(self.t_first, self.t_last + END_PAD_S, dt)
+    }
+}
+
+/// Reads the [`Shape`] of a trajectory CSV (see there); errors are those the header and the
+/// first and last lines show (the run checks every line).
+pub fn shape_of(text: &str) -> Result<Shape, RecipeError> {
+    let bytes = text.len() as u64;
+    if bytes > MAX_INPUT_BYTES {
+        return Err(RecipeError::InputTooLarge {
+            bytes,
+            limit: MAX_INPUT_BYTES,
+        });
+    }
+    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut reader = CsvReader::new(body);
+    let mut fields: Vec<Cow<'_, str>> = Vec::new();
+    let Some(_) = reader.next_record(&mut fields)? else {
+        return Err(RecipeError::CsvTooFewRows {
+            rows: 0,
+            min: MIN_ROWS,
+        });
+    };
+    let header: Vec<String> = fields.iter().map(|f| f.to_string()).collect();
+    let layout = ColumnLayout::new(&header)?;
+    let time_index = layout.slots.iter().position(|s| matches!(s, Slot::Time));
+    let time_of = |fields: &[Cow<'_, str>]| -> Option<f64> {
+        time_index
+            .and_then(|i| fields.get(i))
+            .and_then(|f| parse_cell(f))
+    };
+    let first = match reader.next_record(&mut fields)? {
+        Some(_) => time_of(&fields),
+        None => None,
+    };
+    let rest = reader.rest();
+    let last_line = rest
+        .trim_end_matches(['\r', '\n'])
+        .rsplit(['\n', '\r'])
+        .next()
+        .unwrap_or("");
+    let quick_last = if last_line.contains('"') {
+        None
+    } else {
+        let cells: Vec<Cow<'_, str>> = last_line.split(',').map(Cow::Borrowed).collect();
+        if cells.len() == header.len() {
+            time_of(&cells)
+        } else {
+            None
+        }
+    };
+    let lines_after_first = rest.bytes().filter(|&c| c == b'\n').count() as u64;
+    match (first, quick_last) {
+        (Some(t_first), Some(t_last)) if lines_after_first > 0 && t_last > t_first => Ok(Shape {
+            rows: 1 + lines_after_first,
+            joints: layout.joint_names.len(),
+            t_first,
+            t_last,
+        }),
+        _ => {
+            // Too odd for a quick look: read it all (the errors are then the run's).
+            let traj = parse_trajectory(text)?;
+            Ok(Shape {
+                rows: traj.len() as u64,
+                joints: traj.columns.len(),
+                t_first: traj.t.first().copied().unwrap_or(0.0),
+                t_last: traj.t.last().copied().unwrap_or(0.0),
+            })
+        }
+    }
+}
+
 fn parse_with_limits(
     text: &str,
     max_bytes: u64,
     max_cells: u64,
+) -> Result<Trajectory, RecipeError> {
+    parse_limited(text, max_bytes, max_cells, &mut Progress::silent())
+}
+
+/// [`parse_with_limits`] reporting bytes read as the first third of `progress`.
+fn parse_limited(
+    text: &str,
+    max_bytes: u64,
+    max_cells: u64,
+    progress: &mut Progress,
 ) -> Result<Trajectory, RecipeError> {
     let bytes = text.len() as u64;
     if bytes > max_bytes {
@@ -384,7 +505,9 @@ fn parse_with_limits(
     let mut q: Vec<Vec<f64>> = vec![Vec::new(); layout.joint_names.len()];
     let mut row_values = vec![0.0; layout.joint_names.len()];
     let cells_per_row = 1 + layout.joint_names.len() as u64;
+    let total_bytes = text.len() as u64;
     while let Some(row) = reader.next_record(&mut fields)? {
+        progress.phase_at(0, 3, reader.pos as u64, total_bytes);
         if fields.len() != header.len() {
             return Err(RecipeError::CsvRagged {
                 row,
@@ -418,6 +541,8 @@ fn parse_with_limits(
                 param: ARGS[0].name.to_string(),
                 count: (t.len() as u64 + 1 + rows_left) * cells_per_row,
                 limit: max_cells,
+                also: Vec::new(),
+                square: false,
             });
         }
         t.push(time);
@@ -673,9 +798,18 @@ fn input_text<'a>(params: &ResampleParams, args: &'a Args) -> Result<&'a str, Re
 
 /// Runs the recipe on CSV `text` (the sample when `params.uses_sample()`).
 pub fn run_text(params: &ResampleParams, text: &str) -> Result<RecipeOutput, RecipeError> {
+    run_text_with(params, text, &mut Progress::silent())
+}
+
+/// [`run_text`] reporting parsing, resampling and CSV writing (a third each) to `progress`.
+pub fn run_text_with(
+    params: &ResampleParams,
+    text: &str,
+    progress: &mut Progress,
+) -> Result<RecipeOutput, RecipeError> {
     params.validate()?;
-    let traj = parse_trajectory(text)?;
-    let out = resample(&traj, params.dt)?;
+    let traj = parse_limited(text, MAX_INPUT_BYTES, MAX_INPUT_CELLS, progress)?;
+    let out = resample_with(&traj, params.dt, progress, (1, 3))?;
     let resampled_line = format!(
         "resampled {} -> {} rows at dt={}s -> {RESAMPLED_NAME}",
         traj.len(),
@@ -684,7 +818,7 @@ pub fn run_text(params: &ResampleParams, text: &str) -> Result<RecipeOutput, Rec
     );
     let mut files = vec![CsvFile {
         name: RESAMPLED_NAME.to_string(),
-        text: out.to_csv(),
+        text: out.to_csv_with(progress, (2, 3)),
     }];
     let summary = if params.uses_sample() {
         files.push(CsvFile {
@@ -695,14 +829,58 @@ pub fn run_text(params: &ResampleParams, text: &str) -> Result<RecipeOutput, Rec
     } else {
         resampled_line
     };
-    Ok(RecipeOutput { files, summary })
+    Ok(RecipeOutput {
+        files,
+        summary,
+        warnings: Vec::new(),
+    })
+}
+
+/// Reads the positional arguments and validates them (the input is read by the run).
+pub fn params_from_args(args: &Args) -> Result<ResampleParams, RecipeError> {
+    let params = ResampleParams::from_args(args)?;
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = ResampleParams;
+
+    fn params(args: &Args) -> Result<ResampleParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    /// From the attached input's [`Shape`] (read cheaply): the larger of the input and output
+    /// rows; too many output cells is an error naming `dt` and `csv_path`.
+    fn plan(params: &ResampleParams, args: &Args) -> Result<Plan, RecipeError> {
+        let shape = shape_of(input_text(params, args)?)?;
+        let out_rows = shape.out_rows(params.dt);
+        rows_within(
+            ARGS[1].name,
+            &[ARGS[0].name],
+            out_rows * shape.joints as f64,
+            MAX_OUTPUT_CELLS,
+        )?;
+        Ok(Plan {
+            rows: (out_rows as u64).max(shape.rows),
+        })
+    }
+
+    fn run(
+        params: &ResampleParams,
+        args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        run_text_with(params, input_text(params, args)?, progress)
+    }
 }
 
 /// Entry point for the CLI and `runRecipe`.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    let params = ResampleParams::from_args(args)?;
-    let text = input_text(&params, args)?;
-    run_text(&params, text)
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]
@@ -937,7 +1115,9 @@ mod tests {
             RecipeError::TooLarge {
                 param: "csv_path".into(),
                 count: 12,
-                limit: 8
+                limit: 8,
+                also: vec![],
+                square: false,
             }
         );
         let traj = parse_trajectory("t_s,a,b\n0,0,0\n100,1,1\n").unwrap();

@@ -25,8 +25,8 @@
 //!   `d_acc` finite (Python raises OverflowError on `t_acc ** 2`). Signs are dropped as in the
 //!   recipe (`abs()`), so the range applies to the magnitude.
 
-use super::{RecipeInfo, RecipeOutput};
-use crate::args::{finite, positive, ArgSpec, Args};
+use super::{plan_of, Kernel, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{finite, positive, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::pyfmt::{fixed, py_round, CsvText};
 
@@ -42,26 +42,19 @@ pub const FILE_NAME: &str = "trap_profile.csv";
 const HEADER: [&str; 4] = ["t", "s", "v", "a"];
 
 const ARGS: [ArgSpec; 4] = [
-    ArgSpec {
-        name: "distance",
-        default: "1.0",
-        help: "move distance (sign ignored)",
-    },
-    ArgSpec {
-        name: "vmax",
-        default: "0.5",
-        help: "speed limit (sign ignored)",
-    },
-    ArgSpec {
-        name: "amax",
-        default: "1.0",
-        help: "acceleration limit (sign ignored)",
-    },
-    ArgSpec {
-        name: "dt",
-        default: "0.01",
-        help: "sample period, s",
-    },
+    ArgSpec::number("distance", "1.0", "move distance (sign ignored)")
+        .limits(Bound::Incl(-MAGNITUDE_MAX), Bound::Incl(MAGNITUDE_MAX))
+        .hint("recipe-trapezoid-profile-hint-distance"),
+    ArgSpec::number("vmax", "0.5", "speed limit (sign ignored)")
+        .limits(Bound::Incl(-MAGNITUDE_MAX), Bound::Incl(MAGNITUDE_MAX))
+        .hint("recipe-trapezoid-profile-hint-vmax"),
+    ArgSpec::number("amax", "1.0", "acceleration limit (sign ignored)")
+        .limits(Bound::Incl(-MAGNITUDE_MAX), Bound::Incl(MAGNITUDE_MAX))
+        .hint("recipe-trapezoid-profile-hint-amax"),
+    ArgSpec::number("dt", "0.01", "sample period, s")
+        .unit("s")
+        .limits(Bound::Excl(0.0), Bound::None)
+        .hint("recipe-trapezoid-profile-hint-dt"),
 ];
 
 /// `trapezoid-profile`: id, Python file, arguments with the recipe's defaults, output file.
@@ -71,6 +64,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[FILE_NAME],
+    quirks_id: "recipe-trapezoid-profile-quirks",
+    plan: plan_of::<Entry>,
+    page: None,
 };
 
 /// Move and sampling parameters (the recipe's defaults: 1.0, 0.5, 1.0, dt 0.01 s).
@@ -129,6 +125,14 @@ impl TrapParams {
         self.plan().map(|_| ())
     }
 
+    /// About how many rows the run writes (`(t_total + 1e-12) / dt + 1`; 0 when invalid).
+    pub fn rows_estimate(&self) -> u64 {
+        match self.plan() {
+            Ok(plan) => ((plan.t_total + 1e-12) / self.dt + 1.0) as u64,
+            Err(_) => 0,
+        }
+    }
+
     fn plan(&self) -> Result<Plan, RecipeError> {
         let distance = magnitude("distance", self.distance, 0.0)?;
         for (param, value) in [("vmax", self.vmax), ("amax", self.amax)] {
@@ -169,6 +173,7 @@ impl TrapParams {
     }
 }
 
+/// Rows = t_total ÷ dt: dt and every argument that sets t_total are involved.
 fn too_many_rows(count: f64) -> RecipeError {
     RecipeError::TooLarge {
         param: "dt".to_string(),
@@ -178,6 +183,8 @@ fn too_many_rows(count: f64) -> RecipeError {
             u64::MAX
         },
         limit: MAX_ROWS,
+        also: vec!["distance".into(), "vmax".into(), "amax".into()],
+        square: false,
     }
 }
 
@@ -211,7 +218,13 @@ pub struct Profile {
 /// assert_eq!(p.summary(), "wrote 251 samples t_total=2.5000s vmax_used=0.5000 -> trap_profile.csv");
 /// ```
 pub fn compute(params: &TrapParams) -> Result<Profile, RecipeError> {
+    compute_with(params, &mut Progress::silent())
+}
+
+/// [`compute`] reporting its rows as the first half of `progress` (of the estimated rows).
+pub fn compute_with(params: &TrapParams, progress: &mut Progress) -> Result<Profile, RecipeError> {
     let plan = params.plan()?;
+    let estimate = params.rows_estimate();
     let Plan {
         triangle,
         amax,
@@ -243,6 +256,7 @@ pub fn compute(params: &TrapParams) -> Result<Profile, RecipeError> {
             v = vmax - amax * tau;
             s = d_acc + vmax * t_flat + vmax * tau - 0.5 * amax * crate::math::pow(tau, 2.0);
         }
+        progress.phase_at(0, 2, samples.len() as u64, estimate);
         samples.push(TrapSample {
             t: py_round(t, 5),
             s,
@@ -262,8 +276,15 @@ pub fn compute(params: &TrapParams) -> Result<Profile, RecipeError> {
 impl Profile {
     /// `trap_profile.csv` exactly as the recipe writes it.
     pub fn to_csv(&self) -> String {
+        self.to_csv_with(&mut Progress::silent())
+    }
+
+    /// [`Self::to_csv`] reporting its rows as the second half of `progress`.
+    pub fn to_csv_with(&self, progress: &mut Progress) -> String {
         let mut csv = CsvText::with_header(&HEADER);
-        for s in &self.samples {
+        let n = self.samples.len() as u64;
+        for (k, s) in self.samples.iter().enumerate() {
+            progress.phase_at(1, 2, k as u64, n);
             csv.floats(&[s.t, s.s, s.v, s.a]);
         }
         csv.finish()
@@ -280,24 +301,48 @@ impl Profile {
     }
 }
 
-/// Parses the recipe's arguments.
+/// Parses the recipe's arguments and validates them.
 pub fn params_from_args(args: &Args) -> Result<TrapParams, RecipeError> {
-    Ok(TrapParams {
+    let params = TrapParams {
         distance: args.f64(0, &ARGS[0])?,
         vmax: args.f64(1, &ARGS[1])?,
         amax: args.f64(2, &ARGS[2])?,
         dt: args.f64(3, &ARGS[3])?,
-    })
+    };
+    params.validate()?;
+    Ok(params)
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = TrapParams;
+
+    fn params(args: &Args) -> Result<TrapParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(params: &TrapParams, _args: &Args) -> Result<super::Plan, RecipeError> {
+        Ok(super::Plan {
+            rows: params.rows_estimate(),
+        })
+    }
+
+    fn run(
+        params: &TrapParams,
+        _args: &Args,
+        progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        let profile = compute_with(params, progress)?;
+        let csv = profile.to_csv_with(progress);
+        Ok(RecipeOutput::single(FILE_NAME, csv, profile.summary()))
+    }
 }
 
 /// Runs the recipe from command-line style arguments.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    let profile = compute(&params_from_args(args)?)?;
-    Ok(RecipeOutput::single(
-        FILE_NAME,
-        profile.to_csv(),
-        profile.summary(),
-    ))
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]
@@ -308,13 +353,11 @@ mod tests {
 
     use super::*;
     use crate::recipes::run_strs;
+    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
 
     #[test]
     fn defaults_in_one_place() {
-        assert_eq!(
-            params_from_args(&Args::default()).unwrap(),
-            TrapParams::default()
-        );
+        assert_defaults_in_one_place::<Entry>();
     }
 
     #[test]
@@ -371,9 +414,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            let e = run_strs(INFO.id, raw).unwrap_err();
-            assert!(ok(&e), "{raw:?}: {e:?}");
-            assert_eq!(e.param(), Some(param), "{raw:?}");
+            assert_rejects(INFO.id, raw, param, ok)
         };
         use RecipeError as E;
         check(&["1", "0.5", "1", "0"], "dt", |e| {

@@ -13,11 +13,11 @@
 //! The recipe draws `X = normal(size=(n, 2))` (row-major: x0, y0, x1, ...) from
 //! `default_rng(seed)`, then `Y = 1.3 R(35°) X + (0.4, -0.2) + normal(0, sigma, (n, 2))`.
 
-use super::{CsvFile, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, ArgSpec, Args};
-use crate::error::RecipeError;
+use super::{plan_of, CsvFile, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
+use crate::args::{finite, in_range, parse_i64, parse_seed, ArgSpec, Args, Bound};
+use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, CsvText};
-use crate::rng::{parse_seed, NumpyRng};
+use crate::rng::NumpyRng;
 use nalgebra::{Matrix2, Vector2};
 
 /// The true scale of the recipe's transform.
@@ -35,21 +35,27 @@ pub const MAX_POINTS: usize = 100_000;
 
 /// Positional arguments of `umeyama_align_2d.py`.
 pub const ARGS: [ArgSpec; 3] = [
-    ArgSpec {
-        name: "sigma",
-        default: "0.02",
-        help: "standard deviation of the noise added to Y (>= 0)",
-    },
-    ArgSpec {
-        name: "seed",
-        default: "3",
-        help: "RNG seed of np.random.default_rng, an integer in [0, 2^63)",
-    },
-    ArgSpec {
-        name: "n",
-        default: "12",
-        help: "number of point pairs, 2 to 100000",
-    },
+    ArgSpec::number(
+        "sigma",
+        "0.02",
+        "standard deviation of the noise added to Y (>= 0)",
+    )
+    .limits(Bound::Incl(0.0), Bound::None)
+    .hint("recipe-umeyama-2d-hint-sigma"),
+    ArgSpec::seed(
+        "seed",
+        "3",
+        "RNG seed of np.random.default_rng, an integer in [0, 2^63)",
+    )
+    .hint("recipe-hint-seed"),
+    ArgSpec::integer(
+        "n",
+        "12",
+        "number of point pairs, 2 to 100000",
+        MIN_POINTS as i64,
+        MAX_POINTS as i64,
+    )
+    .hint("recipe-umeyama-2d-hint-n"),
 ];
 
 pub const INFO: RecipeInfo = RecipeInfo {
@@ -58,6 +64,9 @@ pub const INFO: RecipeInfo = RecipeInfo {
     args: &ARGS,
     flags: &[],
     writes: &[CSV],
+    quirks_id: "recipe-umeyama-2d-quirks",
+    plan: plan_of::<Entry>,
+    page: None,
 };
 
 const CSV: &str = "umeyama_2d.csv";
@@ -187,6 +196,8 @@ impl UmeyamaParams {
                 param: "n".to_string(),
                 count: self.n as u64,
                 limit: MAX_POINTS as u64,
+                also: Vec::new(),
+                square: false,
             });
         }
         if self.n < MIN_POINTS {
@@ -271,18 +282,65 @@ pub fn output(fit: &Alignment) -> RecipeOutput {
             fixed(fit.rotation_deg, 2),
             fixed(fit.rmse, 4)
         ),
+        warnings: Vec::new(),
+    }
+}
+
+/// Parses `sigma seed n` (any whole-number notation for the seed and n) and validates them.
+pub fn params_from_args(args: &Args) -> Result<UmeyamaParams, RecipeError> {
+    let [sigma_spec, seed_spec, n_spec] = &ARGS;
+    let sigma = args.f64(0, sigma_spec)?;
+    let seed = parse_seed(seed_spec.name, args.text(1, seed_spec))?;
+    let n = match parse_i64(n_spec.name, args.text(2, n_spec)) {
+        Ok(n) => n,
+        Err(RecipeError::OutOfRange { value, .. }) => return Err(n_out_of_range(value)),
+        Err(e) => return Err(e),
+    };
+    let n = usize::try_from(n).map_err(|_| n_out_of_range(n as f64))?;
+    let params = UmeyamaParams { sigma, seed, n };
+    params.validate()?;
+    Ok(params)
+}
+
+/// What looks wrong with a fit: with two point pairs the similarity fits exactly whatever the
+/// noise, so the rmse says nothing.
+pub fn warnings(params: &UmeyamaParams) -> Vec<RecipeWarning> {
+    if params.n <= MIN_POINTS && params.sigma > 0.0 {
+        vec![RecipeWarning::FewPoints { n: params.n as u64 }]
+    } else {
+        Vec::new()
+    }
+}
+
+/// The recipe's uniform entry ([`Kernel`]).
+pub struct Entry;
+
+impl Kernel for Entry {
+    type Params = UmeyamaParams;
+
+    fn params(args: &Args) -> Result<UmeyamaParams, RecipeError> {
+        params_from_args(args)
+    }
+
+    fn plan(params: &UmeyamaParams, _args: &Args) -> Result<Plan, RecipeError> {
+        Ok(Plan {
+            rows: params.n as u64,
+        })
+    }
+
+    fn run(
+        params: &UmeyamaParams,
+        _args: &Args,
+        _progress: &mut Progress,
+    ) -> Result<RecipeOutput, RecipeError> {
+        let fit = run(params)?;
+        Ok(output(&fit).with_warnings(warnings(params)))
     }
 }
 
 /// Parses `sigma seed n`, runs, and writes the recipe's output.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    let [sigma_spec, seed_spec, n_spec] = &ARGS;
-    let sigma = args.f64(0, sigma_spec)?;
-    let seed = parse_seed(seed_spec.name, args.text(1, seed_spec))?;
-    let n = args.i64(2, n_spec)?;
-    let n = usize::try_from(n).map_err(|_| n_out_of_range(n as f64))?;
-    let fit = run(&UmeyamaParams { sigma, seed, n })?;
-    Ok(output(&fit))
+    super::run_of::<Entry>(args)
 }
 
 #[cfg(test)]

@@ -77,3 +77,39 @@ fn with_i18n<R>(f: impl FnOnce(&I18n) -> R) -> Option<R> {
     })
     .ok()
 }
+
+/// Smallest type in projector mode, CSS px: every text, canvas labels included, is at least
+/// this big at 1920×1080.
+pub const PROJECTOR_MIN_FONT_PX: f64 = 24.0;
+
+/// The canvas font size for a label of `base_px` CSS px: `base_px` normally, in projector mode
+/// 1.6 × `base_px` but never under [`PROJECTOR_MIN_FONT_PX`] (an 11 px tick label becomes
+/// 24 px, a 16 px title 25.6 px).
+pub fn canvas_font_px(base_px: f64) -> f64 {
+    scaled_font_px(base_px, projector())
+}
+
+/// [`canvas_font_px`] for a given projector state.
+pub fn scaled_font_px(base_px: f64, projector: bool) -> f64 {
+    if projector {
+        (base_px * 1.6).max(PROJECTOR_MIN_FONT_PX)
+    } else {
+        base_px
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    #[test]
+    fn projector_type_is_never_under_24_px() {
+        assert_eq!(scaled_font_px(11.0, false), 11.0);
+        assert_eq!(scaled_font_px(11.0, true), 24.0);
+        assert_eq!(scaled_font_px(16.0, true), 25.6);
+        for base in [8.0, 10.0, 12.0, 14.0, 20.0] {
+            assert!(scaled_font_px(base, true) >= PROJECTOR_MIN_FONT_PX);
+        }
+    }
+}

@@ -5,10 +5,12 @@
 //! runs under Node (kernel tests, `runRecipe`) where there is no DOM to build.
 //!
 //! - [`page`]: the contract between the shell and a page.
+//! - [`kit`]: what pages are built from (scope, URL state, keymap, stepper, PNG export...).
 //! - [`ctx`]: current language, bundles, projector mode.
-//! - [`router`]: `#/<page>?k=v` routes and `replace_query`.
+//! - [`router`]: the URL (codec in [`crate::view::url`]), `hashchange`, `replace_query`.
 //! - [`dom`]: element builders, localized text, storage, listeners.
-//! - [`shell`]: header, navigation, language switch, projector mode, footer, keys.
+//! - [`shell`]: header, navigation, language switch, projector mode, footer, keys, and the
+//!   host of the mounted page.
 //! - [`overlay`]: the `?` shortcut list.
 //! - [`pages`]: the page table and the pages.
 //! - [`kit`]: widgets shared by pages (the worker for long runs, its progress panel).

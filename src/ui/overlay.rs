@@ -1,5 +1,5 @@
-//! The `?` shortcut overlay: a modal dialog listing the shell's keys, then the current page's
-//! `shortcuts()`. While it is open the rest of the app is `inert`, Tab and Shift+Tab cycle
+//! The `?` shortcut overlay: a modal dialog listing the keys it is given (the shell passes the
+//! app keymap's shell keys, then the mounted page's `shortcuts()`). While it is open the rest of the app is `inert`, Tab and Shift+Tab cycle
 //! inside the dialog, and `Escape`, `?`, the close button or a click on the backdrop close it
 //! and give focus back to where it was.
 
@@ -9,8 +9,8 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, KeyboardEvent};
 
+use crate::ui::dom;
 use crate::ui::page::Shortcut;
-use crate::ui::{dom, router, shell};
 
 struct Open {
     backdrop: Element,
@@ -28,18 +28,8 @@ pub fn is_open() -> bool {
     OPEN.with(|open| open.try_borrow().map(|o| o.is_some()).unwrap_or(false))
 }
 
-/// Opens the overlay, or closes it if it is open.
-pub(crate) fn toggle() -> Result<(), JsValue> {
-    if is_open() {
-        close();
-        Ok(())
-    } else {
-        open()
-    }
-}
-
 /// Opens the overlay (does nothing if it is open).
-pub(crate) fn open() -> Result<(), JsValue> {
+pub(crate) fn open(shell_keys: &[Shortcut], page_keys: &[Shortcut]) -> Result<(), JsValue> {
     if is_open() {
         return Ok(());
     }
@@ -65,21 +55,16 @@ pub(crate) fn open() -> Result<(), JsValue> {
     dom::append(&dialog, &head)?;
 
     dom::append(&dialog, &dom::el_i18n("h3", "", "overlay-shell-heading")?)?;
-    let shell_keys: Vec<Shortcut> = shell::SHELL_SHORTCUTS
-        .iter()
-        .map(|&(keys, message_id)| Shortcut { keys, message_id })
-        .collect();
-    dom::append(&dialog, &key_list(&shell_keys, "shell-keys")?)?;
+    dom::append(&dialog, &key_list(shell_keys, "shell-keys")?)?;
 
     dom::append(&dialog, &dom::el_i18n("h3", "", "overlay-page-heading")?)?;
-    let page_keys = router::with_page(|page| page.shortcuts()).unwrap_or_default();
     if page_keys.is_empty() {
         dom::append(
             &dialog,
             &dom::el_i18n("p", "overlay-empty", "overlay-page-none")?,
         )?;
     } else {
-        dom::append(&dialog, &key_list(&page_keys, "page-keys")?)?;
+        dom::append(&dialog, &key_list(page_keys, "page-keys")?)?;
     }
     dom::append(&dialog, &dom::el_i18n("p", "overlay-note", "overlay-note")?)?;
     dom::append(&backdrop, &dialog)?;

@@ -1,6 +1,11 @@
-//! The app shell: header (product name and subtitle, navigation of the pages that exist,
-//! language switch, projector toggle, `?` button), the `<main>` the router fills, the footer
-//! with the safety disclaimer, and the shell's keys.
+//! The app shell: a "Skip to content" link, the header (product name and subtitle, navigation
+//! of the pages that exist, language switch, projector toggle, `?` button), the `<main>` that
+//! hosts the page the router names, the footer with the safety disclaimer, and the keys.
+//!
+//! - Hosting: on start and on every `hashchange` the shell drops the mounted page and mounts
+//!   the one the route names (an unknown id shows a localized "page not found" with a link
+//!   home). The import graph is a tree: shell → router, overlay, pages, kit; router and overlay
+//!   import neither the shell nor the pages.
 //!
 //! - Language: `?lang=` in the URL, else the saved choice (localStorage `bsv.lang`), else
 //!   `navigator.languages`, else English. Only an explicit switch (button or `l`) is saved.
@@ -8,17 +13,22 @@
 //!   `document.title`, then calls the page's `relocalize()`; nothing reloads.
 //! - Projector mode: class `projector` on `<html>` (CSS does type, lines and contrast), saved
 //!   in localStorage `bsv.projector`, and passed to the page's `set_projector()`.
-//! - Keys (ignored with Ctrl/Alt/Meta and while typing in a field): `?` shortcut list, `p`
-//!   projector, `l` language. Everything else goes to the page's `on_key`, so presenter
-//!   remotes (PageUp/PageDown, arrows, `b`, `.`) keep working as the page and the
-//!   presentation software expect.
+//! - Keys follow [`keymap`]: `?` shortcut list, `p` projector, `l` language (ignored with
+//!   Ctrl/Alt/Meta and while typing in a field); every other key goes to the page's `on_key`
+//!   only while the page body or a page canvas has focus, never a control. Keys the page does
+//!   not take keep their default, so presenter remotes (PageUp/PageDown, `b`, `.`) keep
+//!   working as the presentation software expects.
+
+use std::cell::RefCell;
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, KeyboardEvent};
 
 use crate::i18n::{self, Lang};
-use crate::ui::page::PageDef;
+use crate::ui::kit::keymap::{self, ShellKey};
+use crate::ui::page::{MountCtx, PageDef, PageHandle};
+use crate::ui::router::Route;
 use crate::ui::{ctx, dom, overlay, pages, router};
 
 /// localStorage key of the language the user chose.
@@ -52,6 +62,7 @@ pub(crate) fn start() -> Result<(), JsValue> {
         }
     };
     dom::clear(&app);
+    dom::append(&app, &build_skip_link()?)?;
     dom::append(&app, &build_header()?)?;
     let main = dom::el_class("main", "site-main")?;
     main.set_id(MAIN_ID);
@@ -65,7 +76,13 @@ pub(crate) fn start() -> Result<(), JsValue> {
     apply_projector_class(ctx::projector())?;
     apply_lang_chrome()?;
     install_keys()?;
-    router::start()?;
+    router::on_hashchange(|route| {
+        report(mount_route(&route));
+        if let Some(window) = web_sys::window() {
+            window.scroll_to_with_x_and_y(0.0, 0.0);
+        }
+    })?;
+    mount_route(&router::current_route())?;
     if let Some(html) = document.document_element() {
         html.set_attribute("data-app-ready", "1")?;
     }
@@ -92,6 +109,23 @@ pub(crate) fn main_element() -> Result<Element, JsValue> {
     dom::document()?
         .get_element_by_id(MAIN_ID)
         .ok_or_else(|| JsValue::from_str("the shell is not built"))
+}
+
+/// "Skip to content": the first focusable element, visible when focused; it moves the focus to
+/// `<main>` without touching the route (the hash is the router's).
+fn build_skip_link() -> Result<Element, JsValue> {
+    let link = dom::el_i18n("a", "skip-link", "skip-to-content")?;
+    link.set_attribute("href", &format!("#{MAIN_ID}"))?;
+    link.set_attribute("data-testid", "skip-link")?;
+    dom::Listener::new(&link, "click", |event| {
+        event.prevent_default();
+        if let Ok(main) = main_element() {
+            dom::focus(&main);
+            main.scroll_into_view();
+        }
+    })?
+    .forever();
+    Ok(link)
 }
 
 fn build_header() -> Result<Element, JsValue> {
@@ -151,7 +185,7 @@ fn build_header() -> Result<Element, JsValue> {
             ("title", "help-button-label"),
         ],
     )?;
-    on_click(&help, overlay::toggle)?;
+    on_click(&help, toggle_overlay)?;
     dom::append(&tools, &help)?;
     dom::append(&header, &tools)?;
     Ok(header)
@@ -209,7 +243,7 @@ pub(crate) fn apply_lang(lang: Lang) -> Result<(), JsValue> {
         dom::relocalize(&body)?;
     }
     update_title(current_def())?;
-    router::with_page(|page| page.relocalize());
+    with_page(|page| page.relocalize());
     Ok(())
 }
 
@@ -234,7 +268,7 @@ pub(crate) fn set_projector(on: bool) -> Result<(), JsValue> {
     ctx::set_projector(on);
     dom::storage_set(PROJECTOR_STORAGE_KEY, if on { "1" } else { "0" });
     apply_projector_class(on)?;
-    router::with_page(|page| page.set_projector(on));
+    with_page(|page| page.set_projector(on));
     Ok(())
 }
 
@@ -250,7 +284,7 @@ fn apply_projector_class(on: bool) -> Result<(), JsValue> {
 }
 
 fn current_def() -> Option<&'static PageDef> {
-    router::current_page_id().and_then(pages::find)
+    current_page_id().and_then(pages::find)
 }
 
 /// After a route change: mark the current page in the navigation, set the document title.
@@ -261,12 +295,36 @@ pub(crate) fn route_changed(def: Option<&'static PageDef>) -> Result<(), JsValue
         for link in dom::matching(&nav, "a[data-page]")? {
             if link.get_attribute("data-page").as_deref() == Some(current) {
                 link.set_attribute("aria-current", "page")?;
+                reveal_in_nav(&link);
             } else {
                 link.remove_attribute("aria-current")?;
             }
         }
     }
     update_title(def)
+}
+
+/// At phone width the navigation is one row that scrolls sideways: keep the current page's
+/// link in view.
+fn reveal_in_nav(link: &Element) {
+    let Some(list) = link.closest("ul").ok().flatten() else {
+        return;
+    };
+    let (Some(link), Some(list_el)) = (
+        link.dyn_ref::<web_sys::HtmlElement>(),
+        list.dyn_ref::<web_sys::HtmlElement>(),
+    ) else {
+        return;
+    };
+    let left = f64::from(link.offset_left() - list_el.offset_left());
+    let right = left + f64::from(link.offset_width());
+    let view = f64::from(list.client_width());
+    let scrolled = f64::from(list.scroll_left());
+    if right > scrolled + view {
+        list.set_scroll_left((right - view) as i32);
+    } else if left < scrolled {
+        list.set_scroll_left(left as i32);
+    }
 }
 
 /// `document.title`: "BSV Playground" at home, "<page> — BSV Playground" elsewhere.
@@ -296,51 +354,141 @@ fn on_keydown(event: &KeyboardEvent) -> Result<(), JsValue> {
     if overlay::is_open() {
         return overlay::on_key(event);
     }
-    if event.ctrl_key() || event.meta_key() || event.alt_key() || event.default_prevented() {
-        return Ok(());
+    if let Some(action) = keymap::shell_key(event) {
+        event.prevent_default();
+        if event.repeat() {
+            return Ok(());
+        }
+        return match action {
+            ShellKey::Help => open_overlay(),
+            ShellKey::Projector => set_projector(!ctx::projector()),
+            ShellKey::Lang => switch_lang(ctx::lang().other()),
+        };
     }
-    if dom::is_typing_target(event.target()) {
-        return Ok(());
+    if keymap::page_may_take(event) && with_page(|page| page.on_key(event)) == Some(true) {
+        event.prevent_default();
     }
-    let key = event.key();
-    let plain = !event.shift_key();
-    let shell_key = match key.as_str() {
-        "?" => Some(ShellKey::Help),
-        "p" | "P" if plain => Some(ShellKey::Projector),
-        "l" | "L" if plain => Some(ShellKey::Lang),
-        _ => None,
+    Ok(())
+}
+
+/// The overlay with the shell's keys and the mounted page's.
+fn open_overlay() -> Result<(), JsValue> {
+    let page_keys = with_page(|page| page.shortcuts()).unwrap_or_default();
+    overlay::open(keymap::SHELL, &page_keys)
+}
+
+fn toggle_overlay() -> Result<(), JsValue> {
+    if overlay::is_open() {
+        overlay::close();
+        Ok(())
+    } else {
+        open_overlay()
+    }
+}
+
+// ---------- Hosting the page ----------
+
+struct Mounted {
+    page_id: &'static str,
+    handle: Box<dyn PageHandle>,
+}
+
+thread_local! {
+    static MOUNTED: RefCell<Option<Mounted>> = const { RefCell::new(None) };
+}
+
+/// Calls `f` with the mounted page, if any (`None` also while the page is being swapped).
+fn with_page<R>(f: impl FnOnce(&dyn PageHandle) -> R) -> Option<R> {
+    MOUNTED
+        .try_with(|cell| {
+            let mounted = cell.try_borrow().ok()?;
+            mounted.as_ref().map(|m| f(m.handle.as_ref()))
+        })
+        .ok()
+        .flatten()
+}
+
+/// The id of the mounted page (`None` on the not-found page).
+pub fn current_page_id() -> Option<&'static str> {
+    MOUNTED
+        .try_with(|cell| cell.try_borrow().ok()?.as_ref().map(|m| m.page_id))
+        .ok()
+        .flatten()
+}
+
+/// Drops the current page and mounts the one `route` names.
+fn mount_route(route: &Route) -> Result<(), JsValue> {
+    if let Some(lang) = route.lang() {
+        router::set_lang_in_url(true);
+        if lang != ctx::lang() {
+            apply_lang(lang)?;
+        }
+    }
+    let old = MOUNTED.with(|cell| cell.try_borrow_mut().ok().and_then(|mut m| m.take()));
+    if let Some(old) = old {
+        old.handle.unmount();
+        drop(old);
+    }
+    let main = main_element()?;
+    dom::clear(&main);
+    let def = pages::find(&route.page);
+    match def {
+        Some(def) => mount_page(def, &main, route.page_query())?,
+        None => render_not_found(&main)?,
+    }
+    route_changed(def)?;
+    if router::lang_in_url() && route.lang() != Some(ctx::lang()) {
+        router::sync_lang_in_url();
+    }
+    Ok(())
+}
+
+fn mount_page(
+    def: &'static PageDef,
+    main: &Element,
+    query: Vec<(String, String)>,
+) -> Result<(), JsValue> {
+    let mount_ctx = MountCtx {
+        root: main.clone(),
+        query,
     };
-    match shell_key {
-        Some(action) => {
-            event.prevent_default();
-            if event.repeat() {
-                return Ok(());
+    match (def.mount)(mount_ctx) {
+        Ok(handle) => {
+            if ctx::projector() {
+                handle.set_projector(true);
             }
-            match action {
-                ShellKey::Help => overlay::open(),
-                ShellKey::Projector => set_projector(!ctx::projector()),
-                ShellKey::Lang => switch_lang(ctx::lang().other()),
-            }
+            MOUNTED.with(|cell| {
+                if let Ok(mut mounted) = cell.try_borrow_mut() {
+                    *mounted = Some(Mounted {
+                        page_id: def.id,
+                        handle,
+                    });
+                }
+            });
         }
-        None => {
-            if router::with_page(|page| page.on_key(event)) == Some(true) {
-                event.prevent_default();
-            }
-            Ok(())
+        Err(error) => {
+            web_sys::console::error_2(
+                &format!("BSV Playground: page '{}' failed to mount", def.id).into(),
+                &error,
+            );
+            dom::clear(main);
+            let message = dom::el_i18n("p", "page-error", "page-mount-failed")?;
+            message.set_attribute("role", "alert")?;
+            dom::append(main, &message)?;
         }
     }
+    Ok(())
 }
 
-enum ShellKey {
-    Help,
-    Projector,
-    Lang,
+/// The localized "page not found" with a link home.
+fn render_not_found(main: &Element) -> Result<(), JsValue> {
+    let section = dom::el_class("section", "not-found")?;
+    section.set_attribute("data-testid", "not-found")?;
+    dom::append(&section, &dom::el_i18n("h1", "", "notfound-title")?)?;
+    dom::append(&section, &dom::el_i18n("p", "", "notfound-body")?)?;
+    let home = dom::el_i18n("a", "button-link", "notfound-home")?;
+    home.set_attribute("href", "#/")?;
+    home.set_attribute("data-testid", "not-found-home")?;
+    dom::append(&section, &home)?;
+    dom::append(main, &section)
 }
-
-/// The shell's own keys for the `?` overlay: keys as shown and the Fluent id of the action.
-pub(crate) const SHELL_SHORTCUTS: &[(&str, &str)] = &[
-    ("?", "key-help"),
-    ("P", "key-projector"),
-    ("L", "key-lang"),
-    ("Esc", "key-escape"),
-];

@@ -13,9 +13,25 @@ pub fn head(text: &str, lines: usize) -> &str {
     &text[..end]
 }
 
+/// Data rows of a CSV: non-empty lines after the header (the drills preview's count).
+pub fn data_rows(text: &str) -> usize {
+    text.split('\n')
+        .filter(|l| !l.is_empty() && *l != "\r")
+        .count()
+        .saturating_sub(1)
+}
+
 #[cfg(test)]
 mod tests {
-    use super::head;
+    use super::{data_rows, head};
+
+    #[test]
+    fn data_rows_skip_the_header_and_blank_lines() {
+        assert_eq!(data_rows("t,q\n0,1\n1,2\n"), 2);
+        assert_eq!(data_rows("t,q\r\n0,1\r\n\r\n"), 1);
+        assert_eq!(data_rows("t,q\n"), 0);
+        assert_eq!(data_rows(""), 0);
+    }
 
     #[test]
     fn head_keeps_the_first_lines_with_their_ends() {

@@ -2,7 +2,7 @@
 // it into a fresh folder, saving what a page downloads, and comparing the two byte for byte.
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, readdirSync } from 'node:fs';
+import { mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { ROOT } from './harness.mjs';
@@ -14,12 +14,17 @@ export function buildCli() {
   execFileSync('cargo', ['build', '--quiet', '--bin', 'bsv'], { cwd: ROOT, stdio: 'inherit' });
 }
 
-/** Runs `bsv <args> --out DIR`: its stdout (trailing newline removed) and every file written. */
+/** Runs `bsv <args> --out DIR`: its stdout (trailing newline removed) and every file written.
+ * The folder is removed again, whatever happens. */
 export function cli(args) {
   const dir = mkdtempSync(join(tmpdir(), 'bsv-cli-'));
-  const stdout = execFileSync(BSV, [...args, '--out', dir], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'] });
-  const files = new Map(readdirSync(dir).map((f) => [f, readFileSync(join(dir, f))]));
-  return { stdout: stdout.replace(/\n$/, ''), files };
+  try {
+    const stdout = execFileSync(BSV, [...args, '--out', dir], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'] });
+    const files = new Map(readdirSync(dir).map((f) => [f, readFileSync(join(dir, f))]));
+    return { stdout: stdout.replace(/\n$/, ''), files };
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
 }
 
 /** Clicks the page's `[data-download="<file>"]` button and returns the bytes it saved. */
@@ -29,9 +34,14 @@ export async function download(page, file) {
     page.locator(`[data-download="${file}"]`).click(),
   ]);
   assert.equal(dl.suggestedFilename(), file);
-  const path = join(mkdtempSync(join(tmpdir(), 'bsv-dl-')), file);
-  await dl.saveAs(path);
-  return readFileSync(path);
+  const dir = mkdtempSync(join(tmpdir(), 'bsv-dl-'));
+  try {
+    const path = join(dir, file);
+    await dl.saveAs(path);
+    return readFileSync(path);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
 }
 
 /** Asserts identical bytes; on failure names the first differing line of both. */

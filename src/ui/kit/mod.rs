@@ -1,8 +1,28 @@
 //! The page kit: what every page is built from. Each widget owns its elements, state and
 //! listeners; pure parts (codecs, state machines, view models) live in [`crate::view`].
 //!
+//! - [`scope`]: listeners, timers, the frame loop and observers of a page, removed on drop.
+//! - [`url_state`]: a page's state in the URL (read, debounced write, notice of ignored keys).
+//! - [`keymap`]: the app's one keymap and the focus rule for page keys.
+//! - [`stepper`]: step / back / play / scrub toolbar over a page's model.
+//! - [`png`]: PNG export of any canvas.
+//! - [`canvas`]: HiDPI layered canvases, resize watch, projector ink (line/type scale).
+//! - [`frame`]: one animation-frame loop with dirty flags.
+//! - [`drag`]: pointer drags (mouse, pen, touch) that leave the page scrollable.
+//! - [`plot`]: line/scatter plots: panels sharing x, legend, cursor, incremental append.
+//! - [`heatmap`]: colour-map heatmap with a legend.
 //! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
 //! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
 
+pub mod canvas;
+pub mod drag;
+pub mod frame;
+pub mod heatmap;
+pub mod keymap;
+pub mod plot;
+pub mod png;
 pub mod progress;
+pub mod scope;
+pub mod stepper;
+pub mod url_state;
 pub mod worker;

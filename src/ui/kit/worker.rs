@@ -17,7 +17,7 @@
 //!
 //! Messages, page → worker: `{ job, id, args: [..], names: [..], texts: [..] }`; worker →
 //! page: `{ job, type: "progress", done, total }` (at most ~10 a second), `{ job, type: "done",
-//! summary, warnings: [{en, ja}], i18n: [..], files: [{ name, blob, bytes, head }] }`,
+//! summary, warnings: [{en, ja}], i18n: [..], files: [{ name, blob, bytes, rows, head }] }`,
 //! `{ job, type: "error", param, en, ja, english, i18n }` (the recipe refused) or
 //! `{ job, type: "crash", message }` (the worker could not load or stopped).
 
@@ -29,10 +29,10 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Blob, ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
 
-use crate::i18n::{I18n, Lang};
+use crate::i18n::{FluentArg, I18n, Lang};
 use crate::recipes;
 use crate::ui::ctx;
-use crate::view::worker::head;
+use crate::view::worker::{data_rows, head};
 
 /// The worker script, relative to `index.html`.
 const WORKER_URL: &str = "www/worker.js";
@@ -79,7 +79,7 @@ fn both(format: impl Fn(&I18n, Lang) -> String) -> Result<(JsValue, Array), JsVa
 /// `workerRunRecipe(id, args, names, texts, progress)`: runs recipe `id` with command-line
 /// style `args` and input files (`names[i]` holds `texts[i]`), calling `progress(done, total)`
 /// as rows are done. Called by `www/worker.js` only. Returns `{ ok: true, summary, warnings,
-/// i18n, files: [{ name, data: Uint8Array, head }] }` or `{ ok: false, param, en, ja, english,
+/// i18n, files: [{ name, data: Uint8Array, rows, head }] }` or `{ ok: false, param, en, ja, english,
 /// i18n }`.
 #[wasm_bindgen(js_name = workerRunRecipe)]
 pub fn worker_run_recipe(
@@ -98,9 +98,8 @@ pub fn worker_run_recipe(
             &JsValue::from_f64(total as f64),
         );
     };
-    report(0, 1);
-    let result = recipes::run_with_inputs(id, &args, inputs);
-    report(1, 1);
+    let mut report = report;
+    let result = recipes::run_with_progress(id, &args, inputs, &mut report);
     let out = js_sys::Object::new();
     match result {
         Ok(output) => {
@@ -113,14 +112,34 @@ pub fn worker_run_recipe(
                 set(&entry, "head", &head(&file.text, HEAD_LINES).into())?;
                 set(
                     &entry,
+                    "rows",
+                    &JsValue::from_f64(data_rows(&file.text) as f64),
+                )?;
+                set(
+                    &entry,
                     "data",
                     &Uint8Array::from(file.text.as_bytes()).into(),
                 )?;
                 files.push(&entry);
             }
             set(&out, "files", &files)?;
-            set(&out, "warnings", &Array::new())?;
-            set(&out, "i18n", &Array::new())?;
+            let warnings = Array::new();
+            let notes = Array::new();
+            for warning in &output.warnings {
+                let args: Vec<(&str, FluentArg)> = warning
+                    .message_args()
+                    .into_iter()
+                    .map(|(name, value)| (name, FluentArg::Text(value)))
+                    .collect();
+                let (texts, more) =
+                    both(|i18n, lang| i18n.t_args(lang, warning.message_id(), &args))?;
+                warnings.push(&texts);
+                for note in more.iter() {
+                    notes.push(&note);
+                }
+            }
+            set(&out, "warnings", &warnings)?;
+            set(&out, "i18n", &notes)?;
         }
         Err(error) => {
             let (texts, notes) = both(|i18n, lang| i18n.recipe_error(lang, &error))?;
@@ -192,6 +211,8 @@ pub struct WorkerFile {
     pub blob: Blob,
     /// Size in bytes.
     pub bytes: u64,
+    /// Data rows (non-empty lines after the header).
+    pub rows: u64,
     /// The first [`HEAD_LINES`] lines (all of a shorter file), line ends included.
     pub head: String,
 }
@@ -338,6 +359,7 @@ fn output_of(data: &JsValue) -> Result<WorkerOutput, JsValue> {
             name: get_string(&entry, "name"),
             blob: get(&entry, "blob").dyn_into::<Blob>()?,
             bytes: get(&entry, "bytes").as_f64().unwrap_or(0.0) as u64,
+            rows: get(&entry, "rows").as_f64().unwrap_or(0.0) as u64,
             head: get_string(&entry, "head"),
         });
     }

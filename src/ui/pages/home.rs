@@ -2,7 +2,9 @@
 //! in-browser tool, and one card per recipe (title, description, inputs with their defaults,
 //! the files it writes, the `bsv` and `python` command lines, and links to run it in the
 //! browser: its drill on the drills page, and its own page when it has one). Every text is a
-//! `data-i18n` message, so a language switch needs nothing from the page itself.
+//! `data-i18n` message, so a language switch needs nothing from the page itself. Everything
+//! about a recipe (labels, defaults, limits, the live page that pairs with it) comes from its
+//! facts (`RecipeInfo`, `ArgSpec`).
 
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
@@ -82,20 +84,36 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
     let item = el_class("li", "recipe-card")?;
     item.set_attribute("data-testid", &format!("recipe-card-{id}"))?;
     item.set_attribute("data-recipe", id)?;
-    append(&item, &el_i18n("h3", "", &format!("recipe-{id}-title"))?)?;
-    append(
-        &item,
-        &el_i18n("p", "blurb", &format!("recipe-{id}-blurb"))?,
-    )?;
+    append(&item, &el_i18n("h3", "", &info.title_id())?)?;
+    append(&item, &el_i18n("p", "blurb", &info.blurb_id())?)?;
+    // The live page that runs it (from the recipe's facts): "Pairs with … →", linked.
+    let live_page = info.page.and_then(pages::find);
+    if let Some(def) = live_page {
+        let pairs = el_class("p", "recipe-pairs")?;
+        append(
+            &pairs,
+            &el_i18n("span", "label", &format!("home-card-pairs-{}", def.id))?,
+        )?;
+        append(&pairs, &el_text("span", "", " ")?)?;
+        append(
+            &pairs,
+            &card_link(
+                &crate::ui::router::build_hash(def.id, &[]),
+                def.title_id,
+                &format!("recipe-pairs-{id}"),
+            )?,
+        )?;
+        append(&item, &pairs)?;
+    }
 
     if !info.args.is_empty() {
         append(&item, &el_i18n("h4", "", "home-card-inputs")?)?;
-        append(&item, &arg_list(id, "arg", info.args, false)?)?;
+        append(&item, &arg_list(id, info.args, false)?)?;
     }
     if !info.flags.is_empty() {
         let details = el_class("details", "recipe-options")?;
         append(&details, &el_i18n("summary", "", "home-card-options")?)?;
-        append(&details, &arg_list(id, "flag", info.flags, true)?)?;
+        append(&details, &arg_list(id, info.flags, true)?)?;
         append(&item, &details)?;
     }
     if !info.writes.is_empty() {
@@ -134,7 +152,7 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
             &format!("recipe-drill-{id}"),
         )?,
     )?;
-    if let Some(def) = pages::page_for_recipe(id) {
+    if let Some(def) = live_page {
         append(&links, &el_text("span", "sep", " · ")?)?;
         append(
             &links,
@@ -161,13 +179,9 @@ fn card_link(href: &str, title_id: &str, test_id: &str) -> Result<Element, JsVal
     Ok(link)
 }
 
-/// `<dl>`: the localized label of each argument (or `--flag`) and its default.
-fn arg_list(
-    recipe_id: &str,
-    kind: &str,
-    specs: &[ArgSpec],
-    flags: bool,
-) -> Result<Element, JsValue> {
+/// `<dl>`: the localized label of each argument (or `--flag`), its default and, from the
+/// recipe's facts, the hint that states its limits.
+fn arg_list(recipe_id: &str, specs: &[ArgSpec], flags: bool) -> Result<Element, JsValue> {
     let list = el_class("dl", "recipe-args")?;
     for spec in specs {
         let term = el("dt")?;
@@ -176,11 +190,7 @@ fn arg_list(
         }
         append(
             &term,
-            &el_i18n(
-                "span",
-                "",
-                &format!("recipe-{recipe_id}-{kind}-{}", spec.name),
-            )?,
+            &el_i18n("span", "", &spec.label_id(recipe_id, flags))?,
         )?;
         append(&list, &term)?;
         let value = el("dd")?;
@@ -190,6 +200,10 @@ fn arg_list(
             spec.default
         };
         append(&value, &el_text("code", "", shown)?)?;
+        if !spec.hint_id.is_empty() {
+            append(&value, &el_text("span", "", " ")?)?;
+            append(&value, &el_i18n("small", "arg-hint", spec.hint_id)?)?;
+        }
         append(&list, &value)?;
     }
     Ok(list)

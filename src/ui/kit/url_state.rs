@@ -1,0 +1,125 @@
+//! A page's state in the URL: the [`UrlState`] trait (read from the decoded query, reporting
+//! the keys it could not use; write back as ordered pairs), a debounced [`UrlWriter`] over
+//! [`router::replace_query`], and the [`UrlNotice`] that tells the user, in their language,
+//! which keys of the link they opened were ignored or invalid.
+//!
+//! The pure part (the trait, [`IgnoredKey`]) is in [`crate::view::url`], so a page's round
+//! trip `read(write(s)) == s` is a native `cargo test`.
+
+use std::cell::RefCell;
+use std::rc::{Rc, Weak};
+
+use wasm_bindgen::JsValue;
+use web_sys::Element;
+
+use crate::ui::kit::scope::Scope;
+use crate::ui::schedule::Timer;
+use crate::ui::{ctx, dom, router};
+pub use crate::view::url::{IgnoredKey, IgnoredReason, UrlState};
+
+/// How long edits wait before the URL is rewritten, ms.
+pub const DEBOUNCE_MS: i32 = 300;
+
+/// Rewrites the URL with the page's pairs: at once ([`UrlWriter::write_now`], e.g. on drag
+/// end) or debounced ([`UrlWriter::schedule`], while typing). Owned by the page's scope.
+pub struct UrlWriter {
+    timer: Rc<Timer>,
+    write: Box<dyn Fn()>,
+}
+
+impl UrlWriter {
+    /// A writer of `pairs(page)`, its timer held by `scope`.
+    pub fn new<P: 'static>(
+        scope: &mut Scope,
+        page: &Weak<P>,
+        pairs: impl Fn(&P) -> Vec<(String, String)> + 'static,
+    ) -> UrlWriter {
+        let pairs = Rc::new(pairs);
+        let timer = {
+            let pairs = pairs.clone();
+            scope.timer(page, move |p| router::replace_query(&pairs(p)))
+        };
+        let page = page.clone();
+        let write = Box::new(move || {
+            if let Some(p) = page.upgrade() {
+                router::replace_query(&pairs(&p));
+            }
+        });
+        UrlWriter { timer, write }
+    }
+
+    /// Writes now (and drops a pending debounced write).
+    pub fn write_now(&self) {
+        self.timer.cancel();
+        (self.write)();
+    }
+
+    /// Writes [`DEBOUNCE_MS`] after the last call.
+    pub fn schedule(&self) {
+        self.timer.schedule(DEBOUNCE_MS);
+    }
+}
+
+/// The localized notice about the keys of the opened link the page ignored: hidden when there
+/// are none; "This link's … were ignored: L2, q1" otherwise, re-rendered on a language switch.
+pub struct UrlNotice {
+    element: Element,
+    keys: RefCell<Vec<IgnoredKey>>,
+}
+
+impl UrlNotice {
+    /// Drives `element` (the page places it; it gets `role="status"`).
+    pub fn new(element: Element, keys: Vec<IgnoredKey>) -> Result<UrlNotice, JsValue> {
+        element.set_attribute("role", "status")?;
+        let notice = UrlNotice {
+            element,
+            keys: RefCell::new(keys),
+        };
+        notice.relocalize();
+        Ok(notice)
+    }
+
+    /// The element.
+    pub fn element(&self) -> &Element {
+        &self.element
+    }
+
+    /// Replaces the keys shown (empty: hide), e.g. cleared after a reset.
+    pub fn set(&self, keys: Vec<IgnoredKey>) {
+        *self.keys.borrow_mut() = keys;
+        self.relocalize();
+    }
+
+    /// Re-renders the text in the current language.
+    pub fn relocalize(&self) {
+        let text = notice_text(&self.keys.borrow());
+        dom::show(&self.element, text.is_some());
+        self.element.set_text_content(text.as_deref());
+    }
+}
+
+/// The notice's text for `keys`, `None` when there are none.
+pub fn notice_text(keys: &[IgnoredKey]) -> Option<String> {
+    let list = |reason: IgnoredReason| -> Vec<String> {
+        keys.iter()
+            .filter(|k| k.reason == reason)
+            .map(|k| k.key.clone())
+            .collect()
+    };
+    let mut parts = Vec::new();
+    let unknown = list(IgnoredReason::Unknown);
+    if !unknown.is_empty() {
+        parts.push(ctx::t_strings(
+            "kit-url-unknown",
+            &[("keys", unknown.join(", "))],
+        ));
+    }
+    let invalid = list(IgnoredReason::Invalid);
+    if !invalid.is_empty() {
+        parts.push(ctx::t_strings(
+            "kit-url-invalid",
+            &[("keys", invalid.join(", "))],
+        ));
+    }
+    (!parts.is_empty()).then(|| parts.join(" "))
+}
