@@ -11,9 +11,14 @@ impl Page {
     pub(super) fn download(&self, file: &str) {
         let result = {
             let st = self.st.borrow();
-            match st.shown.as_ref().and_then(|s| s.output.file(file)) {
-                Some(text) => crate::ui::download::download_text(file, text, "text/csv"),
-                None => Ok(()),
+            let shown = st.shown.as_ref();
+            // A worker run's file is a Blob (background.rs).
+            match shown.and_then(|s| s.blobs.iter().find(|b| b.name == file)) {
+                Some(blob) => crate::ui::kit::worker::download(blob),
+                None => match shown.and_then(|s| s.output.file(file)) {
+                    Some(text) => crate::ui::download::download_text(file, text, "text/csv"),
+                    None => Ok(()),
+                },
             }
         };
         if let Err(e) = result {

@@ -23,6 +23,7 @@
 //! `markup`. Timers and the clipboard are the shared `crate::ui::schedule` and
 //! `crate::ui::clipboard`. This file holds the page's types and the shell's handle on it.
 
+mod background;
 mod command;
 mod downloads;
 mod fields;
@@ -185,6 +186,8 @@ pub(crate) struct Page {
     auto_timer: Timer,
     url_timer: Timer,
     weak: RefCell<Weak<Page>>,
+    /// Big runs in the Web Worker, with their progress panel (background.rs).
+    background: RefCell<Option<Rc<background::Background>>>,
 }
 
 /// The shell's handle on the page.

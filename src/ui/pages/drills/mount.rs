@@ -104,8 +104,15 @@ impl Page {
             auto_timer: Timer::default(),
             url_timer: Timer::default(),
             weak: RefCell::new(Weak::new()),
+            background: RefCell::new(None),
         });
         *page.weak.borrow_mut() = Rc::downgrade(&page);
+        // Big runs: the worker's progress panel, under the status line (background.rs).
+        let background = super::background::Background::new(Rc::downgrade(&page))?;
+        page.els
+            .status
+            .after_with_node_1(background.panel.element())?;
+        *page.background.borrow_mut() = Some(Rc::new(background));
         page.install()?;
         page.els.recipe.set_value(recipe.info.id);
         page.render_recipe_texts()?;
@@ -208,9 +215,16 @@ impl Page {
         if let Err(e) = self.render_output() {
             web_sys::console::error_2(&"drills: result".into(), &e);
         }
+        if let Some(bg) = self.background.borrow().as_ref() {
+            bg.panel.relocalize();
+        }
+        self.render_background_error();
     }
 
     pub(super) fn unmount(&self) {
+        if let Some(bg) = self.background.borrow_mut().take() {
+            bg.stop();
+        }
         self.auto_timer.cancel();
         self.url_timer.cancel();
         self.listeners.borrow_mut().clear();

@@ -11,9 +11,10 @@ use super::preview::{preview, Preview, PREVIEW_ROWS};
 use super::texts::{escape, group, size_text};
 use super::Page;
 use crate::i18n::FluentArg;
-use crate::recipes::{self, RecipeOutput};
+use crate::recipes::{self, CsvFile, RecipeOutput};
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom::show;
+use crate::ui::kit::worker::{WorkerFile, WorkerOutput};
 
 /// The last successful run.
 pub struct Shown {
@@ -24,6 +25,9 @@ pub struct Shown {
     pub output: RecipeOutput,
     /// One preview per file of `output`.
     pub previews: Vec<Preview>,
+    /// A worker run's files as Blobs (then `output`'s texts are only their first lines;
+    /// background.rs).
+    pub blobs: Vec<WorkerFile>,
 }
 
 impl Shown {
@@ -35,7 +39,48 @@ impl Shown {
             input_name,
             output,
             previews,
+            blobs: Vec::new(),
         }
+    }
+
+    /// A worker run's result: previews from each file's head, sizes and row counts from the
+    /// worker, the bytes left in the Blobs.
+    pub fn from_worker(args: RunArgs, input_name: Option<String>, out: WorkerOutput) -> Shown {
+        let previews = out
+            .files
+            .iter()
+            .map(|f| Preview {
+                total_rows: f.rows as usize,
+                ..preview(&f.head)
+            })
+            .collect();
+        let output = RecipeOutput {
+            files: out
+                .files
+                .iter()
+                .map(|f| CsvFile {
+                    name: f.name.clone(),
+                    text: f.head.clone(),
+                })
+                .collect(),
+            summary: out.summary,
+            warnings: Vec::new(),
+        };
+        Shown {
+            args,
+            input_name,
+            output,
+            previews,
+            blobs: out.files,
+        }
+    }
+
+    /// The size in bytes of file `name`.
+    fn bytes(&self, name: &str, text: &str) -> u64 {
+        self.blobs
+            .iter()
+            .find(|b| b.name == name)
+            .map_or(text.len() as u64, |b| b.bytes)
     }
 }
 
@@ -95,11 +140,11 @@ fn preview_note(p: &Preview) -> String {
     text
 }
 
-fn file_html(name: &str, text: &str, p: &Preview) -> String {
+fn file_html(name: &str, bytes: u64, p: &Preview) -> String {
     let name_attr = escape(name);
     let mut size_args = count("rows", "rows_text", p.total_rows).to_vec();
     size_args.push(("columns", FluentArg::from(p.total_columns)));
-    size_args.push(("size", FluentArg::from(size_text(text.len() as u64))));
+    size_args.push(("size", FluentArg::from(size_text(bytes))));
     let size = ctx::t_args("drills-file-size", &size_args);
     let download = t_strings("drills-download", &[("file", name.to_string())]);
     let region = t_strings("drills-preview-label", &[("file", name.to_string())]);
@@ -136,7 +181,11 @@ impl Page {
         els.summary.set_text_content(Some(&shown.output.summary));
         let mut html = String::new();
         for (file, p) in shown.output.files.iter().zip(&shown.previews) {
-            html.push_str(&file_html(&file.name, &file.text, p));
+            html.push_str(&file_html(
+                &file.name,
+                shown.bytes(&file.name, &file.text),
+                p,
+            ));
         }
         els.files.set_inner_html(&html);
         let script = recipes::find(shown.args.recipe).map_or("", |r| r.info.python);

@@ -114,6 +114,11 @@ impl Page {
         }
         self.st.borrow_mut().status = Status::Running;
         self.render_status();
+        // Bigger than the auto-run size: in the Web Worker, with progress (background.rs).
+        if !self.st.borrow().plan.is_some_and(|p| p.is_small()) {
+            self.run_in_background();
+            return;
+        }
         let weak = self.weak.borrow().clone();
         let started = after_paint(move || {
             if let Some(page) = weak.upgrade() {
