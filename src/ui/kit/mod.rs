@@ -6,9 +6,14 @@
 //! - [`keymap`]: the app's one keymap and the focus rule for page keys.
 //! - [`stepper`]: step / back / play / scrub toolbar over a page's model.
 //! - [`png`]: PNG export of any canvas.
+//! - [`form`]: the ArgSpec-driven parameter form; [`exports`]: downloads and command lines;
+//!   [`readouts`]: `data-readout` values and a throttled `aria-live` summary.
 
+pub mod exports;
+pub mod form;
 pub mod keymap;
 pub mod png;
+pub mod readouts;
 pub mod scope;
 pub mod stepper;
 pub mod url_state;
