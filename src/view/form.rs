@@ -179,6 +179,17 @@ pub fn validate<T>(
     out
 }
 
+/// Whose label names argument `name` in `error`'s message shown beside field `at`: a
+/// cross-field limit shown beside another field it involves (the one the user changed) speaks
+/// in that field's name, so "Move distance: the table would have … rows" sits under distance
+/// although the rows limit is dt's.
+pub fn speaker<'a>(error: &RecipeError, at: Option<&'a str>, name: &'a str) -> &'a str {
+    match at {
+        Some(here) if error.param() == Some(name) && error.params().contains(&here) => here,
+        _ => name,
+    }
+}
+
 /// The Fluent arguments of `error`'s message, each argument named by `label(name)` (the
 /// field's label in the current language) and whole numbers passed as numbers (for plural
 /// variants).
@@ -378,6 +389,20 @@ mod tests {
         let steps_label = label("steps");
         assert!(text.starts_with(&steps_label), "{text}");
         assert!(!text.starts_with("steps:"), "{text}");
+        // A cross-field limit shown under the changed field speaks in its name.
+        let c = check(
+            "trapezoid-profile",
+            &[("distance", "1e9")],
+            Some("distance"),
+        );
+        let (_, error) = &c.messages[0];
+        let main = error.param().unwrap();
+        assert_eq!(speaker(error, Some("distance"), main), "distance");
+        assert_eq!(speaker(error, Some("Kp"), main), main, "Kp is not involved");
+        let tlabel = |n: &str| n.to_string();
+        let here = |n: &str| tlabel(speaker(error, Some("distance"), n));
+        let text = i18n.t_args(Lang::En, error.message_id(), &error_args(error, &here));
+        assert!(text.starts_with("distance:"), "{text}");
         let c = check("manip-grid", &[("n", "5000")], Some("n"));
         let (_, error) = &c.messages[0];
         let text = i18n.t_args(

@@ -20,7 +20,7 @@ use web_sys::{Element, HtmlElement, HtmlInputElement, HtmlSelectElement};
 use crate::args::ArgKind;
 use crate::error::RecipeError;
 use crate::ui::ctx;
-use crate::view::form::{error_args, fluent_args, FieldDef};
+use crate::view::form::{error_args, fluent_args, speaker, FieldDef};
 
 /// A fieldset of the form: its legend and an optional note under it (Fluent ids).
 #[derive(Debug, Clone, Copy)]
@@ -334,9 +334,16 @@ impl Form {
 
     /// `message` in the current language, arguments named by their labels.
     pub fn message_text(&self, message: &Message) -> String {
+        self.message_at(None, message)
+    }
+
+    /// `message` as shown beside field `at`: a cross-field limit shown beside another field it
+    /// involves (the one the user changed) speaks in that field's name.
+    fn message_at(&self, at: Option<usize>, message: &Message) -> String {
         match message {
             Message::Recipe(error) => {
-                let label = |name: &str| self.label(name);
+                let here = at.and_then(|i| self.fields.get(i)).map(FieldDef::name);
+                let label = |name: &str| self.label(speaker(error, here, name));
                 ctx::t_args(error.message_id(), &error_args(error, &label))
             }
             Message::Text { id, args } => ctx::t_args(id, &fluent_args(args.clone())),
@@ -352,7 +359,7 @@ impl Form {
             if let Some(Some(slot)) = self.errors.get(index) {
                 match message {
                     Some(m) => {
-                        slot.set_text_content(Some(&self.message_text(m)));
+                        slot.set_text_content(Some(&self.message_at(Some(index), m)));
                         let _ = slot.remove_attribute("hidden");
                     }
                     None => {
@@ -407,7 +414,7 @@ impl Form {
     pub fn relocalize(&self) {
         for (index, message) in &self.shown {
             if let Some(Some(slot)) = self.errors.get(*index) {
-                slot.set_text_content(Some(&self.message_text(message)));
+                slot.set_text_content(Some(&self.message_at(Some(*index), message)));
             }
         }
     }
