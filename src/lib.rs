@@ -12,7 +12,8 @@
 //! - [`error`]: the one error type every kernel returns.
 //! - [`i18n`]: Fluent bundles embedded from `locales/`.
 //! - [`api`]: the `#[wasm_bindgen]` surface for the kernels.
-//! - [`view`]: pure view models of the pages (URL codec, stepper...), tested natively.
+//! - [`view`]: pure view models of the pages (URL codec, stepper, hit tests, scales), tested
+//!   natively.
 //! - `ui` (wasm32 only): the pages.
 
 pub mod api;

@@ -19,7 +19,6 @@ ik2r-clamped = Out of reach: the tip stops at the nearest point the arm can reac
 ik2r-drag-hint = Drag the orange tip (inverse kinematics), the elbow or link 1 (turns q1 only) or link 2 (turns q2 only). Keys: arrows move the tip, [ ] turn q1, - = turn q2, e flips the elbow, r resets, w shows the grid.
 ik2r-view-notes = Shaded ring: the reachable workspace, { $inner } mm ≤ r ≤ { $outer } mm. Orange ellipse: the tip velocities that unit joint speed can produce, drawn at { $scale }× scale, its axes along the singular directions (solid: σ_max, dashed: σ_min).
 ik2r-ws-summary = Workspace grid { $nx } × { $ny } = { $cells } cells, { $reachable } reachable (elbow-down IK in each cell).
-ik2r-url-ignored = Some values in this link were not valid and were left at their defaults: { $keys }.
 
 ## Readouts
 ik2r-readouts-title = Live numbers
@@ -39,6 +38,12 @@ ik2r-unit-m2 = m²
 ik2r-unit-m-per-rad = m/rad
 ik2r-unit-cells = cells
 ik2r-unit-points = points
+ik2r-strip-q1 = q1
+ik2r-strip-q2 = q2
+ik2r-strip-x = x
+ik2r-strip-y = y
+ik2r-strip-w = w
+ik2r-live-summary = Arm at q1 { $q1 }°, q2 { $q2 }°; tip at x { $x } mm, y { $y } mm; manipulability { $w } m².
 
 ## Heatmap
 ik2r-heatmap-title = Manipulability over joint space
@@ -61,7 +66,6 @@ ik2r-plot-det = det J
 ik2r-plot-w = w
 ik2r-plot-smin = σ_min
 ik2r-plot-smax = σ_max
-ik2r-plot-now = current q1
 
 ## Parameters
 ik2r-params-title = Parameters
@@ -88,6 +92,7 @@ ik2r-field-res = Heatmap resolution
 ik2r-hint-res = Cells per axis, 64 to 1024. Default 256. Only changes the picture.
 ik2r-field-n = manip-grid n
 ik2r-hint-n = Grid points per axis in manip_ellipse.csv (n² rows), 1 to 1024. Recipe default 24.
+ik2r-field-involved = This value is part of the same limit as { $field }.
 
 ## Downloads
 ik2r-downloads-title = Downloads
@@ -103,6 +108,7 @@ ik2r-copy = Copy
 ik2r-copied = Command copied to the clipboard.
 ik2r-copy-failed = This browser blocked copying: select the command and press Ctrl+C (⌘C on a Mac).
 ik2r-dl-failed = The file could not be made: { $error }
+ik2r-dl-missing-file = the { $recipe } recipe wrote no file named { $file }.
 
 ## Shortcuts (the ? overlay)
 ik2r-key-nudge = Move the tip 1 mm (with Shift: 10 mm)

@@ -19,7 +19,6 @@ ik2r-clamped = 届きません：手先は、アームが届くいちばん近�
 ik2r-drag-hint = オレンジ色の手先をドラッグすると逆運動学で、肘またはリンク1をドラッグすると q1 だけが、リンク2をドラッグすると q2 だけが動きます。キー操作：矢印で手先を移動、[ ] で q1、- = で q2 を回転、e で肘を反転、r でリセット、w でグリッドを表示。
 ik2r-view-notes = 色の付いた輪：手先が届く範囲（作業領域）、{ $inner } mm ≤ r ≤ { $outer } mm。オレンジ色の楕円：関節を単位速度で動かしたときに手先が出せる速度の範囲を { $scale } 倍で描いたもので、軸は特異方向に沿っています（実線が σ_max、破線が σ_min）。
 ik2r-ws-summary = 作業領域グリッド { $nx } × { $ny } = { $cells } セル、うち届くセルは { $reachable }（各セルで肘下げ解の IK を計算）。
-ik2r-url-ignored = このリンクに含まれる値の一部が正しくないため、初期値のままにしました：{ $keys }
 
 ## 数値の表示
 ik2r-readouts-title = リアルタイムの数値
@@ -39,6 +38,12 @@ ik2r-unit-m2 = m²
 ik2r-unit-m-per-rad = m/rad
 ik2r-unit-cells = セル
 ik2r-unit-points = 点
+ik2r-strip-q1 = q1
+ik2r-strip-q2 = q2
+ik2r-strip-x = x
+ik2r-strip-y = y
+ik2r-strip-w = w
+ik2r-live-summary = アームは q1 { $q1 }°、q2 { $q2 }°；手先は x { $x } mm、y { $y } mm；可操作度 { $w } m²。
 
 ## ヒートマップ
 ik2r-heatmap-title = 関節空間での可操作度
@@ -61,7 +66,6 @@ ik2r-plot-det = det J
 ik2r-plot-w = w
 ik2r-plot-smin = σ_min
 ik2r-plot-smax = σ_max
-ik2r-plot-now = 現在の q1
 
 ## パラメータ
 ik2r-params-title = パラメータ
@@ -88,6 +92,7 @@ ik2r-field-res = ヒートマップの解像度
 ik2r-hint-res = 1軸あたりのセル数、64〜1024。初期値は 256。図の細かさだけが変わります。
 ik2r-field-n = manip-grid の n
 ik2r-hint-n = manip_ellipse.csv の1軸あたりの格子点数（n² 行）、1〜1024。レシピの初期値は 24。
+ik2r-field-involved = この値は「{ $field }」と同じ制限にかかわっています。
 
 ## ダウンロード
 ik2r-downloads-title = ダウンロード
@@ -103,6 +108,7 @@ ik2r-copy = コピー
 ik2r-copied = コマンドをクリップボードにコピーしました。
 ik2r-copy-failed = このブラウザではコピーが許可されていません。コマンドを選択して Ctrl+C（Mac では ⌘C）を押してください。
 ik2r-dl-failed = ファイルを作成できませんでした：{ $error }
+ik2r-dl-missing-file = { $recipe } レシピは { $file } というファイルを書き出しませんでした。
 
 ## ショートカット（? の一覧）
 ik2r-key-nudge = 手先を 1 mm 動かす（Shift を押しながらで 10 mm）

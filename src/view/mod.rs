@@ -5,9 +5,17 @@
 //! - [`form`]: the parameter form's fields and validation; [`command_line`]: `bsv` / `python`
 //!   lines of a run; [`table`]: CSV previews and rounded cells.
 //! - [`stepper`]: the stepper's state machine (step, back, play at a speed, scrub).
+//! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
+//! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
+//! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
+//! - [`ik2r`]: the IK page: state and URL, validation, arm view geometry, exports.
 
 pub mod command_line;
+pub mod drag;
 pub mod form;
+pub mod heatmap;
+pub mod ik2r;
+pub mod plot;
 pub mod stepper;
 pub mod table;
 pub mod url;

@@ -1,5 +1,7 @@
-// Speed of the IK page (#/ik-2r) in headless Chromium at 1920×1080, on whatever dist/ holds
-// (`make bench` builds the release one first). Prints p50 / p95 / max per kind of work:
+// Speed of the IK page (#/ik-2r) in headless Chromium at 1920×1080, on the dist folder named by
+// BSV_DIST (default dist/); it needs a wasm built with `--features bench` (the timing hooks are
+// not in the app build): `make bench` (scripts/bench.sh) assembles one in target/bench-dist.
+// Prints p50 / p95 / max per kind of work:
 //
 // - drag frame (real): mouse drags of the tip, one move per animation frame; the page's own
 //   record of each frame's work (IK, Jacobian, readouts, arm layer, ellipse, heatmap marker);
@@ -10,7 +12,9 @@
 //
 // Budgets: drag frame p95 < 4 ms, heatmap 256 < 16 ms, 512 < 50 ms. With IK2R_BENCH_STRICT=1
 // the exit code is 1 when a budget is missed; otherwise this only reports.
-import { startServer, openApp, closeBrowser } from './harness.mjs';
+import { join } from 'node:path';
+import { openApp, closeBrowser, ROOT } from './harness.mjs';
+import { startStaticServer } from '../../scripts/serve.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
 
@@ -40,12 +44,15 @@ function printTable() {
 
 const frame = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
 
-const server = await startServer();
+const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);
 try {
   const app = await openApp(server.url, '#/ik-2r', { viewport: VIEWPORT });
   const { page } = app;
   await page.waitForSelector('[data-testid="ik-2r-canvas"][data-tip-x]');
   await frame(page);
+  if (!(await page.evaluate(() => typeof window.__ik2rBench === 'object'))) {
+    throw new Error('no window.__ik2rBench: serve a dist built with --features bench (make bench)');
+  }
 
   // Real drags: the tip around circles of several radii, one pointer move per frame.
   const g = await page.evaluate(() => {

@@ -420,7 +420,7 @@ test('an invalid L2 is flagged beside the field, the last valid L2 stays, the ar
     await page.locator('[data-field="res"]').fill('64');
     await page.waitForFunction(() => document.querySelector('[data-testid="ik-2r-heatmap"]').dataset.gridN === '64', null, { timeout: 3000 });
     await page.locator('[data-field="res"]').fill('2000');
-    assert.match(await page.locator('[data-field-error="res"]').innerText(), /res must be between 64\.0 and 1024\.0/);
+    assert.match(await page.locator('[data-field-error="res"]').innerText(), /Heatmap resolution must be between 64 and 1,024 \(it is 2,000\)/);
     // Japanese messages for the same mistake.
     await page.locator('[data-testid="lang-switch"]').click();
     await field.fill('abc');
@@ -538,6 +538,60 @@ test('keys nudge the tip and the joints, toggle the grid and reset; a heatmap cl
   }
 });
 
+test('keys to full stretch say out of reach; the live region says the pose; no bench hooks', async () => {
+  const { page, errors, close } = await openIk();
+  try {
+    const note = page.locator('[data-testid="ik-2r-clamp-note"]');
+    const live = page.locator('[data-testid="ik-2r-live"]');
+    assert.equal(await live.getAttribute('aria-live'), 'polite');
+    assert.equal(await live.innerText(), '', 'nothing to say before anything moved');
+    await page.locator('body').click({ position: { x: 5, y: 5 } });
+    // From x = 160 mm, 10 mm steps right reach the 220 mm stretch in a few presses.
+    for (let k = 0; k < 12; k++) await page.keyboard.press('Shift+ArrowRight');
+    await settle(page);
+    assert.equal(await note.isVisible(), true, 'out-of-reach note after key moves');
+    const r = await readouts(page);
+    assert.ok(Math.abs(Math.hypot(r.x_mm, r.y_mm) - 220) < 2e-3, `stretched: r = ${Math.hypot(r.x_mm, r.y_mm)}`);
+    // The polite summary follows once the keys stop: the pose in whole degrees and mm.
+    await page.waitForFunction(() => document.querySelector('[data-testid="ik-2r-live"]').textContent !== '', null, { timeout: 3000 });
+    const said = await live.innerText();
+    assert.match(said, /Out of reach/);
+    assert.match(said, new RegExp(`q1 ${Math.round(r.q1_deg)}°`));
+    assert.match(said, new RegExp(`x ${Math.round(r.x_mm)} mm`));
+    // The note goes away by itself after a key move (no pointer to let go of).
+    await page.waitForFunction(() => document.querySelector('[data-testid="ik-2r-clamp-note"]').hidden, null, { timeout: 5000 });
+    // The app build has no bench hooks.
+    assert.equal(await page.evaluate(() => typeof window.__ik2rBench), 'undefined');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a limit over several fields names the one changed and marks the others', async () => {
+  const { page, errors, close } = await openIk();
+  try {
+    await page.locator('[data-field="half_mm"]').fill('1000');
+    assert.equal(await page.locator('[data-field-error="half_mm"]').isVisible(), false, '201 × 201 cells is fine');
+    await page.locator('[data-field="step_mm"]').fill('1');
+    assert.equal(await page.locator('[data-field-error="step_mm"]').isVisible(), true, 'the message is on the field changed');
+    assert.equal(await page.locator('[data-field="step_mm"]').getAttribute('aria-invalid'), 'true');
+    assert.equal(await page.locator('[data-field="half_mm"]').getAttribute('aria-invalid'), 'true', 'the other field of the limit is marked');
+    assert.match(await page.locator('[data-field-error="half_mm"]').innerText(), /Step/);
+    // The last valid values stay in use.
+    assert.equal(await command(page, 'ik_workspace.csv', 'bsv'), 'bsv ik-workspace 0.12 0.1 1000 10');
+    await page.locator('[data-field="step_mm"]').fill('5');
+    for (const f of ['half_mm', 'step_mm']) {
+      assert.equal(await page.locator(`[data-field-error="${f}"]`).isVisible(), false);
+      assert.equal(await page.locator(`[data-field="${f}"]`).getAttribute('aria-invalid'), 'false');
+    }
+    assert.equal(await command(page, 'ik_workspace.csv', 'bsv'), 'bsv ik-workspace 0.12 0.1 1000 5');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('on a phone the page fits the width and a touch drag moves the arm', async () => {
   const { page, errors, close } = await openApp(server.url, '#/ik-2r', { viewport: { width: 390, height: 844 } });
   try {
@@ -564,6 +618,45 @@ test('on a phone the page fits the width and a touch drag moves the arm', async 
     assertReadouts(await readouts(page), expected(sol.q1, sol.q2), 'touch drag');
     assert.equal(await page.locator('[data-testid="ik-2r-canvas"]').evaluate((c) => getComputedStyle(c).touchAction), 'none');
     await page.screenshot({ path: join(OUT, 'ik2r-phone-390.png') });
+
+    // A finger scrolls the page unless it lands on the arm: only the handles over the tip and
+    // the links take the gesture (touch-action: none); the rest of the view lets it pan.
+    await page.locator('[data-ik2r="arm-stage"]').evaluate((s) => s.scrollIntoView({ block: 'center' }));
+    await settle(page);
+    const g2 = await armGeometry(page);
+    const empty = clientAt(g2, 0.02, -0.2);
+    const touchAction = await page.evaluate(({ tip, empty }) => {
+      const at = ([x, y]) => getComputedStyle(document.elementFromPoint(x, y)).touchAction;
+      const stage = document.querySelector('[data-ik2r="arm-stage"]');
+      return { tip: at(tip), empty: at(empty), stage: getComputedStyle(stage).touchAction };
+    }, { tip: [g2.left + g2.tipX, g2.top + g2.tipY], empty });
+    assert.equal(touchAction.tip, 'none', 'the tip keeps a finger');
+    assert.notEqual(touchAction.empty, 'none', 'empty space lets the page scroll');
+    assert.equal(touchAction.stage, 'manipulation');
+    // A tap on empty space moves the tip there (IK), as a click does.
+    await page.evaluate(([x, y]) => {
+      const c = document.querySelector('[data-testid="ik-2r-canvas"]');
+      for (const type of ['pointerdown', 'pointerup']) {
+        c.dispatchEvent(new PointerEvent(type, {
+          pointerId: 8, pointerType: 'touch', isPrimary: true, clientX: x, clientY: y,
+          bubbles: true, cancelable: true, buttons: type === 'pointerup' ? 0 : 1,
+        }));
+      }
+    }, empty);
+    await settle(page);
+    const [ex, ey] = worldAt(g2, ...empty);
+    const tapped = await readouts(page);
+    assert.ok(Math.abs(tapped.x_mm - ex * 1000) < 1e-3 && Math.abs(tapped.y_mm - ey * 1000) < 1e-3,
+      `tap at (${ex * 1000}, ${ey * 1000}) mm, tip at (${tapped.x_mm}, ${tapped.y_mm})`);
+    // The key numbers sit right above the arm view at phone width (sticky while it shows).
+    const strip = page.locator('.ik2r-strip');
+    assert.equal(await strip.isVisible(), true);
+    const box = await strip.boundingBox();
+    assert.ok(box.y + box.height <= g2.top + 1 && box.y + box.height >= g2.top - 40, `strip just above the arm view: ${JSON.stringify(box)}, arm top ${g2.top}`);
+    const q1Deg = Number(await page.locator('[data-strip="q1"]').innerText());
+    assert.ok(Math.abs(q1Deg - tapped.q1_deg) <= 0.05, `strip q1 ${q1Deg} vs ${tapped.q1_deg}`);
+    assert.ok(Math.abs(Number(await page.locator('[data-strip="w"]').innerText()) - tapped.manipulability) <= tapped.manipulability * 5e-3);
+    await page.screenshot({ path: join(OUT, 'ik2r-phone-390-arm.png') });
     assert.deepEqual(errors, []);
   } finally {
     await close();
@@ -586,6 +679,7 @@ test('screenshots: English and Japanese at 1920×1080, projector mode', async ()
       await page.screenshot({ path: join(OUT, `${name}.png`) });
       await page.screenshot({ path: join(OUT, `${name}.jpg`), type: 'jpeg', quality: 50 });
       await page.screenshot({ path: join(OUT, `${name}-full.png`), fullPage: true });
+      await page.locator('[data-ik2r="plot-stage"]').screenshot({ path: join(OUT, `${name}-plot.png`) });
       assert.ok(existsSync(join(OUT, `${name}.png`)));
       assert.deepEqual(errors, []);
     } finally {
@@ -595,6 +689,8 @@ test('screenshots: English and Japanese at 1920×1080, projector mode', async ()
   const { page, errors, close } = await openIk('#/ik-2r', { storage: { 'bsv.projector': '1' } });
   try {
     await page.screenshot({ path: join(OUT, 'ik2r-projector-1920.png') });
+    await page.locator('[data-ik2r="plot-stage"]').screenshot({ path: join(OUT, 'ik2r-projector-plot.png') });
+    await page.locator('[data-ik2r="heat-stage"]').screenshot({ path: join(OUT, 'ik2r-projector-heat.png') });
     // The canvases follow the window size (ResizeObserver), at the device pixel ratio.
     const width = () => page.locator('[data-testid="ik-2r-canvas"]').evaluate((c) => [c.width, c.getBoundingClientRect().width]);
     const [w1] = await width();

@@ -6,12 +6,22 @@
 //! - [`keymap`]: the app's one keymap and the focus rule for page keys.
 //! - [`stepper`]: step / back / play / scrub toolbar over a page's model.
 //! - [`png`]: PNG export of any canvas.
+//! - [`canvas`]: HiDPI layered canvases, resize watch, projector ink (line/type scale).
+//! - [`frame`]: one animation-frame loop with dirty flags.
+//! - [`drag`]: pointer drags (mouse, pen, touch) that leave the page scrollable.
+//! - [`plot`]: line/scatter plots: panels sharing x, legend, cursor, incremental append.
+//! - [`heatmap`]: colour-map heatmap with a legend.
 //! - [`form`]: the ArgSpec-driven parameter form; [`exports`]: downloads and command lines;
 //!   [`readouts`]: `data-readout` values and a throttled `aria-live` summary.
 
+pub mod canvas;
+pub mod drag;
 pub mod exports;
 pub mod form;
+pub mod frame;
+pub mod heatmap;
 pub mod keymap;
+pub mod plot;
 pub mod png;
 pub mod readouts;
 pub mod scope;

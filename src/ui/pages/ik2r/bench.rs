@@ -1,130 +1,158 @@
-//! Timing hooks for `tests/e2e/ik2r.bench.mjs`: the page records what each real frame cost in
-//! `window.__ik2rTimings` (`frame`, `plot`, `heatmap`, `workspace`: arrays of milliseconds,
-//! last 5000 each), and `window.__ik2rBench` runs one piece of work synchronously and returns
-//! its duration (`performance.now()`):
+//! Timing hooks for `tests/e2e/ik2r.bench.mjs`, built only with the `bench` cargo feature
+//! (`scripts/bench.sh` builds such a dist; the app build has none of this): the page records
+//! what each real frame cost in `window.__ik2rTimings` (`frame`, `plot`, `heatmap`,
+//! `workspace`: arrays of milliseconds, last 5000 each), and `window.__ik2rBench` runs one
+//! piece of work synchronously and returns its duration (`performance.now()`):
 //!
 //! - `frame(x_mm, y_mm)`: a drag frame to that tip target: IK, Jacobian, readouts, arm layer,
 //!   ellipse, heatmap marker;
 //! - `plot()`: the sweep series redraw;
 //! - `heatmap(n)`: an `n × n` heatmap recompute, paint and background draw.
+//!
+//! Without the feature, [`Timings::push`] and the hook functions do nothing.
 
-use std::rc::Weak;
-
-use wasm_bindgen::prelude::*;
-
-use super::{heatmap, Page};
-use crate::ui::schedule::now_ms;
-
-const TIMINGS: &str = "__ik2rTimings";
-const HOOKS: &str = "__ik2rBench";
-const KINDS: [&str; 4] = ["frame", "plot", "heatmap", "workspace"];
-const KEEP: u32 = 5000;
-
-/// The `window.__ik2rTimings` object.
-pub struct Timings {
+/// The `window.__ik2rTimings` object (bench builds).
+pub(super) struct Timings {
+    #[cfg(feature = "bench")]
     object: Option<js_sys::Object>,
 }
 
+#[cfg(not(feature = "bench"))]
 impl Timings {
-    /// Creates (or reuses) `window.__ik2rTimings`.
     pub fn install() -> Timings {
-        let Some(window) = web_sys::window() else {
-            return Timings { object: None };
-        };
-        let existing = js_sys::Reflect::get(&window, &TIMINGS.into())
-            .ok()
-            .and_then(|v| v.dyn_into::<js_sys::Object>().ok());
-        let object = existing.unwrap_or_default();
-        for kind in KINDS {
-            let has = js_sys::Reflect::get(&object, &kind.into())
-                .map(|v| v.is_instance_of::<js_sys::Array>())
-                .unwrap_or(false);
-            if !has {
-                let _ = js_sys::Reflect::set(&object, &kind.into(), &js_sys::Array::new());
-            }
-        }
-        let _ = js_sys::Reflect::set(&window, &TIMINGS.into(), &object);
-        Timings {
-            object: Some(object),
-        }
+        Timings {}
     }
 
-    /// Records one duration of `kind`.
-    pub fn push(&self, kind: &str, ms: f64) {
-        let Some(object) = &self.object else {
-            return;
-        };
-        if let Ok(array) =
-            js_sys::Reflect::get(object, &kind.into()).and_then(|v| v.dyn_into::<js_sys::Array>())
-        {
-            array.push(&JsValue::from_f64(ms));
-            if array.length() > KEEP {
-                array.shift();
-            }
-        }
-    }
+    pub fn push(&self, _kind: &str, _ms: f64) {}
 }
 
-/// Installs `window.__ik2rBench`.
-pub(super) fn install_hooks(weak: &Weak<Page>) -> Result<(), JsValue> {
-    let window = web_sys::window().ok_or_else(|| JsValue::from_str("no window"))?;
-    let hooks = js_sys::Object::new();
-    let w = weak.clone();
-    let frame = Closure::<dyn FnMut(f64, f64) -> f64>::new(move |x_mm: f64, y_mm: f64| {
-        let Some(page) = w.upgrade() else {
-            return f64::NAN;
-        };
-        let t0 = now_ms();
-        page.move_tip(x_mm / 1000.0, y_mm / 1000.0);
-        page.draw_frame();
-        now_ms() - t0
-    });
-    let w = weak.clone();
-    let plot = Closure::<dyn FnMut() -> f64>::new(move || {
-        let Some(page) = w.upgrade() else {
-            return f64::NAN;
-        };
-        let t0 = now_ms();
-        page.draw_plot_series();
-        now_ms() - t0
-    });
-    let w = weak.clone();
-    let heat = Closure::<dyn FnMut(f64) -> f64>::new(move |n: f64| {
-        let Some(page) = w.upgrade() else {
-            return f64::NAN;
-        };
-        let n = if n.is_finite() {
-            n.clamp(2.0, 1024.0) as usize
-        } else {
-            256
-        };
-        let arm = page.state.borrow().params.arm();
-        let t0 = now_ms();
-        {
-            let mut gfx = page.gfx.borrow_mut();
-            let gfx = &mut *gfx;
-            if heatmap::fill(&arm, n, &mut gfx.heat_grid).is_err()
-                || heatmap::paint(&gfx.heat_grid, &page.lut, &mut gfx.heat_img).is_err()
-            {
-                return f64::NAN;
-            }
-        }
-        page.draw_heat_background();
-        let ms = now_ms() - t0;
-        // Back to the page's own resolution afterwards.
-        page.heat_timer.schedule(50);
-        ms
-    });
-    js_sys::Reflect::set(&hooks, &"frame".into(), &frame.into_js_value())?;
-    js_sys::Reflect::set(&hooks, &"plot".into(), &plot.into_js_value())?;
-    js_sys::Reflect::set(&hooks, &"heatmap".into(), &heat.into_js_value())?;
-    js_sys::Reflect::set(&window, &HOOKS.into(), &hooks)?;
+#[cfg(not(feature = "bench"))]
+pub(super) fn install_hooks(
+    _weak: &std::rc::Weak<super::Page>,
+) -> Result<(), wasm_bindgen::JsValue> {
     Ok(())
 }
 
-/// Removes `window.__ik2rBench` (the page unmounted).
-pub(super) fn remove_hooks() {
-    if let Some(window) = web_sys::window() {
-        let _ = js_sys::Reflect::delete_property(&window, &HOOKS.into());
+#[cfg(not(feature = "bench"))]
+pub(super) fn remove_hooks() {}
+
+#[cfg(feature = "bench")]
+pub(super) use hooks::{install_hooks, remove_hooks};
+
+#[cfg(feature = "bench")]
+mod hooks {
+    use std::rc::Weak;
+
+    use wasm_bindgen::prelude::*;
+    use wasm_bindgen::JsCast;
+
+    use super::super::{dirty, Page};
+    use super::Timings;
+    use crate::ui::kit::canvas::Ink;
+    use crate::ui::schedule::now_ms;
+
+    const TIMINGS: &str = "__ik2rTimings";
+    const HOOKS: &str = "__ik2rBench";
+    const KINDS: [&str; 4] = ["frame", "plot", "heatmap", "workspace"];
+    const KEEP: u32 = 5000;
+
+    impl Timings {
+        /// Creates (or reuses) `window.__ik2rTimings`.
+        pub fn install() -> Timings {
+            let Some(window) = web_sys::window() else {
+                return Timings { object: None };
+            };
+            let existing = js_sys::Reflect::get(&window, &TIMINGS.into())
+                .ok()
+                .and_then(|v| v.dyn_into::<js_sys::Object>().ok());
+            let object = existing.unwrap_or_default();
+            for kind in KINDS {
+                let has = js_sys::Reflect::get(&object, &kind.into())
+                    .map(|v| v.is_instance_of::<js_sys::Array>())
+                    .unwrap_or(false);
+                if !has {
+                    let _ = js_sys::Reflect::set(&object, &kind.into(), &js_sys::Array::new());
+                }
+            }
+            let _ = js_sys::Reflect::set(&window, &TIMINGS.into(), &object);
+            Timings {
+                object: Some(object),
+            }
+        }
+
+        /// Records one duration of `kind`.
+        pub fn push(&self, kind: &str, ms: f64) {
+            let Some(object) = &self.object else {
+                return;
+            };
+            if let Ok(array) = js_sys::Reflect::get(object, &kind.into())
+                .and_then(|v| v.dyn_into::<js_sys::Array>())
+            {
+                array.push(&JsValue::from_f64(ms));
+                if array.length() > KEEP {
+                    array.shift();
+                }
+            }
+        }
+    }
+
+    /// Installs `window.__ik2rBench`.
+    pub(in super::super) fn install_hooks(weak: &Weak<Page>) -> Result<(), JsValue> {
+        let window = web_sys::window().ok_or_else(|| JsValue::from_str("no window"))?;
+        let hooks = js_sys::Object::new();
+        let w = weak.clone();
+        let frame = Closure::<dyn FnMut(f64, f64) -> f64>::new(move |x_mm: f64, y_mm: f64| {
+            let Some(page) = w.upgrade() else {
+                return f64::NAN;
+            };
+            let t0 = now_ms();
+            page.move_tip(x_mm / 1000.0, y_mm / 1000.0);
+            page.draw_frame();
+            now_ms() - t0
+        });
+        let w = weak.clone();
+        let plot = Closure::<dyn FnMut() -> f64>::new(move || {
+            let Some(page) = w.upgrade() else {
+                return f64::NAN;
+            };
+            let st = *page.state.borrow();
+            let t0 = now_ms();
+            page.sweep.borrow_mut().draw(&st, Ink::current());
+            now_ms() - t0
+        });
+        let w = weak.clone();
+        let heat = Closure::<dyn FnMut(f64) -> f64>::new(move |n: f64| {
+            let Some(page) = w.upgrade() else {
+                return f64::NAN;
+            };
+            let n = if n.is_finite() {
+                n.clamp(2.0, 1024.0) as usize
+            } else {
+                256
+            };
+            let arm = page.state.borrow().params.arm();
+            let t0 = now_ms();
+            if !page.heat.borrow_mut().recompute(&arm, n) {
+                return f64::NAN;
+            }
+            page.heat.borrow().draw_background(Ink::current());
+            let ms = now_ms() - t0;
+            // Back to the page's own resolution afterwards.
+            page.heat_timer.schedule(50);
+            page.invalidate(dirty::FRAME);
+            ms
+        });
+        js_sys::Reflect::set(&hooks, &"frame".into(), &frame.into_js_value())?;
+        js_sys::Reflect::set(&hooks, &"plot".into(), &plot.into_js_value())?;
+        js_sys::Reflect::set(&hooks, &"heatmap".into(), &heat.into_js_value())?;
+        js_sys::Reflect::set(&window, &HOOKS.into(), &hooks)?;
+        Ok(())
+    }
+
+    /// Removes `window.__ik2rBench` (the page unmounted).
+    pub(in super::super) fn remove_hooks() {
+        if let Some(window) = web_sys::window() {
+            let _ = js_sys::Reflect::delete_property(&window, &HOOKS.into());
+        }
     }
 }

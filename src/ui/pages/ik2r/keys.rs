@@ -1,11 +1,11 @@
 //! Keyboard control (the shell forwards keys when no field has focus): arrow keys nudge the
 //! tip 1 mm by IK (Shift: 10 mm), `[` / `]` turn q1 and `-` / `=` turn q2 by 0.01 rad
-//! (Shift: 0.1 rad), `e` flips the elbow, `r` resets, `w` shows or hides the workspace grid.
+//! (Shift: 0.1 rad), `e` flips the elbow, `r` resets, `w` shows or hides the workspace grid. A tip move out of
+//! reach shows the out-of-reach note, as a drag does.
 
 use web_sys::KeyboardEvent;
 
 use super::Page;
-use crate::planar2r::wrap_angle;
 use crate::ui::page::Shortcut;
 
 /// Tip nudge, metres (Shift: ten times).
@@ -50,24 +50,8 @@ pub(super) fn on_key(page: &Page, event: &KeyboardEvent) -> bool {
     }
     let k = if event.shift_key() { 10.0 } else { 1.0 };
     let key = event.key();
-    let nudge = |dx: f64, dy: f64| {
-        let (arm, q1, q2) = {
-            let st = page.state.borrow();
-            (st.params.arm(), st.q1, st.q2)
-        };
-        let (x, y) = arm.fk(q1, q2);
-        page.move_tip(x + dx * NUDGE_M * k, y + dy * NUDGE_M * k);
-    };
-    let turn = |d1: f64, d2: f64| {
-        let (q1, q2) = {
-            let st = page.state.borrow();
-            (st.q1, st.q2)
-        };
-        page.set_pose(
-            wrap_angle(q1 + d1 * TURN_RAD * k),
-            wrap_angle(q2 + d2 * TURN_RAD * k),
-        );
-    };
+    let nudge = |dx: f64, dy: f64| page.nudge_tip(dx * NUDGE_M * k, dy * NUDGE_M * k);
+    let turn = |d1: f64, d2: f64| page.turn(d1 * TURN_RAD * k, d2 * TURN_RAD * k);
     match key.as_str() {
         "ArrowLeft" => nudge(-1.0, 0.0),
         "ArrowRight" => nudge(1.0, 0.0),

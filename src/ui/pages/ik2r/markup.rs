@@ -4,7 +4,8 @@
 //! `data-ik2r="<role>"`, and the ones tests drive carry `data-testid` / `data-readout` /
 //! `data-download`.
 
-use super::{downloads, explain, form, plots};
+use super::{explain, params, readouts};
+use crate::view::ik2r::{ARM_PNG, EXPORTS};
 
 fn readout_row(label: &str, rows: &[(&str, &str)]) -> String {
     let mut html = format!("<div class=\"ik2r-ro\"><dt data-i18n=\"{label}\"></dt><dd>");
@@ -60,9 +61,8 @@ fn downloads_panel() -> String {
         "<section class=\"ik2r-card ik2r-downloads\"><h2 data-i18n=\"ik2r-downloads-title\"></h2>\
          <p class=\"ik2r-hint\" data-i18n=\"ik2r-downloads-hint\"></p><div class=\"ik2r-dl-grid\">",
     );
-    let label = ["ik2r-dl-ik", "ik2r-dl-jac", "ik2r-dl-manip"];
-    for (export, label) in downloads::EXPORTS.iter().zip(label) {
-        let file = export.file;
+    for export in EXPORTS {
+        let (file, label) = (export.file, export.label_id);
         html.push_str(&format!(
             "<div class=\"ik2r-dl\">\
              <button type=\"button\" class=\"ik2r-btn ik2r-btn-primary\" data-download=\"{file}\" \
@@ -83,21 +83,22 @@ fn downloads_panel() -> String {
         "<div class=\"ik2r-dl\"><button type=\"button\" class=\"ik2r-btn\" data-download=\"{}\" \
          data-i18n=\"ik2r-dl-png\"></button><p class=\"ik2r-hint\" data-i18n=\"ik2r-dl-png-hint\"></p></div>\
          </div><p class=\"ik2r-status\" data-ik2r=\"copy-status\" role=\"status\"></p></section>",
-        downloads::ARM_PNG
+        ARM_PNG
     ));
     html
 }
 
-fn plot_legend() -> String {
-    let mut html = String::from("<ul class=\"ik2r-legend\">");
-    for (id, colour) in plots::LEGEND {
+/// The compact strip of key numbers over the arm view (shown at phone width).
+fn strip() -> String {
+    let mut html = String::from("<div class=\"ik2r-strip\" aria-hidden=\"true\">");
+    for (name, label, unit) in readouts::STRIP {
         html.push_str(&format!(
-            "<li><svg class=\"ik2r-swatch\" viewBox=\"0 0 18 4\" aria-hidden=\"true\">\
-             <rect width=\"18\" height=\"4\" rx=\"2\" fill=\"{colour}\"/></svg>\
-             <span data-i18n=\"{id}\"></span></li>"
+            "<span class=\"ik2r-strip-item\"><span class=\"ik2r-strip-label\" data-i18n=\"{label}\"></span> \
+             <span class=\"ik2r-val\" data-strip=\"{name}\"></span>\
+             <span class=\"ik2r-unit\" data-i18n=\"{unit}\"></span></span>"
         ));
     }
-    html.push_str("</ul>");
+    html.push_str("</div>");
     html
 }
 
@@ -122,12 +123,13 @@ pub fn page() -> String {
 <option value=\"err\" data-i18n=\"ik2r-ws-color-err\"></option></select></label>\
 <button type=\"button\" class=\"ik2r-btn\" data-ik2r=\"reset\" data-i18n=\"ik2r-reset\"></button>\
 </div>\
-<div class=\"ik2r-stage ik2r-stage-arm\" data-ik2r=\"arm-stage\">\
+{strip}<div class=\"ik2r-stage ik2r-stage-arm\" data-ik2r=\"arm-stage\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"arm-bg\" aria-hidden=\"true\"></canvas>\
-<canvas class=\"ik2r-layer ik2r-interactive\" data-ik2r=\"arm-fg\" data-testid=\"ik-2r-canvas\" role=\"img\" \
+<canvas class=\"ik2r-layer ik2r-interactive\" data-ik2r=\"arm-fg\" data-testid=\"ik-2r-canvas\" role=\"img\" tabindex=\"0\" \
 data-i18n-attr=\"aria-label=ik2r-canvas-label\"></canvas>\
 <p class=\"ik2r-clamp\" data-ik2r=\"clamp-note\" data-testid=\"ik-2r-clamp-note\" role=\"status\" data-i18n=\"ik2r-clamped\" hidden></p>\
 </div>\
+<p class=\"ik2r-sr-only\" data-ik2r=\"live\" data-testid=\"ik-2r-live\" role=\"status\" aria-live=\"polite\"></p>\
 <p class=\"ik2r-hint\" data-i18n=\"ik2r-drag-hint\"></p>\
 <p class=\"ik2r-hint\" data-ik2r=\"view-notes\"></p>\
 <p class=\"ik2r-hint\" data-ik2r=\"ws-summary\" hidden></p>\
@@ -147,7 +149,8 @@ data-i18n-attr=\"aria-label=ik2r-heatmap-label\"></canvas></div>\
 <div class=\"ik2r-stage ik2r-stage-plot\" data-ik2r=\"plot-stage\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"plot-bg\" aria-hidden=\"true\"></canvas>\
 <canvas class=\"ik2r-layer\" data-ik2r=\"plot-fg\" data-testid=\"ik-2r-plot\" role=\"img\" \
-data-i18n-attr=\"aria-label=ik2r-plot-label\"></canvas></div>{legend}</section>\
+data-i18n-attr=\"aria-label=ik2r-plot-label\"></canvas>\
+<canvas class=\"ik2r-layer\" data-ik2r=\"plot-cursor\" aria-hidden=\"true\"></canvas></div></section>\
 <section class=\"ik2r-card ik2r-params\"><h2 data-i18n=\"ik2r-params-title\"></h2>\
 <p class=\"ik2r-hint\" data-i18n=\"ik2r-params-hint\"></p>\
 <form class=\"ik2r-form\" data-ik2r=\"form\" novalidate>{form}</form></section>\
@@ -156,8 +159,8 @@ data-i18n-attr=\"aria-label=ik2r-plot-label\"></canvas></div>{legend}</section>\
 {explain}\
 </div>",
         readouts = readouts(),
-        legend = plot_legend(),
-        form = form::markup(),
+        strip = strip(),
+        form = params::markup(),
         downloads = downloads_panel(),
         explain = explain::markup(),
     )

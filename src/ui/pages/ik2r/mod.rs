@@ -9,170 +9,537 @@
 //! w  = sqrt(det(J Jᵀ)) = |det J|,   ellipse semi-axes σ_max ≥ σ_min (singular values of J)
 //! ```
 //!
-//! How the work is split so that a drag frame stays cheap: every canvas is two stacked layers;
-//! backgrounds (grid, annulus, workspace overlay, painted heatmap, plot axes) are redrawn only
-//! when parameters, size, language or projector mode change; a drag frame computes one pose
-//! report, writes the readouts and redraws the arm layer, the heatmap marker and the sweep
-//! series, once per animation frame. Heatmap and workspace recomputes are debounced and run
-//! only on parameter changes. The URL is rewritten on drag end and (debounced) on edits.
-//!
-//! Files: `mount` (building the page, wiring its callbacks, unmounting), `frame` (dirty
-//! bits, one draw per animation frame, layout), `draw` (what a frame draws), `recompute`
-//! (heatmap and workspace recomputes), `pose` (pose, elbow, workspace toggle, URL writes),
-//! `state` (state and URL), `view` (arm view drawing), `pointer` (pointer and drag),
-//! `heatmap`, `workspace` (overlay), `plots`, `readouts`, `form` (parameters),
-//! `controls` (toolbar, form, download and copy handlers), `texts` (text the page formats
-//! itself), `downloads`, `explain` (explanation panel), `keys`, `markup`, `canvas`
-//! (HiDPI layers), `bench` (timing hooks). This file holds the page's types and the shell's
-//! handle on it.
+//! The page is a struct of components, one file each, each owning its elements, its state,
+//! its drawing and its `relocalize`: [`arm`] (the arm view with its toolbar and workspace
+//! overlay), [`heat`] (the joint-space heatmap), [`sweep`] (the jacobian-2r plot),
+//! [`params`] (the parameters form), [`readouts`] (live numbers, the phone strip, the
+//! screen-reader summary) and [`exports`] (downloads, command lines, copy). This file holds
+//! the shared state ([`State`], from the pure `crate::view::ik2r`) and wires the components:
+//! input goes to a component, the page updates the state, and the frame loop redraws what
+//! each change made dirty, once per animation frame (backgrounds only on parameter, size,
+//! language or mode changes; a drag frame draws the arm layer, the heatmap marker, the
+//! readouts and the sweep series).
 
+mod arm;
 mod bench;
-mod canvas;
-mod controls;
-mod downloads;
-mod draw;
 mod explain;
-mod form;
-mod frame;
-mod heatmap;
+mod exports;
+mod heat;
 mod keys;
 mod markup;
-mod mount;
-mod plots;
-mod pointer;
-mod pose;
+mod params;
 mod readouts;
-mod recompute;
-mod state;
-mod texts;
-mod view;
+mod sweep;
 mod workspace;
 
-use std::cell::{Cell, RefCell};
-use std::rc::Rc;
+use std::cell::RefCell;
+use std::rc::{Rc, Weak};
 
-use glam::DVec2;
 use wasm_bindgen::prelude::*;
-use web_sys::{
-    Element, HtmlCanvasElement, HtmlInputElement, HtmlSelectElement, KeyboardEvent, ResizeObserver,
-};
+use wasm_bindgen::JsCast;
+use web_sys::{Element, KeyboardEvent};
 
-use self::canvas::Layer;
-use self::frame::dirty;
-use self::heatmap::{HeatGrid, HeatLayout};
-use self::plots::{PlotSpec, SweepPoint};
-use self::state::{Params, State, WsColor};
-use self::view::{Grab, ViewXf, WorkspaceImage};
-use crate::recipes::ik_workspace::{Workspace, WorkspaceParams};
-use crate::ui::dom::Listener;
-use crate::ui::page::{PageDef, PageHandle, Shortcut};
-use crate::ui::schedule::Timer;
+use crate::planar2r::{wrap_angle, Elbow};
+use crate::ui::dom;
+use crate::ui::kit::canvas::Ink;
+use crate::ui::kit::drag::DragEvent;
+use crate::ui::kit::frame::FrameLoop;
+use crate::ui::kit::scope::Scope;
+use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
+use crate::ui::page::{MountCtx, PageDef, PageHandle, Shortcut};
+use crate::ui::schedule::{now_ms, Timer};
+use crate::view::ik2r::{elbow_of, Grab, Params, State, WsColor};
+use crate::view::url::UrlState;
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef {
     id: "ik-2r",
     title_id: "ik2r-title",
     blurb_id: "ik2r-blurb",
-    mount: mount::mount,
+    mount,
 };
 
-/// The elements the page drives.
-struct Els {
-    arm_stage: Element,
-    heat_stage: Element,
-    plot_stage: Element,
-    arm_canvas: HtmlCanvasElement,
-    heat_canvas: HtmlCanvasElement,
-    clamp_note: Element,
-    url_notice: Element,
-    view_notes: Element,
-    ws_summary: Element,
-    heat_hover: Element,
-    copy_status: Element,
-    elbow_down: HtmlInputElement,
-    elbow_up: HtmlInputElement,
-    ws_toggle: HtmlInputElement,
-    ws_color: HtmlSelectElement,
+/// What needs redrawing on the next animation frame.
+mod dirty {
+    /// Canvas sizes and the view transforms.
+    pub const LAYOUT: u32 = 1;
+    pub const ARM_BG: u32 = 2;
+    pub const HEAT_BG: u32 = 4;
+    pub const PLOT_AXES: u32 = 8;
+    /// Readouts, arm layer, heatmap marker (the drag frame).
+    pub const FRAME: u32 = 16;
+    pub const PLOT_DATA: u32 = 32;
+    pub const ALL: u32 = 63;
 }
 
-/// Canvases, caches and layouts.
-struct Gfx {
-    arm_bg: Layer,
-    arm_fg: Layer,
-    heat_bg: Layer,
-    heat_fg: Layer,
-    plot_bg: Layer,
-    plot_fg: Layer,
-    /// The painted heatmap (n × n pixels) and the grid it was painted from.
-    heat_img: Layer,
-    heat_grid: HeatGrid,
-    heat_painted: bool,
-    /// The workspace grid and its overlay image, with the parameters they were made for.
-    ws_data: Option<(WorkspaceParams, Workspace)>,
-    ws_img: Option<WorkspaceImage>,
-    ws_img_colour: Option<WsColor>,
-    xf: ViewXf,
-    heat_layout: HeatLayout,
-    plot_spec: PlotSpec,
-    /// The plotted sweep and the (params, q2) it was computed for.
-    sweep: Vec<SweepPoint>,
-    sweep_key: Option<(Params, f64)>,
-    /// Command lines as shown, to skip unchanged writes.
-    commands_shown: Vec<String>,
+/// The element `[data-ik2r="name"]` of the page.
+fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
+    dom::find(root, &format!("[data-ik2r=\"{name}\"]"), "ik-2r")
 }
-
-/// What a pointer is doing.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum DragTarget {
-    Arm(Grab),
-    Heatmap,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Drag {
-    pointer_id: i32,
-    target: DragTarget,
-}
-
-/// Transient interaction state.
-#[derive(Default)]
-struct Ui {
-    drag: Option<Drag>,
-    /// The pointer (world, m) while it is outside the reach and the tip is pinned.
-    pinned_pointer: Option<DVec2>,
-    clamp_shown: bool,
-    hover_grab: Option<Grab>,
-    /// The pose of the heatmap cell under the pointer (drawn as a ghost arm).
-    ghost: Option<(f64, f64)>,
-    ignored_url_keys: Vec<String>,
-}
-
-/// The `requestAnimationFrame` callback.
-type FrameCallback = Closure<dyn FnMut(f64)>;
-/// The resize observer and its callback.
-type Resize = (ResizeObserver, Closure<dyn FnMut(JsValue)>);
 
 /// The mounted page.
 pub(crate) struct Page {
     root: Element,
-    els: Els,
     state: RefCell<State>,
-    ui: RefCell<Ui>,
-    gfx: RefCell<Gfx>,
-    form: RefCell<form::Form>,
+    /// The pose of the heatmap cell under the pointer (a ghost arm in the arm view).
+    ghost: RefCell<Option<(f64, f64)>>,
+    /// Names the values of the opened link that were not valid.
+    url_notice: UrlNotice,
+    url: UrlWriter,
+    arm: RefCell<arm::ArmView>,
+    heat: RefCell<heat::HeatPanel>,
+    sweep: RefCell<sweep::SweepPlot>,
+    params: RefCell<params::ParamsForm>,
     readouts: RefCell<readouts::Readouts>,
-    listeners: RefCell<Vec<Listener>>,
-    lut: Vec<[u8; 3]>,
-    dirty: Cell<u32>,
-    raf_id: Cell<Option<i32>>,
-    raf_callback: RefCell<Option<FrameCallback>>,
-    resize: RefCell<Option<Resize>>,
-    heat_timer: Timer,
-    ws_timer: Timer,
-    url_timer: Timer,
+    exports: RefCell<exports::Exports>,
+    frames: RefCell<Option<FrameLoop>>,
+    /// Listeners, timers and the resize observer; dropped on unmount.
+    scope: RefCell<Scope>,
+    heat_timer: Rc<Timer>,
+    ws_timer: Rc<Timer>,
+    /// Hides the out-of-reach note a key press showed.
+    clamp_timer: Rc<Timer>,
     timings: bench::Timings,
-    /// The last copy result's message id (shown in the downloads panel).
-    copy_status: Rc<Cell<Option<&'static str>>>,
+}
+
+fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
+    let root = ctx.root.clone();
+    root.set_inner_html(&markup::page());
+    let (state, ignored) = State::read(&ctx.query);
+    let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
+    let (arm, heat, sweep) = (
+        arm::ArmView::find(&root)?,
+        heat::HeatPanel::find(&root)?,
+        sweep::SweepPlot::find(&root)?,
+    );
+    let (params, mut readouts, exports) = (
+        params::ParamsForm::find(&root)?,
+        readouts::Readouts::find(&root)?,
+        exports::Exports::find(&root)?,
+    );
+    let page = Rc::new_cyclic(|weak: &Weak<Page>| {
+        let mut scope = Scope::new();
+        readouts.set_timer(scope.timer(weak, |p: &Page| p.readouts.borrow().speak()));
+        Page {
+            heat_timer: scope.timer(weak, Page::recompute_heatmap),
+            ws_timer: scope.timer(weak, Page::recompute_workspace),
+            clamp_timer: scope.timer(weak, |p: &Page| p.arm.borrow_mut().set_clamp(false)),
+            url: UrlWriter::new(&mut scope, weak, |p: &Page| p.state.borrow().write()),
+            scope: RefCell::new(scope),
+            url_notice,
+            arm: RefCell::new(arm),
+            heat: RefCell::new(heat),
+            sweep: RefCell::new(sweep),
+            params: RefCell::new(params),
+            readouts: RefCell::new(readouts),
+            exports: RefCell::new(exports),
+            root,
+            state: RefCell::new(state),
+            ghost: RefCell::new(None),
+            frames: RefCell::new(None),
+            timings: bench::Timings::install(),
+        }
+    });
+    dom::relocalize(&page.root)?;
+    page.install(&Rc::downgrade(&page))?;
+    page.params.borrow_mut().fill(&state.params);
+    page.arm.borrow().sync_controls(&state);
+    page.relocalize_texts();
+    page.recompute_heatmap();
+    if state.show_ws {
+        page.recompute_workspace();
+    }
+    page.exports.borrow_mut().update_commands(&state);
+    page.invalidate(dirty::ALL);
+    Ok(Box::new(Handle(page)))
+}
+
+impl Page {
+    /// Wires the frame loop, the resize observer, the components' listeners and bench hooks.
+    fn install(&self, weak: &Weak<Page>) -> Result<(), JsValue> {
+        *self.frames.borrow_mut() = Some(FrameLoop::new(weak, |p: &Page, bits, _| p.frame(bits)));
+        let stages = [
+            self.arm.borrow().stage(),
+            self.heat.borrow().stage(),
+            self.sweep.borrow().stage(),
+        ];
+        let mut scope = self.scope.borrow_mut();
+        scope.observe_resize(&stages.iter().collect::<Vec<_>>(), weak, |p: &Page| {
+            p.invalidate(dirty::ALL)
+        })?;
+        let mut listeners = Vec::new();
+        self.arm.borrow_mut().attach(weak, &mut listeners)?;
+        self.heat.borrow_mut().attach(weak)?;
+        self.params.borrow().attach(weak, &mut listeners)?;
+        self.exports.borrow().attach(weak, &mut listeners)?;
+        for l in listeners {
+            scope.keep(l);
+        }
+        bench::install_hooks(weak)?;
+        Ok(())
+    }
+
+    fn unmount(&self) {
+        self.frames.borrow_mut().take();
+        drop(std::mem::take(&mut *self.scope.borrow_mut()));
+        self.arm.borrow_mut().detach();
+        self.heat.borrow_mut().detach();
+        bench::remove_hooks();
+    }
+
+    /// Marks parts dirty for the next animation frame.
+    fn invalidate(&self, bits: u32) {
+        if let Some(f) = self.frames.borrow().as_ref() {
+            f.invalidate(bits);
+        }
+    }
+
+    /// One animation frame: whatever is dirty, backgrounds first.
+    fn frame(&self, bits: u32) {
+        let st = *self.state.borrow();
+        let ink = Ink::current();
+        if bits & dirty::LAYOUT != 0 {
+            self.arm.borrow_mut().layout(&st);
+            self.heat.borrow_mut().layout(ink);
+            self.sweep.borrow_mut().resized();
+        }
+        if bits & dirty::ARM_BG != 0 {
+            self.arm.borrow().draw_background(&st, ink);
+        }
+        if bits & dirty::HEAT_BG != 0 {
+            self.heat.borrow().draw_background(ink);
+        }
+        if bits & dirty::PLOT_AXES != 0 {
+            self.sweep.borrow_mut().set_axes(&st.params);
+        }
+        if bits & dirty::FRAME != 0 {
+            let t0 = now_ms();
+            self.draw_frame();
+            self.timings.push("frame", now_ms() - t0);
+        }
+        if bits & (dirty::PLOT_DATA | dirty::PLOT_AXES | dirty::LAYOUT) != 0 {
+            let t0 = now_ms();
+            self.sweep.borrow_mut().draw(&st, ink);
+            self.timings.push("plot", now_ms() - t0);
+        }
+    }
+
+    /// The drag frame: pose report, readouts, arm layer, heatmap marker, the one command
+    /// line that depends on the pose.
+    fn draw_frame(&self) {
+        let st = *self.state.borrow();
+        let ink = Ink::current();
+        let report = st.params.arm().report(st.q1, st.q2);
+        let ghost = *self.ghost.borrow();
+        let pinned = {
+            let arm = self.arm.borrow();
+            arm.draw_frame(&st, &report, ghost, ink);
+            arm.clamp_shown()
+        };
+        self.readouts.borrow_mut().update(&report, pinned);
+        self.heat.borrow().draw_marker(&st, ghost, ink);
+        self.exports.borrow_mut().update_commands(&st);
+    }
+
+    /// Texts the page formats itself, in the current language.
+    fn relocalize_texts(&self) {
+        self.url_notice.relocalize();
+        let st = *self.state.borrow();
+        self.arm.borrow().relocalize(&st);
+        self.heat
+            .borrow()
+            .relocalize(&st.params, *self.ghost.borrow());
+        self.params.borrow().relocalize();
+        self.readouts.borrow().relocalize();
+        self.exports.borrow().relocalize();
+        self.sweep.borrow_mut().relocalize(&st.params);
+    }
+
+    fn relocalize(&self) {
+        self.relocalize_texts();
+        self.invalidate(dirty::ARM_BG | dirty::HEAT_BG | dirty::PLOT_AXES | dirty::FRAME);
+    }
+
+    // ---------- State changes ----------
+
+    /// Writes the state into the URL now.
+    fn write_url(&self) {
+        self.url.write_now();
+    }
+
+    fn schedule_url(&self) {
+        self.url.schedule();
+    }
+
+    /// The pose changed (drag, key, heatmap): redraw the frame layers.
+    fn pose_changed(&self) {
+        self.invalidate(dirty::FRAME | dirty::PLOT_DATA);
+        let dragging = self.arm.borrow().dragging() || self.heat.borrow().dragging();
+        if !dragging {
+            self.schedule_url();
+        }
+    }
+
+    /// Sets the pose, keeping the elbow switch in step with q2's sign.
+    fn set_pose(&self, q1: f64, q2: f64) {
+        {
+            let mut st = self.state.borrow_mut();
+            st.q1 = q1;
+            st.q2 = q2;
+            st.elbow = elbow_of(q2);
+        }
+        self.arm.borrow().sync_controls(&self.state.borrow());
+        self.pose_changed();
+    }
+
+    /// Moves the tip to `(x, y)` (m) by IK on the current branch; a point outside the reach
+    /// is pinned to the nearest reachable one. Returns whether it was pinned.
+    fn move_tip(&self, x: f64, y: f64) -> bool {
+        let (arm, elbow) = {
+            let st = self.state.borrow();
+            (st.params.arm(), st.elbow)
+        };
+        let (cx, cy, pinned) = arm.clamp_to_reach(x, y);
+        if let Some((q1, q2)) = arm.ik(cx, cy, elbow) {
+            let mut st = self.state.borrow_mut();
+            st.q1 = q1;
+            st.q2 = q2;
+        }
+        self.pose_changed();
+        pinned
+    }
+
+    /// A key move of the tip: like a drag, a target out of reach shows the note (for a
+    /// moment, as there is no pointer to let go of).
+    fn nudge_tip(&self, dx: f64, dy: f64) {
+        let (x, y) = {
+            let st = self.state.borrow();
+            st.params.arm().fk(st.q1, st.q2)
+        };
+        let pinned = self.move_tip(x + dx, y + dy);
+        self.arm.borrow_mut().set_clamp(pinned);
+        if pinned {
+            self.clamp_timer.schedule(2500);
+        }
+    }
+
+    /// Turns the joints by `(d1, d2)` rad.
+    fn turn(&self, d1: f64, d2: f64) {
+        let (q1, q2) = {
+            let st = self.state.borrow();
+            (st.q1, st.q2)
+        };
+        self.set_pose(wrap_angle(q1 + d1), wrap_angle(q2 + d2));
+    }
+
+    /// Flips to `elbow`, keeping the tip where it is.
+    fn set_elbow(&self, elbow: Elbow) {
+        {
+            let mut st = self.state.borrow_mut();
+            if elbow != st.elbow {
+                let arm = st.params.arm();
+                let (x, y) = arm.fk(st.q1, st.q2);
+                let (cx, cy, _) = arm.clamp_to_reach(x, y);
+                st.elbow = elbow;
+                if let Some((n1, n2)) = arm.ik(cx, cy, elbow) {
+                    st.q1 = n1;
+                    st.q2 = n2;
+                }
+            }
+        }
+        self.arm.borrow().sync_controls(&self.state.borrow());
+        self.pose_changed();
+    }
+
+    fn set_workspace_visible(&self, on: bool) {
+        self.state.borrow_mut().show_ws = on;
+        let st = *self.state.borrow();
+        self.arm.borrow().sync_controls(&st);
+        if on {
+            self.recompute_workspace();
+        }
+        self.arm.borrow().relocalize(&st);
+        self.invalidate(dirty::LAYOUT | dirty::ARM_BG | dirty::FRAME);
+        self.schedule_url();
+    }
+
+    fn set_ws_colour(&self, colour: WsColor) {
+        self.state.borrow_mut().ws_color = colour;
+        let st = *self.state.borrow();
+        self.arm.borrow_mut().refresh_workspace_image(&st);
+        self.invalidate(dirty::ARM_BG);
+        self.schedule_url();
+    }
+
+    /// New (valid) parameters from the form: what depends on which value is redrawn or
+    /// recomputed.
+    fn apply_params(&self, old: Params, next: Params) {
+        if old == next {
+            return;
+        }
+        self.state.borrow_mut().params = next;
+        let show_ws = self.state.borrow().show_ws;
+        let arm_changed = old.l1 != next.l1 || old.l2 != next.l2;
+        let mut bits = dirty::FRAME | dirty::PLOT_DATA;
+        if arm_changed {
+            bits |= dirty::LAYOUT | dirty::ARM_BG | dirty::PLOT_AXES;
+        }
+        if arm_changed || old.heatmap_n != next.heatmap_n {
+            self.heat_timer.schedule(120);
+        }
+        if arm_changed || old.half_mm != next.half_mm || old.step_mm != next.step_mm {
+            if show_ws {
+                self.ws_timer.schedule(200);
+                bits |= dirty::LAYOUT | dirty::ARM_BG;
+            } else {
+                self.arm.borrow_mut().forget_workspace();
+            }
+        }
+        if (old.q1_start, old.q1_stop, old.q1_step) != (next.q1_start, next.q1_stop, next.q1_step) {
+            bits |= dirty::PLOT_AXES;
+        }
+        let st = *self.state.borrow();
+        self.arm.borrow().relocalize(&st);
+        self.exports.borrow_mut().update_commands(&st);
+        self.invalidate(bits);
+        self.schedule_url();
+    }
+
+    /// Back to the defaults (key `r`, Reset button).
+    fn reset(&self) {
+        let old = self.state.borrow().params;
+        *self.state.borrow_mut() = State::default();
+        self.url_notice.set(Vec::new());
+        *self.ghost.borrow_mut() = None;
+        let st = *self.state.borrow();
+        {
+            let mut arm = self.arm.borrow_mut();
+            arm.set_clamp(false);
+            arm.forget_workspace();
+            arm.sync_controls(&st);
+        }
+        self.params.borrow_mut().fill(&st.params);
+        if old != st.params {
+            self.heat_timer.schedule(0);
+        }
+        self.relocalize_texts();
+        self.exports.borrow_mut().update_commands(&st);
+        self.invalidate(dirty::ALL);
+        self.write_url();
+    }
+
+    /// Recomputes and paints the heatmap for the current L1, L2 and resolution.
+    fn recompute_heatmap(&self) {
+        let p = self.state.borrow().params;
+        let t0 = now_ms();
+        if self.heat.borrow_mut().recompute(&p.arm(), p.heatmap_n) {
+            self.timings.push("heatmap", now_ms() - t0);
+        }
+        self.invalidate(dirty::HEAT_BG | dirty::FRAME);
+    }
+
+    /// Recomputes the workspace grid when its parameters changed, then its overlay.
+    fn recompute_workspace(&self) {
+        let st = *self.state.borrow();
+        let t0 = now_ms();
+        if self.arm.borrow_mut().recompute_workspace(&st) {
+            self.timings.push("workspace", now_ms() - t0);
+        }
+        self.arm.borrow().relocalize(&st);
+        self.invalidate(dirty::ARM_BG);
+    }
+
+    // ---------- Pointer input ----------
+
+    /// A drag on the arm view.
+    fn on_arm(&self, ev: DragEvent<Grab>) {
+        match ev {
+            DragEvent::Start { handle, at, .. } | DragEvent::Move { handle, at } => {
+                self.drag_arm(handle, at);
+            }
+            DragEvent::Tap { at } => {
+                self.drag_arm(Grab::Tip, at);
+                self.arm.borrow_mut().end_drag();
+                self.write_url();
+            }
+            DragEvent::End { .. } => {
+                self.arm.borrow_mut().end_drag();
+                self.invalidate(dirty::FRAME);
+                self.write_url();
+            }
+            DragEvent::Hover(at) => {
+                let st = *self.state.borrow();
+                if self.arm.borrow_mut().hover(&st, Some(at)) {
+                    self.invalidate(dirty::FRAME);
+                }
+            }
+            DragEvent::Leave => {
+                let st = *self.state.borrow();
+                if self.arm.borrow_mut().hover(&st, None) {
+                    self.invalidate(dirty::FRAME);
+                }
+            }
+        }
+    }
+
+    /// Applies a drag of `grab` to canvas point `at`.
+    fn drag_arm(&self, grab: Grab, at: glam::DVec2) {
+        let world = self.arm.borrow().xf.world(at);
+        let st = *self.state.borrow();
+        let arm = st.params.arm();
+        match grab {
+            Grab::Tip => {
+                let pinned = self.move_tip(world.x, world.y);
+                self.clamp_timer.cancel();
+                self.arm.borrow_mut().set_pinned(pinned.then_some(world));
+            }
+            Grab::Q1 => self.set_pose(world.y.atan2(world.x), st.q2),
+            Grab::Q2 => {
+                let (ex, ey) = arm.elbow(st.q1);
+                let q2 = wrap_angle((world.y - ey).atan2(world.x - ex) - st.q1);
+                self.set_pose(st.q1, q2);
+            }
+        }
+    }
+
+    /// A drag, tap or hover on the heatmap.
+    fn on_heat(&self, ev: DragEvent<()>) {
+        let at = match ev {
+            DragEvent::Start { at, .. } | DragEvent::Move { at, .. } | DragEvent::Tap { at } => at,
+            DragEvent::End { .. } => {
+                self.invalidate(dirty::FRAME);
+                self.write_url();
+                return;
+            }
+            DragEvent::Hover(at) => {
+                let ghost = self.heat.borrow().pose_at(at);
+                self.set_ghost(ghost);
+                return;
+            }
+            DragEvent::Leave => {
+                self.set_ghost(None);
+                return;
+            }
+        };
+        self.set_ghost(None);
+        let cell = self.heat.borrow().pose_at(at);
+        if let Some((q1, q2)) = cell {
+            self.set_pose(q1, q2);
+        }
+        if matches!(ev, DragEvent::Tap { .. }) {
+            self.write_url();
+        }
+    }
+
+    fn set_ghost(&self, ghost: Option<(f64, f64)>) {
+        if *self.ghost.borrow() == ghost {
+            return;
+        }
+        *self.ghost.borrow_mut() = ghost;
+        let p = self.state.borrow().params;
+        self.heat.borrow().relocalize(&p, ghost);
+        self.invalidate(dirty::FRAME);
+    }
 }
 
 /// The shell's handle on the page.

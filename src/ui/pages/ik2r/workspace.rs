@@ -7,25 +7,40 @@
 use wasm_bindgen::{Clamped, JsValue};
 use web_sys::ImageData;
 
-use super::canvas::Layer;
-use super::state::WsColor;
-use super::view::WorkspaceImage;
 use crate::recipes::ik_workspace::Workspace;
+use crate::ui::dom;
+use crate::ui::kit::canvas::Layer;
+use crate::view::heatmap::{colour_at, Rgb};
+use crate::view::ik2r::WsColor;
 
-/// Paints `ws` into `image` (resized to `nx × ny`; row 0 is the largest y) and returns the
-/// overlay with the world rectangle it covers.
+/// The workspace grid, rendered at one pixel per cell, and the world rectangle it covers
+/// (cell edges, metres).
+pub struct WorkspaceImage {
+    pub layer: Layer,
+    pub x_min: f64,
+    pub x_max: f64,
+    pub y_min: f64,
+    pub y_max: f64,
+}
+
+/// Paints `ws` into the image of `previous` (or a new one; resized to `nx × ny`, row 0 is the
+/// largest y) and returns the overlay with the world rectangle it covers.
 pub fn render(
     ws: &Workspace,
     colour: WsColor,
     l1: f64,
     l2: f64,
-    lut: &[[u8; 3]],
-    mut image: Layer,
+    lut: &[Rgb],
+    previous: Option<WorkspaceImage>,
 ) -> Result<WorkspaceImage, JsValue> {
     let (nx, ny) = (ws.xs_mm.len(), ws.ys_mm.len());
     if nx == 0 || ny == 0 {
         return Err(JsValue::from_str("empty workspace grid"));
     }
+    let mut image = match previous {
+        Some(img) => img.layer,
+        None => Layer::offscreen(&dom::document()?)?,
+    };
     image.resize(nx as f64, ny as f64, 1.0);
     let mut rgba = vec![0u8; nx * ny * 4];
     let det_max = (l1 * l2).max(f64::MIN_POSITIVE);
@@ -41,7 +56,7 @@ pub fn render(
                 WsColor::Reach => ([46, 160, 90], 110),
                 WsColor::Manip => {
                     let t = (l1 * l2 * q2.sin()).abs() / det_max;
-                    (lut_at(lut, t), 170)
+                    (colour_at(lut, t), 170)
                 }
                 WsColor::Error => {
                     // log10(err) from -16 (exact) to -10 mm.
@@ -50,7 +65,7 @@ pub fn render(
                     } else {
                         0.0
                     };
-                    (lut_at(lut, t), 170)
+                    (colour_at(lut, t), 170)
                 }
             };
             let row = ny - 1 - iy;
@@ -83,9 +98,4 @@ pub fn render(
         y_min: first(&ws.ys_mm) - half_y,
         y_max: last(&ws.ys_mm) + half_y,
     })
-}
-
-fn lut_at(lut: &[[u8; 3]], t: f64) -> [u8; 3] {
-    let k = (t.clamp(0.0, 1.0) * 255.0).round() as usize;
-    lut.get(k).copied().unwrap_or([0, 0, 0])
 }

@@ -1,13 +1,19 @@
 //! The parameters form: one text field per [`Field`] with its label, unit and hint (all
-//! Fluent ids), validated on every keystroke; an invalid value shows a localized message
-//! beside the field and the last valid value stays in use.
+//! Fluent ids), validated on every keystroke; a refused value shows a localized message
+//! beside the field the user changed, and a limit over several values (grid cells, sweep
+//! rows, start ≤ stop) also marks the other fields it involves; the last valid value stays in
+//! use. Valid values go to the page at once.
+
+use std::rc::Weak;
 
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{Element, HtmlInputElement};
 
-use super::state::{Field, Params};
+use super::{role, Page};
 use crate::error::RecipeError;
-use crate::ui::ctx;
+use crate::ui::ctx::{self, t_strings};
+use crate::ui::dom::Listener;
+use crate::view::ik2r::{check, Field, Params, Refusal};
 
 /// How a field is presented.
 #[derive(Debug, Clone, Copy)]
@@ -149,17 +155,31 @@ pub fn markup() -> String {
     html
 }
 
-/// The form's inputs and error slots.
-pub struct Form {
-    pub inputs: Vec<(Field, HtmlInputElement)>,
+/// The form component: its inputs, error slots and the refusals shown.
+pub(super) struct ParamsForm {
+    form: Element,
+    inputs: Vec<(Field, HtmlInputElement)>,
     errors: Vec<(Field, Element)>,
-    /// The error shown beside each field (re-rendered on a language switch).
-    shown: Vec<(Field, RecipeError)>,
+    /// The refusal shown for each field the user changed (re-rendered on a language switch).
+    shown: Vec<(Field, Refusal)>,
 }
 
-impl Form {
+fn label_of(field: Field) -> String {
+    FIELDS
+        .iter()
+        .find(|m| m.field == field)
+        .map_or_else(|| field.key().to_string(), |m| ctx::t(m.label))
+}
+
+/// A refusal's message, naming the fields by their labels.
+fn error_text(e: &RecipeError) -> String {
+    let label = |name: &str| Field::from_key(name).map_or_else(|| name.to_string(), label_of);
+    t_strings(e.message_id(), &e.message_args_labelled(&label))
+}
+
+impl ParamsForm {
     /// Finds the fields under `root`.
-    pub fn find(root: &Element) -> Result<Form, JsValue> {
+    pub fn find(root: &Element) -> Result<ParamsForm, JsValue> {
         let mut inputs = Vec::new();
         let mut errors = Vec::new();
         for meta in FIELDS {
@@ -171,11 +191,66 @@ impl Form {
                 errors.push((meta.field, e));
             }
         }
-        Ok(Form {
+        Ok(ParamsForm {
+            form: role(root, "form")?,
             inputs,
             errors,
             shown: Vec::new(),
         })
+    }
+
+    pub fn attach(&self, weak: &Weak<Page>, out: &mut Vec<Listener>) -> Result<(), JsValue> {
+        out.push(Listener::for_page(&self.form, "input", weak, |p, e| {
+            let key = e
+                .target()
+                .and_then(|t| t.dyn_into::<Element>().ok())
+                .and_then(|el| el.get_attribute("data-field"));
+            if let Some(field) = key.as_deref().and_then(Field::from_key) {
+                let old = p.state.borrow().params;
+                let next = p.params.borrow_mut().on_input(field, old);
+                p.apply_params(old, next);
+            }
+        })?);
+        out.push(Listener::for_page(&self.form, "submit", weak, |_, e| {
+            e.prevent_default()
+        })?);
+        Ok(())
+    }
+
+    /// The text now in `field`.
+    fn text(&self, field: Field) -> String {
+        self.inputs
+            .iter()
+            .find(|(f, _)| *f == field)
+            .map(|(_, i)| i.value())
+            .unwrap_or_default()
+    }
+
+    /// `field` changed: validates it and, as values depend on each other (q1_start after
+    /// q1_stop grew), retries the fields still refused. Returns the parameters to use.
+    pub fn on_input(&mut self, field: Field, params: Params) -> Params {
+        let mut p = params;
+        self.shown.retain(|(f, _)| *f != field);
+        match check(&p, field, &self.text(field)) {
+            Ok(next) => p = next,
+            Err(refusal) => self.shown.push((field, refusal)),
+        }
+        for other in Field::ALL {
+            if other == field || !self.shown.iter().any(|(f, _)| *f == other) {
+                continue;
+            }
+            let text = self.text(other);
+            if other.text(&p) == text {
+                self.shown.retain(|(f, _)| *f != other);
+                continue;
+            }
+            if let Ok(next) = check(&p, other, &text) {
+                self.shown.retain(|(f, _)| *f != other);
+                p = next;
+            }
+        }
+        self.render();
+        p
     }
 
     /// Writes every field from `p` and clears the errors.
@@ -183,26 +258,31 @@ impl Form {
         for (field, input) in &self.inputs {
             input.set_value(&field.text(p));
         }
-        for field in Field::ALL {
-            self.set_error(field, None);
-        }
+        self.shown.clear();
+        self.render();
     }
 
-    /// The text now in `field`.
-    pub fn text(&self, field: Field) -> Option<String> {
-        self.inputs
-            .iter()
-            .find(|(f, _)| *f == field)
-            .map(|(_, i)| i.value())
-    }
-
-    /// Shows (or with `None` clears) the error beside `field`.
-    pub fn set_error(&mut self, field: Field, error: Option<RecipeError>) {
-        self.shown.retain(|(f, _)| *f != field);
-        if let Some((_, slot)) = self.errors.iter().find(|(f, _)| *f == field) {
-            match &error {
-                Some(e) => {
-                    slot.set_text_content(Some(&ctx::error_text(e)));
+    /// Shows each refusal beside its field, marks the fields it involves, clears the rest.
+    fn render(&self) {
+        for (field, slot) in &self.errors {
+            let own = self.shown.iter().find(|(f, _)| f == field);
+            let involved = self
+                .shown
+                .iter()
+                .find(|(f, r)| f != field && r.involved.contains(field));
+            let text = match (own, involved) {
+                (Some((_, r)), _) => Some(error_text(&r.error)),
+                (None, Some((by, _))) => Some(t_strings(
+                    "ik2r-field-involved",
+                    &[("field", label_of(*by))],
+                )),
+                (None, None) => None,
+            };
+            match &text {
+                Some(t) => {
+                    if slot.text_content().as_deref() != Some(t) {
+                        slot.set_text_content(Some(t));
+                    }
                     let _ = slot.remove_attribute("hidden");
                 }
                 None => {
@@ -210,24 +290,17 @@ impl Form {
                     let _ = slot.set_attribute("hidden", "");
                 }
             }
-        }
-        if let Some((_, input)) = self.inputs.iter().find(|(f, _)| *f == field) {
-            let _ = input.set_attribute(
-                "aria-invalid",
-                if error.is_some() { "true" } else { "false" },
-            );
-        }
-        if let Some(e) = error {
-            self.shown.push((field, e));
+            if let Some((_, input)) = self.inputs.iter().find(|(f, _)| f == field) {
+                let _ = input.set_attribute(
+                    "aria-invalid",
+                    if text.is_some() { "true" } else { "false" },
+                );
+            }
         }
     }
 
-    /// Re-renders the shown errors in the current language.
+    /// Re-renders the shown messages in the current language.
     pub fn relocalize(&self) {
-        for (field, error) in &self.shown {
-            if let Some((_, slot)) = self.errors.iter().find(|(f, _)| f == field) {
-                slot.set_text_content(Some(&ctx::error_text(error)));
-            }
-        }
+        self.render();
     }
 }

@@ -1,0 +1,506 @@
+//! Line and scatter plots on plotters + plotters-canvas: one or more panels stacked over one
+//! shared x axis (tick labels and title under the bottom panel only), each with its y axis
+//! (title and unit), named series and a legend; a movable vertical cursor; data replaced or
+//! appended incrementally.
+//!
+//! Three stacked layers: the axes (frame, mesh, ticks, titles, legends; plotters draws them,
+//! only when the spec, the size or the language change), the data (series drawn straight on
+//! the 2D context with the same pixel mapping; [`Plot::append`] draws only the new points, so
+//! a live trace costs what it adds, not its history; long series are min/max-decimated per
+//! pixel column) and the cursor (redrawn alone when it moves).
+//!
+//! ```ignore
+//! let mut plot = Plot::new(&stage)?;                 // a stage with three <canvas>
+//! plot.set_spec(spec);                               // axes, panels, series
+//! plot.set_series(0, 0, points);                     // or plot.append(0, 0, &new_points)
+//! plot.set_cursor(Some(t));
+//! plot.draw(Ink::current())?;                        // in the page's animation frame
+//! ```
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters_canvas::CanvasBackend;
+use web_sys::Element;
+
+use super::canvas::{solid, Ink, LayeredCanvas};
+use crate::view::drag::HandleShape;
+use crate::view::plot::{decimate, nice_step, tick_label, LinearScale};
+
+use glam::DVec2;
+
+/// One axis: title, unit (shown as `title [unit]`) and range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AxisSpec {
+    pub title: String,
+    pub unit: String,
+    pub range: (f64, f64),
+}
+
+impl AxisSpec {
+    fn desc(&self) -> String {
+        if self.unit.is_empty() {
+            self.title.clone()
+        } else {
+            format!("{} [{}]", self.title, self.unit)
+        }
+    }
+}
+
+/// How a series is marked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mark {
+    Line,
+    Points,
+    /// A line, with its points as dots while there are few of them.
+    LineAndPoints,
+}
+
+/// One named series.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SeriesSpec {
+    pub name: String,
+    /// CSS colour components.
+    pub rgb: (u8, u8, u8),
+    pub mark: Mark,
+    /// Line width, CSS px before the line scale.
+    pub width: f64,
+    /// Opacity 0..1.
+    pub alpha: f64,
+}
+
+/// One panel: its y axis and series (drawn in order: later series on top).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PanelSpec {
+    pub y: AxisSpec,
+    pub series: Vec<SeriesSpec>,
+}
+
+/// The whole plot.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotSpec {
+    pub x: AxisSpec,
+    pub panels: Vec<PanelSpec>,
+    /// The cursor's CSS colour components.
+    pub cursor_rgb: (u8, u8, u8),
+}
+
+/// A panel's plotting area, CSS px.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Area {
+    x0: f64,
+    x1: f64,
+    y0: f64,
+    y1: f64,
+}
+
+/// The widget.
+pub struct Plot {
+    pub canvas: LayeredCanvas,
+    spec: Option<PlotSpec>,
+    /// `data[panel][series]`: the points, x ascending for lines.
+    data: Vec<Vec<Vec<(f64, f64)>>>,
+    /// How many points of each series the data layer shows.
+    drawn: Vec<Vec<usize>>,
+    areas: Vec<Area>,
+    cursor: Option<f64>,
+    axes_dirty: bool,
+    data_dirty: bool,
+    cursor_dirty: bool,
+}
+
+type DrawArea = DrawingArea<CanvasBackend, Shift>;
+
+fn err<E: std::fmt::Debug>(e: E) -> String {
+    format!("{e:?}")
+}
+
+/// Dots are drawn for a [`Mark::LineAndPoints`] series of at most this many points.
+const DOTS_MAX: usize = 60;
+
+impl Plot {
+    /// Wraps the canvases of `stage`: axes, data, cursor (a stage with two canvases draws the
+    /// cursor on the data layer).
+    pub fn new(stage: &Element) -> Result<Plot, wasm_bindgen::JsValue> {
+        Ok(Plot {
+            canvas: LayeredCanvas::from_stage(stage)?,
+            spec: None,
+            data: Vec::new(),
+            drawn: Vec::new(),
+            areas: Vec::new(),
+            cursor: None,
+            axes_dirty: true,
+            data_dirty: true,
+            cursor_dirty: true,
+        })
+    }
+
+    /// Sets axes, panels and series; the data of series that still exist is kept.
+    pub fn set_spec(&mut self, spec: PlotSpec) {
+        if self.spec.as_ref() == Some(&spec) {
+            return;
+        }
+        self.data.resize_with(spec.panels.len(), Vec::new);
+        self.drawn.resize_with(spec.panels.len(), Vec::new);
+        for (k, panel) in spec.panels.iter().enumerate() {
+            self.data[k].resize_with(panel.series.len(), Vec::new);
+            self.drawn[k].resize(panel.series.len(), 0);
+        }
+        self.spec = Some(spec);
+        self.axes_dirty = true;
+        self.data_dirty = true;
+        self.cursor_dirty = true;
+    }
+
+    /// Replaces the points of one series.
+    pub fn set_series(&mut self, panel: usize, series: usize, points: Vec<(f64, f64)>) {
+        if let Some(s) = self.data.get_mut(panel).and_then(|p| p.get_mut(series)) {
+            *s = points;
+            self.data_dirty = true;
+        }
+    }
+
+    /// Appends points to one series (drawn incrementally by the next [`Plot::draw`]).
+    pub fn append(&mut self, panel: usize, series: usize, points: &[(f64, f64)]) {
+        if let Some(s) = self.data.get_mut(panel).and_then(|p| p.get_mut(series)) {
+            s.extend_from_slice(points);
+        }
+    }
+
+    /// The points of one series.
+    pub fn series(&self, panel: usize, series: usize) -> &[(f64, f64)] {
+        self.data
+            .get(panel)
+            .and_then(|p| p.get(series))
+            .map_or(&[], |s| s.as_slice())
+    }
+
+    /// Empties every series.
+    pub fn clear(&mut self) {
+        for p in &mut self.data {
+            for s in p.iter_mut() {
+                s.clear();
+            }
+        }
+        self.data_dirty = true;
+    }
+
+    /// Moves (or hides) the cursor, an x value.
+    pub fn set_cursor(&mut self, x: Option<f64>) {
+        if self.cursor != x {
+            self.cursor = x;
+            self.cursor_dirty = true;
+        }
+    }
+
+    /// The layers changed size or the language or the mode changed: redraw everything.
+    pub fn invalidate_all(&mut self) {
+        self.canvas.fit();
+        self.axes_dirty = true;
+        self.data_dirty = true;
+        self.cursor_dirty = true;
+    }
+
+    /// The x value under CSS px `px` (for dragging the cursor), clamped to the axis.
+    pub fn x_at(&self, px: f64) -> Option<f64> {
+        let (spec, area) = (self.spec.as_ref()?, self.areas.first()?);
+        let (a, b) = spec.x.range;
+        let v = LinearScale::new((a, b), (area.x0, area.x1)).invert(px);
+        Some(v.clamp(a.min(b), a.max(b)))
+    }
+
+    /// The cursor as a drag handle (a thin capsule over every panel), CSS px.
+    pub fn cursor_handle(&self, radius: f64) -> Option<HandleShape> {
+        let (spec, x) = (self.spec.as_ref()?, self.cursor?);
+        let (first, last) = (self.areas.first()?, self.areas.last()?);
+        let px = LinearScale::new(spec.x.range, (first.x0, first.x1)).map(x);
+        Some(HandleShape::Capsule {
+            a: DVec2::new(px, first.y0),
+            b: DVec2::new(px, last.y1),
+            radius,
+        })
+    }
+
+    /// Draws whatever changed.
+    pub fn draw(&mut self, ink: Ink) -> Result<(), String> {
+        if self.spec.is_none() {
+            return Ok(());
+        }
+        if self.axes_dirty {
+            self.draw_axes(ink)?;
+            self.axes_dirty = false;
+            self.data_dirty = true;
+        }
+        let two_layers = self.canvas.layers.len() < 3;
+        if self.data_dirty || (two_layers && self.cursor_dirty) {
+            self.draw_data(ink, true);
+            self.data_dirty = false;
+            self.cursor_dirty = true;
+        } else {
+            self.draw_data(ink, false);
+        }
+        if self.cursor_dirty {
+            self.draw_cursor(ink, !two_layers);
+            self.cursor_dirty = false;
+        }
+        Ok(())
+    }
+
+    fn draw_axes(&mut self, ink: Ink) -> Result<(), String> {
+        let Some(spec) = self.spec.clone() else {
+            return Ok(());
+        };
+        let layer = self.canvas.layer(0);
+        let _ = layer.ctx.set_transform(1.0, 0.0, 0.0, 1.0, 0.0, 0.0);
+        layer.ctx.set_fill_style_str("#fbfcfe");
+        let (w, h) = (
+            f64::from(layer.canvas.width()),
+            f64::from(layer.canvas.height()),
+        );
+        layer.ctx.fill_rect(0.0, 0.0, w, h);
+        let dpr = layer.dpr;
+        let k = dpr * ink.text;
+        let margin = (8.0 * dpr * ink.text.sqrt()).round() as i32;
+        let x_label = (34.0 * k).round() as i32;
+        let y_label = (74.0 * k).round() as i32;
+        let font = ink.text_px(12.0) * dpr;
+        let n = spec.panels.len().max(1) as i32;
+        let backend =
+            CanvasBackend::with_canvas_object(layer.canvas.clone()).ok_or("no canvas backend")?;
+        let root = backend.into_drawing_area();
+        let total = layer.canvas.height() as i32;
+        let each = (total - x_label) / n;
+        let mut rest: DrawArea = root;
+        let mut panels = Vec::new();
+        for i in 0..n {
+            if i + 1 == n {
+                panels.push(rest.clone());
+            } else {
+                let (upper, lower) = rest.split_vertically(each);
+                panels.push(upper);
+                rest = lower;
+            }
+        }
+        // Label decimals from a finer step than plotters' ticks, so no two ticks read alike.
+        let x_step = nice_step(spec.x.range.0, spec.x.range.1, 12);
+        let legend_row = (ink.text_px(12.0) * 1.5 * dpr).round() as i32;
+        let x_desc = spec.x.desc();
+        self.areas.clear();
+        for (i, (area, panel)) in panels.iter().zip(&spec.panels).enumerate() {
+            let bottom = i + 1 == spec.panels.len();
+            let y = panel.y.range;
+            let y_step = nice_step(y.0, y.1, 10);
+            let mut chart = ChartBuilder::on(area)
+                .margin(margin)
+                .margin_top(margin + legend_row)
+                .x_label_area_size(if bottom { x_label } else { 0 })
+                .y_label_area_size(y_label)
+                .build_cartesian_2d(spec.x.range.0..spec.x.range.1, y.0..y.1)
+                .map_err(err)?;
+            let tick = ("sans-serif", font)
+                .into_font()
+                .color(&RGBColor(58, 66, 80));
+            let y_desc = panel.y.desc();
+            let x_fmt = |v: &f64| tick_label(*v, x_step);
+            let y_fmt = |v: &f64| {
+                // Ticks computed as sums can miss zero by a rounding error.
+                if v.abs() < (y.1 - y.0).abs() * 1e-9 {
+                    "0".to_string()
+                } else {
+                    tick_label(*v, y_step)
+                }
+            };
+            let mut mesh = chart.configure_mesh();
+            mesh.x_labels(6)
+                .y_labels(5)
+                .x_label_formatter(&x_fmt)
+                .y_label_formatter(&y_fmt)
+                .y_desc(y_desc.as_str())
+                .label_style(tick.clone())
+                .axis_desc_style(tick)
+                .light_line_style(RGBColor(235, 238, 243))
+                .bold_line_style(RGBColor(214, 219, 227));
+            if bottom {
+                mesh.x_desc(x_desc.as_str());
+            }
+            mesh.draw().map_err(err)?;
+            let (xr, yr) = chart.plotting_area().get_pixel_range();
+            self.areas.push(Area {
+                x0: f64::from(xr.start) / dpr,
+                x1: f64::from(xr.end) / dpr,
+                y0: f64::from(yr.start) / dpr,
+                y1: f64::from(yr.end) / dpr,
+            });
+        }
+        // Legends: one row above each panel's plotting area, right-aligned, so they never
+        // cover the data.
+        let ctx = &layer.ctx;
+        let _ = ctx.set_transform(dpr, 0.0, 0.0, dpr, 0.0, 0.0);
+        ctx.set_font(&ink.font(12.0, false));
+        ctx.set_text_baseline("middle");
+        ctx.set_text_align("left");
+        let swatch = 18.0 * ink.line;
+        let gap = 14.0 * ink.text;
+        for (area, panel) in self.areas.iter().zip(&spec.panels) {
+            let cy = area.y0 - f64::from(legend_row) / dpr / 2.0 - 1.0;
+            let mut x = area.x1;
+            // Right to left, so the last series ends at the right edge.
+            for s in panel.series.iter().rev() {
+                let w = ctx.measure_text(&s.name).map_or(40.0, |m| m.width());
+                x -= w;
+                ctx.set_fill_style_str("#3a4250");
+                let _ = ctx.fill_text(&s.name, x, cy);
+                x -= swatch + 6.0;
+                let (r, g, b) = s.rgb;
+                ctx.set_stroke_style_str(&format!("rgb({r},{g},{b})"));
+                ctx.set_line_width(3.0 * ink.line);
+                ctx.begin_path();
+                ctx.move_to(x, cy);
+                ctx.line_to(x + swatch, cy);
+                ctx.stroke();
+                x -= gap;
+            }
+        }
+        Ok(())
+    }
+
+    fn scales(&self, panel: usize) -> Option<(LinearScale, LinearScale, Area)> {
+        let spec = self.spec.as_ref()?;
+        let area = *self.areas.get(panel)?;
+        let y = spec.panels.get(panel)?.y.range;
+        Some((
+            LinearScale::new(spec.x.range, (area.x0, area.x1)),
+            LinearScale::new(y, (area.y1, area.y0)),
+            area,
+        ))
+    }
+
+    /// Draws the series: all of them (`full`), or only the points appended since.
+    fn draw_data(&mut self, ink: Ink, full: bool) {
+        let Some(spec) = self.spec.clone() else {
+            return;
+        };
+        let layer = self.canvas.layer(1);
+        if full {
+            layer.begin();
+        } else {
+            let _ = layer
+                .ctx
+                .set_transform(layer.dpr, 0.0, 0.0, layer.dpr, 0.0, 0.0);
+        }
+        let ctx = &layer.ctx;
+        for (p, panel) in spec.panels.iter().enumerate() {
+            let Some((xs, ys, area)) = self.scales(p) else {
+                continue;
+            };
+            ctx.save();
+            ctx.begin_path();
+            ctx.rect(area.x0, area.y0, area.x1 - area.x0, area.y1 - area.y0);
+            ctx.clip();
+            for (s, series) in panel.series.iter().enumerate() {
+                let pts = self.series(p, s);
+                let from = if full {
+                    0
+                } else {
+                    self.drawn[p][s].min(pts.len())
+                };
+                if from >= pts.len() {
+                    continue;
+                }
+                // Continue the line from the last point already drawn.
+                let start = from.saturating_sub(1);
+                let (r, g, b) = series.rgb;
+                let colour = format!("rgba({r},{g},{b},{})", series.alpha);
+                if series.mark != Mark::Points {
+                    let part = &pts[start..];
+                    let thin;
+                    let line: &[(f64, f64)] =
+                        if part.len() > 2 * (area.x1 - area.x0).max(1.0) as usize {
+                            thin = decimate(part, &xs);
+                            &thin
+                        } else {
+                            part
+                        };
+                    ctx.set_stroke_style_str(&colour);
+                    ctx.set_line_width(series.width * ink.line);
+                    ctx.set_line_join("round");
+                    ctx.begin_path();
+                    let mut pen_down = false;
+                    for &(x, y) in line {
+                        if !x.is_finite() || !y.is_finite() {
+                            pen_down = false;
+                            continue;
+                        }
+                        let (px, py) = (xs.map(x), ys.map(y).clamp(-1e6, 1e6));
+                        if pen_down {
+                            ctx.line_to(px, py);
+                        } else {
+                            ctx.move_to(px, py);
+                            pen_down = true;
+                        }
+                    }
+                    ctx.stroke();
+                }
+                let dots = match series.mark {
+                    Mark::Points => true,
+                    Mark::LineAndPoints => pts.len() <= DOTS_MAX,
+                    Mark::Line => false,
+                };
+                if dots {
+                    ctx.set_fill_style_str(&colour);
+                    let radius = (series.width + 1.0) * ink.line;
+                    for &(x, y) in &pts[from..] {
+                        if x.is_finite() && y.is_finite() {
+                            ctx.begin_path();
+                            let _ =
+                                ctx.arc(xs.map(x), ys.map(y), radius, 0.0, std::f64::consts::TAU);
+                            ctx.fill();
+                        }
+                    }
+                }
+                self.drawn[p][s] = pts.len();
+            }
+            ctx.restore();
+        }
+        if full {
+            for (p, panel) in self.drawn.iter_mut().enumerate() {
+                for (s, n) in panel.iter_mut().enumerate() {
+                    *n = self.data.get(p).and_then(|d| d.get(s)).map_or(0, Vec::len);
+                }
+            }
+        }
+    }
+
+    /// Draws the cursor on the top layer (`own_layer`) or over the data.
+    fn draw_cursor(&self, ink: Ink, own_layer: bool) {
+        let Some(spec) = &self.spec else {
+            return;
+        };
+        let layer = self.canvas.top();
+        if own_layer {
+            layer.begin();
+        }
+        let Some(x) = self.cursor else {
+            return;
+        };
+        let ctx = &layer.ctx;
+        let (r, g, b) = spec.cursor_rgb;
+        ctx.set_stroke_style_str(&format!("rgba({r},{g},{b},0.85)"));
+        ctx.set_line_width(1.5 * ink.line);
+        let _ = ctx.set_line_dash(&solid());
+        for p in 0..self.areas.len() {
+            let Some((xs, _, area)) = self.scales(p) else {
+                continue;
+            };
+            if !(spec.x.range.0.min(spec.x.range.1)..=spec.x.range.0.max(spec.x.range.1))
+                .contains(&x)
+            {
+                continue;
+            }
+            let px = xs.map(x);
+            ctx.begin_path();
+            ctx.move_to(px, area.y0);
+            ctx.line_to(px, area.y1);
+            ctx.stroke();
+        }
+    }
+}

@@ -1,0 +1,1177 @@
+//! The IK page's pure view models (`#/ik-2r`): its state and URL form, parameter validation
+//! (which fields a limit involves), the arm view's world ↔ screen transform, the hit tests of
+//! tip, elbow and links, the link label placement, the heatmap grid, the Jacobian sweep that
+//! is plotted, the readout texts and the export command lines. No web-sys: `cargo test` runs
+//! all of it.
+//!
+//! URL: `#/ik-2r?L1=0.12&L2=0.1&q1=0.3&q2=0.8&elbow=down&ws=1&...`. Every value is validated
+//! the way the form validates it ([`validate`]); a URL value that fails is ignored (the
+//! default stays) and its key is reported so that the page can say so. Numbers are written in
+//! Rust's shortest round-trip form, so opening a URL restores the exact `f64`s it was made
+//! from.
+
+use std::f64::consts::PI;
+
+use glam::{DAffine2, DVec2};
+
+use crate::args::{in_range, parse_f64, parse_i64};
+use crate::error::RecipeError;
+use crate::planar2r::{wrap_angle, Arm, Elbow, PoseReport};
+use crate::recipes::ik_workspace::{self, WorkspaceParams};
+use crate::recipes::jacobian_2r::{self, SweepParams};
+use crate::recipes::manip_grid::{self, GridParams};
+use crate::view::drag::HandleShape;
+use crate::view::heatmap::GridAxis;
+use crate::view::url::{IgnoredKey, UrlState};
+
+/// The page's own starting values; the recipe parameters' defaults come from the kernels
+/// (`WorkspaceParams::default()`, `SweepParams::default()`, `GridParams::default()`).
+pub mod defaults {
+    /// Starting pose (rad): q2 is the jacobian-2r recipe's fixed 0.8.
+    pub const Q1: f64 = 0.3;
+    pub const Q2: f64 = 0.8;
+    /// Heatmap cells per axis.
+    pub const HEATMAP_N: i64 = 256;
+}
+
+/// Limits the form states in its hints.
+pub mod limits {
+    /// Link lengths: `LINK_MIN_M <= L <= L_MAX_M` metres (the kernels accept up to 1 km; a
+    /// classroom arm is far below 10 m).
+    pub const L_MAX_M: f64 = 10.0;
+    /// Heatmap resolution range.
+    pub const HEATMAP_MIN: i64 = 64;
+    pub const HEATMAP_MAX: i64 = 1024;
+}
+
+/// How the workspace grid cells are coloured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WsColor {
+    /// Reachable or not.
+    Reach,
+    /// |det J| of the elbow-down solution.
+    Manip,
+    /// FK round-trip error (log scale).
+    Error,
+}
+
+impl WsColor {
+    /// The URL / `<select>` value.
+    pub fn key(self) -> &'static str {
+        match self {
+            WsColor::Reach => "reach",
+            WsColor::Manip => "manip",
+            WsColor::Error => "err",
+        }
+    }
+
+    /// Parses a URL / `<select>` value.
+    pub fn from_key(key: &str) -> Option<WsColor> {
+        match key {
+            "reach" => Some(WsColor::Reach),
+            "manip" => Some(WsColor::Manip),
+            "err" => Some(WsColor::Error),
+            _ => None,
+        }
+    }
+}
+
+/// The recipe parameters the form edits (always valid: the form only stores valid values).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Params {
+    pub l1: f64,
+    pub l2: f64,
+    pub half_mm: f64,
+    pub step_mm: f64,
+    pub q1_start: f64,
+    pub q1_stop: f64,
+    pub q1_step: f64,
+    pub heatmap_n: usize,
+    pub manip_n: i64,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        let ws = WorkspaceParams::default();
+        let sweep = SweepParams::default();
+        Params {
+            l1: ws.l1,
+            l2: ws.l2,
+            half_mm: ws.half_mm,
+            step_mm: ws.step_mm,
+            q1_start: sweep.q1_start,
+            q1_stop: sweep.q1_stop,
+            q1_step: sweep.q1_step,
+            heatmap_n: defaults::HEATMAP_N as usize,
+            manip_n: GridParams::default().n,
+        }
+    }
+}
+
+impl Params {
+    /// The arm these lengths make.
+    pub fn arm(&self) -> Arm {
+        Arm {
+            l1: self.l1,
+            l2: self.l2,
+        }
+    }
+
+    /// The ik-workspace recipe's parameters.
+    pub fn workspace(&self) -> WorkspaceParams {
+        WorkspaceParams {
+            l1: self.l1,
+            l2: self.l2,
+            half_mm: self.half_mm,
+            step_mm: self.step_mm,
+        }
+    }
+
+    /// The jacobian-2r recipe's parameters at elbow angle `q2`.
+    pub fn sweep(&self, q2: f64) -> SweepParams {
+        SweepParams {
+            l1: self.l1,
+            l2: self.l2,
+            q1_start: self.q1_start,
+            q1_stop: self.q1_stop,
+            q1_step: self.q1_step,
+            q2,
+        }
+    }
+
+    /// The manip-grid recipe's parameters.
+    pub fn grid(&self) -> GridParams {
+        GridParams {
+            l1: self.l1,
+            l2: self.l2,
+            n: self.manip_n,
+        }
+    }
+
+    /// Runs the three kernels' own validation (sizes, ranges, `q1_stop >= q1_start`).
+    pub fn check_kernels(&self) -> Result<(), RecipeError> {
+        self.workspace().validate()?;
+        self.sweep(0.0).validate()?;
+        self.grid().validate()
+    }
+}
+
+/// One editable parameter: its URL key (also the form field's key and the name in
+/// error messages).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Field {
+    L1,
+    L2,
+    HalfMm,
+    StepMm,
+    Q1Start,
+    Q1Stop,
+    Q1Step,
+    HeatmapN,
+    ManipN,
+}
+
+impl Field {
+    /// All fields, in form order.
+    pub const ALL: [Field; 9] = [
+        Field::L1,
+        Field::L2,
+        Field::HalfMm,
+        Field::StepMm,
+        Field::Q1Start,
+        Field::Q1Stop,
+        Field::Q1Step,
+        Field::HeatmapN,
+        Field::ManipN,
+    ];
+
+    /// URL key and the parameter name used in error messages (the recipes' names).
+    pub fn key(self) -> &'static str {
+        match self {
+            Field::L1 => "L1",
+            Field::L2 => "L2",
+            Field::HalfMm => "half_mm",
+            Field::StepMm => "step_mm",
+            Field::Q1Start => "q1_start",
+            Field::Q1Stop => "q1_stop",
+            Field::Q1Step => "q1_step",
+            Field::HeatmapN => "res",
+            Field::ManipN => "n",
+        }
+    }
+
+    /// The field's current value in `p`, as text (shortest round-trip form).
+    pub fn text(self, p: &Params) -> String {
+        match self {
+            Field::L1 => num(p.l1),
+            Field::L2 => num(p.l2),
+            Field::HalfMm => num(p.half_mm),
+            Field::StepMm => num(p.step_mm),
+            Field::Q1Start => num(p.q1_start),
+            Field::Q1Stop => num(p.q1_stop),
+            Field::Q1Step => num(p.q1_step),
+            Field::HeatmapN => p.heatmap_n.to_string(),
+            Field::ManipN => p.manip_n.to_string(),
+        }
+    }
+}
+
+/// Shortest text that parses back to the same `f64` (`0.1`, `200`, `-1.57`).
+pub fn num(v: f64) -> String {
+    format!("{v}")
+}
+
+/// Validates `text` for `field` and returns `p` with it applied, or the error to show beside
+/// the field (`p` itself is never changed on error). After the field's own checks, the three
+/// kernels validate the whole parameter set, so every download made from it succeeds.
+pub fn validate(p: &Params, field: Field, text: &str) -> Result<Params, RecipeError> {
+    let next = validate_value(p, field, text)?;
+    next.check_kernels()?;
+    Ok(next)
+}
+
+/// [`validate`] without the kernels' checks of the whole set.
+fn validate_value(p: &Params, field: Field, text: &str) -> Result<Params, RecipeError> {
+    let key = field.key();
+    let mut next = *p;
+    let value = |text: &str| parse_f64(key, text);
+    match field {
+        Field::L1 | Field::L2 => {
+            let v = in_range(key, value(text)?, ik_workspace::LINK_MIN_M, limits::L_MAX_M)?;
+            if field == Field::L1 {
+                next.l1 = v;
+            } else {
+                next.l2 = v;
+            }
+        }
+        Field::HalfMm => next.half_mm = value(text)?,
+        Field::StepMm => next.step_mm = value(text)?,
+        Field::Q1Start => next.q1_start = value(text)?,
+        Field::Q1Stop => next.q1_stop = value(text)?,
+        Field::Q1Step => next.q1_step = value(text)?,
+        Field::HeatmapN => {
+            let n = parse_i64(key, text)?;
+            let n = in_range(
+                key,
+                n as f64,
+                limits::HEATMAP_MIN as f64,
+                limits::HEATMAP_MAX as f64,
+            )?;
+            next.heatmap_n = n as usize;
+        }
+        Field::ManipN => {
+            let n = parse_i64(key, text)?;
+            in_range(key, n as f64, 1.0, manip_grid::MAX_N as f64)?;
+            next.manip_n = n;
+        }
+    }
+    Ok(next)
+}
+
+/// Most rows of the Jacobian sweep (the kernel's limit).
+pub const SWEEP_ROWS_MAX: u64 = jacobian_2r::MAX_SAMPLES;
+
+/// The page's state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct State {
+    pub params: Params,
+    /// Joint angles (rad), as IK returned them or as dragged.
+    pub q1: f64,
+    pub q2: f64,
+    /// The IK branch used for tip drags and arrow keys.
+    pub elbow: Elbow,
+    /// Workspace grid shown over the arm view.
+    pub show_ws: bool,
+    pub ws_color: WsColor,
+}
+
+impl Default for State {
+    fn default() -> Self {
+        State {
+            params: Params::default(),
+            q1: defaults::Q1,
+            q2: defaults::Q2,
+            elbow: Elbow::Down,
+            show_ws: false,
+            ws_color: WsColor::Reach,
+        }
+    }
+}
+
+impl State {
+    /// The whole state as URL query pairs (the router adds `lang`).
+    pub fn query_pairs(&self) -> Vec<(&'static str, String)> {
+        let mut q: Vec<(&'static str, String)> = Field::ALL
+            .iter()
+            .map(|f| (f.key(), f.text(&self.params)))
+            .collect();
+        q.push(("q1", num(self.q1)));
+        q.push(("q2", num(self.q2)));
+        q.push((
+            "elbow",
+            match self.elbow {
+                Elbow::Down => "down",
+                Elbow::Up => "up",
+            }
+            .to_string(),
+        ));
+        q.push(("ws", if self.show_ws { "1" } else { "0" }.to_string()));
+        q.push(("wsc", self.ws_color.key().to_string()));
+        q
+    }
+
+    /// Restores a state from URL query pairs. Unknown keys are left alone (other pages' or
+    /// the shell's); values that fail validation are skipped and their keys returned.
+    pub fn from_query(query: &[(String, String)]) -> (State, Vec<String>) {
+        let mut state = State::default();
+        let mut ignored = Vec::new();
+        let get = |key: &str| {
+            query
+                .iter()
+                .find(|(k, _)| k == key)
+                .map(|(_, v)| v.as_str())
+        };
+        for field in Field::ALL {
+            if let Some(text) = get(field.key()) {
+                match validate_value(&state.params, field, text) {
+                    Ok(p) => state.params = p,
+                    Err(_) => ignored.push(field.key().to_string()),
+                }
+            }
+        }
+        // Limits that involve several values (grid size, sweep length and order): a
+        // combination the kernels reject falls back to the defaults of the values involved.
+        let d = Params::default();
+        if state.params.workspace().validate().is_err() {
+            state.params.half_mm = d.half_mm;
+            state.params.step_mm = d.step_mm;
+            ignored.extend(["half_mm".to_string(), "step_mm".to_string()]);
+        }
+        if state.params.sweep(0.0).validate().is_err() {
+            state.params.q1_start = d.q1_start;
+            state.params.q1_stop = d.q1_stop;
+            state.params.q1_step = d.q1_step;
+            ignored.extend(["q1_start", "q1_stop", "q1_step"].map(String::from));
+        }
+        for key in ["q1", "q2"] {
+            if let Some(text) = get(key) {
+                match parse_f64(key, text) {
+                    Ok(v) if v.abs() <= 100.0 => {
+                        if key == "q1" {
+                            state.q1 = v;
+                        } else {
+                            state.q2 = v;
+                        }
+                    }
+                    _ => ignored.push(key.to_string()),
+                }
+            }
+        }
+        match get("elbow") {
+            Some("down") => state.elbow = Elbow::Down,
+            Some("up") => state.elbow = Elbow::Up,
+            Some(_) => ignored.push("elbow".to_string()),
+            None => {
+                // Without an explicit branch, the pose's q2 decides it.
+                state.elbow = elbow_of(state.q2);
+            }
+        }
+        match get("ws") {
+            Some("1") => state.show_ws = true,
+            Some("0") => state.show_ws = false,
+            Some(_) => ignored.push("ws".to_string()),
+            None => {}
+        }
+        if let Some(text) = get("wsc") {
+            match WsColor::from_key(text) {
+                Some(c) => state.ws_color = c,
+                None => ignored.push("wsc".to_string()),
+            }
+        }
+        (state, ignored)
+    }
+}
+
+/// The branch a pose is on: `q2 >= 0` (wrapped) is elbow-down, the recipes' branch.
+pub fn elbow_of(q2: f64) -> Elbow {
+    if crate::planar2r::wrap_angle(q2) >= 0.0 {
+        Elbow::Down
+    } else {
+        Elbow::Up
+    }
+}
+
+impl UrlState for State {
+    /// [`State::from_query`]: keys of other pages are left alone, values that fail are
+    /// reported as invalid.
+    fn read(query: &[(String, String)]) -> (State, Vec<IgnoredKey>) {
+        let (state, ignored) = State::from_query(query);
+        (
+            state,
+            ignored.into_iter().map(IgnoredKey::invalid).collect(),
+        )
+    }
+
+    fn write(&self) -> Vec<(String, String)> {
+        self.query_pairs()
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), v))
+            .collect()
+    }
+}
+
+// ---------- Validation: which fields a limit involves ----------
+
+/// A value the form refuses: the message (shown beside the field the user changed) and every
+/// field the limit involves, that one first (all of them are marked invalid).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Refusal {
+    pub error: RecipeError,
+    pub involved: Vec<Field>,
+}
+
+/// Which recipe's whole-set check a parameter set fails.
+fn failing_kernel(p: &Params) -> Option<(RecipeError, &'static [Field])> {
+    const WS: &[Field] = &[Field::HalfMm, Field::StepMm];
+    const SWEEP: &[Field] = &[Field::Q1Start, Field::Q1Stop, Field::Q1Step];
+    const GRID: &[Field] = &[Field::ManipN];
+    if let Err(e) = p.workspace().validate() {
+        return Some((e, WS));
+    }
+    if let Err(e) = p.sweep(0.0).validate() {
+        return Some((e, SWEEP));
+    }
+    p.grid().validate().err().map(|e| (e, GRID))
+}
+
+/// [`validate`], saying which fields a refused value involves: the edited field alone for
+/// its own limits; for a limit over several values (grid cells, sweep rows, start ≤ stop),
+/// the edited field and the others of that limit.
+pub fn check(p: &Params, field: Field, text: &str) -> Result<Params, Refusal> {
+    let next = validate_value(p, field, text).map_err(|error| Refusal {
+        error,
+        involved: vec![field],
+    })?;
+    match failing_kernel(&next) {
+        None => Ok(next),
+        Some((error, others)) => {
+            let mut involved = vec![field];
+            involved.extend(others.iter().copied().filter(|f| *f != field));
+            Err(Refusal { error, involved })
+        }
+    }
+}
+
+impl Field {
+    /// The field whose URL key is `key`.
+    pub fn from_key(key: &str) -> Option<Field> {
+        Field::ALL.into_iter().find(|f| f.key() == key)
+    }
+}
+
+// ---------- Arm view: transform, hit tests, labels ----------
+
+/// Drawn ellipse semi-axis = `ELLIPSE_SCALE · σ` metres.
+pub const ELLIPSE_SCALE: f64 = 0.25;
+
+/// World (m) ↔ screen (CSS px) for the arm view: the base at the centre, y up.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ViewXf {
+    pub to_screen: DAffine2,
+    pub to_world: DAffine2,
+    /// CSS pixels per metre.
+    pub px_per_m: f64,
+}
+
+impl ViewXf {
+    /// Fits a disc of radius `extent_m` around the base into a `w × h` CSS-pixel view.
+    pub fn fit(w: f64, h: f64, extent_m: f64) -> ViewXf {
+        let extent = if extent_m.is_finite() && extent_m > 0.0 {
+            extent_m
+        } else {
+            1.0
+        };
+        let s = (w.min(h) / 2.0 - 6.0).max(1.0) / extent;
+        let origin = DVec2::new((w / 2.0).round(), (h / 2.0).round());
+        let to_screen = DAffine2::from_cols(DVec2::new(s, 0.0), DVec2::new(0.0, -s), origin);
+        ViewXf {
+            to_screen,
+            to_world: to_screen.inverse(),
+            px_per_m: s,
+        }
+    }
+
+    /// Screen point of a world point.
+    pub fn screen(&self, x: f64, y: f64) -> DVec2 {
+        self.to_screen.transform_point2(DVec2::new(x, y))
+    }
+
+    /// World point of a screen point.
+    pub fn world(&self, p: DVec2) -> DVec2 {
+        self.to_world.transform_point2(p)
+    }
+
+    /// The base (world origin) on screen.
+    pub fn origin(&self) -> DVec2 {
+        self.to_screen.translation
+    }
+}
+
+/// The view radius (m) for an arm, widened to show the workspace grid when it is on.
+pub fn extent_m(arm: &Arm, ws_half_m: Option<f64>) -> f64 {
+    let reach = arm.l1 + arm.l2;
+    // A grid far larger than the arm would shrink the arm to a dot: show at most 3 reaches.
+    let ws = ws_half_m.map_or(0.0, |h| h.min(3.0 * reach));
+    reach.max(ws) * 1.08
+}
+
+/// A 1-2-5 step (mm) giving about six grid lines from the base to the edge.
+pub fn grid_step_mm(extent_m: f64) -> f64 {
+    let target = extent_m * 1000.0 / 6.0;
+    let mag = 10f64.powf(target.log10().floor());
+    for m in [1.0, 2.0, 5.0, 10.0] {
+        if m * mag >= target {
+            return m * mag;
+        }
+    }
+    10.0 * mag
+}
+
+/// A grid label in millimetres: whole numbers without a decimal point.
+pub fn format_mm(v: f64) -> String {
+    let r = (v * 1000.0).round() / 1000.0;
+    if r == r.trunc() {
+        format!("{}", r as i64)
+    } else {
+        format!("{r}")
+    }
+}
+
+/// What a pointer grabbed on the arm.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Grab {
+    /// The tip: IK follows the pointer.
+    Tip,
+    /// The elbow joint or link 1: q1 follows.
+    Q1,
+    /// Link 2: q2 follows.
+    Q2,
+}
+
+/// Screen positions of base, elbow and tip.
+pub fn joints_on_screen(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64) -> [DVec2; 3] {
+    let (ex, ey) = arm.elbow(q1);
+    let (tx, ty) = arm.fk(q1, q2);
+    [xf.origin(), xf.screen(ex, ey), xf.screen(tx, ty)]
+}
+
+/// Hit radius (CSS px) of the tip for a mouse; touch targets are wider.
+pub const HIT_MOUSE_PX: f64 = 16.0;
+/// Hit radius (CSS px) of the tip for a finger.
+pub const HIT_TOUCH_PX: f64 = 26.0;
+
+/// The draggable parts of the arm as hit shapes, in the order they are tested (the tip
+/// first: it wins where parts overlap).
+pub fn handles(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64, touch: bool) -> [(Grab, HandleShape); 4] {
+    let [base, elbow, tip] = joints_on_screen(xf, arm, q1, q2);
+    let r = if touch { HIT_TOUCH_PX } else { HIT_MOUSE_PX };
+    [
+        (
+            Grab::Tip,
+            HandleShape::Circle {
+                centre: tip,
+                radius: r,
+            },
+        ),
+        (
+            Grab::Q1,
+            HandleShape::Circle {
+                centre: elbow,
+                radius: r * 0.8,
+            },
+        ),
+        (
+            Grab::Q2,
+            HandleShape::Capsule {
+                a: elbow,
+                b: tip,
+                radius: r * 0.7,
+            },
+        ),
+        (
+            Grab::Q1,
+            HandleShape::Capsule {
+                a: base,
+                b: elbow,
+                radius: r * 0.7,
+            },
+        ),
+    ]
+}
+
+/// The part of the arm under `p`, if any.
+pub fn part_at(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64, p: DVec2, touch: bool) -> Option<Grab> {
+    handles(xf, arm, q1, q2, touch)
+        .into_iter()
+        .find(|(_, shape)| shape.contains(p))
+        .map(|(grab, _)| grab)
+}
+
+/// Which part of the arm a mouse or pen press at `p` grabs: empty space grabs the tip (the
+/// tip jumps there by IK), so a click anywhere moves the arm.
+pub fn hit_test(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64, p: DVec2, touch: bool) -> Grab {
+    part_at(xf, arm, q1, q2, p, touch).unwrap_or(Grab::Tip)
+}
+
+/// Where the "L1" and "L2" labels go (their centres, CSS px): beside the middle of each link,
+/// on the outside of the bend, `gap` px from the link. When the arm is folded back the links
+/// lie on one line and the outsides are opposite sides, so the labels never overlap.
+pub fn link_label_centres(base: DVec2, elbow: DVec2, tip: DVec2, gap: f64) -> [DVec2; 2] {
+    let d1 = elbow - base;
+    let d2 = tip - elbow;
+    let unit = |d: DVec2| {
+        let l = d.length();
+        if l > 1e-9 {
+            d / l
+        } else {
+            DVec2::X
+        }
+    };
+    let (u1, u2) = (unit(d1), unit(d2));
+    let cross = u1.x * u2.y - u1.y * u2.x;
+    // Straight or folded: either side is the outside; pick one so both agree.
+    let side = if cross >= 0.0 { 1.0 } else { -1.0 };
+    let normal = |u: DVec2| DVec2::new(-u.y, u.x);
+    [
+        (base + elbow) / 2.0 - normal(u1) * side * gap,
+        (elbow + tip) / 2.0 - normal(u2) * side * gap,
+    ]
+}
+
+// ---------- Heatmap: |det J| over (q1, q2) ----------
+
+/// The heatmap's axis: `n` nodes over `[−π, π]` (the manip-grid recipe's sampling).
+pub fn heat_axis(n: usize) -> GridAxis {
+    GridAxis {
+        min: -PI,
+        max: PI,
+        n: n.max(2),
+    }
+}
+
+/// `|det J|` of the `n × n` heatmap grid (`values[i * n + j]`, `i` over q1), with the manip-grid
+/// kernel's fast path, and the colour scale's top `L1 L2` (the largest any pose reaches).
+pub fn heat_fill(arm: &Arm, n: usize, values: &mut Vec<f32>) -> Result<f64, RecipeError> {
+    let n = n.max(2);
+    values.resize(n * n, 0.0);
+    manip_grid::fill_abs_det(arm.l1, arm.l2, n as i64, values)?;
+    Ok((arm.l1 * arm.l2).max(f64::MIN_POSITIVE))
+}
+
+// ---------- The Jacobian sweep plot ----------
+
+/// One sample of the sweep.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SweepPoint {
+    pub q1: f64,
+    pub det_j: f64,
+    pub manipulability: f64,
+    pub sigma_min: f64,
+    pub sigma_max: f64,
+}
+
+/// Most points the plot draws of a sweep (evenly picked, the last one always).
+pub const SWEEP_PLOT_MAX: usize = 1500;
+
+/// The plotted sweep: the recipe's q1 values (at most [`SWEEP_PLOT_MAX`] of them) at `q2`.
+pub fn sweep_points(p: &Params, q2: f64) -> Vec<SweepPoint> {
+    let Ok(q1s) = crate::numpy::arange(
+        p.q1_start,
+        p.q1_stop + 1e-12,
+        p.q1_step,
+        "q1_step",
+        SWEEP_ROWS_MAX,
+    ) else {
+        return Vec::new();
+    };
+    let stride = q1s.len().div_ceil(SWEEP_PLOT_MAX).max(1);
+    let arm = p.arm();
+    let point = |q1: f64| {
+        let r = arm.report(q1, q2);
+        SweepPoint {
+            q1,
+            det_j: r.det_j,
+            manipulability: r.manipulability,
+            sigma_min: r.ellipse.sigma_min,
+            sigma_max: r.ellipse.sigma_max,
+        }
+    };
+    let mut pts: Vec<SweepPoint> = q1s.iter().step_by(stride).map(|&q1| point(q1)).collect();
+    if let (Some(&last), Some(end)) = (q1s.last(), pts.last()) {
+        if end.q1 != last {
+            pts.push(point(last));
+        }
+    }
+    pts
+}
+
+/// The plot's axis ranges: x the sweep, `|det J| ≤ L1 L2` on top, `σ ≤ sqrt((L1 + L2)² + L2²)`
+/// below (fixed by the arm, so a drag never rescales the axes).
+pub fn sweep_ranges(p: &Params) -> [(f64, f64); 3] {
+    let (mut a, mut b) = (p.q1_start.min(p.q1_stop), p.q1_start.max(p.q1_stop));
+    if b - a < 1e-9 {
+        a -= 0.5;
+        b += 0.5;
+    }
+    let det_max = (p.l1 * p.l2).max(1e-300) * 1.08;
+    let sigma_max = ((p.l1 + p.l2).powi(2) + p.l2 * p.l2).sqrt().max(1e-300) * 1.08;
+    [(a, b), (-det_max, det_max), (0.0, sigma_max)]
+}
+
+/// The q1 to mark on the sweep: the current q1, or the same angle ±2π, if it lies in `x`.
+pub fn marker_in_range(q1: f64, x: (f64, f64)) -> Option<f64> {
+    let tau = std::f64::consts::TAU;
+    [q1, q1 - tau, q1 + tau, wrap_angle(q1)]
+        .into_iter()
+        .find(|q| (x.0..=x.1).contains(q))
+}
+
+// ---------- Readouts ----------
+
+/// The readout names (`data-readout`), in the order [`readout_values`] returns them.
+pub const READOUTS: [&str; 14] = [
+    "q1",
+    "q2",
+    "q1_deg",
+    "q2_deg",
+    "x_mm",
+    "y_mm",
+    "det_j",
+    "manipulability",
+    "sigma_min",
+    "sigma_max",
+    "j11",
+    "j12",
+    "j21",
+    "j22",
+];
+
+/// An angle in radians: at least six significant digits and at least six decimals.
+pub fn fmt_rad(x: f64) -> String {
+    if !x.is_finite() {
+        return x.to_string();
+    }
+    let a = x.abs();
+    let decimals = if a > 0.0 {
+        (5 - a.log10().floor() as i32).clamp(6, 12) as usize
+    } else {
+        6
+    };
+    clean_zero(format!("{x:.decimals$}"))
+}
+
+/// `x` with `sig` significant digits; scientific notation below 1e-4 and from 1e6.
+pub fn fmt_sig(x: f64, sig: usize) -> String {
+    if !x.is_finite() {
+        return x.to_string();
+    }
+    let a = x.abs();
+    if a == 0.0 {
+        return "0".to_string();
+    }
+    if !(1e-4..1e6).contains(&a) {
+        let d = sig.saturating_sub(1);
+        return format!("{x:.d$e}");
+    }
+    let decimals = (sig as i32 - 1 - a.log10().floor() as i32).max(0) as usize;
+    clean_zero(format!("{x:.decimals$}"))
+}
+
+/// `x` with a fixed number of decimals.
+pub fn fmt_fixed(x: f64, decimals: usize) -> String {
+    clean_zero(format!("{x:.decimals$}"))
+}
+
+/// `-0.000` → `0.000`.
+fn clean_zero(s: String) -> String {
+    match s.strip_prefix('-') {
+        Some(rest) if rest.bytes().all(|b| b == b'0' || b == b'.') => rest.to_string(),
+        _ => s,
+    }
+}
+
+/// The readout texts of a pose, in [`READOUTS`] order.
+pub fn readout_values(rep: &PoseReport) -> [String; 14] {
+    let j = rep.jacobian;
+    [
+        fmt_rad(rep.q1),
+        fmt_rad(rep.q2),
+        fmt_fixed(rep.q1.to_degrees(), 3),
+        fmt_fixed(rep.q2.to_degrees(), 3),
+        fmt_fixed(rep.x * 1000.0, 3),
+        fmt_fixed(rep.y * 1000.0, 3),
+        fmt_sig(rep.det_j, 6),
+        fmt_sig(rep.manipulability, 6),
+        fmt_sig(rep.ellipse.sigma_min, 6),
+        fmt_sig(rep.ellipse.sigma_max, 6),
+        fmt_sig(j[0][0], 6),
+        fmt_sig(j[0][1], 6),
+        fmt_sig(j[1][0], 6),
+        fmt_sig(j[1][1], 6),
+    ]
+}
+
+/// What the screen-reader summary says about a pose (rounded the way it is spoken: whole
+/// degrees and millimetres, w to 3 significant digits), and whether the tip is pinned.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PoseSummary {
+    pub q1_deg: String,
+    pub q2_deg: String,
+    pub x_mm: String,
+    pub y_mm: String,
+    pub w: String,
+    pub pinned: bool,
+}
+
+impl PoseSummary {
+    pub fn of(rep: &PoseReport, pinned: bool) -> PoseSummary {
+        PoseSummary {
+            q1_deg: fmt_fixed(rep.q1.to_degrees(), 0),
+            q2_deg: fmt_fixed(rep.q2.to_degrees(), 0),
+            x_mm: fmt_fixed(rep.x * 1000.0, 0),
+            y_mm: fmt_fixed(rep.y * 1000.0, 0),
+            w: fmt_sig(rep.manipulability, 3),
+            pinned,
+        }
+    }
+
+    /// The summary's Fluent arguments (`ik2r-live-summary`).
+    pub fn args(&self) -> Vec<(&'static str, String)> {
+        vec![
+            ("q1", self.q1_deg.clone()),
+            ("q2", self.q2_deg.clone()),
+            ("x", self.x_mm.clone()),
+            ("y", self.y_mm.clone()),
+            ("w", self.w.clone()),
+        ]
+    }
+}
+
+// ---------- Exports: the recipes' arguments and command lines ----------
+
+/// One CSV the page offers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Export {
+    /// File name (also the button's `data-download`).
+    pub file: &'static str,
+    /// Recipe id on the command line.
+    pub recipe: &'static str,
+    /// Fluent id of the button.
+    pub label_id: &'static str,
+}
+
+/// The page's CSVs, in the order of the panel.
+pub const EXPORTS: [Export; 3] = [
+    Export {
+        file: "ik_workspace.csv",
+        recipe: "ik-workspace",
+        label_id: "ik2r-dl-ik",
+    },
+    Export {
+        file: "jacobian_2r.csv",
+        recipe: "jacobian-2r",
+        label_id: "ik2r-dl-jac",
+    },
+    Export {
+        file: "manip_ellipse.csv",
+        recipe: "manip-grid",
+        label_id: "ik2r-dl-manip",
+    },
+];
+
+/// File name of the arm view PNG.
+pub const ARM_PNG: &str = "ik_2r_arm.png";
+
+/// The positional arguments of `export` for parameters `p` and the current `q2` (the
+/// Jacobian sweep is taken at the pose's q2).
+pub fn export_args(export: &Export, p: &Params, q2: f64) -> Vec<String> {
+    match export.recipe {
+        "ik-workspace" => vec![num(p.l1), num(p.l2), num(p.half_mm), num(p.step_mm)],
+        "jacobian-2r" => vec![
+            num(p.l1),
+            num(p.l2),
+            num(p.q1_start),
+            num(p.q1_stop),
+            num(p.q1_step),
+            num(q2),
+        ],
+        _ => vec![num(p.l1), num(p.l2), p.manip_n.to_string()],
+    }
+}
+
+/// The equivalent command lines: `python <script> <args>` and `bsv <recipe> <args>`.
+pub fn export_commands(export: &Export, p: &Params, q2: f64) -> (String, String) {
+    let args = export_args(export, p, q2).join(" ");
+    let script = crate::recipes::find(export.recipe).map_or("", |r| r.info.python);
+    (
+        format!("python {script} {args}"),
+        format!("bsv {} {args}", export.recipe),
+    )
+}
+
+/// Why a CSV could not be made.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExportError {
+    /// The recipe refused the arguments.
+    Recipe(RecipeError),
+    /// The recipe ran but wrote no file of this name.
+    MissingFile {
+        recipe: &'static str,
+        file: &'static str,
+    },
+}
+
+/// The CSV text, exactly as `bsv <recipe> <args>` writes it.
+pub fn export_csv(export: &Export, p: &Params, q2: f64) -> Result<String, ExportError> {
+    let out = crate::recipes::run(export.recipe, &export_args(export, p, q2))
+        .map_err(ExportError::Recipe)?;
+    out.file(export.file)
+        .map(str::to_string)
+        .ok_or(ExportError::MissingFile {
+            recipe: export.recipe,
+            file: export.file,
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::view::drag::dist_to_segment;
+
+    fn q(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
+        pairs
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect()
+    }
+
+    #[test]
+    fn url_round_trip_restores_every_bit() {
+        let mut st = State::default();
+        st.params.l1 = 0.15;
+        st.params.l2 = 0.08;
+        st.params.heatmap_n = 128;
+        st.params.q1_step = 0.25;
+        st.q1 = 0.5123456789012345;
+        st.q2 = -1.2;
+        st.elbow = Elbow::Up;
+        st.show_ws = true;
+        st.ws_color = WsColor::Manip;
+        let written: Vec<(String, String)> = st
+            .query_pairs()
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), v))
+            .collect();
+        let (back, ignored) = State::from_query(&written);
+        assert_eq!(back, st);
+        assert!(ignored.is_empty());
+        assert!(written.contains(&("q1".to_string(), "0.5123456789012345".to_string())));
+        // The kit's URL contract: read(write(s)) == s, nothing ignored.
+        assert_eq!(<State as UrlState>::read(&st.write()), (st, Vec::new()));
+        let (_, bad) = <State as UrlState>::read(&q(&[("q1", "zz")]));
+        assert_eq!(bad, vec![IgnoredKey::invalid("q1")]);
+    }
+
+    #[test]
+    fn url_values_that_fail_are_ignored_and_named() {
+        let (st, ignored) = State::from_query(&q(&[
+            ("L2", "abc"),
+            ("q1", "zz"),
+            ("res", "5000"),
+            ("elbow", "sideways"),
+            ("half_mm", "1"),
+            ("step_mm", "0.0001"),
+            ("other", "kept for another page"),
+        ]));
+        let d = State::default();
+        assert_eq!(st.params, d.params);
+        assert_eq!(st.q1, d.q1);
+        for key in ["L2", "q1", "res", "elbow", "half_mm", "step_mm"] {
+            assert!(ignored.iter().any(|k| k == key), "{key} in {ignored:?}");
+        }
+        assert!(!ignored.iter().any(|k| k == "other"));
+        // Without `elbow`, q2's sign picks the branch.
+        let (up, _) = State::from_query(&q(&[("q2", "-0.5")]));
+        assert_eq!(up.elbow, Elbow::Up);
+    }
+
+    #[test]
+    fn a_cross_field_limit_marks_every_field_it_involves() {
+        let p = Params::default();
+        // 2·1000/10 + 1 = 201 cells per axis is fine; 2·1000/1 + 1 = 2001 is not.
+        let ok = check(&p, Field::HalfMm, "1000").expect("201 × 201 cells");
+        let refused = check(&ok, Field::StepMm, "1").unwrap_err();
+        assert_eq!(refused.involved, vec![Field::StepMm, Field::HalfMm]);
+        let refused = check(&Params { step_mm: 1.0, ..p }, Field::HalfMm, "1000").unwrap_err();
+        assert_eq!(refused.involved, vec![Field::HalfMm, Field::StepMm]);
+        // Start after stop: the three sweep fields.
+        let refused = check(&p, Field::Q1Start, "3").unwrap_err();
+        assert_eq!(
+            refused.involved,
+            vec![Field::Q1Start, Field::Q1Stop, Field::Q1Step]
+        );
+        // A field's own limit: that field only.
+        let refused = check(&p, Field::L2, "-1").unwrap_err();
+        assert_eq!(refused.involved, vec![Field::L2]);
+        assert!(matches!(refused.error, RecipeError::OutOfRange { .. }));
+        assert_eq!(check(&p, Field::L2, "0.08").map(|n| n.l2), Ok(0.08));
+    }
+
+    #[test]
+    fn view_transform_round_trips_and_puts_y_up() {
+        let xf = ViewXf::fit(800.0, 600.0, 0.25);
+        assert_eq!(xf.origin(), DVec2::new(400.0, 300.0));
+        assert_eq!(xf.px_per_m, (300.0 - 6.0) / 0.25);
+        let p = xf.screen(0.1, 0.05);
+        assert!(p.y < 300.0 && p.x > 400.0);
+        let w = xf.world(p);
+        assert!((w.x - 0.1).abs() < 1e-15 && (w.y - 0.05).abs() < 1e-15);
+        assert_eq!(extent_m(&Arm { l1: 0.12, l2: 0.1 }, None), 0.22 * 1.08);
+        // The workspace widens the view, but to at most three reaches.
+        assert_eq!(
+            extent_m(&Arm { l1: 0.12, l2: 0.1 }, Some(10.0)),
+            0.66 * 1.08
+        );
+        assert_eq!(grid_step_mm(0.2376), 50.0);
+        assert_eq!(format_mm(-150.0), "-150");
+        assert_eq!(format_mm(2.5), "2.5");
+    }
+
+    #[test]
+    fn hit_tests_find_tip_elbow_and_links() {
+        let arm = Arm { l1: 0.12, l2: 0.1 };
+        let xf = ViewXf::fit(800.0, 800.0, 0.24);
+        let (q1, q2) = (0.3, 0.8);
+        let [base, elbow, tip] = joints_on_screen(&xf, &arm, q1, q2);
+        let hit = |p: DVec2, touch| hit_test(&xf, &arm, q1, q2, p, touch);
+        assert_eq!(hit(tip + DVec2::new(10.0, 5.0), false), Grab::Tip);
+        assert_eq!(hit(elbow + DVec2::new(3.0, -4.0), false), Grab::Q1);
+        assert_eq!(hit((elbow + tip) / 2.0, false), Grab::Q2);
+        assert_eq!(hit((base + elbow) / 2.0, false), Grab::Q1);
+        // Empty space: the tip (a click anywhere moves the arm), but no part for a finger.
+        let empty = base + DVec2::new(-200.0, 200.0);
+        assert_eq!(hit(empty, false), Grab::Tip);
+        assert_eq!(part_at(&xf, &arm, q1, q2, empty, true), None);
+        // A finger gets a wider tip: 20 px away is the tip for touch, nothing for the mouse
+        // (20 px from the tip is also off link 2's 11 px capsule in this direction).
+        let away = tip + (tip - elbow).normalize() * 20.0;
+        assert_eq!(part_at(&xf, &arm, q1, q2, away, true), Some(Grab::Tip));
+        assert_eq!(part_at(&xf, &arm, q1, q2, away, false), None);
+    }
+
+    #[test]
+    fn link_labels_do_not_overlap_when_the_arm_is_folded() {
+        let arm = Arm { l1: 0.12, l2: 0.1 };
+        let xf = ViewXf::fit(800.0, 800.0, 0.24);
+        for q2 in [3.1, -3.1, PI, 2.9] {
+            let [b, e, t] = joints_on_screen(&xf, &arm, 0.3, q2);
+            let [l1, l2] = link_label_centres(b, e, t, 14.0);
+            // Two 20 × 16 px labels: their centres must be further apart than that.
+            let d = l1 - l2;
+            assert!(
+                d.x.abs() > 20.0 || d.y.abs() > 16.0,
+                "q2 = {q2}: {l1} vs {l2}"
+            );
+            // Each label stays beside its own link.
+            assert!((dist_to_segment(l1, b, e) - 14.0).abs() < 1e-9);
+            assert!((dist_to_segment(l2, e, t) - 14.0).abs() < 1e-9);
+        }
+        // Bent: both labels outside the bend (away from the other link's side).
+        let [b, e, t] = joints_on_screen(&xf, &arm, 0.0, 1.2);
+        let [l1, _] = link_label_centres(b, e, t, 14.0);
+        assert!(l1.y > b.y, "link 1 along +x, bend upwards: label below it");
+    }
+
+    #[test]
+    fn heat_fill_is_l1_l2_abs_sin_q2_on_the_recipe_grid() {
+        let arm = Arm { l1: 0.12, l2: 0.1 };
+        let n = 64;
+        let mut values = Vec::new();
+        let top = heat_fill(&arm, n, &mut values).expect("valid grid");
+        assert_eq!(top, 0.12 * 0.1);
+        assert_eq!(values.len(), n * n);
+        let axis = heat_axis(n);
+        for (i, j) in [(0, 0), (10, 20), (63, 31), (40, 48)] {
+            let want = (0.12 * 0.1 * axis.node(j).sin()).abs();
+            let got = f64::from(values[i * n + j]);
+            assert!((got - want).abs() < 1e-7, "({i}, {j}): {got} vs {want}");
+        }
+        // The singular rows q2 = ±π are (nearly) zero; n is clamped to 2 at least.
+        assert!(values[n - 1] < 1e-9);
+        assert!(heat_fill(&arm, 1, &mut values).is_ok());
+        assert_eq!(values.len(), 4);
+    }
+
+    #[test]
+    fn sweep_points_follow_the_recipe_range() {
+        let p = Params::default();
+        let pts = sweep_points(&p, 0.8);
+        // arange(0, 1.57 + 1e-12, 0.1): 16 rows.
+        assert_eq!(pts.len(), 16);
+        assert_eq!(pts[0].q1, 0.0);
+        let w = 0.12 * 0.1 * 0.8f64.sin();
+        assert!(pts.iter().all(|s| (s.manipulability - w).abs() < 1e-15));
+        let [x, top, bottom] = sweep_ranges(&p);
+        assert_eq!(x, (0.0, 1.57));
+        assert!(top.1 > w && top.0 == -top.1 && bottom.0 == 0.0);
+        // A long sweep is thinned to SWEEP_PLOT_MAX (+ the last row).
+        let long = Params { q1_step: 1e-5, ..p };
+        let pts = sweep_points(&long, 0.8);
+        assert!(pts.len() <= SWEEP_PLOT_MAX + 1);
+        assert!((pts.last().map_or(0.0, |s| s.q1) - 1.57).abs() < 1e-4);
+        assert_eq!(
+            marker_in_range(0.3 + std::f64::consts::TAU, x),
+            Some(0.3 + std::f64::consts::TAU - std::f64::consts::TAU)
+        );
+        assert_eq!(marker_in_range(-1.0, x), None);
+    }
+
+    #[test]
+    fn readouts_and_summary_texts() {
+        let rep = Arm { l1: 0.12, l2: 0.1 }.report(0.3, 0.8);
+        let v = readout_values(&rep);
+        assert_eq!(v[0], "0.300000");
+        assert_eq!(v[2], "17.189");
+        assert_eq!(fmt_fixed(-0.0001, 3), "0.000");
+        assert_eq!(fmt_sig(1.23456789e-6, 3), "1.23e-6");
+        let s = PoseSummary::of(&rep, false);
+        assert_eq!((s.q1_deg.as_str(), s.q2_deg.as_str()), ("17", "46"));
+        assert_eq!(s.w, fmt_sig(rep.manipulability, 3));
+        assert_eq!(s.args().len(), 5);
+    }
+
+    #[test]
+    fn exports_match_the_cli_arguments() {
+        let p = Params::default();
+        let (py, bsv) = export_commands(&EXPORTS[0], &p, 0.8);
+        assert_eq!(bsv, "bsv ik-workspace 0.12 0.1 200 10");
+        assert_eq!(py, "python planar_ik_workspace.py 0.12 0.1 200 10");
+        assert_eq!(
+            export_commands(&EXPORTS[1], &p, -1.2).1,
+            "bsv jacobian-2r 0.12 0.1 0 1.57 0.1 -1.2"
+        );
+        let csv = export_csv(&EXPORTS[2], &Params { manip_n: 3, ..p }, 0.8).expect("csv");
+        assert_eq!(csv.split("\r\n").filter(|l| !l.is_empty()).count(), 1 + 9);
+        let wrong = Export {
+            file: "nope.csv",
+            ..EXPORTS[2]
+        };
+        assert_eq!(
+            export_csv(&wrong, &p, 0.8),
+            Err(ExportError::MissingFile {
+                recipe: "manip-grid",
+                file: "nope.csv"
+            })
+        );
+    }
+}

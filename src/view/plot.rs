@@ -1,0 +1,283 @@
+//! The pure part of the kit's plot (`ui::kit::plot`): linear scales between data and pixels,
+//! "nice" 1-2-5 ticks and their labels, y ranges that fit the data, the sample nearest a
+//! cursor, and min/max decimation per pixel column (a series of a million samples draws as at
+//! most four points per column and looks the same).
+
+/// A linear map from a data interval to a pixel interval (either may be reversed: y pixels
+/// grow downwards).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinearScale {
+    pub domain: (f64, f64),
+    pub range: (f64, f64),
+}
+
+impl LinearScale {
+    /// A scale; an empty or non-finite domain is widened to ±0.5 around its value (or 0..1).
+    pub fn new(domain: (f64, f64), range: (f64, f64)) -> LinearScale {
+        let (mut a, mut b) = domain;
+        if !a.is_finite() || !b.is_finite() {
+            (a, b) = (0.0, 1.0);
+        }
+        if (b - a).abs() < f64::EPSILON * a.abs().max(1e-300) || a == b {
+            (a, b) = (a - 0.5, b + 0.5);
+        }
+        LinearScale {
+            domain: (a, b),
+            range,
+        }
+    }
+
+    /// Pixel of data value `v`.
+    pub fn map(&self, v: f64) -> f64 {
+        let (d0, d1) = self.domain;
+        let (r0, r1) = self.range;
+        r0 + (v - d0) / (d1 - d0) * (r1 - r0)
+    }
+
+    /// Data value at pixel `px`.
+    pub fn invert(&self, px: f64) -> f64 {
+        let (d0, d1) = self.domain;
+        let (r0, r1) = self.range;
+        if r1 == r0 {
+            return d0;
+        }
+        d0 + (px - r0) / (r1 - r0) * (d1 - d0)
+    }
+}
+
+/// A tick step of the 1-2-5 series giving about `target` intervals over `lo..hi`.
+pub fn nice_step(lo: f64, hi: f64, target: usize) -> f64 {
+    let span = (hi - lo).abs();
+    if !span.is_finite() || span == 0.0 {
+        return 1.0;
+    }
+    let raw = span / target.max(1) as f64;
+    let mag = 10f64.powf(raw.log10().floor());
+    for m in [1.0, 2.0, 5.0, 10.0] {
+        if m * mag >= raw * (1.0 - 1e-9) {
+            return m * mag;
+        }
+    }
+    10.0 * mag
+}
+
+/// Tick values: multiples of [`nice_step`] inside `lo..=hi` (exact zero where it falls).
+pub fn nice_ticks(lo: f64, hi: f64, target: usize) -> Vec<f64> {
+    let (lo, hi) = (lo.min(hi), lo.max(hi));
+    let step = nice_step(lo, hi, target);
+    let first = (lo / step - 1e-9).ceil() as i64;
+    let last = (hi / step + 1e-9).floor() as i64;
+    if last < first || last - first > 1000 {
+        return Vec::new();
+    }
+    (first..=last)
+        .map(|k| if k == 0 { 0.0 } else { k as f64 * step })
+        .collect()
+}
+
+/// A tick label with as many decimals as the step needs (`0.25`, `1.5`, `200`), and
+/// exponent form for very large or small values.
+pub fn tick_label(v: f64, step: f64) -> String {
+    if v == 0.0 {
+        return "0".to_string();
+    }
+    let a = v.abs();
+    if !(1e-4..1e6).contains(&a) {
+        return format!("{v:.1e}");
+    }
+    let decimals = if step > 0.0 && step < 1.0 {
+        (-step.log10().floor()) as usize + usize::from(is_half_step(step))
+    } else {
+        0
+    };
+    let s = format!("{v:.decimals$}");
+    if s.starts_with('-') && s[1..].bytes().all(|b| b == b'0' || b == b'.') {
+        s[1..].to_string()
+    } else {
+        s
+    }
+}
+
+/// 0.25, 0.025 … need one decimal more than their magnitude.
+fn is_half_step(step: f64) -> bool {
+    let m = step / 10f64.powf(step.log10().floor());
+    (m - 2.5).abs() < 1e-9
+}
+
+/// A y range holding every finite value with `pad` (a fraction of the span) on both sides;
+/// `None` when there is no finite value.
+pub fn auto_range(values: impl IntoIterator<Item = f64>, pad: f64) -> Option<(f64, f64)> {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values.into_iter().filter(|v| v.is_finite()) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if lo > hi {
+        return None;
+    }
+    let span = if hi > lo { hi - lo } else { lo.abs().max(1.0) };
+    Some((lo - pad * span, hi + pad * span))
+}
+
+/// The index of the sample whose x is nearest to `x` (`xs` ascending); `None` if empty.
+pub fn nearest_index(xs: &[f64], x: f64) -> Option<usize> {
+    if xs.is_empty() {
+        return None;
+    }
+    let i = xs.partition_point(|&v| v < x);
+    if i == 0 {
+        return Some(0);
+    }
+    if i >= xs.len() {
+        return Some(xs.len() - 1);
+    }
+    Some(if (xs[i] - x).abs() < (x - xs[i - 1]).abs() {
+        i
+    } else {
+        i - 1
+    })
+}
+
+/// Min/max decimation: the points of `pts` (x ascending) reduced to at most four per pixel
+/// column of `x` (first, min, max, last, in x order), so a polyline through the result has
+/// the same pixels as one through all points. Non-finite points break nothing: they are kept
+/// (they split the line where the plot draws it).
+pub fn decimate(pts: &[(f64, f64)], x: &LinearScale) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(pts.len().min(4096));
+    let mut i = 0;
+    while i < pts.len() {
+        let (px, py) = pts[i];
+        if !px.is_finite() || !py.is_finite() {
+            out.push(pts[i]);
+            i += 1;
+            continue;
+        }
+        let col = x.map(px).floor();
+        let start = i;
+        let (mut lo, mut hi) = (i, i);
+        let mut j = i + 1;
+        while j < pts.len() {
+            let (qx, qy) = pts[j];
+            if !qx.is_finite() || !qy.is_finite() || x.map(qx).floor() != col {
+                break;
+            }
+            if qy < pts[lo].1 {
+                lo = j;
+            }
+            if qy > pts[hi].1 {
+                hi = j;
+            }
+            j += 1;
+        }
+        let end = j - 1;
+        let mut keep = [start, lo, hi, end];
+        keep.sort_unstable();
+        let mut last = usize::MAX;
+        for k in keep {
+            if k != last {
+                out.push(pts[k]);
+                last = k;
+            }
+        }
+        i = j;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scales_map_and_invert() {
+        let y = LinearScale::new((-1.0, 1.0), (200.0, 0.0));
+        assert_eq!(y.map(-1.0), 200.0);
+        assert_eq!(y.map(0.5), 50.0);
+        assert_eq!(y.invert(50.0), 0.5);
+        // A flat domain is widened, not divided by zero.
+        let flat = LinearScale::new((3.0, 3.0), (0.0, 100.0));
+        assert_eq!(flat.domain, (2.5, 3.5));
+        assert_eq!(flat.map(3.0), 50.0);
+    }
+
+    #[test]
+    fn ticks_are_one_two_five_multiples_inside_the_range() {
+        assert_eq!(nice_ticks(0.0, 1.57, 6), vec![0.0, 0.5, 1.0, 1.5]);
+        assert_eq!(nice_ticks(-0.0132, 0.0132, 4), vec![-0.01, 0.0, 0.01]);
+        assert_eq!(nice_ticks(-1.0, 1.0, 8), vec![-1.0, -0.5, 0.0, 0.5, 1.0]);
+        assert_eq!(nice_step(0.0, 1000.0, 5), 200.0);
+        assert_eq!(nice_step(0.0, 10.0, 4), 5.0);
+        assert!(nice_ticks(0.0, f64::INFINITY, 5).is_empty());
+    }
+
+    #[test]
+    fn tick_labels_have_the_step_s_decimals() {
+        assert_eq!(tick_label(0.6000000000000001, 0.2), "0.6");
+        assert_eq!(tick_label(-0.005, 0.005), "-0.005");
+        assert_eq!(tick_label(0.25, 0.25), "0.25");
+        assert_eq!(tick_label(200.0, 200.0), "200");
+        assert_eq!(tick_label(0.0, 0.1), "0");
+        assert_eq!(tick_label(2.0e7, 1.0e7), "2.0e7");
+    }
+
+    #[test]
+    fn auto_range_pads_and_skips_nan() {
+        assert_eq!(auto_range([1.0, f64::NAN, 3.0], 0.1), Some((0.8, 3.2)));
+        assert_eq!(auto_range([2.0], 0.0), Some((2.0, 2.0)));
+        assert_eq!(auto_range([f64::NAN], 0.1), None);
+    }
+
+    #[test]
+    fn nearest_sample_to_a_cursor() {
+        let xs = [0.0, 1.0, 2.0, 4.0];
+        assert_eq!(nearest_index(&xs, -3.0), Some(0));
+        assert_eq!(nearest_index(&xs, 1.4), Some(1));
+        assert_eq!(nearest_index(&xs, 3.1), Some(3));
+        assert_eq!(nearest_index(&xs, 9.0), Some(3));
+        assert_eq!(nearest_index(&[], 1.0), None);
+    }
+
+    #[test]
+    fn decimation_keeps_each_column_s_extremes_in_order() {
+        // 1000 samples of a sine over 10 pixel columns.
+        let pts: Vec<(f64, f64)> = (0..1000)
+            .map(|i| {
+                let x = i as f64 / 1000.0;
+                (x, (x * 40.0).sin())
+            })
+            .collect();
+        let x = LinearScale::new((0.0, 1.0), (0.0, 10.0));
+        let d = decimate(&pts, &x);
+        assert!(d.len() <= 40, "{} points", d.len());
+        assert_eq!(d.first(), pts.first());
+        assert_eq!(d.last(), pts.last());
+        assert!(d.windows(2).all(|w| w[0].0 <= w[1].0));
+        for col in 0..10 {
+            let in_col = |p: &&(f64, f64)| x.map(p.0).floor() == col as f64;
+            let max_all = pts
+                .iter()
+                .filter(in_col)
+                .map(|p| p.1)
+                .fold(f64::MIN, f64::max);
+            let max_kept = d
+                .iter()
+                .filter(in_col)
+                .map(|p| p.1)
+                .fold(f64::MIN, f64::max);
+            let min_all = pts
+                .iter()
+                .filter(in_col)
+                .map(|p| p.1)
+                .fold(f64::MAX, f64::min);
+            let min_kept = d
+                .iter()
+                .filter(in_col)
+                .map(|p| p.1)
+                .fold(f64::MAX, f64::min);
+            assert_eq!((max_all, min_all), (max_kept, min_kept), "column {col}");
+        }
+        // Few points: unchanged.
+        let few = [(0.0, 1.0), (0.5, 2.0), (1.0, 0.0)];
+        assert_eq!(decimate(&few, &x), few.to_vec());
+    }
+}
