@@ -78,6 +78,16 @@ pub fn recipe_fields(info: &RecipeInfo) -> Vec<FieldDef> {
         .collect()
 }
 
+/// Runs whose plan (the recipe's rows of work) is at most this many rows run while the user
+/// types; bigger ones wait for Run (they may take from a fraction of a second to a few
+/// seconds).
+pub const AUTO_RUN_MAX_ROWS: u64 = 50_000;
+
+/// Whether a run of `rows` (`None`: only the run can size it) may start while the user types.
+pub fn runs_while_typing(rows: Option<u64>) -> bool {
+    rows.is_some_and(|r| r <= AUTO_RUN_MAX_ROWS)
+}
+
 /// The text typed in each field, trimmed, `None` where it is blank (blank = the default).
 pub fn typed(texts: &[Option<String>], index: usize) -> Option<&str> {
     texts
@@ -309,6 +319,78 @@ mod tests {
         assert_eq!(
             check("manip-grid", &[("n", "1e3")], None).value,
             Some(1_000_000)
+        );
+    }
+
+    #[test]
+    fn small_runs_run_while_typing_and_big_ones_wait() {
+        for recipe in RECIPES {
+            let rows = check(recipe.info.id, &[], None).value;
+            assert!(runs_while_typing(rows), "{}: {rows:?}", recipe.info.id);
+        }
+        let rows = |id: &'static str, values: &[(&str, &str)]| check(id, values, None).value;
+        assert_eq!(rows("pid-step", &[("steps", "120")]), Some(120));
+        assert_eq!(rows("manip-grid", &[("n", "1024")]), Some(1024 * 1024));
+        assert_eq!(rows("ik-workspace", &[]), Some(41 * 41));
+        assert_eq!(
+            rows("pendulum-energy", &[("duration_s", "2000")]),
+            Some(1_000_000)
+        );
+        assert_eq!(rows("cubic-path", &[]), Some(51));
+        assert_eq!(rows("jacobian-2r", &[]), Some(16));
+        assert_eq!(
+            rows("traj-resample", &[]),
+            Some(28),
+            "the sample at dt = 0.02"
+        );
+        assert!(!runs_while_typing(rows("rrt-2d", &[("max_iter", "50000")])));
+        assert!(!runs_while_typing(rows("manip-grid", &[("n", "300")])));
+        assert!(
+            !runs_while_typing(None),
+            "an input too big to size waits for Run"
+        );
+    }
+
+    #[test]
+    fn an_attached_file_sizes_the_run_and_reports_its_errors() {
+        let info = &recipes::traj_resample::INFO;
+        let fields = recipe_fields(info);
+        let with_file = |csv: &'static str| {
+            move |texts: &[Option<String>]| -> Result<u64, RecipeError> {
+                let fields = recipe_fields(info);
+                let args = crate::view::command_line::RunArgs::new(info.id, &fields, texts);
+                let parsed = Args::parse(&args.raw(), info.args, info.flags)?
+                    .with_inputs(vec![("mine.csv".into(), csv.into())]);
+                (info.plan)(&parsed).map(|p| p.rows)
+            }
+        };
+        let values = texts("traj-resample", &[("csv_path", "mine.csv"), ("dt", "0.01")]);
+        let file = |_: &RecipeError| Some(0);
+        let c = validate(
+            &fields,
+            &values,
+            None,
+            with_file("t_s,q1\n0,0\n1,1\n"),
+            file,
+        );
+        assert_eq!(c.value, Some(101));
+        let tiny = texts("traj-resample", &[("csv_path", "mine.csv"), ("dt", "1e-9")]);
+        let c = validate(
+            &fields,
+            &tiny,
+            Some(1),
+            with_file("t_s,q1\n0,0\n1,1\n"),
+            file,
+        );
+        assert_eq!(
+            c.messages[0].0, 1,
+            "too many cells: the message is on dt, changed"
+        );
+        let c = validate(&fields, &values, None, with_file("t_s\n0\n1\n"), file);
+        assert_eq!(
+            c.messages,
+            vec![(0, RecipeError::CsvNoJointColumns)],
+            "a file's error sits beside the picker"
         );
     }
 

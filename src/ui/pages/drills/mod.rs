@@ -9,7 +9,7 @@
 //! How a run happens:
 //! - every keystroke validates the form with the recipe's own parse + validate (its `plan`, no
 //!   run) and puts the localized message beside the field ([`crate::view::form::validate`]);
-//! - a valid form whose run is small ([`run::AUTO_RUN_MAX_ROWS`]) runs 250 ms after the last
+//! - a valid form whose run is small ([`crate::view::form::AUTO_RUN_MAX_ROWS`]) runs 250 ms after the last
 //!   keystroke; a bigger one waits for Run / Enter / `r`, which first paints a "Running…"
 //!   state and then runs, and brings the result (or the first error) into view;
 //! - the last result (summary, warnings, files, command lines) stays on screen until a new run

@@ -11,9 +11,6 @@ use crate::ui::ctx::{self, t_strings};
 use crate::ui::kit::form::{reveal, Message, Reveal};
 use crate::ui::schedule::{after_paint, now_ms};
 
-/// Runs whose plan is at most this many rows run as the user types; bigger ones wait for the
-/// Run button (they may take from a fraction of a second to a few seconds).
-pub const AUTO_RUN_MAX_ROWS: u64 = 50_000;
 /// Milliseconds between the last keystroke and a small drill's run.
 const AUTO_RUN_DELAY_MS: i32 = 250;
 /// Milliseconds between the last keystroke and the URL update.
@@ -30,7 +27,7 @@ pub struct Plan {
 impl Plan {
     /// Whether the page may run it while the user types.
     pub fn is_small(&self) -> bool {
-        self.rows.is_some_and(|r| r <= AUTO_RUN_MAX_ROWS)
+        crate::view::form::runs_while_typing(self.rows)
     }
 }
 
