@@ -5,15 +5,15 @@
 //!
 //! The worker integration of this page is this file plus: `Page::background` (mod.rs), its
 //! construction and the panel's place (mount.rs), `request_run` sending big runs here
-//! (run.rs), `Shown::from_worker` and the file size from the Blob (output.rs), and downloads
-//! of worker files (downloads.rs).
+//! (run.rs), `Shown::from_worker`, the file size from the Blob and downloads of worker files
+//! (result.rs).
 
 use std::cell::RefCell;
 use std::rc::Weak;
 
 use wasm_bindgen::prelude::*;
 
-use super::output::Shown;
+use super::result::Shown;
 use super::{Page, Status};
 use crate::ui::kit::progress::ProgressPanel;
 use crate::ui::kit::worker::{self, Job, WorkerError};
@@ -97,12 +97,12 @@ impl Page {
                 }
                 match result {
                     Ok(out) => {
+                        page.exports.clear_status();
                         let mut st = page.st.borrow_mut();
                         st.shown = Some(Shown::from_worker(run_args, input_name, out));
                         st.runs += 1;
                         st.status = Status::Done(ms);
                         st.failed = None;
-                        st.copy_status = None;
                     }
                     Err(error) => {
                         if let Some(bg) = page.background.borrow().as_ref() {
