@@ -60,7 +60,7 @@ impl Page {
             match st
                 .input
                 .as_ref()
-                .filter(|f| args.positional.first() == Some(&f.name))
+                .filter(|f| args.positional.contains(&f.name))
             {
                 Some(f) => (vec![(f.name.clone(), f.text.clone())], Some(f.name.clone())),
                 None => (Vec::new(), None),

@@ -15,7 +15,7 @@ use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom::show;
 use crate::ui::kit::exports::download_button;
 use crate::ui::kit::form::escape;
-use crate::ui::kit::worker::{WorkerFile, WorkerOutput};
+use crate::ui::kit::worker::{Localized, WorkerFile, WorkerOutput};
 use crate::view::command_line::RunArgs;
 use crate::view::form::fluent_args;
 use crate::view::table::{preview, rounded, Preview, PREVIEW_ROWS};
@@ -32,6 +32,9 @@ pub struct Shown {
     /// A worker run's files as Blobs (then `output`'s texts are only their first lines;
     /// background.rs).
     pub blobs: Vec<WorkerFile>,
+    /// A worker run's warnings, formatted in both languages by the worker (a page run's are
+    /// `output.warnings`).
+    pub worker_warnings: Vec<Localized>,
 }
 
 impl Shown {
@@ -44,6 +47,7 @@ impl Shown {
             output,
             previews,
             blobs: Vec::new(),
+            worker_warnings: Vec::new(),
         }
     }
 
@@ -76,7 +80,18 @@ impl Shown {
             output,
             previews,
             blobs: out.files,
+            worker_warnings: out.warnings,
         }
+    }
+
+    /// The run's warnings in the current language.
+    fn warnings(&self) -> Vec<String> {
+        self.output
+            .warnings
+            .iter()
+            .map(|w| ctx::t_args(w.message_id(), &fluent_args(w.message_args())))
+            .chain(self.worker_warnings.iter().map(|w| w.text().to_string()))
+            .collect()
     }
 
     /// The size in bytes of file `name`.
@@ -199,12 +214,7 @@ impl Page {
         show(&els.empty, false);
         show(&els.result, true);
         els.summary.set_text_content(Some(&shown.output.summary));
-        let warnings: Vec<String> = shown
-            .output
-            .warnings
-            .iter()
-            .map(|w| ctx::t_args(w.message_id(), &fluent_args(w.message_args())))
-            .collect();
+        let warnings = shown.warnings();
         if warnings.is_empty() {
             els.warnings.set_inner_html("");
             show(&els.warnings, false);
@@ -244,12 +254,7 @@ impl Page {
         let Some(shown) = st.shown.as_ref() else {
             return;
         };
-        let text: Vec<String> = shown
-            .output
-            .warnings
-            .iter()
-            .map(|w| ctx::t_args(w.message_id(), &fluent_args(w.message_args())))
-            .collect();
+        let text = shown.warnings();
         if !text.is_empty() {
             self.readouts.announce(&text.join(" "));
         }
