@@ -15,6 +15,7 @@ use wasm_bindgen::prelude::*;
 
 use super::result::Shown;
 use super::{Page, Status};
+use crate::ui::kit::form::{reveal, Reveal};
 use crate::ui::kit::progress::ProgressPanel;
 use crate::ui::kit::worker::{self, Job, WorkerError};
 use crate::ui::schedule::now_ms;
@@ -148,8 +149,12 @@ impl Page {
         // (measured ~75 ms in headless Chromium right after a 60 MB result), and together with
         // the rendering it made one task over 100 ms.
         self.url_timer.schedule(0);
-        if self.st.borrow().status != Status::Failed {
+        // Bring the outcome into view, as a run on the page does (Run asked for it).
+        if self.st.borrow().status == Status::Failed {
+            reveal(&self.els.error, Reveal::Nearest);
+        } else {
             self.announce_result();
+            reveal(&self.els.output, Reveal::Start);
         }
     }
 
