@@ -15,9 +15,10 @@ use wasm_bindgen::prelude::*;
 
 use super::result::Shown;
 use super::{Page, Status};
+use crate::ui::kit::form::{reveal, Reveal};
 use crate::ui::kit::progress::ProgressPanel;
 use crate::ui::kit::worker::{self, Job, WorkerError};
-use crate::ui::schedule::now_ms;
+use crate::ui::schedule::{after_paint, now_ms};
 
 /// The page's worker run (at most one) and its progress panel.
 pub(super) struct Background {
@@ -148,9 +149,20 @@ impl Page {
         // (measured ~75 ms in headless Chromium right after a 60 MB result), and together with
         // the rendering it made one task over 100 ms.
         self.url_timer.schedule(0);
-        if self.st.borrow().status != Status::Failed {
-            self.announce_result();
-        }
+        // Bring the outcome into view, as a run on the page does (Run asked for it), after the
+        // browser has laid out and painted the new result (one long task otherwise).
+        let weak = self.weak.borrow().clone();
+        let _ = after_paint(move || {
+            let Some(page) = weak.upgrade() else {
+                return;
+            };
+            if page.st.borrow().status == Status::Failed {
+                reveal(&page.els.error, Reveal::Nearest);
+            } else {
+                page.announce_result();
+                reveal(&page.els.output, Reveal::Start);
+            }
+        });
     }
 
     /// The last worker run's error under the form (after `render_errors`, which owns that
