@@ -156,3 +156,30 @@ test('rrt-2d 7 50000 --goal-x 0.5 --goal-y 0.5 shows progress and Cancel keeps t
     await close();
   }
 });
+
+test('a worker run shows its warnings in both languages and downloads the CLI bytes (rrt-2d 7 8000, goal in the obstacle)', { timeout: 300_000 }, async () => {
+  // 8,000 iterations plan 128,000 rows: above the auto-run size, so Run sends it to the worker.
+  const { page, errors, close } = await openDrills('#/drills?recipe=rrt-2d&seed=7&max_iter=8000&goal-x=0.5&goal-y=0.5');
+  try {
+    await page.waitForFunction(() => document.querySelector('[data-testid="drills-status"]').textContent !== '');
+    assert.equal(await runCount(page), 0, 'a large run does not start by itself');
+    await page.locator('[data-testid="drills-run"]').click();
+    await page.waitForFunction(() => Number(document.querySelector('[data-testid="drills-output"]').dataset.run) > 0, null, { timeout: 120_000 });
+    const want = cli(['rrt-2d', '7', '8000', '--goal-x', '0.5', '--goal-y', '0.5']);
+    assert.equal(await summary(page), want.stdout);
+    const warnings = page.locator('[data-testid="drills-warnings"]');
+    assert.ok(await warnings.isVisible(), 'the worker run warns');
+    assert.match(await warnings.innerText(), /The goal \(0\.5, 0\.5\) is inside the obstacle/);
+    for (const [name, bytes] of want.files) {
+      assertSameBytes(await download(page, name), bytes, `rrt-2d ${name} from the worker`);
+    }
+    // The language switch re-renders the worker's warning from its Japanese text.
+    await page.locator('[data-testid="lang-switch"]').click();
+    assert.match(await warnings.innerText(), /ゴール（0\.5, 0\.5）が障害物の内側にあるため、どの経路も届きません。/);
+    await page.locator('[data-testid="lang-switch"]').click();
+    assert.match(await warnings.innerText(), /The goal \(0\.5, 0\.5\) is inside the obstacle/);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
