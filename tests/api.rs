@@ -152,7 +152,7 @@ fn rrt_handle_grows_the_reference_tree_step_by_step() {
     }
     let path = csv_rows(include_str!("golden/rrt_default/rrt_path.csv"));
     assert_eq!(rrt.path().len(), path.len() * 2);
-    assert!(RrtHandle::new(strings(&["7", "999999"])).is_err());
+    assert!(RrtHandle::new(strings(&["7", "1000001"])).is_err());
 }
 
 #[test]
