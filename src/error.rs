@@ -295,7 +295,11 @@ impl RecipeError {
 
 /// A box's corners as they are typed: `0.35,0.25,0.65,0.75`.
 fn box_text(corners: &[f64; 4]) -> String {
-    corners.iter().map(|v| human(*v)).collect::<Vec<_>>().join(",")
+    corners
+        .iter()
+        .map(|v| human(*v))
+        .collect::<Vec<_>>()
+        .join(",")
 }
 
 /// The side of a square grid of `cells` cells, as a person writes it (`u64::MAX` stands for

@@ -289,12 +289,16 @@ fn rrt_world_options_write_the_stepped_tree_byte_for_byte() {
     assert!(path.len() > 20, "{}", path.len());
     assert_eq!(path.first(), Some(&[0.05, 0.1]));
     assert_eq!(path.last(), Some(&[0.95, 0.85]));
-    assert!(stdout.starts_with(&format!("RRT nodes={} path_pts={} ", rrt.nodes().len(), path.len())));
+    assert!(stdout.starts_with(&format!(
+        "RRT nodes={} path_pts={} ",
+        rrt.nodes().len(),
+        path.len()
+    )));
     for p in rrt.nodes() {
         assert!(!setup.world.collides(*p), "{p:?}");
     }
     // The same arguments without the options are the recipe's run, not this one.
-    let recipe = bsv(&["rrt-2d", "7", "3000"]);
+    let recipe = bsv(&["rrt-2d", "7", "3000", "--out", dir.to_str().unwrap()]);
     assert_ne!(recipe.stdout, out.stdout);
 }
 
@@ -306,7 +310,9 @@ fn rrt_world_options_are_refused_with_the_flag_named() {
         let out = bsv(&args);
         assert_eq!(out.status.code(), Some(2), "{extra:?}");
         let err = String::from_utf8_lossy(&out.stderr);
-        err.trim_end().trim_start_matches("bsv: rrt-2d: ").to_string()
+        err.trim_end()
+            .trim_start_matches("bsv: rrt-2d: ")
+            .to_string()
     };
     assert_eq!(
         refused(&["--start", "0.5,0.5"]),
@@ -317,7 +323,12 @@ fn rrt_world_options_are_refused_with_the_flag_named() {
         "goal: (0.4, 0.3) lies inside obstacle 1 (edges included); move it out of the box"
     );
     assert_eq!(
-        refused(&["--obstacle", "0.1,0.5,0.2,0.6", "--obstacle", "0.6,0.2,0.4,0.3"]),
+        refused(&[
+            "--obstacle",
+            "0.1,0.5,0.2,0.6",
+            "--obstacle",
+            "0.6,0.2,0.4,0.3"
+        ]),
         "obstacle 2 (0.6,0.2,0.4,0.3): needs x0 <= x1 and y0 <= y1 (x0,y0,x1,y1)"
     );
     assert_eq!(
@@ -344,14 +355,15 @@ fn rrt_world_options_are_refused_with_the_flag_named() {
         .flat_map(|_| ["--obstacle", "0.5,0.5,0.6,0.6"])
         .collect();
     assert_eq!(refused(&many), "obstacle: given 33 times; at most 32");
-    assert_eq!(
-        refused(&["--start", "0.1"]),
-        "start: need 2 values, got 1"
-    );
+    assert_eq!(refused(&["--start", "0.1"]), "start: need 2 values, got 1");
     // `none` empties the square; the aliases still allow a goal inside the recipe's box.
-    let out = bsv(&["rrt-2d", "7", "800", "--obstacle", "none"]);
+    let dir = temp_dir("rrt-refused");
+    let out_dir = dir.to_str().unwrap();
+    let out = bsv(&["rrt-2d", "7", "800", "--obstacle", "none", "--out", out_dir]);
     assert!(out.status.success());
-    let out = bsv(&["rrt-2d", "7", "50", "--goal-x", "0.5", "--goal-y", "0.5"]);
+    let out = bsv(&[
+        "rrt-2d", "7", "50", "--goal-x", "0.5", "--goal-y", "0.5", "--out", out_dir,
+    ]);
     assert!(out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("inside the obstacle"));
 }

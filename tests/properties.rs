@@ -430,7 +430,9 @@ mod rrt {
     use super::config;
     use bsv_playground::recipes::{
         self,
-        rrt_2d::{self, nearest_linear, NearestIndex, Obstacle, Rrt, RrtParams, RrtSetup, RrtWorld},
+        rrt_2d::{
+            self, nearest_linear, NearestIndex, Obstacle, Rrt, RrtParams, RrtSetup, RrtWorld,
+        },
     };
     use proptest::prelude::*;
 
@@ -443,32 +445,34 @@ mod rrt {
             (0u64..1000, 0usize..1500),
             (0.005..0.2f64, 0.0..0.5f64, 0.01..0.2f64),
         )
-            .prop_map(|(boxes, (sx, sy, gx, gy), (seed, max_iter), (step, bias, tol))| {
-                let obstacles = boxes
-                    .into_iter()
-                    .map(|(x, y, w, h)| Obstacle {
-                        x_min: x,
-                        y_min: y,
-                        x_max: (x + w).min(1.0),
-                        y_max: (y + h).min(1.0),
-                    })
-                    .collect();
-                RrtSetup {
-                    params: RrtParams {
-                        seed,
-                        max_iter,
-                        goal: [gx, gy],
-                    },
-                    world: RrtWorld {
-                        start: [sx, sy],
-                        obstacles,
-                        step,
-                        goal_bias: bias,
-                        goal_tol: tol,
-                    },
-                    goal_checked: true,
-                }
-            })
+            .prop_map(
+                |(boxes, (sx, sy, gx, gy), (seed, max_iter), (step, bias, tol))| {
+                    let obstacles = boxes
+                        .into_iter()
+                        .map(|(x, y, w, h)| Obstacle {
+                            x_min: x,
+                            y_min: y,
+                            x_max: (x + w).min(1.0),
+                            y_max: (y + h).min(1.0),
+                        })
+                        .collect();
+                    RrtSetup {
+                        params: RrtParams {
+                            seed,
+                            max_iter,
+                            goal: [gx, gy],
+                        },
+                        world: RrtWorld {
+                            start: [sx, sy],
+                            obstacles,
+                            step,
+                            goal_bias: bias,
+                            goal_tol: tol,
+                        },
+                        goal_checked: true,
+                    }
+                },
+            )
             .prop_filter("start and goal outside the boxes", |s| {
                 !s.world.collides(s.world.start) && !s.world.collides(s.params.goal)
             })
@@ -598,7 +602,13 @@ mod rrt {
     /// Exact ties: the first index wins, whatever the tree's shape.
     #[test]
     fn ties_go_to_the_first_index() {
-        let nodes = [[0.75, 0.5], [0.25, 0.5], [0.5, 0.75], [0.5, 0.25], [0.25, 0.5]];
+        let nodes = [
+            [0.75, 0.5],
+            [0.25, 0.5],
+            [0.5, 0.75],
+            [0.5, 0.25],
+            [0.25, 0.5],
+        ];
         let mut index = NearestIndex::of(&nodes);
         assert_eq!(nearest_linear(&nodes, [0.5, 0.5]), 0);
         assert_eq!(index.nearest([0.5, 0.5]), 0);
@@ -627,7 +637,10 @@ mod rrt {
         assert_eq!(format!("{:.3}", rrt.path_length()), "1.604");
         let last = *rrt.last().unwrap();
         assert_eq!(last.iteration, end);
-        assert!(matches!(last.outcome, rrt_2d::RrtOutcome::GoalReached { goal_id: 90, .. }));
+        assert!(matches!(
+            last.outcome,
+            rrt_2d::RrtOutcome::GoalReached { goal_id: 90, .. }
+        ));
         assert_eq!(rrt.seek(0), 0);
         assert_eq!((rrt.nodes().len(), rrt.last()), (1, None));
     }

@@ -155,10 +155,13 @@ pub const FLAG_STEP: ArgSpec = ArgSpec::number("step", "0.05", "longest extensio
     .limits(Bound::Incl(0.001), Bound::Incl(1.0))
     .hint("recipe-rrt-2d-hint-step");
 /// `--goal-bias P`.
-pub const FLAG_GOAL_BIAS: ArgSpec =
-    ArgSpec::number("goal-bias", "0.1", "probability of sampling the goal itself")
-        .limits(Bound::Incl(0.0), Bound::Incl(1.0))
-        .hint("recipe-rrt-2d-hint-goal-bias");
+pub const FLAG_GOAL_BIAS: ArgSpec = ArgSpec::number(
+    "goal-bias",
+    "0.1",
+    "probability of sampling the goal itself",
+)
+.limits(Bound::Incl(0.0), Bound::Incl(1.0))
+.hint("recipe-rrt-2d-hint-goal-bias");
 /// `--goal-tol D`.
 pub const FLAG_GOAL_TOL: ArgSpec = ArgSpec::number(
     "goal-tol",
@@ -566,7 +569,8 @@ impl Rrt {
 
     /// Runs one iteration of the recipe's loop (or returns [`RrtStep::Exhausted`] when done).
     pub fn step(&mut self) -> RrtStep {
-        self.step_record().map_or(RrtStep::Exhausted, |r| r.as_step())
+        self.step_record()
+            .map_or(RrtStep::Exhausted, |r| r.as_step())
     }
 
     /// Runs one iteration and returns its sub-steps (`None` when done).
