@@ -524,6 +524,10 @@ pub struct Rrt {
     /// The state before iteration `k * CHECKPOINT_EVERY + 1`, for every `k` reached.
     checkpoints: Vec<Checkpoint>,
     last: Option<RrtIteration>,
+    /// The node nearest the goal and its distance (`None`: not known, ask the index). Every
+    /// goal-biased sample asks for it; a new node replaces it only when strictly nearer, as
+    /// `argmin` keeps the first index.
+    goal_nearest: Option<(usize, f64)>,
     /// Search by [`nearest_linear`] instead of the index (the reference, for tests and the
     /// benchmark's "before").
     linear: bool,
@@ -563,6 +567,7 @@ impl Rrt {
             index,
             counts: RrtCounts::default(),
             last: None,
+            goal_nearest: None,
             linear: false,
         })
     }
@@ -604,6 +609,15 @@ impl Rrt {
         };
         let nearest = if self.linear {
             nearest_linear(&self.nodes, sample)
+        } else if goal_sample {
+            match self.goal_nearest {
+                Some((i, _)) => i,
+                None => {
+                    let i = self.index.nearest(sample);
+                    self.goal_nearest = Some((i, distance(self.nodes[i], self.goal)));
+                    i
+                }
+            }
         } else {
             self.index.nearest(sample)
         };
@@ -650,6 +664,7 @@ impl Rrt {
         self.nodes.push(point);
         self.parents.push(Some(nearest));
         self.index.insert(&self.nodes, id);
+        self.note_goal_distance(id);
         self.counts.added += 1;
         record.outcome = RrtOutcome::Added { id };
         let to_goal = norm([point[0] - self.goal[0], point[1] - self.goal[1]]);
@@ -662,11 +677,22 @@ impl Rrt {
                 self.nodes.push(self.goal);
                 self.parents.push(Some(id));
                 self.index.insert(&self.nodes, goal_id);
+                self.note_goal_distance(goal_id);
                 self.found = Some(goal_id);
                 record.outcome = RrtOutcome::GoalReached { id, goal_id };
             }
         }
         record
+    }
+
+    /// Node `id` was added: it becomes the goal's nearest when strictly nearer.
+    fn note_goal_distance(&mut self, id: usize) {
+        if let Some((_, best)) = self.goal_nearest {
+            let d = distance(self.nodes[id], self.goal);
+            if d < best {
+                self.goal_nearest = Some((id, d));
+            }
+        }
     }
 
     /// Goes to the state after iteration `k` (0 = only the start), forwards by stepping or
@@ -690,6 +716,7 @@ impl Rrt {
             self.iterations = c * CHECKPOINT_EVERY;
             self.found = None;
             self.last = None;
+            self.goal_nearest = None;
         }
         while self.iterations < k && self.step_record().is_some() {}
         self.iterations
