@@ -599,6 +599,49 @@ mod rrt {
         }
     }
 
+    proptest! {
+        #![proptest_config(config(24))]
+
+        /// Each record's sub-steps agree with its outcome: the goal-biased sample is the goal,
+        /// the nearest node's position is `from`, a collision's hit point is the first of the
+        /// 12 inside a box (and in that box), an added node passed the whole check.
+        #[test]
+        fn records_explain_their_outcome(setup in world()) {
+            use rrt_2d::RrtOutcome::*;
+            let mut rrt = Rrt::with_setup(&setup).unwrap();
+            let w = setup.world.clone();
+            while let Some(r) = rrt.step_record() {
+                if r.goal_sample {
+                    prop_assert_eq!(r.sample, setup.params.goal);
+                }
+                let before = &rrt.nodes()[..r.nearest + 1];
+                prop_assert_eq!(before[r.nearest], r.from);
+                let points = r.check_points();
+                match r.outcome {
+                    ZeroLength => prop_assert!(r.candidate.is_none() && r.distance < 1e-12),
+                    OutOfSquare => {
+                        let c = r.candidate.unwrap();
+                        prop_assert!(
+                            !r.checked && (!(0.0..=1.0).contains(&c[0]) || !(0.0..=1.0).contains(&c[1]))
+                        );
+                    }
+                    Collision => {
+                        let hit = r.hit.unwrap();
+                        let points = points.unwrap();
+                        prop_assert!(w.obstacles[hit.obstacle].contains(points[hit.point]));
+                        prop_assert!(points[..hit.point].iter().all(|p| !w.collides(*p)));
+                    }
+                    Added { id } | GoalReached { id, .. } => {
+                        prop_assert!(r.checked && r.hit.is_none());
+                        prop_assert!(points.unwrap().iter().all(|p| !w.collides(*p)));
+                        prop_assert_eq!(rrt.nodes()[id], r.candidate.unwrap());
+                        prop_assert_eq!(rrt.parents()[id], Some(r.nearest));
+                    }
+                }
+            }
+        }
+    }
+
     /// Exact ties: the first index wins, whatever the tree's shape.
     #[test]
     fn ties_go_to_the_first_index() {
