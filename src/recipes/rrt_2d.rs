@@ -94,6 +94,9 @@ pub const CHECKPOINT_EVERY: usize = 64;
 /// Nearest-node distance checks that cost about as much as one output row of the other
 /// recipes (kept for the record: the search was linear before the quadtree).
 pub const NEAREST_CHECKS_PER_ROW: u64 = 500;
+/// Rows of the other recipes that one iteration costs about as much as (quadtree search,
+/// segment checks, CSV rows; `make bench`: ~1 µs an iteration, ~0.1 µs a manip-grid row).
+pub const ROWS_PER_ITERATION: u64 = 10;
 
 /// Positional arguments of `rrt_2d_grid.py`.
 pub const ARGS: [ArgSpec; 2] = [
@@ -1060,6 +1063,7 @@ pub fn run_setup(setup: &RrtSetup, progress: &mut Progress) -> Result<Rrt, Recip
     let mut rrt = Rrt::with_setup(setup)?;
     let n = setup.params.max_iter as u64;
     while rrt.step_record().is_some() {
+        // phase_at scales k / n to the plan's total.
         progress.phase_at(0, 1, rrt.iterations() as u64, n);
     }
     Ok(rrt)
@@ -1221,11 +1225,11 @@ impl Kernel for Entry {
         setup_from_args(args)
     }
 
-    /// Rows of work: the iteration budget (each iteration costs about the same with the
-    /// quadtree search). A run may stop earlier, at the goal.
+    /// Rows of work: the iteration budget times [`ROWS_PER_ITERATION`] (each iteration
+    /// costs about the same with the quadtree search). A run may stop earlier, at the goal.
     fn plan(setup: &RrtSetup, _args: &Args) -> Result<Plan, RecipeError> {
         Ok(Plan {
-            rows: (setup.params.max_iter as u64).max(1),
+            rows: (setup.params.max_iter as u64 * ROWS_PER_ITERATION).max(1),
         })
     }
 
