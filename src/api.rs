@@ -153,7 +153,8 @@ fn js_bound(b: Bound) -> Option<JsBound> {
 /// `listRecipes()`: every recipe's facts, in the order of the BSV page: `{ id, python, args,
 /// flags, writes, quirksId, page, titleId, blurbId }` with each argument as `{ name, default,
 /// help, kind ("number" | "integer" | "seed" | "list" | "file" | "choice"), len (lists),
-/// choices, unit, min, max ({ value, inclusive } or null), hintId, labelId }`.
+/// choices, unit, min, max ({ value, inclusive } or null), hintId, labelId, repeat (a flag that
+/// may be given several times) }`.
 #[wasm_bindgen(js_name = listRecipes)]
 pub fn list_recipes() -> Result<JsValue, JsError> {
     #[derive(Serialize)]
@@ -170,6 +171,7 @@ pub fn list_recipes() -> Result<JsValue, JsError> {
         max: Option<JsBound>,
         hint_id: &'static str,
         label_id: String,
+        repeat: bool,
     }
     #[derive(Serialize)]
     #[serde(rename_all = "camelCase")]
@@ -205,6 +207,7 @@ pub fn list_recipes() -> Result<JsValue, JsError> {
             max: js_bound(a.max),
             hint_id: a.hint_id,
             label_id: a.label_id(recipe, flag),
+            repeat: a.repeat,
         }
     };
     let list: Vec<Info> = recipes::RECIPES
@@ -234,21 +237,49 @@ pub fn list_recipes() -> Result<JsValue, JsError> {
     Ok(serde_wasm_bindgen::to_value(&list)?)
 }
 
-/// `new RrtHandle(args)`: the rrt-2d tree grown a few iterations at a time (for a page that
-/// animates it), with the recipe's own arguments (`["7", "800", "--goal-x", "0.5"]`). The
-/// finished tree is identical to `runRecipe("rrt-2d", args)`'s.
+/// `new RrtHandle(args)`: the rrt-2d tree grown step by step, backwards too (for the RRT
+/// page), with the recipe's own arguments and options (`["7", "800", "--obstacle",
+/// "0.2,0.2,0.4,0.6", "--goal", "0.9,0.5"]`). The finished tree is identical to
+/// `runRecipe("rrt-2d", args)`'s, and the state at any iteration to that of a run stopped
+/// there.
 #[wasm_bindgen]
 pub struct RrtHandle {
     rrt: rrt_2d::Rrt,
+}
+
+/// The sub-steps of one iteration, as JS sees it (`RrtHandle.record()`).
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct JsIteration {
+    iteration: usize,
+    sample: [f64; 2],
+    goal_sample: bool,
+    nearest: usize,
+    from: [f64; 2],
+    distance: f64,
+    candidate: Option<[f64; 2]>,
+    /// The 12 check points, flat `[x0, y0, ...]`, when the segment check ran.
+    checks: Option<Vec<f64>>,
+    /// Index (0..12) of the first colliding check point, and the box (0-based) it is in.
+    hit_point: Option<usize>,
+    hit_obstacle: Option<usize>,
+    to_goal: Option<f64>,
+    /// Within the goal tolerance: whether the segment to the goal was clear.
+    goal_clear: Option<bool>,
+    /// `added` | `out-of-square` | `collision` | `zero-length` | `goal-reached`.
+    outcome: &'static str,
+    /// The node added (and the goal node when reached).
+    node: Option<usize>,
+    goal_node: Option<usize>,
 }
 
 #[wasm_bindgen]
 impl RrtHandle {
     #[wasm_bindgen(constructor)]
     pub fn new(args: Vec<String>) -> Result<RrtHandle, JsError> {
-        let params = rrt_2d::params_from_args(&recipes::parse_args(rrt_2d::INFO.id, &args)?)?;
+        let setup = rrt_2d::setup_from_args(&recipes::parse_args(rrt_2d::INFO.id, &args)?)?;
         Ok(RrtHandle {
-            rrt: rrt_2d::Rrt::new(&params)?,
+            rrt: rrt_2d::Rrt::with_setup(&setup)?,
         })
     }
 
@@ -256,11 +287,75 @@ impl RrtHandle {
     /// is spent); returns the number of nodes.
     pub fn step(&mut self, iterations: u32) -> usize {
         for _ in 0..iterations {
-            if self.rrt.is_done() {
+            if self.rrt.step_record().is_none() {
                 break;
             }
-            self.rrt.step();
         }
+        self.rrt.nodes().len()
+    }
+
+    /// Goes to the state after iteration `k` (0 = only the start; backwards exactly, by an
+    /// RNG checkpoint and a replay of at most 64 iterations); returns the iteration reached
+    /// (less than `k` when the run ends first).
+    pub fn seek(&mut self, k: u32) -> usize {
+        self.rrt.seek(k as usize)
+    }
+
+    /// Steps back `n` iterations; returns the iteration reached.
+    pub fn back(&mut self, n: u32) -> usize {
+        self.rrt.back(n as usize)
+    }
+
+    /// The sub-steps of the last iteration run, or `null` at iteration 0: `{ iteration,
+    /// sample: [x, y], goalSample, nearest, from: [x, y], distance, candidate: [x, y] | null,
+    /// checks: [x0, y0, ... x11, y11] | null, hitPoint, hitObstacle, toGoal, goalClear,
+    /// outcome, node, goalNode }`.
+    pub fn record(&self) -> Result<JsValue, JsError> {
+        let Some(r) = self.rrt.last() else {
+            return Ok(JsValue::NULL);
+        };
+        let (node, goal_node) = match r.outcome {
+            rrt_2d::RrtOutcome::Added { id } => (Some(id), None),
+            rrt_2d::RrtOutcome::GoalReached { id, goal_id } => (Some(id), Some(goal_id)),
+            _ => (None, None),
+        };
+        let js = JsIteration {
+            iteration: r.iteration,
+            sample: r.sample,
+            goal_sample: r.goal_sample,
+            nearest: r.nearest,
+            from: r.from,
+            distance: r.distance,
+            candidate: r.candidate,
+            checks: r
+                .checked
+                .then(|| r.check_points())
+                .flatten()
+                .map(|points| points.iter().flatten().copied().collect()),
+            hit_point: r.hit.map(|h| h.point),
+            hit_obstacle: r.hit.map(|h| h.obstacle),
+            to_goal: r.to_goal,
+            goal_clear: r.goal_hit.map(|h| h.is_none()),
+            outcome: r.outcome.name(),
+            node,
+            goal_node,
+        };
+        Ok(serde_wasm_bindgen::to_value(&js)?)
+    }
+
+    /// Iterations by outcome so far: `[added, outOfSquare, collision, zeroLength]` (a
+    /// `Uint32Array`).
+    pub fn counts(&self) -> Vec<u32> {
+        let c = self.rrt.counts();
+        [c.added, c.out_of_square, c.collision, c.zero_length]
+            .iter()
+            .map(|&v| u32::try_from(v).unwrap_or(u32::MAX))
+            .collect()
+    }
+
+    /// Number of nodes.
+    #[wasm_bindgen(js_name = nodeCount)]
+    pub fn node_count(&self) -> usize {
         self.rrt.nodes().len()
     }
 
@@ -269,10 +364,27 @@ impl RrtHandle {
         self.rrt.nodes().iter().flatten().copied().collect()
     }
 
+    /// Nodes from index `from` on, flat (for drawing only the new edges).
+    #[wasm_bindgen(js_name = nodesFrom)]
+    pub fn nodes_from(&self, from: usize) -> Vec<f64> {
+        let nodes = self.rrt.nodes();
+        nodes[from.min(nodes.len())..]
+            .iter()
+            .flatten()
+            .copied()
+            .collect()
+    }
+
     /// Parent of each node, `-1` for the root (an `Int32Array`).
     pub fn parents(&self) -> Vec<i32> {
-        self.rrt
-            .parents()
+        self.parents_from(0)
+    }
+
+    /// Parents from node `from` on (an `Int32Array`).
+    #[wasm_bindgen(js_name = parentsFrom)]
+    pub fn parents_from(&self, from: usize) -> Vec<i32> {
+        let parents = self.rrt.parents();
+        parents[from.min(parents.len())..]
             .iter()
             .map(|p| p.and_then(|i| i32::try_from(i).ok()).unwrap_or(-1))
             .collect()
@@ -281,6 +393,39 @@ impl RrtHandle {
     /// The start-to-goal path, flat like `nodes` (empty until the goal is reached).
     pub fn path(&self) -> Vec<f64> {
         self.rrt.path().iter().flatten().copied().collect()
+    }
+
+    /// The path's length (NaN until the goal is reached).
+    #[wasm_bindgen(js_name = pathLength)]
+    pub fn path_length(&self) -> f64 {
+        self.rrt.path_length()
+    }
+
+    /// The obstacle boxes, flat `[x0, y0, x1, y1, ...]` (a `Float64Array`).
+    pub fn obstacles(&self) -> Vec<f64> {
+        self.rrt
+            .world()
+            .obstacles
+            .iter()
+            .flat_map(|b| b.corners())
+            .collect()
+    }
+
+    /// `[start x, start y, goal x, goal y, step, goal bias, goal tolerance, max_iter]` (a
+    /// `Float64Array`).
+    pub fn world(&self) -> Vec<f64> {
+        let w = self.rrt.world();
+        let g = self.rrt.goal();
+        vec![
+            w.start[0],
+            w.start[1],
+            g[0],
+            g[1],
+            w.step,
+            w.goal_bias,
+            w.goal_tol,
+            self.rrt.max_iter() as f64,
+        ]
     }
 
     /// Iterations run so far.

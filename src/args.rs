@@ -81,6 +81,9 @@ pub struct ArgSpec {
     pub max: Bound,
     /// Fluent id of the hint (recipes.ftl), `recipe-<id>-hint-<name>`.
     pub hint_id: &'static str,
+    /// A `--flag` that may be given several times, each value kept in order (rrt-2d's
+    /// `--obstacle`); any other flag keeps its last value.
+    pub repeat: bool,
 }
 
 impl ArgSpec {
@@ -95,6 +98,7 @@ impl ArgSpec {
             min: Bound::None,
             max: Bound::None,
             hint_id: "",
+            repeat: false,
         }
     }
 
@@ -141,6 +145,14 @@ impl ArgSpec {
         ArgSpec { hint_id, ..self }
     }
 
+    /// The same flag, repeatable: every value is kept ([`Args::flag_texts`]).
+    pub const fn repeatable(self) -> ArgSpec {
+        ArgSpec {
+            repeat: true,
+            ..self
+        }
+    }
+
     /// Fluent id of the label: `recipe-<id>-arg-<name>`, or `recipe-<id>-flag-<name>` for a
     /// `--flag` option.
     pub fn label_id(&self, recipe_id: &str, flag: bool) -> String {
@@ -184,20 +196,7 @@ impl ArgSpec {
                 self.check(value)
             }
             ArgKind::Seed => parse_seed(self.name, text).map(|v| v as f64),
-            ArgKind::List { len } => {
-                let values = text
-                    .split(',')
-                    .map(|item| parse_f64(self.name, item).and_then(|v| self.check(v)))
-                    .collect::<Result<Vec<f64>, _>>()?;
-                if values.len() != len {
-                    return Err(RecipeError::WrongCount {
-                        param: self.name.to_string(),
-                        expected: len,
-                        got: values.len(),
-                    });
-                }
-                Ok(values.first().copied().unwrap_or(0.0))
-            }
+            ArgKind::List { .. } => Ok(self.list(text)?.first().copied().unwrap_or(0.0)),
             ArgKind::Choice(choices) => {
                 let word = text.trim().to_ascii_lowercase();
                 if choices.contains(&word.as_str()) {
@@ -212,6 +211,25 @@ impl ArgSpec {
             }
             ArgKind::File => Ok(0.0),
         }
+    }
+
+    /// A list argument's values (`0.35,0.25,0.65,0.75`): each a finite number within this
+    /// argument's limits, then exactly `len` of them (any other kind: one value).
+    pub fn list(&self, text: &str) -> Result<Vec<f64>, RecipeError> {
+        let values = text
+            .split(',')
+            .map(|item| parse_f64(self.name, item).and_then(|v| self.check(v)))
+            .collect::<Result<Vec<f64>, _>>()?;
+        if let ArgKind::List { len } = self.kind {
+            if values.len() != len {
+                return Err(RecipeError::WrongCount {
+                    param: self.name.to_string(),
+                    expected: len,
+                    got: values.len(),
+                });
+            }
+        }
+        Ok(values)
     }
 
     /// The limits in English words, for `bsv --help` ("from 0 to 1,000,000", "more than 0,
@@ -245,6 +263,9 @@ impl ArgSpec {
         match (&self.kind, low, high) {
             (ArgKind::Choice(choices), _, _) => format!("one of {}", choices.join(", ")),
             (ArgKind::File, _, _) => "a CSV file".to_string(),
+            (ArgKind::List { len }, Some(l), Some(h)) => {
+                format!("{len} numbers separated by commas, each {l} and {h}")
+            }
             (ArgKind::List { len }, _, _) => format!("{len} numbers separated by commas"),
             (ArgKind::Seed, _, _) => "a whole number from 0 to 9,223,372,036,854,775,807".into(),
             (_, Some(l), Some(h)) => format!("{l} and {h}"),
@@ -287,11 +308,11 @@ impl Args {
                     Some((n, v)) => (n, Some(v.to_string())),
                     None => (name, None),
                 };
-                if !flags.iter().any(|f| f.name == name) {
+                let Some(spec) = flags.iter().find(|f| f.name == name) else {
                     return Err(RecipeError::UnknownFlag {
                         flag: format!("--{name}"),
                     });
-                }
+                };
                 let value = match inline {
                     Some(v) => v,
                     None => iter
@@ -301,7 +322,9 @@ impl Args {
                             flag: format!("--{name}"),
                         })?,
                 };
-                out.flags.retain(|(n, _)| n != name);
+                if !spec.repeat {
+                    out.flags.retain(|(n, _)| n != name);
+                }
                 out.flags.push((name.to_string(), value));
             } else {
                 out.positional.push(arg.clone());
@@ -361,6 +384,21 @@ impl Args {
             .find(|(n, _)| n == spec.name)
             .map(|(_, v)| v.as_str())
             .unwrap_or(spec.default)
+    }
+
+    /// Every value given for a flag, in order (empty when it was not given; one value for a
+    /// flag that is not [`ArgSpec::repeat`]).
+    pub fn flag_texts<'a>(&'a self, spec: &ArgSpec) -> Vec<&'a str> {
+        self.flags
+            .iter()
+            .filter(|(n, _)| n == spec.name)
+            .map(|(_, v)| v.as_str())
+            .collect()
+    }
+
+    /// Whether a flag was given.
+    pub fn has_flag(&self, spec: &ArgSpec) -> bool {
+        self.flags.iter().any(|(n, _)| n == spec.name)
     }
 
     /// A flag as a finite float, or its default.

@@ -52,6 +52,27 @@ pub const CASES: &[BenchCase] = &[
         kernel: kernel_rrt,
     },
     BenchCase {
+        name: "rrt-2d 20,000 iterations, goal walled in (kernel: linear scan, the old search)",
+        id: "rrt-2d",
+        args: WALLED_20K,
+        trajectory: None,
+        kernel: kernel_rrt_walled_linear,
+    },
+    BenchCase {
+        name: "rrt-2d 20,000 iterations, goal walled in (quadtree)",
+        id: "rrt-2d",
+        args: WALLED_20K,
+        trajectory: None,
+        kernel: kernel_rrt_walled,
+    },
+    BenchCase {
+        name: "rrt-2d 1,000,000 iterations, goal walled in",
+        id: "rrt-2d",
+        args: WALLED_1M,
+        trajectory: None,
+        kernel: kernel_rrt_walled_1m,
+    },
+    BenchCase {
         name: "pendulum-energy 60 s at 2 ms",
         id: "pendulum-energy",
         args: &["60"],
@@ -107,6 +128,93 @@ fn kernel_rrt(_: &[(String, String)]) -> Result<usize, RecipeError> {
         goal: [0.5, 0.5],
     };
     Ok(run(&params)?.nodes().len())
+}
+
+/// Four boxes around the goal (0.8, 0.8), 0.02 thick, leaving no gap: the goal is never
+/// reached and the tree fills the rest of the square.
+const WALLS: [&str; 8] = [
+    "--obstacle",
+    "0.7,0.7,0.9,0.72",
+    "--obstacle",
+    "0.7,0.88,0.9,0.9",
+    "--obstacle",
+    "0.7,0.7,0.72,0.9",
+    "--obstacle",
+    "0.88,0.7,0.9,0.9",
+];
+const WALLED_20K: &[&str] = &[
+    "7",
+    "20000",
+    "--obstacle",
+    "0.7,0.7,0.9,0.72",
+    "--obstacle",
+    "0.7,0.88,0.9,0.9",
+    "--obstacle",
+    "0.7,0.7,0.72,0.9",
+    "--obstacle",
+    "0.88,0.7,0.9,0.9",
+    "--goal",
+    "0.8,0.8",
+];
+const WALLED_1M: &[&str] = &[
+    "7",
+    "1000000",
+    "--obstacle",
+    "0.7,0.7,0.9,0.72",
+    "--obstacle",
+    "0.7,0.88,0.9,0.9",
+    "--obstacle",
+    "0.7,0.7,0.72,0.9",
+    "--obstacle",
+    "0.88,0.7,0.9,0.9",
+    "--goal",
+    "0.8,0.8",
+];
+
+/// The walled-in world of [`WALLS`] with `max_iter` iterations.
+pub fn walled_setup(max_iter: usize) -> crate::recipes::rrt_2d::RrtSetup {
+    use crate::recipes::rrt_2d::{Obstacle, RrtParams, RrtSetup, RrtWorld};
+    let boxes = WALLS.chunks(2).map(|pair| {
+        let v: Vec<f64> = pair[1].split(',').filter_map(|t| t.parse().ok()).collect();
+        Obstacle {
+            x_min: v[0],
+            y_min: v[1],
+            x_max: v[2],
+            y_max: v[3],
+        }
+    });
+    RrtSetup {
+        params: RrtParams {
+            seed: 7,
+            max_iter,
+            goal: [0.8, 0.8],
+        },
+        world: RrtWorld {
+            obstacles: boxes.collect(),
+            ..RrtWorld::default()
+        },
+        goal_checked: true,
+    }
+}
+
+fn walled_run(max_iter: usize, linear: bool) -> Result<usize, RecipeError> {
+    use crate::recipes::rrt_2d::Rrt;
+    let mut rrt = Rrt::with_setup(&walled_setup(max_iter))?;
+    rrt.set_linear_search(linear);
+    while rrt.step_record().is_some() {}
+    Ok(rrt.nodes().len())
+}
+
+fn kernel_rrt_walled_linear(_: &[(String, String)]) -> Result<usize, RecipeError> {
+    walled_run(20_000, true)
+}
+
+fn kernel_rrt_walled(_: &[(String, String)]) -> Result<usize, RecipeError> {
+    walled_run(20_000, false)
+}
+
+fn kernel_rrt_walled_1m(_: &[(String, String)]) -> Result<usize, RecipeError> {
+    walled_run(1_000_000, false)
 }
 
 fn kernel_pendulum(_: &[(String, String)]) -> Result<usize, RecipeError> {

@@ -83,6 +83,26 @@ pub enum RecipeError {
     CsvUnterminatedQuote { row: usize },
     /// A path argument naming an input file that was not attached (opened) with the run.
     InputMissing { name: String },
+    /// A point (rrt-2d's `start` or `goal`) inside obstacle box `index` (1-based, edges
+    /// included).
+    PointInObstacle {
+        param: String,
+        x: f64,
+        y: f64,
+        index: usize,
+    },
+    /// A box `x0,y0,x1,y1` (1-based `index` among the given ones) with `x0 > x1` or `y0 > y1`.
+    BoxInverted {
+        param: String,
+        index: usize,
+        corners: [f64; 4],
+    },
+    /// A repeatable flag given more often than allowed.
+    TooManyValues {
+        param: String,
+        count: usize,
+        limit: usize,
+    },
 }
 
 impl RecipeError {
@@ -115,6 +135,9 @@ impl RecipeError {
             CsvTimeNotIncreasing { .. } => "err-csv-time-not-increasing",
             CsvUnterminatedQuote { .. } => "err-csv-unterminated-quote",
             InputMissing { .. } => "err-input-missing",
+            PointInObstacle { .. } => "err-point-in-obstacle",
+            BoxInverted { .. } => "err-box-inverted",
+            TooManyValues { .. } => "err-too-many-values",
         }
     }
 
@@ -214,6 +237,30 @@ impl RecipeError {
                 vec![("row", row.to_string())]
             }
             InputMissing { name } => vec![("name", name.clone())],
+            PointInObstacle { param, x, y, index } => vec![
+                l(param),
+                ("x", n(x)),
+                ("y", n(y)),
+                ("index", index.to_string()),
+            ],
+            BoxInverted {
+                param,
+                index,
+                corners,
+            } => vec![
+                l(param),
+                ("index", index.to_string()),
+                ("box", box_text(corners)),
+            ],
+            TooManyValues {
+                param,
+                count,
+                limit,
+            } => vec![
+                l(param),
+                ("count", count.to_string()),
+                ("limit", limit.to_string()),
+            ],
         }
     }
 
@@ -234,13 +281,25 @@ impl RecipeError {
             | NotPositive { param, .. }
             | OutOfRange { param, .. }
             | WrongCount { param, .. }
-            | BadChoice { param, .. } => vec![param.as_str()],
+            | BadChoice { param, .. }
+            | PointInObstacle { param, .. }
+            | BoxInverted { param, .. }
+            | TooManyValues { param, .. } => vec![param.as_str()],
             TooLarge { param, also, .. } => std::iter::once(param.as_str())
                 .chain(also.iter().map(String::as_str))
                 .collect(),
             _ => Vec::new(),
         }
     }
+}
+
+/// A box's corners as they are typed: `0.35,0.25,0.65,0.75`.
+fn box_text(corners: &[f64; 4]) -> String {
+    corners
+        .iter()
+        .map(|v| human(*v))
+        .collect::<Vec<_>>()
+        .join(",")
 }
 
 /// The side of a square grid of `cells` cells, as a person writes it (`u64::MAX` stands for
@@ -373,6 +432,26 @@ impl fmt::Display for RecipeError {
             InputMissing { name } => {
                 write!(f, "input file '{name}' not found (open it first)")
             }
+            PointInObstacle { param, x, y, index } => write!(
+                f,
+                "{param}: ({}, {}) lies inside obstacle {index} (edges included); move it out of the box",
+                n(*x),
+                n(*y)
+            ),
+            BoxInverted {
+                param,
+                index,
+                corners,
+            } => write!(
+                f,
+                "{param} {index} ({}): needs x0 <= x1 and y0 <= y1 (x0,y0,x1,y1)",
+                box_text(corners)
+            ),
+            TooManyValues {
+                param,
+                count,
+                limit,
+            } => write!(f, "{param}: given {count} times; at most {limit}"),
         }
     }
 }

@@ -513,7 +513,10 @@ mod tests {
             | CsvBadCell { .. }
             | CsvTimeNotIncreasing { .. }
             | CsvUnterminatedQuote { .. }
-            | InputMissing { .. } => {}
+            | InputMissing { .. }
+            | PointInObstacle { .. }
+            | BoxInverted { .. }
+            | TooManyValues { .. } => {}
         }
     }
 
@@ -588,6 +591,22 @@ mod tests {
             CsvUnterminatedQuote { row: 2 },
             InputMissing {
                 name: "my_traj.csv".into(),
+            },
+            PointInObstacle {
+                param: "start".into(),
+                x: 0.5,
+                y: 0.4,
+                index: 2,
+            },
+            BoxInverted {
+                param: "obstacle".into(),
+                index: 3,
+                corners: [0.6, 0.2, 0.4, 0.3],
+            },
+            TooManyValues {
+                param: "obstacle".into(),
+                count: 40,
+                limit: 32,
             },
         ]
     }

@@ -152,7 +152,54 @@ fn rrt_handle_grows_the_reference_tree_step_by_step() {
     }
     let path = csv_rows(include_str!("golden/rrt_default/rrt_path.csv"));
     assert_eq!(rrt.path().len(), path.len() * 2);
-    assert!(RrtHandle::new(strings(&["7", "999999"])).is_err());
+    assert!(RrtHandle::new(strings(&["7", "1000001"])).is_err());
+}
+
+#[test]
+fn rrt_handle_steps_back_exactly_and_describes_each_iteration() {
+    let args = strings(&[
+        "7",
+        "2000",
+        "--obstacle",
+        "0.2,0.3,0.4,0.9",
+        "--obstacle",
+        "0.6,0,0.8,0.7",
+        "--goal",
+        "0.95,0.85",
+    ]);
+    let mut rrt = RrtHandle::new(args.clone()).unwrap();
+    assert!(rrt.record().unwrap().is_null());
+    assert_eq!(
+        rrt.obstacles(),
+        vec![0.2, 0.3, 0.4, 0.9, 0.6, 0.0, 0.8, 0.7]
+    );
+    assert_eq!(rrt.seek(150), 150);
+    let (nodes, parents, counts) = (rrt.nodes(), rrt.parents(), rrt.counts());
+    assert_eq!(counts.iter().sum::<u32>(), 150);
+    assert_eq!(counts[0] as usize + 1, rrt.node_count());
+    let record = rrt.record().unwrap();
+    let get = |k: &str| js_sys::Reflect::get(&record, &k.into()).unwrap();
+    assert_eq!(get("iteration").as_f64(), Some(150.0));
+    assert!(get("outcome").as_string().is_some());
+    let later = rrt.seek(400);
+    assert!(later > 150);
+    assert_eq!(rrt.back((later - 150) as u32), 150);
+    assert_eq!(
+        (rrt.nodes(), rrt.parents(), rrt.counts()),
+        (nodes, parents, counts)
+    );
+    assert_eq!(rrt.nodes_from(rrt.node_count() - 1).len(), 2);
+    // The end of the stepped run is runRecipe's output.
+    rrt.seek(u32::MAX);
+    let stepped = rrt.output().unwrap();
+    let batch = run_recipe("rrt-2d", args, None).unwrap();
+    let summary = |v: &JsValue| {
+        js_sys::Reflect::get(v, &"summary".into())
+            .unwrap()
+            .as_string()
+    };
+    assert_eq!(summary(&stepped), summary(&batch));
+    assert!(RrtHandle::new(strings(&["7", "800", "--start", "0.5,0.5"])).is_err());
 }
 
 #[test]

@@ -214,3 +214,156 @@ fn recipe_help_states_units_and_limits_from_the_facts() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("one of euler, rk4"), "{text}");
 }
+
+/// The two-box world of the RRT tests: boxes, a moved start and goal, another step.
+const TWO_BOXES: [&str; 14] = [
+    "rrt-2d",
+    "7",
+    "3000",
+    "--obstacle",
+    "0.2,0.3,0.4,0.9",
+    "--obstacle",
+    "0.6,0,0.8,0.7",
+    "--start",
+    "0.05,0.1",
+    "--goal",
+    "0.95,0.85",
+    "--step",
+    "0.04",
+    "--goal-tol=0.05",
+];
+
+#[test]
+fn rrt_world_options_write_the_stepped_tree_byte_for_byte() {
+    use bsv_playground::recipes::rrt_2d::{self, Obstacle, Rrt, RrtParams, RrtSetup, RrtWorld};
+    let dir = temp_dir("rrt-two-boxes");
+    let mut args = TWO_BOXES.to_vec();
+    args.extend(["--out", dir.to_str().unwrap()]);
+    let out = bsv(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // The reference: the typed stepper with the recipe's linear nearest-node scan.
+    let setup = RrtSetup {
+        params: RrtParams {
+            seed: 7,
+            max_iter: 3000,
+            goal: [0.95, 0.85],
+        },
+        world: RrtWorld {
+            start: [0.05, 0.1],
+            obstacles: vec![
+                Obstacle {
+                    x_min: 0.2,
+                    y_min: 0.3,
+                    x_max: 0.4,
+                    y_max: 0.9,
+                },
+                Obstacle {
+                    x_min: 0.6,
+                    y_min: 0.0,
+                    x_max: 0.8,
+                    y_max: 0.7,
+                },
+            ],
+            step: 0.04,
+            goal_tol: 0.05,
+            ..RrtWorld::default()
+        },
+        goal_checked: true,
+    };
+    let mut rrt = Rrt::with_setup(&setup).unwrap();
+    rrt.set_linear_search(true);
+    while rrt.step_record().is_some() {}
+    let want = rrt_2d::output(&rrt);
+    for name in ["rrt_nodes.csv", "rrt_path.csv"] {
+        let written = std::fs::read(dir.join(name)).unwrap();
+        assert_eq!(written, want.file(name).unwrap().as_bytes(), "{name}");
+    }
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(stdout.trim_end(), want.summary);
+    // The goal is reached around both boxes; no node lies in a box; edges are <= the step.
+    let path = rrt.path();
+    assert!(path.len() > 20, "{}", path.len());
+    assert_eq!(path.first(), Some(&[0.05, 0.1]));
+    assert_eq!(path.last(), Some(&[0.95, 0.85]));
+    assert!(stdout.starts_with(&format!(
+        "RRT nodes={} path_pts={} ",
+        rrt.nodes().len(),
+        path.len()
+    )));
+    for p in rrt.nodes() {
+        assert!(!setup.world.collides(*p), "{p:?}");
+    }
+    // The same arguments without the options are the recipe's run, not this one.
+    let recipe = bsv(&["rrt-2d", "7", "3000", "--out", dir.to_str().unwrap()]);
+    assert_ne!(recipe.stdout, out.stdout);
+}
+
+#[test]
+fn rrt_world_options_are_refused_with_the_flag_named() {
+    let refused = |extra: &[&str]| {
+        let mut args = vec!["rrt-2d", "7", "100"];
+        args.extend(extra);
+        let out = bsv(&args);
+        assert_eq!(out.status.code(), Some(2), "{extra:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        err.trim_end()
+            .trim_start_matches("bsv: rrt-2d: ")
+            .to_string()
+    };
+    assert_eq!(
+        refused(&["--start", "0.5,0.5"]),
+        "start: (0.5, 0.5) lies inside obstacle 1 (edges included); move it out of the box"
+    );
+    assert_eq!(
+        refused(&["--obstacle", "0.2,0.2,0.4,0.4", "--goal", "0.4,0.3"]),
+        "goal: (0.4, 0.3) lies inside obstacle 1 (edges included); move it out of the box"
+    );
+    assert_eq!(
+        refused(&[
+            "--obstacle",
+            "0.1,0.5,0.2,0.6",
+            "--obstacle",
+            "0.6,0.2,0.4,0.3"
+        ]),
+        "obstacle 2 (0.6,0.2,0.4,0.3): needs x0 <= x1 and y0 <= y1 (x0,y0,x1,y1)"
+    );
+    assert_eq!(
+        refused(&["--obstacle", "0.1,0.2,0.3"]),
+        "obstacle: need 4 values, got 3"
+    );
+    assert_eq!(
+        refused(&["--goal", "1.2,0.5"]),
+        "goal: must be between 0 and 1 (it is 1.2)"
+    );
+    assert_eq!(
+        refused(&["--step", "0"]),
+        "step: must be between 0.001 and 1 (it is 0)"
+    );
+    assert_eq!(
+        refused(&["--goal-bias", "abc"]),
+        "goal-bias: 'abc' is not a number"
+    );
+    assert_eq!(
+        refused(&["--goal-tol", "2"]),
+        "goal-tol: must be between 0.001 and 1.5 (it is 2)"
+    );
+    let many: Vec<&str> = (0..33)
+        .flat_map(|_| ["--obstacle", "0.5,0.5,0.6,0.6"])
+        .collect();
+    assert_eq!(refused(&many), "obstacle: given 33 times; at most 32");
+    assert_eq!(refused(&["--start", "0.1"]), "start: need 2 values, got 1");
+    // `none` empties the square; the aliases still allow a goal inside the recipe's box.
+    let dir = temp_dir("rrt-refused");
+    let out_dir = dir.to_str().unwrap();
+    let out = bsv(&["rrt-2d", "7", "800", "--obstacle", "none", "--out", out_dir]);
+    assert!(out.status.success());
+    let out = bsv(&[
+        "rrt-2d", "7", "50", "--goal-x", "0.5", "--goal-y", "0.5", "--out", out_dir,
+    ]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("inside the obstacle"));
+}

@@ -423,3 +423,268 @@ proptest! {
         prop_assert!(reports.windows(2).all(|w| w[0].0 <= w[1].0 && w[0].1 == w[1].1));
     }
 }
+
+// ---- rrt-2d: the stepper, its step back, and the quadtree nearest-node search ----
+
+mod rrt {
+    use super::config;
+    use bsv_playground::recipes::{
+        self,
+        rrt_2d::{
+            self, nearest_linear, NearestIndex, Obstacle, Rrt, RrtParams, RrtSetup, RrtWorld,
+        },
+    };
+    use proptest::prelude::*;
+
+    /// A random world: 0 to 3 boxes, a start and goal outside them, the planner's constants.
+    fn world() -> impl Strategy<Value = RrtSetup> {
+        let corner = (0.0..1.0f64, 0.0..1.0f64, 0.02..0.4f64, 0.02..0.4f64);
+        (
+            prop::collection::vec(corner, 0..4),
+            (0.0..=1.0f64, 0.0..=1.0f64, 0.0..=1.0f64, 0.0..=1.0f64),
+            (0u64..1000, 0usize..1500),
+            (0.005..0.2f64, 0.0..0.5f64, 0.01..0.2f64),
+        )
+            .prop_map(
+                |(boxes, (sx, sy, gx, gy), (seed, max_iter), (step, bias, tol))| {
+                    let obstacles = boxes
+                        .into_iter()
+                        .map(|(x, y, w, h)| Obstacle {
+                            x_min: x,
+                            y_min: y,
+                            x_max: (x + w).min(1.0),
+                            y_max: (y + h).min(1.0),
+                        })
+                        .collect();
+                    RrtSetup {
+                        params: RrtParams {
+                            seed,
+                            max_iter,
+                            goal: [gx, gy],
+                        },
+                        world: RrtWorld {
+                            start: [sx, sy],
+                            obstacles,
+                            step,
+                            goal_bias: bias,
+                            goal_tol: tol,
+                        },
+                        goal_checked: true,
+                    }
+                },
+            )
+            .prop_filter("start and goal outside the boxes", |s| {
+                !s.world.collides(s.world.start) && !s.world.collides(s.params.goal)
+            })
+    }
+
+    /// The command line of a setup (`{:?}` prints the shortest round-trip form of an f64).
+    fn args(s: &RrtSetup) -> Vec<String> {
+        let mut a = vec![s.params.seed.to_string(), s.params.max_iter.to_string()];
+        let boxes: Vec<String> = s
+            .world
+            .obstacles
+            .iter()
+            .map(|b| format!("{:?},{:?},{:?},{:?}", b.x_min, b.y_min, b.x_max, b.y_max))
+            .collect();
+        if boxes.is_empty() {
+            a.extend(["--obstacle".to_string(), "none".to_string()]);
+        }
+        for b in boxes {
+            a.extend(["--obstacle".to_string(), b]);
+        }
+        let w = &s.world;
+        let g = s.params.goal;
+        for (flag, value) in [
+            ("--start", format!("{:?},{:?}", w.start[0], w.start[1])),
+            ("--goal", format!("{:?},{:?}", g[0], g[1])),
+            ("--step", format!("{:?}", w.step)),
+            ("--goal-bias", format!("{:?}", w.goal_bias)),
+            ("--goal-tol", format!("{:?}", w.goal_tol)),
+        ] {
+            a.extend([flag.to_string(), value]);
+        }
+        a
+    }
+
+    fn stepped(setup: &RrtSetup, linear: bool) -> Rrt {
+        let mut rrt = Rrt::with_setup(setup).unwrap();
+        rrt.set_linear_search(linear);
+        while rrt.step_record().is_some() {}
+        rrt
+    }
+
+    proptest! {
+        #![proptest_config(config(48))]
+
+        /// Stepping one iteration at a time (quadtree) gives the batch run's files (the
+        /// command line through `recipes::run`) and the tree of the recipe's linear scan.
+        #[test]
+        fn stepped_tree_is_the_batch_tree(setup in world()) {
+            let rrt = stepped(&setup, false);
+            let reference = stepped(&setup, true);
+            prop_assert_eq!(rrt.nodes(), reference.nodes());
+            prop_assert_eq!(rrt.parents(), reference.parents());
+            prop_assert_eq!(rrt.counts(), reference.counts());
+            let batch = recipes::run("rrt-2d", &args(&setup)).unwrap();
+            let out = rrt_2d::output(&rrt);
+            prop_assert_eq!(&out.files, &batch.files);
+            prop_assert_eq!(&out.summary, &batch.summary);
+            let c = rrt.counts();
+            prop_assert_eq!(
+                c.added + c.out_of_square + c.collision + c.zero_length,
+                rrt.iterations()
+            );
+        }
+
+        /// Going back to iteration k gives exactly a run stopped at k (tree, counters, the
+        /// last record), and going forward again gives the same tree as before.
+        #[test]
+        fn stepping_back_then_forward_is_exact(setup in world(), a in 0usize..1500, b in 0usize..1500) {
+            let (far, near) = (a.max(b), a.min(b));
+            let mut rrt = Rrt::with_setup(&setup).unwrap();
+            let reached = rrt.seek(far);
+            let (nodes, parents, last) = (rrt.nodes().to_vec(), rrt.parents().to_vec(), rrt.last().copied());
+            prop_assert_eq!(rrt.seek(near), near.min(reached));
+            let mut fresh = Rrt::with_setup(&setup).unwrap();
+            fresh.seek(near);
+            prop_assert_eq!(rrt.nodes(), fresh.nodes());
+            prop_assert_eq!(rrt.parents(), fresh.parents());
+            prop_assert_eq!(rrt.counts(), fresh.counts());
+            prop_assert_eq!(rrt.last(), fresh.last());
+            prop_assert_eq!(rrt.found(), fresh.found());
+            prop_assert_eq!(rrt.seek(far), reached);
+            prop_assert_eq!(rrt.nodes(), &nodes[..]);
+            prop_assert_eq!(rrt.parents(), &parents[..]);
+            prop_assert_eq!(rrt.last().copied(), last);
+        }
+
+        /// The quadtree returns the linear scan's node on random trees with exact ties
+        /// (points and queries on a coarse lattice, repeated points), also after truncation.
+        #[test]
+        fn quadtree_nearest_is_the_linear_scan(
+            points in prop::collection::vec((0u32..=16, 0u32..=16, any::<bool>()), 1..400),
+            queries in prop::collection::vec((0u32..=32, 0u32..=32), 1..40),
+            keep in 0usize..400,
+        ) {
+            // Lattice points (multiples of 1/16), and some off-lattice ones.
+            let nodes: Vec<[f64; 2]> = points
+                .iter()
+                .map(|&(i, j, off)| {
+                    let jitter = if off { 1e-3 * f64::from(i % 3) } else { 0.0 };
+                    [f64::from(i) / 16.0 + jitter, f64::from(j) / 16.0]
+                })
+                .map(|p| [p[0].min(1.0), p[1]])
+                .collect();
+            let mut index = NearestIndex::new();
+            for id in 0..nodes.len() {
+                index.insert(&nodes, id);
+                for &(qi, qj) in queries.iter().take(3) {
+                    // Half-lattice queries: equidistant from 2 or 4 lattice points.
+                    let q = [f64::from(qi) / 32.0, f64::from(qj) / 32.0];
+                    prop_assert_eq!(index.nearest(q), nearest_linear(&nodes[..=id], q));
+                }
+            }
+            for &(qi, qj) in &queries {
+                let q = [f64::from(qi) / 32.0, f64::from(qj) / 32.0];
+                prop_assert_eq!(index.nearest(q), nearest_linear(&nodes, q));
+            }
+            let keep = keep.min(nodes.len()).max(1);
+            index.truncate(&nodes, keep);
+            for &(qi, qj) in &queries {
+                let q = [f64::from(qi) / 32.0, f64::from(qj) / 32.0];
+                prop_assert_eq!(index.nearest(q), nearest_linear(&nodes[..keep], q));
+            }
+            prop_assert_eq!(NearestIndex::of(&nodes).nearest([0.5, 0.5]), nearest_linear(&nodes, [0.5, 0.5]));
+        }
+    }
+
+    proptest! {
+        #![proptest_config(config(24))]
+
+        /// Each record's sub-steps agree with its outcome: the goal-biased sample is the goal,
+        /// the nearest node's position is `from`, a collision's hit point is the first of the
+        /// 12 inside a box (and in that box), an added node passed the whole check.
+        #[test]
+        fn records_explain_their_outcome(setup in world()) {
+            use rrt_2d::RrtOutcome::*;
+            let mut rrt = Rrt::with_setup(&setup).unwrap();
+            let w = setup.world.clone();
+            while let Some(r) = rrt.step_record() {
+                if r.goal_sample {
+                    prop_assert_eq!(r.sample, setup.params.goal);
+                }
+                let before = &rrt.nodes()[..r.nearest + 1];
+                prop_assert_eq!(before[r.nearest], r.from);
+                let points = r.check_points();
+                match r.outcome {
+                    ZeroLength => prop_assert!(r.candidate.is_none() && r.distance < 1e-12),
+                    OutOfSquare => {
+                        let c = r.candidate.unwrap();
+                        prop_assert!(
+                            !r.checked && (!(0.0..=1.0).contains(&c[0]) || !(0.0..=1.0).contains(&c[1]))
+                        );
+                    }
+                    Collision => {
+                        let hit = r.hit.unwrap();
+                        let points = points.unwrap();
+                        prop_assert!(w.obstacles[hit.obstacle].contains(points[hit.point]));
+                        prop_assert!(points[..hit.point].iter().all(|p| !w.collides(*p)));
+                    }
+                    Added { id } | GoalReached { id, .. } => {
+                        prop_assert!(r.checked && r.hit.is_none());
+                        prop_assert!(points.unwrap().iter().all(|p| !w.collides(*p)));
+                        prop_assert_eq!(rrt.nodes()[id], r.candidate.unwrap());
+                        prop_assert_eq!(rrt.parents()[id], Some(r.nearest));
+                    }
+                }
+            }
+        }
+    }
+
+    /// Exact ties: the first index wins, whatever the tree's shape.
+    #[test]
+    fn ties_go_to_the_first_index() {
+        let nodes = [
+            [0.75, 0.5],
+            [0.25, 0.5],
+            [0.5, 0.75],
+            [0.5, 0.25],
+            [0.25, 0.5],
+        ];
+        let mut index = NearestIndex::of(&nodes);
+        assert_eq!(nearest_linear(&nodes, [0.5, 0.5]), 0);
+        assert_eq!(index.nearest([0.5, 0.5]), 0);
+        assert_eq!(index.nearest([0.25, 0.5]), 1);
+        // Many copies of one point and a ring of equidistant ones, across splits.
+        let mut many: Vec<[f64; 2]> = (0..100).map(|_| [0.3, 0.3]).collect();
+        many.extend((0..64).map(|k| {
+            let a = k as f64 * std::f64::consts::TAU / 64.0;
+            [0.6 + 0.1 * a.cos(), 0.6 + 0.1 * a.sin()]
+        }));
+        let mut index = NearestIndex::of(&many);
+        for q in [[0.3, 0.3], [0.6, 0.6], [0.45, 0.45], [0.0, 1.0], [1.0, 0.0]] {
+            assert_eq!(index.nearest(q), nearest_linear(&many, q), "{q:?}");
+        }
+        assert_eq!(index.nearest([0.3, 0.3]), 0);
+    }
+
+    /// The default world stepped to the end: the golden run (91 nodes, 33 path points), and
+    /// iteration 0 holds only the start.
+    #[test]
+    fn default_run_is_the_golden_one_at_its_end() {
+        let mut rrt = Rrt::new(&RrtParams::default()).unwrap();
+        assert_eq!((rrt.nodes().len(), rrt.last()), (1, None));
+        let end = rrt.seek(usize::MAX);
+        assert_eq!((rrt.nodes().len(), rrt.path().len()), (91, 33));
+        assert_eq!(format!("{:.3}", rrt.path_length()), "1.604");
+        let last = *rrt.last().unwrap();
+        assert_eq!(last.iteration, end);
+        assert!(matches!(
+            last.outcome,
+            rrt_2d::RrtOutcome::GoalReached { goal_id: 90, .. }
+        ));
+        assert_eq!(rrt.seek(0), 0);
+        assert_eq!((rrt.nodes().len(), rrt.last()), (1, None));
+    }
+}

@@ -30,6 +30,9 @@ err-csv-unterminated-quote = CSV line { $row }: a value opened with a quote (") 
 err-input-missing = The input file “{ $name }” is not open. Open the file first, then run again.
 err-too-many-rows = { $label }: with these values the table would have { $count } rows; the limit is { $limit }. Use a larger step or a shorter span.
 err-grid-too-large = { $label }: with these values the grid would be { $side } × { $side } cells; the limit is { $limit } × { $limit }. Use a larger step or a smaller half-extent.
+err-point-in-obstacle = { $label }: the point ({ $x }, { $y }) lies inside obstacle { $index } (its edges count as inside). Move it out of the box, or move the box.
+err-box-inverted = { $label } { $index } ({ $box }): the corners are x0,y0,x1,y1 with x0 ≤ x1 and y0 ≤ y1.
+err-too-many-values = { $label }: given { $count } times; at most { $limit } are allowed.
 
 # Warnings (`RecipeWarning`, src/error.rs): the run finished and wrote its CSV, but the result
 # is probably not what was meant. Shown beside the result.

@@ -27,6 +27,9 @@ err-csv-unterminated-quote = CSV の { $row } 行目：引用符（"）で始ま
 err-input-missing = 入力ファイル「{ $name }」が開かれていません。先にファイルを開いてから、もう一度実行してください。
 err-too-many-rows = { $label }：この組み合わせでは表が { $count } 行になり、上限の { $limit } 行を超えます。刻みを大きくするか、範囲を短くしてください。
 err-grid-too-large = { $label }：この組み合わせでは格子が { $side } × { $side } セルになり、上限の { $limit } × { $limit } セルを超えます。刻みを大きくするか、半幅を小さくしてください。
+err-point-in-obstacle = { $label }：点（{ $x }, { $y }）が障害物 { $index } の内側にあります（箱の辺の上も内側とみなします）。点を箱の外へ動かすか、箱を動かしてください。
+err-box-inverted = { $label } { $index }（{ $box }）：角は x0,y0,x1,y1 の順で、x0 ≤ x1 かつ y0 ≤ y1 にしてください。
+err-too-many-values = { $label }：{ $count } 回指定されていますが、指定できるのは { $limit } 回までです。
 
 # 警告（`RecipeWarning`、src/error.rs）：実行は終わり CSV も書かれたが、結果はおそらく意図した
 # ものではない。結果の横に表示する。

@@ -503,7 +503,7 @@ mod facts_tests {
         assert_eq!(rows("cubic-path", &[]), 51);
         assert_eq!(rows("trapezoid-profile", &[]), 251);
         assert_eq!(rows("pendulum-energy", &[]), 2500);
-        assert_eq!(rows("rrt-2d", &["7", "50000"]), 5_000_000);
+        assert_eq!(rows("rrt-2d", &["7", "50000"]), 500_000);
         assert_eq!(rows("jacobian-2r", &[]), 16);
         // traj-resample: from the attached input's shape.
         let text = "t_s,q1,q2\n0,0,0\n0.5,1,1\n2.0,2,2\n".to_string();
