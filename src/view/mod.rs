@@ -7,10 +7,12 @@
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`ik2r`]: the IK page: state and URL, validation, arm view geometry, exports.
+//! - [`pendulum`]: the pendulum page: kept rows, energy error and drift, period, separatrix, URL.
 
 pub mod drag;
 pub mod heatmap;
 pub mod ik2r;
+pub mod pendulum;
 pub mod plot;
 pub mod stepper;
 pub mod url;
