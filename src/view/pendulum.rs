@@ -56,9 +56,7 @@ impl Track {
             let row = self.pendulum.step();
             let work = self.damping_work.last().copied().unwrap_or(0.0)
                 + p.damping * h * 0.5 * (omega0 * omega0 + row.omega * row.omega);
-            if theta0 != 0.0 && (theta0 < 0.0) != (row.theta < 0.0)
-                || row.theta == 0.0 && theta0 != 0.0
-            {
+            if theta0 != 0.0 && theta0 * row.theta <= 0.0 {
                 let k = self.rows.len() as f64;
                 let frac = theta0 / (theta0 - row.theta);
                 self.crossings.push((k + frac) * h);
