@@ -39,6 +39,8 @@ pub const PAGE: PageDef =
 
 /// Speeds, multiples of real time.
 const SPEEDS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0];
+/// Shortest time between two URL writes while playing, ms.
+const URL_EVERY_MS: f64 = 500.0;
 /// 1× real time.
 const DEFAULT_SPEED: usize = 3;
 
@@ -109,6 +111,8 @@ struct Inner {
     exports: exports::Exports,
     url_notice: UrlNotice,
     url: Option<UrlWriter>,
+    /// When the URL was last written, ms.
+    url_written: Cell<f64>,
     scope: RefCell<Scope>,
 }
 
@@ -138,6 +142,7 @@ impl Page for PendulumPage {
     fn mount(ctx: MountCtx) -> Result<PendulumPage, JsValue> {
         let root = ctx.root.clone();
         root.set_inner_html(&markup::page());
+        dom::relocalize(&root)?;
         let (query, ignored) = PageQuery::read(&ctx.query);
         let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
         let mut form = params::Params::find(&root, role(&root, "form")?)?;
@@ -181,6 +186,7 @@ impl Page for PendulumPage {
                 exports,
                 url_notice,
                 url,
+                url_written: Cell::new(0.0),
                 scope: RefCell::new(scope),
                 root,
             }
@@ -394,6 +400,7 @@ impl Inner {
 
     /// The language changed.
     fn relocalize(&self) {
+        let _ = dom::relocalize(&self.root);
         self.params.borrow().relocalize();
         self.url_notice.relocalize();
         if let Some(s) = self.stepper.borrow().as_ref() {
@@ -462,8 +469,15 @@ impl Inner {
         let work = sim.advance_ms + crate::ui::schedule::now_ms() - started;
         drop(sim);
         bench_record(work);
+        // While playing, the debounced write would never fire: write at most twice a second.
         if let Some(url) = self.url.as_ref() {
-            url.schedule();
+            let now = crate::ui::schedule::now_ms();
+            if now - self.url_written.get() > URL_EVERY_MS {
+                self.url_written.set(now);
+                url.write_now();
+            } else {
+                url.schedule();
+            }
         }
     }
 }

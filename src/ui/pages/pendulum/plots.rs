@@ -119,7 +119,11 @@ impl Plots {
         }
         let axis = |title: &str, unit: &str, range: (f64, f64)| AxisSpec {
             title: ctx::t(title),
-            unit: ctx::t(unit),
+            unit: if unit.is_empty() {
+                String::new()
+            } else {
+                ctx::t(unit)
+            },
             range,
         };
         self.time.clear();
