@@ -102,7 +102,7 @@ impl Plots {
             let alpha = if k == 0 { 1.0 } else { 0.75 };
             energy.push(series(
                 tag(k, &ctx::t("pendulum-s-total")),
-                (44, 160, 44),
+                [(44, 160, 44), (188, 189, 34)][k],
                 alpha,
                 Mark::Line,
             ));
