@@ -192,6 +192,7 @@ impl Page for PendulumPage {
             }
         });
         inner.install()?;
+        inner.view.borrow_mut().canvas.fit();
         inner.rebuild(DEFAULT_SPEED)?;
         let h = inner.sim.borrow().params.timestep_s;
         match query.t {
@@ -422,9 +423,8 @@ impl Inner {
         let index = sim.index as usize;
         let ink = Ink::current();
         {
-            let mut view = self.view.borrow_mut();
-            view.canvas.fit();
-            view.draw(&sim.tracks, index, ink);
+            // Sized on mount and on resizes only (a layout read per frame costs milliseconds).
+            self.view.borrow_mut().draw(&sim.tracks, index, ink);
         }
         {
             let mut plots = self.plots.borrow_mut();
