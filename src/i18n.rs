@@ -95,6 +95,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
     ),
     (Lang::En, "kit.ftl", include_str!("../locales/en/kit.ftl")),
     (
+        Lang::En,
+        "pendulum.ftl",
+        include_str!("../locales/en/pendulum.ftl"),
+    ),
+    (
         Lang::Ja,
         "shell.ftl",
         include_str!("../locales/ja/shell.ftl"),
@@ -117,6 +122,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/ja/drills.ftl"),
     ),
     (Lang::Ja, "kit.ftl", include_str!("../locales/ja/kit.ftl")),
+    (
+        Lang::Ja,
+        "pendulum.ftl",
+        include_str!("../locales/ja/pendulum.ftl"),
+    ),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as

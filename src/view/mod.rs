@@ -9,6 +9,7 @@
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`ik2r`]: the IK page: state and URL, validation, arm view geometry, exports.
+//! - [`pendulum`]: the pendulum page: kept rows, energy error and drift, period, separatrix, URL.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
@@ -17,6 +18,7 @@ pub mod drag;
 pub mod form;
 pub mod heatmap;
 pub mod ik2r;
+pub mod pendulum;
 pub mod plot;
 pub mod progress;
 pub mod stepper;

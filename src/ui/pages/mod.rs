@@ -7,12 +7,13 @@ use crate::ui::page::PageDef;
 pub mod drills;
 pub mod home;
 pub mod ik2r;
+pub mod pendulum;
 
 /// Route id of the home page (`#/`, `#/home`).
 pub const HOME_ID: &str = home::PAGE.id;
 
 /// All pages, in navigation order.
-pub const PAGES: &[PageDef] = &[home::PAGE, ik2r::PAGE, drills::PAGE];
+pub const PAGES: &[PageDef] = &[home::PAGE, ik2r::PAGE, pendulum::PAGE, drills::PAGE];
 
 /// Recipe id → the page where it runs in the browser. The IK page computes and exports the
 /// CSVs of these three recipes.

@@ -1,0 +1,239 @@
+//! The plots (the kit's plot widget): energies (the recipe's ke, pe, total and the capsule's
+//! true energy), angle, rate and the energy error on a log scale, sharing the time axis with
+//! a cursor at the state shown; and the phase portrait (θ, ω) with the undamped separatrix.
+//! Rows are appended as they are stepped (the widget draws only the new points).
+
+use wasm_bindgen::JsValue;
+use web_sys::Element;
+
+use crate::recipes::pendulum_energy::Integrator;
+use crate::ui::ctx;
+use crate::ui::kit::canvas::Ink;
+use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
+use crate::view::pendulum::{separatrix, Track};
+
+/// Smallest energy error drawn (log₁₀ floor).
+const LOG_FLOOR: f64 = -12.0;
+/// At most this many phase points per track.
+const PHASE_POINTS: u64 = 6000;
+
+/// The plots component.
+pub struct Plots {
+    pub time: Plot,
+    pub phase: Plot,
+    /// Rows appended per track.
+    appended: Vec<usize>,
+    stride: usize,
+}
+
+fn series(name: String, rgb: (u8, u8, u8), alpha: f64, mark: Mark) -> SeriesSpec {
+    SeriesSpec {
+        name,
+        rgb,
+        mark,
+        width: 1.6,
+        alpha,
+    }
+}
+
+fn int_name(i: Integrator) -> String {
+    ctx::t(match i {
+        Integrator::Euler => "pendulum-int-euler",
+        Integrator::Rk4 => "pendulum-int-rk4",
+    })
+}
+
+impl Plots {
+    /// Wraps the two stages.
+    pub fn find(time: &Element, phase: &Element) -> Result<Plots, JsValue> {
+        Ok(Plots {
+            time: Plot::new(time)?,
+            phase: Plot::new(phase)?,
+            appended: Vec::new(),
+            stride: 1,
+        })
+    }
+
+    /// New axes and series for `tracks` (empties the data).
+    pub fn reset(&mut self, tracks: &[Track], steps: u64) {
+        let Some(first) = tracks.first() else {
+            return;
+        };
+        let p = *first.start().params();
+        let inertia = first.start().joint_inertia();
+        let e0 = first.start().true_energy();
+        let pe0 = p.mass_kg
+            * crate::recipes::pendulum_energy::GRAVITY
+            * p.length_m
+            * (1.0 - p.angle_deg.to_radians().cos());
+        let e_max = e0.max(pe0).max(1e-9) * 1.15;
+        let theta_max = p.angle_deg.to_radians().abs().max(0.1) * 1.1;
+        let omega_max = (2.0 * e0.max(1e-12) / inertia).sqrt().max(0.1) * 1.15;
+        let names: Vec<String> = tracks
+            .iter()
+            .map(|t| int_name(t.start().params().integrator))
+            .collect();
+        let two = tracks.len() > 1;
+        let tag = |k: usize, what: &str| {
+            if two {
+                format!("{what} ({})", names[k])
+            } else {
+                what.to_string()
+            }
+        };
+        let colors = [(31, 119, 180), (124, 58, 237)];
+        let mut energy = vec![
+            series(ctx::t("pendulum-s-ke"), (23, 190, 207), 0.9, Mark::Line),
+            series(ctx::t("pendulum-s-pe"), (255, 127, 14), 0.9, Mark::Line),
+        ];
+        let mut theta = Vec::new();
+        let mut omega = Vec::new();
+        let mut error = Vec::new();
+        let mut phase = vec![
+            series(
+                ctx::t("pendulum-s-separatrix"),
+                (120, 120, 120),
+                0.8,
+                Mark::Line,
+            ),
+            series(String::new(), (120, 120, 120), 0.8, Mark::Line),
+        ];
+        for k in 0..tracks.len() {
+            let alpha = if k == 0 { 1.0 } else { 0.75 };
+            energy.push(series(
+                tag(k, &ctx::t("pendulum-s-total")),
+                [(44, 160, 44), (188, 189, 34)][k],
+                alpha,
+                Mark::Line,
+            ));
+            energy.push(series(
+                tag(k, &ctx::t("pendulum-s-true")),
+                colors[k],
+                alpha,
+                Mark::Line,
+            ));
+            theta.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
+            omega.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
+            error.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
+            phase.push(series(names[k].clone(), colors[k], alpha, Mark::Points));
+        }
+        let axis = |title: &str, unit: &str, range: (f64, f64)| AxisSpec {
+            title: ctx::t(title),
+            unit: if unit.is_empty() {
+                String::new()
+            } else {
+                ctx::t(unit)
+            },
+            range,
+        };
+        self.time.clear();
+        self.time.set_spec(PlotSpec {
+            x: axis("pendulum-ax-t", "pendulum-unit-s", (0.0, p.duration_s)),
+            panels: vec![
+                PanelSpec {
+                    y: axis("pendulum-ax-energy", "pendulum-unit-j", (0.0, e_max)),
+                    series: energy,
+                },
+                PanelSpec {
+                    y: axis(
+                        "pendulum-ax-theta",
+                        "pendulum-unit-rad",
+                        (-theta_max, theta_max),
+                    ),
+                    series: theta,
+                },
+                PanelSpec {
+                    y: axis(
+                        "pendulum-ax-omega",
+                        "pendulum-unit-rad-s",
+                        (-omega_max, omega_max),
+                    ),
+                    series: omega,
+                },
+                PanelSpec {
+                    y: axis("pendulum-ax-error", "", (LOG_FLOOR, 1.0)),
+                    series: error,
+                },
+            ],
+            cursor_rgb: (194, 65, 12),
+        });
+        self.time.clear();
+        let pi = std::f64::consts::PI;
+        let x_max = p.angle_deg.to_radians().abs().max(pi) * 1.05;
+        let sep = separatrix(&p, inertia, 200);
+        let w_max = sep.iter().map(|s| s.1).fold(omega_max, f64::max) * 1.1;
+        self.phase.set_spec(PlotSpec {
+            x: axis("pendulum-ax-theta", "pendulum-unit-rad", (-x_max, x_max)),
+            panels: vec![PanelSpec {
+                y: axis("pendulum-ax-omega", "pendulum-unit-rad-s", (-w_max, w_max)),
+                series: phase,
+            }],
+            cursor_rgb: (194, 65, 12),
+        });
+        self.phase.clear();
+        self.phase
+            .set_series(0, 1, sep.iter().map(|&(t, w)| (t, -w)).collect());
+        self.phase.set_series(0, 0, sep);
+        self.appended = vec![0; tracks.len()];
+        self.stride = (steps / PHASE_POINTS).max(1) as usize;
+        self.time.invalidate_all();
+        self.phase.invalidate_all();
+    }
+
+    /// Appends the rows stepped since the last call and moves the cursor to `index`.
+    pub fn update(&mut self, tracks: &[Track], index: usize) {
+        for (k, track) in tracks.iter().enumerate() {
+            let Some(done) = self.appended.get(k).copied() else {
+                continue;
+            };
+            let rows = track.rows();
+            if rows.len() <= done {
+                continue;
+            }
+            let new = &rows[done..];
+            let h = track.start().params().timestep_s;
+            let state_t = |i: usize| (done + i + 1) as f64 * h;
+            let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
+                (0..new.len()).map(|i| (state_t(i), f(i))).collect()
+            };
+            self.time.append(0, 2 + 2 * k, &pts(&|i| new[i].total));
+            self.time
+                .append(0, 3 + 2 * k, &pts(&|i| new[i].true_energy));
+            if k == 0 {
+                self.time.append(0, 0, &pts(&|i| new[i].ke));
+                self.time.append(0, 1, &pts(&|i| new[i].pe));
+            }
+            self.time.append(1, k, &pts(&|i| new[i].theta));
+            self.time.append(2, k, &pts(&|i| new[i].omega));
+            self.time.append(
+                3,
+                k,
+                &pts(&|i| {
+                    track
+                        .energy_error(done + i + 1)
+                        .abs()
+                        .log10()
+                        .max(LOG_FLOOR)
+                }),
+            );
+            let phase: Vec<(f64, f64)> = new
+                .iter()
+                .enumerate()
+                .filter(|(i, _)| (done + i) % self.stride == 0)
+                .map(|(_, r)| (r.theta, r.omega))
+                .collect();
+            self.phase.append(0, 2 + k, &phase);
+            self.appended[k] = rows.len();
+        }
+        let h = tracks
+            .first()
+            .map_or(0.0, |t| t.start().params().timestep_s);
+        self.time.set_cursor(Some(index as f64 * h));
+    }
+
+    /// Draws what changed.
+    pub fn draw(&mut self, ink: Ink) {
+        let _ = self.time.draw(ink);
+        let _ = self.phase.draw(ink);
+    }
+}

@@ -1,0 +1,248 @@
+// The pendulum page (#/pendulum-energy) in headless Chromium: after n steps the readouts show
+// row n of the CSV `bsv pendulum-energy` writes; End then download equals the CLI byte for byte
+// (defaults, and a URL setting every parameter); play advances t; compare mode shows both
+// drifts with RK4's smaller; Japanese leaves no English UI text; a bad timestep shows its
+// message and the run keeps the last valid timestep. Screenshots (EN/JA 1920×1080, projector,
+// phone 390 px) go to tests/e2e/out/. In a build with `--features bench` it also reports the
+// frame work (advance + draw + plot append) p95 at 10× speed, 0.001 s, both integrators.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { join } from 'node:path';
+import { startServer, openApp, closeBrowser, OUT } from './harness.mjs';
+import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { englishStrings } from './locales.mjs';
+
+let server;
+
+before(async () => {
+  buildCli();
+  server = await startServer();
+}, { timeout: 600_000 });
+
+after(async () => {
+  await closeBrowser();
+  await server?.close();
+});
+
+const open = (hash = '#/pendulum-energy', opts = {}) => openApp(server.url, hash, opts);
+
+function csvRows(buf) {
+  const lines = buf.toString('utf8').trim().split('\n');
+  return lines.slice(1).map((l) => l.split(',').map(Number));
+}
+
+async function readouts(page) {
+  return page.evaluate(() => {
+    const out = {};
+    for (const el of document.querySelectorAll('[data-readout]')) {
+      out[el.dataset.readout] = el.dataset.value === '' ? null : Number(el.dataset.value);
+    }
+    return out;
+  });
+}
+
+async function toStart(page) {
+  await page.locator('[data-action="reset"]').click();
+  await page.waitForFunction(() => document.querySelector('[data-action="run"]').getAttribute('aria-pressed') === 'false');
+}
+
+test('after n steps the readouts show row n of the CSV; back is exact', async () => {
+  const want = csvRows(cli(['pendulum-energy', '5']).files.get('pendulum_energy.csv'));
+  assert.equal(want.length, 2500);
+  const { page, errors, close } = await open();
+  try {
+    await toStart(page);
+    const r0 = await readouts(page);
+    assert.equal(r0.t, 0);
+    assert.ok(Math.abs(r0.theta - (120 * Math.PI) / 180) < 1e-15);
+    assert.equal(r0.omega, 0);
+    const canvas = page.locator('[data-testid="pendulum-energy-canvas"]');
+    await canvas.focus();
+    let n = 0;
+    for (const k of [1, 2, 3, 10, 25]) {
+      while (n < k) {
+        await page.keyboard.press(n % 2 ? 'ArrowRight' : 'PageDown');
+        n += 1;
+      }
+      const r = await readouts(page);
+      const [t, theta, omega, ke, pe, total] = want[k - 1];
+      assert.deepEqual([r.t, r.theta, r.omega, r.ke, r.pe, r.total], [t, theta, omega, ke, pe, total], `row ${k}`);
+    }
+    await page.keyboard.press('ArrowLeft');
+    await page.locator('[data-action="back"]').click();
+    const r = await readouts(page);
+    assert.deepEqual([r.t, r.theta, r.omega, r.total], [want[22][0], want[22][1], want[22][2], want[22][5]]);
+    // Step buttons too.
+    await page.locator('[data-action="step"]').click();
+    assert.equal((await readouts(page)).theta, want[23][1]);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('End then download equals bsv: defaults and a URL setting every parameter', async () => {
+  const cases = [
+    ['#/pendulum-energy', ['5']],
+    [
+      '#/pendulum-energy?duration_s=1.5&damping=0.1&angle-deg=60&timestep=0.001&length=0.5&mass=0.3&radius=0.02&integrator=rk4',
+      ['1.5', '--damping', '0.1', '--angle-deg', '60', '--timestep', '0.001', '--length', '0.5', '--mass', '0.3', '--radius', '0.02', '--integrator', 'rk4'],
+    ],
+  ];
+  for (const [hash, args] of cases) {
+    const want = cli(['pendulum-energy', ...args]).files.get('pendulum_energy.csv');
+    const rows = csvRows(want);
+    const { page, errors, close } = await open(hash);
+    try {
+      await page.locator('[data-action="end"]').click();
+      const r = await readouts(page);
+      const last = rows[rows.length - 1];
+      assert.deepEqual([r.t, r.theta, r.omega, r.total], [last[0], last[1], last[2], last[5]], hash);
+      assertSameBytes(await download(page, 'pendulum_energy.csv'), want, hash);
+      const bsv = await page.locator('[data-command="bsv"]').innerText();
+      assert.equal(bsv, `bsv pendulum-energy ${args.length === 1 ? '5 --damping 0.05 --angle-deg 120 --timestep 0.002 --length 0.3 --mass 0.2 --radius 0.01 --integrator euler' : args.join(' ')}`);
+      const python = await page.locator('[data-command="python"]').innerText();
+      assert.equal(python, args.length === 1 ? 'python mujoco_pendulum_energy.py 5' : '');
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
+test('the default view swings by itself; play advances t; reduced motion does not autoplay', async () => {
+  const { page, errors, close } = await open();
+  try {
+    await page.waitForFunction(() => Number(document.querySelector('[data-readout="t"]').dataset.value) > 0.05, null, { timeout: 5000 });
+    await toStart(page);
+    await page.locator('[data-action="run"]').click();
+    await page.waitForTimeout(600);
+    const t1 = (await readouts(page)).t;
+    assert.ok(t1 > 0.2 && t1 < 2, `t after 0.6 s at 1×: ${t1}`);
+    // The URL follows the state.
+    await page.waitForFunction(() => /[?&]t=/.test(location.hash), null, { timeout: 3000 });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+  const ctx = await (await import('./harness.mjs')).browser();
+  const c = await ctx.newContext({ reducedMotion: 'reduce' });
+  const p = await c.newPage();
+  await p.goto(`${server.url}/#/pendulum-energy`);
+  await p.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+  await p.waitForTimeout(500);
+  assert.equal(await p.locator('[data-readout="t"]').getAttribute('data-value'), '0.0');
+  await c.close();
+});
+
+test('compare mode shows both drifts, RK4 far smaller', async () => {
+  const { page, errors, close } = await open('#/pendulum-energy?compare=1&damping=0');
+  try {
+    assert.equal(await page.locator('[data-field="compare"]').isChecked(), true);
+    await page.locator('[data-action="end"]').click();
+    const r = await readouts(page);
+    assert.ok(await page.locator('[data-readout="drift-euler"]').isVisible());
+    assert.ok(await page.locator('[data-readout="drift-rk4"]').isVisible());
+    assert.ok(Math.abs(r['drift-euler']) > 1e-5, `euler ${r['drift-euler']}`);
+    assert.ok(Math.abs(r['drift-rk4']) < Math.abs(r['drift-euler']) / 100, `rk4 ${r['drift-rk4']} vs euler ${r['drift-euler']}`);
+    assert.equal(r.drift, r['drift-euler']);
+    // Off again: the drift readouts go.
+    await page.locator('[data-field="compare"]').uncheck();
+    assert.equal(await page.locator('[data-readout="drift-rk4"]').isVisible(), false);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a bad timestep shows its message and the run keeps the last valid timestep', async () => {
+  const want = cli(['pendulum-energy', '5']).files.get('pendulum_energy.csv');
+  const rows = csvRows(want);
+  const { page, errors, close } = await open();
+  try {
+    await toStart(page);
+    const field = page.locator('[data-field="timestep"]');
+    const message = page.locator('[data-field-error="timestep"]');
+    assert.equal(await message.isVisible(), false);
+    for (const [bad, pattern] of [['abc', /not a number/], ['0', /Integrator step h/], ['1e-9', /1,000,000/]]) {
+      await field.fill(bad);
+      assert.equal(await message.isVisible(), true, bad);
+      assert.match(await message.innerText(), pattern);
+      assert.equal(await field.getAttribute('aria-invalid'), 'true');
+    }
+    await page.locator('[data-action="step"]').click();
+    await page.locator('[data-action="step"]').click();
+    const r = await readouts(page);
+    assert.deepEqual([r.t, r.theta], [rows[1][0], rows[1][1]]);
+    assertSameBytes(await download(page, 'pendulum_energy.csv'), want, 'bad timestep keeps 0.002');
+    await field.fill('0.004');
+    assert.equal(await message.isVisible(), false);
+    await page.waitForFunction(() => /timestep=0\.004/.test(location.hash), null, { timeout: 3000 });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('Japanese leaves no English UI text', async () => {
+  const english = englishStrings();
+  const { page, errors, close } = await open('#/pendulum-energy?lang=ja&compare=1');
+  try {
+    await page.locator('[data-field="timestep"]').fill('abc');
+    await page.locator('[data-field="mass"]').fill('-1');
+    const text = await page.evaluate(() => document.body.innerText);
+    const left = english.filter((s) => text.includes(s));
+    assert.deepEqual(left, [], `English left on the Japanese page: ${left.join(' | ')}`);
+    assert.match(text, /振り子のエネルギー/);
+    assert.match(text, /セパラトリクス/);
+    assert.ok(await page.locator('[data-field-error="timestep"]').isVisible());
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
+  const shots = [
+    ['pendulum-en-1920.png', '#/pendulum-energy?compare=1', { viewport: { width: 1920, height: 1080 } }],
+    ['pendulum-ja-1920.png', '#/pendulum-energy?compare=1&lang=ja', { viewport: { width: 1920, height: 1080 } }],
+    ['pendulum-projector-1920.png', '#/pendulum-energy', { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
+    ['pendulum-phone-390.png', '#/pendulum-energy?lang=ja', { viewport: { width: 390, height: 844 } }],
+  ];
+  for (const [file, hash, opts] of shots) {
+    const { page, errors, close } = await open(hash, opts);
+    try {
+      await page.waitForTimeout(1200);
+      await page.locator('[data-action="run"]').click();
+      const width = await page.evaluate(() => document.documentElement.scrollWidth);
+      assert.ok(width <= opts.viewport.width, `${file}: page ${width} px wide`);
+      await page.screenshot({ path: join(OUT, file) });
+      await page.locator('.pend-plots').screenshot({ path: join(OUT, file.replace('.png', '-plots.png')) });
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
+test('frame work p95 at 10× speed, 0.001 s, both integrators (bench builds only)', async (t) => {
+  const { page, close } = await open('#/pendulum-energy?timestep=0.001&compare=1&duration_s=20');
+  try {
+    if (!(await page.evaluate(() => Array.isArray(window.__pendulumFrameMs)))) {
+      t.skip('no bench hooks in this build');
+      return;
+    }
+    await toStart(page);
+    await page.locator('[data-stepper="speed"]').selectOption({ index: 6 });
+    await page.evaluate(() => { window.__pendulumFrameMs.length = 0; });
+    await page.locator('[data-action="run"]').click();
+    await page.waitForTimeout(4000);
+    const ms = (await page.evaluate(() => window.__pendulumFrameMs.slice())).sort((a, b) => a - b);
+    const p95 = ms[Math.floor(ms.length * 0.95)];
+    const tNow = (await readouts(page)).t;
+    console.log(`pendulum frame work: ${ms.length} frames, median ${ms[ms.length >> 1].toFixed(2)} ms, p95 ${p95.toFixed(2)} ms, max ${ms[ms.length - 1].toFixed(2)} ms; t = ${tNow}`);
+    assert.ok(tNow > 20 * 0.5, `10× for 4 s reached t = ${tNow}`);
+  } finally {
+    await close();
+  }
+});
