@@ -1,5 +1,5 @@
 // Long runs in the Web Worker, started from the drills page: `manip-grid 1024` and
-// `rrt-2d 7 50000 --goal-x 0.5 --goal-y 0.5` show progress (the progress bar's aria-valuenow
+// `rrt-2d 7 1000000 --goal-x 0.5 --goal-y 0.5` show progress (the progress bar's aria-valuenow
 // moves) and can be cancelled (the last result stays); a completed worker run downloads
 // exactly the CLI's bytes; and the longest main-thread task during the runs (a 'longtask'
 // PerformanceObserver installed before the app starts) stays under 100 ms. The measured
@@ -126,7 +126,9 @@ test('manip-grid 1024 runs in the worker with progress, can be cancelled, and do
   }
 });
 
-test('rrt-2d 7 50000 --goal-x 0.5 --goal-y 0.5 shows progress and Cancel keeps the last result', { timeout: 300_000 }, async () => {
+// With the grid-indexed nearest search 50,000 iterations finish in about 0.2 s (too fast to
+// watch or cancel), so the long rrt-2d case is the new limit, 1,000,000 iterations (~6 s).
+test('rrt-2d 7 1000000 --goal-x 0.5 --goal-y 0.5 shows progress and Cancel keeps the last result', { timeout: 300_000 }, async () => {
   const { page, errors, close } = await openDrills('#/drills?recipe=rrt-2d');
   try {
     // The default (small) run shows by itself: that is the last result to keep.
@@ -134,23 +136,23 @@ test('rrt-2d 7 50000 --goal-x 0.5 --goal-y 0.5 shows progress and Cancel keeps t
     const before = await summary(page);
     const runs = await runCount(page);
     await page.locator('[data-field="seed"]').fill('7');
-    await page.locator('[data-field="max_iter"]').fill('50000');
+    await page.locator('[data-field="max_iter"]').fill('1000000');
     await page.locator('[data-field="goal-x"]').fill('0.5');
     await page.locator('[data-field="goal-y"]').fill('0.5');
     await page.waitForTimeout(400);
-    assert.equal(await runCount(page), runs, '50,000 iterations do not start by themselves');
+    assert.equal(await runCount(page), runs, '1,000,000 iterations do not start by themselves');
     const seen = await startAndWatch(page);
     await page.waitForTimeout(500);
     const moved = Number(await bar(page).getAttribute('aria-valuenow'));
     assert.ok(moved >= Math.max(...seen), 'progress only goes forward');
-    longest['rrt-2d 7 50000'] = await longestTask(page);
+    longest['rrt-2d 7 1000000'] = await longestTask(page);
     await page.locator('[data-testid="progress-cancel"]').click();
     await page.locator('[data-testid="progress"]').waitFor({ state: 'hidden' });
     await page.waitForTimeout(1000);
     assert.equal(await runCount(page), runs, 'the cancelled run never lands');
     assert.equal(await summary(page), before, 'the last result stays');
     assert.ok(await page.locator('[data-testid="drills-stale"]').isVisible(), 'and says the form has moved on');
-    assert.ok(longest['rrt-2d 7 50000'] < 100, `longest main-thread task ${longest['rrt-2d 7 50000']} ms`);
+    assert.ok(longest['rrt-2d 7 1000000'] < 100, `longest main-thread task ${longest['rrt-2d 7 1000000']} ms`);
     assert.deepEqual(errors, []);
   } finally {
     await close();
