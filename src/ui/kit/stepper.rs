@@ -71,11 +71,11 @@ pub fn default_speed_label(speed: Speed) -> String {
 
 const BUTTONS: &[(&str, &str, &str)] = &[
     // (data-action, symbol shown, Fluent id of the accessible name)
-    ("start", "⏮", "kit-stepper-start"),
+    ("start", "⇤", "kit-stepper-start"),
     ("back", "◀", "kit-stepper-back"),
     ("run", "▶", "kit-stepper-run"),
     ("step", "▶|", "kit-stepper-step"),
-    ("end", "⏭", "kit-stepper-end"),
+    ("end", "⇥", "kit-stepper-end"),
     ("reset", "↺", "kit-stepper-reset"),
 ];
 
@@ -309,7 +309,7 @@ impl<M: StepModel + 'static> Inner<M> {
                 let playing = state.playing();
                 let _ =
                     button.set_attribute("aria-pressed", if playing { "true" } else { "false" });
-                button.set_text_content(Some(if playing { "⏸" } else { "▶" }));
+                button.set_text_content(Some(if playing { "❚❚" } else { "▶" }));
                 let _ = button.set_attribute(
                     "aria-label",
                     &ctx::t(if playing {
