@@ -583,7 +583,7 @@ impl ArmView {
 
     /// The arm view (both layers) as one canvas, for the PNG download.
     pub fn flatten(&self) -> Result<HtmlCanvasElement, JsValue> {
-        self.canvas.flatten()
+        self.canvas.flatten(colour::BG)
     }
 }
 

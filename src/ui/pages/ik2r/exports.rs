@@ -48,7 +48,7 @@ impl Exports {
                     p.arm
                         .borrow()
                         .flatten()
-                        .and_then(|c| crate::ui::download::download_canvas_png(&c, ARM_PNG))
+                        .and_then(|c| crate::ui::kit::png::download(&c, ARM_PNG))
                 } else {
                     csv_download(&file, &st)
                 };
