@@ -168,6 +168,52 @@ impl ArgSpec {
         })
     }
 
+    /// Checks one field's text on its own, as the recipe reads it: a number (or whole number,
+    /// seed, list of numbers) within this argument's limits; a choice among its words. Returns
+    /// the value (the first for a list; 0 for a file or a choice). Cross-field limits are the
+    /// recipe's `plan` to check.
+    pub fn check_text(&self, text: &str) -> Result<f64, RecipeError> {
+        match self.kind {
+            ArgKind::Number => self.check(parse_f64(self.name, text)?),
+            ArgKind::Integer => {
+                let value = match parse_i64(self.name, text) {
+                    Ok(v) => v as f64,
+                    Err(RecipeError::OutOfRange { value, .. }) => value,
+                    Err(e) => return Err(e),
+                };
+                self.check(value)
+            }
+            ArgKind::Seed => parse_seed(self.name, text).map(|v| v as f64),
+            ArgKind::List { len } => {
+                let values = text
+                    .split(',')
+                    .map(|item| parse_f64(self.name, item).and_then(|v| self.check(v)))
+                    .collect::<Result<Vec<f64>, _>>()?;
+                if values.len() != len {
+                    return Err(RecipeError::WrongCount {
+                        param: self.name.to_string(),
+                        expected: len,
+                        got: values.len(),
+                    });
+                }
+                Ok(values.first().copied().unwrap_or(0.0))
+            }
+            ArgKind::Choice(choices) => {
+                let word = text.trim().to_ascii_lowercase();
+                if choices.contains(&word.as_str()) {
+                    Ok(0.0)
+                } else {
+                    Err(RecipeError::BadChoice {
+                        param: self.name.to_string(),
+                        value: text.to_string(),
+                        choices: choices.join(", "),
+                    })
+                }
+            }
+            ArgKind::File => Ok(0.0),
+        }
+    }
+
     /// The limits in English words, for `bsv --help` ("from 0 to 1,000,000", "more than 0,
     /// no upper limit", "any number"), with the unit.
     pub fn limits_text(&self) -> String {
@@ -540,6 +586,51 @@ mod tests {
             Err(RecipeError::NotFinite { .. })
         ));
         assert_eq!(parse_f64("x", " 1e-3 ").unwrap(), 1e-3);
+    }
+
+    #[test]
+    fn fields_check_their_own_text_by_kind_and_limits() {
+        let n = ArgSpec::integer("n", "24", "", 1, 1024);
+        assert_eq!(n.check_text("1e3"), Ok(1000.0));
+        assert_eq!(n.check_text("24.0"), Ok(24.0));
+        assert!(matches!(
+            n.check_text("2.5"),
+            Err(RecipeError::NotAnInteger { .. })
+        ));
+        assert!(matches!(
+            n.check_text("1e30"),
+            Err(RecipeError::OutOfRange { max, .. }) if max == 1024.0
+        ));
+        let dt = ArgSpec::number("dt", "0.02", "").limits(Bound::Excl(0.0), Bound::None);
+        assert!(matches!(
+            dt.check_text("0"),
+            Err(RecipeError::NotPositive { .. })
+        ));
+        assert_eq!(dt.check_text(" 1e-3 "), Ok(1e-3));
+        assert_eq!(dt.limits_text(), "more than 0, no upper limit");
+        let seed = ArgSpec::seed("seed", "7", "");
+        assert_eq!(seed.check_text("7.0"), Ok(7.0));
+        assert!(seed.check_text("-1").is_err());
+        let angles = ArgSpec::number("angles", "", "").kind(ArgKind::List { len: 3 });
+        assert_eq!(angles.check_text("0.1,0.2,0.3"), Ok(0.1));
+        assert!(matches!(
+            angles.check_text("1,2"),
+            Err(RecipeError::WrongCount { got: 2, .. })
+        ));
+        let choice =
+            ArgSpec::number("integrator", "euler", "").kind(ArgKind::Choice(&["euler", "rk4"]));
+        assert_eq!(choice.check_text("RK4"), Ok(0.0));
+        assert!(matches!(
+            choice.check_text("rk5"),
+            Err(RecipeError::BadChoice { .. })
+        ));
+        assert_eq!(
+            ArgSpec::number("L1", "", "")
+                .unit("m")
+                .limits(Bound::Incl(1e-6), Bound::Incl(10.0))
+                .limits_text(),
+            "from 0.000001 to 10 m"
+        );
     }
 
     #[test]

@@ -7,14 +7,8 @@ drills-lede = Pick a drill, set its values and run it. Each file you download ha
 
 ## Form
 drills-picker-label = Drill
-drills-args-legend = Arguments, in command-line order
-drills-flags-legend = Options
-drills-flags-note = Extras of the bsv command line. The Python recipe has no options: it always uses these defaults.
-drills-default = Default:
 drills-run = Run
 drills-reset = Defaults
-drills-file-open = Open a CSV file…
-drills-file-sample = Use the built-in labeled sample
 drills-file-using-sample = Input: the built-in labeled sample ({ $name }, { $rows } rows).
 drills-file-using = Input: { $name } ({ $size }).
 drills-file-using-rows = Input: { $name } ({ $size }, { $rows } rows, { $joints } joint columns).
@@ -22,39 +16,6 @@ drills-file-missing = This link used the file “{ $name }”. Open it again to 
 drills-file-too-large = “{ $name }” is { $size }: larger than the { $limit } this drill can read. It was not opened.
 drills-file-unreadable = “{ $name }” could not be read ({ $reason }).
 drills-reading = Reading { $name }…
-
-## Limits, under each field
-drills-hint-number = Any number.
-drills-hint-positive = More than 0.
-drills-hint-pendulum-duration = Seconds, more than 0. The run takes int(duration ÷ timestep) steps, from 1 to { $max } (up to { $seconds } s at the default step).
-drills-hint-pendulum-damping = 0 or more. With 0 the body's real energy stays constant, up to the integrator's error.
-drills-hint-pendulum-angle = Degrees from hanging straight down; any number.
-drills-hint-pendulum-timestep = Seconds, more than 0. Smaller steps mean more rows: at most { $max } steps.
-drills-hint-pendulum-integrator = euler is MuJoCo's default (semi-implicit, damping implicit), as in the recipe; rk4 is the classic fourth-order Runge–Kutta.
-drills-hint-link = Metres, from { $min } to { $max }.
-drills-hint-ik-half = Millimetres, from 0 to { $max }.
-drills-hint-ik-step = Millimetres, more than 0. The grid may have at most { $max } × { $max } cells.
-drills-hint-traj-file = A CSV with a t_s column (seconds, always increasing) and one column per joint; a note column is dropped. Up to { $limit }.
-drills-hint-traj-dt = Seconds, more than 0. The output may have at most { $max } cells (rows × joints).
-drills-hint-dh-angles = Three angles in radians, separated by commas.
-drills-hint-angle-range = Radians, from −{ $max } to { $max }.
-drills-hint-jacobian-stop = Radians, at least q1 start and at most { $max }.
-drills-hint-jacobian-step = Radians, more than 0. At most { $max } samples.
-drills-hint-cubic-duration = Seconds, from { $min } to { $max }.
-drills-hint-rows-dt = Seconds, more than 0. At most { $max } rows.
-drills-hint-se3-position = Metres; any number.
-drills-hint-se3-angle = Radians, not degrees; any number.
-drills-hint-seed = A whole number from 0 to 2⁶³ − 1, as numpy's default_rng takes it. The same seed gives the same numbers as Python.
-drills-hint-rrt-iterations = A whole number from 0 to { $max }. The tree stops early when it reaches the goal. Large budgets take seconds: the nearest-node search grows with the square of the tree.
-drills-hint-rrt-goal = From 0 to 1 (the unit square). A goal inside the obstacle is never reached.
-drills-hint-pid-gain = Any number.
-drills-hint-pid-tau = Seconds, from 0 to { $max }.
-drills-hint-pid-steps = A whole number from 0 to { $max } ({ $seconds } s of 0.05 s steps).
-drills-hint-manip-n = A whole number from 1 to { $max }: n × n rows, so at most { $rows }.
-drills-hint-trapezoid-distance = Any number up to { $max } in size; the sign is ignored.
-drills-hint-trapezoid-limit = Not 0; its size from { $min } to { $max }. The sign is ignored.
-drills-hint-umeyama-sigma = 0 or more (0: no noise, an exact fit).
-drills-hint-umeyama-n = A whole number from { $min } to { $max }.
 
 ## Status beside Run
 drills-running = Running…
@@ -78,7 +39,6 @@ drills-file-size = { $rows ->
     [one] { $rows_text } row
    *[other] { $rows_text } rows
 }, { $columns } columns, { $size }
-drills-download = Download { $file }
 drills-preview-label = Preview of { $file }
 drills-preview-empty = Header only: this run wrote no data rows.
 drills-preview-all = { $rows ->
@@ -87,16 +47,6 @@ drills-preview-all = { $rows ->
 }
 drills-preview-some = Showing the first { $shown } of { $rows_text } rows; the download has them all.
 drills-preview-columns = Showing { $shown } of { $columns } columns.
-drills-download-failed = { $file } could not be saved: { $error }
-drills-commands-title = The same run on the command line
-drills-commands-hint = Run either line in a terminal to get the same files (the Python recipe needs Python 3 and its libraries; bsv is this project's command line).
-drills-cmd-python = Python recipe
-drills-cmd-bsv = BSV command line
-drills-copy = Copy
-drills-copied = The command is copied to the clipboard.
-drills-copy-failed = This browser blocked copying: select the command and press Ctrl+C (⌘C on a Mac).
-drills-python-no-options = The Python recipe has no options, so its line leaves out { $options } and gives the default result; only the bsv line reproduces this run.
-drills-file-note = Run these lines in the folder that holds { $name }.
 
 ## Explanation
 drills-about-title = What it computes
@@ -104,39 +54,36 @@ drills-quirks-title = Quirks of the Python recipe, reproduced on purpose
 drills-about-parity = The numbers are computed in your browser by the same Rust code as the bsv command line, written the way Python writes them (shortest round-trip digits), so a plain diff against the Python recipe's CSV is quiet.
 
 drills-about-pendulum-energy = A damped pendulum (a capsule on a hinge) is stepped exactly as MuJoCo steps it, int(duration ÷ timestep) times. Each row holds the angle θ, the angular velocity ω and three energies: ke = ½ m (L ω)², pe = m g (z + L) and total = ke + pe. With damping the total has to go down; the printed drift is max(total) − min(total).
-drills-quirk-pendulum-energy = The energies treat the pendulum as a point mass m at the tip, at distance L, not as the capsule that is simulated, so “total” is not the body's real mechanical energy and it changes even without damping. pe uses the tip height from before each step (where MuJoCo last computed positions), and the time column is i·h although the state is the one after step i.
 
 drills-about-ik-workspace = A square grid with a spacing of step_mm covers ±half_mm around the base. For every cell (x, y) the two-link arm is reachable when c2 = (x² + y² − L1² − L2²) / (2 L1 L2) lies between −1 and 1. Reachable cells get the elbow-down solution q2 = acos c2, q1 = atan2(y, x) − atan2(L2 sin q2, L1 + L2 cos q2), and fk_err_mm, the distance between the cell and the forward kinematics of that solution (round-off only). Unreachable cells leave the angles empty.
 
 drills-about-traj-resample = Reads a trajectory with a time column t_s and one column per joint, and linearly interpolates every joint onto the uniform times t0, t0 + dt, … up to the last time (numpy's interp). Without a file the recipe first writes its labeled synthetic sample and resamples that, so you get two files.
-drills-quirk-traj-resample = The note column of the sample (or of your file) is dropped from the output. Time must increase from each row to the next: the Python recipe does not check this and np.interp then returns nonsense without a warning, so this page refuses such a file and names the first row where time does not increase.
 
 drills-about-dh-fk = Forward kinematics of a fixed three-joint demo chain. For each link, the modified Denavit–Hartenberg transform (joint angle θ = q plus the link's offset) is multiplied onto the previous frame, and every frame's origin x, y, z and its roll, pitch, yaw (XYZ fixed angles) are written, the base frame first.
-drills-quirk-dh-fk = The chain uses modified (Craig) DH parameters, not the classic (standard) convention: the same four numbers in a classic-DH tool give different frames. The base row is written as literal zeros, and −0.0 appears where the reference computes a negative zero (a pitch of atan2(−0.0, 1)). It equals 0; it is printed as Python prints it.
 
 drills-about-jacobian-2r = Sweeps q1 from q1 start to q1 stop (included) in steps of q1 step at a fixed q2. Each row has the tip position, det J = L1 L2 sin q2, Yoshikawa's manipulability w = √det(J Jᵀ) and the singular values σ_min, σ_max of the Jacobian. For a planar 2R arm these depend on q2 only, so they repeat on every row up to rounding: turning the whole arm does not change how well it can move.
 
 drills-about-cubic-path = The cubic q(t) = q0 + a2 t² + a3 t³ with a2 = 3 (q1 − q0) / T² and a3 = −2 (q1 − q0) / T³ moves from q0 to q1 in time T, starting and stopping at rest. It is sampled every dt from 0 to T with its velocity qd and acceleration qdd. The acceleration is not zero at either end: it jumps when the move starts and stops, which is why smoother planners use quintic polynomials.
 
 drills-about-se3-relative = Builds the homogeneous transforms T_A and T_B of two poses (x, y, z and roll, pitch, yaw with R = Rz(yaw) Ry(pitch) Rx(roll)) and writes T_A⁻¹ T_B: where frame B is, and how it is turned, as seen from frame A.
-drills-quirk-se3-relative = The Python recipe's description says the angles are in degrees, but its code passes them straight to cos and sin, so they are radians (0.2 rad ≈ 11.5°). Typing 30 meaning 30° gives a turn of 30 rad. Angles are read back from the rotation matrix with pitch between −π/2 and π/2; at pitch ±π/2 (gimbal lock) roll is set to 0.
 
 drills-about-rrt-2d = Grows a rapidly-exploring random tree in the unit square from (0.1, 0.1) towards the goal, around the box obstacle [0.35, 0.65] × [0.25, 0.75]. Each iteration draws a point with numpy's default_rng(seed) (the goal itself one time in ten), steps 0.05 from the nearest node towards it, and keeps the step if it stays in the square and clear of the box. It stops when a node is within 0.06 of the goal. rrt_path.csv is the path from start to goal; rrt_nodes.csv is the whole tree with parent ids.
-drills-quirk-rrt-2d = A segment is checked for collision at only 12 evenly spaced points, so it can cut across a corner of the box. When the goal is not reached within max_iter iterations (try a goal inside the box), rrt_path.csv has only its header and the printed length is nan.
 
 drills-about-pid-step = A discrete PID controller closes the loop around a first-order plant, y ← y + a (u − y) with a = dt / (τ + dt), dt = 0.05 s, and a unit step setpoint r = 1. Each step computes the error e = r − y, its running sum and its change, the command u = Kp e + Ki ∫e + Kd de/dt, and the new output y. The printed final_y shows how close the loop gets: more Ki removes the remaining error, more Kp makes it overshoot. Gains that make the loop unstable grow the numbers until they print as inf and then nan, exactly as Python prints them.
 
 drills-about-manip-grid = Evaluates det J = L1 L2 sin q2 of the planar 2R arm on an n × n grid of joint angles, q1 and q2 each from −π to π, and prints the largest |det J| and where it is. The arm is most agile with the elbow at a right angle and singular (det J = 0) when it is stretched out or folded back.
-drills-quirk-manip-grid = The Python file is called manip_ellipse_2r.py and writes manip_ellipse.csv, but no ellipse is computed: detJ is det J and manip is |det J|, the area scale of the manipulability ellipse. The Planar 2R IK playground draws the ellipse itself.
 
 drills-about-trapezoid-profile = A move over |distance| that accelerates at amax, cruises at vmax and decelerates at amax (a triangle when vmax is never reached), sampled every dt: time t, position s, velocity v and acceleration a.
-drills-quirk-trapezoid-profile = Time advances by repeated addition, t += dt while t ≤ t_total, so rounding builds up and decides how many rows there are; each row prints round(t, 5). In the triangle case the deceleration keeps d_acc from the vmax that is never reached, so the positions overshoot: with 0.2 1.0 2.0 the table ends near s = 0.35, not 0.2.
 
 drills-about-umeyama-2d = Draws n random points X with numpy's default_rng(seed), makes Y = 1.3 R(35°) X + (0.4, −0.2) plus Gaussian noise of standard deviation σ, and recovers the scale, the rotation angle and the translation with Umeyama's closed form (an SVD of the 2 × 2 cross-covariance). The CSV puts the estimates beside the true values; with σ = 0 the fit is exact up to rounding.
-drills-quirk-umeyama-2d = When the SVD gives a reflection (det R < 0), the recipe flips a column of U as Umeyama prescribes but keeps the scale (S1 + S2) / var_x, where Umeyama uses S1 − S2. It matters only for nearly degenerate or very noisy point sets.
 
 ## Keys
 drills-key-run = Run the drill
 drills-key-enter = Run (while typing in a field)
 drills-key-download = Download the first CSV of the result
 drills-key-switch = Previous / next drill
+
+## Result: warnings and the table switch
+drills-table-exact = Exact values, as in the CSV file
+drills-table-rounded = Numbers are rounded to 6 significant digits; the download has every digit.
+drills-warnings-title = Check this result

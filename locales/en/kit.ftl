@@ -24,3 +24,37 @@ kit-stepper-key-back = One step back (exact)
 kit-stepper-key-run = Play or pause
 kit-stepper-key-ends = Jump to the start / the end
 kit-stepper-key-reset = Start over
+
+## Parameter form (kit::form)
+kit-form-args = Arguments, in command-line order
+kit-form-options = Options
+kit-form-options-note = Extras of the bsv command line. The Python recipe has no options: it always uses these defaults.
+kit-form-default = Default:
+kit-form-file-open = Open a CSV file…
+kit-form-file-sample = Use the built-in labeled sample
+
+## Exports: downloads and command lines (kit::exports)
+kit-exports-download = Download { $file }
+kit-exports-download-failed = { $file } could not be saved: { $error }
+kit-exports-title = The same run on the command line
+kit-exports-hint = Run either line in a terminal to get the same files (the Python recipe needs Python 3 and its libraries; bsv is this project's command line).
+kit-exports-python = Python recipe
+kit-exports-bsv = BSV command line
+kit-exports-copy = Copy
+kit-exports-copied = The command is copied to the clipboard.
+kit-exports-copy-failed = This browser blocked copying: select the command and press Ctrl+C (⌘C on a Mac).
+kit-exports-python-no-options = The Python recipe has no options, so its line leaves out { $options } and gives the default result; only the bsv line reproduces this run.
+kit-exports-file-note = Run these lines in the folder that holds { $name }.
+
+## Progress panel of a long run (kit::progress)
+kit-progress-label = Progress of the run
+kit-progress-starting = Starting…
+kit-progress-rows = { $done } of { $total } rows ({ $percent } %)
+kit-progress-time = { $elapsed } so far
+kit-progress-time-left = { $elapsed } so far, about { $left } left
+kit-progress-seconds = { $s } s
+kit-progress-minutes = { $min } min { $s } s
+kit-progress-cancel = Cancel
+
+## Long runs in the background (kit::worker)
+kit-worker-failed = The background run stopped unexpectedly ({ $detail }). Try again; if it keeps failing, reload the page.

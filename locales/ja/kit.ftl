@@ -24,3 +24,39 @@ kit-stepper-key-back = 1 ステップ戻る（正確に）
 kit-stepper-key-run = 再生・一時停止
 kit-stepper-key-ends = 最初へ／最後へ
 kit-stepper-key-reset = 最初からやり直す
+
+## Parameter form (kit::form)
+kit-form-args = 引数（コマンドラインでの順番）
+kit-form-options = オプション
+kit-form-options-note = bsv コマンドだけにある追加の設定です。Python のレシピにはオプションがなく、常にこの既定値を使います。
+kit-form-default = 既定値：
+kit-form-file-open = CSV ファイルを開く…
+kit-form-file-sample = 内蔵のラベル付きサンプルを使う
+
+## Exports: downloads and command lines (kit::exports)
+kit-exports-download = { $file } をダウンロード
+kit-exports-download-failed = { $file } を保存できませんでした：{ $error }
+kit-exports-title = 同じ実行をコマンドラインで
+kit-exports-hint = どちらの行をターミナルで実行しても、同じファイルが得られます（Python のレシピには Python 3 と必要なライブラリが、bsv にはこのプロジェクトのコマンドラインツールが必要です）。
+kit-exports-python = Python のレシピ
+kit-exports-bsv = BSV のコマンドライン
+kit-exports-copy = コピー
+kit-exports-copied = コマンドをクリップボードにコピーしました。
+kit-exports-copy-failed = このブラウザではコピーが許可されていません。コマンドを選択して Ctrl+C（Mac では ⌘C）を押してください。
+kit-exports-python-no-options = Python のレシピにはオプションがないため、この行には { $options } が含まれず、既定値での結果になります。この実行を再現できるのは bsv の行だけです。
+kit-exports-file-note = これらのコマンドは、{ $name } があるフォルダーで実行してください。
+
+# ページキットの部品（src/ui/kit）のメッセージ。ID は `kit-` で始めます。
+
+## 長い実行の進捗パネル（kit::progress）
+kit-progress-label = 実行の進捗
+kit-progress-starting = 開始しています…
+kit-progress-rows = { $total } 行中 { $done } 行（{ $percent } %）
+kit-progress-time = 経過 { $elapsed }
+kit-progress-time-left = 経過 { $elapsed }、残り約 { $left }
+kit-progress-seconds = { $s } 秒
+kit-progress-minutes = { $min } 分 { $s } 秒
+kit-progress-cancel = キャンセル
+
+## バックグラウンドでの長い実行（kit::worker）
+kit-worker-failed = バックグラウンドの実行が予期せず止まりました（{ $detail }）。もう一度実行してください。繰り返し失敗する場合は、ページを再読み込みしてください。

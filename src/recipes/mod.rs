@@ -467,8 +467,17 @@ mod facts_tests {
                     Bound::Incl(m) if whole => Some(m + 1.0),
                     Bound::Incl(m) => Some(m + m.abs().max(1.0)),
                 };
+                assert!(
+                    spec.kind == ArgKind::File || spec.check_text(spec.default).is_ok(),
+                    "{} {}: default refused by its own facts",
+                    info.id,
+                    spec.name
+                );
                 for value in [below, above].into_iter().flatten() {
                     let raw = with(info, spec.name, &value.to_string());
+                    // The field alone is refused, as the run refuses it.
+                    let field = spec.check_text(&value.to_string()).unwrap_err();
+                    assert_eq!(field.param(), Some(spec.name));
                     let err = run(info.id, &raw).unwrap_err();
                     assert_eq!(err.param(), Some(spec.name), "{} {raw:?}: {err}", info.id);
                     assert_eq!(plan(info.id, &raw, Vec::new()), Err(err));
@@ -569,6 +578,15 @@ mod facts_tests {
         );
         assert_eq!(warnings("umeyama-2d", &[]), vec![]);
         assert_eq!(warnings("pendulum-energy", &[]), vec![]);
+        // A 0.05 s Euler step without damping gains ~15 % energy: the step is too large.
+        match &warnings(
+            "pendulum-energy",
+            &["5", "--timestep", "0.05", "--damping", "0"],
+        )[..]
+        {
+            [RecipeWarning::EnergyGrows { percent }] => assert!((15.0..16.0).contains(percent)),
+            other => panic!("{other:?}"),
+        }
         // The CSV is the recipe's either way (the golden runs cover the defaults).
         let out = run("pid-step", &strings(&["1e9"])).unwrap();
         assert_eq!(

@@ -97,3 +97,19 @@ pub fn scaled_font_px(base_px: f64, projector: bool) -> f64 {
         base_px
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    #[test]
+    fn projector_type_is_never_under_24_px() {
+        assert_eq!(scaled_font_px(11.0, false), 11.0);
+        assert_eq!(scaled_font_px(11.0, true), 24.0);
+        assert_eq!(scaled_font_px(16.0, true), 25.6);
+        for base in [8.0, 10.0, 12.0, 14.0, 20.0] {
+            assert!(scaled_font_px(base, true) >= PROJECTOR_MIN_FONT_PX);
+        }
+    }
+}

@@ -13,6 +13,7 @@
 //!   host of the mounted page.
 //! - [`overlay`]: the `?` shortcut list.
 //! - [`pages`]: the page table and the pages.
+//! - [`kit`]: widgets shared by pages (the worker for long runs, its progress panel).
 //! - [`download`]: saving CSV and PNG files from the page.
 //! - [`clipboard`]: copying command lines.
 //! - [`command_line`]: shell quoting for the command lines the pages show.

@@ -295,12 +295,36 @@ pub(crate) fn route_changed(def: Option<&'static PageDef>) -> Result<(), JsValue
         for link in dom::matching(&nav, "a[data-page]")? {
             if link.get_attribute("data-page").as_deref() == Some(current) {
                 link.set_attribute("aria-current", "page")?;
+                reveal_in_nav(&link);
             } else {
                 link.remove_attribute("aria-current")?;
             }
         }
     }
     update_title(def)
+}
+
+/// At phone width the navigation is one row that scrolls sideways: keep the current page's
+/// link in view.
+fn reveal_in_nav(link: &Element) {
+    let Some(list) = link.closest("ul").ok().flatten() else {
+        return;
+    };
+    let (Some(link), Some(list_el)) = (
+        link.dyn_ref::<web_sys::HtmlElement>(),
+        list.dyn_ref::<web_sys::HtmlElement>(),
+    ) else {
+        return;
+    };
+    let left = f64::from(link.offset_left() - list_el.offset_left());
+    let right = left + f64::from(link.offset_width());
+    let view = f64::from(list.client_width());
+    let scrolled = f64::from(list.scroll_left());
+    if right > scrolled + view {
+        list.set_scroll_left((right - view) as i32);
+    } else if left < scrolled {
+        list.set_scroll_left(left as i32);
+    }
 }
 
 /// `document.title`: "BSV Playground" at home, "<page> — BSV Playground" elsewhere.

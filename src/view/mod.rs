@@ -2,15 +2,24 @@
 //! natively (the wasm-only `crate::ui` module draws what these compute).
 //!
 //! - [`url`]: the URL codec (`#/<page>?k=v`, percent-encoding, `lang`).
+//! - [`form`]: the parameter form's fields and validation; [`command_line`]: `bsv` / `python`
+//!   lines of a run; [`table`]: CSV previews and rounded cells.
 //! - [`stepper`]: the stepper's state machine (step, back, play at a speed, scrub).
 //! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`ik2r`]: the IK page: state and URL, validation, arm view geometry, exports.
+//! - [`progress`]: the progress panel of long runs (percent, rows, time left).
+//! - [`worker`]: the preview head of a file a worker run sends back.
 
+pub mod command_line;
 pub mod drag;
+pub mod form;
 pub mod heatmap;
 pub mod ik2r;
 pub mod plot;
+pub mod progress;
 pub mod stepper;
+pub mod table;
 pub mod url;
+pub mod worker;

@@ -356,11 +356,11 @@ test('invalid values are flagged beside their field in English and Japanese; the
     const message = page.locator('[data-field-error="steps"]');
     await steps.fill('abc');
     assert.equal(await message.isVisible(), true);
-    assert.equal(await message.innerText(), 'steps: “abc” must be a whole number, such as 3 or 800.');
+    assert.equal(await message.innerText(), 'Number of steps (0.05 s each): “abc” must be a whole number, such as 3 or 800.');
     assert.equal(await steps.getAttribute('aria-invalid'), 'true');
     // Two bad fields at once: both are named.
     await page.locator('[data-field="tau"]').fill('-1');
-    assert.match(await page.locator('[data-field-error="tau"]').innerText(), /tau must be between 0\.0 and 1000000\.0 \(it is -1\.0\)/);
+    assert.match(await page.locator('[data-field-error="tau"]').innerText(), /Plant time constant τ \(s\) must be between 0 and 1,000,000 \(it is -1\)/);
     assert.equal(await message.isVisible(), true);
     // Run refuses and says why; the previous result is still there, marked stale.
     await page.locator('[data-testid="drills-run"]').click();
@@ -369,8 +369,8 @@ test('invalid values are flagged beside their field in English and Japanese; the
     assert.equal(await summary(page), good);
     assert.equal(await page.locator('[data-testid="drills-stale"]').isVisible(), true);
     await page.locator('[data-testid="lang-switch"]').click();
-    assert.equal(await message.innerText(), 'steps：「abc」ではなく、3 や 800 のような整数を指定してください。');
-    assert.match(await page.locator('[data-field-error="tau"]').innerText(), /tau は 0\.0 以上 1000000\.0 以下にしてください/);
+    assert.equal(await message.innerText(), 'ステップ数（1 ステップ 0.05 秒）：「abc」ではなく、3 や 800 のような整数を指定してください。');
+    assert.match(await page.locator('[data-field-error="tau"]').innerText(), /プラントの時定数 τ（秒） は 0 以上 1,000,000 以下にしてください/);
     assert.match(await page.locator('[data-testid="drills-status"]').innerText(), /赤で示した値を直して/);
     // Fixing both runs again.
     await page.locator('[data-testid="lang-switch"]').click();
@@ -390,9 +390,9 @@ test('invalid values are flagged beside their field in English and Japanese; the
     await waitRuns(grid.page, 0);
     await grid.page.locator('[data-field="n"]').fill('5000');
     const message = grid.page.locator('[data-field-error="n"]');
-    assert.equal(await message.innerText(), 'n は 1.0 以上 1024.0 以下にしてください（現在の値: 5000.0）。');
+    assert.equal(await message.innerText(), '格子の大きさ n（n × n 通りの関節角） は 1 以上 1,024 以下にしてください（現在の値: 5,000）。');
     await grid.page.locator('[data-testid="lang-switch"]').click();
-    assert.equal(await message.innerText(), 'n must be between 1.0 and 1024.0 (it is 5000.0).');
+    assert.equal(await message.innerText(), 'Grid size n (n × n joint configurations) must be between 1 and 1,024 (it is 5,000).');
     assert.match(await grid.page.locator('[data-field-wrap="n"] .drills-hint').innerText(), /from 1 to 1,024: n × n rows, so at most 1,048,576/);
     assert.deepEqual(grid.errors, []);
   } finally {
@@ -536,7 +536,7 @@ test('with Japanese selected no English UI string remains on the page', async ()
     assert.match(text, /すべてのドリル/);
     assert.match(text, /計算量の多い実行です/);
     assert.match(text, /コマンドをクリップボードにコピーしました/);
-    assert.match(text, /mass は 0 より大きい値にしてください/);
+    assert.match(text, /カプセルの質量 m（kg） は 0 より大きい値にしてください/);
     assert.match(text, /この実行を再現できるのは bsv の行だけです/);
     assert.match(text, /無視しました：bogus/);
     assert.match(text, /入力：input\.csv/);
@@ -603,5 +603,125 @@ test('screenshots: English and Japanese at 1280×800', async () => {
     assert.deepEqual(errors, []);
   } finally {
     await close();
+  }
+});
+
+// ---------- What a user sees: labels, warnings, rounded tables, the result in view ----------
+
+test('messages name the field by its label; a cross-field limit marks every field and speaks on the changed one', async () => {
+  const { page, errors, close } = await openDrills('#/drills?recipe=trapezoid-profile');
+  try {
+    await waitRuns(page, 0);
+    await page.locator('[data-field="distance"]').fill('1e9');
+    const message = page.locator('[data-field-error="distance"]');
+    await message.waitFor({ state: 'visible' });
+    const text = await message.innerText();
+    assert.match(text, /^Move distance: /, 'the label, not the internal name');
+    assert.doesNotMatch(text, /\de[+-]?\d|\.0\b/, `numbers as a person writes them: ${text}`);
+    assert.equal(await page.locator('[data-field-error="dt"]').isVisible(), false, 'one message, on the changed field');
+    assert.equal(await page.locator('[data-field="distance"]').getAttribute('aria-invalid'), 'true');
+    assert.equal(await page.locator('[data-field="dt"]').getAttribute('aria-invalid'), 'true', 'dt is involved too');
+    assert.equal(await page.locator('[data-field-error]:visible').count(), 1, 'one message for one limit');
+    // Integers take any whole-number notation.
+    await page.locator('[data-testid="drills-recipe"]').selectOption('pid-step');
+    await page.locator('[data-field="steps"]').fill('1e2');
+    await page.waitForFunction(() => /^wrote 100 PID samples/.test(document.querySelector('[data-testid="drills-summary"]').textContent));
+    assert.equal(await page.locator('[data-field-error="steps"]').isVisible(), false);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('pid-step Kp=1e9: the warning shows beside the result (EN/JA) and the CSV stays the CLI bytes', async () => {
+  const { page, errors, close } = await openDrills('#/drills?recipe=pid-step&Kp=1e9');
+  try {
+    await waitRuns(page, 0);
+    const warnings = page.locator('[data-testid="drills-warnings"]');
+    assert.equal(await warnings.isVisible(), true);
+    assert.match(await warnings.innerText(), /Check this result/);
+    assert.match(await warnings.innerText(), /blew up|unstable/);
+    await assertMatchesCli(page, 'pid-step', ['1e9', '0.4', '0.05', '0.8', '80'], 'pid Kp=1e9');
+    await page.locator('[data-testid="lang-switch"]').click();
+    assert.match(await warnings.innerText(), /この結果を確認してください/);
+    await page.locator('[data-testid="lang-switch"]').click();
+    // A stable loop has no warning.
+    const n = await runCount(page);
+    await page.locator('[data-field="Kp"]').fill('1.2');
+    await waitRuns(page, n);
+    assert.equal(await warnings.isVisible(), false);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('tables show rounded numbers, the switch shows the exact CSV text, downloads stay exact', async () => {
+  const { page, errors, close } = await openDrills('#/drills?recipe=jacobian-2r');
+  try {
+    await waitRuns(page, 0);
+    const want = cli(['jacobian-2r']);
+    const csv = want.files.get('jacobian_2r.csv').toString('utf8').split(/\r?\n/).filter((l) => l !== '').slice(1)
+      .map((l) => l.split(','));
+    const cells = () => page.locator('[data-preview="jacobian_2r.csv"] tbody tr').evaluateAll((rows) =>
+      rows.map((r) => [...r.querySelectorAll('td')].slice(1).map((td) => ({ text: td.textContent, title: td.getAttribute('title') }))));
+    const significant = (t) => t.split(/e/i)[0].replace(/[-.]/g, '').replace(/^0+/, '').length;
+    let rounded = 0;
+    for (const [i, row] of (await cells()).entries()) {
+      for (const [j, cell] of row.entries()) {
+        const exact = csv[i][j];
+        assert.ok(significant(cell.text) <= 6 || cell.text === exact, `row ${i} col ${j}: ${cell.text}`);
+        if (cell.text !== exact) {
+          rounded += 1;
+          assert.equal(cell.title, exact, 'the exact text is in the tooltip');
+          assert.ok(Math.abs(Number(cell.text) - Number(exact)) <= Math.abs(Number(exact)) * 5e-6, `${cell.text} ≈ ${exact}`);
+        }
+      }
+    }
+    assert.ok(rounded > 0, 'some cells are rounded');
+    await page.locator('[data-testid="drills-exact"]').check();
+    const exact = await cells();
+    assert.deepEqual(exact.map((r) => r.map((c) => c.text)), csv.slice(0, exact.length), 'exact = the CSV text');
+    assertSameBytes(await download(page, 'jacobian_2r.csv'), want.files.get('jacobian_2r.csv'), 'download stays exact');
+    await page.locator('[data-testid="drills-exact"]').uncheck();
+    assert.notDeepEqual((await cells()).map((r) => r.map((c) => c.text)), csv.slice(0, exact.length));
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('phone: after Run the result comes into view; an invalid field Run focuses is clear of the sticky bar', async () => {
+  for (const lang of ['en', 'ja']) {
+    const { page, errors, close } = await openDrills(`#/drills?recipe=manip-grid&n=300&lang=${lang}`, { viewport: { width: 390, height: 844 } });
+    try {
+      await page.waitForFunction(() => document.querySelector('[data-testid="drills-status"]').textContent !== '');
+      await run(page);
+      await page.waitForFunction(() => document.querySelector('[data-testid="drills-output"]').getBoundingClientRect().top < 844);
+      const out = await page.locator('[data-testid="drills-output"]').evaluate((el) => el.getBoundingClientRect().top);
+      assert.ok(out >= 0 && out < 844 / 2, `${lang}: the result starts at ${out}px`);
+      await page.screenshot({ path: join(OUT, `drills-390-${lang}-after-run.png`) });
+
+      await page.evaluate(() => window.scrollTo(0, 0));
+      await page.locator('[data-field="n"]').fill('abc');
+      await page.locator('[data-testid="drills-run"]').click();
+      assert.equal(await page.evaluate(() => document.activeElement?.dataset.field), 'n');
+      const box = await page.evaluate(() => {
+        const wrap = document.querySelector('[data-field-wrap="n"]').getBoundingClientRect();
+        const bar = document.querySelector('.drills-actions').getBoundingClientRect();
+        return { top: wrap.top, bottom: wrap.bottom, bar: bar.top };
+      });
+      assert.ok(box.top >= 0 && box.bottom <= box.bar, `${lang}: field ${box.top}–${box.bottom}px, sticky bar at ${box.bar}px`);
+      assert.match(await page.locator('[data-field-error="n"]').innerText(), lang === 'en' ? /^Grid size n/ : /^格子の大きさ n/);
+      // Tap targets of at least 44 px at phone width.
+      for (const sel of ['[data-copy="bsv"]', '[data-testid="drills-exact"]', '[data-testid="drills-run"]', '[data-download]', '[data-field="L1"]']) {
+        const b = await page.locator(sel).first().evaluate((el) => { const r = (el.closest('label') ?? el).getBoundingClientRect(); return { w: r.width, h: r.height }; });
+        assert.ok(b.h >= 44 && b.w >= 44, `${lang} ${sel}: ${b.w}×${b.h}`);
+      }
+      await page.screenshot({ path: join(OUT, `drills-390-${lang}-invalid.png`) });
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
   }
 });

@@ -318,3 +318,162 @@ test('when the app cannot start, a bilingual message says why (wasm missing, fil
     await context.close();
   }
 });
+
+// ---------- Phone, projector, focus and keys, measured as a user sees them ----------
+
+/** Visible controls under `root` smaller than `min` px in height (or width, for buttons). */
+function smallTargets([root, min]) {
+  const out = [];
+  const sel = 'a[href], button, summary, select, input:not([type="hidden"]):not([type="checkbox"]):not([type="radio"]):not([type="range"]), label:has(> input[type="checkbox"]), label:has(> input[type="radio"])';
+  for (const el of document.querySelector(root).querySelectorAll(sel)) {
+    const r = el.getBoundingClientRect();
+    if (r.width === 0 || r.height === 0 || el.closest('p')) continue; // hidden; inline text links are exempt
+    const tooNarrow = el.matches('button') && r.width < min;
+    if (r.height < min - 0.01 || tooNarrow) out.push(`${el.tagName.toLowerCase()}.${el.className || el.dataset.testid || ''} ${r.width.toFixed(0)}×${r.height.toFixed(1)}`);
+  }
+  return out;
+}
+
+/** The smallest computed font size of any visible text on the page, and where. */
+function smallestText() {
+  let min = { px: Infinity, where: '' };
+  const walker = document.createTreeWalker(document.getElementById('app'), NodeFilter.SHOW_TEXT);
+  for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+    if (!node.textContent.trim()) continue;
+    const el = node.parentElement;
+    const r = el.getBoundingClientRect();
+    if (r.width === 0 || r.height === 0 || el.closest('[hidden]')) continue;
+    const cs = getComputedStyle(el);
+    if (cs.visibility === 'hidden' || cs.clipPath === 'inset(50%)') continue; // screen-reader only
+    const px = parseFloat(cs.fontSize);
+    if (px < min.px) min = { px, where: `${el.tagName.toLowerCase()}.${el.className}: ${node.textContent.trim().slice(0, 30)}` };
+  }
+  return min;
+}
+
+/** WCAG contrast ratio of a computed rgb() colour against white. */
+function contrastOnWhite(rgb) {
+  const [r, g, b] = rgb.match(/[\d.]+/g).slice(0, 3).map(Number).map((c) => {
+    const s = c / 255;
+    return s <= 0.03928 ? s / 12.92 : ((s + 0.055) / 1.055) ** 2.4;
+  });
+  const l = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+  return 1.05 / (l + 0.05);
+}
+
+test('at phone width every tap target is at least 44 px and the header is compact', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/', { viewport: { width: 390, height: 844 } });
+  try {
+    for (const lang of ['en', 'ja']) {
+      assert.deepEqual(await page.evaluate(smallTargets, ['.site-header', 44]), [], `${lang} header`);
+      assert.deepEqual(await page.evaluate(smallTargets, ['#app-main', 44]), [], `${lang} home page`);
+      const header = await page.locator('[data-testid="site-header"]').boundingBox();
+      assert.ok(header.height <= 110, `${lang}: the header takes ${header.height} px of 844`);
+      // The brand, the tools and the three navigation links all show.
+      for (const id of ['brand', 'lang-switch', 'projector-toggle', 'help-button', 'nav-home', 'nav-ik-2r', 'nav-drills']) {
+        const box = await page.locator(`[data-testid="${id}"]`).boundingBox();
+        assert.ok(box && box.y >= 0 && box.y + box.height <= header.y + header.height + 0.5, `${lang}: ${id} inside the header`);
+      }
+      // The subtitle is still there for screen readers.
+      assert.ok((await page.locator('[data-testid="brand-subtitle"]').textContent()).length > 5);
+      if (lang === 'en') await page.click('[data-testid="lang-switch"]');
+    }
+    await page.screenshot({ path: join(OUT, 'home-390-compact.png'), fullPage: false });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a localized skip link is the first focusable element and moves focus to the content', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/?lang=ja');
+  try {
+    const skip = page.locator('[data-testid="skip-link"]');
+    assert.equal(await skip.innerText(), '本文へ移動');
+    // Off screen until focused.
+    assert.ok((await skip.boundingBox()).y + (await skip.boundingBox()).height <= 0);
+    await page.keyboard.press('Tab');
+    assert.equal(await page.evaluate(() => document.activeElement?.dataset.testid), 'skip-link');
+    const box = await skip.boundingBox();
+    assert.ok(box.y >= 0 && box.height >= 44, `focused skip link at ${JSON.stringify(box)}`);
+    const hash = await page.evaluate(() => location.hash);
+    await page.keyboard.press('Enter');
+    assert.equal(await page.evaluate(() => document.activeElement?.id), 'app-main');
+    assert.equal(await page.evaluate(() => location.hash), hash, 'the route stays');
+    assert.equal(await page.locator('[data-testid="home-headline"]').count(), 1);
+    await page.click('[data-testid="lang-switch"]');
+    assert.equal(await skip.innerText(), 'Skip to content');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('in projector mode at 1920x1080 no text on the home page is under 24 px', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/', { viewport: { width: 1920, height: 1080 } });
+  try {
+    const before = await page.evaluate(smallestText);
+    assert.ok(before.px < 24, `without projector mode the smallest text is ${before.px} px`);
+    await page.keyboard.press('p');
+    const min = await page.evaluate(smallestText);
+    assert.ok(min.px >= 24, `smallest text ${min.px} px (${min.where})`);
+    assert.ok(await page.evaluate(() => parseFloat(getComputedStyle(document.documentElement).fontSize)) >= 24);
+    await page.screenshot({ path: join(OUT, 'home-projector-1920.png'), fullPage: false });
+    await page.click('[data-testid="lang-switch"]');
+    const ja = await page.evaluate(smallestText);
+    assert.ok(ja.px >= 24, `Japanese: smallest text ${ja.px} px (${ja.where})`);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('the focus ring is at least 3:1 against white in the header and inside page content', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/ik-2r');
+  try {
+    await page.locator('[data-ik2r="reset"]').waitFor();
+    await page.keyboard.press('Tab'); // keyboard modality: programmatic focus shows the ring
+    for (const selector of ['[data-testid="nav-home"]', '[data-testid="lang-switch"]', '[data-ik2r="reset"]', '#app-main [data-copy]', '#app-main select', '#app-main input']) {
+      const ring = await page.evaluate((s) => {
+        const el = document.querySelector(s);
+        el.focus();
+        const cs = getComputedStyle(el);
+        return { style: cs.outlineStyle, width: parseFloat(cs.outlineWidth), color: cs.outlineColor, visible: el.matches(':focus-visible') };
+      }, selector);
+      assert.ok(ring.visible && ring.style === 'solid' && ring.width >= 3, `${selector}: ${JSON.stringify(ring)}`);
+      const ratio = await page.evaluate(contrastOnWhite, ring.color);
+      assert.ok(ratio >= 3, `${selector}: ring ${ring.color} is ${ratio.toFixed(2)}:1 on white`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('page keys do nothing while a button has focus and act on the page body', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/ik-2r');
+  try {
+    const x = () => page.evaluate(() => Number(document.querySelector('[data-readout="x_mm"]').textContent));
+    const frames = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    await page.locator('[data-readout="x_mm"]').waitFor();
+    const x0 = await x();
+    await page.locator('[data-ik2r="reset"]').focus();
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('w');
+    await frames();
+    assert.equal(await x(), x0, 'ArrowRight on the focused Reset button moved the tip');
+    assert.equal(await page.locator('[data-testid="ik-2r-ws-toggle"]').isChecked(), false);
+    // Shell keys still work there (they are not typing).
+    await page.keyboard.press('?');
+    await page.locator('[data-testid="shortcut-overlay"]').waitFor();
+    await page.keyboard.press('Escape');
+    // On the page body the same key moves the tip by 1 mm.
+    await page.locator('body').click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press('ArrowRight');
+    await frames();
+    assert.ok(Math.abs((await x()) - (x0 + 1)) < 1e-3, `x ${x0} -> ${await x()}`);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

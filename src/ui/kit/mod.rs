@@ -11,14 +11,23 @@
 //! - [`drag`]: pointer drags (mouse, pen, touch) that leave the page scrollable.
 //! - [`plot`]: line/scatter plots: panels sharing x, legend, cursor, incremental append.
 //! - [`heatmap`]: colour-map heatmap with a legend.
+//! - [`form`]: the ArgSpec-driven parameter form; [`exports`]: downloads and command lines;
+//!   [`readouts`]: `data-readout` values and a throttled `aria-live` summary.
+//! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
+//! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
 
 pub mod canvas;
 pub mod drag;
+pub mod exports;
+pub mod form;
 pub mod frame;
 pub mod heatmap;
 pub mod keymap;
 pub mod plot;
 pub mod png;
+pub mod progress;
+pub mod readouts;
 pub mod scope;
 pub mod stepper;
 pub mod url_state;
+pub mod worker;

@@ -45,7 +45,7 @@ pub fn flatten(
     Ok(out)
 }
 
-/// [`flatten`] then [`download`].
+/// [`flatten`] then [`download()`].
 pub fn download_layers(
     layers: &[&HtmlCanvasElement],
     background: &str,

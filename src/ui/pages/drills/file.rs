@@ -1,4 +1,4 @@
-//! Opening traj-resample's input CSV from an `<input type="file">`: the chosen file's name and
+//! Opening an input CSV (a file argument, traj-resample's) from an `<input type="file">`: the chosen file's name and
 //! size (checked against the kernel's limit before anything is read), then its text through
 //! `Blob.text()` (UTF-8, a byte-order mark dropped). Only `Blob` of web-sys is needed: the
 //! `File` and its list are read through `Reflect`.
@@ -7,9 +7,13 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Blob, HtmlInputElement};
 
-use super::plan::Shape;
 use crate::error::RecipeError;
+use crate::recipes::traj_resample::Shape;
 use crate::ui::dom;
+
+/// Input files up to this size are attached to every check of the form (so that their errors
+/// show at once and the run size is known); bigger ones are checked by the run itself.
+pub const PRECHECK_MAX_BYTES: u64 = 4 * 1024 * 1024;
 
 /// A CSV the user opened.
 pub struct InputFile {
@@ -18,8 +22,8 @@ pub struct InputFile {
     /// Size in bytes.
     pub bytes: u64,
     pub text: String,
-    /// Its shape, parsed when opened if it is small enough (`None`: checked by the run).
-    pub shape: Option<Result<Shape, RecipeError>>,
+    /// Its shape (rows, joint columns), read when opened.
+    pub shape: Result<Shape, RecipeError>,
 }
 
 /// The file chosen in `input`: its name, size in bytes and the file itself.

@@ -4,8 +4,10 @@
 //! the code drives carry `data-drills="<role>"`, and the ones tests drive carry `data-testid`,
 //! `data-field`, `data-download`, `data-cmd` and `data-copy`.
 
-use super::texts::escape;
+use super::PREFIX;
 use crate::recipes::RECIPES;
+use crate::ui::kit::form::escape;
+use crate::ui::kit::{exports, readouts};
 
 fn recipe_options() -> String {
     let mut html = String::new();
@@ -46,27 +48,22 @@ aria-labelledby=\"drills-output-title\">\
 <div class=\"drills-result\" data-drills=\"result\" hidden>\
 <h3 class=\"drills-sub\" data-i18n=\"drills-summary-label\"></h3>\
 <pre class=\"drills-summary\" data-drills=\"summary\" data-testid=\"drills-summary\"></pre>\
+<div class=\"drills-warnings\" data-drills=\"warnings\" data-testid=\"drills-warnings\" role=\"status\" hidden></div>\
+<div class=\"drills-table-options\"><label class=\"drills-exact\"><input type=\"checkbox\" data-exact data-testid=\"drills-exact\"> \
+<span data-i18n=\"drills-table-exact\"></span></label>\
+<p class=\"drills-hint\" data-drills=\"rounded-note\" data-i18n=\"drills-table-rounded\"></p></div>\
 <div class=\"drills-files\" data-drills=\"files\"></div>\
-<div class=\"drills-commands\"><h3 class=\"drills-sub\" data-i18n=\"drills-commands-title\"></h3>\
-<p class=\"drills-hint\" data-i18n=\"drills-commands-hint\"></p>\
-<div class=\"drills-cmd\"><span class=\"drills-cmd-label\" data-i18n=\"drills-cmd-python\"></span>\
-<code data-cmd=\"python\" data-testid=\"drills-cmd-python\"></code>\
-<button type=\"button\" class=\"button drills-copy\" data-copy=\"python\" data-i18n=\"drills-copy\"></button></div>\
-<p class=\"drills-hint drills-cmd-note\" data-drills=\"python-note\" hidden></p>\
-<div class=\"drills-cmd\"><span class=\"drills-cmd-label\" data-i18n=\"drills-cmd-bsv\"></span>\
-<code data-cmd=\"bsv\" data-testid=\"drills-cmd-bsv\"></code>\
-<button type=\"button\" class=\"button drills-copy\" data-copy=\"bsv\" data-i18n=\"drills-copy\"></button></div>\
-<p class=\"drills-hint drills-cmd-note\" data-drills=\"file-note\" hidden></p>\
-<p class=\"drills-copy-status\" data-drills=\"copy-status\" data-testid=\"drills-copy-status\" role=\"status\"></p>\
-</div></div></section>\
+{exports}</div></section>\
 <section class=\"drills-card drills-about\" data-testid=\"drills-about\" aria-labelledby=\"drills-about-title\">\
 <h2 id=\"drills-about-title\" data-i18n=\"drills-about-title\"></h2>\
 <p data-drills=\"about\"></p>\
-<div class=\"drills-quirks\" data-drills=\"quirk-box\" hidden><h3 data-i18n=\"drills-quirks-title\"></h3>\
+<div class=\"drills-quirks\"><h3 data-i18n=\"drills-quirks-title\"></h3>\
 <p data-drills=\"quirk\" data-testid=\"drills-quirks\"></p></div>\
 <p class=\"drills-hint\" data-i18n=\"drills-about-parity\"></p>\
 </section>\
-</div></div>",
+</div>{live}</div>",
         options = recipe_options(),
+        exports = exports::markup(PREFIX),
+        live = readouts::live_markup(PREFIX),
     )
 }

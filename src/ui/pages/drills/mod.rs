@@ -2,61 +2,56 @@
 //! browser with the user's arguments and download its CSV file(s), byte for byte what
 //! `bsv <id> <args>` writes (and, through the kernels' parity, what the Python recipe writes).
 //!
-//! How a run happens:
-//! - every keystroke validates the form with the recipe's own parser and checks
-//!   (`plan::check`, no run), and puts the localized message beside the offending field;
-//! - a valid form whose run is small (`plan::AUTO_RUN_MAX_WORK` rows) runs 250 ms after the
-//!   last keystroke; a bigger one waits for Run / Enter / `r`, which first paints a "Running…"
-//!   state and then runs ([`after_paint`](crate::ui::schedule::after_paint)), so the tab never
-//!   freezes without saying so;
-//! - the last result (summary, files, command lines) stays on screen until a new run succeeds;
-//!   a note says when the form has moved on from it.
+//! The page knows nothing about any recipe: the form, hints, limits, quirks and run sizes come
+//! from the recipe's facts (`RecipeInfo`, `ArgSpec`, `RecipeInfo::plan`), and the fields, the
+//! exports panel and the readouts are the kit's (`crate::ui::kit`).
 //!
-//! Files: `mount` (building the page, wiring its controls, relocalizing, unmounting),
-//! `validate` (checking the form as it is typed), `run` (when and how a drill runs),
-//! `switch` (another drill, back to defaults), `picker` (traj-resample's file on the page),
-//! `url` (writing the URL, the notice about it), `status` (recipe texts, status line, stale
-//! note), `downloads` (download and copy buttons), `fields` (the form and its hints),
-//! `plan` (checks and run sizes), `command` (run arguments and command lines), `query`
-//! (URL state), `output` (result panel), `preview` (CSV tables), `file` (reading
-//! traj-resample's input file), `keys`, `texts` (explanations, number formats),
-//! `markup`. Timers and the clipboard are the shared `crate::ui::schedule` and
-//! `crate::ui::clipboard`. This file holds the page's types and the shell's handle on it.
+//! How a run happens:
+//! - every keystroke validates the form with the recipe's own parse + validate (its `plan`, no
+//!   run) and puts the localized message beside the field ([`crate::view::form::validate`]);
+//! - a valid form whose run is small ([`crate::view::form::AUTO_RUN_MAX_ROWS`]) runs 250 ms after the last
+//!   keystroke; a bigger one waits for Run / Enter / `r`, which first paints a "Running…"
+//!   state and then runs, and brings the result (or the first error) into view;
+//! - the last result (summary, warnings, files, command lines) stays on screen until a new run
+//!   succeeds; a note says when the form has moved on from it.
+//!
+//! Components, one file each: `picker` (the drill select, its texts, switching, defaults),
+//! `form` (the kit form and its validation), `input` (an input file on the page, read by
+//! `file`), `run` (when and how a drill runs, the status line), `result` (summary, warnings,
+//! previews, downloads and the kit's exports panel), `url` (URL state and its notice, codec in
+//! `query`), `keys`; `mount` builds and wires them from `markup`; `texts` formats sizes.
 
-mod command;
-mod downloads;
-mod fields;
+mod background;
 mod file;
+mod form;
+mod input;
 mod keys;
 mod markup;
 mod mount;
-mod output;
 mod picker;
-mod plan;
-mod preview;
 mod query;
+mod result;
 mod run;
-mod status;
-mod switch;
 mod texts;
 mod url;
-mod validate;
 
 use std::cell::RefCell;
 use std::rc::{Rc, Weak};
 
 use web_sys::{Element, HtmlSelectElement, KeyboardEvent};
 
-use self::command::RunArgs;
-use self::fields::{Form, Message};
 use self::file::InputFile;
-use self::output::Shown;
-use self::plan::Plan;
+use self::result::Shown;
+use self::run::Plan;
 use crate::recipes::Recipe;
 use crate::ui::dom::Listener;
+use crate::ui::kit::exports::Exports;
+use crate::ui::kit::form::{Form, Message};
+use crate::ui::kit::readouts::Readouts;
 use crate::ui::page::{PageDef, PageHandle, Shortcut};
 use crate::ui::router;
 use crate::ui::schedule::Timer;
+use crate::view::command_line::RunArgs;
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef {
@@ -74,6 +69,9 @@ pub fn link(recipe_id: &str) -> String {
     )
 }
 
+/// The class and test-id prefix of the page's kit widgets.
+const PREFIX: &str = "drills";
+
 /// The elements the page drives.
 struct Els {
     page: Element,
@@ -86,19 +84,14 @@ struct Els {
     error: Element,
     url_notice: Element,
     about: Element,
-    quirk_box: Element,
     quirk: Element,
     output: Element,
     stale: Element,
     empty: Element,
     result: Element,
     summary: Element,
+    warnings: Element,
     files: Element,
-    cmd_python: Element,
-    cmd_bsv: Element,
-    python_note: Element,
-    file_note: Element,
-    copy_status: Element,
 }
 
 /// What the status line beside Run says.
@@ -153,7 +146,7 @@ struct State {
     texts: Vec<Option<String>>,
     /// Texts of drills visited before in this visit, restored when the user comes back.
     remembered: Vec<(&'static str, Vec<Option<String>>)>,
-    /// traj-resample's opened input file.
+    /// The opened input file.
     input: Option<InputFile>,
     /// A file named by the URL that is not open.
     missing_file: Option<String>,
@@ -162,8 +155,9 @@ struct State {
     /// The file being read, and a counter that drops stale reads.
     reading: Option<String>,
     read_generation: u32,
-    /// Messages now shown.
+    /// Messages now shown, and every field an error involves.
     errors: Vec<(Slot, Message)>,
+    marked: Vec<usize>,
     /// The plan of the current (valid) form.
     plan: Option<Plan>,
     /// A run that failed, with its arguments (its message stays while they do not change).
@@ -173,7 +167,8 @@ struct State {
     runs: u32,
     status: Status,
     url: UrlNotes,
-    copy_status: Option<&'static str>,
+    /// Tables show the CSV's exact text instead of rounded numbers.
+    exact: bool,
 }
 
 /// The mounted page.
@@ -181,10 +176,14 @@ pub(crate) struct Page {
     els: Els,
     st: RefCell<State>,
     form: RefCell<Form>,
+    exports: Exports,
+    readouts: Readouts,
     listeners: RefCell<Vec<Listener>>,
     auto_timer: Timer,
     url_timer: Timer,
     weak: RefCell<Weak<Page>>,
+    /// Big runs in the Web Worker, with their progress panel (background.rs).
+    background: RefCell<Option<Rc<background::Background>>>,
 }
 
 /// The shell's handle on the page.

@@ -9,13 +9,15 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event, KeyboardEvent};
 
-use super::fields::{self, Form, Kind};
 use super::query::UrlState;
-use super::{markup, Els, Handle, Page, Slot, State, Status, UrlNotes};
+use super::{form, markup, Els, Handle, Page, Slot, State, Status, UrlNotes, PREFIX};
 use crate::recipes;
 use crate::ui::dom::{self, Listener};
+use crate::ui::kit::exports::Exports;
+use crate::ui::kit::readouts::Readouts;
 use crate::ui::page::{MountCtx, PageHandle};
 use crate::ui::schedule::Timer;
+use crate::view::form::recipe_fields;
 
 /// Builds the page into the shell's main element.
 pub(super) fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
@@ -46,33 +48,30 @@ impl Page {
             error: role(&root, "error")?,
             url_notice: role(&root, "url-notice")?,
             about: role(&root, "about")?,
-            quirk_box: role(&root, "quirk-box")?,
             quirk: role(&root, "quirk")?,
             output: role(&root, "output")?,
             stale: role(&root, "stale")?,
             empty: role(&root, "empty")?,
             result: role(&root, "result")?,
             summary: role(&root, "summary")?,
+            warnings: role(&root, "warnings")?,
             files: role(&root, "files")?,
-            cmd_python: find(&root, "[data-cmd=\"python\"]")?,
-            cmd_bsv: find(&root, "[data-cmd=\"bsv\"]")?,
-            python_note: role(&root, "python-note")?,
-            file_note: role(&root, "file-note")?,
-            copy_status: role(&root, "copy-status")?,
         };
+        let exports = Exports::find(&root, PREFIX)?;
+        let readouts = Readouts::find(&root)?;
         dom::relocalize(&root)?;
 
         let url = UrlState::parse(&mount.query);
         let recipe = url.recipe;
-        let field_list = fields::fields(recipe.info);
+        let field_list = recipe_fields(recipe.info);
         let mut texts = url.texts(&field_list);
         let mut missing_file = None;
         for (field, text) in field_list.iter().zip(texts.iter_mut()) {
-            if field.kind == Kind::File {
+            if field.is_file() {
                 missing_file = text.take().filter(|t| !t.trim().is_empty());
             }
         }
-        let form = Form::build(&els.form, recipe.info, &fill_values(&field_list, &texts))?;
+        let form = form::build(&els.form, recipe.info, &texts)?;
         let state = State {
             recipe,
             texts,
@@ -83,6 +82,7 @@ impl Page {
             reading: None,
             read_generation: 0,
             errors: Vec::new(),
+            marked: Vec::new(),
             plan: None,
             failed: None,
             shown: None,
@@ -94,18 +94,27 @@ impl Page {
                 invalid: Vec::new(),
                 missing_file,
             },
-            copy_status: None,
+            exact: false,
         };
         let page = Rc::new(Page {
             els,
             st: RefCell::new(state),
             form: RefCell::new(form),
+            exports,
+            readouts,
             listeners: RefCell::new(Vec::new()),
             auto_timer: Timer::default(),
             url_timer: Timer::default(),
             weak: RefCell::new(Weak::new()),
+            background: RefCell::new(None),
         });
         *page.weak.borrow_mut() = Rc::downgrade(&page);
+        // Big runs: the worker's progress panel, under the status line (background.rs).
+        let background = super::background::Background::new(Rc::downgrade(&page))?;
+        page.els
+            .status
+            .after_with_node_1(background.panel.element())?;
+        *page.background.borrow_mut() = Some(Rc::new(background));
         page.install()?;
         page.els.recipe.set_value(recipe.info.id);
         page.render_recipe_texts()?;
@@ -118,7 +127,7 @@ impl Page {
                 .errors
                 .iter()
                 .filter_map(|(slot, _)| match slot {
-                    Slot::Field(i) => form.fields.get(*i).map(|f| f.spec.name.to_string()),
+                    Slot::Field(i) => form.fields.get(*i).map(|f| f.name().to_string()),
                     Slot::General => None,
                 })
                 .filter(|name| url.values.iter().any(|(k, _)| k == name))
@@ -149,8 +158,8 @@ impl Page {
                 }
             })?,
             Listener::for_page(&self.els.form, "input", &weak, |p, e| {
-                let is_field = target_element(e).is_some_and(|el| el.has_attribute("data-field"));
-                if is_field {
+                if let Some(el) = target_element(e).filter(|el| el.has_attribute("data-field")) {
+                    p.form.borrow().note_edit(&el);
                     p.on_edit();
                 }
             })?,
@@ -192,7 +201,15 @@ impl Page {
                     p.download(&file);
                 } else if let Some(button) = el.closest("[data-copy]").ok().flatten() {
                     let kind = button.get_attribute("data-copy").unwrap_or_default();
-                    p.copy_command(&kind);
+                    p.exports.copy(&kind);
+                }
+            })?,
+            Listener::for_page(&self.els.output, "change", &weak, |p, e| {
+                let Some(el) = target_element(e).filter(|el| el.has_attribute("data-exact")) else {
+                    return;
+                };
+                if let Ok(input) = el.dyn_into::<web_sys::HtmlInputElement>() {
+                    p.set_exact(input.checked());
                 }
             })?,
         ];
@@ -201,6 +218,7 @@ impl Page {
 
     pub(super) fn relocalize(&self) {
         self.form.borrow().relocalize();
+        self.exports.relocalize();
         self.render_errors();
         self.render_status();
         self.render_notice();
@@ -208,9 +226,16 @@ impl Page {
         if let Err(e) = self.render_output() {
             web_sys::console::error_2(&"drills: result".into(), &e);
         }
+        if let Some(bg) = self.background.borrow().as_ref() {
+            bg.panel.relocalize();
+        }
+        self.render_background_error();
     }
 
     pub(super) fn unmount(&self) {
+        if let Some(bg) = self.background.borrow_mut().take() {
+            bg.stop();
+        }
         self.auto_timer.cancel();
         self.url_timer.cancel();
         self.listeners.borrow_mut().clear();
@@ -224,18 +249,4 @@ impl Page {
 /// The element an event happened on.
 fn target_element(event: &Event) -> Option<Element> {
     event.target().and_then(|t| t.dyn_into::<Element>().ok())
-}
-
-/// The values to put in the fields: the text, or the default where there is none.
-pub(super) fn fill_values(fields: &[fields::Field], texts: &[Option<String>]) -> Vec<String> {
-    fields
-        .iter()
-        .enumerate()
-        .map(|(i, f)| {
-            texts
-                .get(i)
-                .and_then(|t| t.clone())
-                .unwrap_or_else(|| f.spec.default.to_string())
-        })
-        .collect()
 }

@@ -1,163 +1,97 @@
-//! traj-resample's input file on the page: choosing one (refused above the kernel's limit,
-//! else read, with stale reads dropped), going back to the built-in labeled sample, and the
-//! line under the file picker that says which input the run uses.
+//! The drill picker: the current recipe's title, blurb, explanation and quirks (the recipe's
+//! facts: `RecipeInfo::quirks_id`), changing to another drill (this one's values remembered,
+//! the other's restored or its defaults), the previous / next drill, and back to the recipe's
+//! defaults.
 
-use super::fields::Message;
-use super::file::{self, InputFile};
-use super::{plan, texts, Page, Status};
-use crate::recipes::traj_resample;
-use crate::ui::ctx::t_strings;
+use wasm_bindgen::prelude::*;
 
-/// A file name usable as a positional argument (one starting with `-` gets `./`).
-fn path_word(name: &str) -> String {
-    match name {
-        "" => "input.csv".to_string(),
-        n if n.starts_with('-') => format!("./{n}"),
-        n => n.to_string(),
-    }
-}
+use super::{form, texts, Page, Status, UrlNotes};
+use crate::recipes::{Recipe, RECIPES};
+use crate::ui::dom;
 
 impl Page {
-    /// "Use the built-in labeled sample": forget the opened file.
-    pub(super) fn use_sample(&self) {
+    /// Title, blurb, explanation and quirks of the current recipe (kept localized by the
+    /// shell through `data-i18n`).
+    pub(super) fn render_recipe_texts(&self) -> Result<(), JsValue> {
+        let info = self.st.borrow().recipe.info;
+        dom::set_i18n(&self.els.recipe_title, &info.title_id())?;
+        dom::set_i18n(&self.els.recipe_blurb, &info.blurb_id())?;
+        dom::set_i18n(&self.els.about, &texts::about_id(info.id))?;
+        dom::set_i18n(&self.els.quirk, info.quirks_id)?;
+        self.els.page.set_attribute("data-recipe", info.id)
+    }
+
+    /// Another drill: remember this one's values, restore the other's (or its defaults).
+    pub(super) fn switch_recipe(&self, recipe: &'static Recipe) {
+        if self.st.borrow().recipe.info.id == recipe.info.id {
+            return;
+        }
+        self.auto_timer.cancel();
+        let texts = {
+            let mut st = self.st.borrow_mut();
+            let current = (st.recipe.info.id, st.texts.clone());
+            st.remembered.retain(|(id, _)| *id != current.0);
+            st.remembered.push(current);
+            st.recipe = recipe;
+            st.shown = None;
+            st.failed = None;
+            st.status = Status::Idle;
+            st.url = UrlNotes::default();
+            st.remembered
+                .iter()
+                .find(|(id, _)| *id == recipe.info.id)
+                .map(|(_, t)| t.clone())
+                .unwrap_or_default()
+        };
+        match form::build(&self.els.form, recipe.info, &texts) {
+            Ok(built) => *self.form.borrow_mut() = built,
+            Err(e) => web_sys::console::error_2(&"drills: form".into(), &e),
+        }
+        self.exports.clear_status();
+        self.els.recipe.set_value(recipe.info.id);
+        if let Err(e) = self.render_recipe_texts() {
+            web_sys::console::error_2(&"drills: texts".into(), &e);
+        }
+        self.validate();
+        self.render_notice();
+        self.render_file_status();
+        self.write_url();
+        self.auto_run();
+        if let Err(e) = self.render_output() {
+            web_sys::console::error_2(&"drills: result".into(), &e);
+        }
+        self.render_status();
+    }
+
+    /// `[` / `]`: the previous / next drill.
+    pub(super) fn switch_by(&self, delta: i32) {
+        let id = self.st.borrow().recipe.info.id;
+        let n = RECIPES.len() as i32;
+        let index = RECIPES.iter().position(|r| r.info.id == id).unwrap_or(0) as i32;
+        let next = (index + delta).rem_euclid(n) as usize;
+        if let Some(recipe) = RECIPES.get(next) {
+            self.switch_recipe(recipe);
+        }
+    }
+
+    /// Back to the recipe's defaults (the labeled sample for traj-resample).
+    pub(super) fn reset(&self) {
+        self.auto_timer.cancel();
         {
             let mut st = self.st.borrow_mut();
             st.input = None;
             st.missing_file = None;
             st.file_problem = None;
-            st.url.missing_file = None;
-            st.read_generation += 1;
-            st.reading = None;
-        }
-        if let Some(input) = self.form.borrow().file_input() {
-            input.set_value("");
-        }
-        self.after_input_change();
-    }
-
-    /// A file was chosen: refuse it above the kernel's limit, else read it.
-    pub(super) fn on_file_chosen(&self) {
-        let chosen = self.form.borrow().file_input().and_then(file::chosen);
-        let Some((name, bytes, blob)) = chosen else {
-            return;
-        };
-        let name = path_word(&name);
-        let limit = traj_resample::MAX_INPUT_BYTES;
-        if bytes > limit {
-            {
-                let mut st = self.st.borrow_mut();
-                st.file_problem = Some(Message::FileTooLarge { name, bytes, limit });
-                st.read_generation += 1;
-                st.reading = None;
-            }
-            if let Some(input) = self.form.borrow().file_input() {
-                input.set_value("");
-            }
-            self.after_input_change();
-            return;
-        }
-        let generation = {
-            let mut st = self.st.borrow_mut();
-            st.read_generation += 1;
-            st.reading = Some(name.clone());
-            st.file_problem = None;
-            st.status = Status::Reading(name.clone());
-            st.read_generation
-        };
-        self.render_status();
-        self.render_file_status();
-        let weak = self.weak.borrow().clone();
-        file::read_text(&blob, move |result| {
-            let Some(page) = weak.upgrade() else {
-                return;
-            };
-            page.file_read(generation, name, bytes, result);
-        });
-    }
-
-    /// The chosen file's text arrived (or reading failed).
-    fn file_read(&self, generation: u32, name: String, bytes: u64, result: Result<String, String>) {
-        {
-            let mut st = self.st.borrow_mut();
-            if st.read_generation != generation {
-                return;
-            }
-            st.reading = None;
+            st.failed = None;
+            st.url = UrlNotes::default();
             st.status = Status::Idle;
-            match result {
-                Ok(text) => {
-                    let shape = (bytes <= plan::PRECHECK_MAX_BYTES).then(|| plan::shape_of(&text));
-                    st.input = Some(InputFile {
-                        name,
-                        bytes,
-                        text,
-                        shape,
-                    });
-                    st.missing_file = None;
-                    st.url.missing_file = None;
-                    st.file_problem = None;
-                }
-                Err(reason) => {
-                    st.file_problem = Some(Message::FileUnreadable { name, reason });
-                }
-            }
         }
-        if let Some(input) = self.form.borrow().file_input() {
-            input.set_value("");
-        }
-        self.after_input_change();
-    }
-
-    /// The input file changed: check, show, write the URL, run if small.
-    fn after_input_change(&self) {
+        self.form.borrow().reset();
         self.validate();
         self.render_notice();
         self.render_file_status();
         self.write_url();
-        {
-            let mut st = self.st.borrow_mut();
-            if st.status != Status::Running {
-                st.status = Status::Idle;
-            }
-        }
         self.auto_run();
         self.render_status();
-    }
-
-    /// traj-resample's line under the file picker: which input the run uses.
-    pub(super) fn render_file_status(&self) {
-        let form = self.form.borrow();
-        let Some(status) = form.file_status.as_ref() else {
-            return;
-        };
-        let st = self.st.borrow();
-        let text = if let Some(name) = &st.reading {
-            t_strings("drills-reading", &[("name", name.clone())])
-        } else if let Some(file) = &st.input {
-            let mut args = vec![
-                ("name", file.name.clone()),
-                ("size", texts::size_text(file.bytes)),
-            ];
-            match &file.shape {
-                Some(Ok(shape)) => {
-                    args.push(("rows", texts::group(shape.rows as u64)));
-                    args.push(("joints", shape.joints.to_string()));
-                    t_strings("drills-file-using-rows", &args)
-                }
-                _ => t_strings("drills-file-using", &args),
-            }
-        } else if let Some(name) = &st.missing_file {
-            t_strings("drills-file-missing", &[("name", name.clone())])
-        } else {
-            let rows = plan::shape_of(traj_resample::SAMPLE).map_or(0, |s| s.rows);
-            t_strings(
-                "drills-file-using-sample",
-                &[
-                    ("name", traj_resample::SAMPLE_NAME.to_string()),
-                    ("rows", rows.to_string()),
-                ],
-            )
-        };
-        status.set_text_content(Some(&text));
     }
 }

@@ -8,8 +8,8 @@
 //! not take are ignored, and values are put in their fields as they are, where validation
 //! flags the bad ones; the page lists all of this in a notice.
 
-use super::fields::Field;
 use crate::recipes::{self, Recipe, RECIPES};
+use crate::view::form::FieldDef;
 
 /// The query key of the recipe id.
 pub const RECIPE_KEY: &str = "recipe";
@@ -63,13 +63,13 @@ impl UrlState {
     }
 
     /// The URL's text for each field (`None` where the URL has none).
-    pub fn texts(&self, fields: &[Field]) -> Vec<Option<String>> {
+    pub fn texts(&self, fields: &[FieldDef]) -> Vec<Option<String>> {
         fields
             .iter()
             .map(|f| {
                 self.values
                     .iter()
-                    .find(|(k, _)| k == f.spec.name)
+                    .find(|(k, _)| k == f.name())
                     .map(|(_, v)| v.clone())
             })
             .collect()
@@ -80,7 +80,7 @@ impl UrlState {
 /// text is not blank and differs from its default.
 pub fn pairs(
     recipe: &'static str,
-    fields: &[Field],
+    fields: &[FieldDef],
     texts: &[Option<String>],
 ) -> Vec<(&'static str, String)> {
     let mut out = vec![(RECIPE_KEY, recipe.to_string())];
@@ -88,8 +88,8 @@ pub fn pairs(
         let Some(text) = text.as_deref().map(str::trim) else {
             continue;
         };
-        if !text.is_empty() && text != field.spec.default {
-            out.push((field.spec.name, text.to_string()));
+        if !text.is_empty() && text != field.default() {
+            out.push((field.name(), text.to_string()));
         }
     }
     out
@@ -97,9 +97,9 @@ pub fn pairs(
 
 #[cfg(test)]
 mod tests {
-    use super::super::fields::fields;
     use super::*;
     use crate::ui::router;
+    use crate::view::form::recipe_fields as fields;
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     /// The query the page is handed for `#/drills?<query>` (decoded by the router).

@@ -1,17 +1,14 @@
-//! When and how a drill runs: an edit validates at once and (debounced) rewrites the URL and
-//! runs a small drill; Run / Enter / `r` paints "Running…" first and then runs; a run computes
-//! the recipe's output (traj-resample on the opened file's text in place) and shows it, or puts
-//! its error where it belongs.
+//! Running a drill and the status line beside Run: an edit validates at once and (debounced)
+//! rewrites the URL and runs a small drill; Run / Enter / `r` paints "Running…" first, then
+//! runs and brings the result (or the first error) into view, clear of the phone's sticky Run
+//! bar. A run computes the recipe's output (with the opened input file attached) and shows it,
+//! or puts its error where it belongs.
 
-use super::command::RunArgs;
-use super::fields::Message;
-use super::file::InputFile;
-use super::output::Shown;
-use super::validate::slot_for;
+use super::result::Shown;
 use super::{Page, Status};
-use crate::args::Args;
-use crate::error::RecipeError;
-use crate::recipes::{self, traj_resample, RecipeOutput};
+use crate::recipes;
+use crate::ui::ctx::{self, t_strings};
+use crate::ui::kit::form::{reveal, Message, Reveal};
 use crate::ui::schedule::{after_paint, now_ms};
 
 /// Milliseconds between the last keystroke and a small drill's run.
@@ -19,39 +16,40 @@ const AUTO_RUN_DELAY_MS: i32 = 250;
 /// Milliseconds between the last keystroke and the URL update.
 const URL_DELAY_MS: i32 = 300;
 
-/// Runs `args`; traj-resample with an opened file reads the file's text in place (the same
-/// kernel path as `run_with_inputs`, without copying a large input).
-fn compute(args: &RunArgs, input: Option<&InputFile>) -> Result<RecipeOutput, RecipeError> {
-    let raw = args.raw();
-    if args.recipe == traj_resample::INFO.id {
-        if let Some(file) = input.filter(|f| args.positional.first() == Some(&f.name)) {
-            let info = &traj_resample::INFO;
-            let parsed = Args::parse(&raw, info.args, info.flags)?;
-            let params = traj_resample::ResampleParams::from_args(&parsed)?;
-            return traj_resample::run_text(&params, &file.text);
-        }
+/// What a valid form will cost.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Plan {
+    /// Rows of work (the recipe's `plan`); `None` when only the run can size it (a large
+    /// input file).
+    pub rows: Option<u64>,
+}
+
+impl Plan {
+    /// Whether the page may run it while the user types.
+    pub fn is_small(&self) -> bool {
+        crate::view::form::runs_while_typing(self.rows)
     }
-    recipes::run(args.recipe, &raw)
 }
 
 impl Page {
     /// A field changed: validate, rewrite the URL soon, run soon if small.
     pub(super) fn on_edit(&self) {
         self.validate();
-        let (valid, small, large) = {
+        let (valid, small) = {
             let st = self.st.borrow();
-            let valid = st.errors.is_empty();
-            let small = st.plan.is_some_and(|p| p.is_small());
-            (valid, small, valid && !small)
+            (st.errors.is_empty(), st.plan.is_some_and(|p| p.is_small()))
         };
         {
             let mut st = self.st.borrow_mut();
             if st.status != Status::Running {
-                st.status = if large { Status::Large } else { Status::Idle };
+                st.status = if valid && !small {
+                    Status::Large
+                } else {
+                    Status::Idle
+                };
             }
-            st.copy_status = None;
         }
-        self.els.copy_status.set_text_content(None);
+        self.exports.clear_status();
         self.render_status();
         self.url_timer.schedule(URL_DELAY_MS);
         if valid && small {
@@ -85,7 +83,7 @@ impl Page {
                     .as_ref()
                     .is_some_and(|s| s.args == args);
                 if !already {
-                    self.run_now();
+                    self.run_now(false);
                 }
             }
             Some(_) => {
@@ -96,72 +94,162 @@ impl Page {
         }
     }
 
-    /// Run / Enter / `r`: shows "Running…", lets the browser paint it, then runs.
+    /// Run / Enter / `r`: shows "Running…", lets the browser paint it, then runs and brings
+    /// the result into view.
     pub(super) fn request_run(&self) {
         self.auto_timer.cancel();
-        if self.st.borrow().status == Status::Running {
-            return;
-        }
-        if self.st.borrow().reading.is_some() {
-            return;
+        {
+            let st = self.st.borrow();
+            if st.status == Status::Running || st.reading.is_some() {
+                return;
+            }
         }
         self.validate();
         if !self.st.borrow().errors.is_empty() {
             self.st.borrow_mut().status = Status::Invalid;
             self.render_status();
-            self.form.borrow().focus_first_error();
+            self.reveal_first_error();
             return;
         }
         self.st.borrow_mut().status = Status::Running;
         self.render_status();
+        // Bigger than the auto-run size: in the Web Worker, with progress (background.rs).
+        if !self.st.borrow().plan.is_some_and(|p| p.is_small()) {
+            self.run_in_background();
+            return;
+        }
         let weak = self.weak.borrow().clone();
         let started = after_paint(move || {
             if let Some(page) = weak.upgrade() {
-                page.run_now();
+                page.run_now(true);
             }
         });
         if started.is_err() {
-            self.run_now();
+            self.run_now(true);
         }
     }
 
-    /// Runs the form's arguments now and shows the result (or the error).
-    fn run_now(&self) {
+    /// Focuses the first field with a message (or shows the message under the form).
+    fn reveal_first_error(&self) {
+        let has_field_error = self
+            .st
+            .borrow()
+            .errors
+            .iter()
+            .any(|(s, _)| matches!(s, super::Slot::Field(_)));
+        if has_field_error {
+            self.form.borrow().focus_first_error();
+        } else {
+            reveal(&self.els.error, Reveal::Nearest);
+        }
+    }
+
+    /// Runs the form's arguments now and shows the result (or the error); `asked`: the user
+    /// asked for it (Run, Enter, `r`), so the outcome is brought into view.
+    fn run_now(&self, asked: bool) {
         let args = self.current_args();
         let t0 = now_ms();
-        let result = {
+        let (result, input_name) = {
             let st = self.st.borrow();
-            compute(&args, st.input.as_ref())
+            let file = st
+                .input
+                .as_ref()
+                .filter(|f| args.positional.contains(&f.name));
+            let inputs = file
+                .map(|f| vec![(f.name.clone(), f.text.clone())])
+                .unwrap_or_default();
+            (
+                recipes::run_with_inputs(args.recipe, &args.raw(), inputs),
+                file.map(|f| f.name.clone()),
+            )
         };
         let ms = now_ms() - t0;
+        let ok = result.is_ok();
         match result {
             Ok(out) => {
-                let input_name = {
-                    let st = self.st.borrow();
-                    st.input
-                        .as_ref()
-                        .filter(|f| args.positional.first() == Some(&f.name))
-                        .map(|f| f.name.clone())
-                };
                 let mut st = self.st.borrow_mut();
                 st.shown = Some(Shown::new(args, input_name, out));
                 st.runs += 1;
                 st.status = Status::Done(ms);
                 st.failed = None;
-                st.copy_status = None;
             }
             Err(error) => {
-                let slot = slot_for(&self.form.borrow(), &error);
+                let slot = self.slot_for(&error);
                 let mut st = self.st.borrow_mut();
                 st.failed = Some((args, slot, Message::Recipe(error)));
                 st.status = Status::Failed;
             }
         }
+        self.exports.clear_status();
         self.validate();
         if let Err(e) = self.render_output() {
             web_sys::console::error_2(&"drills: result".into(), &e);
         }
         self.render_status();
         self.write_url();
+        if ok {
+            self.announce_result();
+        }
+        if asked {
+            if ok {
+                reveal(&self.els.output, Reveal::Start);
+            } else {
+                self.reveal_first_error();
+            }
+        }
+    }
+
+    /// The status line beside Run, the page's `data-state` and Run's `aria-busy`.
+    pub(super) fn render_status(&self) {
+        let st = self.st.borrow();
+        let (text, bad) = match &st.status {
+            Status::Idle => (String::new(), false),
+            Status::Running => (ctx::t("drills-running"), false),
+            Status::Large => (ctx::t("drills-large"), false),
+            Status::Invalid => (ctx::t("drills-invalid"), true),
+            Status::Reading(name) => (
+                t_strings("drills-reading", &[("name", name.clone())]),
+                false,
+            ),
+            Status::Done(ms) => (
+                t_strings("drills-done", &[("ms", format!("{}", ms.max(0.0).round()))]),
+                false,
+            ),
+            Status::Failed => (ctx::t("drills-failed"), true),
+        };
+        self.els.status.set_text_content(Some(&text));
+        let _ = self
+            .els
+            .status
+            .class_list()
+            .toggle_with_force("drills-status-bad", bad);
+        let running = st.status == Status::Running;
+        let _ = self
+            .els
+            .page
+            .set_attribute("data-state", if running { "running" } else { "ready" });
+        let _ = self
+            .els
+            .run
+            .set_attribute("aria-busy", if running { "true" } else { "false" });
+        drop(st);
+        self.render_stale();
+    }
+
+    /// The "values changed since this result" note.
+    pub(super) fn render_stale(&self) {
+        let st = self.st.borrow();
+        let stale = match (&st.shown, self.form.try_borrow()) {
+            (Some(shown), Ok(form)) => {
+                shown.args
+                    != crate::view::command_line::RunArgs::new(
+                        st.recipe.info.id,
+                        &form.fields,
+                        &st.texts,
+                    )
+            }
+            _ => false,
+        };
+        crate::ui::dom::show(&self.els.stale, stale && st.status != Status::Running);
     }
 }

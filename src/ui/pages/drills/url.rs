@@ -13,7 +13,8 @@ impl Page {
         self.url_timer.cancel();
         let texts = self.current_texts();
         let form = self.form.borrow();
-        let pairs = query::pairs(form.recipe, &form.fields, &texts);
+        let recipe = self.st.borrow().recipe.info.id;
+        let pairs = query::pairs(recipe, &form.fields, &texts);
         router::replace_query(&pairs);
     }
 

@@ -10,10 +10,10 @@
 //! ```
 //!
 //! The page is a struct of components, one file each, each owning its elements, its state,
-//! its drawing and its `relocalize`: [`arm`] (the arm view with its toolbar and workspace
-//! overlay), [`heat`] (the joint-space heatmap), [`sweep`] (the jacobian-2r plot),
-//! [`params`] (the parameters form), [`readouts`] (live numbers, the phone strip, the
-//! screen-reader summary) and [`exports`] (downloads, command lines, copy). This file holds
+//! its drawing and its `relocalize`: `arm` (the arm view with its toolbar and workspace
+//! overlay), `heat` (the joint-space heatmap), `sweep` (the jacobian-2r plot),
+//! `params` (the parameters form), `readouts` (live numbers, the phone strip, the
+//! screen-reader summary) and `exports` (downloads, command lines, copy). This file holds
 //! the shared state ([`State`], from the pure `crate::view::ik2r`) and wires the components:
 //! input goes to a component, the page updates the state, and the frame loop redraws what
 //! each change made dirty, once per animation frame (backgrounds only on parameter, size,

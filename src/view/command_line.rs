@@ -1,15 +1,29 @@
-//! The arguments of one drill run and the equivalent command lines:
-//! `bsv <id> <positional> [--flag value ...]` and `python <recipe>.py <positional>`.
+//! The arguments of one run and the equivalent command lines, from the recipe's facts and the
+//! form's texts: `bsv <id> <positional> [--flag value ...]` and `python <recipe>.py
+//! <positional>`, quoted for a POSIX shell so that a copied line runs as written.
 //!
 //! Positional values are written in order up to the last one that differs from its default,
 //! or, when all are defaults, as many as can be written before an empty one (traj-resample's
 //! path): `bsv pid-step 1.2 0.4 0.05 0.8 80`, `bsv traj-resample`, `bsv traj-resample '' 0.05`.
 //! Options are written only when they differ from their defaults; the Python recipes take no
-//! options, so their line carries the positional values only (the page says so when options
-//! are set).
+//! options, so their line carries the positional values only (pages say so when options are
+//! set).
 
-use super::fields::Field;
-use crate::ui::command_line::shell_word;
+use super::form::{typed, FieldDef};
+
+/// `text` as one POSIX shell word: as it is when it holds only plain characters, else in
+/// single quotes (`''` for an empty word).
+pub fn shell_word(text: &str) -> String {
+    let plain = !text.is_empty()
+        && text
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_.,+/:=@%".contains(c));
+    if plain {
+        text.to_string()
+    } else {
+        format!("'{}'", text.replace('\'', r"'\''"))
+    }
+}
 
 /// The arguments of one run, as the command line spells them.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -26,24 +40,19 @@ pub struct RunArgs {
 
 impl RunArgs {
     /// The run of `fields` with the texts typed in them (`None` or blank = the default).
-    pub fn new(recipe: &'static str, fields: &[Field], texts: &[Option<String>]) -> RunArgs {
+    pub fn new(recipe: &'static str, fields: &[FieldDef], texts: &[Option<String>]) -> RunArgs {
         let mut positional = Vec::new();
         let mut defaults = Vec::new();
         let mut flags = Vec::new();
         for (index, field) in fields.iter().enumerate() {
-            let typed = texts
-                .get(index)
-                .and_then(|t| t.as_deref())
-                .map(str::trim)
-                .filter(|t| !t.is_empty());
-            let value = typed.unwrap_or(field.spec.default);
+            let value = typed(texts, index).unwrap_or(field.default());
             if field.flag {
-                if value != field.spec.default {
-                    flags.push((field.spec.name.to_string(), value.to_string()));
+                if value != field.default() {
+                    flags.push((field.name().to_string(), value.to_string()));
                 }
             } else {
                 positional.push(value.to_string());
-                defaults.push(field.spec.default);
+                defaults.push(field.default());
             }
         }
         RunArgs {
@@ -101,27 +110,78 @@ impl RunArgs {
         words.extend(self.positional_words());
         words.join(" ")
     }
+
+    /// The options the Python line cannot carry, as `--name value` words (empty when none).
+    pub fn options_text(&self) -> String {
+        self.flags
+            .iter()
+            .map(|(n, v)| format!("--{n} {}", shell_word(v)))
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::super::fields::fields;
+    use super::super::form::recipe_fields;
     use super::*;
     use crate::recipes::{self, RECIPES};
-    use wasm_bindgen_test::wasm_bindgen_test as test;
 
     fn run_args(id: &'static str, texts: &[(&str, &str)]) -> RunArgs {
-        let fields = fields(recipes::find(id).unwrap().info);
+        let fields = recipe_fields(recipes::find(id).unwrap().info);
         let texts: Vec<Option<String>> = fields
             .iter()
             .map(|f| {
                 texts
                     .iter()
-                    .find(|(n, _)| *n == f.spec.name)
+                    .find(|(n, _)| *n == f.name())
                     .map(|(_, v)| v.to_string())
             })
             .collect();
         RunArgs::new(id, &fields, &texts)
+    }
+
+    /// Splits a shown line back into words as a POSIX shell would (single quotes and
+    /// backslashes outside them).
+    fn shell_split(line: &str) -> Vec<String> {
+        let mut words = Vec::new();
+        let mut word = String::new();
+        let mut quoted = false;
+        let mut any = false;
+        let mut chars = line.chars();
+        while let Some(c) = chars.next() {
+            match (c, quoted) {
+                ('\\', false) => word.extend(chars.next()),
+                ('\'', _) => {
+                    quoted = !quoted;
+                    any = true;
+                }
+                (' ', false) => {
+                    if any || !word.is_empty() {
+                        words.push(std::mem::take(&mut word));
+                    }
+                    any = false;
+                }
+                (c, _) => word.push(c),
+            }
+        }
+        if any || !word.is_empty() {
+            words.push(word);
+        }
+        words
+    }
+
+    #[test]
+    fn quotes_only_what_needs_it() {
+        assert_eq!(shell_word("0.12"), "0.12");
+        assert_eq!(shell_word("0.2,0.4,-0.3"), "0.2,0.4,-0.3");
+        assert_eq!(shell_word(""), "''");
+        assert_eq!(shell_word("my traj.csv"), "'my traj.csv'");
+        assert_eq!(shell_word("it's"), r"'it'\''s'");
+        assert_eq!(
+            shell_split(r"bsv x 'it'\''s' ''"),
+            vec!["bsv", "x", "it's", ""]
+        );
     }
 
     #[test]
@@ -159,6 +219,7 @@ mod tests {
             "python mujoco_pendulum_energy.py 2"
         );
         assert_eq!(pend.raw(), vec!["2", "--integrator", "rk4"]);
+        assert_eq!(pend.options_text(), "--integrator rk4");
         let sample = run_args("traj-resample", &[("dt", "0.05")]);
         assert_eq!(sample.bsv_command(), "bsv traj-resample '' 0.05");
         let file = run_args("traj-resample", &[("csv_path", "my traj.csv")]);
@@ -170,21 +231,16 @@ mod tests {
         // Parsing the written command back gives the same output as the page's raw arguments.
         for recipe in RECIPES {
             let id = recipe.info.id;
-            if id == "traj-resample" {
-                continue;
+            for texts in [vec![], vec![("seed", "42"), ("goal-x", "0.5")]] {
+                let args = run_args(id, &texts);
+                let words = shell_split(&args.bsv_command());
+                assert_eq!(&words[..2], &["bsv", id]);
+                assert_eq!(
+                    recipes::run(id, &words[2..]).unwrap(),
+                    recipes::run(id, &args.raw()).unwrap(),
+                    "{id}"
+                );
             }
-            let args = run_args(id, &[]);
-            let words: Vec<String> = args
-                .bsv_command()
-                .split(' ')
-                .skip(2)
-                .map(|w| w.trim_matches('\'').to_string())
-                .collect();
-            assert_eq!(
-                recipes::run(id, &words).unwrap(),
-                recipes::run(id, &args.raw()).unwrap(),
-                "{id}"
-            );
         }
     }
 }

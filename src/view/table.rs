@@ -1,6 +1,8 @@
 //! The table preview of a CSV file: its header and first rows (at most [`PREVIEW_ROWS`] rows
 //! and [`PREVIEW_COLUMNS`] columns, so that a million-row file costs one scan for the row
-//! count and nothing more), cells split as `csv.reader` does (quotes with `""` escapes).
+//! count and nothing more), cells split as `csv.reader` does (quotes with `""` escapes); and
+//! the rounded text of a cell ([`rounded`]) that tables show by default (downloads and the
+//! "exact" view keep the CSV's text).
 
 /// Data rows shown under the header.
 pub const PREVIEW_ROWS: usize = 50;
@@ -80,10 +82,69 @@ pub fn count_rows(text: &str) -> usize {
         .saturating_sub(1)
 }
 
+/// Significant digits of a rounded cell.
+pub const ROUNDED_DIGITS: usize = 6;
+
+/// A cell as a table shows it by default: a number with more than [`ROUNDED_DIGITS`]
+/// significant digits rounded to that many (trailing zeros dropped, the CSV's own notation
+/// kept otherwise: `0.018000000000000002` → `0.018`, `1.0` stays `1.0`, `-3.1415926535` →
+/// `-3.14159`, `1.23456789e-10` → `1.23457e-10`); anything else (words, `nan`, whole
+/// numbers, short decimals) as it is.
+pub fn rounded(cell: &str) -> String {
+    let text = cell.trim();
+    let Ok(value) = text.parse::<f64>() else {
+        return cell.to_string();
+    };
+    if !value.is_finite() || significant_digits(text) <= ROUNDED_DIGITS {
+        return cell.to_string();
+    }
+    let exponent = if value == 0.0 {
+        0
+    } else {
+        value.abs().log10().floor() as i32
+    };
+    let exp_form = text.contains(['e', 'E']) || !(-5..15).contains(&exponent);
+    if exp_form {
+        let s = format!("{:.*e}", ROUNDED_DIGITS - 1, value);
+        let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
+        return format!("{}e{exp}", trim_zeros(mantissa));
+    }
+    let decimals = (ROUNDED_DIGITS as i32 - 1 - exponent).max(0) as usize;
+    let s = format!("{value:.decimals$}");
+    let trimmed = trim_zeros(&s);
+    if trimmed.contains('.') || !text.contains('.') {
+        trimmed
+    } else {
+        // A decimal that rounds to a whole number keeps one decimal, as the CSV writes floats.
+        format!("{trimmed}.0")
+    }
+}
+
+/// Significant digits of a number's text (mantissa digits without leading zeros).
+fn significant_digits(text: &str) -> usize {
+    let mantissa = text.split(['e', 'E']).next().unwrap_or(text);
+    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    let digits = digits.trim_start_matches('0');
+    let digits = if mantissa.contains('.') {
+        digits
+    } else {
+        digits.trim_end_matches('0')
+    };
+    digits.len()
+}
+
+/// `"0.018000"` → `"0.018"`, `"2.000"` → `"2"`.
+fn trim_zeros(s: &str) -> String {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s.to_string()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use wasm_bindgen_test::wasm_bindgen_test as test;
 
     #[test]
     fn header_rows_and_counts() {
@@ -123,5 +184,37 @@ mod tests {
         );
         let p = preview(&wide);
         assert_eq!((p.header.len(), p.total_columns), (PREVIEW_COLUMNS, 40));
+    }
+
+    #[test]
+    fn rounded_cells_read_like_a_person_writes_them() {
+        assert_eq!(rounded("0.018000000000000002"), "0.018");
+        assert_eq!(rounded("0.30000000000000004"), "0.3");
+        assert_eq!(rounded("-3.141592653589793"), "-3.14159");
+        assert_eq!(rounded("1.0"), "1.0");
+        assert_eq!(rounded("0.05"), "0.05");
+        assert_eq!(rounded("800"), "800");
+        assert_eq!(rounded("123456789012"), "123456789012");
+        assert_eq!(rounded("1234.56789012"), "1234.57");
+        assert_eq!(rounded("0.9999999999999999"), "1.0");
+        assert_eq!(rounded("1.2345678901e-10"), "1.23457e-10");
+        assert_eq!(rounded("0.0000012345678901"), "1.23457e-6");
+        assert_eq!(rounded("nan"), "nan");
+        assert_eq!(rounded("example-row"), "example-row");
+        assert_eq!(rounded(""), "");
+        // Rounding never changes a value by more than half a unit of its sixth digit.
+        for text in [
+            "0.018000000000000002",
+            "-3.141592653589793",
+            "1234.56789012",
+            "7.77777777e5",
+        ] {
+            let exact: f64 = text.parse().unwrap();
+            let shown: f64 = rounded(text).parse().unwrap();
+            assert!(
+                (exact - shown).abs() <= exact.abs() * 5e-6,
+                "{text} -> {shown}"
+            );
+        }
     }
 }

@@ -1,0 +1,535 @@
+//! Long recipe runs off the main thread: a module Web Worker (`www/worker.js`) that loads the
+//! same `pkg/bsv_playground.js` + wasm as the page (no second build, no bundler) and runs the
+//! recipe with the same kernel code, so its files are byte for byte those of a run on the page.
+//!
+//! Two halves live here:
+//! - [`worker_run_recipe`] (`workerRunRecipe`), the export the worker script calls; it runs in
+//!   the worker and never touches the DOM. It returns each file's bytes, from which the worker
+//!   builds a `Blob` (so a 50 MB CSV is never decoded or copied on the main thread) plus the
+//!   file's first [`HEAD_LINES`] lines for a preview, the summary and the warnings, and the
+//!   messages already in English and Japanese (the worker has the same Fluent bundles).
+//! - [`run_recipe`] / [`Job`], used by pages on the main thread. One worker serves one job at
+//!   a time; it is started lazily and kept for the next job. Starting a job while another runs
+//!   cancels the other. [`Job::cancel`] (or dropping the `Job`) terminates the worker, so the
+//!   run stops at once even in the middle of a kernel loop; the next job starts a fresh one. A
+//!   message of a cancelled job that arrives late is ignored (every message carries its job
+//!   number).
+//!
+//! Messages, page → worker: `{ job, id, args: [..], names: [..], texts: [..] }`; worker →
+//! page: `{ job, type: "progress", done, total }` (at most ~10 a second), `{ job, type: "done",
+//! summary, warnings: [{en, ja}], i18n: [..], files: [{ name, blob, bytes, rows, head }] }`,
+//! `{ job, type: "error", param, en, ja, english, i18n }` (the recipe refused) or
+//! `{ job, type: "crash", message }` (the worker could not load or stopped).
+
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+
+use js_sys::{Array, Reflect, Uint8Array};
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{Blob, ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
+
+use crate::i18n::{FluentArg, I18n, Lang};
+use crate::recipes;
+use crate::ui::ctx;
+use crate::view::worker::{data_rows, head};
+
+/// The worker script, relative to `index.html`.
+const WORKER_URL: &str = "www/worker.js";
+
+/// Lines of each file (header included) that come back as text for previews.
+pub const HEAD_LINES: usize = 200;
+
+// ---------------------------------------------------------------------------------------------
+// In the worker.
+
+thread_local! {
+    /// The worker's own Fluent bundles (built on its first message that needs them).
+    static WORKER_I18N: I18n = I18n::new();
+}
+
+fn set(target: &JsValue, key: &str, value: &JsValue) -> Result<(), JsValue> {
+    Reflect::set(target, &JsValue::from_str(key), value).map(|_| ())
+}
+
+fn get(target: &JsValue, key: &str) -> JsValue {
+    Reflect::get(target, &JsValue::from_str(key)).unwrap_or(JsValue::UNDEFINED)
+}
+
+fn get_string(target: &JsValue, key: &str) -> String {
+    get(target, key).as_string().unwrap_or_default()
+}
+
+/// `{ en, ja }` of one message, formatted by `format` in each language, and the bundles'
+/// notes (missing messages) made meanwhile.
+fn both(format: impl Fn(&I18n, Lang) -> String) -> Result<(JsValue, Array), JsValue> {
+    WORKER_I18N.with(|i18n| {
+        let texts = js_sys::Object::new();
+        set(&texts, "en", &format(i18n, Lang::En).into())?;
+        set(&texts, "ja", &format(i18n, Lang::Ja).into())?;
+        let notes: Array = i18n
+            .take_warnings()
+            .into_iter()
+            .map(|n| JsValue::from_str(&n))
+            .collect();
+        Ok((texts.into(), notes))
+    })
+}
+
+/// `workerRunRecipe(id, args, names, texts, progress)`: runs recipe `id` with command-line
+/// style `args` and input files (`names[i]` holds `texts[i]`), calling `progress(done, total)`
+/// as rows are done. Called by `www/worker.js` only. Returns `{ ok: true, summary, warnings,
+/// i18n, files: [{ name, data: Uint8Array, rows, head }] }` or `{ ok: false, param, en, ja, english,
+/// i18n }`.
+#[wasm_bindgen(js_name = workerRunRecipe)]
+pub fn worker_run_recipe(
+    id: &str,
+    args: Vec<String>,
+    names: Vec<String>,
+    texts: Vec<String>,
+    progress: &js_sys::Function,
+) -> Result<JsValue, JsValue> {
+    let inputs: Vec<(String, String)> = names.into_iter().zip(texts).collect();
+    let report = |done: u64, total: u64| {
+        // Numbers, not BigInts: row counts stay far below 2^53.
+        let _ = progress.call2(
+            &JsValue::NULL,
+            &JsValue::from_f64(done as f64),
+            &JsValue::from_f64(total as f64),
+        );
+    };
+    let mut report = report;
+    let result = recipes::run_with_progress(id, &args, inputs, &mut report);
+    let out = js_sys::Object::new();
+    match result {
+        Ok(output) => {
+            set(&out, "ok", &JsValue::TRUE)?;
+            set(&out, "summary", &output.summary.as_str().into())?;
+            let files = Array::new();
+            for file in output.files {
+                let entry = js_sys::Object::new();
+                set(&entry, "name", &file.name.as_str().into())?;
+                set(&entry, "head", &head(&file.text, HEAD_LINES).into())?;
+                set(
+                    &entry,
+                    "rows",
+                    &JsValue::from_f64(data_rows(&file.text) as f64),
+                )?;
+                set(
+                    &entry,
+                    "data",
+                    &Uint8Array::from(file.text.as_bytes()).into(),
+                )?;
+                files.push(&entry);
+            }
+            set(&out, "files", &files)?;
+            let warnings = Array::new();
+            let notes = Array::new();
+            for warning in &output.warnings {
+                let args: Vec<(&str, FluentArg)> = warning
+                    .message_args()
+                    .into_iter()
+                    .map(|(name, value)| (name, FluentArg::Text(value)))
+                    .collect();
+                let (texts, more) =
+                    both(|i18n, lang| i18n.t_args(lang, warning.message_id(), &args))?;
+                warnings.push(&texts);
+                for note in more.iter() {
+                    notes.push(&note);
+                }
+            }
+            set(&out, "warnings", &warnings)?;
+            set(&out, "i18n", &notes)?;
+        }
+        Err(error) => {
+            let (texts, notes) = both(|i18n, lang| i18n.recipe_error(lang, &error))?;
+            set(&out, "ok", &JsValue::FALSE)?;
+            set(
+                &out,
+                "param",
+                &error.param().map_or(JsValue::NULL, JsValue::from_str),
+            )?;
+            set(&out, "en", &get(&texts, "en"))?;
+            set(&out, "ja", &get(&texts, "ja"))?;
+            set(&out, "english", &error.to_string().into())?;
+            set(&out, "i18n", &notes)?;
+        }
+    }
+    Ok(out.into())
+}
+
+// ---------------------------------------------------------------------------------------------
+// On the page.
+
+/// A message in both languages (the worker formats it, so the page can switch language while
+/// it is shown).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Localized {
+    pub en: String,
+    pub ja: String,
+}
+
+impl Localized {
+    /// The text in the current language.
+    pub fn text(&self) -> &str {
+        match ctx::lang() {
+            Lang::Ja => &self.ja,
+            Lang::En => &self.en,
+        }
+    }
+
+    fn from_js(value: &JsValue) -> Localized {
+        Localized {
+            en: get_string(value, "en"),
+            ja: get_string(value, "ja"),
+        }
+    }
+}
+
+/// A finished worker run.
+#[derive(Debug, Clone)]
+pub struct WorkerOutput {
+    /// Exactly what the recipe prints.
+    pub summary: String,
+    pub files: Vec<WorkerFile>,
+    /// What the recipe warns about (diverged, goal not reached...), localized.
+    pub warnings: Vec<Localized>,
+}
+
+impl WorkerOutput {
+    /// The file called `name`.
+    pub fn file(&self, name: &str) -> Option<&WorkerFile> {
+        self.files.iter().find(|f| f.name == name)
+    }
+}
+
+/// One file of a worker run: its bytes as a `Blob` (offer it with [`download`]; never read it
+/// whole on the main thread) and its first [`HEAD_LINES`] lines for a preview.
+#[derive(Debug, Clone)]
+pub struct WorkerFile {
+    pub name: String,
+    pub blob: Blob,
+    /// Size in bytes.
+    pub bytes: u64,
+    /// Data rows (non-empty lines after the header).
+    pub rows: u64,
+    /// The first [`HEAD_LINES`] lines (all of a shorter file), line ends included.
+    pub head: String,
+}
+
+/// Why a worker run gave no output.
+#[derive(Debug, Clone, PartialEq)]
+pub enum WorkerError {
+    /// The recipe refused its arguments or input: the kernel's message, the parameter it is
+    /// about (if any) and its English one-liner (the CLI's).
+    Recipe {
+        message: Localized,
+        param: Option<String>,
+        english: String,
+    },
+    /// The worker could not start or stopped (the browser's message).
+    Failed(String),
+}
+
+impl WorkerError {
+    /// The message in the current language.
+    pub fn text(&self) -> String {
+        match self {
+            WorkerError::Recipe { message, .. } => message.text().to_string(),
+            WorkerError::Failed(detail) => {
+                ctx::t_strings("kit-worker-failed", &[("detail", detail.clone())])
+            }
+        }
+    }
+
+    /// The parameter the error is about.
+    pub fn param(&self) -> Option<&str> {
+        match self {
+            WorkerError::Recipe { param, .. } => param.as_deref(),
+            WorkerError::Failed(_) => None,
+        }
+    }
+}
+
+type OnProgress = Rc<dyn Fn(u64, u64)>;
+type OnDone = Box<dyn FnOnce(Result<WorkerOutput, WorkerError>)>;
+
+/// The worker and its handlers (dropped only after a timer once retired: a handler may be the
+/// one retiring it).
+struct Host {
+    worker: Worker,
+    _on_message: Closure<dyn FnMut(MessageEvent)>,
+    _on_error: Closure<dyn FnMut(ErrorEvent)>,
+}
+
+struct Active {
+    job: u32,
+    on_progress: OnProgress,
+    on_done: Option<OnDone>,
+}
+
+thread_local! {
+    static HOST: RefCell<Option<Host>> = const { RefCell::new(None) };
+    static RETIRED: RefCell<Vec<Host>> = const { RefCell::new(Vec::new()) };
+    static ACTIVE: RefCell<Option<Active>> = const { RefCell::new(None) };
+    static NEXT_JOB: Cell<u32> = const { Cell::new(1) };
+}
+
+/// A running worker job. [`cancel`](Job::cancel) or dropping it stops the run (its `on_done`
+/// is then never called); after it finished both do nothing.
+#[derive(Debug)]
+pub struct Job {
+    id: u32,
+}
+
+impl Job {
+    /// Stops the run now: terminates the worker (a fresh one serves the next job).
+    pub fn cancel(&self) {
+        let mine = ACTIVE.with(|a| {
+            let mut active = a.borrow_mut();
+            if active.as_ref().is_some_and(|x| x.job == self.id) {
+                *active = None;
+                true
+            } else {
+                false
+            }
+        });
+        if mine {
+            retire_host();
+        }
+    }
+
+    /// Whether the run has neither finished nor been cancelled.
+    pub fn is_running(&self) -> bool {
+        ACTIVE.with(|a| a.borrow().as_ref().is_some_and(|x| x.job == self.id))
+    }
+}
+
+impl Drop for Job {
+    fn drop(&mut self) {
+        self.cancel();
+    }
+}
+
+/// Terminates the current worker and drops its handlers soon (not now: this may run inside one
+/// of them).
+fn retire_host() {
+    let Some(host) = HOST.with(|h| h.borrow_mut().take()) else {
+        return;
+    };
+    host.worker.terminate();
+    host.worker.set_onmessage(None);
+    host.worker.set_onerror(None);
+    RETIRED.with(|r| r.borrow_mut().push(host));
+    let clear = Closure::once_into_js(|| RETIRED.with(|r| r.borrow_mut().clear()));
+    if let Some(window) = web_sys::window() {
+        let _ =
+            window.set_timeout_with_callback_and_timeout_and_arguments_0(clear.unchecked_ref(), 0);
+    }
+}
+
+/// Ends the active job `job` (if it still is) and hands `result` to its `on_done`.
+fn finish(job: u32, result: Result<WorkerOutput, WorkerError>) {
+    let done = ACTIVE.with(|a| {
+        let mut active = a.borrow_mut();
+        if active.as_ref().is_some_and(|x| x.job == job) {
+            active.take().and_then(|x| x.on_done)
+        } else {
+            None
+        }
+    });
+    if let Some(on_done) = done {
+        on_done(result);
+    }
+}
+
+/// Logs the worker's i18n notes as the page's own are logged (`i18n: ...`).
+fn log_notes(data: &JsValue) {
+    for note in Array::from(&get(data, "i18n")).iter() {
+        if let Some(note) = note.as_string() {
+            web_sys::console::warn_1(&format!("i18n: {note}").into());
+        }
+    }
+}
+
+fn output_of(data: &JsValue) -> Result<WorkerOutput, JsValue> {
+    let mut files = Vec::new();
+    for entry in Array::from(&get(data, "files")).iter() {
+        files.push(WorkerFile {
+            name: get_string(&entry, "name"),
+            blob: get(&entry, "blob").dyn_into::<Blob>()?,
+            bytes: get(&entry, "bytes").as_f64().unwrap_or(0.0) as u64,
+            rows: get(&entry, "rows").as_f64().unwrap_or(0.0) as u64,
+            head: get_string(&entry, "head"),
+        });
+    }
+    let warnings = Array::from(&get(data, "warnings"))
+        .iter()
+        .map(|w| Localized::from_js(&w))
+        .collect();
+    Ok(WorkerOutput {
+        summary: get_string(data, "summary"),
+        files,
+        warnings,
+    })
+}
+
+fn on_message(event: MessageEvent) {
+    let data = event.data();
+    let Some(job) = get(&data, "job").as_f64().map(|j| j as u32) else {
+        return;
+    };
+    let kind = get_string(&data, "type");
+    match kind.as_str() {
+        "progress" => {
+            let callback = ACTIVE.with(|a| {
+                a.borrow()
+                    .as_ref()
+                    .filter(|x| x.job == job)
+                    .map(|x| x.on_progress.clone())
+            });
+            if let Some(callback) = callback {
+                let number = |k| get(&data, k).as_f64().unwrap_or(0.0).max(0.0) as u64;
+                callback(number("done"), number("total"));
+            }
+        }
+        "done" => {
+            log_notes(&data);
+            let result = output_of(&data).map_err(|e| {
+                WorkerError::Failed(e.as_string().unwrap_or_else(|| format!("{e:?}")))
+            });
+            finish(job, result);
+        }
+        "error" => {
+            log_notes(&data);
+            let param = get(&data, "param").as_string();
+            finish(
+                job,
+                Err(WorkerError::Recipe {
+                    message: Localized::from_js(&data),
+                    param,
+                    english: get_string(&data, "english"),
+                }),
+            );
+        }
+        "crash" => {
+            // The wasm instance in the worker may be unusable now: the next job gets a fresh one.
+            let is_active = ACTIVE.with(|a| a.borrow().as_ref().is_some_and(|x| x.job == job));
+            if is_active {
+                retire_host();
+            }
+            finish(job, Err(WorkerError::Failed(get_string(&data, "message"))));
+        }
+        _ => {}
+    }
+}
+
+fn on_error(event: ErrorEvent) {
+    // The script or its imports failed to load, or an error escaped the worker's handler.
+    event.prevent_default();
+    let job = ACTIVE.with(|a| a.borrow().as_ref().map(|x| x.job));
+    retire_host();
+    if let Some(job) = job {
+        let message = event.message();
+        let detail = if message.is_empty() {
+            WORKER_URL.to_string()
+        } else {
+            message
+        };
+        finish(job, Err(WorkerError::Failed(detail)));
+    }
+}
+
+fn host_worker() -> Result<Worker, JsValue> {
+    if let Some(worker) = HOST.with(|h| h.borrow().as_ref().map(|h| h.worker.clone())) {
+        return Ok(worker);
+    }
+    let options = WorkerOptions::new();
+    options.set_type(WorkerType::Module);
+    let worker = Worker::new_with_options(WORKER_URL, &options)?;
+    let on_message = Closure::<dyn FnMut(MessageEvent)>::new(on_message);
+    let on_error = Closure::<dyn FnMut(ErrorEvent)>::new(on_error);
+    worker.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
+    worker.set_onerror(Some(on_error.as_ref().unchecked_ref()));
+    HOST.with(|h| {
+        *h.borrow_mut() = Some(Host {
+            worker: worker.clone(),
+            _on_message: on_message,
+            _on_error: on_error,
+        })
+    });
+    Ok(worker)
+}
+
+fn strings(items: impl IntoIterator<Item = String>) -> Array {
+    items.into_iter().map(|s| JsValue::from_str(&s)).collect()
+}
+
+/// Runs recipe `id` with command-line style `args` and input files `(name, text)` in the
+/// worker. `on_progress(done, total)` is called as rows are done (about 10 times a second at
+/// most); `on_done` once with the output or the error, unless the job is cancelled first.
+/// A job already running is cancelled.
+pub fn run_recipe(
+    id: &str,
+    args: Vec<String>,
+    inputs: Vec<(String, String)>,
+    on_progress: impl Fn(u64, u64) + 'static,
+    on_done: impl FnOnce(Result<WorkerOutput, WorkerError>) + 'static,
+) -> Result<Job, JsValue> {
+    let running = ACTIVE.with(|a| a.borrow_mut().take()).is_some();
+    if running {
+        retire_host();
+    }
+    let worker = host_worker()?;
+    let job = NEXT_JOB.with(|n| {
+        let job = n.get();
+        n.set(job.wrapping_add(1).max(1));
+        job
+    });
+    let (names, texts): (Vec<String>, Vec<String>) = inputs.into_iter().unzip();
+    let message = js_sys::Object::new();
+    set(&message, "job", &JsValue::from_f64(f64::from(job)))?;
+    set(&message, "id", &id.into())?;
+    set(&message, "args", &strings(args))?;
+    set(&message, "names", &strings(names))?;
+    set(&message, "texts", &strings(texts))?;
+    ACTIVE.with(|a| {
+        *a.borrow_mut() = Some(Active {
+            job,
+            on_progress: Rc::new(on_progress),
+            on_done: Some(Box::new(on_done)),
+        })
+    });
+    if let Err(e) = worker.post_message(&message) {
+        ACTIVE.with(|a| a.borrow_mut().take());
+        retire_host();
+        return Err(e);
+    }
+    Ok(Job { id: job })
+}
+
+/// Offers a worker file for download: an object URL of its `Blob` on a temporary
+/// `<a download>` (nothing is read or copied on the main thread, whatever the size).
+pub fn download(file: &WorkerFile) -> Result<(), JsValue> {
+    let document = crate::ui::dom::document()?;
+    let anchor = document
+        .create_element("a")?
+        .dyn_into::<web_sys::HtmlAnchorElement>()?;
+    let url = web_sys::Url::create_object_url_with_blob(&file.blob)?;
+    anchor.set_href(&url);
+    anchor.set_download(&file.name);
+    anchor.set_attribute("hidden", "")?;
+    let body = document
+        .body()
+        .ok_or_else(|| JsValue::from_str("no body"))?;
+    body.append_child(&anchor)?;
+    anchor.click();
+    anchor.remove();
+    // Revoke later: the download reads the URL after the click returns.
+    let revoke = Closure::once_into_js(move || {
+        let _ = web_sys::Url::revoke_object_url(&url);
+    });
+    crate::ui::dom::window()?
+        .set_timeout_with_callback_and_timeout_and_arguments_0(revoke.unchecked_ref(), 60_000)?;
+    Ok(())
+}
