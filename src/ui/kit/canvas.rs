@@ -151,17 +151,11 @@ impl LayeredCanvas {
         (top.css_w, top.css_h)
     }
 
-    /// All layers flattened into one new canvas (for a PNG export).
-    pub fn flatten(&self) -> Result<HtmlCanvasElement, JsValue> {
-        let out = Layer::offscreen(&dom::document()?)?;
-        let base = self.layer(0);
-        out.canvas.set_width(base.canvas.width());
-        out.canvas.set_height(base.canvas.height());
-        for layer in &self.layers {
-            out.ctx
-                .draw_image_with_html_canvas_element(&layer.canvas, 0.0, 0.0)?;
-        }
-        Ok(out.canvas)
+    /// All layers composited on `background` into one new canvas (for a PNG export with
+    /// `kit::png::download`).
+    pub fn flatten(&self, background: &str) -> Result<HtmlCanvasElement, JsValue> {
+        let layers: Vec<&HtmlCanvasElement> = self.layers.iter().map(|l| &l.canvas).collect();
+        super::png::flatten(&layers, background)
     }
 }
 

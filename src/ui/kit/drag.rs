@@ -80,6 +80,11 @@ struct Inner<H> {
     /// A touch that may become a tap: pointer id, where, when.
     maybe_tap: Cell<Option<(i32, DVec2, f64)>>,
     overlay: RefCell<Vec<HtmlElement>>,
+    /// The style values last written to each overlay element (only changes are written).
+    written: RefCell<Vec<[String; 7]>>,
+    /// The surface's offset in the stage's padding box, measured once per layout (a
+    /// `getBoundingClientRect` after the frame's writes would force a synchronous layout).
+    offset: Cell<Option<DVec2>>,
 }
 
 /// A stage listener's body.
@@ -125,6 +130,8 @@ impl<H: Copy + PartialEq + 'static> Drag<H> {
             active: Cell::new(None),
             maybe_tap: Cell::new(None),
             overlay: RefCell::new(Vec::new()),
+            written: RefCell::new(Vec::new()),
+            offset: Cell::new(None),
         });
         let hit = Rc::new(hit);
         let on = Rc::new(on);
@@ -268,31 +275,56 @@ impl<H: Copy + PartialEq + 'static> Drag<H> {
             }
             overlay.push(el);
         }
-        // The surface may sit inside the stage's border: offset by its position.
-        let s = self.inner.stage.get_bounding_client_rect();
-        let c = self.inner.surface.get_bounding_client_rect();
-        let (dx, dy) = (
-            c.left() - s.left() - f64::from(self.inner.stage.client_left()),
-            c.top() - s.top() - f64::from(self.inner.stage.client_top()),
-        );
-        for (i, el) in overlay.iter().enumerate() {
-            let st = el.style();
-            match shapes.get(i) {
+        let offset = match self.inner.offset.get() {
+            Some(o) => o,
+            None => {
+                // The surface may sit inside the stage's border: offset by its position.
+                let s = self.inner.stage.get_bounding_client_rect();
+                let c = self.inner.surface.get_bounding_client_rect();
+                let o = DVec2::new(
+                    c.left() - s.left() - f64::from(self.inner.stage.client_left()),
+                    c.top() - s.top() - f64::from(self.inner.stage.client_top()),
+                );
+                self.inner.offset.set(Some(o));
+                o
+            }
+        };
+        let mut written = self.inner.written.borrow_mut();
+        written.resize_with(overlay.len(), Default::default);
+        for ((i, el), last) in overlay.iter().enumerate().zip(written.iter_mut()) {
+            let next: [String; 7] = match shapes.get(i) {
                 Some(shape) => {
                     let b = shape.overlay_box();
-                    let _ = st.set_property("display", "block");
-                    let _ = st.set_property("left", &format!("{:.1}px", b.left + dx));
-                    let _ = st.set_property("top", &format!("{:.1}px", b.top + dy));
-                    let _ = st.set_property("width", &format!("{:.1}px", b.width));
-                    let _ = st.set_property("height", &format!("{:.1}px", b.height));
-                    let _ = st.set_property("border-radius", &format!("{:.1}px", b.radius));
-                    let _ = st.set_property("transform", &format!("rotate({:.4}rad)", b.angle_rad));
+                    [
+                        "block".to_string(),
+                        format!("{:.1}px", b.left + offset.x),
+                        format!("{:.1}px", b.top + offset.y),
+                        format!("{:.1}px", b.width),
+                        format!("{:.1}px", b.height),
+                        format!("{:.1}px", b.radius),
+                        format!("rotate({:.4}rad)", b.angle_rad),
+                    ]
                 }
                 None => {
-                    let _ = st.set_property("display", "none");
+                    let mut hidden: [String; 7] = last.clone();
+                    hidden[0] = "none".to_string();
+                    hidden
+                }
+            };
+            let st = el.style();
+            for (k, (value, prev)) in OVERLAY_PROPS.iter().zip(next.iter().zip(last.iter())) {
+                if value != prev {
+                    let _ = st.set_property(k, value);
                 }
             }
+            *last = next;
         }
+    }
+
+    /// The stage or surface moved or changed size (a layout): the next
+    /// [`Drag::set_handles`] measures the surface's offset again.
+    pub fn relayout(&self) {
+        self.inner.offset.set(None);
     }
 
     /// The stage's cursor while nothing is held (`""`: the stylesheet's).
@@ -302,6 +334,17 @@ impl<H: Copy + PartialEq + 'static> Drag<H> {
         }
     }
 }
+
+/// The overlay style properties [`Drag::set_handles`] writes, in its value order.
+const OVERLAY_PROPS: [&str; 7] = [
+    "display",
+    "left",
+    "top",
+    "width",
+    "height",
+    "border-radius",
+    "transform",
+];
 
 fn set_cursor(stage: &Element, cursor: &str) {
     if let Some(s) = stage.dyn_ref::<HtmlElement>() {

@@ -232,6 +232,9 @@ impl ArmView {
     /// Sizes the layers and fits the view to the arm (and the workspace grid when shown).
     pub fn layout(&mut self, st: &State) {
         self.canvas.fit();
+        if let Some(d) = &self.drag {
+            d.relayout();
+        }
         let (w, h) = self.canvas.size();
         let ws_half = st.show_ws.then_some(st.params.half_mm / 1000.0);
         self.xf = ViewXf::fit(w, h, extent_m(&st.params.arm(), ws_half));
@@ -583,7 +586,7 @@ impl ArmView {
 
     /// The arm view (both layers) as one canvas, for the PNG download.
     pub fn flatten(&self) -> Result<HtmlCanvasElement, JsValue> {
-        self.canvas.flatten()
+        self.canvas.flatten(colour::BG)
     }
 }
 

@@ -14,7 +14,9 @@ use super::{role, Page};
 use crate::ui::clipboard;
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom::{self, show, Listener};
-use crate::view::ik2r::{export_commands, export_csv, ExportError, State, ARM_PNG, EXPORTS};
+use crate::view::ik2r::{
+    export_commands, export_csv, ExportError, Params, State, ARM_PNG, EXPORTS,
+};
 
 /// The exports component.
 pub(super) struct Exports {
@@ -24,6 +26,9 @@ pub(super) struct Exports {
     copied: Rc<Cell<Option<&'static str>>>,
     /// The command lines as shown (python, bsv for each export), to skip unchanged writes.
     shown: Vec<String>,
+    /// The parameters and q2 the shown command lines were made for (a drag frame that
+    /// changed neither formats nothing).
+    shown_for: Option<(Params, f64)>,
     /// The last download error per file (re-rendered on a language switch).
     failed: Vec<(String, String)>,
 }
@@ -35,6 +40,7 @@ impl Exports {
             copy_status: role(root, "copy-status")?,
             copied: Rc::new(Cell::new(None)),
             shown: Vec::new(),
+            shown_for: None,
             failed: Vec::new(),
         })
     }
@@ -48,7 +54,7 @@ impl Exports {
                     p.arm
                         .borrow()
                         .flatten()
-                        .and_then(|c| crate::ui::download::download_canvas_png(&c, ARM_PNG))
+                        .and_then(|c| crate::ui::kit::png::download(&c, ARM_PNG))
                 } else {
                     csv_download(&file, &st)
                 };
@@ -115,6 +121,11 @@ impl Exports {
     /// The command lines under the downloads (only the changed ones are written; the
     /// jacobian-2r one follows the pose's q2).
     pub fn update_commands(&mut self, st: &State) {
+        let key = (st.params, st.q2);
+        if self.shown_for == Some(key) {
+            return;
+        }
+        self.shown_for = Some(key);
         let mut shown = Vec::with_capacity(2 * EXPORTS.len());
         for export in EXPORTS {
             let (python, bsv) = export_commands(&export, &st.params, st.q2);

@@ -118,6 +118,9 @@ impl HeatPanel {
 
     pub fn layout(&mut self, ink: Ink) {
         self.map.fit(ink);
+        if let Some(d) = &self.drag {
+            d.relayout();
+        }
         let lay = &self.map.layout;
         let h = &self.top;
         let _ = h.set_attribute("data-plot-x", &lay.x.to_string());
