@@ -171,7 +171,7 @@ const WALLED_1M: &[&str] = &[
     "0.8,0.8",
 ];
 
-/// The walled-in world of [`WALLS`] with `max_iter` iterations.
+/// The walled-in world of `WALLS` with `max_iter` iterations.
 pub fn walled_setup(max_iter: usize) -> crate::recipes::rrt_2d::RrtSetup {
     use crate::recipes::rrt_2d::{Obstacle, RrtParams, RrtSetup, RrtWorld};
     let boxes = WALLS.chunks(2).map(|pair| {

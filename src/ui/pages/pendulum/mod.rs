@@ -4,9 +4,9 @@
 //! fill in as it swings, with the phase portrait and its separatrix; a compare switch runs
 //! Euler and RK4 side by side from the same state.
 //!
-//! The page is a struct of components, one file each: [`view`] (the pendulum drawn to
-//! scale), [`plots`], [`params`] (the validated form), [`readouts`], [`exports`] (CSV, PNG,
-//! command lines) and [`markup`] (with the explanation). This file holds the run ([`Sim`],
+//! The page is a struct of components, one file each: `view` (the pendulum drawn to
+//! scale), `plots`, `params` (the validated form), `readouts`, `exports` (CSV, PNG,
+//! command lines) and `markup` (with the explanation). This file holds the run ([`Sim`],
 //! the stepper's model, from the pure `crate::view::pendulum`) and wires them.
 
 mod exports;
