@@ -69,6 +69,12 @@ fn power_of_ten(a: f64) -> String {
     format!("{mantissa} × 10{sup}")
 }
 
+/// A whole number with its digits in groups of three (`1048576` → `"1,048,576"`), as people
+/// write counts in English and Japanese alike.
+pub fn group_u64(n: u64) -> String {
+    group_digits(&n.to_string())
+}
+
 fn group_digits(digits: &str) -> String {
     let mut out = String::with_capacity(digits.len() + digits.len() / 3);
     for (i, c) in digits.chars().enumerate() {

@@ -44,15 +44,7 @@ impl Clock {
 /// Digits in groups of three with commas (`1048576` → `1,048,576`), in English and Japanese
 /// alike.
 pub fn group_digits(n: u64) -> String {
-    let digits = n.to_string();
-    let mut out = String::with_capacity(digits.len() + digits.len() / 3);
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
+    crate::pyfmt::group_u64(n)
 }
 
 /// The panel for `done` of `total` rows after `elapsed_ms` milliseconds (a total of 0 means

@@ -8,15 +8,7 @@ pub fn about_id(recipe: &str) -> String {
 
 /// `1234567` → `"1,234,567"` (the grouping reads the same in English and Japanese).
 pub fn group(n: u64) -> String {
-    let digits = n.to_string();
-    let mut out = String::with_capacity(digits.len() + digits.len() / 3);
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
+    crate::pyfmt::group_u64(n)
 }
 
 /// A size in bytes for reading: `512 bytes`-style counts stay exact below 1 KiB, then one
