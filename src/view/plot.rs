@@ -1,6 +1,6 @@
 //! The pure part of the kit's plot (`ui::kit::plot`): linear scales between data and pixels,
-//! "nice" 1-2-5 ticks and their labels, y ranges that fit the data, the sample nearest a
-//! cursor, and min/max decimation per pixel column (a series of a million samples draws as at
+//! "nice" 1-2-5 ticks and their labels, log₁₀ axes (range and decade labels), y ranges
+//! that fit the data, the sample nearest a cursor, and min/max decimation per pixel column (a series of a million samples draws as at
 //! most four points per column and looks the same).
 
 /// A linear map from a data interval to a pixel interval (either may be reversed: y pixels
@@ -102,6 +102,52 @@ pub fn tick_label(v: f64, step: f64) -> String {
 fn is_half_step(step: f64) -> bool {
     let m = step / 10f64.powf(step.log10().floor());
     (m - 2.5).abs() < 1e-9
+}
+
+/// The axis range of a log₁₀ axis over the data range `range`: `(log₁₀ lo, log₁₀ hi)`; a
+/// range that is not positive becomes `1e-12..1` (its positive end kept when it has one).
+pub fn log_axis_range(range: (f64, f64)) -> (f64, f64) {
+    let (lo, hi) = (range.0.min(range.1), range.0.max(range.1));
+    let usable = |v: f64| v > 0.0 && v.is_finite();
+    let (lo, hi) = match (usable(lo), usable(hi)) {
+        (true, true) => (lo, hi),
+        (false, true) => (hi.min(1.0) * 1e-12, hi),
+        _ => (1e-12, 1.0),
+    };
+    let (a, b) = (lo.log10(), hi.log10());
+    if range.0 <= range.1 {
+        (a, b)
+    } else {
+        (b, a)
+    }
+}
+
+/// The label of tick `v` on a log₁₀ axis: a whole decade as `10⁻⁶`, `1`, `10`, `10³`;
+/// anything else as the value it stands for (`2.0e-5`, `0.5`).
+pub fn log_tick_label(v: f64) -> String {
+    if !v.is_finite() {
+        return String::new();
+    }
+    let k = v.round();
+    if (v - k).abs() > 1e-9 {
+        let x = 10f64.powf(v);
+        return tick_label(x, x);
+    }
+    match k as i64 {
+        0 => "1".to_string(),
+        1 => "10".to_string(),
+        e => {
+            const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+            let mut s = String::from("10");
+            if e < 0 {
+                s.push('⁻');
+            }
+            for d in e.unsigned_abs().to_string().bytes() {
+                s.push(SUP[usize::from(d - b'0')]);
+            }
+            s
+        }
+    }
 }
 
 /// A y range holding every finite value with `pad` (a fraction of the span) on both sides;
@@ -218,6 +264,21 @@ mod tests {
         assert_eq!(tick_label(200.0, 200.0), "200");
         assert_eq!(tick_label(0.0, 0.1), "0");
         assert_eq!(tick_label(2.0e7, 1.0e7), "2.0e7");
+    }
+
+    #[test]
+    fn log_axes_in_decades() {
+        assert_eq!(log_axis_range((1e-12, 100.0)), (-12.0, 2.0));
+        assert_eq!(log_axis_range((10.0, 0.001)), (1.0, -3.0));
+        assert_eq!(log_axis_range((0.0, 100.0)), (-12.0, 2.0));
+        assert_eq!(log_axis_range((-1.0, 0.0)), (-12.0, 0.0));
+        assert_eq!(log_tick_label(-12.0), "10⁻¹²");
+        assert_eq!(log_tick_label(-6.000000000001), "10⁻⁶");
+        assert_eq!(log_tick_label(0.0), "1");
+        assert_eq!(log_tick_label(1.0), "10");
+        assert_eq!(log_tick_label(3.0), "10³");
+        assert_eq!(log_tick_label(2f64.log10()), "2");
+        assert_eq!(log_tick_label(f64::NAN), "");
     }
 
     #[test]

@@ -9,6 +9,10 @@
 //! a live trace costs what it adds, not its history; long series are min/max-decimated per
 //! pixel column) and the cursor (redrawn alone when it moves).
 //!
+//! A panel's y axis may be logarithmic ([`Plot::set_log_y`]): its range and data stay in
+//! data units (positive), the axis is drawn in decades (`10⁻⁶`), and a value ≤ 0 sits on the
+//! bottom edge. Series with an empty name have no legend entry.
+//!
 //! ```ignore
 //! let mut plot = Plot::new(&stage)?;                 // a stage with three <canvas>
 //! plot.set_spec(spec);                               // axes, panels, series
@@ -24,7 +28,9 @@ use web_sys::Element;
 
 use super::canvas::{solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
-use crate::view::plot::{decimate, nice_step, tick_label, LinearScale};
+use crate::view::plot::{
+    decimate, log_axis_range, log_tick_label, nice_step, tick_label, LinearScale,
+};
 
 use glam::DVec2;
 
@@ -102,6 +108,8 @@ pub struct Plot {
     /// How many points of each series the data layer shows.
     drawn: Vec<Vec<usize>>,
     areas: Vec<Area>,
+    /// Panels whose y axis is logarithmic.
+    log_y: Vec<bool>,
     cursor: Option<f64>,
     axes_dirty: bool,
     data_dirty: bool,
@@ -127,6 +135,7 @@ impl Plot {
             data: Vec::new(),
             drawn: Vec::new(),
             areas: Vec::new(),
+            log_y: Vec::new(),
             cursor: None,
             axes_dirty: true,
             data_dirty: true,
@@ -149,6 +158,34 @@ impl Plot {
         self.axes_dirty = true;
         self.data_dirty = true;
         self.cursor_dirty = true;
+    }
+
+    /// Makes the y axis of `panel` logarithmic (base 10) or linear (the default). The panel's
+    /// range stays in data units and must be positive to be logarithmic (else it is widened to
+    /// `1e-12..1`).
+    pub fn set_log_y(&mut self, panel: usize, log: bool) {
+        if self.log_y.len() <= panel {
+            self.log_y.resize(panel + 1, false);
+        }
+        if self.log_y[panel] != log {
+            self.log_y[panel] = log;
+            self.axes_dirty = true;
+            self.data_dirty = true;
+        }
+    }
+
+    /// Whether the y axis of `panel` is logarithmic.
+    pub fn is_log_y(&self, panel: usize) -> bool {
+        self.log_y.get(panel).copied().unwrap_or(false)
+    }
+
+    /// The y range of `panel` on its axis (log₁₀ of the data range on a log axis).
+    fn axis_y(&self, panel: usize, range: (f64, f64)) -> (f64, f64) {
+        if self.is_log_y(panel) {
+            log_axis_range(range)
+        } else {
+            range
+        }
     }
 
     /// Replaces the points of one series.
@@ -287,8 +324,16 @@ impl Plot {
         self.areas.clear();
         for (i, (area, panel)) in panels.iter().zip(&spec.panels).enumerate() {
             let bottom = i + 1 == spec.panels.len();
-            let y = panel.y.range;
+            let log = self.is_log_y(i);
+            let y = self.axis_y(i, panel.y.range);
             let y_step = nice_step(y.0, y.1, 10);
+            // A log axis: ticks on whole decades where the span allows (plotters picks 1-2-5
+            // steps of at most this many labels).
+            let y_labels = if log {
+                ((y.1 - y.0).abs().floor() as usize + 1).clamp(2, 8)
+            } else {
+                5
+            };
             let mut chart = ChartBuilder::on(area)
                 .margin(margin)
                 .margin_top(margin + legend_row)
@@ -302,6 +347,9 @@ impl Plot {
             let y_desc = panel.y.desc();
             let x_fmt = |v: &f64| tick_label(*v, x_step);
             let y_fmt = |v: &f64| {
+                if log {
+                    return log_tick_label(*v);
+                }
                 // Ticks computed as sums can miss zero by a rounding error.
                 if v.abs() < (y.1 - y.0).abs() * 1e-9 {
                     "0".to_string()
@@ -311,7 +359,7 @@ impl Plot {
             };
             let mut mesh = chart.configure_mesh();
             mesh.x_labels(6)
-                .y_labels(5)
+                .y_labels(y_labels)
                 .x_label_formatter(&x_fmt)
                 .y_label_formatter(&y_fmt)
                 .y_desc(y_desc.as_str())
@@ -321,6 +369,10 @@ impl Plot {
                 .bold_line_style(RGBColor(214, 219, 227));
             if bottom {
                 mesh.x_desc(x_desc.as_str());
+            }
+            if log {
+                // Linear subdivisions of decades would mislead.
+                mesh.y_max_light_lines(0);
             }
             mesh.draw().map_err(err)?;
             let (xr, yr) = chart.plotting_area().get_pixel_range();
@@ -344,7 +396,7 @@ impl Plot {
             let cy = area.y0 - f64::from(legend_row) / dpr / 2.0 - 1.0;
             let mut x = area.x1;
             // Right to left, so the last series ends at the right edge.
-            for s in panel.series.iter().rev() {
+            for s in panel.series.iter().rev().filter(|s| !s.name.is_empty()) {
                 let w = ctx.measure_text(&s.name).map_or(40.0, |m| m.width());
                 x -= w;
                 ctx.set_fill_style_str("#3a4250");
@@ -366,7 +418,7 @@ impl Plot {
     fn scales(&self, panel: usize) -> Option<(LinearScale, LinearScale, Area)> {
         let spec = self.spec.as_ref()?;
         let area = *self.areas.get(panel)?;
-        let y = spec.panels.get(panel)?.y.range;
+        let y = self.axis_y(panel, spec.panels.get(panel)?.y.range);
         Some((
             LinearScale::new(spec.x.range, (area.x0, area.x1)),
             LinearScale::new(y, (area.y1, area.y0)),
@@ -391,6 +443,20 @@ impl Plot {
         for (p, panel) in spec.panels.iter().enumerate() {
             let Some((xs, ys, area)) = self.scales(p) else {
                 continue;
+            };
+            let log = self.is_log_y(p);
+            // A log axis: log₁₀ of the value; a value ≤ 0 (no logarithm) on the bottom edge.
+            let y_px = |y: f64| {
+                let v = if !log {
+                    y
+                } else if y > 0.0 {
+                    y.log10()
+                } else if y.is_nan() {
+                    f64::NAN
+                } else {
+                    ys.domain.0.min(ys.domain.1)
+                };
+                ys.map(v)
             };
             ctx.save();
             ctx.begin_path();
@@ -430,7 +496,7 @@ impl Plot {
                             pen_down = false;
                             continue;
                         }
-                        let (px, py) = (xs.map(x), ys.map(y).clamp(-1e6, 1e6));
+                        let (px, py) = (xs.map(x), y_px(y).clamp(-1e6, 1e6));
                         if pen_down {
                             ctx.line_to(px, py);
                         } else {
@@ -451,8 +517,7 @@ impl Plot {
                     for &(x, y) in &pts[from..] {
                         if x.is_finite() && y.is_finite() {
                             ctx.begin_path();
-                            let _ =
-                                ctx.arc(xs.map(x), ys.map(y), radius, 0.0, std::f64::consts::TAU);
+                            let _ = ctx.arc(xs.map(x), y_px(y), radius, 0.0, std::f64::consts::TAU);
                             ctx.fill();
                         }
                     }
