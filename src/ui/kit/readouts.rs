@@ -96,6 +96,22 @@ impl Readouts {
         }
     }
 
+    /// Sets the value shown under `key` and its exact value in `data-value` (for tests and
+    /// copy tools: the text may be rounded, `value` is not).
+    pub fn set_with_value(&self, key: &str, text: &str, value: &str) {
+        for (k, el) in &self.values {
+            if k == key {
+                el.set_text_content(Some(text));
+                let _ = el.set_attribute("data-value", value);
+            }
+        }
+    }
+
+    /// The element showing `key` (to hide its row, say).
+    pub fn element(&self, key: &str) -> Option<&Element> {
+        self.values.iter().find(|(k, _)| k == key).map(|(_, el)| el)
+    }
+
     /// Says `text` to screen readers, politely and throttled (a newer text replaces one that
     /// is still waiting).
     pub fn announce(&self, text: &str) {
