@@ -83,6 +83,14 @@ struct Shown {
     input_name: Option<String>,
 }
 
+/// Command lines a page wrote itself ([`Exports::show_lines`]).
+struct Lines {
+    bsv: String,
+    python: Option<String>,
+    /// Fluent id of the note shown when there is no Python line.
+    python_note_id: &'static str,
+}
+
 /// The panel's elements and what it shows.
 pub struct Exports {
     cmd_python: Element,
@@ -92,6 +100,7 @@ pub struct Exports {
     status_line: Element,
     status: Rc<RefCell<Option<Status>>>,
     shown: RefCell<Option<Shown>>,
+    lines: RefCell<Option<Lines>>,
 }
 
 impl Exports {
@@ -106,6 +115,7 @@ impl Exports {
             status_line: find(format!("[data-testid=\"{prefix}-copy-status\"]"))?,
             status: Rc::new(RefCell::new(None)),
             shown: RefCell::new(None),
+            lines: RefCell::new(None),
         })
     }
 
@@ -117,10 +127,52 @@ impl Exports {
             python,
             input_name: input_name.map(str::to_string),
         });
+        self.lines.borrow_mut().take();
         self.render();
     }
 
+    /// Shows command lines the page wrote: `bsv` as given, and `python` only when the Python
+    /// recipe makes the same files; with `None` the Python line and its copy button are hidden
+    /// and `python_note_id` (a Fluent id) says why.
+    pub fn show_lines(&self, bsv: &str, python: Option<&str>, python_note_id: &'static str) {
+        self.shown.borrow_mut().take();
+        *self.lines.borrow_mut() = Some(Lines {
+            bsv: bsv.to_string(),
+            python: python.map(str::to_string),
+            python_note_id,
+        });
+        self.render();
+    }
+
+    fn render_lines(&self, lines: &Lines) {
+        self.cmd_bsv.set_text_content(Some(&lines.bsv));
+        self.cmd_python
+            .set_text_content(Some(lines.python.as_deref().unwrap_or_default()));
+        if let Some(Ok(Some(copy))) = self
+            .cmd_python
+            .parent_element()
+            .map(|row| row.query_selector("[data-copy=\"python\"]"))
+        {
+            show(&copy, lines.python.is_some());
+        }
+        if lines.python.is_some() {
+            show(&self.python_note, false);
+        } else {
+            self.python_note
+                .set_text_content(Some(&ctx::t(lines.python_note_id)));
+            show(&self.python_note, true);
+        }
+        show(&self.file_note, false);
+    }
+
     fn render(&self) {
+        if let Some(lines) = self.lines.borrow().as_ref() {
+            self.render_lines(lines);
+            let status = self.status.borrow().as_ref().map(Status::text);
+            self.status_line
+                .set_text_content(Some(&status.unwrap_or_default()));
+            return;
+        }
         let shown = self.shown.borrow();
         let Some(shown) = shown.as_ref() else {
             return;
