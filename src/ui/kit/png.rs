@@ -53,3 +53,37 @@ pub fn download_layers(
 ) -> Result<(), JsValue> {
     download(&flatten(layers, background)?, file_name)
 }
+
+/// Several layered canvases in one PNG, side by side (left to right, tops aligned): each
+/// group is [`flatten`]ed onto `background`, then they are joined and offered as `file_name`.
+pub fn download_stacked(
+    groups: &[&[&HtmlCanvasElement]],
+    background: &str,
+    file_name: &str,
+) -> Result<(), JsValue> {
+    let parts = groups
+        .iter()
+        .map(|layers| flatten(layers, background))
+        .collect::<Result<Vec<_>, _>>()?;
+    let width: u32 = parts.iter().map(HtmlCanvasElement::width).sum();
+    let height = parts
+        .iter()
+        .map(HtmlCanvasElement::height)
+        .max()
+        .unwrap_or(1);
+    let out = dom::el("canvas")?.dyn_into::<HtmlCanvasElement>()?;
+    out.set_width(width.max(1));
+    out.set_height(height.max(1));
+    let context = out
+        .get_context("2d")?
+        .ok_or_else(|| JsValue::from_str("png: no 2d context"))?
+        .dyn_into::<CanvasRenderingContext2d>()?;
+    context.set_fill_style_str(background);
+    context.fill_rect(0.0, 0.0, f64::from(width), f64::from(height));
+    let mut x = 0.0;
+    for part in &parts {
+        context.draw_image_with_html_canvas_element(part, x, 0.0)?;
+        x += f64::from(part.width());
+    }
+    download(&out, file_name)
+}
