@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `make bench`: speed figures (a command, not a timed test). Kernels natively and as wasm in
-# Node (release builds), then the IK page in headless Chromium at 1920x1080.
+# Node (release builds), then the IK and pendulum pages in headless Chromium at 1920x1080.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -15,16 +15,21 @@ wasm-pack build --quiet --target nodejs --release --out-dir target/bench-pkg --m
 echo '{ "type": "commonjs" }' > target/bench-pkg/package.json
 node scripts/bench-wasm.mjs
 
-if [[ -f tests/e2e/ik2r.bench.mjs ]]; then
-  echo
-  echo "== IK page in headless Chromium (release dist/ with the bench hooks)"
-  # The app build has no timing hooks: assemble the release dist/, then a copy of it whose
-  # wasm is built with `--features bench` (window.__ik2rBench, __ik2rTimings).
-  scripts/build-dist.sh >/dev/null
-  wasm-pack build --quiet --target web --release --out-dir target/bench-web --out-name bsv_playground \
-    --mode no-install --no-pack -- --features bench
-  rm -rf target/bench-dist
-  cp -r dist target/bench-dist
-  cp target/bench-web/bsv_playground.js target/bench-web/bsv_playground_bg.wasm target/bench-dist/pkg/
-  BSV_DIST=target/bench-dist node tests/e2e/ik2r.bench.mjs
-fi
+echo
+echo "== release dist/ with the bench hooks (target/bench-dist)"
+# The app build has no timing hooks: assemble the release dist/, then a copy of it whose
+# wasm is built with `--features bench` (window.__ik2rBench, __pendulumBench, ...).
+scripts/build-dist.sh >/dev/null
+wasm-pack build --quiet --target web --release --out-dir target/bench-web --out-name bsv_playground \
+  --mode no-install --no-pack -- --features bench
+rm -rf target/bench-dist
+cp -r dist target/bench-dist
+cp target/bench-web/bsv_playground.js target/bench-web/bsv_playground_bg.wasm target/bench-dist/pkg/
+
+for page in ik2r pendulum; do
+  if [[ -f tests/e2e/$page.bench.mjs ]]; then
+    echo
+    echo "== $page page in headless Chromium"
+    BSV_DIST=target/bench-dist node tests/e2e/$page.bench.mjs
+  fi
+done

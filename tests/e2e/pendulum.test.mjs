@@ -99,14 +99,66 @@ test('End then download equals bsv: defaults and a URL setting every parameter',
       const last = rows[rows.length - 1];
       assert.deepEqual([r.t, r.theta, r.omega, r.total], [last[0], last[1], last[2], last[5]], hash);
       assertSameBytes(await download(page, 'pendulum_energy.csv'), want, hash);
-      const bsv = await page.locator('[data-command="bsv"]').innerText();
+      const bsv = await page.locator('[data-cmd="bsv"]').innerText();
       assert.equal(bsv, `bsv pendulum-energy ${args.length === 1 ? '5 --damping 0.05 --angle-deg 120 --timestep 0.002 --length 0.3 --mass 0.2 --radius 0.01 --integrator euler' : args.join(' ')}`);
-      const python = await page.locator('[data-command="python"]').innerText();
+      const python = await page.locator('[data-cmd="python"]').innerText();
       assert.equal(python, args.length === 1 ? 'python mujoco_pendulum_energy.py 5' : '');
       assert.deepEqual(errors, []);
     } finally {
       await close();
     }
+  }
+});
+
+test('the Python line shows when only the duration differs; the PNG holds both plots', async () => {
+  const { page, errors, close } = await open('#/pendulum-energy?duration_s=2');
+  try {
+    assert.equal(await page.locator('[data-cmd="python"]').innerText(), 'python mujoco_pendulum_energy.py 2');
+    assert.equal(await page.locator('[data-copy="python"]').isVisible(), true);
+    assert.equal(await page.locator('[data-pend="python-note"]').isVisible(), false);
+    await page.locator('[data-field="mass"]').fill('0.4');
+    await page.waitForFunction(() => document.querySelector('[data-cmd="python"]').textContent === '');
+    assert.equal(await page.locator('[data-copy="python"]').isVisible(), false);
+    assert.equal(await page.locator('[data-pend="python-note"]').isVisible(), true);
+    assert.match(await page.locator('[data-cmd="bsv"]').innerText(), / --mass 0\.4 /);
+    const png = await download(page, 'pendulum_energy_plots.png');
+    assert.deepEqual([...png.subarray(0, 8)], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+    const width = png.readUInt32BE(16);
+    const sizes = await page.evaluate(() => [...document.querySelectorAll('.pend-plots .pend-stage canvas:first-child')].map((c) => c.width));
+    assert.equal(width, sizes[0] + sizes[1], `PNG ${width} px wide, plots ${sizes}`);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('the timestep control sets h (field, URL, run); the end of a damped run offers a replay', async () => {
+  const { page, errors, close } = await open();
+  try {
+    await toStart(page);
+    const slider = page.locator('[data-pend="h-slider"]');
+    // 0.002 s is the third choice.
+    assert.equal(await slider.inputValue(), '2');
+    await slider.fill('6');
+    assert.equal(await page.locator('[data-field="timestep"]').inputValue(), '0.05');
+    await page.waitForFunction(() => /timestep=0\.05/.test(location.hash), null, { timeout: 3000 });
+    const want = csvRows(cli(['pendulum-energy', '5', '--timestep', '0.05']).files.get('pendulum_energy.csv'));
+    assert.equal(want.length, 100);
+    await page.locator('[data-action="step"]').click();
+    assert.equal((await readouts(page)).theta, want[0][1]);
+    const notice = page.locator('[data-pend="end"]');
+    assert.equal(await notice.isVisible(), false);
+    await page.locator('[data-action="end"]').click();
+    assert.equal(await notice.isVisible(), true);
+    assert.match(await notice.innerText(), /come to rest/);
+    await page.locator('[data-action="undamped"]').click();
+    assert.equal(await page.locator('[data-field="damping"]').inputValue(), '0');
+    await page.waitForFunction(() => document.querySelector('[data-action="run"]').getAttribute('aria-pressed') === 'true');
+    assert.equal(await notice.isVisible(), false);
+    await page.waitForFunction(() => /damping=0(&|$)/.test(location.hash), null, { timeout: 3000 });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
   }
 });
 
@@ -190,7 +242,13 @@ test('Japanese leaves no English UI text', async () => {
   try {
     await page.locator('[data-field="timestep"]').fill('abc');
     await page.locator('[data-field="mass"]').fill('-1');
-    const text = await page.evaluate(() => document.body.innerText);
+    // Command lines and file names (in <code>) are not UI text.
+    const text = await page.evaluate(() => {
+      let all = document.body.innerText;
+      for (const code of document.querySelectorAll('code')) all = all.replace(code.innerText, '');
+      for (const b of document.querySelectorAll('[data-download]')) all = all.replaceAll(b.dataset.download, '');
+      return all;
+    });
     const left = english.filter((s) => text.includes(s));
     assert.deepEqual(left, [], `English left on the Japanese page: ${left.join(' | ')}`);
     assert.match(text, /振り子のエネルギー/);

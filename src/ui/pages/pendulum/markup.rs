@@ -2,7 +2,7 @@
 //! readouts, the plots, the parameters, the exports and the explanation. Every text is a
 //! Fluent id (`data-i18n`), filled by the shell.
 
-use super::params;
+use super::exports;
 use super::readouts;
 
 /// The page's HTML.
@@ -17,7 +17,15 @@ pub fn page() -> String {
          <div class=\"pend-stage pend-stage-view\" data-pend=\"view-stage\">\
          <canvas class=\"pend-layer\" data-testid=\"pendulum-energy-canvas\" tabindex=\"0\" \
          data-i18n-attr=\"aria-label=pendulum-canvas-label\"></canvas></div>\
+         <div class=\"pend-end\" data-pend=\"end\" role=\"status\" hidden>\
+         <p data-pend=\"end-text\"></p><div class=\"pend-buttons\">\
+         <button type=\"button\" class=\"button primary\" data-action=\"replay\" data-i18n=\"pendulum-replay\"></button>\
+         <button type=\"button\" class=\"button\" data-action=\"undamped\" data-i18n=\"pendulum-undamped\"></button></div></div>\
          <div data-pend=\"stepper\"></div>\
+         <div class=\"pend-h\"><label for=\"pend-h-slider\" data-i18n=\"pendulum-h-label\"></label>\
+         <input id=\"pend-h-slider\" type=\"range\" min=\"0\" max=\"9\" step=\"1\" data-pend=\"h-slider\" \
+         aria-describedby=\"pend-h-note\"><output data-pend=\"h-value\" for=\"pend-h-slider\"></output></div>\
+         <p class=\"pend-note\" id=\"pend-h-note\" data-i18n=\"pendulum-h-note\"></p>\
          <label class=\"pend-switch\"><input type=\"checkbox\" data-field=\"compare\">\
          <span data-i18n=\"pendulum-compare\"></span></label>\
          <p class=\"pend-note\" data-i18n=\"pendulum-compare-note\"></p></section>\
@@ -34,19 +42,8 @@ pub fn page() -> String {
          </div><p class=\"pend-note\" data-i18n=\"pendulum-plots-note\"></p></section>\
          <div class=\"pend-mid\">\
          <section class=\"pend-card\"><h2 data-i18n=\"pendulum-params-title\"></h2>\
-         <form data-pend=\"form\" novalidate>{fields}</form></section>\
-         <section class=\"pend-card\"><h2 data-i18n=\"pendulum-exports-title\"></h2>\
-         <div class=\"pend-buttons\">\
-         <button type=\"button\" class=\"tool-button\" data-download=\"pendulum_energy.csv\" data-i18n=\"pendulum-download-csv\"></button>\
-         <button type=\"button\" class=\"tool-button\" data-download=\"pendulum_energy_plots.png\" data-i18n=\"pendulum-download-png\"></button></div>\
-         <h3 data-i18n=\"pendulum-cli-title\"></h3>\
-         <pre class=\"pend-cmd\"><code data-command=\"bsv\"></code></pre>\
-         <button type=\"button\" class=\"tool-button\" data-action=\"copy-bsv\" data-i18n=\"pendulum-copy\"></button>\
-         <h3 data-i18n=\"pendulum-python-title\"></h3>\
-         <pre class=\"pend-cmd\"><code data-command=\"python\"></code></pre>\
-         <p class=\"pend-note\" data-pend=\"python-note\" data-i18n=\"pendulum-python-none\" hidden></p>\
-         <button type=\"button\" class=\"tool-button\" data-action=\"copy-python\" data-i18n=\"pendulum-copy\"></button>\
-         <p class=\"pend-note\" data-pend=\"copy-status\" role=\"status\" aria-live=\"polite\"></p>\
+         <form class=\"pend-form\" data-pend=\"form\" novalidate></form></section>\
+         <section class=\"pend-card\"><h2 data-i18n=\"pendulum-exports-title\"></h2>{exports}\
          </section></div>\
          <section class=\"pend-card pend-explain\"><h2 data-i18n=\"pendulum-explain-title\"></h2>\
          <h3 data-i18n=\"pendulum-explain-int-title\"></h3><p data-i18n=\"pendulum-explain-int\"></p>\
@@ -58,6 +55,6 @@ pub fn page() -> String {
          <p data-i18n=\"recipe-pendulum-energy-quirks\"></p></section>\
          </div>",
         readouts = readouts::markup(),
-        fields = params::markup(),
+        exports = exports::markup(),
     )
 }

@@ -5,10 +5,18 @@
 //! Euler and RK4 side by side from the same state.
 //!
 //! The page is a struct of components, one file each: `view` (the pendulum drawn to
-//! scale), `plots`, `params` (the validated form), `readouts`, `exports` (CSV, PNG,
-//! command lines) and `markup` (with the explanation). This file holds the run ([`Sim`],
-//! the stepper's model, from the pure `crate::view::pendulum`) and wires them.
+//! scale), `plots`, `params` (the kit's validated form), `readouts` (the kit's panel),
+//! `exports` (the kit's panel: CSV, PNG, command lines), `markup` (with the explanation) and
+//! `bench` (timing hooks, bench builds only). This file holds the run ([`Sim`], the
+//! stepper's model, from the pure `crate::view::pendulum`) and wires them.
+//!
+//! At the recipe's default damping the pendulum is at rest after about a second of its five,
+//! so the default view (playing from the start) ends still. The page keeps the recipe's
+//! defaults (the CSV is `bsv pendulum-energy 5`'s) and says so at the end of the run, with a
+//! Replay button and one that sets the damping to 0 (a swing that lasts, and Euler's drift
+//! alone).
 
+mod bench;
 mod exports;
 mod markup;
 mod params;
@@ -30,6 +38,7 @@ use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::{Command, Length, Speed, StepModel, StepperOptions, StepperWidget};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::pendulum::{cli_args, other, PageQuery, Track};
 
@@ -43,6 +52,11 @@ const SPEEDS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0];
 const URL_EVERY_MS: f64 = 500.0;
 /// 1× real time.
 const DEFAULT_SPEED: usize = 3;
+/// The timestep control's choices, s (semi-implicit Euler on this pendulum goes unstable
+/// near h = 2/ω₀ ≈ 0.29 s at the defaults).
+const TIMESTEPS: [f64; 10] = [0.0005, 0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3];
+/// At the end of a damped run, below this fraction of E(0) left the pendulum counts as at rest.
+const AT_REST: f64 = 0.02;
 
 /// The run: one track per integrator shown (the page's first), stepped to the index asked.
 pub struct Sim {
@@ -50,8 +64,8 @@ pub struct Sim {
     pub steps: u64,
     pub tracks: Vec<Track>,
     pub index: u64,
-    /// Time the last `go_to` took, ms (frame work).
-    pub advance_ms: f64,
+    /// When the frame's work began (the first `go_to` since the last draw), ms.
+    pub work_started: Cell<Option<f64>>,
 }
 
 impl Sim {
@@ -72,7 +86,7 @@ impl Sim {
             steps,
             tracks,
             index: 0,
-            advance_ms: 0.0,
+            work_started: Cell::new(None),
         })
     }
 }
@@ -82,13 +96,26 @@ impl StepModel for Sim {
         Length::Finite(self.steps)
     }
     fn go_to(&mut self, index: u64) {
-        let started = crate::ui::schedule::now_ms();
+        if self.work_started.get().is_none() {
+            self.work_started.set(Some(now_ms()));
+        }
         for t in &mut self.tracks {
             t.extend_to(index as usize);
         }
         self.index = index;
-        self.advance_ms = crate::ui::schedule::now_ms() - started;
     }
+}
+
+/// Fluent arguments as texts.
+type FluentTexts = Vec<(&'static str, String)>;
+
+/// What the notice under the pendulum says.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum EndNotice {
+    /// The damper has left the pendulum at rest.
+    Rest,
+    /// The run is over.
+    End,
 }
 
 /// The mounted page.
@@ -102,12 +129,21 @@ struct Inner {
     texts: RefCell<Vec<String>>,
     compare: Cell<bool>,
     compare_box: HtmlInputElement,
+    /// The timestep control (a slider over [`TIMESTEPS`]) and its value.
+    h_slider: HtmlInputElement,
+    h_value: Element,
+    /// The end-of-run notice, its text and its damping-0 button.
+    end_notice: Element,
+    end_text: Element,
+    undamped: Element,
+    /// What the notice says (kind and Fluent arguments), if shown.
+    end_shown: RefCell<Option<(EndNotice, FluentTexts)>>,
     stepper_slot: Element,
     stepper: RefCell<Option<StepperWidget<Sim>>>,
     view: RefCell<view::PendulumView>,
     plots: RefCell<plots::Plots>,
     params: RefCell<params::Params>,
-    readouts: readouts::Readouts,
+    readouts: RefCell<readouts::Readouts>,
     exports: exports::Exports,
     url_notice: UrlNotice,
     url: Option<UrlWriter>,
@@ -145,19 +181,15 @@ impl Page for PendulumPage {
         dom::relocalize(&root)?;
         let (query, ignored) = PageQuery::read(&ctx.query);
         let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
-        let mut form = params::Params::find(&root, role(&root, "form")?)?;
-        form.fill(&query.texts);
+        let mut form = params::Params::build(role(&root, "form")?, &query.texts)?;
         // The URL's values if valid, else the recipe's defaults (the fields keep the text
         // and show why).
-        let (params, texts) = match params::check(&query.texts) {
-            Ok(p) => (p, query.texts.clone()),
-            Err(errors) => {
-                form.show(errors);
-                (
-                    PendulumParams::default(),
-                    crate::view::pendulum::default_texts(),
-                )
-            }
+        let (params, texts) = match form.check() {
+            Some(p) => (p, query.texts.clone()),
+            None => (
+                PendulumParams::default(),
+                crate::view::pendulum::default_texts(),
+            ),
         };
         let compare_box: HtmlInputElement =
             dom::find(&root, "[data-field=\"compare\"]", "pendulum")?;
@@ -168,6 +200,12 @@ impl Page for PendulumPage {
         let plots = plots::Plots::find(&role(&root, "time-stage")?, &role(&root, "phase-stage")?)?;
         let readouts = readouts::Readouts::find(&root)?;
         let exports = exports::Exports::find(&root)?;
+        let h_slider: HtmlInputElement = role(&root, "h-slider")?;
+        h_slider.set_max(&(TIMESTEPS.len() - 1).to_string());
+        let h_value = role(&root, "h-value")?;
+        let end_notice = role(&root, "end")?;
+        let end_text = role(&root, "end-text")?;
+        let undamped = dom::find(&root, "[data-action=\"undamped\"]", "pendulum")?;
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
             let mut scope = Scope::new();
             let url = Some(UrlWriter::new(&mut scope, me, Inner::query));
@@ -177,12 +215,18 @@ impl Page for PendulumPage {
                 texts: RefCell::new(texts),
                 compare: Cell::new(query.compare),
                 compare_box,
+                h_slider,
+                h_value,
+                end_notice,
+                end_text,
+                undamped,
+                end_shown: RefCell::new(None),
                 stepper_slot,
                 stepper: RefCell::new(None),
                 view: RefCell::new(view),
                 plots: RefCell::new(plots),
                 params: RefCell::new(form),
-                readouts,
+                readouts: RefCell::new(readouts),
                 exports,
                 url_notice,
                 url,
@@ -192,6 +236,7 @@ impl Page for PendulumPage {
             }
         });
         inner.install()?;
+        bench::install_hooks(&Rc::downgrade(&inner));
         inner.view.borrow_mut().canvas.fit();
         inner.rebuild(DEFAULT_SPEED)?;
         let h = inner.sim.borrow().params.timestep_s;
@@ -224,6 +269,12 @@ impl Page for PendulumPage {
     }
 }
 
+impl Drop for PendulumPage {
+    fn drop(&mut self) {
+        bench::remove_hooks();
+    }
+}
+
 impl Inner {
     /// The URL query of the page.
     fn query(&self) -> Vec<(String, String)> {
@@ -240,10 +291,31 @@ impl Inner {
     fn install(&self) -> Result<(), JsValue> {
         let mut scope = self.scope.borrow_mut();
         let me = &self.me;
-        let form = self.params.borrow().form.clone();
-        scope.listen_for(&form, "input", me, |p, _| p.edited())?;
-        scope.listen_for(&form, "change", me, |p, _| p.edited())?;
+        let form = self.params.borrow().element.clone();
+        let note_edit = |p: &Inner, e: &web_sys::Event| {
+            if let Some(el) = e.target().and_then(|t| t.dyn_into::<Element>().ok()) {
+                p.params.borrow().form.note_edit(&el);
+            }
+            p.edited();
+        };
+        scope.listen_for(&form, "input", me, note_edit)?;
+        scope.listen_for(&form, "change", me, note_edit)?;
         scope.listen_for(&form, "submit", me, |_, e| e.prevent_default())?;
+        scope.listen_for(&self.h_slider, "input", me, |p, _| {
+            let k = p.h_slider.value().parse::<usize>().unwrap_or(0);
+            let h = TIMESTEPS[k.min(TIMESTEPS.len() - 1)];
+            p.params
+                .borrow_mut()
+                .set_text("timestep", &crate::pyfmt::py_float(h));
+            p.edited();
+        })?;
+        let replay: Element = dom::find(&self.root, "[data-action=\"replay\"]", "pendulum")?;
+        scope.listen_for(&replay, "click", me, |p, _| p.command(Command::Play))?;
+        scope.listen_for(&self.undamped, "click", me, |p, _| {
+            p.params.borrow_mut().set_text("damping", "0");
+            p.edited();
+            p.command(Command::Play);
+        })?;
         scope.listen_for(&self.compare_box, "change", me, |p, _| {
             p.compare.set(p.compare_box.checked());
             let params = p.sim.borrow().params;
@@ -251,28 +323,14 @@ impl Inner {
         })?;
         scope.listen_for(&self.exports.csv, "click", me, |p, _| {
             let params = p.sim.borrow().params;
-            if let Err(e) = p.exports.download_csv(&params) {
-                web_sys::console::warn_1(&e);
-            }
+            p.exports.download_csv(&params);
         })?;
-        scope.listen_for(&self.exports.png, "click", me, |p, _| {
-            let plots = p.plots.borrow();
-            let layers: Vec<&HtmlCanvasElement> =
-                plots.time.canvas.layers.iter().map(|l| &l.canvas).collect();
-            let _ = crate::ui::kit::png::download_layers(
-                &layers,
-                "#ffffff",
-                "pendulum_energy_plots.png",
-            );
-        })?;
-        scope.listen_for(&self.exports.copy_bsv, "click", me, |p, _| {
-            p.copy(p.exports.bsv_text());
-        })?;
-        scope.listen_for(&self.exports.copy_python, "click", me, |p, _| {
-            if let Some(line) = p.exports.python_line() {
-                p.copy(line);
-            }
-        })?;
+        scope.listen_for(&self.exports.png, "click", me, |p, _| p.download_png())?;
+        for kind in ["bsv", "python"] {
+            let button: Element =
+                dom::find(&self.root, &format!("[data-copy=\"{kind}\"]"), "pendulum")?;
+            scope.listen_for(&button, "click", me, move |p, _| p.exports.kit.copy(kind))?;
+        }
         let canvas = self.view.borrow().canvas.top().canvas.clone();
         scope.listen_for(&canvas, "pointerdown", me, |p, _| {
             focus_without_scroll(&p.view.borrow().canvas.top().canvas);
@@ -285,30 +343,36 @@ impl Inner {
         Ok(())
     }
 
-    fn copy(&self, text: String) {
-        let status = self.exports.status.clone();
-        crate::ui::clipboard::copy_text(&text, move |ok| {
-            status.set_text_content(Some(&ctx::t(if ok {
-                "pendulum-copied"
-            } else {
-                "pendulum-copy-failed"
-            })));
-        });
+    /// Both plots (time panels above, phase portrait below) in one PNG.
+    fn download_png(&self) {
+        let plots = self.plots.borrow();
+        let time: Vec<&HtmlCanvasElement> =
+            plots.time.canvas.layers.iter().map(|l| &l.canvas).collect();
+        let phase: Vec<&HtmlCanvasElement> = plots
+            .phase
+            .canvas
+            .layers
+            .iter()
+            .map(|l| &l.canvas)
+            .collect();
+        if let Err(e) =
+            crate::ui::kit::png::download_stacked(&[&time, &phase], "#ffffff", exports::PNG_NAME)
+        {
+            web_sys::console::warn_1(&e);
+        }
     }
 
     /// A field changed: a valid set restarts the run, a refused one keeps the last run.
     fn edited(&self) {
         let texts = self.params.borrow().texts();
-        match params::check(&texts) {
-            Ok(params) => {
-                self.params.borrow_mut().show(Vec::new());
-                let changed = *self.texts.borrow() != texts;
-                if changed {
-                    *self.texts.borrow_mut() = texts;
-                    self.restart(params);
-                }
+        let checked = self.params.borrow_mut().check();
+        self.exports.kit.clear_status();
+        if let Some(params) = checked {
+            let changed = *self.texts.borrow() != texts;
+            if changed {
+                *self.texts.borrow_mut() = texts;
+                self.restart(params);
             }
-            Err(errors) => self.params.borrow_mut().show(errors),
         }
     }
 
@@ -378,8 +442,34 @@ impl Inner {
         }
         let args = cli_args(&self.texts.borrow());
         self.exports.update(&self.sim.borrow().params, &args);
+        self.show_timestep();
         self.update();
         Ok(())
+    }
+
+    /// The timestep control at the run's timestep (the nearest choice).
+    fn show_timestep(&self) {
+        let h = self.sim.borrow().params.timestep_s;
+        let k = TIMESTEPS
+            .iter()
+            .enumerate()
+            .min_by(|a, b| {
+                let d = |x: f64| (x.ln() - h.ln()).abs();
+                d(*a.1).total_cmp(&d(*b.1))
+            })
+            .map_or(0, |(k, _)| k);
+        self.h_slider.set_value(&k.to_string());
+        self.h_value.set_text_content(Some(&ctx::t_strings(
+            "pendulum-h-value",
+            &[("h", crate::pyfmt::py_float(h))],
+        )));
+    }
+
+    /// Bench builds: the same run again from the start (fresh tracks and plots).
+    #[cfg(feature = "bench")]
+    fn replay_from_start(&self) {
+        let params = self.sim.borrow().params;
+        self.restart(params);
     }
 
     fn command(&self, command: Command) {
@@ -402,7 +492,11 @@ impl Inner {
     /// The language changed.
     fn relocalize(&self) {
         let _ = dom::relocalize(&self.root);
-        self.params.borrow().relocalize();
+        self.params.borrow_mut().check();
+        self.exports.relocalize();
+        self.readouts.borrow_mut().relocalize();
+        self.show_timestep();
+        self.render_end();
         self.url_notice.relocalize();
         if let Some(s) = self.stepper.borrow().as_ref() {
             s.relocalize();
@@ -414,12 +508,65 @@ impl Inner {
         plots.draw(Ink::current());
     }
 
+    /// The notice under the pendulum: once the damper has left it at rest (less than
+    /// [`AT_REST`] of `E(0)`), or at the end of the run (not while playing), with a Replay
+    /// button (and one for no damping). Written only when what it says changes.
+    fn show_end(&self, sim: &Sim, track: &Track, playing: bool, t: f64) {
+        let e0 = track.start().true_energy();
+        let (_, _, e) = track.state(sim.index as usize);
+        let damped = sim.params.damping > 0.0;
+        let at_rest = damped && e0 > 0.0 && e < AT_REST * e0;
+        let at_end = !playing && sim.index >= sim.steps;
+        let now = if at_rest {
+            Some(EndNotice::Rest)
+        } else if at_end {
+            Some(EndNotice::End)
+        } else {
+            None
+        };
+        let shown = self.end_shown.borrow().as_ref().map(|(kind, _)| *kind);
+        if shown == now {
+            return;
+        }
+        match now {
+            None => {
+                dom::show(&self.end_notice, false);
+                *self.end_shown.borrow_mut() = None;
+            }
+            Some(kind) => {
+                let args = vec![
+                    ("t", crate::pyfmt::py_float(t)),
+                    (
+                        "percent",
+                        format!("{:.0}", 100.0 * (1.0 - e / e0.max(f64::MIN_POSITIVE))),
+                    ),
+                ];
+                *self.end_shown.borrow_mut() = Some((kind, args));
+                self.render_end();
+                dom::show(&self.undamped, damped);
+                dom::show(&self.end_notice, true);
+            }
+        }
+    }
+
+    /// The notice's text in the current language.
+    fn render_end(&self) {
+        if let Some((kind, args)) = self.end_shown.borrow().as_ref() {
+            let id = match kind {
+                EndNotice::Rest => "pendulum-end-rest",
+                EndNotice::End => "pendulum-end-done",
+            };
+            self.end_text
+                .set_text_content(Some(&ctx::t_strings(id, args)));
+        }
+    }
+
     /// The state changed: the pendulum, the plots, the readouts, the URL.
     fn update(&self) {
-        let started = crate::ui::schedule::now_ms();
         let Ok(sim) = self.sim.try_borrow() else {
             return;
         };
+        let started = sim.work_started.take().unwrap_or_else(now_ms);
         let index = sim.index as usize;
         let ink = Ink::current();
         {
@@ -464,11 +611,17 @@ impl Inner {
                     Integrator::Rk4 => (b, a),
                 });
             }
-            self.readouts.show(&v);
+            let mut readouts = self.readouts.borrow_mut();
+            readouts.show(&v);
+            let playing = self.stepper.borrow().as_ref().is_some_and(|s| s.playing());
+            if !playing {
+                readouts.announce(&v);
+            }
+            self.show_end(&sim, track, playing, v.t);
         }
-        let work = sim.advance_ms + crate::ui::schedule::now_ms() - started;
+        let work = now_ms() - started;
         drop(sim);
-        bench_record(work);
+        bench::record(work);
         // While playing, the debounced write would never fire: write at most twice a second.
         if let Some(url) = self.url.as_ref() {
             let now = crate::ui::schedule::now_ms();
@@ -481,24 +634,3 @@ impl Inner {
         }
     }
 }
-
-/// Bench builds keep every frame's work (advance + draw), ms, in `window.__pendulumFrameMs`.
-#[cfg(feature = "bench")]
-fn bench_record(ms: f64) {
-    let Some(window) = web_sys::window() else {
-        return;
-    };
-    let key = JsValue::from_str("__pendulumFrameMs");
-    let list = js_sys::Reflect::get(&window, &key)
-        .ok()
-        .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
-        .unwrap_or_else(|| {
-            let a = js_sys::Array::new();
-            let _ = js_sys::Reflect::set(&window, &key, &a);
-            a
-        });
-    list.push(&JsValue::from_f64(ms));
-}
-
-#[cfg(not(feature = "bench"))]
-fn bench_record(_ms: f64) {}

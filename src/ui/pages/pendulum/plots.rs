@@ -1,7 +1,8 @@
 //! The plots (the kit's plot widget): energies (the recipe's ke, pe, total and the capsule's
-//! true energy), angle, rate and the energy error on a log scale, sharing the time axis with
-//! a cursor at the state shown; and the phase portrait (θ, ω) with the undamped separatrix.
-//! Rows are appended as they are stepped (the widget draws only the new points).
+//! true energy), angle, rate and the relative energy error on a log axis, sharing the time
+//! axis with a cursor at the state shown; and the phase portrait (θ, ω) with the undamped
+//! separatrix. Rows are appended as they are stepped (the widget draws only the new points,
+//! never the history).
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
@@ -12,8 +13,8 @@ use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
 use crate::view::pendulum::{separatrix, Track};
 
-/// Smallest energy error drawn (log₁₀ floor).
-const LOG_FLOOR: f64 = -12.0;
+/// The error panel's range (log axis): from rounding-error level to far beyond blow-up.
+const ERROR_RANGE: (f64, f64) = (1e-12, 1e2);
 /// At most this many phase points per track.
 const PHASE_POINTS: u64 = 6000;
 
@@ -89,15 +90,13 @@ impl Plots {
         let mut theta = Vec::new();
         let mut omega = Vec::new();
         let mut error = Vec::new();
-        let mut phase = vec![
-            series(
-                ctx::t("pendulum-s-separatrix"),
-                (120, 120, 120),
-                0.8,
-                Mark::Line,
-            ),
-            series(String::new(), (120, 120, 120), 0.8, Mark::Line),
-        ];
+        // The separatrix is one series: upper branch, a break, lower branch (one legend entry).
+        let mut phase = vec![series(
+            ctx::t("pendulum-s-separatrix"),
+            (120, 120, 120),
+            0.8,
+            Mark::Line,
+        )];
         for k in 0..tracks.len() {
             let alpha = if k == 0 { 1.0 } else { 0.75 };
             energy.push(series(
@@ -115,7 +114,7 @@ impl Plots {
             theta.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
             omega.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
             error.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
-            phase.push(series(names[k].clone(), colors[k], alpha, Mark::Points));
+            phase.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
         }
         let axis = |title: &str, unit: &str, range: (f64, f64)| AxisSpec {
             title: ctx::t(title),
@@ -151,13 +150,14 @@ impl Plots {
                     series: omega,
                 },
                 PanelSpec {
-                    y: axis("pendulum-ax-error", "", (LOG_FLOOR, 1.0)),
+                    y: axis("pendulum-ax-error", "", ERROR_RANGE),
                     series: error,
                 },
             ],
             cursor_rgb: (194, 65, 12),
         });
         self.time.clear();
+        self.time.set_log_y(3, true);
         let pi = std::f64::consts::PI;
         let x_max = p.angle_deg.to_radians().abs().max(pi) * 1.05;
         let sep = separatrix(&p, inertia, 200);
@@ -171,9 +171,11 @@ impl Plots {
             cursor_rgb: (194, 65, 12),
         });
         self.phase.clear();
-        self.phase
-            .set_series(0, 1, sep.iter().map(|&(t, w)| (t, -w)).collect());
-        self.phase.set_series(0, 0, sep);
+        let lower: Vec<(f64, f64)> = sep.iter().map(|&(t, w)| (t, -w)).collect();
+        let mut both = sep;
+        both.push((f64::NAN, f64::NAN));
+        both.extend(lower);
+        self.phase.set_series(0, 0, both);
         self.appended = vec![0; tracks.len()];
         self.stride = (steps / PHASE_POINTS).max(1) as usize;
         self.time.invalidate_all();
@@ -205,24 +207,15 @@ impl Plots {
             }
             self.time.append(1, k, &pts(&|i| new[i].theta));
             self.time.append(2, k, &pts(&|i| new[i].omega));
-            self.time.append(
-                3,
-                k,
-                &pts(&|i| {
-                    track
-                        .energy_error(done + i + 1)
-                        .abs()
-                        .log10()
-                        .max(LOG_FLOOR)
-                }),
-            );
+            self.time
+                .append(3, k, &pts(&|i| track.energy_error(done + i + 1).abs()));
             let phase: Vec<(f64, f64)> = new
                 .iter()
                 .enumerate()
                 .filter(|(i, _)| (done + i) % self.stride == 0)
                 .map(|(_, r)| (r.theta, r.omega))
                 .collect();
-            self.phase.append(0, 2 + k, &phase);
+            self.phase.append(0, 1 + k, &phase);
             self.appended[k] = rows.len();
         }
         let h = tracks

@@ -1,11 +1,15 @@
-//! The readouts: `data-readout` values of the state shown (the CSV's row `k` after `k`
-//! steps), each with its full-precision value in `data-value`.
+//! The readouts (the kit's panel): `data-readout` values of the state shown (the CSV's row
+//! `k` after `k` steps), each with its unit and its full-precision value in `data-value`;
+//! the drift of each integrator in compare mode; a polite screen-reader summary when the
+//! state stops moving.
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use crate::pyfmt::py_float;
+use crate::ui::ctx;
 use crate::ui::dom;
+use crate::ui::kit::readouts::{self as kit, Readouts as KitReadouts};
 
 /// `(key, Fluent id of the label, Fluent id of the unit)`; `drift-euler`/`drift-rk4` only show
 /// in compare mode.
@@ -27,21 +31,18 @@ pub const READOUTS: [(&str, &str, &str); 11] = [
     ("drift-rk4", "pendulum-ro-drift-rk4", "pendulum-unit-drift"),
 ];
 
-/// The readouts' markup.
+/// The readouts' markup (the kit's list and live region).
 pub fn markup() -> String {
-    let mut html = String::from("<dl class=\"pend-readouts\">");
-    for (key, label, unit) in READOUTS {
-        html.push_str(&format!(
-            "<div class=\"pend-ro\" data-ro-row=\"{key}\"><dt data-i18n=\"{label}\"></dt>\
-             <dd><output data-readout=\"{key}\"></output> <span class=\"pend-unit\" data-i18n=\"{unit}\"></span></dd></div>"
-        ));
-    }
-    html.push_str("</dl><p class=\"pend-sr\" data-pend=\"summary\" aria-live=\"polite\"></p>");
-    html
+    let items: Vec<(&str, &str)> = READOUTS.iter().map(|(k, l, _)| (*k, *l)).collect();
+    format!(
+        "{}{}",
+        kit::markup("pend", &items),
+        kit::live_markup("pend")
+    )
 }
 
 /// The values shown.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Values {
     pub t: f64,
     pub theta: f64,
@@ -56,10 +57,33 @@ pub struct Values {
     pub drifts: Option<(f64, f64)>,
 }
 
+impl Values {
+    fn get(&self, key: &str) -> Option<f64> {
+        match key {
+            "t" => Some(self.t),
+            "theta" => Some(self.theta),
+            "omega" => Some(self.omega),
+            "ke" => Some(self.ke),
+            "pe" => Some(self.pe),
+            "total" => Some(self.total),
+            "true-energy" => Some(self.true_energy),
+            "drift" => Some(self.drift),
+            "period" => self.period,
+            "drift-euler" => self.drifts.map(|d| d.0),
+            _ => self.drifts.map(|d| d.1),
+        }
+    }
+}
+
 /// The readouts component.
 pub struct Readouts {
-    outs: Vec<(&'static str, Element)>,
-    rows: Vec<(&'static str, Element)>,
+    kit: KitReadouts,
+    /// The rows of the compare-mode drifts.
+    compare_rows: Vec<Element>,
+    /// Each readout's unit in the current language.
+    units: Vec<String>,
+    /// What is shown (nothing is rewritten when it has not changed).
+    shown: Option<Values>,
 }
 
 /// `x` with `digits` significant digits (plain notation between 1e-4 and 1e6).
@@ -78,50 +102,62 @@ pub fn sig(x: f64, digits: usize) -> String {
     format!("{x:.decimals$}")
 }
 
+fn units() -> Vec<String> {
+    READOUTS.iter().map(|(_, _, u)| ctx::t(u)).collect()
+}
+
 impl Readouts {
-    /// Finds the outputs under `root`.
+    /// Finds the panel under `root`.
     pub fn find(root: &Element) -> Result<Readouts, JsValue> {
-        let mut outs = Vec::new();
-        let mut rows = Vec::new();
-        for (key, _, _) in READOUTS {
-            outs.push((
-                key,
-                dom::find(root, &format!("[data-readout=\"{key}\"]"), "pendulum")?,
-            ));
-            rows.push((
-                key,
-                dom::find(root, &format!("[data-ro-row=\"{key}\"]"), "pendulum")?,
-            ));
-        }
-        Ok(Readouts { outs, rows })
+        let kit = KitReadouts::find(root)?;
+        let compare_rows = ["drift-euler", "drift-rk4"]
+            .iter()
+            .filter_map(|k| kit.element(k).and_then(|e| e.parent_element()))
+            .collect();
+        Ok(Readouts {
+            kit,
+            compare_rows,
+            units: units(),
+            shown: None,
+        })
     }
 
     /// Shows `v`.
-    pub fn show(&self, v: &Values) {
-        for (key, out) in &self.outs {
-            let value = match *key {
-                "t" => Some(v.t),
-                "theta" => Some(v.theta),
-                "omega" => Some(v.omega),
-                "ke" => Some(v.ke),
-                "pe" => Some(v.pe),
-                "total" => Some(v.total),
-                "true-energy" => Some(v.true_energy),
-                "drift" => Some(v.drift),
-                "period" => v.period,
-                "drift-euler" => v.drifts.map(|d| d.0),
-                _ => v.drifts.map(|d| d.1),
-            };
-            let digits = if key.starts_with("drift") { 3 } else { 6 };
-            out.set_text_content(Some(
-                &value.map_or_else(|| "—".to_string(), |x| sig(x, digits)),
-            ));
-            let _ = out.set_attribute("data-value", &value.map_or_else(String::new, py_float));
+    pub fn show(&mut self, v: &Values) {
+        if self.shown.as_ref() == Some(v) {
+            return;
         }
-        for (key, row) in &self.rows {
-            if key.starts_with("drift-") {
-                dom::show(row, v.drifts.is_some());
-            }
+        for ((key, _, _), unit) in READOUTS.iter().zip(&self.units) {
+            let value = v.get(key);
+            let digits = if key.starts_with("drift") { 3 } else { 6 };
+            let text =
+                value.map_or_else(|| "—".to_string(), |x| format!("{} {unit}", sig(x, digits)));
+            self.kit
+                .set_with_value(key, &text, &value.map_or_else(String::new, py_float));
+        }
+        for row in &self.compare_rows {
+            dom::show(row, v.drifts.is_some());
+        }
+        self.shown = Some(*v);
+    }
+
+    /// Tells screen readers where the pendulum stopped (throttled by the kit).
+    pub fn announce(&self, v: &Values) {
+        self.kit.announce(&ctx::t_strings(
+            "pendulum-live",
+            &[
+                ("t", sig(v.t, 6)),
+                ("theta", sig(v.theta, 4)),
+                ("total", sig(v.total, 4)),
+            ],
+        ));
+    }
+
+    /// The language changed: units again, values redrawn.
+    pub fn relocalize(&mut self) {
+        self.units = units();
+        if let Some(v) = self.shown.take() {
+            self.show(&v);
         }
     }
 }

@@ -1,0 +1,101 @@
+// Speed of the pendulum page (#/pendulum-energy) in headless Chromium at 1920×1080, on the dist
+// folder named by BSV_DIST (default dist/); it needs a wasm built with `--features bench` (the
+// timing hooks are not in the app build): `make bench` (scripts/bench.sh) assembles one in
+// target/bench-dist. The case of the issue: 10× speed, timestep 0.001 s, both integrators
+// (compare on), a 20 s run. Prints p50 / p95 / max of:
+//
+// - frame work (real): the page's own record of each animation frame while playing: advance
+//   both tracks, draw the pendulum, append to the plots (time panels and phase portrait),
+//   readouts;
+// - frame interval (real): time between animation frames while playing (the browser's view);
+// - frame work (hook): the same work run synchronously by window.__pendulumBench.frame(167),
+//   167 steps being one 60 Hz frame at 10× real time with h = 0.001 s.
+//
+// Budget: frame work p95 < 4 ms. With PENDULUM_BENCH_STRICT=1 the exit code is 1 when it is
+// missed; otherwise this only reports.
+import { join } from 'node:path';
+import { openApp, closeBrowser, ROOT } from './harness.mjs';
+import { startStaticServer } from '../../scripts/serve.mjs';
+
+const VIEWPORT = { width: 1920, height: 1080 };
+const HASH = '#/pendulum-energy?timestep=0.001&compare=1&duration_s=20';
+const STEPS_PER_FRAME = 167;
+
+function stats(values) {
+  const v = [...values].filter(Number.isFinite).sort((a, b) => a - b);
+  const q = (p) => v[Math.min(v.length - 1, Math.max(0, Math.ceil(p * v.length) - 1))];
+  return { n: v.length, p50: q(0.5), p95: q(0.95), max: v[v.length - 1] };
+}
+
+const rows = [];
+function report(name, values, budgetP95) {
+  const s = stats(values);
+  const ok = budgetP95 === undefined ? '' : s.p95 < budgetP95 ? 'ok' : 'OVER';
+  rows.push({ name, ...s, budget: budgetP95 === undefined ? '' : `p95 < ${budgetP95} ms`, ok });
+}
+
+function printTable() {
+  const f = (x) => (x === undefined ? '' : x.toFixed(2));
+  const head = ['work', 'n', 'p50 ms', 'p95 ms', 'max ms', 'budget', ''];
+  const body = rows.map((r) => [r.name, String(r.n), f(r.p50), f(r.p95), f(r.max), r.budget, r.ok]);
+  const widths = head.map((h, i) => Math.max(h.length, ...body.map((b) => b[i].length)));
+  const line = (cells) => cells.map((c, i) => (i === 0 || i === 5 ? c.padEnd(widths[i]) : c.padStart(widths[i]))).join('  ');
+  console.log(line(head));
+  console.log(widths.map((w) => '-'.repeat(w)).join('  '));
+  for (const b of body) console.log(line(b));
+}
+
+const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);
+try {
+  const { page, close } = await openApp(server.url, HASH, { viewport: VIEWPORT });
+  if (!(await page.evaluate(() => typeof window.__pendulumBench === 'object'))) {
+    throw new Error('no window.__pendulumBench: serve a dist built with --features bench (make bench)');
+  }
+  // Real frames: from the start at 10×, for 5 s of wall time (50 s of simulated time would
+  // pass the 20 s end, so the run is restarted at its end).
+  await page.locator('[data-action="reset"]').click();
+  await page.locator('[data-stepper="speed"]').selectOption({ index: 6 });
+  await page.evaluate(() => {
+    window.__pendulumFrameMs.length = 0;
+    window.__benchIntervals = [];
+    let last;
+    const tick = (t) => {
+      if (last !== undefined) window.__benchIntervals.push(t - last);
+      last = t;
+      if (window.__benchIntervals.length < 100000) requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+  });
+  const work = [];
+  const intervals = [];
+  for (let round = 0; round < 3; round++) {
+    await page.locator('[data-action="run"]').click();
+    await page.waitForFunction(() => Number(document.querySelector('[data-readout="t"]').dataset.value) > 15, null, { timeout: 30000 });
+    await page.locator('[data-action="run"]').click();
+    const got = await page.evaluate(() => {
+      const out = { work: window.__pendulumFrameMs.splice(0), intervals: window.__benchIntervals.splice(0) };
+      return out;
+    });
+    work.push(...got.work.slice(1));
+    intervals.push(...got.intervals.slice(1));
+    await page.locator('[data-action="reset"]').click();
+    await page.evaluate(() => { window.__pendulumFrameMs.length = 0; window.__benchIntervals.length = 0; });
+  }
+  report('frame work (real, playing 10×)', work, 4);
+  report('frame interval (real, playing 10×)', intervals);
+
+  // The same work through the hook, synchronously, over whole runs.
+  const hook = await page.evaluate((steps) => {
+    const out = [];
+    for (let k = 0; k < 600; k++) out.push(window.__pendulumBench.frame(steps));
+    return out;
+  }, STEPS_PER_FRAME);
+  report(`frame work (hook, ${STEPS_PER_FRAME} steps)`, hook, 4);
+  await close();
+} finally {
+  await closeBrowser();
+  await server.close();
+}
+
+printTable();
+if (process.env.PENDULUM_BENCH_STRICT === '1' && rows.some((r) => r.ok === 'OVER')) process.exitCode = 1;
