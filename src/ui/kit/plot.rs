@@ -111,6 +111,7 @@ pub struct Plot {
     /// Panels whose y axis is logarithmic.
     log_y: Vec<bool>,
     cursor: Option<f64>,
+    markers: Vec<(usize, (f64, f64))>,
     axes_dirty: bool,
     data_dirty: bool,
     cursor_dirty: bool,
@@ -137,6 +138,7 @@ impl Plot {
             areas: Vec::new(),
             log_y: Vec::new(),
             cursor: None,
+            markers: Vec::new(),
             axes_dirty: true,
             data_dirty: true,
             cursor_dirty: true,
@@ -227,6 +229,33 @@ impl Plot {
             self.cursor = x;
             self.cursor_dirty = true;
         }
+    }
+
+    /// Rings drawn on the cursor layer at `(panel, (x, y))` data points (the current state of
+    /// a phase portrait, say); cheap to move, like the cursor.
+    pub fn set_markers(&mut self, markers: Vec<(usize, (f64, f64))>) {
+        if self.markers != markers {
+            self.markers = markers;
+            self.cursor_dirty = true;
+        }
+    }
+
+    /// The pixel row of `y` in `panel` (log axes included; a value ≤ 0 on a log axis is the
+    /// bottom edge).
+    fn y_pixel(&self, panel: usize, y: f64) -> f64 {
+        let Some((_, ys, _)) = self.scales(panel) else {
+            return f64::NAN;
+        };
+        let v = if !self.is_log_y(panel) {
+            y
+        } else if y > 0.0 {
+            y.log10()
+        } else if y.is_nan() {
+            f64::NAN
+        } else {
+            ys.domain.0.min(ys.domain.1)
+        };
+        ys.map(v)
     }
 
     /// The layers changed size or the language or the mode changed: redraw everything.
@@ -329,11 +358,14 @@ impl Plot {
             let y_step = nice_step(y.0, y.1, 10);
             // A log axis: ticks on whole decades where the span allows (plotters picks 1-2-5
             // steps of at most this many labels).
+            // No more labels than fit the panel's height (projector type is large).
+            let fit = ((f64::from(each) / (2.2 * font)).floor() as usize).max(2);
             let y_labels = if log {
                 ((y.1 - y.0).abs().floor() as usize + 1).clamp(2, 8)
             } else {
                 5
-            };
+            }
+            .min(fit);
             let mut chart = ChartBuilder::on(area)
                 .margin(margin)
                 .margin_top(margin + legend_row)
@@ -446,17 +478,15 @@ impl Plot {
             };
             let log = self.is_log_y(p);
             // A log axis: log₁₀ of the value; a value ≤ 0 (no logarithm) on the bottom edge.
+            let bottom = ys.domain.0.min(ys.domain.1);
             let y_px = |y: f64| {
-                let v = if !log {
-                    y
+                if !log {
+                    ys.map(y)
                 } else if y > 0.0 {
-                    y.log10()
-                } else if y.is_nan() {
-                    f64::NAN
+                    ys.map(y.log10())
                 } else {
-                    ys.domain.0.min(ys.domain.1)
-                };
-                ys.map(v)
+                    ys.map(bottom)
+                }
             };
             ctx.save();
             ctx.begin_path();
@@ -544,14 +574,26 @@ impl Plot {
         if own_layer {
             layer.begin();
         }
-        let Some(x) = self.cursor else {
-            return;
-        };
         let ctx = &layer.ctx;
         let (r, g, b) = spec.cursor_rgb;
         ctx.set_stroke_style_str(&format!("rgba({r},{g},{b},0.85)"));
         ctx.set_line_width(1.5 * ink.line);
         let _ = ctx.set_line_dash(&solid());
+        for &(p, (x, y)) in &self.markers {
+            let Some((xs, _, area)) = self.scales(p) else {
+                continue;
+            };
+            let (px, py) = (xs.map(x), self.y_pixel(p, y));
+            let inside = (area.x0..=area.x1).contains(&px) && (area.y0..=area.y1).contains(&py);
+            if inside {
+                ctx.begin_path();
+                let _ = ctx.arc(px, py, 5.0 * ink.line, 0.0, std::f64::consts::TAU);
+                ctx.stroke();
+            }
+        }
+        let Some(x) = self.cursor else {
+            return;
+        };
         for p in 0..self.areas.len() {
             let Some((xs, _, area)) = self.scales(p) else {
                 continue;
