@@ -222,6 +222,16 @@ impl Plots {
             .first()
             .map_or(0.0, |t| t.start().params().timestep_s);
         self.time.set_cursor(Some(index as f64 * h));
+        // The state shown, on the phase portrait.
+        self.phase.set_markers(
+            tracks
+                .iter()
+                .map(|t| {
+                    let (theta, omega, _) = t.state(index);
+                    (0, (theta, omega))
+                })
+                .collect(),
+        );
     }
 
     /// Draws what changed.
