@@ -184,9 +184,11 @@ pub fn nearest_index(xs: &[f64], x: f64) -> Option<usize> {
     })
 }
 
-/// Min/max decimation: the points of `pts` (x ascending) reduced to at most four per pixel
-/// column of `x` (first, min, max, last, in x order), so a polyline through the result has
-/// the same pixels as one through all points. Non-finite points break nothing: they are kept
+/// Min/max decimation: the points of `pts` reduced to at most four per run of consecutive
+/// points in one pixel column of `x` (first, min, max, last, in order), so a polyline through
+/// the result has the same pixels as one through all points. For x ascending (a time series)
+/// that is at most four per column; a curve that turns back in x (a phase portrait) works
+/// too, run by run. Non-finite points break nothing: they are kept
 /// (they split the line where the plot draws it).
 pub fn decimate(pts: &[(f64, f64)], x: &LinearScale) -> Vec<(f64, f64)> {
     let mut out = Vec::with_capacity(pts.len().min(4096));
@@ -340,5 +342,33 @@ mod tests {
         // Few points: unchanged.
         let few = [(0.0, 1.0), (0.5, 2.0), (1.0, 0.0)];
         assert_eq!(decimate(&few, &x), few.to_vec());
+    }
+
+    #[test]
+    fn decimation_of_a_curve_that_turns_back_keeps_its_extent() {
+        // A phase-portrait ellipse traced finely: runs within a column shrink to ≤ 4 points,
+        // and the turning points stay (in y exactly, in x to the pixel column).
+        let pts: Vec<(f64, f64)> = (0..=20_000)
+            .map(|i| {
+                let a = i as f64 / 20_000.0 * std::f64::consts::TAU;
+                (2.0 * a.cos(), 10.0 * a.sin())
+            })
+            .collect();
+        let x = LinearScale::new((-2.0, 2.0), (0.0, 400.0));
+        let d = decimate(&pts, &x);
+        assert!(d.len() < pts.len() / 4, "{} points", d.len());
+        let extent = |p: &[(f64, f64)]| {
+            p.iter()
+                .fold((f64::MAX, f64::MIN, f64::MAX, f64::MIN), |e, q| {
+                    (e.0.min(q.0), e.1.max(q.0), e.2.min(q.1), e.3.max(q.1))
+                })
+        };
+        // Same y extremes; x extremes in the same pixel columns (x within a column is one
+        // pixel).
+        let (a, b) = (extent(&d), extent(&pts));
+        assert_eq!((a.2, a.3), (b.2, b.3));
+        assert_eq!(x.map(a.0).floor(), x.map(b.0).floor());
+        assert_eq!(x.map(a.1).floor(), x.map(b.1).floor());
+        assert_eq!((d.first(), d.last()), (pts.first(), pts.last()));
     }
 }

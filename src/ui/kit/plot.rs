@@ -123,6 +123,9 @@ fn err<E: std::fmt::Debug>(e: E) -> String {
     format!("{e:?}")
 }
 
+/// Lines of more points than this are min/max-decimated per pixel column before drawing.
+const DECIMATE_FROM: usize = 32;
+
 /// Dots are drawn for a [`Mark::LineAndPoints`] series of at most this many points.
 const DOTS_MAX: usize = 60;
 
@@ -508,14 +511,16 @@ impl Plot {
                 let colour = format!("rgba({r},{g},{b},{})", series.alpha);
                 if series.mark != Mark::Points {
                     let part = &pts[start..];
+                    // Decimated whenever there are more points than a few per pixel column
+                    // could need (an appended frame of 167 steps may span 8 columns): the
+                    // same pixels for far fewer canvas calls.
                     let thin;
-                    let line: &[(f64, f64)] =
-                        if part.len() > 2 * (area.x1 - area.x0).max(1.0) as usize {
-                            thin = decimate(part, &xs);
-                            &thin
-                        } else {
-                            part
-                        };
+                    let line: &[(f64, f64)] = if part.len() > DECIMATE_FROM {
+                        thin = decimate(part, &xs);
+                        &thin
+                    } else {
+                        part
+                    };
                     ctx.set_stroke_style_str(&colour);
                     ctx.set_line_width(series.width * ink.line);
                     ctx.set_line_join("round");
