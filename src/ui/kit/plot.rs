@@ -372,6 +372,8 @@ impl Plot {
             let mut chart = ChartBuilder::on(area)
                 .margin(margin)
                 .margin_top(margin + legend_row)
+                // Room for half of the last x tick label, centred on the right edge.
+                .margin_right(margin + (1.2 * font) as i32)
                 .x_label_area_size(if bottom { x_label } else { 0 })
                 .y_label_area_size(y_label)
                 .build_cartesian_2d(spec.x.range.0..spec.x.range.1, y.0..y.1)
