@@ -62,5 +62,5 @@ pendulum-end-rest = By t = { $t } s the damper has taken { $percent } % of the e
 pendulum-end-done = End of the run at t = { $t } s.
 pendulum-h-label = Time step h
 pendulum-h-value = { $h } s
-pendulum-h-note = Slide to a larger step and watch Euler's energy error grow (with the comparison on, RK4 beside it); around h = 0.3 s Euler goes unstable. The same value is in the parameters below.
+pendulum-h-note = Slide to a larger step and watch Euler's energy error grow (with the comparison on, RK4 beside it): from about h = 0.2 s Euler's pendulum gains enough energy to go over the top, which the real one never does. The same value is in the parameters below.
 pendulum-live = t { $t } s, angle { $theta } rad, total energy { $total } J.

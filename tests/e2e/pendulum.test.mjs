@@ -2,7 +2,9 @@
 // row n of the CSV `bsv pendulum-energy` writes; End then download equals the CLI byte for byte
 // (defaults, and a URL setting every parameter); play advances t; compare mode shows both
 // drifts with RK4's smaller; Japanese leaves no English UI text; a bad timestep shows its
-// message and the run keeps the last valid timestep. Screenshots (EN/JA 1920×1080, projector,
+// message and the run keeps the last valid timestep; the Python line only when just the duration
+// differs; the PNG holds both plots; the timestep slider sets h (field, URL, run); a damped run
+// that has come to rest offers Replay and damping 0. Screenshots (EN/JA 1920×1080, projector,
 // phone 390 px) go to tests/e2e/out/. In a build with `--features bench` it also reports the
 // frame work (advance + draw + plot append) p95 at 10× speed, 0.001 s, both integrators.
 import { test, before, after } from 'node:test';

@@ -52,8 +52,9 @@ const SPEEDS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0];
 const URL_EVERY_MS: f64 = 500.0;
 /// 1× real time.
 const DEFAULT_SPEED: usize = 3;
-/// The timestep control's choices, s (semi-implicit Euler on this pendulum goes unstable
-/// near h = 2/ω₀ ≈ 0.29 s at the defaults).
+/// The timestep control's choices, s (undamped from the default 120°, semi-implicit Euler
+/// gains enough energy to go over the top from about h = 0.2 s; near the bottom it is
+/// unstable above h = 2/ω₀ ≈ 0.29 s).
 const TIMESTEPS: [f64; 10] = [0.0005, 0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3];
 /// At the end of a damped run, below this fraction of E(0) left the pendulum counts as at rest.
 const AT_REST: f64 = 0.02;
