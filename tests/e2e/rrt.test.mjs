@@ -55,6 +55,7 @@ async function toPage(page, [x, y]) {
 
 /** Drags from world point `from` to `to` in `steps` pointer moves. */
 async function dragWorld(page, from, to, steps = 8) {
+  await page.evaluate(() => document.querySelector('[data-testid="rrt-2d-canvas"]').scrollIntoView({ block: 'center' }));
   const a = await toPage(page, from);
   const b = await toPage(page, to);
   await page.mouse.move(a.x, a.y);
@@ -65,7 +66,7 @@ async function dragWorld(page, from, to, steps = 8) {
   await page.mouse.up();
 }
 
-const query = (page) => page.evaluate(() => new URLSearchParams(location.hash.split('?')[1] ?? ''));
+const query = async (page) => new URLSearchParams(await page.evaluate(() => location.hash.split('?')[1] ?? ''));
 
 test('step, back and the keys move the counters to the CLI tree; End shows 91 / 33 / 1.604', async () => {
   const { page, errors, close } = await open();
@@ -236,9 +237,9 @@ test('Japanese leaves no English UI text', async () => {
   const { page, errors, close } = await open('#/rrt-2d?lang=ja&obstacle=0.35,0.25,0.65,0.75&obstacle=0.1,0.6,0.3,0.7');
   try {
     for (let k = 0; k < 6; k++) await page.locator('[data-action="step"]').click();
-    await page.locator('[data-field="seed"]').fill('abc');
     await dragWorld(page, [0.9, 0.9], [0.5, 0.5], 1);
     assert.ok(await page.locator('[data-testid="rrt-2d-world-message"]').isVisible());
+    await page.locator('[data-field="seed"]').fill('abc');
     const text = await page.evaluate(() => document.body.innerText);
     const left = english.filter((s) => text.includes(s));
     assert.deepEqual(left, [], `English left on the Japanese page: ${left.join(' | ')}`);
