@@ -59,6 +59,9 @@ const SPEEDS: [Speed; 5] = [
 const DEFAULT_SPEED: usize = 1;
 /// Shortest time between two URL writes while playing, ms.
 const URL_EVERY_MS: f64 = 500.0;
+/// Work per frame (iterations + drawing) playing as fast as possible aims under, ms: the
+/// stepper halves its chunk above twice this, so frames stay under about 4 ms.
+const FRAME_BUDGET_MS: f64 = 1.5;
 /// Runs up to this budget restart on every move of a drag; bigger ones when it ends.
 const LIVE_RESTART_MAX_ITER: usize = 20_000;
 
@@ -347,6 +350,8 @@ impl Inner {
                 }
             },
         )?;
+        // As fast as possible, yet whole frames (the tree appended, the panel) stay short.
+        widget.set_frame_budget(FRAME_BUDGET_MS, true);
         *self.stepper.borrow_mut() = Some(widget);
         Ok(())
     }
