@@ -150,6 +150,8 @@ test('downloads equal bsv: the default, and a URL with two boxes, moved start an
       for (const file of ['rrt_nodes.csv', 'rrt_path.csv']) {
         assertSameBytes(await download(page, file), want.get(file), `${hash} ${file}`);
       }
+      const png = await download(page, 'rrt_2d.png');
+      assert.deepEqual([...png.subarray(0, 4)], [0x89, 0x50, 0x4e, 0x47], 'a PNG');
       assert.equal(await page.locator('[data-cmd="bsv"]').innerText(), bsv);
       if (python) {
         assert.equal(await page.locator('[data-cmd="python"]').innerText(), python);
