@@ -1,4 +1,4 @@
-//! The page's markup: heading, the world view with its stepper and editor toolbar, the
+//! The page's markup: heading, the world view under its stepper, the editor toolbar, the
 //! sub-step panel with the pseudocode, the counters, the parameters, the exports and the
 //! explanation. Every text is a Fluent id (`data-i18n`), filled by the shell.
 
@@ -39,12 +39,12 @@ pub fn page() -> String {
          <p class=\"rrt-notice\" data-rrt=\"url-notice\" hidden></p></header>\
          <div class=\"rrt-top\">\
          <section class=\"rrt-card rrt-world\"><h2 data-i18n=\"rrt-world-title\"></h2>\
+         <div data-rrt=\"stepper\"></div>\
          <div class=\"rrt-stage\" data-rrt=\"stage\">\
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"rrt-layer\" data-testid=\"rrt-2d-canvas\" tabindex=\"0\" role=\"img\" \
          data-i18n-attr=\"aria-label=rrt-canvas-label\"></canvas></div>\
-         <div data-rrt=\"stepper\"></div>\
          <div class=\"rrt-tools\">\
          <button type=\"button\" class=\"button\" data-action=\"add-box\" data-i18n=\"rrt-add-box\"></button>\
          <button type=\"button\" class=\"button\" data-action=\"delete-box\" data-i18n=\"rrt-delete-box\"></button>\

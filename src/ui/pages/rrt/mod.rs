@@ -28,10 +28,10 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 use crate::error::RecipeError;
 use crate::i18n::FluentArg;
 use crate::pyfmt::fixed;
-use crate::recipes::rrt_2d::{run_setup, Rrt, RrtSetup};
+use crate::recipes::rrt_2d::{run_setup, Rrt, RrtOutcome, RrtSetup};
 use crate::recipes::Progress;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
-use crate::ui::kit::drag::{Drag, DragEvent};
+use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
@@ -309,10 +309,16 @@ impl Inner {
             &top,
             move |at, kind| {
                 let p = w_hit.upgrade()?;
-                let frame = p.world.borrow().frame;
+                let world = p.world.borrow();
                 let state = p.state.borrow();
+                if kind == PointerKind::Touch
+                    && !world.handles(&state).iter().any(|h| h.contains(at))
+                {
+                    // A finger grabs only a handle; anywhere else it scrolls the page.
+                    return None;
+                }
                 hit_test(
-                    &frame,
+                    &world.frame,
                     &state,
                     at,
                     world::WorldView::hit_radius(kind.is_coarse()),
@@ -682,7 +688,16 @@ impl Inner {
             return;
         };
         let ink = Ink::current();
-        self.world.borrow_mut().draw_tree(&run, ink);
+        // Before its outcome (sub-step mode), the iteration's new nodes are not drawn yet.
+        let mut upto = run.rrt.nodes().len();
+        if phase.is_some_and(|p| p != Phase::Outcome) {
+            upto -= match run.rrt.last().map(|r| r.outcome) {
+                Some(RrtOutcome::Added { .. }) => 1,
+                Some(RrtOutcome::GoalReached { .. }) => 2,
+                _ => 0,
+            };
+        }
+        self.world.borrow_mut().draw_tree(&run, upto, ink);
         drop(run);
         self.draw_marks_with(phase);
         let draw_ms = now_ms() - started;

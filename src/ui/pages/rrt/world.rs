@@ -86,7 +86,8 @@ impl WorldView {
         }
     }
 
-    /// The touch overlay shapes: start, goal and every box corner.
+    /// The touch overlay shapes: start, goal, every box's centre and corners (a finger
+    /// anywhere else scrolls the page).
     pub fn handles(&self, state: &PageState) -> Vec<HandleShape> {
         let r = WorldView::hit_radius(true);
         let mut shapes = vec![
@@ -100,6 +101,12 @@ impl WorldView {
             },
         ];
         for b in &state.obstacles {
+            shapes.push(HandleShape::Circle {
+                centre: self
+                    .frame
+                    .px([0.5 * (b.x_min + b.x_max), 0.5 * (b.y_min + b.y_max)]),
+                radius: r,
+            });
             for c in corners(b) {
                 shapes.push(HandleShape::Circle {
                     centre: self.frame.px(c),
@@ -173,11 +180,13 @@ impl WorldView {
         let _ = c.fill_text("G", g.x + 9.0 * ink.line, g.y - 8.0);
     }
 
-    /// Layer 1: the tree, appending the nodes not drawn yet (the whole tree after a step
-    /// back, a new run or a resize).
-    pub fn draw_tree(&mut self, run: &Run, ink: Ink) {
+    /// Layer 1: the tree's first `upto` nodes, appending the ones not drawn yet (the whole
+    /// tree after a step back, a new run, a resize, or fewer nodes asked for: sub-step mode
+    /// hides the iteration's new node until its outcome).
+    pub fn draw_tree(&mut self, run: &Run, upto: usize, ink: Ink) {
         let layer = self.canvas.layer(1);
-        let nodes = run.rrt.nodes();
+        let all = run.rrt.nodes();
+        let nodes = &all[..upto.min(all.len())];
         let parents = run.rrt.parents();
         if self.tree_generation != Some(run.generation) || nodes.len() < self.tree_drawn {
             layer.begin();
