@@ -285,8 +285,10 @@ test('frame work p95 playing as fast as possible to 50,000 nodes (bench builds o
     }
     await page.locator('[data-stepper="speed"]').selectOption({ index: 4 });
     await page.evaluate(() => { window.__rrtFrameMs.length = 0; window.__rrtDrawMs.length = 0; });
+    const t0 = Date.now();
     await page.locator('[data-action="run"]').click();
     await page.waitForFunction(() => Number(document.querySelector('[data-readout="nodes"]').textContent.replace(/,/g, '')) >= 50000, null, { timeout: 60_000 });
+    const seconds = (Date.now() - t0) / 1000;
     await page.locator('[data-action="run"]').click();
     const stats = (name) => page.evaluate((n) => window[n].slice(), name).then((a) => {
       a.sort((x, y) => x - y);
@@ -297,6 +299,9 @@ test('frame work p95 playing as fast as possible to 50,000 nodes (bench builds o
     const f = (s) => `${s.n} frames, median ${s.median.toFixed(2)} ms, p95 ${s.p95.toFixed(2)} ms, max ${s.max.toFixed(2)} ms`;
     console.log(`rrt frame work (advance + draw + panel): ${f(frame)}`);
     console.log(`rrt drawing alone: ${f(draw)}`);
+    console.log(`rrt: 50,000 nodes in ${seconds.toFixed(1)} s as fast as possible`);
+    // The p95 is reported (it moves with the machine's load); a typical frame must be short.
+    assert.ok(frame.median < 4, `frame work median ${frame.median} ms`);
   } finally {
     await close();
   }
