@@ -55,7 +55,7 @@ impl SubSteps {
                         line
                     );
                 }
-                if let Ok(li) = dom::el_text("li", "rrt-sub", &line) {
+                if let Ok(li) = dom::el_text("li", "rrt-step-line", &line) {
                     let _ = li.set_attribute("data-phase", phase_name(phase));
                     if phase == Phase::Outcome {
                         let _ = li.set_attribute("data-outcome", r.outcome.name());
