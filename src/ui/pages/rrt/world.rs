@@ -359,7 +359,8 @@ impl WorldView {
                     disc(c, at, 4.5 * ink.line, HIT);
                     ring(c, at, 8.0 * ink.line, HIT, 2.0 * ink.line);
                 } else {
-                    disc(c, at, 2.0 * ink.line, "#111827");
+                    disc(c, at, 2.8 * ink.line, "#ffffff");
+                    ring(c, at, 2.8 * ink.line, "#111827", ink.line);
                 }
             }
         }
