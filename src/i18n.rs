@@ -99,6 +99,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         "pendulum.ftl",
         include_str!("../locales/en/pendulum.ftl"),
     ),
+    (Lang::En, "rrt.ftl", include_str!("../locales/en/rrt.ftl")),
     (
         Lang::Ja,
         "shell.ftl",
@@ -127,6 +128,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         "pendulum.ftl",
         include_str!("../locales/ja/pendulum.ftl"),
     ),
+    (Lang::Ja, "rrt.ftl", include_str!("../locales/ja/rrt.ftl")),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as

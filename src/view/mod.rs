@@ -10,6 +10,8 @@
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`ik2r`]: the IK page: state and URL, validation, arm view geometry, exports.
 //! - [`pendulum`]: the pendulum page: kept rows, energy error and drift, period, separatrix, URL.
+//! - [`rrt`]: the RRT stepper page: state and URL, command lines, world editor hit tests and
+//!   edits, sub-step texts and pseudocode lines.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
@@ -21,6 +23,7 @@ pub mod ik2r;
 pub mod pendulum;
 pub mod plot;
 pub mod progress;
+pub mod rrt;
 pub mod stepper;
 pub mod table;
 pub mod url;

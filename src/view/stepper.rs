@@ -133,6 +133,8 @@ pub struct Stepper {
     carry: f64,
     /// Steps per frame at [`Speed::Max`].
     chunk: u64,
+    /// Work per frame [`Speed::Max`] aims under, ms ([`FRAME_BUDGET_MS`] unless set).
+    budget_ms: f64,
 }
 
 impl Stepper {
@@ -144,6 +146,15 @@ impl Stepper {
             speed,
             carry: 0.0,
             chunk: 1,
+            budget_ms: FRAME_BUDGET_MS,
+        }
+    }
+
+    /// Sets the work per frame [`Speed::Max`] aims under, ms (a page whose frames must stay
+    /// short; ignored unless finite and positive).
+    pub fn set_frame_budget(&mut self, budget_ms: f64) {
+        if budget_ms.is_finite() && budget_ms > 0.0 {
+            self.budget_ms = budget_ms;
         }
     }
 
@@ -248,9 +259,9 @@ impl Stepper {
                 whole as u64
             }
             Speed::Max => {
-                if work_ms < FRAME_BUDGET_MS {
+                if work_ms < self.budget_ms {
                     self.chunk = (self.chunk * 2).min(MAX_CHUNK);
-                } else if work_ms > 2.0 * FRAME_BUDGET_MS {
+                } else if work_ms > 2.0 * self.budget_ms {
                     self.chunk = (self.chunk / 2).max(1);
                 }
                 self.chunk
@@ -458,6 +469,22 @@ mod tests {
             s.tick(16.0, 100.0, &mut m);
         }
         assert_eq!(s.chunk, 1);
+    }
+
+    #[test]
+    fn a_smaller_frame_budget_keeps_chunks_smaller() {
+        let mut m = model(Length::Finite(1_000_000));
+        let mut s = Stepper::new(Speed::Max);
+        s.set_frame_budget(1.5);
+        s.set_frame_budget(f64::NAN);
+        s.apply(Command::Play, &mut m);
+        for _ in 0..40 {
+            // 1 ms per 1,000 steps: the budget allows about 1,500 a frame.
+            let work = s.chunk as f64 / 1000.0;
+            s.tick(16.0, work, &mut m);
+            assert!(s.chunk <= 4096, "chunk {}", s.chunk);
+        }
+        assert!(s.chunk >= 1024, "chunk {}", s.chunk);
     }
 
     #[test]

@@ -97,6 +97,8 @@ struct Inner<M: StepModel + 'static> {
     frame: RefCell<Option<FrameLoop>>,
     last_frame_ms: Cell<Option<f64>>,
     last_work_ms: Cell<f64>,
+    /// Whether a frame's work, for [`Speed::Max`], includes the page's redraw.
+    work_counts_redraw: Cell<bool>,
 }
 
 /// A stepper driving `M`. Dropping it removes its listeners and stops playing.
@@ -131,6 +133,7 @@ impl<M: StepModel + 'static> StepperWidget<M> {
             frame: RefCell::new(None),
             last_frame_ms: Cell::new(None),
             last_work_ms: Cell::new(0.0),
+            work_counts_redraw: Cell::new(false),
         });
         let mut scope = Scope::new();
         let weak = Rc::downgrade(&inner);
@@ -226,6 +229,15 @@ impl<M: StepModel + 'static> StepperWidget<M> {
         }
     }
 
+    /// Sets the work per frame "as fast as possible" aims under (default
+    /// [`crate::view::stepper::FRAME_BUDGET_MS`], the model's `go_to` alone), and whether that
+    /// work includes the page's redraw in `on_change` (a page that must keep whole frames
+    /// short, such as the RRT stepper drawing its tree).
+    pub fn set_frame_budget(&self, budget_ms: f64, counts_redraw: bool) {
+        self.inner.state.borrow_mut().set_frame_budget(budget_ms);
+        self.inner.work_counts_redraw.set(counts_redraw);
+    }
+
     /// Re-renders the labels in the current language.
     pub fn relocalize(&self) {
         self.inner.relocalize();
@@ -275,11 +287,16 @@ impl<M: StepModel + 'static> Inner<M> {
                 .borrow_mut()
                 .tick(elapsed, self.last_work_ms.get(), &mut *model)
         };
-        self.last_work_ms.set(now_ms() - started);
+        let advance_ms = now_ms() - started;
         self.render();
         if moved {
             (self.on_change)(self.state.borrow().index());
         }
+        self.last_work_ms.set(if self.work_counts_redraw.get() {
+            now_ms() - started
+        } else {
+            advance_ms
+        });
         if self.state.borrow().playing() {
             if let Some(frame) = self.frame.borrow().as_ref() {
                 frame.request();

@@ -1,0 +1,812 @@
+//! The RRT stepper (`#/rrt-2d`): the recipe's tree grown one iteration at a time in a world
+//! the user draws, backwards too (the kernel's exact `seek`: an RNG checkpoint every 64
+//! iterations and a replay), each iteration's sub-steps drawn and written out with the
+//! pseudocode line that decided it, and the run's CSVs byte for byte those of `bsv rrt-2d`
+//! with the page's arguments.
+//!
+//! The page is a struct of components, one file each: `world` (the three-layer view: world,
+//! tree appended to, marks of the moment), `substeps` (the sub-step panel and pseudocode),
+//! `params` (the validated form), `exports` (CSVs, PNG, command lines) and `markup` (with the
+//! explanation); counters are the kit's readouts. This file holds the run ([`Run`], the
+//! stepper's model) and wires them: the world editor's drags (move a box, resize it by a
+//! corner, move the start or the goal) go through `crate::view::rrt::drag`, which refuses a
+//! start or goal inside a box or outside the square with a message; every edit restarts the
+//! run at iteration 0.
+
+mod exports;
+mod markup;
+mod params;
+mod substeps;
+mod world;
+
+use std::cell::{Cell, RefCell};
+use std::rc::{Rc, Weak};
+
+use wasm_bindgen::prelude::*;
+use web_sys::{Element, HtmlInputElement, KeyboardEvent};
+
+use crate::error::RecipeError;
+use crate::i18n::FluentArg;
+use crate::pyfmt::fixed;
+use crate::recipes::rrt_2d::{run_setup, Rrt, RrtOutcome, RrtSetup};
+use crate::recipes::Progress;
+use crate::ui::kit::canvas::{focus_without_scroll, Ink};
+use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
+use crate::ui::kit::keymap;
+use crate::ui::kit::readouts::Readouts;
+use crate::ui::kit::scope::Scope;
+use crate::ui::kit::stepper::{Command, Length, Speed, StepModel, StepperOptions, StepperWidget};
+use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
+use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::schedule::now_ms;
+use crate::ui::{ctx, dom};
+use crate::view::rrt::{
+    add_box, delete_box, drag, hit_test, phases, rate_per_s, Grab, PageState, Phase, Refusal,
+};
+
+/// The page, as the shell's page table lists it.
+pub const PAGE: PageDef = PageDef::of::<RrtPage>("rrt-2d", "rrt-title", "rrt-blurb");
+
+/// Playing speeds: iterations per second, then as fast as possible.
+const SPEEDS: [Speed; 5] = [
+    Speed::PerSecond(1.0),
+    Speed::PerSecond(10.0),
+    Speed::PerSecond(100.0),
+    Speed::PerSecond(1000.0),
+    Speed::Max,
+];
+/// 10 iterations a second.
+const DEFAULT_SPEED: usize = 1;
+/// Shortest time between two URL writes while playing, ms.
+const URL_EVERY_MS: f64 = 500.0;
+/// Work per frame (iterations + drawing) playing as fast as possible aims under, ms: the
+/// stepper halves its chunk above twice this, so frames stay under about 4 ms.
+const FRAME_BUDGET_MS: f64 = 1.5;
+/// Runs up to this budget restart on every move of a drag; bigger ones when it ends.
+const LIVE_RESTART_MAX_ITER: usize = 20_000;
+
+/// The run: the tree at the iteration shown, and the same run at its end (its length and
+/// the exports).
+pub struct Run {
+    pub rrt: Rrt,
+    pub finished: Rrt,
+    /// Iterations of the whole run (to the goal or the budget).
+    pub end: u64,
+    /// Changes whenever the tree shown shrinks or is another run's (the tree layer is then
+    /// redrawn whole).
+    pub generation: u64,
+    /// Time the last `go_to` took, ms.
+    pub advance_ms: f64,
+}
+
+impl Run {
+    fn new(setup: &RrtSetup, generation: u64) -> Result<Run, RecipeError> {
+        let rrt = Rrt::with_setup(setup)?;
+        let finished = run_setup(setup, &mut Progress::silent())?;
+        Ok(Run {
+            rrt,
+            end: finished.iterations() as u64,
+            finished,
+            generation,
+            advance_ms: 0.0,
+        })
+    }
+}
+
+impl StepModel for Run {
+    fn length(&self) -> Length {
+        Length::Finite(self.end)
+    }
+    fn go_to(&mut self, index: u64) {
+        let started = now_ms();
+        let k = usize::try_from(index).unwrap_or(usize::MAX);
+        if k < self.rrt.iterations() {
+            self.generation += 1;
+        }
+        self.rrt.seek(k);
+        self.advance_ms = now_ms() - started;
+    }
+}
+
+/// A drag under way: what, where it began (world), the state before it.
+type DragStart = (Grab, [f64; 2], PageState);
+
+/// The mounted page.
+pub struct RrtPage(Rc<Inner>);
+
+struct Inner {
+    me: Weak<Inner>,
+    root: Element,
+    /// The last valid state (the form's texts and the world; `it` is the run's).
+    state: RefCell<PageState>,
+    /// The state the run was made from (a drag of a big run restarts at its end).
+    run_state: RefCell<PageState>,
+    run: Rc<RefCell<Run>>,
+    stepper_slot: Element,
+    stepper: RefCell<Option<StepperWidget<Run>>>,
+    world: RefCell<world::WorldView>,
+    drag: RefCell<Option<Drag<Grab>>>,
+    dragging: RefCell<Option<DragStart>>,
+    hover: Cell<Option<Grab>>,
+    selected: Cell<Option<usize>>,
+    refusal: Cell<Option<Refusal>>,
+    world_message: Element,
+    substeps: substeps::SubSteps,
+    substep_mode: HtmlInputElement,
+    /// In sub-step mode: the sub-step shown (index into the iteration's phases).
+    phase: Cell<Option<usize>>,
+    /// The sub-step keys are moving the stepper (keep `phase`).
+    substep_driving: Cell<bool>,
+    params: RefCell<params::Params>,
+    readouts: Readouts,
+    exports: exports::Exports,
+    url_notice: UrlNotice,
+    url: Option<UrlWriter>,
+    url_written: Cell<f64>,
+    /// Nodes/second while playing: the sample's start (ms, nodes) and the last rate.
+    rate_from: Cell<Option<(f64, usize)>>,
+    rate: Cell<Option<f64>>,
+    scope: RefCell<Scope>,
+}
+
+fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
+    dom::find(root, &format!("[data-rrt=\"{name}\"]"), "rrt")
+}
+
+fn js_error(e: &RecipeError) -> JsValue {
+    JsValue::from_str(&ctx::error_text(e))
+}
+
+impl Page for RrtPage {
+    fn mount(ctx: MountCtx) -> Result<RrtPage, JsValue> {
+        let root = ctx.root.clone();
+        root.set_inner_html(&markup::page());
+        dom::relocalize(&root)?;
+        let (state, ignored) = PageState::read(&ctx.query);
+        let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
+        let params = params::Params::build(role(&root, "form")?, &state)?;
+        let setup = state.setup().map_err(|e| js_error(&e))?;
+        let run = Rc::new(RefCell::new(Run::new(&setup, 0).map_err(|e| js_error(&e))?));
+        let world = world::WorldView::find(&role(&root, "stage")?)?;
+        let substeps = substeps::SubSteps::find(&root)?;
+        let readouts = Readouts::find(&root)?;
+        let exports = exports::Exports::find(&root)?;
+        let start_it = state.it;
+        let stepper_slot: Element = role(&root, "stepper")?;
+        let world_message: Element = role(&root, "world-message")?;
+        let substep_mode: HtmlInputElement = role(&root, "substep-mode")?;
+        let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
+            let mut scope = Scope::new();
+            let url = Some(UrlWriter::new(&mut scope, me, Inner::query));
+            Inner {
+                me: me.clone(),
+                run_state: RefCell::new(state.clone()),
+                state: RefCell::new(state),
+                run,
+                stepper_slot,
+                stepper: RefCell::new(None),
+                world: RefCell::new(world),
+                drag: RefCell::new(None),
+                dragging: RefCell::new(None),
+                hover: Cell::new(None),
+                selected: Cell::new(None),
+                refusal: Cell::new(None),
+                world_message,
+                substeps,
+                substep_mode,
+                phase: Cell::new(None),
+                substep_driving: Cell::new(false),
+                params: RefCell::new(params),
+                readouts,
+                exports,
+                url_notice,
+                url,
+                url_written: Cell::new(0.0),
+                rate_from: Cell::new(None),
+                rate: Cell::new(None),
+                scope: RefCell::new(scope),
+                root,
+            }
+        });
+        inner.install()?;
+        inner.build_stepper()?;
+        inner.world.borrow_mut().fit();
+        inner.exports.update(&inner.state.borrow());
+        inner.redraw_world();
+        if start_it > 0 {
+            inner.command(Command::Seek(start_it));
+        }
+        inner.update();
+        Ok(RrtPage(inner))
+    }
+
+    fn relocalize(&self) {
+        self.0.relocalize();
+    }
+
+    fn set_projector(&self, _on: bool) {
+        self.0.relayout();
+    }
+
+    fn shortcuts(&self) -> Vec<Shortcut> {
+        keymap::STEPPER.to_vec()
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        self.0.on_key(event)
+    }
+}
+
+impl Inner {
+    /// The URL query of the page.
+    fn query(&self) -> Vec<(String, String)> {
+        let mut state = self.state.borrow().clone();
+        state.it = self
+            .run
+            .try_borrow()
+            .map_or(state.it, |r| r.rrt.iterations() as u64);
+        state.write()
+    }
+
+    /// Listeners: the form, the editor's buttons, the downloads, the drag, resizes.
+    fn install(&self) -> Result<(), JsValue> {
+        let mut scope = self.scope.borrow_mut();
+        let me = &self.me;
+        let form = self.params.borrow().element.clone();
+        scope.listen_for(&form, "input", me, |p, e| {
+            if let Some(el) = e.target().and_then(|t| t.dyn_into::<Element>().ok()) {
+                p.params.borrow().form.note_edit(&el);
+            }
+            p.edited();
+        })?;
+        scope.listen_for(&form, "change", me, |p, _| p.edited())?;
+        scope.listen_for(&form, "submit", me, |_, e| e.prevent_default())?;
+        for (action, f) in [
+            ("add-box", Inner::add_box as fn(&Inner)),
+            ("delete-box", Inner::delete_box),
+            ("recipe-world", Inner::recipe_world),
+        ] {
+            let button: Element =
+                dom::find(&self.root, &format!("[data-action=\"{action}\"]"), "rrt")?;
+            scope.listen_for(&button, "click", me, move |p, _| f(p))?;
+        }
+        scope.listen_for(&self.substep_mode, "change", me, |p, _| {
+            p.phase.set(None);
+            p.update();
+        })?;
+        for (el, file) in [
+            (&self.exports.nodes, "rrt_nodes.csv"),
+            (&self.exports.path, "rrt_path.csv"),
+        ] {
+            scope.listen_for(el, "click", me, move |p, _| {
+                p.exports.download(&p.run.borrow(), file);
+            })?;
+        }
+        scope.listen_for(&self.exports.png, "click", me, |p, _| {
+            let world = p.world.borrow();
+            if let Ok(canvas) = world.canvas.flatten("#ffffff") {
+                let _ = crate::ui::kit::png::download(&canvas, "rrt_2d.png");
+            }
+        })?;
+        for kind in ["python", "bsv"] {
+            let button: Element = dom::find(&self.root, &format!("[data-copy=\"{kind}\"]"), "rrt")?;
+            scope.listen_for(&button, "click", me, move |p, _| {
+                p.exports.commands.copy(kind)
+            })?;
+        }
+        let (stage, top) = {
+            let w = self.world.borrow();
+            (w.canvas.stage.clone(), w.canvas.top().canvas.clone())
+        };
+        scope.listen_for(&top, "pointerdown", me, |p, _| {
+            focus_without_scroll(&p.world.borrow().canvas.top().canvas);
+        })?;
+        scope.observe_resize(&[&stage], me, |p| p.relayout())?;
+        drop(scope);
+        let (w_hit, w_on) = (self.me.clone(), self.me.clone());
+        *self.drag.borrow_mut() = Some(Drag::attach(
+            &stage,
+            &top,
+            move |at, kind| {
+                let p = w_hit.upgrade()?;
+                let world = p.world.borrow();
+                let state = p.state.borrow();
+                if kind == PointerKind::Touch
+                    && !world.handles(&state).iter().any(|h| h.contains(at))
+                {
+                    // A finger grabs only a handle; anywhere else it scrolls the page.
+                    return None;
+                }
+                hit_test(
+                    &world.frame,
+                    &state,
+                    at,
+                    world::WorldView::hit_radius(kind.is_coarse()),
+                )
+            },
+            move |ev| {
+                if let Some(p) = w_on.upgrade() {
+                    p.on_drag(ev);
+                }
+            },
+        )?);
+        Ok(())
+    }
+
+    /// A new stepper over the run (at its start).
+    fn build_stepper(&self) -> Result<(), JsValue> {
+        self.stepper.borrow_mut().take();
+        dom::clear(&self.stepper_slot);
+        let me = self.me.clone();
+        let widget = StepperWidget::new(
+            &self.stepper_slot,
+            self.run.clone(),
+            StepperOptions {
+                speeds: SPEEDS.to_vec(),
+                initial_speed: DEFAULT_SPEED,
+                speed_label: Box::new(|speed| match speed {
+                    Speed::PerSecond(rate) => ctx::t_args("rrt-speed", &[("rate", rate.into())]),
+                    Speed::Max => ctx::t("kit-stepper-speed-max"),
+                }),
+                testid: "rrt-2d-stepper",
+            },
+            move |_| {
+                if let Some(p) = me.upgrade() {
+                    p.update();
+                }
+            },
+        )?;
+        // As fast as possible, yet whole frames (the tree appended, the panel) stay short.
+        widget.set_frame_budget(FRAME_BUDGET_MS, true);
+        *self.stepper.borrow_mut() = Some(widget);
+        Ok(())
+    }
+
+    fn command(&self, command: Command) {
+        if let Some(s) = self.stepper.borrow().as_ref() {
+            s.apply(command);
+        }
+    }
+
+    fn playing(&self) -> bool {
+        self.stepper.borrow().as_ref().is_some_and(|s| s.playing())
+    }
+
+    /// Keys: in sub-step mode the step keys walk the sub-steps; the stepper's otherwise.
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        if self.substep_mode.checked() && !keymap::has_command_modifier(event) {
+            match event.key().as_str() {
+                "ArrowRight" | "PageDown" => {
+                    self.substep(true);
+                    return true;
+                }
+                "ArrowLeft" | "PageUp" => {
+                    self.substep(false);
+                    return true;
+                }
+                _ => {}
+            }
+        }
+        self.stepper
+            .borrow()
+            .as_ref()
+            .is_some_and(|s| s.on_key(event))
+    }
+
+    /// One sub-step forward or back: within the iteration, else to the next iteration's first
+    /// sub-step or the previous one's last.
+    fn substep(&self, forward: bool) {
+        let count = self.run.borrow().rrt.last().map_or(0, |r| phases(r).len());
+        let last = count.saturating_sub(1);
+        let at = self.phase.get().unwrap_or(last).min(last);
+        self.substep_driving.set(true);
+        if forward {
+            if count > 0 && at < last {
+                self.phase.set(Some(at + 1));
+                self.update();
+            } else {
+                let before = self.run.borrow().rrt.iterations();
+                self.phase.set(Some(0));
+                self.command(Command::Step);
+                if self.run.borrow().rrt.iterations() == before {
+                    self.phase.set(Some(at));
+                }
+            }
+        } else if count > 0 && at > 0 {
+            self.phase.set(Some(at - 1));
+            self.update();
+        } else {
+            self.phase.set(None);
+            self.command(Command::Back);
+        }
+        self.substep_driving.set(false);
+    }
+
+    // ---------- Editing ----------
+
+    /// A field changed: a valid set restarts the run, a refused one keeps the last run.
+    fn edited(&self) {
+        let current = self.state.borrow().clone();
+        let checked = self.params.borrow_mut().check(&current);
+        if let Some(next) = checked {
+            if next.texts != current.texts {
+                self.set_state(next, true);
+            }
+        }
+    }
+
+    /// A new state: the world redrawn, the run restarted at iteration 0 (now, or at the end
+    /// of a drag when `restart` is false), the command lines and the URL.
+    fn set_state(&self, next: PageState, restart: bool) {
+        *self.state.borrow_mut() = next;
+        self.redraw_world();
+        if restart {
+            self.restart();
+        } else {
+            self.update_marks();
+        }
+    }
+
+    /// The run of the current state from iteration 0, paused, ready to step.
+    fn restart(&self) {
+        let state = self.state.borrow().clone();
+        let setup = match state.setup() {
+            Ok(s) => s,
+            Err(e) => {
+                web_sys::console::warn_1(&js_error(&e));
+                return;
+            }
+        };
+        let generation = self.run.borrow().generation + 1;
+        match Run::new(&setup, generation) {
+            Ok(run) => *self.run.borrow_mut() = run,
+            Err(e) => {
+                web_sys::console::warn_1(&js_error(&e));
+                return;
+            }
+        }
+        *self.run_state.borrow_mut() = state.clone();
+        self.phase.set(None);
+        self.exports.update(&state);
+        self.exports.commands.clear_status();
+        // Reset: the stepper goes to 0 and reads the new run's length.
+        self.command(Command::Reset);
+        if let Some(url) = self.url.as_ref() {
+            url.write_now();
+        }
+    }
+
+    fn show_refusal(&self, refusal: Option<Refusal>) {
+        self.refusal.set(refusal);
+        self.render_refusal();
+    }
+
+    fn render_refusal(&self) {
+        let text = self.refusal.get().map(|r| {
+            let (id, point, index) = r.message();
+            let mut args = vec![("index", FluentArg::Number(index as f64))];
+            if let Some(p) = point {
+                args.push(("point", FluentArg::Text(ctx::t(p.name_id()))));
+            }
+            ctx::t_args(id, &args)
+        });
+        self.world_message.set_text_content(text.as_deref());
+        dom::show(&self.world_message, text.is_some());
+    }
+
+    fn add_box(&self) {
+        let current = self.state.borrow().clone();
+        match add_box(&current) {
+            Ok(next) => {
+                self.selected.set(Some(next.obstacles.len() - 1));
+                self.show_refusal(None);
+                self.set_state(next, true);
+            }
+            Err(r) => self.show_refusal(Some(r)),
+        }
+    }
+
+    fn delete_box(&self) {
+        let current = self.state.borrow().clone();
+        if current.obstacles.is_empty() {
+            return;
+        }
+        let index = self.selected.get().unwrap_or(usize::MAX);
+        self.selected.set(None);
+        self.show_refusal(None);
+        self.set_state(delete_box(&current, index), true);
+    }
+
+    fn recipe_world(&self) {
+        let current = self.state.borrow().clone();
+        let recipe = PageState::default();
+        let next = PageState {
+            obstacles: recipe.obstacles,
+            start: recipe.start,
+            goal: recipe.goal,
+            ..current.clone()
+        };
+        self.selected.set(None);
+        self.show_refusal(None);
+        if next != current {
+            self.set_state(next, true);
+        }
+    }
+
+    /// A drag on the world view.
+    fn on_drag(&self, ev: DragEvent<Grab>) {
+        match ev {
+            DragEvent::Start { handle, at, .. } => {
+                self.command(Command::Pause);
+                let from = self.world.borrow().frame.world(at);
+                *self.dragging.borrow_mut() = Some((handle, from, self.state.borrow().clone()));
+                self.selected.set(match handle {
+                    Grab::Box(i) | Grab::Corner(i, _) => Some(i),
+                    _ => self.selected.get(),
+                });
+                focus_without_scroll(&self.world.borrow().canvas.top().canvas);
+                self.update_marks();
+            }
+            DragEvent::Move { at, .. } => {
+                let Some((grab, from, before)) = self.dragging.borrow().clone() else {
+                    return;
+                };
+                let to = self.world.borrow().frame.world(at);
+                match drag(&before, grab, from, to) {
+                    Ok(next) => {
+                        self.show_refusal(None);
+                        if next != *self.state.borrow() {
+                            let live = next
+                                .setup()
+                                .is_ok_and(|s| s.params.max_iter <= LIVE_RESTART_MAX_ITER);
+                            self.set_state(next, live);
+                        }
+                    }
+                    Err(r) => self.show_refusal(Some(r)),
+                }
+            }
+            DragEvent::End { .. } => {
+                self.dragging.borrow_mut().take();
+                let stale = {
+                    let (s, r) = (self.state.borrow(), self.run_state.borrow());
+                    (s.obstacles.clone(), s.start, s.goal) != (r.obstacles.clone(), r.start, r.goal)
+                };
+                if stale {
+                    self.restart();
+                }
+                self.update_marks();
+                if let Some(url) = self.url.as_ref() {
+                    url.write_now();
+                }
+            }
+            DragEvent::Tap { at } => {
+                let frame = self.world.borrow().frame;
+                let hit = hit_test(&frame, &self.state.borrow(), at, 22.0);
+                if let Some(Grab::Box(i) | Grab::Corner(i, _)) = hit {
+                    self.selected.set(Some(i));
+                    self.update_marks();
+                }
+            }
+            DragEvent::Hover(at) => {
+                let frame = self.world.borrow().frame;
+                let hit = hit_test(
+                    &frame,
+                    &self.state.borrow(),
+                    at,
+                    world::WorldView::hit_radius(false),
+                );
+                if hit != self.hover.get() {
+                    self.hover.set(hit);
+                    if let Some(d) = self.drag.borrow().as_ref() {
+                        d.set_hover_cursor(match hit {
+                            Some(Grab::Corner(_, 0 | 2)) => "nesw-resize",
+                            Some(Grab::Corner(..)) => "nwse-resize",
+                            Some(_) => "grab",
+                            None => "",
+                        });
+                    }
+                    self.update_marks();
+                }
+            }
+            DragEvent::Leave => {
+                if self.hover.replace(None).is_some() {
+                    self.update_marks();
+                }
+            }
+        }
+    }
+
+    // ---------- Drawing ----------
+
+    /// Layer 0 and the touch handles.
+    fn redraw_world(&self) {
+        let state = self.state.borrow();
+        let tol = state
+            .setup()
+            .map_or(crate::recipes::rrt_2d::GOAL_TOL, |s| s.world.goal_tol);
+        let world = self.world.borrow();
+        world.draw_world(&state, tol, Ink::current());
+        if let Some(d) = self.drag.borrow().as_ref() {
+            d.set_handles(&world.handles(&state));
+        }
+    }
+
+    /// Sizes changed: refit and redraw everything.
+    fn relayout(&self) {
+        self.world.borrow_mut().fit();
+        if let Some(d) = self.drag.borrow().as_ref() {
+            d.relayout();
+        }
+        self.redraw_world();
+        self.update();
+    }
+
+    /// The sub-step shown in sub-step mode.
+    fn shown_phase(&self) -> Option<Phase> {
+        let run = self.run.borrow();
+        let r = run.rrt.last()?;
+        let i = self.phase.get()?;
+        phases(r).get(i).copied()
+    }
+
+    fn update_marks(&self) {
+        let phase = if self.substep_mode.checked() {
+            self.shown_phase()
+        } else {
+            None
+        };
+        self.draw_marks_with(phase);
+    }
+
+    fn draw_marks_with(&self, phase: Option<Phase>) {
+        let Ok(run) = self.run.try_borrow() else {
+            return;
+        };
+        let state = self.state.borrow();
+        self.world.borrow().draw_marks(
+            &run,
+            phase,
+            self.selected.get(),
+            self.hover.get(),
+            &state,
+            Ink::current(),
+        );
+    }
+
+    /// The run moved: tree, marks, sub-steps, counters, URL.
+    fn update(&self) {
+        if !self.substep_driving.get() {
+            self.phase.set(None);
+        }
+        let started = now_ms();
+        let phase = if self.substep_mode.checked() {
+            self.shown_phase()
+        } else {
+            None
+        };
+        let Ok(run) = self.run.try_borrow() else {
+            return;
+        };
+        let ink = Ink::current();
+        // Before its outcome (sub-step mode), the iteration's new nodes are not drawn yet.
+        let mut upto = run.rrt.nodes().len();
+        if phase.is_some_and(|p| p != Phase::Outcome) {
+            upto -= match run.rrt.last().map(|r| r.outcome) {
+                Some(RrtOutcome::Added { .. }) => 1,
+                Some(RrtOutcome::GoalReached { .. }) => 2,
+                _ => 0,
+            };
+        }
+        self.world.borrow_mut().draw_tree(&run, upto, ink);
+        drop(run);
+        self.draw_marks_with(phase);
+        let draw_ms = now_ms() - started;
+        let Ok(run) = self.run.try_borrow() else {
+            return;
+        };
+        self.substeps.show(run.rrt.last(), phase);
+        self.show_counters(&run);
+        let work = run.advance_ms + now_ms() - started;
+        drop(run);
+        bench_record(work, draw_ms);
+        if let Some(url) = self.url.as_ref() {
+            let now = now_ms();
+            if now - self.url_written.get() > URL_EVERY_MS {
+                self.url_written.set(now);
+                url.write_now();
+            } else {
+                url.schedule();
+            }
+        }
+    }
+
+    fn show_counters(&self, run: &Run) {
+        let rrt = &run.rrt;
+        let counts = rrt.counts();
+        let path = rrt.path();
+        let n = rrt.nodes().len();
+        let group = |v: usize| crate::pyfmt::group_u64(v as u64);
+        let r = &self.readouts;
+        r.set("iteration", &group(rrt.iterations()));
+        r.set("nodes", &group(n));
+        r.set("rejected_out", &group(counts.out_of_square));
+        r.set("rejected_collision", &group(counts.collision));
+        r.set("rejected_zero", &group(counts.zero_length));
+        r.set("path_points", &group(path.len()));
+        r.set(
+            "length",
+            &if path.is_empty() {
+                "—".to_string()
+            } else {
+                fixed(rrt.path_length(), 3)
+            },
+        );
+        if self.playing() {
+            let now = now_ms();
+            match self.rate_from.get() {
+                Some((t0, n0)) => {
+                    if let Some(rate) = rate_per_s(n0, n, now - t0) {
+                        self.rate.set(Some(rate));
+                        self.rate_from.set(Some((now, n)));
+                    }
+                }
+                None => self.rate_from.set(Some((now, n))),
+            }
+        } else {
+            self.rate_from.set(None);
+            self.rate.set(None);
+        }
+        r.set(
+            "nodes_per_s",
+            &self
+                .rate
+                .get()
+                .map_or("—".to_string(), |v| group(v.round() as usize)),
+        );
+        r.announce(&ctx::t_args(
+            "rrt-live",
+            &[
+                ("it", FluentArg::Number(rrt.iterations() as f64)),
+                ("nodes", FluentArg::Number(n as f64)),
+            ],
+        ));
+    }
+
+    /// The language changed.
+    fn relocalize(&self) {
+        let _ = dom::relocalize(&self.root);
+        self.params.borrow().form.relocalize();
+        self.url_notice.relocalize();
+        if let Some(s) = self.stepper.borrow().as_ref() {
+            s.relocalize();
+        }
+        self.exports.relocalize();
+        self.render_refusal();
+        self.redraw_world();
+        self.update();
+    }
+}
+
+/// Bench builds keep every frame's work in `window.__rrtFrameMs` (advance + draw, ms) and
+/// `window.__rrtDrawMs` (the drawing alone).
+#[cfg(feature = "bench")]
+fn bench_record(work_ms: f64, draw_ms: f64) {
+    let Some(window) = web_sys::window() else {
+        return;
+    };
+    for (name, ms) in [("__rrtFrameMs", work_ms), ("__rrtDrawMs", draw_ms)] {
+        let key = JsValue::from_str(name);
+        let list = js_sys::Reflect::get(&window, &key)
+            .ok()
+            .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
+            .unwrap_or_else(|| {
+                let a = js_sys::Array::new();
+                let _ = js_sys::Reflect::set(&window, &key, &a);
+                a
+            });
+        list.push(&JsValue::from_f64(ms));
+    }
+}
+
+#[cfg(not(feature = "bench"))]
+fn bench_record(_work_ms: f64, _draw_ms: f64) {}
