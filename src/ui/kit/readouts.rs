@@ -96,6 +96,17 @@ impl Readouts {
         }
     }
 
+    /// Sets the value shown under `key` and its exact value (`data-value`, e.g. the CSV's
+    /// full-precision number) for whoever needs more digits than are shown.
+    pub fn set_exact(&self, key: &str, text: &str, exact: &str) {
+        for (k, el) in &self.values {
+            if k == key {
+                el.set_text_content(Some(text));
+                let _ = el.set_attribute("data-value", exact);
+            }
+        }
+    }
+
     /// Says `text` to screen readers, politely and throttled (a newer text replaces one that
     /// is still waiting).
     pub fn announce(&self, text: &str) {
