@@ -100,6 +100,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/en/pendulum.ftl"),
     ),
     (
+        Lang::En,
+        "signals.ftl",
+        include_str!("../locales/en/signals.ftl"),
+    ),
+    (
         Lang::Ja,
         "shell.ftl",
         include_str!("../locales/ja/shell.ftl"),
@@ -126,6 +131,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         Lang::Ja,
         "pendulum.ftl",
         include_str!("../locales/ja/pendulum.ftl"),
+    ),
+    (
+        Lang::Ja,
+        "signals.ftl",
+        include_str!("../locales/ja/signals.ftl"),
     ),
 ];
 

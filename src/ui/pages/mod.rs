@@ -4,16 +4,27 @@
 
 use crate::ui::page::PageDef;
 
+pub mod cubic_path;
 pub mod drills;
 pub mod home;
 pub mod ik2r;
 pub mod pendulum;
+pub mod pid_step;
+pub mod trapezoid_profile;
 
 /// Route id of the home page (`#/`, `#/home`).
 pub const HOME_ID: &str = home::PAGE.id;
 
 /// All pages, in navigation order.
-pub const PAGES: &[PageDef] = &[home::PAGE, ik2r::PAGE, pendulum::PAGE, drills::PAGE];
+pub const PAGES: &[PageDef] = &[
+    home::PAGE,
+    ik2r::PAGE,
+    pendulum::PAGE,
+    cubic_path::PAGE,
+    pid_step::PAGE,
+    trapezoid_profile::PAGE,
+    drills::PAGE,
+];
 
 /// Recipe id → the page where it runs in the browser. The IK page computes and exports the
 /// CSVs of these three recipes.
@@ -21,6 +32,9 @@ pub const RECIPE_PAGES: &[(&str, &str)] = &[
     ("ik-workspace", "ik-2r"),
     ("jacobian-2r", "ik-2r"),
     ("manip-grid", "ik-2r"),
+    ("cubic-path", "cubic-path"),
+    ("pid-step", "pid-step"),
+    ("trapezoid-profile", "trapezoid-profile"),
 ];
 
 /// The page with route id `id`.
