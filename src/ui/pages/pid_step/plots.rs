@@ -57,7 +57,11 @@ impl Plots {
             .fold(DT_S, f64::max);
         let axis = |title: &str, unit: &str, range| AxisSpec {
             title: ctx::t(title),
-            unit: ctx::t(unit),
+            unit: if unit.is_empty() {
+                String::new()
+            } else {
+                ctx::t(unit)
+            },
             range,
         };
         // The ghost's series (first, under the others) only while there is one.

@@ -149,7 +149,11 @@ impl Plots {
             ];
             let axis = |title: &str, unit: &str, range| AxisSpec {
                 title: ctx::t(title),
-                unit: ctx::t(unit),
+                unit: if unit.is_empty() {
+                    String::new()
+                } else {
+                    ctx::t(unit)
+                },
                 range,
             };
             let line = SeriesSpec {
