@@ -194,7 +194,7 @@ impl Plots {
         let marks = self.plot.canvas.layer(2);
         marks.begin();
         let c = &marks.ctx;
-        let (Some(top), Some(bottom)) = (self.plot.panel_px(0), self.plot.panel_px(2)) else {
+        let Some(top) = self.plot.panel_px(0) else {
             return;
         };
         c.set_font(&ink.font(12.0, true));
@@ -209,7 +209,9 @@ impl Plots {
                 continue;
             }
             c.set_fill_style_str(fill);
-            c.fill_rect(a.x, top.2, b.x - a.x, bottom.3 - top.2);
+            for (_, _, y0, y1) in (0..3).filter_map(|k| self.plot.panel_px(k)) {
+                c.fill_rect(a.x, y0, b.x - a.x, y1 - y0);
+            }
             c.set_fill_style_str("#3a4250");
             let _ = c.fill_text(&ctx::t(label), (a.x + b.x) / 2.0, top.2 + 4.0);
         }
