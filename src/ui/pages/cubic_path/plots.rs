@@ -196,7 +196,7 @@ impl Plots {
         for (k, on) in overlays.iter().enumerate() {
             if *on {
                 names.push(series(
-                    &format!("cubic-overlay-{}", OVERLAYS[k]),
+                    &format!("cubic-series-{}", OVERLAYS[k]),
                     C_OVERLAY[k],
                     Mark::Line,
                     2.0,
