@@ -9,10 +9,47 @@
 //! - steady-state error: `r − y` of the last row;
 //! - peak u: the row with the largest `|u|` (its `t` and signed value).
 //!
-//! Times are the CSV's `t` column (row k: `t = k·0.05 s`, y after that step). A response that
-//! is not finite has no figures but the peak u where one exists.
+//! Times are the CSV's `t` column (row k: `t = round(k·0.05, 4)` s, y after that step). A
+//! response that is not finite has no figures but the peak u where one exists.
+//!
+//! [`response`] is the kernel's loop, operation for operation (so r, y, u and e are the CSV's
+//! to the last bit), with `t = k·dt` left unrounded: the kernel rounds every row's time through
+//! a decimal formatting (Python's `round`), which costs more than the loop itself; the figures
+//! round only the few times they report.
 
-use crate::recipes::pid_step::PidSample;
+use crate::pyfmt::py_round;
+use crate::recipes::pid_step::{PidParams, PidSample, DT_S, SETPOINT};
+
+/// The kernel's response of valid `p`, with unrounded times `k·dt`.
+pub fn response(p: &PidParams) -> Vec<PidSample> {
+    let (kp, ki, kd) = (p.kp, p.ki, p.kd);
+    let (dt, r) = (DT_S, SETPOINT);
+    let (mut y, mut integ, mut prev_e) = (0.0f64, 0.0f64, 0.0f64);
+    let a = dt / (p.tau + dt);
+    let steps = usize::try_from(p.steps).unwrap_or(0);
+    let mut rows = Vec::with_capacity(steps);
+    for k in 0..steps {
+        let e = r - y;
+        integ += e * dt;
+        let deriv = (e - prev_e) / dt;
+        let u = kp * e + ki * integ + kd * deriv;
+        y = y + a * (u - y);
+        prev_e = e;
+        rows.push(PidSample {
+            t: k as f64 * dt,
+            r,
+            y,
+            u,
+            e,
+        });
+    }
+    rows
+}
+
+/// A row's time as the CSV writes it (`round(t, 4)`; unchanged for the kernel's rows).
+fn csv_t(s: &PidSample) -> f64 {
+    py_round(s.t, 4)
+}
 
 /// The step-response figures of one run.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -41,7 +78,8 @@ pub fn figures(samples: &[PidSample]) -> StepFigures {
             .fold(None::<(f64, f64)>, |best, s| match best {
                 Some((_, u)) if u.abs() >= s.u.abs() => best,
                 _ => Some((s.t, s.u)),
-            }),
+            })
+            .map(|(t, u)| (py_round(t, 4), u)),
         ..StepFigures::default()
     };
     let Some(last) = samples.last() else {
@@ -51,7 +89,7 @@ pub fn figures(samples: &[PidSample]) -> StepFigures {
         return out;
     }
     let r = last.r;
-    let first_at = |level: f64| samples.iter().find(|s| s.y >= level * r).map(|s| s.t);
+    let first_at = |level: f64| samples.iter().find(|s| s.y >= level * r).map(csv_t);
     out.rise_time = match (first_at(RISE_FROM), first_at(RISE_TO)) {
         (Some(a), Some(b)) => Some(b - a),
         _ => None,
@@ -62,8 +100,8 @@ pub fn figures(samples: &[PidSample]) -> StepFigures {
         .iter()
         .rposition(|s| (s.y - r).abs() > SETTLE_BAND * r.abs());
     out.settling_time = match outside {
-        None => Some(samples[0].t),
-        Some(i) => samples.get(i + 1).map(|s| s.t),
+        None => Some(csv_t(&samples[0])),
+        Some(i) => samples.get(i + 1).map(csv_t),
     };
     out.steady_state_error = Some(r - last.y);
     out.final_y = Some(last.y);
@@ -119,6 +157,43 @@ mod tests {
         assert_eq!(f.peak_u, Some((peak[0], peak[3])));
         assert!(f.overshoot_pct.unwrap() > 0.0, "{f:?}");
         assert!(f.settling_time.unwrap() < 15.0, "{f:?}");
+    }
+
+    #[test]
+    fn the_fast_response_is_the_kernel_s() {
+        for p in [
+            PidParams::default(),
+            PidParams {
+                kp: 2.0,
+                ki: 4.0,
+                kd: 0.05,
+                tau: 0.8,
+                steps: 5000,
+            },
+            PidParams {
+                kp: 100.0,
+                ki: 0.0,
+                kd: 0.0,
+                tau: 0.8,
+                steps: 600,
+            },
+            PidParams {
+                kp: 2.0,
+                ki: 0.0,
+                kd: 0.1,
+                tau: 0.0,
+                steps: 0,
+            },
+        ] {
+            let (fast, kernel) = (response(&p), simulate(&p).unwrap());
+            assert_eq!(fast.len(), kernel.len());
+            for (f, k) in fast.iter().zip(&kernel) {
+                let bits = |s: &PidSample| [s.r, s.y, s.u, s.e].map(f64::to_bits);
+                assert_eq!(bits(f), bits(k));
+                assert_eq!(py_round(f.t, 4), k.t);
+            }
+            assert_eq!(figures(&fast), figures(&kernel), "{p:?}");
+        }
     }
 
     #[test]

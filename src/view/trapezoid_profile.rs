@@ -9,7 +9,7 @@
 //! ```
 //! (the kernel's own operations, so `t_total` is the kernel's to the last bit).
 
-use crate::recipes::trapezoid_profile::TrapParams;
+use crate::recipes::trapezoid_profile::{TrapParams, TrapSample, MAX_ROWS};
 
 /// The phases of one profile, s; the velocity reached.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -24,6 +24,9 @@ pub struct Phases {
     pub vmax: f64,
     pub amax: f64,
     pub distance: f64,
+    /// The distance of the ramp at the asked vmax (kept for the brake phase, as the recipe
+    /// does, also for a triangle).
+    pub d_acc: f64,
 }
 
 /// The phases of `p` (valid parameters), computed as the kernel computes them.
@@ -47,7 +50,38 @@ pub fn phases(p: &TrapParams) -> Phases {
         vmax,
         amax,
         distance,
+        d_acc,
     }
+}
+
+/// The kernel's samples of valid `p`, operation for operation (s, v, a are the CSV's to the
+/// last bit; the row count too), with the accumulated time left unrounded: the kernel prints
+/// `round(t, 5)` through a decimal formatting on every row, which costs more than the loop.
+pub fn samples(p: &TrapParams) -> Vec<TrapSample> {
+    let ph = phases(p);
+    let (amax, vmax, t_acc, t_flat, d_acc) = (ph.amax, ph.v_peak, ph.t_acc, ph.t_flat, ph.d_acc);
+    let mut out = Vec::new();
+    let mut t = 0.0f64;
+    while t <= ph.t_total + 1e-12 && (out.len() as u64) < MAX_ROWS {
+        let (s, v, a);
+        if t < t_acc {
+            a = amax;
+            v = amax * t;
+            s = 0.5 * amax * crate::math::pow(t, 2.0);
+        } else if t < t_acc + t_flat {
+            a = 0.0;
+            v = vmax;
+            s = d_acc + vmax * (t - t_acc);
+        } else {
+            let tau = t - (t_acc + t_flat);
+            a = -amax;
+            v = vmax - amax * tau;
+            s = d_acc + vmax * t_flat + vmax * tau - 0.5 * amax * crate::math::pow(tau, 2.0);
+        }
+        out.push(TrapSample { t, s, v, a });
+        t += p.dt;
+    }
+    out
 }
 
 /// The three phases as time bands `(start, end)`: accelerate, cruise (empty for a triangle),
@@ -119,6 +153,39 @@ mod tests {
             (d.t_acc, d.t_flat, d.t_total, d.v_peak),
             (0.5, 1.5, 2.5, 0.5)
         );
+    }
+
+    #[test]
+    fn the_fast_samples_are_the_kernel_s() {
+        for p in [
+            TrapParams::default(),
+            TrapParams {
+                distance: 0.2,
+                vmax: 1.0,
+                amax: 2.0,
+                dt: 0.005,
+            },
+            TrapParams {
+                distance: 0.0,
+                vmax: 0.5,
+                amax: 1.0,
+                dt: 0.01,
+            },
+            TrapParams {
+                distance: -3.0,
+                vmax: 2.0,
+                amax: -4.0,
+                dt: 0.00007,
+            },
+        ] {
+            let (fast, kernel) = (samples(&p), compute(&p).unwrap().samples);
+            assert_eq!(fast.len(), kernel.len(), "{p:?}");
+            for (f, k) in fast.iter().zip(&kernel) {
+                let bits = |x: &TrapSample| [x.s, x.v, x.a].map(f64::to_bits);
+                assert_eq!(bits(f), bits(k));
+                assert_eq!(crate::pyfmt::py_round(f.t, 5), k.t);
+            }
+        }
     }
 
     #[test]

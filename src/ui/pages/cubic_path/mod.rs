@@ -18,13 +18,13 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 
 use crate::pyfmt::py_float;
 use crate::recipes::cubic_path::{compute, params_from_args, CubicParams, CubicPath, INFO};
-use crate::ui::dom;
 use crate::ui::kit::readouts::{self, Readouts};
 use crate::ui::kit::recipe_controls::{self, record_frame_ms, RecipeControls};
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
 use crate::ui::schedule::now_ms;
+use crate::ui::{ctx, dom};
 use crate::view::cubic_path::readouts as numbers;
 use crate::view::signal::{sig, snap, Slider};
 
@@ -159,17 +159,17 @@ impl Page for CubicPage {
             }
         });
         inner.install(&Rc::downgrade(&inner), &stage)?;
-        inner.redraw(true);
+        inner.redraw(true, true);
         Ok(CubicPage(inner))
     }
 
     fn relocalize(&self) {
         self.0.controls.relocalize();
-        self.0.redraw(true);
+        self.0.redraw(true, true);
     }
 
     fn set_projector(&self, _on: bool) {
-        self.0.redraw(true);
+        self.0.redraw(true, true);
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
@@ -242,11 +242,11 @@ impl Inner {
                 let mut all = p.overlays.get();
                 all[k] = on;
                 p.overlays.set(all);
-                p.redraw(true);
+                p.redraw(true, false);
                 p.write_url();
             })?;
         }
-        scope.observe_resize(&[stage], me, |p| p.redraw(true))?;
+        scope.observe_resize(&[stage], me, |p| p.redraw(true, true))?;
         drop(scope);
         self.plots.borrow_mut().attach(me, stage)
     }
@@ -262,14 +262,26 @@ impl Inner {
         let Ok(path) = compute(&params) else {
             return;
         };
+        let peak = numbers(&params, &path)
+            .peak_velocity
+            .map_or(0.0, |p| p.value);
         *self.path.borrow_mut() = (params, path);
         let dragging = self.plots.borrow().dragging();
-        self.redraw(!dragging);
+        self.redraw(!dragging, false);
+        self.readouts.announce(&ctx::t_strings(
+            "cubic-live",
+            &[
+                ("q1", py_float(params.q1)),
+                ("T", py_float(params.duration_s)),
+                ("peak", sig(peak, 4)),
+            ],
+        ));
         self.write_url();
     }
 
-    /// Readouts and plots; `refit` rescales the axes to the data (not while dragging).
-    fn redraw(&self, refit: bool) {
+    /// Readouts and plots; `refit` rescales the axes to the data (not while dragging),
+    /// `resized` refits the canvases (size, language, mode).
+    fn redraw(&self, refit: bool, resized: bool) {
         let t0 = now_ms();
         let (params, path) = &*self.path.borrow();
         let r = numbers(params, path);
@@ -290,7 +302,7 @@ impl Inner {
         ro.set_exact("rows", &r.rows.to_string(), &r.rows.to_string());
         let cursor = {
             let mut plots = self.plots.borrow_mut();
-            plots.show(params, path, self.overlays.get(), refit);
+            plots.show(params, path, self.overlays.get(), refit, resized);
             plots.cursor_sample(path)
         };
         if let Some(s) = cursor {

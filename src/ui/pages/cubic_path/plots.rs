@@ -105,7 +105,7 @@ impl Plots {
             }
             DragEvent::End { .. } => {
                 page.plots.borrow_mut().dragging = false;
-                page.redraw(true);
+                page.redraw(true, false);
                 if let Some(url) = page.url.borrow().as_ref() {
                     url.write_now();
                 }
@@ -113,7 +113,7 @@ impl Plots {
             DragEvent::Hover(at) | DragEvent::Tap { at } => {
                 let t = page.plots.borrow().plot.from_px(0, at).map(|(t, _)| t);
                 page.plots.borrow_mut().cursor_t = t;
-                page.redraw(false);
+                page.redraw(false, false);
             }
             DragEvent::Leave => {}
         }
@@ -128,8 +128,16 @@ impl Plots {
         self.plot.to_px(0, p.duration_s, p.q1)
     }
 
-    /// Shows `path` (and the overlays that are on); `refit` rescales the axes.
-    pub fn show(&mut self, p: &CubicParams, path: &CubicPath, overlays: [bool; 2], refit: bool) {
+    /// Shows `path` (and the overlays that are on); `refit` rescales the axes, `resized`
+    /// refits the canvases.
+    pub fn show(
+        &mut self,
+        p: &CubicParams,
+        path: &CubicPath,
+        overlays: [bool; 2],
+        refit: bool,
+        resized: bool,
+    ) {
         let ink = Ink::current();
         if refit || self.shown != Some((*p, overlays)) {
             let quint = overlays[0].then(|| quintic(p, 200));
@@ -141,11 +149,8 @@ impl Plots {
             if refit {
                 self.x_range = time_range(p);
                 self.y_ranges = ranges(&all).map(nice_range);
-                self.set_spec(on);
-                self.plot.invalidate_all();
-            } else {
-                self.set_spec(on);
             }
+            self.set_spec(on);
             let columns: [fn(&CubicSample) -> f64; 3] = [|s| s.q, |s| s.qd, |s| s.qdd];
             for (panel, f) in columns.into_iter().enumerate() {
                 let pts = |v: &[CubicSample]| v.iter().map(|s| (s.t, f(s))).collect();
@@ -155,6 +160,9 @@ impl Plots {
                 self.plot.set_series(panel, extra.len(), pts(&path.samples));
             }
             self.shown = Some((*p, overlays));
+        }
+        if resized {
+            self.plot.invalidate_all();
         }
         let t = self.cursor_sample(path).map(|s| s.t);
         self.plot.set_cursor(t);

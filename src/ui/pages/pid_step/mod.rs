@@ -16,7 +16,7 @@ use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
 use crate::pyfmt::py_float;
-use crate::recipes::pid_step::{params_from_args, simulate, warnings, PidParams, PidSample, INFO};
+use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
 use crate::ui::kit::readouts::{self, Readouts};
 use crate::ui::kit::recipe_controls::{self, record_frame_ms, RecipeControls};
 use crate::ui::kit::scope::Scope;
@@ -25,7 +25,7 @@ use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
-use crate::view::pid_step::figures;
+use crate::view::pid_step::{figures, response};
 use crate::view::signal::{sig, snap, Slider};
 
 /// The page, as the shell's page table lists it.
@@ -137,7 +137,7 @@ impl Page for PidPage {
         dom::relocalize(&root)?;
         let controls =
             RecipeControls::mount(&root, P, &INFO, &SLIDERS, &ctx.query, &[], params_from_args)?;
-        let rows = simulate(&controls.value()).map_err(|e| JsValue::from_str(&e.to_string()))?;
+        let rows = response(&controls.value());
         let stage: Element = dom::find(&root, &format!("[data-{P}=\"stage\"]"), P)?;
         let (plots, readouts) = (plots::Plots::new(&stage)?, Readouts::find(&root)?);
         let warning = dom::find(&root, &format!("[data-{P}=\"warning\"]"), P)?;
@@ -229,9 +229,7 @@ impl Inner {
     /// New valid arguments: the first change after a committed one turns the committed run
     /// into the ghost; then recompute and redraw now.
     fn changed(&self, params: PidParams) {
-        let Ok(rows) = simulate(&params) else {
-            return;
-        };
+        let rows = response(&params);
         {
             let mut runs = self.runs.borrow_mut();
             if !self.changing.replace(true) {
@@ -240,6 +238,16 @@ impl Inner {
             runs.now = rows;
         }
         self.redraw(false);
+        let f = figures(&self.runs.borrow().now);
+        let or_none = |x: Option<f64>, d| x.map_or_else(|| ctx::t("pid-ro-none"), |x| sig(x, d));
+        self.readouts.announce(&ctx::t_strings(
+            "pid-live",
+            &[
+                ("rise", or_none(f.rise_time, 3)),
+                ("overshoot", or_none(f.overshoot_pct, 3)),
+                ("settling", or_none(f.settling_time, 3)),
+            ],
+        ));
         if let Some(url) = self.url.borrow().as_ref() {
             url.schedule();
         }

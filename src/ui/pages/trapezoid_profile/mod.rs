@@ -16,7 +16,7 @@ use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
 use crate::pyfmt::py_float;
-use crate::recipes::trapezoid_profile::{compute, params_from_args, Profile, TrapParams, INFO};
+use crate::recipes::trapezoid_profile::{params_from_args, TrapParams, TrapSample, INFO};
 use crate::ui::kit::readouts::{self, Readouts};
 use crate::ui::kit::recipe_controls::{self, record_frame_ms, RecipeControls};
 use crate::ui::kit::scope::Scope;
@@ -25,7 +25,7 @@ use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
-use crate::view::trapezoid_profile::phases;
+use crate::view::trapezoid_profile::{phases, samples};
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef::of::<TrapPage>("trapezoid-profile", "trap-title", "trap-blurb");
@@ -77,7 +77,8 @@ struct Inner {
     plots: RefCell<plots::Plots>,
     readouts: Readouts,
     triangle_note: Element,
-    profile: RefCell<(TrapParams, Profile)>,
+    /// The parameters and the kernel's samples (`view::trapezoid_profile::samples`).
+    profile: RefCell<(TrapParams, Vec<TrapSample>)>,
     url: RefCell<Option<UrlWriter>>,
     scope: RefCell<Scope>,
 }
@@ -116,7 +117,7 @@ impl Page for TrapPage {
         let controls =
             RecipeControls::mount(&root, P, &INFO, &SLIDERS, &ctx.query, &[], params_from_args)?;
         let params = controls.value();
-        let profile = compute(&params).map_err(|e| JsValue::from_str(&e.to_string()))?;
+        let profile = samples(&params);
         let stage: Element = dom::find(&root, &format!("[data-{P}=\"stage\"]"), P)?;
         let (plots, readouts) = (plots::Plots::new(&stage)?, Readouts::find(&root)?);
         let triangle_note = dom::find(&root, &format!("[data-{P}=\"triangle\"]"), P)?;
@@ -134,17 +135,17 @@ impl Page for TrapPage {
             }
         });
         inner.install(&Rc::downgrade(&inner), &stage)?;
-        inner.redraw(true);
+        inner.redraw(true, true);
         Ok(TrapPage(inner))
     }
 
     fn relocalize(&self) {
         self.0.controls.relocalize();
-        self.0.redraw(true);
+        self.0.redraw(true, true);
     }
 
     fn set_projector(&self, _on: bool) {
-        self.0.redraw(true);
+        self.0.redraw(true, true);
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
@@ -207,26 +208,39 @@ impl Inner {
             Inner::changed,
             |p| p.plots.borrow().png(PNG),
         )?;
-        scope.observe_resize(&[stage], me, |p| p.redraw(true))?;
+        scope.observe_resize(&[stage], me, |p| p.redraw(true, true))?;
         drop(scope);
         self.plots.borrow_mut().attach(me, stage)
     }
 
     /// New valid arguments: recompute and redraw now.
     fn changed(&self, params: TrapParams) {
-        let Ok(profile) = compute(&params) else {
-            return;
-        };
+        let profile = samples(&params);
         *self.profile.borrow_mut() = (params, profile);
         let dragging = self.plots.borrow().dragging();
-        self.redraw(!dragging);
+        self.redraw(!dragging, false);
+        let ph = phases(&params);
+        let shape = if ph.triangle {
+            "trap-shape-triangle"
+        } else {
+            "trap-shape-trapezoid"
+        };
+        self.readouts.announce(&ctx::t_strings(
+            "trap-live",
+            &[
+                ("shape", ctx::t(shape)),
+                ("total", sig(ph.t_total, 4)),
+                ("peak", sig(ph.v_peak, 4)),
+            ],
+        ));
         if let Some(url) = self.url.borrow().as_ref() {
             url.schedule();
         }
     }
 
-    /// Readouts, the triangle note and the plots; `refit` rescales the axes.
-    fn redraw(&self, refit: bool) {
+    /// Readouts, the triangle note and the plots; `refit` rescales the axes, `resized` refits
+    /// the canvases (size, language, mode).
+    fn redraw(&self, refit: bool, resized: bool) {
         let t0 = now_ms();
         let (params, profile) = &*self.profile.borrow();
         let ph = phases(params);
@@ -246,13 +260,15 @@ impl Inner {
         show("t-flat", ph.t_flat);
         show("t-total", ph.t_total);
         show("v-peak", ph.v_peak);
-        if let Some(last) = profile.samples.last() {
+        if let Some(last) = profile.last() {
             show("final-s", last.s);
         }
-        let rows = profile.samples.len().to_string();
+        let rows = profile.len().to_string();
         ro.set_exact("rows", &rows, &rows);
         dom::show(&self.triangle_note, ph.triangle);
-        self.plots.borrow_mut().show(params, profile, &ph, refit);
+        self.plots
+            .borrow_mut()
+            .show(params, profile, &ph, refit, resized);
         record_frame_ms(now_ms() - t0);
     }
 }

@@ -11,7 +11,7 @@ use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use super::Inner;
-use crate::recipes::trapezoid_profile::{Profile, TrapParams, TrapSample};
+use crate::recipes::trapezoid_profile::{TrapParams, TrapSample};
 use crate::ui::ctx;
 use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent};
@@ -107,7 +107,7 @@ impl Plots {
             }
             DragEvent::End { .. } => {
                 page.plots.borrow_mut().dragging = false;
-                page.redraw(true);
+                page.redraw(true, false);
                 if let Some(url) = page.url.borrow().as_ref() {
                     url.write_now();
                 }
@@ -130,15 +130,22 @@ impl Plots {
         ])
     }
 
-    /// Shows `profile`; `refit` rescales the axes.
-    pub fn show(&mut self, p: &TrapParams, profile: &Profile, ph: &Phases, refit: bool) {
+    /// Shows the `samples`; `refit` rescales the axes, `resized` refits the canvases.
+    pub fn show(
+        &mut self,
+        p: &TrapParams,
+        samples: &[TrapSample],
+        ph: &Phases,
+        refit: bool,
+        resized: bool,
+    ) {
         let ink = Ink::current();
         let columns: [fn(&TrapSample) -> f64; 3] = [|s| s.s, |s| s.v, |s| s.a];
         if refit {
             self.x_range = (0.0, (ph.t_total * 1.1).max(1e-9));
             let r = |f: fn(&TrapSample) -> f64, with: f64| {
                 nice_range(
-                    auto_range(profile.samples.iter().map(f).chain([0.0, with]), 0.08)
+                    auto_range(samples.iter().map(f).chain([0.0, with]), 0.08)
                         .unwrap_or((-1.0, 1.0)),
                 )
             };
@@ -176,14 +183,13 @@ impl Plots {
                 ],
                 cursor_rgb: (194, 65, 12),
             });
+        }
+        if resized {
             self.plot.invalidate_all();
         }
         for (panel, f) in columns.into_iter().enumerate() {
-            self.plot.set_series(
-                panel,
-                0,
-                profile.samples.iter().map(|s| (s.t, f(s))).collect(),
-            );
+            self.plot
+                .set_series(panel, 0, samples.iter().map(|s| (s.t, f(s))).collect());
         }
         let _ = self.plot.draw(ink);
         self.draw_marks(p, ph, ink);
