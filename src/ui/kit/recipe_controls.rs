@@ -56,6 +56,9 @@ pub fn markup(
     (form, notice, buttons + &exports::markup(prefix))
 }
 
+/// Messages shown beside fields (field index, message) and the fields marked invalid.
+type Shown = (Vec<(usize, Message)>, Vec<usize>);
+
 /// The form, sliders, URL notice and exports of one recipe.
 pub struct RecipeControls<T> {
     pub info: &'static RecipeInfo,
@@ -70,7 +73,7 @@ pub struct RecipeControls<T> {
     /// The texts and value of the last valid arguments.
     valid: RefCell<(Vec<Option<String>>, T)>,
     /// Messages shown beside fields and the fields marked invalid.
-    shown: RefCell<(Vec<(usize, Message)>, Vec<usize>)>,
+    shown: RefCell<Shown>,
 }
 
 fn parse_texts<T>(
