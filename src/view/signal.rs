@@ -4,7 +4,7 @@
 //! beside their fields, rounding of dragged values, and readout number formatting.
 
 use crate::recipes::RecipeInfo;
-use crate::view::plot::nice_step;
+use crate::view::plot::{nice_step, LinearScale};
 use crate::view::url::IgnoredKey;
 
 /// A slider beside the field of argument `name`: its range and step (the field itself takes
@@ -75,6 +75,54 @@ pub fn nice_range(range: (f64, f64)) -> (f64, f64) {
     )
 }
 
+/// [`crate::view::plot::decimate`] of the points `points` (x ascending) streamed: the same
+/// points (first, min, max, last of each pixel column of `x`, in order; non-finite points
+/// kept), without first collecting them all. A live page hands the plot a few thousand
+/// points instead of copying every sample of a 100,000-row run.
+pub fn thin(points: impl IntoIterator<Item = (f64, f64)>, x: &LinearScale) -> Vec<(f64, f64)> {
+    /// One column's kept points: (index, point) of first, min, max, last.
+    type Kept = [(usize, (f64, f64)); 4];
+    fn flush(out: &mut Vec<(f64, f64)>, kept: &mut Option<(f64, Kept)>) {
+        if let Some((_, mut k)) = kept.take() {
+            k.sort_by_key(|(i, _)| *i);
+            let mut last = usize::MAX;
+            for (i, p) in k {
+                if i != last {
+                    out.push(p);
+                    last = i;
+                }
+            }
+        }
+    }
+    let mut out = Vec::new();
+    let mut kept: Option<(f64, Kept)> = None;
+    for (i, p) in points.into_iter().enumerate() {
+        if !p.0.is_finite() || !p.1.is_finite() {
+            flush(&mut out, &mut kept);
+            out.push(p);
+            continue;
+        }
+        let col = x.map(p.0).floor();
+        match &mut kept {
+            Some((c, k)) if *c == col => {
+                if p.1 < k[1].1 .1 {
+                    k[1] = (i, p);
+                }
+                if p.1 > k[2].1 .1 {
+                    k[2] = (i, p);
+                }
+                k[3] = (i, p);
+            }
+            _ => {
+                flush(&mut out, &mut kept);
+                kept = Some((col, [(i, p); 4]));
+            }
+        }
+    }
+    flush(&mut out, &mut kept);
+    out
+}
+
 /// `x` with `digits` significant digits for a readout (plain notation between 1e-4 and 1e6,
 /// "—" when not finite).
 pub fn sig(x: f64, digits: usize) -> String {
@@ -123,6 +171,31 @@ mod tests {
         );
         let defaults = vec![Some("1.2".into()), None, None, None, Some("80".into())];
         assert_eq!(write_texts(&pid_step::INFO, &defaults), vec![]);
+    }
+
+    #[test]
+    fn thinning_streams_the_plot_s_decimation() {
+        use crate::view::plot::decimate;
+        let x = LinearScale::new((0.0, 3.0), (40.0, 340.0));
+        let mut pts: Vec<(f64, f64)> = (0..30_000)
+            .map(|i| {
+                let t = i as f64 * 1e-4;
+                (t, (t * 37.0).sin() + 0.3 * (t * 1234.5).cos())
+            })
+            .collect();
+        pts[777].1 = f64::NAN;
+        pts[20_000].1 = f64::INFINITY;
+        let thin_pts = thin(pts.iter().copied(), &x);
+        let want = decimate(&pts, &x);
+        assert_eq!(thin_pts.len(), want.len());
+        for (a, b) in thin_pts.iter().zip(&want) {
+            assert_eq!(
+                (a.0.to_bits(), a.1.to_bits()),
+                (b.0.to_bits(), b.1.to_bits())
+            );
+        }
+        assert!(thin_pts.len() < 4 * 302);
+        assert_eq!(thin(Vec::new(), &x), Vec::<(f64, f64)>::new());
     }
 
     #[test]

@@ -385,6 +385,23 @@ impl<T: Clone + 'static> RecipeControls<T> {
     }
 }
 
+/// The points of a series for `plot`, whose x axis will span `x_range`: thinned to the plot's
+/// own min/max decimation per pixel column ([`crate::view::signal::thin`]) once the plot has
+/// laid out its panels, all of them before.
+pub fn thinned(
+    plot: &super::plot::Plot,
+    x_range: (f64, f64),
+    points: impl Iterator<Item = (f64, f64)>,
+) -> Vec<(f64, f64)> {
+    match plot.panel_px(0) {
+        Some((x0, x1, _, _)) => {
+            let x = crate::view::plot::LinearScale::new(x_range, (x0, x1));
+            crate::view::signal::thin(points, &x)
+        }
+        None => points.collect(),
+    }
+}
+
 /// Bench builds keep the duration of every recompute + redraw of a live page, ms, in
 /// `window.__signalFrameMs` (`tests/e2e/signals.bench.mjs` reads it).
 #[cfg(feature = "bench")]

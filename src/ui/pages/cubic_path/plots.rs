@@ -17,6 +17,7 @@ use crate::ui::ctx;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent};
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
+use crate::ui::kit::recipe_controls::thinned;
 use crate::view::cubic_path::{quintic, ranges, time_range, trapezoid};
 use crate::view::drag::HandleShape;
 use crate::view::plot::nearest_index;
@@ -153,11 +154,15 @@ impl Plots {
             self.set_spec(on);
             let columns: [fn(&CubicSample) -> f64; 3] = [|s| s.q, |s| s.qd, |s| s.qdd];
             for (panel, f) in columns.into_iter().enumerate() {
-                let pts = |v: &[CubicSample]| v.iter().map(|s| (s.t, f(s))).collect();
-                for (k, over) in extra.iter().enumerate() {
-                    self.plot.set_series(panel, k, pts(over));
+                let series: Vec<&[CubicSample]> = extra
+                    .iter()
+                    .map(Vec::as_slice)
+                    .chain([path.samples.as_slice()])
+                    .collect();
+                for (k, v) in series.into_iter().enumerate() {
+                    let pts = thinned(&self.plot, self.x_range, v.iter().map(|s| (s.t, f(s))));
+                    self.plot.set_series(panel, k, pts);
                 }
-                self.plot.set_series(panel, extra.len(), pts(&path.samples));
             }
             self.shown = Some((*p, overlays));
         }

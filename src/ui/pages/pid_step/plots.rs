@@ -9,6 +9,7 @@ use crate::recipes::pid_step::{PidSample, DT_S};
 use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
+use crate::ui::kit::recipe_controls::thinned;
 use crate::view::plot::auto_range;
 use crate::view::signal::nice_range;
 
@@ -86,16 +87,26 @@ impl Plots {
             ],
             cursor_rgb: C_R,
         });
-        let pts = |rows: &[PidSample], f: fn(&PidSample) -> f64| {
-            rows.iter().map(|s| (s.t, f(s))).collect()
+        let x = (0.0, t_end);
+        let pts = |plot: &Plot, rows: &[PidSample], f: fn(&PidSample) -> f64| {
+            thinned(plot, x, rows.iter().map(|s| (s.t, f(s))))
         };
         if let Some(ghost) = ghost {
-            self.plot.set_series(0, 0, pts(ghost, |s| s.y));
-            self.plot.set_series(1, 0, pts(ghost, |s| s.u));
+            let (y, u) = (
+                pts(&self.plot, ghost, |s| s.y),
+                pts(&self.plot, ghost, |s| s.u),
+            );
+            self.plot.set_series(0, 0, y);
+            self.plot.set_series(1, 0, u);
         }
-        self.plot.set_series(0, g, pts(now, |s| s.r));
-        self.plot.set_series(0, g + 1, pts(now, |s| s.y));
-        self.plot.set_series(1, g, pts(now, |s| s.u));
+        let (r, y, u) = (
+            pts(&self.plot, now, |s| s.r),
+            pts(&self.plot, now, |s| s.y),
+            pts(&self.plot, now, |s| s.u),
+        );
+        self.plot.set_series(0, g, r);
+        self.plot.set_series(0, g + 1, y);
+        self.plot.set_series(1, g, u);
         if resized {
             self.plot.invalidate_all();
         }

@@ -16,6 +16,7 @@ use crate::ui::ctx;
 use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent};
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
+use crate::ui::kit::recipe_controls::thinned;
 use crate::view::drag::HandleShape;
 use crate::view::plot::auto_range;
 use crate::view::signal::{nice_range, snap};
@@ -188,8 +189,12 @@ impl Plots {
             self.plot.invalidate_all();
         }
         for (panel, f) in columns.into_iter().enumerate() {
-            self.plot
-                .set_series(panel, 0, samples.iter().map(|s| (s.t, f(s))).collect());
+            let pts = thinned(
+                &self.plot,
+                self.x_range,
+                samples.iter().map(|s| (s.t, f(s))),
+            );
+            self.plot.set_series(panel, 0, pts);
         }
         let _ = self.plot.draw(ink);
         self.draw_marks(p, ph, ink);
