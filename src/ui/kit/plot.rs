@@ -238,18 +238,6 @@ impl Plot {
         self.areas.get(panel).map(|a| (a.x0, a.x1, a.y0, a.y1))
     }
 
-    /// The panel whose plotting area holds CSS px `y` (or the nearest one).
-    pub fn panel_at(&self, y: f64) -> Option<usize> {
-        self.areas
-            .iter()
-            .enumerate()
-            .min_by(|(_, a), (_, b)| {
-                let d = |r: &Area| (r.y0 - y).max(y - r.y1).max(0.0);
-                d(a).total_cmp(&d(b))
-            })
-            .map(|(i, _)| i)
-    }
-
     /// Draws whatever changed.
     pub fn draw(&mut self, ink: Ink) -> Result<(), String> {
         if self.spec.is_none() {
