@@ -75,7 +75,9 @@ pid-ro-peak-u-t = … at t (s)
 pid-ro-final-y = Final output y
 pid-ro-none = not reached
 pid-ro-note = Read from the CSV's rows, without interpolation: times are its t column (row k is t = k × 0.05 s, y after that step).
-pid-live = Rise time { $rise } s, overshoot { $overshoot } %, settling time { $settling } s.
+pid-live = Rise time { $rise }, overshoot { $overshoot }, settling time { $settling }.
+pid-live-seconds = { $value } s
+pid-live-percent = { $value } %
 pid-key-kp = Raise or lower Kp by 0.05 (Shift: 0.5)
 pid-explain-gains-title = What each gain does
 pid-explain-gains = Kp pushes in proportion to the error now: more Kp rises faster but overshoots and, past a point, oscillates. Ki adds up the error over time and removes the offset a P controller leaves, at the price of overshoot and slower settling (wind-up). Kd reacts to how fast the error changes: it damps the overshoot, but on a step it gives a large kick in u at the first sample.

@@ -75,7 +75,9 @@ pid-ro-peak-u-t = そのときの t（秒）
 pid-ro-final-y = 最終の出力 y
 pid-ro-none = 未到達
 pid-ro-note = CSV の各行から補間せずに読み取った値です。時刻は CSV の t 列（k 行目は t = k × 0.05 秒、y はそのステップ後の値）。
-pid-live = 立ち上がり時間 { $rise } 秒、オーバーシュート { $overshoot } %、整定時間 { $settling } 秒。
+pid-live = 立ち上がり時間 { $rise }、オーバーシュート { $overshoot }、整定時間 { $settling }。
+pid-live-seconds = { $value } 秒
+pid-live-percent = { $value } %
 pid-key-kp = Kp を 0.05 上げ下げ（Shift で 0.5）
 pid-explain-gains-title = 各ゲインの働き
 pid-explain-gains = Kp はいまの偏差に比例して押します。大きくすると速く立ち上がりますが、行き過ぎ、ある点を超えると振動します。Ki は偏差を時間で積み上げ、P 制御だけでは残るオフセットを消しますが、そのぶんオーバーシュートが増え整定が遅くなります（ワインドアップ）。Kd は偏差の変化の速さに反応して行き過ぎを抑えますが、ステップ入力では最初のサンプルで u に大きな「キック」を生みます。

@@ -150,6 +150,11 @@ test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; dive
     await page.waitForSelector('[data-testid="pid-step-warning"]:not([hidden])');
     assert.match(await page.locator('[data-testid="pid-step-warning"]').innerText(), /unstable/);
     assert.equal((await readouts(page))['rise-time'], null);
+    // The live summary says "not reached" bare, a unit only after a number.
+    const live = page.locator('[data-testid="pid-live"]');
+    await page.waitForFunction(() => /not reached/.test(document.querySelector('[data-testid="pid-live"]').textContent), null, { timeout: 3000 });
+    const said = await live.textContent();
+    assert.match(said, /^Rise time not reached, overshoot (not reached|\S+ %), settling time not reached\.$/, said);
     assert.deepEqual(errors, []);
   } finally {
     await close();

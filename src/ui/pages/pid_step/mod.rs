@@ -239,13 +239,19 @@ impl Inner {
         }
         self.redraw(false);
         let f = figures(&self.runs.borrow().now);
-        let or_none = |x: Option<f64>, d| x.map_or_else(|| ctx::t("pid-ro-none"), |x| sig(x, d));
+        // The unit belongs to a number only: "not reached" stands alone.
+        let or_none = |x: Option<f64>, unit_id: &str| {
+            x.map_or_else(
+                || ctx::t("pid-ro-none"),
+                |x| ctx::t_strings(unit_id, &[("value", sig(x, 3))]),
+            )
+        };
         self.readouts.announce(&ctx::t_strings(
             "pid-live",
             &[
-                ("rise", or_none(f.rise_time, 3)),
-                ("overshoot", or_none(f.overshoot_pct, 3)),
-                ("settling", or_none(f.settling_time, 3)),
+                ("rise", or_none(f.rise_time, "pid-live-seconds")),
+                ("overshoot", or_none(f.overshoot_pct, "pid-live-percent")),
+                ("settling", or_none(f.settling_time, "pid-live-seconds")),
             ],
         ));
         if let Some(url) = self.url.borrow().as_ref() {
