@@ -101,6 +101,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
     ),
     (Lang::En, "rrt.ftl", include_str!("../locales/en/rrt.ftl")),
     (
+        Lang::En,
+        "signals.ftl",
+        include_str!("../locales/en/signals.ftl"),
+    ),
+    (
         Lang::Ja,
         "shell.ftl",
         include_str!("../locales/ja/shell.ftl"),
@@ -129,6 +134,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/ja/pendulum.ftl"),
     ),
     (Lang::Ja, "rrt.ftl", include_str!("../locales/ja/rrt.ftl")),
+    (
+        Lang::Ja,
+        "signals.ftl",
+        include_str!("../locales/ja/signals.ftl"),
+    ),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as

@@ -12,19 +12,27 @@
 //! - [`pendulum`]: the pendulum page: kept rows, energy error and drift, period, separatrix, URL.
 //! - [`rrt`]: the RRT stepper page: state and URL, command lines, world editor hit tests and
 //!   edits, sub-step texts and pseudocode lines.
+//! - [`signal`]: what the signal pages share (URL keys = argument names, sliders, snapping);
+//!   [`cubic_path`]: the cubic page's coefficients, peaks and overlays;
+//!   [`pid_step`]: rise time, overshoot, settling, steady-state error and peak u;
+//!   [`trapezoid_profile`]: the phases of a profile, triangles, the ramp-corner drag.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
 pub mod command_line;
+pub mod cubic_path;
 pub mod drag;
 pub mod form;
 pub mod heatmap;
 pub mod ik2r;
 pub mod pendulum;
+pub mod pid_step;
 pub mod plot;
 pub mod progress;
 pub mod rrt;
+pub mod signal;
 pub mod stepper;
 pub mod table;
+pub mod trapezoid_profile;
 pub mod url;
 pub mod worker;

@@ -12,7 +12,8 @@
 //! - [`plot`]: line/scatter plots: panels sharing x, legend, cursor, incremental append.
 //! - [`heatmap`]: colour-map heatmap with a legend.
 //! - [`form`]: the ArgSpec-driven parameter form; [`exports`]: downloads and command lines;
-//!   [`readouts`]: `data-readout` values and a throttled `aria-live` summary.
+//!   [`readouts`]: `data-readout` values and a throttled `aria-live` summary;
+//!   [`recipe_controls`]: form + sliders + URL + exports of a page that runs one recipe live.
 //! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
 //! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
 
@@ -27,6 +28,7 @@ pub mod plot;
 pub mod png;
 pub mod progress;
 pub mod readouts;
+pub mod recipe_controls;
 pub mod scope;
 pub mod stepper;
 pub mod url_state;

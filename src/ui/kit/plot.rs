@@ -289,6 +289,24 @@ impl Plot {
         })
     }
 
+    /// The CSS px of data point `(x, y)` in panel `panel` (for drag handles on the data),
+    /// once the axes have been drawn.
+    pub fn to_px(&self, panel: usize, x: f64, y: f64) -> Option<DVec2> {
+        let (xs, ys, _) = self.scales(panel)?;
+        Some(DVec2::new(xs.map(x), ys.map(y)))
+    }
+
+    /// The data point under CSS px `at` in panel `panel` (not clamped).
+    pub fn from_px(&self, panel: usize, at: DVec2) -> Option<(f64, f64)> {
+        let (xs, ys, _) = self.scales(panel)?;
+        Some((xs.invert(at.x), ys.invert(at.y)))
+    }
+
+    /// The plotting area of panel `panel`, CSS px: `(left, right, top, bottom)`.
+    pub fn panel_px(&self, panel: usize) -> Option<(f64, f64, f64, f64)> {
+        self.areas.get(panel).map(|a| (a.x0, a.x1, a.y0, a.y1))
+    }
+
     /// Draws whatever changed.
     pub fn draw(&mut self, ink: Ink) -> Result<(), String> {
         if self.spec.is_none() {

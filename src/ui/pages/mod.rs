@@ -4,11 +4,14 @@
 
 use crate::ui::page::PageDef;
 
+pub mod cubic_path;
 pub mod drills;
 pub mod home;
 pub mod ik2r;
 pub mod pendulum;
+pub mod pid_step;
 pub mod rrt;
+pub mod trapezoid_profile;
 
 /// Route id of the home page (`#/`, `#/home`).
 pub const HOME_ID: &str = home::PAGE.id;
@@ -19,6 +22,9 @@ pub const PAGES: &[PageDef] = &[
     ik2r::PAGE,
     pendulum::PAGE,
     rrt::PAGE,
+    cubic_path::PAGE,
+    pid_step::PAGE,
+    trapezoid_profile::PAGE,
     drills::PAGE,
 ];
 
@@ -29,6 +35,9 @@ pub const RECIPE_PAGES: &[(&str, &str)] = &[
     ("jacobian-2r", "ik-2r"),
     ("manip-grid", "ik-2r"),
     ("rrt-2d", "rrt-2d"),
+    ("cubic-path", "cubic-path"),
+    ("pid-step", "pid-step"),
+    ("trapezoid-profile", "trapezoid-profile"),
 ];
 
 /// The page with route id `id`.

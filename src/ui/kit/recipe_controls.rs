@@ -1,0 +1,426 @@
+//! The controls of a page that runs one recipe live: the kit [`Form`] of the recipe's
+//! arguments with a slider beside each number field, checked on every input with the recipe's
+//! own parse + validate ([`crate::view::form::validate`]); the URL state of the arguments (keys
+//! = the command line's argument names, see [`crate::view::signal`]); and the exports panel
+//! (the recipe's CSV download, a PNG button the page fills, the `bsv` and `python` lines).
+//!
+//! The last valid arguments stay in use while a field holds a bad value: the page keeps its
+//! plot, the download and the command lines are those of the last valid run.
+//!
+//! Hooks: text fields `data-field="<name>"`, messages `data-field-error="<name>"` (the kit
+//! form's), sliders `data-slider="<name>"`, downloads `data-download="<file>"`.
+
+use std::cell::RefCell;
+use std::rc::Weak;
+
+use wasm_bindgen::{JsCast, JsValue};
+use web_sys::{Element, Event, HtmlInputElement};
+
+use super::exports::{self, Exports};
+use super::form::{escape, Form, Message, RECIPE_GROUPS};
+use super::scope::Scope;
+use super::url_state::UrlNotice;
+use crate::args::Args;
+use crate::error::RecipeError;
+use crate::recipes::RecipeInfo;
+use crate::ui::dom;
+use crate::view::command_line::RunArgs;
+use crate::view::form::{recipe_fields, validate};
+use crate::view::signal::{read_texts, write_texts, Slider};
+
+/// The kernel's parse + validate of a recipe's arguments.
+pub type Parse<T> = fn(&Args) -> Result<T, RecipeError>;
+
+/// The form slot, the URL notice and the exports panel's markup (the page places them); the
+/// PNG button saves `png` and says `png_label_id`.
+pub fn markup(
+    prefix: &str,
+    info: &RecipeInfo,
+    png: &str,
+    png_label_id: &str,
+) -> (String, String, String) {
+    let p = escape(prefix);
+    let form =
+        format!("<form class=\"kit-live-form {p}-form\" data-{p}=\"form\" novalidate></form>");
+    let notice = format!("<p class=\"kit-notice {p}-notice\" data-{p}=\"url-notice\" hidden></p>");
+    let mut buttons = String::from("<div class=\"kit-downloads\">");
+    for file in info.writes {
+        buttons.push_str(&exports::download_button(prefix, file));
+    }
+    buttons.push_str(&format!(
+        "<button type=\"button\" class=\"button kit-download {p}-download\" data-download=\"{f}\" \
+         data-i18n=\"{label}\"></button></div>",
+        f = escape(png),
+        label = escape(png_label_id),
+    ));
+    (form, notice, buttons + &exports::markup(prefix))
+}
+
+/// Messages shown beside fields (field index, message) and the fields marked invalid.
+type Shown = (Vec<(usize, Message)>, Vec<usize>);
+
+/// The form, sliders, URL notice and exports of one recipe.
+pub struct RecipeControls<T> {
+    pub info: &'static RecipeInfo,
+    /// The page root (the exports' buttons) and the `<form>`.
+    root: Element,
+    container: Element,
+    pub form: RefCell<Form>,
+    sliders: Vec<(usize, HtmlInputElement)>,
+    pub exports: Exports,
+    notice: UrlNotice,
+    parse: Parse<T>,
+    /// The texts and value of the last valid arguments.
+    valid: RefCell<(Vec<Option<String>>, T)>,
+    /// Messages shown beside fields and the fields marked invalid.
+    shown: RefCell<Shown>,
+}
+
+fn parse_texts<T>(
+    info: &'static RecipeInfo,
+    form: &Form,
+    texts: &[Option<String>],
+    parse: Parse<T>,
+) -> Result<T, RecipeError> {
+    let args = RunArgs::new(info.id, &form.fields, texts);
+    parse(&Args::parse(&args.raw(), info.args, info.flags)?)
+}
+
+impl<T: Clone + 'static> RecipeControls<T> {
+    /// Builds the form under `root` (after [`markup`] is in place) from the URL's `query`
+    /// (keys in `own_keys` are the page's and not reported), with a slider per [`Slider`].
+    /// A URL value the recipe refuses shows its message; the run is then the defaults'.
+    pub fn mount(
+        root: &Element,
+        prefix: &str,
+        info: &'static RecipeInfo,
+        sliders: &[Slider],
+        query: &[(String, String)],
+        own_keys: &[&str],
+        parse: Parse<T>,
+    ) -> Result<RecipeControls<T>, JsValue> {
+        let fields = recipe_fields(info);
+        let (texts, ignored) = read_texts(info, query, own_keys);
+        let values: Vec<String> = texts
+            .iter()
+            .zip(&fields)
+            .map(|(t, f)| t.clone().unwrap_or_else(|| f.default().to_string()))
+            .collect();
+        let container: Element = dom::find(root, &format!("[data-{prefix}=\"form\"]"), prefix)?;
+        let form = Form::build(&container, prefix, &RECIPE_GROUPS, fields, &values)?;
+        let mut slider_els = Vec::new();
+        for s in sliders {
+            let Some(index) = form.index_of(s.name) else {
+                continue;
+            };
+            let text: Element =
+                dom::find(&container, &format!("[data-field=\"{}\"]", s.name), prefix)?;
+            text.insert_adjacent_html(
+                "afterend",
+                &format!(
+                    "<input type=\"range\" class=\"kit-slider {prefix}-slider\" data-slider=\"{n}\" \
+                     min=\"{min}\" max=\"{max}\" step=\"{step}\" data-i18n-attr=\"aria-label={label}\">",
+                    n = s.name,
+                    min = s.min,
+                    max = s.max,
+                    step = s.step,
+                    label = escape(&form.fields[index].label_id),
+                ),
+            )?;
+            slider_els.push((
+                index,
+                dom::find(&container, &format!("[data-slider=\"{}\"]", s.name), prefix)?,
+            ));
+        }
+        dom::relocalize(&container)?;
+        let defaults = vec![None; form.fields.len()];
+        let default_value = parse_texts(info, &form, &defaults, parse)
+            .map_err(|e| JsValue::from_str(&e.to_string()))?;
+        let notice = UrlNotice::new(
+            dom::find(root, &format!("[data-{prefix}=\"url-notice\"]"), prefix)?,
+            ignored,
+        )?;
+        let exports = Exports::find(root, prefix)?;
+        let controls = RecipeControls {
+            info,
+            root: root.clone(),
+            container,
+            form: RefCell::new(form),
+            sliders: slider_els,
+            exports,
+            notice,
+            parse,
+            valid: RefCell::new((defaults, default_value)),
+            shown: RefCell::new((Vec::new(), Vec::new())),
+        };
+        controls.check(None);
+        controls.show_commands();
+        controls.sync_sliders(None);
+        Ok(controls)
+    }
+
+    /// Listens to the form (inputs, sliders, submit) and the exports' buttons: `changed` gets
+    /// each new valid value, `png` is the PNG button.
+    pub fn attach<P: 'static>(
+        &self,
+        scope: &mut Scope,
+        page: &Weak<P>,
+        get: fn(&P) -> &RecipeControls<T>,
+        changed: fn(&P, T),
+        png: fn(&P),
+    ) -> Result<(), JsValue> {
+        let form = self.container.clone();
+        scope.listen_for(&form, "input", page, move |p, e| {
+            if let Some(value) = get(p).edit(e) {
+                changed(p, value);
+            }
+        })?;
+        scope.listen_for(&form, "submit", page, |_, e| e.prevent_default())?;
+        for button in dom::matching(&self.root, "[data-download]")? {
+            let file = button.get_attribute("data-download").unwrap_or_default();
+            scope.listen_for(&button, "click", page, move |p, _| {
+                if file.ends_with(".png") {
+                    png(p);
+                } else {
+                    get(p).download(&file);
+                }
+            })?;
+        }
+        for button in dom::matching(&self.root, "[data-copy]")? {
+            let kind = button.get_attribute("data-copy").unwrap_or_default();
+            scope.listen_for(&button, "click", page, move |p, _| {
+                get(p).exports.copy(&kind)
+            })?;
+        }
+        Ok(())
+    }
+
+    /// An input event in the form: a slider writes its value into its text field; then the
+    /// form is checked. The new value when it is valid and differs from the last.
+    pub fn edit(&self, event: &Event) -> Option<T> {
+        let target = event.target()?.dyn_into::<Element>().ok()?;
+        let from_slider = target.get_attribute("data-slider");
+        if let Some(name) = &from_slider {
+            let value = target.dyn_ref::<HtmlInputElement>()?.value();
+            return self.set_text(name, &value, true);
+        }
+        self.form.borrow().note_edit(&target);
+        self.check_changed(None)
+    }
+
+    /// Sets field `name` to `text` (a drag, a key, a slider) and checks the form.
+    pub fn set_text(&self, name: &str, text: &str, from_slider: bool) -> Option<T> {
+        let slider = if from_slider {
+            self.form.borrow().index_of(name)
+        } else {
+            None
+        };
+        self.set_texts(&[(name, text)], slider)
+    }
+
+    /// Sets several fields at once (a drag of a point that is two arguments) and checks the
+    /// form once; `slider` is the field whose slider is being dragged (left alone).
+    pub fn set_texts(&self, values: &[(&str, &str)], slider: Option<usize>) -> Option<T> {
+        {
+            let form = self.form.borrow();
+            let mut texts: Vec<String> = form
+                .texts()
+                .into_iter()
+                .map(Option::unwrap_or_default)
+                .collect();
+            for (name, text) in values {
+                if let Some(index) = form.index_of(name) {
+                    texts[index] = text.to_string();
+                }
+            }
+            form.fill(&texts);
+            if let Some(el) = values.first().and_then(|(name, _)| self.field(name)) {
+                form.note_edit(&el);
+            }
+        }
+        self.check_changed(slider)
+    }
+
+    /// The text now in field `name`.
+    pub fn text(&self, name: &str) -> String {
+        self.field(name)
+            .and_then(|el| el.dyn_into::<HtmlInputElement>().ok())
+            .map(|i| i.value())
+            .unwrap_or_default()
+    }
+
+    fn field(&self, name: &str) -> Option<Element> {
+        self.container
+            .query_selector(&format!("[data-field=\"{name}\"]"))
+            .ok()
+            .flatten()
+    }
+
+    /// Back to the recipe's defaults.
+    pub fn reset(&self) -> Option<T> {
+        self.form.borrow().reset();
+        self.notice.set(Vec::new());
+        self.check_changed(None)
+    }
+
+    fn check_changed(&self, slider: Option<usize>) -> Option<T> {
+        let before = self.valid.borrow().0.clone();
+        let valid = self.check(slider);
+        self.exports.clear_status();
+        if !valid || self.valid.borrow().0 == before {
+            return None;
+        }
+        self.show_commands();
+        Some(self.value())
+    }
+
+    /// Checks the form, shows the messages; a valid set becomes the last valid one. Sliders
+    /// follow the fields (all but the one being dragged).
+    fn check(&self, slider: Option<usize>) -> bool {
+        let mut form = self.form.borrow_mut();
+        let texts = form.texts();
+        let (info, parse) = (self.info, self.parse);
+        let checked = validate(
+            &form.fields,
+            &texts,
+            form.changed(),
+            |t| parse_texts(info, &form, t, parse),
+            |_| None,
+        );
+        let messages: Vec<(usize, Message)> = checked
+            .messages
+            .iter()
+            .map(|(i, e)| (*i, Message::Recipe(e.clone())))
+            .collect();
+        form.show(&messages, &checked.marked);
+        *self.shown.borrow_mut() = (messages, checked.marked.clone());
+        let ok = checked.value.is_some() && checked.is_valid();
+        if let Some(value) = checked.value.filter(|_| ok) {
+            let canonical: Vec<Option<String>> = texts
+                .iter()
+                .zip(&form.fields)
+                .map(|(t, f)| {
+                    t.as_deref()
+                        .map(str::trim)
+                        .filter(|t| !t.is_empty() && *t != f.default())
+                        .map(str::to_string)
+                })
+                .collect();
+            *self.valid.borrow_mut() = (canonical, value);
+        }
+        drop(form);
+        if ok {
+            self.sync_sliders(slider);
+        }
+        ok
+    }
+
+    fn sync_sliders(&self, skip: Option<usize>) {
+        let form = self.form.borrow();
+        let texts = form.texts();
+        for (index, slider) in &self.sliders {
+            if Some(*index) == skip {
+                continue;
+            }
+            if let Some(Some(text)) = texts.get(*index) {
+                if text.trim().parse::<f64>().is_ok() {
+                    slider.set_value(text.trim());
+                }
+            }
+        }
+    }
+
+    fn run_args(&self) -> RunArgs {
+        let form = self.form.borrow();
+        RunArgs::new(self.info.id, &form.fields, &self.valid.borrow().0)
+    }
+
+    fn show_commands(&self) {
+        self.exports
+            .show_run(&self.run_args(), self.info.python, None);
+    }
+
+    /// The value of the last valid arguments.
+    pub fn value(&self) -> T {
+        self.valid.borrow().1.clone()
+    }
+
+    /// The arguments of the last valid run, as the kernel parses them.
+    pub fn raw_args(&self) -> Vec<String> {
+        self.run_args().raw()
+    }
+
+    /// The URL pairs of the last valid arguments (those that differ from the defaults).
+    pub fn url_pairs(&self) -> Vec<(String, String)> {
+        write_texts(self.info, &self.valid.borrow().0)
+    }
+
+    /// Saves `file` of the recipe's run with the last valid arguments (the `bsv` bytes).
+    pub fn download(&self, file: &str) {
+        // The arguments passed the recipe's own check, so the run succeeds.
+        if let Ok(out) = crate::recipes::run(self.info.id, &self.raw_args()) {
+            self.exports
+                .download(file, out.file(file).unwrap_or_default());
+        }
+    }
+
+    /// The messages, notes, notice and download labels in the current language.
+    pub fn relocalize(&self) {
+        for file in self.info.writes {
+            if let Ok(Some(button)) = self
+                .root
+                .query_selector(&format!("[data-download=\"{file}\"]"))
+            {
+                let label = crate::ui::ctx::t_strings(
+                    "kit-exports-download",
+                    &[("file", file.to_string())],
+                );
+                button.set_text_content(Some(&label));
+            }
+        }
+        let (messages, marked) = self.shown.borrow().clone();
+        self.form.borrow_mut().show(&messages, &marked);
+        self.exports.relocalize();
+        self.notice.relocalize();
+    }
+}
+
+/// The points of a series for `plot`, whose x axis will span `x_range`: thinned to the plot's
+/// own min/max decimation per pixel column ([`crate::view::signal::thin`]) once the plot has
+/// laid out its panels, all of them before.
+pub fn thinned(
+    plot: &super::plot::Plot,
+    x_range: (f64, f64),
+    points: impl Iterator<Item = (f64, f64)>,
+) -> Vec<(f64, f64)> {
+    match plot.panel_px(0) {
+        Some((x0, x1, _, _)) => {
+            let x = crate::view::plot::LinearScale::new(x_range, (x0, x1));
+            crate::view::signal::thin(points, &x)
+        }
+        None => points.collect(),
+    }
+}
+
+/// Bench builds keep the duration of every recompute + redraw of a live page, ms, in
+/// `window.__signalFrameMs` (`tests/e2e/signals.bench.mjs` reads it).
+#[cfg(feature = "bench")]
+pub fn record_frame_ms(ms: f64) {
+    let Some(window) = web_sys::window() else {
+        return;
+    };
+    let key = JsValue::from_str("__signalFrameMs");
+    let list = js_sys::Reflect::get(&window, &key)
+        .ok()
+        .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
+        .unwrap_or_else(|| {
+            let a = js_sys::Array::new();
+            let _ = js_sys::Reflect::set(&window, &key, &a);
+            a
+        });
+    list.push(&JsValue::from_f64(ms));
+}
+
+/// Without the `bench` feature: nothing.
+#[cfg(not(feature = "bench"))]
+pub fn record_frame_ms(_ms: f64) {}

@@ -1,0 +1,229 @@
+//! The PID step page (`#/pid-step`), plain Rust: the step-response figures computed from the
+//! exact samples the CSV holds (no interpolation), against the recipe's unit setpoint r.
+//!
+//! - rise time (10–90 %): the `t` of the first row with `y ≥ 0.9 r` minus that of the first
+//!   row with `y ≥ 0.1 r` (none when y never gets there);
+//! - overshoot: `(max y − r) / r`, in %, 0 when y stays below r;
+//! - settling time (2 % band): the `t` of the row after the last one with `|y − r| > 0.02 |r|`
+//!   (none when the last row is still outside: not settled within the run);
+//! - steady-state error: `r − y` of the last row;
+//! - peak u: the row with the largest `|u|` (its `t` and signed value).
+//!
+//! Times are the CSV's `t` column (row k: `t = round(k·0.05, 4)` s, y after that step). A
+//! response that is not finite has no figures but the peak u where one exists.
+//!
+//! [`response`] is the kernel's loop, operation for operation (so r, y, u and e are the CSV's
+//! to the last bit), with `t = k·dt` left unrounded: the kernel rounds every row's time through
+//! a decimal formatting (Python's `round`), which costs more than the loop itself; the figures
+//! round only the few times they report.
+
+use crate::pyfmt::py_round;
+use crate::recipes::pid_step::{PidParams, PidSample, DT_S, SETPOINT};
+
+/// The kernel's response of valid `p`, with unrounded times `k·dt`.
+pub fn response(p: &PidParams) -> Vec<PidSample> {
+    let (kp, ki, kd) = (p.kp, p.ki, p.kd);
+    let (dt, r) = (DT_S, SETPOINT);
+    let (mut y, mut integ, mut prev_e) = (0.0f64, 0.0f64, 0.0f64);
+    let a = dt / (p.tau + dt);
+    let steps = usize::try_from(p.steps).unwrap_or(0);
+    let mut rows = Vec::with_capacity(steps);
+    for k in 0..steps {
+        let e = r - y;
+        integ += e * dt;
+        let deriv = (e - prev_e) / dt;
+        let u = kp * e + ki * integ + kd * deriv;
+        y = y + a * (u - y);
+        prev_e = e;
+        rows.push(PidSample {
+            t: k as f64 * dt,
+            r,
+            y,
+            u,
+            e,
+        });
+    }
+    rows
+}
+
+/// A row's time as the CSV writes it (`round(t, 4)`; unchanged for the kernel's rows).
+fn csv_t(s: &PidSample) -> f64 {
+    py_round(s.t, 4)
+}
+
+/// The step-response figures of one run.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StepFigures {
+    pub rise_time: Option<f64>,
+    pub overshoot_pct: Option<f64>,
+    pub settling_time: Option<f64>,
+    pub steady_state_error: Option<f64>,
+    /// `(t, u)` of the largest `|u|`.
+    pub peak_u: Option<(f64, f64)>,
+    pub final_y: Option<f64>,
+}
+
+/// Fraction of r the rise starts at and ends at.
+const RISE_FROM: f64 = 0.1;
+const RISE_TO: f64 = 0.9;
+/// Half-width of the settling band, as a fraction of r.
+const SETTLE_BAND: f64 = 0.02;
+
+/// The figures of `samples`.
+pub fn figures(samples: &[PidSample]) -> StepFigures {
+    let mut out = StepFigures {
+        peak_u: samples
+            .iter()
+            .filter(|s| s.u.is_finite())
+            .fold(None::<(f64, f64)>, |best, s| match best {
+                Some((_, u)) if u.abs() >= s.u.abs() => best,
+                _ => Some((s.t, s.u)),
+            })
+            .map(|(t, u)| (py_round(t, 4), u)),
+        ..StepFigures::default()
+    };
+    let Some(last) = samples.last() else {
+        return out;
+    };
+    if samples.iter().any(|s| !s.y.is_finite()) {
+        return out;
+    }
+    let r = last.r;
+    let first_at = |level: f64| samples.iter().find(|s| s.y >= level * r).map(csv_t);
+    out.rise_time = match (first_at(RISE_FROM), first_at(RISE_TO)) {
+        (Some(a), Some(b)) => Some(b - a),
+        _ => None,
+    };
+    let max_y = samples.iter().fold(f64::NEG_INFINITY, |m, s| m.max(s.y));
+    out.overshoot_pct = Some(((max_y - r) / r * 100.0).max(0.0));
+    let outside = samples
+        .iter()
+        .rposition(|s| (s.y - r).abs() > SETTLE_BAND * r.abs());
+    out.settling_time = match outside {
+        None => Some(csv_t(&samples[0])),
+        Some(i) => samples.get(i + 1).map(csv_t),
+    };
+    out.steady_state_error = Some(r - last.y);
+    out.final_y = Some(last.y);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::recipes::pid_step::{simulate, PidParams};
+    use crate::recipes::run_strs;
+
+    /// The CSV of `bsv pid-step <raw>` as rows of numbers (t, r, y, u, e).
+    fn csv(raw: &[&str]) -> Vec<[f64; 5]> {
+        let out = run_strs("pid-step", raw).unwrap();
+        out.files[0]
+            .text
+            .lines()
+            .skip(1)
+            .map(|l| {
+                let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+                [v[0], v[1], v[2], v[3], v[4]]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn figures_of_a_settling_response_read_the_csv() {
+        let raw = ["2", "4", "0.05", "0.8", "300"];
+        let p = PidParams {
+            kp: 2.0,
+            ki: 4.0,
+            kd: 0.05,
+            tau: 0.8,
+            steps: 300,
+        };
+        let f = figures(&simulate(&p).unwrap());
+        let rows = csv(&raw);
+        let t_first = |level: f64| rows.iter().find(|r| r[2] >= level).unwrap()[0];
+        assert_eq!(f.rise_time, Some(t_first(0.9) - t_first(0.1)));
+        let max_y = rows.iter().map(|r| r[2]).fold(f64::MIN, f64::max);
+        assert_eq!(f.overshoot_pct, Some(((max_y - 1.0) * 100.0).max(0.0)));
+        let last_out = rows
+            .iter()
+            .rposition(|r| (r[2] - 1.0).abs() > 0.02)
+            .unwrap();
+        assert_eq!(f.settling_time, Some(rows[last_out + 1][0]));
+        assert_eq!(f.steady_state_error, Some(1.0 - rows[299][2]));
+        let peak = rows
+            .iter()
+            .max_by(|a, b| a[3].abs().total_cmp(&b[3].abs()))
+            .unwrap();
+        assert_eq!(f.peak_u, Some((peak[0], peak[3])));
+        assert!(f.overshoot_pct.unwrap() > 0.0, "{f:?}");
+        assert!(f.settling_time.unwrap() < 15.0, "{f:?}");
+    }
+
+    #[test]
+    fn the_fast_response_is_the_kernel_s() {
+        for p in [
+            PidParams::default(),
+            PidParams {
+                kp: 2.0,
+                ki: 4.0,
+                kd: 0.05,
+                tau: 0.8,
+                steps: 5000,
+            },
+            PidParams {
+                kp: 100.0,
+                ki: 0.0,
+                kd: 0.0,
+                tau: 0.8,
+                steps: 600,
+            },
+            PidParams {
+                kp: 2.0,
+                ki: 0.0,
+                kd: 0.1,
+                tau: 0.0,
+                steps: 0,
+            },
+        ] {
+            let (fast, kernel) = (response(&p), simulate(&p).unwrap());
+            assert_eq!(fast.len(), kernel.len());
+            for (f, k) in fast.iter().zip(&kernel) {
+                let bits = |s: &PidSample| [s.r, s.y, s.u, s.e].map(f64::to_bits);
+                assert_eq!(bits(f), bits(k));
+                assert_eq!(py_round(f.t, 4), k.t);
+            }
+            assert_eq!(figures(&fast), figures(&kernel), "{p:?}");
+        }
+    }
+
+    #[test]
+    fn the_default_run_has_not_risen_to_90_percent() {
+        // final_y = 0.7967 after 80 steps: no rise time, no settling, error 0.2033.
+        let f = figures(&simulate(&PidParams::default()).unwrap());
+        assert_eq!(f.rise_time, None);
+        assert_eq!(f.settling_time, None);
+        assert_eq!(f.overshoot_pct, Some(0.0));
+        assert!((f.steady_state_error.unwrap() - 0.2033).abs() < 1e-4);
+        // The first u is the largest: 2.22 (the derivative kick of the step).
+        assert_eq!(f.peak_u, Some((0.0, 2.2199999999999998)));
+    }
+
+    #[test]
+    fn diverged_and_empty_runs_have_no_response_figures() {
+        let wild = simulate(&PidParams {
+            kp: 100.0,
+            ki: 0.0,
+            kd: 0.0,
+            tau: 0.8,
+            steps: 600,
+        })
+        .unwrap();
+        let f = figures(&wild);
+        assert_eq!(
+            (f.rise_time, f.overshoot_pct, f.final_y),
+            (None, None, None)
+        );
+        assert!(f.peak_u.unwrap().1.is_finite());
+        assert_eq!(figures(&[]), StepFigures::default());
+    }
+}

@@ -1,0 +1,216 @@
+//! What the three signal pages (`#/cubic-path`, `#/pid-step`, `#/trapezoid-profile`) share,
+//! plain Rust: their arguments in the URL (keys = the command line's argument names, values
+//! as typed; only values that differ from the recipe's defaults are written), the sliders
+//! beside their fields, rounding of dragged values, and readout number formatting.
+
+use crate::recipes::RecipeInfo;
+use crate::view::plot::{nice_step, LinearScale};
+use crate::view::url::IgnoredKey;
+
+/// A slider beside the field of argument `name`: its range and step (the field itself takes
+/// any value the recipe accepts).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Slider {
+    pub name: &'static str,
+    pub min: f64,
+    pub max: f64,
+    pub step: f64,
+}
+
+/// The texts of the recipe's arguments the URL sets (`None`: the default), in argument
+/// order, and the keys it has that are neither arguments nor in `own_keys` (the page's).
+pub fn read_texts(
+    info: &RecipeInfo,
+    query: &[(String, String)],
+    own_keys: &[&str],
+) -> (Vec<Option<String>>, Vec<IgnoredKey>) {
+    let names: Vec<&str> = info.all_args().map(|(a, _)| a.name).collect();
+    let mut texts = vec![None; names.len()];
+    let mut ignored = Vec::new();
+    for (key, value) in query {
+        match names.iter().position(|n| n == key) {
+            Some(i) => texts[i] = Some(value.clone()),
+            None if own_keys.contains(&key.as_str()) => {}
+            None => ignored.push(IgnoredKey::unknown(key.clone())),
+        }
+    }
+    (texts, ignored)
+}
+
+/// The URL pairs of `texts` (argument order; `None` or the default is left out).
+pub fn write_texts(info: &RecipeInfo, texts: &[Option<String>]) -> Vec<(String, String)> {
+    info.all_args()
+        .zip(texts)
+        .filter_map(|((arg, _), text)| {
+            let text = text.as_deref()?.trim();
+            (!text.is_empty() && text != arg.default)
+                .then(|| (arg.name.to_string(), text.to_string()))
+        })
+        .collect()
+}
+
+/// `value` rounded to a multiple of `step` and written without float noise (`0.35`, not
+/// `0.35000000000000003`): what a drag puts in a field.
+pub fn snap(value: f64, step: f64) -> String {
+    if !value.is_finite() || step <= 0.0 {
+        return "0".to_string();
+    }
+    let decimals = (-step.log10().floor()).max(0.0) as usize;
+    let snapped = (value / step).round() * step;
+    let text = format!("{snapped:.decimals$}");
+    if text.starts_with('-') && text[1..].bytes().all(|b| b == b'0' || b == b'.') {
+        text[1..].to_string()
+    } else {
+        text
+    }
+}
+
+/// `range` widened to multiples of a 1-2-5 step (about 8 intervals), so that small changes of
+/// the data often keep the same axes (and the plot redraws only its series).
+pub fn nice_range(range: (f64, f64)) -> (f64, f64) {
+    let step = nice_step(range.0, range.1, 8);
+    (
+        (range.0 / step).floor() * step,
+        (range.1 / step).ceil() * step,
+    )
+}
+
+/// [`crate::view::plot::decimate`] of the points `points` (x ascending) streamed: the same
+/// points (first, min, max, last of each pixel column of `x`, in order; non-finite points
+/// kept), without first collecting them all. A live page hands the plot a few thousand
+/// points instead of copying every sample of a 100,000-row run.
+pub fn thin(points: impl IntoIterator<Item = (f64, f64)>, x: &LinearScale) -> Vec<(f64, f64)> {
+    /// One column's kept points: (index, point) of first, min, max, last.
+    type Kept = [(usize, (f64, f64)); 4];
+    fn flush(out: &mut Vec<(f64, f64)>, kept: &mut Option<(f64, Kept)>) {
+        if let Some((_, mut k)) = kept.take() {
+            k.sort_by_key(|(i, _)| *i);
+            let mut last = usize::MAX;
+            for (i, p) in k {
+                if i != last {
+                    out.push(p);
+                    last = i;
+                }
+            }
+        }
+    }
+    let mut out = Vec::new();
+    let mut kept: Option<(f64, Kept)> = None;
+    for (i, p) in points.into_iter().enumerate() {
+        if !p.0.is_finite() || !p.1.is_finite() {
+            flush(&mut out, &mut kept);
+            out.push(p);
+            continue;
+        }
+        let col = x.map(p.0).floor();
+        match &mut kept {
+            Some((c, k)) if *c == col => {
+                if p.1 < k[1].1 .1 {
+                    k[1] = (i, p);
+                }
+                if p.1 > k[2].1 .1 {
+                    k[2] = (i, p);
+                }
+                k[3] = (i, p);
+            }
+            _ => {
+                flush(&mut out, &mut kept);
+                kept = Some((col, [(i, p); 4]));
+            }
+        }
+    }
+    flush(&mut out, &mut kept);
+    out
+}
+
+/// `x` with `digits` significant digits for a readout (plain notation between 1e-4 and 1e6,
+/// "—" when not finite).
+pub fn sig(x: f64, digits: usize) -> String {
+    if !x.is_finite() {
+        return "—".to_string();
+    }
+    if x == 0.0 {
+        return "0".to_string();
+    }
+    let mag = x.abs().log10().floor() as i32;
+    if !(-4..6).contains(&mag) {
+        return format!("{:.*e}", digits.saturating_sub(1), x);
+    }
+    let decimals = (digits as i32 - 1 - mag).max(0) as usize;
+    format!("{x:.decimals$}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::recipes::{cubic_path, pid_step};
+
+    fn q(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
+        pairs
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect()
+    }
+
+    #[test]
+    fn url_keys_are_the_argument_names() {
+        let (texts, ignored) = read_texts(
+            &cubic_path::INFO,
+            &q(&[("T", "2"), ("quintic", "1"), ("bogus", "x"), ("q1", "0.5")]),
+            &["quintic"],
+        );
+        assert_eq!(
+            texts,
+            vec![None, Some("0.5".into()), Some("2".into()), None]
+        );
+        assert_eq!(ignored, vec![IgnoredKey::unknown("bogus")]);
+        // Round trip; defaults are not written.
+        assert_eq!(
+            write_texts(&cubic_path::INFO, &texts),
+            q(&[("q1", "0.5"), ("T", "2")])
+        );
+        let defaults = vec![Some("1.2".into()), None, None, None, Some("80".into())];
+        assert_eq!(write_texts(&pid_step::INFO, &defaults), vec![]);
+    }
+
+    #[test]
+    fn thinning_streams_the_plot_s_decimation() {
+        use crate::view::plot::decimate;
+        let x = LinearScale::new((0.0, 3.0), (40.0, 340.0));
+        let mut pts: Vec<(f64, f64)> = (0..30_000)
+            .map(|i| {
+                let t = i as f64 * 1e-4;
+                (t, (t * 37.0).sin() + 0.3 * (t * 1234.5).cos())
+            })
+            .collect();
+        pts[777].1 = f64::NAN;
+        pts[20_000].1 = f64::INFINITY;
+        let thin_pts = thin(pts.iter().copied(), &x);
+        let want = decimate(&pts, &x);
+        assert_eq!(thin_pts.len(), want.len());
+        for (a, b) in thin_pts.iter().zip(&want) {
+            assert_eq!(
+                (a.0.to_bits(), a.1.to_bits()),
+                (b.0.to_bits(), b.1.to_bits())
+            );
+        }
+        assert!(thin_pts.len() < 4 * 302);
+        assert_eq!(thin(Vec::new(), &x), Vec::<(f64, f64)>::new());
+    }
+
+    #[test]
+    fn snapped_values_read_as_typed() {
+        assert_eq!(snap(0.35000000000000003, 0.01), "0.35");
+        assert_eq!(snap(1.23456, 0.05), "1.25");
+        assert_eq!(snap(-0.001, 0.01), "0.00");
+        assert_eq!(snap(12.0, 1.0), "12");
+        assert_eq!(sig(0.7967, 3), "0.797");
+        let (lo, hi) = nice_range((-0.096, 1.296));
+        assert!(
+            (lo + 0.2).abs() < 1e-12 && (hi - 1.4).abs() < 1e-12,
+            "{lo} {hi}"
+        );
+        assert_eq!(sig(f64::NAN, 3), "—");
+        assert_eq!(sig(2.5e7, 3), "2.50e7");
+    }
+}

@@ -1,0 +1,211 @@
+//! The trapezoid-profile page (`#/trapezoid-profile`), plain Rust: the three phases of a
+//! profile (accelerate, cruise, brake) with their times, whether it is a triangle (the
+//! distance is too short to reach vmax), the peak velocity actually reached, and the values a
+//! drag on the velocity plot gives.
+//!
+//! ```text
+//! t_acc = vmax / amax;  triangle when amax · t_acc² ≥ D:  t_acc = √(D / amax), t_flat = 0
+//! otherwise t_flat = (D − amax · t_acc²) / vmax;   t_total = 2 t_acc + t_flat
+//! ```
+//! (the kernel's own operations, so `t_total` is the kernel's to the last bit).
+
+use crate::recipes::trapezoid_profile::{TrapParams, TrapSample, MAX_ROWS};
+
+/// The phases of one profile, s; the velocity reached.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Phases {
+    pub triangle: bool,
+    pub t_acc: f64,
+    pub t_flat: f64,
+    pub t_total: f64,
+    /// The cruise speed reached (below |vmax| for a triangle).
+    pub v_peak: f64,
+    /// |vmax|, |amax|, |distance| as the recipe uses them.
+    pub vmax: f64,
+    pub amax: f64,
+    pub distance: f64,
+    /// The distance of the ramp at the asked vmax (kept for the brake phase, as the recipe
+    /// does, also for a triangle).
+    pub d_acc: f64,
+}
+
+/// The phases of `p` (valid parameters), computed as the kernel computes them.
+pub fn phases(p: &TrapParams) -> Phases {
+    let (distance, vmax, amax) = (p.distance.abs(), p.vmax.abs(), p.amax.abs());
+    let mut t_acc = vmax / amax;
+    let d_acc = 0.5 * amax * crate::math::pow(t_acc, 2.0);
+    let triangle = 2.0 * d_acc >= distance;
+    let (t_flat, v_peak) = if triangle {
+        t_acc = (distance / amax).sqrt();
+        (0.0, amax * t_acc)
+    } else {
+        ((distance - 2.0 * d_acc) / vmax, vmax)
+    };
+    Phases {
+        triangle,
+        t_acc,
+        t_flat,
+        t_total: 2.0 * t_acc + t_flat,
+        v_peak,
+        vmax,
+        amax,
+        distance,
+        d_acc,
+    }
+}
+
+/// The kernel's samples of valid `p`, operation for operation (s, v, a are the CSV's to the
+/// last bit; the row count too), with the accumulated time left unrounded: the kernel prints
+/// `round(t, 5)` through a decimal formatting on every row, which costs more than the loop.
+pub fn samples(p: &TrapParams) -> Vec<TrapSample> {
+    let ph = phases(p);
+    let (amax, vmax, t_acc, t_flat, d_acc) = (ph.amax, ph.v_peak, ph.t_acc, ph.t_flat, ph.d_acc);
+    let mut out = Vec::new();
+    let mut t = 0.0f64;
+    while t <= ph.t_total + 1e-12 && (out.len() as u64) < MAX_ROWS {
+        let (s, v, a);
+        if t < t_acc {
+            a = amax;
+            v = amax * t;
+            s = 0.5 * amax * crate::math::pow(t, 2.0);
+        } else if t < t_acc + t_flat {
+            a = 0.0;
+            v = vmax;
+            s = d_acc + vmax * (t - t_acc);
+        } else {
+            let tau = t - (t_acc + t_flat);
+            a = -amax;
+            v = vmax - amax * tau;
+            s = d_acc + vmax * t_flat + vmax * tau - 0.5 * amax * crate::math::pow(tau, 2.0);
+        }
+        out.push(TrapSample { t, s, v, a });
+        t += p.dt;
+    }
+    out
+}
+
+/// The three phases as time bands `(start, end)`: accelerate, cruise (empty for a triangle),
+/// brake.
+pub fn bands(ph: &Phases) -> [(f64, f64); 3] {
+    let cruise_end = ph.t_acc + ph.t_flat;
+    [
+        (0.0, ph.t_acc),
+        (ph.t_acc, cruise_end),
+        (cruise_end, ph.t_total),
+    ]
+}
+
+/// The amax of a drag of the ramp's corner to `(t, v)` on the velocity plot: the slope from
+/// the origin (`None` when the point is not up and to the right).
+pub fn amax_from_corner(t: f64, v: f64) -> Option<f64> {
+    (t > 0.0 && v > 0.0).then(|| v / t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::recipes::trapezoid_profile::compute;
+
+    #[test]
+    fn phases_match_the_kernel_s_profile() {
+        for (raw, triangle) in [
+            (TrapParams::default(), false),
+            (
+                TrapParams {
+                    distance: 0.2,
+                    vmax: 1.0,
+                    amax: 2.0,
+                    dt: 0.005,
+                },
+                true,
+            ),
+            (
+                TrapParams {
+                    distance: -3.0,
+                    vmax: 2.0,
+                    amax: -4.0,
+                    dt: 0.07,
+                },
+                false,
+            ),
+        ] {
+            let ph = phases(&raw);
+            let profile = compute(&raw).unwrap();
+            assert_eq!(ph.triangle, triangle);
+            assert_eq!(ph.triangle, profile.triangle);
+            assert_eq!(ph.t_total, profile.t_total);
+            assert_eq!(ph.v_peak, profile.vmax_used);
+            // Every sample's acceleration says which band it is in.
+            let [acc, cruise, brake] = bands(&ph);
+            for s in &profile.samples {
+                let t = s.t;
+                if t < acc.1 - 1e-9 {
+                    assert_eq!(s.a, ph.amax, "t = {t}");
+                } else if t > cruise.0 + 1e-9 && t < cruise.1 - 1e-9 {
+                    assert_eq!(s.a, 0.0, "t = {t}");
+                } else if t > brake.0 + 1e-9 {
+                    assert_eq!(s.a, -ph.amax, "t = {t}");
+                }
+            }
+        }
+        let d = phases(&TrapParams::default());
+        assert_eq!(
+            (d.t_acc, d.t_flat, d.t_total, d.v_peak),
+            (0.5, 1.5, 2.5, 0.5)
+        );
+    }
+
+    #[test]
+    fn the_fast_samples_are_the_kernel_s() {
+        for p in [
+            TrapParams::default(),
+            TrapParams {
+                distance: 0.2,
+                vmax: 1.0,
+                amax: 2.0,
+                dt: 0.005,
+            },
+            TrapParams {
+                distance: 0.0,
+                vmax: 0.5,
+                amax: 1.0,
+                dt: 0.01,
+            },
+            TrapParams {
+                distance: -3.0,
+                vmax: 2.0,
+                amax: -4.0,
+                dt: 0.00007,
+            },
+        ] {
+            let (fast, kernel) = (samples(&p), compute(&p).unwrap().samples);
+            assert_eq!(fast.len(), kernel.len(), "{p:?}");
+            for (f, k) in fast.iter().zip(&kernel) {
+                let bits = |x: &TrapSample| [x.s, x.v, x.a].map(f64::to_bits);
+                assert_eq!(bits(f), bits(k));
+                assert_eq!(crate::pyfmt::py_round(f.t, 5), k.t);
+            }
+        }
+    }
+
+    #[test]
+    fn a_short_move_is_a_triangle_below_vmax() {
+        let ph = phases(&TrapParams {
+            distance: 0.2,
+            vmax: 1.0,
+            amax: 2.0,
+            dt: 0.005,
+        });
+        assert!(ph.triangle && ph.t_flat == 0.0);
+        assert!((ph.v_peak - (0.2f64 * 2.0).sqrt()).abs() < 1e-15);
+        assert!(ph.v_peak < ph.vmax);
+        assert_eq!(bands(&ph)[1].0, bands(&ph)[1].1, "no cruise");
+    }
+
+    #[test]
+    fn a_corner_drag_gives_the_slope() {
+        assert_eq!(amax_from_corner(0.5, 0.5), Some(1.0));
+        assert_eq!(amax_from_corner(0.0, 0.5), None);
+        assert_eq!(amax_from_corner(0.5, -0.1), None);
+    }
+}

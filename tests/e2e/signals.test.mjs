@@ -1,0 +1,316 @@
+// The three signal pages (#/cubic-path, #/pid-step, #/trapezoid-profile) in headless Chromium:
+// a drag or a slider changes the readouts as the kernel (the `bsv` CSV) says; the download equals
+// `bsv` byte for byte for the defaults and for a URL with other values; a bad value shows its
+// message beside the field and the page keeps the last valid plot and download; Japanese leaves
+// no English UI text. Screenshots (EN/JA 1920×1080, projector, phone 390 px) go to
+// tests/e2e/out/. In a build with `--features bench`, it also reports the recompute + redraw
+// time of slider drags (p95) at the default sizes and at 100,000 samples.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { join } from 'node:path';
+import { startServer, openApp, closeBrowser, OUT } from './harness.mjs';
+import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { englishStrings } from './locales.mjs';
+
+let server;
+
+before(async () => {
+  buildCli();
+  server = await startServer();
+}, { timeout: 600_000 });
+
+after(async () => {
+  await closeBrowser();
+  await server?.close();
+});
+
+const open = (hash, opts = {}) => openApp(server.url, hash, opts);
+
+/** The CSV of `bsv <args>` as rows of numbers, and the file's bytes. */
+function run(file, args) {
+  const bytes = cli(args).files.get(file);
+  const rows = bytes.toString('utf8').trim().split('\n').slice(1).map((l) => l.split(',').map(Number));
+  return { bytes, rows };
+}
+
+/** `data-readout` → exact value (data-value, a number) of the page. */
+async function readouts(page) {
+  return page.evaluate(() => {
+    const out = {};
+    for (const el of document.querySelectorAll('[data-readout]')) {
+      const v = el.dataset.value;
+      out[el.dataset.readout] = v === undefined || v === '' ? null : Number.isNaN(Number(v)) ? v : Number(v);
+    }
+    return out;
+  });
+}
+
+/** Sets a slider as a drag does (value, then an input event) and lets a frame pass. */
+async function slide(page, name, value) {
+  await page.locator(`[data-slider="${name}"]`).evaluate((el, v) => {
+    el.value = v;
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+  }, String(value));
+}
+
+/** The pixels of the data layer of the page's plot. */
+const dataLayer = (page) => page.evaluate(() => document.querySelectorAll('.sig-stage canvas')[1].toDataURL());
+
+/** The URL query of the page as an object. */
+const query = (page) => page.evaluate(() => Object.fromEntries(new URLSearchParams(location.hash.split('?')[1] ?? '')));
+
+const maxAbs = (rows, col) => rows.reduce((best, r) => (Math.abs(r[col]) > Math.abs(best[col]) ? r : best), rows[0]);
+
+test('cubic-path: dragging the end point moves q1 and T; readouts are the CSV\'s', async () => {
+  const { page, errors, close } = await open('#/cubic-path');
+  try {
+    const canvas = page.locator('[data-testid="cubic-path-canvas"]');
+    const box = await canvas.boundingBox();
+    const end = await canvas.evaluate((c) => [Number(c.dataset.endX), Number(c.dataset.endY)]);
+    await page.mouse.move(box.x + end[0], box.y + end[1]);
+    await page.mouse.down();
+    for (let k = 1; k <= 10; k++) await page.mouse.move(box.x + end[0] + 6 * k, box.y + end[1] + 5 * k);
+    await page.mouse.up();
+    await page.waitForFunction(() => /T=/.test(location.hash) && /q1=/.test(location.hash), null, { timeout: 3000 });
+    const q = await query(page);
+    assert.ok(Number(q.T) > 1 && Number(q.q1) < 1.2, JSON.stringify(q));
+    assert.equal(await page.locator('[data-field="T"]').inputValue(), q.T);
+    const { rows } = run('cubic_path.csv', ['cubic-path', '0.0', q.q1, q.T, '0.02']);
+    const r = await readouts(page);
+    const peakV = maxAbs(rows, 2);
+    const peakA = maxAbs(rows, 3);
+    assert.equal(r['peak-velocity'], peakV[2]);
+    assert.equal(r['peak-velocity-t'], peakV[0]);
+    assert.equal(r['peak-acceleration'], peakA[3]);
+    assert.equal(r.rows, rows.length);
+    assert.equal(r.a2, (3 * Number(q.q1)) / (Number(q.T) * Number(q.T)));
+    // A slider: q0 = 0.5 runs the kernel again.
+    await slide(page, 'q0', 0.5);
+    assert.equal(await page.locator('[data-field="q0"]').inputValue(), '0.5');
+    const again = run('cubic_path.csv', ['cubic-path', '0.5', q.q1, q.T, '0.02']).rows;
+    assert.equal((await readouts(page))['peak-velocity'], maxAbs(again, 2)[2]);
+    // Hovering a plot moves the cursor readout to the sample under it.
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    const c = await readouts(page);
+    const sample = again.find((row) => row[0] === c['cursor-t']);
+    assert.ok(sample, `cursor t ${c['cursor-t']} is a sample time`);
+    assert.deepEqual([c['cursor-q'], c['cursor-qd'], c['cursor-qdd']], [sample[1], sample[2], sample[3]]);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+const DOWNLOADS = [
+  ['cubic-path', 'cubic_path.csv', ['0.0', '1.2', '1.0', '0.02'], '?q0=-0.4&q1=2.5&T=1.7&dt=0.013&quintic=1&trapezoid=1', ['-0.4', '2.5', '1.7', '0.013']],
+  ['pid-step', 'pid_step.csv', ['1.2', '0.4', '0.05', '0.8', '80'], '?Kp=3&Ki=1.1&Kd=0.2&tau=0.5&steps=230', ['3', '1.1', '0.2', '0.5', '230']],
+  ['trapezoid-profile', 'trap_profile.csv', ['1.0', '0.5', '1.0', '0.01'], '?distance=0.2&vmax=1.0&amax=2.0&dt=0.005', ['0.2', '1.0', '2.0', '0.005']],
+];
+
+for (const [id, file, defaults, search, args] of DOWNLOADS) {
+  test(`${id}: the download equals bsv for the defaults and for a URL with other values`, async () => {
+    for (const [hash, want] of [[`#/${id}`, defaults], [`#/${id}${search}`, args]]) {
+      const { bytes } = run(file, [id, ...(hash.includes('?') ? want : [])]);
+      const { page, errors, close } = await open(hash);
+      try {
+        assertSameBytes(await download(page, file), bytes, hash);
+        const bsv = await page.locator('[data-cmd="bsv"]').innerText();
+        assert.equal(bsv, `bsv ${id} ${want.join(' ')}`);
+        const python = await page.locator('[data-cmd="python"]').innerText();
+        assert.match(python, new RegExp(`^python \\w+\\.py ${want.join(' ').replaceAll('.', '\\.')}$`));
+        assert.deepEqual(errors, []);
+      } finally {
+        await close();
+      }
+    }
+  });
+}
+
+test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; divergence warns', async () => {
+  const { page, errors, close } = await open('#/pid-step?steps=300');
+  try {
+    await slide(page, 'Kp', 2);
+    await slide(page, 'Ki', 4);
+    await page.locator('[data-slider="Ki"]').dispatchEvent('change');
+    const { rows } = run('pid_step.csv', ['pid-step', '2', '4', '0.05', '0.8', '300']);
+    const r = await readouts(page);
+    const first = (level) => rows.find((row) => row[2] >= level)[0];
+    assert.equal(r['rise-time'], first(0.9) - first(0.1));
+    const maxY = Math.max(...rows.map((row) => row[2]));
+    assert.equal(r.overshoot, Math.max(0, ((maxY - 1) / 1) * 100));
+    assert.ok(r.overshoot > 0);
+    const lastOut = rows.findLastIndex((row) => Math.abs(row[2] - 1) > 0.02);
+    assert.equal(r['settling-time'], rows[lastOut + 1][0]);
+    assert.equal(r['steady-state-error'], 1 - rows[rows.length - 1][2]);
+    const peak = maxAbs(rows, 3);
+    assert.deepEqual([r['peak-u'], r['peak-u-t']], [peak[3], peak[0]]);
+    assert.equal(await page.locator('[data-testid="pid-step-warning"]').isVisible(), false);
+    // Kp = -5 runs away: the recipe's warning shows; the figures say "not reached".
+    await page.locator('[data-field="Kp"]').fill('-5');
+    await page.waitForSelector('[data-testid="pid-step-warning"]:not([hidden])');
+    assert.match(await page.locator('[data-testid="pid-step-warning"]').innerText(), /unstable/);
+    assert.equal((await readouts(page))['rise-time'], null);
+    // The live summary says "not reached" bare, a unit only after a number.
+    const live = page.locator('[data-testid="pid-live"]');
+    await page.waitForFunction(() => /not reached/.test(document.querySelector('[data-testid="pid-live"]').textContent), null, { timeout: 3000 });
+    const said = await live.textContent();
+    assert.match(said, /^Rise time not reached, overshoot (not reached|\S+ %), settling time not reached\.$/, said);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('trapezoid-profile: dragging vmax up on a short move makes a triangle', async () => {
+  const { page, errors, close } = await open('#/trapezoid-profile');
+  try {
+    assert.equal(await page.locator('[data-testid="trapezoid-profile-triangle"]').isVisible(), false);
+    assert.equal((await readouts(page)).shape, 'trapezoid');
+    const canvas = page.locator('[data-testid="trapezoid-profile-canvas"]');
+    const box = await canvas.boundingBox();
+    const h = await canvas.evaluate((c) => [Number(c.dataset.vmaxX), Number(c.dataset.vmaxY)]);
+    await page.mouse.move(box.x + h[0], box.y + h[1]);
+    await page.mouse.down();
+    for (let k = 1; k <= 8; k++) await page.mouse.move(box.x + h[0], box.y + h[1] - 12 * k);
+    await page.mouse.up();
+    await page.waitForFunction(() => /vmax=/.test(location.hash), null, { timeout: 3000 });
+    const q = await query(page);
+    assert.ok(Number(q.vmax) > 0.5, q.vmax);
+    const out = cli(['trapezoid-profile', '1.0', q.vmax, '1.0', '0.01']);
+    const summary = /t_total=([\d.]+)s vmax_used=([\d.]+)/.exec(out.stdout);
+    const r = await readouts(page);
+    assert.equal(r['t-total'].toFixed(4), summary[1]);
+    assert.equal(r['v-peak'].toFixed(4), summary[2]);
+    const rows = out.files.get('trap_profile.csv').toString().trim().split('\n').slice(1).map((l) => l.split(',').map(Number));
+    assert.equal(r.rows, rows.length);
+    assert.equal(r['final-s'], rows[rows.length - 1][1]);
+    // Distance 0.2 with the slider: a triangle, said so.
+    await slide(page, 'distance', 0.2);
+    await page.waitForSelector('[data-testid="trapezoid-profile-triangle"]:not([hidden])');
+    assert.equal((await readouts(page)).shape, 'triangle');
+    assert.equal((await readouts(page))['t-flat'], 0);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+const BAD = [
+  ['cubic-path', 'cubic_path.csv', 'T', [['abc', /not a number/], ['0', /greater than zero/], ['1e-12', /0\.000000001/]]],
+  ['pid-step', 'pid_step.csv', 'steps', [['80.5', /whole number/], ['-1', /between 0 and 1,000,000/], ['1e9', /1,000,000/]]],
+  ['trapezoid-profile', 'trap_profile.csv', 'dt', [['x', /not a number/], ['0', /greater than zero/], ['1e-7', /limit is 1,000,000/]]],
+];
+
+for (const [id, file, field, cases] of BAD) {
+  test(`${id}: a bad ${field} shows its message and the page keeps the last valid plot`, async () => {
+    const { bytes } = run(file, [id]);
+    const { page, errors, close } = await open(`#/${id}`);
+    try {
+      const before = await dataLayer(page);
+      const shown = await readouts(page);
+      const input = page.locator(`[data-field="${field}"]`);
+      const message = page.locator(`[data-field-error="${field}"]`);
+      assert.equal(await message.isVisible(), false);
+      for (const [bad, pattern] of cases) {
+        await input.fill(bad);
+        assert.equal(await message.isVisible(), true, bad);
+        assert.match(await message.innerText(), pattern, bad);
+        assert.equal(await input.getAttribute('aria-invalid'), 'true');
+      }
+      assert.equal(await dataLayer(page), before, 'the plot is the last valid one');
+      assert.deepEqual(await readouts(page), shown);
+      assertSameBytes(await download(page, file), bytes, `${id} with a bad ${field}`);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  });
+}
+
+test('Japanese leaves no English UI text on the three pages', async () => {
+  const english = englishStrings();
+  for (const [hash, field, title] of [
+    ['#/cubic-path?lang=ja&quintic=1', 'dt', /3 次経路/],
+    ['#/pid-step?lang=ja&Kp=-5', 'tau', /PID ステップ応答/],
+    ['#/trapezoid-profile?lang=ja&distance=0.2', 'vmax', /台形プロファイル/],
+  ]) {
+    const { page, errors, close } = await open(hash);
+    try {
+      await page.locator(`[data-field="${field}"]`).fill('abc');
+      const text = await page.evaluate(() => document.body.innerText);
+      const left = english.filter((s) => text.includes(s));
+      assert.deepEqual(left, [], `${hash}: English left: ${left.join(' | ')}`);
+      assert.match(text, title);
+      assert.ok(await page.locator(`[data-field-error="${field}"]`).isVisible());
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
+test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
+  const pages = [['cubic-path', '?quintic=1&trapezoid=1'], ['pid-step', '?Kp=2&Ki=4&steps=200'], ['trapezoid-profile', '']];
+  for (const [id, search] of pages) {
+    const shots = [
+      [`${id}-en-1920.png`, `#/${id}${search}`, { viewport: { width: 1920, height: 1080 } }],
+      [`${id}-ja-1920.png`, `#/${id}${search}${search ? '&' : '?'}lang=ja`, { viewport: { width: 1920, height: 1080 } }],
+      [`${id}-projector-1920.png`, `#/${id}${search}`, { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
+      [`${id}-phone-390.png`, `#/${id}${search}${search ? '&' : '?'}lang=ja`, { viewport: { width: 390, height: 844 } }],
+    ];
+    for (const [file, hash, opts] of shots) {
+      const { page, errors, close } = await open(hash, opts);
+      try {
+        if (id === 'pid-step') {
+          await slide(page, 'Kp', 4);
+          await page.locator('[data-slider="Kp"]').dispatchEvent('change');
+          await slide(page, 'Kp', 2);
+        }
+        await page.waitForTimeout(300);
+        const width = await page.evaluate(() => document.documentElement.scrollWidth);
+        assert.ok(width <= opts.viewport.width, `${file}: page ${width} px wide`);
+        await page.screenshot({ path: join(OUT, file) });
+        assert.deepEqual(errors, []);
+      } finally {
+        await close();
+      }
+    }
+  }
+});
+
+test('slider drag recompute + redraw p95 (bench builds only)', async (t) => {
+  const cases = [
+    ['cubic-path', '', 'q1', [0.2, 3.0]],
+    ['cubic-path', '?T=2&dt=0.00002', 'q1', [0.2, 3.0]],
+    ['pid-step', '', 'Kp', [0.5, 6]],
+    ['pid-step', '?steps=100000', 'Kp', [0.5, 1.5]],
+    ['trapezoid-profile', '', 'vmax', [0.1, 2.5]],
+    ['trapezoid-profile', '?dt=0.000025', 'vmax', [0.1, 2.5]],
+  ];
+  for (const [id, search, name, [lo, hi]] of cases) {
+    const { page, close } = await open(`#/${id}${search}`, { viewport: { width: 1920, height: 1080 } });
+    try {
+      if (!(await page.evaluate(() => Array.isArray(window.__signalFrameMs)))) {
+        t.skip('no bench hooks in this build');
+        return;
+      }
+      await page.evaluate(() => { window.__signalFrameMs.length = 0; });
+      const slider = page.locator(`[data-slider="${name}"]`);
+      const box = await slider.boundingBox();
+      await page.mouse.move(box.x + 4, box.y + box.height / 2);
+      await page.mouse.down();
+      for (let k = 0; k <= 120; k++) {
+        const f = k / 120;
+        await page.mouse.move(box.x + 4 + f * (box.width - 8), box.y + box.height / 2);
+        await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+      }
+      await page.mouse.up();
+      const ms = (await page.evaluate(() => window.__signalFrameMs.slice())).sort((a, b) => a - b);
+      const p95 = ms[Math.min(ms.length - 1, Math.ceil(ms.length * 0.95) - 1)];
+      console.log(`${id}${search} ${name} ${lo}..${hi}: ${ms.length} updates, median ${ms[ms.length >> 1].toFixed(2)} ms, p95 ${p95.toFixed(2)} ms, max ${ms[ms.length - 1].toFixed(2)} ms`);
+      assert.ok(ms.length > 20, `${ms.length} updates`);
+    } finally {
+      await close();
+    }
+  }
+});
