@@ -38,26 +38,54 @@ pub fn colour_at(lut: &[Rgb], t: f64) -> Rgb {
 }
 
 /// The RGBA bytes (`nx × ny` pixels, opaque, top row = largest y) of `values` coloured over
-/// `scale = (min, max)`. Missing values (a short slice) are black.
+/// `scale = (min, max)`. Missing values (a short slice) and NaN are black.
+///
+/// One column of values at a time (`f32` arithmetic, as precise as the values), written
+/// bottom-up into the image's column.
 pub fn fill_rgba(values: &[f32], nx: usize, ny: usize, scale: (f64, f64), lut: &[Rgb]) -> Vec<u8> {
     let mut rgba = vec![255u8; nx * ny * 4];
+    if nx == 0 || ny == 0 {
+        return rgba;
+    }
     let (lo, hi) = scale;
     let span = if hi > lo { hi - lo } else { 1.0 };
-    let inv = (lut.len().max(1) - 1) as f64 / span;
-    for i in 0..nx {
-        for j in 0..ny {
-            let v = values.get(i * ny + j).map_or(f64::NAN, |&v| f64::from(v));
-            let rgb = if v.is_nan() {
-                [0, 0, 0]
+    let top = lut.len().max(1) - 1;
+    let inv = (top as f64 / span) as f32;
+    let lo = lo as f32;
+    let top_f = top as f32;
+    let black: Rgb = [0, 0, 0];
+    for (i, column) in values.chunks(ny).take(nx).enumerate() {
+        for (j, &v) in column.iter().enumerate() {
+            let k = (v - lo) * inv;
+            // NaN fails both comparisons: black.
+            let rgb = if k >= 0.0 {
+                lut.get(k.min(top_f).round() as usize).unwrap_or(&black)
+            } else if k < 0.0 {
+                lut.first().unwrap_or(&black)
             } else {
-                let k = ((v - lo) * inv)
-                    .round()
-                    .clamp(0.0, (lut.len().max(1) - 1) as f64);
-                lut.get(k as usize).copied().unwrap_or([0, 0, 0])
+                &black
             };
             let px = ((ny - 1 - j) * nx + i) * 4;
             if let Some(p) = rgba.get_mut(px..px + 3) {
-                p.copy_from_slice(&rgb);
+                p.copy_from_slice(rgb);
+            }
+        }
+        if column.len() < ny {
+            for j in column.len()..ny {
+                let px = ((ny - 1 - j) * nx + i) * 4;
+                if let Some(p) = rgba.get_mut(px..px + 3) {
+                    p.copy_from_slice(&black);
+                }
+            }
+        }
+    }
+    // Columns the values do not reach are black.
+    let given = values.len().div_ceil(ny.max(1)).min(nx);
+    for i in given..nx {
+        for j in 0..ny {
+            let px = ((ny - 1 - j) * nx + i) * 4;
+            if let Some(p) = rgba.get_mut(px..px + 3) {
+                p.copy_from_slice(&black);
             }
         }
     }

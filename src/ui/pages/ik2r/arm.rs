@@ -29,6 +29,7 @@ use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom::{show, Listener};
 use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink, LayeredCanvas};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
+use crate::ui::schedule::now_ms;
 use crate::view::heatmap::{viridis, Rgb};
 use crate::view::ik2r::{
     self, extent_m, fmt_fixed, format_mm, grid_step_mm, joints_on_screen, link_label_centres, num,
@@ -284,24 +285,27 @@ impl ArmView {
     }
 
     /// Recomputes the workspace grid if its parameters changed, then the overlay; returns
-    /// whether the grid was recomputed.
-    pub fn recompute_workspace(&mut self, st: &State) -> bool {
+    /// how long the grid's computation (`ik_workspace::compute`) took, ms, if it ran.
+    pub fn recompute_workspace(&mut self, st: &State) -> Option<f64> {
         let wp = st.params.workspace();
         let stale = self.ws.as_ref().is_none_or(|(p, _)| *p != wp);
+        let mut compute_ms = None;
         if stale {
+            let t0 = now_ms();
             match crate::recipes::ik_workspace::compute(&wp) {
                 Ok(ws) => {
+                    compute_ms = Some(now_ms() - t0);
                     self.ws = Some((wp, ws));
                     self.ws_img_colour = None;
                 }
                 Err(e) => {
                     web_sys::console::warn_1(&format!("ik-2r workspace: {e}").into());
-                    return false;
+                    return None;
                 }
             }
         }
         self.refresh_workspace_image(st);
-        stale
+        compute_ms
     }
 
     /// Re-renders the overlay from the cached grid (a colour change needs no recompute).
@@ -434,8 +438,16 @@ impl ArmView {
         let _ = ctx.fill_text(&format!("y [{unit}]"), o.x + 6.0, 6.0);
     }
 
-    /// The top layer, the geometry attributes and the touch handles.
-    pub fn draw_frame(&self, st: &State, rep: &PoseReport, ghost: Option<(f64, f64)>, ink: Ink) {
+    /// The top layer, the geometry attributes and, with `handles`, the touch handles (not
+    /// while a drag holds the pointer: the drag's end places them).
+    pub fn draw_frame(
+        &self,
+        st: &State,
+        rep: &PoseReport,
+        ghost: Option<(f64, f64)>,
+        ink: Ink,
+        handles: bool,
+    ) {
         let layer = self.canvas.top();
         let xf = &self.xf;
         let arm = st.params.arm();
@@ -578,7 +590,7 @@ impl ArmView {
         let _ = c.set_attribute("data-tip-y", &tip.y.to_string());
         let _ = c.set_attribute("data-elbow-x", &elbow.x.to_string());
         let _ = c.set_attribute("data-elbow-y", &elbow.y.to_string());
-        if let Some(d) = &self.drag {
+        if let (Some(d), true) = (&self.drag, handles) {
             let shapes = ik2r::handles(xf, &arm, rep.q1, rep.q2, true).map(|(_, shape)| shape);
             d.set_handles(&shapes);
         }
