@@ -38,9 +38,10 @@ pub mod defaults {
 
 /// The page's own argument: the heatmap's cells per axis (it only changes the picture; the
 /// recipes' arguments come from their kernels, see [`Field::spec`]).
-pub static HEATMAP_RES: ArgSpec = ArgSpec::integer("res", "256", "heatmap cells per axis", 64, 1024)
-    .unit("cells")
-    .hint("ik2r-hint-res");
+pub static HEATMAP_RES: ArgSpec =
+    ArgSpec::integer("res", "256", "heatmap cells per axis", 64, 1024)
+        .unit("cells")
+        .hint("ik2r-hint-res");
 
 /// How the workspace grid cells are coloured.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -1018,7 +1019,9 @@ mod tests {
             })
             .collect();
         let changed = Field::ALL.iter().position(|f| *f == changed);
-        crate::view::form::validate(&form_fields(), &texts, changed, Params::from_texts, |_| None)
+        crate::view::form::validate(&form_fields(), &texts, changed, Params::from_texts, |_| {
+            None
+        })
     }
 
     fn at(fields: &[usize]) -> Vec<Field> {
@@ -1031,10 +1034,17 @@ mod tests {
             assert_eq!(field.spec().name, field.key(), "{field:?}");
             assert_eq!(field.def().label_id, format!("ik2r-field-{}", field.key()));
         }
-        assert_eq!(Field::L1.spec().max, crate::args::Bound::Incl(ik_workspace::LINK_MAX_M));
+        assert_eq!(
+            Field::L1.spec().max,
+            crate::args::Bound::Incl(ik_workspace::LINK_MAX_M)
+        );
         assert_eq!(Field::ManipN.spec().hint_id, "recipe-manip-grid-hint-n");
         assert_eq!(Field::HeatmapN.def().inputmode(), "numeric");
-        assert_eq!(Field::Q1Start.def().inputmode(), "text", "a negative angle needs a minus");
+        assert_eq!(
+            Field::Q1Start.def().inputmode(),
+            "text",
+            "a negative angle needs a minus"
+        );
         let p = Params::default();
         let texts: Vec<Option<String>> = p.texts().into_iter().map(Some).collect();
         assert_eq!(Params::from_texts(&texts), Ok(p));
@@ -1042,8 +1052,16 @@ mod tests {
         let i18n = crate::i18n::I18n::new();
         for field in form_fields() {
             for lang in crate::i18n::Lang::ALL {
-                assert!(i18n.has_message(lang, &field.label_id), "{}", field.label_id);
-                assert!(i18n.has_message(lang, field.spec.hint_id), "{}", field.spec.hint_id);
+                assert!(
+                    i18n.has_message(lang, &field.label_id),
+                    "{}",
+                    field.label_id
+                );
+                assert!(
+                    i18n.has_message(lang, field.spec.hint_id),
+                    "{}",
+                    field.spec.hint_id
+                );
             }
         }
     }
@@ -1053,25 +1071,46 @@ mod tests {
         // 2·1000/10 + 1 = 201 cells per axis is fine; 2·1000/1 + 1 = 2001 is not.
         let ok = form_check(&[(Field::HalfMm, "1000")], Field::HalfMm);
         assert_eq!(ok.value.map(|p| p.half_mm), Some(1000.0));
-        let refused = form_check(&[(Field::HalfMm, "1000"), (Field::StepMm, "1")], Field::StepMm);
+        let refused = form_check(
+            &[(Field::HalfMm, "1000"), (Field::StepMm, "1")],
+            Field::StepMm,
+        );
         assert!(refused.value.is_none());
         assert_eq!(at(&refused.marked), vec![Field::HalfMm, Field::StepMm]);
-        assert_eq!(at(&[refused.messages[0].0]), vec![Field::StepMm], "on the field changed");
-        let refused = form_check(&[(Field::HalfMm, "1000"), (Field::StepMm, "1")], Field::HalfMm);
+        assert_eq!(
+            at(&[refused.messages[0].0]),
+            vec![Field::StepMm],
+            "on the field changed"
+        );
+        let refused = form_check(
+            &[(Field::HalfMm, "1000"), (Field::StepMm, "1")],
+            Field::HalfMm,
+        );
         assert_eq!(at(&[refused.messages[0].0]), vec![Field::HalfMm]);
         // A field's own limit: that field only; a blank field is not a number.
         let refused = form_check(&[(Field::L2, "-1")], Field::L2);
         assert_eq!(at(&refused.marked), vec![Field::L2]);
-        assert!(matches!(refused.messages[0].1, RecipeError::OutOfRange { .. }));
+        assert!(matches!(
+            refused.messages[0].1,
+            RecipeError::OutOfRange { .. }
+        ));
         let blank = form_check(&[(Field::L2, "")], Field::L2);
-        assert!(matches!(blank.messages[..], [(1, RecipeError::NotANumber { .. })]), "{blank:?}");
+        assert!(
+            matches!(blank.messages[..], [(1, RecipeError::NotANumber { .. })]),
+            "{blank:?}"
+        );
         let res = form_check(&[(Field::HeatmapN, "2000")], Field::HeatmapN);
         assert!(matches!(res.messages[0].1, RecipeError::OutOfRange { max, .. } if max == 1024.0));
         // Whole numbers in any notation.
-        let n = form_check(&[(Field::ManipN, "1e2"), (Field::HeatmapN, "128.0")], Field::ManipN);
+        let n = form_check(
+            &[(Field::ManipN, "1e2"), (Field::HeatmapN, "128.0")],
+            Field::ManipN,
+        );
         assert_eq!(n.value.map(|p| (p.manip_n, p.heatmap_n)), Some((100, 128)));
         assert_eq!(
-            form_check(&[(Field::L2, "0.08")], Field::L2).value.map(|p| p.l2),
+            form_check(&[(Field::L2, "0.08")], Field::L2)
+                .value
+                .map(|p| p.l2),
             Some(0.08)
         );
     }

@@ -248,7 +248,9 @@ impl Exports {
         };
         let text = {
             let lines = self.lines.borrow();
-            let Some(lines) = lines.iter().find(|l| key.is_none() || l.key.as_deref() == key)
+            let Some(lines) = lines
+                .iter()
+                .find(|l| key.is_none() || l.key.as_deref() == key)
             else {
                 return;
             };

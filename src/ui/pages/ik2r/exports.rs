@@ -54,7 +54,9 @@ impl Exports {
         let files: Vec<&str> = EXPORTS.iter().map(|e| e.file).collect();
         let fields = EXPORTS
             .iter()
-            .map(|e| crate::recipes::find(e.recipe).map_or_else(Vec::new, |r| recipe_fields(r.info)))
+            .map(|e| {
+                crate::recipes::find(e.recipe).map_or_else(Vec::new, |r| recipe_fields(r.info))
+            })
             .collect();
         Ok(Exports {
             root: root.clone(),

@@ -74,7 +74,8 @@ pub fn markup() -> String {
 
 /// The compact strip of key numbers over the arm view (shown at phone width).
 pub fn strip_markup() -> String {
-    let mut html = String::from("<div class=\"ik2r-strip\" data-ik2r=\"strip\" aria-hidden=\"true\">");
+    let mut html =
+        String::from("<div class=\"ik2r-strip\" data-ik2r=\"strip\" aria-hidden=\"true\">");
     for (name, label, unit) in STRIP {
         html.push_str(&format!(
             "<span class=\"ik2r-strip-item\"><span class=\"ik2r-strip-label\" data-i18n=\"{label}\"></span> \
