@@ -1,11 +1,12 @@
-//! The IK page's pure view models (`#/ik-2r`): its state and URL form, parameter validation
-//! (which fields a limit involves), the arm view's world ↔ screen transform, the hit tests of
+//! The IK page's pure view models (`#/ik-2r`): its state and URL form, its form's fields (the
+//! recipes' arguments, checked by [`Params::from_texts`]), the arm view's world ↔ screen transform, the hit tests of
 //! tip, elbow and links, the link label placement, the heatmap grid, the Jacobian sweep that
 //! is plotted, the readout texts and the export command lines. No web-sys: `cargo test` runs
 //! all of it.
 //!
 //! URL: `#/ik-2r?L1=0.12&L2=0.1&q1=0.3&q2=0.8&elbow=down&ws=1&...`. Every value is validated
-//! the way the form validates it ([`validate`]); a URL value that fails is ignored (the
+//! the way the form checks it (its argument's limits, then the kernels' checks of the whole
+//! set); a URL value that fails is ignored (the
 //! default stays) and its key is reported so that the page can say so. Numbers are written in
 //! Rust's shortest round-trip form, so opening a URL restores the exact `f64`s it was made
 //! from.
