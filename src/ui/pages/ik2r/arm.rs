@@ -567,21 +567,21 @@ impl ArmView {
             2.5 * s,
         );
 
-        // Link labels outside the bend, on a light halo (never on top of each other).
+        // Link labels outside the bend, on a light box (never on top of each other); a box
+        // costs a rectangle where a stroked text outline costs a second text draw per frame.
         let font_px = ink.text_px(12.0);
         let gap = 10.0 * s + font_px * 0.75;
+        let (box_w, box_h) = (font_px * 1.5, font_px * 1.2);
         ctx.set_font(&ink.font(12.0, true));
         ctx.set_text_align("center");
         ctx.set_text_baseline("middle");
-        ctx.set_line_join("round");
-        for (label, at) in ["L1", "L2"]
-            .into_iter()
-            .zip(link_label_centres(base, elbow, tip, gap))
-        {
-            ctx.set_stroke_style_str(colour::LABEL_HALO);
-            ctx.set_line_width(4.0 * s);
-            let _ = ctx.stroke_text(label, at.x, at.y);
-            ctx.set_fill_style_str(colour::JOINT_EDGE);
+        let centres = link_label_centres(base, elbow, tip, gap);
+        ctx.set_fill_style_str(colour::LABEL_HALO);
+        for at in centres {
+            ctx.fill_rect(at.x - box_w / 2.0, at.y - box_h / 2.0, box_w, box_h);
+        }
+        ctx.set_fill_style_str(colour::JOINT_EDGE);
+        for (label, at) in ["L1", "L2"].into_iter().zip(centres) {
             let _ = ctx.fill_text(label, at.x, at.y);
         }
 
