@@ -12,6 +12,7 @@
 //! The ellipse is the image of the unit joint-speed circle, `{ J q̇ : |q̇| ≤ 1 }`: semi-axes
 //! `σ_max`, `σ_min` along the left singular vectors of `J`, drawn at [`ELLIPSE_SCALE`].
 
+use std::cell::RefCell;
 use std::f64::consts::PI;
 use std::rc::Weak;
 
@@ -75,6 +76,9 @@ pub(super) struct ArmView {
     ws_img: Option<WorkspaceImage>,
     ws_img_colour: Option<WsColor>,
     lut: Vec<Rgb>,
+    /// The font the top layer's context has (set once: setting a canvas font resolves it
+    /// against the page's style, which costs a style recalculation after DOM writes).
+    top_font: RefCell<String>,
     clamp_note: Element,
     view_notes: Element,
     ws_summary: Element,
@@ -101,6 +105,7 @@ impl ArmView {
             ws_img: None,
             ws_img_colour: None,
             lut: viridis(),
+            top_font: RefCell::new(String::new()),
             clamp_note: role(root, "clamp-note")?,
             view_notes: role(root, "view-notes")?,
             ws_summary: role(root, "ws-summary")?,
@@ -233,6 +238,8 @@ impl ArmView {
     /// Sizes the layers and fits the view to the arm (and the workspace grid when shown).
     pub fn layout(&mut self, st: &State) {
         self.canvas.fit();
+        // A resized canvas has its context state reset.
+        self.top_font.borrow_mut().clear();
         if let Some(d) = &self.drag {
             d.relayout();
         }
@@ -572,7 +579,11 @@ impl ArmView {
         let font_px = ink.text_px(12.0);
         let gap = 10.0 * s + font_px * 0.75;
         let (box_w, box_h) = (font_px * 1.5, font_px * 1.2);
-        ctx.set_font(&ink.font(12.0, true));
+        let font = ink.font(12.0, true);
+        if *self.top_font.borrow() != font {
+            ctx.set_font(&font);
+            *self.top_font.borrow_mut() = font;
+        }
         ctx.set_text_align("center");
         ctx.set_text_baseline("middle");
         let centres = link_label_centres(base, elbow, tip, gap);

@@ -193,6 +193,7 @@ impl Page {
         let st = *self.state.borrow();
         let ink = Ink::current();
         if bits & dirty::LAYOUT != 0 {
+            self.readouts.borrow_mut().layout();
             self.arm.borrow_mut().layout(&st);
             self.heat.borrow_mut().layout(ink);
             self.sweep.borrow_mut().resized();

@@ -4,7 +4,8 @@
 //! (parseable) digits with the unit in a sibling element, written only when it changes.
 //!
 //! Two more views of the same numbers: a compact strip over the arm view (`data-strip`: q1, q2,
-//! x, y, w; shown at phone width, where the panel sits far below the arm) and, for screen
+//! x, y, w; shown at phone width, where the panel sits far below the arm, and written only
+//! while it shows) and, for screen
 //! readers, the kit's polite live region, which says the pose once the arm has been still for
 //! a moment (a drag or a run of key presses is one sentence, not fifty).
 
@@ -92,6 +93,9 @@ pub(super) struct Readouts {
     /// The panel's numbers and the live region.
     panel: kit::Readouts,
     strip: kit::Readouts,
+    strip_element: Element,
+    /// The strip shows (phone width): its numbers are written only then.
+    strip_shown: bool,
     /// The first pose (on screen when the page opens) is not announced.
     started: bool,
 }
@@ -99,11 +103,23 @@ pub(super) struct Readouts {
 impl Readouts {
     /// Finds the panel (with the page's live region) and the strip under `root`.
     pub fn find(root: &Element) -> Result<Readouts, JsValue> {
+        let strip_element: Element = role(root, "strip")?;
         Ok(Readouts {
             panel: kit::Readouts::find(root)?,
-            strip: kit::Readouts::find_by(&role(root, "strip")?, "data-strip")?,
+            strip: kit::Readouts::find_by(&strip_element, "data-strip")?,
+            strip_element,
+            strip_shown: true,
             started: false,
         })
+    }
+
+    /// The layout changed: whether the strip shows now (its stylesheet shows it at phone
+    /// width only).
+    pub fn layout(&mut self) {
+        self.strip_shown = web_sys::window()
+            .and_then(|w| w.get_computed_style(&self.strip_element).ok().flatten())
+            .and_then(|s| s.get_property_value("display").ok())
+            .is_none_or(|d| d != "none");
     }
 
     /// Writes the pose's numbers (only those that changed) and queues the summary.
@@ -111,15 +127,17 @@ impl Readouts {
         for (name, text) in READOUTS.iter().zip(readout_values(rep)) {
             self.panel.set(name, &text);
         }
-        let strip = [
-            fmt_fixed(rep.q1.to_degrees(), 1),
-            fmt_fixed(rep.q2.to_degrees(), 1),
-            fmt_fixed(rep.x * 1000.0, 1),
-            fmt_fixed(rep.y * 1000.0, 1),
-            fmt_sig(rep.manipulability, 3),
-        ];
-        for ((name, _, _), text) in STRIP.iter().zip(strip) {
-            self.strip.set(name, &text);
+        if self.strip_shown {
+            let strip = [
+                fmt_fixed(rep.q1.to_degrees(), 1),
+                fmt_fixed(rep.q2.to_degrees(), 1),
+                fmt_fixed(rep.x * 1000.0, 1),
+                fmt_fixed(rep.y * 1000.0, 1),
+                fmt_sig(rep.manipulability, 3),
+            ];
+            for ((name, _, _), text) in STRIP.iter().zip(strip) {
+                self.strip.set(name, &text);
+            }
         }
         if !self.started {
             // The pose the page opened with is on screen; nothing to announce.
