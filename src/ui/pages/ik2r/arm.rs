@@ -76,8 +76,9 @@ pub(super) struct ArmView {
     ws_img: Option<WorkspaceImage>,
     ws_img_colour: Option<WsColor>,
     lut: Vec<Rgb>,
-    /// The font the top layer's context has (set once: setting a canvas font resolves it
-    /// against the page's style, which costs a style recalculation after DOM writes).
+    /// The font the top layer's context has (set once per layout, with the text direction:
+    /// setting a canvas font resolves it against the page's style, which costs a style
+    /// recalculation after DOM writes).
     top_font: RefCell<String>,
     clamp_note: Element,
     view_notes: Element,
@@ -582,6 +583,9 @@ impl ArmView {
         let font = ink.font(12.0, true);
         if *self.top_font.borrow() != font {
             ctx.set_font(&font);
+            // The default direction, `inherit`, makes every text draw read the canvas's
+            // computed style (a style recalculation after DOM writes); the labels are LTR.
+            let _ = js_sys::Reflect::set(ctx, &"direction".into(), &"ltr".into());
             *self.top_font.borrow_mut() = font;
         }
         ctx.set_text_align("center");
