@@ -30,6 +30,7 @@ kit-form-args = Arguments, in command-line order
 kit-form-options = Options
 kit-form-options-note = Extras of the bsv command line. The Python recipe has no options: it always uses these defaults.
 kit-form-default = Default:
+kit-form-involved = This value is part of the same limit as { $field }.
 kit-form-file-open = Open a CSV file…
 kit-form-file-sample = Use the built-in labeled sample
 

@@ -30,6 +30,7 @@ kit-form-args = 引数（コマンドラインでの順番）
 kit-form-options = オプション
 kit-form-options-note = bsv コマンドだけにある追加の設定です。Python のレシピにはオプションがなく、常にこの既定値を使います。
 kit-form-default = 既定値：
+kit-form-involved = この値は「{ $field }」と同じ制限にかかわっています。
 kit-form-file-open = CSV ファイルを開く…
 kit-form-file-sample = 内蔵のラベル付きサンプルを使う
 

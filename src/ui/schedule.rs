@@ -1,5 +1,5 @@
 //! Deferred work and its clock: a debounced `setTimeout` ([`Timer`]) for recomputes, runs and
-//! URL writes; [`after_paint`], which runs a callback after the browser has painted the current
+//! URL writes (cheap to restart every frame); [`after_paint`], which runs a callback after the browser has painted the current
 //! DOM (a `requestAnimationFrame` whose callback sets a zero `setTimeout`), so that a
 //! "Running…" state is on screen before a long computation blocks the tab; and [`now_ms`],
 //! the clock pages time their work with.
@@ -12,45 +12,105 @@ use wasm_bindgen::JsCast;
 
 /// A debounced `setTimeout`: [`Timer::schedule`] restarts it. `Timer::default()` has nothing
 /// to run until [`Timer::set_callback`].
+///
+/// A restart that only moves the deadline later (a drag or a key held down schedules it every
+/// frame) keeps the pending timeout: when it fires early, it waits out the rest. So a frame
+/// that reschedules costs a clock read, not a `clearTimeout` and a `setTimeout`.
 #[derive(Default)]
 pub struct Timer {
-    /// The pending timeout (cleared by the callback as it starts).
-    id: Rc<Cell<Option<i32>>>,
-    callback: RefCell<Option<Closure<dyn FnMut()>>>,
+    state: Rc<TimerState>,
+}
+
+#[derive(Default)]
+struct TimerState {
+    /// The pending timeout and when it fires (ms, [`now_ms`] clock).
+    id: Cell<Option<i32>>,
+    fires_at: Cell<f64>,
+    /// When the callback is due (the last `schedule` asked for it then).
+    due_at: Cell<f64>,
+    /// The timeout's callback (holds this state weakly).
+    tick: RefCell<Option<Closure<dyn FnMut()>>>,
+    /// What the timer runs when due.
+    run: RefCell<Option<Rc<dyn Fn()>>>,
+}
+
+impl TimerState {
+    fn arm(&self, ms: f64) {
+        let Some(window) = web_sys::window() else {
+            return;
+        };
+        if let Some(tick) = self.tick.borrow().as_ref() {
+            if let Ok(id) = window.set_timeout_with_callback_and_timeout_and_arguments_0(
+                tick.as_ref().unchecked_ref(),
+                ms.max(0.0).ceil() as i32,
+            ) {
+                self.id.set(Some(id));
+                self.fires_at.set(now_ms() + ms.max(0.0));
+            }
+        }
+    }
+
+    /// The timeout fired: run the callback if it is due, else wait the rest.
+    fn on_timeout(&self) {
+        self.id.set(None);
+        let left = self.due_at.get() - now_ms();
+        if left > 0.5 {
+            self.arm(left);
+            return;
+        }
+        let run = self.run.borrow().clone();
+        if let Some(run) = run {
+            run();
+        }
+    }
 }
 
 impl Timer {
     /// What the timer runs: `f` on the page behind `page`, if it is still mounted (the page
     /// owns its timers, so the callback holds it weakly).
     pub fn set_callback<P: 'static>(&self, page: &Weak<P>, f: impl Fn(&P) + 'static) {
-        let id = self.id.clone();
         let page = page.clone();
-        *self.callback.borrow_mut() = Some(Closure::new(move || {
-            id.set(None);
+        *self.state.run.borrow_mut() = Some(Rc::new(move || {
             if let Some(page) = page.upgrade() {
                 f(&page);
+            }
+        }));
+        let state = Rc::downgrade(&self.state);
+        *self.state.tick.borrow_mut() = Some(Closure::new(move || {
+            if let Some(state) = state.upgrade() {
+                state.on_timeout();
             }
         }));
     }
 
     /// (Re)starts the timer: the callback runs `ms` after the last call.
     pub fn schedule(&self, ms: i32) {
-        let Some(window) = web_sys::window() else {
+        let now = now_ms();
+        let due = now + f64::from(ms.max(0));
+        let state = &self.state;
+        state.due_at.set(due);
+        if state.id.get().is_some() && state.fires_at.get() <= due {
+            // The pending timeout fires first and waits out the rest.
             return;
-        };
-        self.cancel();
-        if let Some(cb) = self.callback.borrow().as_ref() {
-            if let Ok(id) = window.set_timeout_with_callback_and_timeout_and_arguments_0(
-                cb.as_ref().unchecked_ref(),
-                ms,
-            ) {
-                self.id.set(Some(id));
-            }
         }
+        self.clear();
+        state.arm(due - now);
     }
 
     /// Stops the timer if it is waiting.
     pub fn cancel(&self) {
+        self.clear();
+    }
+
+    fn clear(&self) {
+        if let (Some(id), Some(window)) = (self.state.id.take(), web_sys::window()) {
+            window.clear_timeout_with_handle(id);
+        }
+    }
+}
+
+impl Drop for TimerState {
+    fn drop(&mut self) {
         if let (Some(id), Some(window)) = (self.id.take(), web_sys::window()) {
             window.clear_timeout_with_handle(id);
         }

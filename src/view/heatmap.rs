@@ -38,31 +38,51 @@ pub fn colour_at(lut: &[Rgb], t: f64) -> Rgb {
 }
 
 /// The RGBA bytes (`nx × ny` pixels, opaque, top row = largest y) of `values` coloured over
-/// `scale = (min, max)`. Missing values (a short slice) are black.
+/// `scale = (min, max)`. Missing values (a short slice) and NaN are black.
+///
+/// Walked in bands of [`FILL_BAND`] columns, row by row inside a band, so that both the
+/// values (column-major) and the pixels (row-major) are read and written in short runs; the
+/// colour index is `f32` arithmetic, as precise as the values.
 pub fn fill_rgba(values: &[f32], nx: usize, ny: usize, scale: (f64, f64), lut: &[Rgb]) -> Vec<u8> {
     let mut rgba = vec![255u8; nx * ny * 4];
     let (lo, hi) = scale;
     let span = if hi > lo { hi - lo } else { 1.0 };
-    let inv = (lut.len().max(1) - 1) as f64 / span;
-    for i in 0..nx {
+    let top = lut.len().max(1) - 1;
+    let inv = (top as f64 / span) as f32;
+    let (lo, top_f) = (lo as f32, top as f32);
+    let black: Rgb = [0, 0, 0];
+    let colour = |v: f32| -> Rgb {
+        let k = (v - lo) * inv;
+        if k >= 0.0 {
+            lut.get(k.min(top_f).round() as usize)
+                .copied()
+                .unwrap_or(black)
+        } else if k < 0.0 {
+            lut.first().copied().unwrap_or(black)
+        } else {
+            black // NaN
+        }
+    };
+    let mut i0 = 0;
+    while i0 < nx {
+        let i1 = (i0 + FILL_BAND).min(nx);
         for j in 0..ny {
-            let v = values.get(i * ny + j).map_or(f64::NAN, |&v| f64::from(v));
-            let rgb = if v.is_nan() {
-                [0, 0, 0]
-            } else {
-                let k = ((v - lo) * inv)
-                    .round()
-                    .clamp(0.0, (lut.len().max(1) - 1) as f64);
-                lut.get(k as usize).copied().unwrap_or([0, 0, 0])
-            };
-            let px = ((ny - 1 - j) * nx + i) * 4;
-            if let Some(p) = rgba.get_mut(px..px + 3) {
-                p.copy_from_slice(&rgb);
+            let row = (ny - 1 - j) * nx;
+            for i in i0..i1 {
+                let rgb = values.get(i * ny + j).map_or(black, |&v| colour(v));
+                let px = (row + i) * 4;
+                if let Some(p) = rgba.get_mut(px..px + 3) {
+                    p.copy_from_slice(&rgb);
+                }
             }
         }
+        i0 = i1;
     }
     rgba
 }
+
+/// Columns per band of [`fill_rgba`].
+pub const FILL_BAND: usize = 16;
 
 /// One axis of a node grid: `n` nodes from `min` to `max`.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,11 +1,12 @@
-//! The IK page's pure view models (`#/ik-2r`): its state and URL form, parameter validation
-//! (which fields a limit involves), the arm view's world ↔ screen transform, the hit tests of
+//! The IK page's pure view models (`#/ik-2r`): its state and URL form, its form's fields (the
+//! recipes' arguments, checked by [`Params::from_texts`]), the arm view's world ↔ screen transform, the hit tests of
 //! tip, elbow and links, the link label placement, the heatmap grid, the Jacobian sweep that
 //! is plotted, the readout texts and the export command lines. No web-sys: `cargo test` runs
 //! all of it.
 //!
 //! URL: `#/ik-2r?L1=0.12&L2=0.1&q1=0.3&q2=0.8&elbow=down&ws=1&...`. Every value is validated
-//! the way the form validates it ([`validate`]); a URL value that fails is ignored (the
+//! the way the form checks it (its argument's limits, then the kernels' checks of the whole
+//! set); a URL value that fails is ignored (the
 //! default stays) and its key is reported so that the page can say so. Numbers are written in
 //! Rust's shortest round-trip form, so opening a URL restores the exact `f64`s it was made
 //! from.
@@ -14,13 +15,15 @@ use std::f64::consts::PI;
 
 use glam::{DAffine2, DVec2};
 
-use crate::args::{in_range, parse_f64, parse_i64};
+use crate::args::{parse_f64, ArgSpec};
 use crate::error::RecipeError;
 use crate::planar2r::{wrap_angle, Arm, Elbow, PoseReport};
 use crate::recipes::ik_workspace::{self, WorkspaceParams};
 use crate::recipes::jacobian_2r::{self, SweepParams};
 use crate::recipes::manip_grid::{self, GridParams};
+use crate::view::command_line::RunArgs;
 use crate::view::drag::HandleShape;
+use crate::view::form::FieldDef;
 use crate::view::heatmap::GridAxis;
 use crate::view::url::{IgnoredKey, UrlState};
 
@@ -34,15 +37,12 @@ pub mod defaults {
     pub const HEATMAP_N: i64 = 256;
 }
 
-/// Limits the form states in its hints.
-pub mod limits {
-    /// Link lengths: `LINK_MIN_M <= L <= L_MAX_M` metres (the kernels accept up to 1 km; a
-    /// classroom arm is far below 10 m).
-    pub const L_MAX_M: f64 = 10.0;
-    /// Heatmap resolution range.
-    pub const HEATMAP_MIN: i64 = 64;
-    pub const HEATMAP_MAX: i64 = 1024;
-}
+/// The page's own argument: the heatmap's cells per axis (it only changes the picture; the
+/// recipes' arguments come from their kernels, see [`Field::spec`]).
+pub static HEATMAP_RES: ArgSpec =
+    ArgSpec::integer("res", "256", "heatmap cells per axis", 64, 1024)
+        .unit("cells")
+        .hint("ik2r-hint-res");
 
 /// How the workspace grid cells are coloured.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -200,6 +200,42 @@ impl Field {
         }
     }
 
+    /// The argument this field sets, as its recipe states it (L1, L2 as all three 2R recipes
+    /// take them; the heatmap resolution is the page's [`HEATMAP_RES`]).
+    pub fn spec(self) -> &'static ArgSpec {
+        let info = match self {
+            Field::L1 | Field::L2 | Field::HalfMm | Field::StepMm => &ik_workspace::INFO,
+            Field::Q1Start | Field::Q1Stop | Field::Q1Step => &jacobian_2r::INFO,
+            Field::ManipN => &manip_grid::INFO,
+            Field::HeatmapN => return &HEATMAP_RES,
+        };
+        let key = self.key();
+        info.args
+            .iter()
+            .find(|a| a.name == key)
+            .unwrap_or(&HEATMAP_RES)
+    }
+
+    /// The fieldset of the form it sits in: arm, workspace grid, Jacobian sweep, maps.
+    pub fn group(self) -> usize {
+        match self {
+            Field::L1 | Field::L2 => 0,
+            Field::HalfMm | Field::StepMm => 1,
+            Field::Q1Start | Field::Q1Stop | Field::Q1Step => 2,
+            Field::HeatmapN | Field::ManipN => 3,
+        }
+    }
+
+    /// The form field (label `ik2r-field-<key>`, the recipe's hint and default).
+    pub fn def(self) -> FieldDef {
+        FieldDef {
+            spec: self.spec(),
+            flag: false,
+            label_id: format!("ik2r-field-{}", self.key()),
+            group: self.group(),
+        }
+    }
+
     /// The field's current value in `p`, as text (shortest round-trip form).
     pub fn text(self, p: &Params) -> String {
         match self {
@@ -221,49 +257,48 @@ pub fn num(v: f64) -> String {
     format!("{v}")
 }
 
-/// Validates `text` for `field` and returns `p` with it applied, or the error to show beside
-/// the field (`p` itself is never changed on error). After the field's own checks, the three
-/// kernels validate the whole parameter set, so every download made from it succeeds.
-pub fn validate(p: &Params, field: Field, text: &str) -> Result<Params, RecipeError> {
-    let next = validate_value(p, field, text)?;
-    next.check_kernels()?;
-    Ok(next)
+/// The form's fields, in [`Field::ALL`] order.
+pub fn form_fields() -> Vec<FieldDef> {
+    Field::ALL.iter().map(|f| f.def()).collect()
 }
 
-/// [`validate`] without the kernels' checks of the whole set.
-fn validate_value(p: &Params, field: Field, text: &str) -> Result<Params, RecipeError> {
-    let key = field.key();
-    let mut next = *p;
-    let value = |text: &str| parse_f64(key, text);
-    match field {
-        Field::L1 | Field::L2 => {
-            let v = in_range(key, value(text)?, ik_workspace::LINK_MIN_M, limits::L_MAX_M)?;
-            if field == Field::L1 {
-                next.l1 = v;
-            } else {
-                next.l2 = v;
+impl Params {
+    /// The text of every field, in [`Field::ALL`] order.
+    pub fn texts(&self) -> Vec<String> {
+        Field::ALL.iter().map(|f| f.text(self)).collect()
+    }
+
+    /// The parameters the form's texts give (in [`Field::ALL`] order; `None` is the default,
+    /// a blank text is not a number), each value checked against its argument's limits, then
+    /// the three kernels' checks of the whole set, so that every download made from them
+    /// succeeds. This is the form's check for `crate::view::form::validate`.
+    pub fn from_texts(texts: &[Option<String>]) -> Result<Params, RecipeError> {
+        let mut p = Params::default();
+        for (field, text) in Field::ALL.iter().zip(texts) {
+            if let Some(text) = text {
+                p = validate_value(&p, *field, text)?;
             }
         }
-        Field::HalfMm => next.half_mm = value(text)?,
-        Field::StepMm => next.step_mm = value(text)?,
-        Field::Q1Start => next.q1_start = value(text)?,
-        Field::Q1Stop => next.q1_stop = value(text)?,
-        Field::Q1Step => next.q1_step = value(text)?,
-        Field::HeatmapN => {
-            let n = parse_i64(key, text)?;
-            let n = in_range(
-                key,
-                n as f64,
-                limits::HEATMAP_MIN as f64,
-                limits::HEATMAP_MAX as f64,
-            )?;
-            next.heatmap_n = n as usize;
-        }
-        Field::ManipN => {
-            let n = parse_i64(key, text)?;
-            in_range(key, n as f64, 1.0, manip_grid::MAX_N as f64)?;
-            next.manip_n = n;
-        }
+        p.check_kernels()?;
+        Ok(p)
+    }
+}
+
+/// `p` with `text` for `field`, checked against the field's own limits ([`ArgSpec::check_text`]:
+/// a number, a whole number in any notation), or the error (`p` itself never changes).
+fn validate_value(p: &Params, field: Field, text: &str) -> Result<Params, RecipeError> {
+    let v = field.spec().check_text(text)?;
+    let mut next = *p;
+    match field {
+        Field::L1 => next.l1 = v,
+        Field::L2 => next.l2 = v,
+        Field::HalfMm => next.half_mm = v,
+        Field::StepMm => next.step_mm = v,
+        Field::Q1Start => next.q1_start = v,
+        Field::Q1Stop => next.q1_stop = v,
+        Field::Q1Step => next.q1_step = v,
+        Field::HeatmapN => next.heatmap_n = v as usize,
+        Field::ManipN => next.manip_n = v as i64,
     }
     Ok(next)
 }
@@ -417,48 +452,6 @@ impl UrlState for State {
             .into_iter()
             .map(|(k, v)| (k.to_string(), v))
             .collect()
-    }
-}
-
-// ---------- Validation: which fields a limit involves ----------
-
-/// A value the form refuses: the message (shown beside the field the user changed) and every
-/// field the limit involves, that one first (all of them are marked invalid).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Refusal {
-    pub error: RecipeError,
-    pub involved: Vec<Field>,
-}
-
-/// Which recipe's whole-set check a parameter set fails.
-fn failing_kernel(p: &Params) -> Option<(RecipeError, &'static [Field])> {
-    const WS: &[Field] = &[Field::HalfMm, Field::StepMm];
-    const SWEEP: &[Field] = &[Field::Q1Start, Field::Q1Stop, Field::Q1Step];
-    const GRID: &[Field] = &[Field::ManipN];
-    if let Err(e) = p.workspace().validate() {
-        return Some((e, WS));
-    }
-    if let Err(e) = p.sweep(0.0).validate() {
-        return Some((e, SWEEP));
-    }
-    p.grid().validate().err().map(|e| (e, GRID))
-}
-
-/// [`validate`], saying which fields a refused value involves: the edited field alone for
-/// its own limits; for a limit over several values (grid cells, sweep rows, start ≤ stop),
-/// the edited field and the others of that limit.
-pub fn check(p: &Params, field: Field, text: &str) -> Result<Params, Refusal> {
-    let next = validate_value(p, field, text).map_err(|error| Refusal {
-        error,
-        involved: vec![field],
-    })?;
-    match failing_kernel(&next) {
-        None => Ok(next),
-        Some((error, others)) => {
-            let mut involved = vec![field];
-            involved.extend(others.iter().copied().filter(|f| *f != field));
-            Err(Refusal { error, involved })
-        }
     }
 }
 
@@ -868,6 +861,8 @@ pub struct Export {
     pub recipe: &'static str,
     /// Fluent id of the button.
     pub label_id: &'static str,
+    /// Its arguments include the pose's q2 (the jacobian-2r sweep), not only the parameters.
+    pub follows_q2: bool,
 }
 
 /// The page's CSVs, in the order of the panel.
@@ -876,16 +871,19 @@ pub const EXPORTS: [Export; 3] = [
         file: "ik_workspace.csv",
         recipe: "ik-workspace",
         label_id: "ik2r-dl-ik",
+        follows_q2: false,
     },
     Export {
         file: "jacobian_2r.csv",
         recipe: "jacobian-2r",
         label_id: "ik2r-dl-jac",
+        follows_q2: true,
     },
     Export {
         file: "manip_ellipse.csv",
         recipe: "manip-grid",
         label_id: "ik2r-dl-manip",
+        follows_q2: false,
     },
 ];
 
@@ -909,14 +907,19 @@ pub fn export_args(export: &Export, p: &Params, q2: f64) -> Vec<String> {
     }
 }
 
+/// The run of `export` for parameters `p` at elbow angle `q2`, as the command lines spell it.
+pub fn export_run(export: &Export, p: &Params, q2: f64) -> RunArgs {
+    let fields = crate::recipes::find(export.recipe)
+        .map_or_else(Vec::new, |r| crate::view::form::recipe_fields(r.info));
+    let texts: Vec<Option<String>> = export_args(export, p, q2).into_iter().map(Some).collect();
+    RunArgs::new(export.recipe, &fields, &texts)
+}
+
 /// The equivalent command lines: `python <script> <args>` and `bsv <recipe> <args>`.
 pub fn export_commands(export: &Export, p: &Params, q2: f64) -> (String, String) {
-    let args = export_args(export, p, q2).join(" ");
+    let run = export_run(export, p, q2);
     let script = crate::recipes::find(export.recipe).map_or("", |r| r.info.python);
-    (
-        format!("python {script} {args}"),
-        format!("bsv {} {args}", export.recipe),
-    )
+    (run.python_command(script), run.bsv_command())
 }
 
 /// Why a CSV could not be made.
@@ -1005,26 +1008,112 @@ mod tests {
         assert_eq!(up.elbow, Elbow::Up);
     }
 
+    /// The kit form's validation of the page's fields, as the page runs it.
+    fn form_check(values: &[(Field, &str)], changed: Field) -> crate::view::form::Checked<Params> {
+        let texts: Vec<Option<String>> = Field::ALL
+            .iter()
+            .map(|f| {
+                values
+                    .iter()
+                    .find(|(g, _)| g == f)
+                    .map(|(_, t)| t.to_string())
+            })
+            .collect();
+        let changed = Field::ALL.iter().position(|f| *f == changed);
+        crate::view::form::validate(&form_fields(), &texts, changed, Params::from_texts, |_| {
+            None
+        })
+    }
+
+    fn at(fields: &[usize]) -> Vec<Field> {
+        fields.iter().map(|i| Field::ALL[*i]).collect()
+    }
+
+    #[test]
+    fn the_form_is_the_recipes_arguments_and_the_heatmap_resolution() {
+        for field in Field::ALL {
+            assert_eq!(field.spec().name, field.key(), "{field:?}");
+            assert_eq!(field.def().label_id, format!("ik2r-field-{}", field.key()));
+        }
+        assert_eq!(
+            Field::L1.spec().max,
+            crate::args::Bound::Incl(ik_workspace::LINK_MAX_M)
+        );
+        assert_eq!(Field::ManipN.spec().hint_id, "recipe-manip-grid-hint-n");
+        assert_eq!(Field::HeatmapN.def().inputmode(), "numeric");
+        assert_eq!(
+            Field::Q1Start.def().inputmode(),
+            "text",
+            "a negative angle needs a minus"
+        );
+        let p = Params::default();
+        let texts: Vec<Option<String>> = p.texts().into_iter().map(Some).collect();
+        assert_eq!(Params::from_texts(&texts), Ok(p));
+        assert_eq!(Params::from_texts(&[]), Ok(p), "no text: the defaults");
+        let i18n = crate::i18n::I18n::new();
+        for field in form_fields() {
+            for lang in crate::i18n::Lang::ALL {
+                assert!(
+                    i18n.has_message(lang, &field.label_id),
+                    "{}",
+                    field.label_id
+                );
+                assert!(
+                    i18n.has_message(lang, field.spec.hint_id),
+                    "{}",
+                    field.spec.hint_id
+                );
+            }
+        }
+    }
+
     #[test]
     fn a_cross_field_limit_marks_every_field_it_involves() {
-        let p = Params::default();
         // 2·1000/10 + 1 = 201 cells per axis is fine; 2·1000/1 + 1 = 2001 is not.
-        let ok = check(&p, Field::HalfMm, "1000").expect("201 × 201 cells");
-        let refused = check(&ok, Field::StepMm, "1").unwrap_err();
-        assert_eq!(refused.involved, vec![Field::StepMm, Field::HalfMm]);
-        let refused = check(&Params { step_mm: 1.0, ..p }, Field::HalfMm, "1000").unwrap_err();
-        assert_eq!(refused.involved, vec![Field::HalfMm, Field::StepMm]);
-        // Start after stop: the three sweep fields.
-        let refused = check(&p, Field::Q1Start, "3").unwrap_err();
-        assert_eq!(
-            refused.involved,
-            vec![Field::Q1Start, Field::Q1Stop, Field::Q1Step]
+        let ok = form_check(&[(Field::HalfMm, "1000")], Field::HalfMm);
+        assert_eq!(ok.value.map(|p| p.half_mm), Some(1000.0));
+        let refused = form_check(
+            &[(Field::HalfMm, "1000"), (Field::StepMm, "1")],
+            Field::StepMm,
         );
-        // A field's own limit: that field only.
-        let refused = check(&p, Field::L2, "-1").unwrap_err();
-        assert_eq!(refused.involved, vec![Field::L2]);
-        assert!(matches!(refused.error, RecipeError::OutOfRange { .. }));
-        assert_eq!(check(&p, Field::L2, "0.08").map(|n| n.l2), Ok(0.08));
+        assert!(refused.value.is_none());
+        assert_eq!(at(&refused.marked), vec![Field::HalfMm, Field::StepMm]);
+        assert_eq!(
+            at(&[refused.messages[0].0]),
+            vec![Field::StepMm],
+            "on the field changed"
+        );
+        let refused = form_check(
+            &[(Field::HalfMm, "1000"), (Field::StepMm, "1")],
+            Field::HalfMm,
+        );
+        assert_eq!(at(&[refused.messages[0].0]), vec![Field::HalfMm]);
+        // A field's own limit: that field only; a blank field is not a number.
+        let refused = form_check(&[(Field::L2, "-1")], Field::L2);
+        assert_eq!(at(&refused.marked), vec![Field::L2]);
+        assert!(matches!(
+            refused.messages[0].1,
+            RecipeError::OutOfRange { .. }
+        ));
+        let blank = form_check(&[(Field::L2, "")], Field::L2);
+        assert!(
+            matches!(blank.messages[..], [(1, RecipeError::NotANumber { .. })]),
+            "{blank:?}"
+        );
+        let res = form_check(&[(Field::HeatmapN, "2000")], Field::HeatmapN);
+        assert!(matches!(res.messages[0].1, RecipeError::OutOfRange { max, .. } if max == 1024.0));
+        // Whole numbers in any notation.
+        let n = form_check(
+            &[(Field::ManipN, "1e2"), (Field::HeatmapN, "128.0")],
+            Field::ManipN,
+        );
+        assert_eq!(n.value.map(|p| (p.manip_n, p.heatmap_n)), Some((100, 128)));
+        assert_eq!(
+            form_check(&[(Field::L2, "0.08")], Field::L2)
+                .value
+                .map(|p| p.l2),
+            Some(0.08)
+        );
     }
 
     #[test]

@@ -9,6 +9,11 @@
 //!
 //! Messages use the field's label ("Number of steps: “abc” must be a whole number…"), not the
 //! argument's internal name; every field an error involves gets `aria-invalid="true"`.
+//!
+//! A page can present more than one recipe's arguments (the IK page: ik-workspace,
+//! jacobian-2r, manip-grid and its own heatmap resolution, in its own fieldsets) and ask for
+//! more with [`FormOptions`] and [`Form::build_with`]: a unit beside a field's box, and a note
+//! beside each field a cross-field limit involves ("part of the same limit as Step").
 //! [`Form::focus_first_error`] and [`reveal`] bring a field or a result into view clear of
 //! sticky bars (the phone's sticky Run bar, a sticky header).
 
@@ -40,6 +45,16 @@ pub const RECIPE_GROUPS: [Group; 2] = [
         note_id: Some("kit-form-options-note"),
     },
 ];
+
+/// What a page asks of its form beyond the recipe facts (the default: nothing more).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FormOptions<'a> {
+    /// Fluent id of the unit shown beside a field's box, by field name.
+    pub units: &'a [(&'a str, &'a str)],
+    /// A field that a cross-field limit involves, when the message sits beside another field,
+    /// says so (`kit-form-involved`) instead of only being marked invalid.
+    pub involved_note: bool,
+}
 
 /// A message beside a field.
 #[derive(Debug, Clone, PartialEq)]
@@ -86,7 +101,7 @@ pub fn escape(text: &str) -> String {
     out
 }
 
-fn field_markup(p: &str, field: &FieldDef) -> String {
+fn field_markup(p: &str, field: &FieldDef, unit_id: Option<&str>) -> String {
     let name = escape(field.name());
     let default = escape(field.default());
     let label = escape(&field.label_id);
@@ -121,17 +136,27 @@ fn field_markup(p: &str, field: &FieldDef) -> String {
             html.push_str("</select>");
             html
         }
-        _ => format!(
-            "<input id=\"{p}-f-{name}\" type=\"text\" inputmode=\"{mode}\" autocomplete=\"off\" \
-             autocapitalize=\"off\" spellcheck=\"false\" enterkeyhint=\"go\" data-field=\"{name}\" \
-             placeholder=\"{default}\" aria-describedby=\"{described}\"{unit}>",
-            mode = field.inputmode(),
-            unit = field
-                .spec
-                .unit
-                .map(|u| format!(" data-unit=\"{}\"", escape(u)))
-                .unwrap_or_default(),
-        ),
+        _ => {
+            let input = format!(
+                "<input id=\"{p}-f-{name}\" type=\"text\" inputmode=\"{mode}\" autocomplete=\"off\" \
+                 autocapitalize=\"off\" spellcheck=\"false\" enterkeyhint=\"go\" data-field=\"{name}\" \
+                 placeholder=\"{default}\" aria-describedby=\"{described}\"{unit}>",
+                mode = field.inputmode(),
+                unit = field
+                    .spec
+                    .unit
+                    .map(|u| format!(" data-unit=\"{}\"", escape(u)))
+                    .unwrap_or_default(),
+            );
+            match unit_id {
+                Some(unit) => format!(
+                    "<div class=\"kit-input-row {p}-input-row\">{input}\
+                     <span class=\"kit-unit {p}-unit\" data-i18n=\"{}\"></span></div>",
+                    escape(unit)
+                ),
+                None => input,
+            }
+        }
     };
     let default_note = if field.default().is_empty() || field.is_file() {
         String::new()
@@ -169,6 +194,16 @@ fn field_markup(p: &str, field: &FieldDef) -> String {
 
 /// The form's markup: one fieldset per group that has fields.
 pub fn markup(prefix: &str, groups: &[Group], fields: &[FieldDef]) -> String {
+    markup_with(prefix, groups, fields, &FormOptions::default())
+}
+
+/// [`markup`] with a page's [`FormOptions`].
+pub fn markup_with(
+    prefix: &str,
+    groups: &[Group],
+    fields: &[FieldDef],
+    options: &FormOptions,
+) -> String {
     let p = escape(prefix);
     let mut html = String::new();
     for (index, group) in groups.iter().enumerate() {
@@ -186,7 +221,12 @@ pub fn markup(prefix: &str, groups: &[Group], fields: &[FieldDef]) -> String {
             ));
         }
         for field in members {
-            html.push_str(&field_markup(&p, field));
+            let unit = options
+                .units
+                .iter()
+                .find(|(name, _)| *name == field.name())
+                .map(|(_, unit)| *unit);
+            html.push_str(&field_markup(&p, field, unit));
         }
         html.push_str("</fieldset>");
     }
@@ -200,8 +240,10 @@ pub struct Form {
     errors: Vec<Option<Element>>,
     /// The file picker's status line (a form with a file field only).
     pub file_status: Option<Element>,
-    /// Messages shown beside fields (re-rendered on a language switch).
+    /// Messages shown beside fields and the fields marked (re-rendered on a language switch).
     shown: Vec<(usize, Message)>,
+    marked: Vec<usize>,
+    involved_note: bool,
     /// The field the user edited last (cross-field messages go there).
     changed: Cell<Option<usize>>,
 }
@@ -220,7 +262,26 @@ impl Form {
         fields: Vec<FieldDef>,
         values: &[String],
     ) -> Result<Form, JsValue> {
-        container.set_inner_html(&markup(prefix, groups, &fields));
+        Form::build_with(
+            container,
+            prefix,
+            groups,
+            fields,
+            values,
+            &FormOptions::default(),
+        )
+    }
+
+    /// [`Form::build`] with a page's [`FormOptions`].
+    pub fn build_with(
+        container: &Element,
+        prefix: &str,
+        groups: &[Group],
+        fields: Vec<FieldDef>,
+        values: &[String],
+        options: &FormOptions,
+    ) -> Result<Form, JsValue> {
+        container.set_inner_html(&markup_with(prefix, groups, &fields, options));
         crate::ui::dom::relocalize(container)?;
         let mut controls = Vec::new();
         let mut errors = Vec::new();
@@ -241,6 +302,8 @@ impl Form {
             errors,
             file_status,
             shown: Vec::new(),
+            marked: Vec::new(),
+            involved_note: options.involved_note,
             changed: Cell::new(None),
         };
         form.fill(values);
@@ -354,12 +417,39 @@ impl Form {
     /// with a message) invalid, and clears every other field.
     pub fn show(&mut self, messages: &[(usize, Message)], marked: &[usize]) {
         self.shown = messages.to_vec();
+        self.marked = marked.to_vec();
+        self.render();
+    }
+
+    /// The note beside field `index` that a cross-field limit shown beside another field
+    /// involves: "part of the same limit as <that field>".
+    fn involved_text(&self, index: usize) -> Option<String> {
+        let name = self.fields.get(index)?.name();
+        let (by, _) = self.shown.iter().find(|(at, m)| {
+            *at != index && matches!(m, Message::Recipe(e) if e.params().contains(&name))
+        })?;
+        let label = ctx::t(&self.fields.get(*by)?.label_id);
+        Some(ctx::t_args(
+            "kit-form-involved",
+            &fluent_args(vec![("field", label)]),
+        ))
+    }
+
+    fn render(&self) {
         for index in 0..self.fields.len() {
-            let message = messages.iter().find(|(i, _)| *i == index).map(|(_, m)| m);
+            let message = self.shown.iter().find(|(i, _)| *i == index).map(|(_, m)| m);
+            let marked = self.marked.contains(&index);
+            let text = match message {
+                Some(m) => Some(self.message_at(Some(index), m)),
+                None if marked && self.involved_note => self.involved_text(index),
+                None => None,
+            };
             if let Some(Some(slot)) = self.errors.get(index) {
-                match message {
-                    Some(m) => {
-                        slot.set_text_content(Some(&self.message_at(Some(index), m)));
+                match &text {
+                    Some(t) => {
+                        if slot.text_content().as_deref() != Some(t) {
+                            slot.set_text_content(Some(t));
+                        }
                         let _ = slot.remove_attribute("hidden");
                     }
                     None => {
@@ -368,7 +458,7 @@ impl Form {
                     }
                 }
             }
-            let invalid = message.is_some() || marked.contains(&index);
+            let invalid = message.is_some() || marked;
             if let Some(control) = self.controls.get(index) {
                 let _ = control
                     .element()
@@ -412,11 +502,7 @@ impl Form {
     /// Re-renders shown messages in the current language (labels, hints and legends follow
     /// their `data-i18n` ids).
     pub fn relocalize(&self) {
-        for (index, message) in &self.shown {
-            if let Some(Some(slot)) = self.errors.get(*index) {
-                slot.set_text_content(Some(&self.message_at(Some(*index), message)));
-            }
-        }
+        self.render();
     }
 }
 

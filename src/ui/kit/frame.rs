@@ -1,9 +1,13 @@
-//! One `requestAnimationFrame` loop per page with dirty flags: components mark what changed
-//! ([`FrameLoop::invalidate`] with the page's own bit constants), and the page's draw
-//! function runs once in the next animation frame with every bit collected since, so a burst
-//! of pointer events costs one draw. [`FrameLoop::set_animating`] keeps frames coming (a
-//! simulation playing); the draw then also gets frames with no bit set. Dropping the loop
-//! cancels the pending frame.
+//! The one animation-frame loop of the kit: components mark what changed
+//! ([`FrameLoop::invalidate`] with the page's own bit constants), and the draw function runs
+//! once in the next animation frame with every bit collected since, so a burst of pointer
+//! events costs one draw. [`FrameLoop::request`] asks for a call with no new bit (a stepper
+//! playing: one tick per frame); [`FrameLoop::set_animating`] keeps frames coming.
+//!
+//! A page gets its loop from its scope ([`crate::ui::kit::scope::Scope::dirty_frame_loop`], or
+//! [`crate::ui::kit::scope::Scope::frame_loop`] when it needs no bits), which cancels the
+//! pending frame on drop; clones share one loop, and the loop also cancels its frame when the
+//! last clone goes.
 
 use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
@@ -16,38 +20,60 @@ type FrameCallback = Closure<dyn FnMut(f64)>;
 
 struct Shared {
     dirty: Cell<u32>,
+    /// A call was asked for with [`FrameLoop::request`] (no bit needed).
+    requested: Cell<bool>,
     raf_id: Cell<Option<i32>>,
     animating: Cell<bool>,
     callback: RefCell<Option<FrameCallback>>,
 }
 
 impl Shared {
-    fn request(&self) {
+    fn schedule(&self) {
         if self.raf_id.get().is_some() {
             return;
         }
         let Some(window) = web_sys::window() else {
             return;
         };
-        if let Some(cb) = self.callback.borrow().as_ref() {
-            if let Ok(id) = window.request_animation_frame(cb.as_ref().unchecked_ref()) {
-                self.raf_id.set(Some(id));
+        if let Ok(callback) = self.callback.try_borrow() {
+            if let Some(cb) = callback.as_ref() {
+                if let Ok(id) = window.request_animation_frame(cb.as_ref().unchecked_ref()) {
+                    self.raf_id.set(Some(id));
+                }
             }
+        }
+    }
+
+    fn cancel(&self) {
+        self.animating.set(false);
+        self.requested.set(false);
+        self.dirty.set(0);
+        if let (Some(id), Some(window)) = (self.raf_id.take(), web_sys::window()) {
+            let _ = window.cancel_animation_frame(id);
         }
     }
 }
 
-/// The frame loop.
+impl Drop for Shared {
+    fn drop(&mut self) {
+        self.cancel();
+    }
+}
+
+/// The frame loop. Cloning shares it.
+#[derive(Clone)]
 pub struct FrameLoop {
     shared: Rc<Shared>,
 }
 
 impl FrameLoop {
     /// A loop that calls `draw(page, dirty_bits, time_ms)` on the page behind `page` (held
-    /// weakly: the page owns its loop).
+    /// weakly: the page owns its loop). Prefer the scope's constructors, which also cancel it
+    /// when the page unmounts.
     pub fn new<P: 'static>(page: &Weak<P>, draw: impl Fn(&P, u32, f64) + 'static) -> FrameLoop {
         let shared = Rc::new(Shared {
             dirty: Cell::new(0),
+            requested: Cell::new(false),
             raf_id: Cell::new(None),
             animating: Cell::new(false),
             callback: RefCell::new(None),
@@ -60,13 +86,14 @@ impl FrameLoop {
             };
             shared.raf_id.set(None);
             let bits = shared.dirty.replace(0);
+            let requested = shared.requested.replace(false);
             if let Some(page) = page.upgrade() {
-                if bits != 0 || shared.animating.get() {
+                if bits != 0 || requested || shared.animating.get() {
                     draw(&page, bits, t);
                 }
             }
-            if shared.animating.get() || shared.dirty.get() != 0 {
-                shared.request();
+            if shared.animating.get() || shared.dirty.get() != 0 || shared.requested.get() {
+                shared.schedule();
             }
         }));
         FrameLoop { shared }
@@ -75,7 +102,14 @@ impl FrameLoop {
     /// Marks `bits` dirty and asks for a frame.
     pub fn invalidate(&self, bits: u32) {
         self.shared.dirty.set(self.shared.dirty.get() | bits);
-        self.shared.request();
+        self.shared.schedule();
+    }
+
+    /// Asks for one call on the next animation frame, with or without dirty bits (requests in
+    /// between coalesce).
+    pub fn request(&self) {
+        self.shared.requested.set(true);
+        self.shared.schedule();
     }
 
     /// The bits waiting for the next frame.
@@ -83,26 +117,21 @@ impl FrameLoop {
         self.shared.dirty.get()
     }
 
+    /// Whether a frame is asked for.
+    pub fn is_scheduled(&self) -> bool {
+        self.shared.raf_id.get().is_some()
+    }
+
     /// Keeps requesting frames (every frame calls draw) while `on`.
     pub fn set_animating(&self, on: bool) {
         self.shared.animating.set(on);
         if on {
-            self.shared.request();
+            self.shared.schedule();
         }
     }
 
-    /// Cancels the pending frame and forgets the dirty bits.
+    /// Cancels the pending frame and forgets the dirty bits and requests.
     pub fn cancel(&self) {
-        self.shared.animating.set(false);
-        self.shared.dirty.set(0);
-        if let (Some(id), Some(window)) = (self.shared.raf_id.take(), web_sys::window()) {
-            let _ = window.cancel_animation_frame(id);
-        }
-    }
-}
-
-impl Drop for FrameLoop {
-    fn drop(&mut self) {
-        self.cancel();
+        self.shared.cancel();
     }
 }

@@ -7,13 +7,15 @@
 //! - [`stepper`]: step / back / play / scrub toolbar over a page's model.
 //! - [`png`]: PNG export of any canvas.
 //! - [`canvas`]: HiDPI layered canvases, resize watch, projector ink (line/type scale).
-//! - [`frame`]: one animation-frame loop with dirty flags.
+//! - [`frame`]: the one animation-frame loop (dirty flags, requests, animation), made by the
+//!   scope; pages and the stepper run on it.
 //! - [`drag`]: pointer drags (mouse, pen, touch) that leave the page scrollable.
 //! - [`plot`]: line/scatter plots: panels sharing x, legend, cursor, incremental append.
 //! - [`heatmap`]: colour-map heatmap with a legend.
-//! - [`form`]: the ArgSpec-driven parameter form; [`exports`]: downloads and command lines;
-//!   [`readouts`]: `data-readout` values and a throttled `aria-live` summary;
-//!   [`recipe_controls`]: form + sliders + URL + exports of a page that runs one recipe live.
+//! - [`form`]: the ArgSpec-driven parameter form (one or several recipes' arguments);
+//!   [`exports`]: downloads and command lines (one run or several); [`readouts`]:
+//!   `data-readout` values and a paced `aria-live` summary.
+//! - [`recipe_controls`]: form + sliders + URL + exports of a page that runs one recipe live.
 //! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
 //! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
 

@@ -9,11 +9,10 @@
 //! let mut scope = Scope::new();
 //! scope.listen_for(&canvas, "pointerdown", &weak_page, |page, event| page.on_down(event))?;
 //! let url = scope.timer(&weak_page, Page::write_url);   // url.schedule(300)
-//! let frame = scope.frame_loop(&weak_page, Page::frame); // frame.request() when dirty
+//! let frame = scope.dirty_frame_loop(&weak_page, Page::frame); // frame.invalidate(bits)
 //! scope.observe_resize(&[&stage], &weak_page, |page| page.relayout())?;
 //! ```
 
-use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
 
 use wasm_bindgen::prelude::*;
@@ -21,12 +20,11 @@ use wasm_bindgen::JsCast;
 use web_sys::{Element, Event, EventTarget, ResizeObserver};
 
 use crate::ui::dom::Listener;
+pub use crate::ui::kit::frame::FrameLoop;
 use crate::ui::schedule::Timer;
 
 /// A resize observer and the callback it calls.
 type Observer = (ResizeObserver, Closure<dyn FnMut(JsValue)>);
-/// A frame callback (set once, after the loop's shared state exists).
-type FrameCallback = RefCell<Option<Closure<dyn FnMut(f64)>>>;
 
 /// Listeners, timers, a frame loop and observers, removed on drop.
 #[derive(Default)]
@@ -81,12 +79,23 @@ impl Scope {
         timer
     }
 
-    /// An animation-frame loop calling `f(page, timestamp_ms)` once per
-    /// [`FrameLoop::request`]ed frame (requests in between coalesce); cancelled on drop.
+    /// The page's animation-frame loop ([`crate::ui::kit::frame`]) calling `f(page,
+    /// timestamp_ms)` once per [`FrameLoop::request`]ed frame (requests in between coalesce);
+    /// cancelled on drop.
     pub fn frame_loop<P: 'static>(
         &mut self,
         page: &Weak<P>,
         f: impl Fn(&P, f64) + 'static,
+    ) -> FrameLoop {
+        self.dirty_frame_loop(page, move |p: &P, _bits, time| f(p, time))
+    }
+
+    /// The same loop with dirty bits: `f(page, bits, timestamp_ms)` runs once in the next
+    /// animation frame with every bit [`FrameLoop::invalidate`]d since; cancelled on drop.
+    pub fn dirty_frame_loop<P: 'static>(
+        &mut self,
+        page: &Weak<P>,
+        f: impl Fn(&P, u32, f64) + 'static,
     ) -> FrameLoop {
         let frame = FrameLoop::new(page, f);
         self.frames.push(frame.clone());
@@ -127,65 +136,5 @@ impl Drop for Scope {
             observer.disconnect();
         }
         // Listeners remove themselves as the Vec drops.
-    }
-}
-
-struct FrameInner {
-    id: Cell<Option<i32>>,
-    callback: FrameCallback,
-}
-
-/// One `requestAnimationFrame` callback, requested on demand. Cloning shares it.
-#[derive(Clone)]
-pub struct FrameLoop {
-    inner: Rc<FrameInner>,
-}
-
-impl FrameLoop {
-    fn new<P: 'static>(page: &Weak<P>, f: impl Fn(&P, f64) + 'static) -> FrameLoop {
-        let inner = Rc::new(FrameInner {
-            id: Cell::new(None),
-            callback: RefCell::new(None),
-        });
-        let weak_inner = Rc::downgrade(&inner);
-        let page = page.clone();
-        *inner.callback.borrow_mut() = Some(Closure::new(move |time: f64| {
-            if let Some(inner) = weak_inner.upgrade() {
-                inner.id.set(None);
-            }
-            if let Some(page) = page.upgrade() {
-                f(&page, time);
-            }
-        }));
-        FrameLoop { inner }
-    }
-
-    /// Asks for one call on the next animation frame (nothing if one is pending).
-    pub fn request(&self) {
-        if self.inner.id.get().is_some() {
-            return;
-        }
-        let Some(window) = web_sys::window() else {
-            return;
-        };
-        if let Ok(callback) = self.inner.callback.try_borrow() {
-            if let Some(cb) = callback.as_ref() {
-                if let Ok(id) = window.request_animation_frame(cb.as_ref().unchecked_ref()) {
-                    self.inner.id.set(Some(id));
-                }
-            }
-        }
-    }
-
-    /// Whether a frame is pending.
-    pub fn pending(&self) -> bool {
-        self.inner.id.get().is_some()
-    }
-
-    /// Cancels the pending frame, if any.
-    pub fn cancel(&self) {
-        if let (Some(id), Some(window)) = (self.inner.id.take(), web_sys::window()) {
-            let _ = window.cancel_animation_frame(id);
-        }
     }
 }

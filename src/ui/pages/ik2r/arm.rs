@@ -12,6 +12,7 @@
 //! The ellipse is the image of the unit joint-speed circle, `{ J q̇ : |q̇| ≤ 1 }`: semi-axes
 //! `σ_max`, `σ_min` along the left singular vectors of `J`, drawn at [`ELLIPSE_SCALE`].
 
+use std::cell::RefCell;
 use std::f64::consts::PI;
 use std::rc::Weak;
 
@@ -29,6 +30,7 @@ use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom::{show, Listener};
 use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink, LayeredCanvas};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
+use crate::ui::schedule::now_ms;
 use crate::view::heatmap::{viridis, Rgb};
 use crate::view::ik2r::{
     self, extent_m, fmt_fixed, format_mm, grid_step_mm, joints_on_screen, link_label_centres, num,
@@ -74,6 +76,10 @@ pub(super) struct ArmView {
     ws_img: Option<WorkspaceImage>,
     ws_img_colour: Option<WsColor>,
     lut: Vec<Rgb>,
+    /// The font the top layer's context has (set once per layout, with the text direction:
+    /// setting a canvas font resolves it against the page's style, which costs a style
+    /// recalculation after DOM writes).
+    top_font: RefCell<String>,
     clamp_note: Element,
     view_notes: Element,
     ws_summary: Element,
@@ -100,6 +106,7 @@ impl ArmView {
             ws_img: None,
             ws_img_colour: None,
             lut: viridis(),
+            top_font: RefCell::new(String::new()),
             clamp_note: role(root, "clamp-note")?,
             view_notes: role(root, "view-notes")?,
             ws_summary: role(root, "ws-summary")?,
@@ -232,6 +239,8 @@ impl ArmView {
     /// Sizes the layers and fits the view to the arm (and the workspace grid when shown).
     pub fn layout(&mut self, st: &State) {
         self.canvas.fit();
+        // A resized canvas has its context state reset.
+        self.top_font.borrow_mut().clear();
         if let Some(d) = &self.drag {
             d.relayout();
         }
@@ -284,24 +293,27 @@ impl ArmView {
     }
 
     /// Recomputes the workspace grid if its parameters changed, then the overlay; returns
-    /// whether the grid was recomputed.
-    pub fn recompute_workspace(&mut self, st: &State) -> bool {
+    /// how long the grid's computation (`ik_workspace::compute`) took, ms, if it ran.
+    pub fn recompute_workspace(&mut self, st: &State) -> Option<f64> {
         let wp = st.params.workspace();
         let stale = self.ws.as_ref().is_none_or(|(p, _)| *p != wp);
+        let mut compute_ms = None;
         if stale {
+            let t0 = now_ms();
             match crate::recipes::ik_workspace::compute(&wp) {
                 Ok(ws) => {
+                    compute_ms = Some(now_ms() - t0);
                     self.ws = Some((wp, ws));
                     self.ws_img_colour = None;
                 }
                 Err(e) => {
                     web_sys::console::warn_1(&format!("ik-2r workspace: {e}").into());
-                    return false;
+                    return None;
                 }
             }
         }
         self.refresh_workspace_image(st);
-        stale
+        compute_ms
     }
 
     /// Re-renders the overlay from the cached grid (a colour change needs no recompute).
@@ -434,8 +446,16 @@ impl ArmView {
         let _ = ctx.fill_text(&format!("y [{unit}]"), o.x + 6.0, 6.0);
     }
 
-    /// The top layer, the geometry attributes and the touch handles.
-    pub fn draw_frame(&self, st: &State, rep: &PoseReport, ghost: Option<(f64, f64)>, ink: Ink) {
+    /// The top layer, the geometry attributes and, with `handles`, the touch handles (not
+    /// while a drag holds the pointer: the drag's end places them).
+    pub fn draw_frame(
+        &self,
+        st: &State,
+        rep: &PoseReport,
+        ghost: Option<(f64, f64)>,
+        ink: Ink,
+        handles: bool,
+    ) {
         let layer = self.canvas.top();
         let xf = &self.xf;
         let arm = st.params.arm();
@@ -555,21 +575,28 @@ impl ArmView {
             2.5 * s,
         );
 
-        // Link labels outside the bend, on a light halo (never on top of each other).
+        // Link labels outside the bend, on a light box (never on top of each other); a box
+        // costs a rectangle where a stroked text outline costs a second text draw per frame.
         let font_px = ink.text_px(12.0);
         let gap = 10.0 * s + font_px * 0.75;
-        ctx.set_font(&ink.font(12.0, true));
+        let (box_w, box_h) = (font_px * 1.5, font_px * 1.2);
+        let font = ink.font(12.0, true);
+        if *self.top_font.borrow() != font {
+            ctx.set_font(&font);
+            // The default direction, `inherit`, makes every text draw read the canvas's
+            // computed style (a style recalculation after DOM writes); the labels are LTR.
+            let _ = js_sys::Reflect::set(ctx, &"direction".into(), &"ltr".into());
+            *self.top_font.borrow_mut() = font;
+        }
         ctx.set_text_align("center");
         ctx.set_text_baseline("middle");
-        ctx.set_line_join("round");
-        for (label, at) in ["L1", "L2"]
-            .into_iter()
-            .zip(link_label_centres(base, elbow, tip, gap))
-        {
-            ctx.set_stroke_style_str(colour::LABEL_HALO);
-            ctx.set_line_width(4.0 * s);
-            let _ = ctx.stroke_text(label, at.x, at.y);
-            ctx.set_fill_style_str(colour::JOINT_EDGE);
+        let centres = link_label_centres(base, elbow, tip, gap);
+        ctx.set_fill_style_str(colour::LABEL_HALO);
+        for at in centres {
+            ctx.fill_rect(at.x - box_w / 2.0, at.y - box_h / 2.0, box_w, box_h);
+        }
+        ctx.set_fill_style_str(colour::JOINT_EDGE);
+        for (label, at) in ["L1", "L2"].into_iter().zip(centres) {
             let _ = ctx.fill_text(label, at.x, at.y);
         }
 
@@ -578,7 +605,7 @@ impl ArmView {
         let _ = c.set_attribute("data-tip-y", &tip.y.to_string());
         let _ = c.set_attribute("data-elbow-x", &elbow.x.to_string());
         let _ = c.set_attribute("data-elbow-y", &elbow.y.to_string());
-        if let Some(d) = &self.drag {
+        if let (Some(d), true) = (&self.drag, handles) {
             let shapes = ik2r::handles(xf, &arm, rep.q1, rep.q2, true).map(|(_, shape)| shape);
             d.set_handles(&shapes);
         }

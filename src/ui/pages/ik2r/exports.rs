@@ -1,54 +1,75 @@
-//! The downloads panel: the three recipe CSVs for the current parameters, made by the same
-//! code path as `bsv <recipe-id> <args>` (so the bytes are the CLI's), the equivalent command
-//! lines (Python recipe and `bsv`) with copy buttons, the arm view as PNG, and the status of
-//! the last copy. What a CSV needs (arguments, command lines) is the pure
-//! `crate::view::ik2r` export model.
+//! The downloads panel, on the kit's exports ([`crate::ui::kit::exports`]): the three recipe
+//! CSVs for the current parameters, made by the same code path as `bsv <recipe-id> <args>` (so
+//! the bytes are the CLI's), each with its Python and `bsv` command lines (built from the
+//! recipe's facts, [`RunArgs`]) and copy buttons, the arm view as PNG, and one status line for
+//! copies and failed downloads. What a CSV needs is the pure `crate::view::ik2r` export model.
 
 use std::cell::Cell;
-use std::rc::{Rc, Weak};
+use std::rc::Weak;
 
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
-use super::{role, Page};
-use crate::ui::clipboard;
+use super::Page;
 use crate::ui::ctx::{self, t_strings};
-use crate::ui::dom::{self, show, Listener};
-use crate::view::ik2r::{
-    export_commands, export_csv, ExportError, Params, State, ARM_PNG, EXPORTS,
-};
+use crate::ui::dom;
+use crate::ui::kit::exports::{self as kit, RunEntry};
+use crate::ui::kit::scope::Scope;
+use crate::view::command_line::RunArgs;
+use crate::view::form::{recipe_fields, FieldDef};
+use crate::view::ik2r::{export_args, export_csv, ExportError, Params, State, ARM_PNG, EXPORTS};
+
+/// The panel's markup: the three runs, the PNG, the status line.
+pub fn markup() -> String {
+    let runs: Vec<RunEntry> = EXPORTS
+        .iter()
+        .map(|e| RunEntry {
+            file: e.file,
+            label_id: e.label_id,
+        })
+        .collect();
+    format!(
+        "<section class=\"ik2r-card ik2r-downloads\"><h2 data-i18n=\"ik2r-downloads-title\"></h2>\
+         <p class=\"ik2r-hint\" data-i18n=\"ik2r-downloads-hint\"></p><div class=\"ik2r-dl-grid\">{runs}\
+         <div class=\"kit-run ik2r-run\"><button type=\"button\" class=\"button kit-download ik2r-download\" \
+         data-download=\"{ARM_PNG}\" data-i18n=\"ik2r-dl-png\"></button>\
+         <p class=\"ik2r-hint\" data-i18n=\"ik2r-dl-png-hint\"></p></div></div>{status}</section>",
+        runs = kit::runs_markup("ik2r", &runs),
+        status = kit::status_markup("ik2r"),
+    )
+}
 
 /// The exports component.
 pub(super) struct Exports {
     root: Element,
-    copy_status: Element,
-    /// The last copy result's message id.
-    copied: Rc<Cell<Option<&'static str>>>,
-    /// The command lines as shown (python, bsv for each export), to skip unchanged writes.
-    shown: Vec<String>,
-    /// The parameters and q2 the shown command lines were made for (a drag frame that
-    /// changed neither formats nothing).
-    shown_for: Option<(Params, f64)>,
-    /// The last download error per file (re-rendered on a language switch).
-    failed: Vec<(String, String)>,
+    panel: kit::Exports,
+    /// Each recipe's fields (for its command lines), in [`EXPORTS`] order.
+    fields: Vec<Vec<FieldDef>>,
+    /// The parameters and q2 the lines show (a frame that changed neither writes nothing).
+    shown_for: Cell<Option<(Params, f64)>>,
 }
 
 impl Exports {
     pub fn find(root: &Element) -> Result<Exports, JsValue> {
+        let files: Vec<&str> = EXPORTS.iter().map(|e| e.file).collect();
+        let fields = EXPORTS
+            .iter()
+            .map(|e| {
+                crate::recipes::find(e.recipe).map_or_else(Vec::new, |r| recipe_fields(r.info))
+            })
+            .collect();
         Ok(Exports {
             root: root.clone(),
-            copy_status: role(root, "copy-status")?,
-            copied: Rc::new(Cell::new(None)),
-            shown: Vec::new(),
-            shown_for: None,
-            failed: Vec::new(),
+            panel: kit::Exports::find_runs(root, "ik2r", &files)?,
+            fields,
+            shown_for: Cell::new(None),
         })
     }
 
-    pub fn attach(&self, weak: &Weak<Page>, out: &mut Vec<Listener>) -> Result<(), JsValue> {
+    pub fn attach(&self, weak: &Weak<Page>, scope: &mut Scope) -> Result<(), JsValue> {
         for button in dom::matching(&self.root, "[data-download]")? {
             let file = button.get_attribute("data-download").unwrap_or_default();
-            out.push(Listener::for_page(&button, "click", weak, move |p, _| {
+            scope.listen_for(&button, "click", weak, move |p, _| {
                 let st = *p.state.borrow();
                 let result = if file == ARM_PNG {
                     p.arm
@@ -58,104 +79,47 @@ impl Exports {
                 } else {
                     csv_download(&file, &st)
                 };
-                p.exports.borrow_mut().show_result(&file, result);
-            })?);
+                if let Err(e) = result {
+                    p.exports.borrow().panel.download_failed(&file, &e);
+                }
+            })?;
         }
         for button in dom::matching(&self.root, "[data-copy]")? {
             let key = button.get_attribute("data-copy").unwrap_or_default();
-            out.push(Listener::for_page(&button, "click", weak, move |p, _| {
-                p.exports.borrow().copy_command(&key)
-            })?);
+            scope.listen_for(&button, "click", weak, move |p, _| {
+                p.exports.borrow().panel.copy(&key)
+            })?;
         }
         Ok(())
     }
 
-    /// Shows or clears the error slot under a download button.
-    fn show_result(&mut self, file: &str, result: Result<(), JsValue>) {
-        self.failed.retain(|(f, _)| f != file);
-        if let Err(e) = result {
-            let msg = e.as_string().unwrap_or_else(|| format!("{e:?}"));
-            self.failed.push((file.to_string(), msg));
-        }
-        self.render_errors(file);
-    }
-
-    fn render_errors(&self, file: &str) {
-        let Ok(Some(slot)) = self
-            .root
-            .query_selector(&format!("[data-dl-error=\"{file}\"]"))
-        else {
+    /// The command lines of the current parameters (the jacobian-2r ones follow the pose's
+    /// q2); only the lines that changed are written.
+    pub fn update_commands(&self, st: &State) {
+        let was = self.shown_for.replace(Some((st.params, st.q2)));
+        let params_same = was.is_some_and(|(p, _)| p == st.params);
+        if params_same && was.is_some_and(|(_, q2)| q2 == st.q2) {
             return;
-        };
-        match self.failed.iter().find(|(f, _)| f == file) {
-            Some((_, msg)) => {
-                slot.set_text_content(Some(&t_strings(
-                    "ik2r-dl-failed",
-                    &[("error", msg.clone())],
-                )));
-                show(&slot, true);
+        }
+        for (export, fields) in EXPORTS.iter().zip(&self.fields) {
+            if params_same && !export.follows_q2 {
+                continue;
             }
-            None => show(&slot, false),
-        }
-    }
-
-    /// A copy button: the command line beside it to the clipboard.
-    fn copy_command(&self, key: &str) {
-        let Ok(Some(code)) = self.root.query_selector(&format!("[data-cmd=\"{key}\"]")) else {
-            return;
-        };
-        let text = code.text_content().unwrap_or_default();
-        let element = self.copy_status.clone();
-        let status = self.copied.clone();
-        clipboard::copy_text(&text, move |ok| {
-            let id = if ok {
-                "ik2r-copied"
-            } else {
-                "ik2r-copy-failed"
-            };
-            status.set(Some(id));
-            element.set_text_content(Some(&ctx::t(id)));
-        });
-    }
-
-    /// The command lines under the downloads (only the changed ones are written; the
-    /// jacobian-2r one follows the pose's q2).
-    pub fn update_commands(&mut self, st: &State) {
-        let key = (st.params, st.q2);
-        if self.shown_for == Some(key) {
-            return;
-        }
-        self.shown_for = Some(key);
-        let mut shown = Vec::with_capacity(2 * EXPORTS.len());
-        for export in EXPORTS {
-            let (python, bsv) = export_commands(&export, &st.params, st.q2);
-            shown.push(python);
-            shown.push(bsv);
-        }
-        if self.shown == shown {
-            return;
-        }
-        let mut texts = shown.iter();
-        for export in EXPORTS {
-            for kind in ["python", "bsv"] {
-                let text = texts.next().map_or("", String::as_str);
-                let selector = format!("[data-cmd=\"{}:{kind}\"]", export.file);
-                if let Ok(Some(code)) = self.root.query_selector(&selector) {
-                    if code.text_content().as_deref() != Some(text) {
-                        code.set_text_content(Some(text));
-                    }
-                }
+            let texts: Vec<Option<String>> = export_args(export, &st.params, st.q2)
+                .into_iter()
+                .map(Some)
+                .collect();
+            let args = RunArgs::new(export.recipe, fields, &texts);
+            if self.panel.shows(export.file, &args) {
+                continue;
             }
+            let script = crate::recipes::find(export.recipe).map_or("", |r| r.info.python);
+            self.panel.show_run_for(export.file, &args, script);
         }
-        self.shown = shown;
     }
 
     pub fn relocalize(&self) {
-        let status = self.copied.get().map(ctx::t).unwrap_or_default();
-        self.copy_status.set_text_content(Some(&status));
-        for (file, _) in &self.failed {
-            self.render_errors(file);
-        }
+        self.panel.relocalize();
     }
 }
 

@@ -174,8 +174,8 @@ impl HeatPanel {
     }
 
     /// The marker (current pose), the hovered cell's crosshair, the attributes tests read
-    /// and the marker's touch handle.
-    pub fn draw_marker(&self, st: &State, ghost: Option<(f64, f64)>, ink: Ink) {
+    /// and, with `handle`, the marker's touch handle (not during a drag).
+    pub fn draw_marker(&self, st: &State, ghost: Option<(f64, f64)>, ink: Ink, handle: bool) {
         let (q1, q2) = (wrap_angle(st.q1), wrap_angle(st.q2));
         self.map.draw_marker((q1, q2), ghost, ink);
         let lay = &self.map.layout;
@@ -184,7 +184,7 @@ impl HeatPanel {
         let _ = h.set_attribute("data-marker-q2", &q2.to_string());
         let _ = h.set_attribute("data-marker-x", &lay.x_of(q1).to_string());
         let _ = h.set_attribute("data-marker-y", &lay.y_of(q2).to_string());
-        if let Some(d) = &self.drag {
+        if let (Some(d), true) = (&self.drag, handle) {
             d.set_handles(&[self.marker_handle(st)]);
         }
     }

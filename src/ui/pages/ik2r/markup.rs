@@ -4,103 +4,8 @@
 //! `data-ik2r="<role>"`, and the ones tests drive carry `data-testid` / `data-readout` /
 //! `data-download`.
 
-use super::{explain, params, readouts};
-use crate::view::ik2r::{ARM_PNG, EXPORTS};
-
-fn readout_row(label: &str, rows: &[(&str, &str)]) -> String {
-    let mut html = format!("<div class=\"ik2r-ro\"><dt data-i18n=\"{label}\"></dt><dd>");
-    for (name, unit) in rows {
-        html.push_str(&format!(
-            "<span class=\"ik2r-num\"><span class=\"ik2r-val\" data-readout=\"{name}\"></span>\
-             <span class=\"ik2r-unit\" data-i18n=\"{unit}\"></span></span>"
-        ));
-    }
-    html.push_str("</dd></div>");
-    html
-}
-
-fn readouts() -> String {
-    let mut html = String::from(
-        "<section class=\"ik2r-card ik2r-readouts\" aria-live=\"off\">\
-         <h2 data-i18n=\"ik2r-readouts-title\"></h2><dl>",
-    );
-    html.push_str(&readout_row(
-        "ik2r-ro-q1",
-        &[("q1", "ik2r-unit-rad"), ("q1_deg", "ik2r-unit-deg")],
-    ));
-    html.push_str(&readout_row(
-        "ik2r-ro-q2",
-        &[("q2", "ik2r-unit-rad"), ("q2_deg", "ik2r-unit-deg")],
-    ));
-    html.push_str(&readout_row(
-        "ik2r-ro-tip",
-        &[("x_mm", "ik2r-unit-mm"), ("y_mm", "ik2r-unit-mm")],
-    ));
-    html.push_str(&readout_row("ik2r-ro-det", &[("det_j", "ik2r-unit-m2")]));
-    html.push_str(&readout_row(
-        "ik2r-ro-w",
-        &[("manipulability", "ik2r-unit-m2")],
-    ));
-    html.push_str(&readout_row(
-        "ik2r-ro-sigma",
-        &[("sigma_min", "ik2r-unit-m"), ("sigma_max", "ik2r-unit-m")],
-    ));
-    html.push_str(
-        "</dl><div class=\"ik2r-jac\"><span class=\"ik2r-jac-label\" data-i18n=\"ik2r-ro-jac\"></span>\
-         <div class=\"ik2r-matrix\" role=\"table\">\
-         <span data-readout=\"j11\" role=\"cell\"></span><span data-readout=\"j12\" role=\"cell\"></span>\
-         <span data-readout=\"j21\" role=\"cell\"></span><span data-readout=\"j22\" role=\"cell\"></span>\
-         </div><span class=\"ik2r-unit\" data-i18n=\"ik2r-unit-m-per-rad\"></span></div>\
-         <p class=\"ik2r-hint\" data-i18n=\"ik2r-ro-hint\"></p></section>",
-    );
-    html
-}
-
-fn downloads_panel() -> String {
-    let mut html = String::from(
-        "<section class=\"ik2r-card ik2r-downloads\"><h2 data-i18n=\"ik2r-downloads-title\"></h2>\
-         <p class=\"ik2r-hint\" data-i18n=\"ik2r-downloads-hint\"></p><div class=\"ik2r-dl-grid\">",
-    );
-    for export in EXPORTS {
-        let (file, label) = (export.file, export.label_id);
-        html.push_str(&format!(
-            "<div class=\"ik2r-dl\">\
-             <button type=\"button\" class=\"ik2r-btn ik2r-btn-primary\" data-download=\"{file}\" \
-             data-i18n=\"{label}\"></button>\
-             <p class=\"ik2r-error\" data-dl-error=\"{file}\" role=\"alert\" hidden></p>\
-             <div class=\"ik2r-cmd\"><span class=\"ik2r-cmd-label\" data-i18n=\"ik2r-dl-cmd-python\"></span>\
-             <code data-cmd=\"{file}:python\"></code>\
-             <button type=\"button\" class=\"ik2r-btn ik2r-copy\" data-copy=\"{file}:python\" \
-             data-i18n=\"ik2r-copy\"></button></div>\
-             <div class=\"ik2r-cmd\"><span class=\"ik2r-cmd-label\" data-i18n=\"ik2r-dl-cmd-bsv\"></span>\
-             <code data-cmd=\"{file}:bsv\"></code>\
-             <button type=\"button\" class=\"ik2r-btn ik2r-copy\" data-copy=\"{file}:bsv\" \
-             data-i18n=\"ik2r-copy\"></button></div>\
-             </div>"
-        ));
-    }
-    html.push_str(&format!(
-        "<div class=\"ik2r-dl\"><button type=\"button\" class=\"ik2r-btn\" data-download=\"{}\" \
-         data-i18n=\"ik2r-dl-png\"></button><p class=\"ik2r-hint\" data-i18n=\"ik2r-dl-png-hint\"></p></div>\
-         </div><p class=\"ik2r-status\" data-ik2r=\"copy-status\" role=\"status\"></p></section>",
-        ARM_PNG
-    ));
-    html
-}
-
-/// The compact strip of key numbers over the arm view (shown at phone width).
-fn strip() -> String {
-    let mut html = String::from("<div class=\"ik2r-strip\" aria-hidden=\"true\">");
-    for (name, label, unit) in readouts::STRIP {
-        html.push_str(&format!(
-            "<span class=\"ik2r-strip-item\"><span class=\"ik2r-strip-label\" data-i18n=\"{label}\"></span> \
-             <span class=\"ik2r-val\" data-strip=\"{name}\"></span>\
-             <span class=\"ik2r-unit\" data-i18n=\"{unit}\"></span></span>"
-        ));
-    }
-    html.push_str("</div>");
-    html
-}
+use super::{explain, exports, readouts};
+use crate::ui::kit::readouts::live_markup;
 
 /// The whole page.
 pub fn page() -> String {
@@ -129,7 +34,7 @@ pub fn page() -> String {
 data-i18n-attr=\"aria-label=ik2r-canvas-label\"></canvas>\
 <p class=\"ik2r-clamp\" data-ik2r=\"clamp-note\" data-testid=\"ik-2r-clamp-note\" role=\"status\" data-i18n=\"ik2r-clamped\" hidden></p>\
 </div>\
-<p class=\"ik2r-sr-only\" data-ik2r=\"live\" data-testid=\"ik-2r-live\" role=\"status\" aria-live=\"polite\"></p>\
+{live}\
 <p class=\"ik2r-hint\" data-i18n=\"ik2r-drag-hint\"></p>\
 <p class=\"ik2r-hint\" data-ik2r=\"view-notes\"></p>\
 <p class=\"ik2r-hint\" data-ik2r=\"ws-summary\" hidden></p>\
@@ -153,15 +58,15 @@ data-i18n-attr=\"aria-label=ik2r-plot-label\"></canvas>\
 <canvas class=\"ik2r-layer\" data-ik2r=\"plot-cursor\" aria-hidden=\"true\"></canvas></div></section>\
 <section class=\"ik2r-card ik2r-params\"><h2 data-i18n=\"ik2r-params-title\"></h2>\
 <p class=\"ik2r-hint\" data-i18n=\"ik2r-params-hint\"></p>\
-<form class=\"ik2r-form\" data-ik2r=\"form\" novalidate>{form}</form></section>\
+<form class=\"ik2r-form\" data-ik2r=\"form\" novalidate></form></section>\
 </div>\
 {downloads}\
 {explain}\
 </div>",
-        readouts = readouts(),
-        strip = strip(),
-        form = params::markup(),
-        downloads = downloads_panel(),
+        readouts = readouts::markup(),
+        strip = readouts::strip_markup(),
+        live = live_markup("ik-2r"),
+        downloads = exports::markup(),
         explain = explain::markup(),
     )
 }

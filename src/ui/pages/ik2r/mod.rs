@@ -43,8 +43,7 @@ use crate::planar2r::{wrap_angle, Elbow};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::DragEvent;
-use crate::ui::kit::frame::FrameLoop;
-use crate::ui::kit::scope::Scope;
+use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{MountCtx, PageDef, PageHandle, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
@@ -92,8 +91,9 @@ pub(crate) struct Page {
     params: RefCell<params::ParamsForm>,
     readouts: RefCell<readouts::Readouts>,
     exports: RefCell<exports::Exports>,
-    frames: RefCell<Option<FrameLoop>>,
-    /// Listeners, timers and the resize observer; dropped on unmount.
+    /// The page's frame loop (its scope's).
+    frames: FrameLoop,
+    /// Listeners, timers, the frame loop and the resize observer; dropped on unmount.
     scope: RefCell<Scope>,
     heat_timer: Rc<Timer>,
     ws_timer: Rc<Timer>,
@@ -112,15 +112,15 @@ fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
         heat::HeatPanel::find(&root)?,
         sweep::SweepPlot::find(&root)?,
     );
-    let (params, mut readouts, exports) = (
-        params::ParamsForm::find(&root)?,
+    let (params, readouts, exports) = (
+        params::ParamsForm::build(&root, &state.params)?,
         readouts::Readouts::find(&root)?,
         exports::Exports::find(&root)?,
     );
     let page = Rc::new_cyclic(|weak: &Weak<Page>| {
         let mut scope = Scope::new();
-        readouts.set_timer(scope.timer(weak, |p: &Page| p.readouts.borrow().speak()));
         Page {
+            frames: scope.dirty_frame_loop(weak, |p: &Page, bits, _| p.frame(bits)),
             heat_timer: scope.timer(weak, Page::recompute_heatmap),
             ws_timer: scope.timer(weak, Page::recompute_workspace),
             clamp_timer: scope.timer(weak, |p: &Page| p.arm.borrow_mut().set_clamp(false)),
@@ -136,28 +136,25 @@ fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
             root,
             state: RefCell::new(state),
             ghost: RefCell::new(None),
-            frames: RefCell::new(None),
             timings: bench::Timings::install(),
         }
     });
     dom::relocalize(&page.root)?;
     page.install(&Rc::downgrade(&page))?;
-    page.params.borrow_mut().fill(&state.params);
     page.arm.borrow().sync_controls(&state);
     page.relocalize_texts();
     page.recompute_heatmap();
     if state.show_ws {
         page.recompute_workspace();
     }
-    page.exports.borrow_mut().update_commands(&state);
+    page.exports.borrow().update_commands(&state);
     page.invalidate(dirty::ALL);
     Ok(Box::new(Handle(page)))
 }
 
 impl Page {
-    /// Wires the frame loop, the resize observer, the components' listeners and bench hooks.
+    /// Wires the resize observer, the components' listeners and bench hooks.
     fn install(&self, weak: &Weak<Page>) -> Result<(), JsValue> {
-        *self.frames.borrow_mut() = Some(FrameLoop::new(weak, |p: &Page, bits, _| p.frame(bits)));
         let stages = [
             self.arm.borrow().stage(),
             self.heat.borrow().stage(),
@@ -170,8 +167,8 @@ impl Page {
         let mut listeners = Vec::new();
         self.arm.borrow_mut().attach(weak, &mut listeners)?;
         self.heat.borrow_mut().attach(weak)?;
-        self.params.borrow().attach(weak, &mut listeners)?;
-        self.exports.borrow().attach(weak, &mut listeners)?;
+        self.params.borrow().attach(weak, &mut scope)?;
+        self.exports.borrow().attach(weak, &mut scope)?;
         for l in listeners {
             scope.keep(l);
         }
@@ -180,7 +177,6 @@ impl Page {
     }
 
     fn unmount(&self) {
-        self.frames.borrow_mut().take();
         drop(std::mem::take(&mut *self.scope.borrow_mut()));
         self.arm.borrow_mut().detach();
         self.heat.borrow_mut().detach();
@@ -189,9 +185,7 @@ impl Page {
 
     /// Marks parts dirty for the next animation frame.
     fn invalidate(&self, bits: u32) {
-        if let Some(f) = self.frames.borrow().as_ref() {
-            f.invalidate(bits);
-        }
+        self.frames.invalidate(bits);
     }
 
     /// One animation frame: whatever is dirty, backgrounds first.
@@ -199,6 +193,7 @@ impl Page {
         let st = *self.state.borrow();
         let ink = Ink::current();
         if bits & dirty::LAYOUT != 0 {
+            self.readouts.borrow_mut().layout();
             self.arm.borrow_mut().layout(&st);
             self.heat.borrow_mut().layout(ink);
             self.sweep.borrow_mut().resized();
@@ -224,21 +219,30 @@ impl Page {
         }
     }
 
-    /// The drag frame: pose report, readouts, arm layer, heatmap marker, the one command
-    /// line that depends on the pose.
+    /// The drag frame: pose report, readouts, arm layer, heatmap marker; when no drag is on,
+    /// also the touch handles and the command line that follows q2 (a drag's last frame
+    /// brings them up to date).
     fn draw_frame(&self) {
         let st = *self.state.borrow();
         let ink = Ink::current();
         let report = st.params.arm().report(st.q1, st.q2);
         let ghost = *self.ghost.borrow();
+        let dragging = self.dragging();
         let pinned = {
             let arm = self.arm.borrow();
-            arm.draw_frame(&st, &report, ghost, ink);
+            arm.draw_frame(&st, &report, ghost, ink, !dragging);
             arm.clamp_shown()
         };
         self.readouts.borrow_mut().update(&report, pinned);
-        self.heat.borrow().draw_marker(&st, ghost, ink);
-        self.exports.borrow_mut().update_commands(&st);
+        self.heat.borrow().draw_marker(&st, ghost, ink, !dragging);
+        if !dragging {
+            self.exports.borrow().update_commands(&st);
+        }
+    }
+
+    /// Whether a pointer drags the arm or the heatmap marker.
+    fn dragging(&self) -> bool {
+        self.arm.borrow().dragging() || self.heat.borrow().dragging()
     }
 
     /// Texts the page formats itself, in the current language.
@@ -250,7 +254,9 @@ impl Page {
             .borrow()
             .relocalize(&st.params, *self.ghost.borrow());
         self.params.borrow().relocalize();
-        self.readouts.borrow().relocalize();
+        let report = st.params.arm().report(st.q1, st.q2);
+        let pinned = self.arm.borrow().clamp_shown();
+        self.readouts.borrow().relocalize(&report, pinned);
         self.exports.borrow().relocalize();
         self.sweep.borrow_mut().relocalize(&st.params);
     }
@@ -274,8 +280,7 @@ impl Page {
     /// The pose changed (drag, key, heatmap): redraw the frame layers.
     fn pose_changed(&self) {
         self.invalidate(dirty::FRAME | dirty::PLOT_DATA);
-        let dragging = self.arm.borrow().dragging() || self.heat.borrow().dragging();
-        if !dragging {
+        if !self.dragging() {
             self.schedule_url();
         }
     }
@@ -400,7 +405,7 @@ impl Page {
         }
         let st = *self.state.borrow();
         self.arm.borrow().relocalize(&st);
-        self.exports.borrow_mut().update_commands(&st);
+        self.exports.borrow().update_commands(&st);
         self.invalidate(bits);
         self.schedule_url();
     }
@@ -423,7 +428,7 @@ impl Page {
             self.heat_timer.schedule(0);
         }
         self.relocalize_texts();
-        self.exports.borrow_mut().update_commands(&st);
+        self.exports.borrow().update_commands(&st);
         self.invalidate(dirty::ALL);
         self.write_url();
     }
@@ -441,9 +446,8 @@ impl Page {
     /// Recomputes the workspace grid when its parameters changed, then its overlay.
     fn recompute_workspace(&self) {
         let st = *self.state.borrow();
-        let t0 = now_ms();
-        if self.arm.borrow_mut().recompute_workspace(&st) {
-            self.timings.push("workspace", now_ms() - t0);
+        if let Some(ms) = self.arm.borrow_mut().recompute_workspace(&st) {
+            self.timings.push("workspace", ms);
         }
         self.arm.borrow().relocalize(&st);
         self.invalidate(dirty::ARM_BG);
