@@ -524,6 +524,7 @@ mod tests {
             | CsvTimeNotIncreasing { .. }
             | CsvUnterminatedQuote { .. }
             | InputMissing { .. }
+            | InputNotUtf8 { .. }
             | PointInObstacle { .. }
             | BoxInverted { .. }
             | TooManyValues { .. } => {}
@@ -601,6 +602,10 @@ mod tests {
             CsvUnterminatedQuote { row: 2 },
             InputMissing {
                 name: "my_traj.csv".into(),
+            },
+            InputNotUtf8 {
+                name: "latin1.csv".into(),
+                offset: 1234,
             },
             PointInObstacle {
                 param: "start".into(),

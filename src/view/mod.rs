@@ -8,6 +8,8 @@
 //! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
+//! - [`envelope`]: min/max plot envelope of a CSV table (a million rows in a few thousand points).
+//! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
 //! - [`ik2r`]: the IK page: state and URL, validation, arm view geometry, exports.
 //! - [`pendulum`]: the pendulum page: kept rows, energy error and drift, period, separatrix, URL.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
@@ -15,6 +17,8 @@
 
 pub mod command_line;
 pub mod drag;
+pub mod drills;
+pub mod envelope;
 pub mod form;
 pub mod heatmap;
 pub mod ik2r;

@@ -13,6 +13,7 @@
 //! - [`heatmap`]: colour-map heatmap with a legend.
 //! - [`form`]: the ArgSpec-driven parameter form; [`exports`]: downloads and command lines;
 //!   [`readouts`]: `data-readout` values and a throttled `aria-live` summary.
+//! - [`input_file`]: a file the user opens or drops, decoded as the CLI decodes it.
 //! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
 //! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
 
@@ -22,6 +23,7 @@ pub mod exports;
 pub mod form;
 pub mod frame;
 pub mod heatmap;
+pub mod input_file;
 pub mod keymap;
 pub mod plot;
 pub mod png;
