@@ -99,6 +99,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         "pendulum.ftl",
         include_str!("../locales/en/pendulum.ftl"),
     ),
+    (Lang::En, "traj.ftl", include_str!("../locales/en/traj.ftl")),
     (
         Lang::Ja,
         "shell.ftl",
@@ -127,6 +128,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         "pendulum.ftl",
         include_str!("../locales/ja/pendulum.ftl"),
     ),
+    (Lang::Ja, "traj.ftl", include_str!("../locales/ja/traj.ftl")),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as

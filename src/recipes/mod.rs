@@ -560,6 +560,7 @@ mod facts_tests {
             pages,
             [
                 ("ik-workspace", "ik-2r"),
+                ("traj-resample", "traj-resample"),
                 ("jacobian-2r", "ik-2r"),
                 ("manip-grid", "ik-2r")
             ]

@@ -12,6 +12,7 @@
 //! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
 //! - [`ik2r`]: the IK page: state and URL, validation, arm view geometry, exports.
 //! - [`pendulum`]: the pendulum page: kept rows, energy error and drift, period, separatrix, URL.
+//! - [`traj_resample`]: the trajectory-resampling page: URL, readouts.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
@@ -27,5 +28,6 @@ pub mod plot;
 pub mod progress;
 pub mod stepper;
 pub mod table;
+pub mod traj_resample;
 pub mod url;
 pub mod worker;

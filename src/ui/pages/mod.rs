@@ -8,19 +8,27 @@ pub mod drills;
 pub mod home;
 pub mod ik2r;
 pub mod pendulum;
+pub mod traj_resample;
 
 /// Route id of the home page (`#/`, `#/home`).
 pub const HOME_ID: &str = home::PAGE.id;
 
 /// All pages, in navigation order.
-pub const PAGES: &[PageDef] = &[home::PAGE, ik2r::PAGE, pendulum::PAGE, drills::PAGE];
+pub const PAGES: &[PageDef] = &[
+    home::PAGE,
+    ik2r::PAGE,
+    pendulum::PAGE,
+    traj_resample::PAGE,
+    drills::PAGE,
+];
 
 /// Recipe id → the page where it runs in the browser. The IK page computes and exports the
-/// CSVs of these three recipes.
+/// CSVs of three recipes; traj-resample has its own page.
 pub const RECIPE_PAGES: &[(&str, &str)] = &[
     ("ik-workspace", "ik-2r"),
     ("jacobian-2r", "ik-2r"),
     ("manip-grid", "ik-2r"),
+    ("traj-resample", "traj-resample"),
 ];
 
 /// The page with route id `id`.
