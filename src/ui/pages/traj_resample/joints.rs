@@ -10,11 +10,25 @@ use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
 use crate::view::envelope::Envelope;
-use crate::view::plot::auto_range;
+use crate::view::plot::{auto_range, decimate, LinearScale};
 use crate::view::traj_resample::joint_columns;
 
 /// Panels drawn at most (the readouts count every joint).
 pub const MAX_PANELS: usize = 6;
+
+/// Buckets of the sample dots of a dense input: each dot is its own canvas path (about 10 µs
+/// in headless Chromium), so a million-row file keeps at most four dots per bucket (its first,
+/// lowest, highest and last sample: every spike stays) and draws in a frame; the resampled
+/// line keeps the envelope's full resolution.
+const DOT_BUCKETS: f64 = 200.0;
+
+/// `points` (x ascending) thinned to at most four per dot bucket of `x_range`.
+fn thin_dots(points: &[(f64, f64)], x_range: (f64, f64)) -> Vec<(f64, f64)> {
+    if points.len() <= 4 * DOT_BUCKETS as usize {
+        return points.to_vec();
+    }
+    decimate(points, &LinearScale::new(x_range, (0.0, DOT_BUCKETS)))
+}
 
 /// The plot component.
 pub struct Joints {
@@ -95,9 +109,11 @@ impl Joints {
         });
         for (k, name) in shown.iter().enumerate() {
             self.plot.set_series(k, 0, output.column(name).to_vec());
-            self.plot.set_series(k, 1, input.column(name).to_vec());
+            self.plot
+                .set_series(k, 1, thin_dots(input.column(name), x_range));
         }
-        self.plot.invalidate_all();
+        // No refit here: reading the layout right after the page's texts changed forced a
+        // full layout (130 ms after a big result); the stage's resize observer refits.
     }
 
     /// The stage changed size (or projector mode): refit and redraw everything.

@@ -44,7 +44,7 @@ use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
 use crate::ui::kit::worker::{self, Job, RunOptions, WorkerError, WorkerFile, WorkerInput};
 use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
-use crate::ui::schedule::{now_ms, Timer};
+use crate::ui::schedule::{after_paint, now_ms, Timer};
 use crate::view::command_line::RunArgs;
 use crate::view::envelope::{csv_envelope, Envelope, BUCKETS};
 use crate::view::form::{recipe_fields, runs_while_typing, validate};
@@ -833,8 +833,25 @@ impl Inner {
         }
         self.exports
             .show_run(&s.args, traj_resample::INFO.python, s.input_name.as_deref());
-        self.joints.borrow_mut().set(&s.input, &s.output);
         drop(shown);
+        // The plot in a task of its own, after the browser has laid out the new text: a
+        // million-row result's texts and plot together made one task over 100 ms.
+        let me = self.me.clone();
+        let plotted = after_paint(move || {
+            if let Some(p) = me.upgrade() {
+                p.plot_result();
+            }
+        });
+        if plotted.is_err() {
+            self.plot_result();
+        }
+    }
+
+    /// The shown result's joints into the plot, drawn.
+    fn plot_result(&self) {
+        if let Some(s) = self.shown.borrow().as_ref() {
+            self.joints.borrow_mut().set(&s.input, &s.output);
+        }
         self.draw();
     }
 
