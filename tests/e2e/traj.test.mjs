@@ -163,7 +163,7 @@ function watchLongTasks() {
   }).observe({ type: 'longtask', buffered: true });
 }
 
-test('a 1,000,000-row, ~57 MB file resamples in the worker with progress; the CSV is the CLI\'s; no long task', { timeout: 600_000 }, async () => {
+test('a 1,000,000-row, ~57 MB file resamples in the worker with progress and Cancel; the CSV is the CLI\'s; no long task', { timeout: 600_000 }, async () => {
   // t from 0 by 1 ms, five joints: about 57 MB.
   const rows = 1_000_000;
   const lines = ['t_s,q1,q2,q3,q4,q5'];
@@ -210,6 +210,17 @@ test('a 1,000,000-row, ~57 MB file resamples in the worker with progress; the CS
     const want = cliOnBytes('big.csv', bytes, '0.001');
     assertSameBytes(await download(page, 'traj_resampled.csv'), want.csv, '1,000,000 rows');
     assert.ok(longest['1,000,000 rows'] < 100, `longest main-thread task ${longest['1,000,000 rows']} ms (long tasks: ${tasks.join(', ')})`);
+    // Another dt starts a new worker run; Cancel stops it and the last result stays.
+    await page.locator('[data-field="dt"]').fill('0.0005');
+    await page.locator('[data-testid="progress"]').waitFor({ state: 'visible', timeout: 20000 });
+    const status = await page.locator('[data-testid="traj-status"]').innerText();
+    assert.equal(await page.locator('[data-testid="traj-resample-page"]').getAttribute('data-state'), 'running', status);
+    await page.locator('[data-testid="progress-cancel"]').click();
+    await page.locator('[data-testid="progress"]').waitFor({ state: 'hidden' });
+    await page.waitForTimeout(1500);
+    assert.equal(await page.locator('[data-testid="traj-resample-page"]').getAttribute('data-state'), 'ready');
+    assert.equal(await readout(page, 'rows_out'), '1,000,000', 'the cancelled run never lands');
+    assertSameBytes(await download(page, 'traj_resampled.csv'), want.csv, 'kept after Cancel');
     assert.deepEqual(errors, []);
   } finally {
     await context.close();

@@ -20,7 +20,7 @@ pub const MAX_PANELS: usize = 6;
 /// in headless Chromium), so a million-row file keeps at most four dots per bucket (its first,
 /// lowest, highest and last sample: every spike stays) and draws in a frame; the resampled
 /// line keeps the envelope's full resolution.
-const DOT_BUCKETS: f64 = 200.0;
+const DOT_BUCKETS: f64 = 100.0;
 
 /// `points` (x ascending) thinned to at most four per dot bucket of `x_range`.
 fn thin_dots(points: &[(f64, f64)], x_range: (f64, f64)) -> Vec<(f64, f64)> {
@@ -30,12 +30,17 @@ fn thin_dots(points: &[(f64, f64)], x_range: (f64, f64)) -> Vec<(f64, f64)> {
     decimate(points, &LinearScale::new(x_range, (0.0, DOT_BUCKETS)))
 }
 
+/// A series' points, `(t, q)`.
+type Points = Vec<(f64, f64)>;
+
 /// The plot component.
 pub struct Joints {
     pub plot: Plot,
     /// Joints in the plot (for the note when some are not drawn).
     pub drawn: usize,
     pub total: usize,
+    /// Per panel: the resampled line and the sample dots, until [`Joints::fill`].
+    pending: Vec<(Points, Points)>,
 }
 
 impl Joints {
@@ -47,11 +52,12 @@ impl Joints {
             plot,
             drawn: 0,
             total: 0,
+            pending: Vec::new(),
         })
     }
 
-    /// New axes and data for `input` (samples) and `output` (resampled), labels in the
-    /// current language.
+    /// New axes for `input` (samples) and `output` (resampled), labels in the current
+    /// language, the data emptied; their series wait for [`Joints::fill`].
     pub fn set(&mut self, input: &Envelope, output: &Envelope) {
         let joints = joint_columns(&output.header);
         self.total = joints.len();
@@ -98,6 +104,7 @@ impl Joints {
                 }
             })
             .collect();
+        self.plot.clear();
         self.plot.set_spec(PlotSpec {
             x: AxisSpec {
                 title: ctx::t("traj-axis-time"),
@@ -107,13 +114,27 @@ impl Joints {
             panels,
             cursor_rgb: (90, 90, 90),
         });
-        for (k, name) in shown.iter().enumerate() {
-            self.plot.set_series(k, 0, output.column(name).to_vec());
-            self.plot
-                .set_series(k, 1, thin_dots(input.column(name), x_range));
-        }
+        self.pending = shown
+            .iter()
+            .map(|name| {
+                (
+                    output.column(name).to_vec(),
+                    thin_dots(input.column(name), x_range),
+                )
+            })
+            .collect();
         // No refit here: reading the layout right after the page's texts changed forced a
         // full layout (130 ms after a big result); the stage's resize observer refits.
+    }
+
+    /// Hands the series kept by [`Joints::set`] to the plot (drawn by the next
+    /// [`Joints::draw`]): the page draws the axes and the data in two tasks, so neither of a
+    /// million-row result's frames is long.
+    pub fn fill(&mut self) {
+        for (k, (line, dots)) in std::mem::take(&mut self.pending).into_iter().enumerate() {
+            self.plot.set_series(k, 0, line);
+            self.plot.set_series(k, 1, dots);
+        }
     }
 
     /// The stage changed size (or projector mode): refit and redraw everything.

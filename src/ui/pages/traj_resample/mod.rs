@@ -188,6 +188,11 @@ impl Page for TrajResample {
                 }
             })?
         };
+        let page: Element = dom::find(
+            &root,
+            "[data-testid=\"traj-resample-page\"]",
+            "traj-resample",
+        )?;
         let exports = Exports::find(&root, PREFIX)?;
         let readouts = Readouts::find(&root)?;
         let status_line: Element = role(&root, "status")?;
@@ -203,7 +208,7 @@ impl Page for TrajResample {
             let run_timer = scope.timer(me, Inner::run);
             Inner {
                 me: me.clone(),
-                page: root.clone(),
+                page,
                 root: root.clone(),
                 status_line,
                 form: RefCell::new(form),
@@ -847,12 +852,23 @@ impl Inner {
         }
     }
 
-    /// The shown result's joints into the plot, drawn.
+    /// The shown result's joints into the plot: the axes drawn now, the data in the next
+    /// task (together they made one long task after a million-row result on a busy machine).
     fn plot_result(&self) {
         if let Some(s) = self.shown.borrow().as_ref() {
             self.joints.borrow_mut().set(&s.input, &s.output);
         }
         self.draw();
+        let me = self.me.clone();
+        let fill = move || {
+            if let Some(p) = me.upgrade() {
+                p.joints.borrow_mut().fill();
+                p.draw();
+            }
+        };
+        if let Err(e) = after_paint(fill) {
+            web_sys::console::warn_1(&e);
+        }
     }
 
     fn draw(&self) {
