@@ -7,9 +7,11 @@ use std::fmt;
 
 use crate::pyfmt::{human, py_float};
 
-/// Everything a kernel, the argument parser or the CSV reader can reject.
+/// Everything a kernel, the argument parser or the CSV reader can reject. Serializable, so a
+/// run in a Web Worker hands the page the error itself (`crate::ui::kit::worker`), which the
+/// page then shows exactly as an error of a run of its own.
 #[non_exhaustive]
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum RecipeError {
     /// No recipe has this id.
     UnknownRecipe { id: String },
@@ -83,6 +85,10 @@ pub enum RecipeError {
     CsvUnterminatedQuote { row: usize },
     /// A path argument naming an input file that was not attached (opened) with the run.
     InputMissing { name: String },
+    /// An input file that is not UTF-8 text: the first byte that is not valid UTF-8, counted
+    /// from 0 at the file's start (a byte-order mark included). The CLI and the pages decode
+    /// input files the same way ([`crate::recipes::decode_input`]).
+    InputNotUtf8 { name: String, offset: u64 },
     /// A point (rrt-2d's `start` or `goal`) inside obstacle box `index` (1-based, edges
     /// included).
     PointInObstacle {
@@ -135,6 +141,7 @@ impl RecipeError {
             CsvTimeNotIncreasing { .. } => "err-csv-time-not-increasing",
             CsvUnterminatedQuote { .. } => "err-csv-unterminated-quote",
             InputMissing { .. } => "err-input-missing",
+            InputNotUtf8 { .. } => "err-input-not-utf8",
             PointInObstacle { .. } => "err-point-in-obstacle",
             BoxInverted { .. } => "err-box-inverted",
             TooManyValues { .. } => "err-too-many-values",
@@ -237,6 +244,7 @@ impl RecipeError {
                 vec![("row", row.to_string())]
             }
             InputMissing { name } => vec![("name", name.clone())],
+            InputNotUtf8 { name, offset } => vec![("name", name.clone()), ("offset", c(offset))],
             PointInObstacle { param, x, y, index } => vec![
                 l(param),
                 ("x", n(x)),
@@ -432,6 +440,11 @@ impl fmt::Display for RecipeError {
             InputMissing { name } => {
                 write!(f, "input file '{name}' not found (open it first)")
             }
+            InputNotUtf8 { name, offset } => write!(
+                f,
+                "'{name}' is not UTF-8 text: byte {} (counted from 0) is not valid UTF-8; save it as UTF-8",
+                c(*offset)
+            ),
             PointInObstacle { param, x, y, index } => write!(
                 f,
                 "{param}: ({}, {}) lies inside obstacle {index} (edges included); move it out of the box",

@@ -105,6 +105,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         "signals.ftl",
         include_str!("../locales/en/signals.ftl"),
     ),
+    (Lang::En, "traj.ftl", include_str!("../locales/en/traj.ftl")),
     (
         Lang::Ja,
         "shell.ftl",
@@ -139,6 +140,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         "signals.ftl",
         include_str!("../locales/ja/signals.ftl"),
     ),
+    (Lang::Ja, "traj.ftl", include_str!("../locales/ja/traj.ftl")),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as
@@ -536,6 +538,7 @@ mod tests {
             | CsvTimeNotIncreasing { .. }
             | CsvUnterminatedQuote { .. }
             | InputMissing { .. }
+            | InputNotUtf8 { .. }
             | PointInObstacle { .. }
             | BoxInverted { .. }
             | TooManyValues { .. } => {}
@@ -613,6 +616,10 @@ mod tests {
             CsvUnterminatedQuote { row: 2 },
             InputMissing {
                 name: "my_traj.csv".into(),
+            },
+            InputNotUtf8 {
+                name: "latin1.csv".into(),
+                offset: 1234,
             },
             PointInObstacle {
                 param: "start".into(),

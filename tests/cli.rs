@@ -113,6 +113,42 @@ fn bad_input_exits_2_names_the_argument_and_writes_nothing() {
 }
 
 #[test]
+fn an_input_that_is_not_utf8_is_refused_naming_the_byte_offset() {
+    let dir = temp_dir("latin1");
+    let input = dir.join("latin1.csv");
+    // `é` in Latin-1 (0xE9) on the second line: byte 23 of the file, counted from 0.
+    std::fs::write(&input, b"t_s,q1,note\n0.0,0.0,caf\xe9\n0.1,1.0,x\n").unwrap();
+    let out_dir = dir.join("out");
+    std::fs::create_dir_all(&out_dir).unwrap();
+    let out = bsv(&[
+        "traj-resample",
+        input.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("is not UTF-8 text: byte 23 "), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert_eq!(std::fs::read_dir(&out_dir).unwrap().count(), 0);
+    // A byte-order mark is UTF-8: read as the file without it.
+    let bom = dir.join("bom.csv");
+    std::fs::write(&bom, b"\xef\xbb\xbft_s,q1\r\n0.0,0.0\r\n0.1,1.0\r\n").unwrap();
+    let out = bsv(&[
+        "traj-resample",
+        bom.to_str().unwrap(),
+        "0.05",
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
 fn help_lists_every_recipe_with_defaults() {
     let out = bsv(&["--help"]);
     assert!(out.status.success());

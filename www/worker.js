@@ -28,7 +28,9 @@ self.onmessage = async ({ data }) => {
   };
   let out;
   try {
-    out = workerRunRecipe(data.id, data.args, data.names, data.texts, progress);
+    // Input files sent as Blobs are read here; the wasm decodes their bytes as the CLI does.
+    const inputs = await Promise.all(data.texts.map(async (t) => (typeof t === 'string' ? t : new Uint8Array(await t.arrayBuffer()))));
+    out = workerRunRecipe(data.id, data.args, data.names, inputs, progress, data.envelope ?? 0);
   } catch (error) {
     // A panic (or an exception) in the kernel: the instance may be unusable; the page starts
     // a fresh worker for its next run.
@@ -36,7 +38,7 @@ self.onmessage = async ({ data }) => {
     return;
   }
   if (!out.ok) {
-    self.postMessage({ job, type: 'error', param: out.param, en: out.en, ja: out.ja, english: out.english, i18n: out.i18n });
+    self.postMessage({ job, type: 'error', error: out.error, param: out.param, en: out.en, ja: out.ja, english: out.english, i18n: out.i18n });
     return;
   }
   const files = out.files.map((f) => ({
@@ -45,6 +47,8 @@ self.onmessage = async ({ data }) => {
     rows: f.rows,
     head: f.head,
     blob: new Blob([f.data], { type: 'text/csv' }),
+    envelope: f.envelope,
   }));
-  self.postMessage({ job, type: 'done', summary: out.summary, warnings: out.warnings, i18n: out.i18n, files });
+  const transfer = [...files, ...out.inputs].flatMap((f) => (f.envelope ? f.envelope.series.map((s) => s.buffer) : []));
+  self.postMessage({ job, type: 'done', summary: out.summary, warnings: out.warnings, i18n: out.i18n, files, inputs: out.inputs }, transfer);
 };

@@ -26,9 +26,6 @@ drills-failed = The drill stopped with an error; the message says why.
 
 ## Notices about the link the page was opened with
 drills-url-unknown-recipe = This link names a drill that does not exist (“{ $id }”); showing “{ $title }” instead.
-drills-url-ignored = This link has values this drill does not take, which were ignored: { $keys }.
-drills-url-invalid = Some values in this link are not valid ({ $keys }); the message beside each field says why.
-drills-url-file = This link used the file “{ $name }”; open it again to run.
 
 ## Result
 drills-output-title = Result

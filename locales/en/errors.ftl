@@ -28,6 +28,7 @@ err-csv-bad-cell = CSV line { $row }, column { $column }: “{ $value }” is no
 err-csv-time-not-increasing = CSV line { $row }: t_s must be larger than on the line before (time must always increase).
 err-csv-unterminated-quote = CSV line { $row }: a value opened with a quote (") is never closed.
 err-input-missing = The input file “{ $name }” is not open. Open the file first, then run again.
+err-input-not-utf8 = “{ $name }” is not UTF-8 text: the byte at offset { $offset } (counted from 0) is not valid UTF-8. Save the file as UTF-8 (in a spreadsheet: “CSV UTF-8”) and open it again.
 err-too-many-rows = { $label }: with these values the table would have { $count } rows; the limit is { $limit }. Use a larger step or a shorter span.
 err-grid-too-large = { $label }: with these values the grid would be { $side } × { $side } cells; the limit is { $limit } × { $limit }. Use a larger step or a smaller half-extent.
 err-point-in-obstacle = { $label }: the point ({ $x }, { $y }) lies inside obstacle { $index } (its edges count as inside). Move it out of the box, or move the box.

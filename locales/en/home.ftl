@@ -16,3 +16,4 @@ home-card-python = Python original
 home-card-drill = Run this drill
 home-card-in-browser = In the browser:
 home-card-pairs-ik-2r = Pairs with our IK playground (the one the BSV seed calls the “IK Field Lab”): drag the arm there and watch |det J| change.
+home-card-pairs-traj-resample = Runs live on its own page: open your CSV or drop it there, and see every joint resampled.

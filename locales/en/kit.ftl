@@ -1,8 +1,10 @@
 # Messages of the page kit's widgets (src/ui/kit). Ids start with `kit-`.
 
 ## URL state notice (kit::url_state)
-kit-url-unknown = This link asked for settings this page does not have, so they were ignored: { $keys }.
+kit-url-unknown = This link has settings this page does not take, which were ignored: { $keys }.
 kit-url-invalid = These settings in the link could not be used and kept their defaults: { $keys }.
+kit-url-flagged = Some values in this link are not valid ({ $keys }); the message beside each field says why.
+kit-url-file = This link used the file “{ $name }”; open it again to run.
 
 ## Stepper (kit::stepper)
 kit-stepper-label = Step through

@@ -26,9 +26,6 @@ drills-failed = ドリルはエラーで止まりました。理由はメッセ�
 
 ## ページを開いたリンクについてのお知らせ
 drills-url-unknown-recipe = このリンクのドリル「{ $id }」は存在しないため、代わりに「{ $title }」を表示しています。
-drills-url-ignored = このリンクには、このドリルが受け付けない値が含まれていたため、無視しました：{ $keys }
-drills-url-invalid = このリンクの値の一部が正しくありません（{ $keys }）。理由は各欄の横のメッセージを見てください。
-drills-url-file = このリンクではファイル「{ $name }」が使われていました。実行するには、もう一度開いてください。
 
 ## 結果
 drills-output-title = 結果

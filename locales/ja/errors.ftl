@@ -25,6 +25,7 @@ err-csv-bad-cell = CSV の { $row } 行目、列 { $column }：「{ $value }」�
 err-csv-time-not-increasing = CSV の { $row } 行目：t_s は前の行より大きくしてください（時刻は常に増えていく必要があります）。
 err-csv-unterminated-quote = CSV の { $row } 行目：引用符（"）で始まった値が閉じられていません。
 err-input-missing = 入力ファイル「{ $name }」が開かれていません。先にファイルを開いてから、もう一度実行してください。
+err-input-not-utf8 = 「{ $name }」は UTF-8 のテキストではありません：オフセット { $offset }（先頭を 0 とする）のバイトが UTF-8 として正しくありません。UTF-8 で保存し直して（表計算ソフトなら「CSV UTF-8」）、もう一度開いてください。
 err-too-many-rows = { $label }：この組み合わせでは表が { $count } 行になり、上限の { $limit } 行を超えます。刻みを大きくするか、範囲を短くしてください。
 err-grid-too-large = { $label }：この組み合わせでは格子が { $side } × { $side } セルになり、上限の { $limit } × { $limit } セルを超えます。刻みを大きくするか、半幅を小さくしてください。
 err-point-in-obstacle = { $label }：点（{ $x }, { $y }）が障害物 { $index } の内側にあります（箱の辺の上も内側とみなします）。点を箱の外へ動かすか、箱を動かしてください。

@@ -16,3 +16,4 @@ home-card-python = 元の Python
 home-card-drill = このドリルを実行する
 home-card-in-browser = ブラウザで試す：
 home-card-pairs-ik-2r = IK プレイグラウンド（BSV の元の資料では「IK Field Lab」と呼ばれているもの）と組み合わせて使えます。そこでアームを動かすと |det J| の変化が見られます。
+home-card-pairs-traj-resample = 専用のページでそのまま動かせます。CSV を開くかドロップすると、各関節のリサンプリング結果が見られます。

@@ -3,6 +3,8 @@
 ## URL の状態の通知（kit::url_state）
 kit-url-unknown = このリンクには、このページにない設定が含まれていたため無視しました：{ $keys }。
 kit-url-invalid = リンクの次の設定は使えなかったため、既定値のままです：{ $keys }。
+kit-url-flagged = このリンクの値の一部が正しくありません（{ $keys }）。理由は各欄の横のメッセージを見てください。
+kit-url-file = このリンクではファイル「{ $name }」が使われていました。実行するには、もう一度開いてください。
 
 ## ステッパー（kit::stepper）
 kit-stepper-label = ステップ実行

@@ -122,8 +122,8 @@ fn read_inputs(recipe: &Recipe, args: &[String]) -> Result<Vec<(String, String)>
             )));
         }
         let bytes = fs::read(path.as_str()).map_err(fail)?;
-        let text = String::from_utf8(bytes)
-            .map_err(|_| Failure::Usage(format!("{id}: '{path}' is not UTF-8 text")))?;
+        let text = recipes::decode_input(path, &bytes)
+            .map_err(|e| Failure::Usage(format!("{id}: {e}")))?;
         inputs.push(((*path).clone(), text));
     }
     Ok(inputs)

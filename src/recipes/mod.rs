@@ -360,6 +360,30 @@ pub fn plan(id: &str, raw: &[String], inputs: Vec<(String, String)>) -> Result<P
     (recipe.info.plan)(&parse_args(id, raw)?.with_inputs(inputs))
 }
 
+/// The text of input file `name` from its bytes: the one decoding policy of the CLI and the
+/// pages. The bytes must be UTF-8 (a byte-order mark is allowed; the CSV reader drops it);
+/// anything else is refused with the offset of the first byte that is not valid UTF-8, never
+/// guessed or replaced, so a page and `bsv` always read the same numbers from the same file.
+///
+/// ```
+/// use bsv_playground::error::RecipeError;
+/// use bsv_playground::recipes::decode_input;
+/// assert_eq!(decode_input("a.csv", b"t_s,q1\n").unwrap(), "t_s,q1\n");
+/// assert_eq!(
+///     decode_input("a.csv", b"t_s,q\xe9\n"),
+///     Err(RecipeError::InputNotUtf8 { name: "a.csv".into(), offset: 5 })
+/// );
+/// ```
+pub fn decode_input(name: &str, bytes: &[u8]) -> Result<String, RecipeError> {
+    match std::str::from_utf8(bytes) {
+        Ok(text) => Ok(text.to_string()),
+        Err(e) => Err(RecipeError::InputNotUtf8 {
+            name: name.to_string(),
+            offset: e.valid_up_to() as u64,
+        }),
+    }
+}
+
 #[cfg(test)]
 mod facts_tests {
     // The same tests run natively and, under `wasm-pack test --node`, as wasm.
@@ -536,6 +560,7 @@ mod facts_tests {
             pages,
             [
                 ("ik-workspace", "ik-2r"),
+                ("traj-resample", "traj-resample"),
                 ("jacobian-2r", "ik-2r"),
                 ("manip-grid", "ik-2r")
             ]

@@ -93,7 +93,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     writes: &[RESAMPLED_NAME, SAMPLE_NAME],
     quirks_id: "recipe-traj-resample-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("traj-resample"),
 };
 
 /// The recipe's arguments; `Default` is the recipe's (the sample, 0.02 s).

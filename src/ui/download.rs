@@ -1,5 +1,6 @@
-//! Saving files from the page: text (CSV) through a Blob and a temporary object URL, and a
-//! canvas as PNG, both by clicking a temporary `<a download>`; no server round trip.
+//! Saving files from the page: a Blob (text or CSV made on the page, or a file a worker run
+//! built) through a temporary object URL, and a canvas as PNG, both by clicking a temporary
+//! `<a download>`; no server round trip. One helper, [`download_blob`], serves every Blob.
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -24,6 +25,10 @@ fn click_link(href: &str, file_name: &str) -> Result<(), JsValue> {
     Ok(())
 }
 
+/// How long an object URL of a download lives, ms: the browser reads it after the click
+/// returns, and a large Blob may take a while to be written.
+const REVOKE_AFTER_MS: i32 = 60_000;
+
 /// Offers `text` for download as `file_name` with MIME type `mime` (e.g. `text/csv`). The
 /// bytes are exactly the UTF-8 of `text`.
 pub fn download_text(file_name: &str, text: &str, mime: &str) -> Result<(), JsValue> {
@@ -32,16 +37,21 @@ pub fn download_text(file_name: &str, text: &str, mime: &str) -> Result<(), JsVa
     let options = BlobPropertyBag::new();
     options.set_type(mime);
     let blob = Blob::new_with_str_sequence_and_options(&parts, &options)?;
-    let url = Url::create_object_url_with_blob(&blob)?;
+    download_blob(&blob, file_name)
+}
+
+/// Offers `blob` for download as `file_name`: an object URL on a temporary `<a download>`,
+/// revoked a minute later. Nothing is read or copied on the main thread, whatever the size.
+pub fn download_blob(blob: &Blob, file_name: &str) -> Result<(), JsValue> {
+    let url = Url::create_object_url_with_blob(blob)?;
     let result = click_link(&url, file_name);
-    // Revoke a little later: the download reads the URL after the click returns.
     let revoke = Closure::once_into_js(move || {
         let _ = Url::revoke_object_url(&url);
     });
     if let Some(window) = web_sys::window() {
         window.set_timeout_with_callback_and_timeout_and_arguments_0(
             revoke.unchecked_ref(),
-            10_000,
+            REVOKE_AFTER_MS,
         )?;
     }
     result

@@ -8,6 +8,8 @@
 //! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
+//! - [`envelope`]: min/max plot envelope of a CSV table (a million rows in a few thousand points).
+//! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
 //! - [`ik2r`]: the IK page: state and URL, validation, arm view geometry, exports.
 //! - [`pendulum`]: the pendulum page: kept rows, energy error and drift, period, separatrix, URL.
 //! - [`rrt`]: the RRT stepper page: state and URL, command lines, world editor hit tests and
@@ -16,12 +18,15 @@
 //!   [`cubic_path`]: the cubic page's coefficients, peaks and overlays;
 //!   [`pid_step`]: rise time, overshoot, settling, steady-state error and peak u;
 //!   [`trapezoid_profile`]: the phases of a profile, triangles, the ramp-corner drag.
+//! - [`traj_resample`]: the trajectory-resampling page: URL, readouts.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
 pub mod command_line;
 pub mod cubic_path;
 pub mod drag;
+pub mod drills;
+pub mod envelope;
 pub mod form;
 pub mod heatmap;
 pub mod ik2r;
@@ -33,6 +38,7 @@ pub mod rrt;
 pub mod signal;
 pub mod stepper;
 pub mod table;
+pub mod traj_resample;
 pub mod trapezoid_profile;
 pub mod url;
 pub mod worker;

@@ -116,6 +116,12 @@ pub enum IgnoredReason {
     Unknown,
     /// The page has the key but could not use its value (the default stays).
     Invalid,
+    /// The page put the value in its field, where a message beside it says why it is not
+    /// valid (a form page keeps what the link typed).
+    Flagged,
+    /// The key names an input file (its value the file's name) that the link cannot carry:
+    /// the user has to open it again.
+    File,
 }
 
 /// A key of the URL the page did not use, for the notice that says so.
@@ -139,6 +145,23 @@ impl IgnoredKey {
         IgnoredKey {
             key: key.into(),
             reason: IgnoredReason::Invalid,
+        }
+    }
+
+    /// A key whose value stays in its field, flagged there as not valid.
+    pub fn flagged(key: impl Into<String>) -> IgnoredKey {
+        IgnoredKey {
+            key: key.into(),
+            reason: IgnoredReason::Flagged,
+        }
+    }
+
+    /// The name of an input file the link used (`key` holds the file's name, not the query
+    /// key), to be opened again.
+    pub fn file(name: impl Into<String>) -> IgnoredKey {
+        IgnoredKey {
+            key: name.into(),
+            reason: IgnoredReason::File,
         }
     }
 }

@@ -7,8 +7,8 @@
 // (1280×800 English and Japanese, 390×844) go to tests/e2e/out/.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync } from 'node:fs';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { startServer, openApp, closeBrowser, OUT, ROOT } from './harness.mjs';
@@ -342,6 +342,33 @@ test('traj-resample: a user CSV gives the CLI bytes; a bad CSV names its row; th
     assert.deepEqual(linked.errors, []);
   } finally {
     await linked.close();
+  }
+});
+
+test('traj-resample: a file that is not UTF-8 is refused beside the picker with its byte offset, as bsv refuses it', async () => {
+  const { page, errors, close } = await openDrills('#/drills?recipe=traj-resample');
+  try {
+    await waitRuns(page, 0);
+    const good = await summary(page);
+    // `é` in Latin-1 (0xE9): byte 23 of the file, counted from 0.
+    const latin1 = Buffer.from([...Buffer.from('t_s,q1,note\n0.0,0.0,caf'), 0xe9, ...Buffer.from('\n0.1,1.0,x\n')]);
+    await page.locator('[data-testid="drills-file"]').setInputFiles({ name: 'latin1.csv', mimeType: 'text/csv', buffer: latin1 });
+    const message = page.locator('[data-field-error="csv_path"]');
+    await message.waitFor({ state: 'visible' });
+    assert.equal(await message.innerText(), '“latin1.csv” is not UTF-8 text: the byte at offset 23 (counted from 0) is not valid UTF-8. Save the file as UTF-8 (in a spreadsheet: “CSV UTF-8”) and open it again.');
+    assert.equal(await summary(page), good, 'the last result stays');
+    // The CLI refuses the same bytes, naming the same offset.
+    const dir = mkdtempSync(join(tmpdir(), 'drills-latin1-'));
+    writeFileSync(join(dir, 'latin1.csv'), latin1);
+    const cliRun = spawnSync(BSV, ['traj-resample', 'latin1.csv', '--out', dir], { cwd: dir, encoding: 'utf8' });
+    assert.equal(cliRun.status, 2);
+    assert.match(cliRun.stderr, /'latin1\.csv' is not UTF-8 text: byte 23 /);
+    rmSync(dir, { recursive: true, force: true });
+    await page.locator('[data-testid="lang-switch"]').click();
+    assert.match(await message.innerText(), /「latin1\.csv」は UTF-8 のテキストではありません：オフセット 23/);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
   }
 });
 

@@ -185,3 +185,60 @@ test('a worker run shows its warnings in both languages and downloads the CLI by
     await close();
   }
 });
+
+/** A trajectory CSV of `rows` data rows (t_s from 0 by 1 ms, one joint), over 4 MiB for
+ * 300,000 rows: the drills page sizes such a file only by running it, in the worker. */
+function bigTrajectory(rows, badRow) {
+  const lines = ['t_s,q1'];
+  for (let i = 0; i < rows; i += 1) lines.push(`${(i / 1000).toFixed(3)},${i === badRow ? 'abc' : Math.sin(i / 5000).toFixed(9)}`);
+  return Buffer.from(`${lines.join('\n')}\n`);
+}
+
+test('a recipe error from a worker run shows beside its field, as a run on the page shows it', { timeout: 300_000 }, async () => {
+  const { page, errors, close } = await openDrills('#/drills?recipe=traj-resample');
+  try {
+    await page.waitForFunction(() => Number(document.querySelector('[data-testid="drills-output"]').dataset.run) > 0, null, { timeout: 20000 });
+    const file = page.locator('[data-testid="drills-file"]');
+    const fileError = page.locator('[data-field-error="csv_path"]');
+    const general = page.locator('[data-testid="drills-error"]');
+
+    // A run on the page (small file): the bad cell's message beside the file picker.
+    await file.setInputFiles({ name: 'small.csv', mimeType: 'text/csv', buffer: Buffer.from('t_s,q1\n0,0\n0.1,abc\n0.2,1\n') });
+    await fileError.waitFor({ state: 'visible' });
+    assert.equal(await fileError.innerText(), 'CSV line 3, column q1: “abc” is not a number.');
+
+    // The same kind of error from a worker run (a 5 MB file, its last row bad): same place,
+    // same words, the field marked, nothing under the form.
+    const rows = 300_000;
+    const big = bigTrajectory(rows, rows - 1);
+    assert.ok(big.length > 4 * 1024 * 1024, `${big.length} bytes`);
+    const runs = await runCount(page);
+    await file.setInputFiles({ name: 'big.csv', mimeType: 'text/csv', buffer: big });
+    await page.waitForFunction(() => /big\.csv/.test(document.querySelector('[data-testid="drills-file-status"]').textContent), null, { timeout: 20000 });
+    await page.locator('[data-testid="drills-run"]').click();
+    await page.waitForFunction(() => /CSV line/.test(document.querySelector('[data-field-error="csv_path"]').textContent), null, { timeout: 120_000 });
+    // The row as the page's own run words it (the kernel's number, unformatted).
+    assert.equal(await fileError.innerText(), `CSV line ${rows + 1}, column q1: “abc” is not a number.`);
+    assert.equal(await fileError.isVisible(), true);
+    assert.equal(await page.locator('[data-file-input]').getAttribute('aria-invalid'), 'true');
+    assert.equal(await general.isVisible(), false, 'nothing under the form');
+    assert.equal(await runCount(page), runs, 'no result from the failed run');
+    await page.locator('[data-testid="lang-switch"]').click();
+    assert.equal(await fileError.innerText(), `CSV の ${rows + 1} 行目、列 q1：「abc」は数値ではありません。`);
+    await page.locator('[data-testid="lang-switch"]').click();
+
+    // An error about an argument (too many output rows at this dt) goes beside that argument.
+    await file.setInputFiles({ name: 'good.csv', mimeType: 'text/csv', buffer: bigTrajectory(rows, -1) });
+    await page.waitForFunction(() => /good\.csv/.test(document.querySelector('[data-testid="drills-file-status"]').textContent), null, { timeout: 20000 });
+    await page.locator('[data-field="dt"]').fill('0.00001');
+    await page.locator('[data-testid="drills-run"]').click();
+    const dtError = page.locator('[data-field-error="dt"]');
+    await dtError.waitFor({ state: 'visible', timeout: 120_000 });
+    assert.match(await dtError.innerText(), /the table would have [\d,]+ rows; the limit is 20,000,000/);
+    assert.equal(await page.locator('[data-field="dt"]').getAttribute('aria-invalid'), 'true');
+    assert.equal(await general.isVisible(), false, 'nothing under the form');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

@@ -16,6 +16,7 @@
 //!   [`exports`]: downloads and command lines (one run or several); [`readouts`]:
 //!   `data-readout` values and a paced `aria-live` summary.
 //! - [`recipe_controls`]: form + sliders + URL + exports of a page that runs one recipe live.
+//! - [`input_file`]: a file the user opens or drops, decoded as the CLI decodes it.
 //! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
 //! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
 
@@ -25,6 +26,7 @@ pub mod exports;
 pub mod form;
 pub mod frame;
 pub mod heatmap;
+pub mod input_file;
 pub mod keymap;
 pub mod plot;
 pub mod png;

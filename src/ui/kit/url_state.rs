@@ -58,13 +58,25 @@ impl UrlWriter {
     pub fn schedule(&self) {
         self.timer.schedule(DEBOUNCE_MS);
     }
+
+    /// Writes `ms` after the last call (0: in a task of its own, e.g. after a big result,
+    /// where `history.replaceState` alone can take tens of milliseconds).
+    pub fn schedule_in(&self, ms: i32) {
+        self.timer.schedule(ms);
+    }
 }
+
+/// A page's own first sentence of the notice, formatted in the current language on each
+/// render (e.g. the drills page's "This link names a drill that does not exist").
+pub type NoticeLead = Box<dyn Fn() -> String>;
 
 /// The localized notice about the keys of the opened link the page ignored: hidden when there
 /// are none; "This link's … were ignored: L2, q1" otherwise, re-rendered on a language switch.
+/// A page may put a sentence of its own first ([`UrlNotice::set_lead`]).
 pub struct UrlNotice {
     element: Element,
     keys: RefCell<Vec<IgnoredKey>>,
+    lead: RefCell<Option<NoticeLead>>,
 }
 
 impl UrlNotice {
@@ -74,6 +86,7 @@ impl UrlNotice {
         let notice = UrlNotice {
             element,
             keys: RefCell::new(keys),
+            lead: RefCell::new(None),
         };
         notice.relocalize();
         Ok(notice)
@@ -90,9 +103,32 @@ impl UrlNotice {
         self.relocalize();
     }
 
+    /// The keys shown now.
+    pub fn keys(&self) -> Vec<IgnoredKey> {
+        self.keys.borrow().clone()
+    }
+
+    /// Puts the page's own sentence first (`None`: none), shown even without keys.
+    pub fn set_lead(&self, lead: Option<NoticeLead>) {
+        *self.lead.borrow_mut() = lead;
+        self.relocalize();
+    }
+
+    /// Replaces the keys and the lead at once (one render).
+    pub fn set_all(&self, keys: Vec<IgnoredKey>, lead: Option<NoticeLead>) {
+        *self.keys.borrow_mut() = keys;
+        *self.lead.borrow_mut() = lead;
+        self.relocalize();
+    }
+
     /// Re-renders the text in the current language.
     pub fn relocalize(&self) {
-        let text = notice_text(&self.keys.borrow());
+        let lead = self.lead.borrow().as_ref().map(|lead| lead());
+        let keys = notice_text(&self.keys.borrow());
+        let text = match (lead, keys) {
+            (Some(lead), Some(keys)) => Some(format!("{lead} {keys}")),
+            (lead, keys) => lead.or(keys),
+        };
         dom::show(&self.element, text.is_some());
         self.element.set_text_content(text.as_deref());
     }
@@ -120,6 +156,16 @@ pub fn notice_text(keys: &[IgnoredKey]) -> Option<String> {
             "kit-url-invalid",
             &[("keys", invalid.join(", "))],
         ));
+    }
+    let flagged = list(IgnoredReason::Flagged);
+    if !flagged.is_empty() {
+        parts.push(ctx::t_strings(
+            "kit-url-flagged",
+            &[("keys", flagged.join(", "))],
+        ));
+    }
+    for name in list(IgnoredReason::File) {
+        parts.push(ctx::t_strings("kit-url-file", &[("name", name)]));
     }
     (!parts.is_empty()).then(|| parts.join(" "))
 }

@@ -15,10 +15,19 @@
 //!   message of a cancelled job that arrives late is ignored (every message carries its job
 //!   number).
 //!
-//! Messages, page → worker: `{ job, id, args: [..], names: [..], texts: [..] }`; worker →
-//! page: `{ job, type: "progress", done, total }` (at most ~10 a second), `{ job, type: "done",
-//! summary, warnings: [{en, ja}], i18n: [..], files: [{ name, blob, bytes, rows, head }] }`,
-//! `{ job, type: "error", param, en, ja, english, i18n }` (the recipe refused) or
+//! Input files go as text or, for a file the page never read ([`WorkerInput::Blob`]: a 100 MB
+//! CSV the user opened), as the `Blob` itself: the worker reads its bytes and decodes them by
+//! the CLI's one policy ([`crate::recipes::decode_input`]). With [`RunOptions::envelope`] the
+//! worker also sends the plot envelope ([`crate::view::envelope`]) of every input and output
+//! file, so a page plots a million rows without parsing them on its main thread.
+//!
+//! Messages, page → worker: `{ job, id, args: [..], names: [..], texts: [string | Blob],
+//! envelope }`; worker → page: `{ job, type: "progress", done, total }` (at most ~10 a second),
+//! `{ job, type: "done", summary, warnings: [{en, ja}], i18n: [..], files: [{ name, blob, bytes,
+//! rows, head, envelope }], inputs: [{ name, envelope }] }`,
+//! `{ job, type: "error", error, param, en, ja, english, i18n }` (the recipe refused: `error`
+//! is the [`RecipeError`] itself, serialized, so the page can put it beside its field and word it
+//! exactly as its own run's error) or
 //! `{ job, type: "crash", message }` (the worker could not load or stopped).
 
 use std::cell::{Cell, RefCell};
@@ -29,9 +38,11 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Blob, ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
 
+use crate::error::RecipeError;
 use crate::i18n::{FluentArg, I18n, Lang};
 use crate::recipes;
 use crate::ui::ctx;
+use crate::view::envelope::{csv_envelope, Envelope};
 use crate::view::worker::{data_rows, head};
 
 /// The worker script, relative to `index.html`.
@@ -76,19 +87,126 @@ fn both(format: impl Fn(&I18n, Lang) -> String) -> Result<(JsValue, Array), JsVa
     })
 }
 
-/// `workerRunRecipe(id, args, names, texts, progress)`: runs recipe `id` with command-line
-/// style `args` and input files (`names[i]` holds `texts[i]`), calling `progress(done, total)`
-/// as rows are done. Called by `www/worker.js` only. Returns `{ ok: true, summary, warnings,
-/// i18n, files: [{ name, data: Uint8Array, rows, head }] }` or `{ ok: false, param, en, ja, english,
-/// i18n }`.
+/// An envelope as a plain object: `{ header: [..], rows, span: [x0, x1] | null, series:
+/// [Float64Array (x, y interleaved)] }`.
+fn envelope_to_js(envelope: &Envelope) -> Result<JsValue, JsValue> {
+    let out = js_sys::Object::new();
+    set(&out, "header", &strings(envelope.header.iter().cloned()))?;
+    set(&out, "rows", &JsValue::from_f64(envelope.rows as f64))?;
+    let span = match envelope.x_span {
+        Some((a, b)) => Array::of2(&JsValue::from_f64(a), &JsValue::from_f64(b)).into(),
+        None => JsValue::NULL,
+    };
+    set(&out, "span", &span)?;
+    let series = Array::new();
+    for column in &envelope.series {
+        let flat: Vec<f64> = column.iter().flat_map(|&(x, y)| [x, y]).collect();
+        series.push(&js_sys::Float64Array::from(flat.as_slice()));
+    }
+    set(&out, "series", &series)?;
+    Ok(out.into())
+}
+
+fn envelope_from_js(value: &JsValue) -> Option<Envelope> {
+    if value.is_null() || value.is_undefined() {
+        return None;
+    }
+    let header = Array::from(&get(value, "header"))
+        .iter()
+        .map(|h| h.as_string().unwrap_or_default())
+        .collect();
+    let span = get(value, "span");
+    let x_span = if span.is_null() || span.is_undefined() {
+        None
+    } else {
+        let span = Array::from(&span);
+        Some((
+            span.get(0).as_f64().unwrap_or(0.0),
+            span.get(1).as_f64().unwrap_or(0.0),
+        ))
+    };
+    let series = Array::from(&get(value, "series"))
+        .iter()
+        .map(|s| {
+            js_sys::Float64Array::new(&s)
+                .to_vec()
+                .chunks_exact(2)
+                .map(|p| (p[0], p[1]))
+                .collect()
+        })
+        .collect();
+    Some(Envelope {
+        header,
+        rows: get(value, "rows").as_f64().unwrap_or(0.0) as u64,
+        x_span,
+        series,
+    })
+}
+
+/// The refusal `{ ok: false, error, param, en, ja, english, i18n }` of `error`.
+fn refusal(error: &crate::error::RecipeError) -> Result<JsValue, JsValue> {
+    let out = js_sys::Object::new();
+    let (texts, notes) = both(|i18n, lang| i18n.recipe_error(lang, error))?;
+    set(&out, "ok", &JsValue::FALSE)?;
+    set(
+        &out,
+        "error",
+        &serde_wasm_bindgen::to_value(error).unwrap_or(JsValue::NULL),
+    )?;
+    set(
+        &out,
+        "param",
+        &error.param().map_or(JsValue::NULL, JsValue::from_str),
+    )?;
+    set(&out, "en", &get(&texts, "en"))?;
+    set(&out, "ja", &get(&texts, "ja"))?;
+    set(&out, "english", &error.to_string().into())?;
+    set(&out, "i18n", &notes)?;
+    Ok(out.into())
+}
+
+/// `workerRunRecipe(id, args, names, inputs, progress, envelope)`: runs recipe `id` with
+/// command-line style `args` and input files (`names[i]` holds `inputs[i]`: its text, or its
+/// bytes as a `Uint8Array`, decoded here as the CLI decodes a file), calling
+/// `progress(done, total)` as rows are done. Called by `www/worker.js` only. Returns `{ ok:
+/// true, summary, warnings, i18n, files: [{ name, data: Uint8Array, rows, head, envelope }],
+/// inputs: [{ name, envelope }] }` (envelopes of `envelope` buckets when it is not 0, else
+/// null) or `{ ok: false, error, param, en, ja, english, i18n }`.
 #[wasm_bindgen(js_name = workerRunRecipe)]
 pub fn worker_run_recipe(
     id: &str,
     args: Vec<String>,
     names: Vec<String>,
-    texts: Vec<String>,
+    inputs: Array,
     progress: &js_sys::Function,
+    envelope: u32,
 ) -> Result<JsValue, JsValue> {
+    let mut texts = Vec::new();
+    for (name, value) in names.iter().zip(inputs.iter()) {
+        let text = match value.as_string() {
+            Some(text) => text,
+            None => match recipes::decode_input(name, &Uint8Array::new(&value).to_vec()) {
+                Ok(text) => text,
+                Err(error) => return refusal(&error),
+            },
+        };
+        texts.push(text);
+    }
+    let buckets = envelope as usize;
+    let envelope_of = |text: &str| -> Result<JsValue, JsValue> {
+        if buckets == 0 {
+            Ok(JsValue::NULL)
+        } else {
+            envelope_to_js(&csv_envelope(text, buckets))
+        }
+    };
+    let input_envelopes = Array::new();
+    for (name, text) in names.iter().zip(&texts) {
+        let entry = js_sys::Object::new();
+        set(&entry, "name", &name.as_str().into())?;
+        set(&entry, "envelope", &envelope_of(text)?)?;
+        input_envelopes.push(&entry);
+    }
     let inputs: Vec<(String, String)> = names.into_iter().zip(texts).collect();
     let report = |done: u64, total: u64| {
         // Numbers, not BigInts: row counts stay far below 2^53.
@@ -120,9 +238,11 @@ pub fn worker_run_recipe(
                     "data",
                     &Uint8Array::from(file.text.as_bytes()).into(),
                 )?;
+                set(&entry, "envelope", &envelope_of(&file.text)?)?;
                 files.push(&entry);
             }
             set(&out, "files", &files)?;
+            set(&out, "inputs", &input_envelopes)?;
             let warnings = Array::new();
             let notes = Array::new();
             for warning in &output.warnings {
@@ -141,19 +261,7 @@ pub fn worker_run_recipe(
             set(&out, "warnings", &warnings)?;
             set(&out, "i18n", &notes)?;
         }
-        Err(error) => {
-            let (texts, notes) = both(|i18n, lang| i18n.recipe_error(lang, &error))?;
-            set(&out, "ok", &JsValue::FALSE)?;
-            set(
-                &out,
-                "param",
-                &error.param().map_or(JsValue::NULL, JsValue::from_str),
-            )?;
-            set(&out, "en", &get(&texts, "en"))?;
-            set(&out, "ja", &get(&texts, "ja"))?;
-            set(&out, "english", &error.to_string().into())?;
-            set(&out, "i18n", &notes)?;
-        }
+        Err(error) => return refusal(&error),
     }
     Ok(out.into())
 }
@@ -194,6 +302,8 @@ pub struct WorkerOutput {
     pub files: Vec<WorkerFile>,
     /// What the recipe warns about (diverged, goal not reached...), localized.
     pub warnings: Vec<Localized>,
+    /// The input files' plot envelopes, by name (with [`RunOptions::envelope`]).
+    pub inputs: Vec<(String, Option<Envelope>)>,
 }
 
 impl WorkerOutput {
@@ -215,14 +325,34 @@ pub struct WorkerFile {
     pub rows: u64,
     /// The first [`HEAD_LINES`] lines (all of a shorter file), line ends included.
     pub head: String,
+    /// Its plot envelope (with [`RunOptions::envelope`]).
+    pub envelope: Option<Envelope>,
+}
+
+/// An input file handed to the worker: its text, or the file itself, read and decoded in the
+/// worker (by [`crate::recipes::decode_input`]) so the page never holds a big file's text.
+#[derive(Debug, Clone)]
+pub enum WorkerInput {
+    Text(String),
+    Blob(Blob),
+}
+
+/// What a run sends back besides the recipe's output.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct RunOptions {
+    /// Buckets of the plot envelopes of every input and output file (0: none).
+    pub envelope: u32,
 }
 
 /// Why a worker run gave no output.
 #[derive(Debug, Clone, PartialEq)]
 pub enum WorkerError {
-    /// The recipe refused its arguments or input: the kernel's message, the parameter it is
-    /// about (if any) and its English one-liner (the CLI's).
+    /// The recipe refused its arguments or input: the error itself (for a page to place and
+    /// word it as it does its own runs' errors; `None` only if it could not be decoded), the
+    /// kernel's message in both languages, the parameter it is about (if any) and its English
+    /// one-liner (the CLI's).
     Recipe {
+        error: Option<RecipeError>,
         message: Localized,
         param: Option<String>,
         english: String,
@@ -239,6 +369,14 @@ impl WorkerError {
             WorkerError::Failed(detail) => {
                 ctx::t_strings("kit-worker-failed", &[("detail", detail.clone())])
             }
+        }
+    }
+
+    /// The recipe's error, when the recipe refused (decoded from the worker's message).
+    pub fn recipe_error(&self) -> Option<&RecipeError> {
+        match self {
+            WorkerError::Recipe { error, .. } => error.as_ref(),
+            WorkerError::Failed(_) => None,
         }
     }
 
@@ -361,8 +499,18 @@ fn output_of(data: &JsValue) -> Result<WorkerOutput, JsValue> {
             bytes: get(&entry, "bytes").as_f64().unwrap_or(0.0) as u64,
             rows: get(&entry, "rows").as_f64().unwrap_or(0.0) as u64,
             head: get_string(&entry, "head"),
+            envelope: envelope_from_js(&get(&entry, "envelope")),
         });
     }
+    let inputs = Array::from(&get(data, "inputs"))
+        .iter()
+        .map(|i| {
+            (
+                get_string(&i, "name"),
+                envelope_from_js(&get(&i, "envelope")),
+            )
+        })
+        .collect();
     let warnings = Array::from(&get(data, "warnings"))
         .iter()
         .map(|w| Localized::from_js(&w))
@@ -371,6 +519,7 @@ fn output_of(data: &JsValue) -> Result<WorkerOutput, JsValue> {
         summary: get_string(data, "summary"),
         files,
         warnings,
+        inputs,
     })
 }
 
@@ -403,9 +552,11 @@ fn on_message(event: MessageEvent) {
         "error" => {
             log_notes(&data);
             let param = get(&data, "param").as_string();
+            let error = serde_wasm_bindgen::from_value(get(&data, "error")).ok();
             finish(
                 job,
                 Err(WorkerError::Recipe {
+                    error,
                     message: Localized::from_js(&data),
                     param,
                     english: get_string(&data, "english"),
@@ -476,6 +627,29 @@ pub fn run_recipe(
     on_progress: impl Fn(u64, u64) + 'static,
     on_done: impl FnOnce(Result<WorkerOutput, WorkerError>) + 'static,
 ) -> Result<Job, JsValue> {
+    let inputs = inputs
+        .into_iter()
+        .map(|(name, text)| (name, WorkerInput::Text(text)))
+        .collect();
+    run_recipe_with(
+        id,
+        args,
+        inputs,
+        RunOptions::default(),
+        on_progress,
+        on_done,
+    )
+}
+
+/// [`run_recipe`] with inputs as text or files and [`RunOptions`].
+pub fn run_recipe_with(
+    id: &str,
+    args: Vec<String>,
+    inputs: Vec<(String, WorkerInput)>,
+    options: RunOptions,
+    on_progress: impl Fn(u64, u64) + 'static,
+    on_done: impl FnOnce(Result<WorkerOutput, WorkerError>) + 'static,
+) -> Result<Job, JsValue> {
     let running = ACTIVE.with(|a| a.borrow_mut().take()).is_some();
     if running {
         retire_host();
@@ -486,13 +660,25 @@ pub fn run_recipe(
         n.set(job.wrapping_add(1).max(1));
         job
     });
-    let (names, texts): (Vec<String>, Vec<String>) = inputs.into_iter().unzip();
+    let (names, texts): (Vec<String>, Vec<WorkerInput>) = inputs.into_iter().unzip();
+    let texts: Array = texts
+        .into_iter()
+        .map(|input| match input {
+            WorkerInput::Text(text) => JsValue::from_str(&text),
+            WorkerInput::Blob(blob) => blob.into(),
+        })
+        .collect();
     let message = js_sys::Object::new();
     set(&message, "job", &JsValue::from_f64(f64::from(job)))?;
     set(&message, "id", &id.into())?;
     set(&message, "args", &strings(args))?;
     set(&message, "names", &strings(names))?;
-    set(&message, "texts", &strings(texts))?;
+    set(&message, "texts", &texts)?;
+    set(
+        &message,
+        "envelope",
+        &JsValue::from_f64(f64::from(options.envelope)),
+    )?;
     ACTIVE.with(|a| {
         *a.borrow_mut() = Some(Active {
             job,
@@ -508,28 +694,8 @@ pub fn run_recipe(
     Ok(Job { id: job })
 }
 
-/// Offers a worker file for download: an object URL of its `Blob` on a temporary
-/// `<a download>` (nothing is read or copied on the main thread, whatever the size).
+/// Offers a worker file for download ([`crate::ui::download::download_blob`]: an object URL
+/// of its `Blob`, so nothing is read or copied on the main thread, whatever the size).
 pub fn download(file: &WorkerFile) -> Result<(), JsValue> {
-    let document = crate::ui::dom::document()?;
-    let anchor = document
-        .create_element("a")?
-        .dyn_into::<web_sys::HtmlAnchorElement>()?;
-    let url = web_sys::Url::create_object_url_with_blob(&file.blob)?;
-    anchor.set_href(&url);
-    anchor.set_download(&file.name);
-    anchor.set_attribute("hidden", "")?;
-    let body = document
-        .body()
-        .ok_or_else(|| JsValue::from_str("no body"))?;
-    body.append_child(&anchor)?;
-    anchor.click();
-    anchor.remove();
-    // Revoke later: the download reads the URL after the click returns.
-    let revoke = Closure::once_into_js(move || {
-        let _ = web_sys::Url::revoke_object_url(&url);
-    });
-    crate::ui::dom::window()?
-        .set_timeout_with_callback_and_timeout_and_arguments_0(revoke.unchecked_ref(), 60_000)?;
-    Ok(())
+    crate::ui::download::download_blob(&file.blob, &file.name)
 }

@@ -11,6 +11,7 @@ pub mod ik2r;
 pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
+pub mod traj_resample;
 pub mod trapezoid_profile;
 
 /// Route id of the home page (`#/`, `#/home`).
@@ -21,6 +22,7 @@ pub const PAGES: &[PageDef] = &[
     home::PAGE,
     ik2r::PAGE,
     pendulum::PAGE,
+    traj_resample::PAGE,
     rrt::PAGE,
     cubic_path::PAGE,
     pid_step::PAGE,
@@ -29,7 +31,8 @@ pub const PAGES: &[PageDef] = &[
 ];
 
 /// Recipe id → the page where it runs in the browser. The IK page computes and exports the
-/// CSVs of three recipes; the RRT stepper those of rrt-2d.
+/// CSVs of three recipes; the RRT stepper those of rrt-2d; each signal page and traj-resample
+/// has its own page.
 pub const RECIPE_PAGES: &[(&str, &str)] = &[
     ("ik-workspace", "ik-2r"),
     ("jacobian-2r", "ik-2r"),
@@ -38,6 +41,7 @@ pub const RECIPE_PAGES: &[(&str, &str)] = &[
     ("cubic-path", "cubic-path"),
     ("pid-step", "pid-step"),
     ("trapezoid-profile", "trapezoid-profile"),
+    ("traj-resample", "traj-resample"),
 ];
 
 /// The page with route id `id`.

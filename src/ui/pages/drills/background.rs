@@ -1,7 +1,10 @@
 //! Runs too big to auto-run go to the Web Worker (`crate::ui::kit::worker`), with the kit's
 //! progress panel under Run: the page stays interactive, Cancel (the panel's button) stops the
 //! run and keeps the last result, and the result's files stay Blobs made in the worker (the
-//! preview reads their first lines; downloads hand the Blob to the browser).
+//! preview reads their first lines; downloads hand the Blob to the browser). A recipe error
+//! from the worker is the kernel's `RecipeError` itself, so it goes where a run on the page
+//! puts it (beside its field, marked) with the same words; only a worker that could not run
+//! at all is reported under the form.
 //!
 //! The worker integration of this page is this file plus: `Page::background` (mod.rs), its
 //! construction and the panel's place (mount.rs), `request_run` sending big runs here
@@ -15,7 +18,7 @@ use wasm_bindgen::prelude::*;
 
 use super::result::Shown;
 use super::{Page, Status};
-use crate::ui::kit::form::{reveal, Reveal};
+use crate::ui::kit::form::{reveal, Message, Reveal};
 use crate::ui::kit::progress::ProgressPanel;
 use crate::ui::kit::worker::{self, Job, WorkerError};
 use crate::ui::schedule::{after_paint, now_ms};
@@ -24,7 +27,8 @@ use crate::ui::schedule::{after_paint, now_ms};
 pub(super) struct Background {
     pub panel: ProgressPanel,
     job: RefCell<Option<Job>>,
-    /// The last worker run's error (shown under the form until the next run).
+    /// The last worker run's failure that is not a recipe error (shown under the form until
+    /// the next run).
     pub error: RefCell<Option<WorkerError>>,
 }
 
@@ -106,7 +110,12 @@ impl Page {
                         st.failed = None;
                     }
                     Err(error) => {
-                        if let Some(bg) = page.background.borrow().as_ref() {
+                        if let Some(recipe_error) = error.recipe_error().cloned() {
+                            // As a run on the page: beside the field it names, same words.
+                            let slot = page.slot_for(&recipe_error);
+                            page.st.borrow_mut().failed =
+                                Some((run_args, slot, Message::Recipe(recipe_error)));
+                        } else if let Some(bg) = page.background.borrow().as_ref() {
                             *bg.error.borrow_mut() = Some(error);
                         }
                         page.st.borrow_mut().status = Status::Failed;
@@ -148,7 +157,7 @@ impl Page {
         // The URL in a task of its own: `history.replaceState` alone can take tens of ms
         // (measured ~75 ms in headless Chromium right after a 60 MB result), and together with
         // the rendering it made one task over 100 ms.
-        self.url_timer.schedule(0);
+        self.url.schedule_in(0);
         // Bring the outcome into view, as a run on the page does (Run asked for it), after the
         // browser has laid out and painted the new result (one long task otherwise).
         let weak = self.weak.borrow().clone();
@@ -156,8 +165,17 @@ impl Page {
             let Some(page) = weak.upgrade() else {
                 return;
             };
+            let has_background_error = page
+                .background
+                .borrow()
+                .as_ref()
+                .is_some_and(|bg| bg.error.borrow().is_some());
             if page.st.borrow().status == Status::Failed {
-                reveal(&page.els.error, Reveal::Nearest);
+                if has_background_error {
+                    reveal(&page.els.error, Reveal::Nearest);
+                } else {
+                    page.reveal_first_error();
+                }
             } else {
                 page.announce_result();
                 reveal(&page.els.output, Reveal::Start);

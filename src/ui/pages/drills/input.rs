@@ -1,12 +1,15 @@
 //! An input file on the page (a file argument: traj-resample's CSV): choosing one (refused
 //! above the kernel's limit, else read, with stale reads dropped), going back to the built-in
-//! labeled sample, and the line under the file picker that says which input the run uses.
+//! labeled sample, and the line under the file picker that says which input the run uses. A
+//! file that is not UTF-8 is refused beside the picker with the byte offset, as `bsv` refuses
+//! it.
 
-use super::file::{self, InputFile};
+use super::file::InputFile;
 use super::{texts, Page, Status};
 use crate::recipes::traj_resample;
 use crate::ui::ctx::t_strings;
 use crate::ui::kit::form::Message;
+use crate::ui::kit::input_file::{self, Picked, ReadProblem};
 
 /// A file name usable as a positional argument (one starting with `-` gets `./`).
 fn path_word(name: &str) -> String {
@@ -25,7 +28,7 @@ impl Page {
             st.input = None;
             st.missing_file = None;
             st.file_problem = None;
-            st.url.missing_file = None;
+            st.url.file_settled();
             st.read_generation += 1;
             st.reading = None;
         }
@@ -37,8 +40,8 @@ impl Page {
 
     /// A file was chosen: refuse it above the kernel's limit, else read it.
     pub(super) fn on_file_chosen(&self) {
-        let chosen = self.form.borrow().file_input().and_then(file::chosen);
-        let Some((name, bytes, blob)) = chosen else {
+        let chosen = self.form.borrow().file_input().and_then(input_file::chosen);
+        let Some(Picked { name, bytes, blob }) = chosen else {
             return;
         };
         let name = path_word(&name);
@@ -74,7 +77,7 @@ impl Page {
         self.render_status();
         self.render_file_status();
         let weak = self.weak.borrow().clone();
-        file::read_text(&blob, move |result| {
+        input_file::read_text(&name.clone(), &blob, move |result| {
             let Some(page) = weak.upgrade() else {
                 return;
             };
@@ -83,7 +86,13 @@ impl Page {
     }
 
     /// The chosen file's text arrived (or reading failed).
-    fn file_read(&self, generation: u32, name: String, bytes: u64, result: Result<String, String>) {
+    fn file_read(
+        &self,
+        generation: u32,
+        name: String,
+        bytes: u64,
+        result: Result<String, ReadProblem>,
+    ) {
         {
             let mut st = self.st.borrow_mut();
             if st.read_generation != generation {
@@ -101,14 +110,17 @@ impl Page {
                         shape,
                     });
                     st.missing_file = None;
-                    st.url.missing_file = None;
+                    st.url.file_settled();
                     st.file_problem = None;
                 }
-                Err(reason) => {
+                Err(ReadProblem::Browser(reason)) => {
                     st.file_problem = Some(Message::Text {
                         id: "drills-file-unreadable",
                         args: vec![("name", name), ("reason", reason)],
                     });
+                }
+                Err(ReadProblem::Decode(error)) => {
+                    st.file_problem = Some(Message::Recipe(error));
                 }
             }
         }

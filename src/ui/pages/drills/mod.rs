@@ -18,8 +18,8 @@
 //! Components, one file each: `picker` (the drill select, its texts, switching, defaults),
 //! `form` (the kit form and its validation), `input` (an input file on the page, read by
 //! `file`), `run` (when and how a drill runs, the status line), `result` (summary, warnings,
-//! previews, downloads and the kit's exports panel), `url` (URL state and its notice, codec in
-//! `query`), `keys`; `mount` builds and wires them from `markup`; `texts` formats sizes.
+//! previews, downloads and the kit's exports panel), `url` (the kit's URL writer and notice;
+//! the codec is [`crate::view::drills`]), `keys`; `mount` builds and wires them from `markup`; `texts` formats sizes.
 
 mod background;
 mod file;
@@ -29,7 +29,6 @@ mod keys;
 mod markup;
 mod mount;
 mod picker;
-mod query;
 mod result;
 mod run;
 mod texts;
@@ -48,10 +47,13 @@ use crate::ui::dom::Listener;
 use crate::ui::kit::exports::Exports;
 use crate::ui::kit::form::{Form, Message};
 use crate::ui::kit::readouts::Readouts;
+use crate::ui::kit::scope::Scope;
+use crate::ui::kit::url_state::{IgnoredKey, IgnoredReason, UrlNotice, UrlWriter};
 use crate::ui::page::{PageDef, PageHandle, Shortcut};
 use crate::ui::router;
 use crate::ui::schedule::Timer;
 use crate::view::command_line::RunArgs;
+use crate::view::drills::RECIPE_KEY;
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef {
@@ -63,10 +65,7 @@ pub const PAGE: PageDef = PageDef {
 
 /// The link to one drill: `#/drills?recipe=<id>`.
 pub fn link(recipe_id: &str) -> String {
-    router::build_hash(
-        PAGE.id,
-        &[(query::RECIPE_KEY.to_string(), recipe_id.to_string())],
-    )
+    router::build_hash(PAGE.id, &[(RECIPE_KEY.to_string(), recipe_id.to_string())])
 }
 
 /// The class and test-id prefix of the page's kit widgets.
@@ -82,7 +81,6 @@ struct Els {
     run: Element,
     status: Element,
     error: Element,
-    url_notice: Element,
     about: Element,
     quirk: Element,
     output: Element,
@@ -121,21 +119,20 @@ enum Slot {
     General,
 }
 
-/// What the URL asked for that the page could not do as asked.
+/// What the URL asked for that the page could not do as asked (shown by the kit's
+/// [`UrlNotice`] until the user moves on: another drill, Reset, the named file opened).
 #[derive(Debug, Clone, Default)]
 struct UrlNotes {
+    /// The recipe id of the link, when no recipe has it.
     unknown_recipe: Option<String>,
-    ignored: Vec<String>,
-    invalid: Vec<String>,
-    missing_file: Option<String>,
+    /// Keys the drill does not take, values flagged in their field, the file to open again.
+    keys: Vec<IgnoredKey>,
 }
 
 impl UrlNotes {
-    fn is_empty(&self) -> bool {
-        self.unknown_recipe.is_none()
-            && self.ignored.is_empty()
-            && self.invalid.is_empty()
-            && self.missing_file.is_none()
+    /// The file the link named is open now (or the sample is used instead).
+    fn file_settled(&mut self) {
+        self.keys.retain(|k| k.reason != IgnoredReason::File);
     }
 }
 
@@ -180,7 +177,10 @@ pub(crate) struct Page {
     readouts: Readouts,
     listeners: RefCell<Vec<Listener>>,
     auto_timer: Timer,
-    url_timer: Timer,
+    /// Owns the URL writer's timer (dropped on unmount).
+    scope: RefCell<Scope>,
+    url: UrlWriter,
+    url_notice: UrlNotice,
     weak: RefCell<Weak<Page>>,
     /// Big runs in the Web Worker, with their progress panel (background.rs).
     background: RefCell<Option<Rc<background::Background>>>,

@@ -9,14 +9,16 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event, KeyboardEvent};
 
-use super::query::UrlState;
 use super::{form, markup, Els, Handle, Page, Slot, State, Status, UrlNotes, PREFIX};
 use crate::recipes;
 use crate::ui::dom::{self, Listener};
 use crate::ui::kit::exports::Exports;
 use crate::ui::kit::readouts::Readouts;
+use crate::ui::kit::scope::Scope;
+use crate::ui::kit::url_state::{IgnoredKey, UrlNotice, UrlState, UrlWriter};
 use crate::ui::page::{MountCtx, PageHandle};
 use crate::ui::schedule::Timer;
+use crate::view::drills::DrillsQuery;
 use crate::view::form::recipe_fields;
 
 /// Builds the page into the shell's main element.
@@ -46,7 +48,6 @@ impl Page {
             run: role(&root, "run")?,
             status: role(&root, "status")?,
             error: role(&root, "error")?,
-            url_notice: role(&root, "url-notice")?,
             about: role(&root, "about")?,
             quirk: role(&root, "quirk")?,
             output: role(&root, "output")?,
@@ -59,9 +60,10 @@ impl Page {
         };
         let exports = Exports::find(&root, PREFIX)?;
         let readouts = Readouts::find(&root)?;
+        let url_notice = UrlNotice::new(role(&root, "url-notice")?, Vec::new())?;
         dom::relocalize(&root)?;
 
-        let url = UrlState::parse(&mount.query);
+        let (url, ignored) = DrillsQuery::read(&mount.query);
         let recipe = url.recipe;
         let field_list = recipe_fields(recipe.info);
         let mut texts = url.texts(&field_list);
@@ -90,25 +92,28 @@ impl Page {
             status: Status::Idle,
             url: UrlNotes {
                 unknown_recipe: url.unknown_recipe.clone(),
-                ignored: url.ignored.clone(),
-                invalid: Vec::new(),
-                missing_file,
+                keys: ignored,
             },
             exact: false,
         };
-        let page = Rc::new(Page {
-            els,
-            st: RefCell::new(state),
-            form: RefCell::new(form),
-            exports,
-            readouts,
-            listeners: RefCell::new(Vec::new()),
-            auto_timer: Timer::default(),
-            url_timer: Timer::default(),
-            weak: RefCell::new(Weak::new()),
-            background: RefCell::new(None),
+        let page = Rc::new_cyclic(|weak: &Weak<Page>| {
+            let mut scope = Scope::new();
+            let url = UrlWriter::new(&mut scope, weak, Page::url_pairs);
+            Page {
+                els,
+                st: RefCell::new(state),
+                form: RefCell::new(form),
+                exports,
+                readouts,
+                listeners: RefCell::new(Vec::new()),
+                auto_timer: Timer::default(),
+                scope: RefCell::new(scope),
+                url,
+                url_notice,
+                weak: RefCell::new(weak.clone()),
+                background: RefCell::new(None),
+            }
         });
-        *page.weak.borrow_mut() = Rc::downgrade(&page);
         // Big runs: the worker's progress panel, under the status line (background.rs).
         let background = super::background::Background::new(Rc::downgrade(&page))?;
         page.els
@@ -120,10 +125,11 @@ impl Page {
         page.render_recipe_texts()?;
         page.validate();
         {
-            // Values from the URL that do not pass: name them in the notice.
+            // Values from the URL that do not pass: name them in the notice (sorted as the
+            // fields are), then the file the link used.
             let form = page.form.borrow();
             let mut st = page.st.borrow_mut();
-            let invalid: Vec<String> = st
+            let flagged: Vec<IgnoredKey> = st
                 .errors
                 .iter()
                 .filter_map(|(slot, _)| match slot {
@@ -131,8 +137,10 @@ impl Page {
                     Slot::General => None,
                 })
                 .filter(|name| url.values.iter().any(|(k, _)| k == name))
+                .map(IgnoredKey::flagged)
                 .collect();
-            st.url.invalid = invalid;
+            st.url.keys.extend(flagged);
+            st.url.keys.extend(missing_file.map(IgnoredKey::file));
         }
         page.render_notice();
         page.render_file_status();
@@ -147,7 +155,6 @@ impl Page {
     fn install(&self) -> Result<(), JsValue> {
         let weak = self.weak.borrow().clone();
         self.auto_timer.set_callback(&weak, Page::auto_run);
-        self.url_timer.set_callback(&weak, Page::write_url);
 
         let reset: Element = find(&self.els.page, "[data-drills=\"reset\"]")?;
         *self.listeners.borrow_mut() = vec![
@@ -237,7 +244,7 @@ impl Page {
             bg.stop();
         }
         self.auto_timer.cancel();
-        self.url_timer.cancel();
+        *self.scope.borrow_mut() = Scope::new();
         self.listeners.borrow_mut().clear();
         let mut st = self.st.borrow_mut();
         st.read_generation += 1;

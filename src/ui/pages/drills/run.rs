@@ -13,8 +13,6 @@ use crate::ui::schedule::{after_paint, now_ms};
 
 /// Milliseconds between the last keystroke and a small drill's run.
 const AUTO_RUN_DELAY_MS: i32 = 250;
-/// Milliseconds between the last keystroke and the URL update.
-const URL_DELAY_MS: i32 = 300;
 
 /// What a valid form will cost.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -51,7 +49,7 @@ impl Page {
         }
         self.exports.clear_status();
         self.render_status();
-        self.url_timer.schedule(URL_DELAY_MS);
+        self.url.schedule();
         if valid && small {
             self.auto_timer.schedule(AUTO_RUN_DELAY_MS);
         } else {
@@ -130,7 +128,7 @@ impl Page {
     }
 
     /// Focuses the first field with a message (or shows the message under the form).
-    fn reveal_first_error(&self) {
+    pub(super) fn reveal_first_error(&self) {
         let has_field_error = self
             .st
             .borrow()
