@@ -51,6 +51,7 @@ rrt-ro-path-points = Path points
 rrt-ro-length = Path length
 rrt-ro-rate = Nodes per second (while playing)
 rrt-live = Iteration { $it }, { $nodes } nodes.
+rrt-finishing = Running to the end (for its length and the CSVs): { $it } of { $max } iterations…
 rrt-params-title = Parameters
 rrt-exports-title = Downloads and command lines
 rrt-exports-note = The CSVs are the run at its end, byte for byte what the command line below writes.

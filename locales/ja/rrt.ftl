@@ -51,6 +51,7 @@ rrt-ro-path-points = 経路の点数
 rrt-ro-length = 経路の長さ
 rrt-ro-rate = 毎秒のノード数（再生中）
 rrt-live = 反復 { $it }、ノード { $nodes } 個。
+rrt-finishing = 終点と CSV のため最後まで実行中：{ $max } 反復のうち { $it } 反復…
 rrt-params-title = パラメータ
 rrt-exports-title = ダウンロードとコマンドライン
 rrt-exports-note = CSV は最後まで実行した結果で、下のコマンドラインが書き出すものとバイト単位で同じです。

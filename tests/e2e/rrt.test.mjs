@@ -179,6 +179,7 @@ test('dragging the obstacle changes the URL and the tree; an invalid goal is ref
     assert.ok(Math.abs(x1 - x0 - 0.3) < 1e-9 && Math.abs(y1 - y0 - 0.5) < 1e-9, box);
     // The edit restarted the run at iteration 0; its end is the CLI's tree in the new world.
     assert.equal((await counters(page)).iteration, 0);
+    console.log('before End', await page.evaluate(() => [performance.now(), JSON.stringify(window.__longAt)]));
     await page.locator('[data-action="end"]').click();
     const c = await counters(page);
     const nodes = cliNodes(['7', '800', '--obstacle', box]);
@@ -271,6 +272,63 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
     } finally {
       await close();
     }
+  }
+});
+
+test('a 1,000,000-iteration walled-goal run: no main-thread task of 100 ms or more; End and the CSVs equal bsv', { timeout: 600_000 }, async () => {
+  const walls = ['0.7,0.7,0.9,0.72', '0.7,0.88,0.9,0.9', '0.7,0.7,0.72,0.9', '0.88,0.7,0.9,0.9'];
+  const args = ['7', '1000000', ...walls.flatMap((w) => ['--obstacle', w]), '--goal', '0.8,0.8'];
+  const want = cli(['rrt-2d', ...args]).files;
+  const wantNodes = want.get('rrt_nodes.csv').toString('utf8').trim().split('\n').length - 1;
+  // The observer is installed before the app starts (then the page is opened again).
+  const { page, context, errors, close } = await open('#/');
+  try {
+    await context.addInitScript(() => {
+      window.__longTasks = [];
+      new PerformanceObserver((list) => {
+        for (const e of list.getEntries()) { window.__longTasks.push(e.duration); (window.__longAt ||= []).push([Math.round(e.startTime), Math.round(e.duration)]); }
+      }).observe({ type: 'longtask', buffered: true });
+    });
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
+    const seen = await page.evaluate(async () => {
+      setTimeout(() => {
+        const end = performance.now() + 150;
+        while (performance.now() < end);
+      }, 0);
+      await new Promise((r) => setTimeout(r, 400));
+      return Math.max(0, ...window.__longTasks);
+    });
+    assert.ok(seen >= 150, `the longtask observer saw a 150 ms task as ${seen} ms`);
+    await page.evaluate((h) => { window.__longTasks = []; location.hash = h; },
+      `#/rrt-2d?max_iter=1000000&${walls.map((w) => `obstacle=${w}`).join('&')}&goal=0.8,0.8`);
+    const finishing = page.locator('[data-testid="rrt-2d-finishing"]');
+    await page.waitForSelector('[data-testid="rrt-2d-finishing"][data-state="running"]', { timeout: 20_000 });
+    // While the run grows to its end: the progress shows, the CSVs wait, the stepper steps.
+    assert.ok(await finishing.isVisible());
+    assert.ok(await page.locator('[data-download="rrt_nodes.csv"]').isDisabled());
+    await page.locator('[data-action="step"]').click();
+    assert.equal((await counters(page)).iteration, 1);
+    await page.waitForSelector('[data-testid="rrt-2d-finishing"][data-state="done"]', { state: 'attached', timeout: 300_000 });
+    assert.ok(!(await finishing.isVisible()));
+    console.log('before End', await page.evaluate(() => [performance.now(), JSON.stringify(window.__longAt)]));
+    await page.locator('[data-action="end"]').click();
+    const c = await counters(page);
+    assert.equal(c.iteration, 1_000_000);
+    assert.equal(c.nodes, wantNodes);
+    assert.equal(c.path_points, 0);
+    // Let the tree layer finish drawing (a big tree is drawn over several tasks).
+    await page.waitForTimeout(1500);
+    console.log('after End', await page.evaluate(() => JSON.stringify(window.__longAt)));
+    const longest = await page.evaluate(() => Math.max(0, ...window.__longTasks));
+    console.log(`rrt 1,000,000 walled: ${wantNodes} nodes; longest main-thread task while it ran and at End: ${longest.toFixed(0)} ms`);
+    assert.ok(longest < 100, `a main-thread task took ${longest} ms`);
+    for (const file of ['rrt_nodes.csv', 'rrt_path.csv']) {
+      assertSameBytes(await download(page, file), want.get(file), `1,000,000 walled ${file}`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
   }
 });
 
