@@ -9,7 +9,7 @@
 import { afterEach } from 'node:test';
 import { chromium } from 'playwright-core';
 import { mkdirSync } from 'node:fs';
-import { dirname, join } from 'node:path';
+import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { startStaticServer } from '../../scripts/serve.mjs';
 
@@ -27,9 +27,12 @@ const CHROMIUM_ARGS = [
   '--disable-quic',
 ];
 
-/** Serves dist/ on 127.0.0.1 at a free port: { url, close }. */
+/** The folder the tests serve: BSV_DIST (relative to the repo, or absolute), default dist/. */
+export const DIST = resolve(ROOT, process.env.BSV_DIST || 'dist');
+
+/** Serves DIST (dist/ unless BSV_DIST names another) on 127.0.0.1 at a free port: { url, close }. */
 export function startServer() {
-  return startStaticServer(join(ROOT, 'dist'), 0);
+  return startStaticServer(DIST, 0);
 }
 
 /** What the app's i18n logs with console.warn (src/ui/ctx.rs: `i18n: <note>`). */

@@ -12,9 +12,7 @@
 //
 // Budgets: drag frame p95 < 4 ms, heatmap 256 < 16 ms, 512 < 50 ms. With IK2R_BENCH_STRICT=1
 // the exit code is 1 when a budget is missed; otherwise this only reports.
-import { join } from 'node:path';
-import { openApp, closeBrowser, ROOT } from './harness.mjs';
-import { startStaticServer } from '../../scripts/serve.mjs';
+import { openApp, closeBrowser, startServer } from './harness.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
 
@@ -44,7 +42,7 @@ function printTable() {
 
 const frame = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
 
-const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);
+const server = await startServer();
 try {
   const app = await openApp(server.url, '#/ik-2r', { viewport: VIEWPORT });
   const { page } = app;
