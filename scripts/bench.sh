@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `make bench`: speed figures (a command, not a timed test). Kernels natively and as wasm in
-# Node (release builds), then the IK page in headless Chromium at 1920x1080.
+# Node (release builds), then the IK page (1920x1080) and the RRT page's frames in headless
+# Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -27,4 +28,12 @@ if [[ -f tests/e2e/ik2r.bench.mjs ]]; then
   cp -r dist target/bench-dist
   cp target/bench-web/bsv_playground.js target/bench-web/bsv_playground_bg.wasm target/bench-dist/pkg/
   BSV_DIST=target/bench-dist node tests/e2e/ik2r.bench.mjs
+fi
+
+if [[ -d target/bench-dist ]]; then
+  echo
+  echo "== RRT page in headless Chromium: frame work playing as fast as possible to 50,000 nodes"
+  # The same bench dist/ (window.__rrtFrameMs, __rrtDrawMs); only the bench test of the file.
+  BSV_DIST=target/bench-dist node --test --test-reporter=spec \
+    --test-name-pattern='frame work p95' tests/e2e/rrt.test.mjs
 fi
