@@ -71,8 +71,11 @@ const FINISH_SLICE_MS: f64 = 20.0;
 /// (then at most [`crate::recipes::rrt_2d::CHECKPOINT_EVERY`] iterations replayed) instead
 /// of stepping there.
 const JUMP_BY_COPY: usize = 2048;
-/// Most tree nodes drawn in one task; a bigger tree is drawn over the next frames.
-const TREE_NODES_PER_TASK: usize = 16_000;
+/// Tree nodes drawn at a time, chunks drawn for up to [`TREE_MS_PER_TASK`] per task; a
+/// bigger tree is drawn over the next tasks.
+const TREE_NODES_PER_CHUNK: usize = 4_000;
+/// Time spent drawing tree chunks per task, ms.
+const TREE_MS_PER_TASK: f64 = 12.0;
 
 /// The run: the tree at the iteration shown, and the same run grown to its end in time
 /// slices between frames (its length and the exports).
@@ -784,10 +787,13 @@ impl Inner {
                 _ => 0,
             };
         }
-        let complete =
-            self.world
-                .borrow_mut()
-                .draw_tree(&run, upto, TREE_NODES_PER_TASK, Ink::current());
+        let started = now_ms();
+        let ink = Ink::current();
+        let mut world = self.world.borrow_mut();
+        let mut complete = world.draw_tree(&run, upto, TREE_NODES_PER_CHUNK, ink);
+        while !complete && now_ms() - started < TREE_MS_PER_TASK {
+            complete = world.draw_tree(&run, upto, TREE_NODES_PER_CHUNK, ink);
+        }
         if complete {
             self.tree_more.cancel();
         } else {
