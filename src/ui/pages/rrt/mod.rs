@@ -520,8 +520,14 @@ impl Inner {
             ctx::t_args(
                 "rrt-finishing",
                 &[
-                    ("it", FluentArg::Number(run.finished.iterations() as f64)),
-                    ("max", FluentArg::Number(run.finished.max_iter() as f64)),
+                    (
+                        "it",
+                        FluentArg::Text(crate::pyfmt::group_u64(run.finished.iterations() as u64)),
+                    ),
+                    (
+                        "max",
+                        FluentArg::Text(crate::pyfmt::group_u64(run.finished.max_iter() as u64)),
+                    ),
                 ],
             )
         });
