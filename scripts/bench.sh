@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `make bench`: speed figures (a command, not a timed test). Kernels natively and as wasm in
-# Node (release builds), then the IK and pendulum pages in headless Chromium at 1920x1080.
+# Node (release builds), then the IK, pendulum, RRT and signal pages in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -33,3 +33,14 @@ for page in ik2r pendulum; do
     BSV_DIST=target/bench-dist node tests/e2e/$page.bench.mjs
   fi
 done
+
+echo
+echo "== RRT page in headless Chromium: frame work playing as fast as possible to 50,000 nodes"
+# Only the bench test of the file (window.__rrtFrameMs, __rrtDrawMs).
+BSV_DIST=target/bench-dist node --test --test-reporter=spec \
+  --test-name-pattern='frame work p95' tests/e2e/rrt.test.mjs
+
+echo
+echo "== signal pages in headless Chromium: slider drag recompute + redraw"
+BSV_DIST=target/bench-dist node --test --test-reporter=spec \
+  --test-name-pattern='p95' tests/e2e/signals.test.mjs

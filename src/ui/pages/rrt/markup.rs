@@ -40,6 +40,7 @@ pub fn page() -> String {
          <div class=\"rrt-top\">\
          <section class=\"rrt-card rrt-world\"><h2 data-i18n=\"rrt-world-title\"></h2>\
          <div data-rrt=\"stepper\"></div>\
+         <p class=\"rrt-note rrt-finishing\" data-rrt=\"finishing\" data-testid=\"rrt-2d-finishing\" role=\"status\" hidden></p>\
          <div class=\"rrt-stage\" data-rrt=\"stage\">\
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\

@@ -28,8 +28,7 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 use crate::error::RecipeError;
 use crate::i18n::FluentArg;
 use crate::pyfmt::fixed;
-use crate::recipes::rrt_2d::{run_setup, Rrt, RrtOutcome, RrtSetup};
-use crate::recipes::Progress;
+use crate::recipes::rrt_2d::{Rrt, RrtOutcome, RrtSetup};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
@@ -38,7 +37,7 @@ use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::{Command, Length, Speed, StepModel, StepperOptions, StepperWidget};
 use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
 use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
-use crate::ui::schedule::now_ms;
+use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::rrt::{
     add_box, delete_box, drag, hit_test, phases, rate_per_s, Grab, PageState, Phase, Refusal,
@@ -65,13 +64,25 @@ const FRAME_BUDGET_MS: f64 = 1.5;
 /// Runs up to this budget restart on every move of a drag; bigger ones when it ends.
 const LIVE_RESTART_MAX_ITER: usize = 20_000;
 
-/// The run: the tree at the iteration shown, and the same run at its end (its length and
-/// the exports).
+/// Longest slice of the run to its end per main-thread task, ms (the page stays responsive:
+/// no task near 100 ms whatever `max_iter`).
+const FINISH_SLICE_MS: f64 = 20.0;
+/// A forward jump longer than this (iterations) starts from a copy of the run to its end
+/// (then at most [`crate::recipes::rrt_2d::CHECKPOINT_EVERY`] iterations replayed) instead
+/// of stepping there.
+const JUMP_BY_COPY: usize = 2048;
+/// Tree nodes drawn at a time, chunks drawn for up to [`TREE_MS_PER_TASK`] per task; a
+/// bigger tree is drawn over the next tasks.
+const TREE_NODES_PER_CHUNK: usize = 4_000;
+/// Time spent drawing tree chunks per task, ms.
+const TREE_MS_PER_TASK: f64 = 12.0;
+
+/// The run: the tree at the iteration shown, and the same run grown to its end in time
+/// slices between frames (its length and the exports).
 pub struct Run {
     pub rrt: Rrt,
+    /// The run to its end, as far as the slices have grown it.
     pub finished: Rrt,
-    /// Iterations of the whole run (to the goal or the budget).
-    pub end: u64,
     /// Changes whenever the tree shown shrinks or is another run's (the tree layer is then
     /// redrawn whole).
     pub generation: u64,
@@ -82,28 +93,58 @@ pub struct Run {
 impl Run {
     fn new(setup: &RrtSetup, generation: u64) -> Result<Run, RecipeError> {
         let rrt = Rrt::with_setup(setup)?;
-        let finished = run_setup(setup, &mut Progress::silent())?;
         Ok(Run {
+            finished: rrt.clone(),
             rrt,
-            end: finished.iterations() as u64,
-            finished,
             generation,
             advance_ms: 0.0,
         })
     }
+
+    /// Whether the run to its end is complete (its length known, the exports ready).
+    pub fn is_finished(&self) -> bool {
+        self.finished.is_done()
+    }
+
+    /// Grows the run to its end for about `budget_ms`; `true` once it is complete.
+    fn finish_for(&mut self, budget_ms: f64) -> bool {
+        let started = now_ms();
+        while !self.finished.is_done() {
+            for _ in 0..256 {
+                if self.finished.step_record().is_none() {
+                    break;
+                }
+            }
+            if now_ms() - started >= budget_ms {
+                break;
+            }
+        }
+        self.finished.is_done()
+    }
 }
 
 impl StepModel for Run {
+    /// The iterations known: the whole run once finished, else as far as it has grown.
     fn length(&self) -> Length {
-        Length::Finite(self.end)
+        Length::Finite(self.finished.iterations() as u64)
     }
     fn go_to(&mut self, index: u64) {
         let started = now_ms();
-        let k = usize::try_from(index).unwrap_or(usize::MAX);
-        if k < self.rrt.iterations() {
+        let k = usize::try_from(index)
+            .unwrap_or(usize::MAX)
+            .min(self.finished.iterations());
+        let here = self.rrt.iterations();
+        if k < here {
             self.generation += 1;
+            self.rrt.seek(k);
+        } else if k - here > JUMP_BY_COPY {
+            // The run to its end holds the same tree: copy it and go back to k.
+            self.rrt = self.finished.clone();
+            self.rrt.seek(k);
+            self.generation += 1;
+        } else {
+            self.rrt.seek(k);
         }
-        self.rrt.seek(k);
         self.advance_ms = now_ms() - started;
     }
 }
@@ -146,6 +187,14 @@ struct Inner {
     /// Nodes/second while playing: the sample's start (ms, nodes) and the last rate.
     rate_from: Cell<Option<(f64, usize)>>,
     rate: Cell<Option<f64>>,
+    /// Grows the run to its end, one slice per task.
+    finisher: Rc<Timer>,
+    /// Draws the rest of a big tree over the next tasks.
+    tree_more: Rc<Timer>,
+    /// The URL's `it`, waiting for the run to its end to reach it.
+    pending_it: Cell<Option<u64>>,
+    /// "Running to the end: 12,345 of 1,000,000 iterations", while it is.
+    finishing: Element,
     scope: RefCell<Scope>,
 }
 
@@ -175,10 +224,17 @@ impl Page for RrtPage {
         let stepper_slot: Element = role(&root, "stepper")?;
         let world_message: Element = role(&root, "world-message")?;
         let substep_mode: HtmlInputElement = role(&root, "substep-mode")?;
+        let finishing: Element = role(&root, "finishing")?;
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
             let mut scope = Scope::new();
             let url = Some(UrlWriter::new(&mut scope, me, Inner::query));
+            let finisher = scope.timer(me, Inner::finish_slice);
+            let tree_more = scope.timer(me, |p: &Inner| p.draw_tree_now());
             Inner {
+                finisher,
+                tree_more,
+                pending_it: Cell::new(None),
+                finishing,
                 me: me.clone(),
                 run_state: RefCell::new(state.clone()),
                 state: RefCell::new(state),
@@ -214,8 +270,9 @@ impl Page for RrtPage {
         inner.exports.update(&inner.state.borrow());
         inner.redraw_world();
         if start_it > 0 {
-            inner.command(Command::Seek(start_it));
+            inner.pending_it.set(Some(start_it));
         }
+        inner.finish_slice();
         inner.update();
         Ok(RrtPage(inner))
     }
@@ -279,7 +336,10 @@ impl Inner {
             (&self.exports.path, "rrt_path.csv"),
         ] {
             scope.listen_for(el, "click", me, move |p, _| {
-                p.exports.download(&p.run.borrow(), file);
+                let run = p.run.borrow();
+                if run.is_finished() {
+                    p.exports.download(&run, file);
+                }
             })?;
         }
         scope.listen_for(&self.exports.png, "click", me, |p, _| {
@@ -422,6 +482,69 @@ impl Inner {
         self.substep_driving.set(false);
     }
 
+    // ---------- The run to its end ----------
+
+    /// One slice of the run to its end (a small run finishes in the first): the stepper's
+    /// length grows with it, the URL's `it` is gone to once reached; the next slice is
+    /// scheduled as another task until the end.
+    fn finish_slice(&self) {
+        let done = match self.run.try_borrow_mut() {
+            Ok(mut run) => run.finish_for(FINISH_SLICE_MS),
+            Err(_) => false,
+        };
+        if let Some(s) = self.stepper.borrow().as_ref() {
+            s.model_changed();
+        }
+        if let Some(it) = self.pending_it.get() {
+            let reached = self.run.borrow().finished.iterations() as u64 >= it;
+            if done || reached {
+                self.pending_it.set(None);
+                self.command(Command::Seek(it));
+            }
+        }
+        self.show_finishing();
+        if done {
+            self.finisher.cancel();
+        } else {
+            self.finisher.schedule(0);
+        }
+    }
+
+    /// The progress of the run to its end, and the CSV downloads enabled once it is there.
+    fn show_finishing(&self) {
+        let Ok(run) = self.run.try_borrow() else {
+            return;
+        };
+        let done = run.is_finished();
+        let text = (!done).then(|| {
+            ctx::t_args(
+                "rrt-finishing",
+                &[
+                    (
+                        "it",
+                        FluentArg::Text(crate::pyfmt::group_u64(run.finished.iterations() as u64)),
+                    ),
+                    (
+                        "max",
+                        FluentArg::Text(crate::pyfmt::group_u64(run.finished.max_iter() as u64)),
+                    ),
+                ],
+            )
+        });
+        self.finishing.set_text_content(text.as_deref());
+        dom::show(&self.finishing, !done);
+        let _ = self
+            .finishing
+            .set_attribute("data-state", if done { "done" } else { "running" });
+        for el in [&self.exports.nodes, &self.exports.path] {
+            let _ = if done {
+                el.remove_attribute("disabled")
+            } else {
+                el.set_attribute("disabled", "")
+            };
+        }
+    }
+
     // ---------- Editing ----------
 
     /// A field changed: a valid set restarts the run, a refused one keeps the last run.
@@ -467,10 +590,12 @@ impl Inner {
         }
         *self.run_state.borrow_mut() = state.clone();
         self.phase.set(None);
+        self.pending_it.set(None);
         self.exports.update(&state);
         self.exports.commands.clear_status();
-        // Reset: the stepper goes to 0 and reads the new run's length.
+        // Reset: the stepper goes to 0 and reads the new run's length (then grows with it).
         self.command(Command::Reset);
+        self.finish_slice();
         if let Some(url) = self.url.as_ref() {
             url.write_now();
         }
@@ -649,6 +774,39 @@ impl Inner {
         phases(r).get(i).copied()
     }
 
+    /// Layer 1 up to the node shown, a big tree over several tasks.
+    fn draw_tree_now(&self) {
+        let phase = if self.substep_mode.checked() {
+            self.shown_phase()
+        } else {
+            None
+        };
+        let Ok(run) = self.run.try_borrow() else {
+            return;
+        };
+        // Before its outcome (sub-step mode), the iteration's new nodes are not drawn yet.
+        let mut upto = run.rrt.nodes().len();
+        if phase.is_some_and(|p| p != Phase::Outcome) {
+            upto -= match run.rrt.last().map(|r| r.outcome) {
+                Some(RrtOutcome::Added { .. }) => 1,
+                Some(RrtOutcome::GoalReached { .. }) => 2,
+                _ => 0,
+            };
+        }
+        let started = now_ms();
+        let ink = Ink::current();
+        let mut world = self.world.borrow_mut();
+        let mut complete = world.draw_tree(&run, upto, TREE_NODES_PER_CHUNK, ink);
+        while !complete && now_ms() - started < TREE_MS_PER_TASK {
+            complete = world.draw_tree(&run, upto, TREE_NODES_PER_CHUNK, ink);
+        }
+        if complete {
+            self.tree_more.cancel();
+        } else {
+            self.tree_more.schedule(0);
+        }
+    }
+
     fn update_marks(&self) {
         let phase = if self.substep_mode.checked() {
             self.shown_phase()
@@ -684,21 +842,7 @@ impl Inner {
         } else {
             None
         };
-        let Ok(run) = self.run.try_borrow() else {
-            return;
-        };
-        let ink = Ink::current();
-        // Before its outcome (sub-step mode), the iteration's new nodes are not drawn yet.
-        let mut upto = run.rrt.nodes().len();
-        if phase.is_some_and(|p| p != Phase::Outcome) {
-            upto -= match run.rrt.last().map(|r| r.outcome) {
-                Some(RrtOutcome::Added { .. }) => 1,
-                Some(RrtOutcome::GoalReached { .. }) => 2,
-                _ => 0,
-            };
-        }
-        self.world.borrow_mut().draw_tree(&run, upto, ink);
-        drop(run);
+        self.draw_tree_now();
         self.draw_marks_with(phase);
         let draw_ms = now_ms() - started;
         let Ok(run) = self.run.try_borrow() else {
@@ -782,6 +926,7 @@ impl Inner {
         }
         self.exports.relocalize();
         self.render_refusal();
+        self.show_finishing();
         self.redraw_world();
         self.update();
     }

@@ -182,8 +182,9 @@ impl WorldView {
 
     /// Layer 1: the tree's first `upto` nodes, appending the ones not drawn yet (the whole
     /// tree after a step back, a new run, a resize, or fewer nodes asked for: sub-step mode
-    /// hides the iteration's new node until its outcome).
-    pub fn draw_tree(&mut self, run: &Run, upto: usize, ink: Ink) {
+    /// hides the iteration's new node until its outcome), at most `most` nodes per call;
+    /// `true` once the tree is drawn to `upto`.
+    pub fn draw_tree(&mut self, run: &Run, upto: usize, most: usize, ink: Ink) -> bool {
         let layer = self.canvas.layer(1);
         let all = run.rrt.nodes();
         let nodes = &all[..upto.min(all.len())];
@@ -194,8 +195,10 @@ impl WorldView {
             self.tree_generation = Some(run.generation);
         }
         if self.tree_drawn >= nodes.len() {
-            return;
+            return true;
         }
+        let whole = nodes;
+        let nodes = &whole[..whole.len().min(self.tree_drawn.saturating_add(most.max(1)))];
         let c = &layer.ctx;
         let f = &self.frame;
         c.set_stroke_style_str(TREE);
@@ -205,7 +208,7 @@ impl WorldView {
             .iter()
             .zip(&parents[self.tree_drawn..])
         {
-            if let Some(p) = parent.and_then(|i| nodes.get(i)) {
+            if let Some(p) = parent.and_then(|i| whole.get(i)) {
                 let a = f.px(*p);
                 let b = f.px(*node);
                 c.move_to(a.x, a.y);
@@ -222,6 +225,7 @@ impl WorldView {
         }
         c.fill();
         self.tree_drawn = nodes.len();
+        self.tree_drawn >= whole.len()
     }
 
     /// Layer 2: the path, the newest node, the iteration's sub-steps up to `phase`, the
