@@ -156,6 +156,13 @@ test('the timestep control sets h (field, URL, run); the end of a damped run off
     await page.locator('[data-action="undamped"]').click();
     assert.equal(await page.locator('[data-field="damping"]').inputValue(), '0');
     await page.waitForFunction(() => document.querySelector('[data-action="run"]').getAttribute('aria-pressed') === 'true');
+    // The run button's label follows play and pause (set only when it changes).
+    const run = page.locator('[data-action="run"]');
+    assert.equal(await run.getAttribute('aria-label'), 'Pause (Space)');
+    await run.click();
+    assert.equal(await run.getAttribute('aria-label'), 'Play (Space)');
+    await run.click();
+    assert.equal(await run.getAttribute('aria-label'), 'Pause (Space)');
     assert.equal(await notice.isVisible(), false);
     await page.waitForFunction(() => /damping=0(&|$)/.test(location.hash), null, { timeout: 3000 });
     assert.deepEqual(errors, []);

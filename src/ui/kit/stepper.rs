@@ -97,6 +97,9 @@ struct Inner<M: StepModel + 'static> {
     frame: RefCell<Option<FrameLoop>>,
     last_frame_ms: Cell<Option<f64>>,
     last_work_ms: Cell<f64>,
+    /// The play state the run button shows (its label is looked up only when this changes;
+    /// `None` after a language change).
+    shown_playing: Cell<Option<bool>>,
 }
 
 /// A stepper driving `M`. Dropping it removes its listeners and stops playing.
@@ -131,6 +134,7 @@ impl<M: StepModel + 'static> StepperWidget<M> {
             frame: RefCell::new(None),
             last_frame_ms: Cell::new(None),
             last_work_ms: Cell::new(0.0),
+            shown_playing: Cell::new(None),
         });
         let mut scope = Scope::new();
         let weak = Rc::downgrade(&inner);
@@ -305,8 +309,8 @@ impl<M: StepModel + 'static> Inner<M> {
             } else {
                 button.set_attribute("disabled", "")
             };
-            if *action == "run" {
-                let playing = state.playing();
+            let playing = state.playing();
+            if *action == "run" && self.shown_playing.replace(Some(playing)) != Some(playing) {
                 let _ =
                     button.set_attribute("aria-pressed", if playing { "true" } else { "false" });
                 button.set_text_content(Some(if playing { "❚❚" } else { "▶" }));
@@ -347,6 +351,7 @@ impl<M: StepModel + 'static> Inner<M> {
     }
 
     fn relocalize(&self) {
+        self.shown_playing.set(None);
         let _ = dom::relocalize(&self.els.root);
         let options = dom::matching(&self.els.speed, "option").unwrap_or_default();
         for (option, speed) in options.iter().zip(&self.speeds) {
