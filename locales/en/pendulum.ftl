@@ -38,6 +38,10 @@ pendulum-s-pe = pe
 pendulum-s-total = total
 pendulum-s-true = true energy
 pendulum-s-separatrix = separatrix
+pendulum-s-euler = Euler
+pendulum-s-rk4 = RK4
+# A curve of one integrator in compare mode: "ke (RK4)".
+pendulum-s-tagged = { $what } ({ $integrator })
 pendulum-ax-t = simulated time
 pendulum-ax-energy = energy E
 pendulum-ax-theta = angle θ

@@ -38,6 +38,10 @@ pendulum-s-pe = 位置
 pendulum-s-total = 合計
 pendulum-s-true = 真のエネルギー
 pendulum-s-separatrix = セパラトリクス
+pendulum-s-euler = オイラー法
+pendulum-s-rk4 = RK4
+# 比較モードで積分法ごとの曲線：「運動（RK4）」
+pendulum-s-tagged = { $what }（{ $integrator }）
 pendulum-ax-t = 時間
 pendulum-ax-energy = エネルギー
 pendulum-ax-theta = 角度 θ

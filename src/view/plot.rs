@@ -232,6 +232,33 @@ pub fn decimate(pts: &[(f64, f64)], x: &LinearScale) -> Vec<(f64, f64)> {
     out
 }
 
+/// Packs legend entries `(series, text width)`, in order, into rows at most `width` wide
+/// (each entry is its swatch `lead` plus its text, `gap` between entries); an entry wider
+/// than a row gets a row of its own. No entries: no rows.
+pub fn legend_layout(
+    entries: &[(usize, f64)],
+    lead: f64,
+    gap: f64,
+    width: f64,
+) -> Vec<Vec<(usize, f64)>> {
+    let mut rows: Vec<Vec<(usize, f64)>> = Vec::new();
+    let mut used = 0.0;
+    for &(i, w) in entries {
+        let need = lead + w;
+        match rows.last_mut() {
+            Some(row) if used + gap + need <= width => {
+                row.push((i, w));
+                used += gap + need;
+            }
+            _ => {
+                rows.push(vec![(i, w)]);
+                used = need;
+            }
+        }
+    }
+    rows
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -370,5 +397,19 @@ mod tests {
         assert_eq!(x.map(a.0).floor(), x.map(b.0).floor());
         assert_eq!(x.map(a.1).floor(), x.map(b.1).floor());
         assert_eq!((d.first(), d.last()), (pts.first(), pts.last()));
+    }
+
+    #[test]
+    fn legend_rows_pack_in_order_and_wrap() {
+        let e = [(0, 20.0), (1, 20.0), (2, 20.0), (3, 100.0)];
+        // lead 10 + text: 30, 30, 30 with gaps of 5: 100 fits one row; 110 does not.
+        assert_eq!(legend_layout(&e[..3], 10.0, 5.0, 100.0).len(), 1);
+        let rows = legend_layout(&e, 10.0, 5.0, 70.0);
+        let ids: Vec<Vec<usize>> = rows
+            .iter()
+            .map(|r| r.iter().map(|x| x.0).collect())
+            .collect();
+        assert_eq!(ids, vec![vec![0, 1], vec![2], vec![3]]);
+        assert!(legend_layout(&[], 10.0, 5.0, 70.0).is_empty());
     }
 }

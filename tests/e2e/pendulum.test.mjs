@@ -156,6 +156,13 @@ test('the timestep control sets h (field, URL, run); the end of a damped run off
     await page.locator('[data-action="undamped"]').click();
     assert.equal(await page.locator('[data-field="damping"]').inputValue(), '0');
     await page.waitForFunction(() => document.querySelector('[data-action="run"]').getAttribute('aria-pressed') === 'true');
+    // The run button's label follows play and pause (set only when it changes).
+    const run = page.locator('[data-action="run"]');
+    assert.equal(await run.getAttribute('aria-label'), 'Pause (Space)');
+    await run.click();
+    assert.equal(await run.getAttribute('aria-label'), 'Play (Space)');
+    await run.click();
+    assert.equal(await run.getAttribute('aria-label'), 'Pause (Space)');
     assert.equal(await notice.isVisible(), false);
     await page.waitForFunction(() => /damping=0(&|$)/.test(location.hash), null, { timeout: 3000 });
     assert.deepEqual(errors, []);
@@ -200,9 +207,31 @@ test('compare mode shows both drifts, RK4 far smaller', async () => {
     assert.ok(Math.abs(r['drift-euler']) > 1e-5, `euler ${r['drift-euler']}`);
     assert.ok(Math.abs(r['drift-rk4']) < Math.abs(r['drift-euler']) / 100, `rk4 ${r['drift-rk4']} vs euler ${r['drift-euler']}`);
     assert.equal(r.drift, r['drift-euler']);
-    // Off again: the drift readouts go.
+    // Every plot panel holds both integrators' curves, each with every step of the run
+    // (5 s / 0.002 s = 2500 rows): the plots' own record of their series (data-series).
+    const panels = async (role) => (await page.locator(`[data-pend="${role}"]`).getAttribute('data-series'))
+      .split(';').map((panel) => Object.fromEntries(panel.split('|').map((s) => {
+        const at = s.lastIndexOf('=');
+        return [s.slice(0, at), Number(s.slice(at + 1))];
+      })));
+    const [energy, theta, omega, error] = await panels('time-stage');
+    const [phase] = await panels('phase-stage');
+    const want = {};
+    for (const what of ['ke', 'pe', 'total', 'true energy']) {
+      for (const int of ['Euler', 'RK4']) want[`${what} (${int})`] = 2500;
+    }
+    assert.deepEqual(energy, want);
+    assert.ok(phase.separatrix > 100, `separatrix ${phase.separatrix} points`);
+    delete phase.separatrix;
+    for (const [name, panel] of [['theta', theta], ['omega', omega], ['error', error], ['phase', phase]]) {
+      assert.deepEqual(panel, { Euler: 2500, RK4: 2500 }, name);
+    }
+    // Off again: the drift readouts go, and the plots hold one integrator's curves.
     await page.locator('[data-field="compare"]').uncheck();
     assert.equal(await page.locator('[data-readout="drift-rk4"]').isVisible(), false);
+    await page.locator('[data-action="end"]').click();
+    const [energyOne] = await panels('time-stage');
+    assert.deepEqual(Object.keys(energyOne), ['ke', 'pe', 'total', 'true energy']);
     assert.deepEqual(errors, []);
   } finally {
     await close();
@@ -266,8 +295,9 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
   const shots = [
     ['pendulum-en-1920.png', '#/pendulum-energy?compare=1', { viewport: { width: 1920, height: 1080 } }],
     ['pendulum-ja-1920.png', '#/pendulum-energy?compare=1&lang=ja', { viewport: { width: 1920, height: 1080 } }],
-    ['pendulum-projector-1920.png', '#/pendulum-energy', { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
-    ['pendulum-phone-390.png', '#/pendulum-energy?lang=ja', { viewport: { width: 390, height: 844 } }],
+    ['pendulum-projector-1920.png', '#/pendulum-energy?compare=1', { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
+    ['pendulum-phone-390.png', '#/pendulum-energy?lang=ja&compare=1', { viewport: { width: 390, height: 844 } }],
+    ['pendulum-phone-390-en.png', '#/pendulum-energy?compare=1', { viewport: { width: 390, height: 844 } }],
   ];
   for (const [file, hash, opts] of shots) {
     const { page, errors, close } = await open(hash, opts);
@@ -276,9 +306,18 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
       await page.locator('[data-action="run"]').click();
       const width = await page.evaluate(() => document.documentElement.scrollWidth);
       assert.ok(width <= opts.viewport.width, `${file}: page ${width} px wide`);
-      await page.screenshot({ path: join(OUT, file) });
-      await page.locator('.pend-plots').screenshot({ path: join(OUT, file.replace('.png', '-plots.png')) });
-      assert.deepEqual(errors, []);
+      await page.screenshot({ path: join(OUT, file), caret: 'initial' });
+      // An element screenshot taller than the viewport makes Playwright inject a style the
+      // CSP blocks (now and then): a phone gets one picture per plot.
+      const plots = page.locator('.pend-plots');
+      if ((await plots.boundingBox()).height <= opts.viewport.height) {
+        await plots.screenshot({ path: join(OUT, file.replace('.png', '-plots.png')), caret: 'initial' });
+      } else {
+        for (const which of ['time', 'phase']) {
+          await page.locator(`.pend-stage-${which}`).screenshot({ path: join(OUT, file.replace('.png', `-${which}.png`)), caret: 'initial' });
+        }
+      }
+      assert.deepEqual(errors, [], file);
     } finally {
       await close();
     }

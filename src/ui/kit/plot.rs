@@ -29,7 +29,7 @@ use web_sys::Element;
 use super::canvas::{solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
 use crate::view::plot::{
-    decimate, log_axis_range, log_tick_label, nice_step, tick_label, LinearScale,
+    decimate, legend_layout, log_axis_range, log_tick_label, nice_step, tick_label, LinearScale,
 };
 
 use glam::DVec2;
@@ -163,6 +163,11 @@ impl Plot {
         self.axes_dirty = true;
         self.data_dirty = true;
         self.cursor_dirty = true;
+    }
+
+    /// The spec set last, if any.
+    pub fn spec(&self) -> Option<&PlotSpec> {
+        self.spec.as_ref()
     }
 
     /// Makes the y axis of `panel` logarithmic (base 10) or linear (the default). The panel's
@@ -355,21 +360,55 @@ impl Plot {
             CanvasBackend::with_canvas_object(layer.canvas.clone()).ok_or("no canvas backend")?;
         let root = backend.into_drawing_area();
         let total = layer.canvas.height() as i32;
-        let each = (total - x_label) / n;
+        let legend_row = (ink.text_px(12.0) * 1.5 * dpr).round() as i32;
+        // Legend rows per panel: entries packed in order into rows as wide as the plotting
+        // area, so many series (or a narrow screen, or projector type) wrap, never overflow.
+        let swatch = 18.0 * ink.line;
+        let gap = 14.0 * ink.text;
+        let legend_font = ink.font(12.0, false);
+        layer.ctx.set_font(&legend_font);
+        let css_width = f64::from(layer.canvas.width()) / dpr;
+        // The plotting area's width: less the margins, the y labels and the right-hand room.
+        let legend_width = css_width - (f64::from(2 * margin + y_label) + 1.2 * font) / dpr;
+        let legends: Vec<Vec<Vec<(usize, f64)>>> = spec
+            .panels
+            .iter()
+            .map(|panel| {
+                let entries: Vec<(usize, f64)> = panel
+                    .series
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, s)| !s.name.is_empty())
+                    .map(|(i, s)| {
+                        let w = layer.ctx.measure_text(&s.name).map_or(40.0, |m| m.width());
+                        (i, w)
+                    })
+                    .collect();
+                legend_layout(&entries, swatch + 6.0, gap, legend_width)
+            })
+            .collect();
+        // Every panel gets the same plotting height; a panel whose legend wraps to more rows
+        // is that much taller (its rows are added, not taken from its data).
+        let rows: Vec<i32> = legends
+            .iter()
+            .map(|r| r.len().max(1) as i32)
+            .chain(std::iter::repeat(1))
+            .take(n as usize)
+            .collect();
+        let each = (total - x_label - legend_row * rows.iter().sum::<i32>()) / n;
         let mut rest: DrawArea = root;
         let mut panels = Vec::new();
-        for i in 0..n {
-            if i + 1 == n {
+        for (i, r) in rows.iter().enumerate() {
+            if i + 1 == rows.len() {
                 panels.push(rest.clone());
             } else {
-                let (upper, lower) = rest.split_vertically(each);
+                let (upper, lower) = rest.split_vertically(each + legend_row * r);
                 panels.push(upper);
                 rest = lower;
             }
         }
         // Label decimals from a finer step than plotters' ticks, so no two ticks read alike.
         let x_step = nice_step(spec.x.range.0, spec.x.range.1, 12);
-        let legend_row = (ink.text_px(12.0) * 1.5 * dpr).round() as i32;
         let x_desc = spec.x.desc();
         self.areas.clear();
         for (i, (area, panel)) in panels.iter().zip(&spec.panels).enumerate() {
@@ -380,16 +419,17 @@ impl Plot {
             // A log axis: ticks on whole decades where the span allows (plotters picks 1-2-5
             // steps of at most this many labels).
             // No more labels than fit the panel's height (projector type is large).
-            let fit = ((f64::from(each) / (2.2 * font)).floor() as usize).max(2);
+            let fit = ((f64::from(each + legend_row) / (2.2 * font)).floor() as usize).max(2);
             let y_labels = if log {
                 ((y.1 - y.0).abs().floor() as usize + 1).clamp(2, 8)
             } else {
                 5
             }
             .min(fit);
+            let rows = rows.get(i).copied().unwrap_or(1);
             let mut chart = ChartBuilder::on(area)
                 .margin(margin)
-                .margin_top(margin + legend_row)
+                .margin_top(margin + legend_row * rows)
                 // Room for half of the last x tick label, centred on the right edge.
                 .margin_right(margin + (1.2 * font) as i32)
                 .x_label_area_size(if bottom { x_label } else { 0 })
@@ -442,29 +482,32 @@ impl Plot {
         // cover the data.
         let ctx = &layer.ctx;
         let _ = ctx.set_transform(dpr, 0.0, 0.0, dpr, 0.0, 0.0);
-        ctx.set_font(&ink.font(12.0, false));
+        ctx.set_font(&legend_font);
         ctx.set_text_baseline("middle");
         ctx.set_text_align("left");
-        let swatch = 18.0 * ink.line;
-        let gap = 14.0 * ink.text;
-        for (area, panel) in self.areas.iter().zip(&spec.panels) {
-            let cy = area.y0 - f64::from(legend_row) / dpr / 2.0 - 1.0;
-            let mut x = area.x1;
-            // Right to left, so the last series ends at the right edge.
-            for s in panel.series.iter().rev().filter(|s| !s.name.is_empty()) {
-                let w = ctx.measure_text(&s.name).map_or(40.0, |m| m.width());
-                x -= w;
-                ctx.set_fill_style_str("#3a4250");
-                let _ = ctx.fill_text(&s.name, x, cy);
-                x -= swatch + 6.0;
-                let (r, g, b) = s.rgb;
-                ctx.set_stroke_style_str(&format!("rgb({r},{g},{b})"));
-                ctx.set_line_width(3.0 * ink.line);
-                ctx.begin_path();
-                ctx.move_to(x, cy);
-                ctx.line_to(x + swatch, cy);
-                ctx.stroke();
-                x -= gap;
+        let row_h = f64::from(legend_row) / dpr;
+        for ((area, panel), rows) in self.areas.iter().zip(&spec.panels).zip(&legends) {
+            for (r, row) in rows.iter().enumerate() {
+                let cy = area.y0 - row_h * (rows.len() - r) as f64 + row_h / 2.0 - 1.0;
+                let mut x = area.x1;
+                // Right to left, so the row's last series ends at the right edge.
+                for &(i, w) in row.iter().rev() {
+                    let Some(s) = panel.series.get(i) else {
+                        continue;
+                    };
+                    x -= w;
+                    ctx.set_fill_style_str("#3a4250");
+                    let _ = ctx.fill_text(&s.name, x, cy);
+                    x -= swatch + 6.0;
+                    let (r, g, b) = s.rgb;
+                    ctx.set_stroke_style_str(&format!("rgb({r},{g},{b})"));
+                    ctx.set_line_width(3.0 * ink.line);
+                    ctx.begin_path();
+                    ctx.move_to(x, cy);
+                    ctx.line_to(x + swatch, cy);
+                    ctx.stroke();
+                    x -= gap;
+                }
             }
         }
         Ok(())

@@ -99,6 +99,9 @@ struct Inner<M: StepModel + 'static> {
     last_work_ms: Cell<f64>,
     /// Whether a frame's work, for [`Speed::Max`], includes the page's redraw.
     work_counts_redraw: Cell<bool>,
+    /// The play state the run button shows (its label is looked up only when this changes;
+    /// `None` after a language change).
+    shown_playing: Cell<Option<bool>>,
 }
 
 /// A stepper driving `M`. Dropping it removes its listeners and stops playing.
@@ -134,6 +137,7 @@ impl<M: StepModel + 'static> StepperWidget<M> {
             last_frame_ms: Cell::new(None),
             last_work_ms: Cell::new(0.0),
             work_counts_redraw: Cell::new(false),
+            shown_playing: Cell::new(None),
         });
         let mut scope = Scope::new();
         let weak = Rc::downgrade(&inner);
@@ -322,8 +326,8 @@ impl<M: StepModel + 'static> Inner<M> {
             } else {
                 button.set_attribute("disabled", "")
             };
-            if *action == "run" {
-                let playing = state.playing();
+            let playing = state.playing();
+            if *action == "run" && self.shown_playing.replace(Some(playing)) != Some(playing) {
                 let _ =
                     button.set_attribute("aria-pressed", if playing { "true" } else { "false" });
                 button.set_text_content(Some(if playing { "❚❚" } else { "▶" }));
@@ -364,6 +368,7 @@ impl<M: StepModel + 'static> Inner<M> {
     }
 
     fn relocalize(&self) {
+        self.shown_playing.set(None);
         let _ = dom::relocalize(&self.els.root);
         let options = dom::matching(&self.els.speed, "option").unwrap_or_default();
         for (option, speed) in options.iter().zip(&self.speeds) {

@@ -578,6 +578,9 @@ impl Inner {
             let mut plots = self.plots.borrow_mut();
             plots.update(&sim.tracks, index);
             plots.draw(ink);
+            if !self.stepper.borrow().as_ref().is_some_and(|s| s.playing()) {
+                plots.describe();
+            }
         }
         if let Some(track) = sim.tracks.first() {
             let p = &sim.params;

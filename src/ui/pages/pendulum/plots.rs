@@ -22,6 +22,10 @@ const PHASE_POINTS: u64 = 6000;
 pub struct Plots {
     pub time: Plot,
     pub phase: Plot,
+    /// The stages, where [`Plots::describe`] writes `data-series`.
+    stages: [Element; 2],
+    /// What `data-series` holds on each stage.
+    described: [String; 2],
     /// Rows appended per track.
     appended: Vec<usize>,
     stride: usize,
@@ -39,8 +43,8 @@ fn series(name: String, rgb: (u8, u8, u8), alpha: f64, mark: Mark) -> SeriesSpec
 
 fn int_name(i: Integrator) -> String {
     ctx::t(match i {
-        Integrator::Euler => "pendulum-int-euler",
-        Integrator::Rk4 => "pendulum-int-rk4",
+        Integrator::Euler => "pendulum-s-euler",
+        Integrator::Rk4 => "pendulum-s-rk4",
     })
 }
 
@@ -50,6 +54,8 @@ impl Plots {
         Ok(Plots {
             time: Plot::new(time)?,
             phase: Plot::new(phase)?,
+            stages: [time.clone(), phase.clone()],
+            described: [String::new(), String::new()],
             appended: Vec::new(),
             stride: 1,
         })
@@ -75,18 +81,24 @@ impl Plots {
             .map(|t| int_name(t.start().params().integrator))
             .collect();
         let two = tracks.len() > 1;
-        let tag = |k: usize, what: &str| {
+        // In compare mode each energy curve is tagged with its integrator ("ke (RK4)").
+        let tag = |k: usize, id: &str| {
             if two {
-                format!("{what} ({})", names[k])
+                ctx::t_strings(
+                    "pendulum-s-tagged",
+                    &[("what", ctx::t(id)), ("integrator", names[k].clone())],
+                )
             } else {
-                what.to_string()
+                ctx::t(id)
             }
         };
-        let colors = [(31, 119, 180), (124, 58, 237)];
-        let mut energy = vec![
-            series(ctx::t("pendulum-s-ke"), (23, 190, 207), 0.9, Mark::Line),
-            series(ctx::t("pendulum-s-pe"), (255, 127, 14), 0.9, Mark::Line),
-        ];
+        // Colours per track (the page's integrator first, the second one's distinct hues):
+        // ke, pe, total, true energy (also the angle, rate, error and phase curves).
+        const KE: [(u8, u8, u8); 2] = [(23, 190, 207), (140, 86, 75)];
+        const PE: [(u8, u8, u8); 2] = [(255, 127, 14), (227, 119, 194)];
+        const TOTAL: [(u8, u8, u8); 2] = [(44, 160, 44), (188, 189, 34)];
+        const TRUE: [(u8, u8, u8); 2] = [(31, 119, 180), (124, 58, 237)];
+        let mut energy = Vec::new();
         let mut theta = Vec::new();
         let mut omega = Vec::new();
         let mut error = Vec::new();
@@ -97,24 +109,19 @@ impl Plots {
             0.8,
             Mark::Line,
         )];
-        for k in 0..tracks.len() {
+        // Energy series of track k: ke, pe, total, true energy at 4k..4k+3.
+        for (k, name) in names.iter().enumerate() {
+            let c = k.min(1);
             let alpha = if k == 0 { 1.0 } else { 0.75 };
-            energy.push(series(
-                tag(k, &ctx::t("pendulum-s-total")),
-                [(44, 160, 44), (188, 189, 34)][k],
-                alpha,
-                Mark::Line,
-            ));
-            energy.push(series(
-                tag(k, &ctx::t("pendulum-s-true")),
-                colors[k],
-                alpha,
-                Mark::Line,
-            ));
-            theta.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
-            omega.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
-            error.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
-            phase.push(series(names[k].clone(), colors[k], alpha, Mark::Line));
+            let line = |name: String, rgb| series(name, rgb, alpha, Mark::Line);
+            energy.push(line(tag(k, "pendulum-s-ke"), KE[c]));
+            energy.push(line(tag(k, "pendulum-s-pe"), PE[c]));
+            energy.push(line(tag(k, "pendulum-s-total"), TOTAL[c]));
+            energy.push(line(tag(k, "pendulum-s-true"), TRUE[c]));
+            theta.push(line(name.clone(), TRUE[c]));
+            omega.push(line(name.clone(), TRUE[c]));
+            error.push(line(name.clone(), TRUE[c]));
+            phase.push(line(name.clone(), TRUE[c]));
         }
         let axis = |title: &str, unit: &str, range: (f64, f64)| AxisSpec {
             title: ctx::t(title),
@@ -198,13 +205,11 @@ impl Plots {
             let pts = |f: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
                 (0..new.len()).map(|i| (state_t(i), f(i))).collect()
             };
-            self.time.append(0, 2 + 2 * k, &pts(&|i| new[i].total));
+            self.time.append(0, 4 * k, &pts(&|i| new[i].ke));
+            self.time.append(0, 4 * k + 1, &pts(&|i| new[i].pe));
+            self.time.append(0, 4 * k + 2, &pts(&|i| new[i].total));
             self.time
-                .append(0, 3 + 2 * k, &pts(&|i| new[i].true_energy));
-            if k == 0 {
-                self.time.append(0, 0, &pts(&|i| new[i].ke));
-                self.time.append(0, 1, &pts(&|i| new[i].pe));
-            }
+                .append(0, 4 * k + 3, &pts(&|i| new[i].true_energy));
             self.time.append(1, k, &pts(&|i| new[i].theta));
             self.time.append(2, k, &pts(&|i| new[i].omega));
             self.time
@@ -232,6 +237,37 @@ impl Plots {
                 })
                 .collect(),
         );
+    }
+
+    /// Writes on each stage what its panels hold (a test hook, written when the animation
+    /// stops, not per frame): `data-series` = panels separated by `;`, each a `|`-separated
+    /// list of `name=points` (series without a name are left out).
+    pub fn describe(&mut self) {
+        for (k, plot) in [&self.time, &self.phase].into_iter().enumerate() {
+            let Some(spec) = plot.spec() else {
+                continue;
+            };
+            let text = spec
+                .panels
+                .iter()
+                .enumerate()
+                .map(|(p, panel)| {
+                    panel
+                        .series
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, s)| !s.name.is_empty())
+                        .map(|(i, s)| format!("{}={}", s.name, plot.series(p, i).len()))
+                        .collect::<Vec<_>>()
+                        .join("|")
+                })
+                .collect::<Vec<_>>()
+                .join(";");
+            if text != self.described[k] {
+                let _ = self.stages[k].set_attribute("data-series", &text);
+                self.described[k] = text;
+            }
+        }
     }
 
     /// Draws what changed.
