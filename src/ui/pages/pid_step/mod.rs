@@ -25,7 +25,7 @@ use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
-use crate::view::pid_step::{figures, response};
+use crate::view::pid_step::{figures, response, StepFigures};
 use crate::view::signal::{sig, snap, Slider};
 
 /// The page, as the shell's page table lists it.
@@ -79,11 +79,14 @@ const READOUTS: [(&str, &str); 7] = [
 /// The mounted page.
 pub struct PidPage(Rc<Inner>);
 
-/// The run shown, the run the ghost is drawn from, and whether a change is under way.
+/// The run shown (and its figures), the run the ghost is drawn from (a new ghost, a new
+/// generation), and the last committed run.
 struct Runs {
     now: Vec<PidSample>,
+    figures: StepFigures,
     committed: Vec<PidSample>,
     ghost: Option<Vec<PidSample>>,
+    ghost_generation: u64,
 }
 
 struct Inner {
@@ -152,8 +155,10 @@ impl Page for PidPage {
                 warning,
                 runs: RefCell::new(Runs {
                     committed: rows.clone(),
+                    figures: figures(&rows),
                     now: rows,
                     ghost: None,
+                    ghost_generation: 0,
                 }),
                 changing: Cell::new(false),
                 url: RefCell::new(Some(url)),
@@ -233,12 +238,15 @@ impl Inner {
         {
             let mut runs = self.runs.borrow_mut();
             if !self.changing.replace(true) {
-                runs.ghost = Some(runs.committed.clone());
+                // The committed run becomes the ghost: no copy, the next commit replaces it.
+                runs.ghost = Some(std::mem::take(&mut runs.committed));
+                runs.ghost_generation += 1;
             }
+            runs.figures = figures(&rows);
             runs.now = rows;
         }
         self.redraw(false);
-        let f = figures(&self.runs.borrow().now);
+        let f = self.runs.borrow().figures;
         // The unit belongs to a number only: "not reached" stands alone.
         let or_none = |x: Option<f64>, unit_id: &str| {
             x.map_or_else(
@@ -272,7 +280,7 @@ impl Inner {
     fn redraw(&self, resized: bool) {
         let t0 = now_ms();
         let runs = self.runs.borrow();
-        let f = figures(&runs.now);
+        let f = runs.figures;
         let ro = &self.readouts;
         let show = |key: &str, x: Option<f64>, digits: usize| match x {
             Some(x) => ro.set_exact(key, &sig(x, digits), &py_float(x)),
@@ -291,9 +299,11 @@ impl Inner {
             .collect();
         self.warning.set_text_content(Some(&text.join(" ")));
         dom::show(&self.warning, !text.is_empty());
-        self.plots
-            .borrow_mut()
-            .show(&runs.now, runs.ghost.as_deref(), resized);
+        self.plots.borrow_mut().show(
+            &runs.now,
+            runs.ghost.as_deref().map(|g| (runs.ghost_generation, g)),
+            resized,
+        );
         record_frame_ms(now_ms() - t0);
     }
 }

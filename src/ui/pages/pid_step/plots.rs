@@ -21,6 +21,22 @@ const C_GHOST: (u8, u8, u8) = (120, 128, 140);
 /// The plots component.
 pub struct Plots {
     plot: Plot,
+    /// The ghost's ranges and thinned series, kept while the ghost, the time axis and the
+    /// panel are the same (the ghost does not change during a drag).
+    ghost: Option<GhostCache>,
+}
+
+/// A ghost's generation, the time range and the panel in px (`Plot::panel_px`).
+type GhostKey = (u64, (f64, f64), Option<(f64, f64, f64, f64)>);
+
+/// What is drawn of one ghost: its key (generation, time range, panel in px), its y and u
+/// ranges, its thinned y and u.
+struct GhostCache {
+    key: GhostKey,
+    y_range: (f64, f64),
+    u_range: (f64, f64),
+    y: Vec<(f64, f64)>,
+    u: Vec<(f64, f64)>,
 }
 
 fn series(id: &str, rgb: (u8, u8, u8), mark: Mark, width: f64, alpha: f64) -> SeriesSpec {
@@ -33,10 +49,20 @@ fn series(id: &str, rgb: (u8, u8, u8), mark: Mark, width: f64, alpha: f64) -> Se
     }
 }
 
-/// A column of finite values (an overflowed run plots up to where it broke).
-fn range(rows: &[&[PidSample]], f: fn(&PidSample) -> f64, with: f64) -> (f64, f64) {
-    let values = rows.iter().flat_map(|r| r.iter().map(f)).chain([with]);
-    let r = auto_range(values.map(|v| v.clamp(-1e12, 1e12)), 0.06).unwrap_or((-1.0, 1.0));
+/// The raw range (lo, hi) of the finite values of a column, clamped to ±1e12 (an overflowed
+/// run plots up to where it broke); `(inf, -inf)` when there is none.
+fn extent(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    values
+        .filter(|v| v.is_finite())
+        .map(|v| v.clamp(-1e12, 1e12))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        })
+}
+
+/// The axis range of extents `a` and `b` and the value `with`, padded and snapped.
+fn range(a: (f64, f64), b: (f64, f64), with: f64) -> (f64, f64) {
+    let r = auto_range([a.0, a.1, b.0, b.1, with], 0.06).unwrap_or((-1.0, 1.0));
     nice_range(r)
 }
 
@@ -44,18 +70,19 @@ impl Plots {
     pub fn new(stage: &Element) -> Result<Plots, JsValue> {
         Ok(Plots {
             plot: Plot::new(stage)?,
+            ghost: None,
         })
     }
 
-    /// Shows the run `now` over the `ghost`; `resized` refits the canvases.
-    pub fn show(&mut self, now: &[PidSample], ghost: Option<&[PidSample]>, resized: bool) {
-        let mut all = vec![now];
-        all.extend(ghost);
-        let t_end = all
-            .iter()
-            .filter_map(|r| r.last())
+    /// Shows the run `now` over the `ghost` (`generation` names it: a new ghost, a new
+    /// number); `resized` refits the canvases.
+    pub fn show(&mut self, now: &[PidSample], ghost: Option<(u64, &[PidSample])>, resized: bool) {
+        let t_end = [now.last(), ghost.and_then(|g| g.1.last())]
+            .into_iter()
+            .flatten()
             .map(|s| s.t)
             .fold(DT_S, f64::max);
+        let x = (0.0, t_end);
         let axis = |title: &str, unit: &str, range| AxisSpec {
             title: ctx::t(title),
             unit: if unit.is_empty() {
@@ -73,36 +100,63 @@ impl Plots {
         top.push(series("pid-series-y", C_Y, Mark::LineAndPoints, 2.0, 1.0));
         let mut bottom: Vec<SeriesSpec> = ghost_series("pid-series-ghost-u").into_iter().collect();
         bottom.push(series("pid-series-u", C_U, Mark::LineAndPoints, 2.0, 1.0));
+        let none = (f64::INFINITY, f64::NEG_INFINITY);
+        let (ghost_y, ghost_u) = self
+            .ghost
+            .as_ref()
+            .filter(|_| ghost.is_some())
+            .map_or((none, none), |c| (c.y_range, c.u_range));
+        // A new ghost: its ranges now (its thinned series once the axes are set, below).
+        let fresh = ghost
+            .filter(|(generation, _)| self.ghost.as_ref().map(|c| c.key.0) != Some(*generation));
+        let (ghost_y, ghost_u) = match fresh {
+            Some((_, rows)) => (
+                extent(rows.iter().map(|s| s.y)),
+                extent(rows.iter().map(|s| s.u)),
+            ),
+            None => (ghost_y, ghost_u),
+        };
+        let (now_y, now_u) = (
+            extent(now.iter().map(|s| s.y)),
+            extent(now.iter().map(|s| s.u)),
+        );
         self.plot.set_spec(PlotSpec {
-            x: axis("signals-ax-t", "signals-unit-s", (0.0, t_end)),
+            x: axis("signals-ax-t", "signals-unit-s", x),
             panels: vec![
                 PanelSpec {
-                    y: axis("pid-ax-y", "", range(&all, |s| s.y, 1.0)),
+                    y: axis("pid-ax-y", "", range(now_y, ghost_y, 1.0)),
                     series: top,
                 },
                 PanelSpec {
-                    y: axis("pid-ax-u", "", range(&all, |s| s.u, 0.0)),
+                    y: axis("pid-ax-u", "", range(now_u, ghost_u, 0.0)),
                     series: bottom,
                 },
             ],
             cursor_rgb: C_R,
         });
-        let x = (0.0, t_end);
-        let pts = |plot: &Plot, rows: &[PidSample], f: fn(&PidSample) -> f64| {
-            thinned(plot, x, rows.iter().map(|s| (s.t, f(s))))
-        };
-        if let Some(ghost) = ghost {
-            let (y, u) = (
-                pts(&self.plot, ghost, |s| s.y),
-                pts(&self.plot, ghost, |s| s.u),
-            );
-            self.plot.set_series(0, 0, y);
-            self.plot.set_series(1, 0, u);
+        if let Some((generation, rows)) = ghost {
+            let key = (generation, x, self.plot.panel_px(0));
+            if self.ghost.as_ref().map(|c| c.key) != Some(key) {
+                let cache = GhostCache {
+                    key,
+                    y_range: ghost_y,
+                    u_range: ghost_u,
+                    y: thinned(&self.plot, x, rows.iter().map(|s| (s.t, s.y))),
+                    u: thinned(&self.plot, x, rows.iter().map(|s| (s.t, s.u))),
+                };
+                self.plot.set_series(0, 0, cache.y.clone());
+                self.plot.set_series(1, 0, cache.u.clone());
+                self.ghost = Some(cache);
+            }
         }
-        let (r, y, u) = (
-            pts(&self.plot, now, |s| s.r),
-            pts(&self.plot, now, |s| s.y),
-            pts(&self.plot, now, |s| s.u),
+        // r is the recipe's constant setpoint: its two ends draw it.
+        let r = match (now.first(), now.last()) {
+            (Some(a), Some(b)) => vec![(a.t, a.r), (b.t, b.r)],
+            _ => Vec::new(),
+        };
+        let (y, u) = (
+            thinned(&self.plot, x, now.iter().map(|s| (s.t, s.y))),
+            thinned(&self.plot, x, now.iter().map(|s| (s.t, s.u))),
         );
         self.plot.set_series(0, g, r);
         self.plot.set_series(0, g + 1, y);
