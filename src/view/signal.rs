@@ -140,6 +140,18 @@ pub fn sig(x: f64, digits: usize) -> String {
     format!("{x:.decimals$}")
 }
 
+/// The row of `rows` (times ascending, `t_of`) whose time is nearest `t`: what a cursor at
+/// `t` reads. `None` when there are no rows.
+pub fn nearest_row<T>(rows: &[T], t: f64, t_of: impl Fn(&T) -> f64) -> Option<&T> {
+    let i = rows.partition_point(|r| t_of(r) < t);
+    let before = i.checked_sub(1).and_then(|k| rows.get(k));
+    match (before, rows.get(i)) {
+        (Some(a), Some(b)) if (t_of(b) - t).abs() < (t - t_of(a)).abs() => Some(b),
+        (Some(a), _) => Some(a),
+        (None, b) => b,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -212,5 +224,18 @@ mod tests {
         );
         assert_eq!(sig(f64::NAN, 3), "—");
         assert_eq!(sig(2.5e7, 3), "2.50e7");
+    }
+
+    #[test]
+    fn nearest_row_picks_the_closer_time() {
+        let ts = [0.0, 0.05, 0.1, 0.15];
+        let at = |t: f64| nearest_row(&ts, t, |x| *x).copied();
+        assert_eq!(at(-1.0), Some(0.0));
+        assert_eq!(at(0.0), Some(0.0));
+        assert_eq!(at(0.024), Some(0.0));
+        assert_eq!(at(0.026), Some(0.05));
+        assert_eq!(at(0.1), Some(0.1));
+        assert_eq!(at(9.0), Some(0.15));
+        assert_eq!(nearest_row(&[] as &[f64], 1.0, |x| *x), None);
     }
 }

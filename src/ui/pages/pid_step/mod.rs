@@ -15,7 +15,7 @@ use std::rc::{Rc, Weak};
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
-use crate::pyfmt::py_float;
+use crate::pyfmt::{py_float, py_round};
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
 use crate::ui::kit::readouts::{self, Readouts};
 use crate::ui::kit::recipe_controls::{self, record_frame_ms, RecipeControls};
@@ -66,7 +66,7 @@ const SLIDERS: [Slider; 5] = [
     },
 ];
 /// `(data-readout, label id)`.
-const READOUTS: [(&str, &str); 7] = [
+const READOUTS: [(&str, &str); 11] = [
     ("rise-time", "pid-ro-rise"),
     ("overshoot", "pid-ro-overshoot"),
     ("settling-time", "pid-ro-settling"),
@@ -74,6 +74,10 @@ const READOUTS: [(&str, &str); 7] = [
     ("peak-u", "pid-ro-peak-u"),
     ("peak-u-t", "pid-ro-peak-u-t"),
     ("final-y", "pid-ro-final-y"),
+    ("cursor-t", "pid-ro-cursor-t"),
+    ("cursor-r", "pid-ro-cursor-r"),
+    ("cursor-y", "pid-ro-cursor-y"),
+    ("cursor-u", "pid-ro-cursor-u"),
 ];
 
 /// The mounted page.
@@ -166,6 +170,10 @@ impl Page for PidPage {
             }
         });
         inner.install(&Rc::downgrade(&inner), &stage)?;
+        inner
+            .plots
+            .borrow_mut()
+            .attach(&Rc::downgrade(&inner), &stage)?;
         inner.redraw(true);
         Ok(PidPage(inner))
     }
@@ -304,6 +312,21 @@ impl Inner {
             runs.ghost.as_deref().map(|g| (runs.ghost_generation, g)),
             resized,
         );
+        drop(runs);
+        self.show_cursor();
         record_frame_ms(now_ms() - t0);
+    }
+
+    /// The cursor on the plots and its readouts: the CSV row at the hovered time.
+    fn show_cursor(&self) {
+        let sample = self.plots.borrow_mut().cursor(&self.runs.borrow().now);
+        let Some(s) = sample else {
+            return;
+        };
+        let show = |key: &str, x: f64| self.readouts.set_exact(key, &sig(x, 4), &py_float(x));
+        show("cursor-t", py_round(s.t, 4));
+        show("cursor-r", s.r);
+        show("cursor-y", s.y);
+        show("cursor-u", s.u);
     }
 }

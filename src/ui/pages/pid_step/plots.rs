@@ -2,16 +2,20 @@
 //! the CSV's t, one kit plot sharing the time axis; the ghost (the previous gains' y and u)
 //! pale underneath. Axes snap to 1-2-5 ranges, so a small change redraws only the series.
 
+use std::rc::Weak;
+
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
+use super::Inner;
 use crate::recipes::pid_step::{PidSample, DT_S};
 use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
+use crate::ui::kit::drag::{Drag, DragEvent};
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
 use crate::ui::kit::recipe_controls::thinned;
 use crate::view::plot::auto_range;
-use crate::view::signal::nice_range;
+use crate::view::signal::{nearest_row, nice_range};
 
 const C_Y: (u8, u8, u8) = (26, 77, 143);
 const C_R: (u8, u8, u8) = (194, 65, 12);
@@ -24,6 +28,10 @@ pub struct Plots {
     /// The ghost's ranges and thinned series, kept while the ghost, the time axis and the
     /// panel are the same (the ghost does not change during a drag).
     ghost: Option<GhostCache>,
+    /// The hovered time (`None`: none yet, the cursor stands mid-run).
+    cursor_t: Option<f64>,
+    /// Hover and tap events of the stage (nothing on the plots is dragged).
+    hover: Option<Drag<()>>,
 }
 
 /// A ghost's generation, the time range and the panel in px (`Plot::panel_px`).
@@ -71,7 +79,43 @@ impl Plots {
         Ok(Plots {
             plot: Plot::new(stage)?,
             ghost: None,
+            cursor_t: None,
+            hover: None,
         })
+    }
+
+    /// The hover cursor: a mouse or pen over the plots, or a tap, reads the sample there.
+    pub fn attach(&mut self, me: &Weak<Inner>, stage: &Element) -> Result<(), JsValue> {
+        let surface = self.plot.canvas.top().canvas.clone();
+        let me = me.clone();
+        self.hover = Some(Drag::attach(
+            stage,
+            &surface,
+            |_, _| None,
+            move |ev| {
+                let (DragEvent::Hover(at) | DragEvent::Tap { at }) = ev else {
+                    return;
+                };
+                if let Some(page) = me.upgrade() {
+                    let t = page.plots.borrow().plot.from_px(0, at).map(|(t, _)| t);
+                    if t.is_some() {
+                        page.plots.borrow_mut().cursor_t = t;
+                        page.show_cursor();
+                    }
+                }
+            },
+        )?);
+        Ok(())
+    }
+
+    /// The sample of `now` under the cursor (mid-run before any hover), and draws the cursor
+    /// there.
+    pub fn cursor(&mut self, now: &[PidSample]) -> Option<PidSample> {
+        let mid = now.last().map_or(0.0, |s| s.t / 2.0);
+        let sample = nearest_row(now, self.cursor_t.unwrap_or(mid), |s| s.t).copied();
+        self.plot.set_cursor(sample.map(|s| s.t));
+        let _ = self.plot.draw(Ink::current());
+        sample
     }
 
     /// Shows the run `now` over the `ghost` (`generation` names it: a new ghost, a new

@@ -11,6 +11,7 @@ use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use super::Inner;
+use crate::pyfmt::py_round;
 use crate::recipes::trapezoid_profile::{TrapParams, TrapSample};
 use crate::ui::ctx;
 use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink};
@@ -19,7 +20,7 @@ use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec
 use crate::ui::kit::recipe_controls::thinned;
 use crate::view::drag::HandleShape;
 use crate::view::plot::auto_range;
-use crate::view::signal::{nice_range, snap};
+use crate::view::signal::{nearest_row, nice_range, snap};
 use crate::view::trapezoid_profile::{amax_from_corner, bands, Phases};
 
 const C_LINE: (u8, u8, u8) = (26, 77, 143);
@@ -43,6 +44,8 @@ pub struct Plots {
     x_range: (f64, f64),
     y_ranges: [(f64, f64); 3],
     dragging: bool,
+    /// The hovered time (`None`: none yet, the cursor stands mid-move).
+    cursor_t: Option<f64>,
 }
 
 impl Plots {
@@ -53,6 +56,7 @@ impl Plots {
             x_range: (0.0, 1.0),
             y_ranges: [(-1.0, 1.0); 3],
             dragging: false,
+            cursor_t: None,
         })
     }
 
@@ -113,8 +117,28 @@ impl Plots {
                     url.write_now();
                 }
             }
-            _ => {}
+            DragEvent::Hover(at) | DragEvent::Tap { at } => {
+                let t = page.plots.borrow().plot.from_px(0, at).map(|(t, _)| t);
+                if t.is_some() {
+                    page.plots.borrow_mut().cursor_t = t;
+                    page.show_cursor();
+                }
+            }
+            DragEvent::Leave => {}
         }
+    }
+
+    /// The sample of `samples` under the cursor (mid-move before any hover), its time as the
+    /// CSV writes it (`round(t, 5)`), and draws the cursor there.
+    pub fn cursor(&mut self, samples: &[TrapSample]) -> Option<TrapSample> {
+        let mid = samples.last().map_or(0.0, |s| s.t / 2.0);
+        let sample = nearest_row(samples, self.cursor_t.unwrap_or(mid), |s| s.t).copied();
+        self.plot.set_cursor(sample.map(|s| s.t));
+        let _ = self.plot.draw(Ink::current());
+        sample.map(|s| TrapSample {
+            t: py_round(s.t, 5),
+            ..s
+        })
     }
 
     /// Whether a handle is being dragged.
