@@ -13,9 +13,9 @@ use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::{Drag, DragEvent};
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
-use crate::ui::kit::recipe_controls::thinned;
+use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::view::plot::auto_range;
-use crate::view::signal::{nearest_row, nice_range};
+use crate::view::signal::{extents, nearest_row, nice_range};
 
 const C_Y: (u8, u8, u8) = (26, 77, 143);
 const C_R: (u8, u8, u8) = (194, 65, 12);
@@ -57,15 +57,11 @@ fn series(id: &str, rgb: (u8, u8, u8), mark: Mark, width: f64, alpha: f64) -> Se
     }
 }
 
-/// The raw range (lo, hi) of the finite values of a column, clamped to ±1e12 (an overflowed
-/// run plots up to where it broke); `(inf, -inf)` when there is none.
-fn extent(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    values
-        .filter(|v| v.is_finite())
-        .map(|v| v.clamp(-1e12, 1e12))
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        })
+/// The (lo, hi) of the finite y and u of `rows`, clamped to ±1e12 (an overflowed run plots
+/// up to where it broke); `(inf, -inf)` when there is none.
+fn y_u_extents(rows: &[PidSample]) -> [(f64, f64); 2] {
+    let clamp = |v: f64| v.clamp(-1e12, 1e12);
+    extents(rows.iter().map(|s| [s.y, s.u])).map(|(lo, hi)| (clamp(lo), clamp(hi)))
 }
 
 /// The axis range of extents `a` and `b` and the value `with`, padded and snapped.
@@ -154,16 +150,13 @@ impl Plots {
         let fresh = ghost
             .filter(|(generation, _)| self.ghost.as_ref().map(|c| c.key.0) != Some(*generation));
         let (ghost_y, ghost_u) = match fresh {
-            Some((_, rows)) => (
-                extent(rows.iter().map(|s| s.y)),
-                extent(rows.iter().map(|s| s.u)),
-            ),
+            Some((_, rows)) => {
+                let [y, u] = y_u_extents(rows);
+                (y, u)
+            }
             None => (ghost_y, ghost_u),
         };
-        let (now_y, now_u) = (
-            extent(now.iter().map(|s| s.y)),
-            extent(now.iter().map(|s| s.u)),
-        );
+        let [now_y, now_u] = y_u_extents(now);
         self.plot.set_spec(PlotSpec {
             x: axis("signals-ax-t", "signals-unit-s", x),
             panels: vec![
@@ -181,12 +174,13 @@ impl Plots {
         if let Some((generation, rows)) = ghost {
             let key = (generation, x, self.plot.panel_px(0));
             if self.ghost.as_ref().map(|c| c.key) != Some(key) {
+                let [y, u] = thinned_columns(&self.plot, x, rows.iter().map(|s| (s.t, [s.y, s.u])));
                 let cache = GhostCache {
                     key,
                     y_range: ghost_y,
                     u_range: ghost_u,
-                    y: thinned(&self.plot, x, rows.iter().map(|s| (s.t, s.y))),
-                    u: thinned(&self.plot, x, rows.iter().map(|s| (s.t, s.u))),
+                    y,
+                    u,
                 };
                 self.plot.set_series(0, 0, cache.y.clone());
                 self.plot.set_series(1, 0, cache.u.clone());
@@ -198,10 +192,7 @@ impl Plots {
             (Some(a), Some(b)) => vec![(a.t, a.r), (b.t, b.r)],
             _ => Vec::new(),
         };
-        let (y, u) = (
-            thinned(&self.plot, x, now.iter().map(|s| (s.t, s.y))),
-            thinned(&self.plot, x, now.iter().map(|s| (s.t, s.u))),
-        );
+        let [y, u] = thinned_columns(&self.plot, x, now.iter().map(|s| (s.t, [s.y, s.u])));
         self.plot.set_series(0, g, r);
         self.plot.set_series(0, g + 1, y);
         self.plot.set_series(1, g, u);
