@@ -161,7 +161,8 @@ test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; dive
     assert.equal((await readouts(page))['rise-time'], null);
     // The live summary says "not reached" bare, a unit only after a number.
     const live = page.locator('[data-testid="pid-live"]');
-    await page.waitForFunction(() => /not reached/.test(document.querySelector('[data-testid="pid-live"]').textContent), null, { timeout: 3000 });
+    // (Announcements are throttled: wait for the one of Kp = -5, not an earlier one.)
+    await page.waitForFunction(() => /^Rise time not reached/.test(document.querySelector('[data-testid="pid-live"]').textContent), null, { timeout: 5000 });
     const said = await live.textContent();
     assert.match(said, /^Rise time not reached, overshoot (not reached|\S+ %), settling time not reached\.$/, said);
     assert.deepEqual(errors, []);
