@@ -17,3 +17,6 @@ home-card-drill = Run this drill
 home-card-in-browser = In the browser:
 home-card-pairs-ik-2r = Pairs with our IK playground (the one the BSV seed calls the “IK Field Lab”): drag the arm there and watch |det J| change.
 home-card-pairs-traj-resample = Runs live on its own page: open your CSV or drop it there, and see every joint resampled.
+home-card-pairs-cubic-path = Pairs with the cubic path page: drag the end point and the end time, and watch the velocity and acceleration change.
+home-card-pairs-pid-step = Pairs with the PID step page: tune Kp, Ki and Kd live, next to a ghost of the previous gains.
+home-card-pairs-trapezoid-profile = Pairs with the trapezoidal profile page: drag vmax and amax and see when the move becomes a triangle.

@@ -17,3 +17,6 @@ home-card-drill = このドリルを実行する
 home-card-in-browser = ブラウザで試す：
 home-card-pairs-ik-2r = IK プレイグラウンド（BSV の元の資料では「IK Field Lab」と呼ばれているもの）と組み合わせて使えます。そこでアームを動かすと |det J| の変化が見られます。
 home-card-pairs-traj-resample = 専用のページでそのまま動かせます。CSV を開くかドロップすると、各関節のリサンプリング結果が見られます。
+home-card-pairs-cubic-path = 3 次経路のページと組み合わせて使えます。終点と終了時刻をドラッグすると、速度と加速度の変化が見られます。
+home-card-pairs-pid-step = PID ステップ応答のページと組み合わせて使えます。前のゲインの残像と並べて、Kp・Ki・Kd をその場で調整できます。
+home-card-pairs-trapezoid-profile = 台形プロファイルのページと組み合わせて使えます。vmax と amax をドラッグし、動きが三角形になる境目を確かめられます。

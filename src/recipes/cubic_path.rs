@@ -63,7 +63,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     writes: &[FILE_NAME],
     quirks_id: "recipe-cubic-path-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("cubic-path"),
 };
 
 /// Parameters of the path (the recipe's defaults: 0.0 → 1.2 rad in 1.0 s, dt 0.02 s).

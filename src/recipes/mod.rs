@@ -562,7 +562,10 @@ mod facts_tests {
                 ("ik-workspace", "ik-2r"),
                 ("traj-resample", "traj-resample"),
                 ("jacobian-2r", "ik-2r"),
-                ("manip-grid", "ik-2r")
+                ("cubic-path", "cubic-path"),
+                ("pid-step", "pid-step"),
+                ("manip-grid", "ik-2r"),
+                ("trapezoid-profile", "trapezoid-profile")
             ]
         );
     }

@@ -68,7 +68,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     writes: &[FILE_NAME],
     quirks_id: "recipe-pid-step-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("pid-step"),
 };
 
 /// Controller gains, plant time constant and run length (the recipe's defaults: 1.2, 0.4, 0.05,

@@ -66,7 +66,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     writes: &[FILE_NAME],
     quirks_id: "recipe-trapezoid-profile-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("trapezoid-profile"),
 };
 
 /// Move and sampling parameters (the recipe's defaults: 1.0, 0.5, 1.0, dt 0.01 s).

@@ -121,11 +121,12 @@ pub fn trapezoid(p: &CubicParams, n: usize) -> Option<Vec<CubicSample>> {
 
 /// Ranges of the three panels (q, qd, qdd) holding `series`, padded by 8 %.
 pub fn ranges(series: &[&[CubicSample]]) -> [(f64, f64); 3] {
-    let all = || series.iter().flat_map(|s| s.iter());
-    let r = |f: fn(&CubicSample) -> f64| {
-        auto_range(all().map(f).chain([0.0]), 0.08).unwrap_or((-1.0, 1.0))
-    };
-    [r(|s| s.q), r(|s| s.qd), r(|s| s.qdd)]
+    let rows = series
+        .iter()
+        .flat_map(|s| s.iter())
+        .map(|s| [s.q, s.qd, s.qdd]);
+    crate::view::signal::extents(rows)
+        .map(|(lo, hi)| auto_range([lo, hi, 0.0], 0.08).unwrap_or((-1.0, 1.0)))
 }
 
 /// The time axis: 0 to T with room for dragging T further (a quarter more).

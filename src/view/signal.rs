@@ -80,31 +80,66 @@ pub fn nice_range(range: (f64, f64)) -> (f64, f64) {
 /// kept), without first collecting them all. A live page hands the plot a few thousand
 /// points instead of copying every sample of a 100,000-row run.
 pub fn thin(points: impl IntoIterator<Item = (f64, f64)>, x: &LinearScale) -> Vec<(f64, f64)> {
-    /// One column's kept points: (index, point) of first, min, max, last.
-    type Kept = [(usize, (f64, f64)); 4];
-    fn flush(out: &mut Vec<(f64, f64)>, kept: &mut Option<(f64, Kept)>) {
-        if let Some((_, mut k)) = kept.take() {
-            k.sort_by_key(|(i, _)| *i);
-            let mut last = usize::MAX;
-            for (i, p) in k {
-                if i != last {
-                    out.push(p);
-                    last = i;
-                }
+    let mut column = ColumnThin::default();
+    for (i, p) in points.into_iter().enumerate() {
+        if p.0.is_finite() && p.1.is_finite() {
+            column.push(i, p, x.map(p.0).floor());
+        } else {
+            column.gap(p);
+        }
+    }
+    column.finish()
+}
+
+/// [`thin`] of `N` columns sharing their x, in one pass over the rows `(x, [y; N])`: the
+/// pixel column of each x is found once, and no row is copied. Column `k` of the result is
+/// `thin` of the points `(x, y[k])`.
+pub fn thin_columns<const N: usize>(
+    rows: impl IntoIterator<Item = (f64, [f64; N])>,
+    x: &LinearScale,
+) -> [Vec<(f64, f64)>; N] {
+    let mut columns: [ColumnThin; N] = std::array::from_fn(|_| ColumnThin::default());
+    for (i, (t, ys)) in rows.into_iter().enumerate() {
+        let px = t.is_finite().then(|| x.map(t).floor());
+        for (column, y) in columns.iter_mut().zip(ys) {
+            match px {
+                Some(px) if y.is_finite() => column.push(i, (t, y), px),
+                _ => column.gap((t, y)),
             }
         }
     }
-    let mut out = Vec::new();
-    let mut kept: Option<(f64, Kept)> = None;
-    for (i, p) in points.into_iter().enumerate() {
-        if !p.0.is_finite() || !p.1.is_finite() {
-            flush(&mut out, &mut kept);
-            out.push(p);
-            continue;
+    columns.map(ColumnThin::finish)
+}
+
+/// The (lo, hi) of the finite values of each of `N` columns, in one pass over `rows`;
+/// `(inf, -inf)` for a column without any.
+pub fn extents<const N: usize>(rows: impl IntoIterator<Item = [f64; N]>) -> [(f64, f64); N] {
+    let mut out = [(f64::INFINITY, f64::NEG_INFINITY); N];
+    for row in rows {
+        for (e, v) in out.iter_mut().zip(row) {
+            if v.is_finite() {
+                *e = (e.0.min(v), e.1.max(v));
+            }
         }
-        let col = x.map(p.0).floor();
-        match &mut kept {
-            Some((c, k)) if *c == col => {
+    }
+    out
+}
+
+/// The (index, point) of the first, min, max and last points of one pixel column.
+type Kept = [(usize, (f64, f64)); 4];
+
+/// One series being thinned: the points kept so far and the pixel column under way.
+#[derive(Default)]
+struct ColumnThin {
+    out: Vec<(f64, f64)>,
+    kept: Option<(f64, Kept)>,
+}
+
+impl ColumnThin {
+    /// Point `i`, finite, in pixel column `px`.
+    fn push(&mut self, i: usize, p: (f64, f64), px: f64) {
+        match &mut self.kept {
+            Some((c, k)) if *c == px => {
                 if p.1 < k[1].1 .1 {
                     k[1] = (i, p);
                 }
@@ -114,13 +149,35 @@ pub fn thin(points: impl IntoIterator<Item = (f64, f64)>, x: &LinearScale) -> Ve
                 k[3] = (i, p);
             }
             _ => {
-                flush(&mut out, &mut kept);
-                kept = Some((col, [(i, p); 4]));
+                self.flush();
+                self.kept = Some((px, [(i, p); 4]));
             }
         }
     }
-    flush(&mut out, &mut kept);
-    out
+
+    /// A non-finite point: kept as it is (the line breaks there).
+    fn gap(&mut self, p: (f64, f64)) {
+        self.flush();
+        self.out.push(p);
+    }
+
+    fn flush(&mut self) {
+        if let Some((_, mut k)) = self.kept.take() {
+            k.sort_by_key(|(i, _)| *i);
+            let mut last = usize::MAX;
+            for (i, p) in k {
+                if i != last {
+                    self.out.push(p);
+                    last = i;
+                }
+            }
+        }
+    }
+
+    fn finish(mut self) -> Vec<(f64, f64)> {
+        self.flush();
+        self.out
+    }
 }
 
 /// `x` with `digits` significant digits for a readout (plain notation between 1e-4 and 1e6,
@@ -138,6 +195,18 @@ pub fn sig(x: f64, digits: usize) -> String {
     }
     let decimals = (digits as i32 - 1 - mag).max(0) as usize;
     format!("{x:.decimals$}")
+}
+
+/// The row of `rows` (times ascending, `t_of`) whose time is nearest `t`: what a cursor at
+/// `t` reads. `None` when there are no rows.
+pub fn nearest_row<T>(rows: &[T], t: f64, t_of: impl Fn(&T) -> f64) -> Option<&T> {
+    let i = rows.partition_point(|r| t_of(r) < t);
+    let before = i.checked_sub(1).and_then(|k| rows.get(k));
+    match (before, rows.get(i)) {
+        (Some(a), Some(b)) if (t_of(b) - t).abs() < (t - t_of(a)).abs() => Some(b),
+        (Some(a), _) => Some(a),
+        (None, b) => b,
+    }
 }
 
 #[cfg(test)]
@@ -199,6 +268,29 @@ mod tests {
     }
 
     #[test]
+    fn thinning_columns_at_once_equals_thinning_each() {
+        let x = LinearScale::new((0.0, 2.0), (10.0, 250.0));
+        let mut rows: Vec<(f64, [f64; 3])> = (0..20_000)
+            .map(|i| {
+                let t = i as f64 * 1e-4;
+                (t, [(t * 50.0).sin(), t * t, (t * 900.0).cos() * t])
+            })
+            .collect();
+        rows[100].1[1] = f64::NAN;
+        rows[5000].0 = f64::NAN;
+        rows[9000].1[2] = f64::NEG_INFINITY;
+        let all = thin_columns(rows.iter().copied(), &x);
+        for (k, got) in all.iter().enumerate() {
+            let want = thin(rows.iter().map(|(t, ys)| (*t, ys[k])), &x);
+            let bits = |v: &[(f64, f64)]| -> Vec<(u64, u64)> {
+                v.iter().map(|p| (p.0.to_bits(), p.1.to_bits())).collect()
+            };
+            assert_eq!(bits(got), bits(&want), "column {k}");
+            assert!(got.len() < 4 * 242 + 4, "column {k}: {}", got.len());
+        }
+    }
+
+    #[test]
     fn snapped_values_read_as_typed() {
         assert_eq!(snap(0.35000000000000003, 0.01), "0.35");
         assert_eq!(snap(1.23456, 0.05), "1.25");
@@ -212,5 +304,18 @@ mod tests {
         );
         assert_eq!(sig(f64::NAN, 3), "—");
         assert_eq!(sig(2.5e7, 3), "2.50e7");
+    }
+
+    #[test]
+    fn nearest_row_picks_the_closer_time() {
+        let ts = [0.0, 0.05, 0.1, 0.15];
+        let at = |t: f64| nearest_row(&ts, t, |x| *x).copied();
+        assert_eq!(at(-1.0), Some(0.0));
+        assert_eq!(at(0.0), Some(0.0));
+        assert_eq!(at(0.024), Some(0.0));
+        assert_eq!(at(0.026), Some(0.05));
+        assert_eq!(at(0.1), Some(0.1));
+        assert_eq!(at(9.0), Some(0.15));
+        assert_eq!(nearest_row(&[] as &[f64], 1.0, |x| *x), None);
     }
 }

@@ -61,10 +61,18 @@ test('the shell renders in English with the home page, navigation and disclaimer
     assert.match(await ik.locator('[data-command="python"] code').innerText(), /^python planar_ik_workspace\.py 0\.12 0\.10 200 10$/);
     assert.equal(await ik.locator('[data-testid="recipe-link-ik-workspace"]').getAttribute('href'), '#/ik-2r');
     assert.equal(await ik.locator('[data-testid="recipe-drill-ik-workspace"]').getAttribute('href'), '#/drills?recipe=ik-workspace');
+    // The signal recipes pair with their pages: the "Pairs with" line and the card's foot link.
+    for (const id of ['cubic-path', 'pid-step', 'trapezoid-profile']) {
+      const card = page.locator(`[data-testid="recipe-card-${id}"]`);
+      assert.doesNotMatch(await card.innerText(), /command line today/);
+      assert.deepEqual(await card.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href'))), [`#/${id}`, `#/drills?recipe=${id}`, `#/${id}`]);
+      assert.match(await card.locator('.recipe-pairs').innerText(), /^Pairs with the /);
+    }
     const pid = page.locator('[data-testid="recipe-card-pid-step"]');
-    assert.doesNotMatch(await pid.innerText(), /command line today/);
-    assert.deepEqual(await pid.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href'))), ['#/drills?recipe=pid-step']);
-    assert.match(await pid.innerText(), /In the browser:\s*Run this drill/);
+    assert.match(await pid.innerText(), /In the browser:\s*Run this drill\W*PID step response/);
+    // A recipe without a page of its own links to its drill only.
+    const se3 = page.locator('[data-testid="recipe-card-se3-relative"]');
+    assert.deepEqual(await se3.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href'))), ['#/drills?recipe=se3-relative']);
     // The featured card is the IK playground.
     assert.equal(await page.locator('[data-testid="featured-ik-2r"]').getAttribute('href'), '#/ik-2r');
     // No message id leaked through untranslated (a missing message shows its id).

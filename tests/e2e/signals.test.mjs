@@ -145,6 +145,15 @@ test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; dive
     const peak = maxAbs(rows, 3);
     assert.deepEqual([r['peak-u'], r['peak-u-t']], [peak[3], peak[0]]);
     assert.equal(await page.locator('[data-testid="pid-step-warning"]').isVisible(), false);
+    // Hovering the plots moves the cursor readout to the CSV row under it.
+    const box = await page.locator('[data-testid="pid-step-canvas"]').boundingBox();
+    for (const f of [0.3, 0.7]) {
+      await page.mouse.move(box.x + box.width * f, box.y + box.height / 3);
+      const c = await readouts(page);
+      const row = rows.find((x) => x[0] === c['cursor-t']);
+      assert.ok(row, `cursor t ${c['cursor-t']} is a CSV time`);
+      assert.deepEqual([c['cursor-r'], c['cursor-y'], c['cursor-u']], [row[1], row[2], row[3]]);
+    }
     // Kp = -5 runs away: the recipe's warning shows; the figures say "not reached".
     await page.locator('[data-field="Kp"]').fill('-5');
     await page.waitForSelector('[data-testid="pid-step-warning"]:not([hidden])');
@@ -152,7 +161,8 @@ test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; dive
     assert.equal((await readouts(page))['rise-time'], null);
     // The live summary says "not reached" bare, a unit only after a number.
     const live = page.locator('[data-testid="pid-live"]');
-    await page.waitForFunction(() => /not reached/.test(document.querySelector('[data-testid="pid-live"]').textContent), null, { timeout: 3000 });
+    // (Announcements are throttled: wait for the one of Kp = -5, not an earlier one.)
+    await page.waitForFunction(() => /^Rise time not reached/.test(document.querySelector('[data-testid="pid-live"]').textContent), null, { timeout: 5000 });
     const said = await live.textContent();
     assert.match(said, /^Rise time not reached, overshoot (not reached|\S+ %), settling time not reached\.$/, said);
     assert.deepEqual(errors, []);
@@ -184,6 +194,14 @@ test('trapezoid-profile: dragging vmax up on a short move makes a triangle', asy
     const rows = out.files.get('trap_profile.csv').toString().trim().split('\n').slice(1).map((l) => l.split(',').map(Number));
     assert.equal(r.rows, rows.length);
     assert.equal(r['final-s'], rows[rows.length - 1][1]);
+    // Hovering the plots moves the cursor readout to the CSV row under it.
+    for (const f of [0.25, 0.6]) {
+      await page.mouse.move(box.x + box.width * f, box.y + box.height / 2);
+      const c = await readouts(page);
+      const row = rows.find((x) => x[0] === c['cursor-t']);
+      assert.ok(row, `cursor t ${c['cursor-t']} is a CSV time`);
+      assert.deepEqual([c['cursor-s'], c['cursor-v'], c['cursor-a']], [row[1], row[2], row[3]]);
+    }
     // Distance 0.2 with the slider: a triangle, said so.
     await slide(page, 'distance', 0.2);
     await page.waitForSelector('[data-testid="trapezoid-profile-triangle"]:not([hidden])');

@@ -402,6 +402,31 @@ pub fn thinned(
     }
 }
 
+/// [`thinned`] of `N` columns sharing their x, in one pass over `rows` (`(x, [y; N])`):
+/// column `k` is the thinned `(x, y[k])` of the plot's first panel
+/// ([`crate::view::signal::thin_columns`]).
+pub fn thinned_columns<const N: usize>(
+    plot: &super::plot::Plot,
+    x_range: (f64, f64),
+    rows: impl Iterator<Item = (f64, [f64; N])>,
+) -> [Vec<(f64, f64)>; N] {
+    match plot.panel_px(0) {
+        Some((x0, x1, _, _)) => {
+            let x = crate::view::plot::LinearScale::new(x_range, (x0, x1));
+            crate::view::signal::thin_columns(rows, &x)
+        }
+        None => {
+            let mut out: [Vec<(f64, f64)>; N] = std::array::from_fn(|_| Vec::new());
+            for (t, ys) in rows {
+                for (column, y) in out.iter_mut().zip(ys) {
+                    column.push((t, y));
+                }
+            }
+            out
+        }
+    }
+}
+
 /// Bench builds keep the duration of every recompute + redraw of a live page, ms, in
 /// `window.__signalFrameMs` (`tests/e2e/signals.bench.mjs` reads it).
 #[cfg(feature = "bench")]

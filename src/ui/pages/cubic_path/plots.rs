@@ -17,7 +17,7 @@ use crate::ui::ctx;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent};
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
-use crate::ui::kit::recipe_controls::thinned;
+use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::view::cubic_path::{quintic, ranges, time_range, trapezoid};
 use crate::view::drag::HandleShape;
 use crate::view::plot::nearest_index;
@@ -152,15 +152,14 @@ impl Plots {
                 self.y_ranges = ranges(&all).map(nice_range);
             }
             self.set_spec(on);
-            let columns: [fn(&CubicSample) -> f64; 3] = [|s| s.q, |s| s.qd, |s| s.qdd];
-            for (panel, f) in columns.into_iter().enumerate() {
-                let series: Vec<&[CubicSample]> = extra
-                    .iter()
-                    .map(Vec::as_slice)
-                    .chain([path.samples.as_slice()])
-                    .collect();
-                for (k, v) in series.into_iter().enumerate() {
-                    let pts = thinned(&self.plot, self.x_range, v.iter().map(|s| (s.t, f(s))));
+            let series = extra
+                .iter()
+                .map(Vec::as_slice)
+                .chain([path.samples.as_slice()]);
+            for (k, v) in series.enumerate() {
+                let rows = v.iter().map(|s| (s.t, [s.q, s.qd, s.qdd]));
+                let columns = thinned_columns(&self.plot, self.x_range, rows);
+                for (panel, pts) in columns.into_iter().enumerate() {
                     self.plot.set_series(panel, k, pts);
                 }
             }

@@ -15,7 +15,7 @@ use std::rc::{Rc, Weak};
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
-use crate::pyfmt::py_float;
+use crate::pyfmt::{py_float, py_round};
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
 use crate::ui::kit::readouts::{self, Readouts};
 use crate::ui::kit::recipe_controls::{self, record_frame_ms, RecipeControls};
@@ -25,7 +25,7 @@ use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
-use crate::view::pid_step::{figures, response};
+use crate::view::pid_step::{figures, response, StepFigures};
 use crate::view::signal::{sig, snap, Slider};
 
 /// The page, as the shell's page table lists it.
@@ -66,7 +66,7 @@ const SLIDERS: [Slider; 5] = [
     },
 ];
 /// `(data-readout, label id)`.
-const READOUTS: [(&str, &str); 7] = [
+const READOUTS: [(&str, &str); 11] = [
     ("rise-time", "pid-ro-rise"),
     ("overshoot", "pid-ro-overshoot"),
     ("settling-time", "pid-ro-settling"),
@@ -74,16 +74,23 @@ const READOUTS: [(&str, &str); 7] = [
     ("peak-u", "pid-ro-peak-u"),
     ("peak-u-t", "pid-ro-peak-u-t"),
     ("final-y", "pid-ro-final-y"),
+    ("cursor-t", "pid-ro-cursor-t"),
+    ("cursor-r", "pid-ro-cursor-r"),
+    ("cursor-y", "pid-ro-cursor-y"),
+    ("cursor-u", "pid-ro-cursor-u"),
 ];
 
 /// The mounted page.
 pub struct PidPage(Rc<Inner>);
 
-/// The run shown, the run the ghost is drawn from, and whether a change is under way.
+/// The run shown (and its figures), the run the ghost is drawn from (a new ghost, a new
+/// generation), and the last committed run.
 struct Runs {
     now: Vec<PidSample>,
+    figures: StepFigures,
     committed: Vec<PidSample>,
     ghost: Option<Vec<PidSample>>,
+    ghost_generation: u64,
 }
 
 struct Inner {
@@ -152,8 +159,10 @@ impl Page for PidPage {
                 warning,
                 runs: RefCell::new(Runs {
                     committed: rows.clone(),
+                    figures: figures(&rows),
                     now: rows,
                     ghost: None,
+                    ghost_generation: 0,
                 }),
                 changing: Cell::new(false),
                 url: RefCell::new(Some(url)),
@@ -161,6 +170,10 @@ impl Page for PidPage {
             }
         });
         inner.install(&Rc::downgrade(&inner), &stage)?;
+        inner
+            .plots
+            .borrow_mut()
+            .attach(&Rc::downgrade(&inner), &stage)?;
         inner.redraw(true);
         Ok(PidPage(inner))
     }
@@ -233,12 +246,15 @@ impl Inner {
         {
             let mut runs = self.runs.borrow_mut();
             if !self.changing.replace(true) {
-                runs.ghost = Some(runs.committed.clone());
+                // The committed run becomes the ghost: no copy, the next commit replaces it.
+                runs.ghost = Some(std::mem::take(&mut runs.committed));
+                runs.ghost_generation += 1;
             }
+            runs.figures = figures(&rows);
             runs.now = rows;
         }
         self.redraw(false);
-        let f = figures(&self.runs.borrow().now);
+        let f = self.runs.borrow().figures;
         // The unit belongs to a number only: "not reached" stands alone.
         let or_none = |x: Option<f64>, unit_id: &str| {
             x.map_or_else(
@@ -272,7 +288,7 @@ impl Inner {
     fn redraw(&self, resized: bool) {
         let t0 = now_ms();
         let runs = self.runs.borrow();
-        let f = figures(&runs.now);
+        let f = runs.figures;
         let ro = &self.readouts;
         let show = |key: &str, x: Option<f64>, digits: usize| match x {
             Some(x) => ro.set_with_value(key, &sig(x, digits), &py_float(x)),
@@ -291,9 +307,26 @@ impl Inner {
             .collect();
         self.warning.set_text_content(Some(&text.join(" ")));
         dom::show(&self.warning, !text.is_empty());
-        self.plots
-            .borrow_mut()
-            .show(&runs.now, runs.ghost.as_deref(), resized);
+        self.plots.borrow_mut().show(
+            &runs.now,
+            runs.ghost.as_deref().map(|g| (runs.ghost_generation, g)),
+            resized,
+        );
+        drop(runs);
+        self.show_cursor();
         record_frame_ms(now_ms() - t0);
+    }
+
+    /// The cursor on the plots and its readouts: the CSV row at the hovered time.
+    fn show_cursor(&self) {
+        let sample = self.plots.borrow_mut().cursor(&self.runs.borrow().now);
+        let Some(s) = sample else {
+            return;
+        };
+        let show = |key: &str, x: f64| self.readouts.set_exact(key, &sig(x, 4), &py_float(x));
+        show("cursor-t", py_round(s.t, 4));
+        show("cursor-r", s.r);
+        show("cursor-y", s.y);
+        show("cursor-u", s.u);
     }
 }

@@ -2,16 +2,20 @@
 //! the CSV's t, one kit plot sharing the time axis; the ghost (the previous gains' y and u)
 //! pale underneath. Axes snap to 1-2-5 ranges, so a small change redraws only the series.
 
+use std::rc::Weak;
+
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
+use super::Inner;
 use crate::recipes::pid_step::{PidSample, DT_S};
 use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
+use crate::ui::kit::drag::{Drag, DragEvent};
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
-use crate::ui::kit::recipe_controls::thinned;
+use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::view::plot::auto_range;
-use crate::view::signal::nice_range;
+use crate::view::signal::{extents, nearest_row, nice_range};
 
 const C_Y: (u8, u8, u8) = (26, 77, 143);
 const C_R: (u8, u8, u8) = (194, 65, 12);
@@ -21,6 +25,26 @@ const C_GHOST: (u8, u8, u8) = (120, 128, 140);
 /// The plots component.
 pub struct Plots {
     plot: Plot,
+    /// The ghost's ranges and thinned series, kept while the ghost, the time axis and the
+    /// panel are the same (the ghost does not change during a drag).
+    ghost: Option<GhostCache>,
+    /// The hovered time (`None`: none yet, the cursor stands mid-run).
+    cursor_t: Option<f64>,
+    /// Hover and tap events of the stage (nothing on the plots is dragged).
+    hover: Option<Drag<()>>,
+}
+
+/// A ghost's generation, the time range and the panel in px (`Plot::panel_px`).
+type GhostKey = (u64, (f64, f64), Option<(f64, f64, f64, f64)>);
+
+/// What is drawn of one ghost: its key (generation, time range, panel in px), its y and u
+/// ranges, its thinned y and u.
+struct GhostCache {
+    key: GhostKey,
+    y_range: (f64, f64),
+    u_range: (f64, f64),
+    y: Vec<(f64, f64)>,
+    u: Vec<(f64, f64)>,
 }
 
 fn series(id: &str, rgb: (u8, u8, u8), mark: Mark, width: f64, alpha: f64) -> SeriesSpec {
@@ -33,10 +57,16 @@ fn series(id: &str, rgb: (u8, u8, u8), mark: Mark, width: f64, alpha: f64) -> Se
     }
 }
 
-/// A column of finite values (an overflowed run plots up to where it broke).
-fn range(rows: &[&[PidSample]], f: fn(&PidSample) -> f64, with: f64) -> (f64, f64) {
-    let values = rows.iter().flat_map(|r| r.iter().map(f)).chain([with]);
-    let r = auto_range(values.map(|v| v.clamp(-1e12, 1e12)), 0.06).unwrap_or((-1.0, 1.0));
+/// The (lo, hi) of the finite y and u of `rows`, clamped to ±1e12 (an overflowed run plots
+/// up to where it broke); `(inf, -inf)` when there is none.
+fn y_u_extents(rows: &[PidSample]) -> [(f64, f64); 2] {
+    let clamp = |v: f64| v.clamp(-1e12, 1e12);
+    extents(rows.iter().map(|s| [s.y, s.u])).map(|(lo, hi)| (clamp(lo), clamp(hi)))
+}
+
+/// The axis range of extents `a` and `b` and the value `with`, padded and snapped.
+fn range(a: (f64, f64), b: (f64, f64), with: f64) -> (f64, f64) {
+    let r = auto_range([a.0, a.1, b.0, b.1, with], 0.06).unwrap_or((-1.0, 1.0));
     nice_range(r)
 }
 
@@ -44,18 +74,55 @@ impl Plots {
     pub fn new(stage: &Element) -> Result<Plots, JsValue> {
         Ok(Plots {
             plot: Plot::new(stage)?,
+            ghost: None,
+            cursor_t: None,
+            hover: None,
         })
     }
 
-    /// Shows the run `now` over the `ghost`; `resized` refits the canvases.
-    pub fn show(&mut self, now: &[PidSample], ghost: Option<&[PidSample]>, resized: bool) {
-        let mut all = vec![now];
-        all.extend(ghost);
-        let t_end = all
-            .iter()
-            .filter_map(|r| r.last())
+    /// The hover cursor: a mouse or pen over the plots, or a tap, reads the sample there.
+    pub fn attach(&mut self, me: &Weak<Inner>, stage: &Element) -> Result<(), JsValue> {
+        let surface = self.plot.canvas.top().canvas.clone();
+        let me = me.clone();
+        self.hover = Some(Drag::attach(
+            stage,
+            &surface,
+            |_, _| None,
+            move |ev| {
+                let (DragEvent::Hover(at) | DragEvent::Tap { at }) = ev else {
+                    return;
+                };
+                if let Some(page) = me.upgrade() {
+                    let t = page.plots.borrow().plot.from_px(0, at).map(|(t, _)| t);
+                    if t.is_some() {
+                        page.plots.borrow_mut().cursor_t = t;
+                        page.show_cursor();
+                    }
+                }
+            },
+        )?);
+        Ok(())
+    }
+
+    /// The sample of `now` under the cursor (mid-run before any hover), and draws the cursor
+    /// there.
+    pub fn cursor(&mut self, now: &[PidSample]) -> Option<PidSample> {
+        let mid = now.last().map_or(0.0, |s| s.t / 2.0);
+        let sample = nearest_row(now, self.cursor_t.unwrap_or(mid), |s| s.t).copied();
+        self.plot.set_cursor(sample.map(|s| s.t));
+        let _ = self.plot.draw(Ink::current());
+        sample
+    }
+
+    /// Shows the run `now` over the `ghost` (`generation` names it: a new ghost, a new
+    /// number); `resized` refits the canvases.
+    pub fn show(&mut self, now: &[PidSample], ghost: Option<(u64, &[PidSample])>, resized: bool) {
+        let t_end = [now.last(), ghost.and_then(|g| g.1.last())]
+            .into_iter()
+            .flatten()
             .map(|s| s.t)
             .fold(DT_S, f64::max);
+        let x = (0.0, t_end);
         let axis = |title: &str, unit: &str, range| AxisSpec {
             title: ctx::t(title),
             unit: if unit.is_empty() {
@@ -73,37 +140,59 @@ impl Plots {
         top.push(series("pid-series-y", C_Y, Mark::LineAndPoints, 2.0, 1.0));
         let mut bottom: Vec<SeriesSpec> = ghost_series("pid-series-ghost-u").into_iter().collect();
         bottom.push(series("pid-series-u", C_U, Mark::LineAndPoints, 2.0, 1.0));
+        let none = (f64::INFINITY, f64::NEG_INFINITY);
+        let (ghost_y, ghost_u) = self
+            .ghost
+            .as_ref()
+            .filter(|_| ghost.is_some())
+            .map_or((none, none), |c| (c.y_range, c.u_range));
+        // A new ghost: its ranges now (its thinned series once the axes are set, below).
+        let fresh = ghost
+            .filter(|(generation, _)| self.ghost.as_ref().map(|c| c.key.0) != Some(*generation));
+        let (ghost_y, ghost_u) = match fresh {
+            Some((_, rows)) => {
+                let [y, u] = y_u_extents(rows);
+                (y, u)
+            }
+            None => (ghost_y, ghost_u),
+        };
+        let [now_y, now_u] = y_u_extents(now);
         self.plot.set_spec(PlotSpec {
-            x: axis("signals-ax-t", "signals-unit-s", (0.0, t_end)),
+            x: axis("signals-ax-t", "signals-unit-s", x),
             panels: vec![
                 PanelSpec {
-                    y: axis("pid-ax-y", "", range(&all, |s| s.y, 1.0)),
+                    y: axis("pid-ax-y", "", range(now_y, ghost_y, 1.0)),
                     series: top,
                 },
                 PanelSpec {
-                    y: axis("pid-ax-u", "", range(&all, |s| s.u, 0.0)),
+                    y: axis("pid-ax-u", "", range(now_u, ghost_u, 0.0)),
                     series: bottom,
                 },
             ],
             cursor_rgb: C_R,
         });
-        let x = (0.0, t_end);
-        let pts = |plot: &Plot, rows: &[PidSample], f: fn(&PidSample) -> f64| {
-            thinned(plot, x, rows.iter().map(|s| (s.t, f(s))))
-        };
-        if let Some(ghost) = ghost {
-            let (y, u) = (
-                pts(&self.plot, ghost, |s| s.y),
-                pts(&self.plot, ghost, |s| s.u),
-            );
-            self.plot.set_series(0, 0, y);
-            self.plot.set_series(1, 0, u);
+        if let Some((generation, rows)) = ghost {
+            let key = (generation, x, self.plot.panel_px(0));
+            if self.ghost.as_ref().map(|c| c.key) != Some(key) {
+                let [y, u] = thinned_columns(&self.plot, x, rows.iter().map(|s| (s.t, [s.y, s.u])));
+                let cache = GhostCache {
+                    key,
+                    y_range: ghost_y,
+                    u_range: ghost_u,
+                    y,
+                    u,
+                };
+                self.plot.set_series(0, 0, cache.y.clone());
+                self.plot.set_series(1, 0, cache.u.clone());
+                self.ghost = Some(cache);
+            }
         }
-        let (r, y, u) = (
-            pts(&self.plot, now, |s| s.r),
-            pts(&self.plot, now, |s| s.y),
-            pts(&self.plot, now, |s| s.u),
-        );
+        // r is the recipe's constant setpoint: its two ends draw it.
+        let r = match (now.first(), now.last()) {
+            (Some(a), Some(b)) => vec![(a.t, a.r), (b.t, b.r)],
+            _ => Vec::new(),
+        };
+        let [y, u] = thinned_columns(&self.plot, x, now.iter().map(|s| (s.t, [s.y, s.u])));
         self.plot.set_series(0, g, r);
         self.plot.set_series(0, g + 1, y);
         self.plot.set_series(1, g, u);

@@ -59,7 +59,7 @@ const SLIDERS: [Slider; 4] = [
     },
 ];
 /// `(data-readout, label id)`.
-const READOUTS: [(&str, &str); 7] = [
+const READOUTS: [(&str, &str); 11] = [
     ("shape", "trap-ro-shape"),
     ("t-acc", "trap-ro-t-acc"),
     ("t-flat", "trap-ro-t-flat"),
@@ -67,6 +67,10 @@ const READOUTS: [(&str, &str); 7] = [
     ("v-peak", "trap-ro-v-peak"),
     ("final-s", "trap-ro-final-s"),
     ("rows", "trap-ro-rows"),
+    ("cursor-t", "trap-ro-cursor-t"),
+    ("cursor-s", "trap-ro-cursor-s"),
+    ("cursor-v", "trap-ro-cursor-v"),
+    ("cursor-a", "trap-ro-cursor-a"),
 ];
 
 /// The mounted page.
@@ -269,6 +273,20 @@ impl Inner {
         self.plots
             .borrow_mut()
             .show(params, profile, &ph, refit, resized);
+        self.show_cursor();
         record_frame_ms(now_ms() - t0);
+    }
+
+    /// The cursor on the plots and its readouts: the CSV row at the hovered time.
+    fn show_cursor(&self) {
+        let sample = self.plots.borrow_mut().cursor(&self.profile.borrow().1);
+        let Some(s) = sample else {
+            return;
+        };
+        let show = |key: &str, x: f64| self.readouts.set_exact(key, &sig(x, 4), &py_float(x));
+        show("cursor-t", s.t);
+        show("cursor-s", s.s);
+        show("cursor-v", s.v);
+        show("cursor-a", s.a);
     }
 }

@@ -11,15 +11,16 @@ use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use super::Inner;
+use crate::pyfmt::py_round;
 use crate::recipes::trapezoid_profile::{TrapParams, TrapSample};
 use crate::ui::ctx;
 use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent};
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
-use crate::ui::kit::recipe_controls::thinned;
+use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::view::drag::HandleShape;
 use crate::view::plot::auto_range;
-use crate::view::signal::{nice_range, snap};
+use crate::view::signal::{extents, nearest_row, nice_range, snap};
 use crate::view::trapezoid_profile::{amax_from_corner, bands, Phases};
 
 const C_LINE: (u8, u8, u8) = (26, 77, 143);
@@ -43,6 +44,8 @@ pub struct Plots {
     x_range: (f64, f64),
     y_ranges: [(f64, f64); 3],
     dragging: bool,
+    /// The hovered time (`None`: none yet, the cursor stands mid-move).
+    cursor_t: Option<f64>,
 }
 
 impl Plots {
@@ -53,6 +56,7 @@ impl Plots {
             x_range: (0.0, 1.0),
             y_ranges: [(-1.0, 1.0); 3],
             dragging: false,
+            cursor_t: None,
         })
     }
 
@@ -113,8 +117,28 @@ impl Plots {
                     url.write_now();
                 }
             }
-            _ => {}
+            DragEvent::Hover(at) | DragEvent::Tap { at } => {
+                let t = page.plots.borrow().plot.from_px(0, at).map(|(t, _)| t);
+                if t.is_some() {
+                    page.plots.borrow_mut().cursor_t = t;
+                    page.show_cursor();
+                }
+            }
+            DragEvent::Leave => {}
         }
+    }
+
+    /// The sample of `samples` under the cursor (mid-move before any hover), its time as the
+    /// CSV writes it (`round(t, 5)`), and draws the cursor there.
+    pub fn cursor(&mut self, samples: &[TrapSample]) -> Option<TrapSample> {
+        let mid = samples.last().map_or(0.0, |s| s.t / 2.0);
+        let sample = nearest_row(samples, self.cursor_t.unwrap_or(mid), |s| s.t).copied();
+        self.plot.set_cursor(sample.map(|s| s.t));
+        let _ = self.plot.draw(Ink::current());
+        sample.map(|s| TrapSample {
+            t: py_round(s.t, 5),
+            ..s
+        })
     }
 
     /// Whether a handle is being dragged.
@@ -141,20 +165,13 @@ impl Plots {
         resized: bool,
     ) {
         let ink = Ink::current();
-        let columns: [fn(&TrapSample) -> f64; 3] = [|s| s.s, |s| s.v, |s| s.a];
         if refit {
             self.x_range = (0.0, (ph.t_total * 1.1).max(1e-9));
-            let r = |f: fn(&TrapSample) -> f64, with: f64| {
-                nice_range(
-                    auto_range(samples.iter().map(f).chain([0.0, with]), 0.08)
-                        .unwrap_or((-1.0, 1.0)),
-                )
+            let [s, v, a] = extents(samples.iter().map(|s| [s.s, s.v, s.a]));
+            let r = |(lo, hi): (f64, f64), with: f64| {
+                nice_range(auto_range([lo, hi, 0.0, with], 0.08).unwrap_or((-1.0, 1.0)))
             };
-            self.y_ranges = [
-                r(columns[0], ph.distance),
-                r(columns[1], ph.vmax * 1.3),
-                r(columns[2], ph.amax),
-            ];
+            self.y_ranges = [r(s, ph.distance), r(v, ph.vmax * 1.3), r(a, ph.amax)];
             let axis = |title: &str, unit: &str, range| AxisSpec {
                 title: ctx::t(title),
                 unit: if unit.is_empty() {
@@ -188,12 +205,9 @@ impl Plots {
         if resized {
             self.plot.invalidate_all();
         }
-        for (panel, f) in columns.into_iter().enumerate() {
-            let pts = thinned(
-                &self.plot,
-                self.x_range,
-                samples.iter().map(|s| (s.t, f(s))),
-            );
+        let rows = samples.iter().map(|s| (s.t, [s.s, s.v, s.a]));
+        let columns = thinned_columns(&self.plot, self.x_range, rows);
+        for (panel, pts) in columns.into_iter().enumerate() {
             self.plot.set_series(panel, 0, pts);
         }
         let _ = self.plot.draw(ink);
