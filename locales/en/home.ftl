@@ -20,3 +20,5 @@ home-card-pairs-traj-resample = Runs live on its own page: open your CSV or drop
 home-card-pairs-cubic-path = Pairs with the cubic path page: drag the end point and the end time, and watch the velocity and acceleration change.
 home-card-pairs-pid-step = Pairs with the PID step page: tune Kp, Ki and Kd live, next to a ghost of the previous gains.
 home-card-pairs-trapezoid-profile = Pairs with the trapezoidal profile page: drag vmax and amax and see when the move becomes a triangle.
+home-card-pairs-pendulum-energy = Pairs with the pendulum page: watch it swing, and run Euler and RK4 side by side to see the energy drift.
+home-card-pairs-rrt-2d = Pairs with the RRT stepper: grow the tree one iteration at a time, backwards too, in a world you draw.

@@ -20,3 +20,5 @@ home-card-pairs-traj-resample = 専用のページでそのまま動かせます
 home-card-pairs-cubic-path = 3 次経路のページと組み合わせて使えます。終点と終了時刻をドラッグすると、速度と加速度の変化が見られます。
 home-card-pairs-pid-step = PID ステップ応答のページと組み合わせて使えます。前のゲインの残像と並べて、Kp・Ki・Kd をその場で調整できます。
 home-card-pairs-trapezoid-profile = 台形プロファイルのページと組み合わせて使えます。vmax と amax をドラッグし、動きが三角形になる境目を確かめられます。
+home-card-pairs-pendulum-energy = 振り子のページと組み合わせて使えます。振れる様子を見ながら、Euler と RK4 を並べてエネルギーのずれを比べられます。
+home-card-pairs-rrt-2d = RRT ステッパーと組み合わせて使えます。自分で描いた環境で、木を 1 反復ずつ（逆向きにも）成長させられます。

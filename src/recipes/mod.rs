@@ -559,10 +559,12 @@ mod facts_tests {
         assert_eq!(
             pages,
             [
+                ("pendulum-energy", "pendulum-energy"),
                 ("ik-workspace", "ik-2r"),
                 ("traj-resample", "traj-resample"),
                 ("jacobian-2r", "ik-2r"),
                 ("cubic-path", "cubic-path"),
+                ("rrt-2d", "rrt-2d"),
                 ("pid-step", "pid-step"),
                 ("manip-grid", "ik-2r"),
                 ("trapezoid-profile", "trapezoid-profile")

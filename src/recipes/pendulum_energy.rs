@@ -122,7 +122,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     writes: &[CSV_NAME],
     quirks_id: "recipe-pendulum-energy-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("pendulum-energy"),
 };
 
 /// MuJoCo's integrator choice.

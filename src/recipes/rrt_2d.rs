@@ -194,7 +194,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     writes: &[PATH_CSV, NODES_CSV],
     quirks_id: "recipe-rrt-2d-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("rrt-2d"),
 };
 
 const PATH_CSV: &str = "rrt_path.csv";

@@ -61,8 +61,8 @@ test('the shell renders in English with the home page, navigation and disclaimer
     assert.match(await ik.locator('[data-command="python"] code').innerText(), /^python planar_ik_workspace\.py 0\.12 0\.10 200 10$/);
     assert.equal(await ik.locator('[data-testid="recipe-link-ik-workspace"]').getAttribute('href'), '#/ik-2r');
     assert.equal(await ik.locator('[data-testid="recipe-drill-ik-workspace"]').getAttribute('href'), '#/drills?recipe=ik-workspace');
-    // The signal recipes pair with their pages: the "Pairs with" line and the card's foot link.
-    for (const id of ['cubic-path', 'pid-step', 'trapezoid-profile']) {
+    // Recipes with a page of their own pair with it: the "Pairs with" line and the card's foot link.
+    for (const id of ['pendulum-energy', 'rrt-2d', 'cubic-path', 'pid-step', 'trapezoid-profile']) {
       const card = page.locator(`[data-testid="recipe-card-${id}"]`);
       assert.doesNotMatch(await card.innerText(), /command line today/);
       assert.deepEqual(await card.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href'))), [`#/${id}`, `#/drills?recipe=${id}`, `#/${id}`]);

@@ -1,6 +1,7 @@
-//! The page table: every page the shell can route to (and lists in its navigation), and which
-//! recipes have a page of their own in the browser. Only pages that work are listed; every
-//! recipe also runs on the drills page (`#/drills?recipe=<id>`).
+//! The page table: every page the shell can route to (and lists in its navigation). Only pages
+//! that work are listed. Which recipe runs on which page is a recipe fact (`RecipeInfo::page`,
+//! read by the home cards); every recipe also runs on the drills page
+//! (`#/drills?recipe=<id>`).
 
 use crate::ui::page::PageDef;
 
@@ -30,29 +31,7 @@ pub const PAGES: &[PageDef] = &[
     drills::PAGE,
 ];
 
-/// Recipe id → the page where it runs in the browser. The IK page computes and exports the
-/// CSVs of three recipes; the RRT stepper those of rrt-2d; each signal page and traj-resample
-/// has its own page.
-pub const RECIPE_PAGES: &[(&str, &str)] = &[
-    ("ik-workspace", "ik-2r"),
-    ("jacobian-2r", "ik-2r"),
-    ("manip-grid", "ik-2r"),
-    ("rrt-2d", "rrt-2d"),
-    ("cubic-path", "cubic-path"),
-    ("pid-step", "pid-step"),
-    ("trapezoid-profile", "trapezoid-profile"),
-    ("traj-resample", "traj-resample"),
-];
-
 /// The page with route id `id`.
 pub fn find(id: &str) -> Option<&'static PageDef> {
     PAGES.iter().find(|def| def.id == id)
-}
-
-/// The page where recipe `recipe_id` runs in the browser, if any.
-pub fn page_for_recipe(recipe_id: &str) -> Option<&'static PageDef> {
-    RECIPE_PAGES
-        .iter()
-        .find(|(recipe, _)| *recipe == recipe_id)
-        .and_then(|(_, page)| find(page))
 }
