@@ -283,7 +283,7 @@ impl Inner {
         let Some(s) = sample else {
             return;
         };
-        let show = |key: &str, x: f64| self.readouts.set_exact(key, &sig(x, 4), &py_float(x));
+        let show = |key: &str, x: f64| self.readouts.set_with_value(key, &sig(x, 4), &py_float(x));
         show("cursor-t", s.t);
         show("cursor-s", s.s);
         show("cursor-v", s.v);
