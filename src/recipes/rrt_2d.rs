@@ -873,19 +873,13 @@ fn child_rect(r: &Rect, k: u32) -> Rect {
     [x0, y0, x1, y1]
 }
 
-/// Squared distance from `q` to cell `r` (0 inside).
+/// Distance from `q` to cell `r` (0 inside).
 #[inline]
-fn gap2(r: &Rect, q: [f64; 2]) -> f64 {
+fn gap(r: &Rect, q: [f64; 2]) -> f64 {
     let dx = (r[0] - q[0]).max(q[0] - r[2]).max(0.0);
     let dy = (r[1] - q[1]).max(q[1] - r[3]).max(0.0);
-    dx * dx + dy * dy
+    (dx * dx + dy * dy).sqrt()
 }
-
-/// Relative margin on squared distances: when `d2 > b2 * (1 + TIE_MARGIN)` (as computed),
-/// `sqrt(d2) > sqrt(b2)` (as rounded), so a node that far cannot win nor tie and needs no
-/// square root. Two squared distances whose rounded roots are equal differ by a relative
-/// 4 * 2^-53 at most; the margin is 20 times that.
-const TIE_MARGIN: f64 = 1e-14;
 
 /// The nearest-node index of [`Rrt`]: a bucket quadtree over the unit square. Its
 /// [`NearestIndex::nearest`] is exactly [`nearest_linear`]: the same distances, the first
@@ -971,40 +965,21 @@ impl NearestIndex {
     }
 
     /// The index of the node nearest to `q`: exactly [`nearest_linear`] (0 when empty).
-    ///
-    /// The search compares squared distances (no square root) where that cannot change the
-    /// answer: a cell is skipped when its squared gap exceeds `(best + PRUNE_SLACK)^2`, a node
-    /// when its squared distance exceeds the best's by more than [`TIE_MARGIN`]; the others
-    /// are compared by the recipe's own distance, `sqrt`, ties to the smaller index.
     pub fn nearest(&mut self, q: [f64; 2]) -> usize {
-        let (mut best_id, mut best_d) = (u32::MAX, f64::INFINITY);
-        // Skip nodes with a squared distance above `reject2`, cells with a squared gap above
-        // `limit2`.
-        let (mut reject2, mut limit2) = (f64::INFINITY, f64::INFINITY);
+        let mut best = (u32::MAX, f64::INFINITY);
         let mut stack = std::mem::take(&mut self.stack);
         stack.clear();
-        stack.push((0, gap2(&ROOT, q), ROOT));
-        while let Some((qi, g2, r)) = stack.pop() {
-            if g2 > limit2 {
+        stack.push((0, gap(&ROOT, q), ROOT));
+        while let Some((qi, g, r)) = stack.pop() {
+            if g - PRUNE_SLACK > best.1 {
                 continue;
             }
             let quad = &self.quads[qi as usize];
             if quad.children == 0 {
                 for &(id, p) in &quad.items {
-                    let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
-                    let d2 = dx * dx + dy * dy;
-                    if d2 > reject2 {
-                        continue;
-                    }
-                    // The recipe's distance, `norm(p - q)`, exactly.
-                    let d = d2.sqrt();
-                    if d < best_d || (d == best_d && id < best_id) {
-                        if d < best_d {
-                            reject2 = d2 * (1.0 + TIE_MARGIN);
-                            limit2 = (d + PRUNE_SLACK) * (d + PRUNE_SLACK);
-                        }
-                        best_id = id;
-                        best_d = d;
+                    let d = distance(p, q);
+                    if d < best.1 || (d == best.1 && id < best.0) {
+                        best = (id, d);
                     }
                 }
                 continue;
@@ -1013,17 +988,17 @@ impl NearestIndex {
             let (own, _) = child_of(&r, q);
             for k in [own ^ 3, own ^ 2, own ^ 1, own] {
                 let cr = child_rect(&r, k);
-                let cg2 = gap2(&cr, q);
-                if cg2 <= limit2 {
-                    stack.push((quad.children + k, cg2, cr));
+                let cg = gap(&cr, q);
+                if cg - PRUNE_SLACK <= best.1 {
+                    stack.push((quad.children + k, cg, cr));
                 }
             }
         }
         self.stack = stack;
-        if best_id == u32::MAX {
+        if best.0 == u32::MAX {
             0
         } else {
-            best_id as usize
+            best.0 as usize
         }
     }
 }
