@@ -19,9 +19,11 @@ fn time<T>(case: &BenchCase, mut f: impl FnMut(Vec<(String, String)>) -> T) -> (
 }
 
 fn main() {
+    // An optional argument keeps only the cases whose name contains it.
+    let filter = std::env::args().nth(1).unwrap_or_default();
     println!("| case | native kernel ms | native recipe + CSV ms |");
     println!("|---|---:|---:|");
-    for case in CASES {
+    for case in CASES.iter().filter(|c| c.name.contains(filter.as_str())) {
         let (kernel_ms, kernel) = time(case, |inputs| (case.kernel)(&inputs));
         let (recipe_ms, recipe) = time(case, |inputs| bench::run(case, inputs));
         if let Err(e) = kernel.as_ref().map(|_| ()).and(recipe.as_ref().map(|_| ())) {

@@ -10,7 +10,10 @@ const median = (xs) => {
 };
 console.log('| case | wasm kernel ms | wasm recipe + CSV ms |');
 console.log('|---|---:|---:|');
+// An optional argument keeps only the cases whose name contains it.
+const filter = process.argv[2] ?? '';
 wasm.benchCaseNames().forEach((name, i) => {
+  if (!name.includes(filter)) return;
   try {
     const kernel = median(Array.from(wasm.benchCase(i, 5, true)));
     const recipe = median(Array.from(wasm.benchCase(i, 5, false)));

@@ -559,6 +559,24 @@ mod rrt {
             prop_assert_eq!(rrt.last().copied(), last);
         }
 
+        /// Nodes 0, 1 and 2 ulps apart: their squared distances to the query differ but
+        /// often round to the same distance under the recipe's `sqrt` (a tie): the quadtree
+        /// keeps the first index among them, as the linear scan does.
+        #[test]
+        fn quadtree_keeps_ties_of_rounded_distances(
+            base in prop::collection::vec((0.0f64..1.0, 0.0f64..1.0), 1..60),
+            q in (0.0f64..1.0, 0.0f64..1.0),
+        ) {
+            let mut nodes = Vec::new();
+            for &(x, y) in &base {
+                for k in [2u64, 1, 0] {
+                    nodes.push([f64::from_bits(x.to_bits() + k), y]);
+                }
+            }
+            let q = [q.0, q.1];
+            prop_assert_eq!(NearestIndex::of(&nodes).nearest(q), nearest_linear(&nodes, q));
+        }
+
         /// The quadtree returns the linear scan's node on random trees with exact ties
         /// (points and queries on a coarse lattice, repeated points), also after truncation.
         #[test]
