@@ -7,6 +7,7 @@
 //! - [`stepper`]: the stepper's state machine (step, back, play at a speed, scrub).
 //! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
+//! - [`camera3d`]: the orbit camera of the 3D views (projection, orbit, zoom, presets, hits).
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`envelope`]: min/max plot envelope of a CSV table (a million rows in a few thousand points).
 //! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
@@ -22,6 +23,7 @@
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
+pub mod camera3d;
 pub mod command_line;
 pub mod cubic_path;
 pub mod drag;
