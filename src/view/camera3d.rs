@@ -136,7 +136,7 @@ impl Camera {
         let (right, up, forward) = self.basis();
         let v = p - self.eye();
         let depth = v.dot(forward);
-        if !(depth > Self::NEAR) {
+        if depth.is_nan() || depth <= Self::NEAR {
             return None;
         }
         let f = self.focal_px() / depth;
