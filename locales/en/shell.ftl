@@ -8,6 +8,11 @@ skip-to-content = Skip to content
 
 nav-label = Pages
 nav-home = Home
+nav-drills-menu = Drills
+nav-group-kinematics = Kinematics
+nav-group-dynamics = Dynamics and control
+nav-group-trajectories = Trajectories
+nav-group-planning = Planning
 
 lang-switch-title = Show this page in Japanese (key: L)
 projector-toggle = Projector

@@ -8,6 +8,11 @@ skip-to-content = 本文へ移動
 
 nav-label = ページ
 nav-home = ホーム
+nav-drills-menu = ドリル
+nav-group-kinematics = 運動学
+nav-group-dynamics = 動力学と制御
+nav-group-trajectories = 軌道
+nav-group-planning = 経路計画
 
 lang-switch-title = このページを英語で表示します（キー: L）
 projector-toggle = プロジェクター

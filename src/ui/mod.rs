@@ -27,6 +27,7 @@ pub mod ctx;
 pub mod dom;
 pub mod download;
 pub mod kit;
+pub mod nav_menu;
 pub mod overlay;
 pub mod page;
 pub mod pages;

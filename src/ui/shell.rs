@@ -1,5 +1,5 @@
 //! The app shell: a "Skip to content" link, the header (product name and subtitle, navigation
-//! of the pages that exist, language switch, projector toggle, `?` button), the `<main>` that
+//! of the pages that exist with the drill pages in a grouped menu ([`nav_menu`]), language switch, projector toggle, `?` button), the `<main>` that
 //! hosts the page the router names, the footer with the safety disclaimer, and the keys.
 //!
 //! - Hosting: on start and on every `hashchange` the shell drops the mounted page and mounts
@@ -20,6 +20,7 @@
 //!   working as the presentation software expects.
 
 use std::cell::RefCell;
+use std::rc::Rc;
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -27,6 +28,7 @@ use web_sys::{Element, KeyboardEvent};
 
 use crate::i18n::{self, Lang};
 use crate::ui::kit::keymap::{self, ShellKey};
+use crate::ui::nav_menu::{self, NavMenu};
 use crate::ui::page::{MountCtx, PageDef, PageHandle};
 use crate::ui::router::Route;
 use crate::ui::{ctx, dom, overlay, pages, router};
@@ -146,15 +148,19 @@ fn build_header() -> Result<Element, JsValue> {
     nav.set_attribute("data-testid", "site-nav")?;
     dom::set_i18n_attrs(&nav, &[("aria-label", "nav-label")])?;
     let list = dom::el("ul")?;
-    for def in pages::PAGES {
+    let menu = nav_menu::build(nav_link)?;
+    for def in pages::PAGES
+        .iter()
+        .filter(|def| !pages::in_nav_group(def.id))
+    {
         let item = dom::el("li")?;
-        let link = dom::el_i18n("a", "nav-link", nav_title_id(def))?;
-        link.set_attribute("href", &router::build_hash(def.id, &[]))?;
-        link.set_attribute("data-page", def.id)?;
-        link.set_attribute("data-testid", &format!("nav-{}", def.id))?;
-        dom::append(&item, &link)?;
+        dom::append(&item, &nav_link(def)?)?;
         dom::append(&list, &item)?;
+        if def.id == pages::HOME_ID {
+            dom::append(&list, menu.item())?;
+        }
     }
+    NAV_MENU.with(|slot| *slot.borrow_mut() = Some(menu));
     dom::append(&nav, &list)?;
     dom::append(&header, &nav)?;
 
@@ -189,6 +195,15 @@ fn build_header() -> Result<Element, JsValue> {
     dom::append(&tools, &help)?;
     dom::append(&header, &tools)?;
     Ok(header)
+}
+
+/// One navigation link (top level or in the drills menu).
+fn nav_link(def: &'static PageDef) -> Result<Element, JsValue> {
+    let link = dom::el_i18n("a", "nav-link", nav_title_id(def))?;
+    link.set_attribute("href", &nav_menu::href(def))?;
+    link.set_attribute("data-page", def.id)?;
+    link.set_attribute("data-testid", &format!("nav-{}", def.id))?;
+    Ok(link)
 }
 
 /// The home page is "Home" in the navigation; other pages use their title.
@@ -301,6 +316,11 @@ pub(crate) fn route_changed(def: Option<&'static PageDef>) -> Result<(), JsValue
             }
         }
     }
+    NAV_MENU.with(|slot| {
+        if let Some(menu) = slot.borrow().as_ref() {
+            menu.route_changed(current);
+        }
+    });
     update_title(def)
 }
 
@@ -394,6 +414,7 @@ struct Mounted {
 }
 
 thread_local! {
+    static NAV_MENU: RefCell<Option<Rc<NavMenu>>> = const { RefCell::new(None) };
     static MOUNTED: RefCell<Option<Mounted>> = const { RefCell::new(None) };
 }
 

@@ -48,10 +48,13 @@ test('the shell renders in English with the home page, navigation and disclaimer
     assert.match(await text(page, '[data-testid="site-footer"]'), /Works offline; no data leaves this page\./);
     assert.match(await text(page, '[data-testid="brand"]'), /BSV Playground/);
     assert.match(t.title, /^BSV Playground/);
-    // Only pages that exist are in the navigation: home, the IK page, the pendulum, trajectory
-    // resampling, the RRT stepper, the three signal pages and all drills.
+    // Only pages that exist are in the navigation: home, the drills menu (the IK page, the
+    // pendulum, PID, the cubic and trapezoid pages, trajectory resampling, the RRT stepper, in
+    // their groups) and all drills.
     const navIds = await page.locator('[data-testid="site-nav"] a').evaluateAll((as) => as.map((a) => a.dataset.page));
-    assert.deepEqual(navIds, ['home', 'ik-2r', 'pendulum-energy', 'traj-resample', 'rrt-2d', 'cubic-path', 'pid-step', 'trapezoid-profile', 'drills']);
+    assert.deepEqual(navIds, ['home', 'ik-2r', 'pendulum-energy', 'pid-step', 'cubic-path', 'trapezoid-profile', 'traj-resample', 'rrt-2d', 'drills']);
+    const topLevel = await page.locator('[data-testid="site-nav"] > ul > li > a').evaluateAll((as) => as.map((a) => a.dataset.page));
+    assert.deepEqual(topLevel, ['home', 'drills']);
     assert.equal(await page.locator('[data-testid="nav-home"]').getAttribute('aria-current'), 'page');
     // Twelve recipe cards, each with both command lines and a link to its drill; the IK ones
     // also link to the IK page.
@@ -267,6 +270,7 @@ test('an unknown route shows a localized not-found page with a link home', async
 test('navigating to the IK page and back re-mounts pages through the hash', async () => {
   const { page, errors, close } = await openApp(server.url, '#/');
   try {
+    await page.click('[data-testid="nav-menu-button"]');
     await page.click('[data-testid="nav-ik-2r"]');
     await page.waitForFunction(() => location.hash.startsWith('#/ik-2r'));
     await page.waitForFunction(() => document.querySelector('[data-testid="nav-ik-2r"]')?.getAttribute('aria-current') === 'page');
@@ -378,8 +382,8 @@ test('at phone width every tap target is at least 44 px and the header is compac
       assert.deepEqual(await page.evaluate(smallTargets, ['#app-main', 44]), [], `${lang} home page`);
       const header = await page.locator('[data-testid="site-header"]').boundingBox();
       assert.ok(header.height <= 110, `${lang}: the header takes ${header.height} px of 844`);
-      // The brand, the tools and the three navigation links all show.
-      for (const id of ['brand', 'lang-switch', 'projector-toggle', 'help-button', 'nav-home', 'nav-ik-2r', 'nav-drills']) {
+      // The brand, the tools, the two top-level links and the drills menu button all show.
+      for (const id of ['brand', 'lang-switch', 'projector-toggle', 'help-button', 'nav-home', 'nav-menu-button', 'nav-drills']) {
         const box = await page.locator(`[data-testid="${id}"]`).boundingBox();
         assert.ok(box && box.y >= 0 && box.y + box.height <= header.y + header.height + 0.5, `${lang}: ${id} inside the header`);
       }
@@ -391,6 +395,50 @@ test('at phone width every tap target is at least 44 px and the header is compac
     assert.deepEqual(errors, []);
   } finally {
     await close();
+  }
+});
+
+test('the drills menu groups the drill pages, closes on Escape, outside and navigation, and marks its button on a drill page', async () => {
+  for (const viewport of [{ width: 1920, height: 1080 }, { width: 390, height: 844 }]) {
+    const { page, errors, close } = await openApp(server.url, '#/', { viewport });
+    try {
+      const button = page.locator('[data-testid="nav-menu-button"]');
+      const menu = page.locator('[data-testid="nav-menu"]');
+      assert.equal(await button.getAttribute('aria-expanded'), 'false');
+      assert.equal(await menu.isVisible(), false);
+      await button.click();
+      assert.equal(await button.getAttribute('aria-expanded'), 'true');
+      await menu.waitFor({ state: 'visible' });
+      assert.deepEqual(await menu.locator('.nav-group-title').allInnerTexts(), ['KINEMATICS', 'DYNAMICS AND CONTROL', 'TRAJECTORIES', 'PLANNING']);
+      // Every link of the open menu is on screen, and the header stays one row at 1920 px.
+      for (const box of await menu.locator('a').evaluateAll((as) => as.map((a) => a.getBoundingClientRect().toJSON()))) {
+        assert.ok(box.left >= 0 && box.right <= viewport.width + 0.5 && box.height >= (viewport.width < 600 ? 44 : 36), JSON.stringify(box));
+      }
+      if (viewport.width === 1920) {
+        const header = await page.locator('[data-testid="site-header"]').boundingBox();
+        assert.ok(header.height < 90, `header ${header.height} px`);
+        await page.screenshot({ path: join(OUT, 'nav-menu-1920.png') });
+      } else {
+        await page.screenshot({ path: join(OUT, 'nav-menu-390.png') });
+      }
+      await page.keyboard.press('Escape');
+      assert.equal(await button.getAttribute('aria-expanded'), 'false');
+      assert.equal(await page.evaluate(() => document.activeElement?.dataset.testid), 'nav-menu-button');
+      await button.click();
+      await page.mouse.click(5, viewport.height - 5);
+      assert.equal(await menu.isVisible(), false);
+      await button.click();
+      await page.click('[data-testid="nav-rrt-2d"]');
+      await page.waitForFunction(() => location.hash.startsWith('#/rrt-2d'));
+      assert.equal(await menu.isVisible(), false);
+      assert.match(await button.getAttribute('class'), /has-current/);
+      assert.equal(await page.locator('[data-testid="nav-rrt-2d"]').getAttribute('aria-current'), 'page');
+      await page.click('[data-testid="nav-home"]');
+      await page.waitForFunction(() => !document.querySelector('[data-testid="nav-menu-button"]').classList.contains('has-current'));
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
   }
 });
 

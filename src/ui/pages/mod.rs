@@ -31,6 +31,27 @@ pub const PAGES: &[PageDef] = &[
     drills::PAGE,
 ];
 
+/// The navigation's "Drills" menu: groups of drill pages (the Fluent id of each group's
+/// heading, then page ids in order). Ids of pages not (yet) in [`PAGES`] are skipped; pages in
+/// no group are top-level links of the header.
+pub const NAV_GROUPS: &[(&str, &[&str])] = &[
+    (
+        "nav-group-kinematics",
+        &["ik-2r", "dh-fk", "se3-relative", "umeyama-2d"],
+    ),
+    ("nav-group-dynamics", &["pendulum-energy", "pid-step"]),
+    (
+        "nav-group-trajectories",
+        &["cubic-path", "trapezoid-profile", "traj-resample"],
+    ),
+    ("nav-group-planning", &["rrt-2d"]),
+];
+
+/// Whether page `id` is listed in the drills menu rather than as a top-level link.
+pub fn in_nav_group(id: &str) -> bool {
+    NAV_GROUPS.iter().any(|(_, ids)| ids.contains(&id))
+}
+
 /// The page with route id `id`.
 pub fn find(id: &str) -> Option<&'static PageDef> {
     PAGES.iter().find(|def| def.id == id)
