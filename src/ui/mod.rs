@@ -26,6 +26,7 @@ pub mod command_line;
 pub mod ctx;
 pub mod dom;
 pub mod download;
+pub mod drill_chain;
 pub mod kit;
 pub mod nav_menu;
 pub mod overlay;

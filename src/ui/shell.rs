@@ -27,6 +27,7 @@ use wasm_bindgen::JsCast;
 use web_sys::{Element, KeyboardEvent};
 
 use crate::i18n::{self, Lang};
+use crate::ui::drill_chain;
 use crate::ui::kit::keymap::{self, ShellKey};
 use crate::ui::nav_menu::{self, NavMenu};
 use crate::ui::page::{MountCtx, PageDef, PageHandle};
@@ -70,6 +71,7 @@ pub(crate) fn start() -> Result<(), JsValue> {
     main.set_id(MAIN_ID);
     main.set_attribute("tabindex", "-1")?;
     dom::append(&app, &main)?;
+    dom::append(&app, &drill_chain::build()?)?;
     dom::append(&app, &build_footer()?)?;
     if let Some(status) = document.get_element_by_id("boot-status") {
         status.remove();
@@ -321,6 +323,7 @@ pub(crate) fn route_changed(def: Option<&'static PageDef>) -> Result<(), JsValue
             menu.route_changed(current);
         }
     });
+    drill_chain::route_changed(current)?;
     update_title(def)
 }
 

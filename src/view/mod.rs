@@ -8,6 +8,7 @@
 //! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
 //! - [`camera3d`]: the orbit camera of the 3D views (projection, orbit, zoom, presets, hits).
+//! - [`drill_chain`]: the seed's "next step" chain of drills at the foot of each drill page.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`envelope`]: min/max plot envelope of a CSV table (a million rows in a few thousand points).
 //! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
@@ -27,6 +28,7 @@ pub mod camera3d;
 pub mod command_line;
 pub mod cubic_path;
 pub mod drag;
+pub mod drill_chain;
 pub mod drills;
 pub mod envelope;
 pub mod form;

@@ -442,6 +442,38 @@ test('the drills menu groups the drill pages, closes on Escape, outside and navi
   }
 });
 
+test('drill pages end with the seed\'s next-step chain; the home page has none', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/rrt-2d');
+  try {
+    const chain = page.locator('[data-testid="drill-chain"]');
+    await chain.waitFor({ state: 'visible' });
+    assert.equal(await page.locator('[data-testid="chain-next"] span').innerText(), 'Run a discrete PID step response next.');
+    assert.equal(await page.locator('[data-testid="chain-next-link"]').innerText(), 'PID step response');
+    assert.equal(await page.locator('[data-testid="chain-next-link"]').getAttribute('href'), '#/pid-step');
+    assert.deepEqual(await chain.locator('[aria-current="step"]').evaluateAll((as) => as.map((a) => a.dataset.step)), ['rrt-2d']);
+    const steps = await chain.locator('.chain-step').evaluateAll((as) => as.map((a) => a.dataset.step));
+    assert.equal(steps[0], 'pendulum-energy');
+    assert.ok(steps.indexOf('rrt-2d') > steps.indexOf('se3-relative'));
+    // A recipe without a page of its own runs on the drills page.
+    for (const [step, href] of await chain.locator('.chain-step').evaluateAll((as) => as.map((a) => [a.dataset.step, a.getAttribute('href')]))) {
+      assert.ok(href === `#/${step}` || href === `#/drills?recipe=${step}` || href === '#/ik-2r' || href === '#/teleop', `${step}: ${href}`);
+    }
+    // The IK page stands for three steps of the chain.
+    await page.goto(`${server.url}#/ik-2r`);
+    await page.waitForFunction(() => document.querySelectorAll('#drill-chain [aria-current="step"]').length === 3);
+    assert.equal(await page.locator('[data-testid="chain-next-link"]').getAttribute('href'), '#/traj-resample');
+    await page.click('[data-testid="lang-switch"]');
+    await page.waitForFunction(() => document.documentElement.lang === 'ja');
+    assert.match(await page.locator('[data-testid="chain-next"]').innerText(), /関節軌道を再サンプリング/);
+    assert.equal(await page.locator('[data-testid="drill-chain"] h2').innerText(), '次のステップ');
+    await page.click('[data-testid="nav-home"]');
+    await page.waitForFunction(() => document.getElementById('drill-chain')?.hidden === true);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('a localized skip link is the first focusable element and moves focus to the content', async () => {
   const { page, errors, close } = await openApp(server.url, '#/?lang=ja');
   try {
