@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the wasm (release by default, `--dev` for a fast unoptimised build) and assembles
-# the static app in dist/: index.html, www/ (css, boot and bootstrap js, the worker, favicon),
+# the static app in dist/: index.html, sw.js (the offline service worker), www/ (css, boot and
+# bootstrap js, the worker, favicon, the web app manifest),
 # pkg/ (wasm + its JS glue). dist/ runs from any static host or folder served over http.
 # dist/www/app.css is one stylesheet: www/app.css, then every stylesheet that sits beside the
 # Rust of a page or widget (src/ui/**/*.css, in path order); nothing injects <style> at run time,
@@ -28,6 +29,8 @@ cp -r www dist/www
 cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm dist/pkg/
 # wasm-bindgen `inline_js` / `module` snippets, if any crate uses them.
 [[ -d pkg/snippets ]] && cp -r pkg/snippets dist/pkg/
+# The offline service worker of exactly these files (dist/sw.js; see www/sw.js).
+node scripts/sw-build.mjs dist
 
 size() { gzip -9 -c "$@" | wc -c; }
 printf 'dist/ ready (%s): wasm %s B (gzip %s B); wasm+js+css+html gzip %s B\n' \

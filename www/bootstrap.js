@@ -5,9 +5,50 @@ try {
   const { default: init, startApp } = await import('../pkg/bsv_playground.js');
   await init();
   startApp();
+  registerServiceWorker();
 } catch (error) {
   console.error('BSV Playground could not start:', error);
   if (typeof window.bsvBootError === 'function') {
     window.bsvBootError('wasm', error);
   }
+}
+
+// Offline install: the service worker (dist/sw.js, written per build by scripts/sw-build.mjs)
+// caches exactly one build. A newer build installs in the background and waits; the page is
+// told with a `bsv-update-ready` event (window.bsvUpdateReady is set too), shows its localized
+// "reload to update" offer, and calls window.bsvApplyUpdate() when the user accepts: the new
+// worker takes over and the page reloads once, so old and new files never mix.
+function registerServiceWorker() {
+  if (!('serviceWorker' in navigator) || location.protocol === 'file:') return;
+  let accepted = false;
+  navigator.serviceWorker.addEventListener('controllerchange', () => {
+    if (accepted) location.reload();
+  });
+  navigator.serviceWorker
+    .register(new URL('../sw.js', import.meta.url))
+    .then((registration) => {
+      const offer = () => {
+        if (registration.waiting && navigator.serviceWorker.controller) {
+          window.bsvUpdateReady = true;
+          document.dispatchEvent(new CustomEvent('bsv-update-ready'));
+        }
+      };
+      window.bsvApplyUpdate = () => {
+        if (!registration.waiting) return false;
+        accepted = true;
+        registration.waiting.postMessage('bsv-apply-update');
+        return true;
+      };
+      window.bsvCheckForUpdate = () => registration.update().catch(() => {});
+      offer();
+      registration.addEventListener('updatefound', () => {
+        const worker = registration.installing;
+        worker?.addEventListener('statechange', () => {
+          if (worker.state === 'installed') offer();
+        });
+      });
+    })
+    // No service worker (blocked, private mode, an http origin that is not localhost): the app
+    // still runs, it just needs its server.
+    .catch(() => {});
 }

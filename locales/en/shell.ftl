@@ -71,3 +71,7 @@ chain-next-pid-step = Map 2R manipulability next.
 chain-next-manip-grid = Build a trapezoidal velocity profile next.
 chain-next-trapezoid-profile = Align 2D point clouds with Umeyama next.
 chain-next-umeyama-2d = Open Robot Pilot Academy, or revisit planar IK.
+
+# The offline install's update offer.
+update-ready = A new version of BSV Playground is ready. The page keeps running this one until you reload.
+update-reload = Reload to update

@@ -71,3 +71,7 @@ chain-next-pid-step = 次は 2R の可操作度をマップにしましょう。
 chain-next-manip-grid = 次は台形速度プロファイルを作りましょう。
 chain-next-trapezoid-profile = 次は Umeyama 法で 2D 点群を位置合わせしましょう。
 chain-next-umeyama-2d = Robot Pilot Academy を開くか、平面 IK をもう一度試しましょう。
+
+# The offline install's update offer.
+update-ready = BSV Playground の新しいバージョンを利用できます。再読み込みするまでは、今のバージョンのまま動きます。
+update-reload = 再読み込みして更新

@@ -11,6 +11,9 @@
 //! - [`dom`]: element builders, localized text, storage, listeners.
 //! - [`shell`]: header, navigation, language switch, projector mode, footer, keys, and the
 //!   host of the mounted page.
+//! - [`nav_menu`]: the header's grouped Drills menu.
+//! - [`drill_chain`]: the seed's next-step chain at the foot of drill pages.
+//! - [`update_banner`]: the offline install's "reload to update" offer.
 //! - [`overlay`]: the `?` shortcut list.
 //! - [`pages`]: the page table and the pages.
 //! - [`kit`]: widgets shared by pages (the worker for long runs, its progress panel).
@@ -35,6 +38,7 @@ pub mod pages;
 pub mod router;
 pub mod schedule;
 pub mod shell;
+pub mod update_banner;
 
 /// Builds the app into `#app` and routes to the page the URL names. Installs a panic hook
 /// first: a panic is logged with `console.error` and a localized banner says that the work is

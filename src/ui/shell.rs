@@ -32,6 +32,7 @@ use crate::ui::kit::keymap::{self, ShellKey};
 use crate::ui::nav_menu::{self, NavMenu};
 use crate::ui::page::{MountCtx, PageDef, PageHandle};
 use crate::ui::router::Route;
+use crate::ui::update_banner;
 use crate::ui::{ctx, dom, overlay, pages, router};
 
 /// localStorage key of the language the user chose.
@@ -73,6 +74,7 @@ pub(crate) fn start() -> Result<(), JsValue> {
     dom::append(&app, &main)?;
     dom::append(&app, &drill_chain::build()?)?;
     dom::append(&app, &build_footer()?)?;
+    dom::append(&app, &update_banner::build()?)?;
     if let Some(status) = document.get_element_by_id("boot-status") {
         status.remove();
     }

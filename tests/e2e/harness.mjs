@@ -123,9 +123,12 @@ export async function closeBrowser() {
 /**
  * Opens the app at `url` + `/` + `hash` in a fresh context and waits until the shell has
  * mounted (html[data-app-ready="1"]). `errors` collects console errors and page errors.
+ * `serviceWorkers: 'allow'` lets the app install its offline service worker.
  */
-export async function openApp(url, hash = '#/', { viewport = { width: 1280, height: 800 }, locale = 'en-US', storage = {} } = {}) {
-  const context = await (await browser()).newContext({ viewport, locale, acceptDownloads: true, deviceScaleFactor: 1 });
+export async function openApp(url, hash = '#/', { viewport = { width: 1280, height: 800 }, locale = 'en-US', storage = {}, serviceWorkers = 'block' } = {}) {
+  // The offline service worker is blocked unless a test asks for it (offline.test.mjs), so
+  // every other test sees the files of dist/ exactly as served.
+  const context = await (await browser()).newContext({ viewport, locale, acceptDownloads: true, deviceScaleFactor: 1, serviceWorkers });
   if (Object.keys(storage).length) {
     await context.addInitScript((entries) => {
       for (const [k, v] of Object.entries(entries)) localStorage.setItem(k, v);

@@ -1,0 +1,45 @@
+#!/usr/bin/env node
+// Writes DIR/sw.js (default dist/) from the template www/sw.js: the build id is the sha256 of
+// every file of the build (path and bytes, in path order) and the file list is every file in
+// DIR, so the service worker caches exactly one build. Prints the build id.
+// `node scripts/sw-build.mjs [DIR]`; also imported by the offline e2e test.
+import { createHash } from 'node:crypto';
+import { readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { dirname, join, relative, resolve, sep } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..');
+
+function walk(dir) {
+  return readdirSync(dir).flatMap((name) => {
+    const path = join(dir, name);
+    return statSync(path).isDirectory() ? walk(path) : [path];
+  });
+}
+
+/** Writes `dir`/sw.js and returns { build, files }. */
+export function writeServiceWorker(dir) {
+  const root = resolve(dir);
+  rmSync(join(root, 'sw.js'), { force: true });
+  rmSync(join(root, 'www', 'sw.js'), { force: true });
+  const files = walk(root)
+    .map((path) => relative(root, path).split(sep).join('/'))
+    .sort();
+  const hash = createHash('sha256');
+  for (const file of files) {
+    hash.update(file).update('\0').update(readFileSync(join(root, file))).update('\0');
+  }
+  const build = hash.digest('hex').slice(0, 16);
+  const list = ['./', ...files];
+  const template = readFileSync(join(ROOT, 'www', 'sw.js'), 'utf8');
+  writeFileSync(
+    join(root, 'sw.js'),
+    template.replace("'__BSV_BUILD__'", JSON.stringify(build)).replace('__BSV_FILES__', JSON.stringify(list)),
+  );
+  return { build, files: list };
+}
+
+if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
+  const { build, files } = writeServiceWorker(process.argv[2] ?? join(ROOT, 'dist'));
+  console.log(`sw.js: build ${build}, ${files.length} files`);
+}
