@@ -63,10 +63,10 @@ pub fn markup() -> String {
     format!(
         "<section class=\"ik2r-card ik2r-readouts\" aria-live=\"off\">\
          <h2 data-i18n=\"ik2r-readouts-title\"></h2>{rows}\
-         <div class=\"ik2r-jac\"><span class=\"ik2r-jac-label\" data-i18n=\"ik2r-ro-jac\"></span>\
-         <div class=\"ik2r-matrix\" role=\"table\">\
-         <span data-readout=\"j11\" role=\"cell\"></span><span data-readout=\"j12\" role=\"cell\"></span>\
-         <span data-readout=\"j21\" role=\"cell\"></span><span data-readout=\"j22\" role=\"cell\"></span>\
+         <div class=\"ik2r-jac\"><span class=\"ik2r-jac-label\" id=\"ik2r-jac-label\" data-i18n=\"ik2r-ro-jac\"></span>\
+         <div class=\"ik2r-matrix\" role=\"table\" aria-labelledby=\"ik2r-jac-label\">\
+         <div class=\"ik2r-matrix-row\" role=\"row\"><span data-readout=\"j11\" role=\"cell\"></span><span data-readout=\"j12\" role=\"cell\"></span></div>\
+         <div class=\"ik2r-matrix-row\" role=\"row\"><span data-readout=\"j21\" role=\"cell\"></span><span data-readout=\"j22\" role=\"cell\"></span></div>\
          </div><span class=\"ik2r-unit\" data-i18n=\"ik2r-unit-m-per-rad\"></span></div>\
          <p class=\"ik2r-hint\" data-i18n=\"ik2r-ro-hint\"></p></section>",
         rows = kit::markup_rows("ik2r", &ROWS),
