@@ -27,11 +27,12 @@ overlay-close = Close
 overlay-shell-heading = Everywhere
 overlay-page-heading = On this page
 overlay-page-none = This page has no keys of its own.
-overlay-note = Everywhere keys do nothing while you type in a field. Page keys work while the page or its drawing has focus, not while a button, link or field has it (click the page first). Keys a page does not list, such as Page Up / Page Down, B and . from a presenter remote, stay with the browser and the presentation software.
+overlay-note = Everywhere keys do nothing while you type in a field. Page keys work while the page or its drawing has focus, not while a button, link or field has it (click the page first). Other keys of a presenter remote, such as B and ., stay with the browser and the presentation software.
 key-help = Show or hide this list
 key-projector = Projector mode on or off
 key-lang = Switch between English and Japanese
 key-escape = Close this list
+key-sections = Next / previous section of the page (what a presenter remote's buttons send); past the last section, the next drill. On a page that steps, they step.
 
 notfound-title = Page not found
 notfound-body = There is no page at this address. It may be an old or mistyped link.

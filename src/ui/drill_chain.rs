@@ -79,3 +79,12 @@ pub(crate) fn route_changed(current: &str) -> Result<(), JsValue> {
     dom::append(&nav, &list)?;
     Ok(())
 }
+
+/// The href of the drill before (`delta` = -1) or after (+1) page `current` in the chain, for
+/// presenter remotes at the top or the end of a page.
+pub(crate) fn neighbour_href(current: &str, delta: isize) -> Option<String> {
+    // From the step whose "next step" sentence the page shows (the IK page: the workspace).
+    let from = drill_chain::primary_position(current, page_of)?;
+    let to = from.checked_add_signed(delta)?;
+    CHAIN.get(to).and_then(|step| href(step))
+}

@@ -13,6 +13,7 @@
 //!   host of the mounted page.
 //! - [`nav_menu`]: the header's grouped Drills menu.
 //! - [`drill_chain`]: the seed's next-step chain at the foot of drill pages.
+//! - [`section_keys`]: PageDown / PageUp of presenter remotes on pages that do not step.
 //! - [`update_banner`]: the offline install's "reload to update" offer.
 //! - [`overlay`]: the `?` shortcut list.
 //! - [`pages`]: the page table and the pages.
@@ -37,6 +38,7 @@ pub mod page;
 pub mod pages;
 pub mod router;
 pub mod schedule;
+pub mod section_keys;
 pub mod shell;
 pub mod update_banner;
 

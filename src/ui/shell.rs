@@ -32,6 +32,7 @@ use crate::ui::kit::keymap::{self, ShellKey};
 use crate::ui::nav_menu::{self, NavMenu};
 use crate::ui::page::{MountCtx, PageDef, PageHandle};
 use crate::ui::router::Route;
+use crate::ui::section_keys;
 use crate::ui::update_banner;
 use crate::ui::{ctx, dom, overlay, pages, router};
 
@@ -391,6 +392,10 @@ fn on_keydown(event: &KeyboardEvent) -> Result<(), JsValue> {
         };
     }
     if keymap::page_may_take(event) && with_page(|page| page.on_key(event)) == Some(true) {
+        event.prevent_default();
+        return Ok(());
+    }
+    if section_keys::on_key(event, current_page_id())? {
         event.prevent_default();
     }
     Ok(())

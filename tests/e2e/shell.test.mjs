@@ -64,6 +64,15 @@ test('the shell renders in English with the home page, navigation and disclaimer
     assert.match(await ik.locator('[data-command="python"] code').innerText(), /^python planar_ik_workspace\.py 0\.12 0\.10 200 10$/);
     assert.equal(await ik.locator('[data-testid="recipe-link-ik-workspace"]').getAttribute('href'), '#/ik-2r');
     assert.equal(await ik.locator('[data-testid="recipe-drill-ik-workspace"]').getAttribute('href'), '#/drills?recipe=ik-workspace');
+    // Link texts say where they go: no two links of the home page share an accessible name
+    // and a different target.
+    const links = await page.locator('#app-main a').evaluateAll((as) => as.map((a) => [a.textContent.replace(/\s+/g, ' ').trim(), a.getAttribute('href')]));
+    const byName = new Map();
+    for (const [name, href] of links) {
+      assert.ok(!byName.has(name) || byName.get(name) === href, `"${name}" goes to ${byName.get(name)} and ${href}`);
+      byName.set(name, href);
+    }
+    assert.match(await ik.locator('[data-testid="recipe-drill-ik-workspace"]').textContent(), /Run this drill: Sample a planar 2-link IK workspace/);
     // Recipes with a page of their own pair with it: the "Pairs with" line and the card's foot link.
     for (const id of ['pendulum-energy', 'rrt-2d', 'cubic-path', 'pid-step', 'trapezoid-profile']) {
       const card = page.locator(`[data-testid="recipe-card-${id}"]`);
@@ -72,7 +81,7 @@ test('the shell renders in English with the home page, navigation and disclaimer
       assert.match(await card.locator('.recipe-pairs').innerText(), /^Pairs with the /);
     }
     const pid = page.locator('[data-testid="recipe-card-pid-step"]');
-    assert.match(await pid.innerText(), /In the browser:\s*Run this drill\W*PID step response/);
+    assert.match(await pid.innerText(), /In the browser:\s*Run this drill\s*(?:: Discrete PID step response \(toy plant\))?\W*PID step response/);
     // A recipe without a page of its own links to its drill only.
     const se3 = page.locator('[data-testid="recipe-card-se3-relative"]');
     assert.deepEqual(await se3.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href'))), ['#/drills?recipe=se3-relative']);
@@ -178,7 +187,7 @@ test('? opens the shortcut overlay, focus stays inside it, Escape closes it', as
     assert.equal(await dialog.getAttribute('role'), 'dialog');
     assert.equal(await dialog.getAttribute('aria-modal'), 'true');
     const keys = await dialog.locator('[data-testid="shell-keys"] kbd').allInnerTexts();
-    assert.deepEqual(keys, ['?', 'P', 'L', 'Esc']);
+    assert.deepEqual(keys, ['?', 'P', 'L', 'Esc', 'PgDn / PgUp']);
     assert.match(await dialog.innerText(), /Projector mode on or off/);
     // Focus starts on the close button and Tab cannot leave the dialog.
     assert.equal(await page.evaluate(() => document.activeElement?.dataset.testid), 'overlay-close');
@@ -468,6 +477,39 @@ test('drill pages end with the seed\'s next-step chain; the home page has none',
     assert.equal(await page.locator('[data-testid="drill-chain"] h2').innerText(), '次のステップ');
     await page.click('[data-testid="nav-home"]');
     await page.waitForFunction(() => document.getElementById('drill-chain')?.hidden === true);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a presenter remote\'s PageDown / PageUp go section by section on pages that do not step, then to the next drill', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/', { viewport: { width: 1280, height: 800 } });
+  try {
+    const focused = () => page.evaluate(() => document.activeElement?.dataset.testid || document.activeElement?.tagName);
+    await page.keyboard.press('PageDown');
+    assert.equal(await focused(), 'featured-ik-2r');
+    await page.keyboard.press('PageDown');
+    const second = await focused();
+    assert.notEqual(second, 'featured-ik-2r');
+    const y = await page.evaluate(() => window.scrollY);
+    assert.ok(y > 0, 'the page moved');
+    await page.keyboard.press('PageUp');
+    assert.equal(await focused(), 'featured-ik-2r');
+    assert.ok(await page.evaluate(() => window.scrollY) < y);
+    // Many presses reach the end of the home page and stay there (home is off the chain).
+    for (let i = 0; i < 40; i += 1) await page.keyboard.press('PageDown');
+    assert.equal(new URL(page.url()).hash, '#/');
+    // On a drill page that does not take PageDown itself, the last section leads to the next
+    // drill of the chain: the IK page (IK workspace) is followed by trajectory resampling.
+    await page.goto(`${server.url}/#/ik-2r`);
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    await page.locator('#app-main').click({ position: { x: 5, y: 5 } });
+    for (let i = 0; i < 30 && !page.url().includes('#/traj-resample'); i += 1) await page.keyboard.press('PageDown');
+    await page.waitForFunction(() => location.hash.startsWith('#/traj-resample'));
+    // The overlay lists the keys.
+    await page.keyboard.press('?');
+    assert.match(await page.locator('[role="dialog"]').innerText(), /PgDn \/ PgUp/);
     assert.deepEqual(errors, []);
   } finally {
     await close();

@@ -9,8 +9,10 @@
 //!   widget role): there Space, Enter and the arrows belong to the control, and a focused Reset
 //!   button must not let the arrow keys move the arm.
 //! - Keys with Ctrl, Alt or Meta are the browser's (print, find, reload...), never ours.
-//! - A key nobody takes keeps its default: presenter remotes send PageUp/PageDown (and
-//!   `b`, `.`), which scroll or reach the presentation software unless the page steps with them.
+//! - Presenter remotes send PageUp/PageDown: a page that steps takes them; elsewhere the shell
+//!   moves to the previous/next section of the page, and past either end to the neighbouring
+//!   drill ([`crate::ui::section_keys`]). Other keys nobody takes (`b`, `.`) keep their
+//!   default.
 
 use wasm_bindgen::JsCast;
 use web_sys::{Element, EventTarget, HtmlElement, KeyboardEvent};
@@ -45,6 +47,10 @@ pub const SHELL: &[Shortcut] = &[
     Shortcut {
         keys: "Esc",
         message_id: "key-escape",
+    },
+    Shortcut {
+        keys: "PgDn / PgUp",
+        message_id: "key-sections",
     },
 ];
 

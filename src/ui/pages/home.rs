@@ -144,14 +144,7 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
 
     let links = el_class("p", "card-link")?;
     append(&links, &el_i18n("span", "label", "home-card-in-browser")?)?;
-    append(
-        &links,
-        &card_link(
-            &pages::drills::link(id),
-            "home-card-drill",
-            &format!("recipe-drill-{id}"),
-        )?,
-    )?;
+    append(&links, &drill_link(id)?)?;
     if let Some(def) = live_page {
         append(&links, &el_text("span", "sep", " · ")?)?;
         append(
@@ -165,6 +158,23 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
     }
     append(&item, &links)?;
     Ok(item)
+}
+
+/// "Run this drill", with the recipe's title for screen readers (whose list of links would
+/// otherwise hold twelve identical "Run this drill" entries).
+fn drill_link(id: &str) -> Result<Element, JsValue> {
+    let link = card_link(
+        &pages::drills::link(id),
+        "home-card-drill",
+        &format!("recipe-drill-{id}"),
+    )?;
+    let which = el_class("span", "visually-hidden")?;
+    append(&which, &el_text("span", "", ": ")?)?;
+    append(&which, &el_i18n("span", "", &format!("recipe-{id}-title"))?)?;
+    if let Some(arrow) = link.last_element_child() {
+        link.insert_before(&which, Some(&arrow))?;
+    }
+    Ok(link)
 }
 
 /// One link at the foot of a recipe card: its title and an arrow.
