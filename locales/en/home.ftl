@@ -22,3 +22,17 @@ home-card-pairs-pid-step = Pairs with the PID step page: tune Kp, Ki and Kd live
 home-card-pairs-trapezoid-profile = Pairs with the trapezoidal profile page: drag vmax and amax and see when the move becomes a triangle.
 home-card-pairs-pendulum-energy = Pairs with the pendulum page: watch it swing, and run Euler and RK4 side by side to see the energy drift.
 home-card-pairs-rrt-2d = Pairs with the RRT stepper: grow the tree one iteration at a time, backwards too, in a world you draw.
+
+# The picture on each recipe card (drawn from the kernel at the defaults), for screen readers.
+home-picture-pendulum-energy = Kinetic, potential and total energy of the default pendulum run over time
+home-picture-ik-workspace = The reachable points of the default 2R workspace grid, with the unreachable ones in grey
+home-picture-traj-resample = The labeled sample trajectory: original points as dots, the resampled joints as lines
+home-picture-dh-fk = The default 3R chain drawn in 3D over a ground grid
+home-picture-jacobian-2r = The tip positions of the default Jacobian sweep (q1 turning at a fixed q2), seen from above
+home-picture-cubic-path = Position and velocity of the default cubic path over time
+home-picture-se3-relative = Frames A and B of the default run as coloured axes, with the arrow from A to B
+home-picture-rrt-2d = The default RRT tree in the unit square, with the found path in orange
+home-picture-pid-step = Setpoint and output of the default PID step response over time
+home-picture-manip-grid = Manipulability over the (q1, q2) grid as a colour map, bright is high
+home-picture-trapezoid-profile = Velocity of the default trapezoidal profile over time
+home-picture-umeyama-2d = Source points, noisy targets and the aligned points of the default Umeyama run, with residuals

@@ -22,3 +22,17 @@ home-card-pairs-pid-step = PID ステップ応答のページと組み合わせ�
 home-card-pairs-trapezoid-profile = 台形プロファイルのページと組み合わせて使えます。vmax と amax をドラッグし、動きが三角形になる境目を確かめられます。
 home-card-pairs-pendulum-energy = 振り子のページと組み合わせて使えます。振れる様子を見ながら、Euler と RK4 を並べてエネルギーのずれを比べられます。
 home-card-pairs-rrt-2d = RRT ステッパーと組み合わせて使えます。自分で描いた環境で、木を 1 反復ずつ（逆向きにも）成長させられます。
+
+# The picture on each recipe card (drawn from the kernel at the defaults), for screen readers.
+home-picture-pendulum-energy = 既定の振り子の運動エネルギー・位置エネルギー・全エネルギーの時間変化
+home-picture-ik-workspace = 既定の 2R ワークスペースのグリッドで届く点（届かない点は灰色）
+home-picture-traj-resample = ラベル付きサンプル軌道：元の点を点で、再サンプリングした関節を線で表示
+home-picture-dh-fk = 既定の 3R チェーンを地面のグリッドの上に 3D で描いた図
+home-picture-jacobian-2r = 既定のヤコビアン掃引での先端位置（q2 を固定して q1 を回す）を上から見た図
+home-picture-cubic-path = 既定の 3 次軌道の位置と速度の時間変化
+home-picture-se3-relative = 既定の座標系 A と B を色付きの軸で描き、A から B への矢印を添えた図
+home-picture-rrt-2d = 単位正方形の中の既定の RRT の木と、見つかった経路（オレンジ）
+home-picture-pid-step = 既定の PID ステップ応答の目標値と出力の時間変化
+home-picture-manip-grid = (q1, q2) グリッド上の可操作度のカラーマップ（明るいほど高い）
+home-picture-trapezoid-profile = 既定の台形速度プロファイルの速度の時間変化
+home-picture-umeyama-2d = 既定の Umeyama の元の点・ノイズ付きの目標点・位置合わせ後の点と残差

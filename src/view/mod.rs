@@ -7,6 +7,7 @@
 //! - [`stepper`]: the stepper's state machine (step, back, play at a speed, scrub).
 //! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
+//! - [`card_picture`]: the home page's recipe-card pictures, drawn from each kernel's defaults.
 //! - [`camera3d`]: the orbit camera of the 3D views (projection, orbit, zoom, presets, hits).
 //! - [`drill_chain`]: the seed's "next step" chain of drills at the foot of each drill page.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
@@ -25,6 +26,7 @@
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
 pub mod camera3d;
+pub mod card_picture;
 pub mod command_line;
 pub mod cubic_path;
 pub mod drag;

@@ -516,6 +516,26 @@ test('a presenter remote\'s PageDown / PageUp go section by section on pages tha
   }
 });
 
+test('every recipe card shows a picture its kernel drew at the defaults, after the first paint', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/');
+  try {
+    await page.waitForFunction(() => document.querySelectorAll('canvas.card-picture[data-drawn="1"]').length === 12, null, { timeout: 20000 });
+    const inked = await page.locator('canvas.card-picture').evaluateAll((cs) => cs.map((c) => {
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 3; i < d.length; i += 4) if (d[i] > 0) n += 1;
+      return [c.dataset.recipe, n / (c.width * c.height)];
+    }));
+    for (const [id, share] of inked) assert.ok(share > 0.01, `${id}: ${share}`);
+    assert.match(await page.locator('[data-testid="card-picture-rrt-2d"]').getAttribute('aria-label'), /RRT tree/);
+    await page.locator('[data-testid="recipe-card-rrt-2d"]').scrollIntoViewIfNeeded();
+    await page.screenshot({ path: join(OUT, 'home-pictures.png') });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('a localized skip link is the first focusable element and moves focus to the content', async () => {
   const { page, errors, close } = await openApp(server.url, '#/?lang=ja');
   try {

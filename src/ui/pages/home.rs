@@ -1,5 +1,6 @@
 //! The home page: the BSV page's headline and introduction, a featured card for each
-//! in-browser tool, and one card per recipe (title, description, inputs with their defaults,
+//! in-browser tool, and one card per recipe (title, a small picture its kernel draws at the
+//! defaults ([`home_picture`]), description, inputs with their defaults,
 //! the files it writes, the `bsv` and `python` command lines, and links to run it in the
 //! browser: its drill on the drills page, and its own page when it has one). Every text is a
 //! `data-i18n` message, so a language switch needs nothing from the page itself. Everything
@@ -15,6 +16,7 @@ use crate::ui::command_line::shell_word;
 use crate::ui::dom::{append, el, el_class, el_i18n, el_text};
 use crate::ui::page::{MountCtx, PageDef, PageHandle};
 use crate::ui::pages;
+use crate::ui::pages::home_picture;
 
 /// The home page (`#/`).
 pub const PAGE: PageDef = PageDef {
@@ -57,6 +59,7 @@ fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
     }
     append(&recipes, &grid)?;
     append(&root, &recipes)?;
+    home_picture::draw_all(&root)?;
     Ok(Box::new(HomePage))
 }
 
@@ -85,6 +88,7 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
     item.set_attribute("data-testid", &format!("recipe-card-{id}"))?;
     item.set_attribute("data-recipe", id)?;
     append(&item, &el_i18n("h3", "", &info.title_id())?)?;
+    append(&item, &home_picture::canvas(id)?)?;
     append(&item, &el_i18n("p", "blurb", &info.blurb_id())?)?;
     // The live page that runs it (from the recipe's facts): "Pairs with … →", linked.
     let live_page = info.page.and_then(pages::find);

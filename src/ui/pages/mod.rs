@@ -8,6 +8,7 @@ use crate::ui::page::PageDef;
 pub mod cubic_path;
 pub mod drills;
 pub mod home;
+mod home_picture;
 pub mod ik2r;
 pub mod pendulum;
 pub mod pid_step;

@@ -1,0 +1,124 @@
+//! The small picture on each recipe card of the home page ([`crate::view::card_picture`]):
+//! the kernels run at their defaults after the first paint, one card per task, so the page
+//! shows at once and no task is long.
+
+use std::rc::Rc;
+
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement};
+
+use crate::ui::{dom, schedule};
+use crate::view::card_picture::{self, Mark, Picture};
+use crate::view::heatmap;
+
+/// Okabe–Ito colours of the palette slots (`card_picture::series`).
+const PALETTE: [&str; 5] = ["#0072B2", "#E69F00", "#009E73", "#B8BEC6", "#D55E00"];
+
+/// The (empty) canvas of recipe `id`'s card, named for screen readers.
+pub(crate) fn canvas(id: &str) -> Result<Element, JsValue> {
+    let canvas = dom::el_class("canvas", "card-picture")?;
+    canvas.set_attribute("data-testid", &format!("card-picture-{id}"))?;
+    canvas.set_attribute("data-recipe", id)?;
+    canvas.set_attribute("role", "img")?;
+    dom::set_i18n_attrs(&canvas, &[("aria-label", &format!("home-picture-{id}"))])?;
+    Ok(canvas)
+}
+
+/// Draws every card picture under `root`, one per task after the first paint.
+pub(crate) fn draw_all(root: &Element) -> Result<(), JsValue> {
+    let queue: Rc<Vec<HtmlCanvasElement>> = Rc::new(
+        dom::matching(root, "canvas.card-picture")?
+            .into_iter()
+            .filter_map(|e| e.dyn_into::<HtmlCanvasElement>().ok())
+            .collect(),
+    );
+    schedule::after_paint(move || next(queue, 0))
+}
+
+fn next(queue: Rc<Vec<HtmlCanvasElement>>, i: usize) {
+    let Some(canvas) = queue.get(i) else {
+        return;
+    };
+    // A canvas no longer in the document: the user left the home page.
+    if !canvas.is_connected() {
+        return;
+    }
+    if let Some(id) = canvas.get_attribute("data-recipe") {
+        let aspect =
+            f64::from(canvas.client_width().max(1)) / f64::from(canvas.client_height().max(1));
+        if let Some(picture) = card_picture::default_picture(&id, aspect) {
+            if draw(canvas, &picture).is_ok() {
+                let _ = canvas.set_attribute("data-drawn", "1");
+            }
+        }
+    }
+    let rest = Rc::clone(&queue);
+    let _ = schedule::after_paint(move || next(rest, i + 1));
+}
+
+fn draw(canvas: &HtmlCanvasElement, picture: &Picture) -> Result<(), JsValue> {
+    let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());
+    let (w, h) = (
+        f64::from(canvas.client_width().max(1)),
+        f64::from(canvas.client_height().max(1)),
+    );
+    canvas.set_width((w * dpr).round() as u32);
+    canvas.set_height((h * dpr).round() as u32);
+    let ctx = canvas
+        .get_context("2d")?
+        .and_then(|c| c.dyn_into::<CanvasRenderingContext2d>().ok())
+        .ok_or_else(|| JsValue::from_str("no 2d context"))?;
+    ctx.scale(dpr, dpr)?;
+    let at = |p: glam::DVec2| (p.x * w, (1.0 - p.y) * h);
+    for mark in &picture.marks {
+        match mark {
+            Mark::Line { series, points } => {
+                ctx.set_stroke_style_str(PALETTE[usize::from(*series) % PALETTE.len()]);
+                ctx.set_line_width(1.75);
+                ctx.begin_path();
+                for (k, p) in points.iter().enumerate() {
+                    let (x, y) = at(*p);
+                    if k == 0 {
+                        ctx.move_to(x, y);
+                    } else {
+                        ctx.line_to(x, y);
+                    }
+                }
+                ctx.stroke();
+            }
+            Mark::Dots { series, points } => {
+                ctx.set_fill_style_str(PALETTE[usize::from(*series) % PALETTE.len()]);
+                let r = if points.len() > 400 { 1.1 } else { 2.2 };
+                for p in points {
+                    let (x, y) = at(*p);
+                    ctx.fill_rect(x - r, y - r, 2.0 * r, 2.0 * r);
+                }
+            }
+            Mark::Segments { series, pairs } => {
+                ctx.set_stroke_style_str(PALETTE[usize::from(*series) % PALETTE.len()]);
+                ctx.set_line_width(1.25);
+                ctx.begin_path();
+                for (a, b) in pairs {
+                    let (ax, ay) = at(*a);
+                    let (bx, by) = at(*b);
+                    ctx.move_to(ax, ay);
+                    ctx.line_to(bx, by);
+                }
+                ctx.stroke();
+            }
+            Mark::Cells { cols, rows, values } => {
+                let lut = heatmap::viridis();
+                let (cw, ch) = (w / *cols as f64, h / *rows as f64);
+                for (k, v) in values.iter().enumerate() {
+                    let (cx, cy) = ((k % cols) as f64, (k / cols) as f64);
+                    let c = heatmap::colour_at(&lut, *v);
+                    ctx.set_fill_style_str(&format!("rgb({},{},{})", c[0], c[1], c[2]));
+                    // Cells overlap by a pixel so no seams show.
+                    ctx.fill_rect(cx * cw, h - (cy + 1.0) * ch, cw + 0.6, ch + 0.6);
+                }
+            }
+        }
+    }
+    Ok(())
+}
