@@ -536,6 +536,27 @@ test('every recipe card shows a picture its kernel drew at the defaults, after t
   }
 });
 
+test('the home page ends with the seed\'s "Compare the tools" table, localized, with plain outbound links', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/');
+  try {
+    const rows = page.locator('[data-testid="tools"] tbody tr');
+    assert.equal(await rows.count(), 7);
+    assert.deepEqual(await page.locator('[data-testid="tools"] thead th').allInnerTexts(), ['Tool', 'Job', 'Licence', 'Difficulty', 'Local / cloud']);
+    assert.match(await rows.nth(2).locator('th a').textContent(), /^NumPy\s*\(official site, opens outside the app\)$/);
+    assert.deepEqual(await rows.nth(2).locator('td').allInnerTexts(), ['Arrays for IK grids and trajectory math', 'BSD-3-Clause', 'Beginner', 'Local']);
+    for (const href of await rows.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href')))) {
+      assert.match(href, /^https:\/\/[a-z0-9.-]+\//);
+    }
+    await page.click('[data-testid="lang-switch"]');
+    await page.waitForFunction(() => document.documentElement.lang === 'ja');
+    assert.deepEqual(await rows.nth(2).locator('td').allInnerTexts(), ['IK のグリッドや軌道計算のための配列', 'BSD-3-Clause', '初級', 'ローカル']);
+    assert.equal(await page.locator('#tools-heading').innerText(), 'ツールの比較');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('a localized skip link is the first focusable element and moves focus to the content', async () => {
   const { page, errors, close } = await openApp(server.url, '#/?lang=ja');
   try {

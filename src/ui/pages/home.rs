@@ -2,7 +2,8 @@
 //! in-browser tool, and one card per recipe (title, a small picture its kernel draws at the
 //! defaults ([`home_picture`]), description, inputs with their defaults,
 //! the files it writes, the `bsv` and `python` command lines, and links to run it in the
-//! browser: its drill on the drills page, and its own page when it has one). Every text is a
+//! browser: its drill on the drills page, and its own page when it has one), then the seed's
+//! "Compare the tools" table with the official links (outbound only). Every text is a
 //! `data-i18n` message, so a language switch needs nothing from the page itself. Everything
 //! about a recipe (labels, defaults, limits, the live page that pairs with it) comes from its
 //! facts (`RecipeInfo`, `ArgSpec`).
@@ -59,8 +60,71 @@ fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
     }
     append(&recipes, &grid)?;
     append(&root, &recipes)?;
+    append(&root, &tools_section()?)?;
     home_picture::draw_all(&root)?;
     Ok(Box::new(HomePage))
+}
+
+/// The seed's "Compare the tools" table: each tool's key (its Fluent ids are
+/// `home-tool-<key>-{name,job,licence,difficulty,where}`) and its official address. The links
+/// go out; the app fetches nothing from them.
+const TOOLS: [(&str, &str); 7] = [
+    ("mujoco", "https://mujoco.org/"),
+    ("mujoco-docs", "https://mujoco.readthedocs.io/"),
+    ("numpy", "https://numpy.org/"),
+    ("isaac-lab", "https://isaac-sim.github.io/IsaacLab/"),
+    ("isaac-teleop", "https://isaac-sim.github.io/IsaacLab/v2.3.0/source/overview/imitation-learning/teleop_imitation.html"),
+    ("ros2", "https://docs.ros.org/"),
+    ("robot-web-tools", "https://robotwebtools.github.io/"),
+];
+
+/// The tools table, with a caption and column headers for screen readers.
+fn tools_section() -> Result<Element, JsValue> {
+    let section = el_class("section", "tools")?;
+    section.set_attribute("aria-labelledby", "tools-heading")?;
+    section.set_attribute("data-testid", "tools")?;
+    let heading = el_i18n("h2", "", "home-tools-title")?;
+    heading.set_id("tools-heading");
+    append(&section, &heading)?;
+    append(
+        &section,
+        &el_i18n("p", "section-intro", "home-tools-intro")?,
+    )?;
+    let wrap = el_class("div", "tools-wrap")?;
+    let table = el_class("table", "tools-table")?;
+    append(&table, &el_i18n("caption", "", "home-tools-caption")?)?;
+    let head = el("thead")?;
+    let row = el("tr")?;
+    for col in ["tool", "job", "licence", "difficulty", "where"] {
+        let th = el_i18n("th", "", &format!("home-tools-col-{col}"))?;
+        th.set_attribute("scope", "col")?;
+        append(&row, &th)?;
+    }
+    append(&head, &row)?;
+    append(&table, &head)?;
+    let body = el("tbody")?;
+    for (key, href) in TOOLS {
+        let row = el("tr")?;
+        row.set_attribute("data-tool", key)?;
+        let th = el("th")?;
+        th.set_attribute("scope", "row")?;
+        let link = el_i18n("a", "", &format!("home-tool-{key}-name"))?;
+        link.set_attribute("href", href)?;
+        link.set_attribute("rel", "noopener noreferrer")?;
+        link.set_attribute("target", "_blank")?;
+        append(&th, &link)?;
+        let note = el_i18n("span", "visually-hidden", "home-tools-external")?;
+        append(&link, &note)?;
+        append(&row, &th)?;
+        for col in ["job", "licence", "difficulty", "where"] {
+            append(&row, &el_i18n("td", "", &format!("home-tool-{key}-{col}"))?)?;
+        }
+        append(&body, &row)?;
+    }
+    append(&table, &body)?;
+    append(&wrap, &table)?;
+    append(&section, &wrap)?;
+    Ok(section)
 }
 
 /// The big link to an in-browser tool: "Interactive tool…", its title with an arrow, its blurb.
