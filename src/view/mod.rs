@@ -10,6 +10,7 @@
 //! - [`card_picture`]: the home page's recipe-card pictures, drawn from each kernel's defaults.
 //! - [`camera3d`]: the orbit camera of the 3D views (projection, orbit, zoom, presets, hits).
 //! - [`drill_chain`]: the seed's "next step" chain of drills at the foot of each drill page.
+//! - [`lesson`]: lessons (steps of page states), their URL and file forms, the presenter.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`envelope`]: min/max plot envelope of a CSV table (a million rows in a few thousand points).
 //! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
@@ -36,6 +37,7 @@ pub mod envelope;
 pub mod form;
 pub mod heatmap;
 pub mod ik2r;
+pub mod lesson;
 pub mod pendulum;
 pub mod pid_step;
 pub mod plot;
