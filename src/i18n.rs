@@ -96,6 +96,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
     (Lang::En, "kit.ftl", include_str!("../locales/en/kit.ftl")),
     (
         Lang::En,
+        "lesson.ftl",
+        include_str!("../locales/en/lesson.ftl"),
+    ),
+    (
+        Lang::En,
         "pendulum.ftl",
         include_str!("../locales/en/pendulum.ftl"),
     ),
@@ -129,6 +134,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/ja/drills.ftl"),
     ),
     (Lang::Ja, "kit.ftl", include_str!("../locales/ja/kit.ftl")),
+    (
+        Lang::Ja,
+        "lesson.ftl",
+        include_str!("../locales/ja/lesson.ftl"),
+    ),
     (
         Lang::Ja,
         "pendulum.ftl",

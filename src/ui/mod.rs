@@ -11,6 +11,7 @@
 //! - [`dom`]: element builders, localized text, storage, listeners.
 //! - [`shell`]: header, navigation, language switch, projector mode, footer, keys, and the
 //!   host of the mounted page.
+//! - [`lesson_bar`]: "add this view to the lesson" and presenting a lesson over any page.
 //! - [`nav_menu`]: the header's grouped Drills menu.
 //! - [`drill_chain`]: the seed's next-step chain at the foot of drill pages.
 //! - [`section_keys`]: PageDown / PageUp of presenter remotes on pages that do not step.
@@ -32,6 +33,7 @@ pub mod dom;
 pub mod download;
 pub mod drill_chain;
 pub mod kit;
+pub mod lesson_bar;
 pub mod nav_menu;
 pub mod overlay;
 pub mod page;

@@ -29,6 +29,7 @@ use web_sys::{Element, KeyboardEvent};
 use crate::i18n::{self, Lang};
 use crate::ui::drill_chain;
 use crate::ui::kit::keymap::{self, ShellKey};
+use crate::ui::lesson_bar;
 use crate::ui::nav_menu::{self, NavMenu};
 use crate::ui::page::{MountCtx, PageDef, PageHandle};
 use crate::ui::router::Route;
@@ -76,6 +77,7 @@ pub(crate) fn start() -> Result<(), JsValue> {
     dom::append(&app, &drill_chain::build()?)?;
     dom::append(&app, &build_footer()?)?;
     dom::append(&app, &update_banner::build()?)?;
+    dom::append(&app, &lesson_bar::build_bar()?)?;
     if let Some(status) = document.get_element_by_id("boot-status") {
         status.remove();
     }
@@ -170,6 +172,7 @@ fn build_header() -> Result<Element, JsValue> {
     dom::append(&header, &nav)?;
 
     let tools = dom::el_class("div", "header-tools")?;
+    dom::append(&tools, &lesson_bar::build_add_button()?)?;
     let lang = dom::el_class("button", "tool-button lang-switch")?;
     lang.set_attribute("type", "button")?;
     lang.set_attribute("data-testid", "lang-switch")?;
@@ -264,6 +267,7 @@ pub(crate) fn apply_lang(lang: Lang) -> Result<(), JsValue> {
     }
     update_title(current_def())?;
     with_page(|page| page.relocalize());
+    lesson_bar::render()?;
     Ok(())
 }
 
@@ -327,6 +331,7 @@ pub(crate) fn route_changed(def: Option<&'static PageDef>) -> Result<(), JsValue
         }
     });
     drill_chain::route_changed(current)?;
+    lesson_bar::render()?;
     update_title(def)
 }
 
@@ -391,6 +396,10 @@ fn on_keydown(event: &KeyboardEvent) -> Result<(), JsValue> {
             ShellKey::Lang => switch_lang(ctx::lang().other()),
         };
     }
+    if lesson_bar::on_key(event)? {
+        event.prevent_default();
+        return Ok(());
+    }
     if keymap::page_may_take(event) && with_page(|page| page.on_key(event)) == Some(true) {
         event.prevent_default();
         return Ok(());
@@ -437,6 +446,31 @@ fn with_page<R>(f: impl FnOnce(&dyn PageHandle) -> R) -> Option<R> {
         })
         .ok()
         .flatten()
+}
+
+/// Sends the mounted page one PageDown, as a presenter remote would (a lesson step that steps
+/// the page's stepper).
+pub(crate) fn step_page() -> Result<(), JsValue> {
+    let init = web_sys::KeyboardEventInit::new();
+    init.set_key("PageDown");
+    init.set_bubbles(true);
+    init.set_cancelable(true);
+    let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init)?;
+    with_page(|page| page.on_key(&event));
+    Ok(())
+}
+
+/// Mounts the current route again (a lesson step shown a second time starts afresh).
+pub(crate) fn remount() -> Result<(), JsValue> {
+    mount_route(&router::current_route())
+}
+
+/// Projector mode on or off for a lesson being presented.
+pub(crate) fn set_projector_for_lesson(on: bool) -> Result<(), JsValue> {
+    if ctx::projector() != on {
+        set_projector(on)?;
+    }
+    Ok(())
 }
 
 /// The id of the mounted page (`None` on the not-found page).

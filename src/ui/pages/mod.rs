@@ -10,6 +10,7 @@ pub mod drills;
 pub mod home;
 mod home_picture;
 pub mod ik2r;
+pub mod lesson;
 pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
@@ -30,6 +31,7 @@ pub const PAGES: &[PageDef] = &[
     pid_step::PAGE,
     trapezoid_profile::PAGE,
     drills::PAGE,
+    lesson::PAGE,
 ];
 
 /// The navigation's "Drills" menu: groups of drill pages (the Fluent id of each group's

@@ -1,0 +1,289 @@
+//! Lessons in the shell: the header's "Add this view to the lesson" button, and presenting a
+//! lesson over every page: full screen, projector styles, a bar at the foot with the step's
+//! title and note, a progress strip, and the keys of presenter remotes (PageDown / → next,
+//! PageUp / ← back; a step that asks for it first steps the page's own stepper). The lesson
+//! itself is [`crate::view::lesson`]; it is kept in localStorage (`bsv.lesson`) so it survives
+//! a reload; the `#/lesson` page edits it.
+
+use std::cell::RefCell;
+
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{Element, KeyboardEvent};
+
+use crate::ui::{ctx, dom, pages, router};
+use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
+
+/// localStorage key of the current lesson (its `.json` text).
+pub const LESSON_STORAGE_KEY: &str = "bsv.lesson";
+const BAR_ID: &str = "lesson-bar";
+
+thread_local! {
+    static PRESENTING: RefCell<Option<(Lesson, Presenter)>> = const { RefCell::new(None) };
+}
+
+/// Whether page `id` exists (a lesson step must name one).
+pub fn is_page(id: &str) -> bool {
+    pages::find(id).is_some()
+}
+
+/// The stored lesson (empty when none or unreadable).
+pub fn stored() -> Lesson {
+    dom::storage_get(LESSON_STORAGE_KEY)
+        .and_then(|text| Lesson::from_json(&text, is_page).ok())
+        .unwrap_or_default()
+}
+
+/// Saves `lesson` as the current one.
+pub fn store(lesson: &Lesson) {
+    dom::storage_set(LESSON_STORAGE_KEY, &lesson.to_json());
+}
+
+/// The header button and its live status line.
+pub(crate) fn build_add_button() -> Result<Element, JsValue> {
+    let wrap = dom::el_class("span", "lesson-add-wrap")?;
+    let button = dom::el_i18n("button", "tool-button lesson-add", "lesson-add")?;
+    button.set_attribute("type", "button")?;
+    button.set_attribute("data-testid", "lesson-add")?;
+    dom::set_i18n_attrs(&button, &[("title", "lesson-add-title")])?;
+    let status = dom::el_class("span", "lesson-add-status visually-hidden")?;
+    status.set_attribute("role", "status")?;
+    status.set_attribute("data-testid", "lesson-add-status")?;
+    let shown = status.clone();
+    dom::Listener::new(&button, "click", move |_| {
+        if let Some(count) = add_current_view() {
+            shown.set_text_content(Some(&ctx::t_strings(
+                "lesson-added",
+                &[("count", count.to_string())],
+            )));
+        }
+    })?
+    .forever();
+    dom::append(&wrap, &button)?;
+    dom::append(&wrap, &status)?;
+    Ok(wrap)
+}
+
+/// Appends the page shown now to the stored lesson; the number of steps after it.
+fn add_current_view() -> Option<usize> {
+    let route = router::current_route();
+    let def = pages::find(&route.page)?;
+    if def.id == "lesson" {
+        return None;
+    }
+    let hash = crate::view::url::build_hash(&route.page, &route.page_query());
+    let mut lesson = stored();
+    if lesson.title.is_empty() {
+        lesson.title = ctx::t("lesson-untitled");
+    }
+    lesson
+        .steps
+        .push(LessonStep::of_route(&hash, &ctx::t(def.title_id)));
+    lesson.validate(is_page).ok()?;
+    store(&lesson);
+    Some(lesson.steps.len())
+}
+
+/// The (hidden) presenter bar the shell places in `#app`.
+pub(crate) fn build_bar() -> Result<Element, JsValue> {
+    let bar = dom::el_class("aside", "lesson-bar")?;
+    bar.set_id(BAR_ID);
+    bar.set_attribute("data-testid", "lesson-bar")?;
+    dom::set_i18n_attrs(&bar, &[("aria-label", "lesson-bar-label")])?;
+    dom::show(&bar, false);
+    // One listener for the bar's buttons (they are redrawn at every step).
+    dom::Listener::new(&bar, "click", |event| {
+        let target = event
+            .target()
+            .and_then(|t| t.dyn_into::<Element>().ok())
+            .and_then(|e| e.closest("[data-action]").ok().flatten());
+        let Some(target) = target else { return };
+        let result = match target.get_attribute("data-action").as_deref() {
+            Some("lesson-next") => press(true),
+            Some("lesson-prev") => press(false),
+            Some("lesson-end") => stop(),
+            Some("lesson-go") => {
+                let i = target
+                    .get_attribute("data-index")
+                    .and_then(|i| i.parse::<usize>().ok())
+                    .unwrap_or(0);
+                let action = PRESENTING.with(|p| {
+                    let mut p = p.borrow_mut();
+                    p.as_mut().map(|(l, pr)| pr.go(l, i))
+                });
+                action.map_or(Ok(()), apply)
+            }
+            _ => Ok(()),
+        };
+        if let Err(error) = result {
+            web_sys::console::error_2(&"BSV Playground: lesson".into(), &error);
+        }
+    })?
+    .forever();
+    Ok(bar)
+}
+
+/// Starts presenting `lesson` at step `index`.
+pub fn present(lesson: Lesson, index: usize) -> Result<(), JsValue> {
+    let mut presenter = Presenter::default();
+    let action = presenter.go(&lesson, index);
+    PRESENTING.with(|p| *p.borrow_mut() = Some((lesson, presenter)));
+    if let Some(root) = dom::document()?.document_element() {
+        // Full screen needs a user gesture; without one the lesson still runs in the window.
+        let _ = root.request_fullscreen();
+    }
+    crate::ui::shell::set_projector_for_lesson(true)?;
+    apply(action)
+}
+
+/// Stops presenting.
+pub fn stop() -> Result<(), JsValue> {
+    PRESENTING.with(|p| *p.borrow_mut() = None);
+    let document = dom::document()?;
+    if document.fullscreen_element().is_some() {
+        document.exit_fullscreen();
+    }
+    if let Some(bar) = document.get_element_by_id(BAR_ID) {
+        dom::show(&bar, false);
+    }
+    Ok(())
+}
+
+/// Whether a lesson is being presented.
+pub fn presenting() -> bool {
+    PRESENTING.with(|p| p.borrow().is_some())
+}
+
+/// Next / back while presenting (buttons and keys).
+fn press(forward: bool) -> Result<(), JsValue> {
+    let action = PRESENTING.with(|p| {
+        let mut p = p.borrow_mut();
+        let (lesson, presenter) = p.as_mut()?;
+        Some(if forward {
+            presenter.next(lesson)
+        } else {
+            presenter.back()
+        })
+    });
+    match action {
+        Some(action) => apply(action),
+        None => Ok(()),
+    }
+}
+
+fn apply(action: PresenterAction) -> Result<(), JsValue> {
+    match action {
+        PresenterAction::Stay => render(),
+        PresenterAction::StepPage => {
+            crate::ui::shell::step_page()?;
+            render()
+        }
+        PresenterAction::Show(i) => {
+            let route = PRESENTING.with(|p| {
+                p.borrow()
+                    .as_ref()
+                    .and_then(|(l, _)| l.steps.get(i).map(|s| s.route.clone()))
+            });
+            if let Some(route) = route {
+                let window = dom::window()?;
+                if window.location().hash()? == route {
+                    // Same state: re-mount it from the start.
+                    crate::ui::shell::remount()?;
+                } else {
+                    window.location().set_hash(&route)?;
+                }
+            }
+            render()
+        }
+    }
+}
+
+/// A key while presenting: PageDown / → next, PageUp / ← back, Escape ends. True if taken.
+pub(crate) fn on_key(event: &KeyboardEvent) -> Result<bool, JsValue> {
+    if !presenting() || event.ctrl_key() || event.alt_key() || event.meta_key() {
+        return Ok(false);
+    }
+    if crate::ui::kit::keymap::is_typing(event.target()) {
+        return Ok(false);
+    }
+    match event.key().as_str() {
+        "PageDown" | "ArrowRight" => press(true)?,
+        "PageUp" | "ArrowLeft" => press(false)?,
+        "Escape" | "Esc" => stop()?,
+        _ => return Ok(false),
+    }
+    Ok(true)
+}
+
+/// Redraws the bar: progress strip, step title and note, buttons.
+pub(crate) fn render() -> Result<(), JsValue> {
+    let document = dom::document()?;
+    let Some(bar) = document.get_element_by_id(BAR_ID) else {
+        return Ok(());
+    };
+    let state = PRESENTING.with(|p| p.borrow().clone());
+    let Some((lesson, presenter)) = state else {
+        dom::show(&bar, false);
+        return Ok(());
+    };
+    dom::clear(&bar);
+    dom::show(&bar, true);
+    let strip = dom::el_class("ol", "lesson-progress")?;
+    strip.set_attribute("data-testid", "lesson-progress")?;
+    for (i, step) in lesson.steps.iter().enumerate() {
+        let item = dom::el("li")?;
+        let dot = dom::el_class("button", "lesson-dot")?;
+        dot.set_attribute("type", "button")?;
+        dot.set_attribute(
+            "aria-label",
+            &format!("{} {}: {}", ctx::t("lesson-step"), i + 1, step.title),
+        )?;
+        if i == presenter.index {
+            dot.set_attribute("aria-current", "step")?;
+        }
+        dot.set_attribute("data-action", "lesson-go")?;
+        dot.set_attribute("data-index", &i.to_string())?;
+        dom::append(&item, &dot)?;
+        dom::append(&strip, &item)?;
+    }
+    dom::append(&bar, &strip)?;
+    if let Some(step) = lesson.steps.get(presenter.index) {
+        let text = dom::el_class("div", "lesson-text")?;
+        let title = dom::el_text(
+            "p",
+            "lesson-step-title",
+            &format!(
+                "{} / {} · {}",
+                presenter.index + 1,
+                lesson.steps.len(),
+                step.title
+            ),
+        )?;
+        title.set_attribute("data-testid", "lesson-step-title")?;
+        dom::append(&text, &title)?;
+        if !step.note.is_empty() {
+            let note = dom::el_text("p", "lesson-note", &step.note)?;
+            note.set_attribute("data-testid", "lesson-note")?;
+            dom::append(&text, &note)?;
+        }
+        if step.page_steps > 0 {
+            let left = step.page_steps.saturating_sub(presenter.page_steps_done);
+            let steps = dom::el_text(
+                "p",
+                "lesson-page-steps",
+                &ctx::t_strings("lesson-page-steps-left", &[("count", left.to_string())]),
+            )?;
+            dom::append(&text, &steps)?;
+        }
+        dom::append(&bar, &text)?;
+    }
+    let buttons = dom::el_class("div", "lesson-buttons")?;
+    for action in ["lesson-prev", "lesson-next", "lesson-end"] {
+        let b = dom::el_i18n("button", "tool-button", action)?;
+        b.set_attribute("type", "button")?;
+        b.set_attribute("data-action", action)?;
+        dom::append(&buttons, &b)?;
+    }
+    dom::append(&bar, &buttons)?;
+    Ok(())
+}

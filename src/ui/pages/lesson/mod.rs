@@ -1,0 +1,397 @@
+//! The lesson page (`#/lesson`): the lesson being built (steps added from any page with the
+//! header's "Add this view"), edited here (title, each step's title, note and page steps,
+//! reorder, delete), presented, exported and imported as `.json`, and shared as a link (the
+//! page's own URL is the lesson). The three built-in lessons load from here.
+//!
+//! Components: [`builtin`] (the built-in lessons); this file holds the page, its markup and the
+//! editor's actions. The lesson model is [`crate::view::lesson`]; storage and presenting are the
+//! shell's [`crate::ui::lesson_bar`].
+
+mod builtin;
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{Element, Event, HtmlInputElement, HtmlTextAreaElement};
+
+use crate::ui::dom::{self, Listener};
+use crate::ui::kit::input_file;
+use crate::ui::lesson_bar::{self, is_page};
+use crate::ui::page::{MountCtx, PageDef, PageHandle};
+use crate::ui::{ctx, download, router};
+use crate::view::lesson::{Lesson, LessonError, MAX_PAGE_STEPS};
+
+/// The page, as the shell's page table lists it.
+pub const PAGE: PageDef = PageDef {
+    id: "lesson",
+    title_id: "lesson-title",
+    blurb_id: "lesson-blurb",
+    mount,
+};
+
+struct LessonPage {
+    root: Element,
+    lesson: RefCell<Lesson>,
+    listeners: RefCell<Vec<Listener>>,
+    steps_listeners: RefCell<Vec<Listener>>,
+}
+
+impl PageHandle for Rc<LessonPage> {
+    fn relocalize(&self) {
+        let _ = self.render_steps();
+    }
+}
+
+fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
+    let root = ctx.root.clone();
+    root.set_inner_html(MARKUP);
+    dom::relocalize(&root)?;
+    let page = Rc::new(LessonPage {
+        root,
+        lesson: RefCell::new(lesson_bar::stored()),
+        listeners: RefCell::new(Vec::new()),
+        steps_listeners: RefCell::new(Vec::new()),
+    });
+    // A lesson in the URL becomes the current one; a bad one is named, the current one kept.
+    match Lesson::from_query(&ctx.query, is_page) {
+        Ok(Some(lesson)) => {
+            lesson_bar::store(&lesson);
+            *page.lesson.borrow_mut() = lesson;
+        }
+        Ok(None) => {}
+        Err(error) => page.show_error(&error)?,
+    }
+    page.wire()?;
+    page.render_steps()?;
+    Ok(Box::new(page))
+}
+
+const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>\
+<p class=\"lesson-intro\" data-i18n=\"lesson-intro\"></p>\
+<section class=\"lesson-card\" aria-labelledby=\"lesson-builtin-heading\">\
+<h2 id=\"lesson-builtin-heading\" data-i18n=\"lesson-builtin-heading\"></h2>\
+<div class=\"lesson-builtins\">\
+<button type=\"button\" class=\"tool-button\" data-builtin=\"ik\" data-i18n=\"lesson-builtin-ik-title\"></button>\
+<button type=\"button\" class=\"tool-button\" data-builtin=\"energy\" data-i18n=\"lesson-builtin-energy-title\"></button>\
+<button type=\"button\" class=\"tool-button\" data-builtin=\"planning\" data-i18n=\"lesson-builtin-planning-title\"></button>\
+</div></section>\
+<section class=\"lesson-card\" aria-labelledby=\"lesson-edit-heading\">\
+<h2 id=\"lesson-edit-heading\" data-i18n=\"lesson-edit-heading\"></h2>\
+<label class=\"lesson-field\"><span data-i18n=\"lesson-name-label\"></span>\
+<input type=\"text\" data-field=\"lesson-title\" maxlength=\"120\"></label>\
+<p class=\"lesson-empty\" data-testid=\"lesson-empty\" data-i18n=\"lesson-empty\"></p>\
+<ol class=\"lesson-steps\" data-testid=\"lesson-steps\"></ol>\
+<div class=\"lesson-actions\">\
+<button type=\"button\" class=\"tool-button lesson-present\" data-action=\"lesson-present\" data-i18n=\"lesson-present\"></button>\
+<button type=\"button\" class=\"tool-button\" data-download=\"lesson.json\" data-i18n=\"lesson-export\"></button>\
+<label class=\"tool-button lesson-import\"><span data-i18n=\"lesson-import\"></span>\
+<input type=\"file\" accept=\".json,application/json\" data-action=\"lesson-import\" class=\"visually-hidden\"></label>\
+<button type=\"button\" class=\"tool-button\" data-action=\"lesson-clear\" data-i18n=\"lesson-clear\"></button>\
+</div>\
+<p class=\"lesson-error\" role=\"alert\" data-field-error=\"lesson-file\" hidden></p>\
+<label class=\"lesson-field\"><span data-i18n=\"lesson-link-label\"></span>\
+<input type=\"text\" readonly data-readout=\"lesson-link\"></label>\
+</section></div>";
+
+impl LessonPage {
+    fn find<T: JsCast>(&self, selector: &str) -> Result<T, JsValue> {
+        dom::find(&self.root, selector, "lesson")
+    }
+
+    fn show_error(&self, error: &LessonError) -> Result<(), JsValue> {
+        let slot: Element = self.find("[data-field-error=\"lesson-file\"]")?;
+        let args: Vec<(&str, String)> = error.args();
+        slot.set_text_content(Some(&ctx::t_strings(error.message_id(), &args)));
+        dom::show(&slot, true);
+        Ok(())
+    }
+
+    fn clear_error(&self) -> Result<(), JsValue> {
+        let slot: Element = self.find("[data-field-error=\"lesson-file\"]")?;
+        dom::show(&slot, false);
+        Ok(())
+    }
+
+    /// The lesson changed: store it, write the URL and the link, redraw the list when asked.
+    fn changed(self: &Rc<Self>, redraw: bool) -> Result<(), JsValue> {
+        let lesson = self.lesson.borrow().clone();
+        lesson_bar::store(&lesson);
+        router::replace_query(&lesson.to_query());
+        if redraw {
+            self.render_steps()?;
+        } else {
+            self.write_link()?;
+        }
+        Ok(())
+    }
+
+    fn write_link(&self) -> Result<(), JsValue> {
+        let link: HtmlInputElement = self.find("[data-readout=\"lesson-link\"]")?;
+        let location = dom::window()?.location();
+        let base = format!("{}{}", location.origin()?, location.pathname()?);
+        let hash = crate::view::url::build_hash("lesson", &self.lesson.borrow().to_query());
+        link.set_value(&format!("{base}{hash}"));
+        Ok(())
+    }
+
+    fn wire(self: &Rc<Self>) -> Result<(), JsValue> {
+        let mut listeners = self.listeners.borrow_mut();
+        let title: HtmlInputElement = self.find("[data-field=\"lesson-title\"]")?;
+        title.set_value(&self.lesson.borrow().title);
+        let weak = Rc::downgrade(self);
+        listeners.push(Listener::new(&title.clone(), "input", move |_| {
+            if let Some(page) = weak.upgrade() {
+                page.lesson.borrow_mut().title = title.value();
+                let _ = page.changed(false);
+            }
+        })?);
+
+        let weak = Rc::downgrade(self);
+        listeners.push(Listener::new(&self.root, "click", move |event: Event| {
+            let Some(page) = weak.upgrade() else { return };
+            let target = event
+                .target()
+                .and_then(|t| t.dyn_into::<Element>().ok())
+                .and_then(|e| {
+                    e.closest("[data-builtin], [data-action], [data-download], [data-step-action]")
+                        .ok()
+                        .flatten()
+                });
+            let Some(target) = target else { return };
+            if let Err(error) = page.on_click(&target) {
+                web_sys::console::error_2(&"BSV Playground: lesson".into(), &error);
+            }
+        })?);
+
+        let import: HtmlInputElement = self.find("input[data-action=\"lesson-import\"]")?;
+        let weak = Rc::downgrade(self);
+        let input = import.clone();
+        listeners.push(Listener::new(&import, "change", move |_| {
+            let Some(page) = weak.upgrade() else { return };
+            if let Some(picked) = input_file::chosen(&input) {
+                let weak = Rc::downgrade(&page);
+                input_file::read_text(&picked.name, &picked.blob, move |result| {
+                    if let Some(page) = weak.upgrade() {
+                        let _ = page.imported(result.map_err(|p| match p {
+                            input_file::ReadProblem::Browser(reason) => reason,
+                            input_file::ReadProblem::Decode(error) => ctx::error_text(&error),
+                        }));
+                    }
+                });
+            }
+            input.set_value("");
+        })?);
+        Ok(())
+    }
+
+    fn imported(self: &Rc<Self>, text: Result<String, String>) -> Result<(), JsValue> {
+        let parsed = text
+            .map_err(|detail| LessonError::NotALesson { detail })
+            .and_then(|t| Lesson::from_json(&t, is_page));
+        match parsed {
+            Ok(lesson) => {
+                self.clear_error()?;
+                *self.lesson.borrow_mut() = lesson;
+                let title: HtmlInputElement = self.find("[data-field=\"lesson-title\"]")?;
+                title.set_value(&self.lesson.borrow().title);
+                self.changed(true)
+            }
+            Err(error) => self.show_error(&error),
+        }
+    }
+
+    fn on_click(self: &Rc<Self>, target: &Element) -> Result<(), JsValue> {
+        if let Some(key) = target.get_attribute("data-builtin") {
+            let replace = self.lesson.borrow().steps.is_empty()
+                || dom::window()?.confirm_with_message(&ctx::t("lesson-replace-confirm"))?;
+            if replace {
+                if let Some(lesson) = builtin::lesson(&key, is_page) {
+                    *self.lesson.borrow_mut() = lesson;
+                    let title: HtmlInputElement = self.find("[data-field=\"lesson-title\"]")?;
+                    title.set_value(&self.lesson.borrow().title);
+                    self.clear_error()?;
+                    self.changed(true)?;
+                }
+            }
+            return Ok(());
+        }
+        if target.get_attribute("data-download").as_deref() == Some("lesson.json") {
+            return download::download_text(
+                "lesson.json",
+                &self.lesson.borrow().to_json(),
+                "application/json",
+            );
+        }
+        match target.get_attribute("data-action").as_deref() {
+            Some("lesson-present") => {
+                let lesson = self.lesson.borrow().clone();
+                if !lesson.steps.is_empty() {
+                    lesson_bar::present(lesson, 0)?;
+                }
+                return Ok(());
+            }
+            Some("lesson-clear") => {
+                if dom::window()?.confirm_with_message(&ctx::t("lesson-clear-confirm"))? {
+                    self.lesson.borrow_mut().steps.clear();
+                    self.changed(true)?;
+                }
+                return Ok(());
+            }
+            _ => {}
+        }
+        if let Some(action) = target.get_attribute("data-step-action") {
+            let i: usize = target
+                .get_attribute("data-index")
+                .and_then(|i| i.parse().ok())
+                .unwrap_or(usize::MAX);
+            let len = self.lesson.borrow().steps.len();
+            if i >= len {
+                return Ok(());
+            }
+            match action.as_str() {
+                "up" if i > 0 => self.lesson.borrow_mut().move_step(i, i - 1),
+                "down" if i + 1 < len => self.lesson.borrow_mut().move_step(i, i + 1),
+                "delete" => {
+                    self.lesson.borrow_mut().steps.remove(i);
+                }
+                "present" => {
+                    let lesson = self.lesson.borrow().clone();
+                    return lesson_bar::present(lesson, i);
+                }
+                _ => return Ok(()),
+            }
+            self.changed(true)?;
+        }
+        Ok(())
+    }
+
+    /// The list of steps, each with its fields and buttons.
+    fn render_steps(self: &Rc<Self>) -> Result<(), JsValue> {
+        let list: Element = self.find("[data-testid=\"lesson-steps\"]")?;
+        dom::clear(&list);
+        let mut listeners = self.steps_listeners.borrow_mut();
+        listeners.clear();
+        let lesson = self.lesson.borrow().clone();
+        let empty: Element = self.find("[data-testid=\"lesson-empty\"]")?;
+        dom::show(&empty, lesson.steps.is_empty());
+        let present: Element = self.find("[data-action=\"lesson-present\"]")?;
+        if lesson.steps.is_empty() {
+            present.set_attribute("disabled", "")?;
+        } else {
+            present.remove_attribute("disabled")?;
+        }
+        for (i, step) in lesson.steps.iter().enumerate() {
+            let item = dom::el_class("li", "lesson-step")?;
+            item.set_attribute("data-testid", &format!("lesson-step-{}", i + 1))?;
+            let head = dom::el_class("div", "lesson-step-head")?;
+            let link = dom::el_text("a", "lesson-step-route", &step.route)?;
+            link.set_attribute("href", &step.route)?;
+            dom::append(&head, &link)?;
+            for (action, label) in [
+                ("up", "lesson-step-up"),
+                ("down", "lesson-step-down"),
+                ("present", "lesson-step-present"),
+                ("delete", "lesson-step-delete"),
+            ] {
+                let b = dom::el_i18n("button", "tool-button lesson-step-button", label)?;
+                b.set_attribute("type", "button")?;
+                b.set_attribute("data-step-action", action)?;
+                b.set_attribute("data-index", &i.to_string())?;
+                // The label names the step: "Move step 2 up".
+                b.set_attribute(
+                    "aria-label",
+                    &ctx::t_strings(&format!("{label}-label"), &[("n", (i + 1).to_string())]),
+                )?;
+                dom::append(&head, &b)?;
+            }
+            dom::append(&item, &head)?;
+
+            let title = field(&item, "lesson-step-title-label", "step-title", "input", i)?;
+            let title: HtmlInputElement = title.dyn_into()?;
+            title.set_value(&step.title);
+            title.set_attribute("maxlength", "120")?;
+            let note = field(&item, "lesson-step-note-label", "step-note", "textarea", i)?;
+            let note: HtmlTextAreaElement = note.dyn_into()?;
+            note.set_value(&step.note);
+            note.set_attribute("maxlength", "1000")?;
+            let steps = field(
+                &item,
+                "lesson-step-page-steps-label",
+                "step-page-steps",
+                "input",
+                i,
+            )?;
+            let steps: HtmlInputElement = steps.dyn_into()?;
+            steps.set_attribute("inputmode", "numeric")?;
+            steps.set_value(&step.page_steps.to_string());
+            let error = dom::el_class("p", "lesson-step-error")?;
+            error.set_attribute("data-field-error", &format!("step-page-steps-{}", i + 1))?;
+            dom::show(&error, false);
+            dom::append(&item, &error)?;
+
+            let weak = Rc::downgrade(self);
+            let input = title.clone();
+            listeners.push(Listener::new(&title, "input", move |_| {
+                if let Some(page) = weak.upgrade() {
+                    if let Some(s) = page.lesson.borrow_mut().steps.get_mut(i) {
+                        s.title = input.value();
+                    }
+                    let _ = page.changed(false);
+                }
+            })?);
+            let weak = Rc::downgrade(self);
+            let input = note.clone();
+            listeners.push(Listener::new(&note, "input", move |_| {
+                if let Some(page) = weak.upgrade() {
+                    if let Some(s) = page.lesson.borrow_mut().steps.get_mut(i) {
+                        s.note = input.value();
+                    }
+                    let _ = page.changed(false);
+                }
+            })?);
+            let weak = Rc::downgrade(self);
+            let input = steps.clone();
+            listeners.push(Listener::new(&steps, "input", move |_| {
+                let Some(page) = weak.upgrade() else { return };
+                match input.value().trim().parse::<u32>() {
+                    Ok(k) if k <= MAX_PAGE_STEPS => {
+                        dom::show(&error, false);
+                        if let Some(s) = page.lesson.borrow_mut().steps.get_mut(i) {
+                            s.page_steps = k;
+                        }
+                        let _ = page.changed(false);
+                    }
+                    _ => {
+                        error.set_text_content(Some(&ctx::t_strings(
+                            "lesson-page-steps-invalid",
+                            &[("max", MAX_PAGE_STEPS.to_string())],
+                        )));
+                        dom::show(&error, true);
+                    }
+                }
+            })?);
+            dom::append(&list, &item)?;
+        }
+        drop(listeners);
+        self.write_link()
+    }
+}
+
+/// A labelled field `name`-`n` of step `n` (`tag`: input or textarea), appended to `item`.
+fn field(
+    item: &Element,
+    label_id: &str,
+    name: &str,
+    tag: &str,
+    i: usize,
+) -> Result<Element, JsValue> {
+    let label = dom::el_class("label", "lesson-field")?;
+    dom::append(&label, &dom::el_i18n("span", "", label_id)?)?;
+    let control = dom::el(tag)?;
+    control.set_attribute("data-field", &format!("{name}-{}", i + 1))?;
+    dom::append(&label, &control)?;
+    dom::append(item, &label)?;
+    Ok(control)
+}

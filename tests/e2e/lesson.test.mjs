@@ -1,0 +1,123 @@
+// Lessons: built from three pages with "+ Lesson", edited, exported, imported (a bad file is
+// named and the lesson kept), and presented with PageDown: each step shows the state of its
+// permalink (same readouts), and a step that asks for it first steps the page's stepper.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { OUT, closeBrowser, openApp, startServer } from './harness.mjs';
+
+let server;
+before(async () => {
+  server = await startServer();
+});
+after(async () => {
+  await closeBrowser();
+  await server?.close();
+});
+
+const ROUTES = ['#/pid-step?Kp=2&Ki=0.1', '#/rrt-2d?seed=11', '#/ik-2r?q1=0.3&q2=1.1'];
+
+/** `data-readout` → shown text, for the page as it stands. */
+const readouts = (page) => page.evaluate(() => Object.fromEntries([...document.querySelectorAll('#app-main [data-readout]')]
+  .filter((e) => !e.closest('.lesson'))
+  .map((e) => [e.dataset.readout, e.dataset.value ?? e.textContent.trim()])));
+
+async function goto(page, hash) {
+  await page.goto(`${server.url}/${hash}`);
+  await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+  await page.waitForTimeout(400);
+}
+
+test('a lesson built from three pages is exported, imported and presented with PageDown', async () => {
+  const { page, context, errors, close } = await openApp(server.url, '#/');
+  try {
+    page.on('dialog', (d) => d.accept());
+    // What each permalink shows on its own.
+    const expected = [];
+    for (const route of ROUTES) {
+      await goto(page, route);
+      expected.push(await readouts(page));
+      await page.click('[data-testid="lesson-add"]');
+    }
+    assert.match(await page.locator('[data-testid="lesson-add-status"]').textContent(), /step 3/);
+
+    await goto(page, '#/lesson');
+    assert.equal(await page.locator('.lesson-step').count(), 3);
+    // Each step is the page's own permalink (pages add their defaults, e.g. the RRT's `it`).
+    const shown = await page.locator('.lesson-step-route').allInnerTexts();
+    ROUTES.forEach((route, i) => {
+      const [path, query] = route.split('?');
+      assert.ok(shown[i].startsWith(`${path}?`), shown[i]);
+      for (const pair of query.split('&')) assert.ok(shown[i].split('?')[1].split('&').includes(pair), `${shown[i]} has ${pair}`);
+    });
+    // The RRT step steps the tree three times before the lesson moves on.
+    await page.fill('[data-field="step-page-steps-2"]', '3');
+    await page.fill('[data-field="step-note-2"]', 'Three iterations, then the IK page.');
+    await page.fill('[data-field="step-page-steps-3"]', 'lots');
+    assert.match(await page.locator('[data-field-error="step-page-steps-3"]').innerText(), /whole number from 0 to 1000/);
+    await page.fill('[data-field="step-page-steps-3"]', '0');
+    // The page's URL is the lesson.
+    assert.match(decodeURIComponent(page.url()), /#\/lesson\?title=.*&r1=#\/pid-step\?Kp=2&Ki=0\.1&t1=/);
+
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('[data-download="lesson.json"]')]);
+    const file = join(OUT, 'lesson.json');
+    await download.saveAs(file);
+    const json = JSON.parse(readFileSync(file, 'utf8'));
+    assert.equal(json.format, 'bsv-lesson');
+    assert.equal(json.steps[1].pageSteps, 3);
+
+    await page.click('[data-action="lesson-clear"]');
+    assert.equal(await page.locator('.lesson-step').count(), 0);
+    // A bad file is named and changes nothing; the exported one brings the lesson back.
+    const bad = join(OUT, 'lesson-bad.json');
+    writeFileSync(bad, JSON.stringify({ ...json, format: 'slides' }));
+    await page.setInputFiles('input[data-action="lesson-import"]', bad);
+    await page.locator('[data-field-error="lesson-file"]:not([hidden])').waitFor();
+    assert.match(await page.locator('[data-field-error="lesson-file"]').innerText(), /not a BSV lesson \(format “slides”/);
+    assert.equal(await page.locator('.lesson-step').count(), 0);
+    await page.setInputFiles('input[data-action="lesson-import"]', file);
+    await page.waitForFunction(() => document.querySelectorAll('.lesson-step').length === 3);
+    await page.screenshot({ path: join(OUT, 'lesson-editor-en.png'), fullPage: false });
+
+    // Present: every step shows what its permalink shows.
+    await page.click('[data-action="lesson-present"]');
+    const bar = page.locator('[data-testid="lesson-bar"]');
+    await bar.waitFor({ state: 'visible' });
+    await page.waitForFunction(() => location.hash.startsWith('#/pid-step'));
+    await page.waitForTimeout(400);
+    assert.deepEqual(await readouts(page), expected[0]);
+    assert.match(await bar.innerText(), /1 \/ 3/);
+    await page.screenshot({ path: join(OUT, 'lesson-present-en.png') });
+
+    await page.keyboard.press('PageDown');
+    await page.waitForFunction(() => location.hash.startsWith('#/rrt-2d'));
+    await page.waitForTimeout(400);
+    assert.deepEqual(await readouts(page), expected[1]);
+    assert.match(await page.locator('[data-testid="lesson-note"]').innerText(), /Three iterations/);
+    for (let k = 1; k <= 3; k += 1) {
+      await page.keyboard.press('PageDown');
+      await page.waitForFunction((n) => document.querySelector('[data-readout="iteration"]')?.textContent.trim() === String(n), k);
+    }
+    assert.ok(page.url().includes('#/rrt-2d'), 'still on the RRT page after its three page steps');
+    await page.keyboard.press('PageDown');
+    await page.waitForFunction(() => location.hash.startsWith('#/ik-2r'));
+    await page.waitForTimeout(400);
+    assert.deepEqual(await readouts(page), expected[2]);
+    // Back goes to the previous step from its start.
+    await page.keyboard.press('PageUp');
+    await page.waitForFunction(() => location.hash.startsWith('#/rrt-2d'));
+    await page.waitForFunction(() => document.querySelector('[data-readout="iteration"]')?.textContent.trim() === '0');
+    // Japanese presenter bar.
+    await page.click('[data-testid="lang-switch"]');
+    await page.waitForFunction(() => document.documentElement.lang === 'ja');
+    await page.waitForTimeout(300);
+    await page.screenshot({ path: join(OUT, 'lesson-present-ja.png') });
+    await page.keyboard.press('Escape');
+    await bar.waitFor({ state: 'hidden' });
+    assert.deepEqual(errors, []);
+    void context;
+  } finally {
+    await close();
+  }
+});
