@@ -118,7 +118,14 @@ mod tests {
             let t = f64::from(k) * 2.5e-5;
             assert_eq!(pow(t, 2.0).to_bits(), (t * t).to_bits(), "t = {t}");
         }
-        for x in [0.0, -0.0, 5e-324, 1e154, 1.3407807929942596e154, f64::INFINITY] {
+        for x in [
+            0.0,
+            -0.0,
+            5e-324,
+            1e154,
+            1.3407807929942596e154,
+            f64::INFINITY,
+        ] {
             assert_eq!(pow(x, 2.0).to_bits(), (x * x).to_bits(), "x = {x:e}");
         }
     }

@@ -283,18 +283,11 @@ impl Iterator for Samples {
     type Item = TrapSample;
 
     fn next(&mut self) -> Option<TrapSample> {
-        let Plan {
-            amax,
-            vmax_used: vmax,
-            t_acc,
-            d_acc,
-            t_flat,
-            t_total,
-            ..
-        } = self.plan;
+        let p = self.plan;
+        let (amax, vmax, t_acc, d_acc, t_flat) = (p.amax, p.vmax_used, p.t_acc, p.d_acc, p.t_flat);
         let t = self.t;
         // `while t <= t_total + 1e-12` (a NaN stops it, as in Python).
-        let within = t <= t_total + 1e-12;
+        let within = t <= p.t_total + 1e-12;
         if !within {
             return None;
         }
