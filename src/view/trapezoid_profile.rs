@@ -59,9 +59,18 @@ pub fn phases(p: &TrapParams) -> Phases {
 /// prints `round(t, 5)` through a decimal formatting on every row, which costs more than the
 /// loop). At most [`MAX_ROWS`]; none for invalid `p`.
 pub fn samples(p: &TrapParams) -> Vec<TrapSample> {
-    trapezoid_profile::samples(p)
-        .map(|rows| rows.take(MAX_ROWS as usize).collect())
-        .unwrap_or_default()
+    let mut rows = Vec::new();
+    samples_into(p, &mut rows);
+    rows
+}
+
+/// [`samples`] into `rows` (emptied first): a live page reuses one buffer, so a drag at
+/// hundreds of thousands of rows does not grow a new one on every frame.
+pub fn samples_into(p: &TrapParams, rows: &mut Vec<TrapSample>) {
+    rows.clear();
+    if let Ok(kernel) = trapezoid_profile::samples(p) {
+        rows.extend(kernel.take(MAX_ROWS as usize));
+    }
 }
 
 /// The three phases as time bands `(start, end)`: accelerate, cruise (empty for a triangle),

@@ -22,7 +22,7 @@ use crate::ui::kit::signal_page::{Shell, Signal, SignalPage, SignalSpec};
 use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
-use crate::view::trapezoid_profile::{phases, samples, Phases};
+use crate::view::trapezoid_profile::{phases, samples, samples_into, Phases};
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef =
@@ -169,7 +169,7 @@ impl SignalPage for TrapPage {
         {
             let mut profile = self.profile.borrow_mut();
             profile.0 = params;
-            profile.1 = samples(&params);
+            samples_into(&params, &mut profile.1);
         }
         let dragging = self.plots.borrow().dragging();
         self.redraw(!dragging, false);
