@@ -243,6 +243,7 @@ test('every joint is plotted: nine joints, nine panels, the stage grows', async 
     });
     assert.ok(blue > 50, `${blue} blue pixels in the last panel`);
     assert.equal(await canvas.count(), 1);
+    await page.locator('.traj-stage').screenshot({ path: join(OUT, 'traj-nine-joints-plot.png'), caret: 'initial' });
     assert.deepEqual(errors, []);
   } finally {
     await close();
