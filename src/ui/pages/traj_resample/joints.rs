@@ -29,14 +29,19 @@ fn thin_dots(points: &[(f64, f64)], x_range: (f64, f64)) -> Vec<(f64, f64)> {
     decimate(points, &LinearScale::new(x_range, (0.0, DOT_BUCKETS)))
 }
 
+/// Up to this many joints the stage keeps its height (the CSS's); each one more adds a panel's
+/// height.
+const GROW_FROM: usize = 6;
+
 /// A series' points, `(t, q)`.
 type Points = Vec<(f64, f64)>;
 
 /// The plot component.
 pub struct Joints {
     pub plot: Plot,
-    /// The stage (its height follows the number of panels).
+    /// The stage (its height follows the number of panels) and the panels set last.
     stage: Element,
+    panels: usize,
     /// Per panel: the resampled line and the sample dots, until [`Joints::fill`].
     pending: Vec<(Points, Points)>,
 }
@@ -49,6 +54,7 @@ impl Joints {
         Ok(Joints {
             plot,
             stage: stage.clone(),
+            panels: 0,
             pending: Vec::new(),
         })
     }
@@ -57,17 +63,7 @@ impl Joints {
     /// language, the data emptied; their series wait for [`Joints::fill`].
     pub fn set(&mut self, input: &Envelope, output: &Envelope) {
         let shown = joint_columns(&output.header);
-        let panels = shown.len().max(1).to_string();
-        if let Some(stage) = self.stage.dyn_ref::<HtmlElement>() {
-            let _ = stage.style().set_property("--traj-panels", &panels);
-        }
-        // How many panels, for tests and assistive tools.
-        let _ = self
-            .plot
-            .canvas
-            .top()
-            .canvas
-            .set_attribute("data-panels", &panels);
+        self.set_panels(shown.len());
         // 2 % either side, so the first and last samples are not cut by the frame.
         let x_range = match input.x_span.or(output.x_span) {
             Some((a, b)) if b > a => (a - 0.02 * (b - a), b + 0.02 * (b - a)),
@@ -130,6 +126,26 @@ impl Joints {
             .collect();
         // No refit here: reading the layout right after the page's texts changed forced a
         // full layout (130 ms after a big result); the stage's resize observer refits.
+    }
+
+    /// `n` panels: past [`GROW_FROM`] the stage grows (`--traj-panels`, read by the CSS);
+    /// written only when the count changes (a style change costs a layout of the page).
+    fn set_panels(&mut self, n: usize) {
+        if n == self.panels {
+            return;
+        }
+        self.panels = n;
+        if let Some(stage) = self.stage.dyn_ref::<HtmlElement>() {
+            let style = stage.style();
+            let _ = if n > GROW_FROM {
+                style.set_property("--traj-panels", &n.to_string())
+            } else {
+                style.remove_property("--traj-panels").map(|_| ())
+            };
+        }
+        // How many panels, for tests and assistive tools.
+        let top = &self.plot.canvas.top().canvas;
+        let _ = top.set_attribute("data-panels", &n.to_string());
     }
 
     /// Hands the series kept by [`Joints::set`] to the plot (drawn by the next
