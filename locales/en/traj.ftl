@@ -27,6 +27,7 @@ traj-input-sample = Using the recipe's labeled sample ({ $name }).
 traj-input-file = Using your file “{ $name }”.
 traj-input-missing = The link used the file “{ $name }”: open it again.
 traj-file-unreadable = “{ $name }” could not be read ({ $reason }).
+traj-file-too-large = “{ $name }” is { $size } MiB: over the { $limit } MiB a trajectory may have here (bsv has the same limit). Split the file or resample a part of it.
 traj-reading = Reading the file…
 traj-running = Resampling in the background; the page stays usable.
 traj-failed = The recipe refused this input; the message beside the field says why. The last result stays.

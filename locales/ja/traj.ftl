@@ -27,6 +27,7 @@ traj-input-sample = レシピのラベル付きサンプル（{ $name }）を使
 traj-input-file = ファイル「{ $name }」を使っています。
 traj-input-missing = このリンクではファイル「{ $name }」が使われていました。もう一度開いてください。
 traj-file-unreadable = 「{ $name }」を読み込めませんでした（{ $reason }）。
+traj-file-too-large = 「{ $name }」は { $size } MiB で、ここで扱える軌道の上限 { $limit } MiB（bsv と同じ）を超えています。ファイルを分けるか、一部だけをリサンプリングしてください。
 traj-reading = ファイルを読み込んでいます…
 traj-running = バックグラウンドでリサンプリングしています。その間もページは使えます。
 traj-failed = レシピがこの入力を受け付けませんでした。理由は欄の横のメッセージを見てください。前回の結果はそのまま残っています。

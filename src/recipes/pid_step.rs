@@ -141,32 +141,93 @@ pub fn simulate_with(
     params: &PidParams,
     progress: &mut Progress,
 ) -> Result<Vec<PidSample>, RecipeError> {
-    params.validate()?;
-    let (kp, ki, kd) = (params.kp, params.ki, params.kd);
-    let dt = DT_S;
-    let r = SETPOINT;
-    let (mut y, mut integ, mut prev_e) = (0.0f64, 0.0f64, 0.0f64);
-    let a = dt / (params.tau + dt);
-    let steps = usize::try_from(params.steps).unwrap_or(0);
-    let mut rows = Vec::with_capacity(steps);
-    for k in 0..steps {
-        let e = r - y;
-        integ += e * dt;
-        let deriv = (e - prev_e) / dt;
-        let u = kp * e + ki * integ + kd * deriv;
-        y = y + a * (u - y);
-        prev_e = e;
-        progress.phase_at(0, 2, k as u64, steps as u64);
+    let steps = response(params)?;
+    let n = steps.len();
+    let mut rows = Vec::with_capacity(n);
+    for (k, s) in steps.enumerate() {
+        progress.phase_at(0, 2, k as u64, n as u64);
         rows.push(PidSample {
-            t: py_round(k as f64 * dt, 4),
-            r,
-            y,
-            u,
-            e,
+            t: py_round(s.t, 4),
+            ..s
         });
     }
     Ok(rows)
 }
+
+/// The rows of the loop in order, operation for operation as the recipe, with the time
+/// `t = k·dt` left unrounded: the CSV prints `round(k dt, 4)` ([`simulate`] rounds), a live
+/// plot needs no decimal rounding of every row. The one loop of the recipe.
+///
+/// # Example
+/// ```
+/// use bsv_playground::recipes::pid_step::{response, PidParams};
+/// let rows: Vec<_> = response(&PidParams::default()).unwrap().collect();
+/// assert_eq!(rows.len(), 80);
+/// assert_eq!((rows[0].u, rows[7].t), (2.2199999999999998, 7.0 * 0.05));
+/// ```
+pub fn response(params: &PidParams) -> Result<Response, RecipeError> {
+    params.validate()?;
+    Ok(Response {
+        kp: params.kp,
+        ki: params.ki,
+        kd: params.kd,
+        a: DT_S / (params.tau + DT_S),
+        y: 0.0,
+        integ: 0.0,
+        prev_e: 0.0,
+        k: 0,
+        steps: usize::try_from(params.steps).unwrap_or(0),
+    })
+}
+
+/// The iterator of [`response`]: the loop's state between two steps.
+#[derive(Debug, Clone)]
+pub struct Response {
+    kp: f64,
+    ki: f64,
+    kd: f64,
+    /// `dt / (tau + dt)`.
+    a: f64,
+    y: f64,
+    integ: f64,
+    prev_e: f64,
+    /// The next step, and how many there are.
+    k: usize,
+    steps: usize,
+}
+
+impl Iterator for Response {
+    type Item = PidSample;
+
+    fn next(&mut self) -> Option<PidSample> {
+        if self.k >= self.steps {
+            return None;
+        }
+        let (dt, r) = (DT_S, SETPOINT);
+        let e = r - self.y;
+        self.integ += e * dt;
+        let deriv = (e - self.prev_e) / dt;
+        let u = self.kp * e + self.ki * self.integ + self.kd * deriv;
+        self.y = self.y + self.a * (u - self.y);
+        self.prev_e = e;
+        let t = self.k as f64 * dt;
+        self.k += 1;
+        Some(PidSample {
+            t,
+            r,
+            y: self.y,
+            u,
+            e,
+        })
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        let left = self.steps - self.k;
+        (left, Some(left))
+    }
+}
+
+impl ExactSizeIterator for Response {}
 
 /// `pid_step.csv` exactly as the recipe writes it.
 pub fn to_csv(samples: &[PidSample]) -> String {

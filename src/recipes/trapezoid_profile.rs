@@ -223,29 +223,82 @@ pub fn compute(params: &TrapParams) -> Result<Profile, RecipeError> {
 
 /// [`compute`] reporting its rows as the first half of `progress` (of the estimated rows).
 pub fn compute_with(params: &TrapParams, progress: &mut Progress) -> Result<Profile, RecipeError> {
-    let plan = params.plan()?;
-    let estimate = params.rows_estimate();
+    let rows = samples(params)?;
     let Plan {
         triangle,
-        amax,
-        vmax_used: vmax,
-        t_acc,
-        d_acc,
-        t_flat,
+        vmax_used,
         t_total,
-    } = plan;
-    let dt = params.dt;
+        ..
+    } = rows.plan;
+    let estimate = params.rows_estimate();
     let mut samples = Vec::new();
-    let mut t = 0.0f64;
-    while t <= t_total + 1e-12 {
+    for sample in rows {
         if samples.len() as u64 >= MAX_ROWS {
             return Err(too_many_rows(MAX_ROWS as f64 + 1.0));
         }
+        progress.phase_at(0, 2, samples.len() as u64, estimate);
+        samples.push(TrapSample {
+            t: py_round(sample.t, 5),
+            ..sample
+        });
+    }
+    Ok(Profile {
+        t_total,
+        vmax_used,
+        triangle,
+        samples,
+    })
+}
+
+/// The samples of the profile in order, operation for operation as the recipe, with the
+/// accumulated time `t` left unrounded: the CSV prints `round(t, 5)` ([`compute`] rounds),
+/// a live plot needs no decimal rounding of every row. The one loop of the recipe.
+///
+/// # Example
+/// ```
+/// use bsv_playground::recipes::trapezoid_profile::{samples, TrapParams};
+/// let rows: Vec<_> = samples(&TrapParams::default()).unwrap().collect();
+/// assert_eq!(rows.len(), 251);
+/// assert_eq!(rows[1].s, 5e-05);
+/// assert!(rows[250].v.abs() < 1e-9, "at rest at the end");
+/// ```
+pub fn samples(params: &TrapParams) -> Result<Samples, RecipeError> {
+    Ok(Samples {
+        plan: params.plan()?,
+        dt: params.dt,
+        t: 0.0,
+    })
+}
+
+/// The iterator of [`samples`]: `t` advances by repeated `+= dt` while `t <= t_total + 1e-12`.
+/// It does not stop at [`MAX_ROWS`] (valid parameters stay within it, but for the rounding
+/// of the accumulated time: [`compute`] refuses one row more).
+#[derive(Debug, Clone)]
+pub struct Samples {
+    plan: Plan,
+    dt: f64,
+    t: f64,
+}
+
+impl Iterator for Samples {
+    type Item = TrapSample;
+
+    fn next(&mut self) -> Option<TrapSample> {
+        let p = self.plan;
+        let (amax, vmax, t_acc, d_acc, t_flat) = (p.amax, p.vmax_used, p.t_acc, p.d_acc, p.t_flat);
+        let t = self.t;
+        // `while t <= t_total + 1e-12` (a NaN stops it, as in Python).
+        let within = t <= p.t_total + 1e-12;
+        if !within {
+            return None;
+        }
+        // `t ** 2` as one product: the same double as the correctly rounded `pow(t, 2.0)`
+        // (`math::tests::pow_two_is_the_correctly_rounded_square`), at a fraction of its cost.
         let (s, v, a);
         if t < t_acc {
             a = amax;
             v = amax * t;
-            s = 0.5 * amax * crate::math::pow(t, 2.0);
+            s = 0.5 * amax * (t * t);
         } else if t < t_acc + t_flat {
             a = 0.0;
             v = vmax;
@@ -254,23 +307,11 @@ pub fn compute_with(params: &TrapParams, progress: &mut Progress) -> Result<Prof
             let tau = t - (t_acc + t_flat);
             a = -amax;
             v = vmax - amax * tau;
-            s = d_acc + vmax * t_flat + vmax * tau - 0.5 * amax * crate::math::pow(tau, 2.0);
+            s = d_acc + vmax * t_flat + vmax * tau - 0.5 * amax * (tau * tau);
         }
-        progress.phase_at(0, 2, samples.len() as u64, estimate);
-        samples.push(TrapSample {
-            t: py_round(t, 5),
-            s,
-            v,
-            a,
-        });
-        t += dt;
+        self.t += self.dt;
+        Some(TrapSample { t, s, v, a })
     }
-    Ok(Profile {
-        t_total,
-        vmax_used: vmax,
-        triangle,
-        samples,
-    })
 }
 
 impl Profile {

@@ -12,38 +12,20 @@
 //! Times are the CSV's `t` column (row k: `t = round(k·0.05, 4)` s, y after that step). A
 //! response that is not finite has no figures but the peak u where one exists.
 //!
-//! [`response`] is the kernel's loop, operation for operation (so r, y, u and e are the CSV's
-//! to the last bit), with `t = k·dt` left unrounded: the kernel rounds every row's time through
-//! a decimal formatting (Python's `round`), which costs more than the loop itself; the figures
+//! [`response`] is the kernel's loop ([`pid_step::response`]: r, y, u and e are the CSV's to
+//! the last bit), with `t = k·dt` left unrounded: the CSV rounds every row's time through a
+//! decimal formatting (Python's `round`), which costs more than the loop itself; the figures
 //! round only the few times they report.
 
 use crate::pyfmt::py_round;
-use crate::recipes::pid_step::{PidParams, PidSample, DT_S, SETPOINT};
+use crate::recipes::pid_step::{self, PidParams, PidSample};
 
-/// The kernel's response of valid `p`, with unrounded times `k·dt`.
+/// The kernel's response of valid `p` ([`pid_step::response`]), with unrounded times `k·dt`;
+/// none for invalid `p`.
 pub fn response(p: &PidParams) -> Vec<PidSample> {
-    let (kp, ki, kd) = (p.kp, p.ki, p.kd);
-    let (dt, r) = (DT_S, SETPOINT);
-    let (mut y, mut integ, mut prev_e) = (0.0f64, 0.0f64, 0.0f64);
-    let a = dt / (p.tau + dt);
-    let steps = usize::try_from(p.steps).unwrap_or(0);
-    let mut rows = Vec::with_capacity(steps);
-    for k in 0..steps {
-        let e = r - y;
-        integ += e * dt;
-        let deriv = (e - prev_e) / dt;
-        let u = kp * e + ki * integ + kd * deriv;
-        y = y + a * (u - y);
-        prev_e = e;
-        rows.push(PidSample {
-            t: k as f64 * dt,
-            r,
-            y,
-            u,
-            e,
-        });
-    }
-    rows
+    pid_step::response(p)
+        .map(Iterator::collect)
+        .unwrap_or_default()
 }
 
 /// A row's time as the CSV writes it (`round(t, 4)`; unchanged for the kernel's rows).

@@ -320,6 +320,23 @@ pub fn key_command(key: &str, ctrl_alt_meta: bool) -> Option<Command> {
     })
 }
 
+/// The position line under the stepper: its Fluent id and arguments, the numbers grouped by
+/// thousands (`Step 1,204 of 228,608`; Japanese groups them alike, `228,608 ステップ中 1,204`).
+/// Fluent's own number formatting would print `228608`.
+pub fn position_message(
+    index: u64,
+    end: Option<u64>,
+) -> (&'static str, Vec<(&'static str, String)>) {
+    let index = ("index", crate::pyfmt::group_u64(index));
+    match end {
+        Some(end) => (
+            "kit-stepper-position",
+            vec![index, ("len", crate::pyfmt::group_u64(end))],
+        ),
+        None => ("kit-stepper-position-open", vec![index]),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -534,5 +551,24 @@ mod tests {
         assert_eq!(key_command("r", false), Some(Command::Reset));
         assert_eq!(key_command("ArrowRight", true), None);
         assert_eq!(key_command("x", false), None);
+    }
+
+    #[test]
+    fn the_position_groups_its_digits_in_both_languages() {
+        use crate::i18n::{FluentArg, I18n, Lang};
+        let i18n = I18n::new();
+        let say = |lang, index, end| {
+            let (id, args) = position_message(index, end);
+            let args: Vec<(&str, FluentArg)> =
+                args.into_iter().map(|(k, v)| (k, v.into())).collect();
+            i18n.t_args(lang, id, &args)
+        };
+        assert_eq!(say(Lang::En, 0, Some(228_608)), "Step 0 of 228,608");
+        assert_eq!(
+            say(Lang::Ja, 1_204, Some(228_608)),
+            "228,608 ステップ中 1,204"
+        );
+        assert_eq!(say(Lang::En, 999, Some(1_000)), "Step 999 of 1,000");
+        assert_eq!(say(Lang::Ja, 12_345_678, None), "ステップ 12,345,678");
     }
 }

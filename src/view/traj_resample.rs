@@ -4,7 +4,7 @@
 //! computed from the plot envelopes of the input and the output ([`crate::view::envelope`]).
 
 use crate::pyfmt::{group_u64, human};
-use crate::recipes::traj_resample::{NOTE_COLUMN, TIME_COLUMN};
+use crate::recipes::traj_resample::{MAX_INPUT_BYTES, NOTE_COLUMN, TIME_COLUMN};
 use crate::view::envelope::Envelope;
 use crate::view::url::{IgnoredKey, UrlState};
 
@@ -114,6 +114,31 @@ pub fn readings(input: &Envelope, output: &Envelope) -> Readings {
     }
 }
 
+/// Bytes in a MiB.
+const MIB: f64 = 1024.0 * 1024.0;
+
+/// The page's refusal of a file over the recipe's limit (the CLI's, [`MAX_INPUT_BYTES`]),
+/// before reading any of it: the Fluent id and arguments of the message beside the file
+/// picker, sizes in MiB (the file's rounded up to a tenth, so it never reads as the limit).
+/// `None` when the file is within the limit.
+pub fn file_too_large(
+    name: &str,
+    bytes: u64,
+) -> Option<(&'static str, Vec<(&'static str, String)>)> {
+    if bytes <= MAX_INPUT_BYTES {
+        return None;
+    }
+    let size = (bytes as f64 / MIB * 10.0).ceil() / 10.0;
+    Some((
+        "traj-file-too-large",
+        vec![
+            ("name", name.to_string()),
+            ("size", format!("{size:.1}")),
+            ("limit", human(MAX_INPUT_BYTES as f64 / MIB)),
+        ],
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -161,5 +186,34 @@ mod tests {
             joint_columns(&input.header),
             vec!["q1".to_string(), "q2".to_string()]
         );
+    }
+
+    #[test]
+    fn a_file_over_128_mib_is_refused_in_mib() {
+        assert_eq!(MAX_INPUT_BYTES, 128 * 1024 * 1024);
+        assert_eq!(file_too_large("a.csv", MAX_INPUT_BYTES), None);
+        let (id, args) = file_too_large("big.csv", MAX_INPUT_BYTES + 1).unwrap();
+        assert_eq!(id, "traj-file-too-large");
+        let value = |k: &str| args.iter().find(|(n, _)| *n == k).unwrap().1.clone();
+        assert_eq!(value("name"), "big.csv");
+        assert_eq!(
+            value("size"),
+            "128.1",
+            "rounded up: never reads as the limit"
+        );
+        assert_eq!(value("limit"), "128");
+        let (_, args) = file_too_large("huge.csv", 200 * 1024 * 1024).unwrap();
+        assert_eq!(args[1].1, "200.0");
+        // Both languages have the message, with every argument.
+        let i18n = crate::i18n::I18n::new();
+        for lang in [crate::i18n::Lang::En, crate::i18n::Lang::Ja] {
+            let args: Vec<(&str, crate::i18n::FluentArg)> =
+                args.iter().map(|(k, v)| (*k, v.clone().into())).collect();
+            let text = i18n.t_args(lang, id, &args);
+            assert!(
+                text.contains("huge.csv") && text.contains("200.0") && text.contains("128"),
+                "{text}"
+            );
+        }
     }
 }

@@ -9,7 +9,7 @@
 //! ```
 //! (the kernel's own operations, so `t_total` is the kernel's to the last bit).
 
-use crate::recipes::trapezoid_profile::{TrapParams, TrapSample, MAX_ROWS};
+use crate::recipes::trapezoid_profile::{self, TrapParams, TrapSample, MAX_ROWS};
 
 /// The phases of one profile, s; the velocity reached.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -54,34 +54,23 @@ pub fn phases(p: &TrapParams) -> Phases {
     }
 }
 
-/// The kernel's samples of valid `p`, operation for operation (s, v, a are the CSV's to the
-/// last bit; the row count too), with the accumulated time left unrounded: the kernel prints
-/// `round(t, 5)` through a decimal formatting on every row, which costs more than the loop.
+/// The kernel's samples of valid `p` ([`trapezoid_profile::samples`]: s, v, a and the row
+/// count are the CSV's to the last bit), with the accumulated time left unrounded (the kernel
+/// prints `round(t, 5)` through a decimal formatting on every row, which costs more than the
+/// loop). At most [`MAX_ROWS`]; none for invalid `p`.
 pub fn samples(p: &TrapParams) -> Vec<TrapSample> {
-    let ph = phases(p);
-    let (amax, vmax, t_acc, t_flat, d_acc) = (ph.amax, ph.v_peak, ph.t_acc, ph.t_flat, ph.d_acc);
-    let mut out = Vec::new();
-    let mut t = 0.0f64;
-    while t <= ph.t_total + 1e-12 && (out.len() as u64) < MAX_ROWS {
-        let (s, v, a);
-        if t < t_acc {
-            a = amax;
-            v = amax * t;
-            s = 0.5 * amax * crate::math::pow(t, 2.0);
-        } else if t < t_acc + t_flat {
-            a = 0.0;
-            v = vmax;
-            s = d_acc + vmax * (t - t_acc);
-        } else {
-            let tau = t - (t_acc + t_flat);
-            a = -amax;
-            v = vmax - amax * tau;
-            s = d_acc + vmax * t_flat + vmax * tau - 0.5 * amax * crate::math::pow(tau, 2.0);
-        }
-        out.push(TrapSample { t, s, v, a });
-        t += p.dt;
+    let mut rows = Vec::new();
+    samples_into(p, &mut rows);
+    rows
+}
+
+/// [`samples`] into `rows` (emptied first): a live page reuses one buffer, so a drag at
+/// hundreds of thousands of rows does not grow a new one on every frame.
+pub fn samples_into(p: &TrapParams, rows: &mut Vec<TrapSample>) {
+    rows.clear();
+    if let Ok(kernel) = trapezoid_profile::samples(p) {
+        rows.extend(kernel.take(MAX_ROWS as usize));
     }
-    out
 }
 
 /// The three phases as time bands `(start, end)`: accelerate, cruise (empty for a triangle),

@@ -1,17 +1,37 @@
 // The `bsv` CLI as the reference the pages' downloads are checked against: building it, running
 // it into a fresh folder, saving what a page downloads, and comparing the two byte for byte.
 import assert from 'node:assert/strict';
+import { before, after } from 'node:test';
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { ROOT } from './harness.mjs';
+import { ROOT, startServer, closeBrowser } from './harness.mjs';
 
 export const BSV = join(ROOT, 'target', 'debug', 'bsv');
 
 /** Builds the CLI from the same sources as the wasm under test (a no-op when it is up to date). */
 export function buildCli() {
   execFileSync('cargo', ['build', '--quiet', '--bin', 'bsv'], { cwd: ROOT, stdio: 'inherit' });
+}
+
+/**
+ * Registers the hooks of a test file that checks pages against the CLI: before its tests the
+ * CLI is built and dist/ served; after them `onClose()` runs, then the browser and the server
+ * close. Returns `{ url }` (the server's, once it is up).
+ */
+export function serveAppWithCli(onClose = () => {}) {
+  let server;
+  before(async () => {
+    buildCli();
+    server = await startServer();
+  }, { timeout: 600_000 });
+  after(async () => {
+    onClose();
+    await closeBrowser();
+    await server?.close();
+  });
+  return { get url() { return server.url; } };
 }
 
 /** Runs `bsv <args> --out DIR`: its stdout (trailing newline removed) and every file written.

@@ -5,26 +5,15 @@
 // no English UI text. Screenshots (EN/JA 1920×1080, projector, phone 390 px) go to
 // tests/e2e/out/. In a build with `--features bench`, it also reports the recompute + redraw
 // time of slider drags (p95) at the default sizes and at 100,000 samples.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer, openApp, closeBrowser, OUT } from './harness.mjs';
-import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, OUT } from './harness.mjs';
+import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
-let server;
-
-before(async () => {
-  buildCli();
-  server = await startServer();
-}, { timeout: 600_000 });
-
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
-
-const open = (hash, opts = {}) => openApp(server.url, hash, opts);
+const app = serveAppWithCli();
+const open = (hash, opts = {}) => openApp(app.url, hash, opts);
 
 /** The CSV of `bsv <args>` as rows of numbers, and the file's bytes. */
 function run(file, args) {

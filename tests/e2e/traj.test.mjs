@@ -1,31 +1,24 @@
 // The trajectory-resampling page (#/traj-resample) in headless Chromium: the labeled sample and
 // a URL dt download exactly what `bsv traj-resample` writes; a CRLF file with a byte-order mark,
 // a file dropped on the page, a bad cell (its row and column named, the last plot kept), a bad
-// dt and a file that is not UTF-8; a ~57 MB, 1,000,000-row file resampled at dt = 0.001 in the
-// worker (progress shown, CSV equal to the CLI's, no main-thread task over 100 ms); the
-// Japanese page leaves no English UI string; screenshots to tests/e2e/out/.
-import { test, before, after } from 'node:test';
+// dt and a file that is not UTF-8; a file over 4 MiB dropped (the worker, progress, the CLI's
+// CSV); a file over 128 MiB refused with the page's message; nine joints on nine panels; a
+// ~57 MB, 1,000,000-row file resampled at dt = 0.001 in the worker (progress shown, CSV equal
+// to the CLI's, no main-thread task over 100 ms); the Japanese page leaves no English UI
+// string; screenshots to tests/e2e/out/.
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { startServer, openApp, browser, closeBrowser, OUT } from './harness.mjs';
-import { BSV, buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, browser, OUT } from './harness.mjs';
+import { BSV, serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
-let server;
 const longest = {};
-
-before(async () => {
-  buildCli();
-  server = await startServer();
-}, { timeout: 600_000 });
-
-after(async () => {
+const server = serveAppWithCli(() => {
   for (const [run, ms] of Object.entries(longest)) console.log(`longest main-thread task during ${run}: ${ms.toFixed(0)} ms`);
-  await closeBrowser();
-  await server?.close();
 });
 
 async function openTraj(hash = '#/traj-resample', opts = {}) {
@@ -146,6 +139,111 @@ test('a CRLF file with a BOM, a dropped file, a bad cell, a file that is not UTF
     await page.locator('[data-testid="traj-file"]').setInputFiles({ name: 'latin1.csv', mimeType: 'text/csv', buffer: latin1 });
     await fileError(page).waitFor({ state: 'visible' });
     assert.match(await fileError(page).innerText(), /“latin1\.csv” is not UTF-8 text: the byte at offset 23/);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+/** Drops a file of `text` named `name` on the plot, as a browser's drag and drop does. */
+async function dropFile(page, name, text) {
+  await page.evaluate(([n, t]) => {
+    const data = new DataTransfer();
+    data.items.add(new File([t], n, { type: 'text/csv' }));
+    const stage = document.querySelector('[data-testid="traj-resample-canvas"]');
+    stage.dispatchEvent(new DragEvent('dragover', { dataTransfer: data, bubbles: true, cancelable: true }));
+    stage.dispatchEvent(new DragEvent('drop', { dataTransfer: data, bubbles: true, cancelable: true }));
+  }, [name, text]);
+}
+
+test('a file over 4 MiB dropped on the page resamples in the worker with progress; the CSV is the CLI\'s', { timeout: 300_000 }, async () => {
+  const lines = ['t_s,q1,q2,q3'];
+  for (let i = 0; i < 130_000; i += 1) {
+    const t = i / 500;
+    lines.push(`${t.toFixed(4)},${Math.sin(t).toFixed(9)},${Math.cos(t / 2).toFixed(9)},${(t % 3).toFixed(6)}`);
+  }
+  const text = `${lines.join('\n')}\n`;
+  assert.ok(text.length > 4 * 1024 * 1024, `${text.length} bytes`);
+  const { page, errors, close } = await openTraj('#/traj-resample?dt=0.01');
+  try {
+    await waitRows(page, '5');
+    // What the progress panel and the page's state did, seen as they happen.
+    await page.evaluate(() => {
+      window.__seen = { progress: false, running: false };
+      const progress = document.querySelector('[data-testid="progress"]');
+      const root = document.querySelector('[data-testid="traj-resample-page"]');
+      new MutationObserver(() => {
+        window.__seen.progress ||= !progress.hidden;
+        window.__seen.running ||= root.dataset.state === 'running';
+      }).observe(document.body, { attributes: true, subtree: true, attributeFilter: ['hidden', 'data-state'] });
+    });
+    await dropFile(page, 'dropped-big.csv', text);
+    await waitRows(page, '130,000', 120_000);
+    assert.deepEqual(await page.evaluate(() => window.__seen), { progress: true, running: true });
+    assert.match(await page.locator('[data-testid="traj-status"]').innerText(), /in the background/);
+    assert.equal(await readout(page, 'joints'), '3');
+    const want = cliOnBytes('dropped-big.csv', Buffer.from(text), '0.01');
+    assertSameBytes(await download(page, 'traj_resampled.csv'), want.csv, 'dropped, over 4 MiB');
+    assert.equal((await page.locator('[data-testid="traj-cmd-bsv"]').innerText()).trim(), 'bsv traj-resample dropped-big.csv 0.01');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a file over 128 MiB is refused unread with the page\'s message in MiB (EN and JA)', async () => {
+  const { page, errors, close } = await openTraj();
+  try {
+    await waitRows(page, '5');
+    // A small file the page sees as 200 MiB: its `size` is what the page reads first.
+    await page.evaluate(() => {
+      const real = Object.getOwnPropertyDescriptor(Blob.prototype, 'size');
+      Object.defineProperty(Blob.prototype, 'size', {
+        configurable: true,
+        get() { return this.name === 'huge.csv' ? 200 * 1024 * 1024 : real.get.call(this); },
+      });
+    });
+    await page.locator('[data-testid="traj-file"]').setInputFiles({ name: 'huge.csv', mimeType: 'text/csv', buffer: Buffer.from('t_s,q1\n0,0\n1,1\n') });
+    await fileError(page).waitFor({ state: 'visible' });
+    assert.equal(await fileError(page).innerText(), '“huge.csv” is 200.0 MiB: over the 128 MiB a trajectory may have here (bsv has the same limit). Split the file or resample a part of it.');
+    assert.equal(await readout(page, 'rows_in'), '5', 'the last result stays');
+    assert.equal(await page.locator('[data-testid="progress"]').isHidden(), true, 'nothing ran');
+    await page.locator('[data-testid="lang-switch"]').click();
+    assert.equal(await fileError(page).innerText(), '「huge.csv」は 200.0 MiB で、ここで扱える軌道の上限 128 MiB（bsv と同じ）を超えています。ファイルを分けるか、一部だけをリサンプリングしてください。');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('every joint is plotted: nine joints, nine panels, the stage grows', async () => {
+  const names = Array.from({ length: 9 }, (_, k) => `q${k + 1}`);
+  const rows = [`t_s,${names.join(',')}`];
+  for (let i = 0; i <= 40; i += 1) rows.push([i / 20, ...names.map((_, k) => Math.sin(i / 10 + k).toFixed(6))].join(','));
+  const { page, errors, close } = await openTraj('#/traj-resample', { viewport: { width: 1280, height: 800 } });
+  try {
+    await waitRows(page, '5');
+    const before = (await page.locator('.traj-stage').boundingBox()).height;
+    await dropFile(page, 'nine.csv', `${rows.join('\n')}\n`);
+    await waitRows(page, '41');
+    assert.equal(await readout(page, 'joints'), '9');
+    const canvas = page.locator('[data-testid="traj-resample-canvas"]');
+    await page.waitForFunction(() => document.querySelector('[data-testid="traj-resample-canvas"]').dataset.panels === '9');
+    const height = (await page.locator('.traj-stage').boundingBox()).height;
+    assert.ok(height >= 9 * 96 + 48 && height > before, `stage ${before} → ${height} px`);
+    // The last joint's panel has its resampled line (blue) drawn.
+    await page.waitForTimeout(300);
+    const blue = await page.evaluate(() => {
+      const layer = document.querySelectorAll('.traj-stage canvas')[1];
+      const { width, height } = layer;
+      const img = layer.getContext('2d').getImageData(0, Math.round(height * 0.89), width, Math.round(height * 0.08)).data;
+      let n = 0;
+      for (let i = 0; i < img.length; i += 4) if (Math.abs(img[i] - 31) < 30 && Math.abs(img[i + 1] - 119) < 30 && Math.abs(img[i + 2] - 180) < 30) n += 1;
+      return n;
+    });
+    assert.ok(blue > 50, `${blue} blue pixels in the last panel`);
+    assert.equal(await canvas.count(), 1);
+    await page.locator('.traj-stage').screenshot({ path: join(OUT, 'traj-nine-joints-plot.png'), caret: 'initial' });
     assert.deepEqual(errors, []);
   } finally {
     await close();

@@ -15,7 +15,9 @@
 //! - [`form`]: the ArgSpec-driven parameter form (one or several recipes' arguments);
 //!   [`exports`]: downloads and command lines (one run or several); [`readouts`]:
 //!   `data-readout` values and a paced `aria-live` summary.
-//! - [`recipe_controls`]: form + sliders + URL + exports of a page that runs one recipe live.
+//! - [`recipe_controls`]: form + sliders + URL + exports of a page that runs one recipe live;
+//!   [`signal_page`]: the shell of such a page that plots the recipe's table (markup, mount,
+//!   language/projector/resize, the plot with its drags, cursor and PNG).
 //! - [`input_file`]: a file the user opens or drops, decoded as the CLI decodes it.
 //! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
 //! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
@@ -34,6 +36,7 @@ pub mod progress;
 pub mod readouts;
 pub mod recipe_controls;
 pub mod scope;
+pub mod signal_page;
 pub mod stepper;
 pub mod url_state;
 pub mod worker;

@@ -158,6 +158,8 @@ pub struct Readouts {
     values: Vec<(String, Element)>,
     /// The text each value shows now.
     shown: RefCell<Vec<String>>,
+    /// The `data-value` each has now (`None`: not set yet).
+    exact: RefCell<Vec<Option<String>>>,
     live: Rc<Live>,
 }
 
@@ -194,9 +196,11 @@ impl Readouts {
             }
         }));
         let shown = RefCell::new(vec![String::new(); values.len()]);
+        let exact = RefCell::new(vec![None; values.len()]);
         Ok(Readouts {
             values,
             shown,
+            exact,
             live,
         })
     }
@@ -213,12 +217,26 @@ impl Readouts {
     }
 
     /// Sets the value shown under `key` and its exact value in `data-value` (for tests and
-    /// copy tools: the text may be rounded, `value` is not).
+    /// copy tools: the text may be rounded, `value` is not); each written only when it changes.
     pub fn set_with_value(&self, key: &str, text: &str, value: &str) {
-        for (k, el) in &self.values {
-            if k == key {
+        let mut shown = self.shown.borrow_mut();
+        let mut exact = self.exact.borrow_mut();
+        let rows = self
+            .values
+            .iter()
+            .zip(shown.iter_mut())
+            .zip(exact.iter_mut());
+        for (((k, el), was), was_value) in rows {
+            if k != key {
+                continue;
+            }
+            if was != text {
                 el.set_text_content(Some(text));
+                text.clone_into(was);
+            }
+            if was_value.as_deref() != Some(value) {
                 let _ = el.set_attribute("data-value", value);
+                *was_value = Some(value.to_string());
             }
         }
     }

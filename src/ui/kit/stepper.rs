@@ -24,12 +24,11 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, HtmlInputElement, HtmlSelectElement, KeyboardEvent};
 
-use crate::i18n::FluentArg;
 use crate::ui::kit::keymap;
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
-use crate::view::stepper::key_command;
+use crate::view::stepper::{key_command, position_message};
 pub use crate::view::stepper::{Command, Length, Speed, StepModel, Stepper};
 
 /// How a stepper is set up.
@@ -350,19 +349,8 @@ impl<M: StepModel + 'static> Inner<M> {
             None => dom::show(&self.els.scrub, false),
         }
         self.els.scrub.set_value_as_number(index as f64);
-        let text = match end {
-            Some(end) => ctx::t_args(
-                "kit-stepper-position",
-                &[
-                    ("index", FluentArg::from(index as f64)),
-                    ("len", FluentArg::from(end as f64)),
-                ],
-            ),
-            None => ctx::t_args(
-                "kit-stepper-position-open",
-                &[("index", FluentArg::from(index as f64))],
-            ),
-        };
+        let (id, args) = position_message(index, end);
+        let text = ctx::t_strings(id, &args);
         self.els.position.set_text_content(Some(&text));
         let _ = self.els.scrub.set_attribute("aria-valuetext", &text);
     }

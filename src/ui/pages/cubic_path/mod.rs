@@ -4,35 +4,34 @@
 //! the quintic and the same-time trapezoid as optional overlays (not exported: the CSV stays
 //! the recipe's, byte for byte what `bsv cubic-path` writes).
 //!
-//! Components: `plots` (the kit plot with the end-point drag and the cursor) and the kit's
-//! [`RecipeControls`] (form + sliders + URL + exports) and readouts; the numbers come from the
-//! pure `crate::view::cubic_path`.
+//! Components: `plots` (the kit's signal plot with the end-point drag and the cursor) in the
+//! kit's signal-page shell ([`crate::ui::kit::signal_page`]: markup, controls, readouts, URL);
+//! the numbers come from the pure `crate::view::cubic_path`.
 
 mod plots;
 
 use std::cell::{Cell, RefCell};
-use std::rc::{Rc, Weak};
+use std::rc::Weak;
 
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 
 use crate::pyfmt::py_float;
-use crate::recipes::cubic_path::{compute, params_from_args, CubicParams, CubicPath, INFO};
-use crate::ui::kit::readouts::{self, Readouts};
-use crate::ui::kit::recipe_controls::{self, record_frame_ms, RecipeControls};
-use crate::ui::kit::scope::Scope;
-use crate::ui::kit::url_state::UrlWriter;
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
-use crate::ui::schedule::now_ms;
-use crate::ui::{ctx, dom};
-use crate::view::cubic_path::readouts as numbers;
+use crate::recipes::cubic_path::{
+    compute, params_from_args, CubicParams, CubicPath, CubicSample, INFO,
+};
+use crate::ui::ctx;
+use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
+use crate::ui::kit::signal_page::{Shell, Signal, SignalPage, SignalSpec};
+use crate::ui::page::{MountCtx, PageDef, Shortcut};
+use crate::view::cubic_path::{readouts as numbers, Peak};
 use crate::view::signal::{sig, snap, Slider};
 
 /// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<CubicPage>("cubic-path", "cubic-title", "cubic-blurb");
+pub const PAGE: PageDef =
+    PageDef::of::<Signal<CubicPage>>("cubic-path", "cubic-title", "cubic-blurb");
 
 const P: &str = "cubic";
-const PNG: &str = "cubic_path_plots.png";
 /// The overlays (URL key = `data-overlay`).
 const OVERLAYS: [&str; 2] = ["quintic", "trapezoid"];
 const SLIDERS: [Slider; 4] = [
@@ -78,143 +77,119 @@ const READOUTS: [(&str, &str); 13] = [
     ("cursor-qdd", "cubic-ro-cursor-qdd"),
 ];
 
-/// The mounted page.
-pub struct CubicPage(Rc<Inner>);
+/// The page's keys.
+const KEYS: [Shortcut; 3] = [
+    Shortcut {
+        keys: "↑ ↓",
+        message_id: "cubic-key-q1",
+    },
+    Shortcut {
+        keys: "← →",
+        message_id: "cubic-key-t",
+    },
+    Shortcut {
+        keys: "r",
+        message_id: "signals-key-reset",
+    },
+];
 
-struct Inner {
-    root: Element,
-    controls: RecipeControls<CubicParams>,
+/// The page's state: the path shown and which overlays are on.
+pub struct CubicPage {
+    shell: Shell<CubicParams>,
     plots: RefCell<plots::Plots>,
-    readouts: Readouts,
     path: RefCell<(CubicParams, CubicPath)>,
     overlays: Cell<[bool; 2]>,
-    url: RefCell<Option<UrlWriter>>,
-    scope: RefCell<Scope>,
 }
 
-fn markup() -> String {
-    let (form, notice, exports) = recipe_controls::markup(P, &INFO, PNG, "signals-png");
-    let overlays: String = OVERLAYS
-        .iter()
-        .map(|o| format!("<label class=\"sig-check\"><input type=\"checkbox\" data-overlay=\"{o}\"><span data-i18n=\"cubic-overlay-{o}\"></span></label>"))
-        .collect();
-    let explain: String = ["what", "input", "steps", "expected"]
-        .iter()
-        .map(|k| format!("<h3 data-i18n=\"cubic-explain-{k}-title\"></h3><p data-i18n=\"cubic-explain-{k}\"></p>"))
-        .collect();
-    format!(
-        "<div class=\"sig\"><header class=\"sig-head\"><h1 data-i18n=\"cubic-title\"></h1>\
-         <p class=\"sig-lede\" data-i18n=\"recipe-cubic-path-blurb\"></p>{notice}</header>\
-         <div class=\"sig-top\"><section class=\"sig-card\"><h2 data-i18n=\"cubic-plots-title\"></h2>\
-         <div class=\"sig-stage\" data-{P}=\"stage\"><canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas>\
-         <canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas><canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas>\
-         <canvas class=\"sig-layer\" \
-         data-testid=\"cubic-path-canvas\" role=\"img\" tabindex=\"0\" data-i18n-attr=\"aria-label=cubic-canvas-label\"></canvas></div>\
-         <div class=\"sig-checks\">{overlays}</div><p class=\"sig-note\" data-i18n=\"cubic-drag-hint\"></p></section>\
-         <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}</section>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-exports-title\"></h2>{exports}</section>\
-         <section class=\"sig-card sig-explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
-         <h3 data-i18n=\"signals-quirks-title\"></h3><p data-i18n=\"recipe-cubic-path-quirks\"></p></section></div>",
-        ro = readouts::markup(P, &READOUTS),
-        live = readouts::live_markup(P),
-    )
+/// What the page builds before it exists.
+pub struct Parts {
+    plots: plots::Plots,
+    path: (CubicParams, CubicPath),
+    overlays: [bool; 2],
 }
 
-impl Page for CubicPage {
-    fn mount(ctx: MountCtx) -> Result<CubicPage, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup());
-        dom::relocalize(&root)?;
-        let controls = RecipeControls::mount(
-            &root,
-            P,
-            &INFO,
-            &SLIDERS,
-            &ctx.query,
-            &OVERLAYS,
-            params_from_args,
-        )?;
+impl SignalPage for CubicPage {
+    type Params = CubicParams;
+    type Parts = Parts;
+    const SPEC: SignalSpec = SignalSpec {
+        prefix: P,
+        info: &INFO,
+        png: "cubic_path_plots.png",
+        layers: 4,
+        sliders: &SLIDERS,
+        readouts: &READOUTS,
+        explain: &["what", "input", "steps", "expected"],
+        keys: &KEYS,
+        own_keys: &OVERLAYS,
+    };
+    const PARSE: Parse<CubicParams> = params_from_args;
+
+    fn stage_markup() -> String {
+        let overlays: String = OVERLAYS
+            .iter()
+            .map(|o| format!("<label class=\"sig-check\"><input type=\"checkbox\" data-overlay=\"{o}\"><span data-i18n=\"cubic-overlay-{o}\"></span></label>"))
+            .collect();
+        format!(
+            "<div class=\"sig-checks\">{overlays}</div><p class=\"sig-note\" data-i18n=\"cubic-drag-hint\"></p>"
+        )
+    }
+
+    fn prepare(
+        ctx: &MountCtx,
+        root: &Element,
+        controls: &RecipeControls<CubicParams>,
+        stage: &Element,
+    ) -> Result<Parts, JsValue> {
         let params = controls.value();
         let path = compute(&params).map_err(|e| JsValue::from_str(&e.to_string()))?;
         let overlays = OVERLAYS.map(|o| ctx.get(o) == Some("1"));
         for (o, on) in OVERLAYS.iter().zip(overlays) {
-            dom::find::<HtmlInputElement>(&root, &format!("[data-overlay=\"{o}\"]"), P)?
+            crate::ui::dom::find::<HtmlInputElement>(root, &format!("[data-overlay=\"{o}\"]"), P)?
                 .set_checked(on);
         }
-        let stage: Element = dom::find(&root, &format!("[data-{P}=\"stage\"]"), P)?;
-        let (plots, readouts) = (plots::Plots::new(&stage)?, Readouts::find(&root)?);
-        let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
-            let mut scope = Scope::new();
-            let url = UrlWriter::new(&mut scope, me, Inner::query);
-            Inner {
-                plots: RefCell::new(plots),
-                readouts,
-                root,
-                controls,
-                path: RefCell::new((params, path)),
-                overlays: Cell::new(overlays),
-                url: RefCell::new(Some(url)),
-                scope: RefCell::new(scope),
-            }
-        });
-        inner.install(&Rc::downgrade(&inner), &stage)?;
-        inner.redraw(true, true);
-        Ok(CubicPage(inner))
+        Ok(Parts {
+            plots: plots::Plots::new(stage)?,
+            path: (params, path),
+            overlays,
+        })
     }
 
-    fn relocalize(&self) {
-        self.0.controls.relocalize();
-        self.0.redraw(true, true);
-    }
-
-    fn set_projector(&self, _on: bool) {
-        self.0.redraw(true, true);
-    }
-
-    fn shortcuts(&self) -> Vec<Shortcut> {
-        vec![
-            Shortcut {
-                keys: "↑ ↓",
-                message_id: "cubic-key-q1",
-            },
-            Shortcut {
-                keys: "← →",
-                message_id: "cubic-key-t",
-            },
-            Shortcut {
-                keys: "r",
-                message_id: "signals-key-reset",
-            },
-        ]
-    }
-
-    fn on_key(&self, event: &KeyboardEvent) -> bool {
-        let p = self.0.path.borrow().0;
-        let k = if event.shift_key() { 10.0 } else { 1.0 };
-        let value = match event.key().as_str() {
-            "ArrowUp" => ("q1", snap(p.q1 + 0.01 * k, 0.01)),
-            "ArrowDown" => ("q1", snap(p.q1 - 0.01 * k, 0.01)),
-            "ArrowRight" => ("T", snap(p.duration_s + 0.01 * k, 0.01)),
-            "ArrowLeft" => ("T", snap((p.duration_s - 0.01 * k).max(0.01), 0.01)),
-            "r" | "R" => {
-                if let Some(p) = self.0.controls.reset() {
-                    self.0.changed(p);
-                }
-                return true;
-            }
-            _ => return false,
-        };
-        if let Some(p) = self.0.controls.set_text(value.0, &value.1, false) {
-            self.0.changed(p);
+    fn new(shell: Shell<CubicParams>, parts: Parts) -> CubicPage {
+        CubicPage {
+            shell,
+            plots: RefCell::new(parts.plots),
+            path: RefCell::new(parts.path),
+            overlays: Cell::new(parts.overlays),
         }
-        true
     }
-}
 
-impl Inner {
+    fn shell(&self) -> &Shell<CubicParams> {
+        &self.shell
+    }
+
+    fn install(&self, me: &Weak<CubicPage>) -> Result<(), JsValue> {
+        for (k, o) in OVERLAYS.iter().enumerate() {
+            let input: Element =
+                crate::ui::dom::find(&self.shell.root, &format!("[data-overlay=\"{o}\"]"), P)?;
+            self.shell.with_scope(|scope| {
+                scope.listen_for(&input, "change", me, move |p: &CubicPage, e| {
+                    let on = e
+                        .target()
+                        .and_then(|t| t.dyn_into::<HtmlInputElement>().ok())
+                        .is_some_and(|i| i.checked());
+                    let mut all = p.overlays.get();
+                    all[k] = on;
+                    p.overlays.set(all);
+                    p.redraw(true, false);
+                    p.shell.url.schedule();
+                })
+            })?;
+        }
+        self.plots.borrow_mut().attach(me, &self.shell.stage)
+    }
+
     fn query(&self) -> Vec<(String, String)> {
-        let mut pairs = self.controls.url_pairs();
+        let mut pairs = self.shell.controls.url_pairs();
         for (o, on) in OVERLAYS.iter().zip(self.overlays.get()) {
             if on {
                 pairs.push((o.to_string(), "1".into()));
@@ -223,52 +198,15 @@ impl Inner {
         pairs
     }
 
-    fn install(&self, me: &Weak<Inner>, stage: &Element) -> Result<(), JsValue> {
-        let mut scope = self.scope.borrow_mut();
-        self.controls.attach(
-            &mut scope,
-            me,
-            |p| &p.controls,
-            Inner::changed,
-            |p| p.plots.borrow().png(PNG),
-        )?;
-        for (k, o) in OVERLAYS.iter().enumerate() {
-            let input: Element = dom::find(&self.root, &format!("[data-overlay=\"{o}\"]"), P)?;
-            scope.listen_for(&input, "change", me, move |p, e| {
-                let on = e
-                    .target()
-                    .and_then(|t| t.dyn_into::<HtmlInputElement>().ok())
-                    .is_some_and(|i| i.checked());
-                let mut all = p.overlays.get();
-                all[k] = on;
-                p.overlays.set(all);
-                p.redraw(true, false);
-                p.write_url();
-            })?;
-        }
-        scope.observe_resize(&[stage], me, |p| p.redraw(true, true))?;
-        drop(scope);
-        self.plots.borrow_mut().attach(me, stage)
-    }
-
-    fn write_url(&self) {
-        if let Some(url) = self.url.borrow().as_ref() {
-            url.schedule();
-        }
-    }
-
     /// New valid arguments: recompute and redraw now (within the input's frame).
     fn changed(&self, params: CubicParams) {
         let Ok(path) = compute(&params) else {
             return;
         };
-        let peak = numbers(&params, &path)
-            .peak_velocity
-            .map_or(0.0, |p| p.value);
         *self.path.borrow_mut() = (params, path);
         let dragging = self.plots.borrow().dragging();
-        self.redraw(!dragging, false);
-        self.readouts.announce(&ctx::t_strings(
+        let peak = self.redraw(!dragging, false).map_or(0.0, |p| p.value);
+        self.shell.readouts.announce(&ctx::t_strings(
             "cubic-live",
             &[
                 ("q1", py_float(params.q1)),
@@ -276,41 +214,79 @@ impl Inner {
                 ("peak", sig(peak, 4)),
             ],
         ));
-        self.write_url();
+        self.shell.url.schedule();
     }
 
+    fn redraw_all(&self) {
+        self.redraw(true, true);
+    }
+
+    fn png(&self) {
+        self.plots.borrow().png(CubicPage::SPEC.png);
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        let p = self.path.borrow().0;
+        let k = if event.shift_key() { 10.0 } else { 1.0 };
+        let controls = &self.shell.controls;
+        let next = match event.key().as_str() {
+            "ArrowUp" => controls.set_text("q1", &snap(p.q1 + 0.01 * k, 0.01), false),
+            "ArrowDown" => controls.set_text("q1", &snap(p.q1 - 0.01 * k, 0.01), false),
+            "ArrowRight" => controls.set_text("T", &snap(p.duration_s + 0.01 * k, 0.01), false),
+            "ArrowLeft" => {
+                controls.set_text("T", &snap((p.duration_s - 0.01 * k).max(0.01), 0.01), false)
+            }
+            "r" | "R" => controls.reset(),
+            _ => return false,
+        };
+        if let Some(p) = next {
+            self.changed(p);
+        }
+        true
+    }
+}
+
+impl CubicPage {
     /// Readouts and plots; `refit` rescales the axes to the data (not while dragging),
-    /// `resized` refits the canvases (size, language, mode).
-    fn redraw(&self, refit: bool, resized: bool) {
-        let t0 = now_ms();
+    /// `resized` refits the canvases (size, language, mode). The peak velocity.
+    fn redraw(&self, refit: bool, resized: bool) -> Option<Peak> {
         let (params, path) = &*self.path.borrow();
         let r = numbers(params, path);
-        let ro = &self.readouts;
-        let show = |key: &str, x: f64| ro.set_with_value(key, &sig(x, 4), &py_float(x));
         if let Some(v) = r.peak_velocity {
-            show("peak-velocity", v.value);
-            show("peak-velocity-t", v.t);
+            self.shell
+                .show_numbers(&[("peak-velocity", v.value), ("peak-velocity-t", v.t)]);
         }
         if let Some(a) = r.peak_acceleration {
-            show("peak-acceleration", a.value);
-            show("peak-acceleration-t", a.t);
+            self.shell
+                .show_numbers(&[("peak-acceleration", a.value), ("peak-acceleration-t", a.t)]);
         }
-        show("a0", r.coefficients.a0);
-        show("a1", r.coefficients.a1);
-        show("a2", r.coefficients.a2);
-        show("a3", r.coefficients.a3);
-        ro.set_with_value("rows", &r.rows.to_string(), &r.rows.to_string());
-        let cursor = {
-            let mut plots = self.plots.borrow_mut();
-            plots.show(params, path, self.overlays.get(), refit, resized);
-            plots.cursor_sample(path)
-        };
-        if let Some(s) = cursor {
-            show("cursor-t", s.t);
-            show("cursor-q", s.q);
-            show("cursor-qd", s.qd);
-            show("cursor-qdd", s.qdd);
+        let c = r.coefficients;
+        self.shell
+            .show_numbers(&[("a0", c.a0), ("a1", c.a1), ("a2", c.a2), ("a3", c.a3)]);
+        let rows = r.rows.to_string();
+        self.shell.readouts.set_with_value("rows", &rows, &rows);
+        let sample =
+            self.plots
+                .borrow_mut()
+                .show(params, path, self.overlays.get(), refit, resized);
+        self.show_cursor_readouts(sample);
+        r.peak_velocity
+    }
+
+    /// The cursor on the plots and its readouts: the CSV row at the hovered time.
+    fn show_cursor(&self) {
+        let sample = self.plots.borrow_mut().cursor(&self.path.borrow().1);
+        self.show_cursor_readouts(sample);
+    }
+
+    fn show_cursor_readouts(&self, sample: Option<CubicSample>) {
+        if let Some(s) = sample {
+            self.shell.show_numbers(&[
+                ("cursor-t", s.t),
+                ("cursor-q", s.q),
+                ("cursor-qd", s.qd),
+                ("cursor-qdd", s.qdd),
+            ]);
         }
-        record_frame_ms(now_ms() - t0);
     }
 }

@@ -1,9 +1,9 @@
-//! The plots: q, qd, qdd over t on three panels of one kit plot sharing the time axis, the
-//! recipe's samples as dots (while few) on the line, the overlays under them, a cursor at the
-//! hovered time, and the end point (T, q1) as a drag handle on the position panel (mouse,
-//! pen and touch; a touch elsewhere scrolls the page). The axes keep their ranges while a
-//! drag lasts, so the point stays under the pointer, and refit when it ends. Layers: axes,
-//! data, marks (the handle), cursor.
+//! The plots: q, qd, qdd over t on three panels of the kit's signal plot sharing the time
+//! axis, the recipe's samples as dots (while few) on the line, the overlays under them, a
+//! cursor at the hovered time, and the end point (T, q1) as a drag handle on the position
+//! panel (mouse, pen and touch; a touch elsewhere scrolls the page). The axes keep their
+//! ranges while a drag lasts, so the point stays under the pointer, and refit when it ends.
+//! Layers: axes, data, marks (the handle), cursor.
 
 use std::rc::Weak;
 
@@ -11,16 +11,14 @@ use glam::DVec2;
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use super::{Inner, OVERLAYS};
+use super::{CubicPage, OVERLAYS};
 use crate::recipes::cubic_path::{CubicParams, CubicPath, CubicSample};
-use crate::ui::ctx;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
-use crate::ui::kit::drag::{Drag, DragEvent};
-use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
+use crate::ui::kit::drag::{DragEvent, PointerKind};
+use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
+use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, SignalPage, SignalPlot};
 use crate::view::cubic_path::{quintic, ranges, time_range, trapezoid};
-use crate::view::drag::HandleShape;
-use crate::view::plot::nearest_index;
 use crate::view::signal::{nice_range, snap};
 
 /// Colours: the cubic, the quintic, the trapezoid, the cursor.
@@ -30,91 +28,64 @@ const C_CURSOR: (u8, u8, u8) = (194, 65, 12);
 
 /// The plots component.
 pub struct Plots {
-    plot: Plot,
-    drag: Option<Drag<()>>,
+    sp: SignalPlot<()>,
     /// What the series show (params, overlays), to skip unchanged updates.
     shown: Option<(CubicParams, [bool; 2])>,
     x_range: (f64, f64),
     y_ranges: [(f64, f64); 3],
-    cursor_t: Option<f64>,
-    dragging: bool,
-}
-
-fn series(id: &str, rgb: (u8, u8, u8), mark: Mark, width: f64) -> SeriesSpec {
-    SeriesSpec {
-        name: ctx::t(id),
-        rgb,
-        mark,
-        width,
-        alpha: 1.0,
-    }
 }
 
 impl Plots {
     pub fn new(stage: &Element) -> Result<Plots, JsValue> {
         Ok(Plots {
-            plot: Plot::new(stage)?,
-            drag: None,
+            sp: SignalPlot::new(stage)?,
             shown: None,
             x_range: (0.0, 1.0),
             y_ranges: [(-1.0, 1.0); 3],
-            cursor_t: None,
-            dragging: false,
         })
     }
 
     /// The end-point drag, the hover cursor and focus on press.
-    pub fn attach(&mut self, me: &Weak<Inner>, stage: &Element) -> Result<(), JsValue> {
-        let surface = self.plot.canvas.top().canvas.clone();
-        let (hit_me, on_me) = (me.clone(), me.clone());
-        self.drag = Some(Drag::attach(
-            stage,
-            &surface,
-            move |at, kind| {
-                let page = hit_me.upgrade()?;
-                let plots = page.plots.borrow();
-                let end = plots.end_px(&page.path.borrow().0)?;
-                let reach = if kind.is_coarse() { 24.0 } else { 12.0 };
-                (end.distance(at) <= reach).then_some(())
-            },
-            move |ev| {
-                if let Some(page) = on_me.upgrade() {
-                    Plots::on_drag(&page, ev);
-                }
-            },
-        )?);
-        Ok(())
+    pub fn attach(&mut self, me: &Weak<CubicPage>, stage: &Element) -> Result<(), JsValue> {
+        self.sp.attach(stage, me, Plots::hit, Plots::on_drag)
     }
 
-    fn on_drag(page: &Inner, ev: DragEvent<()>) {
+    fn hit(page: &CubicPage, at: DVec2, kind: PointerKind) -> Option<()> {
+        let end = page.plots.borrow().end_px(&page.path.borrow().0)?;
+        (end.distance(at) <= reach(kind)).then_some(())
+    }
+
+    fn on_drag(page: &CubicPage, ev: DragEvent<()>) {
         match ev {
             DragEvent::Start { at, .. } | DragEvent::Move { at, .. } => {
                 if let DragEvent::Start { .. } = ev {
-                    page.plots.borrow_mut().dragging = true;
-                    focus_without_scroll(&page.plots.borrow().plot.canvas.top().canvas);
+                    page.plots.borrow_mut().sp.dragging = true;
+                    focus_without_scroll(&page.plots.borrow().sp.plot.canvas.top().canvas);
                 }
-                let point = page.plots.borrow().plot.from_px(0, at);
+                let point = page.plots.borrow().sp.plot.from_px(0, at);
                 let Some((t, q)) = point else {
                     return;
                 };
                 let (x0, x1) = page.plots.borrow().x_range;
                 let t = snap(t.clamp(x0.max(0.01), x1), 0.01);
                 let q = snap(q, 0.01);
-                if let Some(p) = page.controls.set_texts(&[("q1", &q), ("T", &t)], None) {
+                if let Some(p) = page
+                    .shell
+                    .controls
+                    .set_texts(&[("q1", &q), ("T", &t)], None)
+                {
                     page.changed(p);
                 }
             }
             DragEvent::End { .. } => {
-                page.plots.borrow_mut().dragging = false;
+                page.plots.borrow_mut().sp.dragging = false;
                 page.redraw(true, false);
-                if let Some(url) = page.url.borrow().as_ref() {
-                    url.write_now();
-                }
+                page.shell.url.write_now();
             }
             DragEvent::Hover(at) | DragEvent::Tap { at } => {
-                let t = page.plots.borrow().plot.from_px(0, at).map(|(t, _)| t);
-                page.plots.borrow_mut().cursor_t = t;
-                page.redraw(false, false);
+                if page.plots.borrow_mut().sp.hover(at) {
+                    page.show_cursor();
+                }
             }
             DragEvent::Leave => {}
         }
@@ -122,15 +93,15 @@ impl Plots {
 
     /// Whether the end point is being dragged.
     pub fn dragging(&self) -> bool {
-        self.dragging
+        self.sp.dragging
     }
 
     fn end_px(&self, p: &CubicParams) -> Option<DVec2> {
-        self.plot.to_px(0, p.duration_s, p.q1)
+        self.sp.plot.to_px(0, p.duration_s, p.q1)
     }
 
-    /// Shows `path` (and the overlays that are on); `refit` rescales the axes, `resized`
-    /// refits the canvases.
+    /// Shows `path` (and the overlays that are on) and the cursor; `refit` rescales the
+    /// axes, `resized` refits the canvases. The sample under the cursor.
     pub fn show(
         &mut self,
         p: &CubicParams,
@@ -138,7 +109,7 @@ impl Plots {
         overlays: [bool; 2],
         refit: bool,
         resized: bool,
-    ) {
+    ) -> Option<CubicSample> {
         let ink = Ink::current();
         if refit || self.shown != Some((*p, overlays)) {
             let quint = overlays[0].then(|| quintic(p, 200));
@@ -158,52 +129,31 @@ impl Plots {
                 .chain([path.samples.as_slice()]);
             for (k, v) in series.enumerate() {
                 let rows = v.iter().map(|s| (s.t, [s.q, s.qd, s.qdd]));
-                let columns = thinned_columns(&self.plot, self.x_range, rows);
+                let columns = thinned_columns(&self.sp.plot, self.x_range, rows);
                 for (panel, pts) in columns.into_iter().enumerate() {
-                    self.plot.set_series(panel, k, pts);
+                    self.sp.plot.set_series(panel, k, pts);
                 }
             }
             self.shown = Some((*p, overlays));
         }
         if resized {
-            self.plot.invalidate_all();
+            self.sp.plot.invalidate_all();
         }
-        let t = self.cursor_sample(path).map(|s| s.t);
-        self.plot.set_cursor(t);
-        let _ = self.plot.draw(ink);
+        let cursor = self.cursor_sample(path);
+        let _ = self.sp.plot.draw(ink);
         let Some(end) = self.end_px(p) else {
-            return;
+            return cursor;
         };
-        if let Some(drag) = &self.drag {
-            drag.set_handles(&[HandleShape::Circle {
-                centre: end,
-                radius: 22.0,
-            }]);
-        }
-        // Where the handle is, for tests and assistive tools (CSS px of the canvas).
-        let top = &self.plot.canvas.top().canvas;
-        let _ = top.set_attribute("data-end-x", &format!("{:.1}", end.x));
-        let _ = top.set_attribute("data-end-y", &format!("{:.1}", end.y));
+        self.sp.set_handles(&["end"], &[end]);
         // The end point, on the marks layer (between the data and the cursor).
-        let marks = self.plot.canvas.layer(2);
+        let marks = self.sp.plot.canvas.layer(2);
         marks.begin();
-        let c = &marks.ctx;
-        c.set_fill_style_str("rgba(194, 65, 12, 0.18)");
-        c.set_stroke_style_str("#c2410c");
-        c.set_line_width(2.0 * ink.line);
-        c.begin_path();
-        let _ = c.arc(end.x, end.y, 9.0 * ink.line, 0.0, std::f64::consts::TAU);
-        c.fill();
-        c.stroke();
+        draw_handle(&marks.ctx, end, ink);
+        cursor
     }
 
     fn set_spec(&mut self, overlays: [bool; 2]) {
         let y = self.y_ranges;
-        let axis = |title: &str, unit: &str, range| AxisSpec {
-            title: ctx::t(title),
-            unit: ctx::t(unit),
-            range,
-        };
         let mut names = Vec::new();
         for (k, on) in overlays.iter().enumerate() {
             if *on {
@@ -212,6 +162,7 @@ impl Plots {
                     C_OVERLAY[k],
                     Mark::Line,
                     2.0,
+                    1.0,
                 ));
             }
         }
@@ -220,12 +171,13 @@ impl Plots {
             C_CUBIC,
             Mark::LineAndPoints,
             2.0,
+            1.0,
         ));
         let panel = |title: &str, unit: &str, range| PanelSpec {
             y: axis(title, unit, range),
             series: names.clone(),
         };
-        self.plot.set_spec(PlotSpec {
+        self.sp.plot.set_spec(PlotSpec {
             x: axis("signals-ax-t", "signals-unit-s", self.x_range),
             panels: vec![
                 panel("cubic-ax-q", "cubic-unit-rad", y[0]),
@@ -236,20 +188,22 @@ impl Plots {
         });
     }
 
-    /// The sample nearest the cursor (mid-move before any hover).
-    pub fn cursor_sample(&self, path: &CubicPath) -> Option<CubicSample> {
-        let t = self.cursor_t.unwrap_or(path.duration_s / 2.0);
-        let s = &path.samples;
-        let i = s.partition_point(|x| x.t < t);
-        let near = [i.saturating_sub(1), i.min(s.len().saturating_sub(1))];
-        let pick = nearest_index(&near.map(|k| s.get(k).map_or(f64::NAN, |x| x.t)), t)?;
-        s.get(near[pick]).copied()
+    /// The sample of `path` under the cursor (mid-move before any hover), and draws the
+    /// cursor there.
+    pub fn cursor(&mut self, path: &CubicPath) -> Option<CubicSample> {
+        let sample = self.cursor_sample(path);
+        let _ = self.sp.plot.draw(Ink::current());
+        sample
+    }
+
+    fn cursor_sample(&mut self, path: &CubicPath) -> Option<CubicSample> {
+        self.sp
+            .cursor_row(&path.samples, path.duration_s / 2.0, |s| s.t)
+            .copied()
     }
 
     /// Saves the three panels as a PNG.
     pub fn png(&self, file: &str) {
-        if let Ok(canvas) = self.plot.canvas.flatten("#ffffff") {
-            let _ = crate::ui::kit::png::download(&canvas, file);
-        }
+        self.sp.png(file);
     }
 }

@@ -4,35 +4,31 @@
 //! the previous gains stays drawn until the next change, so a class compares tunings; the
 //! recipe's warning when the loop diverges. The CSV is the recipe's (`bsv pid-step`).
 //!
-//! Components: `plots` (the kit plot: y and r above, u below, and the ghost), the kit's
-//! [`RecipeControls`] (form + sliders + URL + exports) and readouts.
+//! Components: `plots` (the kit's signal plot: y and r above, u below, and the ghost) in the
+//! kit's signal-page shell ([`crate::ui::kit::signal_page`]: markup, controls, readouts, URL).
 
 mod plots;
 
 use std::cell::{Cell, RefCell};
-use std::rc::{Rc, Weak};
+use std::rc::Weak;
 
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
-use crate::pyfmt::{py_float, py_round};
+use crate::pyfmt::py_round;
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
-use crate::ui::kit::readouts::{self, Readouts};
-use crate::ui::kit::recipe_controls::{self, record_frame_ms, RecipeControls};
-use crate::ui::kit::scope::Scope;
-use crate::ui::kit::url_state::UrlWriter;
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
-use crate::ui::schedule::now_ms;
+use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
+use crate::ui::kit::signal_page::{Shell, Signal, SignalPage, SignalSpec};
+use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
 use crate::view::pid_step::{figures, response, StepFigures};
 use crate::view::signal::{sig, snap, Slider};
 
 /// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<PidPage>("pid-step", "pid-title", "pid-blurb");
+pub const PAGE: PageDef = PageDef::of::<Signal<PidPage>>("pid-step", "pid-title", "pid-blurb");
 
 const P: &str = "pid";
-const PNG: &str = "pid_step_plots.png";
 const SLIDERS: [Slider; 5] = [
     Slider {
         name: "Kp",
@@ -80,12 +76,9 @@ const READOUTS: [(&str, &str); 11] = [
     ("cursor-u", "pid-ro-cursor-u"),
 ];
 
-/// The mounted page.
-pub struct PidPage(Rc<Inner>);
-
 /// The run shown (and its figures), the run the ghost is drawn from (a new ghost, a new
 /// generation), and the last committed run.
-struct Runs {
+pub struct Runs {
     now: Vec<PidSample>,
     figures: StepFigures,
     committed: Vec<PidSample>,
@@ -93,150 +86,103 @@ struct Runs {
     ghost_generation: u64,
 }
 
-struct Inner {
-    root: Element,
-    controls: RecipeControls<PidParams>,
+/// The page's keys.
+const KEYS: [Shortcut; 2] = [
+    Shortcut {
+        keys: "↑ ↓",
+        message_id: "pid-key-kp",
+    },
+    Shortcut {
+        keys: "r",
+        message_id: "signals-key-reset",
+    },
+];
+
+/// The page's state: the runs and whether a change is under way.
+pub struct PidPage {
+    shell: Shell<PidParams>,
     plots: RefCell<plots::Plots>,
-    readouts: Readouts,
     warning: Element,
     runs: RefCell<Runs>,
     changing: Cell<bool>,
-    url: RefCell<Option<UrlWriter>>,
-    scope: RefCell<Scope>,
 }
 
-fn markup() -> String {
-    let (form, notice, exports) = recipe_controls::markup(P, &INFO, PNG, "signals-png");
-    let explain: String = [
-        "gains", "plant", "toy", "real", "input", "steps", "expected",
-    ]
-    .iter()
-    .map(|k| {
+/// What the page builds before it exists.
+pub struct Parts {
+    plots: plots::Plots,
+    warning: Element,
+    runs: Runs,
+}
+
+impl SignalPage for PidPage {
+    type Params = PidParams;
+    type Parts = Parts;
+    const SPEC: SignalSpec = SignalSpec {
+        prefix: P,
+        info: &INFO,
+        png: "pid_step_plots.png",
+        layers: 3,
+        sliders: &SLIDERS,
+        readouts: &READOUTS,
+        explain: &[
+            "gains", "plant", "toy", "real", "input", "steps", "expected",
+        ],
+        keys: &KEYS,
+        own_keys: &[],
+    };
+    const PARSE: Parse<PidParams> = params_from_args;
+
+    fn stage_markup() -> String {
         format!(
-            "<h3 data-i18n=\"pid-explain-{k}-title\"></h3><p data-i18n=\"pid-explain-{k}\"></p>"
+            "<p class=\"sig-warning\" data-{P}=\"warning\" data-testid=\"pid-step-warning\" role=\"alert\" hidden></p>\
+             <p class=\"sig-note\" data-i18n=\"pid-ghost-note\"></p>"
         )
-    })
-    .collect();
-    format!(
-        "<div class=\"sig\"><header class=\"sig-head\"><h1 data-i18n=\"pid-title\"></h1>\
-         <p class=\"sig-lede\" data-i18n=\"recipe-pid-step-blurb\"></p>{notice}</header>\
-         <div class=\"sig-top\"><section class=\"sig-card\"><h2 data-i18n=\"pid-plots-title\"></h2>\
-         <div class=\"sig-stage\" data-{P}=\"stage\"><canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas>\
-         <canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas><canvas class=\"sig-layer\" \
-         data-testid=\"pid-step-canvas\" role=\"img\" tabindex=\"0\" data-i18n-attr=\"aria-label=pid-canvas-label\"></canvas></div>\
-         <p class=\"sig-warning\" data-{P}=\"warning\" data-testid=\"pid-step-warning\" role=\"alert\" hidden></p>\
-         <p class=\"sig-note\" data-i18n=\"pid-ghost-note\"></p></section>\
-         <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}\
-         <p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p></section>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-exports-title\"></h2>{exports}</section>\
-         <section class=\"sig-card sig-explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
-         <h3 data-i18n=\"signals-quirks-title\"></h3><p data-i18n=\"recipe-pid-step-quirks\"></p></section></div>",
-        ro = readouts::markup(P, &READOUTS),
-        live = readouts::live_markup(P),
-    )
-}
+    }
 
-impl Page for PidPage {
-    fn mount(ctx: MountCtx) -> Result<PidPage, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup());
-        dom::relocalize(&root)?;
-        let controls =
-            RecipeControls::mount(&root, P, &INFO, &SLIDERS, &ctx.query, &[], params_from_args)?;
+    fn readouts_markup() -> String {
+        "<p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>".into()
+    }
+
+    fn prepare(
+        _ctx: &MountCtx,
+        root: &Element,
+        controls: &RecipeControls<PidParams>,
+        stage: &Element,
+    ) -> Result<Parts, JsValue> {
         let rows = response(&controls.value());
-        let stage: Element = dom::find(&root, &format!("[data-{P}=\"stage\"]"), P)?;
-        let (plots, readouts) = (plots::Plots::new(&stage)?, Readouts::find(&root)?);
-        let warning = dom::find(&root, &format!("[data-{P}=\"warning\"]"), P)?;
-        let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
-            let mut scope = Scope::new();
-            let url = UrlWriter::new(&mut scope, me, |p: &Inner| p.controls.url_pairs());
-            Inner {
-                root,
-                controls,
-                plots: RefCell::new(plots),
-                readouts,
-                warning,
-                runs: RefCell::new(Runs {
-                    committed: rows.clone(),
-                    figures: figures(&rows),
-                    now: rows,
-                    ghost: None,
-                    ghost_generation: 0,
-                }),
-                changing: Cell::new(false),
-                url: RefCell::new(Some(url)),
-                scope: RefCell::new(scope),
-            }
-        });
-        inner.install(&Rc::downgrade(&inner), &stage)?;
-        inner
-            .plots
-            .borrow_mut()
-            .attach(&Rc::downgrade(&inner), &stage)?;
-        inner.redraw(true);
-        Ok(PidPage(inner))
-    }
-
-    fn relocalize(&self) {
-        self.0.controls.relocalize();
-        self.0.redraw(true);
-    }
-
-    fn set_projector(&self, _on: bool) {
-        self.0.redraw(true);
-    }
-
-    fn shortcuts(&self) -> Vec<Shortcut> {
-        vec![
-            Shortcut {
-                keys: "↑ ↓",
-                message_id: "pid-key-kp",
+        Ok(Parts {
+            plots: plots::Plots::new(stage)?,
+            warning: dom::find(root, &format!("[data-{P}=\"warning\"]"), P)?,
+            runs: Runs {
+                committed: rows.clone(),
+                figures: figures(&rows),
+                now: rows,
+                ghost: None,
+                ghost_generation: 0,
             },
-            Shortcut {
-                keys: "r",
-                message_id: "signals-key-reset",
-            },
-        ]
+        })
     }
 
-    fn on_key(&self, event: &KeyboardEvent) -> bool {
-        let kp = self.0.controls.value().kp;
-        let k = if event.shift_key() { 10.0 } else { 1.0 };
-        let next = match event.key().as_str() {
-            "ArrowUp" => self
-                .0
-                .controls
-                .set_text("Kp", &snap(kp + 0.05 * k, 0.05), false),
-            "ArrowDown" => self
-                .0
-                .controls
-                .set_text("Kp", &snap(kp - 0.05 * k, 0.05), false),
-            "r" | "R" => self.0.controls.reset(),
-            _ => return false,
-        };
-        if let Some(p) = next {
-            self.0.changed(p);
+    fn new(shell: Shell<PidParams>, parts: Parts) -> PidPage {
+        PidPage {
+            shell,
+            plots: RefCell::new(parts.plots),
+            warning: parts.warning,
+            runs: RefCell::new(parts.runs),
+            changing: Cell::new(false),
         }
-        self.0.commit();
-        true
     }
-}
 
-impl Inner {
-    fn install(&self, me: &Weak<Inner>, stage: &Element) -> Result<(), JsValue> {
-        let mut scope = self.scope.borrow_mut();
-        self.controls.attach(
-            &mut scope,
-            me,
-            |p| &p.controls,
-            Inner::changed,
-            |p| p.plots.borrow().png(PNG),
-        )?;
-        let form: Element = dom::find(&self.root, &format!("[data-{P}=\"form\"]"), P)?;
-        scope.listen_for(&form, "change", me, |p, _| p.commit())?;
-        scope.observe_resize(&[stage], me, |p| p.redraw(true))?;
-        Ok(())
+    fn shell(&self) -> &Shell<PidParams> {
+        &self.shell
+    }
+
+    fn install(&self, me: &Weak<PidPage>) -> Result<(), JsValue> {
+        let form = self.shell.role(P, "form")?;
+        self.shell.with_scope(|scope| {
+            scope.listen_for(&form, "change", me, |p: &PidPage, _| p.commit())
+        })?;
+        self.plots.borrow_mut().attach(me, &self.shell.stage)
     }
 
     /// New valid arguments: the first change after a committed one turns the committed run
@@ -262,7 +208,7 @@ impl Inner {
                 |x| ctx::t_strings(unit_id, &[("value", sig(x, 3))]),
             )
         };
-        self.readouts.announce(&ctx::t_strings(
+        self.shell.readouts.announce(&ctx::t_strings(
             "pid-live",
             &[
                 ("rise", or_none(f.rise_time, "pid-live-seconds")),
@@ -270,11 +216,36 @@ impl Inner {
                 ("settling", or_none(f.settling_time, "pid-live-seconds")),
             ],
         ));
-        if let Some(url) = self.url.borrow().as_ref() {
-            url.schedule();
-        }
+        self.shell.url.schedule();
     }
 
+    fn redraw_all(&self) {
+        self.redraw(true);
+    }
+
+    fn png(&self) {
+        self.plots.borrow().png(PidPage::SPEC.png);
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        let kp = self.shell.controls.value().kp;
+        let k = if event.shift_key() { 10.0 } else { 1.0 };
+        let controls = &self.shell.controls;
+        let next = match event.key().as_str() {
+            "ArrowUp" => controls.set_text("Kp", &snap(kp + 0.05 * k, 0.05), false),
+            "ArrowDown" => controls.set_text("Kp", &snap(kp - 0.05 * k, 0.05), false),
+            "r" | "R" => controls.reset(),
+            _ => return false,
+        };
+        if let Some(p) = next {
+            self.changed(p);
+        }
+        self.commit();
+        true
+    }
+}
+
+impl PidPage {
     /// A change ended (a slider let go, a field left, a key): the run shown is the one the
     /// next change leaves as the ghost.
     fn commit(&self) {
@@ -286,12 +257,11 @@ impl Inner {
 
     /// Readouts, warning and plots.
     fn redraw(&self, resized: bool) {
-        let t0 = now_ms();
         let runs = self.runs.borrow();
         let f = runs.figures;
-        let ro = &self.readouts;
+        let ro = &self.shell.readouts;
         let show = |key: &str, x: Option<f64>, digits: usize| match x {
-            Some(x) => ro.set_with_value(key, &sig(x, digits), &py_float(x)),
+            Some(x) => self.shell.show_number(key, x, digits),
             None => ro.set_with_value(key, &ctx::t("pid-ro-none"), ""),
         };
         show("rise-time", f.rise_time, 4);
@@ -307,26 +277,29 @@ impl Inner {
             .collect();
         self.warning.set_text_content(Some(&text.join(" ")));
         dom::show(&self.warning, !text.is_empty());
-        self.plots.borrow_mut().show(
+        let sample = self.plots.borrow_mut().show(
             &runs.now,
             runs.ghost.as_deref().map(|g| (runs.ghost_generation, g)),
             resized,
         );
         drop(runs);
-        self.show_cursor();
-        record_frame_ms(now_ms() - t0);
+        self.show_cursor_readouts(sample);
     }
 
     /// The cursor on the plots and its readouts: the CSV row at the hovered time.
     fn show_cursor(&self) {
         let sample = self.plots.borrow_mut().cursor(&self.runs.borrow().now);
-        let Some(s) = sample else {
-            return;
-        };
-        let show = |key: &str, x: f64| self.readouts.set_with_value(key, &sig(x, 4), &py_float(x));
-        show("cursor-t", py_round(s.t, 4));
-        show("cursor-r", s.r);
-        show("cursor-y", s.y);
-        show("cursor-u", s.u);
+        self.show_cursor_readouts(sample);
+    }
+
+    fn show_cursor_readouts(&self, sample: Option<PidSample>) {
+        if let Some(s) = sample {
+            self.shell.show_numbers(&[
+                ("cursor-t", py_round(s.t, 4)),
+                ("cursor-r", s.r),
+                ("cursor-y", s.y),
+                ("cursor-u", s.u),
+            ]);
+        }
     }
 }

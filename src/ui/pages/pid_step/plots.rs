@@ -1,21 +1,22 @@
 //! The plots: the setpoint r and the output y (top) and the controller output u (bottom) over
-//! the CSV's t, one kit plot sharing the time axis; the ghost (the previous gains' y and u)
-//! pale underneath. Axes snap to 1-2-5 ranges, so a small change redraws only the series.
+//! the CSV's t, the kit's signal plot sharing the time axis; the ghost (the previous gains' y
+//! and u) pale underneath. Axes snap to 1-2-5 ranges, so a small change redraws only the
+//! series. Nothing on it is dragged: a hover or a tap moves the cursor.
 
 use std::rc::Weak;
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use super::Inner;
+use super::PidPage;
 use crate::recipes::pid_step::{PidSample, DT_S};
-use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
-use crate::ui::kit::drag::{Drag, DragEvent};
-use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
+use crate::ui::kit::drag::DragEvent;
+use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec, SeriesSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
+use crate::ui::kit::signal_page::{axis, series, SignalPlot};
 use crate::view::plot::auto_range;
-use crate::view::signal::{extents, nearest_row, nice_range};
+use crate::view::signal::{extents, nice_range};
 
 const C_Y: (u8, u8, u8) = (26, 77, 143);
 const C_R: (u8, u8, u8) = (194, 65, 12);
@@ -24,14 +25,10 @@ const C_GHOST: (u8, u8, u8) = (120, 128, 140);
 
 /// The plots component.
 pub struct Plots {
-    plot: Plot,
+    sp: SignalPlot<()>,
     /// The ghost's ranges and thinned series, kept while the ghost, the time axis and the
     /// panel are the same (the ghost does not change during a drag).
     ghost: Option<GhostCache>,
-    /// The hovered time (`None`: none yet, the cursor stands mid-run).
-    cursor_t: Option<f64>,
-    /// Hover and tap events of the stage (nothing on the plots is dragged).
-    hover: Option<Drag<()>>,
 }
 
 /// A ghost's generation, the time range and the panel in px (`Plot::panel_px`).
@@ -45,16 +42,6 @@ struct GhostCache {
     u_range: (f64, f64),
     y: Vec<(f64, f64)>,
     u: Vec<(f64, f64)>,
-}
-
-fn series(id: &str, rgb: (u8, u8, u8), mark: Mark, width: f64, alpha: f64) -> SeriesSpec {
-    SeriesSpec {
-        name: ctx::t(id),
-        rgb,
-        mark,
-        width,
-        alpha,
-    }
 }
 
 /// The (lo, hi) of the finite y and u of `rows`, clamped to ±1e12 (an overflowed run plots
@@ -73,68 +60,56 @@ fn range(a: (f64, f64), b: (f64, f64), with: f64) -> (f64, f64) {
 impl Plots {
     pub fn new(stage: &Element) -> Result<Plots, JsValue> {
         Ok(Plots {
-            plot: Plot::new(stage)?,
+            sp: SignalPlot::new(stage)?,
             ghost: None,
-            cursor_t: None,
-            hover: None,
         })
     }
 
     /// The hover cursor: a mouse or pen over the plots, or a tap, reads the sample there.
-    pub fn attach(&mut self, me: &Weak<Inner>, stage: &Element) -> Result<(), JsValue> {
-        let surface = self.plot.canvas.top().canvas.clone();
-        let me = me.clone();
-        self.hover = Some(Drag::attach(
-            stage,
-            &surface,
-            |_, _| None,
-            move |ev| {
-                let (DragEvent::Hover(at) | DragEvent::Tap { at }) = ev else {
-                    return;
-                };
-                if let Some(page) = me.upgrade() {
-                    let t = page.plots.borrow().plot.from_px(0, at).map(|(t, _)| t);
-                    if t.is_some() {
-                        page.plots.borrow_mut().cursor_t = t;
-                        page.show_cursor();
-                    }
-                }
-            },
-        )?);
-        Ok(())
+    pub fn attach(&mut self, me: &Weak<PidPage>, stage: &Element) -> Result<(), JsValue> {
+        self.sp.attach(stage, me, |_, _, _| None, Plots::on_pointer)
     }
 
-    /// The sample of `now` under the cursor (mid-run before any hover), and draws the cursor
-    /// there.
+    fn on_pointer(page: &PidPage, ev: DragEvent<()>) {
+        let (DragEvent::Hover(at) | DragEvent::Tap { at }) = ev else {
+            return;
+        };
+        if page.plots.borrow_mut().sp.hover(at) {
+            page.show_cursor();
+        }
+    }
+
+    /// The sample of `now` under the cursor, drawn there.
     pub fn cursor(&mut self, now: &[PidSample]) -> Option<PidSample> {
-        let mid = now.last().map_or(0.0, |s| s.t / 2.0);
-        let sample = nearest_row(now, self.cursor_t.unwrap_or(mid), |s| s.t).copied();
-        self.plot.set_cursor(sample.map(|s| s.t));
-        let _ = self.plot.draw(Ink::current());
+        let sample = self.cursor_sample(now);
+        let _ = self.sp.plot.draw(Ink::current());
         sample
     }
 
+    /// The sample of `now` under the cursor (mid-run before any hover); the cursor is set
+    /// there.
+    fn cursor_sample(&mut self, now: &[PidSample]) -> Option<PidSample> {
+        let mid = now.last().map_or(0.0, |s| s.t / 2.0);
+        self.sp.cursor_row(now, mid, |s| s.t).copied()
+    }
+
     /// Shows the run `now` over the `ghost` (`generation` names it: a new ghost, a new
-    /// number); `resized` refits the canvases.
-    pub fn show(&mut self, now: &[PidSample], ghost: Option<(u64, &[PidSample])>, resized: bool) {
+    /// number) and the cursor; `resized` refits the canvases. The sample under the cursor.
+    pub fn show(
+        &mut self,
+        now: &[PidSample],
+        ghost: Option<(u64, &[PidSample])>,
+        resized: bool,
+    ) -> Option<PidSample> {
         let t_end = [now.last(), ghost.and_then(|g| g.1.last())]
             .into_iter()
             .flatten()
             .map(|s| s.t)
             .fold(DT_S, f64::max);
         let x = (0.0, t_end);
-        let axis = |title: &str, unit: &str, range| AxisSpec {
-            title: ctx::t(title),
-            unit: if unit.is_empty() {
-                String::new()
-            } else {
-                ctx::t(unit)
-            },
-            range,
-        };
         // The ghost's series (first, under the others) only while there is one.
         let g = usize::from(ghost.is_some());
-        let ghost_series = |id| ghost.map(|_| series(id, C_GHOST, Mark::Line, 2.0, 0.55));
+        let ghost_series = |id: &str| ghost.map(|_| series(id, C_GHOST, Mark::Line, 2.0, 0.55));
         let mut top: Vec<SeriesSpec> = ghost_series("pid-series-ghost-y").into_iter().collect();
         top.push(series("pid-series-r", C_R, Mark::Line, 1.5, 1.0));
         top.push(series("pid-series-y", C_Y, Mark::LineAndPoints, 2.0, 1.0));
@@ -157,7 +132,7 @@ impl Plots {
             None => (ghost_y, ghost_u),
         };
         let [now_y, now_u] = y_u_extents(now);
-        self.plot.set_spec(PlotSpec {
+        self.sp.plot.set_spec(PlotSpec {
             x: axis("signals-ax-t", "signals-unit-s", x),
             panels: vec![
                 PanelSpec {
@@ -172,9 +147,10 @@ impl Plots {
             cursor_rgb: C_R,
         });
         if let Some((generation, rows)) = ghost {
-            let key = (generation, x, self.plot.panel_px(0));
+            let key = (generation, x, self.sp.plot.panel_px(0));
             if self.ghost.as_ref().map(|c| c.key) != Some(key) {
-                let [y, u] = thinned_columns(&self.plot, x, rows.iter().map(|s| (s.t, [s.y, s.u])));
+                let [y, u] =
+                    thinned_columns(&self.sp.plot, x, rows.iter().map(|s| (s.t, [s.y, s.u])));
                 let cache = GhostCache {
                     key,
                     y_range: ghost_y,
@@ -182,8 +158,8 @@ impl Plots {
                     y,
                     u,
                 };
-                self.plot.set_series(0, 0, cache.y.clone());
-                self.plot.set_series(1, 0, cache.u.clone());
+                self.sp.plot.set_series(0, 0, cache.y.clone());
+                self.sp.plot.set_series(1, 0, cache.u.clone());
                 self.ghost = Some(cache);
             }
         }
@@ -192,20 +168,20 @@ impl Plots {
             (Some(a), Some(b)) => vec![(a.t, a.r), (b.t, b.r)],
             _ => Vec::new(),
         };
-        let [y, u] = thinned_columns(&self.plot, x, now.iter().map(|s| (s.t, [s.y, s.u])));
-        self.plot.set_series(0, g, r);
-        self.plot.set_series(0, g + 1, y);
-        self.plot.set_series(1, g, u);
+        let [y, u] = thinned_columns(&self.sp.plot, x, now.iter().map(|s| (s.t, [s.y, s.u])));
+        self.sp.plot.set_series(0, g, r);
+        self.sp.plot.set_series(0, g + 1, y);
+        self.sp.plot.set_series(1, g, u);
         if resized {
-            self.plot.invalidate_all();
+            self.sp.plot.invalidate_all();
         }
-        let _ = self.plot.draw(Ink::current());
+        let cursor = self.cursor_sample(now);
+        let _ = self.sp.plot.draw(Ink::current());
+        cursor
     }
 
     /// Saves the plots as a PNG.
     pub fn png(&self, file: &str) {
-        if let Ok(canvas) = self.plot.canvas.flatten("#ffffff") {
-            let _ = crate::ui::kit::png::download(&canvas, file);
-        }
+        self.sp.png(file);
     }
 }

@@ -1,10 +1,12 @@
-//! The plot of every joint (the kit's plot widget): one panel per joint, sharing the time axis
-//! of the input's span, with the input's samples as dots and the resampled series as a line.
+//! The plot of every joint (the kit's plot widget): one panel per joint, every joint of the
+//! file however many, sharing the time axis of the input's span, with the input's samples as
+//! dots and the resampled series as a line. The stage grows with the joints (the CSS reads
+//! `--traj-panels`), so each panel keeps a readable height; the page scrolls past it.
 //! Both come as plot envelopes (at most four points per bucket, [`crate::view::envelope`]), so
 //! a million rows draw in one frame; the widget decimates again to its pixel columns.
 
-use wasm_bindgen::JsValue;
-use web_sys::Element;
+use wasm_bindgen::{JsCast, JsValue};
+use web_sys::{Element, HtmlElement};
 
 use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
@@ -12,9 +14,6 @@ use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec
 use crate::view::envelope::Envelope;
 use crate::view::plot::{auto_range, decimate, LinearScale};
 use crate::view::traj_resample::joint_columns;
-
-/// Panels drawn at most (the readouts count every joint).
-pub const MAX_PANELS: usize = 6;
 
 /// Buckets of the sample dots of a dense input: each dot is its own canvas path (about 10 µs
 /// in headless Chromium), so a million-row file keeps at most four dots per bucket (its first,
@@ -30,15 +29,19 @@ fn thin_dots(points: &[(f64, f64)], x_range: (f64, f64)) -> Vec<(f64, f64)> {
     decimate(points, &LinearScale::new(x_range, (0.0, DOT_BUCKETS)))
 }
 
+/// Up to this many joints the stage keeps its height (the CSS's); each one more adds a panel's
+/// height.
+const GROW_FROM: usize = 6;
+
 /// A series' points, `(t, q)`.
 type Points = Vec<(f64, f64)>;
 
 /// The plot component.
 pub struct Joints {
     pub plot: Plot,
-    /// Joints in the plot (for the note when some are not drawn).
-    pub drawn: usize,
-    pub total: usize,
+    /// The stage (its height follows the number of panels) and the panels set last.
+    stage: Element,
+    panels: usize,
     /// Per panel: the resampled line and the sample dots, until [`Joints::fill`].
     pending: Vec<(Points, Points)>,
 }
@@ -50,8 +53,8 @@ impl Joints {
         plot.canvas.fit();
         Ok(Joints {
             plot,
-            drawn: 0,
-            total: 0,
+            stage: stage.clone(),
+            panels: 0,
             pending: Vec::new(),
         })
     }
@@ -59,10 +62,8 @@ impl Joints {
     /// New axes for `input` (samples) and `output` (resampled), labels in the current
     /// language, the data emptied; their series wait for [`Joints::fill`].
     pub fn set(&mut self, input: &Envelope, output: &Envelope) {
-        let joints = joint_columns(&output.header);
-        self.total = joints.len();
-        let shown: Vec<&String> = joints.iter().take(MAX_PANELS).collect();
-        self.drawn = shown.len();
+        let shown = joint_columns(&output.header);
+        self.set_panels(shown.len());
         // 2 % either side, so the first and last samples are not cut by the frame.
         let x_range = match input.x_span.or(output.x_span) {
             Some((a, b)) if b > a => (a - 0.02 * (b - a), b + 0.02 * (b - a)),
@@ -81,7 +82,7 @@ impl Joints {
                     .map(|p| p.1);
                 PanelSpec {
                     y: AxisSpec {
-                        title: (*name).clone(),
+                        title: name.clone(),
                         unit: String::new(),
                         range: auto_range(ys, 0.08).unwrap_or((-1.0, 1.0)),
                     },
@@ -125,6 +126,26 @@ impl Joints {
             .collect();
         // No refit here: reading the layout right after the page's texts changed forced a
         // full layout (130 ms after a big result); the stage's resize observer refits.
+    }
+
+    /// `n` panels: past [`GROW_FROM`] the stage grows (`--traj-panels`, read by the CSS);
+    /// written only when the count changes (a style change costs a layout of the page).
+    fn set_panels(&mut self, n: usize) {
+        if n == self.panels {
+            return;
+        }
+        self.panels = n;
+        if let Some(stage) = self.stage.dyn_ref::<HtmlElement>() {
+            let style = stage.style();
+            let _ = if n > GROW_FROM {
+                style.set_property("--traj-panels", &n.to_string())
+            } else {
+                style.remove_property("--traj-panels").map(|_| ())
+            };
+        }
+        // How many panels, for tests and assistive tools.
+        let top = &self.plot.canvas.top().canvas;
+        let _ = top.set_attribute("data-panels", &n.to_string());
     }
 
     /// Hands the series kept by [`Joints::set`] to the plot (drawn by the next

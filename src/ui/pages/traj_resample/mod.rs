@@ -6,7 +6,8 @@
 //!
 //! How a run happens: a small input (at most [`PRECHECK_MAX_BYTES`], read and decoded at once,
 //! as the CLI decodes a file) whose run is small runs on the page as soon as it is valid;
-//! anything bigger (up to the recipe's 128 MiB) runs in the kit's Web Worker with progress and
+//! anything bigger (up to the recipe's 128 MiB; a bigger file is refused unread, with the
+//! page's own message in MiB) runs in the kit's Web Worker with progress and
 //! Cancel: the page hands the worker the file itself (never reading a big file's text on its
 //! main thread), and the worker sends back the files and their plot envelopes (min/max per
 //! bucket, [`crate::view::envelope`]), so a million rows draw in one frame. Every problem (a
@@ -29,7 +30,7 @@ use web_sys::{Blob, Element, Event, KeyboardEvent};
 
 use crate::args::Args;
 use crate::error::RecipeError;
-use crate::recipes::traj_resample::{self, MAX_INPUT_BYTES, RESAMPLED_NAME, SAMPLE, SAMPLE_NAME};
+use crate::recipes::traj_resample::{self, RESAMPLED_NAME, SAMPLE, SAMPLE_NAME};
 use crate::recipes::{self, CsvFile, Plan};
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom;
@@ -48,7 +49,7 @@ use crate::ui::schedule::{after_paint, now_ms, Timer};
 use crate::view::command_line::RunArgs;
 use crate::view::envelope::{csv_envelope, Envelope, BUCKETS};
 use crate::view::form::{recipe_fields, runs_while_typing, validate};
-use crate::view::traj_resample::{readings, PageQuery};
+use crate::view::traj_resample::{file_too_large, readings, PageQuery};
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef::of::<TrajResample>("traj-resample", "traj-title", "traj-blurb");
@@ -425,11 +426,8 @@ impl Inner {
         };
         self.forget_file_choice();
         self.cancel_job();
-        if bytes > MAX_INPUT_BYTES {
-            *self.file_problem.borrow_mut() = Some(Message::Recipe(RecipeError::InputTooLarge {
-                bytes,
-                limit: MAX_INPUT_BYTES,
-            }));
+        if let Some((id, args)) = file_too_large(&name, bytes) {
+            *self.file_problem.borrow_mut() = Some(Message::Text { id, args });
             self.validate();
             return;
         }

@@ -4,34 +4,31 @@
 //! t_flat, t_total and the peak velocity reached. vmax and amax are dragged on the velocity
 //! plot (or with the sliders); the CSV is the recipe's (`bsv trapezoid-profile`).
 //!
-//! Components: `plots` (the kit plot, phase bands, the two drag handles), the kit's
-//! [`RecipeControls`] and readouts; the numbers come from `crate::view::trapezoid_profile`.
+//! Components: `plots` (the kit's signal plot, phase bands, the two drag handles) in the kit's
+//! signal-page shell ([`crate::ui::kit::signal_page`]: markup, controls, readouts, URL); the
+//! numbers come from the kernel's samples and `crate::view::trapezoid_profile`.
 
 mod plots;
 
 use std::cell::RefCell;
-use std::rc::{Rc, Weak};
+use std::rc::Weak;
 
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
-use crate::pyfmt::py_float;
 use crate::recipes::trapezoid_profile::{params_from_args, TrapParams, TrapSample, INFO};
-use crate::ui::kit::readouts::{self, Readouts};
-use crate::ui::kit::recipe_controls::{self, record_frame_ms, RecipeControls};
-use crate::ui::kit::scope::Scope;
-use crate::ui::kit::url_state::UrlWriter;
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
-use crate::ui::schedule::now_ms;
+use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
+use crate::ui::kit::signal_page::{Shell, Signal, SignalPage, SignalSpec};
+use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
-use crate::view::trapezoid_profile::{phases, samples};
+use crate::view::trapezoid_profile::{phases, samples, samples_into, Phases};
 
 /// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<TrapPage>("trapezoid-profile", "trap-title", "trap-blurb");
+pub const PAGE: PageDef =
+    PageDef::of::<Signal<TrapPage>>("trapezoid-profile", "trap-title", "trap-blurb");
 
 const P: &str = "trap";
-const PNG: &str = "trap_profile_plots.png";
 const SLIDERS: [Slider; 4] = [
     Slider {
         name: "distance",
@@ -73,220 +70,199 @@ const READOUTS: [(&str, &str); 11] = [
     ("cursor-a", "trap-ro-cursor-a"),
 ];
 
-/// The mounted page.
-pub struct TrapPage(Rc<Inner>);
+/// The page's keys.
+const KEYS: [Shortcut; 3] = [
+    Shortcut {
+        keys: "↑ ↓",
+        message_id: "trap-key-vmax",
+    },
+    Shortcut {
+        keys: "← →",
+        message_id: "trap-key-amax",
+    },
+    Shortcut {
+        keys: "r",
+        message_id: "signals-key-reset",
+    },
+];
 
-struct Inner {
-    controls: RecipeControls<TrapParams>,
+/// The page's state: the profile shown.
+pub struct TrapPage {
+    shell: Shell<TrapParams>,
     plots: RefCell<plots::Plots>,
-    readouts: Readouts,
     triangle_note: Element,
-    /// The parameters and the kernel's samples (`view::trapezoid_profile::samples`).
+    /// The parameters and the kernel's samples (unrounded t).
     profile: RefCell<(TrapParams, Vec<TrapSample>)>,
-    url: RefCell<Option<UrlWriter>>,
-    scope: RefCell<Scope>,
 }
 
-fn markup() -> String {
-    let (form, notice, exports) = recipe_controls::markup(P, &INFO, PNG, "signals-png");
-    let explain: String = ["what", "input", "steps", "expected"]
-        .iter()
-        .map(|k| format!("<h3 data-i18n=\"trap-explain-{k}-title\"></h3><p data-i18n=\"trap-explain-{k}\"></p>"))
-        .collect();
-    format!(
-        "<div class=\"sig\"><header class=\"sig-head\"><h1 data-i18n=\"trap-title\"></h1>\
-         <p class=\"sig-lede\" data-i18n=\"recipe-trapezoid-profile-blurb\"></p>{notice}</header>\
-         <div class=\"sig-top\"><section class=\"sig-card\"><h2 data-i18n=\"trap-plots-title\"></h2>\
-         <div class=\"sig-stage\" data-{P}=\"stage\"><canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas>\
-         <canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas><canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas>\
-         <canvas class=\"sig-layer\" data-testid=\"trapezoid-profile-canvas\" role=\"img\" tabindex=\"0\" \
-         data-i18n-attr=\"aria-label=trap-canvas-label\"></canvas></div>\
-         <p class=\"sig-warning\" data-{P}=\"triangle\" data-testid=\"trapezoid-profile-triangle\" role=\"status\" \
-         data-i18n=\"trap-triangle\" hidden></p><p class=\"sig-note\" data-i18n=\"trap-drag-hint\"></p></section>\
-         <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}</section>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-exports-title\"></h2>{exports}</section>\
-         <section class=\"sig-card sig-explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
-         <h3 data-i18n=\"signals-quirks-title\"></h3><p data-i18n=\"recipe-trapezoid-profile-quirks\"></p></section></div>",
-        ro = readouts::markup(P, &READOUTS),
-        live = readouts::live_markup(P),
-    )
+/// What the page builds before it exists.
+pub struct Parts {
+    plots: plots::Plots,
+    triangle_note: Element,
+    profile: (TrapParams, Vec<TrapSample>),
 }
 
-impl Page for TrapPage {
-    fn mount(ctx: MountCtx) -> Result<TrapPage, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup());
-        dom::relocalize(&root)?;
-        let controls =
-            RecipeControls::mount(&root, P, &INFO, &SLIDERS, &ctx.query, &[], params_from_args)?;
+fn shape_id(ph: &Phases) -> &'static str {
+    if ph.triangle {
+        "trap-shape-triangle"
+    } else {
+        "trap-shape-trapezoid"
+    }
+}
+
+impl SignalPage for TrapPage {
+    type Params = TrapParams;
+    type Parts = Parts;
+    const SPEC: SignalSpec = SignalSpec {
+        prefix: P,
+        info: &INFO,
+        png: "trap_profile_plots.png",
+        layers: 4,
+        sliders: &SLIDERS,
+        readouts: &READOUTS,
+        explain: &["what", "input", "steps", "expected"],
+        keys: &KEYS,
+        own_keys: &[],
+    };
+    const PARSE: Parse<TrapParams> = params_from_args;
+
+    fn stage_markup() -> String {
+        format!(
+            "<p class=\"sig-warning\" data-{P}=\"triangle\" data-testid=\"trapezoid-profile-triangle\" role=\"status\" \
+             data-i18n=\"trap-triangle\" hidden></p><p class=\"sig-note\" data-i18n=\"trap-drag-hint\"></p>"
+        )
+    }
+
+    fn prepare(
+        _ctx: &MountCtx,
+        root: &Element,
+        controls: &RecipeControls<TrapParams>,
+        stage: &Element,
+    ) -> Result<Parts, JsValue> {
         let params = controls.value();
-        let profile = samples(&params);
-        let stage: Element = dom::find(&root, &format!("[data-{P}=\"stage\"]"), P)?;
-        let (plots, readouts) = (plots::Plots::new(&stage)?, Readouts::find(&root)?);
-        let triangle_note = dom::find(&root, &format!("[data-{P}=\"triangle\"]"), P)?;
-        let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
-            let mut scope = Scope::new();
-            let url = UrlWriter::new(&mut scope, me, |p: &Inner| p.controls.url_pairs());
-            Inner {
-                controls,
-                plots: RefCell::new(plots),
-                readouts,
-                triangle_note,
-                profile: RefCell::new((params, profile)),
-                url: RefCell::new(Some(url)),
-                scope: RefCell::new(scope),
-            }
+        Ok(Parts {
+            plots: plots::Plots::new(stage)?,
+            triangle_note: dom::find(root, &format!("[data-{P}=\"triangle\"]"), P)?,
+            profile: (params, samples(&params)),
+        })
+    }
+
+    fn new(shell: Shell<TrapParams>, parts: Parts) -> TrapPage {
+        TrapPage {
+            shell,
+            plots: RefCell::new(parts.plots),
+            triangle_note: parts.triangle_note,
+            profile: RefCell::new(parts.profile),
+        }
+    }
+
+    fn shell(&self) -> &Shell<TrapParams> {
+        &self.shell
+    }
+
+    fn install(&self, me: &Weak<TrapPage>) -> Result<(), JsValue> {
+        self.plots.borrow_mut().attach(me, &self.shell.stage)
+    }
+
+    /// New valid arguments: recompute and redraw now.
+    fn changed(&self, params: TrapParams) {
+        {
+            let mut profile = self.profile.borrow_mut();
+            profile.0 = params;
+            samples_into(&params, &mut profile.1);
+        }
+        let dragging = self.plots.borrow().dragging();
+        self.redraw(!dragging, false);
+        let ph = phases(&params);
+        let (total, peak) = (ph.t_total, ph.v_peak);
+        self.shell.readouts.announce_settled(300.0, move || {
+            ctx::t_strings(
+                "trap-live",
+                &[
+                    ("shape", ctx::t(shape_id(&ph))),
+                    ("total", sig(total, 4)),
+                    ("peak", sig(peak, 4)),
+                ],
+            )
         });
-        inner.install(&Rc::downgrade(&inner), &stage)?;
-        inner.redraw(true, true);
-        Ok(TrapPage(inner))
+        self.shell.url.schedule();
     }
 
-    fn relocalize(&self) {
-        self.0.controls.relocalize();
-        self.0.redraw(true, true);
+    fn redraw_all(&self) {
+        self.plots.borrow_mut().relocalize();
+        self.redraw(true, true);
     }
 
-    fn set_projector(&self, _on: bool) {
-        self.0.redraw(true, true);
-    }
-
-    fn shortcuts(&self) -> Vec<Shortcut> {
-        vec![
-            Shortcut {
-                keys: "↑ ↓",
-                message_id: "trap-key-vmax",
-            },
-            Shortcut {
-                keys: "← →",
-                message_id: "trap-key-amax",
-            },
-            Shortcut {
-                keys: "r",
-                message_id: "signals-key-reset",
-            },
-        ]
+    fn png(&self) {
+        self.plots.borrow().png(TrapPage::SPEC.png);
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        let p = self.0.profile.borrow().0;
+        let p = self.profile.borrow().0;
         let k = if event.shift_key() { 10.0 } else { 1.0 };
         let (vmax, amax) = (p.vmax.abs(), p.amax.abs());
+        let controls = &self.shell.controls;
+        let set = |name: &str, value: f64| controls.set_text(name, &snap(value, 0.01), false);
         let next = match event.key().as_str() {
-            "ArrowUp" => self
-                .0
-                .controls
-                .set_text("vmax", &snap(vmax + 0.01 * k, 0.01), false),
-            "ArrowDown" => {
-                self.0
-                    .controls
-                    .set_text("vmax", &snap((vmax - 0.01 * k).max(0.01), 0.01), false)
-            }
-            "ArrowRight" => self
-                .0
-                .controls
-                .set_text("amax", &snap(amax + 0.01 * k, 0.01), false),
-            "ArrowLeft" => {
-                self.0
-                    .controls
-                    .set_text("amax", &snap((amax - 0.01 * k).max(0.01), 0.01), false)
-            }
-            "r" | "R" => self.0.controls.reset(),
+            "ArrowUp" => set("vmax", vmax + 0.01 * k),
+            "ArrowDown" => set("vmax", (vmax - 0.01 * k).max(0.01)),
+            "ArrowRight" => set("amax", amax + 0.01 * k),
+            "ArrowLeft" => set("amax", (amax - 0.01 * k).max(0.01)),
+            "r" | "R" => controls.reset(),
             _ => return false,
         };
         if let Some(p) = next {
-            self.0.changed(p);
+            self.changed(p);
         }
         true
     }
 }
 
-impl Inner {
-    fn install(&self, me: &Weak<Inner>, stage: &Element) -> Result<(), JsValue> {
-        let mut scope = self.scope.borrow_mut();
-        self.controls.attach(
-            &mut scope,
-            me,
-            |p| &p.controls,
-            Inner::changed,
-            |p| p.plots.borrow().png(PNG),
-        )?;
-        scope.observe_resize(&[stage], me, |p| p.redraw(true, true))?;
-        drop(scope);
-        self.plots.borrow_mut().attach(me, stage)
-    }
-
-    /// New valid arguments: recompute and redraw now.
-    fn changed(&self, params: TrapParams) {
-        let profile = samples(&params);
-        *self.profile.borrow_mut() = (params, profile);
-        let dragging = self.plots.borrow().dragging();
-        self.redraw(!dragging, false);
-        let ph = phases(&params);
-        let shape = if ph.triangle {
-            "trap-shape-triangle"
-        } else {
-            "trap-shape-trapezoid"
-        };
-        self.readouts.announce(&ctx::t_strings(
-            "trap-live",
-            &[
-                ("shape", ctx::t(shape)),
-                ("total", sig(ph.t_total, 4)),
-                ("peak", sig(ph.v_peak, 4)),
-            ],
-        ));
-        if let Some(url) = self.url.borrow().as_ref() {
-            url.schedule();
-        }
-    }
-
+impl TrapPage {
     /// Readouts, the triangle note and the plots; `refit` rescales the axes, `resized` refits
     /// the canvases (size, language, mode).
     fn redraw(&self, refit: bool, resized: bool) {
-        let t0 = now_ms();
         let (params, profile) = &*self.profile.borrow();
         let ph = phases(params);
-        let ro = &self.readouts;
-        let show = |key: &str, x: f64| ro.set_with_value(key, &sig(x, 4), &py_float(x));
-        let shape = if ph.triangle {
-            "trap-shape-triangle"
-        } else {
-            "trap-shape-trapezoid"
-        };
+        let ro = &self.shell.readouts;
         ro.set_with_value(
             "shape",
-            &ctx::t(shape),
+            &ctx::t(shape_id(&ph)),
             if ph.triangle { "triangle" } else { "trapezoid" },
         );
-        show("t-acc", ph.t_acc);
-        show("t-flat", ph.t_flat);
-        show("t-total", ph.t_total);
-        show("v-peak", ph.v_peak);
+        self.shell.show_numbers(&[
+            ("t-acc", ph.t_acc),
+            ("t-flat", ph.t_flat),
+            ("t-total", ph.t_total),
+            ("v-peak", ph.v_peak),
+        ]);
         if let Some(last) = profile.last() {
-            show("final-s", last.s);
+            self.shell.show_number("final-s", last.s, 4);
         }
         let rows = profile.len().to_string();
         ro.set_with_value("rows", &rows, &rows);
         dom::show(&self.triangle_note, ph.triangle);
-        self.plots
+        let sample = self
+            .plots
             .borrow_mut()
             .show(params, profile, &ph, refit, resized);
-        self.show_cursor();
-        record_frame_ms(now_ms() - t0);
+        self.show_cursor_readouts(sample);
     }
 
     /// The cursor on the plots and its readouts: the CSV row at the hovered time.
     fn show_cursor(&self) {
         let sample = self.plots.borrow_mut().cursor(&self.profile.borrow().1);
-        let Some(s) = sample else {
-            return;
-        };
-        let show = |key: &str, x: f64| self.readouts.set_with_value(key, &sig(x, 4), &py_float(x));
-        show("cursor-t", s.t);
-        show("cursor-s", s.s);
-        show("cursor-v", s.v);
-        show("cursor-a", s.a);
+        self.show_cursor_readouts(sample);
+    }
+
+    fn show_cursor_readouts(&self, sample: Option<TrapSample>) {
+        if let Some(s) = sample {
+            self.shell.show_numbers(&[
+                ("cursor-t", s.t),
+                ("cursor-s", s.s),
+                ("cursor-v", s.v),
+                ("cursor-a", s.a),
+            ]);
+        }
     }
 }

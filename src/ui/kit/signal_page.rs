@@ -1,0 +1,413 @@
+//! The shell of a signal page: a page that runs one recipe live and plots its table
+//! (`#/cubic-path`, `#/pid-step`, `#/trapezoid-profile`). One skeleton for all of them: the
+//! head (title, the recipe's blurb, the URL notice), the plot card (a stage of layered
+//! canvases, whatever the page puts under it), the readouts card, the parameters card (the
+//! kit's [`RecipeControls`]: form, sliders, URL, exports), the exports card and the
+//! explanation (the page's sections, then the recipe's quirks); one mount (markup, language,
+//! controls, the stage, the readouts, the URL writer and the scope); the same answers to a
+//! language or projector switch and to a resize (everything redrawn).
+//!
+//! A page says what differs in a [`SignalPage`]: its [`SignalSpec`] (prefix, recipe, sliders,
+//! readouts, explanation sections), its extra markup, what it builds before it exists
+//! ([`SignalPage::prepare`]), its listeners, its `changed` and `redraw_all`; it registers as
+//! `PageDef::of::<Signal<MyPage>>(…)`. Its plot is a [`SignalPlot`]: the kit plot with the
+//! drag handles, the hover cursor and the PNG every signal page has.
+//!
+//! Fluent ids it reads: `<prefix>-title`, `<prefix>-plots-title`, `<prefix>-canvas-label`,
+//! `<prefix>-explain-<section>` and `<prefix>-explain-<section>-title`,
+//! `recipe-<recipe id>-blurb`, the recipe's quirks id and the `signals-*` card titles.
+//! Hooks: `data-testid="<recipe id>-canvas"` on the top canvas, `data-<prefix>="stage"`.
+
+use std::cell::RefCell;
+use std::rc::{Rc, Weak};
+
+use glam::DVec2;
+use wasm_bindgen::JsValue;
+use web_sys::{CanvasRenderingContext2d, Element, KeyboardEvent};
+
+use super::canvas::Ink;
+use super::drag::{Drag, DragEvent, PointerKind};
+use super::plot::{AxisSpec, Mark, Plot, SeriesSpec};
+use super::readouts::{self, Readouts};
+use super::recipe_controls::{self, record_frame_ms, Parse, RecipeControls};
+use super::scope::Scope;
+use super::url_state::UrlWriter;
+use crate::pyfmt::py_float;
+use crate::recipes::RecipeInfo;
+use crate::ui::page::{MountCtx, Page, Shortcut};
+use crate::ui::schedule::now_ms;
+use crate::ui::{ctx, dom};
+use crate::view::drag::HandleShape;
+use crate::view::signal::{nearest_row, sig, Slider};
+
+/// What a signal page is, as the shell needs it.
+pub struct SignalSpec {
+    /// Prefix of its Fluent ids, classes and `data-<prefix>` roles (`cubic`).
+    pub prefix: &'static str,
+    /// The recipe it runs.
+    pub info: &'static RecipeInfo,
+    /// The file the PNG button saves.
+    pub png: &'static str,
+    /// Canvases in the stage: 3 (axes, data, cursor) or 4 (axes, data, marks, cursor).
+    pub layers: usize,
+    pub sliders: &'static [Slider],
+    /// `(data-readout, label id)`.
+    pub readouts: &'static [(&'static str, &'static str)],
+    /// The explanation's sections (`<prefix>-explain-<section>`), before the quirks.
+    pub explain: &'static [&'static str],
+    /// URL keys of the page's own (not arguments, not reported as ignored).
+    pub own_keys: &'static [&'static str],
+    /// The page's keys, for the `?` overlay (exactly those [`SignalPage::on_key`] takes).
+    pub keys: &'static [Shortcut],
+}
+
+/// The parts every signal page has once it is mounted.
+pub struct Shell<T> {
+    pub root: Element,
+    pub controls: RecipeControls<T>,
+    /// The element holding the plot's canvases.
+    pub stage: Element,
+    pub readouts: Readouts,
+    pub url: UrlWriter,
+    scope: RefCell<Scope>,
+}
+
+impl<T: Clone + 'static> Shell<T> {
+    /// Shows number `x` under readout `key`: `digits` significant digits, the exact value in
+    /// `data-value`.
+    pub fn show_number(&self, key: &str, x: f64, digits: usize) {
+        self.readouts
+            .set_with_value(key, &sig(x, digits), &py_float(x));
+    }
+
+    /// [`Shell::show_number`] of each `(key, x)`, 4 significant digits.
+    pub fn show_numbers(&self, values: &[(&str, f64)]) {
+        for (key, x) in values {
+            self.show_number(key, *x, 4);
+        }
+    }
+
+    /// The element of role `data-<prefix>="<role>"` (markup the page added).
+    pub fn role(&self, prefix: &str, role: &str) -> Result<Element, JsValue> {
+        dom::find(&self.root, &format!("[data-{prefix}=\"{role}\"]"), prefix)
+    }
+
+    /// Runs `f` with the page's scope (to add listeners).
+    pub fn with_scope<R>(&self, f: impl FnOnce(&mut Scope) -> R) -> R {
+        f(&mut self.scope.borrow_mut())
+    }
+}
+
+/// A page built on the shell.
+pub trait SignalPage: Sized + 'static {
+    /// The recipe's parameters.
+    type Params: Clone + 'static;
+    /// What the page builds before it exists ([`SignalPage::prepare`]).
+    type Parts;
+    const SPEC: SignalSpec;
+    /// The recipe's parse + validate.
+    const PARSE: Parse<Self::Params>;
+
+    /// Markup under the stage, in the plot card (notes, warnings, checkboxes).
+    fn stage_markup() -> String;
+    /// Markup under the readouts.
+    fn readouts_markup() -> String {
+        String::new()
+    }
+    /// The plot and whatever else the page needs, from the mounted markup and controls.
+    fn prepare(
+        ctx: &MountCtx,
+        root: &Element,
+        controls: &RecipeControls<Self::Params>,
+        stage: &Element,
+    ) -> Result<Self::Parts, JsValue>;
+    /// The page, from the shell and its parts.
+    fn new(shell: Shell<Self::Params>, parts: Self::Parts) -> Self;
+    fn shell(&self) -> &Shell<Self::Params>;
+    /// Listeners of the page's own (the plot's drags, checkboxes), once it exists.
+    fn install(&self, me: &Weak<Self>) -> Result<(), JsValue>;
+    /// New valid arguments: recompute and redraw now (within the input's frame).
+    fn changed(&self, params: Self::Params);
+    /// Everything again (mount, size, language, mode).
+    fn redraw_all(&self);
+    /// Saves the plot as [`SignalSpec::png`].
+    fn png(&self);
+    /// The URL pairs (the arguments that differ from the defaults, by default).
+    fn query(&self) -> Vec<(String, String)> {
+        self.shell().controls.url_pairs()
+    }
+    fn on_key(&self, event: &KeyboardEvent) -> bool;
+}
+
+/// The markup of page `S`.
+fn markup<S: SignalPage>() -> String {
+    let spec = &S::SPEC;
+    let (p, id) = (spec.prefix, spec.info.id);
+    let (form, notice, exports) = recipe_controls::markup(p, spec.info, spec.png, "signals-png");
+    let explain: String = spec
+        .explain
+        .iter()
+        .map(|k| {
+            format!(
+                "<h3 data-i18n=\"{p}-explain-{k}-title\"></h3><p data-i18n=\"{p}-explain-{k}\"></p>"
+            )
+        })
+        .collect();
+    let under = "<canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas>"
+        .repeat(spec.layers.saturating_sub(1));
+    format!(
+        "<div class=\"sig\"><header class=\"sig-head\"><h1 data-i18n=\"{p}-title\"></h1>\
+         <p class=\"sig-lede\" data-i18n=\"recipe-{id}-blurb\"></p>{notice}</header>\
+         <div class=\"sig-top\"><section class=\"sig-card\"><h2 data-i18n=\"{p}-plots-title\"></h2>\
+         <div class=\"sig-stage\" data-{p}=\"stage\">{under}<canvas class=\"sig-layer\" \
+         data-testid=\"{id}-canvas\" role=\"img\" tabindex=\"0\" data-i18n-attr=\"aria-label={p}-canvas-label\"></canvas></div>\
+         {stage_extra}</section>\
+         <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}{ro_extra}</section>\
+         <section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\
+         <section class=\"sig-card\"><h2 data-i18n=\"signals-exports-title\"></h2>{exports}</section>\
+         <section class=\"sig-card sig-explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
+         <h3 data-i18n=\"signals-quirks-title\"></h3><p data-i18n=\"{quirks}\"></p></section></div>",
+        stage_extra = S::stage_markup(),
+        ro = readouts::markup(p, spec.readouts),
+        live = readouts::live_markup(p),
+        ro_extra = S::readouts_markup(),
+        quirks = spec.info.quirks_id,
+    )
+}
+
+fn controls_of<S: SignalPage>(page: &S) -> &RecipeControls<S::Params> {
+    &page.shell().controls
+}
+
+/// A change of the arguments, timed (bench builds keep the time: recompute + redraw).
+fn timed_change<S: SignalPage>(page: &S, params: S::Params) {
+    let t0 = now_ms();
+    page.changed(params);
+    record_frame_ms(now_ms() - t0);
+}
+
+/// A mounted signal page.
+pub struct Signal<S>(Rc<S>);
+
+impl<S: SignalPage> Signal<S> {
+    /// The page (for keys that change the arguments: call [`SignalPage::changed`]).
+    pub fn page(&self) -> &S {
+        &self.0
+    }
+}
+
+impl<S: SignalPage> Page for Signal<S> {
+    fn mount(ctx: MountCtx) -> Result<Signal<S>, JsValue> {
+        let spec = &S::SPEC;
+        let p = spec.prefix;
+        let root = ctx.root.clone();
+        root.set_inner_html(&markup::<S>());
+        dom::relocalize(&root)?;
+        let controls = RecipeControls::mount(
+            &root,
+            p,
+            spec.info,
+            spec.sliders,
+            &ctx.query,
+            spec.own_keys,
+            S::PARSE,
+        )?;
+        let stage: Element = dom::find(&root, &format!("[data-{p}=\"stage\"]"), p)?;
+        let readouts = Readouts::find(&root)?;
+        let parts = S::prepare(&ctx, &root, &controls, &stage)?;
+        let page = Rc::new_cyclic(|me: &Weak<S>| {
+            let mut scope = Scope::new();
+            let url = UrlWriter::new(&mut scope, me, S::query);
+            let shell = Shell {
+                root,
+                controls,
+                stage,
+                readouts,
+                url,
+                scope: RefCell::new(scope),
+            };
+            S::new(shell, parts)
+        });
+        let me = Rc::downgrade(&page);
+        {
+            let shell = page.shell();
+            let mut scope = shell.scope.borrow_mut();
+            shell
+                .controls
+                .attach(&mut scope, &me, controls_of::<S>, timed_change::<S>, S::png)?;
+            scope.observe_resize(&[&shell.stage], &me, S::redraw_all)?;
+        }
+        page.install(&me)?;
+        let t0 = now_ms();
+        page.redraw_all();
+        record_frame_ms(now_ms() - t0);
+        Ok(Signal(page))
+    }
+
+    fn relocalize(&self) {
+        self.0.shell().controls.relocalize();
+        self.0.redraw_all();
+    }
+
+    fn set_projector(&self, _on: bool) {
+        self.0.redraw_all();
+    }
+
+    fn shortcuts(&self) -> Vec<Shortcut> {
+        S::SPEC.keys.to_vec()
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        let t0 = now_ms();
+        let took = self.0.on_key(event);
+        if took {
+            record_frame_ms(now_ms() - t0);
+        }
+        took
+    }
+}
+
+/// An axis: title and unit from Fluent (an empty unit id: no unit).
+pub fn axis(title_id: &str, unit_id: &str, range: (f64, f64)) -> AxisSpec {
+    AxisSpec {
+        title: ctx::t(title_id),
+        unit: if unit_id.is_empty() {
+            String::new()
+        } else {
+            ctx::t(unit_id)
+        },
+        range,
+    }
+}
+
+/// A series named by Fluent id `name_id`.
+pub fn series(name_id: &str, rgb: (u8, u8, u8), mark: Mark, width: f64, alpha: f64) -> SeriesSpec {
+    SeriesSpec {
+        name: ctx::t(name_id),
+        rgb,
+        mark,
+        width,
+        alpha,
+    }
+}
+
+/// Radius of a handle's hit area, CSS px (a finger's width).
+const HANDLE_REACH_PX: f64 = 22.0;
+
+/// The plot of a signal page: the kit [`Plot`] of the stage, its drags (handles `H`; `()`
+/// for a plot with none), whether one is under way (the axes keep their ranges meanwhile),
+/// and the hovered time of the cursor.
+pub struct SignalPlot<H: Copy + PartialEq + 'static> {
+    pub plot: Plot,
+    drag: Option<Drag<H>>,
+    /// Whether a handle is being dragged.
+    pub dragging: bool,
+    /// The hovered time (`None`: none yet, the cursor stands mid-run).
+    pub cursor_t: Option<f64>,
+}
+
+impl<H: Copy + PartialEq + 'static> SignalPlot<H> {
+    /// The plot of `stage`'s canvases.
+    pub fn new(stage: &Element) -> Result<SignalPlot<H>, JsValue> {
+        Ok(SignalPlot {
+            plot: Plot::new(stage)?,
+            drag: None,
+            dragging: false,
+            cursor_t: None,
+        })
+    }
+
+    /// Listens for drags, hovers and taps on `stage`: `hit(page, at, kind)` says which handle
+    /// a press grabs (positions in CSS px of the top canvas), `on(page, event)` hears them.
+    pub fn attach<P: 'static>(
+        &mut self,
+        stage: &Element,
+        me: &Weak<P>,
+        hit: fn(&P, DVec2, PointerKind) -> Option<H>,
+        on: fn(&P, DragEvent<H>),
+    ) -> Result<(), JsValue> {
+        let surface = self.plot.canvas.top().canvas.clone();
+        let (hit_me, on_me) = (me.clone(), me.clone());
+        self.drag = Some(Drag::attach(
+            stage,
+            &surface,
+            move |at, kind| hit(&*hit_me.upgrade()?, at, kind),
+            move |ev| {
+                if let Some(page) = on_me.upgrade() {
+                    on(&page, ev);
+                }
+            },
+        )?);
+        Ok(())
+    }
+
+    /// The hovered time at CSS px `at` (on the shared time axis), remembered for the cursor.
+    pub fn hover(&mut self, at: DVec2) -> bool {
+        let t = self.plot.from_px(0, at).map(|(t, _)| t);
+        if t.is_some() {
+            self.cursor_t = t;
+        }
+        t.is_some()
+    }
+
+    /// The row of `rows` under the cursor (mid-run, `mid`, before any hover); the cursor is
+    /// drawn there.
+    pub fn cursor_row<'a, T>(
+        &mut self,
+        rows: &'a [T],
+        mid: f64,
+        t_of: impl Fn(&T) -> f64,
+    ) -> Option<&'a T> {
+        let row = nearest_row(rows, self.cursor_t.unwrap_or(mid), &t_of);
+        self.plot.set_cursor(row.map(&t_of));
+        row
+    }
+
+    /// The handles at `centres` (CSS px), for the drags: a finger-wide circle each; their
+    /// places are also written as `data-<name>-x` / `-y` on the top canvas (for tests and
+    /// assistive tools), `names` in the order of `centres`.
+    pub fn set_handles(&self, names: &[&str], centres: &[DVec2]) {
+        if let Some(drag) = &self.drag {
+            let shapes: Vec<HandleShape> = centres
+                .iter()
+                .map(|&centre| HandleShape::Circle {
+                    centre,
+                    radius: HANDLE_REACH_PX,
+                })
+                .collect();
+            drag.set_handles(&shapes);
+        }
+        let top = &self.plot.canvas.top().canvas;
+        for (name, at) in names.iter().zip(centres) {
+            let _ = top.set_attribute(&format!("data-{name}-x"), &format!("{:.1}", at.x));
+            let _ = top.set_attribute(&format!("data-{name}-y"), &format!("{:.1}", at.y));
+        }
+    }
+
+    /// Saves the plot's layers, on white, as `file`.
+    pub fn png(&self, file: &str) {
+        if let Ok(canvas) = self.plot.canvas.flatten("#ffffff") {
+            let _ = super::png::download(&canvas, file);
+        }
+    }
+}
+
+/// Draws a drag handle (an orange ring) at `at` on `c`.
+pub fn draw_handle(c: &CanvasRenderingContext2d, at: DVec2, ink: Ink) {
+    c.set_fill_style_str("rgba(194, 65, 12, 0.18)");
+    c.set_stroke_style_str("#c2410c");
+    c.set_line_width(2.0 * ink.line);
+    c.begin_path();
+    let _ = c.arc(at.x, at.y, 9.0 * ink.line, 0.0, std::f64::consts::TAU);
+    c.fill();
+    c.stroke();
+}
+
+/// How far from a handle a press still grabs it, CSS px (wider for touch and pen).
+pub fn reach(kind: PointerKind) -> f64 {
+    if kind.is_coarse() {
+        24.0
+    } else {
+        12.0
+    }
+}
