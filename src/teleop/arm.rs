@@ -62,8 +62,11 @@ impl Default for ArmParams {
 /// A task-space pose in the plane: tip position (m) and gripper angle from +x (rad).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Pose2 {
+    /// Tip x, m.
     pub x: f64,
+    /// Tip z (up), m.
     pub z: f64,
+    /// Gripper angle from +x, rad (`q1 + q2 + q3`).
     pub phi: f64,
 }
 

@@ -81,6 +81,7 @@ impl IkMethod {
 /// The controller's method and parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ControlParams {
+    /// How a task step becomes a joint step.
     pub method: IkMethod,
     /// `dls` damping λ (Isaac Lab's `lambda_val`, default 0.01).
     pub lambda: f64,

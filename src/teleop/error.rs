@@ -8,6 +8,8 @@ use crate::pyfmt::human;
 /// What [`crate::teleop::SceneConfig::validate`] or [`crate::teleop::parse_episode_csv`]
 /// rejects. `field` is the [`crate::teleop::SceneConfig`] field name (`latency_steps`,
 /// `pos_sensitivity`, `targets` …), which is also the key of the episode CSV's header row.
+// The fields are what each variant's doc names.
+#[allow(missing_docs)]
 #[non_exhaustive]
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum TeleopError {

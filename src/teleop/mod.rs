@@ -24,6 +24,8 @@
 //! clock, and no hash-map order is involved, so a start state plus a command stream replays
 //! exactly.
 
+#![warn(missing_docs)]
+
 pub mod arm;
 pub mod control;
 pub mod episode;
