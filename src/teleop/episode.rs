@@ -94,47 +94,6 @@ impl Episode {
     }
 }
 
-/// `count` equal commands in a row: the compact form of a command stream (a held key gives
-/// runs of hundreds of steps), for storing sessions where space is short (a browser's
-/// `localStorage`). [`Episode::record`] rebuilds the records from the config and the
-/// expanded commands, bit for bit.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct CommandRun {
-    /// How many steps in a row.
-    pub count: u32,
-    /// The command of each of them.
-    pub cmd: Command,
-}
-
-/// The command stream as runs of equal commands (compared bit for bit, so `-0.0` and `0.0`
-/// stay apart).
-pub fn command_runs(commands: &[Command]) -> Vec<CommandRun> {
-    let same = |a: &Command, b: &Command| {
-        a.dx.to_bits() == b.dx.to_bits()
-            && a.dz.to_bits() == b.dz.to_bits()
-            && a.dphi.to_bits() == b.dphi.to_bits()
-            && a.gripper_closed == b.gripper_closed
-    };
-    let mut runs: Vec<CommandRun> = Vec::new();
-    for cmd in commands {
-        match runs.last_mut() {
-            Some(run) if run.count < u32::MAX && same(&run.cmd, cmd) => run.count += 1,
-            _ => runs.push(CommandRun {
-                count: 1,
-                cmd: *cmd,
-            }),
-        }
-    }
-    runs
-}
-
-/// The command stream of [`command_runs`] back.
-pub fn expand_runs(runs: &[CommandRun]) -> Vec<Command> {
-    runs.iter()
-        .flat_map(|r| std::iter::repeat_n(r.cmd, r.count as usize))
-        .collect()
-}
-
 /// A [`Sim`] that records every step into an [`Episode`].
 #[derive(Debug, Clone)]
 pub struct EpisodeRecorder {
@@ -1025,38 +984,6 @@ mod tests {
         );
         let bad = text.replace("# method,dls", "# method,svd");
         assert_eq!(parse_episode_csv(&bad).unwrap_err().field(), Some("method"));
-    }
-
-    #[test]
-    fn command_runs_rebuild_the_episode_exactly() {
-        let episode = flown(noisy_reach());
-        let runs = command_runs(&episode.commands);
-        assert_eq!(expand_runs(&runs), episode.commands);
-        let rebuilt = Episode::record(episode.config.clone(), &expand_runs(&runs)).unwrap();
-        assert_eq!(episode_csv(&rebuilt), episode_csv(&episode));
-        // Held keys: long runs.
-        let keys: Vec<Command> = [(120, 1.0, 0.0), (80, 0.0, -1.0), (200, 0.0, 0.0)]
-            .iter()
-            .flat_map(|&(n, dx, dz)| {
-                std::iter::repeat_n(
-                    Command {
-                        dx,
-                        dz,
-                        ..Command::default()
-                    },
-                    n,
-                )
-            })
-            .collect();
-        assert_eq!(command_runs(&keys).len(), 3);
-        let idle = [Command::default(); 500];
-        assert_eq!(
-            command_runs(&idle),
-            vec![CommandRun {
-                count: 500,
-                cmd: Command::default()
-            }]
-        );
     }
 
     #[test]
