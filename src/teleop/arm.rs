@@ -13,6 +13,8 @@
 //! `|det J| = sqrt(det(J Jᵀ)) = l1 l2 |sin q2|`, computed by [`crate::planar2r`] exactly as
 //! the IK page computes it, so both pages show the same digits for the same `q1, q2`.
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 /// Link lengths, joint limits and the capsule radius of the links.

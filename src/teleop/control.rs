@@ -30,6 +30,8 @@
 //! Jacobi rotations of `J Jᵀ` (a fixed number of sweeps): arithmetic and `sqrt` only, so the
 //! same bits natively and in wasm.
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 /// The IK method of [`ControlParams`], with the ids Isaac Lab uses (`adaptive-dls` for its

@@ -13,6 +13,8 @@
 //! the same bits; booleans are `0`/`1`; `event` is the step's events as
 //! [`Event::text`] joined by `;` (empty when none).
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 use super::control::{ControlParams, IkMethod};

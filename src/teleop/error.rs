@@ -1,6 +1,8 @@
 //! The one error type of the teleop kernel: a configuration field out of range or an episode
 //! file that cannot be read, each naming the field, or the row and column.
 
+#![warn(missing_docs)]
+
 use std::fmt;
 
 use crate::pyfmt::human;

@@ -16,6 +16,8 @@
 //!   confirmed it (so the `success_steps` dwell is not counted); `id_bits` is the mean `ID_i`
 //!   and `throughput_bits_per_s` the mean of `ID_i / MT_i` (ISO 9241-9's "mean of means").
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 use super::arm::{fk, manipulability};

@@ -3,6 +3,8 @@
 //! tests, the benchmark, the wasm parity check and demonstrations. It reads only the
 //! simulation's state, so the command stream it produces is as deterministic as the scene.
 
+#![warn(missing_docs)]
+
 use super::arm::fk;
 use super::episode::{Episode, EpisodeRecorder};
 use super::error::TeleopError;

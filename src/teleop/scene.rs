@@ -11,6 +11,8 @@
 //! | pick and place | `pick-place` | the block released, at rest on the table, its centre in the goal's x range |
 //! | pick and place around an obstacle | `pick-place-obstacle` | the same, with a wall between block and goal |
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 use super::arm::{fk, ArmParams, Pose2};

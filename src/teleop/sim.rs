@@ -30,6 +30,8 @@
 //! Events of a condition that lasts (limits, collisions, singularity) are reported once, when
 //! the condition starts.
 
+#![warn(missing_docs)]
+
 use std::collections::VecDeque;
 
 use serde::{Deserialize, Serialize};
