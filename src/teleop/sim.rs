@@ -1,0 +1,1243 @@
+//! One 10 ms step of the Robot Pilot scene, and the state it changes.
+//!
+//! A step, in order:
+//! 1. the operator's [`Command`] (axes clamped to [−1, 1], NaN → 0) enters the latency queue
+//!    and the command `latency_steps` steps old leaves it (the queue starts full of idle
+//!    commands with the start gripper state), so a command acts exactly
+//!    `latency_steps` steps after it was given;
+//! 2. with `noise_sigma > 0`, `sigma × N(0, 1)` is added to each of its three axes (three
+//!    draws per step, dx then dz then dphi, from `np.random.default_rng(noise_seed)`);
+//! 3. the task step `Δx = (dx v, dz v, dphi ω) × DT` (`v`, `ω`: the speeds of
+//!    [`SceneConfig::tip_speed_m_per_s`] and [`SceneConfig::turn_speed_rad_per_s`]) becomes a
+//!    joint step by the IK method ([`super::control`]);
+//! 4. joint speed limits scale the whole step down (its direction is kept) and
+//!    [`Event::SpeedLimit`] names the joint that limited it; joint position limits then clamp
+//!    each joint ([`Event::JointLimit`]);
+//! 5. if the new pose puts a link, a finger or the carried block into the table or an
+//!    obstacle, the arm does not move this step ([`Event::Collision`]): contact stops it, as a
+//!    real arm's safety stop would;
+//! 6. the gripper follows the command: closing with the block's centre within
+//!    `GRASP_TOLERANCE_M` of the tip and the fingers within `GRASP_ANGLE_TOLERANCE_RAD` of a
+//!    pair of faces grasps it ([`Event::Grasp`]), closing on nothing is [`Event::GraspMiss`];
+//!    opening lets go ([`Event::Release`], and [`Event::Drop`] when the block's centre is not
+//!    over the goal region and its bottom is more than `PLACE_HEIGHT_M` above the surface
+//!    under it: a block set down outside the goal is a goal miss, not a drop); a released block falls (g = 9.81 m/s², explicit Euler) onto the
+//!    table or an obstacle top and settles face down;
+//! 7. the task's goal condition is counted ([`SceneConfig::success_steps`] consecutive steps
+//!    → [`Event::TargetReached`] / [`Event::Success`]), then the time box
+//!    ([`Event::Timeout`]).
+//!
+//! Events of a condition that lasts (limits, collisions, singularity) are reported once, when
+//! the condition starts.
+
+#![warn(missing_docs)]
+
+use std::collections::VecDeque;
+
+use serde::{Deserialize, Serialize};
+
+use super::arm::{fk, jacobian, manipulability};
+use super::control::ik_step;
+use super::error::TeleopError;
+use super::scene::{
+    arm_capsules, first_contact, point_box_distance, Box2, Capsule, Layout, SceneConfig,
+    SceneGeometry, Segment, TargetStatus, TargetView, Task, BLOCK_HALF, CLOSED_HALF_WIDTH,
+    CONTACT_SLOP_M, GRASP_ANGLE_TOLERANCE_RAD, GRASP_TOLERANCE_M, OPEN_HALF_WIDTH, TABLE_Z,
+};
+use crate::rng::NumpyRng;
+
+/// Gravity for a released block, m/s².
+pub const GRAVITY: f64 = 9.81;
+/// A joint that hit a position limit reports [`Event::JointLimit`] again only after it has
+/// moved this far from the limit, rad (so pressing against a limit is one stop, however the
+/// IK jitters along it).
+pub const LIMIT_REARM_RAD: f64 = 0.01;
+/// A block let go with its bottom at most this high above the surface under it is set
+/// down, not dropped: outside the goal that is a goal miss (see [`super::proposed_label`]),
+/// not [`Event::Drop`], m.
+pub const PLACE_HEIGHT_M: f64 = 0.005;
+/// Below this manipulability, relative to `l1 l2` (|sin q2| < 0.1, q2 within 5.7° of
+/// stretched out or folded), a commanded motion reports [`Event::Singularity`].
+pub const SINGULAR_RATIO: f64 = 0.1;
+
+/// The operator's input for one 10 ms step: normalised device output, each axis in [−1, 1]
+/// (a held key is ±1, a stick its deflection after the dead zone), before sensitivity. The
+/// simulation turns it into motion: `dx × pos_sensitivity × POS_SPEED_PER_SENSITIVITY` m/s
+/// along x (so Isaac Lab's keyboard default 0.4 moves the tip at 0.1 m/s), the same for z,
+/// `dphi × rot_sensitivity × ROT_SPEED_PER_SENSITIVITY` rad/s for the gripper angle
+/// ([`super::scene`]). `gripper_closed` is the gripper's commanded state (K toggles it).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Command {
+    /// Tip motion along x (W/S, left stick x), [−1, 1].
+    pub dx: f64,
+    /// Tip motion along z (Q/E, right stick vertical), [−1, 1].
+    pub dz: f64,
+    /// Gripper angle motion (T/G, D-pad up/down), [−1, 1].
+    pub dphi: f64,
+    /// The commanded gripper state.
+    pub gripper_closed: bool,
+}
+
+impl Command {
+    /// No motion, gripper in the given state.
+    pub fn idle(gripper_closed: bool) -> Command {
+        Command {
+            dx: 0.0,
+            dz: 0.0,
+            dphi: 0.0,
+            gripper_closed,
+        }
+    }
+
+    /// Axes clamped to [−1, 1], NaN read as 0.
+    pub fn sanitized(&self) -> Command {
+        let axis = |v: f64| if v.is_nan() { 0.0 } else { v.clamp(-1.0, 1.0) };
+        Command {
+            dx: axis(self.dx),
+            dz: axis(self.dz),
+            dphi: axis(self.dphi),
+            gripper_closed: self.gripper_closed,
+        }
+    }
+
+    /// Whether any axis asks for motion.
+    pub fn moves(&self) -> bool {
+        self.dx != 0.0 || self.dz != 0.0 || self.dphi != 0.0
+    }
+}
+
+/// Where the block sits in the gripper while held: its centre in the gripper's frame
+/// (along, across the gripper axis) and its angle relative to the gripper.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct GraspFrame {
+    /// Along the gripper axis from the tip, m.
+    pub along: f64,
+    /// Across the gripper axis (to its left), m.
+    pub across: f64,
+    /// Block angle minus gripper angle, rad.
+    pub angle: f64,
+}
+
+/// The block: its centre, angle, and whether it is held, falling or at rest.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Block {
+    /// Centre x, m.
+    pub x: f64,
+    /// Centre z, m.
+    pub z: f64,
+    /// Angle of its faces from the axes, rad (0 at rest).
+    pub angle: f64,
+    /// Vertical speed while falling, m/s.
+    pub vz: f64,
+    /// In the gripper.
+    pub held: bool,
+    /// At rest on the table or an obstacle.
+    pub resting: bool,
+    /// Where it sits in the gripper (while held).
+    pub grasp: Option<GraspFrame>,
+}
+
+/// How an episode ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Outcome {
+    /// The goal condition held long enough.
+    Success,
+    /// The time box ran out.
+    Timeout,
+}
+
+impl Outcome {
+    /// `success`, `timeout`.
+    pub fn id(self) -> &'static str {
+        match self {
+            Outcome::Success => "success",
+            Outcome::Timeout => "timeout",
+        }
+    }
+}
+
+/// Something the step detected. Links and joints count from 1; link 4 in a collision is the
+/// carried block; target indices count from 0 (as [`State::target_index`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Event {
+    /// The gripper closed on the block.
+    Grasp,
+    /// The gripper closed on nothing.
+    GraspMiss,
+    /// The gripper opened and let the block go.
+    Release,
+    /// The block fell from the gripper outside the goal.
+    Drop,
+    /// A motion was stopped by contact of this link (1–3; 4 = the carried block).
+    Collision {
+        /// 1–3 a link (the fingers are link 3), 4 the carried block.
+        link: u8,
+    },
+    /// This joint (1–3) hit a position limit.
+    JointLimit {
+        /// 1 shoulder, 2 elbow, 3 wrist.
+        joint: u8,
+    },
+    /// This joint's (1–3) speed limit cut the step.
+    SpeedLimit {
+        /// 1 shoulder, 2 elbow, 3 wrist.
+        joint: u8,
+    },
+    /// Motion was commanded near a singularity (or the IK could not solve).
+    Singularity,
+    /// Reach target `index` (from 0) was held long enough.
+    TargetReached {
+        /// Index into the task's targets, from 0.
+        index: usize,
+    },
+    /// The episode succeeded.
+    Success,
+    /// The time box ran out.
+    Timeout,
+}
+
+impl Event {
+    /// `grasp`, `grasp-miss`, `release`, `drop`, `collision`, `joint-limit`, `speed-limit`,
+    /// `singularity`, `target-reached`, `success`, `timeout`.
+    pub fn id(&self) -> &'static str {
+        match self {
+            Event::Grasp => "grasp",
+            Event::GraspMiss => "grasp-miss",
+            Event::Release => "release",
+            Event::Drop => "drop",
+            Event::Collision { .. } => "collision",
+            Event::JointLimit { .. } => "joint-limit",
+            Event::SpeedLimit { .. } => "speed-limit",
+            Event::Singularity => "singularity",
+            Event::TargetReached { .. } => "target-reached",
+            Event::Success => "success",
+            Event::Timeout => "timeout",
+        }
+    }
+
+    /// The link, joint or target index the event names, if any.
+    pub fn arg(&self) -> Option<usize> {
+        match self {
+            Event::Collision { link } => Some(usize::from(*link)),
+            Event::JointLimit { joint } | Event::SpeedLimit { joint } => Some(usize::from(*joint)),
+            Event::TargetReached { index } => Some(*index),
+            _ => None,
+        }
+    }
+
+    /// The event as the episode CSV writes it: the id, then `:` and the argument if any
+    /// (`collision:2`, `target-reached:0`).
+    pub fn text(&self) -> String {
+        match self.arg() {
+            Some(arg) => format!("{}:{arg}", self.id()),
+            None => self.id().to_string(),
+        }
+    }
+
+    /// Reads [`Self::text`] back.
+    pub fn from_text(text: &str) -> Option<Event> {
+        let (id, arg) = match text.split_once(':') {
+            Some((id, arg)) => (id, Some(arg.parse::<usize>().ok()?)),
+            None => (text, None),
+        };
+        let small = |a: usize| u8::try_from(a).ok();
+        Some(match (id, arg) {
+            ("grasp", None) => Event::Grasp,
+            ("grasp-miss", None) => Event::GraspMiss,
+            ("release", None) => Event::Release,
+            ("drop", None) => Event::Drop,
+            ("collision", Some(a)) => Event::Collision { link: small(a)? },
+            ("joint-limit", Some(a)) => Event::JointLimit { joint: small(a)? },
+            ("speed-limit", Some(a)) => Event::SpeedLimit { joint: small(a)? },
+            ("singularity", None) => Event::Singularity,
+            ("target-reached", Some(index)) => Event::TargetReached { index },
+            ("success", None) => Event::Success,
+            ("timeout", None) => Event::Timeout,
+            _ => return None,
+        })
+    }
+
+    /// Whether the event is a failure the pilot should review (grasp miss, drop, collision,
+    /// timeout).
+    pub fn is_failure(&self) -> bool {
+        matches!(
+            self,
+            Event::GraspMiss | Event::Drop | Event::Collision { .. } | Event::Timeout
+        )
+    }
+}
+
+/// The whole state of the scene between steps. Two states compare equal exactly when the
+/// scene is the same bit for bit (the page's reset check compares against
+/// [`Sim::start_state`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct State {
+    /// Time since the episode started, s (`step / 100`).
+    pub t_s: f64,
+    /// Steps taken.
+    pub step: u64,
+    /// Joint angles, rad.
+    pub q: [f64; 3],
+    /// The gripper's state.
+    pub gripper_closed: bool,
+    /// The block.
+    pub block: Block,
+    /// The reach target to reach now (= the number reached).
+    pub target_index: usize,
+    /// Consecutive steps the goal condition has held.
+    pub success_count: u32,
+    /// Set when the episode ended; later steps change nothing.
+    pub done: Option<Outcome>,
+    /// Commands given but not yet applied (length `latency_steps`).
+    pub pending: VecDeque<Command>,
+    /// Which links (1–3, and 4 = carried block) were stopped by contact on the last step.
+    pub contact: [bool; 4],
+    /// Which joints are stopped at a position limit (until they move `LIMIT_REARM_RAD` away).
+    pub at_limit: [bool; 3],
+    /// Whether the last step was cut by a joint speed limit.
+    pub speed_limited: bool,
+    /// Whether the last step was commanded near a singularity.
+    pub singular: bool,
+    /// Whether the block has been grasped at least once this episode.
+    pub ever_grasped: bool,
+}
+
+/// What one step did: the operator's command, the command the arm got (after latency and
+/// noise), the resulting pose and gripper, and the events.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StepRecord {
+    /// The step's number, from 1.
+    pub step: u64,
+    /// Time after the step, s.
+    pub t_s: f64,
+    /// The operator's command (sanitized).
+    pub cmd: Command,
+    /// The command applied this step (after latency and noise).
+    pub applied: Command,
+    /// Joint angles after the step, rad.
+    pub q: [f64; 3],
+    /// Tip x after the step, m.
+    pub x: f64,
+    /// Tip z after the step, m.
+    pub z: f64,
+    /// Gripper angle after the step, rad.
+    pub phi: f64,
+    /// Gripper state after the step.
+    pub gripper_closed: bool,
+    /// Whether the block is held after the step.
+    pub held: bool,
+    /// Block centre x after the step, m.
+    pub block_x: f64,
+    /// Block centre z after the step, m.
+    pub block_z: f64,
+    /// [`super::manipulability`] at `q`.
+    pub manipulability: f64,
+    /// What the step detected, in the order detected.
+    pub events: Vec<Event>,
+}
+
+/// The simulation: a validated config, the start state and the current state.
+#[derive(Debug, Clone)]
+pub struct Sim {
+    config: SceneConfig,
+    layout: Layout,
+    start: State,
+    state: State,
+    rng: NumpyRng,
+}
+
+impl Sim {
+    /// The fixed step, s (100 Hz).
+    pub const DT: f64 = 0.01;
+    /// Steps per second.
+    pub const RATE_HZ: u32 = 100;
+
+    /// A simulation at the start state of `config` (validated first).
+    pub fn new(config: SceneConfig) -> Result<Sim, TeleopError> {
+        config.validate()?;
+        let layout = Layout::of(&config.task);
+        let start = start_state(&config, &layout);
+        let rng = NumpyRng::new(config.noise_seed);
+        Ok(Sim {
+            state: start.clone(),
+            start,
+            rng,
+            layout,
+            config,
+        })
+    }
+
+    /// The config.
+    pub fn config(&self) -> &SceneConfig {
+        &self.config
+    }
+
+    /// Where the block, goal and obstacles are.
+    pub fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    /// The state every episode starts from.
+    pub fn start_state(&self) -> &State {
+        &self.start
+    }
+
+    /// The current state.
+    pub fn state(&self) -> &State {
+        &self.state
+    }
+
+    /// Back to the start state, bit for bit (the noise generator restarts too).
+    pub fn reset(&mut self) {
+        self.state = self.start.clone();
+        self.rng = NumpyRng::new(self.config.noise_seed);
+    }
+
+    /// Whether the episode has ended.
+    pub fn done(&self) -> Option<Outcome> {
+        self.state.done
+    }
+
+    /// The record of the current state without stepping (no events): what the page shows
+    /// before the first step.
+    pub fn snapshot(&self) -> StepRecord {
+        self.record(
+            Command::idle(self.state.gripper_closed),
+            Command::idle(self.state.gripper_closed),
+            Vec::new(),
+        )
+    }
+
+    fn record(&self, cmd: Command, applied: Command, events: Vec<Event>) -> StepRecord {
+        let s = &self.state;
+        let pose = fk(&self.config.arm, &s.q);
+        StepRecord {
+            step: s.step,
+            t_s: s.t_s,
+            cmd,
+            applied,
+            q: s.q,
+            x: pose.x,
+            z: pose.z,
+            phi: pose.phi,
+            gripper_closed: s.gripper_closed,
+            held: s.block.held,
+            block_x: s.block.x,
+            block_z: s.block.z,
+            manipulability: manipulability(&self.config.arm, &s.q),
+            events,
+        }
+    }
+
+    /// Advances one 10 ms step (see the module docs). After the episode ended, nothing
+    /// changes and the record has no events.
+    pub fn step(&mut self, cmd: &Command) -> StepRecord {
+        let cmd = cmd.sanitized();
+        if self.state.done.is_some() {
+            return self.record(cmd, Command::idle(self.state.gripper_closed), Vec::new());
+        }
+        let mut events = Vec::new();
+
+        // 1. Latency.
+        let mut applied = if self.config.latency_steps == 0 {
+            cmd
+        } else {
+            self.state.pending.push_back(cmd);
+            self.state
+                .pending
+                .pop_front()
+                .unwrap_or(Command::idle(self.state.gripper_closed))
+        };
+        // 2. Noise.
+        let sigma = self.config.noise_sigma;
+        if sigma > 0.0 {
+            applied.dx += sigma * self.rng.standard_normal();
+            applied.dz += sigma * self.rng.standard_normal();
+            applied.dphi += sigma * self.rng.standard_normal();
+        }
+
+        self.move_arm(&applied, &mut events);
+        self.operate_gripper(applied.gripper_closed, &mut events);
+        self.move_block();
+
+        self.state.step += 1;
+        self.state.t_s = self.state.step as f64 / f64::from(Sim::RATE_HZ);
+        self.check_goal(&mut events);
+        if self.state.done.is_none() && self.state.t_s >= self.config.time_box_s {
+            self.state.done = Some(Outcome::Timeout);
+            events.push(Event::Timeout);
+        }
+        self.record(cmd, applied, events)
+    }
+
+    /// Steps 3–5: IK, speed and position limits, contact.
+    fn move_arm(&mut self, applied: &Command, events: &mut Vec<Event>) {
+        let arm = self.config.arm;
+        let q = self.state.q;
+        let v = self.config.tip_speed_m_per_s() * Sim::DT;
+        let w = self.config.turn_speed_rad_per_s() * Sim::DT;
+        let dx = [applied.dx * v, applied.dz * v, applied.dphi * w];
+        let commanded = dx.iter().any(|d| *d != 0.0);
+
+        let singular_now =
+            commanded && manipulability(&arm, &q) < SINGULAR_RATIO * arm.links[0] * arm.links[1];
+        let solved = if commanded {
+            ik_step(&self.config.control, &jacobian(&arm, &q), &dx)
+        } else {
+            Some([0.0; 3])
+        };
+        let singular_now = singular_now || solved.is_none();
+        if singular_now && !self.state.singular {
+            events.push(Event::Singularity);
+        }
+        self.state.singular = singular_now;
+        let mut dq = solved.unwrap_or([0.0; 3]);
+
+        // Speed limits: scale the whole step.
+        let mut worst = (1.0, 0usize);
+        for (i, d) in dq.iter().enumerate() {
+            let ratio = d.abs() / (arm.qd_max[i] * Sim::DT);
+            if ratio > worst.0 {
+                worst = (ratio, i);
+            }
+        }
+        let speed_limited = worst.0 > 1.0;
+        if speed_limited {
+            for d in dq.iter_mut() {
+                *d /= worst.0;
+            }
+            if !self.state.speed_limited {
+                events.push(Event::SpeedLimit {
+                    joint: worst.1 as u8 + 1,
+                });
+            }
+        }
+        self.state.speed_limited = speed_limited;
+
+        // Position limits: clamp each joint.
+        let mut q_new = [0.0; 3];
+        for i in 0..3 {
+            let target = q[i] + dq[i];
+            let clamped = target.clamp(arm.q_min[i], arm.q_max[i]);
+            let near_limit = (clamped - arm.q_min[i]).min(arm.q_max[i] - clamped) < LIMIT_REARM_RAD;
+            // A joint resting against its limit is one stop until it leaves the limit.
+            let at_limit = clamped != target || (self.state.at_limit[i] && near_limit);
+            if at_limit && !self.state.at_limit[i] {
+                events.push(Event::JointLimit { joint: i as u8 + 1 });
+            }
+            self.state.at_limit[i] = at_limit;
+            q_new[i] = clamped;
+        }
+
+        // Contact: a move into the table or an obstacle does not happen.
+        let mut contact = [false; 4];
+        if q_new != q {
+            let capsules = arm_capsules(&arm, &q_new, self.finger_half_width());
+            if let Some(link) = first_contact(&capsules, &self.layout.obstacles) {
+                contact[usize::from(link) - 1] = true;
+            } else if self.state.block.held && self.held_block_contact(&q_new) {
+                contact[3] = true;
+            }
+        }
+        for (i, now) in contact.iter().enumerate() {
+            if *now && !self.state.contact[i] {
+                events.push(Event::Collision { link: i as u8 + 1 });
+            }
+        }
+        self.state.contact = contact;
+        if !contact.iter().any(|c| *c) {
+            self.state.q = q_new;
+        }
+    }
+
+    /// Whether the block, carried at pose `q`, would press into the table or an obstacle
+    /// (the block counts as the circle inside it).
+    fn held_block_contact(&self, q: &[f64; 3]) -> bool {
+        let Some(grasp) = self.state.block.grasp else {
+            return false;
+        };
+        let (x, z, _) = carried(&fk(&self.config.arm, q), &grasp);
+        z - BLOCK_HALF < TABLE_Z - CONTACT_SLOP_M
+            || self
+                .layout
+                .obstacles
+                .iter()
+                .any(|b| point_box_distance(x, z, b) < BLOCK_HALF - CONTACT_SLOP_M)
+    }
+
+    fn finger_half_width(&self) -> f64 {
+        if !self.state.gripper_closed {
+            OPEN_HALF_WIDTH
+        } else if self.state.block.held {
+            BLOCK_HALF
+        } else {
+            CLOSED_HALF_WIDTH
+        }
+    }
+
+    /// Step 6: grasp, miss, release, drop.
+    fn operate_gripper(&mut self, close: bool, events: &mut Vec<Event>) {
+        if close == self.state.gripper_closed {
+            return;
+        }
+        self.state.gripper_closed = close;
+        let tip = fk(&self.config.arm, &self.state.q);
+        let block = &mut self.state.block;
+        if close {
+            let (dx, dz) = (block.x - tip.x, block.z - tip.z);
+            let near = (dx * dx + dz * dz).sqrt() <= GRASP_TOLERANCE_M;
+            let misalign = face_misalignment(tip.phi - block.angle);
+            if near && misalign <= GRASP_ANGLE_TOLERANCE_RAD && !block.held {
+                let (s, c) = crate::math::sincos(tip.phi);
+                block.grasp = Some(GraspFrame {
+                    along: dx * c + dz * s,
+                    across: -dx * s + dz * c,
+                    angle: block.angle - tip.phi,
+                });
+                block.held = true;
+                block.resting = false;
+                block.vz = 0.0;
+                self.state.ever_grasped = true;
+                events.push(Event::Grasp);
+            } else {
+                events.push(Event::GraspMiss);
+            }
+        } else if block.held {
+            block.held = false;
+            block.grasp = None;
+            block.vz = 0.0;
+            block.angle = 0.0;
+            events.push(Event::Release);
+            let over_goal = self
+                .layout
+                .goal
+                .is_some_and(|g| block.x >= g.x0 && block.x <= g.x1);
+            let bottom = block.z - BLOCK_HALF;
+            let set_down =
+                bottom - support_below(block.x, bottom, &self.layout.obstacles) <= PLACE_HEIGHT_M;
+            if !over_goal && !set_down {
+                events.push(Event::Drop);
+            }
+        }
+    }
+
+    /// The block follows the gripper, falls, or rests.
+    fn move_block(&mut self) {
+        let tip = fk(&self.config.arm, &self.state.q);
+        let block = &mut self.state.block;
+        if let Some(grasp) = block.grasp.filter(|_| block.held) {
+            let (x, z, angle) = carried(&tip, &grasp);
+            block.x = x;
+            block.z = z;
+            block.angle = angle;
+            return;
+        }
+        if block.resting {
+            return;
+        }
+        let support = support_below(block.x, block.z - BLOCK_HALF, &self.layout.obstacles);
+        block.vz -= GRAVITY * Sim::DT;
+        block.z += block.vz * Sim::DT;
+        if block.z - BLOCK_HALF <= support {
+            block.z = support + BLOCK_HALF;
+            block.vz = 0.0;
+            block.resting = true;
+        }
+    }
+
+    /// Step 7: goal condition, targets, success.
+    fn check_goal(&mut self, events: &mut Vec<Event>) {
+        let tip = fk(&self.config.arm, &self.state.q);
+        let s = &mut self.state;
+        let holds = match &self.config.task {
+            Task::Reach { targets } => targets.get(s.target_index).is_some_and(|t| {
+                let (dx, dz) = (tip.x - t.x, tip.z - t.z);
+                (dx * dx + dz * dz).sqrt() <= t.radius
+            }),
+            Task::PickPlace | Task::PickPlaceObstacle => {
+                let b = &s.block;
+                let on_table = b.z == TABLE_Z + BLOCK_HALF;
+                !b.held
+                    && b.resting
+                    && on_table
+                    && self.layout.goal.is_some_and(|g| b.x >= g.x0 && b.x <= g.x1)
+            }
+        };
+        s.success_count = if holds { s.success_count + 1 } else { 0 };
+        if s.success_count < self.config.success_steps {
+            return;
+        }
+        s.success_count = 0;
+        if let Task::Reach { targets } = &self.config.task {
+            events.push(Event::TargetReached {
+                index: s.target_index,
+            });
+            s.target_index += 1;
+            if s.target_index < targets.len() {
+                return;
+            }
+        }
+        s.done = Some(Outcome::Success);
+        events.push(Event::Success);
+    }
+
+    /// What the page draws for the current state.
+    pub fn geometry(&self) -> SceneGeometry {
+        geometry(&self.config, &self.layout, &self.state)
+    }
+}
+
+/// The state `config` starts from.
+fn start_state(config: &SceneConfig, layout: &Layout) -> State {
+    let (x, z) = layout.block_start;
+    State {
+        t_s: 0.0,
+        step: 0,
+        q: config.start_q,
+        gripper_closed: false,
+        block: Block {
+            x,
+            z,
+            angle: 0.0,
+            vz: 0.0,
+            held: false,
+            resting: true,
+            grasp: None,
+        },
+        target_index: 0,
+        success_count: 0,
+        done: None,
+        pending: (0..config.latency_steps)
+            .map(|_| Command::idle(false))
+            .collect(),
+        contact: [false; 4],
+        at_limit: [false; 3],
+        speed_limited: false,
+        singular: false,
+        ever_grasped: false,
+    }
+}
+
+/// The carried block's centre and angle for a tip pose.
+fn carried(tip: &super::arm::Pose2, grasp: &GraspFrame) -> (f64, f64, f64) {
+    let (s, c) = crate::math::sincos(tip.phi);
+    (
+        tip.x + grasp.along * c - grasp.across * s,
+        tip.z + grasp.along * s + grasp.across * c,
+        tip.phi + grasp.angle,
+    )
+}
+
+/// How far `angle` is from the nearest multiple of π/2 (a square's faces), rad.
+fn face_misalignment(angle: f64) -> f64 {
+    use std::f64::consts::FRAC_PI_2;
+    let r = angle.rem_euclid(FRAC_PI_2);
+    r.min(FRAC_PI_2 - r)
+}
+
+/// The highest surface under a block centred at `x` whose bottom is at `bottom`: the table or
+/// the top of an obstacle the block overlaps in x and is above.
+fn support_below(x: f64, bottom: f64, obstacles: &[Box2]) -> f64 {
+    obstacles
+        .iter()
+        .filter(|b| x + BLOCK_HALF > b.x0 && x - BLOCK_HALF < b.x1 && b.z1 <= bottom + 1e-12)
+        .map(|b| b.z1)
+        .fold(TABLE_Z, f64::max)
+}
+
+fn geometry(config: &SceneConfig, layout: &Layout, state: &State) -> SceneGeometry {
+    let arm = &config.arm;
+    let half_width = if !state.gripper_closed {
+        OPEN_HALF_WIDTH
+    } else if state.block.held {
+        BLOCK_HALF
+    } else {
+        CLOSED_HALF_WIDTH
+    };
+    let caps: [Capsule; 5] = arm_capsules(arm, &state.q, half_width);
+    let b = &state.block;
+    let (s, c) = crate::math::sincos(b.angle);
+    let corner = |u: f64, v: f64| {
+        (
+            b.x + (u * c - v * s) * BLOCK_HALF,
+            b.z + (u * s + v * c) * BLOCK_HALF,
+        )
+    };
+    let reach: f64 = arm.links.iter().sum();
+    let targets = config
+        .task
+        .targets()
+        .iter()
+        .enumerate()
+        .map(|(i, t)| TargetView {
+            target: *t,
+            status: match i.cmp(&state.target_index) {
+                std::cmp::Ordering::Less => TargetStatus::Done,
+                std::cmp::Ordering::Equal => TargetStatus::Current,
+                std::cmp::Ordering::Greater => TargetStatus::Pending,
+            },
+        })
+        .collect();
+    SceneGeometry {
+        links: [caps[0], caps[1], caps[2]],
+        fingers: [caps[3], caps[4]],
+        tip: fk(arm, &state.q),
+        table: Segment {
+            x0: -reach - 0.02,
+            z0: TABLE_Z,
+            x1: reach + 0.02,
+            z1: TABLE_Z,
+        },
+        block: [
+            corner(-1.0, -1.0),
+            corner(1.0, -1.0),
+            corner(1.0, 1.0),
+            corner(-1.0, 1.0),
+        ],
+        block_held: b.held,
+        goal: layout.goal,
+        obstacles: layout.obstacles.clone(),
+        targets,
+        bounds: Box2 {
+            x0: -reach - 0.02,
+            z0: TABLE_Z - 0.02,
+            x1: reach + 0.02,
+            z1: reach + 0.02,
+        },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    use super::*;
+    use crate::teleop::episode::{episode_csv, Episode};
+    use crate::teleop::pilot::{fly, plan, Waypoint};
+
+    fn sim(config: SceneConfig) -> Sim {
+        Sim::new(config).unwrap()
+    }
+
+    fn held_for(cmd: Command, n: usize) -> Vec<Command> {
+        vec![cmd; n]
+    }
+
+    const UP: Command = Command {
+        dx: 0.0,
+        dz: 1.0,
+        dphi: 0.0,
+        gripper_closed: false,
+    };
+    const DOWN: Command = Command {
+        dx: 0.0,
+        dz: -1.0,
+        dphi: 0.0,
+        gripper_closed: false,
+    };
+
+    /// Events with their steps.
+    fn events(episode: &Episode) -> Vec<(u64, Event)> {
+        episode
+            .records
+            .iter()
+            .flat_map(|r| r.events.iter().map(move |e| (r.step, *e)))
+            .collect()
+    }
+
+    /// The pick-place plan up to (and including) the waypoint that closes the gripper.
+    fn grasp_plan(config: &SceneConfig) -> Vec<Waypoint> {
+        plan(config).into_iter().take(3).collect()
+    }
+
+    #[test]
+    fn closing_on_the_block_grasps_it_and_it_moves_with_the_gripper() {
+        let config = SceneConfig::default();
+        let mut waypoints = grasp_plan(&config);
+        let lift = Waypoint {
+            z: 0.05,
+            ..waypoints[2]
+        };
+        waypoints.push(lift);
+        let episode = fly(config, waypoints, 2000).unwrap();
+        let ev = events(&episode);
+        assert_eq!(ev.iter().filter(|(_, e)| *e == Event::Grasp).count(), 1);
+        let (grasp_step, _) = ev[0];
+        let at_grasp = &episode.records[grasp_step as usize - 1];
+        assert!(at_grasp.gripper_closed && at_grasp.held);
+        let last = episode.records.last().unwrap();
+        assert!(last.held);
+        assert!((last.z - 0.05).abs() < 0.001);
+        // The block keeps its place in the gripper (the gripper still points down).
+        let offset_then = (at_grasp.block_x - at_grasp.x, at_grasp.block_z - at_grasp.z);
+        let offset_now = (last.block_x - last.x, last.block_z - last.z);
+        assert!((offset_then.0 - offset_now.0).abs() < 1e-9);
+        assert!((offset_then.1 - offset_now.1).abs() < 1e-9);
+        assert!(last.block_z > 0.03);
+    }
+
+    #[test]
+    fn closing_on_nothing_is_a_grasp_miss() {
+        let mut s = sim(SceneConfig::default());
+        let r = s.step(&Command::idle(true));
+        assert_eq!(r.events, vec![Event::GraspMiss]);
+        assert!(r.gripper_closed && !r.held);
+        // Opening an empty gripper is no event.
+        assert_eq!(s.step(&Command::idle(false)).events, vec![]);
+    }
+
+    #[test]
+    fn opening_high_above_the_table_drops_the_block_and_it_falls_to_the_table() {
+        let config = SceneConfig::default();
+        let mut waypoints = grasp_plan(&config);
+        let lift = Waypoint {
+            z: 0.05,
+            hold_steps: 0,
+            ..waypoints[2]
+        };
+        let open = Waypoint {
+            gripper_closed: false,
+            hold_steps: 40,
+            ..lift
+        };
+        waypoints.extend([lift, open]);
+        let episode = fly(config, waypoints, 3000).unwrap();
+        let ev = events(&episode);
+        let release = ev.iter().find(|(_, e)| *e == Event::Release).unwrap().0;
+        assert!(ev.contains(&(release, Event::Drop)));
+        // Free fall from 5 cm to the table: about sqrt(2 h / g) = 0.1 s.
+        let rest = TABLE_Z + BLOCK_HALF;
+        let landed = episode
+            .records
+            .iter()
+            .find(|r| r.block_z == rest && r.step > release)
+            .unwrap();
+        let fall_steps = landed.step - release;
+        assert!((9..=12).contains(&fall_steps), "{fall_steps}");
+        let last = episode.records.last().unwrap();
+        assert_eq!((last.block_z, last.held), (rest, false));
+        assert_eq!(metrics_of(&episode).drops, 1);
+    }
+
+    fn metrics_of(e: &Episode) -> crate::teleop::EpisodeMetrics {
+        crate::teleop::metrics(e)
+    }
+
+    #[test]
+    fn setting_the_block_down_outside_the_goal_is_no_drop() {
+        let config = SceneConfig::default();
+        let mut waypoints = grasp_plan(&config);
+        let open = Waypoint {
+            gripper_closed: false,
+            hold_steps: 5,
+            ..waypoints[2]
+        };
+        waypoints.push(open);
+        let episode = fly(config, waypoints, 2000).unwrap();
+        let ev: Vec<Event> = events(&episode).into_iter().map(|(_, e)| e).collect();
+        assert_eq!(ev, vec![Event::Grasp, Event::Release]);
+    }
+
+    #[test]
+    fn driving_into_the_table_is_one_collision_and_the_arm_stops() {
+        let config = SceneConfig::default();
+        let episode = Episode::record(config, &held_for(DOWN, 300)).unwrap();
+        let ev = events(&episode);
+        let collisions: Vec<_> = ev
+            .iter()
+            .filter(|(_, e)| matches!(e, Event::Collision { .. }))
+            .collect();
+        assert_eq!(collisions.len(), 1, "{ev:?}");
+        let (step, event) = *collisions[0];
+        assert_eq!(event, Event::Collision { link: 3 });
+        // From then on the arm does not move, and nothing reaches below the table.
+        let stopped = &episode.records[step as usize - 1];
+        let last = episode.records.last().unwrap();
+        assert_eq!(stopped.q, last.q);
+        assert!(last.z - super::super::scene::FINGER_RADIUS >= TABLE_Z);
+        // Moving away works at once.
+        let mut s = sim(SceneConfig::default());
+        for c in held_for(DOWN, 300) {
+            s.step(&c);
+        }
+        let before = s.state().q;
+        let r = s.step(&UP);
+        assert_ne!(r.q, before);
+        assert_eq!(r.events, vec![]);
+    }
+
+    #[test]
+    fn pressing_the_carried_block_into_the_table_is_a_collision_of_link_4() {
+        let config = SceneConfig::default();
+        let mut waypoints = grasp_plan(&config);
+        let press = Waypoint {
+            z: TABLE_Z - 0.01,
+            hold_steps: 0,
+            ..waypoints[2]
+        };
+        waypoints.push(press);
+        let episode = fly(config, waypoints, 1000).unwrap();
+        let ev = events(&episode);
+        assert!(
+            ev.iter().any(|(_, e)| *e == Event::Collision { link: 4 }),
+            "{ev:?}"
+        );
+        let last = episode.records.last().unwrap();
+        assert!(last.block_z - BLOCK_HALF >= TABLE_Z - CONTACT_SLOP_M);
+    }
+
+    #[test]
+    fn success_after_the_goal_condition_held_success_steps_steps() {
+        for (task, success_steps) in [
+            (Task::PickPlace, 10),
+            (Task::PickPlace, 1),
+            (Task::PickPlaceObstacle, 25),
+        ] {
+            let config = SceneConfig {
+                task,
+                success_steps,
+                ..SceneConfig::default()
+            };
+            let layout = Layout::of(&config.task);
+            let goal = layout.goal.unwrap();
+            let episode = fly(config.clone(), plan(&config), 6000).unwrap();
+            let last = episode.records.last().unwrap();
+            assert_eq!(
+                last.events.last(),
+                Some(&Event::Success),
+                "{:?}",
+                config.task
+            );
+            assert_eq!(episode.outcome(), Some(Outcome::Success));
+            // The condition (released, at rest on the table inside the goal's x range) holds
+            // on exactly the last `success_steps` records.
+            let holds = |r: &StepRecord| {
+                !r.held
+                    && r.block_z == TABLE_Z + BLOCK_HALF
+                    && (goal.x0..=goal.x1).contains(&r.block_x)
+            };
+            let n = episode.records.len();
+            let k = success_steps as usize;
+            assert!(episode.records[n - k..].iter().all(holds));
+            assert!(!holds(&episode.records[n - k - 1]));
+            // Later steps change nothing.
+            let mut s = sim(config);
+            for c in &episode.commands {
+                s.step(c);
+            }
+            let done = s.state().clone();
+            let r = s.step(&UP);
+            assert_eq!((r.events.len(), s.state()), (0, &done));
+        }
+    }
+
+    #[test]
+    fn reach_targets_in_order_then_success() {
+        let config = SceneConfig {
+            task: Task::from_id("reach").unwrap(),
+            ..SceneConfig::default()
+        };
+        let episode = fly(config.clone(), plan(&config), 6000).unwrap();
+        let reached: Vec<usize> = events(&episode)
+            .iter()
+            .filter_map(|(_, e)| match e {
+                Event::TargetReached { index } => Some(*index),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(reached, vec![0, 1, 2, 3, 4, 5]);
+        assert_eq!(episode.outcome(), Some(Outcome::Success));
+    }
+
+    #[test]
+    fn timeout_at_the_time_box() {
+        let config = SceneConfig {
+            time_box_s: 1.0,
+            ..SceneConfig::default()
+        };
+        let mut s = sim(config);
+        for step in 1..=100 {
+            let r = s.step(&Command::default());
+            assert_eq!(r.t_s, step as f64 / 100.0);
+            if step < 100 {
+                assert_eq!(r.events, vec![]);
+            } else {
+                assert_eq!(r.events, vec![Event::Timeout]);
+            }
+        }
+        assert_eq!(s.done(), Some(Outcome::Timeout));
+        let r = s.step(&UP);
+        assert_eq!((r.events.len(), r.step), (0, 100));
+    }
+
+    #[test]
+    fn latency_delays_by_exactly_the_set_steps() {
+        for latency_steps in [0u32, 1, 7, 50] {
+            let config = SceneConfig {
+                latency_steps,
+                ..SceneConfig::default()
+            };
+            let mut s = sim(config);
+            let pulse = Command {
+                dx: 1.0,
+                gripper_closed: true,
+                ..Command::default()
+            };
+            let start_q = s.state().q;
+            let first = s.step(&pulse);
+            let mut records = vec![first];
+            for _ in 0..60 {
+                records.push(s.step(&Command::default()));
+            }
+            let lag = latency_steps as usize;
+            for (i, r) in records.iter().enumerate() {
+                if i == lag {
+                    assert_eq!(r.applied, pulse, "latency {latency_steps}");
+                    assert_ne!(r.q, start_q);
+                    assert!(r.gripper_closed);
+                    assert_eq!(r.events, vec![Event::GraspMiss]);
+                } else if i < lag {
+                    assert_eq!(r.applied, Command::default());
+                    assert_eq!((r.q, r.gripper_closed), (start_q, false));
+                } else {
+                    assert_eq!(r.applied, Command::default());
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_joint_limit_clamps_and_is_reported_once() {
+        let config = SceneConfig::default();
+        let turn = Command {
+            dphi: 1.0,
+            ..Command::default()
+        };
+        let episode = Episode::record(config.clone(), &held_for(turn, 800)).unwrap();
+        let limits: Vec<_> = events(&episode)
+            .into_iter()
+            .filter(|(_, e)| matches!(e, Event::JointLimit { .. }))
+            .collect();
+        assert_eq!(limits.len(), 1, "{limits:?}");
+        let Event::JointLimit { joint } = limits[0].1 else {
+            unreachable!()
+        };
+        let j = usize::from(joint) - 1;
+        let last = episode.records.last().unwrap();
+        assert!(last.q[j] == config.arm.q_max[j] || last.q[j] == config.arm.q_min[j]);
+        for r in &episode.records {
+            for i in 0..3 {
+                assert!((config.arm.q_min[i]..=config.arm.q_max[i]).contains(&r.q[i]));
+            }
+        }
+    }
+
+    #[test]
+    fn stretching_out_reports_a_singularity() {
+        let out = Command {
+            dx: 1.0,
+            dz: 0.4,
+            ..Command::default()
+        };
+        let episode = Episode::record(SceneConfig::default(), &held_for(out, 600)).unwrap();
+        assert!(events(&episode)
+            .iter()
+            .any(|(_, e)| *e == Event::Singularity));
+        let min_w = metrics_of(&episode).min_manipulability;
+        assert!(min_w < SINGULAR_RATIO * 0.12 * 0.10);
+    }
+
+    #[test]
+    fn the_same_commands_give_the_same_bits_and_reset_restores_the_start() {
+        for (sigma, latency) in [(0.0, 0), (0.3, 12)] {
+            let config = SceneConfig {
+                noise_sigma: sigma,
+                noise_seed: 5,
+                latency_steps: latency,
+                ..SceneConfig::default()
+            };
+            let a = fly(config.clone(), plan(&config), 3000).unwrap();
+            let b = Episode::record(config.clone(), &a.commands).unwrap();
+            assert_eq!(episode_csv(&a), episode_csv(&b));
+            assert_eq!(a, b);
+            let mut s = sim(config.clone());
+            for c in &a.commands {
+                s.step(c);
+            }
+            assert_ne!(s.state(), s.start_state());
+            s.reset();
+            assert_eq!(s.state(), s.start_state());
+            let again: Vec<StepRecord> = a.commands.iter().map(|c| s.step(c)).collect();
+            assert_eq!(again, a.records);
+        }
+    }
+
+    #[test]
+    fn noise_is_seeded() {
+        let noisy = |seed| SceneConfig {
+            noise_sigma: 0.2,
+            noise_seed: seed,
+            ..SceneConfig::default()
+        };
+        let cmds = held_for(UP, 50);
+        let a = Episode::record(noisy(1), &cmds).unwrap();
+        let b = Episode::record(noisy(1), &cmds).unwrap();
+        let c = Episode::record(noisy(2), &cmds).unwrap();
+        assert_eq!(a.records, b.records);
+        assert_ne!(a.records, c.records);
+        // The first step's noise is numpy's default_rng(1).standard_normal() × sigma.
+        let mut rng = NumpyRng::new(1);
+        assert_eq!(a.records[0].applied.dx, 0.2 * rng.standard_normal());
+        assert_eq!(a.records[0].applied.dz, 1.0 + 0.2 * rng.standard_normal());
+        assert_eq!(a.records[0].cmd, UP);
+    }
+
+    #[test]
+    fn commands_are_sanitized() {
+        let mut s = sim(SceneConfig::default());
+        let r = s.step(&Command {
+            dx: f64::NAN,
+            dz: 7.0,
+            dphi: -f64::INFINITY,
+            gripper_closed: false,
+        });
+        assert_eq!((r.cmd.dx, r.cmd.dz, r.cmd.dphi), (0.0, 1.0, -1.0));
+        assert!(r.q.iter().all(|q| q.is_finite()));
+    }
+
+    #[test]
+    fn event_texts_round_trip() {
+        for e in [
+            Event::Grasp,
+            Event::GraspMiss,
+            Event::Release,
+            Event::Drop,
+            Event::Collision { link: 4 },
+            Event::JointLimit { joint: 2 },
+            Event::SpeedLimit { joint: 3 },
+            Event::Singularity,
+            Event::TargetReached { index: 11 },
+            Event::Success,
+            Event::Timeout,
+        ] {
+            assert_eq!(Event::from_text(&e.text()), Some(e));
+        }
+        assert_eq!(Event::from_text("collision"), None);
+        assert_eq!(Event::from_text("grasp:1"), None);
+    }
+
+    #[test]
+    fn geometry_draws_the_arm_where_fk_puts_it() {
+        let s = sim(SceneConfig {
+            task: Task::from_id("reach").unwrap(),
+            ..SceneConfig::default()
+        });
+        let g = s.geometry();
+        assert!((g.tip.x - 0.10).abs() < 1e-12 && (g.tip.z - 0.06).abs() < 1e-12);
+        assert_eq!(g.links[0].segment.x0, 0.0);
+        assert_eq!(g.targets[0].status, TargetStatus::Current);
+        assert_eq!(g.targets[1].status, TargetStatus::Pending);
+        assert!(g.goal.is_none());
+    }
+}
