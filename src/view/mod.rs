@@ -15,6 +15,8 @@
 //! - [`pendulum`]: the pendulum page: kept rows, energy error and drift, period, separatrix, URL.
 //! - [`rrt`]: the RRT stepper page: state and URL, command lines, world editor hit tests and
 //!   edits, sub-step texts and pseudocode lines.
+//! - [`se3_relative`]: the relative SE(3) pose page: fields in rad or deg, URL, matrices,
+//!   intrinsic vs extrinsic rotations, the 3D scene's gizmo hits and drags.
 //! - [`signal`]: what the signal pages share (URL keys = argument names, sliders, snapping);
 //!   [`cubic_path`]: the cubic page's coefficients, peaks and overlays;
 //!   [`pid_step`]: rise time, overshoot, settling, steady-state error and peak u;
@@ -37,6 +39,7 @@ pub mod pid_step;
 pub mod plot;
 pub mod progress;
 pub mod rrt;
+pub mod se3_relative;
 pub mod signal;
 pub mod stepper;
 pub mod table;
