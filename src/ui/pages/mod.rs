@@ -12,6 +12,7 @@ pub mod ik2r;
 pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
+pub mod se3;
 pub mod traj_resample;
 pub mod trapezoid_profile;
 
@@ -25,6 +26,7 @@ pub const PAGES: &[PageDef] = &[
     pendulum::PAGE,
     traj_resample::PAGE,
     rrt::PAGE,
+    se3::PAGE,
     cubic_path::PAGE,
     pid_step::PAGE,
     trapezoid_profile::PAGE,
