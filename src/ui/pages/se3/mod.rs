@@ -512,7 +512,11 @@ impl Inner {
         }
         ro.set_with_value(
             "check-error",
-            &format!("{:.1e}", solved.check_error),
+            &if solved.check_error == 0.0 {
+                "0".to_string()
+            } else {
+                format!("{:.1e}", solved.check_error)
+            },
             &py_float(solved.check_error),
         );
         self.tables.show(&solved);

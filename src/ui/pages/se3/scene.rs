@@ -70,13 +70,22 @@ fn arrowhead(c: &CanvasRenderingContext2d, from: DVec2, tip: DVec2, size: f64, f
     c.fill();
 }
 
-/// Draws a triad of axis length `len` with its name near the origin; `alpha` fades it.
+/// Where a triad's name goes beside its origin.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LabelSide {
+    /// Below and to the right (frames A and B).
+    BelowRight,
+    /// Above and to the left (the world frame, so that a frame at the origin stays readable).
+    AboveLeft,
+}
+
+/// Draws a triad of axis length `len` with its name beside the origin.
 pub fn draw_triad(
     c: &CanvasRenderingContext2d,
     cam: &Camera,
     triad: &Triad,
     len: f64,
-    name: Option<&str>,
+    name: Option<(&str, LabelSide)>,
     ink: Ink,
 ) {
     c.set_line_cap("round");
@@ -87,14 +96,17 @@ pub fn draw_triad(
             arrowhead(c, pa, pb, 9.0 * ink.line, colour);
         }
     }
-    if let (Some(name), Some(o)) = (name, cam.project(triad.origin)) {
+    if let (Some((name, side)), Some(o)) = (name, cam.project(triad.origin)) {
         c.set_fill_style_str(LABEL);
         c.set_font(&ink.font(13.0, true));
-        let _ = c.fill_text(
-            name,
-            o.at.x + 9.0 * ink.line,
-            o.at.y + ink.text_px(13.0) + 4.0,
-        );
+        let (x, y) = match side {
+            LabelSide::BelowRight => (o.at.x + 9.0 * ink.line, o.at.y + ink.text_px(13.0) + 4.0),
+            LabelSide::AboveLeft => {
+                let width = c.measure_text(name).map_or(0.0, |m| m.width());
+                (o.at.x - width - 9.0 * ink.line, o.at.y - 8.0 * ink.line)
+            }
+        };
+        let _ = c.fill_text(name, x, y);
     }
 }
 
@@ -192,7 +204,7 @@ impl Scene {
             &self.camera,
             &Triad::world(),
             len * 1.2,
-            Some(&world),
+            Some((&world, LabelSide::AboveLeft)),
             ink,
         );
     }
@@ -216,8 +228,8 @@ impl Scene {
             line(c, cam, path[k], path[k + 1]);
         }
         let _ = c.set_line_dash(&solid());
-        draw_triad(c, cam, &a, len, Some("A"), ink);
-        draw_triad(c, cam, &b, len, Some("B"), ink);
+        draw_triad(c, cam, &a, len, Some(("A", LabelSide::BelowRight)), ink);
+        draw_triad(c, cam, &b, len, Some(("B", LabelSide::BelowRight)), ink);
         // The arrow A → B.
         c.set_stroke_style_str(ARROW);
         c.set_line_width(2.5 * ink.line);
@@ -230,13 +242,22 @@ impl Scene {
             c.line_to(end.x, end.y);
             c.stroke();
             arrowhead(c, pa, end, 12.0 * ink.line, ARROW);
+            // The label beside the arrow's middle, on the side away from the arrow (to the
+            // right of a steep arrow, under a flat one).
             let mid = (pa + pb) / 2.0;
             let text = ctx::t("se3-view-arrow");
             c.set_font(&ink.font(13.0, true));
             c.set_fill_style_str(ARROW);
             let width = c.measure_text(&text).map_or(0.0, |m| m.width());
-            let x = (mid.x + 8.0).min(layer.css_w - width - 4.0).max(4.0);
-            let y = (mid.y - 8.0).max(ink.text_px(13.0) + 2.0);
+            let text_h = ink.text_px(13.0);
+            let steep = d.y.abs() > d.x.abs();
+            let (x, y) = if steep {
+                (mid.x + 12.0 * ink.line, mid.y + text_h / 2.0)
+            } else {
+                (mid.x - width / 2.0, mid.y + text_h + 10.0 * ink.line)
+            };
+            let x = x.min(layer.css_w - width - 4.0).max(4.0);
+            let y = y.min(layer.css_h - 4.0).max(text_h + 2.0);
             let _ = c.fill_text(&text, x, y);
         }
         // The origins (the drag handles).
