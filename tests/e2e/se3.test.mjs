@@ -186,6 +186,7 @@ test('dragging B\'s origin moves B in the view plane; the readouts follow the ke
     await page.mouse.down();
     for (let k = 1; k <= 5; k++) await page.mouse.move(view.x + 30 + 20 * k, view.y + 30);
     await page.mouse.up();
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
     assert.ok(Math.abs(Number(await canvas.getAttribute('data-azimuth')) - az) > 0.5);
     await settle(page);
     assert.deepEqual(await urlArgs(page), args);

@@ -1,11 +1,10 @@
-//! The page's markup: heading, the 3D view with its view buttons, the readouts and the rad/deg
+//! The page's markup: heading, the slot of the 3D view (the kit's orbit view), the readouts and the rad/deg
 //! switch, the two poses' form, the matrices with the result row and the composition check,
 //! the intrinsic/extrinsic panel, the exports and the explanation. Every text is a Fluent id
 //! (`data-i18n`), filled by the shell.
 
 use crate::recipes::se3_relative::CSV_NAME;
 use crate::ui::kit::{exports, readouts};
-use crate::view::camera3d::Preset;
 
 use super::{P, PNG};
 
@@ -36,19 +35,6 @@ fn matrix(key: &str, caption_id: &str, n: usize) -> String {
     html
 }
 
-fn presets() -> String {
-    Preset::ALL
-        .iter()
-        .map(|p| {
-            format!(
-                "<button type=\"button\" class=\"button\" data-view=\"{id}\" \
-                 data-i18n=\"se3-view-{id}\"></button>",
-                id = p.id()
-            )
-        })
-        .collect()
-}
-
 /// The page's HTML.
 pub fn page() -> String {
     let explain: String = [
@@ -73,13 +59,7 @@ pub fn page() -> String {
          <p class=\"se3-notice\" data-{P}=\"url-notice\" hidden></p></header>\
          <div class=\"se3-top\">\
          <section class=\"se3-card\"><h2 data-i18n=\"se3-view-title\"></h2>\
-         <div class=\"se3-stage\" data-{P}=\"stage\">\
-         <canvas class=\"se3-layer\" aria-hidden=\"true\"></canvas>\
-         <canvas class=\"se3-layer\" data-testid=\"se3-relative-canvas\" tabindex=\"0\" role=\"img\" \
-         data-i18n-attr=\"aria-label=se3-canvas-label\"></canvas></div>\
-         <div class=\"se3-tools\">{presets}\
-         <button type=\"button\" class=\"button\" data-zoom=\"in\" data-i18n-attr=\"aria-label=se3-zoom-in\">+</button>\
-         <button type=\"button\" class=\"button\" data-zoom=\"out\" data-i18n-attr=\"aria-label=se3-zoom-out\">−</button></div>\
+         <div class=\"se3-view\" data-{P}=\"view\"></div>\
          <p class=\"se3-note\" data-i18n=\"se3-view-note\"></p></section>\
          <div class=\"se3-side\">\
          <section class=\"se3-card\"><h2 data-i18n=\"se3-result-title\"></h2>{readouts}{live}\
@@ -119,7 +99,6 @@ pub fn page() -> String {
          <p data-i18n=\"recipe-se3-relative-blurb\"></p>{explain}\
          <h3 data-i18n=\"se3-explain-quirks-title\"></h3><p data-i18n=\"recipe-se3-relative-quirks\"></p></section>\
          </div>",
-        presets = presets(),
         readouts = readouts::markup(P, &READOUTS),
         live = readouts::live_markup(P),
         ma = matrix("a", "se3-matrix-a", 4),

@@ -28,9 +28,10 @@ use web_sys::{Element, HtmlInputElement, HtmlSelectElement, KeyboardEvent};
 
 use crate::pyfmt::py_float;
 use crate::recipes::se3_relative::{Se3Params, CSV_NAME, INFO};
-use crate::ui::kit::canvas::{focus_without_scroll, Ink};
-use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
+use crate::ui::kit::canvas::{Ink, LayeredCanvas};
+use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::exports::Exports;
+use crate::ui::kit::orbit::{self, OrbitOptions, OrbitView};
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
@@ -39,7 +40,8 @@ use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
 use crate::view::se3_relative::{
-    dragged_origin, hit_frame, position_texts, solve, AngleUnit, Grab, PoseFields, Solved, VIEW_KEY,
+    dragged_origin, hit_frame, position_texts, scene_frame, solve, AngleUnit, Grab, PoseFields,
+    Solved, VIEW_KEY,
 };
 use crate::view::signal::sig;
 
@@ -48,17 +50,15 @@ pub const PAGE: PageDef = PageDef::of::<Se3Page>("se3-relative", "se3-title", "s
 
 const P: &str = "se3";
 const PNG: &str = "se3_relative.png";
-/// Zoom per button press or `+`/`-`.
-const ZOOM_STEP: f64 = 1.25;
-/// Orbit per arrow key, px of drag (Shift: five times).
-const ORBIT_KEY_PX: f64 = 8.0;
+/// The camera frames this share of the scene's radius: the frames fill the view (their axis
+/// tips may reach its edge).
+const CLOSER: f64 = 0.8;
 
-/// A drag under way: what, the pointer where it began, the origin then.
+/// A drag of an origin under way: which, the pointer where it began, the origin then.
 #[derive(Debug, Clone, Copy)]
 struct DragStart {
     grab: Grab,
     start_px: DVec2,
-    last_px: DVec2,
     origin: DVec3,
 }
 
@@ -70,7 +70,12 @@ struct Inner {
     root: Element,
     poses: RefCell<poses::Poses>,
     solved: RefCell<Solved>,
-    scene: RefCell<scene::Scene>,
+    /// The 3D view (camera, orbit, zoom, presets), made once the page exists.
+    view: RefCell<Option<OrbitView<Grab>>>,
+    /// The radius of the scene framed (axis lengths, zoom limits).
+    radius: Cell<f64>,
+    /// The preset the view still shows (the URL's `view`).
+    preset: Cell<Option<Preset>>,
     rotations: RefCell<rotations::Rotations>,
     source: HtmlSelectElement,
     tables: tables::Matrices,
@@ -78,7 +83,6 @@ struct Inner {
     exports: Exports,
     notice: UrlNotice,
     url: RefCell<Option<UrlWriter>>,
-    drag: RefCell<Option<Drag<Grab>>>,
     dragging: Cell<Option<DragStart>>,
     hover: Cell<Option<Grab>>,
     timings: bench::Timings,
@@ -106,8 +110,6 @@ impl Page for Se3Page {
         let params = poses.params();
         params.validate().map_err(|e| js_error(&e))?;
         let solved = solve(&params);
-        let stage = find(&format!("[data-{P}=\"stage\"]"))?;
-        let scene = scene::Scene::find(&stage, &solved, preset.unwrap_or(Preset::Iso))?;
         let rotations =
             rotations::Rotations::find(&root, &find(&format!("[data-{P}=\"rot-stage\"]"))?)?;
         let source: HtmlSelectElement = dom::find(&root, &format!("[data-{P}=\"rot-source\"]"), P)?;
@@ -115,6 +117,9 @@ impl Page for Se3Page {
         let readouts = Readouts::find(&root)?;
         let exports = Exports::find(&root, P)?;
         let unit = poses.fields.unit;
+        let slot = find(&format!("[data-{P}=\"view\"]"))?;
+        let preset = preset.unwrap_or(Preset::Iso);
+        let (target, radius) = scene_frame(&params);
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
             let mut scope = Scope::new();
             let url = UrlWriter::new(&mut scope, me, Inner::query);
@@ -123,7 +128,9 @@ impl Page for Se3Page {
                 root,
                 poses: RefCell::new(poses),
                 solved: RefCell::new(solved),
-                scene: RefCell::new(scene),
+                view: RefCell::new(None),
+                radius: Cell::new(radius),
+                preset: Cell::new(Some(preset)),
                 rotations: RefCell::new(rotations),
                 source,
                 tables,
@@ -131,7 +138,6 @@ impl Page for Se3Page {
                 exports,
                 notice,
                 url: RefCell::new(Some(url)),
-                drag: RefCell::new(None),
                 dragging: Cell::new(None),
                 hover: Cell::new(None),
                 timings: bench::Timings::install(),
@@ -139,18 +145,12 @@ impl Page for Se3Page {
             }
         });
         inner.set_unit_radios(unit);
-        inner.install(&stage)?;
-        {
-            let mut scene = inner.scene.borrow_mut();
-            scene.fit();
-            let solved = inner.solved.borrow();
-            let preset = scene.preset;
-            scene.frame(&solved, preset);
-        }
+        inner.build_view(&slot, preset, target, radius)?;
+        inner.install()?;
         inner.rotations.borrow_mut().canvas.fit();
         inner.show_commands();
-        inner.redraw(true);
         inner.show_numbers();
+        inner.redraw();
         Ok(Se3Page(inner))
     }
 
@@ -166,8 +166,10 @@ impl Page for Se3Page {
             let label = ctx::t_strings("kit-exports-download", &[("file", CSV_NAME.to_string())]);
             button.set_text_content(Some(&label));
         }
+        if let Some(view) = p.view.borrow().as_ref() {
+            view.relocalize();
+        }
         p.show_numbers();
-        p.redraw(true);
     }
 
     fn set_projector(&self, _on: bool) {
@@ -175,15 +177,8 @@ impl Page for Se3Page {
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
-        vec![
-            Shortcut {
-                keys: "← → ↑ ↓",
-                message_id: "se3-key-orbit",
-            },
-            Shortcut {
-                keys: "+ −",
-                message_id: "se3-key-zoom",
-            },
+        let mut keys = orbit::KEYS.to_vec();
+        keys.extend([
             Shortcut {
                 keys: "1 2 3 4",
                 message_id: "se3-key-views",
@@ -196,7 +191,8 @@ impl Page for Se3Page {
                 keys: "r",
                 message_id: "se3-key-reset",
             },
-        ]
+        ]);
+        keys
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
@@ -208,8 +204,7 @@ impl Inner {
     /// The URL: the poses (radians), the unit, the view.
     fn query(&self) -> Vec<(String, String)> {
         let mut pairs = self.poses.borrow().url_pairs();
-        let preset = self.scene.borrow().preset;
-        if preset != Preset::Iso {
+        if let Some(preset) = self.preset.get().filter(|p| *p != Preset::Iso) {
             pairs.push((VIEW_KEY.into(), preset.id().into()));
         }
         pairs
@@ -221,7 +216,54 @@ impl Inner {
         }
     }
 
-    fn install(&self, stage: &Element) -> Result<(), JsValue> {
+    /// The 3D view in `slot`: the page draws it, claims presses on the origins and hears
+    /// their drags and the view's changes.
+    fn build_view(
+        &self,
+        slot: &Element,
+        preset: Preset,
+        target: DVec3,
+        radius: f64,
+    ) -> Result<(), JsValue> {
+        let mut options = OrbitOptions::new(
+            "se3-relative-canvas",
+            "se3-canvas-label",
+            target,
+            radius * CLOSER,
+        );
+        options.layers = 2;
+        options.stage_class = "se3-stage";
+        options.preset = preset;
+        let me = self.me.clone();
+        options.claim = Some(Box::new(move |at, kind: PointerKind, camera: &Camera| {
+            let p = me.upgrade()?;
+            let params = p.solved.try_borrow().ok()?.params;
+            hit_frame(camera, &params, at, scene::hit_radius(kind.is_coarse()))
+        }));
+        let me = self.me.clone();
+        options.on_handle = Some(Box::new(move |ev| {
+            if let Some(p) = me.upgrade() {
+                p.on_drag(ev);
+            }
+        }));
+        let me = self.me.clone();
+        options.on_view = Some(Box::new(move |preset| {
+            if let Some(p) = me.upgrade() {
+                p.preset.set(preset);
+                p.write_url();
+            }
+        }));
+        let me = self.me.clone();
+        let view = OrbitView::new(slot, options, move |canvas, camera, ink| {
+            if let Some(p) = me.upgrade() {
+                p.draw(canvas, camera, ink);
+            }
+        })?;
+        *self.view.borrow_mut() = Some(view);
+        Ok(())
+    }
+
+    fn install(&self) -> Result<(), JsValue> {
         let mut scope = self.scope.borrow_mut();
         let me = &self.me;
         let form = self.poses.borrow().element.clone();
@@ -247,72 +289,57 @@ impl Inner {
                 }
             })?;
         }
-        for preset in Preset::ALL {
-            let button: Element =
-                dom::find(&self.root, &format!("[data-view=\"{}\"]", preset.id()), P)?;
-            scope.listen_for(&button, "click", me, move |p, _| p.view(preset))?;
-        }
-        for (dir, factor) in [("in", ZOOM_STEP), ("out", 1.0 / ZOOM_STEP)] {
-            let button: Element = dom::find(&self.root, &format!("[data-zoom=\"{dir}\"]"), P)?;
-            scope.listen_for(&button, "click", me, move |p, _| p.zoom(factor))?;
-        }
-        scope.listen_for(&self.source, "change", me, |p, _| p.show_rotations())?;
+        scope.listen_for(&self.source, "change", me, |p, _| p.show_rotations(None))?;
         let csv: Element = dom::find(&self.root, &format!("[data-download=\"{CSV_NAME}\"]"), P)?;
         scope.listen_for(&csv, "click", me, |p, _| p.download())?;
         let png: Element = dom::find(&self.root, &format!("[data-download=\"{PNG}\"]"), P)?;
         scope.listen_for(&png, "click", me, |p, _| {
-            if let Ok(canvas) = p.scene.borrow().canvas.flatten("#ffffff") {
-                let _ = crate::ui::kit::png::download(&canvas, PNG);
+            if let Some(view) = p.view.borrow().as_ref() {
+                view.png(PNG);
             }
         })?;
         for kind in ["python", "bsv"] {
             let button: Element = dom::find(&self.root, &format!("[data-copy=\"{kind}\"]"), P)?;
             scope.listen_for(&button, "click", me, move |p, _| p.exports.copy(kind))?;
         }
-        scope.listen_for(stage, "wheel", me, |p, e| {
-            let dy = js_sys::Reflect::get(e, &"deltaY".into())
-                .ok()
-                .and_then(|v| v.as_f64())
-                .unwrap_or(0.0);
-            e.prevent_default();
-            p.zoom(Camera::wheel_factor(dy));
-        })?;
         let rot_stage = self.rotations.borrow().canvas.stage.clone();
-        scope.observe_resize(&[stage, &rot_stage], me, |p| p.relayout())?;
-        let top = self.scene.borrow().canvas.top().canvas.clone();
-        scope.listen_for(&top, "pointerdown", me, |p, _| {
-            focus_without_scroll(&p.scene.borrow().canvas.top().canvas);
+        scope.observe_resize(&[&rot_stage], me, |p| {
+            p.rotations.borrow_mut().canvas.fit();
+            p.show_rotations(None);
         })?;
-        drop(scope);
-        let (w_hit, w_on) = (self.me.clone(), self.me.clone());
-        *self.drag.borrow_mut() = Some(Drag::attach(
-            stage,
-            &top,
-            move |at, kind| {
-                let p = w_hit.upgrade()?;
-                let scene = p.scene.borrow();
-                let solved = p.solved.borrow();
-                let radius = scene::Scene::hit_radius(kind.is_coarse());
-                match hit_frame(&scene.camera, &solved.params, at, radius) {
-                    Some(grab) => Some(grab),
-                    // A finger off the origins scrolls the page; a mouse or pen orbits.
-                    None if kind == PointerKind::Touch => None,
-                    None => Some(Grab::Orbit),
-                }
-            },
-            move |ev| {
-                if let Some(p) = w_on.upgrade() {
-                    p.on_drag(ev);
-                }
-            },
-        )?);
-        self.update_handles();
         Ok(())
     }
 
-    fn update_handles(&self) {
-        if let Some(drag) = self.drag.borrow().as_ref() {
-            drag.set_handles(&self.scene.borrow().handles(&self.solved.borrow()));
+    /// The camera now (the view's).
+    fn camera(&self) -> Option<Camera> {
+        self.view.try_borrow().ok()?.as_ref().map(OrbitView::camera)
+    }
+
+    /// One frame of the view (the kit calls it): ground, frames, hooks, and the rotations
+    /// panel seen from the same direction.
+    fn draw(&self, canvas: &LayeredCanvas, camera: &Camera, ink: Ink) {
+        let t0 = now_ms();
+        let Ok(solved) = self.solved.try_borrow() else {
+            return;
+        };
+        let radius = self.radius.get();
+        scene::draw_ground(canvas, camera, radius, ink);
+        scene::draw_frames(canvas, camera, &solved, self.hover.get(), radius, ink);
+        scene::write_hooks(canvas, camera, &solved, self.preset.get());
+        drop(solved);
+        self.show_rotations(Some(camera));
+        // A drag of an origin records its whole frame itself.
+        if self.dragging.get().is_none() {
+            self.timings.push(now_ms() - t0);
+        }
+    }
+
+    /// Redraws the view now.
+    fn redraw(&self) {
+        if let Ok(view) = self.view.try_borrow() {
+            if let Some(view) = view.as_ref() {
+                view.redraw_now();
+            }
         }
     }
 
@@ -320,78 +347,59 @@ impl Inner {
         let t0 = now_ms();
         match ev {
             DragEvent::Hover(at) => {
-                let hit = {
-                    let scene = self.scene.borrow();
+                let hit = self.camera().and_then(|camera| {
                     hit_frame(
-                        &scene.camera,
+                        &camera,
                         &self.solved.borrow().params,
                         at,
-                        scene::Scene::hit_radius(false),
+                        scene::hit_radius(false),
                     )
-                };
+                });
                 if hit != self.hover.get() {
                     self.hover.set(hit);
-                    if let Some(drag) = self.drag.borrow().as_ref() {
-                        drag.set_hover_cursor(if hit.is_some() { "grab" } else { "default" });
-                    }
-                    self.redraw(false);
+                    self.redraw();
                 }
             }
             DragEvent::Leave => {
                 if self.hover.take().is_some() {
-                    self.redraw(false);
+                    self.redraw();
                 }
             }
             DragEvent::Start { handle, at, .. } => {
                 let params = self.solved.borrow().params;
                 let origin = match handle {
                     Grab::A => DVec3::new(params.a.x, params.a.y, params.a.z),
-                    Grab::B => DVec3::new(params.b.x, params.b.y, params.b.z),
-                    Grab::Orbit => DVec3::ZERO,
+                    Grab::B | Grab::Orbit => DVec3::new(params.b.x, params.b.y, params.b.z),
                 };
                 self.dragging.set(Some(DragStart {
                     grab: handle,
                     start_px: at,
-                    last_px: at,
                     origin,
                 }));
             }
             DragEvent::Move { at, .. } => {
-                let Some(mut d) = self.dragging.get() else {
+                let Some(d) = self.dragging.get() else {
                     return;
                 };
-                match d.grab {
-                    Grab::Orbit => {
-                        self.scene.borrow_mut().camera.orbit(at - d.last_px);
-                        d.last_px = at;
-                        self.dragging.set(Some(d));
-                        self.redraw(true);
-                        self.show_rotations();
-                    }
-                    Grab::A | Grab::B => {
-                        let moved = {
-                            let scene = self.scene.borrow();
-                            dragged_origin(&scene.camera, d.origin, d.start_px, at)
-                        };
-                        if let Some(p) = moved {
-                            let first = if d.grab == Grab::A { 0 } else { 6 };
-                            let values: Vec<(usize, String)> = position_texts(p)
-                                .into_iter()
-                                .enumerate()
-                                .map(|(k, t)| (first + k, t))
-                                .collect();
-                            let changed = self.poses.borrow_mut().set(&values);
-                            if let Some(params) = changed {
-                                self.changed(params, false);
-                            }
-                        }
+                let moved = self
+                    .camera()
+                    .and_then(|camera| dragged_origin(&camera, d.origin, d.start_px, at));
+                if let Some(p) = moved {
+                    let first = if d.grab == Grab::A { 0 } else { 6 };
+                    let values: Vec<(usize, String)> = position_texts(p)
+                        .into_iter()
+                        .enumerate()
+                        .map(|(k, t)| (first + k, t))
+                        .collect();
+                    let changed = self.poses.borrow_mut().set(&values);
+                    if let Some(params) = changed {
+                        self.changed(params, false);
                     }
                 }
                 self.timings.push(now_ms() - t0);
             }
             DragEvent::End { .. } => {
                 self.dragging.set(None);
-                self.update_handles();
                 if let Some(url) = self.url.borrow().as_ref() {
                     url.write_now();
                 }
@@ -404,13 +412,10 @@ impl Inner {
     fn changed(&self, params: Se3Params, typed: bool) {
         *self.solved.borrow_mut() = solve(&params);
         if typed {
-            self.scene.borrow_mut().keep_in_view(&self.solved.borrow());
-            self.redraw(true);
-            self.update_handles();
-        } else {
-            self.redraw(false);
+            self.keep_in_view();
         }
         self.show_numbers();
+        self.redraw();
         self.show_commands();
         self.exports.clear_status();
         let rel = self.solved.borrow().rel;
@@ -443,49 +448,34 @@ impl Inner {
         let _ = self.root.set_attribute("data-angle-unit", unit.id());
     }
 
-    fn view(&self, preset: Preset) {
-        {
-            let mut scene = self.scene.borrow_mut();
+    /// Frames the scene again when an origin has left the view (after a typed value).
+    fn keep_in_view(&self) {
+        let out = {
             let solved = self.solved.borrow();
-            scene.frame(&solved, preset);
+            self.camera()
+                .is_some_and(|camera| scene::out_of_view(&camera, &solved))
+        };
+        if out {
+            self.frame_scene();
         }
-        self.redraw(true);
-        self.update_handles();
-        self.show_rotations();
-        self.write_url();
     }
 
-    fn zoom(&self, factor: f64) {
-        {
-            let mut scene = self.scene.borrow_mut();
-            let radius = scene.radius;
-            scene.camera.zoom(factor, radius);
+    /// Frames the whole scene from the current preset (iso after an orbit).
+    fn frame_scene(&self) {
+        let (target, radius) = scene_frame(&self.solved.borrow().params);
+        self.radius.set(radius);
+        if let Some(view) = self.view.borrow().as_ref() {
+            view.frame_scene(target, radius * CLOSER);
+            self.preset.set(view.preset());
         }
-        self.redraw(true);
-        self.update_handles();
     }
 
     fn relayout(&self) {
-        self.scene.borrow_mut().fit();
+        if let Some(view) = self.view.borrow().as_ref() {
+            view.relayout();
+        }
         self.rotations.borrow_mut().canvas.fit();
-        self.redraw(true);
-        self.update_handles();
-        if let Some(drag) = self.drag.borrow().as_ref() {
-            drag.relayout();
-        }
-        self.show_rotations();
-    }
-
-    /// The view: the ground when the camera moved (`ground`), the frames always.
-    fn redraw(&self, ground: bool) {
-        let ink = Ink::current();
-        let scene = self.scene.borrow();
-        let solved = self.solved.borrow();
-        if ground {
-            scene.draw_ground(ink);
-        }
-        scene.draw_frames(&solved, self.hover.get(), ink);
-        scene.write_hooks(&solved);
+        self.show_rotations(None);
     }
 
     /// Readouts (in the unit shown), matrices, the CSV row, the check, the rotations panel.
@@ -520,25 +510,30 @@ impl Inner {
             &py_float(solved.check_error),
         );
         self.tables.show(&solved);
-        drop(solved);
-        self.show_rotations();
     }
 
-    fn show_rotations(&self) {
-        let solved = self.solved.borrow();
+    /// The rotations panel, seen from `camera`'s direction (the view's when `None`).
+    fn show_rotations(&self, camera: Option<&Camera>) {
+        let Some(camera) = camera.copied().or_else(|| self.camera()) else {
+            return;
+        };
+        let Ok(solved) = self.solved.try_borrow() else {
+            return;
+        };
         let pose = match rotations::Source::from_id(&self.source.value()) {
             rotations::Source::A => solved.params.a,
             rotations::Source::B => solved.params.b,
             rotations::Source::Relative => solved.rel,
         };
-        let (az, el) = {
-            let cam = &self.scene.borrow().camera;
-            (cam.azimuth, cam.elevation)
+        let Ok(rotations) = self.rotations.try_borrow() else {
+            return;
         };
-        let diff =
-            self.rotations
-                .borrow()
-                .show((pose.roll, pose.pitch, pose.yaw), az, el, Ink::current());
+        let diff = rotations.show(
+            (pose.roll, pose.pitch, pose.yaw),
+            camera.azimuth,
+            camera.elevation,
+            Ink::current(),
+        );
         self.readouts
             .set_with_value("rot-diff", &format!("{diff:.4}"), &py_float(diff));
     }
@@ -562,24 +557,24 @@ impl Inner {
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        let k = if event.shift_key() { 5.0 } else { 1.0 };
-        let orbit = |d: DVec2| {
-            self.scene.borrow_mut().camera.orbit(d * ORBIT_KEY_PX * k);
-            self.redraw(true);
-            self.update_handles();
-            self.show_rotations();
+        if self
+            .view
+            .borrow()
+            .as_ref()
+            .is_some_and(|view| view.on_key(event))
+        {
+            return true;
+        }
+        let preset = |p: Preset| {
+            if let Some(view) = self.view.borrow().as_ref() {
+                view.set_preset(p);
+            }
         };
         match event.key().as_str() {
-            "ArrowLeft" => orbit(DVec2::new(-1.0, 0.0)),
-            "ArrowRight" => orbit(DVec2::new(1.0, 0.0)),
-            "ArrowUp" => orbit(DVec2::new(0.0, -1.0)),
-            "ArrowDown" => orbit(DVec2::new(0.0, 1.0)),
-            "+" | "=" => self.zoom(ZOOM_STEP),
-            "-" | "_" => self.zoom(1.0 / ZOOM_STEP),
-            "1" => self.view(Preset::Iso),
-            "2" => self.view(Preset::Top),
-            "3" => self.view(Preset::Front),
-            "4" => self.view(Preset::Side),
+            "1" => preset(Preset::Iso),
+            "2" => preset(Preset::Top),
+            "3" => preset(Preset::Front),
+            "4" => preset(Preset::Side),
             "u" | "U" => {
                 let unit = match self.poses.borrow().fields.unit {
                     AngleUnit::Rad => AngleUnit::Deg,

@@ -1,22 +1,20 @@
 //! The 3D view: the world frame, frame A and frame B as triads (x red, y green, z blue) over a
 //! ground grid, and the relative transform drawn as an arrow from A's origin to B's, labelled
 //! as expressed in A, with the path along A's own axes by the relative translation (dashed,
-//! in A's axis colours). Two layers: the ground and the world triad (redrawn when the camera
-//! moves), then the frames (redrawn on every change). The camera is
-//! [`crate::view::camera3d::Camera`]; hit tests and drags are
+//! in A's axis colours), on the two layers of the kit's orbit view
+//! ([`crate::ui::kit::orbit::OrbitView`], which owns the camera, orbit, zoom and presets):
+//! the ground and the world triad, then the frames. Hit tests and drags are
 //! [`crate::view::se3_relative`]'s.
 
 use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
-use wasm_bindgen::JsValue;
-use web_sys::{CanvasRenderingContext2d, Element};
+use web_sys::CanvasRenderingContext2d;
 
 use crate::ui::ctx;
 use crate::ui::kit::canvas::{dash, solid, Ink, LayeredCanvas};
 use crate::view::camera3d::{ground_grid, Camera, Preset};
-use crate::view::drag::HandleShape;
-use crate::view::se3_relative::{axis_length, path_in_a, scene_frame, Grab, Solved, Triad};
+use crate::view::se3_relative::{axis_length, path_in_a, Grab, Solved, Triad};
 
 const BG: &str = "#fbfcfe";
 const GRID: &str = "#e3e8ef";
@@ -25,16 +23,6 @@ pub const AXIS_COLOURS: [&str; 3] = ["#d62828", "#1f9d3a", "#1d4ed8"];
 const LABEL: &str = "#111827";
 const ARROW: &str = "#7c3aed";
 const HOVER: &str = "#f59e0b";
-
-/// The view component.
-pub struct Scene {
-    pub canvas: LayeredCanvas,
-    pub camera: Camera,
-    /// The radius framed (zoom limits and axis lengths follow it).
-    pub radius: f64,
-    /// The view preset last chosen (the URL's `view`).
-    pub preset: Preset,
-}
 
 /// A line from `a` to `b` in world coordinates, if both are in front of the eye.
 fn line(c: &CanvasRenderingContext2d, cam: &Camera, a: DVec3, b: DVec3) -> Option<(DVec2, DVec2)> {
@@ -110,181 +98,136 @@ pub fn draw_triad(
     }
 }
 
-impl Scene {
-    /// Wraps the canvases of `stage`, framing `solved`'s scene from `preset`.
-    pub fn find(stage: &Element, solved: &Solved, preset: Preset) -> Result<Scene, JsValue> {
-        let canvas = LayeredCanvas::from_stage(stage)?;
-        let (target, radius) = scene_frame(&solved.params);
-        Ok(Scene {
-            camera: Camera::framing(target, radius, preset, 640.0, 480.0),
-            canvas,
-            radius,
-            preset,
-        })
+/// Hit radius of the origins, px.
+pub fn hit_radius(coarse: bool) -> f64 {
+    if coarse {
+        24.0
+    } else {
+        12.0
     }
+}
 
-    /// Sizes the layers to the stage; the camera keeps its view.
-    pub fn fit(&mut self) {
-        self.canvas.fit();
-        let (w, h) = self.canvas.size();
-        self.camera.resize(w, h);
+/// Whether the world origin or a frame's origin lies outside the canvas (after a typed
+/// value the view is framed again; never during a drag).
+pub fn out_of_view(camera: &Camera, solved: &Solved) -> bool {
+    let (w, h) = (camera.width, camera.height);
+    let inside = |p: DVec3| {
+        camera
+            .project(p)
+            .is_some_and(|q| q.at.x >= 0.0 && q.at.x <= w && q.at.y >= 0.0 && q.at.y <= h)
+    };
+    let a = Triad::of(&solved.t_a).origin;
+    let b = Triad::of(&solved.t_b).origin;
+    !(inside(DVec3::ZERO) && inside(a) && inside(b))
+}
+
+/// Layer 0: background, ground grid, the world triad (`radius`: the scene framed).
+pub fn draw_ground(canvas: &LayeredCanvas, cam: &Camera, radius: f64, ink: Ink) {
+    let layer = canvas.layer(0);
+    layer.begin();
+    let c = &layer.ctx;
+    c.set_fill_style_str(BG);
+    c.fill_rect(0.0, 0.0, layer.css_w, layer.css_h);
+    let cell = crate::view::plot::nice_step(0.0, 2.0 * radius, 8);
+    let n = ((2.0 * (radius + cam.target.truncate().length()) / cell).ceil() as usize).clamp(2, 40);
+    let n = n + n % 2;
+    c.set_stroke_style_str(GRID);
+    c.set_line_width(ink.line);
+    for (a, b) in ground_grid(n, cell) {
+        line(c, cam, a, b);
     }
+    let world = ctx::t("se3-view-world");
+    draw_triad(
+        c,
+        cam,
+        &Triad::world(),
+        axis_length(radius) * 1.2,
+        Some((&world, LabelSide::AboveLeft)),
+        ink,
+    );
+}
 
-    /// Frames `solved` again from `preset`.
-    pub fn frame(&mut self, solved: &Solved, preset: Preset) {
-        let (w, h) = self.canvas.size();
-        let (target, radius) = scene_frame(&solved.params);
-        self.camera = Camera::framing(target, radius, preset, w, h);
-        self.radius = radius;
-        self.preset = preset;
+/// Layer 1: frames A and B, the arrow A → B and the path along A's axes; `hover` rings
+/// the origin under the pointer.
+pub fn draw_frames(
+    canvas: &LayeredCanvas,
+    cam: &Camera,
+    solved: &Solved,
+    hover: Option<Grab>,
+    radius: f64,
+    ink: Ink,
+) {
+    let layer = canvas.layer(1);
+    layer.begin();
+    let c = &layer.ctx;
+    let len = axis_length(radius);
+    let a = Triad::of(&solved.t_a);
+    let b = Triad::of(&solved.t_b);
+    // The path along A's axes: x_rel along x_A, then y_rel along y_A, then z_rel along z_A.
+    let path = path_in_a(solved);
+    let _ = c.set_line_dash(&dash(4.0 * ink.line, 4.0 * ink.line));
+    c.set_line_width(1.5 * ink.line);
+    for (k, colour) in AXIS_COLOURS.iter().enumerate() {
+        c.set_stroke_style_str(colour);
+        line(c, cam, path[k], path[k + 1]);
     }
-
-    /// Frames `solved` again from the current direction when an origin has left the canvas
-    /// (after a typed value, not during a drag).
-    pub fn keep_in_view(&mut self, solved: &Solved) {
-        let (w, h) = self.canvas.size();
-        let inside = |p: DVec3| {
-            self.camera
-                .project(p)
-                .is_some_and(|q| q.at.x >= 0.0 && q.at.x <= w && q.at.y >= 0.0 && q.at.y <= h)
-        };
-        let a = Triad::of(&solved.t_a).origin;
-        let b = Triad::of(&solved.t_b).origin;
-        if inside(DVec3::ZERO) && inside(a) && inside(b) {
-            return;
-        }
-        let (az, el) = (self.camera.azimuth, self.camera.elevation);
-        self.frame(solved, self.preset);
-        self.camera.azimuth = az;
-        self.camera.elevation = el;
-    }
-
-    /// Hit radius of the origins, px.
-    pub fn hit_radius(coarse: bool) -> f64 {
-        if coarse {
-            24.0
+    let _ = c.set_line_dash(&solid());
+    draw_triad(c, cam, &a, len, Some(("A", LabelSide::BelowRight)), ink);
+    draw_triad(c, cam, &b, len, Some(("B", LabelSide::BelowRight)), ink);
+    // The arrow A → B.
+    c.set_stroke_style_str(ARROW);
+    c.set_line_width(2.5 * ink.line);
+    if let (Some(pa), Some(pb)) = (cam.project(a.origin), cam.project(b.origin)) {
+        let (pa, pb) = (pa.at, pb.at);
+        let d = (pb - pa).normalize_or_zero();
+        let end = pb - d * 7.0 * ink.line;
+        c.begin_path();
+        c.move_to(pa.x, pa.y);
+        c.line_to(end.x, end.y);
+        c.stroke();
+        arrowhead(c, pa, end, 12.0 * ink.line, ARROW);
+        // The label beside the arrow's middle, on the side away from the arrow (to the
+        // right of a steep arrow, under a flat one).
+        let mid = (pa + pb) / 2.0;
+        let text = ctx::t("se3-view-arrow");
+        c.set_font(&ink.font(13.0, true));
+        c.set_fill_style_str(ARROW);
+        let width = c.measure_text(&text).map_or(0.0, |m| m.width());
+        let text_h = ink.text_px(13.0);
+        let steep = d.y.abs() > d.x.abs();
+        let (x, y) = if steep {
+            (mid.x + 12.0 * ink.line, mid.y + text_h / 2.0)
         } else {
-            12.0
-        }
+            (mid.x - width / 2.0, mid.y + text_h + 10.0 * ink.line)
+        };
+        let x = x.min(layer.css_w - width - 4.0).max(4.0);
+        let y = y.min(layer.css_h - 4.0).max(text_h + 2.0);
+        let _ = c.fill_text(&text, x, y);
     }
-
-    /// The touch overlay shapes: both origins (a finger anywhere else scrolls the page).
-    pub fn handles(&self, solved: &Solved) -> Vec<HandleShape> {
-        [&solved.t_a, &solved.t_b]
-            .iter()
-            .filter_map(|t| self.camera.project(Triad::of(t).origin))
-            .map(|p| HandleShape::Circle {
-                centre: p.at,
-                radius: Scene::hit_radius(true),
-            })
-            .collect()
-    }
-
-    /// Layer 0: background, ground grid, the world triad.
-    pub fn draw_ground(&self, ink: Ink) {
-        let layer = self.canvas.layer(0);
-        layer.begin();
-        let c = &layer.ctx;
-        c.set_fill_style_str(BG);
-        c.fill_rect(0.0, 0.0, layer.css_w, layer.css_h);
-        let cell = crate::view::plot::nice_step(0.0, 2.0 * self.radius, 8);
-        let n = ((2.0 * (self.radius + self.camera.target.truncate().length()) / cell).ceil()
-            as usize)
-            .clamp(2, 40);
-        let n = n + n % 2;
-        c.set_stroke_style_str(GRID);
-        c.set_line_width(ink.line);
-        for (a, b) in ground_grid(n, cell) {
-            line(c, &self.camera, a, b);
-        }
-        let len = axis_length(self.radius);
-        let world = ctx::t("se3-view-world");
-        draw_triad(
-            c,
-            &self.camera,
-            &Triad::world(),
-            len * 1.2,
-            Some((&world, LabelSide::AboveLeft)),
-            ink,
-        );
-    }
-
-    /// Layer 1: frames A and B, the arrow A → B and the path along A's axes; `hover` rings
-    /// the origin under the pointer.
-    pub fn draw_frames(&self, solved: &Solved, hover: Option<Grab>, ink: Ink) {
-        let layer = self.canvas.layer(1);
-        layer.begin();
-        let c = &layer.ctx;
-        let cam = &self.camera;
-        let len = axis_length(self.radius);
-        let a = Triad::of(&solved.t_a);
-        let b = Triad::of(&solved.t_b);
-        // The path along A's axes: x_rel along x_A, then y_rel along y_A, then z_rel along z_A.
-        let path = path_in_a(solved);
-        let _ = c.set_line_dash(&dash(4.0 * ink.line, 4.0 * ink.line));
-        c.set_line_width(1.5 * ink.line);
-        for (k, colour) in AXIS_COLOURS.iter().enumerate() {
-            c.set_stroke_style_str(colour);
-            line(c, cam, path[k], path[k + 1]);
-        }
-        let _ = c.set_line_dash(&solid());
-        draw_triad(c, cam, &a, len, Some(("A", LabelSide::BelowRight)), ink);
-        draw_triad(c, cam, &b, len, Some(("B", LabelSide::BelowRight)), ink);
-        // The arrow A → B.
-        c.set_stroke_style_str(ARROW);
-        c.set_line_width(2.5 * ink.line);
-        if let (Some(pa), Some(pb)) = (cam.project(a.origin), cam.project(b.origin)) {
-            let (pa, pb) = (pa.at, pb.at);
-            let d = (pb - pa).normalize_or_zero();
-            let end = pb - d * 7.0 * ink.line;
-            c.begin_path();
-            c.move_to(pa.x, pa.y);
-            c.line_to(end.x, end.y);
-            c.stroke();
-            arrowhead(c, pa, end, 12.0 * ink.line, ARROW);
-            // The label beside the arrow's middle, on the side away from the arrow (to the
-            // right of a steep arrow, under a flat one).
-            let mid = (pa + pb) / 2.0;
-            let text = ctx::t("se3-view-arrow");
-            c.set_font(&ink.font(13.0, true));
-            c.set_fill_style_str(ARROW);
-            let width = c.measure_text(&text).map_or(0.0, |m| m.width());
-            let text_h = ink.text_px(13.0);
-            let steep = d.y.abs() > d.x.abs();
-            let (x, y) = if steep {
-                (mid.x + 12.0 * ink.line, mid.y + text_h / 2.0)
-            } else {
-                (mid.x - width / 2.0, mid.y + text_h + 10.0 * ink.line)
-            };
-            let x = x.min(layer.css_w - width - 4.0).max(4.0);
-            let y = y.min(layer.css_h - 4.0).max(text_h + 2.0);
-            let _ = c.fill_text(&text, x, y);
-        }
-        // The origins (the drag handles).
-        for (grab, triad) in [(Grab::A, &a), (Grab::B, &b)] {
-            if let Some(p) = cam.project(triad.origin) {
-                disc(c, p.at, 5.5 * ink.line, LABEL);
-                if hover == Some(grab) {
-                    c.set_stroke_style_str(HOVER);
-                    c.set_line_width(2.5 * ink.line);
-                    c.begin_path();
-                    let _ = c.arc(p.at.x, p.at.y, Scene::hit_radius(false), 0.0, TAU);
-                    c.stroke();
-                }
+    // The origins (the drag handles).
+    for (grab, triad) in [(Grab::A, &a), (Grab::B, &b)] {
+        if let Some(p) = cam.project(triad.origin) {
+            disc(c, p.at, 5.5 * ink.line, LABEL);
+            if hover == Some(grab) {
+                c.set_stroke_style_str(HOVER);
+                c.set_line_width(2.5 * ink.line);
+                c.begin_path();
+                let _ = c.arc(p.at.x, p.at.y, hit_radius(false), 0.0, TAU);
+                c.stroke();
             }
         }
     }
+}
 
-    /// Test hooks on the top canvas: where each origin is drawn (CSS px).
-    pub fn write_hooks(&self, solved: &Solved) {
-        let top = &self.canvas.top().canvas;
-        for (key, t) in [("a", &solved.t_a), ("b", &solved.t_b)] {
-            if let Some(p) = self.camera.project(Triad::of(t).origin) {
-                let _ = top.set_attribute(&format!("data-{key}-x"), &format!("{:.2}", p.at.x));
-                let _ = top.set_attribute(&format!("data-{key}-y"), &format!("{:.2}", p.at.y));
-            }
+/// Test hooks on the top canvas: where each origin is drawn (CSS px).
+pub fn write_hooks(canvas: &LayeredCanvas, cam: &Camera, solved: &Solved, preset: Option<Preset>) {
+    let top = &canvas.top().canvas;
+    for (key, t) in [("a", &solved.t_a), ("b", &solved.t_b)] {
+        if let Some(p) = cam.project(Triad::of(t).origin) {
+            let _ = top.set_attribute(&format!("data-{key}-x"), &format!("{:.2}", p.at.x));
+            let _ = top.set_attribute(&format!("data-{key}-y"), &format!("{:.2}", p.at.y));
         }
-        let _ = top.set_attribute("data-view", self.preset.id());
-        let _ = top.set_attribute("data-azimuth", &format!("{:.4}", self.camera.azimuth));
     }
+    let _ = top.set_attribute("data-view", preset.map_or("custom", Preset::id));
+    let _ = top.set_attribute("data-azimuth", &format!("{:.4}", cam.azimuth));
 }
