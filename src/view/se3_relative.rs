@@ -427,8 +427,17 @@ pub enum Grab {
     A,
     /// Frame B's origin.
     B,
-    /// The empty view: orbit the camera.
-    Orbit,
+    /// Frame A's yaw ring (turns A about the world's vertical: only its yaw changes).
+    YawA,
+    /// Frame B's yaw ring.
+    YawB,
+}
+
+impl Grab {
+    /// Whether this is frame A's (origin or ring).
+    pub fn is_a(self) -> bool {
+        matches!(self, Grab::A | Grab::YawA)
+    }
 }
 
 /// Which frame origin a press at `cursor` grabs (`radius_px` of it; the nearer to the eye
@@ -450,10 +459,113 @@ pub fn hit_frame(
     }
 }
 
-/// Where the ray through canvas point `at` meets the plane through `anchor` facing the
-/// camera: the world point a drag of `anchor` to `at` puts it at (exact, not first-order),
-/// or `None` when the ray misses the plane in front of the eye.
-pub fn drag_to(camera: &Camera, anchor: DVec3, at: DVec2) -> Option<DVec3> {
+/// The radius of the yaw rings, metres, for a scene of `radius`.
+pub fn ring_radius(radius: f64) -> f64 {
+    0.7 * axis_length(radius)
+}
+
+/// A yaw ring: `n` points of the circle of `radius` metres about the vertical through
+/// `origin`, in its horizontal plane (the recipe's yaw turns about the world's z axis, the
+/// last of its rotations, so turning a frame about that vertical changes its yaw alone).
+pub fn yaw_ring(origin: DVec3, radius: f64, n: usize) -> Vec<DVec3> {
+    (0..n)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / n as f64;
+            origin + DVec3::new(t.cos(), t.sin(), 0.0) * radius
+        })
+        .collect()
+}
+
+/// Points of a yaw ring drawn and hit-tested.
+pub const RING_POINTS: usize = 48;
+
+/// Whether `cursor` lies within `radius_px` of the projected yaw ring about `origin`.
+pub fn hit_ring(
+    camera: &Camera,
+    origin: DVec3,
+    radius: f64,
+    cursor: DVec2,
+    radius_px: f64,
+) -> Option<f64> {
+    let pts: Vec<Option<DVec2>> = yaw_ring(origin, radius, RING_POINTS)
+        .into_iter()
+        .map(|p| camera.project(p).map(|q| q.at))
+        .collect();
+    let mut best: Option<f64> = None;
+    for k in 0..pts.len() {
+        let (Some(a), Some(b)) = (pts[k], pts[(k + 1) % pts.len()]) else {
+            continue;
+        };
+        let d = crate::view::drag::dist_to_segment(cursor, a, b);
+        if d <= radius_px && best.is_none_or(|m| d < m) {
+            best = Some(d);
+        }
+    }
+    best
+}
+
+/// What a press grabs: an origin first (within `radius_px`), else the nearer yaw ring
+/// (rings of `ring` metres), else nothing (the view orbits).
+pub fn hit_gizmo(
+    camera: &Camera,
+    params: &Se3Params,
+    ring: f64,
+    cursor: DVec2,
+    radius_px: f64,
+) -> Option<Grab> {
+    if let Some(grab) = hit_frame(camera, params, cursor, radius_px) {
+        return Some(grab);
+    }
+    let origin = |p: &Pose| DVec3::new(p.x, p.y, p.z);
+    let a = hit_ring(camera, origin(&params.a), ring, cursor, radius_px);
+    let b = hit_ring(camera, origin(&params.b), ring, cursor, radius_px);
+    match (a, b) {
+        (Some(da), Some(db)) if db < da => Some(Grab::YawB),
+        (Some(_), _) => Some(Grab::YawA),
+        (None, Some(_)) => Some(Grab::YawB),
+        (None, None) => None,
+    }
+}
+
+/// The angle about the vertical through `origin` (radians from +x toward +y) of the point
+/// where the ray through canvas point `at` meets `origin`'s horizontal plane; `None` when
+/// the ray runs (nearly) along the plane or meets it behind the eye.
+pub fn yaw_at(camera: &Camera, origin: DVec3, at: DVec2) -> Option<f64> {
+    let (eye, dir) = ray(camera, at)?;
+    if dir.z.abs() < 1e-9 {
+        return None;
+    }
+    let t = (origin.z - eye.z) / dir.z;
+    if !(t.is_finite() && t > 0.0) {
+        return None;
+    }
+    let p = eye + dir * t;
+    let d = p - origin;
+    (d.truncate().length() > 0.0).then(|| d.y.atan2(d.x))
+}
+
+/// `angle` wrapped into `(−π, π]`.
+pub fn wrap_angle(angle: f64) -> f64 {
+    use std::f64::consts::{PI, TAU};
+    let a = (angle + PI).rem_euclid(TAU) - PI;
+    if a == -PI {
+        PI
+    } else {
+        a
+    }
+}
+
+/// A dragged yaw as a field's recipe text: to 0.001 rad, or in degree mode to 0.1° (so the
+/// field shows a round number of degrees).
+pub fn yaw_text(yaw: f64, unit: AngleUnit) -> String {
+    match unit {
+        AngleUnit::Rad => mm_text(yaw),
+        AngleUnit::Deg => deg_to_rad_text(&deg_text((yaw.to_degrees() * 10.0).round() / 10.0)),
+    }
+}
+
+/// The eye and the direction of the ray through canvas point `at`.
+fn ray(camera: &Camera, at: DVec2) -> Option<(DVec3, DVec3)> {
     let (right, up, forward) = camera.basis();
     let focal = (camera.height / 2.0) / (camera.fov_y / 2.0).tan();
     if !(focal.is_finite() && focal > 0.0) {
@@ -461,7 +573,15 @@ pub fn drag_to(camera: &Camera, anchor: DVec3, at: DVec2) -> Option<DVec3> {
     }
     let dir = forward + right * ((at.x - camera.width / 2.0) / focal)
         - up * ((at.y - camera.height / 2.0) / focal);
-    let eye = camera.eye();
+    Some((camera.eye(), dir))
+}
+
+/// Where the ray through canvas point `at` meets the plane through `anchor` facing the
+/// camera: the world point a drag of `anchor` to `at` puts it at (exact, not first-order),
+/// or `None` when the ray misses the plane in front of the eye.
+pub fn drag_to(camera: &Camera, anchor: DVec3, at: DVec2) -> Option<DVec3> {
+    let (eye, dir) = ray(camera, at)?;
+    let (_, _, forward) = camera.basis();
     let denom = dir.dot(forward);
     let t = (anchor - eye).dot(forward) / denom;
     (t.is_finite() && t > 0.0).then(|| eye + dir * t)
@@ -672,6 +792,49 @@ mod tests {
             position_texts(DVec3::new(0.12345, -0.0004, 1.0)),
             ["0.123", "0", "1"]
         );
+    }
+
+    #[test]
+    fn yaw_rings_turn_a_frame_about_the_vertical_only() {
+        let c = camera();
+        let params = Se3Params::default();
+        let b = DVec3::new(0.1, 0.05, 0.02);
+        let ring = ring_radius(0.2);
+        // A point of B's ring (away from both origins) grabs B's ring; its angle is read back.
+        let t: f64 = 2.0;
+        let on_ring = b + DVec3::new(t.cos(), t.sin(), 0.0) * ring;
+        let px = c.project(on_ring).unwrap().at;
+        assert_eq!(hit_gizmo(&c, &params, ring, px, 8.0), Some(Grab::YawB));
+        assert!((yaw_at(&c, b, px).unwrap() - t).abs() < 1e-9);
+        // Origins come first; empty space grabs nothing.
+        let pb = c.project(b).unwrap().at;
+        assert_eq!(hit_gizmo(&c, &params, ring, pb, 8.0), Some(Grab::B));
+        assert_eq!(
+            hit_gizmo(&c, &params, ring, DVec2::new(5.0, 5.0), 8.0),
+            None
+        );
+        // Turning about the world's z axis changes the recipe's yaw alone: Rz(Δ) R(r, p, y)
+        // = R(r, p, y + Δ).
+        let r = rpy_to_rotation(0.2, 0.1, -0.3);
+        let turned = extrinsic(&[(Axis::Z, 0.7)]) * r;
+        assert!(max_abs_diff3(&turned, &rpy_to_rotation(0.2, 0.1, 0.4)) < 1e-15);
+        // Seen exactly from the side, the ray runs along the plane: no angle.
+        let side = Camera::framing(DVec3::ZERO, 0.2, Preset::Front, 640.0, 480.0);
+        assert_eq!(yaw_at(&side, DVec3::ZERO, DVec2::new(320.0, 240.0)), None);
+    }
+
+    #[test]
+    fn wrapped_angles_and_yaw_texts() {
+        use std::f64::consts::PI;
+        assert!((wrap_angle(3.0 * PI / 2.0) + PI / 2.0).abs() < 1e-15);
+        assert_eq!(wrap_angle(-PI), PI);
+        assert_eq!(wrap_angle(0.25), 0.25);
+        assert_eq!(yaw_text(0.12345, AngleUnit::Rad), "0.123");
+        assert_eq!(
+            yaw_text(30.04f64.to_radians(), AngleUnit::Deg),
+            deg_to_rad_text("30")
+        );
+        assert_eq!(rad_to_deg_text(&yaw_text(-0.5, AngleUnit::Deg)), "-28.6");
     }
 
     #[test]

@@ -196,6 +196,32 @@ test('dragging B\'s origin moves B in the view plane; the readouts follow the ke
   }
 });
 
+test('dragging A\'s yaw ring changes A\'s yaw alone, to the kernel\'s numbers; in degrees to 0.1°', async () => {
+  const { page, errors, close } = await open('#/se3-relative?angles=deg');
+  try {
+    const canvas = page.locator('[data-testid="se3-relative-canvas"]');
+    await canvas.scrollIntoViewIfNeeded();
+    const box = await canvas.boundingBox();
+    const rx = box.x + Number(await canvas.getAttribute('data-a-ring-x'));
+    const ry = box.y + Number(await canvas.getAttribute('data-a-ring-y'));
+    await page.mouse.move(rx, ry);
+    await page.mouse.down();
+    for (let k = 1; k <= 8; k++) await page.mouse.move(rx + 5 * k, ry + 4 * k);
+    await page.mouse.up();
+    await settle(page);
+    const args = await urlArgs(page);
+    assert.notEqual(args[5], '0', 'A turned');
+    assert.deepEqual(args.slice(0, 5), DEFAULTS.slice(0, 5), 'A stays put and keeps roll and pitch');
+    assert.deepEqual(args.slice(6), DEFAULTS.slice(6), 'B stays');
+    assert.match(await page.locator('[data-field="aw"]').inputValue(), /^-?\d+(\.\d)?$/, 'a round number of degrees');
+    const want = run(args);
+    assert.deepEqual(await readouts(page), want.row);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('Japanese leaves no English UI text', async () => {
   const english = englishStrings();
   const { page, errors, close } = await open('#/se3-relative?lang=ja&angles=deg');

@@ -1,8 +1,9 @@
 //! The relative SE(3) pose (`#/se3-relative`): frames A and B in a 3D view with the relative
 //! transform `T_A⁻¹ T_B` as an arrow from A to B expressed in A; the two poses' fields with a
 //! rad/deg switch (radians are the recipe's: the URL, the command lines and the CSV stay in
-//! radians); drag an origin in the view (in the plane facing the camera), orbit by dragging
-//! elsewhere, zoom with the wheel or the buttons, preset views; the 4×4 matrices, the result
+//! radians); drag an origin in the view (in the plane facing the camera) or a yaw ring (the
+//! frame turns about the world's vertical: its yaw alone), orbit by dragging elsewhere, zoom
+//! with the wheel, a pinch or `+`/`-`, preset views (the kit's orbit view); the 4×4 matrices, the result
 //! row as the CSV has it, the check `T_A (T_A⁻¹ T_B) = T_B`; the same roll, pitch, yaw as
 //! extrinsic and intrinsic rotations side by side; `se3_relative.csv` byte for byte what
 //! `bsv se3-relative` writes with the page's arguments.
@@ -40,8 +41,8 @@ use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
 use crate::view::se3_relative::{
-    dragged_origin, hit_frame, position_texts, scene_frame, solve, AngleUnit, Grab, PoseFields,
-    Solved, VIEW_KEY,
+    dragged_origin, hit_gizmo, position_texts, ring_radius, scene_frame, solve, wrap_angle, yaw_at,
+    yaw_text, AngleUnit, Grab, PoseFields, Solved, VIEW_KEY,
 };
 use crate::view::signal::sig;
 
@@ -54,12 +55,16 @@ const PNG: &str = "se3_relative.png";
 /// tips may reach its edge).
 const CLOSER: f64 = 0.8;
 
-/// A drag of an origin under way: which, the pointer where it began, the origin then.
+/// A drag of an origin or a yaw ring under way: which, the pointer where it began, the
+/// frame's origin and yaw then; for a ring, the yaw so far and the pointer's last angle
+/// about the vertical through the origin.
 #[derive(Debug, Clone, Copy)]
 struct DragStart {
     grab: Grab,
     start_px: DVec2,
     origin: DVec3,
+    yaw: f64,
+    last_angle: Option<f64>,
 }
 
 /// The mounted page.
@@ -238,7 +243,14 @@ impl Inner {
         options.claim = Some(Box::new(move |at, kind: PointerKind, camera: &Camera| {
             let p = me.upgrade()?;
             let params = p.solved.try_borrow().ok()?.params;
-            hit_frame(camera, &params, at, scene::hit_radius(kind.is_coarse()))
+            let ring = ring_radius(p.radius.get());
+            hit_gizmo(
+                camera,
+                &params,
+                ring,
+                at,
+                scene::hit_radius(kind.is_coarse()),
+            )
         }));
         let me = self.me.clone();
         options.on_handle = Some(Box::new(move |ev| {
@@ -325,7 +337,7 @@ impl Inner {
         let radius = self.radius.get();
         scene::draw_ground(canvas, camera, radius, ink);
         scene::draw_frames(canvas, camera, &solved, self.hover.get(), radius, ink);
-        scene::write_hooks(canvas, camera, &solved, self.preset.get());
+        scene::write_hooks(canvas, camera, &solved, self.preset.get(), radius);
         drop(solved);
         self.show_rotations(Some(camera));
         // A drag of an origin records its whole frame itself.
@@ -347,10 +359,12 @@ impl Inner {
         let t0 = now_ms();
         match ev {
             DragEvent::Hover(at) => {
+                let ring = ring_radius(self.radius.get());
                 let hit = self.camera().and_then(|camera| {
-                    hit_frame(
+                    hit_gizmo(
                         &camera,
                         &self.solved.borrow().params,
+                        ring,
                         at,
                         scene::hit_radius(false),
                     )
@@ -367,30 +381,37 @@ impl Inner {
             }
             DragEvent::Start { handle, at, .. } => {
                 let params = self.solved.borrow().params;
-                let origin = match handle {
-                    Grab::A => DVec3::new(params.a.x, params.a.y, params.a.z),
-                    Grab::B | Grab::Orbit => DVec3::new(params.b.x, params.b.y, params.b.z),
-                };
+                let pose = if handle.is_a() { params.a } else { params.b };
+                let origin = DVec3::new(pose.x, pose.y, pose.z);
                 self.dragging.set(Some(DragStart {
                     grab: handle,
                     start_px: at,
                     origin,
+                    yaw: pose.yaw,
+                    last_angle: self.camera().and_then(|c| yaw_at(&c, origin, at)),
                 }));
+                self.hover.set(Some(handle));
             }
             DragEvent::Move { at, .. } => {
                 let Some(d) = self.dragging.get() else {
                     return;
                 };
-                let moved = self
-                    .camera()
-                    .and_then(|camera| dragged_origin(&camera, d.origin, d.start_px, at));
-                if let Some(p) = moved {
-                    let first = if d.grab == Grab::A { 0 } else { 6 };
-                    let values: Vec<(usize, String)> = position_texts(p)
-                        .into_iter()
-                        .enumerate()
-                        .map(|(k, t)| (first + k, t))
-                        .collect();
+                let first = if d.grab.is_a() { 0 } else { 6 };
+                let values: Vec<(usize, String)> = match d.grab {
+                    Grab::A | Grab::B => self
+                        .camera()
+                        .and_then(|camera| dragged_origin(&camera, d.origin, d.start_px, at))
+                        .map(|p| {
+                            position_texts(p)
+                                .into_iter()
+                                .enumerate()
+                                .map(|(k, t)| (first + k, t))
+                                .collect()
+                        })
+                        .unwrap_or_default(),
+                    Grab::YawA | Grab::YawB => self.turn(d, at).into_iter().collect(),
+                };
+                if !values.is_empty() {
                     let changed = self.poses.borrow_mut().set(&values);
                     if let Some(params) = changed {
                         self.changed(params, false);
@@ -400,12 +421,29 @@ impl Inner {
             }
             DragEvent::End { .. } => {
                 self.dragging.set(None);
+                self.hover.set(None);
+                self.redraw();
                 if let Some(url) = self.url.borrow().as_ref() {
                     url.write_now();
                 }
             }
             DragEvent::Tap { .. } => {}
         }
+    }
+
+    /// A yaw ring dragged to `at`: the pointer's turn about the vertical since the last move
+    /// (wrapped, so a full turn and more keeps counting) added to the yaw; the yaw field's
+    /// new text.
+    fn turn(&self, mut d: DragStart, at: DVec2) -> Option<(usize, String)> {
+        let angle = self.camera().and_then(|c| yaw_at(&c, d.origin, at))?;
+        if let Some(last) = d.last_angle {
+            d.yaw += wrap_angle(angle - last);
+        }
+        d.last_angle = Some(angle);
+        self.dragging.set(Some(d));
+        let unit = self.poses.borrow().fields.unit;
+        let index = if d.grab.is_a() { 5 } else { 11 };
+        Some((index, yaw_text(d.yaw, unit)))
     }
 
     /// New valid poses: recompute, redraw, readouts; `typed` keeps the frames in view.

@@ -1,7 +1,9 @@
 //! The 3D view: the world frame, frame A and frame B as triads (x red, y green, z blue) over a
 //! ground grid, and the relative transform drawn as an arrow from A's origin to B's, labelled
 //! as expressed in A, with the path along A's own axes by the relative translation (dashed,
-//! in A's axis colours), on the two layers of the kit's orbit view
+//! in A's axis colours), and each frame's yaw ring (a circle about the vertical through its
+//! origin: dragging it turns the frame about the world's z axis, its yaw alone), on the two
+//! layers of the kit's orbit view
 //! ([`crate::ui::kit::orbit::OrbitView`], which owns the camera, orbit, zoom and presets):
 //! the ground and the world triad, then the frames. Hit tests and drags are
 //! [`crate::view::se3_relative`]'s.
@@ -14,7 +16,9 @@ use web_sys::CanvasRenderingContext2d;
 use crate::ui::ctx;
 use crate::ui::kit::canvas::{dash, solid, Ink, LayeredCanvas};
 use crate::view::camera3d::{ground_grid, Camera, Preset};
-use crate::view::se3_relative::{axis_length, path_in_a, Grab, Solved, Triad};
+use crate::view::se3_relative::{
+    axis_length, path_in_a, ring_radius, yaw_ring, Grab, Solved, Triad, RING_POINTS,
+};
 
 const BG: &str = "#fbfcfe";
 const GRID: &str = "#e3e8ef";
@@ -23,6 +27,8 @@ pub const AXIS_COLOURS: [&str; 3] = ["#d62828", "#1f9d3a", "#1d4ed8"];
 const LABEL: &str = "#111827";
 const ARROW: &str = "#7c3aed";
 const HOVER: &str = "#f59e0b";
+const RING: &str = "rgba(180, 83, 9, 0.55)";
+const RING_HOT: &str = "#b45309";
 
 /// A line from `a` to `b` in world coordinates, if both are in front of the eye.
 fn line(c: &CanvasRenderingContext2d, cam: &Camera, a: DVec3, b: DVec3) -> Option<(DVec2, DVec2)> {
@@ -204,6 +210,29 @@ pub fn draw_frames(
         let y = y.min(layer.css_h - 4.0).max(text_h + 2.0);
         let _ = c.fill_text(&text, x, y);
     }
+    // The yaw rings (turn a frame about the vertical through its origin).
+    let ring = ring_radius(radius);
+    for (grab, triad) in [(Grab::YawA, &a), (Grab::YawB, &b)] {
+        let hot = hover == Some(grab);
+        c.set_stroke_style_str(if hot { RING_HOT } else { RING });
+        c.set_line_width(if hot { 3.5 } else { 2.0 } * ink.line);
+        c.begin_path();
+        let mut drawing = false;
+        for p in yaw_ring(triad.origin, ring, RING_POINTS)
+            .into_iter()
+            .chain(std::iter::once(triad.origin + DVec3::X * ring))
+        {
+            match cam.project(p) {
+                Some(q) if drawing => c.line_to(q.at.x, q.at.y),
+                Some(q) => {
+                    c.move_to(q.at.x, q.at.y);
+                    drawing = true;
+                }
+                None => drawing = false,
+            }
+        }
+        c.stroke();
+    }
     // The origins (the drag handles).
     for (grab, triad) in [(Grab::A, &a), (Grab::B, &b)] {
         if let Some(p) = cam.project(triad.origin) {
@@ -220,12 +249,28 @@ pub fn draw_frames(
 }
 
 /// Test hooks on the top canvas: where each origin is drawn (CSS px).
-pub fn write_hooks(canvas: &LayeredCanvas, cam: &Camera, solved: &Solved, preset: Option<Preset>) {
+pub fn write_hooks(
+    canvas: &LayeredCanvas,
+    cam: &Camera,
+    solved: &Solved,
+    preset: Option<Preset>,
+    radius: f64,
+) {
     let top = &canvas.top().canvas;
     for (key, t) in [("a", &solved.t_a), ("b", &solved.t_b)] {
         if let Some(p) = cam.project(Triad::of(t).origin) {
             let _ = top.set_attribute(&format!("data-{key}-x"), &format!("{:.2}", p.at.x));
             let _ = top.set_attribute(&format!("data-{key}-y"), &format!("{:.2}", p.at.y));
+        }
+    }
+    // A point on each yaw ring, clear of the axes (for tests).
+    let ring = ring_radius(radius);
+    for (key, pose) in [("a", &solved.params.a), ("b", &solved.params.b)] {
+        let t = pose.yaw + 2.4;
+        let origin = DVec3::new(pose.x, pose.y, pose.z);
+        if let Some(p) = cam.project(origin + DVec3::new(t.cos(), t.sin(), 0.0) * ring) {
+            let _ = top.set_attribute(&format!("data-{key}-ring-x"), &format!("{:.2}", p.at.x));
+            let _ = top.set_attribute(&format!("data-{key}-ring-y"), &format!("{:.2}", p.at.y));
         }
     }
     let _ = top.set_attribute("data-view", preset.map_or("custom", Preset::id));
