@@ -64,6 +64,15 @@ test('defaults: readouts, CSV row and download equal bsv se3-relative', async ()
     assert.ok(Number(await page.locator('[data-readout="check-error"]').getAttribute('data-value')) < 1e-15);
     // The intrinsic x-y'-z'' reading of B's angles is another rotation.
     assert.ok(Number(await page.locator('[data-readout="rot-diff"]').getAttribute('data-value')) > 0.01);
+    // The PNG of the view.
+    const png = await download(page, 'se3_relative.png');
+    assert.equal(png.subarray(1, 4).toString('latin1'), 'PNG');
+    // The page's keys are in the ? overlay.
+    await page.locator('h1').click();
+    await page.keyboard.press('?');
+    const overlay = await page.locator('[data-testid="shortcut-overlay"]').innerText();
+    assert.match(overlay, /Switch the angles between radians and degrees/);
+    assert.match(overlay, /Iso, top, front and side view/);
     assert.deepEqual(errors, []);
   } finally {
     await close();

@@ -91,6 +91,10 @@ struct Inner {
     dragging: Cell<Option<DragStart>>,
     hover: Cell<Option<Grab>>,
     timings: bench::Timings,
+    /// What the ground layer and the rotations panel were last drawn for (skipped while it
+    /// stays the same, e.g. during a drag of an origin); `None` after a language switch.
+    ground_drawn: Cell<Option<(Camera, f64, bool, u32)>>,
+    rotations_drawn: Cell<Option<[f64; 7]>>,
     scope: RefCell<Scope>,
 }
 
@@ -146,6 +150,8 @@ impl Page for Se3Page {
                 dragging: Cell::new(None),
                 hover: Cell::new(None),
                 timings: bench::Timings::install(),
+                ground_drawn: Cell::new(None),
+                rotations_drawn: Cell::new(None),
                 scope: RefCell::new(scope),
             }
         });
@@ -171,6 +177,8 @@ impl Page for Se3Page {
             let label = ctx::t_strings("kit-exports-download", &[("file", CSV_NAME.to_string())]);
             button.set_text_content(Some(&label));
         }
+        p.ground_drawn.set(None);
+        p.rotations_drawn.set(None);
         if let Some(view) = p.view.borrow().as_ref() {
             view.relocalize();
         }
@@ -317,6 +325,7 @@ impl Inner {
         let rot_stage = self.rotations.borrow().canvas.stage.clone();
         scope.observe_resize(&[&rot_stage], me, |p| {
             p.rotations.borrow_mut().canvas.fit();
+            p.rotations_drawn.set(None);
             p.show_rotations(None);
         })?;
         Ok(())
@@ -335,7 +344,16 @@ impl Inner {
             return;
         };
         let radius = self.radius.get();
-        scene::draw_ground(canvas, camera, radius, ink);
+        let ground = (
+            *camera,
+            radius,
+            ink.projector,
+            canvas.layer(0).canvas.width(),
+        );
+        if self.ground_drawn.get() != Some(ground) {
+            scene::draw_ground(canvas, camera, radius, ink);
+            self.ground_drawn.set(Some(ground));
+        }
         scene::draw_frames(canvas, camera, &solved, self.hover.get(), radius, ink);
         scene::write_hooks(canvas, camera, &solved, self.preset.get(), radius);
         drop(solved);
@@ -513,6 +531,7 @@ impl Inner {
             view.relayout();
         }
         self.rotations.borrow_mut().canvas.fit();
+        self.rotations_drawn.set(None);
         self.show_rotations(None);
     }
 
@@ -566,11 +585,25 @@ impl Inner {
         let Ok(rotations) = self.rotations.try_borrow() else {
             return;
         };
+        let ink = Ink::current();
+        let key = [
+            pose.roll,
+            pose.pitch,
+            pose.yaw,
+            camera.azimuth,
+            camera.elevation,
+            f64::from(u8::from(ink.projector)),
+            f64::from(rotations.canvas.top().canvas.width()),
+        ];
+        if self.rotations_drawn.get() == Some(key) {
+            return;
+        }
+        self.rotations_drawn.set(Some(key));
         let diff = rotations.show(
             (pose.roll, pose.pitch, pose.yaw),
             camera.azimuth,
             camera.elevation,
-            Ink::current(),
+            ink,
         );
         self.readouts
             .set_with_value("rot-diff", &format!("{diff:.4}"), &py_float(diff));
