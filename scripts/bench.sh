@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `make bench`: speed figures (a command, not a timed test). Kernels natively and as wasm in
-# Node (release builds), then the IK, pendulum, RRT and signal pages in headless Chromium.
+# Node (release builds), then the IK, pendulum, SE(3), RRT and signal pages in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -26,7 +26,7 @@ rm -rf target/bench-dist
 cp -r dist target/bench-dist
 cp target/bench-web/bsv_playground.js target/bench-web/bsv_playground_bg.wasm target/bench-dist/pkg/
 
-for page in ik2r pendulum; do
+for page in ik2r pendulum se3; do
   if [[ -f tests/e2e/$page.bench.mjs ]]; then
     echo
     echo "== $page page in headless Chromium"

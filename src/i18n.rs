@@ -105,6 +105,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/en/pendulum.ftl"),
     ),
     (Lang::En, "rrt.ftl", include_str!("../locales/en/rrt.ftl")),
+    (Lang::En, "se3.ftl", include_str!("../locales/en/se3.ftl")),
     (
         Lang::En,
         "signals.ftl",
@@ -145,6 +146,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/ja/pendulum.ftl"),
     ),
     (Lang::Ja, "rrt.ftl", include_str!("../locales/ja/rrt.ftl")),
+    (Lang::Ja, "se3.ftl", include_str!("../locales/ja/se3.ftl")),
     (
         Lang::Ja,
         "signals.ftl",

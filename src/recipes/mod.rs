@@ -564,6 +564,7 @@ mod facts_tests {
                 ("traj-resample", "traj-resample"),
                 ("jacobian-2r", "ik-2r"),
                 ("cubic-path", "cubic-path"),
+                ("se3-relative", "se3-relative"),
                 ("rrt-2d", "rrt-2d"),
                 ("pid-step", "pid-step"),
                 ("manip-grid", "ik-2r"),

@@ -84,7 +84,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     writes: &[CSV_NAME],
     quirks_id: "recipe-se3-relative-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("se3-relative"),
 };
 
 /// A pose as the recipe takes it: position in metres, roll/pitch/yaw in radians (Z·Y·X).

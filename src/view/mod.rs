@@ -11,6 +11,8 @@
 //! - [`camera3d`]: the orbit camera of the 3D views (projection, orbit, zoom, presets, hits).
 //! - [`drill_chain`]: the seed's "next step" chain of drills at the foot of each drill page.
 //! - [`lesson`]: lessons (steps of page states), their URL and file forms, the presenter.
+//! - [`scene3d`]: what a 3D view draws (lines, arrows, triads, grid), projected and
+//!   sorted for the painter's algorithm.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`envelope`]: min/max plot envelope of a CSV table (a million rows in a few thousand points).
 //! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
@@ -18,6 +20,8 @@
 //! - [`pendulum`]: the pendulum page: kept rows, energy error and drift, period, separatrix, URL.
 //! - [`rrt`]: the RRT stepper page: state and URL, command lines, world editor hit tests and
 //!   edits, sub-step texts and pseudocode lines.
+//! - [`se3_relative`]: the relative SE(3) pose page: fields in rad or deg, URL, matrices,
+//!   intrinsic vs extrinsic rotations, the 3D scene's gizmo hits and drags.
 //! - [`signal`]: what the signal pages share (URL keys = argument names, sliders, snapping);
 //!   [`cubic_path`]: the cubic page's coefficients, peaks and overlays;
 //!   [`pid_step`]: rise time, overshoot, settling, steady-state error and peak u;
@@ -43,6 +47,8 @@ pub mod pid_step;
 pub mod plot;
 pub mod progress;
 pub mod rrt;
+pub mod scene3d;
+pub mod se3_relative;
 pub mod signal;
 pub mod stepper;
 pub mod table;

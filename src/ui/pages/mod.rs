@@ -14,6 +14,7 @@ pub mod lesson;
 pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
+pub mod se3;
 pub mod traj_resample;
 pub mod trapezoid_profile;
 
@@ -27,6 +28,7 @@ pub const PAGES: &[PageDef] = &[
     pendulum::PAGE,
     traj_resample::PAGE,
     rrt::PAGE,
+    se3::PAGE,
     cubic_path::PAGE,
     pid_step::PAGE,
     trapezoid_profile::PAGE,

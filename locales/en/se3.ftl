@@ -1,0 +1,73 @@
+# The relative SE(3) pose page: #/se3-relative (src/ui/pages/se3).
+se3-title = Relative SE(3) pose
+se3-blurb = Frames A and B in 3D and T_A⁻¹ T_B drawn from A to B; type or drag the poses, switch between radians and degrees, read the 4×4 matrices.
+se3-lede = Where is frame B, and how is it turned, as seen from frame A? The recipe forms T_A and T_B from x, y, z, roll, pitch, yaw and writes T_A⁻¹ T_B. Drag an origin in the view or type the poses; the result, its matrices and the CSV follow.
+se3-view-title = World, frame A, frame B
+se3-canvas-label = 3D view of the world frame, frame A and frame B (x red, y green, z blue) with an arrow from A to B. Drag the origin of A or B to move it in the plane facing you, or its ring to change its yaw; drag elsewhere to turn the view.
+se3-view-note = Drag the dot at A's or B's origin to move that frame in the plane facing you (to the millimetre); drag the orange ring around an origin to turn that frame about the world's vertical, which changes its yaw alone (the recipe turns by yaw last, about the fixed z axis); drag elsewhere to turn the view. The dashed path goes from A to B along A's own x, y and z axes by the relative x, y and z: that is what "expressed in A" means.
+se3-view-world = world
+se3-view-arrow = T_A⁻¹ T_B (B seen from A)
+se3-result-title = B seen from A: T_A⁻¹ T_B
+se3-ro-x = x (m)
+se3-ro-y = y (m)
+se3-ro-z = z (m)
+se3-ro-roll = roll (rad)
+se3-ro-pitch = pitch (rad)
+se3-ro-yaw = yaw (rad)
+se3-ro-roll-deg = roll (°)
+se3-ro-pitch-deg = pitch (°)
+se3-ro-yaw-deg = yaw (°)
+se3-check-label = Check T_A (T_A⁻¹ T_B) = T_B, largest |error|:
+se3-live = B seen from A: x { $x }, y { $y }, z { $z } metres.
+se3-poses-title = The two poses
+se3-form-a = Frame A (in the world)
+se3-form-b = Frame B (in the world)
+se3-unit-legend = Angles shown in
+se3-unit-rad = radians (the recipe's)
+se3-unit-deg = degrees
+se3-unit-note = Radians are the recipe's unit. This switch only changes how the angle fields and readouts are shown and typed: the link, the command lines and the CSV stay in radians.
+se3-arg-ar-deg = Frame A: roll (°)
+se3-arg-ap-deg = Frame A: pitch (°)
+se3-arg-aw-deg = Frame A: yaw (°)
+se3-arg-br-deg = Frame B: roll (°)
+se3-arg-bp-deg = Frame B: pitch (°)
+se3-arg-bw-deg = Frame B: yaw (°)
+se3-hint-angle-deg = Degrees on this page; the recipe gets them in radians. Any number.
+se3-matrices-title = The 4×4 transforms
+se3-matrix-a = T_A (frame A in the world)
+se3-matrix-b = T_B (frame B in the world)
+se3-matrix-rel = T_A⁻¹ T_B (frame B in frame A)
+se3-row-title = The result row, as in se3_relative.csv
+se3-check-note = Each matrix is [R p; 0 0 0 1]: the columns of R are the frame's x, y and z axes, p is its origin. Multiplying T_A by the result gives T_B back; the check above is the largest difference, a rounding error.
+se3-rot-title = The same roll, pitch, yaw two ways
+se3-rot-lede = Three angles do not say which axes to turn about or in which order. The recipe's R = Rz(yaw) Ry(pitch) Rx(roll) turns about the fixed world axes x, then y, then z (extrinsic), which is the same as turning about the frame's own moving axes z, then y′, then x″ (intrinsic). Read as intrinsic x, y′, z″ the same numbers give Rx Ry Rz, another rotation.
+se3-rot-source = Angles of:
+se3-rot-source-b = frame B
+se3-rot-source-a = frame A
+se3-rot-source-rel = the result T_A⁻¹ T_B
+se3-rot-canvas-label = Two triads: the angles applied as extrinsic x, y, z (the recipe's) and as intrinsic x, y′, z″, over faint world axes.
+se3-rot-recipe = Extrinsic x → y → z = intrinsic z → y′ → x″: Rz Ry Rx (the recipe's)
+se3-rot-intrinsic = Intrinsic x → y′ → z″: Rx Ry Rz
+se3-rot-recipe-short = Extrinsic x → y → z
+se3-rot-intrinsic-short = Intrinsic x → y′ → z″
+se3-rot-recipe-mark = ✓ the recipe's convention
+se3-rot-diff = Largest difference between the two matrices:
+se3-exports-title = Downloads and command lines
+se3-download-png = Download the view (PNG)
+se3-explain-title = What you are looking at
+se3-explain-what-title = The relative pose
+se3-explain-what = A pose is a transform T = [R p; 0 1] from the frame's coordinates to the world's. T_A⁻¹ T_B takes B's coordinates to A's: its translation is B's origin measured along A's axes, its rotation is B's axes written in A's. The inverse of a rigid transform needs no general matrix inverse: T⁻¹ = [Rᵀ −Rᵀp; 0 1].
+se3-explain-input-title = Input and output
+se3-explain-input = 12 numbers: A x, y, z, roll, pitch, yaw, then B (defaults: A at the origin, B a small offset 0.1 0.05 0.02 0.2 0.1 −0.3). Output: se3_relative.csv with one row of relative translation (m) and roll, pitch, yaw (rad).
+se3-explain-steps-title = Steps
+se3-explain-steps = 1. Save the script. 2. Run: python se3_relative_pose.py 3. Pass your own 12 numbers to compare hand calculations.
+se3-explain-expected-title = Expected result
+se3-explain-expected = One row of relative translation and RPY. With A at the origin and not turned, the result is B itself: 0.1 0.05 0.02 0.2 0.1 −0.3.
+se3-explain-convention-title = Roll, pitch, yaw back from a matrix
+se3-explain-convention = The recipe reads the angles back as pitch = asin(−R₂₀) (between −π/2 and π/2), roll = atan2(R₂₁, R₂₂), yaw = atan2(R₁₀, R₀₀). Another triple can give the same rotation (add π to roll and yaw, take π − pitch), so the result's angles may differ from what you typed while the matrix is the same; at pitch ±π/2 only yaw − roll is defined and roll is set to 0.
+se3-explain-inverse-title = Inverse and check
+se3-explain-inverse = The page computes T_A⁻¹ T_B as the recipe does (the recipe uses numpy's general inverse; this port the exact rigid inverse, which agrees to about 1e-16) and multiplies back: T_A (T_A⁻¹ T_B) should be T_B up to rounding.
+se3-explain-quirks-title = Where this port decides for the recipe
+se3-key-views = Iso, top, front and side view
+se3-key-unit = Switch the angles between radians and degrees
+se3-key-reset = Back to the recipe's poses

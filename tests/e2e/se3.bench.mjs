@@ -1,0 +1,63 @@
+// Speed of the relative SE(3) pose page (#/se3-relative) in headless Chromium at 1920×1080, on
+// the dist folder named by BSV_DIST (default dist/); it needs a wasm built with
+// `--features bench` (`make bench` assembles one in target/bench-dist). Prints p50 / p95 / max
+// of the page's own record of each drag frame's work (window.__se3FrameMs: drag maths, the
+// form, the solve, matrices, readouts, the rotations panel and both canvases):
+//
+// - gizmo drag: B's origin dragged around a circle, one pointer move per animation frame;
+// - orbit drag: the view turned by dragging off the origins, the same way.
+//
+// Budget: p95 < 4 ms. With SE3_BENCH_STRICT=1 the exit code is 1 when it is missed; otherwise
+// this only reports.
+import { openApp, closeBrowser, startServer } from './harness.mjs';
+
+const VIEWPORT = { width: 1920, height: 1080 };
+const BUDGET_MS = 4;
+
+function stats(values) {
+  const v = [...values].filter(Number.isFinite).sort((a, b) => a - b);
+  const q = (p) => v[Math.min(v.length - 1, Math.max(0, Math.ceil(p * v.length) - 1))];
+  return { n: v.length, p50: q(0.5), p95: q(0.95), max: v[v.length - 1] };
+}
+
+const frame = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+const recorded = (page) => page.evaluate(() => (window.__se3FrameMs ?? []).length);
+
+let over = false;
+const server = await startServer();
+try {
+  const { page } = await openApp(server.url, '#/se3-relative', { viewport: VIEWPORT });
+  const canvas = page.locator('[data-testid="se3-relative-canvas"]');
+  await canvas.scrollIntoViewIfNeeded();
+  const box = await canvas.boundingBox();
+  const drag = async (x0, y0, at) => {
+    const before = await recorded(page);
+    await page.mouse.move(x0, y0);
+    await page.mouse.down();
+    for (let k = 1; k <= 300; k++) {
+      const [x, y] = at(k);
+      await page.mouse.move(x, y);
+      await frame(page);
+    }
+    await page.mouse.up();
+    return page.evaluate((n) => window.__se3FrameMs.slice(n), before);
+  };
+  const bx = box.x + Number(await canvas.getAttribute('data-b-x'));
+  const by = box.y + Number(await canvas.getAttribute('data-b-y'));
+  const gizmo = await drag(bx, by, (k) => [bx + 80 * Math.sin(k / 20), by + 60 * (1 - Math.cos(k / 20))]);
+  const orbit = await drag(box.x + 30, box.y + 30, (k) => [box.x + 30 + 150 * Math.sin(k / 30), box.y + 30 + 40 * Math.sin(k / 45)]);
+  if (gizmo.length === 0) {
+    throw new Error('no window.__se3FrameMs: serve a dist built with --features bench (make bench)');
+  }
+  console.log('work                 n   p50 ms  p95 ms  max ms  budget');
+  for (const [name, values] of [['gizmo drag frame', gizmo], ['orbit drag frame', orbit]]) {
+    const s = stats(values);
+    const ok = s.p95 < BUDGET_MS ? 'ok' : 'OVER';
+    over ||= ok === 'OVER';
+    console.log(`${name.padEnd(18)} ${String(s.n).padStart(4)}  ${s.p50.toFixed(2).padStart(6)}  ${s.p95.toFixed(2).padStart(6)}  ${s.max.toFixed(2).padStart(6)}  p95 < ${BUDGET_MS} ms ${ok}`);
+  }
+} finally {
+  await closeBrowser();
+  await server.close();
+}
+if (over && process.env.SE3_BENCH_STRICT === '1') process.exit(1);
