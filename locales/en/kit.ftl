@@ -61,3 +61,13 @@ kit-progress-cancel = Cancel
 
 ## Long runs in the background (kit::worker)
 kit-worker-failed = The background run stopped unexpectedly ({ $detail }). Try again; if it keeps failing, reload the page.
+
+## 3D view (kit::orbit)
+kit-orbit-presets = Preset views
+kit-orbit-view-iso = Iso
+kit-orbit-view-top = Top
+kit-orbit-view-front = Front
+kit-orbit-view-side = Side
+kit-orbit-hint = Drag the view to orbit; wheel or pinch to zoom. With the view focused, the arrow keys orbit and + / − zoom.
+kit-orbit-key-orbit = Orbit the 3D view (when it has focus; Shift for bigger steps)
+kit-orbit-key-zoom = Zoom the 3D view in / out (when it has focus)

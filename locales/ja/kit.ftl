@@ -63,3 +63,13 @@ kit-progress-cancel = キャンセル
 
 ## バックグラウンドでの長い実行（kit::worker）
 kit-worker-failed = バックグラウンドの実行が予期せず止まりました（{ $detail }）。もう一度実行してください。繰り返し失敗する場合は、ページを再読み込みしてください。
+
+## 3D ビュー（kit::orbit）
+kit-orbit-presets = 視点の切り替え
+kit-orbit-view-iso = 斜め
+kit-orbit-view-top = 上
+kit-orbit-view-front = 正面
+kit-orbit-view-side = 側面
+kit-orbit-hint = ビューをドラッグすると視点が回ります。ホイールやピンチで拡大・縮小。ビューにフォーカスがあるときは矢印キーで回転、+ / − で拡大・縮小します。
+kit-orbit-key-orbit = 3D ビューの視点を回す（ビューにフォーカスがあるとき。Shift で大きく）
+kit-orbit-key-zoom = 3D ビューの拡大・縮小（ビューにフォーカスがあるとき）

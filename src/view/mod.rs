@@ -8,6 +8,8 @@
 //! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
 //! - [`camera3d`]: the orbit camera of the 3D views (projection, orbit, zoom, presets, hits).
+//! - [`scene3d`]: what a 3D view draws (lines, arrows, triads, grid), projected and
+//!   sorted for the painter's algorithm.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`envelope`]: min/max plot envelope of a CSV table (a million rows in a few thousand points).
 //! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
@@ -37,6 +39,7 @@ pub mod pid_step;
 pub mod plot;
 pub mod progress;
 pub mod rrt;
+pub mod scene3d;
 pub mod signal;
 pub mod stepper;
 pub mod table;

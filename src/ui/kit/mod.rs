@@ -19,6 +19,8 @@
 //! - [`input_file`]: a file the user opens or drops, decoded as the CLI decodes it.
 //! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
 //! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
+//! - [`orbit`]: a 3D view: orbit by drag, zoom by wheel/pinch/keys, preset views, a page's
+//!   claimed drags, and the painter of [`crate::view::scene3d`] marks.
 
 pub mod canvas;
 pub mod drag;
@@ -28,6 +30,7 @@ pub mod frame;
 pub mod heatmap;
 pub mod input_file;
 pub mod keymap;
+pub mod orbit;
 pub mod plot;
 pub mod png;
 pub mod progress;
