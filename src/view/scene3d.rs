@@ -224,10 +224,38 @@ impl Scene {
         width_px: f64,
         labels: Option<[&str; 3]>,
     ) {
+        self.triad_in(
+            Layer::Scene,
+            origin,
+            rotation,
+            length,
+            palette,
+            width_px,
+            labels,
+        );
+    }
+
+    /// [`Scene::triad`] on `layer` (an [`Layer::Overlay`] triad is drawn over everything: a
+    /// frame being taught, a gizmo).
+    #[allow(clippy::too_many_arguments)]
+    pub fn triad_in(
+        &mut self,
+        layer: Layer,
+        origin: DVec3,
+        rotation: DMat3,
+        length: f64,
+        palette: AxisPalette,
+        width_px: f64,
+        labels: Option<[&str; 3]>,
+    ) {
         let colors = palette.colors();
         for k in 0..3 {
             let tip = origin + rotation.col(k) * length;
-            self.arrow(origin, tip, Stroke::solid(colors[k], width_px));
+            self.push(
+                layer,
+                Shape3::Arrow { a: origin, b: tip },
+                Stroke::solid(colors[k], width_px),
+            );
             if let Some(names) = labels {
                 self.label(
                     origin + rotation.col(k) * (length * 1.18),
