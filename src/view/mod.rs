@@ -10,6 +10,8 @@
 //! - [`camera3d`]: the orbit camera of the 3D views (projection, orbit, zoom, presets, hits).
 //! - [`scene3d`]: what a 3D view draws (lines, arrows, triads, grid), projected and
 //!   sorted for the painter's algorithm.
+//! - [`dh_fk`]: the DH page: frames to draw, the row walk through its four elementary
+//!   transforms, slider edits of `angles`, URL keys.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`envelope`]: min/max plot envelope of a CSV table (a million rows in a few thousand points).
 //! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
@@ -28,6 +30,7 @@
 pub mod camera3d;
 pub mod command_line;
 pub mod cubic_path;
+pub mod dh_fk;
 pub mod drag;
 pub mod drills;
 pub mod envelope;
