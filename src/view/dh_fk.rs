@@ -21,9 +21,10 @@ use crate::view::scene3d::AxisPalette;
 use crate::view::url::IgnoredKey;
 
 /// The point the view looks at and the radius it frames, metres: every pose of the chain
-/// lies within a2 = 0.25 of joint 2, at d1 = 0.10 above the base.
-pub const VIEW_TARGET: [f64; 3] = [0.0, 0.0, 0.10];
-pub const VIEW_RADIUS: f64 = 0.27;
+/// lies within a2 = 0.25 of joint 2 (d1 = 0.10 above the base); the target leans towards the
+/// recipe's default pose (reaching out along +x, down to the ground) so it fills the view.
+pub const VIEW_TARGET: [f64; 3] = [0.07, 0.02, 0.05];
+pub const VIEW_RADIUS: f64 = 0.22;
 
 /// A frame of the chain as the view draws it.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -233,6 +233,7 @@ test('screenshots: EN and JA 1920×1080, phone 390 px, projector', async () => {
         await page.waitForFunction(() => document.documentElement.classList.contains('projector'));
       }
       await page.waitForTimeout(700);
+      if (projector) await page.locator('[data-dh="view"]').evaluate((el) => el.scrollIntoView());
       const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
       assert.ok(overflow <= 0, `${name}: no horizontal scroll (${overflow} px)`);
       await page.screenshot({ path: join(OUT, `dh-fk-${name}.png`), fullPage: name === 'ja' });

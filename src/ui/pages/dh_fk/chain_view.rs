@@ -70,9 +70,24 @@ pub fn build(scene: &mut Scene, look: &Look) {
     }
     for f in frames {
         scene.triad(f.origin, f.rotation, TRIAD_M, look.palette, TRIAD_PX, None);
-        // The number beside the origin, on the side away from the frame's x and y.
-        let off = -(f.rotation.col(0) + f.rotation.col(1)) * 0.018;
-        scene.label(f.origin + off, format!("{{{}}}", f.index), FRAME_LABEL);
+    }
+    // Frame numbers beside the origins, on the side away from the frame's x and y; frames
+    // sharing an origin (1 and 2 here: a = d = 0 between them) share one label, "{1} {2}".
+    let mut start = 0;
+    while start < frames.len() {
+        let mut end = start + 1;
+        while end < frames.len() && frames[end].origin.distance(frames[start].origin) < 1e-9 {
+            end += 1;
+        }
+        let f = &frames[start];
+        let text = frames[start..end]
+            .iter()
+            .map(|g| format!("{{{}}}", g.index))
+            .collect::<Vec<_>>()
+            .join(" ");
+        let off = -(f.rotation.col(0) + f.rotation.col(1)) * 0.02;
+        scene.label(f.origin + off, text, FRAME_LABEL);
+        start = end;
     }
     if let Some(tip) = frames.last() {
         scene.dot(tip.origin, 6.5, TIP_DOT);
