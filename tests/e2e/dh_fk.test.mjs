@@ -151,6 +151,23 @@ test('orbiting changes the pixels, never the numbers; presets, keys and the whee
     await page.mouse.wheel(0, 300);
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
     assert.notEqual(await canvasShot(page), shot2, 'the wheel zooms');
+    // A two-finger pinch (touch pointers) zooms; one finger then orbits.
+    const shot3 = await canvasShot(page);
+    await page.locator('[data-orbit="stage"]').evaluate((stage) => {
+      const r = stage.getBoundingClientRect();
+      const [x, y] = [r.left + r.width / 2, r.top + r.height / 2];
+      const fire = (type, pointerId, dx) => stage.dispatchEvent(new PointerEvent(type, {
+        pointerId, pointerType: 'touch', isPrimary: pointerId === 11, clientX: x + dx, clientY: y, bubbles: true, cancelable: true,
+      }));
+      fire('pointerdown', 11, -20);
+      fire('pointerdown', 12, 20);
+      for (let k = 1; k <= 5; k++) { fire('pointermove', 11, -20 - 12 * k); fire('pointermove', 12, 20 + 12 * k); }
+      fire('pointerup', 12, 80);
+      fire('pointerup', 11, -80);
+    });
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    assert.notEqual(await canvasShot(page), shot3, 'a pinch zooms');
+    assert.deepEqual(await readouts(page), numbers);
     // A preset: pressed, in the URL.
     await page.locator('[data-action="view-front"]').click();
     assert.equal(await page.locator('[data-action="view-front"]').getAttribute('aria-pressed'), 'true');

@@ -43,6 +43,8 @@ use markup::P;
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef::of::<DhPage>("dh-fk", "dh-title", "dh-blurb");
 
+/// Quiet time after which the tip's new position is announced, ms.
+const ANNOUNCE_QUIET_MS: f64 = 600.0;
 /// How long the moving frame takes from one step to the next, ms.
 const TWEEN_MS: f64 = 550.0;
 
@@ -174,11 +176,11 @@ impl Page for DhPage {
         inner.build(query.view)?;
         inner.install()?;
         inner.show_palette();
-        inner.show_pose();
+        inner.show_pose(false);
         if query.step > 0 {
             inner.command(Command::Seek(query.step as u64));
         } else {
-            inner.show_walk();
+            inner.show_walk(true);
         }
         inner.animate.set(true);
         inner.redraw_now();
@@ -194,8 +196,8 @@ impl Page for DhPage {
         if let Some(w) = p.walk.borrow().as_ref() {
             w.relocalize();
         }
-        p.show_walk();
-        p.show_pose();
+        p.show_walk(true);
+        p.show_pose(false);
     }
 
     fn set_projector(&self, _on: bool) {
@@ -360,15 +362,16 @@ impl Inner {
     fn changed(&self, params: DhParams) {
         let started = now_ms();
         *self.posed.borrow_mut() = Posed::new(params);
-        self.show_pose();
-        self.show_walk();
+        self.show_pose(true);
+        self.show_walk(false);
         self.request_redraw();
         self.write_url();
         bench_record("__dhChangeMs", now_ms() - started);
     }
 
-    /// The sliders, the tables and the readouts of the current pose.
-    fn show_pose(&self) {
+    /// The sliders, the tables and the readouts of the current pose; `announce`: say the tip's
+    /// new place (not for what the page opened with, nor a language switch).
+    fn show_pose(&self, announce: bool) {
         let posed = self.posed.borrow();
         let q = posed.params.q;
         for ((slider, output), qi) in self.sliders.iter().zip(q) {
@@ -380,22 +383,27 @@ impl Inner {
         self.dh_table.show(&q, self.query.get().row);
         self.pose_table.show(&posed.rows);
         // The tip is frame 3: the CSV's last row (frame, x, y, z, roll, pitch, yaw).
-        if let Some(tip) = posed.rows.last() {
-            for (k, key) in ["x", "y", "z", "roll", "pitch", "yaw"].iter().enumerate() {
-                let exact = tip.get(k + 1).map_or("", String::as_str);
-                let shown = exact.parse::<f64>().map_or(String::new(), cell);
-                self.readouts.set_with_value(key, &shown, exact);
-            }
-            let f = |k: usize| {
-                tip.get(k)
-                    .and_then(|t| t.parse::<f64>().ok())
-                    .map_or(String::new(), cell)
-            };
-            self.readouts.announce(&ctx::t_strings(
-                "dh-live",
-                &[("x", f(1)), ("y", f(2)), ("z", f(3))],
-            ));
+        let Some(tip) = posed.rows.last() else {
+            return;
+        };
+        for (k, key) in ["x", "y", "z", "roll", "pitch", "yaw"].iter().enumerate() {
+            let exact = tip.get(k + 1).map_or("", String::as_str);
+            let shown = exact.parse::<f64>().map_or(String::new(), cell);
+            self.readouts.set_with_value(key, &shown, exact);
         }
+        if !announce {
+            return;
+        }
+        // Said once a drag settles, formatted only then.
+        let f = |k: usize| {
+            tip.get(k)
+                .and_then(|t| t.parse::<f64>().ok())
+                .map_or(String::new(), cell)
+        };
+        let (x, y, z) = (f(1), f(2), f(3));
+        self.readouts.announce_settled(ANNOUNCE_QUIET_MS, move || {
+            ctx::t_strings("dh-live", &[("x", x), ("y", y), ("z", z)])
+        });
     }
 
     /// The walk of the current row at the pose.
@@ -403,10 +411,11 @@ impl Inner {
         RowWalk::new(&self.posed.borrow().params.q, self.query.get().row)
     }
 
-    fn show_walk(&self) {
+    /// The walk panel; `describe` also rewrites the steps' descriptions (row or language).
+    fn show_walk(&self, describe: bool) {
         let walk = self.row_walk();
         if let Some(w) = self.walk.borrow().as_ref() {
-            w.show(&walk, w.step());
+            w.show(&walk, w.step(), describe);
         }
     }
 
@@ -439,7 +448,7 @@ impl Inner {
         } else {
             self.tween.set(None);
         }
-        self.show_walk();
+        self.show_walk(true);
         self.request_redraw();
         self.write_url();
     }

@@ -107,8 +107,10 @@ impl WalkPanel {
         self.model.try_borrow().map_or(0, |m| m.step as usize)
     }
 
-    /// Shows `walk` after `step` steps, in the current language.
-    pub fn show(&self, walk: &RowWalk, step: usize) {
+    /// Shows `walk` after `step` steps, in the current language. The steps' descriptions
+    /// depend only on the row and the language: `describe` rewrites them (a new row, a
+    /// language switch), else only the numbers change.
+    pub fn show(&self, walk: &RowWalk, step: usize, describe: bool) {
         let row = walk.row;
         let prev = row - 1;
         let num = |x: usize| FluentArg::Number(x as f64);
@@ -121,10 +123,12 @@ impl WalkPanel {
                 kind.symbol(row),
                 cell(amount)
             )));
-            text.set_text_content(Some(&ctx::t_args(
-                &format!("dh-step-{}", kind.id()),
-                &[("prev", num(prev)), ("row", num(row))],
-            )));
+            if describe {
+                text.set_text_content(Some(&ctx::t_args(
+                    &format!("dh-step-{}", kind.id()),
+                    &[("prev", num(prev)), ("row", num(row))],
+                )));
+            }
             let state = if k + 1 == step {
                 "current"
             } else if k + 1 < step {
