@@ -118,11 +118,10 @@ impl WalkPanel {
             let kind = Elementary::ALL[k];
             let amount = walk.amount(k + 1);
             let unit = if kind.is_rotation() { "rad" } else { "m" };
-            symbol.set_text_content(Some(&format!(
-                "{} = {} {unit}",
-                kind.symbol(row),
-                cell(amount)
-            )));
+            let shown = format!("{} = {} {unit}", kind.symbol(row), cell(amount));
+            if symbol.text_content().as_deref() != Some(shown.as_str()) {
+                symbol.set_text_content(Some(&shown));
+            }
             if describe {
                 text.set_text_content(Some(&ctx::t_args(
                     &format!("dh-step-{}", kind.id()),
@@ -143,6 +142,46 @@ impl WalkPanel {
                 let _ = li.remove_attribute("aria-current");
             }
         }
+        if describe {
+            self.show_where(row, step);
+        }
+        let (caption, cells) = &self.elementary;
+        if step == 0 {
+            if describe {
+                caption.set_text_content(Some(&ctx::t("dh-elementary-none")));
+            }
+            show_matrix(cells, &DMat4::IDENTITY);
+        } else {
+            let k = step.min(WALK_STEPS);
+            if describe {
+                caption.set_text_content(Some(&ctx::t_strings(
+                    "dh-elementary-caption",
+                    &[
+                        ("k", k.to_string()),
+                        ("symbol", Elementary::ALL[k - 1].symbol(row)),
+                    ],
+                )));
+            }
+            show_matrix(cells, &walk.elementary(k));
+        }
+        let (caption, cells) = &self.product;
+        if describe {
+            caption.set_text_content(Some(&ctx::t_args(
+                if step >= WALK_STEPS {
+                    "dh-product-done"
+                } else {
+                    "dh-product-caption"
+                },
+                &[("prev", num(prev)), ("row", num(row))],
+            )));
+        }
+        show_matrix(cells, &walk.local(step));
+    }
+
+    /// Where the walk is, in words.
+    fn show_where(&self, row: usize, step: usize) {
+        let prev = row - 1;
+        let num = |x: usize| FluentArg::Number(x as f64);
         let where_text = match step {
             0 => ctx::t_args(
                 "dh-walk-at-start",
@@ -158,31 +197,6 @@ impl WalkPanel {
             ),
         };
         self.where_text.set_text_content(Some(&where_text));
-        let (caption, cells) = &self.elementary;
-        if step == 0 {
-            caption.set_text_content(Some(&ctx::t("dh-elementary-none")));
-            show_matrix(cells, &DMat4::IDENTITY);
-        } else {
-            let k = step.min(WALK_STEPS);
-            caption.set_text_content(Some(&ctx::t_strings(
-                "dh-elementary-caption",
-                &[
-                    ("k", k.to_string()),
-                    ("symbol", Elementary::ALL[k - 1].symbol(row)),
-                ],
-            )));
-            show_matrix(cells, &walk.elementary(k));
-        }
-        let (caption, cells) = &self.product;
-        caption.set_text_content(Some(&ctx::t_args(
-            if step >= WALK_STEPS {
-                "dh-product-done"
-            } else {
-                "dh-product-caption"
-            },
-            &[("prev", num(prev)), ("row", num(row))],
-        )));
-        show_matrix(cells, &walk.local(step));
     }
 
     /// The stepper's labels in the current language.
