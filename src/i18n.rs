@@ -112,6 +112,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/en/signals.ftl"),
     ),
     (Lang::En, "traj.ftl", include_str!("../locales/en/traj.ftl")),
+    (Lang::En, "dh.ftl", include_str!("../locales/en/dh.ftl")),
     (
         Lang::Ja,
         "shell.ftl",
@@ -153,6 +154,7 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/ja/signals.ftl"),
     ),
     (Lang::Ja, "traj.ftl", include_str!("../locales/ja/traj.ftl")),
+    (Lang::Ja, "dh.ftl", include_str!("../locales/ja/dh.ftl")),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as

@@ -99,7 +99,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     writes: &[CSV_NAME],
     quirks_id: "recipe-dh-fk-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("dh-fk"),
 };
 
 /// The link transform `T_mdh(α, a, d, θ)`, entry for entry as the recipe builds it.

@@ -562,6 +562,7 @@ mod facts_tests {
                 ("pendulum-energy", "pendulum-energy"),
                 ("ik-workspace", "ik-2r"),
                 ("traj-resample", "traj-resample"),
+                ("dh-fk", "dh-fk"),
                 ("jacobian-2r", "ik-2r"),
                 ("cubic-path", "cubic-path"),
                 ("se3-relative", "se3-relative"),

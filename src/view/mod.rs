@@ -13,6 +13,8 @@
 //! - [`lesson`]: lessons (steps of page states), their URL and file forms, the presenter.
 //! - [`scene3d`]: what a 3D view draws (lines, arrows, triads, grid), projected and
 //!   sorted for the painter's algorithm.
+//! - [`dh_fk`]: the DH page: frames to draw, the row walk through its four elementary
+//!   transforms, slider edits of `angles`, URL keys.
 //! - [`drag`]: hit shapes of drag handles and their touch overlay boxes; taps.
 //! - [`envelope`]: min/max plot envelope of a CSV table (a million rows in a few thousand points).
 //! - [`drills`]: the drills page's URL state (recipe and the fields' texts).
@@ -34,6 +36,7 @@ pub mod camera3d;
 pub mod card_picture;
 pub mod command_line;
 pub mod cubic_path;
+pub mod dh_fk;
 pub mod drag;
 pub mod drill_chain;
 pub mod drills;

@@ -52,7 +52,7 @@ test('the shell renders in English with the home page, navigation and disclaimer
     // pendulum, PID, the cubic and trapezoid pages, trajectory resampling, the RRT stepper, in
     // their groups) and all drills.
     const navIds = await page.locator('[data-testid="site-nav"] a').evaluateAll((as) => as.map((a) => a.dataset.page));
-    assert.deepEqual(navIds, ['home', 'ik-2r', 'se3-relative', 'pendulum-energy', 'pid-step', 'cubic-path', 'trapezoid-profile', 'traj-resample', 'rrt-2d', 'drills', 'lesson']);
+    assert.deepEqual(navIds, ['home', 'ik-2r', 'dh-fk', 'se3-relative', 'pendulum-energy', 'pid-step', 'cubic-path', 'trapezoid-profile', 'traj-resample', 'rrt-2d', 'drills', 'lesson']);
     const topLevel = await page.locator('[data-testid="site-nav"] > ul > li > a').evaluateAll((as) => as.map((a) => a.dataset.page));
     assert.deepEqual(topLevel, ['home', 'drills', 'lesson']);
     assert.equal(await page.locator('[data-testid="nav-home"]').getAttribute('aria-current'), 'page');
@@ -74,7 +74,7 @@ test('the shell renders in English with the home page, navigation and disclaimer
     }
     assert.match(await ik.locator('[data-testid="recipe-drill-ik-workspace"]').textContent(), /Run this drill: Sample a planar 2-link IK workspace/);
     // Recipes with a page of their own pair with it: the "Pairs with" line and the card's foot link.
-    for (const id of ['pendulum-energy', 'rrt-2d', 'se3-relative', 'cubic-path', 'pid-step', 'trapezoid-profile']) {
+    for (const id of ['pendulum-energy', 'rrt-2d', 'se3-relative', 'cubic-path', 'pid-step', 'trapezoid-profile', 'dh-fk']) {
       const card = page.locator(`[data-testid="recipe-card-${id}"]`);
       assert.doesNotMatch(await card.innerText(), /command line today/);
       assert.deepEqual(await card.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href'))), [`#/${id}`, `#/drills?recipe=${id}`, `#/${id}`]);

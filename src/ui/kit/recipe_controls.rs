@@ -256,6 +256,16 @@ impl<T: Clone + 'static> RecipeControls<T> {
             .flatten()
     }
 
+    /// Adds `keys` to the URL notice (a page's own keys whose values it could not use).
+    pub fn note_ignored(&self, keys: Vec<crate::view::url::IgnoredKey>) {
+        if keys.is_empty() {
+            return;
+        }
+        let mut all = self.notice.keys();
+        all.extend(keys);
+        self.notice.set(all);
+    }
+
     /// Back to the recipe's defaults.
     pub fn reset(&self) -> Option<T> {
         self.form.borrow().reset();

@@ -6,6 +6,7 @@
 use crate::ui::page::PageDef;
 
 pub mod cubic_path;
+pub mod dh_fk;
 pub mod drills;
 pub mod home;
 mod home_picture;
@@ -32,6 +33,7 @@ pub const PAGES: &[PageDef] = &[
     cubic_path::PAGE,
     pid_step::PAGE,
     trapezoid_profile::PAGE,
+    dh_fk::PAGE,
     drills::PAGE,
     lesson::PAGE,
 ];
