@@ -739,7 +739,8 @@ mod tests {
             setup_from_args(&Args::parse(&run.raw(), &ARGS, &OPTIONS).unwrap()).unwrap();
         assert_eq!(setup.points.as_deref(), Some(&moved[..]));
         assert_eq!(setup.truth.angle_deg, -20.0);
-        assert!(run.bsv_command().starts_with("bsv umeyama-2d 0.1 --angle -20 --x '"));
+        let line = run.bsv_command();
+        assert!(line.starts_with("bsv umeyama-2d 0.1 3 12 --angle -20 --x '"), "{line}");
         let out = crate::recipes::run(INFO.id, &run.raw()).unwrap();
         assert!(out.file(POINTS_CSV).is_some());
     }
