@@ -213,10 +213,7 @@ impl ArgSpec {
                 }
             }
             ArgKind::File => Ok(0.0),
-            ArgKind::Points => Ok(self
-                .points(text)?
-                .first()
-                .map_or(0.0, |p: &[f64; 2]| p[0])),
+            ArgKind::Points => Ok(self.points(text)?.first().map_or(0.0, |p: &[f64; 2]| p[0])),
         }
     }
 
@@ -702,7 +699,10 @@ mod tests {
             .kind(ArgKind::Points)
             .limits(Bound::Incl(-10.0), Bound::Incl(10.0));
         assert_eq!(points.check_text(""), Ok(0.0));
-        assert_eq!(points.points(" 1, 2 ;-0.5,3e-1"), Ok(vec![[1.0, 2.0], [-0.5, 0.3]]));
+        assert_eq!(
+            points.points(" 1, 2 ;-0.5,3e-1"),
+            Ok(vec![[1.0, 2.0], [-0.5, 0.3]])
+        );
         assert!(matches!(
             points.check_text("1,2;3"),
             Err(RecipeError::WrongCount {

@@ -431,7 +431,11 @@ fn umeyama_options_write_the_points_and_leave_the_recipe_alone() {
         "--out",
         d,
     ]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let points = std::fs::read_to_string(dir.join("umeyama_points.csv")).unwrap();
     let mut lines = points.lines();
     assert_eq!(
@@ -439,16 +443,25 @@ fn umeyama_options_write_the_points_and_leave_the_recipe_alone() {
         Some("x,y,target_x,target_y,aligned_x,aligned_y")
     );
     // (0, 1) mirrored to (0, -1), turned 90° to (1, 0), scaled 1.3, moved by (0.4, -0.2).
-    let third: Vec<f64> = points.lines().nth(3).unwrap().split(',').map(|v| v.parse().unwrap()).collect();
+    let third: Vec<f64> = points
+        .lines()
+        .nth(3)
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
     assert_eq!(&third[..2], &[0.0, 1.0]);
-    assert!((third[2] - 1.7).abs() < 1e-12 && (third[3] + 0.2).abs() < 1e-12, "{points}");
+    assert!(
+        (third[2] - 1.7).abs() < 1e-12 && (third[3] + 0.2).abs() < 1e-12,
+        "{points}"
+    );
     let csv = std::fs::read_to_string(dir.join("umeyama_2d.csv")).unwrap();
     assert!(csv.trim_end().ends_with(",1.3,90.0"), "{csv}");
-    // A count that is not n is refused, naming --x.
-    let bad = bsv(&["umeyama-2d", "0.02", "3", "4", "--x", "0,0;1,0;0,1"]);
+    // A pair that is not two numbers is refused, naming --x.
+    let bad = bsv(&["umeyama-2d", "0.02", "3", "--x", "0,0;1,0;0"]);
     assert_eq!(bad.status.code(), Some(2));
     assert_eq!(
         String::from_utf8_lossy(&bad.stderr).trim_end(),
-        "bsv: umeyama-2d: x: need 8 values, got 6"
+        "bsv: umeyama-2d: x: need 2 values, got 1"
     );
 }

@@ -16,7 +16,8 @@
 //! Options of this port (not the Python recipe's; without them the run is the recipe's, byte
 //! for byte): `--scale`, `--angle` (degrees), `--tx`, `--ty` replace the true similarity,
 //! `--mirror yes` mirrors X (`y -> -y`) before it (the fit then meets the reflection case),
-//! and `--x "x,y;x,y;..."` gives the n source points instead of the random ones. The random
+//! and `--x "x,y;x,y;..."` gives the source points instead of the random ones (n is then their
+//! count; the n argument is not used). The random
 //! draws stay in the recipe's order (X's 2n normals are drawn and, with `--x`, set aside), so
 //! point `i` gets the recipe's noise for point `i`. With any option set the run also writes
 //! `umeyama_points.csv`: X, Y and the aligned points `s R X + t`, one row per point.
@@ -67,9 +68,10 @@ pub const ARGS: [ArgSpec; 3] = [
 ];
 
 /// `--scale S`: the true scale.
-pub const FLAG_SCALE: ArgSpec = ArgSpec::number("scale", "1.3", "the true scale s of Y = s R X + t")
-    .limits(Bound::Excl(0.0), Bound::Incl(1000.0))
-    .hint("recipe-umeyama-2d-hint-scale");
+pub const FLAG_SCALE: ArgSpec =
+    ArgSpec::number("scale", "1.3", "the true scale s of Y = s R X + t")
+        .limits(Bound::Excl(0.0), Bound::Incl(1000.0))
+        .hint("recipe-umeyama-2d-hint-scale");
 /// `--angle DEG`: the true rotation, degrees.
 pub const FLAG_ANGLE: ArgSpec = ArgSpec::number("angle", "35", "the true rotation angle")
     .unit("deg")
@@ -119,7 +121,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     writes: &[CSV, POINTS_CSV],
     quirks_id: "recipe-umeyama-2d-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("umeyama-2d"),
 };
 
 const CSV: &str = "umeyama_2d.csv";
@@ -529,7 +531,8 @@ fn output_of(fit: &Alignment, truth: &Similarity) -> RecipeOutput {
 
 /// `umeyama_points.csv`: per point X, Y and the aligned `s R X + t`.
 pub fn points_csv(x: &[[f64; 2]], y: &[[f64; 2]], aligned: &[[f64; 2]]) -> String {
-    let mut csv = CsvText::with_header(&["x", "y", "target_x", "target_y", "aligned_x", "aligned_y"]);
+    let mut csv =
+        CsvText::with_header(&["x", "y", "target_x", "target_y", "aligned_x", "aligned_y"]);
     for ((p, q), a) in x.iter().zip(y).zip(aligned) {
         csv.floats(&[p[0], p[1], q[0], q[1], a[0], a[1]]);
     }
@@ -573,12 +576,12 @@ pub fn params_from_args(args: &Args) -> Result<UmeyamaParams, RecipeError> {
 }
 
 /// Parses the arguments and the options and validates them: with `--x`, n is the number of
-/// points (an n given must equal it).
+/// points given (the n argument is then not used, so a form can edit both one at a time).
 pub fn setup_from_args(args: &Args) -> Result<UmeyamaSetup, RecipeError> {
     let points = FLAG_X.points(args.flag_text(&FLAG_X))?;
     let mut params = params_from_args(args)?;
-    if !points.is_empty() && !args.has(2) {
-        // n left out: it is the number of points given.
+    if !points.is_empty() {
+        // n is the number of points given (the n argument is not used).
         if !(MIN_POINTS..=MAX_POINTS).contains(&points.len()) {
             return Err(RecipeError::OutOfRange {
                 param: FLAG_X.name.to_string(),
@@ -827,7 +830,13 @@ mod tests {
         // The recipe's own X given back with --x: the same Y, the same fit, bit for bit.
         let text: Vec<String> = x
             .iter()
-            .map(|p| format!("{},{}", crate::pyfmt::py_float(p[0]), crate::pyfmt::py_float(p[1])))
+            .map(|p| {
+                format!(
+                    "{},{}",
+                    crate::pyfmt::py_float(p[0]),
+                    crate::pyfmt::py_float(p[1])
+                )
+            })
             .collect();
         let args = Args::parse(
             &["0.1".into(), "11".into(), "--x".into(), text.join(";")],
@@ -872,7 +881,9 @@ mod tests {
     fn the_truth_options_move_y_and_the_csv_states_them() {
         let out = run_strs(
             INFO.id,
-            &["0", "3", "12", "--scale", "2", "--angle", "-90", "--tx", "1", "--ty", "2"],
+            &[
+                "0", "3", "12", "--scale", "2", "--angle", "-90", "--tx", "1", "--ty", "2",
+            ],
         )
         .unwrap();
         let csv = out.file(CSV).unwrap();
@@ -885,7 +896,10 @@ mod tests {
             .collect();
         assert!((row[0] - 2.0).abs() < 1e-12, "{csv}");
         assert!((row[1] + 90.0).abs() < 1e-12, "{csv}");
-        assert!((row[2] - 1.0).abs() < 1e-12 && (row[3] - 2.0).abs() < 1e-12, "{csv}");
+        assert!(
+            (row[2] - 1.0).abs() < 1e-12 && (row[3] - 2.0).abs() < 1e-12,
+            "{csv}"
+        );
         assert_eq!(&row[5..], &[2.0, -90.0]);
         assert!(out.file(POINTS_CSV).is_some());
     }
@@ -920,10 +934,6 @@ mod tests {
     fn bad_options_are_refused_naming_them() {
         let err = |v: &[&str]| run_strs(INFO.id, v).unwrap_err();
         assert!(matches!(
-            err(&["0.02", "3", "4", "--x", "0,0;1,0;0,1"]),
-            RecipeError::WrongCount { ref param, expected: 8, got: 6 } if param == "x"
-        ));
-        assert!(matches!(
             err(&["--x", "0,0"]),
             RecipeError::OutOfRange { ref param, .. } if param == "x"
         ));
@@ -939,9 +949,14 @@ mod tests {
             err(&["--mirror", "maybe"]),
             RecipeError::BadChoice { .. }
         ));
-        // n follows the points when left out.
-        let out = run_strs(INFO.id, &["0.02", "3", "--x", "0,0;1,0;0,1"]).unwrap();
-        assert_eq!(out.file(POINTS_CSV).unwrap().lines().count(), 4);
+        // n follows the points, given or not.
+        for raw in [
+            &["0.02", "3", "--x", "0,0;1,0;0,1"][..],
+            &["0.02", "3", "7", "--x", "0,0;1,0;0,1"][..],
+        ] {
+            let out = run_strs(INFO.id, raw).unwrap();
+            assert_eq!(out.file(POINTS_CSV).unwrap().lines().count(), 4);
+        }
     }
 
     #[cfg(not(target_arch = "wasm32"))]

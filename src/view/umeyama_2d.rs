@@ -400,7 +400,10 @@ pub fn new_point_spot(points: &[[f64; 2]]) -> [f64; 2] {
 /// The rotation handle: `t + s (cos θ, sin θ)`, the image of `(1, 0)` under the truth.
 pub fn rotation_handle(truth: &Similarity) -> [f64; 2] {
     let (sin, cos) = crate::math::sincos(truth.angle_deg.to_radians());
-    [truth.t[0] + truth.scale * cos, truth.t[1] + truth.scale * sin]
+    [
+        truth.t[0] + truth.scale * cos,
+        truth.t[1] + truth.scale * sin,
+    ]
 }
 
 /// The option texts a drag of the translation handle to `to` sets: `(tx, ty)`.
@@ -421,7 +424,11 @@ pub fn translation_texts(to: [f64; 2]) -> [(&'static str, String); 2] {
 pub fn rotation_texts(t: [f64; 2], to: [f64; 2]) -> [(&'static str, String); 2] {
     let d = [to[0] - t[0], to[1] - t[1]];
     let angle = snap_to(crate::math::atan2(d[1], d[0]).to_degrees(), ANGLE_GRID);
-    let angle = if angle <= -180.0 { angle + 360.0 } else { angle };
+    let angle = if angle <= -180.0 {
+        angle + 360.0
+    } else {
+        angle
+    };
     let hi = FLAG_SCALE.max.value().unwrap_or(1000.0);
     let scale = snap_to(d[0].hypot(d[1]), DRAG_GRID).clamp(DRAG_GRID, hi);
     [
@@ -645,7 +652,11 @@ mod tests {
         let moved = move_point(&scene.x, 3, [0.123_456, -1.987_6]);
         assert_eq!(moved.len(), 12);
         assert_eq!(moved[3], [0.12, -1.99]);
-        for (a, b) in moved.iter().zip(&scene.x).filter(|(a, _)| **a != [0.12, -1.99]) {
+        for (a, b) in moved
+            .iter()
+            .zip(&scene.x)
+            .filter(|(a, _)| **a != [0.12, -1.99])
+        {
             assert!((a[0] - b[0]).abs() <= 0.0005 && (a[1] - b[1]).abs() <= 0.0005);
         }
         let text = points_text(&moved);
@@ -735,12 +746,14 @@ mod tests {
         assert_eq!(keys, ["sigma", "angle", "x"]);
         let fields = crate::view::form::recipe_fields(&INFO);
         let run = crate::view::command_line::RunArgs::new(INFO.id, &fields, &texts);
-        let setup =
-            setup_from_args(&Args::parse(&run.raw(), &ARGS, &OPTIONS).unwrap()).unwrap();
+        let setup = setup_from_args(&Args::parse(&run.raw(), &ARGS, &OPTIONS).unwrap()).unwrap();
         assert_eq!(setup.points.as_deref(), Some(&moved[..]));
         assert_eq!(setup.truth.angle_deg, -20.0);
         let line = run.bsv_command();
-        assert!(line.starts_with("bsv umeyama-2d 0.1 3 12 --angle -20 --x '"), "{line}");
+        assert!(
+            line.starts_with("bsv umeyama-2d 0.1 3 12 --angle -20 --x '"),
+            "{line}"
+        );
         let out = crate::recipes::run(INFO.id, &run.raw()).unwrap();
         assert!(out.file(POINTS_CSV).is_some());
     }

@@ -14,6 +14,7 @@ pub mod pid_step;
 pub mod rrt;
 pub mod traj_resample;
 pub mod trapezoid_profile;
+pub mod umeyama;
 
 /// Route id of the home page (`#/`, `#/home`).
 pub const HOME_ID: &str = home::PAGE.id;
@@ -28,6 +29,7 @@ pub const PAGES: &[PageDef] = &[
     cubic_path::PAGE,
     pid_step::PAGE,
     trapezoid_profile::PAGE,
+    umeyama::PAGE,
     drills::PAGE,
 ];
 
