@@ -117,7 +117,7 @@ test('dragging a point changes the readouts to the kernel\'s; the edited run exp
     assert.equal(q.x.split(';').length, 12);
     const { values, files } = run(argsOf(q));
     const r = await readouts(page);
-    assertFit(r, values, `after the drag: ${location}`);
+    assertFit(r, values, `after the drag: ${JSON.stringify(q)}`);
     assert.notEqual(r.scale, before.scale);
     assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), true);
     assert.equal(await page.locator('[data-field="x"]').inputValue(), q.x);

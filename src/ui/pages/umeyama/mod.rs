@@ -52,6 +52,8 @@ pub const PAGE: PageDef =
 /// Class and role prefix.
 const P: &str = "ume";
 const PNG: &str = "umeyama_2d.png";
+/// A click this soon after a drag ended is the drag's own (ms).
+const CLICK_AFTER_DRAG_MS: f64 = 400.0;
 /// The URL key of the step shown (the rest are the CLI's argument names).
 const STEP_KEY: &str = "step";
 const SLIDERS: [Slider; 6] = [
@@ -127,6 +129,8 @@ struct Inner {
     /// When the input being handled arrived (a drag move, a slider), ms: its frame's work
     /// counts from there (the form's check included).
     work_started: Cell<Option<f64>>,
+    /// When the last drag ended, ms: the click the browser sends after it is not an add.
+    drag_ended: Cell<f64>,
     message: Element,
     edited: Element,
     points_button: Option<Element>,
@@ -187,6 +191,7 @@ impl Page for UmeyamaPage {
                 hover: Cell::new(None),
                 refusal: Cell::new(None),
                 work_started: Cell::new(None),
+                drag_ended: Cell::new(f64::NEG_INFINITY),
                 message,
                 edited,
                 points_button,
@@ -525,6 +530,9 @@ impl Inner {
 
     /// A click (or tap) on the view: select the point under it, or add one on empty space.
     fn clicked(&self, e: &MouseEvent) {
+        if now_ms() - self.drag_ended.get() < CLICK_AFTER_DRAG_MS {
+            return;
+        }
         let at = {
             let view = self.view.borrow();
             let r = view.canvas.top().canvas.get_bounding_client_rect();
@@ -594,6 +602,7 @@ impl Inner {
             }
             DragEvent::End { .. } => {
                 self.dragging.set(None);
+                self.drag_ended.set(now_ms());
                 let shows = {
                     let scene = self.scene.borrow();
                     self.view.borrow().shows(&scene)
