@@ -169,7 +169,7 @@ recipe-umeyama-2d-hint-n = A whole number from 2 to 100,000.
 recipe-umeyama-2d-hint-scale = More than 0, at most 1,000 (the recipe’s is 1.3).
 recipe-umeyama-2d-hint-angle = From −360 to 360 degrees (the recipe’s is 35).
 recipe-umeyama-2d-hint-t = From −1,000 to 1,000 (the recipe’s t is (0.4, −0.2)).
-recipe-umeyama-2d-hint-mirror = yes: X is mirrored (y → −y) before the similarity, so no rotation can fit it and the reflection fix shows.
+recipe-umeyama-2d-hint-mirror = Choose yes to mirror X (y → −y) before the similarity: no rotation can fit it, and the reflection fix shows.
 recipe-umeyama-2d-hint-x = n points as x,y pairs separated by semicolons, each coordinate from −1,000 to 1,000; blank: the recipe’s random points.
 
 ## Quirks: what the port decides where the Python recipe is silent, odd or crashes

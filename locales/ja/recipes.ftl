@@ -169,7 +169,7 @@ recipe-umeyama-2d-hint-n = 2〜100,000 の整数。
 recipe-umeyama-2d-hint-scale = 0 より大きく 1,000 以下（レシピの値は 1.3）。
 recipe-umeyama-2d-hint-angle = −360〜360 度（レシピの値は 35）。
 recipe-umeyama-2d-hint-t = −1,000〜1,000（レシピの t は (0.4, −0.2)）。
-recipe-umeyama-2d-hint-mirror = yes にすると、相似変換の前に X を鏡映（y → −y）します。どの回転でも合わせられないので、鏡映の補正が現れます。
+recipe-umeyama-2d-hint-mirror = yes を選ぶと、相似変換の前に X を鏡映（y → −y）します。どの回転でも合わせられないので、鏡映の補正が現れます。
 recipe-umeyama-2d-hint-x = n 個の点を x,y の組にしてセミコロンで区切ります。各座標は −1,000〜1,000。空欄ならレシピの乱数の点です。
 
 ## 癖：Python のレシピが何も言わない、奇妙な、または異常終了するところでの扱い

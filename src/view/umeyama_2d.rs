@@ -548,6 +548,24 @@ mod tests {
         Scene::new(&UmeyamaSetup::default()).unwrap()
     }
 
+    /// The largest difference of two matrices' entries.
+    fn max_diff(a: &Mat2, b: &Mat2) -> f64 {
+        a.iter()
+            .flatten()
+            .zip(b.iter().flatten())
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max)
+    }
+
+    /// `U diag(S) Vᵀ`.
+    fn product(d: &Svd) -> Mat2 {
+        let us = [
+            [d.u[0][0] * d.s[0], d.u[0][1] * d.s[1]],
+            [d.u[1][0] * d.s[0], d.u[1][1] * d.s[1]],
+        ];
+        mat_mul(&us, &d.vt)
+    }
+
     #[test]
     fn the_scene_is_the_recipes_run_to_the_bit() {
         let scene = default_scene();
@@ -577,32 +595,20 @@ mod tests {
             assert!(mean(&s.centred_y, k).abs() < 1e-15);
         }
         // C = Yc^T Xc / n.
-        for i in 0..2 {
-            for j in 0..2 {
-                let c: f64 = s
-                    .centred_y
-                    .iter()
-                    .zip(&s.centred_x)
-                    .map(|(yc, xc)| yc[i] * xc[j])
-                    .sum::<f64>()
-                    / n;
-                assert!((c - s.cov[i][j]).abs() < 1e-14, "{i}{j}");
-            }
-        }
+        let entry = |i: usize, j: usize| {
+            s.centred_y
+                .iter()
+                .zip(&s.centred_x)
+                .map(|(yc, xc)| yc[i] * xc[j])
+                .sum::<f64>()
+                / n
+        };
+        let c = [[entry(0, 0), entry(0, 1)], [entry(1, 0), entry(1, 1)]];
+        assert!(max_diff(&c, &s.cov) < 1e-14);
         // U diag(S) Vᵀ = C; U, V orthogonal; R = U′Vᵀ.
         let d = svd(s);
-        let us = [
-            [d.u[0][0] * d.s[0], d.u[0][1] * d.s[1]],
-            [d.u[1][0] * d.s[0], d.u[1][1] * d.s[1]],
-        ];
-        let c = mat_mul(&us, &d.vt);
-        let r = mat_mul(&d.u_fixed, &d.vt);
-        for i in 0..2 {
-            for j in 0..2 {
-                assert!((c[i][j] - s.cov[i][j]).abs() < 1e-14);
-                assert!((r[i][j] - s.rotation[i][j]).abs() < 1e-14);
-            }
-        }
+        assert!(max_diff(&product(&d), &s.cov) < 1e-14);
+        assert!(max_diff(&mat_mul(&d.u_fixed, &d.vt), &s.rotation) < 1e-14);
         assert!((det(&d.u) - 1.0).abs() < 1e-14 && (det(&d.vt) - 1.0).abs() < 1e-14);
         assert!(d.s[0] >= d.s[1] && d.s[1] >= 0.0);
         assert_eq!(d.det_uvt, 1.0);
@@ -628,16 +634,7 @@ mod tests {
         assert_eq!(d.det_uvt, -1.0);
         assert!((det(&mat_mul(&d.u, &d.vt)) + 1.0).abs() < 1e-14);
         // U diag(S) Vᵀ is still C, with U a reflection; the fixed U gives a rotation.
-        let us = [
-            [d.u[0][0] * d.s[0], d.u[0][1] * d.s[1]],
-            [d.u[1][0] * d.s[0], d.u[1][1] * d.s[1]],
-        ];
-        let c = mat_mul(&us, &d.vt);
-        for i in 0..2 {
-            for j in 0..2 {
-                assert!((c[i][j] - s.cov[i][j]).abs() < 1e-14);
-            }
-        }
+        assert!(max_diff(&product(&d), &s.cov) < 1e-14);
         assert!((det(&d.u_fixed) - 1.0).abs() < 1e-14);
         // The recipe keeps S1 + S2; Umeyama would use S1 − S2: smaller.
         let umeyama = umeyama_scale(s).unwrap();

@@ -359,8 +359,13 @@ impl Inner {
                     crate::ui::kit::stepper::Speed::PerSecond(2.0),
                 ],
                 initial_speed: 1,
+                speed_label: Box::new(|speed| match speed {
+                    crate::ui::kit::stepper::Speed::PerSecond(rate) if rate > 0.0 => {
+                        ctx::t_args("umeyama-speed", &[("seconds", (1.0 / rate).into())])
+                    }
+                    other => crate::ui::kit::stepper::default_speed_label(other),
+                }),
                 testid: "umeyama-2d-stepper",
-                ..StepperOptions::default()
             },
             move |_| {
                 if let Some(p) = me.upgrade() {

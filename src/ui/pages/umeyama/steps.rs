@@ -8,7 +8,7 @@ use web_sys::Element;
 use crate::ui::kit::form::escape;
 use crate::ui::{ctx, dom};
 use crate::view::signal::sig;
-use crate::view::umeyama_2d::{shown_for, umeyama_scale, Scene, Step, STEPS};
+use crate::view::umeyama_2d::{shown_for, umeyama_scale, Scene, Step};
 
 use super::P;
 
@@ -53,16 +53,9 @@ impl StepPanel {
 
     /// Shows `step` of `scene` (in the current language).
     pub fn show(&self, scene: &Scene, step: Step) {
-        let index = STEPS.iter().position(|s| *s == step).unwrap_or(0);
         let key = step.key();
-        self.title.set_text_content(Some(&ctx::t_strings(
-            "umeyama-step-heading",
-            &[
-                ("index", index.to_string()),
-                ("count", (STEPS.len() - 1).to_string()),
-                ("title", ctx::t(&format!("umeyama-step-{key}-title"))),
-            ],
-        )));
+        self.title
+            .set_text_content(Some(&ctx::t(&format!("umeyama-step-{key}-title"))));
         let s = &scene.steps;
         let text = match step {
             Step::Reflection if s.reflection_fixed() => ctx::t("umeyama-step-reflection-fixed"),
