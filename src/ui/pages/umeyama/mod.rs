@@ -228,7 +228,7 @@ impl Page for UmeyamaPage {
     fn shortcuts(&self) -> Vec<Shortcut> {
         let mut keys = keymap::STEPPER.to_vec();
         keys.push(Shortcut {
-            keys: "Delete",
+            keys: "Delete  Backspace",
             message_id: "umeyama-key-delete",
         });
         keys.push(Shortcut {
