@@ -495,6 +495,19 @@ impl Frame {
         let inside = |p: DVec2| p.x >= 0.0 && p.y >= 0.0 && p.x <= size.0 && p.y <= size.1;
         inside(a) && inside(b)
     }
+
+    /// Whether the view should be fitted again to show `bounds`: something lies outside, or
+    /// everything has shrunk below a third of the canvas. Between those the frame stays put,
+    /// so a slider or a field moves the points in a still view (and costs no re-layout of
+    /// the touch handles).
+    pub fn needs_refit(&self, bounds: ([f64; 2], [f64; 2]), size: (f64, f64)) -> bool {
+        if !self.shows(bounds, size) {
+            return true;
+        }
+        let w = (bounds.1[0] - bounds.0[0]) * self.scale;
+        let h = (bounds.1[1] - bounds.0[1]) * self.scale;
+        w < size.0 / 3.0 && h < size.1 / 3.0
+    }
 }
 
 /// What a press grabs.
@@ -722,6 +735,12 @@ mod tests {
         );
         // y grows up.
         assert!(frame.px([0.0, 1.0]).y < frame.px([0.0, 0.0]).y);
+        // The fitted frame stays; a point outside or a much smaller scene refits it.
+        assert!(!frame.needs_refit(scene.bounds(), size));
+        let (lo, hi) = scene.bounds();
+        assert!(frame.needs_refit((lo, [hi[0] * 10.0, hi[1]]), size));
+        let mid = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0];
+        assert!(frame.needs_refit((mid, [mid[0] + 0.01, mid[1] + 0.01]), size));
     }
 
     #[test]

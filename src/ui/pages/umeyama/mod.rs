@@ -407,7 +407,7 @@ impl Inner {
         }
         if self.dragging.get().is_none() {
             let scene = self.scene.borrow();
-            self.view.borrow_mut().refit(&scene);
+            self.view.borrow_mut().refit_if_needed(&scene);
         }
         self.show_run();
         self.redraw_from(started);

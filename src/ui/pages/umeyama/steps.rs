@@ -2,6 +2,8 @@
 //! this run where they matter) and the small matrices it produces, from
 //! [`crate::view::umeyama_2d::shown_for`].
 
+use std::cell::RefCell;
+
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
@@ -17,6 +19,8 @@ pub struct StepPanel {
     title: Element,
     text: Element,
     mats: Element,
+    /// What the panel shows now (written only when it changes).
+    shown: RefCell<(String, String, String)>,
 }
 
 /// A matrix as an HTML table beside its symbol.
@@ -48,14 +52,14 @@ impl StepPanel {
             title: role("step-title")?,
             text: role("step-text")?,
             mats: role("step-mats")?,
+            shown: RefCell::new(Default::default()),
         })
     }
 
     /// Shows `step` of `scene` (in the current language).
     pub fn show(&self, scene: &Scene, step: Step) {
         let key = step.key();
-        self.title
-            .set_text_content(Some(&ctx::t(&format!("umeyama-step-{key}-title"))));
+        let title = ctx::t(&format!("umeyama-step-{key}-title"));
         let s = &scene.steps;
         let text = match step {
             Step::Reflection if s.reflection_fixed() => ctx::t("umeyama-step-reflection-fixed"),
@@ -69,12 +73,23 @@ impl StepPanel {
             },
             _ => ctx::t(&format!("umeyama-step-{key}-text")),
         };
-        self.text.set_text_content(Some(&text));
         let html: String = shown_for(scene, step)
             .iter()
             .map(|m| matrix_html(m.symbol, &m.rows))
             .collect();
-        self.mats.set_inner_html(&html);
-        let _ = self.mats.set_attribute("data-step", key);
+        let mut shown = self.shown.borrow_mut();
+        if shown.0 != title {
+            self.title.set_text_content(Some(&title));
+            shown.0 = title;
+        }
+        if shown.1 != text {
+            self.text.set_text_content(Some(&text));
+            shown.1 = text;
+        }
+        if shown.2 != html {
+            self.mats.set_inner_html(&html);
+            let _ = self.mats.set_attribute("data-step", key);
+            shown.2 = html;
+        }
     }
 }

@@ -152,6 +152,14 @@ impl SceneView {
         self.frame.shows(scene.bounds(), self.canvas.size())
     }
 
+    /// Fits the frame to `scene` when it no longer shows it well
+    /// ([`crate::view::umeyama_2d::Frame::needs_refit`]).
+    pub fn refit_if_needed(&mut self, scene: &Scene) {
+        if self.frame.needs_refit(scene.bounds(), self.canvas.size()) {
+            self.refit(scene);
+        }
+    }
+
     /// Hit radius of handles, px.
     pub fn hit_radius(coarse: bool) -> f64 {
         if coarse {
