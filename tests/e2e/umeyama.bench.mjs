@@ -74,6 +74,11 @@ try {
       const ok = s.p95 < BUDGET_MS;
       over ||= !ok;
       console.log(`${name.padEnd(25)} ${String(s.n).padStart(4)}  ${s.p50.toFixed(2).padStart(6)}  ${s.p95.toFixed(2).padStart(6)}  ${s.max.toFixed(2).padStart(6)}  p95 < ${BUDGET_MS} ms ${ok ? 'ok' : 'OVER'}`);
+      // Of it: the form's check and the canvas drawing.
+      for (const [part, key] of [['  of it: form check', '__umeyamaFormMs'], ['  of it: canvas draw', '__umeyamaDrawMs']]) {
+        const p = stats(await page.evaluate((k) => window[k]?.slice() ?? [], key));
+        if (p.n) console.log(`${part.padEnd(25)} ${String(p.n).padStart(4)}  ${p.p50.toFixed(2).padStart(6)}  ${p.p95.toFixed(2).padStart(6)}  ${p.max.toFixed(2).padStart(6)}`);
+      }
     } finally {
       await close();
     }

@@ -397,6 +397,7 @@ impl Inner {
     /// New valid arguments: the new run, shown now.
     fn changed(&self, setup: UmeyamaSetup) {
         let started = self.work_started.take().unwrap_or_else(now_ms);
+        bench::record_to("__umeyamaFormMs", now_ms() - started);
         let Some(scene) = Scene::new(&setup) else {
             return;
         };
@@ -671,6 +672,7 @@ impl Inner {
         };
         let step = self.step();
         let view = self.view.borrow();
+        let draw_started = now_ms();
         view.draw(
             &scene,
             step,
@@ -680,6 +682,7 @@ impl Inner {
             },
             Ink::current(),
         );
+        bench::record_to("__umeyamaDrawMs", now_ms() - draw_started);
         if let Some(d) = self.drag.borrow().as_ref() {
             d.set_handles(&view.handles(&scene));
         }
@@ -708,7 +711,7 @@ impl Inner {
         drop(view);
         self.panel.show(&scene, step);
         self.show_readouts(&scene);
-        bench::record(now_ms() - started);
+        bench::record_to("__umeyamaFrameMs", now_ms() - started);
     }
 
     fn show_readouts(&self, scene: &Scene) {
@@ -734,15 +737,16 @@ impl Inner {
 }
 
 /// Bench builds: every frame's work (drag or slider input to drawn), ms, in
-/// `window.__umeyamaFrameMs`.
+/// `window.__umeyamaFrameMs`; of it, the form's check (input to valid arguments) in
+/// `__umeyamaFormMs` and the canvas drawing in `__umeyamaDrawMs`.
 mod bench {
     #[cfg(feature = "bench")]
-    pub fn record(ms: f64) {
+    pub fn record_to(name: &str, ms: f64) {
         use wasm_bindgen::{JsCast, JsValue};
         let Some(window) = web_sys::window() else {
             return;
         };
-        let key = JsValue::from_str("__umeyamaFrameMs");
+        let key = JsValue::from_str(name);
         let list = js_sys::Reflect::get(&window, &key)
             .ok()
             .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
@@ -755,5 +759,5 @@ mod bench {
     }
 
     #[cfg(not(feature = "bench"))]
-    pub fn record(_ms: f64) {}
+    pub fn record_to(_name: &str, _ms: f64) {}
 }
