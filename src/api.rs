@@ -152,7 +152,7 @@ fn js_bound(b: Bound) -> Option<JsBound> {
 
 /// `listRecipes()`: every recipe's facts, in the order of the BSV page: `{ id, python, args,
 /// flags, writes, quirksId, page, titleId, blurbId }` with each argument as `{ name, default,
-/// help, kind ("number" | "integer" | "seed" | "list" | "file" | "choice"), len (lists),
+/// help, kind ("number" | "integer" | "seed" | "list" | "file" | "choice" | "points"), len (lists),
 /// choices, unit, min, max ({ value, inclusive } or null), hintId, labelId, repeat (a flag that
 /// may be given several times) }`.
 #[wasm_bindgen(js_name = listRecipes)]
@@ -194,6 +194,7 @@ pub fn list_recipes() -> Result<JsValue, JsError> {
             ArgKind::List { len } => ("list", Some(len), &[]),
             ArgKind::File => ("file", None, &[]),
             ArgKind::Choice(c) => ("choice", None, c),
+            ArgKind::Points => ("points", None, &[]),
         };
         Arg {
             name: a.name,

@@ -21,6 +21,9 @@ pub enum ArgKind {
     File,
     /// One of a few words.
     Choice(&'static [&'static str]),
+    /// Points `x,y;x,y;...` (each coordinate within the argument's limits); empty = none
+    /// given (umeyama-2d's `--x`).
+    Points,
 }
 
 /// A lower or upper limit of a value.
@@ -210,7 +213,33 @@ impl ArgSpec {
                 }
             }
             ArgKind::File => Ok(0.0),
+            ArgKind::Points => Ok(self.points(text)?.first().map_or(0.0, |p: &[f64; 2]| p[0])),
         }
+    }
+
+    /// A points argument's values (`0.5,-1;2,0.25`): `x,y` pairs separated by semicolons,
+    /// each coordinate a finite number within this argument's limits; a blank text is no
+    /// points. A pair with another count of numbers is [`RecipeError::WrongCount`].
+    pub fn points(&self, text: &str) -> Result<Vec<[f64; 2]>, RecipeError> {
+        if text.trim().is_empty() {
+            return Ok(Vec::new());
+        }
+        text.split(';')
+            .map(|pair| {
+                let values = pair
+                    .split(',')
+                    .map(|item| parse_f64(self.name, item).and_then(|v| self.check(v)))
+                    .collect::<Result<Vec<f64>, _>>()?;
+                match values[..] {
+                    [x, y] => Ok([x, y]),
+                    _ => Err(RecipeError::WrongCount {
+                        param: self.name.to_string(),
+                        expected: 2,
+                        got: values.len(),
+                    }),
+                }
+            })
+            .collect()
     }
 
     /// A list argument's values (`0.35,0.25,0.65,0.75`): each a finite number within this
@@ -263,6 +292,10 @@ impl ArgSpec {
         match (&self.kind, low, high) {
             (ArgKind::Choice(choices), _, _) => format!("one of {}", choices.join(", ")),
             (ArgKind::File, _, _) => "a CSV file".to_string(),
+            (ArgKind::Points, Some(l), Some(h)) => {
+                format!("points x,y separated by semicolons, each coordinate {l} and {h}")
+            }
+            (ArgKind::Points, _, _) => "points x,y separated by semicolons".to_string(),
             (ArgKind::List { len }, Some(l), Some(h)) => {
                 format!("{len} numbers separated by commas, each {l} and {h}")
             }
@@ -661,6 +694,30 @@ mod tests {
         assert!(matches!(
             choice.check_text("rk5"),
             Err(RecipeError::BadChoice { .. })
+        ));
+        let points = ArgSpec::number("x", "", "")
+            .kind(ArgKind::Points)
+            .limits(Bound::Incl(-10.0), Bound::Incl(10.0));
+        assert_eq!(points.check_text(""), Ok(0.0));
+        assert_eq!(
+            points.points(" 1, 2 ;-0.5,3e-1"),
+            Ok(vec![[1.0, 2.0], [-0.5, 0.3]])
+        );
+        assert!(matches!(
+            points.check_text("1,2;3"),
+            Err(RecipeError::WrongCount {
+                expected: 2,
+                got: 1,
+                ..
+            })
+        ));
+        assert!(matches!(
+            points.check_text("1,20"),
+            Err(RecipeError::OutOfRange { .. })
+        ));
+        assert!(matches!(
+            points.check_text("1,2;"),
+            Err(RecipeError::NotANumber { .. })
         ));
         assert_eq!(
             ArgSpec::number("L1", "", "")

@@ -114,6 +114,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
     (Lang::En, "traj.ftl", include_str!("../locales/en/traj.ftl")),
     (Lang::En, "dh.ftl", include_str!("../locales/en/dh.ftl")),
     (
+        Lang::En,
+        "umeyama.ftl",
+        include_str!("../locales/en/umeyama.ftl"),
+    ),
+    (
         Lang::Ja,
         "shell.ftl",
         include_str!("../locales/ja/shell.ftl"),
@@ -155,6 +160,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
     ),
     (Lang::Ja, "traj.ftl", include_str!("../locales/ja/traj.ftl")),
     (Lang::Ja, "dh.ftl", include_str!("../locales/ja/dh.ftl")),
+    (
+        Lang::Ja,
+        "umeyama.ftl",
+        include_str!("../locales/ja/umeyama.ftl"),
+    ),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as

@@ -517,4 +517,64 @@ fn teleop_replay_refuses_bad_files_with_exit_2() {
     assert!(String::from_utf8_lossy(&out.stdout).contains("exit 1"));
     let out = bsv(&["--help"]);
     assert!(String::from_utf8_lossy(&out.stdout).contains("teleop-replay"));
+#[test]
+fn umeyama_options_write_the_points_and_leave_the_recipe_alone() {
+    let dir = temp_dir("umeyama-options");
+    let d = dir.to_str().unwrap();
+    // No options: the recipe's one file, its golden summary.
+    let recipe = bsv(&["umeyama-2d", "--out", d]);
+    assert!(recipe.status.success());
+    assert_eq!(
+        String::from_utf8_lossy(&recipe.stdout),
+        include_str!("golden/umeyama_default/stdout.txt")
+    );
+    assert!(!dir.join("umeyama_points.csv").exists());
+    // Points and a mirrored truth: both files, the points file one row per point.
+    let out = bsv(&[
+        "umeyama-2d",
+        "0",
+        "3",
+        "3",
+        "--x",
+        "0,0;1,0;0,1",
+        "--mirror",
+        "yes",
+        "--angle",
+        "90",
+        "--out",
+        d,
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let points = std::fs::read_to_string(dir.join("umeyama_points.csv")).unwrap();
+    let mut lines = points.lines();
+    assert_eq!(
+        lines.next(),
+        Some("x,y,target_x,target_y,aligned_x,aligned_y")
+    );
+    // (0, 1) mirrored to (0, -1), turned 90° to (1, 0), scaled 1.3, moved by (0.4, -0.2).
+    let third: Vec<f64> = points
+        .lines()
+        .nth(3)
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    assert_eq!(&third[..2], &[0.0, 1.0]);
+    assert!(
+        (third[2] - 1.7).abs() < 1e-12 && (third[3] + 0.2).abs() < 1e-12,
+        "{points}"
+    );
+    let csv = std::fs::read_to_string(dir.join("umeyama_2d.csv")).unwrap();
+    assert!(csv.trim_end().ends_with(",1.3,90.0"), "{csv}");
+    // A pair that is not two numbers is refused, naming --x.
+    let bad = bsv(&["umeyama-2d", "0.02", "3", "--x", "0,0;1,0;0"]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&bad.stderr).trim_end(),
+        "bsv: umeyama-2d: x: need 2 values, got 1"
+    );
 }

@@ -22,6 +22,7 @@ home-card-pairs-pid-step = Pairs with the PID step page: tune Kp, Ki and Kd live
 home-card-pairs-trapezoid-profile = Pairs with the trapezoidal profile page: drag vmax and amax and see when the move becomes a triangle.
 home-card-pairs-pendulum-energy = Pairs with the pendulum page: watch it swing, and run Euler and RK4 side by side to see the energy drift.
 home-card-pairs-rrt-2d = Pairs with the RRT stepper: grow the tree one iteration at a time, backwards too, in a world you draw.
+home-card-pairs-umeyama-2d = Pairs with the Umeyama page: drag the points and the true transform, and step through centroids, covariance, SVD, reflection fix, scale and translation.
 home-card-pairs-dh-fk = Pairs with the DH page: turn the joints of the chain in 3D, orbit the view, and walk a row through its four elementary transforms.
 home-card-pairs-se3-relative = Pairs with the relative pose page: drag frame A or B in 3D, switch radians and degrees, and see the same angles as intrinsic and extrinsic rotations.
 

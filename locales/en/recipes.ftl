@@ -110,6 +110,12 @@ recipe-umeyama-2d-blurb = Recover scale/rotation/translation from noisy correspo
 recipe-umeyama-2d-arg-sigma = Noise standard deviation σ
 recipe-umeyama-2d-arg-seed = Random seed
 recipe-umeyama-2d-arg-n = Number of point pairs n
+recipe-umeyama-2d-flag-scale = True scale s
+recipe-umeyama-2d-flag-angle = True angle (°)
+recipe-umeyama-2d-flag-tx = True translation tx
+recipe-umeyama-2d-flag-ty = True translation ty
+recipe-umeyama-2d-flag-mirror = Mirror X first
+recipe-umeyama-2d-flag-x = Source points X (x,y;x,y;…)
 
 ## Argument hints: the limits of each argument in words (`ArgSpec::hint_id`), the numbers
 ## as the kernels' constants give them (a test checks they agree).
@@ -160,6 +166,11 @@ recipe-trapezoid-profile-hint-amax = Not 0; its size from 0.000000001 to 1,000,0
 recipe-trapezoid-profile-hint-dt = Seconds, more than 0. At most 1,000,000 rows (the move's duration ÷ dt).
 recipe-umeyama-2d-hint-sigma = 0 or more, no upper limit (0: no noise, an exact fit).
 recipe-umeyama-2d-hint-n = A whole number from 2 to 100,000.
+recipe-umeyama-2d-hint-scale = More than 0, at most 1,000 (the recipe’s is 1.3).
+recipe-umeyama-2d-hint-angle = From −360 to 360 degrees (the recipe’s is 35).
+recipe-umeyama-2d-hint-t = From −1,000 to 1,000 (the recipe’s t is (0.4, −0.2)).
+recipe-umeyama-2d-hint-mirror = Choose yes to mirror X (y → −y) before the similarity: no rotation can fit it, and the reflection fix shows.
+recipe-umeyama-2d-hint-x = n points as x,y pairs separated by semicolons, each coordinate from −1,000 to 1,000; blank: the recipe’s random points.
 
 ## Quirks: what the port decides where the Python recipe is silent, odd or crashes
 ## (`RecipeInfo::quirks_id`).

@@ -22,6 +22,7 @@ home-card-pairs-pid-step = PID ステップ応答のページと組み合わせ�
 home-card-pairs-trapezoid-profile = 台形プロファイルのページと組み合わせて使えます。vmax と amax をドラッグし、動きが三角形になる境目を確かめられます。
 home-card-pairs-pendulum-energy = 振り子のページと組み合わせて使えます。振れる様子を見ながら、Euler と RK4 を並べてエネルギーのずれを比べられます。
 home-card-pairs-rrt-2d = RRT ステッパーと組み合わせて使えます。自分で描いた環境で、木を 1 反復ずつ（逆向きにも）成長させられます。
+home-card-pairs-umeyama-2d = Umeyama 法のページと組み合わせて使えます。点と真の変換をドラッグし、重心、共分散、特異値分解、鏡映の補正、スケール、並進を一歩ずつ確かめられます。
 home-card-pairs-dh-fk = DH のページと組み合わせて使えます。3D でチェーンの関節を回し、視点を回しながら、1 行を 4 つの基本変換に分けてたどれます。
 home-card-pairs-se3-relative = 相対姿勢のページと組み合わせて使えます。フレーム A や B を 3D でドラッグし、ラジアンと度を切り替え、同じ角度を内因的・外因的な回転として見比べられます。
 

@@ -110,6 +110,12 @@ recipe-umeyama-2d-blurb = ノイズのある対応点から、スケール・回
 recipe-umeyama-2d-arg-sigma = ノイズの標準偏差 σ
 recipe-umeyama-2d-arg-seed = 乱数シード
 recipe-umeyama-2d-arg-n = 対応点の組数 n
+recipe-umeyama-2d-flag-scale = 真のスケール s
+recipe-umeyama-2d-flag-angle = 真の回転角（°）
+recipe-umeyama-2d-flag-tx = 真の並進 tx
+recipe-umeyama-2d-flag-ty = 真の並進 ty
+recipe-umeyama-2d-flag-mirror = 先に X を鏡映
+recipe-umeyama-2d-flag-x = 元の点群 X（x,y;x,y;…）
 
 ## 引数のヒント：各引数の制限を言葉で（`ArgSpec::hint_id`）。数値はカーネルの定数と同じ
 ## （一致することをテストで確かめている）。
@@ -160,6 +166,11 @@ recipe-trapezoid-profile-hint-amax = 0 以外で、大きさは 0.000000001〜1,
 recipe-trapezoid-profile-hint-dt = 秒、0 より大きい値。最大 1,000,000 行です（移動時間 ÷ dt）。
 recipe-umeyama-2d-hint-sigma = 0 以上、上限なし（0 ならノイズなしで、ぴったり一致します）。
 recipe-umeyama-2d-hint-n = 2〜100,000 の整数。
+recipe-umeyama-2d-hint-scale = 0 より大きく 1,000 以下（レシピの値は 1.3）。
+recipe-umeyama-2d-hint-angle = −360〜360 度（レシピの値は 35）。
+recipe-umeyama-2d-hint-t = −1,000〜1,000（レシピの t は (0.4, −0.2)）。
+recipe-umeyama-2d-hint-mirror = yes を選ぶと、相似変換の前に X を鏡映（y → −y）します。どの回転でも合わせられないので、鏡映の補正が現れます。
+recipe-umeyama-2d-hint-x = n 個の点を x,y の組にしてセミコロンで区切ります。各座標は −1,000〜1,000。空欄ならレシピの乱数の点です。
 
 ## 癖：Python のレシピが何も言わない、奇妙な、または異常終了するところでの扱い
 ## （`RecipeInfo::quirks_id`）。

@@ -569,7 +569,8 @@ mod facts_tests {
                 ("rrt-2d", "rrt-2d"),
                 ("pid-step", "pid-step"),
                 ("manip-grid", "ik-2r"),
-                ("trapezoid-profile", "trapezoid-profile")
+                ("trapezoid-profile", "trapezoid-profile"),
+                ("umeyama-2d", "umeyama-2d")
             ]
         );
     }

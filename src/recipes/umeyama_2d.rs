@@ -12,9 +12,18 @@
 //!
 //! The recipe draws `X = normal(size=(n, 2))` (row-major: x0, y0, x1, ...) from
 //! `default_rng(seed)`, then `Y = 1.3 R(35°) X + (0.4, -0.2) + normal(0, sigma, (n, 2))`.
+//!
+//! Options of this port (not the Python recipe's; without them the run is the recipe's, byte
+//! for byte): `--scale`, `--angle` (degrees), `--tx`, `--ty` replace the true similarity,
+//! `--mirror yes` mirrors X (`y -> -y`) before it (the fit then meets the reflection case),
+//! and `--x "x,y;x,y;..."` gives the source points instead of the random ones (n is then their
+//! count; the n argument is not used). The random
+//! draws stay in the recipe's order (X's 2n normals are drawn and, with `--x`, set aside), so
+//! point `i` gets the recipe's noise for point `i`. With any option set the run also writes
+//! `umeyama_points.csv`: X, Y and the aligned points `s R X + t`, one row per point.
 
 use super::{plan_of, CsvFile, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, parse_i64, parse_seed, ArgSpec, Args, Bound};
+use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound};
 use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, CsvText};
 use crate::rng::NumpyRng;
@@ -58,18 +67,66 @@ pub const ARGS: [ArgSpec; 3] = [
     .hint("recipe-umeyama-2d-hint-n"),
 ];
 
+/// `--scale S`: the true scale.
+pub const FLAG_SCALE: ArgSpec =
+    ArgSpec::number("scale", "1.3", "the true scale s of Y = s R X + t")
+        .limits(Bound::Excl(0.0), Bound::Incl(1000.0))
+        .hint("recipe-umeyama-2d-hint-scale");
+/// `--angle DEG`: the true rotation, degrees.
+pub const FLAG_ANGLE: ArgSpec = ArgSpec::number("angle", "35", "the true rotation angle")
+    .unit("deg")
+    .limits(Bound::Incl(-360.0), Bound::Incl(360.0))
+    .hint("recipe-umeyama-2d-hint-angle");
+/// `--tx X`: the true translation's x.
+pub const FLAG_TX: ArgSpec = ArgSpec::number("tx", "0.4", "the true translation's x")
+    .limits(Bound::Incl(-1000.0), Bound::Incl(1000.0))
+    .hint("recipe-umeyama-2d-hint-t");
+/// `--ty Y`: the true translation's y.
+pub const FLAG_TY: ArgSpec = ArgSpec::number("ty", "-0.2", "the true translation's y")
+    .limits(Bound::Incl(-1000.0), Bound::Incl(1000.0))
+    .hint("recipe-umeyama-2d-hint-t");
+/// `--mirror yes`: X mirrored (`y -> -y`) before the similarity.
+pub const FLAG_MIRROR: ArgSpec = ArgSpec::number(
+    "mirror",
+    "no",
+    "yes: mirror X (y -> -y) before the similarity, the reflection case of the fit",
+)
+.kind(ArgKind::Choice(&["no", "yes"]))
+.hint("recipe-umeyama-2d-hint-mirror");
+/// `--x "x,y;x,y;..."`: the source points.
+pub const FLAG_X: ArgSpec = ArgSpec::number(
+    "x",
+    "",
+    "the n source points x,y;x,y;... instead of the recipe's random ones",
+)
+.kind(ArgKind::Points)
+.limits(Bound::Incl(-1000.0), Bound::Incl(1000.0))
+.hint("recipe-umeyama-2d-hint-x");
+
+/// Every option, in `bsv --help` and form order.
+pub const OPTIONS: [ArgSpec; 6] = [
+    FLAG_SCALE,
+    FLAG_ANGLE,
+    FLAG_TX,
+    FLAG_TY,
+    FLAG_MIRROR,
+    FLAG_X,
+];
+
 pub const INFO: RecipeInfo = RecipeInfo {
     id: "umeyama-2d",
     python: "umeyama_align_2d.py",
     args: &ARGS,
-    flags: &[],
-    writes: &[CSV],
+    flags: &OPTIONS,
+    writes: &[CSV, POINTS_CSV],
     quirks_id: "recipe-umeyama-2d-quirks",
     plan: plan_of::<Entry>,
-    page: None,
+    page: Some("umeyama-2d"),
 };
 
 const CSV: &str = "umeyama_2d.csv";
+/// The points file a run with options writes too.
+pub const POINTS_CSV: &str = "umeyama_points.csv";
 
 /// A similarity estimate `Y ≈ s R(angle) X + t` and its fit error.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -90,9 +147,68 @@ pub struct Alignment {
 /// computes it (see the module docs). Only the first `min(x.len(), y.len())` pairs are used;
 /// with no pairs every field is NaN.
 pub fn umeyama(x: &[[f64; 2]], y: &[[f64; 2]]) -> Alignment {
+    umeyama_steps(x, y).map_or_else(Alignment::nan, |s| s.alignment())
+}
+
+/// Every intermediate of [`umeyama`], in the order it computes them (the page's stepper shows
+/// them); [`UmeyamaSteps::alignment`] is [`umeyama`]'s result, bit for bit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UmeyamaSteps {
+    /// The centroids `mu_x`, `mu_y`.
+    pub mu_x: [f64; 2],
+    pub mu_y: [f64; 2],
+    /// The centred sets `Xc = X - mu_x`, `Yc = Y - mu_y`.
+    pub centred_x: Vec<[f64; 2]>,
+    pub centred_y: Vec<[f64; 2]>,
+    /// `var_x = sum |Xc_i|^2 / n`.
+    pub var_x: f64,
+    /// `C = Yc^T Xc / n`, row-major.
+    pub cov: [[f64; 2]; 2],
+    /// `C = [[E+F, G-H], [G+H, E-F]]`: `(E, F, G, H)`.
+    pub efgh: [f64; 4],
+    /// `Q = |(E, H)|`, `R = |(F, G)|`: the singular values are `Q + R` and `|Q - R|`.
+    pub q: f64,
+    pub r: f64,
+    /// `S_1 + S_2`, the recipe's numerator of the scale.
+    pub singular_sum: f64,
+    /// `R`, row-major: a rotation (after the reflection fix when `Q < R`).
+    pub rotation: [[f64; 2]; 2],
+    /// `s`.
+    pub scale: f64,
+    /// `t = mu_y - s R mu_x`.
+    pub t: [f64; 2],
+    /// `s R X_i + t`.
+    pub aligned: Vec<[f64; 2]>,
+    /// `sqrt(sum |s R X_i + t - Y_i|^2 / n)`.
+    pub rmse: f64,
+    /// `atan2(R_21, R_11)` in degrees.
+    pub rotation_deg: f64,
+}
+
+impl UmeyamaSteps {
+    /// Whether `U Vᵀ` of the SVD was a reflection (`det C < 0`, i.e. `Q < R`), which the
+    /// recipe fixes by negating the last column of `U`.
+    pub fn reflection_fixed(&self) -> bool {
+        self.q < self.r
+    }
+
+    /// The estimate.
+    pub fn alignment(&self) -> Alignment {
+        Alignment {
+            scale: self.scale,
+            rotation_deg: self.rotation_deg,
+            tx: self.t[0],
+            ty: self.t[1],
+            rmse: self.rmse,
+        }
+    }
+}
+
+/// [`umeyama`] with its intermediates (`None` without pairs).
+pub fn umeyama_steps(x: &[[f64; 2]], y: &[[f64; 2]]) -> Option<UmeyamaSteps> {
     let n = x.len().min(y.len());
     if n == 0 {
-        return Alignment::nan();
+        return None;
     }
     let (x, y) = (&x[..n], &y[..n]);
     let count = n as f64;
@@ -107,11 +223,15 @@ pub fn umeyama(x: &[[f64; 2]], y: &[[f64; 2]]) -> Alignment {
     let (mu_x, mu_y) = (mean(x), mean(y));
     let mut sum_sq_x = 0.0;
     let mut cov = Matrix2::zeros();
+    let mut centred_x = Vec::with_capacity(n);
+    let mut centred_y = Vec::with_capacity(n);
     for (p, q) in x.iter().zip(y) {
         let xc = Vector2::new(p[0], p[1]) - mu_x;
         let yc = Vector2::new(q[0], q[1]) - mu_y;
         sum_sq_x += xc[0] * xc[0] + xc[1] * xc[1];
         cov += yc * xc.transpose();
+        centred_x.push([xc[0], xc[1]]);
+        centred_y.push([yc[0], yc[1]]);
     }
     let var_x = sum_sq_x / count;
     cov /= count;
@@ -134,22 +254,42 @@ pub fn umeyama(x: &[[f64; 2]], y: &[[f64; 2]]) -> Alignment {
         1.0
     };
     let t = mu_y - (rotation * scale) * mu_x;
-    let sum_sq_residual: f64 = x
+    let aligned: Vec<[f64; 2]> = x
+        .iter()
+        .map(|p| {
+            let v = rotation * Vector2::new(p[0], p[1]) * scale + t;
+            [v[0], v[1]]
+        })
+        .collect();
+    let sum_sq_residual: f64 = aligned
         .iter()
         .zip(y)
-        .map(|(p, q)| {
-            let aligned = rotation * Vector2::new(p[0], p[1]) * scale + t;
-            let r = aligned - Vector2::new(q[0], q[1]);
+        .map(|(v, q)| {
+            let r = Vector2::new(v[0], v[1]) - Vector2::new(q[0], q[1]);
             r[0] * r[0] + r[1] * r[1]
         })
         .sum();
-    Alignment {
+    Some(UmeyamaSteps {
+        mu_x: [mu_x[0], mu_x[1]],
+        mu_y: [mu_y[0], mu_y[1]],
+        centred_x,
+        centred_y,
+        var_x,
+        cov: [[a, b], [c, d]],
+        efgh: [e, f, g, h],
+        q,
+        r,
+        singular_sum,
+        rotation: [
+            [rotation[(0, 0)], rotation[(0, 1)]],
+            [rotation[(1, 0)], rotation[(1, 1)]],
+        ],
         scale,
-        rotation_deg: crate::math::atan2(rotation[(1, 0)], rotation[(0, 0)]).to_degrees(),
-        tx: t[0],
-        ty: t[1],
+        t: [t[0], t[1]],
+        aligned,
         rmse: (sum_sq_residual / count).sqrt(),
-    }
+        rotation_deg: crate::math::atan2(rotation[(1, 0)], rotation[(0, 0)]).to_degrees(),
+    })
 }
 
 impl Alignment {
@@ -216,28 +356,127 @@ fn n_out_of_range(value: f64) -> RecipeError {
     }
 }
 
+/// The true similarity `Y = s R(angle) M X + t` (`M` mirrors `y -> -y` when `mirror`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Similarity {
+    pub scale: f64,
+    pub angle_deg: f64,
+    pub t: [f64; 2],
+    pub mirror: bool,
+}
+
+impl Similarity {
+    /// The recipe's: 1.3, 35°, (0.4, -0.2), no mirror.
+    pub const RECIPE: Similarity = Similarity {
+        scale: SCALE_TRUE,
+        angle_deg: ROTATION_TRUE_DEG,
+        t: TRANSLATION_TRUE,
+        mirror: false,
+    };
+
+    /// Checks each value against its option's facts.
+    pub fn validate(&self) -> Result<(), RecipeError> {
+        FLAG_SCALE.check(self.scale)?;
+        FLAG_ANGLE.check(self.angle_deg)?;
+        FLAG_TX.check(self.t[0])?;
+        FLAG_TY.check(self.t[1])?;
+        Ok(())
+    }
+}
+
+/// A run: the recipe's arguments, the true similarity and, when given, the source points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UmeyamaSetup {
+    /// `sigma seed n` (`n` is the number of points when they are given).
+    pub params: UmeyamaParams,
+    pub truth: Similarity,
+    /// The source points X (`--x`), or `None` for the recipe's random ones.
+    pub points: Option<Vec<[f64; 2]>>,
+}
+
+impl Default for UmeyamaSetup {
+    fn default() -> Self {
+        UmeyamaSetup::recipe(UmeyamaParams::default())
+    }
+}
+
+impl UmeyamaSetup {
+    /// The recipe's run of `params`.
+    pub fn recipe(params: UmeyamaParams) -> UmeyamaSetup {
+        UmeyamaSetup {
+            params,
+            truth: Similarity::RECIPE,
+            points: None,
+        }
+    }
+
+    /// Whether this is the Python recipe's run (no option changes anything).
+    pub fn is_recipe(&self) -> bool {
+        self.points.is_none() && self.truth == Similarity::RECIPE
+    }
+
+    /// Checks the arguments, the similarity and that the points number `n`.
+    pub fn validate(&self) -> Result<(), RecipeError> {
+        self.params.validate()?;
+        self.truth.validate()?;
+        if let Some(points) = &self.points {
+            check_point_count(points.len(), self.params.n)?;
+            for p in points {
+                for v in p {
+                    FLAG_X.check(*v)?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+fn check_point_count(count: usize, n: usize) -> Result<(), RecipeError> {
+    if count != n {
+        return Err(RecipeError::WrongCount {
+            param: FLAG_X.name.to_string(),
+            expected: 2 * n,
+            got: 2 * count,
+        });
+    }
+    Ok(())
+}
+
 /// The recipe's data: `X` and the noisy transformed `Y`, drawn in the recipe's order
 /// (`params` is not validated here; [`run`] does that).
 pub fn sample_points(params: &UmeyamaParams) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+    sample_setup(&UmeyamaSetup::recipe(*params))
+}
+
+/// The data of a run: X (the given points, else the recipe's) and `Y = s R M X + t` plus the
+/// recipe's noise, drawn in the recipe's order (not validated here).
+pub fn sample_setup(setup: &UmeyamaSetup) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+    let params = &setup.params;
     let mut rng = NumpyRng::new(params.seed);
-    let x: Vec<[f64; 2]> = (0..params.n)
+    let drawn: Vec<[f64; 2]> = (0..params.n)
         .map(|_| {
             let px = rng.normal(0.0, 1.0);
             let py = rng.normal(0.0, 1.0);
             [px, py]
         })
         .collect();
-    let th = ROTATION_TRUE_DEG.to_radians();
+    let x = match &setup.points {
+        Some(points) => points.clone(),
+        None => drawn,
+    };
+    let truth = &setup.truth;
+    let th = truth.angle_deg.to_radians();
     let (sin, cos) = crate::math::sincos(th);
     let y = x
         .iter()
         .map(|p| {
+            let p = if truth.mirror { [p[0], -p[1]] } else { *p };
             let rotated = [cos * p[0] - sin * p[1], sin * p[0] + cos * p[1]];
             let noise_x = rng.normal(0.0, params.sigma);
             let noise_y = rng.normal(0.0, params.sigma);
             [
-                SCALE_TRUE * rotated[0] + TRANSLATION_TRUE[0] + noise_x,
-                SCALE_TRUE * rotated[1] + TRANSLATION_TRUE[1] + noise_y,
+                truth.scale * rotated[0] + truth.t[0] + noise_x,
+                truth.scale * rotated[1] + truth.t[1] + noise_y,
             ]
         })
         .collect();
@@ -253,6 +492,10 @@ pub fn run(params: &UmeyamaParams) -> Result<Alignment, RecipeError> {
 
 /// The CSV and the summary line, exactly as the recipe writes them.
 pub fn output(fit: &Alignment) -> RecipeOutput {
+    output_of(fit, &Similarity::RECIPE)
+}
+
+fn output_of(fit: &Alignment, truth: &Similarity) -> RecipeOutput {
     let mut csv = CsvText::with_header(&[
         "scale",
         "rotation_deg",
@@ -268,8 +511,8 @@ pub fn output(fit: &Alignment) -> RecipeOutput {
         fit.tx,
         fit.ty,
         fit.rmse,
-        SCALE_TRUE,
-        ROTATION_TRUE_DEG.to_radians().to_degrees(),
+        truth.scale,
+        truth.angle_deg.to_radians().to_degrees(),
     ]);
     RecipeOutput {
         files: vec![CsvFile {
@@ -284,6 +527,36 @@ pub fn output(fit: &Alignment) -> RecipeOutput {
         ),
         warnings: Vec::new(),
     }
+}
+
+/// `umeyama_points.csv`: per point X, Y and the aligned `s R X + t`.
+pub fn points_csv(x: &[[f64; 2]], y: &[[f64; 2]], aligned: &[[f64; 2]]) -> String {
+    let mut csv =
+        CsvText::with_header(&["x", "y", "target_x", "target_y", "aligned_x", "aligned_y"]);
+    for ((p, q), a) in x.iter().zip(y).zip(aligned) {
+        csv.floats(&[p[0], p[1], q[0], q[1], a[0], a[1]]);
+    }
+    csv.finish()
+}
+
+/// The run of `setup`: the recipe's CSV and summary (its estimate, the true values), and with
+/// any option `umeyama_points.csv` too.
+pub fn run_setup(setup: &UmeyamaSetup) -> Result<RecipeOutput, RecipeError> {
+    setup.validate()?;
+    let (x, y) = sample_setup(setup);
+    let steps = umeyama_steps(&x, &y);
+    let fit = steps
+        .as_ref()
+        .map_or_else(Alignment::nan, UmeyamaSteps::alignment);
+    let mut out = output_of(&fit, &setup.truth);
+    if !setup.is_recipe() {
+        let aligned = steps.map(|s| s.aligned).unwrap_or_default();
+        out.files.push(CsvFile {
+            name: POINTS_CSV.to_string(),
+            text: points_csv(&x, &y, &aligned),
+        });
+    }
+    Ok(out.with_warnings(warnings(&setup.params)))
 }
 
 /// Parses `sigma seed n` (any whole-number notation for the seed and n) and validates them.
@@ -302,6 +575,44 @@ pub fn params_from_args(args: &Args) -> Result<UmeyamaParams, RecipeError> {
     Ok(params)
 }
 
+/// Parses the arguments and the options and validates them: with `--x`, n is the number of
+/// points given (the n argument is then not used, so a form can edit both one at a time).
+pub fn setup_from_args(args: &Args) -> Result<UmeyamaSetup, RecipeError> {
+    let points = FLAG_X.points(args.flag_text(&FLAG_X))?;
+    let mut params = params_from_args(args)?;
+    if !points.is_empty() {
+        // n is the number of points given (the n argument is not used).
+        if !(MIN_POINTS..=MAX_POINTS).contains(&points.len()) {
+            return Err(RecipeError::OutOfRange {
+                param: FLAG_X.name.to_string(),
+                value: points.len() as f64,
+                min: MIN_POINTS as f64,
+                max: MAX_POINTS as f64,
+            });
+        }
+        params.n = points.len();
+    }
+    let number = |spec: &ArgSpec| args.flag_f64(spec).and_then(|v| spec.check(v));
+    let truth = Similarity {
+        scale: number(&FLAG_SCALE)?,
+        angle_deg: number(&FLAG_ANGLE)?,
+        t: [number(&FLAG_TX)?, number(&FLAG_TY)?],
+        mirror: {
+            let text = args.flag_text(&FLAG_MIRROR);
+            FLAG_MIRROR.check_text(text)?;
+            text.trim().eq_ignore_ascii_case("yes")
+        },
+    };
+    let points = (!points.is_empty()).then_some(points);
+    let setup = UmeyamaSetup {
+        params,
+        truth,
+        points,
+    };
+    setup.validate()?;
+    Ok(setup)
+}
+
 /// What looks wrong with a fit: with two point pairs the similarity fits exactly whatever the
 /// noise, so the rmse says nothing.
 pub fn warnings(params: &UmeyamaParams) -> Vec<RecipeWarning> {
@@ -316,29 +627,28 @@ pub fn warnings(params: &UmeyamaParams) -> Vec<RecipeWarning> {
 pub struct Entry;
 
 impl Kernel for Entry {
-    type Params = UmeyamaParams;
+    type Params = UmeyamaSetup;
 
-    fn params(args: &Args) -> Result<UmeyamaParams, RecipeError> {
-        params_from_args(args)
+    fn params(args: &Args) -> Result<UmeyamaSetup, RecipeError> {
+        setup_from_args(args)
     }
 
-    fn plan(params: &UmeyamaParams, _args: &Args) -> Result<Plan, RecipeError> {
+    fn plan(setup: &UmeyamaSetup, _args: &Args) -> Result<Plan, RecipeError> {
         Ok(Plan {
-            rows: params.n as u64,
+            rows: setup.params.n as u64,
         })
     }
 
     fn run(
-        params: &UmeyamaParams,
+        setup: &UmeyamaSetup,
         _args: &Args,
         _progress: &mut Progress,
     ) -> Result<RecipeOutput, RecipeError> {
-        let fit = run(params)?;
-        Ok(output(&fit).with_warnings(warnings(params)))
+        run_setup(setup)
     }
 }
 
-/// Parses `sigma seed n`, runs, and writes the recipe's output.
+/// Parses `sigma seed n` and the options, runs, and writes the recipe's output.
 pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
     super::run_of::<Entry>(args)
 }
@@ -491,6 +801,161 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    #[test]
+    fn options_at_their_defaults_are_the_recipe_byte_for_byte() {
+        let recipe = run_strs(INFO.id, &["0.05", "9", "20"]).unwrap();
+        let same = run_strs(
+            INFO.id,
+            &[
+                "0.05", "9", "20", "--scale", "1.3", "--angle", "35.0", "--tx", "0.4", "--ty",
+                "-0.2", "--mirror", "no",
+            ],
+        )
+        .unwrap();
+        assert_eq!(recipe, same);
+        assert_eq!(recipe.files.len(), 1);
+    }
+
+    #[test]
+    fn given_points_get_the_recipes_noise_for_their_index() {
+        let params = UmeyamaParams {
+            sigma: 0.1,
+            seed: 11,
+            n: 5,
+        };
+        let (x, y) = sample_points(&params);
+        // The recipe's own X given back with --x: the same Y, the same fit, bit for bit.
+        let text: Vec<String> = x
+            .iter()
+            .map(|p| {
+                format!(
+                    "{},{}",
+                    crate::pyfmt::py_float(p[0]),
+                    crate::pyfmt::py_float(p[1])
+                )
+            })
+            .collect();
+        let args = Args::parse(
+            &["0.1".into(), "11".into(), "--x".into(), text.join(";")],
+            &ARGS,
+            &OPTIONS,
+        )
+        .unwrap();
+        let setup = setup_from_args(&args).unwrap();
+        assert_eq!(setup.params, params);
+        assert_eq!(setup.points.as_deref(), Some(&x[..]));
+        assert!(!setup.is_recipe());
+        let (x2, y2) = sample_setup(&setup);
+        assert_eq!((&x2, &y2), (&x, &y));
+        // Moving one point keeps every other point's noise.
+        let mut moved = setup.clone();
+        if let Some(points) = moved.points.as_mut() {
+            points[2] = [3.0, -1.0];
+        }
+        let (_, y3) = sample_setup(&moved);
+        for i in [0, 1, 3, 4] {
+            assert_eq!(y3[i], y[i]);
+        }
+        let out = run_setup(&setup).unwrap();
+        let recipe = crate::recipes::run_strs(INFO.id, &["0.1", "11", "5"]).unwrap();
+        assert_eq!(out.files[0], recipe.files[0]);
+        let points = out.file(POINTS_CSV).unwrap();
+        assert_eq!(points.lines().count(), 6);
+        let steps = umeyama_steps(&x, &y).unwrap();
+        let first = format!(
+            "{},{},{},{},{},{}\r\n",
+            crate::pyfmt::py_float(x[0][0]),
+            crate::pyfmt::py_float(x[0][1]),
+            crate::pyfmt::py_float(y[0][0]),
+            crate::pyfmt::py_float(y[0][1]),
+            crate::pyfmt::py_float(steps.aligned[0][0]),
+            crate::pyfmt::py_float(steps.aligned[0][1]),
+        );
+        assert!(points.contains(&first), "{points}");
+    }
+
+    #[test]
+    fn the_truth_options_move_y_and_the_csv_states_them() {
+        let out = run_strs(
+            INFO.id,
+            &[
+                "0", "3", "12", "--scale", "2", "--angle", "-90", "--tx", "1", "--ty", "2",
+            ],
+        )
+        .unwrap();
+        let csv = out.file(CSV).unwrap();
+        let row: Vec<f64> = csv
+            .lines()
+            .nth(1)
+            .unwrap()
+            .split(',')
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert!((row[0] - 2.0).abs() < 1e-12, "{csv}");
+        assert!((row[1] + 90.0).abs() < 1e-12, "{csv}");
+        assert!(
+            (row[2] - 1.0).abs() < 1e-12 && (row[3] - 2.0).abs() < 1e-12,
+            "{csv}"
+        );
+        assert_eq!(&row[5..], &[2.0, -90.0]);
+        assert!(out.file(POINTS_CSV).is_some());
+    }
+
+    #[test]
+    fn a_mirrored_set_needs_the_reflection_fix() {
+        let setup = UmeyamaSetup {
+            truth: Similarity {
+                mirror: true,
+                ..Similarity::RECIPE
+            },
+            ..UmeyamaSetup::recipe(UmeyamaParams {
+                sigma: 0.0,
+                ..UmeyamaParams::default()
+            })
+        };
+        let (x, y) = sample_setup(&setup);
+        let steps = umeyama_steps(&x, &y).unwrap();
+        assert!(steps.reflection_fixed(), "{steps:?}");
+        let det = steps.cov[0][0] * steps.cov[1][1] - steps.cov[0][1] * steps.cov[1][0];
+        assert!(det < 0.0);
+        // R stays a rotation; the fit cannot undo a mirror, so the residual is large.
+        let r = steps.rotation;
+        assert!((r[0][0] * r[1][1] - r[0][1] * r[1][0] - 1.0).abs() < 1e-12);
+        assert!(steps.rmse > 0.5, "{}", steps.rmse);
+        // The recipe's run has no reflection.
+        let (x, y) = sample_points(&UmeyamaParams::default());
+        assert!(!umeyama_steps(&x, &y).unwrap().reflection_fixed());
+    }
+
+    #[test]
+    fn bad_options_are_refused_naming_them() {
+        let err = |v: &[&str]| run_strs(INFO.id, v).unwrap_err();
+        assert!(matches!(
+            err(&["--x", "0,0"]),
+            RecipeError::OutOfRange { ref param, .. } if param == "x"
+        ));
+        assert!(matches!(
+            err(&["--x", "0,0;1"]),
+            RecipeError::WrongCount { ref param, expected: 2, got: 1 } if param == "x"
+        ));
+        assert!(matches!(
+            err(&["--scale", "0"]),
+            RecipeError::OutOfRange { ref param, .. } if param == "scale"
+        ));
+        assert!(matches!(
+            err(&["--mirror", "maybe"]),
+            RecipeError::BadChoice { .. }
+        ));
+        // n follows the points, given or not.
+        for raw in [
+            &["0.02", "3", "--x", "0,0;1,0;0,1"][..],
+            &["0.02", "3", "7", "--x", "0,0;1,0;0,1"][..],
+        ] {
+            let out = run_strs(INFO.id, raw).unwrap();
+            assert_eq!(out.file(POINTS_CSV).unwrap().lines().count(), 4);
         }
     }
 

@@ -56,9 +56,12 @@ impl FieldDef {
         }
     }
 
-    /// A wide field (a list or a file takes a whole row).
+    /// A wide field (a list, points or a file takes a whole row).
     pub fn is_wide(&self) -> bool {
-        matches!(self.spec.kind, ArgKind::List { .. } | ArgKind::File)
+        matches!(
+            self.spec.kind,
+            ArgKind::List { .. } | ArgKind::File | ArgKind::Points
+        )
     }
 }
 

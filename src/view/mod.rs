@@ -29,6 +29,8 @@
 //!   [`pid_step`]: rise time, overshoot, settling, steady-state error and peak u;
 //!   [`trapezoid_profile`]: the phases of a profile, triangles, the ramp-corner drag.
 //! - [`traj_resample`]: the trajectory-resampling page: URL, readouts.
+//! - [`umeyama_2d`]: the Umeyama page: the fit's steps and their matrices, the SVD's
+//!   factors, the point editor, the truth's handles, the view frame and hit tests.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
@@ -57,5 +59,6 @@ pub mod stepper;
 pub mod table;
 pub mod traj_resample;
 pub mod trapezoid_profile;
+pub mod umeyama_2d;
 pub mod url;
 pub mod worker;

@@ -52,7 +52,7 @@ test('the shell renders in English with the home page, navigation and disclaimer
     // pendulum, PID, the cubic and trapezoid pages, trajectory resampling, the RRT stepper, in
     // their groups) and all drills.
     const navIds = await page.locator('[data-testid="site-nav"] a').evaluateAll((as) => as.map((a) => a.dataset.page));
-    assert.deepEqual(navIds, ['home', 'ik-2r', 'dh-fk', 'se3-relative', 'pendulum-energy', 'pid-step', 'cubic-path', 'trapezoid-profile', 'traj-resample', 'rrt-2d', 'drills', 'lesson']);
+    assert.deepEqual(navIds, ['home', 'ik-2r', 'dh-fk', 'se3-relative', 'umeyama-2d', 'pendulum-energy', 'pid-step', 'cubic-path', 'trapezoid-profile', 'traj-resample', 'rrt-2d', 'drills', 'lesson']);
     const topLevel = await page.locator('[data-testid="site-nav"] > ul > li > a').evaluateAll((as) => as.map((a) => a.dataset.page));
     assert.deepEqual(topLevel, ['home', 'drills', 'lesson']);
     assert.equal(await page.locator('[data-testid="nav-home"]').getAttribute('aria-current'), 'page');
@@ -74,7 +74,7 @@ test('the shell renders in English with the home page, navigation and disclaimer
     }
     assert.match(await ik.locator('[data-testid="recipe-drill-ik-workspace"]').textContent(), /Run this drill: Sample a planar 2-link IK workspace/);
     // Recipes with a page of their own pair with it: the "Pairs with" line and the card's foot link.
-    for (const id of ['pendulum-energy', 'rrt-2d', 'se3-relative', 'cubic-path', 'pid-step', 'trapezoid-profile', 'dh-fk']) {
+    for (const id of ['pendulum-energy', 'rrt-2d', 'se3-relative', 'cubic-path', 'pid-step', 'trapezoid-profile', 'dh-fk', 'umeyama-2d']) {
       const card = page.locator(`[data-testid="recipe-card-${id}"]`);
       assert.doesNotMatch(await card.innerText(), /command line today/);
       assert.deepEqual(await card.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href'))), [`#/${id}`, `#/drills?recipe=${id}`, `#/${id}`]);
@@ -82,9 +82,10 @@ test('the shell renders in English with the home page, navigation and disclaimer
     }
     const pid = page.locator('[data-testid="recipe-card-pid-step"]');
     assert.match(await pid.innerText(), /In the browser:\s*Run this drill\s*(?:: Discrete PID step response \(toy plant\))?\W*PID step response/);
-    // A recipe without a page of its own links to its drill only.
-    const umeyama = page.locator('[data-testid="recipe-card-umeyama-2d"]');
-    assert.deepEqual(await umeyama.locator('a').evaluateAll((as) => as.map((a) => a.getAttribute('href'))), ['#/drills?recipe=umeyama-2d']);
+    // Every recipe now has a page of its own (the three IK recipes share the IK page).
+    for (const id of ['ik-workspace', 'jacobian-2r', 'manip-grid']) {
+      assert.ok((await page.locator(`[data-testid="recipe-card-${id}"] a`).evaluateAll((as) => as.map((a) => a.getAttribute('href')))).includes('#/ik-2r'), id);
+    }
     // The featured card is the IK playground.
     assert.equal(await page.locator('[data-testid="featured-ik-2r"]').getAttribute('href'), '#/ik-2r');
     // No message id leaked through untranslated (a missing message shows its id).

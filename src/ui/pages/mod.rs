@@ -18,6 +18,7 @@ pub mod rrt;
 pub mod se3;
 pub mod traj_resample;
 pub mod trapezoid_profile;
+pub mod umeyama;
 
 /// Route id of the home page (`#/`, `#/home`).
 pub const HOME_ID: &str = home::PAGE.id;
@@ -34,6 +35,7 @@ pub const PAGES: &[PageDef] = &[
     pid_step::PAGE,
     trapezoid_profile::PAGE,
     dh_fk::PAGE,
+    umeyama::PAGE,
     drills::PAGE,
     lesson::PAGE,
 ];

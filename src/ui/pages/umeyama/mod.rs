@@ -1,0 +1,763 @@
+//! Umeyama alignment (`#/umeyama-2d`): the source points X (drag them; click or tap empty
+//! space to add one; remove the selected one with the button or Delete), the true similarity
+//! (fields, sliders, and two handles in the view: the translation and the rotation/scale), the
+//! noise σ, the seed and n; the noisy targets Y, the aligned points `s R X + t` with their
+//! residuals, and the estimate against the truth. The stepper walks the fit: centroids →
+//! centred sets → covariance → SVD → reflection fix → scale → translation → rmse, each with
+//! its matrices (`crate::view::umeyama_2d`, from the kernel's own `umeyama_steps`).
+//!
+//! Components, one file each: `view` (the canvas), `steps` (the step panel), `markup` (with
+//! the explanation); the kit's [`RecipeControls`] is the form (the recipe's arguments and the
+//! options `--scale --angle --tx --ty --mirror --x`), the URL (keys = the CLI's argument names)
+//! and the exports. Every edit goes through the form's texts, so the downloads and the command
+//! line are `bsv umeyama-2d` with the same words; an edited run also exports
+//! `umeyama_points.csv` and says that it is no longer the Python recipe's.
+
+mod markup;
+mod steps;
+mod view;
+
+use std::cell::{Cell, RefCell};
+use std::rc::{Rc, Weak};
+
+use glam::DVec2;
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{Element, KeyboardEvent, MouseEvent};
+
+use crate::i18n::FluentArg;
+use crate::pyfmt::py_float;
+use crate::recipes::umeyama_2d::{setup_from_args, UmeyamaSetup, INFO, POINTS_CSV};
+use crate::ui::kit::canvas::{focus_without_scroll, Ink};
+use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
+use crate::ui::kit::keymap;
+use crate::ui::kit::readouts::Readouts;
+use crate::ui::kit::recipe_controls::RecipeControls;
+use crate::ui::kit::scope::Scope;
+use crate::ui::kit::stepper::{Command, Length, StepModel, StepperOptions, StepperWidget};
+use crate::ui::kit::url_state::UrlWriter;
+use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::schedule::now_ms;
+use crate::ui::{ctx, dom};
+use crate::view::signal::{sig, Slider};
+use crate::view::umeyama_2d::{
+    add_point, editable, hit_test, move_point, new_point_spot, points_text, remove_point,
+    rotation_texts, translation_texts, Grab, Refusal, Scene, Step, STEPS,
+};
+
+/// The page, as the shell's page table lists it.
+pub const PAGE: PageDef =
+    PageDef::of::<UmeyamaPage>("umeyama-2d", "umeyama-title", "umeyama-blurb");
+
+/// Class and role prefix.
+const P: &str = "ume";
+const PNG: &str = "umeyama_2d.png";
+/// A click this soon after a drag ended is the drag's own (ms).
+const CLICK_AFTER_DRAG_MS: f64 = 400.0;
+/// The URL key of the step shown (the rest are the CLI's argument names).
+const STEP_KEY: &str = "step";
+const SLIDERS: [Slider; 6] = [
+    Slider {
+        name: "sigma",
+        min: 0.0,
+        max: 0.5,
+        step: 0.005,
+    },
+    Slider {
+        name: "n",
+        min: 2.0,
+        max: 40.0,
+        step: 1.0,
+    },
+    Slider {
+        name: "scale",
+        min: 0.1,
+        max: 3.0,
+        step: 0.01,
+    },
+    Slider {
+        name: "angle",
+        min: -180.0,
+        max: 180.0,
+        step: 0.5,
+    },
+    Slider {
+        name: "tx",
+        min: -3.0,
+        max: 3.0,
+        step: 0.01,
+    },
+    Slider {
+        name: "ty",
+        min: -3.0,
+        max: 3.0,
+        step: 0.01,
+    },
+];
+
+/// The stepper's model: which teaching step is shown.
+pub struct StepIndex {
+    index: u64,
+}
+
+impl StepModel for StepIndex {
+    fn length(&self) -> Length {
+        Length::Finite(STEPS.len() as u64 - 1)
+    }
+    fn go_to(&mut self, index: u64) {
+        self.index = index.min(STEPS.len() as u64 - 1);
+    }
+}
+
+/// The mounted page.
+pub struct UmeyamaPage(Rc<Inner>);
+
+struct Inner {
+    me: Weak<Inner>,
+    root: Element,
+    controls: RecipeControls<UmeyamaSetup>,
+    scene: RefCell<Scene>,
+    view: RefCell<view::SceneView>,
+    panel: steps::StepPanel,
+    model: Rc<RefCell<StepIndex>>,
+    stepper: RefCell<Option<StepperWidget<StepIndex>>>,
+    drag: RefCell<Option<Drag<Grab>>>,
+    dragging: Cell<Option<Grab>>,
+    selected: Cell<Option<usize>>,
+    hover: Cell<Option<Grab>>,
+    refusal: Cell<Option<Refusal>>,
+    /// When the input being handled arrived (a drag move, a slider), ms: its frame's work
+    /// counts from there (the form's check included).
+    work_started: Cell<Option<f64>>,
+    /// When the last drag ended, ms: the click the browser sends after it is not an add.
+    drag_ended: Cell<f64>,
+    message: Element,
+    edited: Element,
+    points_button: Option<Element>,
+    readouts: Readouts,
+    url: RefCell<Option<UrlWriter>>,
+    scope: RefCell<Scope>,
+}
+
+fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
+    dom::find(root, &format!("[data-{P}=\"{name}\"]"), P)
+}
+
+impl Page for UmeyamaPage {
+    fn mount(ctx: MountCtx) -> Result<UmeyamaPage, JsValue> {
+        let root = ctx.root.clone();
+        root.set_inner_html(&markup::page());
+        dom::relocalize(&root)?;
+        let controls = RecipeControls::mount(
+            &root,
+            P,
+            &INFO,
+            &SLIDERS,
+            &ctx.query,
+            &[STEP_KEY],
+            setup_from_args,
+        )?;
+        let scene = Scene::new(&controls.value())
+            .ok_or_else(|| JsValue::from_str("umeyama: a run without points"))?;
+        let start_step = ctx
+            .get(STEP_KEY)
+            .and_then(|s| s.trim().parse::<u64>().ok())
+            .map_or(0, |s| s.min(STEPS.len() as u64 - 1));
+        let stage: Element = role(&root, "stage")?;
+        let view = view::SceneView::find(&stage)?;
+        let panel = steps::StepPanel::find(&root)?;
+        let readouts = Readouts::find(&root)?;
+        let message = role(&root, "message")?;
+        let edited = role(&root, "edited")?;
+        let points_button = root
+            .query_selector(&format!("[data-download=\"{POINTS_CSV}\"]"))
+            .ok()
+            .flatten();
+        let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
+            let mut scope = Scope::new();
+            let url = UrlWriter::new(&mut scope, me, Inner::query);
+            Inner {
+                me: me.clone(),
+                root,
+                controls,
+                scene: RefCell::new(scene),
+                view: RefCell::new(view),
+                panel,
+                model: Rc::new(RefCell::new(StepIndex { index: start_step })),
+                stepper: RefCell::new(None),
+                drag: RefCell::new(None),
+                dragging: Cell::new(None),
+                selected: Cell::new(None),
+                hover: Cell::new(None),
+                refusal: Cell::new(None),
+                work_started: Cell::new(None),
+                drag_ended: Cell::new(f64::NEG_INFINITY),
+                message,
+                edited,
+                points_button,
+                readouts,
+                url: RefCell::new(Some(url)),
+                scope: RefCell::new(scope),
+            }
+        });
+        inner.install(&stage)?;
+        inner.build_stepper()?;
+        {
+            let scene = inner.scene.borrow();
+            inner.view.borrow_mut().fit(&scene);
+        }
+        inner.command(Command::Seek(start_step));
+        inner.show_run();
+        inner.redraw();
+        Ok(UmeyamaPage(inner))
+    }
+
+    fn relocalize(&self) {
+        self.0.controls.relocalize();
+        if let Some(s) = self.0.stepper.borrow().as_ref() {
+            s.relocalize();
+        }
+        self.0.render_refusal();
+        self.0.redraw();
+    }
+
+    fn set_projector(&self, _on: bool) {
+        self.0.relayout();
+    }
+
+    fn shortcuts(&self) -> Vec<Shortcut> {
+        let mut keys = keymap::STEPPER.to_vec();
+        keys.push(Shortcut {
+            keys: "Delete  Backspace",
+            message_id: "umeyama-key-delete",
+        });
+        keys.push(Shortcut {
+            keys: "a",
+            message_id: "umeyama-key-add",
+        });
+        keys
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        match event.key().as_str() {
+            "Delete" | "Backspace" => {
+                self.0.remove_point();
+                true
+            }
+            "a" | "A" => {
+                self.0.add_point_button();
+                true
+            }
+            _ => self
+                .0
+                .stepper
+                .borrow()
+                .as_ref()
+                .is_some_and(|s| s.on_key(event)),
+        }
+    }
+}
+
+impl Inner {
+    /// The URL: the arguments as the command line has them, and the step shown.
+    fn query(&self) -> Vec<(String, String)> {
+        let mut pairs = self.controls.url_pairs();
+        let index = self.model.try_borrow().map_or(0, |m| m.index);
+        if index > 0 {
+            pairs.push((STEP_KEY.to_string(), index.to_string()));
+        }
+        pairs
+    }
+
+    fn step(&self) -> Step {
+        Step::at(self.model.try_borrow().map_or(0, |m| m.index))
+    }
+
+    /// Listeners: the form (through the kit), n typed over edited points, the tools, the
+    /// view's drags and clicks, resizes.
+    fn install(&self, stage: &Element) -> Result<(), JsValue> {
+        let me = &self.me;
+        let mut scope = self.scope.borrow_mut();
+        self.controls.attach(
+            &mut scope,
+            me,
+            |p| &p.controls,
+            Inner::changed,
+            |p| p.download_png(),
+        )?;
+        // A new n draws the recipe's random points again: edited points are dropped first.
+        for selector in ["[data-field=\"n\"]", "[data-slider=\"n\"]"] {
+            if let Ok(Some(el)) = self.root.query_selector(selector) {
+                scope.listen_for(&el, "input", me, |p, _| {
+                    if p.controls.value().points.is_some() {
+                        if let Some(setup) = p.controls.set_texts(&[("x", "")], None) {
+                            p.changed(setup);
+                        }
+                    }
+                })?;
+            }
+        }
+        // A slider's input reaches it before the form's listener: the frame's work starts here.
+        for slider in dom::matching(&self.root, "[data-slider]")? {
+            scope.listen_for(&slider, "input", me, |p, _| {
+                p.work_started.set(Some(now_ms()));
+            })?;
+        }
+        let form: Element = role(&self.root, "form")?;
+        scope.listen_for(&form, "change", me, |p, _| p.write_url_now())?;
+        for (action, f) in [
+            ("add", Inner::add_point_button as fn(&Inner)),
+            ("remove", Inner::remove_point),
+            ("mirror", Inner::mirror_preset),
+            ("recipe", Inner::recipe_run),
+        ] {
+            let button: Element = dom::find(&self.root, &format!("[data-action=\"{action}\"]"), P)?;
+            scope.listen_for(&button, "click", me, move |p, _| f(p))?;
+        }
+        let top = self.view.borrow().canvas.top().canvas.clone();
+        scope.listen_for(stage, "click", me, |p, e| {
+            if let Some(m) = e.dyn_ref::<MouseEvent>() {
+                p.clicked(m);
+            }
+        })?;
+        scope.observe_resize(&[stage], me, |p| p.relayout())?;
+        drop(scope);
+        let (w_hit, w_on) = (self.me.clone(), self.me.clone());
+        *self.drag.borrow_mut() = Some(Drag::attach(
+            stage,
+            &top,
+            move |at, kind| {
+                let p = w_hit.upgrade()?;
+                let view = p.view.borrow();
+                let radius = view::SceneView::hit_radius(kind.is_coarse());
+                let hit = hit_test(&view.frame, &p.scene.borrow(), at, radius);
+                // A finger grabs only a handle; anywhere else it scrolls the page.
+                if kind == PointerKind::Touch && hit.is_none() {
+                    return None;
+                }
+                hit
+            },
+            move |ev| {
+                if let Some(p) = w_on.upgrade() {
+                    p.on_drag(ev);
+                }
+            },
+        )?);
+        Ok(())
+    }
+
+    fn build_stepper(&self) -> Result<(), JsValue> {
+        let slot: Element = role(&self.root, "stepper")?;
+        let me = self.me.clone();
+        let widget = StepperWidget::new(
+            &slot,
+            self.model.clone(),
+            StepperOptions {
+                speeds: vec![
+                    crate::ui::kit::stepper::Speed::PerSecond(0.5),
+                    crate::ui::kit::stepper::Speed::PerSecond(1.0),
+                    crate::ui::kit::stepper::Speed::PerSecond(2.0),
+                ],
+                initial_speed: 1,
+                speed_label: Box::new(|speed| match speed {
+                    crate::ui::kit::stepper::Speed::PerSecond(rate) if rate > 0.0 => {
+                        ctx::t_args("umeyama-speed", &[("seconds", (1.0 / rate).into())])
+                    }
+                    other => crate::ui::kit::stepper::default_speed_label(other),
+                }),
+                testid: "umeyama-2d-stepper",
+            },
+            move |_| {
+                if let Some(p) = me.upgrade() {
+                    p.redraw();
+                    if let Some(url) = p.url.borrow().as_ref() {
+                        url.schedule();
+                    }
+                }
+            },
+        )?;
+        *self.stepper.borrow_mut() = Some(widget);
+        Ok(())
+    }
+
+    fn command(&self, command: Command) {
+        if let Some(s) = self.stepper.borrow().as_ref() {
+            s.apply(command);
+        }
+    }
+
+    fn write_url_now(&self) {
+        if let Some(url) = self.url.borrow().as_ref() {
+            url.write_now();
+        }
+    }
+
+    // ---------- Runs ----------
+
+    /// New valid arguments: the new run, shown now.
+    fn changed(&self, setup: UmeyamaSetup) {
+        let started = self.work_started.take().unwrap_or_else(now_ms);
+        bench::record_to("__umeyamaFormMs", now_ms() - started);
+        let Some(scene) = Scene::new(&setup) else {
+            return;
+        };
+        let count = scene.x.len();
+        *self.scene.borrow_mut() = scene;
+        if self.selected.get().is_some_and(|i| i >= count) {
+            self.selected.set(None);
+        }
+        if self.dragging.get().is_none() {
+            let scene = self.scene.borrow();
+            self.view.borrow_mut().refit_if_needed(&scene);
+        }
+        self.show_run();
+        self.redraw_from(started);
+        let fit = self.scene.borrow().fit();
+        self.readouts.announce(&ctx::t_strings(
+            "umeyama-live",
+            &[
+                ("scale", sig(fit.scale, 4)),
+                ("angle", sig(fit.rotation_deg, 4)),
+                ("rmse", sig(fit.rmse, 3)),
+            ],
+        ));
+        if let Some(url) = self.url.borrow().as_ref() {
+            url.schedule();
+        }
+    }
+
+    /// What depends on the run alone: the edited notice and the points download.
+    fn show_run(&self) {
+        let recipe = self.scene.borrow().setup.is_recipe();
+        dom::show(&self.edited, !recipe);
+        if let Some(b) = &self.points_button {
+            dom::show(b, !recipe);
+        }
+    }
+
+    fn download_png(&self) {
+        let view = self.view.borrow();
+        if let Ok(canvas) = view.canvas.flatten("#ffffff") {
+            let _ = crate::ui::kit::png::download(&canvas, PNG);
+        }
+    }
+
+    // ---------- Editing ----------
+
+    /// The points now (the recipe's, on the editor's grid, until edited).
+    fn points(&self) -> Vec<[f64; 2]> {
+        let scene = self.scene.borrow();
+        match &scene.setup.points {
+            Some(p) => p.clone(),
+            None => editable(&scene.x),
+        }
+    }
+
+    /// New points: through the form's `x` and `n`.
+    fn set_points(&self, points: &[[f64; 2]]) {
+        let text = points_text(points);
+        let n = points.len().to_string();
+        if let Some(setup) = self.controls.set_texts(&[("x", &text), ("n", &n)], None) {
+            self.changed(setup);
+        }
+    }
+
+    fn show_refusal(&self, refusal: Option<Refusal>) {
+        self.refusal.set(refusal);
+        self.render_refusal();
+    }
+
+    fn render_refusal(&self) {
+        let text = self.refusal.get().map(|r| {
+            ctx::t_args(
+                r.message_id(),
+                &[("count", FluentArg::Number(r.count() as f64))],
+            )
+        });
+        self.message.set_text_content(text.as_deref());
+        dom::show(&self.message, text.is_some());
+    }
+
+    fn add_point_at(&self, at: [f64; 2]) {
+        let points = self.points();
+        match add_point(&points, at) {
+            Ok(next) => {
+                self.show_refusal(None);
+                self.selected.set(Some(next.len() - 1));
+                self.set_points(&next);
+                self.write_url_now();
+            }
+            Err(r) => self.show_refusal(Some(r)),
+        }
+    }
+
+    fn add_point_button(&self) {
+        let points = self.points();
+        self.add_point_at(new_point_spot(&points));
+    }
+
+    fn remove_point(&self) {
+        let points = self.points();
+        let index = self.selected.get().unwrap_or(usize::MAX);
+        match remove_point(&points, index) {
+            Ok(next) => {
+                self.show_refusal(None);
+                self.selected.set(None);
+                self.set_points(&next);
+                self.write_url_now();
+            }
+            Err(r) => self.show_refusal(Some(r)),
+        }
+    }
+
+    /// The mirror preset: Y mirrors X, and the stepper at the reflection fix.
+    fn mirror_preset(&self) {
+        if let Some(setup) = self.controls.set_texts(&[("mirror", "yes")], None) {
+            self.changed(setup);
+        }
+        let index = STEPS
+            .iter()
+            .position(|s| *s == Step::Reflection)
+            .unwrap_or(0);
+        self.command(Command::Seek(index as u64));
+        self.write_url_now();
+    }
+
+    /// Back to the recipe's points and truth (σ, seed and n kept).
+    fn recipe_run(&self) {
+        let defaults: Vec<(&str, &str)> = INFO.flags.iter().map(|f| (f.name, f.default)).collect();
+        self.selected.set(None);
+        self.show_refusal(None);
+        if let Some(setup) = self.controls.set_texts(&defaults, None) {
+            self.changed(setup);
+        }
+        self.write_url_now();
+    }
+
+    /// A click (or tap) on the view: select the point under it, or add one on empty space.
+    fn clicked(&self, e: &MouseEvent) {
+        if now_ms() - self.drag_ended.get() < CLICK_AFTER_DRAG_MS {
+            return;
+        }
+        let at = {
+            let view = self.view.borrow();
+            let r = view.canvas.top().canvas.get_bounding_client_rect();
+            DVec2::new(
+                f64::from(e.client_x()) - r.left(),
+                f64::from(e.client_y()) - r.top(),
+            )
+        };
+        let (hit, world) = {
+            let view = self.view.borrow();
+            let hit = hit_test(
+                &view.frame,
+                &self.scene.borrow(),
+                at,
+                view::SceneView::hit_radius(true),
+            );
+            (hit, view.frame.world(at))
+        };
+        focus_without_scroll(&self.view.borrow().canvas.top().canvas);
+        match hit {
+            Some(Grab::Point(i)) => {
+                self.selected.set(Some(i));
+                self.redraw();
+            }
+            Some(_) => {}
+            None => self.add_point_at(world),
+        }
+    }
+
+    fn on_drag(&self, ev: DragEvent<Grab>) {
+        match ev {
+            DragEvent::Start { handle, .. } => {
+                self.dragging.set(Some(handle));
+                if let Grab::Point(i) = handle {
+                    self.selected.set(Some(i));
+                }
+                self.show_refusal(None);
+                focus_without_scroll(&self.view.borrow().canvas.top().canvas);
+                self.redraw();
+            }
+            DragEvent::Move { handle, at } => {
+                self.work_started.set(Some(now_ms()));
+                let to = self.view.borrow().frame.world(at);
+                match handle {
+                    Grab::Point(i) => {
+                        let next = move_point(&self.points(), i, to);
+                        self.set_points(&next);
+                    }
+                    Grab::Translation => {
+                        let [a, b] = translation_texts(to);
+                        if let Some(setup) =
+                            self.controls.set_texts(&[(a.0, &a.1), (b.0, &b.1)], None)
+                        {
+                            self.changed(setup);
+                        }
+                    }
+                    Grab::Rotation => {
+                        let t = self.scene.borrow().truth().t;
+                        let [a, b] = rotation_texts(t, to);
+                        if let Some(setup) =
+                            self.controls.set_texts(&[(a.0, &a.1), (b.0, &b.1)], None)
+                        {
+                            self.changed(setup);
+                        }
+                    }
+                }
+            }
+            DragEvent::End { .. } => {
+                self.dragging.set(None);
+                self.drag_ended.set(now_ms());
+                let shows = {
+                    let scene = self.scene.borrow();
+                    self.view.borrow().shows(&scene)
+                };
+                if !shows {
+                    let scene = self.scene.borrow();
+                    self.view.borrow_mut().refit(&scene);
+                }
+                self.redraw();
+                self.write_url_now();
+            }
+            DragEvent::Hover(at) => {
+                let hit = {
+                    let view = self.view.borrow();
+                    hit_test(
+                        &view.frame,
+                        &self.scene.borrow(),
+                        at,
+                        view::SceneView::hit_radius(false),
+                    )
+                };
+                if hit != self.hover.get() {
+                    self.hover.set(hit);
+                    if let Some(d) = self.drag.borrow().as_ref() {
+                        d.set_hover_cursor(if hit.is_some() { "grab" } else { "crosshair" });
+                    }
+                    self.redraw();
+                }
+            }
+            DragEvent::Leave => {
+                if self.hover.replace(None).is_some() {
+                    self.redraw();
+                }
+            }
+            DragEvent::Tap { .. } => {}
+        }
+    }
+
+    // ---------- Drawing ----------
+
+    fn relayout(&self) {
+        {
+            let scene = self.scene.borrow();
+            self.view.borrow_mut().fit(&scene);
+        }
+        if let Some(d) = self.drag.borrow().as_ref() {
+            d.relayout();
+        }
+        self.redraw();
+    }
+
+    fn redraw(&self) {
+        self.redraw_from(now_ms());
+    }
+
+    /// The view, the step panel and the readouts; the frame's work since `started` is
+    /// recorded (bench builds).
+    fn redraw_from(&self, started: f64) {
+        let Ok(scene) = self.scene.try_borrow() else {
+            return;
+        };
+        let step = self.step();
+        let view = self.view.borrow();
+        let draw_started = now_ms();
+        view.draw(
+            &scene,
+            step,
+            view::Marks {
+                selected: self.selected.get(),
+                hover: self.hover.get(),
+            },
+            Ink::current(),
+        );
+        bench::record_to("__umeyamaDrawMs", now_ms() - draw_started);
+        if let Some(d) = self.drag.borrow().as_ref() {
+            d.set_handles(&view.handles(&scene));
+        }
+        // Where the points and handles are, for tests and assistive tools (CSS px).
+        let top = &view.canvas.top().canvas;
+        let px: Vec<String> = scene
+            .x
+            .iter()
+            .map(|p| {
+                let q = view.frame.px(*p);
+                format!("{:.1},{:.1}", q.x, q.y)
+            })
+            .collect();
+        let _ = top.set_attribute("data-points-px", &px.join(";"));
+        let truth = scene.truth();
+        for (name, p) in [
+            ("data-handle-t", truth.t),
+            (
+                "data-handle-r",
+                crate::view::umeyama_2d::rotation_handle(&truth),
+            ),
+        ] {
+            let q = view.frame.px(p);
+            let _ = top.set_attribute(name, &format!("{:.1},{:.1}", q.x, q.y));
+        }
+        drop(view);
+        self.panel.show(&scene, step);
+        self.show_readouts(&scene);
+        bench::record_to("__umeyamaFrameMs", now_ms() - started);
+    }
+
+    fn show_readouts(&self, scene: &Scene) {
+        let fit = scene.fit();
+        let truth = scene.truth();
+        let ro = &self.readouts;
+        let show = |key: &str, x: f64| ro.set_with_value(key, &sig(x, 6), &py_float(x));
+        show("scale", fit.scale);
+        show("angle", fit.rotation_deg);
+        show("tx", fit.tx);
+        show("ty", fit.ty);
+        show("rmse", fit.rmse);
+        show("scale-true", truth.scale);
+        show("angle-true", truth.angle_deg);
+        show("tx-true", truth.t[0]);
+        show("ty-true", truth.t[1]);
+        // The noise's own rms per point is σ √2 (two coordinates).
+        show(
+            "rmse-noise",
+            scene.setup.params.sigma * std::f64::consts::SQRT_2,
+        );
+    }
+}
+
+/// Bench builds: every frame's work (drag or slider input to drawn), ms, in
+/// `window.__umeyamaFrameMs`; of it, the form's check (input to valid arguments) in
+/// `__umeyamaFormMs` and the canvas drawing in `__umeyamaDrawMs`.
+mod bench {
+    #[cfg(feature = "bench")]
+    pub fn record_to(name: &str, ms: f64) {
+        use wasm_bindgen::{JsCast, JsValue};
+        let Some(window) = web_sys::window() else {
+            return;
+        };
+        let key = JsValue::from_str(name);
+        let list = js_sys::Reflect::get(&window, &key)
+            .ok()
+            .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
+            .unwrap_or_else(|| {
+                let a = js_sys::Array::new();
+                let _ = js_sys::Reflect::set(&window, &key, &a);
+                a
+            });
+        list.push(&JsValue::from_f64(ms));
+    }
+
+    #[cfg(not(feature = "bench"))]
+    pub fn record_to(_name: &str, _ms: f64) {}
+}

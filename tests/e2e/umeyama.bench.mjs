@@ -1,0 +1,90 @@
+// Speed of the Umeyama page (#/umeyama-2d) in headless Chromium at 1920×1080, on the dist folder
+// named by BSV_DIST (default dist/); it needs a wasm built with `--features bench` (the page
+// then keeps each frame's work in window.__umeyamaFrameMs: from the pointer move or slider
+// input to the drawn view, the form's check, the kernel's fit, the step panel and the readouts
+// included). `make bench` (scripts/bench.sh) assembles such a dist in target/bench-dist.
+// Cases: dragging a point (12 and 40 points) and dragging the sigma slider.
+//
+// Budget: frame work p95 < 4 ms. With UMEYAMA_BENCH_STRICT=1 the exit code is 1 when it is
+// missed; otherwise this only reports.
+import { join } from 'node:path';
+import { openApp, closeBrowser, ROOT } from './harness.mjs';
+import { startStaticServer } from '../../scripts/serve.mjs';
+
+const VIEWPORT = { width: 1920, height: 1080 };
+const MOVES = 150;
+const BUDGET_MS = 4;
+
+function stats(values) {
+  const v = [...values].filter(Number.isFinite).sort((a, b) => a - b);
+  const q = (p) => v[Math.min(v.length - 1, Math.max(0, Math.ceil(p * v.length) - 1))];
+  return { n: v.length, p50: q(0.5), p95: q(0.95), max: v[v.length - 1] };
+}
+
+const frame = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+
+async function dragPoint(page) {
+  const canvas = page.locator('[data-testid="umeyama-2d-canvas"]');
+  const box = await canvas.boundingBox();
+  const [x, y] = await canvas.evaluate((c) => c.dataset.pointsPx.split(';')[0].split(',').map(Number));
+  await page.mouse.move(box.x + x, box.y + y);
+  await page.mouse.down();
+  for (let k = 1; k <= MOVES; k++) {
+    const a = (k / MOVES) * 2 * Math.PI;
+    await page.mouse.move(box.x + x + 80 * Math.sin(a), box.y + y + 60 * (1 - Math.cos(a)));
+    await frame(page);
+  }
+  await page.mouse.up();
+}
+
+async function dragSlider(page, name) {
+  const slider = page.locator(`[data-slider="${name}"]`);
+  await slider.scrollIntoViewIfNeeded();
+  const box = await slider.boundingBox();
+  await page.mouse.move(box.x + 4, box.y + box.height / 2);
+  await page.mouse.down();
+  for (let k = 0; k <= MOVES; k++) {
+    await page.mouse.move(box.x + 4 + (k / MOVES) * (box.width - 8), box.y + box.height / 2);
+    await frame(page);
+  }
+  await page.mouse.up();
+}
+
+const cases = [
+  ['point drag, 12 points', '#/umeyama-2d', dragPoint],
+  ['point drag, 40 points', '#/umeyama-2d?n=40', dragPoint],
+  ['sigma slider, 12 points', '#/umeyama-2d', (page) => dragSlider(page, 'sigma')],
+  ['angle slider, 40 points', '#/umeyama-2d?n=40&step=3', (page) => dragSlider(page, 'angle')],
+];
+
+const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);
+let over = false;
+try {
+  console.log('case                       n   p50 ms  p95 ms  max ms  budget');
+  for (const [name, hash, act] of cases) {
+    const { page, close } = await openApp(server.url, hash, { viewport: VIEWPORT });
+    try {
+      await act(page);
+      const ms = await page.evaluate(() => window.__umeyamaFrameMs?.slice());
+      if (!Array.isArray(ms)) {
+        console.log('no bench hooks in this build (build the wasm with --features bench)');
+        break;
+      }
+      const s = stats(ms);
+      const ok = s.p95 < BUDGET_MS;
+      over ||= !ok;
+      console.log(`${name.padEnd(25)} ${String(s.n).padStart(4)}  ${s.p50.toFixed(2).padStart(6)}  ${s.p95.toFixed(2).padStart(6)}  ${s.max.toFixed(2).padStart(6)}  p95 < ${BUDGET_MS} ms ${ok ? 'ok' : 'OVER'}`);
+      // Of it: the form's check and the canvas drawing.
+      for (const [part, key] of [['  of it: form check', '__umeyamaFormMs'], ['  of it: canvas draw', '__umeyamaDrawMs']]) {
+        const p = stats(await page.evaluate((k) => window[k]?.slice() ?? [], key));
+        if (p.n) console.log(`${part.padEnd(25)} ${String(p.n).padStart(4)}  ${p.p50.toFixed(2).padStart(6)}  ${p.p95.toFixed(2).padStart(6)}  ${p.max.toFixed(2).padStart(6)}`);
+      }
+    } finally {
+      await close();
+    }
+  }
+} finally {
+  await closeBrowser();
+  await server.close();
+}
+if (over && process.env.UMEYAMA_BENCH_STRICT === '1') process.exit(1);

@@ -1,0 +1,324 @@
+// The Umeyama page (#/umeyama-2d) in headless Chromium: dragging a point, a handle or a slider
+// changes the readouts to the numbers of `bsv umeyama-2d` with the page's arguments (its CSV);
+// the downloads equal `bsv` byte for byte for the defaults and for a URL with other values (an
+// edited run's umeyama_points.csv too); bad values show their messages and the page keeps the
+// last valid view; the stepper walks the fit's steps (the mirror preset shows the reflection
+// fix); points are added and removed within the limits; Japanese leaves no English UI text.
+// Screenshots (EN/JA 1920×1080, projector, phone 390 px) go to tests/e2e/out/.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { join } from 'node:path';
+import { startServer, openApp, closeBrowser, OUT } from './harness.mjs';
+import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { englishStrings } from './locales.mjs';
+
+let server;
+
+before(async () => {
+  buildCli();
+  server = await startServer();
+}, { timeout: 600_000 });
+
+after(async () => {
+  await closeBrowser();
+  await server?.close();
+});
+
+const open = (hash, opts = {}) => openApp(server.url, hash, opts);
+const CSV = 'umeyama_2d.csv';
+const POINTS = 'umeyama_points.csv';
+
+/** `bsv umeyama-2d <args>`: the CSV's numbers by column name, and the files' bytes. */
+function run(args) {
+  const out = cli(['umeyama-2d', ...args]);
+  const [head, row] = out.files.get(CSV).toString('utf8').trim().split('\n');
+  const values = Object.fromEntries(head.trim().split(',').map((k, i) => [k, Number(row.split(',')[i])]));
+  return { values, files: out.files, stdout: out.stdout };
+}
+
+/** `data-readout` → exact value (data-value) of the page. */
+const readouts = (page) => page.evaluate(() => {
+  const out = {};
+  for (const el of document.querySelectorAll('[data-readout]')) {
+    const v = el.dataset.value;
+    out[el.dataset.readout] = v === undefined || v === '' ? null : Number(v);
+  }
+  return out;
+});
+
+/** The readouts equal the CSV's estimate, exactly. */
+function assertFit(r, values, label) {
+  assert.deepEqual(
+    [r.scale, r.angle, r.tx, r.ty, r.rmse],
+    [values.scale, values.rotation_deg, values.tx, values.ty, values.rmse],
+    label,
+  );
+}
+
+/** The URL query of the page as an object. */
+const query = (page) => page.evaluate(() => Object.fromEntries(new URLSearchParams(location.hash.split('?')[1] ?? '')));
+
+/** The CLI arguments of the page's URL (the keys are the CLI's). */
+function argsOf(q) {
+  const args = [q.sigma ?? '0.02', q.seed ?? '3', q.n ?? '12'];
+  for (const k of ['scale', 'angle', 'tx', 'ty', 'mirror', 'x']) if (q[k] !== undefined) args.push(`--${k}`, q[k]);
+  return args;
+}
+
+const canvas = (page) => page.locator('[data-testid="umeyama-2d-canvas"]');
+const pixels = (page) => canvas(page).evaluate((c) => c.toDataURL());
+const pointsPx = (page) => canvas(page).evaluate((c) => c.dataset.pointsPx.split(';').map((p) => p.split(',').map(Number)));
+
+/** Sets a slider as a drag does (value, then an input event). */
+async function slide(page, name, value) {
+  await page.locator(`[data-slider="${name}"]`).evaluate((el, v) => {
+    el.value = v;
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+  }, String(value));
+}
+
+/** Drags with the mouse from canvas px `from` by `(dx, dy)` in `steps` moves. */
+async function drag(page, from, dx, dy, steps = 10) {
+  await canvas(page).scrollIntoViewIfNeeded();
+  const box = await canvas(page).boundingBox();
+  await page.mouse.move(box.x + from[0], box.y + from[1]);
+  await page.mouse.down();
+  for (let k = 1; k <= steps; k++) await page.mouse.move(box.x + from[0] + (dx * k) / steps, box.y + from[1] + (dy * k) / steps);
+  await page.mouse.up();
+}
+
+test('opens on the recipe\'s fit with its numbers, ready to step', async () => {
+  const { values } = run([]);
+  const { page, errors, close } = await open('#/umeyama-2d');
+  try {
+    const r = await readouts(page);
+    assertFit(r, values, 'defaults');
+    assert.deepEqual([r['scale-true'], r['angle-true'], r['tx-true'], r['ty-true']], [1.3, 35, 0.4, -0.2]);
+    assert.equal((await pointsPx(page)).length, 12);
+    assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), false);
+    assert.equal(await page.locator(`[data-download="${POINTS}"]`).isVisible(), false);
+    assert.match(await page.locator('[data-testid="umeyama-2d-step"] h3').innerText(), /^The whole fit$/);
+    assert.equal(await page.locator('[data-cmd="bsv"]').innerText(), 'bsv umeyama-2d 0.02 3 12');
+    assert.equal(await page.locator('[data-cmd="python"]').innerText(), 'python umeyama_align_2d.py 0.02 3 12');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('dragging a point changes the readouts to the kernel\'s; the edited run exports its points', async () => {
+  const { page, errors, close } = await open('#/umeyama-2d');
+  try {
+    const before = await readouts(page);
+    const px = await pointsPx(page);
+    await drag(page, px[0], 60, -40);
+    await page.waitForFunction(() => /[?&]x=/.test(location.hash), null, { timeout: 3000 });
+    const q = await query(page);
+    assert.equal(q.x.split(';').length, 12);
+    const { values, files } = run(argsOf(q));
+    const r = await readouts(page);
+    assertFit(r, values, `after the drag: ${JSON.stringify(q)}`);
+    assert.notEqual(r.scale, before.scale);
+    assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), true);
+    assert.equal(await page.locator('[data-field="x"]').inputValue(), q.x);
+    // Both downloads are the CLI's with the options, and the command line carries them.
+    assertSameBytes(await download(page, CSV), files.get(CSV), 'csv after the drag');
+    assertSameBytes(await download(page, POINTS), files.get(POINTS), 'points after the drag');
+    const bsv = await page.locator('[data-cmd="bsv"]').innerText();
+    assert.equal(bsv, `bsv umeyama-2d 0.02 3 12 --x '${q.x}'`);
+    // The rotation handle turns the truth: angle and scale follow, the readouts too.
+    const h = await canvas(page).evaluate((c) => c.dataset.handleR.split(',').map(Number));
+    await drag(page, h, -50, -60);
+    await page.waitForFunction(() => /[?&]angle=/.test(location.hash), null, { timeout: 3000 });
+    const q2 = await query(page);
+    assert.notEqual(Number(q2.angle), 35);
+    assertFit(await readouts(page), run(argsOf(q2)).values, 'after the rotation handle');
+    // A slider: sigma 0.2 runs the kernel again.
+    await slide(page, 'sigma', 0.2);
+    assert.equal(await page.locator('[data-field="sigma"]').inputValue(), '0.2');
+    assertFit(await readouts(page), run(argsOf({ ...q2, sigma: '0.2' })).values, 'after the sigma slider');
+    // Back to the recipe: the edited notice goes, the download is the recipe's again.
+    await page.locator('[data-action="recipe"]').click();
+    assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), false);
+    assertFit(await readouts(page), run(['0.2']).values, 'the recipe again');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('the downloads equal bsv for the defaults and for a URL with other values', async () => {
+  const cases = [
+    ['#/umeyama-2d', [], 'bsv umeyama-2d 0.02 3 12', false],
+    ['#/umeyama-2d?sigma=0.1&seed=7&n=20', ['0.1', '7', '20'], 'bsv umeyama-2d 0.1 7 20', false],
+    ['#/umeyama-2d?sigma=0.05&seed=11&n=5&scale=0.7&angle=-120&tx=1&ty=2&mirror=yes',
+      ['0.05', '11', '5', '--scale', '0.7', '--angle', '-120', '--tx', '1', '--ty', '2', '--mirror', 'yes'],
+      'bsv umeyama-2d 0.05 11 5 --scale 0.7 --angle -120 --tx 1 --ty 2 --mirror yes', true],
+  ];
+  for (const [hash, args, line, edited] of cases) {
+    const { files, values } = run(args);
+    const { page, errors, close } = await open(hash);
+    try {
+      assertSameBytes(await download(page, CSV), files.get(CSV), hash);
+      if (edited) assertSameBytes(await download(page, POINTS), files.get(POINTS), `${hash} points`);
+      else assert.equal(files.has(POINTS), false);
+      assert.equal(await page.locator('[data-cmd="bsv"]').innerText(), line);
+      assertFit(await readouts(page), values, hash);
+      assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), edited);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
+test('bad values show their messages and the page keeps the last valid view', async () => {
+  const { files } = run([]);
+  const { page, errors, close } = await open('#/umeyama-2d');
+  try {
+    const view = await pixels(page);
+    const shown = await readouts(page);
+    for (const [field, bad, pattern] of [
+      ['sigma', '-1', /0 or more|at least 0|between/],
+      ['n', '1', /between 2 and 100,000/],
+      ['scale', '0', /more than 0|greater than zero|between/],
+      ['x', '1,2;3', /2 values/],
+      ['angle', 'abc', /not a number/],
+    ]) {
+      const input = page.locator(`[data-field="${field}"]`);
+      const message = page.locator(`[data-field-error="${field}"]`);
+      const was = await input.inputValue();
+      await input.fill(bad);
+      assert.equal(await message.isVisible(), true, `${field}=${bad}`);
+      assert.match(await message.innerText(), pattern, `${field}=${bad}`);
+      assert.equal(await input.getAttribute('aria-invalid'), 'true');
+      assert.equal(await pixels(page), view, `${field}=${bad}: the view is the last valid one`);
+      assert.deepEqual(await readouts(page), shown);
+      assertSameBytes(await download(page, CSV), files.get(CSV), `${field}=${bad}`);
+      await input.fill(was);
+      assert.equal(await message.isVisible(), false, `${field} restored`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('the stepper walks the fit; the mirror preset shows the reflection fix', async () => {
+  const { page, errors, close } = await open('#/umeyama-2d');
+  try {
+    await canvas(page).focus();
+    const titles = [];
+    const mats = [];
+    for (let k = 0; k < 8; k++) {
+      await page.keyboard.press('ArrowRight');
+      titles.push(await page.locator('[data-testid="umeyama-2d-step"] h3').innerText());
+      mats.push(await page.locator('[data-ume="step-mats"]').getAttribute('data-step'));
+    }
+    assert.deepEqual(mats, ['centroids', 'centred', 'covariance', 'svd', 'reflection', 'scale', 'translation', 'rmse']);
+    assert.match(titles[0], /^Centroids$/);
+    assert.match(titles[7], /^Residual error$/);
+    await page.waitForFunction(() => /step=8/.test(location.hash), null, { timeout: 3000 });
+    // The rmse step shows the CSV's rmse.
+    const rmse = await page.locator('[data-ume="step-mats"] td').first().getAttribute('data-value');
+    assert.equal(Number(rmse), run([]).values.rmse);
+    // Back to the reflection step: no fix needed for the recipe's data.
+    for (let k = 0; k < 3; k++) await page.keyboard.press('ArrowLeft');
+    assert.match(await page.locator('[data-ume="step-text"]').innerText(), /= \+1/);
+    // The mirror preset: det(UVᵀ) = −1, the fix shown, the recipe's quirk in the scale step.
+    await page.locator('[data-action="mirror"]').click();
+    assert.equal(await page.locator('[data-ume="step-mats"]').getAttribute('data-step'), 'reflection');
+    assert.match(await page.locator('[data-ume="step-text"]').innerText(), /= −1/);
+    assert.equal(Number(await page.locator('[data-ume="step-mats"] td').first().getAttribute('data-value')), -1);
+    await canvas(page).focus();
+    await page.keyboard.press('ArrowRight');
+    assert.match(await page.locator('[data-ume="step-text"]').innerText(), /Umeyama’s method would use S₁ − S₂/);
+    assertFit(await readouts(page), run(['0.02', '3', '12', '--mirror', 'yes']).values, 'mirrored');
+    // Keys in a field do not step.
+    await page.locator('[data-field="seed"]').focus();
+    await page.keyboard.press('ArrowRight');
+    assert.equal(await page.locator('[data-ume="step-mats"]').getAttribute('data-step'), 'scale');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('points are added by a click and removed with Delete, within 2 to 40', async () => {
+  const { page, errors, close } = await open('#/umeyama-2d?sigma=0&n=3');
+  try {
+    await canvas(page).scrollIntoViewIfNeeded();
+    const box = await canvas(page).boundingBox();
+    // A click on empty space (a corner of the view) adds a point there.
+    await page.mouse.click(box.x + 20, box.y + 20);
+    assert.equal((await pointsPx(page)).length, 4);
+    await page.waitForFunction(() => /n=4/.test(location.hash), null, { timeout: 3000 });
+    const q = await query(page);
+    assertFit(await readouts(page), run(argsOf(q)).values, 'after the click');
+    // Delete removes the selected (new) point; the last two cannot go.
+    await canvas(page).focus();
+    await page.keyboard.press('Delete');
+    await page.keyboard.press('Delete');
+    assert.equal((await pointsPx(page)).length, 2);
+    await page.keyboard.press('Delete');
+    assert.equal((await pointsPx(page)).length, 2);
+    const message = page.locator('[data-testid="umeyama-2d-message"]');
+    assert.equal(await message.isVisible(), true);
+    assert.match(await message.innerText(), /at least 2 points/);
+    // The button adds up to 40.
+    for (let k = 0; k < 38; k++) await page.locator('[data-action="add"]').click();
+    assert.equal((await pointsPx(page)).length, 40);
+    await page.locator('[data-action="add"]').click();
+    assert.match(await message.innerText(), /already 40 points/);
+    assertFit(await readouts(page), run(argsOf(await query(page))).values, '40 points');
+    // A new n draws the recipe's points again.
+    await page.locator('[data-field="n"]').fill('6');
+    await page.waitForFunction(() => !/[?&]x=/.test(location.hash) && /n=6/.test(location.hash), null, { timeout: 3000 });
+    assertFit(await readouts(page), run(['0', '3', '6']).values, 'n = 6');
+    assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), false);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('Japanese leaves no English UI text', async () => {
+  const english = englishStrings();
+  for (const hash of ['#/umeyama-2d?lang=ja&step=5&mirror=yes', '#/umeyama-2d?lang=ja&step=6']) {
+    const { page, errors, close } = await open(hash);
+    try {
+      await page.locator('[data-field="sigma"]').fill('abc');
+      await page.locator('[data-action="remove"]').click();
+      const text = await page.evaluate(() => document.body.innerText);
+      const left = english.filter((s) => text.includes(s));
+      assert.deepEqual(left, [], `${hash}: English left: ${left.join(' | ')}`);
+      assert.match(text, /Umeyama 法の位置合わせ/);
+      assert.ok(await page.locator('[data-field-error="sigma"]').isVisible());
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
+test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
+  const shots = [
+    ['umeyama-en-1920.png', '#/umeyama-2d', { viewport: { width: 1920, height: 1080 } }],
+    ['umeyama-ja-1920.png', '#/umeyama-2d?lang=ja&step=4', { viewport: { width: 1920, height: 1080 } }],
+    ['umeyama-mirror-en-1920.png', '#/umeyama-2d?mirror=yes&step=5', { viewport: { width: 1920, height: 1080 } }],
+    ['umeyama-projector-1920.png', '#/umeyama-2d?step=6', { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
+    ['umeyama-phone-390.png', '#/umeyama-2d?lang=ja&step=1', { viewport: { width: 390, height: 844 } }],
+  ];
+  for (const [file, hash, opts] of shots) {
+    const { page, errors, close } = await open(hash, opts);
+    try {
+      await page.waitForTimeout(300);
+      const width = await page.evaluate(() => document.documentElement.scrollWidth);
+      assert.ok(width <= opts.viewport.width, `${file}: page ${width} px wide`);
+      await page.screenshot({ path: join(OUT, file) });
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
