@@ -517,6 +517,8 @@ fn teleop_replay_refuses_bad_files_with_exit_2() {
     assert!(String::from_utf8_lossy(&out.stdout).contains("exit 1"));
     let out = bsv(&["--help"]);
     assert!(String::from_utf8_lossy(&out.stdout).contains("teleop-replay"));
+}
+
 #[test]
 fn umeyama_options_write_the_points_and_leave_the_recipe_alone() {
     let dir = temp_dir("umeyama-options");
