@@ -4,7 +4,7 @@
 //! and the planner's constants are the recipe's (the Python recipe has no options).
 //!
 //! A big tree's `rrt_nodes.csv` (up to 1,000,001 rows) is written in slices between tasks,
-//! each slice's rows made into a `Blob` and the file a `Blob` of those (no copy), with a
+//! each slice's rows made into a `Blob` of bytes and the file a `Blob` of those (no copy), with a
 //! progress line: no task near 100 ms whatever the tree.
 
 use std::cell::{Cell, RefCell};
@@ -34,14 +34,14 @@ struct NodesJob {
     slices: js_sys::Array,
 }
 
-/// A CSV `Blob` of `parts`: strings, or blobs when `of_blobs`.
+/// A CSV `Blob` of `parts`: bytes, or blobs when `of_blobs`.
 fn csv_blob(parts: &js_sys::Array, of_blobs: bool) -> Result<Blob, JsValue> {
     let options = BlobPropertyBag::new();
     options.set_type("text/csv");
     if of_blobs {
         Blob::new_with_blob_sequence_and_options(parts, &options)
     } else {
-        Blob::new_with_str_sequence_and_options(parts, &options)
+        Blob::new_with_u8_array_sequence_and_options(parts, &options)
     }
 }
 
@@ -146,15 +146,17 @@ impl Exports {
         let Some(j) = job.as_mut() else {
             return false;
         };
-        let pieces = js_sys::Array::new();
+        // The slice's rows as bytes (no JS strings for the garbage collector).
+        let mut text = String::new();
         while j.next < rows {
             let end = (j.next + ROWS_PER_PIECE).min(rows);
-            pieces.push(&JsValue::from_str(&nodes_csv_part(rrt, j.next..end)));
+            text.push_str(&nodes_csv_part(rrt, j.next..end));
             j.next = end;
             if now_ms() - started >= CSV_MS_PER_TASK {
                 break;
             }
         }
+        let pieces = js_sys::Array::of1(&js_sys::Uint8Array::from(text.as_bytes()));
         let file = "rrt_nodes.csv";
         let slice = match csv_blob(&pieces, false) {
             Ok(blob) => blob,
