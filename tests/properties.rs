@@ -559,6 +559,29 @@ mod rrt {
             prop_assert_eq!(rrt.last().copied(), last);
         }
 
+        /// A cursor over the run grown to its end reads, at any iteration it is moved to
+        /// (forwards, backwards, far or near), exactly a run stopped there.
+        #[test]
+        fn cursor_reads_the_run_stopped_there(setup in world(), stops in prop::collection::vec(0usize..1600, 1..6)) {
+            let end = stepped(&setup, false);
+            let mut cursor = end.cursor();
+            prop_assert_eq!(end.at(&cursor).nodes().len(), 1);
+            for k in stops.into_iter().chain([usize::MAX, 1, 0]) {
+                let reached = end.seek_cursor(&mut cursor, k);
+                prop_assert_eq!(reached, k.min(end.iterations()));
+                let mut fresh = Rrt::with_setup(&setup).unwrap();
+                fresh.seek(k);
+                let at = end.at(&cursor);
+                prop_assert_eq!(at.iterations(), fresh.iterations());
+                prop_assert_eq!(at.nodes(), fresh.nodes());
+                prop_assert_eq!(at.parents(), fresh.parents());
+                prop_assert_eq!(at.counts(), fresh.counts());
+                prop_assert_eq!(at.last(), fresh.last());
+                prop_assert_eq!(at.found(), fresh.found());
+                prop_assert_eq!(at.path(), fresh.path());
+            }
+        }
+
         /// Nodes 0, 1 and 2 ulps apart: their squared distances to the query differ but
         /// often round to the same distance under the recipe's `sqrt` (a tie): the quadtree
         /// keeps the first index among them, as the linear scan does.

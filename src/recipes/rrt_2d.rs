@@ -23,19 +23,24 @@
 //!
 //! The nearest-node search uses a bucket quadtree ([`NearestIndex`]) that returns exactly the
 //! recipe's node (numpy's `argmin`: the first index among equal distances, each distance
-//! computed as the recipe does), so a run of 1,000,000 iterations takes about a second.
+//! computed as the recipe does), so a run of 1,000,000 iterations takes under two seconds.
 //!
 //! [`Rrt`] is the stepping handle: one call of [`Rrt::step`] / [`Rrt::step_record`] = one
 //! loop iteration, with its sub-steps in an [`RrtIteration`]; [`Rrt::seek`] goes to the state
 //! after any iteration, backwards too (an RNG checkpoint every [`CHECKPOINT_EVERY`]
 //! iterations, then an exact replay of at most that many). The recipe run drives the same
-//! handle to the end, so a stepped tree equals the batch tree.
+//! handle to the end, so a stepped tree equals the batch tree. An [`RrtCursor`] reads a run
+//! as it stood at any earlier iteration without copying it (its tree is a prefix of the
+//! run's; the run logs each iteration's nearest node, so a replay needs no search).
 
 use super::{plan_of, CsvFile, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
 use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound};
 use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, Cell, CsvText};
 use crate::rng::{check_seed, NumpyRng};
+
+mod nearest_index;
+pub use nearest_index::NearestIndex;
 
 /// An axis-aligned obstacle box, closed on all sides.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -84,7 +89,7 @@ pub const DEFAULT_SEED: u64 = 7;
 /// The recipe's default iteration budget.
 pub const DEFAULT_MAX_ITER: usize = 800;
 /// Largest `max_iter` accepted. The nearest-node search is a quadtree (about log n per
-/// iteration): 1,000,000 iterations take about a second.
+/// iteration): 1,000,000 iterations take under two seconds, in wasm too.
 pub const MAX_ITER_LIMIT: usize = 1_000_000;
 /// Most `--obstacle` boxes in one world.
 pub const MAX_OBSTACLES: usize = 32;
@@ -504,6 +509,18 @@ pub struct RrtCounts {
     pub zero_length: usize,
 }
 
+impl RrtCounts {
+    /// Counts one iteration's outcome (the goal reached counts as an added node).
+    fn note(&mut self, outcome: RrtOutcome) {
+        match outcome {
+            RrtOutcome::Added { .. } | RrtOutcome::GoalReached { .. } => self.added += 1,
+            RrtOutcome::OutOfSquare => self.out_of_square += 1,
+            RrtOutcome::Collision => self.collision += 1,
+            RrtOutcome::ZeroLength => self.zero_length += 1,
+        }
+    }
+}
+
 #[derive(Debug, Clone)]
 struct Checkpoint {
     rng: NumpyRng,
@@ -534,6 +551,9 @@ pub struct Rrt {
     /// Search by [`nearest_linear`] instead of the index (the reference, for tests and the
     /// benchmark's "before").
     linear: bool,
+    /// The nearest node of each iteration (iteration `k` at `k - 1`): a [`RrtCursor`] replays
+    /// an iteration from it without a search.
+    nearest_log: Vec<u32>,
 }
 
 impl Rrt {
@@ -572,6 +592,7 @@ impl Rrt {
             last: None,
             goal_nearest: None,
             linear: false,
+            nearest_log: Vec::new(),
         })
     }
 
@@ -602,88 +623,51 @@ impl Rrt {
 
     fn iterate(&mut self) -> RrtIteration {
         self.iterations += 1;
-        let goal_sample = self.rng.random() < self.world.goal_bias;
-        let sample = if goal_sample {
-            self.goal
-        } else {
-            let x = self.rng.random();
-            let y = self.rng.random();
-            [x, y]
-        };
-        let nearest = if self.linear {
-            nearest_linear(&self.nodes, sample)
-        } else if goal_sample {
-            match self.goal_nearest {
-                Some((i, _)) => i,
-                None => {
-                    let i = self.index.nearest(sample);
-                    self.goal_nearest = Some((i, distance(self.nodes[i], self.goal)));
-                    i
+        let (index, nodes, goal, linear) = (&mut self.index, &self.nodes, self.goal, self.linear);
+        let goal_nearest = &mut self.goal_nearest;
+        let record = plan_iteration(
+            &self.world,
+            goal,
+            &mut self.rng,
+            self.iterations,
+            nodes,
+            |sample, goal_sample| {
+                if linear {
+                    nearest_linear(nodes, sample)
+                } else if goal_sample {
+                    match *goal_nearest {
+                        Some((i, _)) => i,
+                        None => {
+                            let i = index.nearest(sample);
+                            *goal_nearest = Some((i, distance(nodes[i], goal)));
+                            i
+                        }
+                    }
+                } else {
+                    index.nearest(sample)
                 }
-            }
-        } else {
-            self.index.nearest(sample)
-        };
-        let from = self.nodes[nearest];
-        let direction = [sample[0] - from[0], sample[1] - from[1]];
-        let distance = norm(direction);
-        let mut record = RrtIteration {
-            iteration: self.iterations,
-            sample,
-            goal_sample,
-            nearest,
-            from,
-            distance,
-            candidate: None,
-            checked: false,
-            hit: None,
-            to_goal: None,
-            goal_hit: None,
-            outcome: RrtOutcome::ZeroLength,
-        };
-        if distance < MIN_EXTENSION {
-            self.counts.zero_length += 1;
-            return record;
-        }
-        let reach = self.world.step.min(distance);
-        let point = [
-            from[0] + direction[0] / distance * reach,
-            from[1] + direction[1] / distance * reach,
-        ];
-        record.candidate = Some(point);
-        if !(0.0..=1.0).contains(&point[0]) || !(0.0..=1.0).contains(&point[1]) {
-            record.outcome = RrtOutcome::OutOfSquare;
-            self.counts.out_of_square += 1;
-            return record;
-        }
-        record.checked = true;
-        record.hit = first_hit(&self.world, from, point);
-        if record.hit.is_some() {
-            record.outcome = RrtOutcome::Collision;
-            self.counts.collision += 1;
-            return record;
-        }
-        let id = self.nodes.len();
-        self.nodes.push(point);
-        self.parents.push(Some(nearest));
-        self.index.insert(&self.nodes, id);
-        self.note_goal_distance(id);
-        self.counts.added += 1;
-        record.outcome = RrtOutcome::Added { id };
-        let to_goal = norm([point[0] - self.goal[0], point[1] - self.goal[1]]);
-        record.to_goal = Some(to_goal);
-        if to_goal < self.world.goal_tol {
-            let hit = first_hit(&self.world, point, self.goal);
-            record.goal_hit = Some(hit);
-            if hit.is_none() {
-                let goal_id = self.nodes.len();
-                self.nodes.push(self.goal);
-                self.parents.push(Some(id));
-                self.index.insert(&self.nodes, goal_id);
-                self.note_goal_distance(goal_id);
+            },
+        );
+        self.nearest_log.push(record.nearest as u32);
+        self.counts.note(record.outcome);
+        let added = match record.outcome {
+            RrtOutcome::Added { id } => [Some((id, record.nearest)), None],
+            RrtOutcome::GoalReached { id, goal_id } => {
                 self.found = Some(goal_id);
-                record.outcome = RrtOutcome::GoalReached { id, goal_id };
+                [Some((id, record.nearest)), Some((goal_id, id))]
             }
+            _ => [None, None],
+        };
+        for (id, parent) in added.into_iter().flatten() {
+            let point = if Some(id) == self.found {
+                self.goal
+            } else {
+                record.candidate.unwrap_or(record.sample)
+            };
+            self.nodes.push(point);
+            self.parents.push(Some(parent));
+            self.index.insert(&self.nodes, id);
+            self.note_goal_distance(id);
         }
         record
     }
@@ -717,6 +701,7 @@ impl Rrt {
             self.rng = cp.rng;
             self.counts = cp.counts;
             self.iterations = c * CHECKPOINT_EVERY;
+            self.nearest_log.truncate(self.iterations);
             self.found = None;
             self.last = None;
             self.goal_nearest = None;
@@ -769,17 +754,7 @@ impl Rrt {
 
     /// Start-to-goal waypoints, empty until the goal is reached.
     pub fn path(&self) -> Vec<[f64; 2]> {
-        let mut path = Vec::new();
-        let mut next = self.found;
-        while let Some(i) = next {
-            let (Some(point), Some(parent)) = (self.nodes.get(i), self.parents.get(i)) else {
-                break;
-            };
-            path.push(*point);
-            next = *parent;
-        }
-        path.reverse();
-        path
+        tree_path(&self.nodes, &self.parents, self.found)
     }
 
     /// Sum of the path's segment lengths, NaN when the goal was not reached.
@@ -808,6 +783,240 @@ impl Rrt {
     }
 }
 
+/// One iteration of the recipe's loop over the tree `nodes`, the nearest node of the sample
+/// given by `nearest(sample, goal_sample)`: its sub-steps and outcome (a node added gets the
+/// id `nodes.len()`, the goal the next). The tree is not changed: [`Rrt`] adds the nodes, a
+/// [`RrtCursor`] replays a run's iteration with the nearest node it logged.
+fn plan_iteration(
+    world: &RrtWorld,
+    goal: [f64; 2],
+    rng: &mut NumpyRng,
+    iteration: usize,
+    nodes: &[[f64; 2]],
+    nearest: impl FnOnce([f64; 2], bool) -> usize,
+) -> RrtIteration {
+    let goal_sample = rng.random() < world.goal_bias;
+    let sample = if goal_sample {
+        goal
+    } else {
+        let x = rng.random();
+        let y = rng.random();
+        [x, y]
+    };
+    let nearest = nearest(sample, goal_sample);
+    let from = nodes[nearest];
+    let direction = [sample[0] - from[0], sample[1] - from[1]];
+    let distance = norm(direction);
+    let mut record = RrtIteration {
+        iteration,
+        sample,
+        goal_sample,
+        nearest,
+        from,
+        distance,
+        candidate: None,
+        checked: false,
+        hit: None,
+        to_goal: None,
+        goal_hit: None,
+        outcome: RrtOutcome::ZeroLength,
+    };
+    if distance < MIN_EXTENSION {
+        return record;
+    }
+    let reach = world.step.min(distance);
+    let point = [
+        from[0] + direction[0] / distance * reach,
+        from[1] + direction[1] / distance * reach,
+    ];
+    record.candidate = Some(point);
+    if !(0.0..=1.0).contains(&point[0]) || !(0.0..=1.0).contains(&point[1]) {
+        record.outcome = RrtOutcome::OutOfSquare;
+        return record;
+    }
+    record.checked = true;
+    record.hit = first_hit(world, from, point);
+    if record.hit.is_some() {
+        record.outcome = RrtOutcome::Collision;
+        return record;
+    }
+    let id = nodes.len();
+    record.outcome = RrtOutcome::Added { id };
+    let to_goal = norm([point[0] - goal[0], point[1] - goal[1]]);
+    record.to_goal = Some(to_goal);
+    if to_goal < world.goal_tol {
+        let hit = first_hit(world, point, goal);
+        record.goal_hit = Some(hit);
+        if hit.is_none() {
+            record.outcome = RrtOutcome::GoalReached {
+                id,
+                goal_id: id + 1,
+            };
+        }
+    }
+    record
+}
+
+/// Where a run stood after some iteration, read from the run grown at least that far: the
+/// tree then is a prefix of the run's (nodes are only ever added), so a cursor holds only the
+/// counters, the RNG and the last iteration's record. [`Rrt::seek_cursor`] moves it in at
+/// most [`CHECKPOINT_EVERY`] replayed iterations, each without a search (the run logged its
+/// nearest nodes); [`Rrt::at`] reads the run as it stood there.
+#[derive(Debug, Clone)]
+pub struct RrtCursor {
+    rng: NumpyRng,
+    iterations: usize,
+    nodes: usize,
+    counts: RrtCounts,
+    last: Option<RrtIteration>,
+}
+
+impl Rrt {
+    /// A cursor at iteration 0 of this run (only the start).
+    pub fn cursor(&self) -> RrtCursor {
+        let mut cursor = RrtCursor {
+            rng: NumpyRng::new(0),
+            iterations: usize::MAX,
+            nodes: 1,
+            counts: RrtCounts::default(),
+            last: None,
+        };
+        self.seek_cursor(&mut cursor, 0);
+        cursor
+    }
+
+    /// Moves `cursor` (a cursor of this run) to the state after iteration `k`, at most the
+    /// iterations run so far: from the RNG checkpoint before `k` unless `k` lies a little
+    /// ahead, then replaying; returns the iteration reached.
+    pub fn seek_cursor(&self, cursor: &mut RrtCursor, k: usize) -> usize {
+        let k = k.min(self.iterations);
+        if k < cursor.iterations || k - cursor.iterations > CHECKPOINT_EVERY {
+            // Replay at least one iteration (k >= 1), so that `last` is iteration k's.
+            let c = k.saturating_sub(1) / CHECKPOINT_EVERY;
+            let Some(cp) = self.checkpoints.get(c) else {
+                return cursor.iterations;
+            };
+            *cursor = RrtCursor {
+                rng: cp.rng.clone(),
+                iterations: c * CHECKPOINT_EVERY,
+                nodes: cp.nodes,
+                counts: cp.counts,
+                last: None,
+            };
+        }
+        while cursor.iterations < k {
+            let iteration = cursor.iterations + 1;
+            let Some(&nearest) = self.nearest_log.get(iteration - 1) else {
+                break;
+            };
+            let Some(tree) = self.nodes.get(..cursor.nodes) else {
+                break;
+            };
+            let record = plan_iteration(
+                &self.world,
+                self.goal,
+                &mut cursor.rng,
+                iteration,
+                tree,
+                |_, _| nearest as usize,
+            );
+            cursor.iterations = iteration;
+            cursor.counts.note(record.outcome);
+            cursor.nodes += match record.outcome {
+                RrtOutcome::Added { .. } => 1,
+                RrtOutcome::GoalReached { .. } => 2,
+                _ => 0,
+            };
+            cursor.last = Some(record);
+        }
+        cursor.iterations
+    }
+
+    /// This run as it stood at `cursor`.
+    pub fn at<'a>(&'a self, cursor: &'a RrtCursor) -> RrtAt<'a> {
+        RrtAt { rrt: self, cursor }
+    }
+}
+
+/// A run as it stood at a cursor ([`Rrt::at`]): the same readers as [`Rrt`]'s.
+#[derive(Debug, Clone, Copy)]
+pub struct RrtAt<'a> {
+    rrt: &'a Rrt,
+    cursor: &'a RrtCursor,
+}
+
+impl<'a> RrtAt<'a> {
+    /// Tree nodes, the start first.
+    pub fn nodes(&self) -> &'a [[f64; 2]] {
+        let nodes = self.rrt.nodes();
+        &nodes[..self.cursor.nodes.min(nodes.len())]
+    }
+
+    /// Parent of each node.
+    pub fn parents(&self) -> &'a [Option<usize>] {
+        let parents = self.rrt.parents();
+        &parents[..self.cursor.nodes.min(parents.len())]
+    }
+
+    /// The sub-steps of the last iteration (`None` at iteration 0).
+    pub fn last(&self) -> Option<&'a RrtIteration> {
+        self.cursor.last.as_ref()
+    }
+
+    /// Iterations by outcome so far.
+    pub fn counts(&self) -> RrtCounts {
+        self.cursor.counts
+    }
+
+    /// Iterations run so far.
+    pub fn iterations(&self) -> usize {
+        self.cursor.iterations
+    }
+
+    /// Id of the goal node once reached (the run's last iteration reached it).
+    pub fn found(&self) -> Option<usize> {
+        match self.cursor.last.map(|r| r.outcome) {
+            Some(RrtOutcome::GoalReached { goal_id, .. }) => Some(goal_id),
+            _ => None,
+        }
+    }
+
+    /// Start-to-goal waypoints, empty until the goal is reached.
+    pub fn path(&self) -> Vec<[f64; 2]> {
+        tree_path(self.nodes(), self.parents(), self.found())
+    }
+
+    /// Sum of the path's segment lengths, NaN when the goal was not reached.
+    pub fn path_length(&self) -> f64 {
+        path_length(&self.path())
+    }
+
+    /// The run's world.
+    pub fn world(&self) -> &'a RrtWorld {
+        self.rrt.world()
+    }
+
+    /// The run's iteration budget.
+    pub fn max_iter(&self) -> usize {
+        self.rrt.max_iter()
+    }
+}
+
+/// The waypoints from the root to node `found` (empty for `None`).
+fn tree_path(nodes: &[[f64; 2]], parents: &[Option<usize>], found: Option<usize>) -> Vec<[f64; 2]> {
+    let mut path = Vec::new();
+    let mut next = found;
+    while let Some(i) = next {
+        let (Some(point), Some(parent)) = (nodes.get(i), parents.get(i)) else {
+            break;
+        };
+        path.push(*point);
+        next = *parent;
+    }
+    path.reverse();
+    path
+}
+
 /// `np.linalg.norm` of a 2-vector.
 fn norm(v: [f64; 2]) -> f64 {
     (v[0] * v[0] + v[1] * v[1]).sqrt()
@@ -830,177 +1039,6 @@ pub fn nearest_linear(nodes: &[[f64; 2]], q: [f64; 2]) -> usize {
         }
     }
     best.0
-}
-
-/// Points per quadtree leaf before it splits.
-const LEAF_CAPACITY: usize = 16;
-/// Deepest level (cells of 2^-24): beyond it a leaf just grows (coincident nodes).
-const MAX_DEPTH: u8 = 24;
-/// Slack on the pruning bound: a cell is skipped only when every point in it is farther than
-/// the best distance by more than any rounding of the recipe's distance (< 1e-15 in the unit
-/// square), so a tie with a smaller index is never skipped.
-const PRUNE_SLACK: f64 = 1e-9;
-
-/// A cell of the quadtree; its bounds are not stored but derived on the way down (the root
-/// is [0, 1]^2), so that a search touches less memory.
-#[derive(Debug, Clone, Default)]
-struct Quad {
-    /// Index of the first of 4 children (0 = a leaf).
-    children: u32,
-    /// A leaf's nodes: id and position (kept here so that a search reads one array).
-    items: Vec<(u32, [f64; 2])>,
-}
-
-/// A cell's bounds `[x0, y0, x1, y1]`.
-type Rect = [f64; 4];
-
-const ROOT: Rect = [0.0, 0.0, 1.0, 1.0];
-
-/// Which child (0..4) of cell `r` holds `p`, and that child's bounds.
-#[inline]
-fn child_of(r: &Rect, p: [f64; 2]) -> (u32, Rect) {
-    let (mx, my) = (0.5 * (r[0] + r[2]), 0.5 * (r[1] + r[3]));
-    let k = u32::from(p[0] >= mx) + 2 * u32::from(p[1] >= my);
-    (k, child_rect(r, k))
-}
-
-/// The bounds of child `k` of cell `r`.
-#[inline]
-fn child_rect(r: &Rect, k: u32) -> Rect {
-    let (mx, my) = (0.5 * (r[0] + r[2]), 0.5 * (r[1] + r[3]));
-    let (x0, x1) = if k & 1 == 0 { (r[0], mx) } else { (mx, r[2]) };
-    let (y0, y1) = if k & 2 == 0 { (r[1], my) } else { (my, r[3]) };
-    [x0, y0, x1, y1]
-}
-
-/// Distance from `q` to cell `r` (0 inside).
-#[inline]
-fn gap(r: &Rect, q: [f64; 2]) -> f64 {
-    let dx = (r[0] - q[0]).max(q[0] - r[2]).max(0.0);
-    let dy = (r[1] - q[1]).max(q[1] - r[3]).max(0.0);
-    (dx * dx + dy * dy).sqrt()
-}
-
-/// The nearest-node index of [`Rrt`]: a bucket quadtree over the unit square. Its
-/// [`NearestIndex::nearest`] is exactly [`nearest_linear`]: the same distances, the first
-/// index among equal ones, only without looking at cells that cannot hold the answer.
-#[derive(Debug, Clone)]
-pub struct NearestIndex {
-    quads: Vec<Quad>,
-    stack: Vec<(u32, f64, Rect)>,
-}
-
-impl Default for NearestIndex {
-    fn default() -> Self {
-        NearestIndex::new()
-    }
-}
-
-impl NearestIndex {
-    /// An empty index over [0, 1]^2 (points outside still work, in the border cells).
-    pub fn new() -> NearestIndex {
-        NearestIndex {
-            quads: vec![Quad::default()],
-            stack: Vec::new(),
-        }
-    }
-
-    /// An index of every node.
-    pub fn of(nodes: &[[f64; 2]]) -> NearestIndex {
-        let mut index = NearestIndex::new();
-        for id in 0..nodes.len() {
-            index.insert(nodes, id);
-        }
-        index
-    }
-
-    /// The leaf holding `p`, its bounds and depth.
-    fn leaf_of(&self, p: [f64; 2]) -> (usize, Rect, u8) {
-        let (mut q, mut r, mut depth) = (0, ROOT, 0);
-        while self.quads[q].children != 0 {
-            let (k, child) = child_of(&r, p);
-            q = (self.quads[q].children + k) as usize;
-            r = child;
-            depth += 1;
-        }
-        (q, r, depth)
-    }
-
-    /// Adds node `id` (at `nodes[id]`).
-    pub fn insert(&mut self, nodes: &[[f64; 2]], id: usize) {
-        let Some(&p) = nodes.get(id) else {
-            return;
-        };
-        let (leaf, r, depth) = self.leaf_of(p);
-        self.quads[leaf].items.push((id as u32, p));
-        if self.quads[leaf].items.len() > LEAF_CAPACITY && depth < MAX_DEPTH {
-            self.split(leaf, r, depth);
-        }
-    }
-
-    fn split(&mut self, leaf: usize, r: Rect, depth: u8) {
-        let first = self.quads.len() as u32;
-        self.quads.extend((0..4).map(|_| Quad::default()));
-        let items = std::mem::take(&mut self.quads[leaf].items);
-        self.quads[leaf].children = first;
-        for item in items {
-            let (k, _) = child_of(&r, item.1);
-            self.quads[(first + k) as usize].items.push(item);
-        }
-        for k in 0..4 {
-            let child = (first + k) as usize;
-            if self.quads[child].items.len() > LEAF_CAPACITY && depth + 1 < MAX_DEPTH {
-                self.split(child, child_rect(&r, k), depth + 1);
-            }
-        }
-    }
-
-    /// Removes every node from `len` on (`nodes` still holds them), as after
-    /// `nodes.truncate(len)`.
-    pub fn truncate(&mut self, nodes: &[[f64; 2]], len: usize) {
-        for id in (len..nodes.len()).rev() {
-            let (leaf, _, _) = self.leaf_of(nodes[id]);
-            self.quads[leaf].items.retain(|&(i, _)| (i as usize) < len);
-        }
-    }
-
-    /// The index of the node nearest to `q`: exactly [`nearest_linear`] (0 when empty).
-    pub fn nearest(&mut self, q: [f64; 2]) -> usize {
-        let mut best = (u32::MAX, f64::INFINITY);
-        let mut stack = std::mem::take(&mut self.stack);
-        stack.clear();
-        stack.push((0, gap(&ROOT, q), ROOT));
-        while let Some((qi, g, r)) = stack.pop() {
-            if g - PRUNE_SLACK > best.1 {
-                continue;
-            }
-            let quad = &self.quads[qi as usize];
-            if quad.children == 0 {
-                for &(id, p) in &quad.items {
-                    let d = distance(p, q);
-                    if d < best.1 || (d == best.1 && id < best.0) {
-                        best = (id, d);
-                    }
-                }
-                continue;
-            }
-            // The child nearest q first (pushed last), its two neighbours, the diagonal one.
-            let (own, _) = child_of(&r, q);
-            for k in [own ^ 3, own ^ 2, own ^ 1, own] {
-                let cr = child_rect(&r, k);
-                let cg = gap(&cr, q);
-                if cg - PRUNE_SLACK <= best.1 {
-                    stack.push((quad.children + k, cg, cr));
-                }
-            }
-        }
-        self.stack = stack;
-        if best.0 == u32::MAX {
-            0
-        } else {
-            best.0 as usize
-        }
-    }
 }
 
 /// The 12 points `a (1 - t) + b t`, `t = np.linspace(0, 1, 12)`.
@@ -1087,23 +1125,45 @@ pub fn warnings(rrt: &Rrt) -> Vec<RecipeWarning> {
     }
 }
 
-/// The two CSVs and the summary line of a finished run, exactly as the recipe writes them.
-pub fn output(rrt: &Rrt) -> RecipeOutput {
-    let mut nodes = CsvText::with_header(&["id", "x", "y", "parent"]);
-    for (i, (p, parent)) in rrt.nodes().iter().zip(rrt.parents()).enumerate() {
+/// Rows `rows` of `rrt_nodes.csv` (with the header when they start at node 0), exactly the
+/// bytes [`output`] writes there: the page writes a big tree's file in slices.
+pub fn nodes_csv_part(rrt: &Rrt, rows: std::ops::Range<usize>) -> String {
+    let mut csv = if rows.start == 0 {
+        CsvText::with_header(&["id", "x", "y", "parent"])
+    } else {
+        CsvText::default()
+    };
+    let end = rows.end.min(rrt.nodes().len());
+    let start = rows.start.min(end);
+    for (i, (p, parent)) in rrt.nodes()[start..end]
+        .iter()
+        .zip(&rrt.parents()[start..end])
+        .enumerate()
+    {
         let parent = parent.map_or(-1, |j| j as i64);
-        nodes.row(&[
-            Cell::Int(i as i64),
+        csv.row(&[
+            Cell::Int((start + i) as i64),
             Cell::Float(p[0]),
             Cell::Float(p[1]),
             Cell::Int(parent),
         ]);
     }
-    let path = rrt.path();
-    let mut path_csv = CsvText::with_header(&["x", "y"]);
-    for p in &path {
-        path_csv.floats(p);
+    csv.finish()
+}
+
+/// `rrt_path.csv` of the waypoints `path` ([`Rrt::path`]).
+pub fn path_csv(path: &[[f64; 2]]) -> String {
+    let mut csv = CsvText::with_header(&["x", "y"]);
+    for p in path {
+        csv.floats(p);
     }
+    csv.finish()
+}
+
+/// The two CSVs and the summary line of a finished run, exactly as the recipe writes them.
+pub fn output(rrt: &Rrt) -> RecipeOutput {
+    let nodes = nodes_csv_part(rrt, 0..rrt.nodes().len());
+    let path = rrt.path();
     let summary = format!(
         "RRT nodes={} path_pts={} length={} -> {PATH_CSV}, {NODES_CSV}",
         rrt.nodes().len(),
@@ -1114,11 +1174,11 @@ pub fn output(rrt: &Rrt) -> RecipeOutput {
         files: vec![
             CsvFile {
                 name: PATH_CSV.to_string(),
-                text: path_csv.finish(),
+                text: path_csv(&path),
             },
             CsvFile {
                 name: NODES_CSV.to_string(),
-                text: nodes.finish(),
+                text: nodes,
             },
         ],
         summary,
@@ -1379,6 +1439,18 @@ mod tests {
                 rrt.nodes().len()
             )
         );
+    }
+
+    #[test]
+    fn nodes_csv_in_parts_is_the_whole_file() {
+        let rrt = run(&RrtParams::default()).unwrap();
+        let whole = output(&rrt);
+        let n = rrt.nodes().len();
+        let parts: String = [0..1, 1..40, 40..41, 41..n + 5, n + 5..n + 9]
+            .into_iter()
+            .map(|rows| nodes_csv_part(&rrt, rows))
+            .collect();
+        assert_eq!(Some(parts.as_str()), whole.file("rrt_nodes.csv"));
     }
 
     #[test]

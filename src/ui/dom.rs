@@ -178,6 +178,7 @@ pub struct Listener {
     target: EventTarget,
     event: &'static str,
     closure: Closure<dyn FnMut(Event)>,
+    capture: bool,
 }
 
 impl Listener {
@@ -193,6 +194,34 @@ impl Listener {
             target: target.clone(),
             event,
             closure,
+            capture: false,
+        })
+    }
+
+    /// [`Listener::for_page`] in the capture phase: it runs before the listeners of the
+    /// elements inside `target`, and may keep the event from them (`stopPropagation`).
+    pub fn capture_for_page<P: 'static>(
+        target: &EventTarget,
+        event: &'static str,
+        page: &Weak<P>,
+        handler: impl Fn(&P, &Event) + 'static,
+    ) -> Result<Listener, JsValue> {
+        let page = page.clone();
+        let closure = Closure::<dyn FnMut(Event)>::new(move |e: Event| {
+            if let Some(page) = page.upgrade() {
+                handler(&page, &e);
+            }
+        });
+        target.add_event_listener_with_callback_and_bool(
+            event,
+            closure.as_ref().unchecked_ref(),
+            true,
+        )?;
+        Ok(Listener {
+            target: target.clone(),
+            event,
+            closure,
+            capture: true,
         })
     }
 
@@ -220,9 +249,11 @@ impl Listener {
 
 impl Drop for Listener {
     fn drop(&mut self) {
-        let _ = self
-            .target
-            .remove_event_listener_with_callback(self.event, self.closure.as_ref().unchecked_ref());
+        let _ = self.target.remove_event_listener_with_callback_and_bool(
+            self.event,
+            self.closure.as_ref().unchecked_ref(),
+            self.capture,
+        );
     }
 }
 

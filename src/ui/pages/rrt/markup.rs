@@ -70,6 +70,7 @@ pub fn page() -> String {
          <button type=\"button\" class=\"button primary\" data-download=\"rrt_nodes.csv\" data-i18n=\"rrt-download-nodes\"></button>\
          <button type=\"button\" class=\"button primary\" data-download=\"rrt_path.csv\" data-i18n=\"rrt-download-path\"></button>\
          <button type=\"button\" class=\"button\" data-download=\"rrt_2d.png\" data-i18n=\"rrt-download-png\"></button></div>\
+         <p class=\"rrt-note\" data-rrt=\"csv-progress\" data-testid=\"rrt-2d-csv-progress\" role=\"status\" hidden></p>\
          {commands}\
          <p class=\"rrt-note\" data-rrt=\"python-none\" data-i18n=\"rrt-python-none\" hidden></p>\
          </section></div>\

@@ -28,7 +28,7 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 use crate::error::RecipeError;
 use crate::i18n::FluentArg;
 use crate::pyfmt::fixed;
-use crate::recipes::rrt_2d::{Rrt, RrtOutcome, RrtSetup};
+use crate::recipes::rrt_2d::{Rrt, RrtAt, RrtCursor, RrtOutcome, RrtSetup};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
@@ -67,22 +67,23 @@ const LIVE_RESTART_MAX_ITER: usize = 20_000;
 /// Longest slice of the run to its end per main-thread task, ms (the page stays responsive:
 /// no task near 100 ms whatever `max_iter`).
 const FINISH_SLICE_MS: f64 = 20.0;
-/// A forward jump longer than this (iterations) starts from a copy of the run to its end
-/// (then at most [`crate::recipes::rrt_2d::CHECKPOINT_EVERY`] iterations replayed) instead
-/// of stepping there.
-const JUMP_BY_COPY: usize = 2048;
 /// Tree nodes drawn at a time, chunks drawn for up to [`TREE_MS_PER_TASK`] per task; a
 /// bigger tree is drawn over the next tasks.
-const TREE_NODES_PER_CHUNK: usize = 4_000;
+const TREE_NODES_PER_CHUNK: usize = 1_000;
 /// Time spent drawing tree chunks per task, ms.
-const TREE_MS_PER_TASK: f64 = 12.0;
+const TREE_MS_PER_TASK: f64 = 8.0;
+/// The first slice of the run to its end, in the mount's task, ms (a run of a few thousand
+/// iterations is complete in it).
+const MOUNT_SLICE_MS: f64 = 4.0;
 
-/// The run: the tree at the iteration shown, and the same run grown to its end in time
-/// slices between frames (its length and the exports).
+/// The run: grown to its end in time slices between frames (its length and the exports),
+/// and the iteration shown, a cursor into it (the tree shown is a prefix of the run's: no
+/// copy, End and any jump replay at most 64 iterations without a search).
 pub struct Run {
-    pub rrt: Rrt,
     /// The run to its end, as far as the slices have grown it.
     pub finished: Rrt,
+    /// The iteration shown.
+    pub cursor: RrtCursor,
     /// Changes whenever the tree shown shrinks or is another run's (the tree layer is then
     /// redrawn whole).
     pub generation: u64,
@@ -92,13 +93,18 @@ pub struct Run {
 
 impl Run {
     fn new(setup: &RrtSetup, generation: u64) -> Result<Run, RecipeError> {
-        let rrt = Rrt::with_setup(setup)?;
+        let finished = Rrt::with_setup(setup)?;
         Ok(Run {
-            finished: rrt.clone(),
-            rrt,
+            cursor: finished.cursor(),
+            finished,
             generation,
             advance_ms: 0.0,
         })
+    }
+
+    /// The run as it stood at the iteration shown.
+    pub fn shown(&self) -> RrtAt<'_> {
+        self.finished.at(&self.cursor)
     }
 
     /// Whether the run to its end is complete (its length known, the exports ready).
@@ -130,21 +136,11 @@ impl StepModel for Run {
     }
     fn go_to(&mut self, index: u64) {
         let started = now_ms();
-        let k = usize::try_from(index)
-            .unwrap_or(usize::MAX)
-            .min(self.finished.iterations());
-        let here = self.rrt.iterations();
-        if k < here {
+        let k = usize::try_from(index).unwrap_or(usize::MAX);
+        if k < self.shown().iterations() {
             self.generation += 1;
-            self.rrt.seek(k);
-        } else if k - here > JUMP_BY_COPY {
-            // The run to its end holds the same tree: copy it and go back to k.
-            self.rrt = self.finished.clone();
-            self.rrt.seek(k);
-            self.generation += 1;
-        } else {
-            self.rrt.seek(k);
         }
+        self.finished.seek_cursor(&mut self.cursor, k);
         self.advance_ms = now_ms() - started;
     }
 }
@@ -191,6 +187,8 @@ struct Inner {
     finisher: Rc<Timer>,
     /// Draws the rest of a big tree over the next tasks.
     tree_more: Rc<Timer>,
+    /// Writes the rest of a big tree's `rrt_nodes.csv` over the next tasks.
+    csv_more: Rc<Timer>,
     /// The URL's `it`, waiting for the run to its end to reach it.
     pending_it: Cell<Option<u64>>,
     /// "Running to the end: 12,345 of 1,000,000 iterations", while it is.
@@ -230,7 +228,9 @@ impl Page for RrtPage {
             let url = Some(UrlWriter::new(&mut scope, me, Inner::query));
             let finisher = scope.timer(me, Inner::finish_slice);
             let tree_more = scope.timer(me, |p: &Inner| p.draw_tree_now());
+            let csv_more = scope.timer(me, Inner::csv_slice);
             Inner {
+                csv_more,
                 finisher,
                 tree_more,
                 pending_it: Cell::new(None),
@@ -272,7 +272,7 @@ impl Page for RrtPage {
         if start_it > 0 {
             inner.pending_it.set(Some(start_it));
         }
-        inner.finish_slice();
+        inner.finish_slice_for(MOUNT_SLICE_MS);
         inner.update();
         Ok(RrtPage(inner))
     }
@@ -301,7 +301,7 @@ impl Inner {
         state.it = self
             .run
             .try_borrow()
-            .map_or(state.it, |r| r.rrt.iterations() as u64);
+            .map_or(state.it, |r| r.shown().iterations() as u64);
         state.write()
     }
 
@@ -327,6 +327,30 @@ impl Inner {
                 dom::find(&self.root, &format!("[data-action=\"{action}\"]"), "rrt")?;
             scope.listen_for(&button, "click", me, move |p, _| f(p))?;
         }
+        // In sub-step mode the step and back buttons walk the sub-steps, as the keys do:
+        // their clicks are taken on the way down, before the stepper's own listeners.
+        scope.keep(dom::Listener::capture_for_page(
+            &self.stepper_slot,
+            "click",
+            me,
+            |p, e| {
+                if !p.substep_mode.checked() {
+                    return;
+                }
+                let action = e
+                    .target()
+                    .and_then(|t| t.dyn_into::<Element>().ok())
+                    .and_then(|el| el.closest("[data-action]").ok().flatten())
+                    .and_then(|el| el.get_attribute("data-action"));
+                let forward = match action.as_deref() {
+                    Some("step") => true,
+                    Some("back") => false,
+                    _ => return,
+                };
+                e.stop_propagation();
+                p.substep(forward);
+            },
+        )?);
         scope.listen_for(&self.substep_mode, "change", me, |p, _| {
             p.phase.set(None);
             p.update();
@@ -336,10 +360,14 @@ impl Inner {
             (&self.exports.path, "rrt_path.csv"),
         ] {
             scope.listen_for(el, "click", me, move |p, _| {
-                let run = p.run.borrow();
-                if run.is_finished() {
-                    p.exports.download(&run, file);
+                let more = {
+                    let run = p.run.borrow();
+                    run.is_finished() && p.exports.download(&run, file)
+                };
+                if more {
+                    p.csv_more.schedule(0);
                 }
+                p.show_finishing();
             })?;
         }
         scope.listen_for(&self.exports.png, "click", me, |p, _| {
@@ -432,7 +460,8 @@ impl Inner {
         self.stepper.borrow().as_ref().is_some_and(|s| s.playing())
     }
 
-    /// Keys: in sub-step mode the step keys walk the sub-steps; the stepper's otherwise.
+    /// Keys: in sub-step mode the step keys walk the sub-steps (as the step buttons do); the
+    /// stepper's otherwise.
     fn on_key(&self, event: &KeyboardEvent) -> bool {
         if self.substep_mode.checked() && !keymap::has_command_modifier(event) {
             match event.key().as_str() {
@@ -456,7 +485,12 @@ impl Inner {
     /// One sub-step forward or back: within the iteration, else to the next iteration's first
     /// sub-step or the previous one's last.
     fn substep(&self, forward: bool) {
-        let count = self.run.borrow().rrt.last().map_or(0, |r| phases(r).len());
+        let count = self
+            .run
+            .borrow()
+            .shown()
+            .last()
+            .map_or(0, |r| phases(r).len());
         let last = count.saturating_sub(1);
         let at = self.phase.get().unwrap_or(last).min(last);
         self.substep_driving.set(true);
@@ -465,10 +499,10 @@ impl Inner {
                 self.phase.set(Some(at + 1));
                 self.update();
             } else {
-                let before = self.run.borrow().rrt.iterations();
+                let before = self.run.borrow().shown().iterations();
                 self.phase.set(Some(0));
                 self.command(Command::Step);
-                if self.run.borrow().rrt.iterations() == before {
+                if self.run.borrow().shown().iterations() == before {
                     self.phase.set(Some(at));
                 }
             }
@@ -488,8 +522,13 @@ impl Inner {
     /// length grows with it, the URL's `it` is gone to once reached; the next slice is
     /// scheduled as another task until the end.
     fn finish_slice(&self) {
+        self.finish_slice_for(FINISH_SLICE_MS);
+    }
+
+    /// [`Inner::finish_slice`] for about `budget_ms`.
+    fn finish_slice_for(&self, budget_ms: f64) {
         let done = match self.run.try_borrow_mut() {
-            Ok(mut run) => run.finish_for(FINISH_SLICE_MS),
+            Ok(mut run) => run.finish_for(budget_ms),
             Err(_) => false,
         };
         if let Some(s) = self.stepper.borrow().as_ref() {
@@ -508,6 +547,18 @@ impl Inner {
         } else {
             self.finisher.schedule(0);
         }
+    }
+
+    /// One slice of a big `rrt_nodes.csv` being written (the file offered at its end).
+    fn csv_slice(&self) {
+        let more = match self.run.try_borrow() {
+            Ok(run) => self.exports.write_slice(&run),
+            Err(_) => true,
+        };
+        if more {
+            self.csv_more.schedule(0);
+        }
+        self.show_finishing();
     }
 
     /// The progress of the run to its end, and the CSV downloads enabled once it is there.
@@ -536,8 +587,10 @@ impl Inner {
         let _ = self
             .finishing
             .set_attribute("data-state", if done { "done" } else { "running" });
+        let writing = self.exports.writing();
         for el in [&self.exports.nodes, &self.exports.path] {
-            let _ = if done {
+            let busy = writing && *el == self.exports.nodes;
+            let _ = if done && !busy {
                 el.remove_attribute("disabled")
             } else {
                 el.set_attribute("disabled", "")
@@ -591,6 +644,8 @@ impl Inner {
         *self.run_state.borrow_mut() = state.clone();
         self.phase.set(None);
         self.pending_it.set(None);
+        self.exports.cancel();
+        self.csv_more.cancel();
         self.exports.update(&state);
         self.exports.commands.clear_status();
         // Reset: the stepper goes to 0 and reads the new run's length (then grows with it).
@@ -769,7 +824,7 @@ impl Inner {
     /// The sub-step shown in sub-step mode.
     fn shown_phase(&self) -> Option<Phase> {
         let run = self.run.borrow();
-        let r = run.rrt.last()?;
+        let r = run.shown().last()?;
         let i = self.phase.get()?;
         phases(r).get(i).copied()
     }
@@ -785,9 +840,9 @@ impl Inner {
             return;
         };
         // Before its outcome (sub-step mode), the iteration's new nodes are not drawn yet.
-        let mut upto = run.rrt.nodes().len();
+        let mut upto = run.shown().nodes().len();
         if phase.is_some_and(|p| p != Phase::Outcome) {
-            upto -= match run.rrt.last().map(|r| r.outcome) {
+            upto -= match run.shown().last().map(|r| r.outcome) {
                 Some(RrtOutcome::Added { .. }) => 1,
                 Some(RrtOutcome::GoalReached { .. }) => 2,
                 _ => 0,
@@ -848,7 +903,7 @@ impl Inner {
         let Ok(run) = self.run.try_borrow() else {
             return;
         };
-        self.substeps.show(run.rrt.last(), phase);
+        self.substeps.show(run.shown().last(), phase);
         self.show_counters(&run);
         let work = run.advance_ms + now_ms() - started;
         drop(run);
@@ -865,7 +920,7 @@ impl Inner {
     }
 
     fn show_counters(&self, run: &Run) {
-        let rrt = &run.rrt;
+        let rrt = run.shown();
         let counts = rrt.counts();
         let path = rrt.path();
         let n = rrt.nodes().len();

@@ -186,9 +186,10 @@ impl WorldView {
     /// `true` once the tree is drawn to `upto`.
     pub fn draw_tree(&mut self, run: &Run, upto: usize, most: usize, ink: Ink) -> bool {
         let layer = self.canvas.layer(1);
-        let all = run.rrt.nodes();
+        let shown = run.shown();
+        let all = shown.nodes();
         let nodes = &all[..upto.min(all.len())];
-        let parents = run.rrt.parents();
+        let parents = shown.parents();
         if self.tree_generation != Some(run.generation) || nodes.len() < self.tree_drawn {
             layer.begin();
             self.tree_drawn = 0;
@@ -245,7 +246,7 @@ impl WorldView {
         let f = &self.frame;
         c.set_line_cap("round");
         c.set_line_join("round");
-        let path = run.rrt.path();
+        let path = run.shown().path();
         if path.len() > 1 {
             c.set_stroke_style_str(PATH);
             c.set_line_width(4.0 * ink.line);
@@ -289,7 +290,7 @@ impl WorldView {
             };
             ring(c, f.px(p), 11.0 * ink.line, MARK, 2.0 * ink.line);
         }
-        let Some(r) = run.rrt.last() else {
+        let Some(r) = run.shown().last() else {
             return;
         };
         self.draw_iteration(c, r, phase.unwrap_or(Phase::Outcome), ink);
