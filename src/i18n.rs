@@ -107,6 +107,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
     ),
     (Lang::En, "traj.ftl", include_str!("../locales/en/traj.ftl")),
     (
+        Lang::En,
+        "teleop.ftl",
+        include_str!("../locales/en/teleop.ftl"),
+    ),
+    (
         Lang::Ja,
         "shell.ftl",
         include_str!("../locales/ja/shell.ftl"),
@@ -141,6 +146,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/ja/signals.ftl"),
     ),
     (Lang::Ja, "traj.ftl", include_str!("../locales/ja/traj.ftl")),
+    (
+        Lang::Ja,
+        "teleop.ftl",
+        include_str!("../locales/ja/teleop.ftl"),
+    ),
 ];
 
 /// One argument of a message: text, or a number (numbers select plural variants such as

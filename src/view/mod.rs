@@ -20,6 +20,7 @@
 //!   [`pid_step`]: rise time, overshoot, settling, steady-state error and peak u;
 //!   [`trapezoid_profile`]: the phases of a profile, triangles, the ramp-corner drag.
 //! - [`traj_resample`]: the trajectory-resampling page: URL, readouts.
+//! - [`teleop`]: the Robot Pilot page: settings and their checks, readout texts, view transform.
 //! - [`teleop_input`]: the Robot Pilot page's input mapping (Isaac Lab keyboard and gamepad, clutch),
 //!   the fixed-step accumulator.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
@@ -42,6 +43,7 @@ pub mod rrt;
 pub mod signal;
 pub mod stepper;
 pub mod table;
+pub mod teleop;
 pub mod teleop_input;
 pub mod traj_resample;
 pub mod trapezoid_profile;

@@ -12,6 +12,7 @@ pub mod ik2r;
 pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
+pub mod teleop;
 pub mod traj_resample;
 pub mod trapezoid_profile;
 
@@ -28,6 +29,7 @@ pub const PAGES: &[PageDef] = &[
     cubic_path::PAGE,
     pid_step::PAGE,
     trapezoid_profile::PAGE,
+    teleop::PAGE,
     drills::PAGE,
 ];
 
