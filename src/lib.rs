@@ -3,6 +3,8 @@
 //!
 //! - [`recipes`]: one kernel per recipe, numbers in, tables out; no web-sys.
 //! - [`planar2r`]: planar two-link kinematics shared by the 2R recipes and the IK page.
+//! - [`teleop`]: the Robot Pilot practice simulation (planar 3R arm, gripper, block, differential
+//!   IK, latency, noise, episodes, exact replay); no web-sys.
 //! - [`rng`]: numpy-compatible `default_rng` (PCG64 + SeedSequence + ziggurat normal).
 //! - [`math`]: correctly rounded sin, cos, atan2 … : the same bits natively and in wasm.
 //! - [`numpy`]: `np.arange` and friends, operation for operation.
@@ -27,6 +29,7 @@ pub mod planar2r;
 pub mod pyfmt;
 pub mod recipes;
 pub mod rng;
+pub mod teleop;
 pub mod view;
 
 #[cfg(target_arch = "wasm32")]

@@ -1,0 +1,150 @@
+//! Per-episode figures: what the pilot's review and the repeatability comparison show.
+//!
+//! - `duration_s`: the last step's time; `path_m`: the tip's path length (sum of the straight
+//!   segments between successive steps, from the start pose).
+//! - `efficiency = ideal / path_m`, at most 1: the ideal path is the straight distance the task
+//!   needed for what was achieved — to the edge of each reached target in turn (reach), from
+//!   the start tip to the block if it was grasped, plus from the block's start to where it
+//!   rests if the episode succeeded (pick tasks). 0 when the tip did not move.
+//! - counts of events: collisions, joint-limit, speed-limit and singularity stops, grasps,
+//!   grasp misses, drops, targets reached; the smallest manipulability on the way (start
+//!   included).
+//! - Fitts (reach tasks, when a target was reached): per reached target `i`,
+//!   `ID_i = log2(D_i / W_i + 1)` with `D_i` the distance from the tip, when the previous
+//!   target was confirmed (or at the start), to target `i`'s centre and `W_i` its diameter;
+//!   `MT_i` the time from that moment until the tip entered target `i` for the hold that
+//!   confirmed it (so the `success_steps` dwell is not counted); `id_bits` is the mean `ID_i`
+//!   and `throughput_bits_per_s` the mean of `ID_i / MT_i` (ISO 9241-9's "mean of means").
+
+use serde::{Deserialize, Serialize};
+
+use super::arm::{fk, manipulability};
+use super::episode::Episode;
+use super::scene::Task;
+use super::sim::{Event, Outcome, Sim};
+
+/// Fitts' law figures of a reach episode.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Fitts {
+    /// Mean index of difficulty of the reached targets, bits.
+    pub id_bits: f64,
+    /// Mean of ID / movement time, bits/s.
+    pub throughput_bits_per_s: f64,
+    /// How many targets the means are over.
+    pub targets: usize,
+}
+
+/// The figures of one episode (see the module docs).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EpisodeMetrics {
+    pub duration_s: f64,
+    pub path_m: f64,
+    pub efficiency: f64,
+    pub collisions: u32,
+    pub joint_limit_stops: u32,
+    pub speed_limit_stops: u32,
+    pub singularity_stops: u32,
+    pub grasps: u32,
+    pub grasp_misses: u32,
+    pub drops: u32,
+    pub targets_reached: u32,
+    pub min_manipulability: f64,
+    pub fitts: Option<Fitts>,
+    /// The first failure event (grasp miss, drop, collision, timeout) and its step.
+    pub first_failure: Option<(u64, Event)>,
+    /// `None`: the episode was ended by the pilot or interrupted.
+    pub outcome: Option<Outcome>,
+}
+
+fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dz) = (a.0 - b.0, a.1 - b.1);
+    (dx * dx + dz * dz).sqrt()
+}
+
+/// The figures of `episode`, from its records (no re-simulation).
+pub fn metrics(episode: &Episode) -> EpisodeMetrics {
+    let config = &episode.config;
+    let arm = &config.arm;
+    let start_tip = fk(arm, &episode.start.q);
+    let mut m = EpisodeMetrics {
+        duration_s: episode.records.last().map_or(0.0, |r| r.t_s),
+        path_m: 0.0,
+        efficiency: 0.0,
+        collisions: 0,
+        joint_limit_stops: 0,
+        speed_limit_stops: 0,
+        singularity_stops: 0,
+        grasps: 0,
+        grasp_misses: 0,
+        drops: 0,
+        targets_reached: 0,
+        min_manipulability: manipulability(arm, &episode.start.q),
+        fitts: None,
+        first_failure: None,
+        outcome: episode.outcome(),
+    };
+    let mut prev = (start_tip.x, start_tip.z);
+    let mut ideal = 0.0;
+    // Reach: where and when the previous target was confirmed; Fitts per target.
+    let mut leg_start = (prev, 0.0);
+    let mut fitts: Vec<(f64, f64)> = Vec::new();
+    let dwell_s = f64::from(config.success_steps.saturating_sub(1)) * Sim::DT;
+    for r in &episode.records {
+        let tip = (r.x, r.z);
+        m.path_m += dist(prev, tip);
+        prev = tip;
+        m.min_manipulability = m.min_manipulability.min(r.manipulability);
+        for e in &r.events {
+            match e {
+                Event::Collision { .. } => m.collisions += 1,
+                Event::JointLimit { .. } => m.joint_limit_stops += 1,
+                Event::SpeedLimit { .. } => m.speed_limit_stops += 1,
+                Event::Singularity => m.singularity_stops += 1,
+                Event::Grasp => m.grasps += 1,
+                Event::GraspMiss => m.grasp_misses += 1,
+                Event::Drop => m.drops += 1,
+                Event::TargetReached { index } => {
+                    m.targets_reached += 1;
+                    if let Some(t) = config.task.targets().get(*index) {
+                        let d = dist(leg_start.0, (t.x, t.z));
+                        ideal += (d - t.radius).max(0.0);
+                        let id =
+                            crate::math::log(d / (2.0 * t.radius) + 1.0) / std::f64::consts::LN_2;
+                        let movement_s = r.t_s - dwell_s - leg_start.1;
+                        if movement_s > 0.0 {
+                            fitts.push((id, id / movement_s));
+                        }
+                    }
+                    leg_start = (tip, r.t_s);
+                }
+                _ => {}
+            }
+            if m.first_failure.is_none() && e.is_failure() {
+                m.first_failure = Some((r.step, *e));
+            }
+        }
+    }
+    if !matches!(config.task, Task::Reach { .. }) {
+        let block0 = (episode.start.block.x, episode.start.block.z);
+        if m.grasps > 0 {
+            ideal += dist((start_tip.x, start_tip.z), block0);
+        }
+        if m.outcome == Some(Outcome::Success) {
+            if let Some(last) = episode.records.last() {
+                ideal += dist(block0, (last.block_x, last.block_z));
+            }
+        }
+    }
+    if m.path_m > 0.0 {
+        m.efficiency = (ideal / m.path_m).min(1.0);
+    }
+    if !fitts.is_empty() {
+        let n = fitts.len() as f64;
+        m.fitts = Some(Fitts {
+            id_bits: fitts.iter().map(|f| f.0).sum::<f64>() / n,
+            throughput_bits_per_s: fitts.iter().map(|f| f.1).sum::<f64>() / n,
+            targets: fitts.len(),
+        });
+    }
+    m
+}

@@ -1,0 +1,753 @@
+//! One 10 ms step of the Robot Pilot scene, and the state it changes.
+//!
+//! A step, in order:
+//! 1. the operator's [`Command`] (axes clamped to [−1, 1], NaN → 0) enters the latency queue
+//!    and the command `latency_steps` steps old leaves it (the queue starts full of idle
+//!    commands with the start gripper state), so a command acts exactly
+//!    `latency_steps` steps after it was given;
+//! 2. with `noise_sigma > 0`, `sigma × N(0, 1)` is added to each of its three axes (three
+//!    draws per step, dx then dz then dphi, from `np.random.default_rng(noise_seed)`);
+//! 3. the task step `Δx = (dx v, dz v, dphi ω) × DT` (`v`, `ω`: the speeds of
+//!    [`SceneConfig::tip_speed_m_per_s`] and [`SceneConfig::turn_speed_rad_per_s`]) becomes a
+//!    joint step by the IK method ([`super::control`]);
+//! 4. joint speed limits scale the whole step down (its direction is kept) and
+//!    [`Event::SpeedLimit`] names the joint that limited it; joint position limits then clamp
+//!    each joint ([`Event::JointLimit`]);
+//! 5. if the new pose puts a link, a finger or the carried block into the table or an
+//!    obstacle, the arm does not move this step ([`Event::Collision`]): contact stops it, as a
+//!    real arm's safety stop would;
+//! 6. the gripper follows the command: closing with the block's centre within
+//!    `GRASP_TOLERANCE_M` of the tip and the fingers within `GRASP_ANGLE_TOLERANCE_RAD` of a
+//!    pair of faces grasps it ([`Event::Grasp`]), closing on nothing is [`Event::GraspMiss`];
+//!    opening lets go ([`Event::Release`], and [`Event::Drop`] when the block's centre is not
+//!    over the goal region and its bottom is more than `PLACE_HEIGHT_M` above the surface
+//!    under it: a block set down outside the goal is a goal miss, not a drop); a released block falls (g = 9.81 m/s², explicit Euler) onto the
+//!    table or an obstacle top and settles face down;
+//! 7. the task's goal condition is counted ([`SceneConfig::success_steps`] consecutive steps
+//!    → [`Event::TargetReached`] / [`Event::Success`]), then the time box
+//!    ([`Event::Timeout`]).
+//!
+//! Events of a condition that lasts (limits, collisions, singularity) are reported once, when
+//! the condition starts.
+
+use std::collections::VecDeque;
+
+use serde::{Deserialize, Serialize};
+
+use super::arm::{fk, jacobian, manipulability};
+use super::control::ik_step;
+use super::error::TeleopError;
+use super::scene::{
+    arm_capsules, first_contact, point_box_distance, Box2, Capsule, Layout, SceneConfig,
+    SceneGeometry, Segment, TargetStatus, TargetView, Task, BLOCK_HALF, CLOSED_HALF_WIDTH,
+    CONTACT_SLOP_M, GRASP_ANGLE_TOLERANCE_RAD, GRASP_TOLERANCE_M, OPEN_HALF_WIDTH, TABLE_Z,
+};
+use crate::rng::NumpyRng;
+
+/// Gravity for a released block, m/s².
+pub const GRAVITY: f64 = 9.81;
+/// A block let go with its bottom at most this high above the surface under it is set
+/// down, not dropped: outside the goal that is a goal miss (see [`super::proposed_label`]),
+/// not [`Event::Drop`], m.
+pub const PLACE_HEIGHT_M: f64 = 0.005;
+/// Below this manipulability, relative to `l1 l2` (|sin q2| < 0.1, q2 within 5.7° of
+/// stretched out or folded), a commanded motion reports [`Event::Singularity`].
+pub const SINGULAR_RATIO: f64 = 0.1;
+
+/// The operator's input for one 10 ms step: normalised device output, each axis in [−1, 1]
+/// (a held key is ±1, a stick its deflection after the dead zone), before sensitivity. The
+/// simulation turns it into motion: `dx × pos_sensitivity × POS_SPEED_PER_SENSITIVITY` m/s
+/// along x (so Isaac Lab's keyboard default 0.4 moves the tip at 0.1 m/s), the same for z,
+/// `dphi × rot_sensitivity × ROT_SPEED_PER_SENSITIVITY` rad/s for the gripper angle
+/// ([`super::scene`]). `gripper_closed` is the gripper's commanded state (K toggles it).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Command {
+    pub dx: f64,
+    pub dz: f64,
+    pub dphi: f64,
+    pub gripper_closed: bool,
+}
+
+impl Command {
+    /// No motion, gripper in the given state.
+    pub fn idle(gripper_closed: bool) -> Command {
+        Command {
+            dx: 0.0,
+            dz: 0.0,
+            dphi: 0.0,
+            gripper_closed,
+        }
+    }
+
+    /// Axes clamped to [−1, 1], NaN read as 0.
+    pub fn sanitized(&self) -> Command {
+        let axis = |v: f64| if v.is_nan() { 0.0 } else { v.clamp(-1.0, 1.0) };
+        Command {
+            dx: axis(self.dx),
+            dz: axis(self.dz),
+            dphi: axis(self.dphi),
+            gripper_closed: self.gripper_closed,
+        }
+    }
+
+    /// Whether any axis asks for motion.
+    pub fn moves(&self) -> bool {
+        self.dx != 0.0 || self.dz != 0.0 || self.dphi != 0.0
+    }
+}
+
+/// Where the block sits in the gripper while held: its centre in the gripper's frame
+/// (along, across the gripper axis) and its angle relative to the gripper.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct GraspFrame {
+    pub along: f64,
+    pub across: f64,
+    pub angle: f64,
+}
+
+/// The block: its centre, angle, and whether it is held, falling or at rest.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Block {
+    pub x: f64,
+    pub z: f64,
+    /// Angle of its faces from the axes, rad (0 at rest).
+    pub angle: f64,
+    /// Vertical speed while falling, m/s.
+    pub vz: f64,
+    pub held: bool,
+    /// At rest on the table or an obstacle.
+    pub resting: bool,
+    /// Where it sits in the gripper (while held).
+    pub grasp: Option<GraspFrame>,
+}
+
+/// How an episode ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Outcome {
+    Success,
+    Timeout,
+}
+
+impl Outcome {
+    /// `success`, `timeout`.
+    pub fn id(self) -> &'static str {
+        match self {
+            Outcome::Success => "success",
+            Outcome::Timeout => "timeout",
+        }
+    }
+}
+
+/// Something the step detected. Links and joints count from 1; link 4 in a collision is the
+/// carried block; target indices count from 0 (as [`State::target_index`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Event {
+    Grasp,
+    GraspMiss,
+    Release,
+    Drop,
+    Collision { link: u8 },
+    JointLimit { joint: u8 },
+    SpeedLimit { joint: u8 },
+    Singularity,
+    TargetReached { index: usize },
+    Success,
+    Timeout,
+}
+
+impl Event {
+    /// `grasp`, `grasp-miss`, `release`, `drop`, `collision`, `joint-limit`, `speed-limit`,
+    /// `singularity`, `target-reached`, `success`, `timeout`.
+    pub fn id(&self) -> &'static str {
+        match self {
+            Event::Grasp => "grasp",
+            Event::GraspMiss => "grasp-miss",
+            Event::Release => "release",
+            Event::Drop => "drop",
+            Event::Collision { .. } => "collision",
+            Event::JointLimit { .. } => "joint-limit",
+            Event::SpeedLimit { .. } => "speed-limit",
+            Event::Singularity => "singularity",
+            Event::TargetReached { .. } => "target-reached",
+            Event::Success => "success",
+            Event::Timeout => "timeout",
+        }
+    }
+
+    /// The link, joint or target index the event names, if any.
+    pub fn arg(&self) -> Option<usize> {
+        match self {
+            Event::Collision { link } => Some(usize::from(*link)),
+            Event::JointLimit { joint } | Event::SpeedLimit { joint } => Some(usize::from(*joint)),
+            Event::TargetReached { index } => Some(*index),
+            _ => None,
+        }
+    }
+
+    /// The event as the episode CSV writes it: the id, then `:` and the argument if any
+    /// (`collision:2`, `target-reached:0`).
+    pub fn text(&self) -> String {
+        match self.arg() {
+            Some(arg) => format!("{}:{arg}", self.id()),
+            None => self.id().to_string(),
+        }
+    }
+
+    /// Reads [`Self::text`] back.
+    pub fn from_text(text: &str) -> Option<Event> {
+        let (id, arg) = match text.split_once(':') {
+            Some((id, arg)) => (id, Some(arg.parse::<usize>().ok()?)),
+            None => (text, None),
+        };
+        let small = |a: usize| u8::try_from(a).ok();
+        Some(match (id, arg) {
+            ("grasp", None) => Event::Grasp,
+            ("grasp-miss", None) => Event::GraspMiss,
+            ("release", None) => Event::Release,
+            ("drop", None) => Event::Drop,
+            ("collision", Some(a)) => Event::Collision { link: small(a)? },
+            ("joint-limit", Some(a)) => Event::JointLimit { joint: small(a)? },
+            ("speed-limit", Some(a)) => Event::SpeedLimit { joint: small(a)? },
+            ("singularity", None) => Event::Singularity,
+            ("target-reached", Some(index)) => Event::TargetReached { index },
+            ("success", None) => Event::Success,
+            ("timeout", None) => Event::Timeout,
+            _ => return None,
+        })
+    }
+
+    /// Whether the event is a failure the pilot should review (grasp miss, drop, collision,
+    /// timeout).
+    pub fn is_failure(&self) -> bool {
+        matches!(
+            self,
+            Event::GraspMiss | Event::Drop | Event::Collision { .. } | Event::Timeout
+        )
+    }
+}
+
+/// The whole state of the scene between steps. Two states compare equal exactly when the
+/// scene is the same bit for bit (the page's reset check compares against
+/// [`Sim::start_state`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct State {
+    /// Time since the episode started, s (`step / 100`).
+    pub t_s: f64,
+    /// Steps taken.
+    pub step: u64,
+    /// Joint angles, rad.
+    pub q: [f64; 3],
+    pub gripper_closed: bool,
+    pub block: Block,
+    /// The reach target to reach now (= the number reached).
+    pub target_index: usize,
+    /// Consecutive steps the goal condition has held.
+    pub success_count: u32,
+    /// Set when the episode ended; later steps change nothing.
+    pub done: Option<Outcome>,
+    /// Commands given but not yet applied (length `latency_steps`).
+    pub pending: VecDeque<Command>,
+    /// Which links (1–3, and 4 = carried block) were stopped by contact on the last step.
+    pub contact: [bool; 4],
+    /// Which joints sat at a position limit after the last step.
+    pub at_limit: [bool; 3],
+    /// Whether the last step was cut by a joint speed limit.
+    pub speed_limited: bool,
+    /// Whether the last step was commanded near a singularity.
+    pub singular: bool,
+    /// Whether the block has been grasped at least once this episode.
+    pub ever_grasped: bool,
+}
+
+/// What one step did: the operator's command, the command the arm got (after latency and
+/// noise), the resulting pose and gripper, and the events.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StepRecord {
+    /// The step's number, from 1.
+    pub step: u64,
+    pub t_s: f64,
+    /// The operator's command (sanitized).
+    pub cmd: Command,
+    /// The command applied this step (after latency and noise).
+    pub applied: Command,
+    pub q: [f64; 3],
+    pub x: f64,
+    pub z: f64,
+    pub phi: f64,
+    pub gripper_closed: bool,
+    pub held: bool,
+    pub block_x: f64,
+    pub block_z: f64,
+    /// [`super::manipulability`] at `q`.
+    pub manipulability: f64,
+    pub events: Vec<Event>,
+}
+
+/// The simulation: a validated config, the start state and the current state.
+#[derive(Debug, Clone)]
+pub struct Sim {
+    config: SceneConfig,
+    layout: Layout,
+    start: State,
+    state: State,
+    rng: NumpyRng,
+}
+
+impl Sim {
+    /// The fixed step, s (100 Hz).
+    pub const DT: f64 = 0.01;
+    /// Steps per second.
+    pub const RATE_HZ: u32 = 100;
+
+    /// A simulation at the start state of `config` (validated first).
+    pub fn new(config: SceneConfig) -> Result<Sim, TeleopError> {
+        config.validate()?;
+        let layout = Layout::of(&config.task);
+        let start = start_state(&config, &layout);
+        let rng = NumpyRng::new(config.noise_seed);
+        Ok(Sim {
+            state: start.clone(),
+            start,
+            rng,
+            layout,
+            config,
+        })
+    }
+
+    /// The config.
+    pub fn config(&self) -> &SceneConfig {
+        &self.config
+    }
+
+    /// Where the block, goal and obstacles are.
+    pub fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    /// The state every episode starts from.
+    pub fn start_state(&self) -> &State {
+        &self.start
+    }
+
+    /// The current state.
+    pub fn state(&self) -> &State {
+        &self.state
+    }
+
+    /// Back to the start state, bit for bit (the noise generator restarts too).
+    pub fn reset(&mut self) {
+        self.state = self.start.clone();
+        self.rng = NumpyRng::new(self.config.noise_seed);
+    }
+
+    /// Whether the episode has ended.
+    pub fn done(&self) -> Option<Outcome> {
+        self.state.done
+    }
+
+    /// The record of the current state without stepping (no events): what the page shows
+    /// before the first step.
+    pub fn snapshot(&self) -> StepRecord {
+        self.record(
+            Command::idle(self.state.gripper_closed),
+            Command::idle(self.state.gripper_closed),
+            Vec::new(),
+        )
+    }
+
+    fn record(&self, cmd: Command, applied: Command, events: Vec<Event>) -> StepRecord {
+        let s = &self.state;
+        let pose = fk(&self.config.arm, &s.q);
+        StepRecord {
+            step: s.step,
+            t_s: s.t_s,
+            cmd,
+            applied,
+            q: s.q,
+            x: pose.x,
+            z: pose.z,
+            phi: pose.phi,
+            gripper_closed: s.gripper_closed,
+            held: s.block.held,
+            block_x: s.block.x,
+            block_z: s.block.z,
+            manipulability: manipulability(&self.config.arm, &s.q),
+            events,
+        }
+    }
+
+    /// Advances one 10 ms step (see the module docs). After the episode ended, nothing
+    /// changes and the record has no events.
+    pub fn step(&mut self, cmd: &Command) -> StepRecord {
+        let cmd = cmd.sanitized();
+        if self.state.done.is_some() {
+            return self.record(cmd, Command::idle(self.state.gripper_closed), Vec::new());
+        }
+        let mut events = Vec::new();
+
+        // 1. Latency.
+        let mut applied = if self.config.latency_steps == 0 {
+            cmd
+        } else {
+            self.state.pending.push_back(cmd);
+            self.state
+                .pending
+                .pop_front()
+                .unwrap_or(Command::idle(self.state.gripper_closed))
+        };
+        // 2. Noise.
+        let sigma = self.config.noise_sigma;
+        if sigma > 0.0 {
+            applied.dx += sigma * self.rng.standard_normal();
+            applied.dz += sigma * self.rng.standard_normal();
+            applied.dphi += sigma * self.rng.standard_normal();
+        }
+
+        self.move_arm(&applied, &mut events);
+        self.operate_gripper(applied.gripper_closed, &mut events);
+        self.move_block();
+
+        self.state.step += 1;
+        self.state.t_s = self.state.step as f64 / f64::from(Sim::RATE_HZ);
+        self.check_goal(&mut events);
+        if self.state.done.is_none() && self.state.t_s >= self.config.time_box_s {
+            self.state.done = Some(Outcome::Timeout);
+            events.push(Event::Timeout);
+        }
+        self.record(cmd, applied, events)
+    }
+
+    /// Steps 3–5: IK, speed and position limits, contact.
+    fn move_arm(&mut self, applied: &Command, events: &mut Vec<Event>) {
+        let arm = self.config.arm;
+        let q = self.state.q;
+        let v = self.config.tip_speed_m_per_s() * Sim::DT;
+        let w = self.config.turn_speed_rad_per_s() * Sim::DT;
+        let dx = [applied.dx * v, applied.dz * v, applied.dphi * w];
+        let commanded = dx.iter().any(|d| *d != 0.0);
+
+        let singular_now =
+            commanded && manipulability(&arm, &q) < SINGULAR_RATIO * arm.links[0] * arm.links[1];
+        let solved = if commanded {
+            ik_step(&self.config.control, &jacobian(&arm, &q), &dx)
+        } else {
+            Some([0.0; 3])
+        };
+        let singular_now = singular_now || solved.is_none();
+        if singular_now && !self.state.singular {
+            events.push(Event::Singularity);
+        }
+        self.state.singular = singular_now;
+        let mut dq = solved.unwrap_or([0.0; 3]);
+
+        // Speed limits: scale the whole step.
+        let mut worst = (1.0, 0usize);
+        for (i, d) in dq.iter().enumerate() {
+            let ratio = d.abs() / (arm.qd_max[i] * Sim::DT);
+            if ratio > worst.0 {
+                worst = (ratio, i);
+            }
+        }
+        let speed_limited = worst.0 > 1.0;
+        if speed_limited {
+            for d in dq.iter_mut() {
+                *d /= worst.0;
+            }
+            if !self.state.speed_limited {
+                events.push(Event::SpeedLimit {
+                    joint: worst.1 as u8 + 1,
+                });
+            }
+        }
+        self.state.speed_limited = speed_limited;
+
+        // Position limits: clamp each joint.
+        let mut q_new = [0.0; 3];
+        for i in 0..3 {
+            let target = q[i] + dq[i];
+            let clamped = target.clamp(arm.q_min[i], arm.q_max[i]);
+            let at_limit = clamped != target;
+            if at_limit && !self.state.at_limit[i] {
+                events.push(Event::JointLimit { joint: i as u8 + 1 });
+            }
+            self.state.at_limit[i] = at_limit;
+            q_new[i] = clamped;
+        }
+
+        // Contact: a move into the table or an obstacle does not happen.
+        let mut contact = [false; 4];
+        if q_new != q {
+            let capsules = arm_capsules(&arm, &q_new, self.finger_half_width());
+            if let Some(link) = first_contact(&capsules, &self.layout.obstacles) {
+                contact[usize::from(link) - 1] = true;
+            } else if self.state.block.held && self.held_block_contact(&q_new) {
+                contact[3] = true;
+            }
+        }
+        for (i, now) in contact.iter().enumerate() {
+            if *now && !self.state.contact[i] {
+                events.push(Event::Collision { link: i as u8 + 1 });
+            }
+        }
+        self.state.contact = contact;
+        if !contact.iter().any(|c| *c) {
+            self.state.q = q_new;
+        }
+    }
+
+    /// Whether the block, carried at pose `q`, would press into the table or an obstacle
+    /// (the block counts as the circle inside it).
+    fn held_block_contact(&self, q: &[f64; 3]) -> bool {
+        let Some(grasp) = self.state.block.grasp else {
+            return false;
+        };
+        let (x, z, _) = carried(&fk(&self.config.arm, q), &grasp);
+        z - BLOCK_HALF < TABLE_Z - CONTACT_SLOP_M
+            || self
+                .layout
+                .obstacles
+                .iter()
+                .any(|b| point_box_distance(x, z, b) < BLOCK_HALF - CONTACT_SLOP_M)
+    }
+
+    fn finger_half_width(&self) -> f64 {
+        if !self.state.gripper_closed {
+            OPEN_HALF_WIDTH
+        } else if self.state.block.held {
+            BLOCK_HALF
+        } else {
+            CLOSED_HALF_WIDTH
+        }
+    }
+
+    /// Step 6: grasp, miss, release, drop.
+    fn operate_gripper(&mut self, close: bool, events: &mut Vec<Event>) {
+        if close == self.state.gripper_closed {
+            return;
+        }
+        self.state.gripper_closed = close;
+        let tip = fk(&self.config.arm, &self.state.q);
+        let block = &mut self.state.block;
+        if close {
+            let (dx, dz) = (block.x - tip.x, block.z - tip.z);
+            let near = (dx * dx + dz * dz).sqrt() <= GRASP_TOLERANCE_M;
+            let misalign = face_misalignment(tip.phi - block.angle);
+            if near && misalign <= GRASP_ANGLE_TOLERANCE_RAD && !block.held {
+                let (s, c) = crate::math::sincos(tip.phi);
+                block.grasp = Some(GraspFrame {
+                    along: dx * c + dz * s,
+                    across: -dx * s + dz * c,
+                    angle: block.angle - tip.phi,
+                });
+                block.held = true;
+                block.resting = false;
+                block.vz = 0.0;
+                self.state.ever_grasped = true;
+                events.push(Event::Grasp);
+            } else {
+                events.push(Event::GraspMiss);
+            }
+        } else if block.held {
+            block.held = false;
+            block.grasp = None;
+            block.vz = 0.0;
+            block.angle = 0.0;
+            events.push(Event::Release);
+            let over_goal = self
+                .layout
+                .goal
+                .is_some_and(|g| block.x >= g.x0 && block.x <= g.x1);
+            let bottom = block.z - BLOCK_HALF;
+            let set_down =
+                bottom - support_below(block.x, bottom, &self.layout.obstacles) <= PLACE_HEIGHT_M;
+            if !over_goal && !set_down {
+                events.push(Event::Drop);
+            }
+        }
+    }
+
+    /// The block follows the gripper, falls, or rests.
+    fn move_block(&mut self) {
+        let tip = fk(&self.config.arm, &self.state.q);
+        let block = &mut self.state.block;
+        if let Some(grasp) = block.grasp.filter(|_| block.held) {
+            let (x, z, angle) = carried(&tip, &grasp);
+            block.x = x;
+            block.z = z;
+            block.angle = angle;
+            return;
+        }
+        if block.resting {
+            return;
+        }
+        let support = support_below(block.x, block.z - BLOCK_HALF, &self.layout.obstacles);
+        block.vz -= GRAVITY * Sim::DT;
+        block.z += block.vz * Sim::DT;
+        if block.z - BLOCK_HALF <= support {
+            block.z = support + BLOCK_HALF;
+            block.vz = 0.0;
+            block.resting = true;
+        }
+    }
+
+    /// Step 7: goal condition, targets, success.
+    fn check_goal(&mut self, events: &mut Vec<Event>) {
+        let tip = fk(&self.config.arm, &self.state.q);
+        let s = &mut self.state;
+        let holds = match &self.config.task {
+            Task::Reach { targets } => targets.get(s.target_index).is_some_and(|t| {
+                let (dx, dz) = (tip.x - t.x, tip.z - t.z);
+                (dx * dx + dz * dz).sqrt() <= t.radius
+            }),
+            Task::PickPlace | Task::PickPlaceObstacle => {
+                let b = &s.block;
+                let on_table = b.z == TABLE_Z + BLOCK_HALF;
+                !b.held
+                    && b.resting
+                    && on_table
+                    && self.layout.goal.is_some_and(|g| b.x >= g.x0 && b.x <= g.x1)
+            }
+        };
+        s.success_count = if holds { s.success_count + 1 } else { 0 };
+        if s.success_count < self.config.success_steps {
+            return;
+        }
+        s.success_count = 0;
+        if let Task::Reach { targets } = &self.config.task {
+            events.push(Event::TargetReached {
+                index: s.target_index,
+            });
+            s.target_index += 1;
+            if s.target_index < targets.len() {
+                return;
+            }
+        }
+        s.done = Some(Outcome::Success);
+        events.push(Event::Success);
+    }
+
+    /// What the page draws for the current state.
+    pub fn geometry(&self) -> SceneGeometry {
+        geometry(&self.config, &self.layout, &self.state)
+    }
+}
+
+/// The state `config` starts from.
+fn start_state(config: &SceneConfig, layout: &Layout) -> State {
+    let (x, z) = layout.block_start;
+    State {
+        t_s: 0.0,
+        step: 0,
+        q: config.start_q,
+        gripper_closed: false,
+        block: Block {
+            x,
+            z,
+            angle: 0.0,
+            vz: 0.0,
+            held: false,
+            resting: true,
+            grasp: None,
+        },
+        target_index: 0,
+        success_count: 0,
+        done: None,
+        pending: (0..config.latency_steps)
+            .map(|_| Command::idle(false))
+            .collect(),
+        contact: [false; 4],
+        at_limit: [false; 3],
+        speed_limited: false,
+        singular: false,
+        ever_grasped: false,
+    }
+}
+
+/// The carried block's centre and angle for a tip pose.
+fn carried(tip: &super::arm::Pose2, grasp: &GraspFrame) -> (f64, f64, f64) {
+    let (s, c) = crate::math::sincos(tip.phi);
+    (
+        tip.x + grasp.along * c - grasp.across * s,
+        tip.z + grasp.along * s + grasp.across * c,
+        tip.phi + grasp.angle,
+    )
+}
+
+/// How far `angle` is from the nearest multiple of π/2 (a square's faces), rad.
+fn face_misalignment(angle: f64) -> f64 {
+    use std::f64::consts::FRAC_PI_2;
+    let r = angle.rem_euclid(FRAC_PI_2);
+    r.min(FRAC_PI_2 - r)
+}
+
+/// The highest surface under a block centred at `x` whose bottom is at `bottom`: the table or
+/// the top of an obstacle the block overlaps in x and is above.
+fn support_below(x: f64, bottom: f64, obstacles: &[Box2]) -> f64 {
+    obstacles
+        .iter()
+        .filter(|b| x + BLOCK_HALF > b.x0 && x - BLOCK_HALF < b.x1 && b.z1 <= bottom + 1e-12)
+        .map(|b| b.z1)
+        .fold(TABLE_Z, f64::max)
+}
+
+fn geometry(config: &SceneConfig, layout: &Layout, state: &State) -> SceneGeometry {
+    let arm = &config.arm;
+    let half_width = if !state.gripper_closed {
+        OPEN_HALF_WIDTH
+    } else if state.block.held {
+        BLOCK_HALF
+    } else {
+        CLOSED_HALF_WIDTH
+    };
+    let caps: [Capsule; 5] = arm_capsules(arm, &state.q, half_width);
+    let b = &state.block;
+    let (s, c) = crate::math::sincos(b.angle);
+    let corner = |u: f64, v: f64| {
+        (
+            b.x + (u * c - v * s) * BLOCK_HALF,
+            b.z + (u * s + v * c) * BLOCK_HALF,
+        )
+    };
+    let reach: f64 = arm.links.iter().sum();
+    let targets = config
+        .task
+        .targets()
+        .iter()
+        .enumerate()
+        .map(|(i, t)| TargetView {
+            target: *t,
+            status: match i.cmp(&state.target_index) {
+                std::cmp::Ordering::Less => TargetStatus::Done,
+                std::cmp::Ordering::Equal => TargetStatus::Current,
+                std::cmp::Ordering::Greater => TargetStatus::Pending,
+            },
+        })
+        .collect();
+    SceneGeometry {
+        links: [caps[0], caps[1], caps[2]],
+        fingers: [caps[3], caps[4]],
+        tip: fk(arm, &state.q),
+        table: Segment {
+            x0: -reach - 0.02,
+            z0: TABLE_Z,
+            x1: reach + 0.02,
+            z1: TABLE_Z,
+        },
+        block: [
+            corner(-1.0, -1.0),
+            corner(1.0, -1.0),
+            corner(1.0, 1.0),
+            corner(-1.0, 1.0),
+        ],
+        block_held: b.held,
+        goal: layout.goal,
+        obstacles: layout.obstacles.clone(),
+        targets,
+        bounds: Box2 {
+            x0: -reach - 0.02,
+            z0: TABLE_Z - 0.02,
+            x1: reach + 0.02,
+            z1: reach + 0.02,
+        },
+    }
+}
