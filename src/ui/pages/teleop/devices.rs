@@ -98,7 +98,10 @@ fn first_pad() -> Option<PadSnapshot> {
     let f = get(&navigator, "getGamepads");
     let f: &js_sys::Function = wasm_bindgen::JsCast::dyn_ref(&f)?;
     let pads = f.call0(&navigator).ok()?;
-    let len = get(&pads, "length").as_f64().unwrap_or(0.0).clamp(0.0, 16.0) as u32;
+    let len = get(&pads, "length")
+        .as_f64()
+        .unwrap_or(0.0)
+        .clamp(0.0, 16.0) as u32;
     for i in 0..len {
         let pad = js_sys::Reflect::get_u32(&pads, i).ok()?;
         if pad.is_null() || pad.is_undefined() {

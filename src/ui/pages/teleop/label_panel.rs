@@ -107,11 +107,7 @@ impl LabelPanel {
         if label == Label::Success {
             self.category = None;
         } else if self.category.is_none() {
-            self.category = Some(
-                self.proposed
-                    .1
-                    .unwrap_or(FailureCategory::OperatorAbort),
-            );
+            self.category = Some(self.proposed.1.unwrap_or(FailureCategory::OperatorAbort));
         }
         self.render();
     }

@@ -34,8 +34,8 @@ use wasm_bindgen::JsCast;
 use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, PointerEvent};
 
 use crate::teleop::session::{
-    category_from_id, episode_file_name, label_from_id, EpisodeEntry, InputDevice, Module,
-    Session, SessionError, EPISODES_NAME, EVIDENCE_NAME, RECORD_TARGET,
+    category_from_id, episode_file_name, label_from_id, EpisodeEntry, InputDevice, Module, Session,
+    SessionError, EPISODES_NAME, EVIDENCE_NAME, RECORD_TARGET,
 };
 use crate::teleop::{Command, Episode, Event, Sim, StepRecord};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
@@ -125,7 +125,8 @@ struct Live {
 
 impl Live {
     fn new(settings: Settings) -> Result<Live, JsValue> {
-        let sim = Sim::new(settings.config.clone()).map_err(|e| JsValue::from_str(&e.to_string()))?;
+        let sim =
+            Sim::new(settings.config.clone()).map_err(|e| JsValue::from_str(&e.to_string()))?;
         Ok(Live {
             sim,
             settings,
@@ -232,7 +233,8 @@ impl Page for TeleopPage {
         dom::relocalize(&root)?;
         let stored = dom::storage_get(STORE_KEY).and_then(|t| Session::from_json(&t));
         let restored = stored.is_some();
-        let session = stored.unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
+        let session =
+            stored.unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
         let first = dom::storage_get(FIRST_KEY).and_then(|t| Session::from_json(&t));
         let mut texts = SettingsTexts::defaults(session.input_device);
         texts.pilot = session.pilot_id.clone();
@@ -316,7 +318,10 @@ impl Page for TeleopPage {
         inner.install()?;
         inner.view.borrow_mut().fit();
         if restored {
-            inner.els.restored.set_text_content(Some(&ctx::t("teleop-restored")));
+            inner
+                .els
+                .restored
+                .set_text_content(Some(&ctx::t("teleop-restored")));
             dom::show(&inner.els.restored, true);
             let unlabelled = inner.session.borrow().unlabelled();
             if let Some(n) = unlabelled {
@@ -396,7 +401,8 @@ impl Inner {
         let canvas = self.els.canvas.clone();
         scope.listen_for(&canvas, "keydown", me, |p, e| {
             if let Some(k) = e.dyn_ref::<KeyboardEvent>() {
-                if crate::ui::kit::keymap::has_command_modifier(k) || crate::ui::overlay::is_open() {
+                if crate::ui::kit::keymap::has_command_modifier(k) || crate::ui::overlay::is_open()
+                {
                     return;
                 }
                 if p.key_down(k) {
@@ -411,7 +417,9 @@ impl Inner {
                 p.devices.borrow_mut().keys.release(&k.code());
             }
         })?;
-        scope.listen_for(&window, "blur", me, |p, _| p.devices.borrow_mut().keys.clear())?;
+        scope.listen_for(&window, "blur", me, |p, _| {
+            p.devices.borrow_mut().keys.clear()
+        })?;
         scope.listen_for(&window, "pagehide", me, |p, _| p.save())?;
         scope.listen_for(&canvas, "pointerdown", me, |p, e| p.pointer_down(e))?;
         scope.listen_for(&canvas, "pointermove", me, |p, e| p.pointer_move(e))?;
@@ -576,7 +584,8 @@ impl Inner {
             if live.engaged && !live.ended {
                 let gripper = devices.gripper_closed;
                 let axes = devices.axes(live.tip());
-                let any = axes.iter().any(|v| *v != 0.0) || gripper != live.sim.state().gripper_closed;
+                let any =
+                    axes.iter().any(|v| *v != 0.0) || gripper != live.sim.state().gripper_closed;
                 if !live.started && any {
                     live.started = true;
                     live.acc.clear();
@@ -595,11 +604,18 @@ impl Inner {
                         for ev in &rec.events {
                             match ev {
                                 Event::JointLimit { joint } => {
-                                    live.stop =
-                                        Some((t_ms + STOP_NOTICE_MS, "teleop-stop-limit", joint.to_string()))
+                                    live.stop = Some((
+                                        t_ms + STOP_NOTICE_MS,
+                                        "teleop-stop-limit",
+                                        joint.to_string(),
+                                    ))
                                 }
                                 Event::Singularity => {
-                                    live.stop = Some((t_ms + STOP_NOTICE_MS, "teleop-stop-singular", String::new()))
+                                    live.stop = Some((
+                                        t_ms + STOP_NOTICE_MS,
+                                        "teleop-stop-singular",
+                                        String::new(),
+                                    ))
                                 }
                                 _ => {}
                             }
@@ -619,7 +635,8 @@ impl Inner {
                         InputDevice::Pointer => devices.clutch.is_some(),
                     };
                     if used {
-                        let start = crate::teleop::fk(&live.sim.config().arm, &live.sim.start_state().q);
+                        let start =
+                            crate::teleop::fk(&live.sim.config().arm, &live.sim.start_state().q);
                         let tip = live.tip();
                         moved_by_device = (tip.0 - start.x).hypot(tip.1 - start.z) > MOVED_M;
                     }
@@ -670,7 +687,9 @@ impl Inner {
         r.set("manipulability", &format!("{m:.5}"));
         r.set("time", &format!("{:.2}", state.t_s));
         let stop_text = match &live.stop {
-            Some((until, id, arg)) if *until > t_ms => ctx::t_strings(id, &[("joint", arg.clone())]),
+            Some((until, id, arg)) if *until > t_ms => {
+                ctx::t_strings(id, &[("joint", arg.clone())])
+            }
             _ => String::new(),
         };
         if self.els.stop.text_content().unwrap_or_default() != stop_text {
@@ -772,7 +791,10 @@ impl Inner {
         let text = match outcome {
             Some(crate::teleop::Outcome::Success) => ctx::t_strings(
                 "teleop-ended-success",
-                &[("t", format!("{:.2}", episode.records.last().map_or(0.0, |r| r.t_s)))],
+                &[(
+                    "t",
+                    format!("{:.2}", episode.records.last().map_or(0.0, |r| r.t_s)),
+                )],
             ),
             Some(crate::teleop::Outcome::Timeout) => ctx::t("teleop-ended-timeout"),
             None => ctx::t("teleop-ended-pilot"),
@@ -902,7 +924,11 @@ impl Inner {
             }
             let _ = el.set_attribute(
                 "aria-disabled",
-                if self.module_allowed(*m) { "false" } else { "true" },
+                if self.module_allowed(*m) {
+                    "false"
+                } else {
+                    "true"
+                },
             );
         }
         let next = current.next();
@@ -948,7 +974,11 @@ impl Inner {
         for (d, el) in &self.els.devices {
             let _ = el.set_attribute(
                 "aria-checked",
-                if *d == s.input_device { "true" } else { "false" },
+                if *d == s.input_device {
+                    "true"
+                } else {
+                    "false"
+                },
             );
         }
         drop(s);
@@ -959,7 +989,11 @@ impl Inner {
         for (m, el) in &self.els.modules {
             let _ = el.set_attribute(
                 "aria-disabled",
-                if self.module_allowed(*m) { "false" } else { "true" },
+                if self.module_allowed(*m) {
+                    "false"
+                } else {
+                    "true"
+                },
             );
         }
         let current = self.session.borrow().module;
@@ -1056,7 +1090,11 @@ impl Inner {
         let Ok(Some(button)) = target.closest("button") else {
             return;
         };
-        let num = |attr: &str| button.get_attribute(attr).and_then(|v| v.parse::<usize>().ok());
+        let num = |attr: &str| {
+            button
+                .get_attribute(attr)
+                .and_then(|v| v.parse::<usize>().ok())
+        };
         if let Some(n) = num("data-replay") {
             if self.session.borrow().module != Module::FailureReview {
                 self.enter_module(Module::FailureReview);
@@ -1145,7 +1183,11 @@ impl Inner {
     }
 
     fn files_read(&self, files: &[(String, String)], unreadable: Option<String>) {
-        let _ = js_sys::Reflect::set(&self.els.open, &JsValue::from_str("value"), &JsValue::from_str(""));
+        let _ = js_sys::Reflect::set(
+            &self.els.open,
+            &JsValue::from_str("value"),
+            &JsValue::from_str(""),
+        );
         if let Some(name) = unreadable {
             self.show_open_error(ctx::t_strings("teleop-open-unreadable", &[("name", name)]));
             return;
@@ -1180,7 +1222,12 @@ impl Inner {
     fn second_session(&self) {
         let (pilot, device, preflight, has) = {
             let s = self.session.borrow();
-            (s.pilot_id.clone(), s.input_device, s.preflight, !s.episodes.is_empty())
+            (
+                s.pilot_id.clone(),
+                s.input_device,
+                s.preflight,
+                !s.episodes.is_empty(),
+            )
         };
         if !has {
             self.show_status("teleop-second-nothing");
@@ -1219,7 +1266,12 @@ impl Inner {
     // ---- Review ----
 
     fn start_replay(&self, n: usize) {
-        let entry: Option<EpisodeEntry> = self.session.borrow().episodes.get(n.wrapping_sub(1)).cloned();
+        let entry: Option<EpisodeEntry> = self
+            .session
+            .borrow()
+            .episodes
+            .get(n.wrapping_sub(1))
+            .cloned();
         let Some(entry) = entry else {
             return;
         };
@@ -1291,7 +1343,8 @@ impl Inner {
             self.readouts.set("q1", &radians(r.q[0]));
             self.readouts.set("q2", &radians(r.q[1]));
             self.readouts.set("q3", &radians(r.q[2]));
-            self.readouts.set("manipulability", &format!("{:.5}", r.manipulability));
+            self.readouts
+                .set("manipulability", &format!("{:.5}", r.manipulability));
             self.readouts.set("time", &format!("{:.2}", r.t_s));
         }
         let events: Vec<String> = replay
@@ -1396,7 +1449,9 @@ impl Inner {
         }
         let sum = s.summary();
         let first = self.first.borrow().as_ref().map(Session::summary);
-        if let Err(e) = episode_table::render_comparison(&self.els.compare_body, first.as_ref(), &sum) {
+        if let Err(e) =
+            episode_table::render_comparison(&self.els.compare_body, first.as_ref(), &sum)
+        {
             web_sys::console::warn_1(&e);
         }
         let line = ctx::t_strings(
@@ -1410,7 +1465,8 @@ impl Inner {
         );
         self.els.session_line.set_text_content(Some(&line));
         for name in [EPISODES_NAME, EVIDENCE_NAME] {
-            if let Ok(b) = find::<Element>(&self.root, &format!("button[data-download=\"{name}\"]")) {
+            if let Ok(b) = find::<Element>(&self.root, &format!("button[data-download=\"{name}\"]"))
+            {
                 b.set_text_content(Some(&ctx::t_strings(
                     "teleop-download-file",
                     &[("file", name.to_string())],
@@ -1500,6 +1556,5 @@ fn open_error_text(e: &SessionError) -> String {
         SessionError::Replay { file } => {
             ctx::t_strings("teleop-open-replay", &[("name", file.clone())])
         }
-        _ => e.to_string(),
     }
 }

@@ -104,7 +104,8 @@ impl Timeline {
     pub fn fit(&mut self) {
         let dpr = web_sys::window().map_or(1.0, |w| w.device_pixel_ratio());
         let r = self.layer.canvas.get_bounding_client_rect();
-        self.layer.resize(r.width().max(1.0), r.height().max(1.0), dpr);
+        self.layer
+            .resize(r.width().max(1.0), r.height().max(1.0), dpr);
     }
 
     /// Draws the events of `replay` and its position; writes `data-first-failure`.
