@@ -51,7 +51,7 @@ test('the shell renders in English with the home page, navigation and disclaimer
     // Only pages that exist are in the navigation: home, the IK page, the pendulum, trajectory
     // resampling, the RRT stepper, the three signal pages and all drills.
     const navIds = await page.locator('[data-testid="site-nav"] a').evaluateAll((as) => as.map((a) => a.dataset.page));
-    assert.deepEqual(navIds, ['home', 'ik-2r', 'pendulum-energy', 'traj-resample', 'rrt-2d', 'cubic-path', 'pid-step', 'trapezoid-profile', 'drills']);
+    assert.deepEqual(navIds, ['home', 'ik-2r', 'pendulum-energy', 'traj-resample', 'rrt-2d', 'cubic-path', 'pid-step', 'trapezoid-profile', 'teleop', 'drills']);
     assert.equal(await page.locator('[data-testid="nav-home"]').getAttribute('aria-current'), 'page');
     // Twelve recipe cards, each with both command lines and a link to its drill; the IK ones
     // also link to the IK page.
