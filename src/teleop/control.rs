@@ -5,7 +5,8 @@
 //! ```text
 //! dls           Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ Δx           λ = lambda (Isaac Lab's "lambda_val", 0.01)
 //! pinv          Δq = k J⁺ Δx = k Jᵀ (J Jᵀ)⁻¹ Δx      k = pinv_gain (Isaac Lab's "k_val", 1.0)
-//! trans         Δq = k Jᵀ Δx                          k = trans_gain (see below)
+//! trans         Δq = k α Jᵀ Δx                        k = trans_gain (Isaac Lab's "k_val", 1.0)
+//!               α = ⟨Δx, J Jᵀ Δx⟩ / |J Jᵀ Δx|²
 //! adaptive-dls  Δq = Jᵀ (J Jᵀ + λ(σ)² I)⁻¹ Δx
 //!               λ(σ)² = λmin²                                   σ_min ≥ σ_thresh
 //!               λ(σ)² = λmin² + (1 − (σ_min / σ_thresh)²) λmax²  σ_min < σ_thresh
@@ -16,10 +17,14 @@
 //! bound near a singularity, which is what the page lets a class see; at an exactly singular J
 //! (a zero pivot) it returns `None` and the arm does not move.
 //!
-//! Isaac Lab's transpose default `k_val = 1.0` suits its metre-sized arms; `Jᵀ` has units of
-//! metres here (links of about 0.1 m), so `k` has units 1/m² and the default
-//! [`ControlParams::DEFAULT`] `trans_gain = 25` (≈ 1 / (0.2 m)²) makes a tip step roughly the
-//! commanded size near the start pose.
+//! The transpose's step size α is Buss's choice ("Introduction to inverse kinematics with
+//! Jacobian transpose, pseudoinverse and damped least squares methods", 2004, eq. 7): the
+//! step along `Jᵀ Δx` whose task-space image `J Jᵀ Δx` comes closest to `Δx`. Isaac Lab's
+//! plain `k Jᵀ Δx` has no α; with our task vector mixing metres (links of about 0.1 m, so
+//! `J Jᵀ` ≈ 0.04 m² for position) and radians (≈ 3 for the angle row), a fixed k either
+//! barely moves the tip or makes the angle overshoot many times over. With α the transpose
+//! moves at the commanded size along the best transpose direction, and still shows its
+//! weakness: the direction is not the commanded one.
 //!
 //! The 3×3 solves use Gaussian elimination with partial pivoting and `σ_min` comes from cyclic
 //! Jacobi rotations of `J Jᵀ` (a fixed number of sweeps): arithmetic and `sqrt` only, so the
@@ -81,7 +86,7 @@ pub struct ControlParams {
     pub lambda: f64,
     /// `pinv` scale k (Isaac Lab's `k_val`, default 1.0).
     pub pinv_gain: f64,
-    /// `trans` gain k, 1/m² (default 25, see the module docs).
+    /// `trans` scale k on top of Buss's α (Isaac Lab's `k_val`, default 1.0).
     pub trans_gain: f64,
     /// `adaptive-dls` smallest damping λmin (default 0.01).
     pub lambda_min: f64,
@@ -97,7 +102,7 @@ impl ControlParams {
         method: IkMethod::Dls,
         lambda: 0.01,
         pinv_gain: 1.0,
-        trans_gain: 25.0,
+        trans_gain: 1.0,
         lambda_min: 0.01,
         lambda_max: 0.1,
         sigma_threshold: 0.02,
@@ -127,10 +132,26 @@ pub fn ik_step(params: &ControlParams, j: &Mat3, dx: &[f64; 3]) -> Option<[f64; 
     let dq = match params.method {
         IkMethod::Dls => damped(j, dx, params.lambda * params.lambda)?,
         IkMethod::Pinv => scale(damped(j, dx, 0.0)?, params.pinv_gain),
-        IkMethod::Trans => scale(mul_t(j, dx), params.trans_gain),
+        IkMethod::Trans => scale(transpose_step(j, dx), params.trans_gain),
         IkMethod::AdaptiveDls => damped(j, dx, adaptive_damping_sq(params, j))?,
     };
     dq.iter().all(|v| v.is_finite()).then_some(dq)
+}
+
+/// `α Jᵀ dx` with Buss's α (zero when `J Jᵀ dx` is zero).
+fn transpose_step(j: &Mat3, dx: &[f64; 3]) -> [f64; 3] {
+    let jt_dx = mul_t(j, dx);
+    let mut j_jt_dx = [0.0; 3];
+    for (row, out) in j_jt_dx.iter_mut().enumerate() {
+        *out = j[row][0] * jt_dx[0] + j[row][1] * jt_dx[1] + j[row][2] * jt_dx[2];
+    }
+    let num = dx[0] * j_jt_dx[0] + dx[1] * j_jt_dx[1] + dx[2] * j_jt_dx[2];
+    let den = j_jt_dx[0] * j_jt_dx[0] + j_jt_dx[1] * j_jt_dx[1] + j_jt_dx[2] * j_jt_dx[2];
+    if den > 0.0 {
+        scale(jt_dx, num / den)
+    } else {
+        [0.0; 3]
+    }
 }
 
 /// `λ(σ)²` of `adaptive-dls` for Jacobian `j`.
@@ -248,4 +269,139 @@ pub fn sigma_min(j: &Mat3) -> f64 {
     }
     let smallest = a[0][0].min(a[1][1]).min(a[2][2]);
     smallest.max(0.0).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    use super::*;
+    use crate::teleop::arm::{jacobian, ArmParams};
+    use nalgebra::{Matrix3, Vector3};
+
+    fn norm(v: &[f64; 3]) -> f64 {
+        (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+    }
+
+    /// `Jᵀ (J Jᵀ + λ² I)⁻¹ dx` with nalgebra's own product and LU inverse.
+    fn dls_by_nalgebra(j: &Mat3, dx: &[f64; 3], lambda: f64) -> [f64; 3] {
+        let jm = Matrix3::from_fn(|r, c| j[r][c]);
+        let inner = jm * jm.transpose() + Matrix3::identity() * (lambda * lambda);
+        let dq = jm.transpose() * inner.try_inverse().unwrap() * Vector3::from_column_slice(dx);
+        [dq[0], dq[1], dq[2]]
+    }
+
+    #[test]
+    fn one_dls_step_equals_the_formula() {
+        let arm = ArmParams::DEFAULT;
+        let params = ControlParams::DEFAULT;
+        for (q, dx) in [
+            ([1.2, -1.3, -1.4], [0.001, -0.0005, 0.008]),
+            ([0.4, 0.9, -2.0], [-0.001, 0.0, 0.0]),
+            ([2.0, 0.05, 0.3], [0.0, 0.001, -0.004]),
+        ] {
+            let j = jacobian(&arm, &q);
+            let got = ik_step(&params, &j, &dx).unwrap();
+            let want = dls_by_nalgebra(&j, &dx, 0.01);
+            for i in 0..3 {
+                let tol = 1e-12 * want[i].abs().max(1e-9);
+                assert!(
+                    (got[i] - want[i]).abs() <= tol,
+                    "{q:?}: {got:?} vs {want:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn dls_stays_bounded_at_the_stretched_out_singularity_where_pinv_does_not() {
+        let arm = ArmParams::DEFAULT;
+        let dls = ControlParams::DEFAULT;
+        let pinv = ControlParams {
+            method: IkMethod::Pinv,
+            ..dls
+        };
+        let adaptive = ControlParams {
+            method: IkMethod::AdaptiveDls,
+            ..dls
+        };
+        // Stretched out along x, asked to move further out by 1 mm (the direction J lost).
+        let dx = [0.001, 0.0, 0.0];
+        for q2 in [1e-3, 1e-5, 1e-7] {
+            let j = jacobian(&arm, &[0.0, q2, 0.0]);
+            let dq_dls = ik_step(&dls, &j, &dx).unwrap();
+            // DLS gain is at most 1 / (2 λ) per unit of task motion.
+            assert!(norm(&dq_dls) <= 0.001 / (2.0 * 0.01) + 1e-12, "dls {q2}");
+            let dq_adaptive = ik_step(&adaptive, &j, &dx).unwrap();
+            assert!(norm(&dq_adaptive) <= norm(&dq_dls), "adaptive {q2}");
+            let dq_pinv = ik_step(&pinv, &j, &dx).unwrap();
+            assert!(
+                norm(&dq_pinv) > 1e3 * norm(&dq_dls),
+                "pinv {q2}: {}",
+                norm(&dq_pinv)
+            );
+        }
+        // Away from it, all three agree closely.
+        let j = jacobian(&arm, &[1.2, -1.3, -1.4]);
+        let a = ik_step(&dls, &j, &dx).unwrap();
+        let b = ik_step(&pinv, &j, &dx).unwrap();
+        assert!((norm(&a) - norm(&b)).abs() < 0.05 * norm(&b));
+    }
+
+    #[test]
+    fn pinv_at_an_exactly_singular_jacobian_gives_none() {
+        let j = [[0.0, 0.0, 0.0], [0.28, 0.16, 0.06], [1.0, 1.0, 1.0]];
+        let pinv = ControlParams {
+            method: IkMethod::Pinv,
+            ..ControlParams::DEFAULT
+        };
+        assert_eq!(ik_step(&pinv, &j, &[0.001, 0.0, 0.0]), None);
+        assert!(ik_step(&ControlParams::DEFAULT, &j, &[0.001, 0.0, 0.0]).is_some());
+    }
+
+    #[test]
+    fn transpose_moves_along_its_best_step() {
+        let arm = ArmParams::DEFAULT;
+        let trans = ControlParams {
+            method: IkMethod::Trans,
+            ..ControlParams::DEFAULT
+        };
+        let j = jacobian(&arm, &[1.2, -1.3, -1.4]);
+        let dx = [0.001, 0.0, 0.0];
+        let dq = ik_step(&trans, &j, &dx).unwrap();
+        // The task-space image J dq is the projection of dx on J Jᵀ dx: no longer than dx,
+        // and its residual is orthogonal to it.
+        let img: Vec<f64> = (0..3)
+            .map(|r| j[r][0] * dq[0] + j[r][1] * dq[1] + j[r][2] * dq[2])
+            .collect();
+        let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+        let residual: Vec<f64> = (0..3).map(|i| dx[i] - img[i]).collect();
+        assert!(dot(&residual, &img).abs() < 1e-18);
+        assert!(dot(&img, &img) <= dot(&dx, &dx));
+        assert!(img[0] > 0.0);
+    }
+
+    #[test]
+    fn sigma_min_matches_nalgebra() {
+        let arm = ArmParams::DEFAULT;
+        for q in [[1.2, -1.3, -1.4], [0.0, 1e-4, 0.0], [2.0, 2.5, -1.0]] {
+            let j = jacobian(&arm, &q);
+            let svd = Matrix3::from_fn(|r, c| j[r][c]).singular_values();
+            let want = svd.min();
+            assert!((sigma_min(&j) - want).abs() < 1e-12, "{q:?}");
+        }
+    }
+
+    #[test]
+    fn ids_round_trip() {
+        for m in IkMethod::ALL {
+            assert_eq!(IkMethod::from_id(m.id()), Some(m));
+        }
+        assert_eq!(
+            IkMethod::from_id("adaptive_dls"),
+            Some(IkMethod::AdaptiveDls)
+        );
+        assert_eq!(IkMethod::from_id("svd"), None);
+    }
 }

@@ -15,6 +15,7 @@
 //!   [`Event`]s (grasp, drop, collision, joint limit, singularity, success, timeout …).
 //! - [`episode`]: an [`Episode`] (config + start state + command stream + records), its CSV,
 //!   exact [`replay`], and the proposed [`Label`] / [`FailureCategory`].
+//! - [`pilot`]: a scripted pilot flying waypoints (tests, benchmark, parity check).
 //! - [`metrics`](mod@metrics): the per-episode figures ([`EpisodeMetrics`]): duration, path, efficiency,
 //!   stops, minimum manipulability, Fitts' index of difficulty and throughput.
 //!
@@ -27,6 +28,7 @@ pub mod arm;
 pub mod control;
 pub mod episode;
 pub mod metrics;
+pub mod pilot;
 pub mod scene;
 pub mod session;
 pub mod sim;

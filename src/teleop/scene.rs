@@ -106,16 +106,18 @@ impl Task {
     }
 }
 
-/// The default reach sequence: six targets of radius 8 to 20 mm at 70 to 190 mm from each
-/// other, so Fitts' index of difficulty `log2(D/W + 1)` spans about 1.5 to 3.8 bits.
+/// The default reach sequence: six targets of radius 8 to 20 mm, 73 to 304 mm apart (from
+/// the start tip, then from each target to the next), so Fitts' index of difficulty
+/// `log2(D/W + 1)` spans 1.5 to 4.3 bits. Every target can be reached with the gripper
+/// pointing straight down, as it starts (the wrist stays within 0.2 m of the shoulder).
 pub fn default_targets() -> Vec<Target> {
     [
-        (0.20, 0.08, 0.020),
-        (0.05, 0.16, 0.012),
-        (0.16, 0.18, 0.008),
-        (0.02, 0.06, 0.020),
-        (0.22, 0.12, 0.012),
-        (-0.08, 0.14, 0.008),
+        (0.17, 0.04, 0.020),
+        (0.04, 0.12, 0.012),
+        (0.12, 0.09, 0.008),
+        (0.03, 0.02, 0.020),
+        (0.19, -0.01, 0.012),
+        (-0.10, 0.08, 0.008),
     ]
     .iter()
     .map(|&(x, z, radius)| Target { x, z, radius })
@@ -179,18 +181,18 @@ impl Layout {
                 obstacles: Vec::new(),
             },
             Task::PickPlaceObstacle => Layout {
-                block_start: (0.07, on_table),
+                block_start: (0.05, on_table),
                 goal: Some(Box2 {
-                    x0: 0.17,
+                    x0: 0.14,
                     z0: TABLE_Z,
-                    x1: 0.23,
+                    x1: 0.19,
                     z1: TABLE_Z + 0.04,
                 }),
                 obstacles: vec![Box2 {
-                    x0: 0.115,
+                    x0: 0.095,
                     z0: TABLE_Z,
-                    x1: 0.135,
-                    z1: 0.03,
+                    x1: 0.11,
+                    z1: 0.02,
                 }],
             },
         }
