@@ -26,7 +26,7 @@ rm -rf target/bench-dist
 cp -r dist target/bench-dist
 cp target/bench-web/bsv_playground.js target/bench-web/bsv_playground_bg.wasm target/bench-dist/pkg/
 
-for page in ik2r pendulum; do
+for page in ik2r pendulum teleop; do
   if [[ -f tests/e2e/$page.bench.mjs ]]; then
     echo
     echo "== $page page in headless Chromium"

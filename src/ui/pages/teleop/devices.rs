@@ -44,16 +44,19 @@ impl Devices {
         [0, 1, 2].map(|i| (k[i] + p[i] + c[i]).clamp(-1.0, 1.0))
     }
 
-    /// Polls the first connected gamepad; returns whether its name changed.
-    pub fn poll_pad(&mut self, dead_zone: f64) -> bool {
+    /// Polls the first connected gamepad; returns whether its name changed and whether its X
+    /// button toggled the gripper.
+    pub fn poll_pad(&mut self, dead_zone: f64) -> (bool, bool) {
         let snap = first_pad();
         let name = snap.as_ref().map(|s| s.id.clone());
         let changed = name != self.pad_name;
         self.pad_name = name;
+        let mut toggled = false;
         match snap {
             Some(s) => {
                 let out = self.pad.map(&s, dead_zone);
                 if out.toggle_gripper {
+                    toggled = true;
                     self.gripper_closed = !self.gripper_closed;
                     self.fresh = true;
                 }
@@ -64,7 +67,7 @@ impl Devices {
             }
             None => self.pad_out = PadOutput::default(),
         }
-        changed
+        (changed, toggled)
     }
 
     /// Forgets held keys and the clutch (L, focus lost, reset).

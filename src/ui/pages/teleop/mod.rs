@@ -569,9 +569,12 @@ impl Inner {
         }
         let started_ms = now_ms();
         let dead_zone = self.live.borrow().settings.dead_zone;
-        let pad_changed = self.devices.borrow_mut().poll_pad(dead_zone);
+        let (pad_changed, pad_toggled) = self.devices.borrow_mut().poll_pad(dead_zone);
         if pad_changed || self.shown_device.borrow().is_none() {
             self.render_device_status();
+        }
+        if pad_toggled {
+            self.render_buttons();
         }
         let mut ended_now = false;
         let mut moved_by_device = false;
