@@ -80,6 +80,13 @@ pub const CASES: &[BenchCase] = &[
         kernel: kernel_pendulum,
     },
     BenchCase {
+        name: "teleop 6,000 steps (a 60 s episode at 100 Hz, DLS, 5-step latency, noise)",
+        id: TELEOP_CASE_ID,
+        args: &[],
+        trajectory: None,
+        kernel: kernel_teleop,
+    },
+    BenchCase {
         name: "traj-resample 1,000,000 rows x 6 joints",
         id: "traj-resample",
         args: &["traj.csv", "0.001"],
@@ -233,6 +240,74 @@ fn kernel_pendulum(_: &[(String, String)]) -> Result<usize, RecipeError> {
     Ok(rows)
 }
 
+/// The id of the teleop case: not a recipe; its "recipe + CSV" half records the episode and
+/// writes `teleop_episode_1.csv` ([`teleop_output`]).
+pub const TELEOP_CASE_ID: &str = "teleop-replay";
+
+/// The teleop case's scene: pick and place (the gripper never closes, so the episode runs its
+/// whole 60 s time box), 50 ms latency, input noise.
+fn teleop_config() -> crate::teleop::SceneConfig {
+    crate::teleop::SceneConfig {
+        latency_steps: 5,
+        noise_sigma: 0.05,
+        noise_seed: 7,
+        ..crate::teleop::SceneConfig::default()
+    }
+}
+
+/// A teleop config error as the bench runners report errors (never happens with the case's
+/// constant, valid config).
+fn scene_error(e: crate::teleop::TeleopError) -> RecipeError {
+    RecipeError::BadChoice {
+        param: "teleop scene".to_string(),
+        value: e.to_string(),
+        choices: "a valid SceneConfig".to_string(),
+    }
+}
+
+/// A pilot's wandering hand: triangle waves of periods 2 s, 3 s and 5 s on x, z and phi.
+fn teleop_command(step: u64) -> crate::teleop::Command {
+    let tri = |period: u64| {
+        let phase = (step % period) as f64 / period as f64;
+        1.0 - 4.0 * (phase - 0.5).abs()
+    };
+    crate::teleop::Command {
+        dx: tri(200),
+        dz: tri(300),
+        dphi: 0.5 * tri(500),
+        gripper_closed: false,
+    }
+}
+
+/// The 6000 steps of the teleop case, through [`crate::teleop::Sim::step`] (what a page's
+/// frame calls).
+fn kernel_teleop(_: &[(String, String)]) -> Result<usize, RecipeError> {
+    let mut sim = crate::teleop::Sim::new(teleop_config()).map_err(scene_error)?;
+    let mut steps = 0;
+    while sim.done().is_none() {
+        sim.step(&teleop_command(steps as u64));
+        steps += 1;
+    }
+    Ok(steps)
+}
+
+/// The teleop case recorded as an episode and written as its CSV.
+pub fn teleop_output() -> Result<RecipeOutput, RecipeError> {
+    use crate::teleop::{episode_csv, EpisodeRecorder};
+    let mut recorder = EpisodeRecorder::new(teleop_config()).map_err(scene_error)?;
+    let mut step = 0;
+    while recorder.sim().done().is_none() {
+        recorder.step(&teleop_command(step));
+        step += 1;
+    }
+    let text = episode_csv(recorder.episode());
+    Ok(RecipeOutput::single(
+        "teleop_episode_1.csv",
+        text,
+        format!("{step} steps"),
+    ))
+}
+
 fn kernel_resample(inputs: &[(String, String)]) -> Result<usize, RecipeError> {
     use crate::recipes::traj_resample::{parse_trajectory, resample};
     let text = inputs.first().map(|(_, t)| t.as_str()).unwrap_or("");
@@ -271,6 +346,9 @@ pub fn inputs(case: &BenchCase) -> Vec<(String, String)> {
 
 /// Runs a case once: the timed part.
 pub fn run(case: &BenchCase, inputs: Vec<(String, String)>) -> Result<RecipeOutput, RecipeError> {
+    if case.id == TELEOP_CASE_ID {
+        return teleop_output();
+    }
     let args: Vec<String> = case.args.iter().map(|s| s.to_string()).collect();
     recipes::run_with_inputs(case.id, &args, inputs)
 }
@@ -282,5 +360,24 @@ pub fn median(times: &mut [f64]) -> f64 {
         0 => f64::NAN,
         n if n % 2 == 1 => times[n / 2],
         n => 0.5 * (times[n / 2 - 1] + times[n / 2]),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    use super::*;
+
+    #[test]
+    fn the_teleop_case_runs_a_whole_60_s_episode_that_replays() {
+        let case = CASES.iter().find(|c| c.id == TELEOP_CASE_ID).unwrap();
+        assert_eq!((case.kernel)(&[]), Ok(6000));
+        let output = run(case, inputs(case)).unwrap();
+        assert_eq!(output.summary, "6000 steps");
+        let episode = crate::teleop::parse_episode_csv(&output.files[0].text).unwrap();
+        let metrics = crate::teleop::replay(&episode).unwrap();
+        assert_eq!(metrics.outcome, Some(crate::teleop::Outcome::Timeout));
     }
 }

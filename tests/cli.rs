@@ -403,3 +403,118 @@ fn rrt_world_options_are_refused_with_the_flag_named() {
     assert!(out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("inside the obstacle"));
 }
+
+/// A scripted pick-and-place episode as the page exports it.
+fn teleop_episode_csv() -> (String, bsv_playground::teleop::Episode) {
+    use bsv_playground::teleop::pilot::{fly, plan};
+    use bsv_playground::teleop::{episode_csv, SceneConfig};
+    let config = SceneConfig::default();
+    let episode = fly(config.clone(), plan(&config), 6000).unwrap();
+    (episode_csv(&episode), episode)
+}
+
+#[test]
+fn teleop_replay_reproduces_an_episode_and_prints_its_metrics() {
+    use bsv_playground::pyfmt::py_float;
+    let dir = temp_dir("teleop-ok");
+    let (text, episode) = teleop_episode_csv();
+    let path = dir.join("teleop_episode_1.csv");
+    std::fs::write(&path, &text).unwrap();
+    let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let m = bsv_playground::teleop::metrics(&episode);
+    assert!(stdout.starts_with(&format!(
+        "replayed {} steps of pick-place (dls): every recorded step reproduced exactly\n",
+        episode.records.len()
+    )));
+    assert!(stdout.contains("\noutcome: success\n"), "{stdout}");
+    assert!(stdout.contains(&format!("\nduration_s: {}\n", py_float(m.duration_s))));
+    assert!(stdout.contains(&format!("\npath_m: {}\n", py_float(m.path_m))));
+    assert!(stdout.contains("\ngrasps: 1\n"));
+    assert!(stdout.contains("\nproposed_label: SUCCESS\n"));
+    assert!(out.stderr.is_empty());
+}
+
+#[test]
+fn teleop_replay_exits_1_naming_the_first_differing_step() {
+    let dir = temp_dir("teleop-tampered");
+    let (text, episode) = teleop_episode_csv();
+    // Step 57's z, one ulp off.
+    let z = episode.records[56].z;
+    let nudged = f64::from_bits(z.to_bits() + 1);
+    let header_row = text.lines().position(|l| l.starts_with("t_s,")).unwrap();
+    let lines: Vec<String> = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            if i == header_row + 57 {
+                let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
+                cells[13] = bsv_playground::pyfmt::py_float(nudged);
+                cells.join(",")
+            } else {
+                l.to_string()
+            }
+        })
+        .collect();
+    let path = dir.join("tampered.csv");
+    std::fs::write(&path, lines.join("\n")).unwrap();
+    let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("step 57: z differs"), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn teleop_replay_refuses_bad_files_with_exit_2() {
+    let dir = temp_dir("teleop-bad");
+    let (text, _) = teleop_episode_csv();
+    let header_row = text.lines().position(|l| l.starts_with("t_s,")).unwrap();
+    let bad = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            if i == header_row + 3 {
+                l.replacen(",0,", ",x,", 1)
+            } else {
+                l.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let path = dir.join("bad.csv");
+    std::fs::write(&path, bad).unwrap();
+    let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains(&format!("row {}, column gripper_cmd: 'x'", header_row + 4)),
+        "{err}"
+    );
+    let not_episode = dir.join("traj.csv");
+    std::fs::write(&not_episode, "t_s,q1\n0.0,0.0\n").unwrap();
+    let out = bsv(&["teleop-replay", not_episode.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("not a teleop episode file"));
+    for args in [
+        &["teleop-replay"][..],
+        &["teleop-replay", "/no/such/episode.csv"],
+        &["teleop-replay", "a.csv", "b.csv"],
+    ] {
+        let out = bsv(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8_lossy(&out.stderr).lines().count(), 1);
+    }
+    let out = bsv(&["teleop-replay", "--help"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("exit 1"));
+    let out = bsv(&["--help"]);
+    assert!(String::from_utf8_lossy(&out.stdout).contains("teleop-replay"));
+}

@@ -3,11 +3,17 @@
 //! ```text
 //! bsv <recipe-id> [the recipe's positional arguments] [--flag value ...] [--out DIR]
 //! bsv --help | bsv <recipe-id> --help
+//! bsv teleop-replay <episode csv>
 //! ```
 //! Writes the recipe's CSV file(s) into `DIR` (default: the current folder) and prints the
 //! recipe's summary line exactly as the Python recipe does. Bad input: exit code 2 and a
 //! one-line message naming the argument, with nothing written. Files are written to temporary
 //! names first and renamed only when every file is complete.
+//!
+//! `bsv teleop-replay` re-runs a Robot Pilot episode (`teleop_episode_<n>.csv`, see
+//! [`bsv_playground::teleop::episode`]) from its start state and commands: exit 0 and its
+//! metrics when every recorded step comes back bit for bit, exit 1 naming the first step and
+//! column that differ, exit 2 for a file that cannot be read as an episode.
 
 use std::fs;
 use std::io::Write;
@@ -29,7 +35,7 @@ fn main() -> ExitCode {
             eprintln!("bsv: {msg}");
             ExitCode::from(2)
         }
-        Err(Failure::Io(msg)) => {
+        Err(Failure::Io(msg)) | Err(Failure::Mismatch(msg)) => {
             eprintln!("bsv: {msg}");
             ExitCode::from(1)
         }
@@ -41,6 +47,8 @@ enum Failure {
     Usage(String),
     /// Could not write the output: exit code 1.
     Io(String),
+    /// A replayed episode differs from its recording: exit code 1.
+    Mismatch(String),
 }
 
 fn cli(raw: &[String]) -> Result<(), Failure> {
@@ -57,6 +65,9 @@ fn cli(raw: &[String]) -> Result<(), Failure> {
     if id == "--version" {
         println!("bsv {}", env!("CARGO_PKG_VERSION"));
         return Ok(());
+    }
+    if id == TELEOP_REPLAY {
+        return teleop_replay(&raw[1..]);
     }
     let recipe = recipes::find(id).ok_or_else(|| {
         Failure::Usage(format!(
@@ -182,6 +193,115 @@ fn general_help() -> String {
     }
     s.push_str(
         "\nEach writes the same CSV file(s) and prints the same line as its Python recipe.\n",
+    );
+    s.push_str(&format!(
+        "\nalso:\n  {TELEOP_REPLAY:<18} <episode csv>   replay a Robot Pilot episode exactly and print its metrics\n"
+    ));
+    s
+}
+
+/// The replay subcommand's name.
+const TELEOP_REPLAY: &str = "teleop-replay";
+
+fn teleop_replay_help() -> String {
+    format!(
+        "usage: bsv {TELEOP_REPLAY} <episode csv>\n\n\
+         Replays a Robot Pilot episode (teleop_episode_<n>.csv from the #/teleop page) from the\n\
+         start state and the command stream in the file, checks that every recorded step is\n\
+         reproduced bit for bit, and prints the episode's metrics.\n\n\
+         exit 0  every step reproduced; the metrics on stdout\n\
+         exit 1  a step differs: the first differing step and column on stderr\n\
+         exit 2  the file cannot be read as an episode (the row and column named)\n"
+    )
+}
+
+/// `bsv teleop-replay <episode csv>`.
+fn teleop_replay(args: &[String]) -> Result<(), Failure> {
+    use bsv_playground::teleop::{self, episode::MAX_EPISODE_BYTES};
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        print!("{}", teleop_replay_help());
+        return Ok(());
+    }
+    let [path] = args else {
+        return Err(Failure::Usage(format!(
+            "{TELEOP_REPLAY}: needs exactly one episode CSV file, got {} arguments (see bsv {TELEOP_REPLAY} --help)",
+            args.len()
+        )));
+    };
+    let fail =
+        |e: std::io::Error| Failure::Usage(format!("{TELEOP_REPLAY}: cannot read '{path}': {e}"));
+    let len = fs::metadata(path).map_err(fail)?.len();
+    if len > MAX_EPISODE_BYTES {
+        return Err(Failure::Usage(format!(
+            "{TELEOP_REPLAY}: '{path}' is {} bytes; the limit is {} bytes",
+            human(len as f64),
+            human(MAX_EPISODE_BYTES as f64)
+        )));
+    }
+    let bytes = fs::read(path).map_err(fail)?;
+    let text = recipes::decode_input(path, &bytes)
+        .map_err(|e| Failure::Usage(format!("{TELEOP_REPLAY}: {e}")))?;
+    let episode = teleop::parse_episode_csv(&text)
+        .map_err(|e| Failure::Usage(format!("{TELEOP_REPLAY}: '{path}': {e}")))?;
+    let metrics = teleop::replay(&episode).map_err(|m| {
+        Failure::Mismatch(format!("{TELEOP_REPLAY}: '{path}': not reproduced: {m}"))
+    })?;
+    print!("{}", replay_report(&episode, &metrics));
+    Ok(())
+}
+
+/// What `teleop-replay` prints for a reproduced episode: one `name: value` line per figure.
+fn replay_report(
+    episode: &bsv_playground::teleop::Episode,
+    m: &bsv_playground::teleop::EpisodeMetrics,
+) -> String {
+    use bsv_playground::pyfmt::py_float;
+    let config = &episode.config;
+    let mut s = format!(
+        "replayed {} steps of {} ({}): every recorded step reproduced exactly\n",
+        episode.records.len(),
+        config.task.id(),
+        config.control.method.id()
+    );
+    let mut line = |name: &str, value: String| s.push_str(&format!("{name}: {value}\n"));
+    line(
+        "outcome",
+        m.outcome
+            .map_or("none (ended by the pilot)", |o| o.id())
+            .to_string(),
+    );
+    line("duration_s", py_float(m.duration_s));
+    line("path_m", py_float(m.path_m));
+    line("efficiency", py_float(m.efficiency));
+    line("collisions", m.collisions.to_string());
+    line("joint_limit_stops", m.joint_limit_stops.to_string());
+    line("speed_limit_stops", m.speed_limit_stops.to_string());
+    line("singularity_stops", m.singularity_stops.to_string());
+    line("grasps", m.grasps.to_string());
+    line("grasp_misses", m.grasp_misses.to_string());
+    line("drops", m.drops.to_string());
+    line("targets_reached", m.targets_reached.to_string());
+    line("min_manipulability", py_float(m.min_manipulability));
+    if let Some(f) = m.fitts {
+        line("fitts_id_bits", py_float(f.id_bits));
+        line(
+            "fitts_throughput_bits_per_s",
+            py_float(f.throughput_bits_per_s),
+        );
+    }
+    line(
+        "first_failure",
+        m.first_failure.map_or("none".to_string(), |(step, e)| {
+            format!("{} at step {step}", e.text())
+        }),
+    );
+    let (label, category) = bsv_playground::teleop::proposed_label(episode);
+    line(
+        "proposed_label",
+        match category {
+            Some(c) => format!("{} ({})", label.id(), c.id()),
+            None => label.id().to_string(),
+        },
     );
     s
 }
