@@ -192,6 +192,7 @@ test('a scripted session: preflight, an episode recorded, labelled, exported; bs
 
     // The episode's time series replays exactly with the CLI.
     const episodeCsv = await download(page, 'teleop_episode_1.csv');
+    const last1x = episodeCsv.toString('utf8').trim().split('\n').pop().split(',')[12];
     const file = join(dir, 'teleop_episode_1.csv');
     writeFileSync(file, episodeCsv);
     const out = execFileSync(BSV, ['teleop-replay', file], { encoding: 'utf8' });
@@ -215,8 +216,12 @@ test('a scripted session: preflight, an episode recorded, labelled, exported; bs
     assert.equal(listed['teleop_episode_1.csv'], sha256(episodeCsv));
     assert.equal(listed['teleop_episodes.csv'], sha256(Buffer.from(table.join('\n') + '\n')));
 
-    // Episode 2 under way when the tab reloads: kept, interrupted, offered for labelling.
+    // An explicit reset starts episode 2; under way when the tab reloads, it is kept,
+    // interrupted, and offered for labelling.
     await canvas(page).focus();
+    await hold(page, 's', 150);
+    assert.equal((await readouts(page)).x, Number(last1x).toFixed(4), 'an ended episode takes no input before a reset');
+    await page.keyboard.press('r');
     await hold(page, 's', 250);
     await page.reload();
     await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
