@@ -424,7 +424,7 @@ mod tests {
     fn readout_texts() {
         assert_eq!(metres(-0.00001), "0.0000");
         assert_eq!(metres(0.12346), "0.1235");
-        assert_eq!(radians(-1.5707963), "-1.571");
+        assert_eq!(radians(-1.2344), "-1.234");
         assert_eq!(comparison_cell("success-rate", Some(0.7)), "70 %");
         assert_eq!(comparison_cell("mean-time", Some(12.345)), "12.35 s");
         assert_eq!(comparison_cell("collisions", Some(3.0)), "3");

@@ -1128,13 +1128,10 @@ impl Inner {
                 .find(|e| episode_file_name(e.number) == file)
                 .map(|e| (e.csv(), "text/csv"))
         };
-        match text {
-            Some((text, mime)) => {
-                if let Err(err) = crate::ui::download::download_text(file, &text, mime) {
-                    web_sys::console::warn_1(&err);
-                }
+        if let Some((text, mime)) = text {
+            if let Err(err) = crate::ui::download::download_text(file, &text, mime) {
+                web_sys::console::warn_1(&err);
             }
-            None => {}
         }
     }
 
@@ -1283,7 +1280,7 @@ impl Inner {
             .metrics
             .first_failure
             .as_ref()
-            .map(|(step, ev)| (*step as u64, *ev));
+            .map(|(step, ev)| (*step, *ev));
         let model = Rc::new(RefCell::new(Replay::new(n, entry.episode.clone(), first)));
         *self.replay.borrow_mut() = Some(model.clone());
         let me = self.me.clone();
