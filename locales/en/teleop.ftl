@@ -39,7 +39,6 @@ teleop-unit-rad-phi = rad (φ)
 teleop-unit-rad = rad
 teleop-unit-m2 = m²
 teleop-unit-s = s
-teleop-unit-none = { "" }
 teleop-episode-practice = practice (not recorded)
 teleop-state-engaged = engaged
 teleop-state-paused = paused

@@ -39,7 +39,6 @@ teleop-unit-rad-phi = rad（φ）
 teleop-unit-rad = rad
 teleop-unit-m2 = m²
 teleop-unit-s = 秒
-teleop-unit-none = { "" }
 teleop-episode-practice = 練習（記録なし）
 teleop-state-engaged = 操作中
 teleop-state-paused = 一時停止中

@@ -52,18 +52,13 @@ fn readouts_markup() -> String {
                 label_id: "teleop-ro-time",
                 values: &[("time", "teleop-unit-s")],
             },
-            ReadoutRow {
-                label_id: "teleop-ro-episode",
-                values: &[("episode", "teleop-unit-none")],
-            },
-            ReadoutRow {
-                label_id: "teleop-ro-state",
-                values: &[("state", "teleop-unit-none")],
-            },
-            ReadoutRow {
-                label_id: "teleop-ro-gripper",
-                values: &[("gripper", "teleop-unit-none")],
-            },
+        ],
+    ) + &readouts::markup(
+        "tele",
+        &[
+            ("episode", "teleop-ro-episode"),
+            ("state", "teleop-ro-state"),
+            ("gripper", "teleop-ro-gripper"),
         ],
     )
 }

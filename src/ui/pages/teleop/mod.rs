@@ -160,6 +160,7 @@ impl Live {
 struct Els {
     engage: Element,
     gripper: Element,
+    reset: Element,
     end: Element,
     next: Element,
     device_status: Element,
@@ -267,6 +268,7 @@ impl Page for TeleopPage {
         let els = Els {
             engage: find(&root, "[data-action=\"engage\"]")?,
             gripper: find(&root, "[data-action=\"gripper\"]")?,
+            reset: find(&root, "[data-action=\"reset\"]")?,
             end: find(&root, "[data-action=\"end-episode\"]")?,
             next: find(&root, "[data-action=\"next-module\"]")?,
             device_status: role(&root, "device-status")?,
@@ -376,8 +378,7 @@ impl Inner {
         *self.frame.borrow_mut() = Some(frame);
         scope.listen_for(&self.els.engage, "click", me, |p, _| p.toggle_engage())?;
         scope.listen_for(&self.els.gripper, "click", me, |p, _| p.toggle_gripper())?;
-        let reset: Element = find(&self.root, "[data-action=\"reset\"]")?;
-        scope.listen_for(&reset, "click", me, |p, _| p.reset())?;
+        scope.listen_for(&self.els.reset, "click", me, |p, _| p.reset())?;
         scope.listen_for(&self.els.end, "click", me, |p, _| p.end_episode())?;
         scope.listen_for(&self.els.next, "click", me, |p, _| {
             let next = p.session.borrow().module.next();
@@ -941,8 +942,16 @@ impl Inner {
             .next
             .set_attribute("aria-disabled", if next_ok { "false" } else { "true" });
         let live_module = current != Module::FailureReview;
-        for el in [&self.els.engage, &self.els.gripper, &self.els.end] {
+        for el in [
+            &self.els.engage,
+            &self.els.gripper,
+            &self.els.end,
+            &self.els.reset,
+        ] {
             dom::show(el, live_module);
+        }
+        if !live_module {
+            dom::show(&self.els.ended, false);
         }
         let help = ctx::t_strings(
             &format!("teleop-help-{}", current.id()),
@@ -1425,8 +1434,15 @@ impl Inner {
 
     fn save(&self) {
         self.last_save_ms.set(now_ms());
+        // Only the commands are stored (the records are simulated again on load).
         let in_progress = if self.recording_in_progress() {
-            Some(self.live.borrow().episode())
+            let live = self.live.borrow();
+            Some(Episode {
+                config: live.sim.config().clone(),
+                start: live.sim.start_state().clone(),
+                commands: live.commands.clone(),
+                records: Vec::new(),
+            })
         } else {
             None
         };
