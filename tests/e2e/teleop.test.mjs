@@ -80,6 +80,31 @@ test('holding W moves x up, Q moves z up; the arm starts engaged', async () => {
   }
 });
 
+test('a pointer drag on the arm view pulls the tip only while held (clutch)', async () => {
+  const { page, errors, close } = await open();
+  try {
+    await page.locator('[data-device="pointer"]').click();
+    const box = await canvas(page).boundingBox();
+    const r0 = await readouts(page);
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width / 2 + 40, box.y + box.height / 2 - 30, { steps: 4 });
+    await page.waitForTimeout(400);
+    const r1 = await readouts(page);
+    assert.ok(Number(r1.x) > Number(r0.x) + 0.01, `x ${r0.x} → ${r1.x}`);
+    assert.ok(Number(r1.z) > Number(r0.z) + 0.01, `z ${r0.z} → ${r1.z}`);
+    await page.mouse.up();
+    await page.waitForTimeout(150);
+    const r2 = await readouts(page);
+    await page.waitForTimeout(200);
+    assert.equal((await readouts(page)).x, r2.x, 'released: the tip stays');
+    assert.equal(await page.locator('[data-check="moved"]').getAttribute('data-state'), 'done');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('an injected gamepad moves the arm and is named', async () => {
   const context = await (await browser()).newContext({ viewport: { width: 1280, height: 800 }, locale: 'en-US' });
   await context.addInitScript(() => {

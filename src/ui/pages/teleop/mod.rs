@@ -206,6 +206,8 @@ pub struct Inner {
     last_save_ms: Cell<f64>,
     /// The device status shown (`None`: to be written).
     shown_device: RefCell<Option<String>>,
+    /// The stop notice shown (written only when it changes).
+    shown_stop: RefCell<String>,
     scope: RefCell<Scope>,
 }
 
@@ -315,6 +317,7 @@ impl Page for TeleopPage {
             frame: RefCell::new(None),
             last_save_ms: Cell::new(0.0),
             shown_device: RefCell::new(None),
+            shown_stop: RefCell::new(String::new()),
             scope: RefCell::new(Scope::new()),
         });
         inner.install()?;
@@ -696,8 +699,9 @@ impl Inner {
             }
             _ => String::new(),
         };
-        if self.els.stop.text_content().unwrap_or_default() != stop_text {
+        if *self.shown_stop.borrow() != stop_text {
             self.els.stop.set_text_content(Some(&stop_text));
+            *self.shown_stop.borrow_mut() = stop_text;
         }
     }
 
