@@ -7,7 +7,7 @@
 //! on the canvas), `devices` (keys, gamepad, clutch), `settings` (the validated form),
 //! `label_panel`, `episode_table` (episodes and the repeatability table), `review` (replay
 //! under the kit's stepper, the timeline), `markup` and `bench`. This file holds the live
-//! simulation ([`Live`]) and the session, and wires them.
+//! simulation (`Live`) and the session, and wires them.
 //!
 //! The simulation runs at a fixed 100 Hz on the kit's frame loop: each displayed frame takes
 //! the whole 10 ms steps its interval owes (`crate::view::teleop_input::Accumulator`), and a
