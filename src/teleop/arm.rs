@@ -13,6 +13,8 @@
 //! `|det J| = sqrt(det(J Jᵀ)) = l1 l2 |sin q2|`, computed by [`crate::planar2r`] exactly as
 //! the IK page computes it, so both pages show the same digits for the same `q1, q2`.
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 /// Link lengths, joint limits and the capsule radius of the links.
@@ -62,8 +64,11 @@ impl Default for ArmParams {
 /// A task-space pose in the plane: tip position (m) and gripper angle from +x (rad).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Pose2 {
+    /// Tip x, m.
     pub x: f64,
+    /// Tip z (up), m.
     pub z: f64,
+    /// Gripper angle from +x, rad (`q1 + q2 + q3`).
     pub phi: f64,
 }
 

@@ -30,6 +30,8 @@
 //! Jacobi rotations of `J Jᵀ` (a fixed number of sweeps): arithmetic and `sqrt` only, so the
 //! same bits natively and in wasm.
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 /// The IK method of [`ControlParams`], with the ids Isaac Lab uses (`adaptive-dls` for its
@@ -81,6 +83,7 @@ impl IkMethod {
 /// The controller's method and parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ControlParams {
+    /// How a task step becomes a joint step.
     pub method: IkMethod,
     /// `dls` damping λ (Isaac Lab's `lambda_val`, default 0.01).
     pub lambda: f64,

@@ -13,6 +13,8 @@
 //! the same bits; booleans are `0`/`1`; `event` is the step's events as
 //! [`Event::text`] joined by `;` (empty when none).
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 use super::control::{ControlParams, IkMethod};
@@ -58,6 +60,7 @@ pub const MAX_EPISODE_BYTES: u64 = 64 * 1024 * 1024;
 /// One attempt: everything needed to replay it and what it produced.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Episode {
+    /// The scene and controller it ran with.
     pub config: SceneConfig,
     /// The state the episode started from.
     pub start: State,
@@ -526,9 +529,13 @@ fn config_from_headers(h: &[HeaderRow]) -> Result<SceneConfig, TeleopError> {
 /// replayed one, as the CSV writes them.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct ReplayMismatch {
+    /// The step (1-based; 0 = the start state).
     pub step: u64,
+    /// The CSV column (or `start_*`, `rows`, `config`).
     pub field: String,
+    /// What the file recorded.
     pub expected: String,
+    /// What the replay produced.
     pub got: String,
 }
 
@@ -659,8 +666,11 @@ fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismat
 /// The pilot's label of an episode (the Academy's SUCCESS / FAILURE / PARTIAL).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Label {
+    /// The task was done cleanly.
     Success,
+    /// The task was not done.
     Failure,
+    /// Done with a failure on the way, or not done but with progress.
     Partial,
 }
 
@@ -686,15 +696,25 @@ impl Label {
 /// The Academy's ten failure categories.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum FailureCategory {
+    /// The gripper closed without the block.
     GraspMiss,
+    /// The block fell from the gripper outside the goal.
     Drop,
+    /// A link or the carried block hit the table or an obstacle.
     Collision,
+    /// The block was set down, or the tip stopped, outside the goal.
     GoalMiss,
+    /// The time box ran out.
     Timeout,
+    /// The input device's tracking failed (noise, dropouts).
     TrackingLoss,
+    /// The delay between input and motion made the pilot fail.
     InputLag,
+    /// A reset did not return the scene to its start state.
     ResetFailure,
+    /// The simulation misbehaved.
     SimInstability,
+    /// The pilot gave the attempt up.
     OperatorAbort,
 }
 

@@ -1,6 +1,8 @@
 //! The one error type of the teleop kernel: a configuration field out of range or an episode
 //! file that cannot be read, each naming the field, or the row and column.
 
+#![warn(missing_docs)]
+
 use std::fmt;
 
 use crate::pyfmt::human;
@@ -8,6 +10,8 @@ use crate::pyfmt::human;
 /// What [`crate::teleop::SceneConfig::validate`] or [`crate::teleop::parse_episode_csv`]
 /// rejects. `field` is the [`crate::teleop::SceneConfig`] field name (`latency_steps`,
 /// `pos_sensitivity`, `targets` …), which is also the key of the episode CSV's header row.
+// The fields are what each variant's doc names.
+#[allow(missing_docs)]
 #[non_exhaustive]
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum TeleopError {

@@ -16,6 +16,8 @@
 //!   confirmed it (so the `success_steps` dwell is not counted); `id_bits` is the mean `ID_i`
 //!   and `throughput_bits_per_s` the mean of `ID_i / MT_i` (ISO 9241-9's "mean of means").
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 use super::arm::{fk, manipulability};
@@ -37,18 +39,31 @@ pub struct Fitts {
 /// The figures of one episode (see the module docs).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct EpisodeMetrics {
+    /// Time of the last step, s.
     pub duration_s: f64,
+    /// Length of the tip's path, m.
     pub path_m: f64,
+    /// Ideal path / path, in [0, 1].
     pub efficiency: f64,
+    /// [`Event::Collision`] count.
     pub collisions: u32,
+    /// [`Event::JointLimit`] count.
     pub joint_limit_stops: u32,
+    /// [`Event::SpeedLimit`] count.
     pub speed_limit_stops: u32,
+    /// [`Event::Singularity`] count.
     pub singularity_stops: u32,
+    /// [`Event::Grasp`] count.
     pub grasps: u32,
+    /// [`Event::GraspMiss`] count.
     pub grasp_misses: u32,
+    /// [`Event::Drop`] count.
     pub drops: u32,
+    /// [`Event::TargetReached`] count.
     pub targets_reached: u32,
+    /// The smallest [`super::manipulability`] of the episode, start included.
     pub min_manipulability: f64,
+    /// Fitts' figures (reach tasks with a target reached).
     pub fitts: Option<Fitts>,
     /// The first failure event (grasp miss, drop, collision, timeout) and its step.
     pub first_failure: Option<(u64, Event)>,

@@ -3,6 +3,8 @@
 //! tests, the benchmark, the wasm parity check and demonstrations. It reads only the
 //! simulation's state, so the command stream it produces is as deterministic as the scene.
 
+#![warn(missing_docs)]
+
 use super::arm::fk;
 use super::episode::{Episode, EpisodeRecorder};
 use super::error::TeleopError;
@@ -13,17 +15,21 @@ use super::sim::{Command, Sim};
 /// there.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Waypoint {
+    /// Tip x, m.
     pub x: f64,
+    /// Tip z, m.
     pub z: f64,
     /// Gripper angle to reach; `None` leaves it as it is.
     pub phi: Option<f64>,
+    /// The gripper state to command on the way and there.
     pub gripper_closed: bool,
     /// Steps to keep commanding this waypoint after reaching it.
     pub hold_steps: u32,
 }
 
-/// How close counts as at a waypoint: m and rad.
+/// How close counts as at a waypoint, m …
 pub const POSITION_TOLERANCE_M: f64 = 0.0005;
+/// … and rad.
 pub const ANGLE_TOLERANCE_RAD: f64 = 0.005;
 /// Time constant of the approach, s: the axis value is the error over the distance covered
 /// at full speed in this time, clamped to [−1, 1].
@@ -41,6 +47,7 @@ pub struct Pilot {
 }
 
 impl Pilot {
+    /// A pilot at the first of `waypoints`.
     pub fn new(waypoints: Vec<Waypoint>) -> Pilot {
         Pilot {
             waypoints,

@@ -11,6 +11,8 @@
 //! | pick and place | `pick-place` | the block released, at rest on the table, its centre in the goal's x range |
 //! | pick and place around an obstacle | `pick-place-obstacle` | the same, with a wall between block and goal |
 
+#![warn(missing_docs)]
+
 use serde::{Deserialize, Serialize};
 
 use super::arm::{fk, ArmParams, Pose2};
@@ -56,8 +58,11 @@ pub const ROT_SPEED_PER_SENSITIVITY: f64 = 1.0;
 /// One reach target: a circle the tip must stay inside.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Target {
+    /// Centre x, m.
     pub x: f64,
+    /// Centre z, m.
     pub z: f64,
+    /// Radius, m.
     pub radius: f64,
 }
 
@@ -65,7 +70,10 @@ pub struct Target {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum Task {
     /// Reach the targets in order (Fitts-style: several sizes and distances).
-    Reach { targets: Vec<Target> },
+    Reach {
+        /// The targets, in the order to reach them.
+        targets: Vec<Target>,
+    },
     /// Pick the block up and place it in the goal region.
     PickPlace,
     /// Pick the block up and place it in the goal region beyond a wall.
@@ -127,25 +135,35 @@ pub fn default_targets() -> Vec<Target> {
 /// An axis-aligned box (obstacle, goal region), corners `(x0, z0)`–`(x1, z1)`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Box2 {
+    /// Left edge, m.
     pub x0: f64,
+    /// Bottom edge, m.
     pub z0: f64,
+    /// Right edge, m.
     pub x1: f64,
+    /// Top edge, m.
     pub z1: f64,
 }
 
 /// A line segment.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Segment {
+    /// Start x, m.
     pub x0: f64,
+    /// Start z, m.
     pub z0: f64,
+    /// End x, m.
     pub x1: f64,
+    /// End z, m.
     pub z1: f64,
 }
 
 /// A segment with a radius: a link or a finger.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Capsule {
+    /// The axis.
     pub segment: Segment,
+    /// The radius around it, m.
     pub radius: f64,
 }
 
@@ -203,8 +221,11 @@ impl Layout {
 /// stream replays an episode exactly.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SceneConfig {
+    /// The arm.
     pub arm: ArmParams,
+    /// The IK controller.
     pub control: ControlParams,
+    /// What the pilot has to do.
     pub task: Task,
     /// Joint angles at the start (default: shoulder up, forearm level, gripper pointing
     /// down, tip at (0.10, 0.06)).
@@ -355,15 +376,20 @@ impl SceneConfig {
 /// Whether a reach target is done, the one to reach now, or still to come.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum TargetStatus {
+    /// Reached.
     Done,
+    /// The one to reach now.
     Current,
+    /// Still to come.
     Pending,
 }
 
 /// A target as drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct TargetView {
+    /// Where it is.
     pub target: Target,
+    /// Done, current or to come.
     pub status: TargetStatus,
 }
 
@@ -384,6 +410,7 @@ pub struct SceneGeometry {
     pub block_held: bool,
     /// The goal region (pick tasks).
     pub goal: Option<Box2>,
+    /// The obstacle boxes.
     pub obstacles: Vec<Box2>,
     /// The reach targets with which is current.
     pub targets: Vec<TargetView>,

@@ -30,6 +30,8 @@
 //! Events of a condition that lasts (limits, collisions, singularity) are reported once, when
 //! the condition starts.
 
+#![warn(missing_docs)]
+
 use std::collections::VecDeque;
 
 use serde::{Deserialize, Serialize};
@@ -66,9 +68,13 @@ pub const SINGULAR_RATIO: f64 = 0.1;
 /// ([`super::scene`]). `gripper_closed` is the gripper's commanded state (K toggles it).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct Command {
+    /// Tip motion along x (W/S, left stick x), [−1, 1].
     pub dx: f64,
+    /// Tip motion along z (Q/E, right stick vertical), [−1, 1].
     pub dz: f64,
+    /// Gripper angle motion (T/G, D-pad up/down), [−1, 1].
     pub dphi: f64,
+    /// The commanded gripper state.
     pub gripper_closed: bool,
 }
 
@@ -104,20 +110,26 @@ impl Command {
 /// (along, across the gripper axis) and its angle relative to the gripper.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct GraspFrame {
+    /// Along the gripper axis from the tip, m.
     pub along: f64,
+    /// Across the gripper axis (to its left), m.
     pub across: f64,
+    /// Block angle minus gripper angle, rad.
     pub angle: f64,
 }
 
 /// The block: its centre, angle, and whether it is held, falling or at rest.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Block {
+    /// Centre x, m.
     pub x: f64,
+    /// Centre z, m.
     pub z: f64,
     /// Angle of its faces from the axes, rad (0 at rest).
     pub angle: f64,
     /// Vertical speed while falling, m/s.
     pub vz: f64,
+    /// In the gripper.
     pub held: bool,
     /// At rest on the table or an obstacle.
     pub resting: bool,
@@ -128,7 +140,9 @@ pub struct Block {
 /// How an episode ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Outcome {
+    /// The goal condition held long enough.
     Success,
+    /// The time box ran out.
     Timeout,
 }
 
@@ -146,16 +160,39 @@ impl Outcome {
 /// carried block; target indices count from 0 (as [`State::target_index`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Event {
+    /// The gripper closed on the block.
     Grasp,
+    /// The gripper closed on nothing.
     GraspMiss,
+    /// The gripper opened and let the block go.
     Release,
+    /// The block fell from the gripper outside the goal.
     Drop,
-    Collision { link: u8 },
-    JointLimit { joint: u8 },
-    SpeedLimit { joint: u8 },
+    /// A motion was stopped by contact of this link (1–3; 4 = the carried block).
+    Collision {
+        /// 1–3 a link (the fingers are link 3), 4 the carried block.
+        link: u8,
+    },
+    /// This joint (1–3) hit a position limit.
+    JointLimit {
+        /// 1 shoulder, 2 elbow, 3 wrist.
+        joint: u8,
+    },
+    /// This joint's (1–3) speed limit cut the step.
+    SpeedLimit {
+        /// 1 shoulder, 2 elbow, 3 wrist.
+        joint: u8,
+    },
+    /// Motion was commanded near a singularity (or the IK could not solve).
     Singularity,
-    TargetReached { index: usize },
+    /// Reach target `index` (from 0) was held long enough.
+    TargetReached {
+        /// Index into the task's targets, from 0.
+        index: usize,
+    },
+    /// The episode succeeded.
     Success,
+    /// The time box ran out.
     Timeout,
 }
 
@@ -241,7 +278,9 @@ pub struct State {
     pub step: u64,
     /// Joint angles, rad.
     pub q: [f64; 3],
+    /// The gripper's state.
     pub gripper_closed: bool,
+    /// The block.
     pub block: Block,
     /// The reach target to reach now (= the number reached).
     pub target_index: usize,
@@ -269,21 +308,31 @@ pub struct State {
 pub struct StepRecord {
     /// The step's number, from 1.
     pub step: u64,
+    /// Time after the step, s.
     pub t_s: f64,
     /// The operator's command (sanitized).
     pub cmd: Command,
     /// The command applied this step (after latency and noise).
     pub applied: Command,
+    /// Joint angles after the step, rad.
     pub q: [f64; 3],
+    /// Tip x after the step, m.
     pub x: f64,
+    /// Tip z after the step, m.
     pub z: f64,
+    /// Gripper angle after the step, rad.
     pub phi: f64,
+    /// Gripper state after the step.
     pub gripper_closed: bool,
+    /// Whether the block is held after the step.
     pub held: bool,
+    /// Block centre x after the step, m.
     pub block_x: f64,
+    /// Block centre z after the step, m.
     pub block_z: f64,
     /// [`super::manipulability`] at `q`.
     pub manipulability: f64,
+    /// What the step detected, in the order detected.
     pub events: Vec<Event>,
 }
 
