@@ -891,8 +891,21 @@ impl Inner {
         self.session.borrow().module == Module::FailureReview
     }
 
+    /// Records the episode under way, if the module records (before the module or the
+    /// session changes: an attempt is never dropped).
+    fn settle_episode(&self) {
+        let under_way = {
+            let live = self.live.borrow();
+            live.started && !live.ended && !live.commands.is_empty()
+        };
+        if under_way && self.session.borrow().module.records() {
+            self.finish_episode();
+        }
+    }
+
     /// Switches to module `m`: the live arm (reset) or the review.
     fn enter_module(&self, m: Module) {
+        self.settle_episode();
         let was = self.session.borrow().module;
         self.session.borrow_mut().module = m;
         if m == Module::FailureReview {
@@ -1207,6 +1220,7 @@ impl Inner {
         }
         match Session::from_files(files) {
             Ok(session) => {
+                self.settle_episode();
                 dom::show(&self.els.open_error, false);
                 let old = std::mem::replace(&mut *self.session.borrow_mut(), session);
                 if self.first.borrow().is_none() && !old.episodes.is_empty() {
@@ -1233,6 +1247,7 @@ impl Inner {
     /// Repeatability: the current session becomes the first, a second one starts (same pilot
     /// and device, preflight carried over) at Record ten.
     fn second_session(&self) {
+        self.settle_episode();
         let (pilot, device, preflight, has) = {
             let s = self.session.borrow();
             (
@@ -1259,6 +1274,7 @@ impl Inner {
 
     /// A new session (the current one is kept as the first session when it has episodes).
     fn new_session(&self) {
+        self.settle_episode();
         let (pilot, device) = {
             let s = self.session.borrow();
             (s.pilot_id.clone(), s.input_device)
