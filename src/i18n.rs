@@ -119,6 +119,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/en/umeyama.ftl"),
     ),
     (
+        Lang::En,
+        "teleop.ftl",
+        include_str!("../locales/en/teleop.ftl"),
+    ),
+    (
         Lang::Ja,
         "shell.ftl",
         include_str!("../locales/ja/shell.ftl"),
@@ -164,6 +169,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         Lang::Ja,
         "umeyama.ftl",
         include_str!("../locales/ja/umeyama.ftl"),
+    ),
+    (
+        Lang::Ja,
+        "teleop.ftl",
+        include_str!("../locales/ja/teleop.ftl"),
     ),
 ];
 

@@ -31,6 +31,7 @@ pub mod episode;
 pub mod metrics;
 pub mod pilot;
 pub mod scene;
+pub mod session;
 pub mod sim;
 
 mod error;

@@ -31,6 +31,9 @@
 //! - [`traj_resample`]: the trajectory-resampling page: URL, readouts.
 //! - [`umeyama_2d`]: the Umeyama page: the fit's steps and their matrices, the SVD's
 //!   factors, the point editor, the truth's handles, the view frame and hit tests.
+//! - [`teleop`]: the Robot Pilot page: settings and their checks, readout texts, view transform.
+//! - [`teleop_input`]: the Robot Pilot page's input mapping (Isaac Lab keyboard and gamepad, clutch),
+//!   the fixed-step accumulator.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
@@ -57,6 +60,8 @@ pub mod se3_relative;
 pub mod signal;
 pub mod stepper;
 pub mod table;
+pub mod teleop;
+pub mod teleop_input;
 pub mod traj_resample;
 pub mod trapezoid_profile;
 pub mod umeyama_2d;

@@ -52,9 +52,9 @@ test('the shell renders in English with the home page, navigation and disclaimer
     // pendulum, PID, the cubic and trapezoid pages, trajectory resampling, the RRT stepper, in
     // their groups) and all drills.
     const navIds = await page.locator('[data-testid="site-nav"] a').evaluateAll((as) => as.map((a) => a.dataset.page));
-    assert.deepEqual(navIds, ['home', 'ik-2r', 'dh-fk', 'se3-relative', 'umeyama-2d', 'pendulum-energy', 'pid-step', 'cubic-path', 'trapezoid-profile', 'traj-resample', 'rrt-2d', 'drills', 'lesson']);
+    assert.deepEqual(navIds, ['home', 'ik-2r', 'dh-fk', 'se3-relative', 'umeyama-2d', 'pendulum-energy', 'pid-step', 'cubic-path', 'trapezoid-profile', 'traj-resample', 'rrt-2d', 'teleop', 'drills', 'lesson']);
     const topLevel = await page.locator('[data-testid="site-nav"] > ul > li > a').evaluateAll((as) => as.map((a) => a.dataset.page));
-    assert.deepEqual(topLevel, ['home', 'drills', 'lesson']);
+    assert.deepEqual(topLevel, ['home', 'teleop', 'drills', 'lesson']);
     assert.equal(await page.locator('[data-testid="nav-home"]').getAttribute('aria-current'), 'page');
     // Twelve recipe cards, each with both command lines and a link to its drill; the IK ones
     // also link to the IK page.

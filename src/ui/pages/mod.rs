@@ -16,6 +16,7 @@ pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
 pub mod se3;
+pub mod teleop;
 pub mod traj_resample;
 pub mod trapezoid_profile;
 pub mod umeyama;
@@ -36,6 +37,7 @@ pub const PAGES: &[PageDef] = &[
     trapezoid_profile::PAGE,
     dh_fk::PAGE,
     umeyama::PAGE,
+    teleop::PAGE,
     drills::PAGE,
     lesson::PAGE,
 ];

@@ -1,0 +1,409 @@
+//! The Robot Pilot page's input mapping (`#/teleop`), as Isaac Lab's teleop devices map theirs,
+//! so a pilot's habits carry over. Pure: the page feeds it key codes, gamepad snapshots and
+//! pointer positions, and gets the operator's normalised axis values (each in [-1, 1], before
+//! sensitivity: the simulation multiplies by the sensitivity and the step, see
+//! `crate::teleop::Command`).
+//!
+//! **Keyboard** (Isaac Lab `Se3Keyboard`): a held key adds its unit delta, a release takes it
+//! back; W/S ±x, Q/E ±z, T/G ±phi (Isaac Lab's pitch keys), K toggles the gripper, R resets
+//! the episode, L clears the held commands; the arrow keys are an alternative for x and z in
+//! the screen's directions (→/← ±x, ↑/↓ ±z); Space engages or pauses control (Isaac
+//! Teleop's RUNNING / PAUSED). Keys are taken by their physical position (`KeyboardEvent.code`),
+//! as Isaac Lab's carb keyboard names do, so a Japanese layout or an active IME gives the same
+//! keys. Several held keys on one axis add up and clamp to [-1, 1] (W held with → is still 1).
+//!
+//! **Gamepad** (Isaac Lab `Se3Gamepad`, Web Gamepad API standard mapping): left stick up/down
+//! ±x (`axes[1]`, negative up), right stick up/down ±z (`axes[3]`), D-pad down/up ±phi
+//! (buttons 13/12: Isaac Lab's D-pad down is +pitch, as its T key, at 0.8 of the rotation
+//! sensitivity), X (button 2) toggles the gripper on its press. A stick value below the dead
+//! zone (Isaac Lab's 0.01) counts as 0; above it the value is used as it is (Isaac Lab does not
+//! rescale). Isaac Lab's gamepad sensitivities (1.0 and 1.6) are the gamepad's defaults.
+//!
+//! **Pointer / touch**: a clutch: the tip follows a drag target only while it is held; the
+//! command points from the tip to the target, full speed from [`CLUTCH_FULL_SPEED_M`] away.
+//!
+//! The simulation runs at a fixed 100 Hz whatever the display rate: [`Accumulator`] turns the
+//! frame intervals into whole steps, and a key press that arrives between two steps is given one
+//! step on the next frame, so at latency 0 the arm moves on the very next displayed frame.
+
+/// Isaac Lab `Se3KeyboardCfg` defaults.
+pub const KEYBOARD_POS_SENSITIVITY: f64 = 0.4;
+pub const KEYBOARD_ROT_SENSITIVITY: f64 = 0.8;
+/// Isaac Lab `Se3GamepadCfg` defaults.
+pub const GAMEPAD_POS_SENSITIVITY: f64 = 1.0;
+pub const GAMEPAD_ROT_SENSITIVITY: f64 = 1.6;
+pub const GAMEPAD_DEAD_ZONE: f64 = 0.01;
+/// Isaac Lab's D-pad gives 0.8 of the rotation sensitivity.
+pub const DPAD_SCALE: f64 = 0.8;
+/// Standard-mapping indices.
+pub const PAD_LEFT_STICK_Y: usize = 1;
+pub const PAD_RIGHT_STICK_Y: usize = 3;
+pub const PAD_BUTTON_X: usize = 2;
+pub const PAD_DPAD_UP: usize = 12;
+pub const PAD_DPAD_DOWN: usize = 13;
+/// A button counts as pressed above this value (Isaac Lab's 0.5).
+pub const PAD_PRESS: f64 = 0.5;
+/// Distance from the tip to the clutch target at which the command is full (1), m.
+pub const CLUTCH_FULL_SPEED_M: f64 = 0.02;
+/// Simulation step, ms (100 Hz).
+pub const STEP_MS: f64 = 10.0;
+/// Most steps one displayed frame takes (a hidden tab coming back does not replay seconds).
+pub const MAX_STEPS_PER_FRAME: u32 = 25;
+
+/// A task-space axis of the command.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Axis {
+    X,
+    Z,
+    Phi,
+}
+
+impl Axis {
+    fn index(self) -> usize {
+        match self {
+            Axis::X => 0,
+            Axis::Z => 1,
+            Axis::Phi => 2,
+        }
+    }
+}
+
+/// What a key does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KeyAction {
+    /// Held: `sign` on `axis` while down.
+    Hold { axis: Axis, sign: i8 },
+    /// K: open / close the gripper.
+    ToggleGripper,
+    /// R: reset the episode.
+    Reset,
+    /// L: forget the held commands.
+    Clear,
+    /// Space: engage / pause.
+    Engage,
+}
+
+/// The action of the key at physical position `code` (`KeyboardEvent.code`).
+pub fn key_action(code: &str) -> Option<KeyAction> {
+    let hold = |axis, sign| Some(KeyAction::Hold { axis, sign });
+    match code {
+        "KeyW" | "ArrowRight" => hold(Axis::X, 1),
+        "KeyS" | "ArrowLeft" => hold(Axis::X, -1),
+        "KeyQ" | "ArrowUp" => hold(Axis::Z, 1),
+        "KeyE" | "ArrowDown" => hold(Axis::Z, -1),
+        "KeyT" => hold(Axis::Phi, 1),
+        "KeyG" => hold(Axis::Phi, -1),
+        "KeyK" => Some(KeyAction::ToggleGripper),
+        "KeyR" => Some(KeyAction::Reset),
+        "KeyL" => Some(KeyAction::Clear),
+        "Space" => Some(KeyAction::Engage),
+        _ => None,
+    }
+}
+
+/// The keys held down (physical codes), in press order.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct HeldKeys {
+    held: Vec<(String, Axis, i8)>,
+}
+
+impl HeldKeys {
+    /// A key went down; `true` if it is a hold key that was not held yet (auto-repeat gives
+    /// `false`).
+    pub fn press(&mut self, code: &str) -> bool {
+        let Some(KeyAction::Hold { axis, sign }) = key_action(code) else {
+            return false;
+        };
+        if self.held.iter().any(|(c, _, _)| c == code) {
+            return false;
+        }
+        self.held.push((code.to_string(), axis, sign));
+        true
+    }
+
+    /// A key went up.
+    pub fn release(&mut self, code: &str) {
+        self.held.retain(|(c, _, _)| c != code);
+    }
+
+    /// L (or focus lost): nothing held.
+    pub fn clear(&mut self) {
+        self.held.clear();
+    }
+
+    /// Whether any hold key is down.
+    pub fn any(&self) -> bool {
+        !self.held.is_empty()
+    }
+
+    /// The held keys' axes `[x, z, phi]`, each the sum of its keys clamped to [-1, 1].
+    pub fn axes(&self) -> [f64; 3] {
+        let mut out = [0.0; 3];
+        for (_, axis, sign) in &self.held {
+            out[axis.index()] += f64::from(*sign);
+        }
+        out.map(|v: f64| v.clamp(-1.0, 1.0))
+    }
+}
+
+/// One poll of a gamepad (`navigator.getGamepads()[i]`).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct PadSnapshot {
+    pub id: String,
+    /// `"standard"` when the browser knows the layout.
+    pub mapping: String,
+    pub axes: Vec<f64>,
+    /// Button values (0..1; digital buttons give 0 or 1).
+    pub buttons: Vec<f64>,
+}
+
+/// What a gamepad poll gives.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PadOutput {
+    /// `[x, z, phi]` in [-1, 1].
+    pub axes: [f64; 3],
+    /// X was pressed since the last poll.
+    pub toggle_gripper: bool,
+    /// Any stick out of the dead zone or any button down: the pad is in use.
+    pub active: bool,
+}
+
+/// The gamepad mapper: remembers the gripper button between polls (a toggle on its press).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct PadMapper {
+    x_was_down: bool,
+}
+
+/// `value` with the dead zone applied (Isaac Lab: below it 0, above it unchanged), clamped.
+pub fn dead_zoned(value: f64, dead_zone: f64) -> f64 {
+    if !value.is_finite() || value.abs() < dead_zone {
+        0.0
+    } else {
+        value.clamp(-1.0, 1.0)
+    }
+}
+
+impl PadMapper {
+    /// Maps one poll.
+    pub fn map(&mut self, pad: &PadSnapshot, dead_zone: f64) -> PadOutput {
+        let axis = |i: usize| dead_zoned(pad.axes.get(i).copied().unwrap_or(0.0), dead_zone);
+        let button = |i: usize| pad.buttons.get(i).copied().unwrap_or(0.0) > PAD_PRESS;
+        let x = -axis(PAD_LEFT_STICK_Y);
+        let z = -axis(PAD_RIGHT_STICK_Y);
+        let phi = match (button(PAD_DPAD_DOWN), button(PAD_DPAD_UP)) {
+            (true, false) => DPAD_SCALE,
+            (false, true) => -DPAD_SCALE,
+            _ => 0.0,
+        };
+        let x_down = button(PAD_BUTTON_X);
+        let toggle_gripper = x_down && !self.x_was_down;
+        self.x_was_down = x_down;
+        let active = pad.axes.iter().any(|v| dead_zoned(*v, dead_zone) != 0.0)
+            || pad.buttons.iter().any(|b| *b > PAD_PRESS);
+        PadOutput {
+            axes: [x + 0.0, z + 0.0, phi],
+            toggle_gripper,
+            active,
+        }
+    }
+}
+
+/// The clutch command: from the tip `(x, z)` towards the target, each axis clamped to
+/// [-1, 1] (full speed from [`CLUTCH_FULL_SPEED_M`] away).
+pub fn clutch_axes(tip: (f64, f64), target: (f64, f64)) -> [f64; 3] {
+    let f = |d: f64| (d / CLUTCH_FULL_SPEED_M).clamp(-1.0, 1.0);
+    [f(target.0 - tip.0), f(target.1 - tip.1), 0.0]
+}
+
+/// The fixed-step accumulator: frame intervals in, whole 10 ms steps out.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Accumulator {
+    /// Time owed to the simulation, ms (may be negative after a step given early).
+    owed_ms: f64,
+}
+
+impl Accumulator {
+    /// The steps to take for a frame `elapsed_ms` after the last; `fresh_input`: an input
+    /// arrived since the last frame, which then gets at least one step (taken from the next
+    /// frames' time, so the rate stays 100 Hz on average).
+    pub fn steps(&mut self, elapsed_ms: f64, fresh_input: bool) -> u32 {
+        let elapsed = if elapsed_ms.is_finite() {
+            elapsed_ms.clamp(0.0, STEP_MS * f64::from(MAX_STEPS_PER_FRAME))
+        } else {
+            0.0
+        };
+        self.owed_ms += elapsed;
+        let mut n = (self.owed_ms / STEP_MS).floor().max(0.0) as u32;
+        if n == 0 && fresh_input && self.owed_ms > -STEP_MS {
+            n = 1;
+        }
+        let n = n.min(MAX_STEPS_PER_FRAME);
+        self.owed_ms -= f64::from(n) * STEP_MS;
+        // Never bank more than one frame's worth (a long stall is dropped, not replayed).
+        self.owed_ms = self.owed_ms.min(STEP_MS * f64::from(MAX_STEPS_PER_FRAME));
+        n
+    }
+
+    /// Forget the time owed (pause, reset).
+    pub fn clear(&mut self) {
+        self.owed_ms = 0.0;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn isaac_lab_keys_map_to_axes() {
+        let mut keys = HeldKeys::default();
+        assert!(keys.press("KeyW"));
+        assert!(!keys.press("KeyW"), "auto-repeat is not a new press");
+        assert_eq!(keys.axes(), [1.0, 0.0, 0.0]);
+        keys.press("KeyQ");
+        keys.press("KeyT");
+        assert_eq!(keys.axes(), [1.0, 1.0, 1.0]);
+        keys.press("KeyS");
+        assert_eq!(keys.axes(), [0.0, 1.0, 1.0], "W and S cancel");
+        keys.release("KeyW");
+        keys.release("KeyQ");
+        keys.press("KeyE");
+        keys.press("KeyG");
+        keys.release("KeyT");
+        assert_eq!(keys.axes(), [-1.0, -1.0, -1.0]);
+        keys.clear();
+        assert_eq!(keys.axes(), [0.0; 3]);
+        assert!(!keys.any());
+    }
+
+    #[test]
+    fn arrows_are_the_screen_directions_and_clamp_with_letters() {
+        let mut keys = HeldKeys::default();
+        keys.press("KeyW");
+        keys.press("ArrowRight");
+        keys.press("ArrowUp");
+        assert_eq!(keys.axes(), [1.0, 1.0, 0.0]);
+        assert_eq!(
+            key_action("ArrowLeft"),
+            Some(KeyAction::Hold {
+                axis: Axis::X,
+                sign: -1
+            })
+        );
+        assert_eq!(
+            key_action("ArrowDown"),
+            Some(KeyAction::Hold {
+                axis: Axis::Z,
+                sign: -1
+            })
+        );
+    }
+
+    #[test]
+    fn command_keys() {
+        assert_eq!(key_action("KeyK"), Some(KeyAction::ToggleGripper));
+        assert_eq!(key_action("KeyR"), Some(KeyAction::Reset));
+        assert_eq!(key_action("KeyL"), Some(KeyAction::Clear));
+        assert_eq!(key_action("Space"), Some(KeyAction::Engage));
+        assert_eq!(key_action("KeyA"), None, "no y axis in the plane");
+        let mut keys = HeldKeys::default();
+        assert!(!keys.press("KeyK"), "K is not held");
+        assert!(!keys.any());
+    }
+
+    fn pad(axes: [f64; 4], buttons: &[(usize, f64)]) -> PadSnapshot {
+        let mut b = vec![0.0; 17];
+        for (i, v) in buttons {
+            b[*i] = *v;
+        }
+        PadSnapshot {
+            id: "test pad".into(),
+            mapping: "standard".into(),
+            axes: axes.to_vec(),
+            buttons: b,
+        }
+    }
+
+    #[test]
+    fn gamepad_sticks_with_the_dead_zone() {
+        let mut m = PadMapper::default();
+        let out = m.map(&pad([0.3, -0.5, 0.0, 0.25], &[]), GAMEPAD_DEAD_ZONE);
+        assert_eq!(
+            out.axes,
+            [0.5, -0.25, 0.0],
+            "up is negative in the standard mapping"
+        );
+        assert!(out.active);
+        let out = m.map(&pad([0.0, 0.009, 0.0, -0.0099], &[]), GAMEPAD_DEAD_ZONE);
+        assert_eq!(out.axes, [0.0, 0.0, 0.0]);
+        assert!(!out.active);
+        let out = m.map(&pad([0.0, -0.01, 0.0, 0.0], &[]), GAMEPAD_DEAD_ZONE);
+        assert_eq!(
+            out.axes[0], 0.01,
+            "at the dead zone the value passes unchanged"
+        );
+        assert_eq!(dead_zoned(f64::NAN, 0.01), 0.0);
+        assert_eq!(dead_zoned(-3.0, 0.01), -1.0);
+    }
+
+    #[test]
+    fn gamepad_dpad_and_gripper_toggle_on_press() {
+        let mut m = PadMapper::default();
+        let out = m.map(&pad([0.0; 4], &[(PAD_DPAD_DOWN, 1.0)]), 0.01);
+        assert_eq!(out.axes[2], 0.8);
+        let out = m.map(&pad([0.0; 4], &[(PAD_DPAD_UP, 1.0)]), 0.01);
+        assert_eq!(out.axes[2], -0.8);
+        let out = m.map(
+            &pad([0.0; 4], &[(PAD_DPAD_UP, 1.0), (PAD_DPAD_DOWN, 1.0)]),
+            0.01,
+        );
+        assert_eq!(out.axes[2], 0.0);
+        assert!(
+            m.map(&pad([0.0; 4], &[(PAD_BUTTON_X, 1.0)]), 0.01)
+                .toggle_gripper
+        );
+        assert!(
+            !m.map(&pad([0.0; 4], &[(PAD_BUTTON_X, 1.0)]), 0.01)
+                .toggle_gripper,
+            "held is not a second press"
+        );
+        assert!(!m.map(&pad([0.0; 4], &[]), 0.01).toggle_gripper);
+        assert!(
+            m.map(&pad([0.0; 4], &[(PAD_BUTTON_X, 0.9)]), 0.01)
+                .toggle_gripper
+        );
+        let short = PadSnapshot::default();
+        assert_eq!(m.map(&short, 0.01), PadOutput::default());
+    }
+
+    #[test]
+    fn clutch_points_at_the_target_and_saturates() {
+        let a = clutch_axes((0.1, 0.1), (0.11, 0.08));
+        assert!(
+            (a[0] - 0.5).abs() < 1e-12 && a[1] == -1.0 && a[2] == 0.0,
+            "{a:?}"
+        );
+        assert_eq!(clutch_axes((0.1, 0.1), (0.1, 0.1)), [0.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn accumulator_runs_at_100_hz_and_answers_a_press_at_once() {
+        let mut acc = Accumulator::default();
+        // 60 Hz display: 16.67 ms frames → 1 or 2 steps, 100 per second.
+        let total: u32 = (0..60).map(|_| acc.steps(1000.0 / 60.0, false)).sum();
+        assert!((99..=100).contains(&total), "{total}");
+        let mut acc = Accumulator::default();
+        assert_eq!(acc.steps(4.0, false), 0);
+        assert_eq!(
+            acc.steps(4.0, true),
+            1,
+            "a key press steps on the next frame"
+        );
+        assert_eq!(acc.steps(4.0, false), 0, "the early step is paid back");
+        assert_eq!(acc.steps(10.0, false), 1);
+        assert_eq!(acc.steps(10_000.0, false), MAX_STEPS_PER_FRAME);
+        assert_eq!(acc.steps(f64::NAN, false), 0, "no time, no step");
+        acc.clear();
+        assert_eq!(acc.steps(0.0, false), 0);
+    }
+}

@@ -1,0 +1,338 @@
+// The Robot Pilot page (#/teleop) in headless Chromium: holding W moves the tip's x up and Q its
+// z up (readouts); an injected gamepad (navigator.getGamepads overridden before the app loads)
+// moves the arm and its name is shown; a scripted session (preflight: move, reset checked;
+// record: an episode ended, labelled FAILURE / collision with a note) exports its episode CSV,
+// which `bsv teleop-replay` reproduces (exit 0), the episodes table and the evidence JSON, whose
+// every rule of teleop-session-evidence v0.1 is checked here (and each CSV's SHA-256 against
+// the downloaded bytes); a reload keeps the session, and an episode cut off by the reload comes
+// back interrupted; a bad saved file is refused with a message naming what is wrong, the
+// session kept; Japanese leaves no English UI text. Screenshots go to tests/e2e/out/.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { createHash } from 'node:crypto';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { startServer, openApp, closeBrowser, browser, OUT } from './harness.mjs';
+import { buildCli, BSV, download } from './cli.mjs';
+import { englishStrings } from './locales.mjs';
+
+let server;
+
+before(async () => {
+  buildCli();
+  server = await startServer();
+}, { timeout: 600_000 });
+
+after(async () => {
+  await closeBrowser();
+  await server?.close();
+});
+
+const open = (hash = '#/teleop', opts = {}) => openApp(server.url, hash, opts);
+
+async function readouts(page) {
+  return page.evaluate(() => {
+    const out = {};
+    for (const el of document.querySelectorAll('[data-readout]')) out[el.dataset.readout] = el.textContent;
+    return out;
+  });
+}
+
+async function hold(page, key, ms) {
+  await page.keyboard.down(key);
+  await page.waitForTimeout(ms);
+  await page.keyboard.up(key);
+}
+
+const canvas = (page) => page.locator('[data-testid="teleop-canvas"]');
+
+test('holding W moves x up, Q moves z up; the arm starts engaged', async () => {
+  const { page, errors, close } = await open();
+  try {
+    const r0 = await readouts(page);
+    assert.equal(await page.locator('[data-readout="state"]').getAttribute('data-value'), 'engaged');
+    await canvas(page).focus();
+    await hold(page, 'w', 300);
+    const r1 = await readouts(page);
+    assert.ok(Number(r1.x) > Number(r0.x) + 0.01, `x ${r0.x} → ${r1.x}`);
+    assert.ok(Math.abs(Number(r1.z) - Number(r0.z)) < 0.01, `z stays: ${r0.z} → ${r1.z}`);
+    await hold(page, 'q', 300);
+    const r2 = await readouts(page);
+    assert.ok(Number(r2.z) > Number(r1.z) + 0.01, `z ${r1.z} → ${r2.z}`);
+    // Space pauses: W then moves nothing.
+    await page.keyboard.press('Space');
+    assert.equal(await page.locator('[data-readout="state"]').getAttribute('data-value'), 'paused');
+    await hold(page, 'w', 200);
+    const r3 = await readouts(page);
+    assert.equal(r3.x, r2.x);
+    // K closes the gripper (readout and button).
+    await page.keyboard.press('k');
+    assert.equal(await page.locator('[data-readout="gripper"]').getAttribute('data-value'), 'closed');
+    assert.equal(await page.locator('[data-action="gripper"]').getAttribute('aria-pressed'), 'true');
+    // L on the canvas clears held keys and is not the shell's language switch.
+    await page.keyboard.press('l');
+    assert.equal(await page.evaluate(() => document.documentElement.lang), 'en');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a pointer drag on the arm view pulls the tip only while held (clutch)', async () => {
+  const { page, errors, close } = await open();
+  try {
+    await page.locator('[data-device="pointer"]').click();
+    const box = await canvas(page).boundingBox();
+    const r0 = await readouts(page);
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width / 2 + 40, box.y + box.height / 2 - 30, { steps: 4 });
+    await page.waitForTimeout(400);
+    const r1 = await readouts(page);
+    assert.ok(Number(r1.x) > Number(r0.x) + 0.01, `x ${r0.x} → ${r1.x}`);
+    assert.ok(Number(r1.z) > Number(r0.z) + 0.01, `z ${r0.z} → ${r1.z}`);
+    await page.mouse.up();
+    await page.waitForTimeout(150);
+    const r2 = await readouts(page);
+    await page.waitForTimeout(200);
+    assert.equal((await readouts(page)).x, r2.x, 'released: the tip stays');
+    assert.equal(await page.locator('[data-check="moved"]').getAttribute('data-state'), 'done');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('an injected gamepad moves the arm and is named', async () => {
+  const context = await (await browser()).newContext({ viewport: { width: 1280, height: 800 }, locale: 'en-US' });
+  await context.addInitScript(() => {
+    const buttons = Array.from({ length: 17 }, () => ({ pressed: false, touched: false, value: 0 }));
+    const pad = { id: 'Test Pad (STANDARD GAMEPAD)', index: 0, connected: true, mapping: 'standard', timestamp: 0, axes: [0, 0, 0, 0], buttons };
+    window.__testPad = pad;
+    Object.defineProperty(Navigator.prototype, 'getGamepads', { configurable: true, value: () => [pad, null, null, null] });
+  });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  try {
+    await page.goto(`${server.url}/#/teleop`);
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    await page.locator('[data-device="gamepad"]').click();
+    await page.waitForFunction(() => document.querySelector('[data-tele="device-status"]').textContent.includes('Test Pad'));
+    // The gamepad's sensitivities (Isaac Lab's 1.0 / 1.6) replace the keyboard's.
+    assert.equal(await page.locator('[data-field="pos_sensitivity"]').inputValue(), '1');
+    assert.equal(await page.locator('[data-field="rot_sensitivity"]').inputValue(), '1.6');
+    const r0 = await readouts(page);
+    // Left stick up (negative in the standard mapping): +x.
+    await page.evaluate(() => { window.__testPad.axes[1] = -1; });
+    await page.waitForTimeout(250);
+    await page.evaluate(() => { window.__testPad.axes[1] = 0; });
+    const r1 = await readouts(page);
+    assert.ok(Number(r1.x) > Number(r0.x) + 0.01, `x ${r0.x} → ${r1.x}`);
+    // Right stick up: +z.
+    await page.evaluate(() => { window.__testPad.axes[3] = -1; });
+    await page.waitForTimeout(250);
+    await page.evaluate(() => { window.__testPad.axes[3] = 0; });
+    const r2 = await readouts(page);
+    assert.ok(Number(r2.z) > Number(r1.z) + 0.01, `z ${r1.z} → ${r2.z}`);
+    // X (button 2) toggles the gripper on its press.
+    await page.evaluate(() => { window.__testPad.buttons[2] = { pressed: true, touched: true, value: 1 }; });
+    await page.waitForFunction(() => document.querySelector('[data-readout="gripper"]').dataset.value === 'closed');
+    await page.evaluate(() => { window.__testPad.buttons[2] = { pressed: false, touched: false, value: 0 }; });
+    // The preflight saw the chosen device move the arm.
+    assert.equal(await page.locator('[data-check="moved"]').getAttribute('data-state'), 'done');
+    assert.deepEqual(errors, []);
+  } finally {
+    await context.close();
+  }
+});
+
+function sha256(buf) {
+  return createHash('sha256').update(buf).digest('hex');
+}
+
+/** The rules of teleop-session-evidence v0.1 as the issue lists them. */
+function checkEvidence(doc) {
+  const keys = ['schemaVersion', 'evidenceId', 'pilotId', 'taskId', 'environment', 'runtime', 'runtimeVersion', 'embodiment',
+    'inputDevice', 'startedAt', 'endedAt', 'episodes', 'safetyEvents', 'dataArtifacts', 'metrics', 'review'];
+  assert.deepEqual(Object.keys(doc).sort(), [...keys].sort(), 'exactly the schema\'s top-level keys');
+  assert.equal(doc.schemaVersion, '0.1');
+  assert.match(doc.evidenceId, /^teleop_[a-z0-9_-]+$/);
+  for (const k of ['pilotId', 'taskId', 'runtime', 'runtimeVersion', 'embodiment', 'inputDevice']) {
+    assert.equal(typeof doc[k], 'string', k);
+    assert.ok(doc[k].length > 0, k);
+  }
+  assert.equal(doc.environment, 'SIMULATION');
+  const iso = /^\d{4}-\d{2}-\d{2}T\d{2}:\d{2}:\d{2}(\.\d+)?(Z|[+-]\d{2}:\d{2})$/;
+  assert.match(doc.startedAt, iso);
+  assert.match(doc.endedAt, iso);
+  assert.ok(!Number.isNaN(Date.parse(doc.startedAt)) && Date.parse(doc.endedAt) >= Date.parse(doc.startedAt));
+  const e = doc.episodes;
+  assert.deepEqual(Object.keys(e).sort(), ['attempted', 'failed', 'recoveryEpisodes', 'successful']);
+  for (const v of Object.values(e)) assert.ok(Number.isInteger(v) && v >= 0);
+  assert.equal(e.successful + e.failed, e.attempted);
+  assert.ok(Array.isArray(doc.safetyEvents));
+  assert.ok(Array.isArray(doc.dataArtifacts));
+  for (const a of doc.dataArtifacts) {
+    assert.equal(typeof a.path, 'string');
+    assert.match(a.sha256, /^[0-9a-f]{64}$/);
+  }
+  for (const [k, v] of Object.entries(doc.metrics)) {
+    assert.ok(v === null || ['number', 'string', 'boolean'].includes(typeof v), `metrics.${k}`);
+  }
+  assert.deepEqual(doc.review, { status: 'UNREVIEWED' });
+}
+
+test('a scripted session: preflight, an episode recorded, labelled, exported; bsv teleop-replay reproduces it; reload keeps it', async () => {
+  const { page, errors, close } = await open();
+  const dir = mkdtempSync(join(tmpdir(), 'bsv-teleop-'));
+  try {
+    // Preflight: the keyboard moves the arm, a reset returns it to the start state.
+    await canvas(page).focus();
+    await hold(page, 'w', 250);
+    assert.equal(await page.locator('[data-check="moved"]').getAttribute('data-state'), 'done');
+    await page.keyboard.press('r');
+    assert.equal(await page.locator('[data-check="reset"]').getAttribute('data-state'), 'done');
+    assert.equal((await readouts(page)).x, '0.1000');
+    // Record ten.
+    await page.locator('[data-module="record-ten"]').click();
+    assert.equal((await readouts(page)).episode, '1 / 10');
+    await canvas(page).focus();
+    await hold(page, 'w', 400);
+    await hold(page, 'e', 300);
+    await page.keyboard.press('k');
+    await page.waitForTimeout(100);
+    await page.locator('[data-action="end-episode"]').click();
+    const panel = page.locator('[data-tele="label-panel"]');
+    await panel.waitFor({ state: 'visible' });
+    await page.locator('[data-label="FAILURE"]').click();
+    await page.locator('[data-category="collision"]').click();
+    assert.equal(await page.locator('[data-category="collision"]').getAttribute('aria-pressed'), 'true');
+    await page.locator('[data-field="note"]').fill('wrist hit, "table"');
+    await page.locator('[data-action="confirm-label"]').click();
+    await panel.waitFor({ state: 'hidden' });
+    assert.equal((await readouts(page)).episode, '2 / 10');
+
+    // The episode's time series replays exactly with the CLI.
+    const episodeCsv = await download(page, 'teleop_episode_1.csv');
+    const last1x = episodeCsv.toString('utf8').trim().split('\n').pop().split(',')[12];
+    const file = join(dir, 'teleop_episode_1.csv');
+    writeFileSync(file, episodeCsv);
+    const out = execFileSync(BSV, ['teleop-replay', file], { encoding: 'utf8' });
+    assert.ok(out.length > 0);
+
+    // The episodes table.
+    const table = (await download(page, 'teleop_episodes.csv')).toString('utf8').trim().split('\n');
+    assert.match(table[0], /^id,task,label,category,note,interrupted,outcome,duration_s,path_m,efficiency,collisions,/);
+    assert.equal(table.length, 2);
+    assert.match(table[1], /^1,pick-place,FAILURE,collision,"wrist hit, ""table""",0,ended,/);
+
+    // The evidence: every rule, the CSVs' SHA-256.
+    const evidenceBytes = await download(page, 'teleop_session_evidence.json');
+    const doc = JSON.parse(evidenceBytes.toString('utf8'));
+    checkEvidence(doc);
+    assert.deepEqual(doc.episodes, { attempted: 1, successful: 0, failed: 1, recoveryEpisodes: 0 });
+    assert.equal(doc.inputDevice, 'keyboard');
+    assert.equal(doc.metrics['failures.collision'], 1);
+    assert.equal(doc.metrics.preflightResetVerified, true);
+    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.path, a.sha256]));
+    assert.equal(listed['teleop_episode_1.csv'], sha256(episodeCsv));
+    assert.equal(listed['teleop_episodes.csv'], sha256(Buffer.from(table.join('\n') + '\n')));
+
+    // An explicit reset starts episode 2; under way when the tab reloads, it is kept,
+    // interrupted, and offered for labelling.
+    await canvas(page).focus();
+    await hold(page, 's', 150);
+    assert.equal((await readouts(page)).x, Number(last1x).toFixed(4), 'an ended episode takes no input before a reset');
+    await page.keyboard.press('r');
+    await hold(page, 's', 250);
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    await page.locator('[data-tele="restored"]').waitFor({ state: 'visible' });
+    assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 2);
+    assert.match(await page.locator('[data-tele="episodes"] tbody tr').first().innerText(), /FAILURE[\s\S]*collision/);
+    await panel.waitFor({ state: 'visible' });
+    assert.match(await panel.innerText(), /interrupted/);
+    assert.equal(await page.locator('[data-label="FAILURE"]').getAttribute('aria-pressed'), 'true');
+    assert.equal(await page.locator('[data-category="operator-abort"]').getAttribute('aria-pressed'), 'true');
+    await page.locator('[data-action="confirm-label"]').click();
+    assert.equal(await page.locator('[data-module="record-ten"]').getAttribute('aria-current'), 'step');
+
+    // Failure review: the stepper replays episode 1 with its first failure marked, if any.
+    await page.locator('[data-module="failure-review"]').click();
+    await page.locator('[data-testid="teleop-stepper"]').waitFor();
+    await page.locator('[data-replay="1"]').click();
+    await page.locator('[data-testid="teleop-stepper"] [data-action="end"]').click();
+    // At the end, the readouts show the CSV's last row (x, z are columns 13 and 14).
+    const last = episodeCsv.toString('utf8').trim().split('\n').pop().split(',');
+    const end = await readouts(page);
+    assert.equal(end.x, Number(last[12]).toFixed(4));
+    assert.equal(end.z, Number(last[13]).toFixed(4));
+
+    // A bad saved file: named, the session kept.
+    const bad = JSON.parse(evidenceBytes.toString('utf8'));
+    bad.operatorMood = 'fine';
+    await page.locator('[data-tele="open"]').setInputFiles([
+      { name: 'teleop_session_evidence.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(bad)) },
+      { name: 'teleop_episodes.csv', mimeType: 'text/csv', buffer: Buffer.from(table.join('\n') + '\n') },
+      { name: 'teleop_episode_1.csv', mimeType: 'text/csv', buffer: episodeCsv },
+    ]);
+    await page.locator('[data-tele="open-error"]').waitFor({ state: 'visible' });
+    assert.match(await page.locator('[data-tele="open-error"]').innerText(), /operatorMood/);
+    assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 2);
+    assert.deepEqual(errors, []);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+    await close();
+  }
+});
+
+test('Japanese leaves no English UI text', async () => {
+  const english = englishStrings();
+  const { page, errors, close } = await open('#/teleop?lang=ja');
+  try {
+    await page.locator('[data-field="lambda"]').fill('abc');
+    await page.locator('[data-field="latency_ms"]').fill('125');
+    await canvas(page).focus();
+    await hold(page, 'w', 200);
+    const text = await page.evaluate(() => {
+      let all = document.body.innerText;
+      for (const b of document.querySelectorAll('[data-download]')) all = all.replaceAll(b.dataset.download, '');
+      for (const k of document.querySelectorAll('kbd')) all = all.replaceAll(k.innerText, '');
+      return all;
+    });
+    const left = english.filter((s) => text.includes(s));
+    assert.deepEqual(left, [], `English left on the Japanese page: ${left.join(' | ')}`);
+    assert.match(text, /ロボットパイロット練習/);
+    assert.ok(await page.locator('[data-field-error="lambda"]').isVisible());
+    assert.match(await page.locator('[data-field-error="latency_ms"]').innerText(), /10 ミリ秒/);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
+  const shots = [
+    ['teleop-en-1920.png', '#/teleop', { viewport: { width: 1920, height: 1080 } }],
+    ['teleop-ja-1920.png', '#/teleop?lang=ja', { viewport: { width: 1920, height: 1080 } }],
+    ['teleop-projector-1920.png', '#/teleop', { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
+    ['teleop-phone-390.png', '#/teleop?lang=ja', { viewport: { width: 390, height: 844 } }],
+  ];
+  for (const [name, hash, opts] of shots) {
+    const { page, errors, close } = await open(hash, opts);
+    try {
+      await canvas(page).focus();
+      await hold(page, 'w', 250);
+      await hold(page, 'q', 150);
+      const width = await page.evaluate(() => document.documentElement.scrollWidth);
+      assert.ok(width <= opts.viewport.width, `${name}: no horizontal scroll (${width})`);
+      await page.screenshot({ path: join(OUT, name), fullPage: true });
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
