@@ -1,6 +1,6 @@
 //! The home page: the BSV page's headline and introduction, a featured card for each
 //! in-browser tool, and one card per recipe (title, a small picture its kernel draws at the
-//! defaults ([`home_picture`]), description, inputs with their defaults,
+//! defaults (`home_picture`), description, inputs with their defaults,
 //! the files it writes, the `bsv` and `python` command lines, and links to run it in the
 //! browser: its drill on the drills page, and its own page when it has one), then the seed's
 //! "Compare the tools" table with the official links (outbound only). Every text is a

@@ -3,7 +3,7 @@
 //! reorder, delete), presented, exported and imported as `.json`, and shared as a link (the
 //! page's own URL is the lesson). The three built-in lessons load from here.
 //!
-//! Components: [`builtin`] (the built-in lessons); this file holds the page, its markup and the
+//! Components: `builtin` (the built-in lessons); this file holds the page, its markup and the
 //! editor's actions. The lesson model is [`crate::view::lesson`]; storage and presenting are the
 //! shell's [`crate::ui::lesson_bar`].
 
