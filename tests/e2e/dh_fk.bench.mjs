@@ -11,34 +11,11 @@
 //
 // Budget: p95 < 4 ms for each. With DH_BENCH_STRICT=1 the exit code is 1 when it is missed.
 import { openApp, closeBrowser, startServer } from './harness.mjs';
+import { BenchTable, nextFrame } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
+const table = new BenchTable();
 
-function stats(values) {
-  const v = [...values].filter(Number.isFinite).sort((a, b) => a - b);
-  const q = (p) => v[Math.min(v.length - 1, Math.max(0, Math.ceil(p * v.length) - 1))];
-  return { n: v.length, p50: q(0.5), p95: q(0.95), max: v[v.length - 1] };
-}
-
-const rows = [];
-function report(name, values, budgetP95) {
-  const s = stats(values);
-  const ok = budgetP95 === undefined ? '' : s.p95 < budgetP95 ? 'ok' : 'OVER';
-  rows.push({ name, ...s, budget: budgetP95 === undefined ? '' : `p95 < ${budgetP95} ms`, ok });
-}
-
-function printTable() {
-  const f = (x) => (x === undefined ? '' : x.toFixed(2));
-  const head = ['work', 'n', 'p50 ms', 'p95 ms', 'max ms', 'budget', ''];
-  const body = rows.map((r) => [r.name, String(r.n), f(r.p50), f(r.p95), f(r.max), r.budget, r.ok]);
-  const widths = head.map((h, i) => Math.max(h.length, ...body.map((b) => b[i].length)));
-  const line = (cells) => cells.map((c, i) => (i === 0 || i === 5 ? c.padEnd(widths[i]) : c.padStart(widths[i]))).join('  ');
-  console.log(line(head));
-  console.log(widths.map((w) => '-'.repeat(w)).join('  '));
-  for (const b of body) console.log(line(b));
-}
-
-const frame = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
 const taken = (page) => page.evaluate(() => ({ frame: (window.__dhFrameMs || []).length, change: (window.__dhChangeMs || []).length }));
 const since = (page, c) => page.evaluate((c) => ({ frame: window.__dhFrameMs.slice(c.frame), change: (window.__dhChangeMs || []).slice(c.change) }), c);
 
@@ -47,7 +24,7 @@ try {
   const app = await openApp(server.url, '#/dh-fk?row=3&step=2', { viewport: VIEWPORT });
   const { page } = app;
   await page.waitForSelector('[data-testid="dh-fk-canvas"]');
-  await frame(page);
+  await nextFrame(page);
   if (!(await page.evaluate(() => Array.isArray(window.__dhFrameMs)))) {
     throw new Error('no window.__dhFrameMs: serve a dist built with --features bench (make bench)');
   }
@@ -60,10 +37,10 @@ try {
   await page.mouse.down();
   for (let k = 0; k < 400; k++) {
     await page.mouse.move(cx + 150 * Math.sin(k / 23), cy + 80 * Math.sin(k / 37));
-    await frame(page);
+    await nextFrame(page);
   }
   await page.mouse.up();
-  report('orbit drag: frame draw', (await since(page, c)).frame, 4);
+  table.report('orbit drag: frame draw', (await since(page, c)).frame, 4);
 
   // The joint 2 slider dragged end to end and back.
   const slider = await page.locator('[data-slider="q2"]').boundingBox();
@@ -74,17 +51,17 @@ try {
   for (let k = 0; k <= 300; k++) {
     const f = 0.5 - 0.5 * Math.cos((2 * Math.PI * k) / 150);
     await page.mouse.move(slider.x + 4 + f * (slider.width - 8), y);
-    await frame(page);
+    await nextFrame(page);
   }
   await page.mouse.up();
   const s = await since(page, c);
-  report('slider drag: recompute (FK, tables, readouts)', s.change, 4);
-  report('slider drag: frame draw', s.frame, 4);
+  table.report('slider drag: recompute (FK, tables, readouts)', s.change, 4);
+  table.report('slider drag: frame draw', s.frame, 4);
   await app.close();
 } finally {
   await closeBrowser();
   await server.close();
 }
 
-printTable();
-if (process.env.DH_BENCH_STRICT === '1' && rows.some((r) => r.ok === 'OVER')) process.exitCode = 1;
+table.print();
+if (process.env.DH_BENCH_STRICT === '1' && table.over()) process.exitCode = 1;

@@ -16,34 +16,12 @@
 import { join } from 'node:path';
 import { openApp, closeBrowser, ROOT } from './harness.mjs';
 import { startStaticServer } from '../../scripts/serve.mjs';
+import { BenchTable } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
+const table = new BenchTable();
 const HASH = '#/pendulum-energy?timestep=0.001&compare=1&duration_s=20';
 const STEPS_PER_FRAME = 167;
-
-function stats(values) {
-  const v = [...values].filter(Number.isFinite).sort((a, b) => a - b);
-  const q = (p) => v[Math.min(v.length - 1, Math.max(0, Math.ceil(p * v.length) - 1))];
-  return { n: v.length, p50: q(0.5), p95: q(0.95), max: v[v.length - 1] };
-}
-
-const rows = [];
-function report(name, values, budgetP95) {
-  const s = stats(values);
-  const ok = budgetP95 === undefined ? '' : s.p95 < budgetP95 ? 'ok' : 'OVER';
-  rows.push({ name, ...s, budget: budgetP95 === undefined ? '' : `p95 < ${budgetP95} ms`, ok });
-}
-
-function printTable() {
-  const f = (x) => (x === undefined ? '' : x.toFixed(2));
-  const head = ['work', 'n', 'p50 ms', 'p95 ms', 'max ms', 'budget', ''];
-  const body = rows.map((r) => [r.name, String(r.n), f(r.p50), f(r.p95), f(r.max), r.budget, r.ok]);
-  const widths = head.map((h, i) => Math.max(h.length, ...body.map((b) => b[i].length)));
-  const line = (cells) => cells.map((c, i) => (i === 0 || i === 5 ? c.padEnd(widths[i]) : c.padStart(widths[i]))).join('  ');
-  console.log(line(head));
-  console.log(widths.map((w) => '-'.repeat(w)).join('  '));
-  for (const b of body) console.log(line(b));
-}
 
 const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);
 try {
@@ -81,8 +59,8 @@ try {
     await page.locator('[data-action="reset"]').click();
     await page.evaluate(() => { window.__pendulumFrameMs.length = 0; window.__benchIntervals.length = 0; });
   }
-  report('frame work (real, playing 10×)', work, 4);
-  report('frame interval (real, playing 10×)', intervals);
+  table.report('frame work (real, playing 10×)', work, 4);
+  table.report('frame interval (real, playing 10×)', intervals);
 
   // The same work through the hook, synchronously, over whole runs.
   const hook = await page.evaluate((steps) => {
@@ -90,12 +68,12 @@ try {
     for (let k = 0; k < 600; k++) out.push(window.__pendulumBench.frame(steps));
     return out;
   }, STEPS_PER_FRAME);
-  report(`frame work (hook, ${STEPS_PER_FRAME} steps)`, hook, 4);
+  table.report(`frame work (hook, ${STEPS_PER_FRAME} steps)`, hook, 4);
   await close();
 } finally {
   await closeBrowser();
   await server.close();
 }
 
-printTable();
-if (process.env.PENDULUM_BENCH_STRICT === '1' && rows.some((r) => r.ok === 'OVER')) process.exitCode = 1;
+table.print();
+if (process.env.PENDULUM_BENCH_STRICT === '1' && table.over()) process.exitCode = 1;

@@ -10,17 +10,11 @@
 // Budget: p95 < 4 ms. With SE3_BENCH_STRICT=1 the exit code is 1 when it is missed; otherwise
 // this only reports.
 import { openApp, closeBrowser, startServer } from './harness.mjs';
+import { stats, nextFrame } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
 const BUDGET_MS = 4;
 
-function stats(values) {
-  const v = [...values].filter(Number.isFinite).sort((a, b) => a - b);
-  const q = (p) => v[Math.min(v.length - 1, Math.max(0, Math.ceil(p * v.length) - 1))];
-  return { n: v.length, p50: q(0.5), p95: q(0.95), max: v[v.length - 1] };
-}
-
-const frame = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
 const recorded = (page) => page.evaluate(() => (window.__se3FrameMs ?? []).length);
 
 let over = false;
@@ -37,7 +31,7 @@ try {
     for (let k = 1; k <= 300; k++) {
       const [x, y] = at(k);
       await page.mouse.move(x, y);
-      await frame(page);
+      await nextFrame(page);
     }
     await page.mouse.up();
     return page.evaluate((n) => window.__se3FrameMs.slice(n), before);

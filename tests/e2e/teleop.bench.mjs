@@ -12,14 +12,9 @@
 import { join } from 'node:path';
 import { openApp, closeBrowser, ROOT } from './harness.mjs';
 import { startStaticServer } from '../../scripts/serve.mjs';
+import { stats } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
-
-function stats(values) {
-  const v = [...values].filter(Number.isFinite).sort((a, b) => a - b);
-  const q = (p) => v[Math.min(v.length - 1, Math.max(0, Math.ceil(p * v.length) - 1))];
-  return { n: v.length, p50: q(0.5), p95: q(0.95), max: v[v.length - 1] };
-}
 
 const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);
 let over = false;

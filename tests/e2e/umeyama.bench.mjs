@@ -10,18 +10,11 @@
 import { join } from 'node:path';
 import { openApp, closeBrowser, ROOT } from './harness.mjs';
 import { startStaticServer } from '../../scripts/serve.mjs';
+import { stats, nextFrame } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
 const MOVES = 150;
 const BUDGET_MS = 4;
-
-function stats(values) {
-  const v = [...values].filter(Number.isFinite).sort((a, b) => a - b);
-  const q = (p) => v[Math.min(v.length - 1, Math.max(0, Math.ceil(p * v.length) - 1))];
-  return { n: v.length, p50: q(0.5), p95: q(0.95), max: v[v.length - 1] };
-}
-
-const frame = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
 
 async function dragPoint(page) {
   const canvas = page.locator('[data-testid="umeyama-2d-canvas"]');
@@ -32,7 +25,7 @@ async function dragPoint(page) {
   for (let k = 1; k <= MOVES; k++) {
     const a = (k / MOVES) * 2 * Math.PI;
     await page.mouse.move(box.x + x + 80 * Math.sin(a), box.y + y + 60 * (1 - Math.cos(a)));
-    await frame(page);
+    await nextFrame(page);
   }
   await page.mouse.up();
 }
@@ -45,7 +38,7 @@ async function dragSlider(page, name) {
   await page.mouse.down();
   for (let k = 0; k <= MOVES; k++) {
     await page.mouse.move(box.x + 4 + (k / MOVES) * (box.width - 8), box.y + box.height / 2);
-    await frame(page);
+    await nextFrame(page);
   }
   await page.mouse.up();
 }
