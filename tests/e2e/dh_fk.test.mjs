@@ -4,24 +4,15 @@
 // view; orbiting (drag, preset, keys, wheel) changes the pixels and never the numbers; "show one
 // row" walks Rx, Tx, Rz, Tz with the stepper; Japanese leaves no English UI text. Screenshots
 // (EN/JA 1920×1080, phone 390 px, projector) go to tests/e2e/out/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer, openApp, closeBrowser, OUT } from './harness.mjs';
-import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, OUT } from './harness.mjs';
+import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
-let server;
-
-before(async () => {
-  buildCli();
-  server = await startServer();
-}, { timeout: 600_000 });
-
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+// The CLI is built and dist/ served before the tests; all is closed after them.
+const server = serveAppWithCli();
 
 const open = (hash, opts = {}) => openApp(server.url, hash, opts);
 const CANVAS = '[data-testid="dh-fk-canvas"]';

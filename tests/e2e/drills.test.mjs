@@ -5,28 +5,19 @@
 // field in English and Japanese while the last result stays; big runs wait for Run and show
 // "Running…"; keys; the Japanese page leaves no English UI string; phone width; screenshots
 // (1280×800 English and Japanese, 390×844) go to tests/e2e/out/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync, spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { startServer, openApp, closeBrowser, OUT, ROOT } from './harness.mjs';
-import { BSV, buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, OUT, ROOT } from './harness.mjs';
+import { serveAppWithCli, BSV, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
 const RESAMPLE_INPUT = join(ROOT, 'tests', 'golden', 'resample_3joint', 'input.csv');
-let server;
-
-before(async () => {
-  buildCli();
-  server = await startServer();
-}, { timeout: 600_000 });
-
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+// The CLI is built and dist/ served before the tests; all is closed after them.
+const server = serveAppWithCli();
 
 /** The twelve recipe ids and the files each writes with its defaults. */
 const RECIPES = [

@@ -5,25 +5,16 @@
 // leaves no English UI string; invalid values are flagged beside their field while the arm
 // keeps working; a URL restores the state; keys; heatmap clicks; a phone-sized touch drag.
 // Screenshots (1920×1080 English and Japanese, 390×844 phone) go to tests/e2e/out/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, openApp, closeBrowser, OUT, ROOT } from './harness.mjs';
-import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, OUT, ROOT } from './harness.mjs';
+import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
-let server;
-
-before(async () => {
-  buildCli();
-  server = await startServer();
-}, { timeout: 600_000 });
-
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+// The CLI is built and dist/ served before the tests; all is closed after them.
+const server = serveAppWithCli();
 
 // ---------- The kinematics of src/planar2r.rs, in JS ----------
 

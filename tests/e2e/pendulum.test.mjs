@@ -7,24 +7,15 @@
 // that has come to rest offers Replay and damping 0. Screenshots (EN/JA 1920×1080, projector,
 // phone 390 px) go to tests/e2e/out/. In a build with `--features bench` it also reports the
 // frame work (advance + draw + plot append) p95 at 10× speed, 0.001 s, both integrators.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer, openApp, closeBrowser, OUT } from './harness.mjs';
-import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, OUT } from './harness.mjs';
+import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
-let server;
-
-before(async () => {
-  buildCli();
-  server = await startServer();
-}, { timeout: 600_000 });
-
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+// The CLI is built and dist/ served before the tests; all is closed after them.
+const server = serveAppWithCli();
 
 const open = (hash = '#/pendulum-energy', opts = {}) => openApp(server.url, hash, opts);
 

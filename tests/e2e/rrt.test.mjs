@@ -10,24 +10,15 @@
 // mount's are reported); End and the CSVs equal `bsv`.
 // In a build with `--features bench` it also reports the frame work p95 while playing as fast
 // as possible to 50,000 nodes.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer, openApp, closeBrowser, OUT } from './harness.mjs';
-import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, OUT } from './harness.mjs';
+import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
-let server;
-
-before(async () => {
-  buildCli();
-  server = await startServer();
-}, { timeout: 600_000 });
-
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+// The CLI is built and dist/ served before the tests; all is closed after them.
+const server = serveAppWithCli();
 
 const open = (hash = '#/rrt-2d', opts = {}) => openApp(server.url, hash, opts);
 

@@ -5,24 +5,15 @@
 // bad value shows its message beside the field and keeps the last valid result; an orbit drag
 // turns the view; Japanese leaves no English UI text. Screenshots (EN, JA in degrees,
 // projector, phone 390 px) go to tests/e2e/out/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { startServer, openApp, closeBrowser, OUT } from './harness.mjs';
-import { buildCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, OUT } from './harness.mjs';
+import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
-let server;
-
-before(async () => {
-  buildCli();
-  server = await startServer();
-}, { timeout: 600_000 });
-
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+// The CLI is built and dist/ served before the tests; all is closed after them.
+const server = serveAppWithCli();
 
 const open = (hash, opts = {}) => openApp(server.url, hash, opts);
 const NAMES = ['ax', 'ay', 'az', 'ar', 'ap', 'aw', 'bx', 'by', 'bz', 'br', 'bp', 'bw'];

@@ -7,28 +7,19 @@
 // the downloaded bytes); a reload keeps the session, and an episode cut off by the reload comes
 // back interrupted; a bad saved file is refused with a message naming what is wrong, the
 // session kept; Japanese leaves no English UI text. Screenshots go to tests/e2e/out/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createHash } from 'node:crypto';
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { startServer, openApp, closeBrowser, browser, OUT } from './harness.mjs';
-import { buildCli, BSV, download } from './cli.mjs';
+import { openApp, browser, OUT } from './harness.mjs';
+import { serveAppWithCli, BSV, download } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
-let server;
-
-before(async () => {
-  buildCli();
-  server = await startServer();
-}, { timeout: 600_000 });
-
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+// The CLI is built and dist/ served before the tests; all is closed after them.
+const server = serveAppWithCli();
 
 const open = (hash = '#/teleop', opts = {}) => openApp(server.url, hash, opts);
 
