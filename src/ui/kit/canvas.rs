@@ -8,6 +8,9 @@
 //! Typical use: backgrounds (grids, axes, painted images) on layer 0, redrawn only when the
 //! size, the language or the data change; per-frame marks on the top layer.
 
+use std::f64::consts::TAU;
+
+use glam::DVec2;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{CanvasRenderingContext2d, Document, Element, HtmlCanvasElement};
@@ -212,6 +215,23 @@ pub fn font_px(px: f64, bold: bool) -> String {
         if bold { "600 " } else { "" },
         px
     )
+}
+
+/// A filled disc of radius `r` CSS px at `p`.
+pub fn disc(c: &CanvasRenderingContext2d, p: DVec2, r: f64, fill: &str) {
+    c.set_fill_style_str(fill);
+    c.begin_path();
+    let _ = c.arc(p.x, p.y, r, 0.0, TAU);
+    c.fill();
+}
+
+/// A circle of radius `r` at `p`, stroked `width` px.
+pub fn ring(c: &CanvasRenderingContext2d, p: DVec2, r: f64, stroke: &str, width: f64) {
+    c.set_stroke_style_str(stroke);
+    c.set_line_width(width);
+    c.begin_path();
+    let _ = c.arc(p.x, p.y, r, 0.0, TAU);
+    c.stroke();
 }
 
 /// `[a, b]` as a JS array for `setLineDash`.

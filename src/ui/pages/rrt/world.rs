@@ -5,14 +5,11 @@
 //! top, the marks of the moment: the newest node, the found path, the current iteration's
 //! sub-steps, the selected box.
 
-use std::f64::consts::TAU;
-
-use glam::DVec2;
 use wasm_bindgen::JsValue;
 use web_sys::{CanvasRenderingContext2d, Element};
 
 use crate::recipes::rrt_2d::{check_points, RrtIteration, RrtOutcome};
-use crate::ui::kit::canvas::{dash, solid, Ink, LayeredCanvas};
+use crate::ui::kit::canvas::{dash, disc, ring, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
 use crate::view::rrt::{corners, Frame, Grab, PageState, Phase};
 
@@ -40,21 +37,6 @@ pub struct WorldView {
     /// Nodes drawn on the tree layer, and the run generation they belong to.
     tree_drawn: usize,
     tree_generation: Option<u64>,
-}
-
-fn disc(c: &CanvasRenderingContext2d, p: DVec2, r: f64, fill: &str) {
-    c.set_fill_style_str(fill);
-    c.begin_path();
-    let _ = c.arc(p.x, p.y, r, 0.0, TAU);
-    c.fill();
-}
-
-fn ring(c: &CanvasRenderingContext2d, p: DVec2, r: f64, stroke: &str, width: f64) {
-    c.set_stroke_style_str(stroke);
-    c.set_line_width(width);
-    c.begin_path();
-    let _ = c.arc(p.x, p.y, r, 0.0, TAU);
-    c.stroke();
 }
 
 impl WorldView {

@@ -14,7 +14,7 @@ use glam::{DVec2, DVec3};
 use web_sys::CanvasRenderingContext2d;
 
 use crate::ui::ctx;
-use crate::ui::kit::canvas::{dash, solid, Ink, LayeredCanvas};
+use crate::ui::kit::canvas::{dash, disc, solid, Ink, LayeredCanvas};
 use crate::view::camera3d::{ground_grid, Camera, Preset};
 use crate::view::se3_relative::{
     axis_length, path_in_a, ring_radius, yaw_ring, Grab, Solved, Triad, RING_POINTS,
@@ -38,13 +38,6 @@ fn line(c: &CanvasRenderingContext2d, cam: &Camera, a: DVec3, b: DVec3) -> Optio
     c.line_to(pb.x, pb.y);
     c.stroke();
     Some((pa, pb))
-}
-
-fn disc(c: &CanvasRenderingContext2d, p: DVec2, r: f64, fill: &str) {
-    c.set_fill_style_str(fill);
-    c.begin_path();
-    let _ = c.arc(p.x, p.y, r, 0.0, TAU);
-    c.fill();
 }
 
 /// An arrowhead at `tip` pointing away from `from`, `size` px.

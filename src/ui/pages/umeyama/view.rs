@@ -5,13 +5,11 @@
 //! scale circles, the translation arrow). Redrawn whole on every change: a few hundred
 //! primitives, well under a millisecond.
 
-use std::f64::consts::TAU;
-
 use glam::DVec2;
 use wasm_bindgen::JsValue;
 use web_sys::{CanvasRenderingContext2d, Element};
 
-use crate::ui::kit::canvas::{dash, solid, Ink, LayeredCanvas};
+use crate::ui::kit::canvas::{dash, disc, ring, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
 use crate::view::umeyama_2d::{rotation_handle, svd, Frame, Grab, Scene, Step};
 
@@ -40,21 +38,6 @@ pub struct Marks {
 pub struct SceneView {
     pub canvas: LayeredCanvas,
     pub frame: Frame,
-}
-
-fn disc(c: &CanvasRenderingContext2d, p: DVec2, r: f64, fill: &str) {
-    c.set_fill_style_str(fill);
-    c.begin_path();
-    let _ = c.arc(p.x, p.y, r, 0.0, TAU);
-    c.fill();
-}
-
-fn ring(c: &CanvasRenderingContext2d, p: DVec2, r: f64, stroke: &str, width: f64) {
-    c.set_stroke_style_str(stroke);
-    c.set_line_width(width);
-    c.begin_path();
-    let _ = c.arc(p.x, p.y, r, 0.0, TAU);
-    c.stroke();
 }
 
 fn line(c: &CanvasRenderingContext2d, a: DVec2, b: DVec2, stroke: &str, width: f64) {
