@@ -200,7 +200,7 @@ fn apply(action: PresenterAction) -> Result<(), JsValue> {
 
 /// A key while presenting: PageDown / → next, PageUp / ← back, Escape ends. True if taken.
 pub(crate) fn on_key(event: &KeyboardEvent) -> Result<bool, JsValue> {
-    if !presenting() || event.ctrl_key() || event.alt_key() || event.meta_key() {
+    if !presenting() || crate::ui::kit::keymap::has_command_modifier(event) {
         return Ok(false);
     }
     if crate::ui::kit::keymap::is_typing(event.target()) {

@@ -26,7 +26,7 @@ pub(crate) fn on_key(event: &KeyboardEvent, current_page: Option<&str>) -> Resul
         "PageUp" => false,
         _ => return Ok(false),
     };
-    if event.ctrl_key() || event.alt_key() || event.meta_key() || event.shift_key() {
+    if keymap::has_command_modifier(event) || event.shift_key() {
         return Ok(false);
     }
     if keymap::is_typing(event.target()) {

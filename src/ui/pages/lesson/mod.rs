@@ -186,18 +186,21 @@ impl LessonPage {
         Ok(())
     }
 
+    /// A whole new lesson (imported or built in): its title in the field, no error shown.
+    fn replace(self: &Rc<Self>, lesson: Lesson) -> Result<(), JsValue> {
+        self.clear_error()?;
+        *self.lesson.borrow_mut() = lesson;
+        let title: HtmlInputElement = self.find("[data-field=\"lesson-title\"]")?;
+        title.set_value(&self.lesson.borrow().title);
+        self.changed(true)
+    }
+
     fn imported(self: &Rc<Self>, text: Result<String, String>) -> Result<(), JsValue> {
         let parsed = text
             .map_err(|detail| LessonError::NotALesson { detail })
             .and_then(|t| Lesson::from_json(&t, is_page));
         match parsed {
-            Ok(lesson) => {
-                self.clear_error()?;
-                *self.lesson.borrow_mut() = lesson;
-                let title: HtmlInputElement = self.find("[data-field=\"lesson-title\"]")?;
-                title.set_value(&self.lesson.borrow().title);
-                self.changed(true)
-            }
+            Ok(lesson) => self.replace(lesson),
             Err(error) => self.show_error(&error),
         }
     }
@@ -208,11 +211,7 @@ impl LessonPage {
                 || dom::window()?.confirm_with_message(&ctx::t("lesson-replace-confirm"))?;
             if replace {
                 if let Some(lesson) = builtin::lesson(&key, is_page) {
-                    *self.lesson.borrow_mut() = lesson;
-                    let title: HtmlInputElement = self.find("[data-field=\"lesson-title\"]")?;
-                    title.set_value(&self.lesson.borrow().title);
-                    self.clear_error()?;
-                    self.changed(true)?;
+                    self.replace(lesson)?;
                 }
             }
             return Ok(());
