@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `make bench`: speed figures (a command, not a timed test). Kernels natively and as wasm in
-# Node (release builds), then the IK, pendulum, SE(3), RRT and signal pages in headless Chromium.
+# Node (release builds), the app's size and first interactive frame, then every page's frame work
+# in headless Chromium.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -26,8 +27,16 @@ rm -rf target/bench-dist
 cp -r dist target/bench-dist
 cp target/bench-web/bsv_playground.js target/bench-web/bsv_playground_bg.wasm target/bench-dist/pkg/
 
+echo
+echo "== size of the app (dist/, every file gzipped at level 9; issue 14's budget is 350 KB)"
+node scripts/size.mjs dist
+
+echo
+echo "== first interactive frame: cold loads of the release dist/ from localhost in headless Chromium"
+node tests/e2e/firstframe.bench.mjs
+
 for page in $(cd tests/e2e && ls *.bench.mjs | sed 's/\.bench\.mjs$//'); do
-  if [[ -f tests/e2e/$page.bench.mjs ]]; then
+  if [[ -f tests/e2e/$page.bench.mjs && $page != firstframe ]]; then
     echo
     echo "== $page page in headless Chromium"
     BSV_DIST=target/bench-dist node tests/e2e/$page.bench.mjs

@@ -38,6 +38,9 @@ echo "wasm tests under Node: $passed passed"
 step "release build of the app (dist/)"
 scripts/build-dist.sh
 
+step "size of the app (scripts/size.mjs: fails above its ceiling)"
+node scripts/size.mjs dist --check
+
 step "browser end-to-end tests (headless Chromium)"
 node --test tests/e2e/*.test.mjs
 

@@ -1,0 +1,72 @@
+// First interactive frame (issue 14, "Size and first paint"), on the dist folder named by
+// BSV_DIST (default dist/), served from localhost: cold loads in headless Chromium, each in a
+// new browser context (empty HTTP cache, no service worker), 1280×800. The time is from the
+// navigation's start to the first animation frame after the shell set html[data-app-ready]
+// (the route mounted and its listeners installed: the page answers input from that frame on).
+// Printed per route: n, median, p95 and max, against the budget of a 500 ms median. Also the
+// sizes of the dist (scripts/size.mjs). With FIRSTFRAME_STRICT=1 the exit code is 1 when the
+// budget is missed; otherwise this only reports.
+import { join } from 'node:path';
+import { browser, closeBrowser, ROOT } from './harness.mjs';
+import { startStaticServer } from '../../scripts/serve.mjs';
+import { stats } from './bench-table.mjs';
+import { measure, KB, BUDGET } from '../../scripts/size.mjs';
+
+const DIST = join(ROOT, process.env.BSV_DIST ?? 'dist');
+const ROUTES = ['#/', '#/ik-2r', '#/rrt-2d', '#/pendulum-energy', '#/teleop', '#/ik-2r?lang=ja'];
+const LOADS = Number(process.env.FIRSTFRAME_LOADS ?? 9);
+const BUDGET_MS = 500;
+
+/** Milliseconds from navigation start to the first frame after the app is ready, in a fresh context. */
+async function coldLoad(url) {
+  const context = await (await browser()).newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
+  try {
+    await context.addInitScript(() => {
+      // The init script runs before <html> exists: watch the whole document.
+      new MutationObserver((_, observer) => {
+        if (document.documentElement?.dataset.appReady === '1') {
+          observer.disconnect();
+          requestAnimationFrame(() => {
+            window.__firstFrameMs = performance.now();
+          });
+        }
+      }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-app-ready'] });
+    });
+    const page = await context.newPage();
+    await page.goto(url);
+    await page.waitForFunction(() => typeof window.__firstFrameMs === 'number', null, { timeout: 20000 });
+    return await page.evaluate(() => window.__firstFrameMs);
+  } finally {
+    await context.close();
+  }
+}
+
+const { gzip, rows } = measure(DIST);
+const wasm = rows.find((r) => r.file.endsWith('.wasm'));
+console.log(
+  `dist: ${(gzip / KB).toFixed(1)} KB gzip in ${rows.length} files (wasm ${(wasm.raw / KB).toFixed(1)} KB, ` +
+    `${(wasm.gzip / KB).toFixed(1)} KB gzip); budget ${(BUDGET / KB).toFixed(0)} KB (node scripts/size.mjs for the table)`,
+);
+
+const server = await startStaticServer(DIST, 0);
+let over = false;
+try {
+  // One load first so that Chromium itself is warm (its own start is not the app's).
+  await coldLoad(`${server.url}/#/`);
+  console.log(`${'route'.padEnd(22)}  ${'n'.padStart(2)}  ${'median ms'.padStart(9)}  ${'p95 ms'.padStart(7)}  ${'max ms'.padStart(7)}  budget`);
+  for (const route of ROUTES) {
+    const times = [];
+    for (let i = 0; i < LOADS; i++) times.push(await coldLoad(`${server.url}/${route}`));
+    const s = stats(times);
+    const ok = s.p50 <= BUDGET_MS;
+    over ||= !ok;
+    console.log(
+      `${route.padEnd(22)}  ${String(s.n).padStart(2)}  ${s.p50.toFixed(0).padStart(9)}  ${s.p95.toFixed(0).padStart(7)}  ` +
+        `${s.max.toFixed(0).padStart(7)}  median ≤ ${BUDGET_MS} ms ${ok ? 'ok' : 'OVER'}`,
+    );
+  }
+} finally {
+  await closeBrowser();
+  await server.close();
+}
+if (over && process.env.FIRSTFRAME_STRICT === '1') process.exit(1);
