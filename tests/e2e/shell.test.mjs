@@ -601,6 +601,38 @@ test('in projector mode at 1920x1080 no text on the home page is under 24 px', a
   }
 });
 
+test('in projector mode the header stays compact: at 1280x800 at most two short rows, at phone width nothing runs off the screen', async () => {
+  for (const [width, height, maxHeader] of [[1280, 800, 130], [390, 844, 260]]) {
+    const { page, errors, close } = await openApp(server.url, '#/ik-2r', { viewport: { width, height } });
+    try {
+      await page.keyboard.press('p');
+      for (const lang of ['en', 'ja']) {
+        const header = await page.locator('[data-testid="site-header"]').boundingBox();
+        assert.ok(header.height <= maxHeader, `${width}px ${lang}: the header takes ${header.height} px of ${height}`);
+        for (const id of ['brand', 'lesson-add', 'lang-switch', 'projector-toggle', 'help-button']) {
+          const box = await page.locator(`[data-testid="${id}"]`).boundingBox();
+          assert.ok(box && box.x >= 0 && box.x + box.width <= width + 0.5, `${width}px ${lang}: ${id} on screen (${JSON.stringify(box)})`);
+        }
+        // The subtitle is still there for screen readers.
+        assert.ok((await page.locator('[data-testid="brand-subtitle"]').textContent()).length > 5);
+        if (lang === 'en') await page.click('[data-testid="lang-switch"]');
+      }
+      await page.screenshot({ path: join(OUT, `ik2r-projector-${width}.png`), fullPage: false });
+      // Every page lays out and draws with projector type at this size (a short canvas with
+      // 24 px labels once made a clamp panic).
+      const routes = await page.locator('[data-testid="site-nav"] a').evaluateAll((as) => as.map((a) => a.dataset.page));
+      for (const route of routes) {
+        await page.evaluate((r) => { location.hash = `#/${r}`; }, route);
+        await page.waitForFunction((r) => document.querySelector(`[data-testid="site-nav"] a[data-page="${r}"]`)?.getAttribute('aria-current') === 'page', route);
+        await page.waitForTimeout(250);
+      }
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
 test('the focus ring is at least 3:1 against white in the header and inside page content', async () => {
   const { page, errors, close } = await openApp(server.url, '#/ik-2r');
   try {

@@ -190,8 +190,11 @@ impl Heatmap {
         let (lo, hi) = self.painted.map_or((0.0, 1.0), |(_, _, s)| s);
         let mut widest: f64 = 0.0;
         for t in [0.0, 0.5, 1.0] {
+            // max then min, not clamp: on a short panel with projector type the margins
+            // cross (lo > hi), where clamp panics.
             let y = (lay.y + lay.size * (1.0 - t))
-                .clamp(lay.y + 6.0 * ink.text, lay.y + lay.size - 6.0 * ink.text);
+                .max(lay.y + 6.0 * ink.text)
+                .min(lay.y + lay.size - 6.0 * ink.text);
             let text = legend_value(lo + t * (hi - lo));
             if let Ok(m) = ctx.measure_text(&text) {
                 widest = widest.max(m.width());

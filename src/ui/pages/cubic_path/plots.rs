@@ -67,7 +67,9 @@ impl Plots {
                     return;
                 };
                 let (x0, x1) = page.plots.borrow().x_range;
-                let t = snap(t.clamp(x0.max(0.01), x1), 0.01);
+                // max then min: with T under 0.01 s the axis ends before 0.01, where
+                // clamp's bounds would cross and panic.
+                let t = snap(t.max(x0.max(0.01)).min(x1), 0.01);
                 let q = snap(q, 0.01);
                 if let Some(p) = page
                     .shell

@@ -149,7 +149,8 @@ impl HeatPanel {
             ctx.set_line_width(1.5 * ink.line);
             let _ = ctx.set_line_dash(&dash(5.0 * ink.line, 4.0 * ink.line));
             for q2 in [-PI, 0.0, PI] {
-                let y = lay.y_of(q2).clamp(lay.y + 1.0, lay.y + lay.size - 1.0);
+                // max then min: a panel under 2 px would make clamp's bounds cross.
+                let y = lay.y_of(q2).max(lay.y + 1.0).min(lay.y + lay.size - 1.0);
                 ctx.begin_path();
                 ctx.move_to(lay.x, y);
                 ctx.line_to(lay.x + lay.size, y);
