@@ -353,8 +353,18 @@ impl Plot {
         let k = dpr * ink.text;
         let margin = (8.0 * dpr * ink.text.sqrt()).round() as i32;
         let x_label = (34.0 * k).round() as i32;
-        let y_label = (74.0 * k).round() as i32;
         let font = ink.text_px(12.0) * dpr;
+        // What the margins leave for the y labels and the plotting area. On a very narrow
+        // canvas with projector type the full label area would leave plotters a plotting area
+        // of negative width, where it lays the labels out as if on the right and measures
+        // them through an inline-styled <span> (blocked by the CSP). So the labels take at
+        // most half of the room, and with no room to speak of only the background is drawn.
+        let room = w as i32 - 2 * margin - (1.2 * font) as i32;
+        if room < (4.0 * font) as i32 {
+            self.areas.clear();
+            return Ok(());
+        }
+        let y_label = ((74.0 * k).round() as i32).min(room / 2);
         let n = spec.panels.len().max(1) as i32;
         let backend =
             CanvasBackend::with_canvas_object(layer.canvas.clone()).ok_or("no canvas backend")?;
