@@ -45,7 +45,7 @@ pub fn page() -> String {
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"rrt-layer\" data-testid=\"rrt-2d-canvas\" tabindex=\"0\" role=\"img\" \
-         data-i18n-attr=\"aria-label=rrt-canvas-label\"></canvas></div>\
+         data-i18n-attr=\"aria-label=rrt-canvas-label\" aria-describedby=\"rrt-readouts\"></canvas></div>\
          <div class=\"rrt-tools\">\
          <button type=\"button\" class=\"button\" data-action=\"add-box\" data-i18n=\"rrt-add-box\"></button>\
          <button type=\"button\" class=\"button\" data-action=\"delete-box\" data-i18n=\"rrt-delete-box\"></button>\
