@@ -78,8 +78,8 @@ pub fn page() -> String {
          <p class=\"ume-message\" data-{P}=\"message\" data-testid=\"umeyama-2d-message\" role=\"status\" hidden></p>\
          <p class=\"sig-note\" data-i18n=\"umeyama-view-note\"></p>\
          <div data-{P}=\"stepper\"></div>\
-         <div class=\"ume-step\" data-testid=\"umeyama-2d-step\" aria-live=\"polite\">\
-         <h3 data-{P}=\"step-title\"></h3><p data-{P}=\"step-text\"></p>\
+         <div class=\"ume-step\" data-testid=\"umeyama-2d-step\">\
+         <h3 data-{P}=\"step-title\" aria-live=\"polite\"></h3><p data-{P}=\"step-text\"></p>\
          <div class=\"ume-mats\" data-{P}=\"step-mats\"></div></div></section>\
          <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"umeyama-ro-title\"></h2>{table}{live}\
          <p class=\"sig-note\" data-i18n=\"umeyama-ro-note\"></p></section>\
