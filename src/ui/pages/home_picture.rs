@@ -11,9 +11,16 @@ use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement};
 use crate::ui::{dom, schedule};
 use crate::view::card_picture::{self, Mark, Picture};
 use crate::view::heatmap;
+use crate::view::palette;
 
-/// Okabe–Ito colours of the palette slots (`card_picture::series`).
-const PALETTE: [&str; 5] = ["#0072B2", "#E69F00", "#009E73", "#B8BEC6", "#D55E00"];
+/// Okabe–Ito colours of the palette slots (`card_picture::series`; slot 3 is a neutral grey).
+const PALETTE: [&str; 5] = [
+    palette::BLUE.hex,
+    palette::ORANGE.hex,
+    palette::BLUISH_GREEN.hex,
+    "#B8BEC6",
+    palette::VERMILION.hex,
+];
 
 /// The element id of recipe `id`'s card blurb, the picture's description.
 pub(crate) fn blurb_id(id: &str) -> String {
