@@ -422,3 +422,38 @@ test('prefers-reduced-motion: nothing plays by itself, the DH walk jumps, no CSS
     await close();
   }
 });
+
+test('the RRT world by keyboard: n chooses start, goal or a box, Shift + arrows move it as a drag would (URL, refusals), Delete removes the box', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/rrt-2d');
+  try {
+    await page.waitForSelector('[data-testid="rrt-2d-canvas"]');
+    const target = page.locator('[data-testid="rrt-2d-key-target"]');
+    await page.locator('[data-testid="rrt-2d-canvas"]').focus();
+    await page.keyboard.press('n');
+    assert.equal(await target.textContent(), 'Shift + arrows move the start.');
+    for (let k = 0; k < 3; k++) await page.keyboard.press('Shift+ArrowRight');
+    await page.keyboard.press('Shift+ArrowUp');
+    await page.waitForFunction(() => /start=0\.13(%2C|,)0\.11/.test(location.hash), null, { timeout: 3000 });
+    assert.equal(await page.locator('[data-readout="iteration"]').textContent(), '0', 'the run starts again');
+    // Out of the square is refused with the drag's message; the start stays at the edge.
+    for (let k = 0; k < 12; k++) await page.keyboard.press('Shift+ArrowDown');
+    await page.waitForFunction(() => /start=0\.13(%2C|,)0(&|$)/.test(location.hash), null, { timeout: 3000 });
+    assert.match(await page.locator('[data-testid="rrt-2d-world-message"]').textContent(), /start/);
+    // The goal, then the recipe's box: pushed into the box, the goal is refused with the message.
+    await page.keyboard.press('n');
+    assert.equal(await target.textContent(), 'Shift + arrows move the goal.');
+    await page.keyboard.press('n');
+    assert.equal(await target.textContent(), 'Shift + arrows move box 1.');
+    await page.keyboard.press('Shift+ArrowDown');
+    await page.waitForFunction(() => /obstacle=/.test(location.hash), null, { timeout: 3000 });
+    await page.keyboard.press('Delete');
+    await page.waitForFunction(() => /obstacle=none/.test(location.hash), null, { timeout: 3000 });
+    assert.equal(await target.isVisible(), false);
+    // Keys of the ? overlay.
+    await page.keyboard.press('?');
+    assert.match(await page.locator('[data-testid="page-keys"]').innerText(), /Shift \+ arrows move/);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

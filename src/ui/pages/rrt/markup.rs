@@ -53,6 +53,7 @@ pub fn page() -> String {
          <label class=\"rrt-switch\"><input type=\"checkbox\" data-rrt=\"substep-mode\">\
          <span data-i18n=\"rrt-substep-mode\"></span></label></div>\
          <p class=\"rrt-refusal\" data-rrt=\"world-message\" data-testid=\"rrt-2d-world-message\" role=\"alert\" hidden></p>\
+         <p class=\"rrt-note\" data-rrt=\"key-target\" data-testid=\"rrt-2d-key-target\" role=\"status\" hidden></p>\
          <p class=\"rrt-note\" data-i18n=\"rrt-world-note\"></p></section>\
          <div class=\"rrt-side\">\
          <section class=\"rrt-card\"><h2 data-i18n=\"rrt-sub-title\"></h2>\
