@@ -156,6 +156,14 @@ test('Tab alone reaches every visible control of every route, each with a visibl
         }
         if (!f.visible || f.ring === c.ring) problems.push(`${route}: ${c.what} shows no focus ring (${f.ring})`);
       }
+      // A canvas that takes focus takes keys: the ? overlay lists the page's.
+      if (controls.some((c) => c.what.startsWith('canvas'))) {
+        await page.evaluate(() => document.activeElement?.blur());
+        await page.keyboard.press('?');
+        const keys = await page.locator('[data-testid="page-keys"] dt').count();
+        if (!keys) problems.push(`${route}: a focusable canvas but no page keys in the ? overlay`);
+        await page.keyboard.press('Escape');
+      }
     }
     assert.deepEqual(problems, []);
     assert.deepEqual(errors, []);
