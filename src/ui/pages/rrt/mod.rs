@@ -12,7 +12,7 @@
 //! corner, move the start or the goal) go through `crate::view::rrt::drag`, which refuses a
 //! start or goal inside a box or outside the square with a message; every edit restarts the
 //! run at iteration 0. The same edits by keyboard (on the focused view or the page): `n`
-//! chooses the start, the goal or a box in turn, Shift + arrows move it by [`KEY_STEP`]
+//! chooses the start, the goal or a box in turn, Shift + arrows move it by 0.01
 //! through the same `drag`, Delete removes the selected box.
 
 mod exports;
