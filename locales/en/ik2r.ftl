@@ -46,7 +46,7 @@ ik2r-live-summary = Arm at q1 { $q1 }°, q2 { $q2 }°; tip at x { $x } mm, y { $
 
 ## Heatmap
 ik2r-heatmap-title = Manipulability over joint space
-ik2r-heatmap-label = Heatmap of |det J| over q1 and q2 from −π to π, with the current pose marked.
+ik2r-heatmap-label = Heatmap of |det J| over q1 and q2 from −π to π, with the current pose marked. Arrow keys move the marker.
 ik2r-heatmap-hint = Colour: |det J| for every pair (q1, q2); the white circle is the current pose. Point at a cell to preview its pose as a grey ghost arm; click or tap to jump there. Red dashed lines: the singular poses q2 = 0 (stretched) and q2 = ±π (folded).
 ik2r-heatmap-axis-q1 = q1 [rad]
 ik2r-heatmap-axis-q2 = q2 [rad]
@@ -97,6 +97,7 @@ ik2r-dl-missing-file = the { $recipe } recipe wrote no file named { $file }.
 
 ## Shortcuts (the ? overlay)
 ik2r-key-nudge = Move the tip 1 mm (with Shift: 10 mm)
+ik2r-key-heatmap = On the focused heatmap: move the pose marker (← → q1, ↓ ↑ q2, 0.01 rad; with Shift: 0.1 rad)
 ik2r-key-q1 = Turn q1 by 0.01 rad (with Shift: 0.1 rad)
 ik2r-key-q2 = Turn q2 by 0.01 rad (with Shift: 0.1 rad)
 ik2r-key-elbow = Flip the elbow (the other IK solution)

@@ -27,6 +27,7 @@ overlay-close = Close
 overlay-shell-heading = Everywhere
 overlay-page-heading = On this page
 overlay-page-none = This page has no keys of its own.
+overlay-access = Tab reaches every control; a drawing you can drag also takes keys once focused (listed above). Plot colours are the colour-blind-safe Okabe–Ito set and heatmaps use viridis; with your system's “reduce motion” setting nothing plays by itself.
 overlay-note = Everywhere keys do nothing while you type in a field. Page keys work while the page or its drawing has focus, not while a button, link or field has it (click the page first). Other keys of a presenter remote, such as B and ., stay with the browser and the presentation software.
 key-help = Show or hide this list
 key-projector = Projector mode on or off

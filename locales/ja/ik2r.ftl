@@ -46,7 +46,7 @@ ik2r-live-summary = アームは q1 { $q1 }°、q2 { $q2 }°；手先は x { $x 
 
 ## ヒートマップ
 ik2r-heatmap-title = 関節空間での可操作度
-ik2r-heatmap-label = q1 と q2 を −π から π まで変えたときの |det J| のヒートマップ。現在の姿勢に印があります。
+ik2r-heatmap-label = q1 と q2 を −π から π まで変えたときの |det J| のヒートマップ。現在の姿勢に印があります。矢印キーで印を動かせます。
 ik2r-heatmap-hint = 色は (q1, q2) の組ごとの |det J| で、白い丸が現在の姿勢です。セルにポインタを合わせると、その姿勢が灰色の影のアームで表示され、クリックまたはタップするとその姿勢に移ります。赤い破線は特異姿勢 q2 = 0（伸びきった状態）と q2 = ±π（折りたたんだ状態）です。
 ik2r-heatmap-axis-q1 = q1 [rad]
 ik2r-heatmap-axis-q2 = q2 [rad]
@@ -97,6 +97,7 @@ ik2r-dl-missing-file = { $recipe } レシピは { $file } というファイル�
 
 ## ショートカット（? の一覧）
 ik2r-key-nudge = 手先を 1 mm 動かす（Shift を押しながらで 10 mm）
+ik2r-key-heatmap = ヒートマップにフォーカスがあるとき：姿勢の印を動かす（← → で q1、↓ ↑ で q2 を 0.01 rad。Shift を押しながらで 0.1 rad）
 ik2r-key-q1 = q1 を 0.01 rad 回す（Shift を押しながらで 0.1 rad）
 ik2r-key-q2 = q2 を 0.01 rad 回す（Shift を押しながらで 0.1 rad）
 ik2r-key-elbow = 肘を反転する（もう一方の IK 解）

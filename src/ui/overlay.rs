@@ -67,6 +67,10 @@ pub(crate) fn open(shell_keys: &[Shortcut], page_keys: &[Shortcut]) -> Result<()
         dom::append(&dialog, &key_list(page_keys, "page-keys")?)?;
     }
     dom::append(&dialog, &dom::el_i18n("p", "overlay-note", "overlay-note")?)?;
+    dom::append(
+        &dialog,
+        &dom::el_i18n("p", "overlay-note", "overlay-access")?,
+    )?;
     dom::append(&backdrop, &dialog)?;
 
     let body = document

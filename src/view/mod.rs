@@ -7,6 +7,7 @@
 //! - [`stepper`]: the stepper's state machine (step, back, play at a speed, scrub).
 //! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
+//! - [`palette`]: the Okabe–Ito colours of plot series and view marks (colour-blind safe).
 //! - [`card_picture`]: the home page's recipe-card pictures, drawn from each kernel's defaults.
 //! - [`camera3d`]: the orbit camera of the 3D views (projection, orbit, zoom, presets, hits).
 //! - [`drill_chain`]: the seed's "next step" chain of drills at the foot of each drill page.
@@ -50,6 +51,7 @@ pub mod form;
 pub mod heatmap;
 pub mod ik2r;
 pub mod lesson;
+pub mod palette;
 pub mod pendulum;
 pub mod pid_step;
 pub mod plot;

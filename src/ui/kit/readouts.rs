@@ -24,9 +24,11 @@ use crate::ui::schedule::now_ms;
 pub const ANNOUNCE_GAP_MS: f64 = 1000.0;
 
 /// A `<dl>` of readouts: `(key, label Fluent id)` each, values filled by [`Readouts::set`].
+/// Its element id is `<prefix>-readouts` (a canvas's `aria-describedby`: the readouts are
+/// its text alternative).
 pub fn markup(prefix: &str, items: &[(&str, &str)]) -> String {
     let p = escape(prefix);
-    let mut html = format!("<dl class=\"kit-readouts {p}-readouts\">");
+    let mut html = format!("<dl class=\"kit-readouts {p}-readouts\" id=\"{p}-readouts\">");
     for (key, label) in items {
         html.push_str(&format!(
             "<div class=\"kit-readout {p}-readout\"><dt data-i18n=\"{label}\"></dt>\
@@ -48,10 +50,11 @@ pub struct ReadoutRow<'a> {
 }
 
 /// A `<dl>` of rows of readouts, each value followed by its unit (classes `kit-*` and
-/// `<prefix>-*`).
+/// `<prefix>-*`; element id `<prefix>-readouts-list`).
 pub fn markup_rows(prefix: &str, rows: &[ReadoutRow]) -> String {
     let p = escape(prefix);
-    let mut html = format!("<dl class=\"kit-readouts {p}-readouts-list\">");
+    let mut html =
+        format!("<dl class=\"kit-readouts {p}-readouts-list\" id=\"{p}-readouts-list\">");
     for row in rows {
         html.push_str(&format!(
             "<div class=\"kit-readout {p}-readout\"><dt data-i18n=\"{}\"></dt><dd>",

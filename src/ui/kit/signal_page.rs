@@ -160,7 +160,8 @@ fn markup<S: SignalPage>() -> String {
          <p class=\"sig-lede\" data-i18n=\"recipe-{id}-blurb\"></p>{notice}</header>\
          <div class=\"sig-top\"><section class=\"sig-card\"><h2 data-i18n=\"{p}-plots-title\"></h2>\
          <div class=\"sig-stage\" data-{p}=\"stage\">{under}<canvas class=\"sig-layer\" \
-         data-testid=\"{id}-canvas\" role=\"img\" tabindex=\"0\" data-i18n-attr=\"aria-label={p}-canvas-label\"></canvas></div>\
+         data-testid=\"{id}-canvas\" role=\"img\" tabindex=\"0\" data-i18n-attr=\"aria-label={p}-canvas-label\" \
+         aria-describedby=\"{p}-readouts\"></canvas></div>\
          {stage_extra}</section>\
          <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}{ro_extra}</section>\
          <section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\

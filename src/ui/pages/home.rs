@@ -153,7 +153,10 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
     item.set_attribute("data-recipe", id)?;
     append(&item, &el_i18n("h3", "", &info.title_id())?)?;
     append(&item, &home_picture::canvas(id)?)?;
-    append(&item, &el_i18n("p", "blurb", &info.blurb_id())?)?;
+    let blurb = el_i18n("p", "blurb", &info.blurb_id())?;
+    // The picture's text alternative (`aria-describedby` of its canvas).
+    blurb.set_id(&home_picture::blurb_id(id));
+    append(&item, &blurb)?;
     // The live page that runs it (from the recipe's facts): "Pairs with … →", linked.
     let live_page = info.page.and_then(pages::find);
     if let Some(def) = live_page {

@@ -11,16 +11,30 @@ use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement};
 use crate::ui::{dom, schedule};
 use crate::view::card_picture::{self, Mark, Picture};
 use crate::view::heatmap;
+use crate::view::palette;
 
-/// Okabe–Ito colours of the palette slots (`card_picture::series`).
-const PALETTE: [&str; 5] = ["#0072B2", "#E69F00", "#009E73", "#B8BEC6", "#D55E00"];
+/// Okabe–Ito colours of the palette slots (`card_picture::series`; slot 3 is a neutral grey).
+const PALETTE: [&str; 5] = [
+    palette::BLUE.hex,
+    palette::ORANGE.hex,
+    palette::BLUISH_GREEN.hex,
+    "#B8BEC6",
+    palette::VERMILION.hex,
+];
 
-/// The (empty) canvas of recipe `id`'s card, named for screen readers.
+/// The element id of recipe `id`'s card blurb, the picture's description.
+pub(crate) fn blurb_id(id: &str) -> String {
+    format!("recipe-blurb-{id}")
+}
+
+/// The (empty) canvas of recipe `id`'s card, named for screen readers and described by the
+/// card's blurb (element [`blurb_id`]).
 pub(crate) fn canvas(id: &str) -> Result<Element, JsValue> {
     let canvas = dom::el_class("canvas", "card-picture")?;
     canvas.set_attribute("data-testid", &format!("card-picture-{id}"))?;
     canvas.set_attribute("data-recipe", id)?;
     canvas.set_attribute("role", "img")?;
+    canvas.set_attribute("aria-describedby", &blurb_id(id))?;
     dom::set_i18n_attrs(&canvas, &[("aria-label", &format!("home-picture-{id}"))])?;
     Ok(canvas)
 }

@@ -19,11 +19,14 @@ use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, SignalPage, SignalPlot};
 use crate::view::cubic_path::{quintic, ranges, time_range, trapezoid};
+use crate::view::palette;
 use crate::view::signal::{nice_range, snap};
 
 /// Colours: the cubic, the quintic, the trapezoid, the cursor.
-const C_CUBIC: (u8, u8, u8) = (26, 77, 143);
-const C_OVERLAY: [(u8, u8, u8); 2] = [(124, 58, 237), (21, 128, 61)];
+/// The three curves meet at both ends: Okabe–Ito blue, reddish purple and bluish green stay
+/// apart with every common colour-vision deficiency.
+const C_CUBIC: (u8, u8, u8) = palette::BLUE.rgb;
+const C_OVERLAY: [(u8, u8, u8); 2] = [palette::REDDISH_PURPLE.rgb, palette::BLUISH_GREEN.rgb];
 const C_CURSOR: (u8, u8, u8) = (194, 65, 12);
 
 /// The plots component.

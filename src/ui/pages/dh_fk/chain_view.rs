@@ -7,6 +7,7 @@ use glam::{DMat3, DMat4, DVec3};
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
+use super::markup::P;
 use crate::ui::kit::canvas::{Ink, LayeredCanvas};
 use crate::ui::kit::orbit::{paint, OrbitOptions, OrbitView};
 use crate::view::camera3d::{Camera, Preset};
@@ -141,8 +142,13 @@ impl ChainView {
         options.preset = preset;
         options.stage_class = "dh-stage";
         options.on_view = Some(Box::new(on_view));
+        let orbit = OrbitView::new(slot, options, draw)?;
+        // The readouts (every frame's pose, the tip) are the view's text alternative.
+        orbit
+            .canvas_element()
+            .set_attribute("aria-describedby", &format!("{P}-readouts"))?;
         Ok(ChainView {
-            orbit: OrbitView::new(slot, options, draw)?,
+            orbit,
             scene: std::cell::RefCell::new(Scene::new()),
         })
     }

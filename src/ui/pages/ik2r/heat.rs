@@ -58,6 +58,12 @@ impl HeatPanel {
         self.stage.clone()
     }
 
+    /// Whether `target` (a key's) is the heatmap's focusable canvas.
+    pub fn is_canvas(&self, target: Option<web_sys::EventTarget>) -> bool {
+        let canvas: &web_sys::EventTarget = self.top.as_ref();
+        target.is_some_and(|t| &t == canvas)
+    }
+
     pub fn attach(&mut self, weak: &Weak<Page>) -> Result<(), JsValue> {
         let (w_hit, w_on) = (weak.clone(), weak.clone());
         self.drag = Some(Drag::attach(

@@ -31,7 +31,7 @@ pub fn page() -> String {
 {strip}<div class=\"ik2r-stage ik2r-stage-arm\" data-ik2r=\"arm-stage\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"arm-bg\" aria-hidden=\"true\"></canvas>\
 <canvas class=\"ik2r-layer ik2r-interactive\" data-ik2r=\"arm-fg\" data-testid=\"ik-2r-canvas\" role=\"img\" tabindex=\"0\" \
-data-i18n-attr=\"aria-label=ik2r-canvas-label\"></canvas>\
+data-i18n-attr=\"aria-label=ik2r-canvas-label\" aria-describedby=\"ik2r-readouts-list\"></canvas>\
 <p class=\"ik2r-clamp\" data-ik2r=\"clamp-note\" data-testid=\"ik-2r-clamp-note\" role=\"status\" data-i18n=\"ik2r-clamped\" hidden></p>\
 </div>\
 {live}\
@@ -43,18 +43,18 @@ data-i18n-attr=\"aria-label=ik2r-canvas-label\"></canvas>\
 <section class=\"ik2r-card ik2r-heat\"><h2 data-i18n=\"ik2r-heatmap-title\"></h2>\
 <div class=\"ik2r-stage ik2r-stage-heat\" data-ik2r=\"heat-stage\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"heat-bg\" aria-hidden=\"true\"></canvas>\
-<canvas class=\"ik2r-layer ik2r-interactive\" data-ik2r=\"heat-fg\" data-testid=\"ik-2r-heatmap\" role=\"img\" \
-data-i18n-attr=\"aria-label=ik2r-heatmap-label\"></canvas></div>\
+<canvas class=\"ik2r-layer ik2r-interactive\" data-ik2r=\"heat-fg\" data-testid=\"ik-2r-heatmap\" role=\"img\" tabindex=\"0\" \
+data-i18n-attr=\"aria-label=ik2r-heatmap-label\" aria-describedby=\"ik2r-heat-hint ik2r-readouts-list\"></canvas></div>\
 <p class=\"ik2r-hover\" data-ik2r=\"heat-hover\" data-testid=\"ik-2r-heatmap-hover\"></p>\
-<p class=\"ik2r-hint\" data-i18n=\"ik2r-heatmap-hint\"></p></section>\
+<p class=\"ik2r-hint\" id=\"ik2r-heat-hint\" data-i18n=\"ik2r-heatmap-hint\"></p></section>\
 </div></div>\
 <div class=\"ik2r-mid\">\
 <section class=\"ik2r-card ik2r-plots\"><h2 data-i18n=\"ik2r-plot-title\"></h2>\
-<p class=\"ik2r-hint\" data-i18n=\"ik2r-plot-hint\"></p>\
+<p class=\"ik2r-hint\" id=\"ik2r-plot-hint\" data-i18n=\"ik2r-plot-hint\"></p>\
 <div class=\"ik2r-stage ik2r-stage-plot\" data-ik2r=\"plot-stage\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"plot-bg\" aria-hidden=\"true\"></canvas>\
 <canvas class=\"ik2r-layer\" data-ik2r=\"plot-fg\" data-testid=\"ik-2r-plot\" role=\"img\" \
-data-i18n-attr=\"aria-label=ik2r-plot-label\"></canvas>\
+data-i18n-attr=\"aria-label=ik2r-plot-label\" aria-describedby=\"ik2r-plot-hint ik2r-readouts-list\"></canvas>\
 <canvas class=\"ik2r-layer\" data-ik2r=\"plot-cursor\" aria-hidden=\"true\"></canvas></div></section>\
 <section class=\"ik2r-card ik2r-params\"><h2 data-i18n=\"ik2r-params-title\"></h2>\
 <p class=\"ik2r-hint\" data-i18n=\"ik2r-params-hint\"></p>\

@@ -328,6 +328,11 @@ impl Page {
         }
     }
 
+    /// Whether a key's `target` is the heatmap (its arrows turn the joints).
+    fn is_heatmap(&self, target: Option<web_sys::EventTarget>) -> bool {
+        self.heat.try_borrow().is_ok_and(|h| h.is_canvas(target))
+    }
+
     /// Turns the joints by `(d1, d2)` rad.
     fn turn(&self, d1: f64, d2: f64) {
         let (q1, q2) = {

@@ -12,13 +12,16 @@ use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
 use crate::view::ik2r::{marker_in_range, sweep_points, sweep_ranges, Params, State};
+use crate::view::palette;
 
-/// Series colours (top: det J, w; bottom: σ_min, σ_max) and the cursor's.
-const C_DET: (u8, u8, u8) = (31, 119, 180);
-const C_W: (u8, u8, u8) = (240, 150, 40);
-const C_SMIN: (u8, u8, u8) = (44, 160, 44);
-const C_SMAX: (u8, u8, u8) = (148, 103, 189);
-const C_NOW: (u8, u8, u8) = (217, 72, 15);
+/// Series colours (top: det J, w; bottom: σ_min, σ_max) and the cursor's, Okabe–Ito: the
+/// pairs of a panel and the cursor stay apart with every common colour-vision deficiency (the
+/// light orange is the wide line).
+const C_DET: (u8, u8, u8) = palette::BLUE.rgb;
+const C_W: (u8, u8, u8) = palette::ORANGE.rgb;
+const C_SMIN: (u8, u8, u8) = palette::BLUISH_GREEN.rgb;
+const C_SMAX: (u8, u8, u8) = palette::REDDISH_PURPLE.rgb;
+const C_NOW: (u8, u8, u8) = palette::VERMILION.rgb;
 
 /// The sweep plot component.
 pub(super) struct SweepPlot {

@@ -15,8 +15,8 @@ pub fn page() -> String {
          <div class=\"pend-top\">\
          <section class=\"pend-card\"><h2 data-i18n=\"pendulum-view-title\"></h2>\
          <div class=\"pend-stage pend-stage-view\" data-pend=\"view-stage\">\
-         <canvas class=\"pend-layer\" data-testid=\"pendulum-energy-canvas\" tabindex=\"0\" \
-         data-i18n-attr=\"aria-label=pendulum-canvas-label\"></canvas></div>\
+         <canvas class=\"pend-layer\" data-testid=\"pendulum-energy-canvas\" role=\"img\" tabindex=\"0\" \
+         data-i18n-attr=\"aria-label=pendulum-canvas-label\" aria-describedby=\"pend-readouts\"></canvas></div>\
          <div class=\"pend-end\" data-pend=\"end\" role=\"status\" hidden>\
          <p data-pend=\"end-text\"></p><div class=\"pend-buttons\">\
          <button type=\"button\" class=\"button primary\" data-action=\"replay\" data-i18n=\"pendulum-replay\"></button>\
@@ -35,11 +35,13 @@ pub fn page() -> String {
          <div class=\"pend-plots\">\
          <div class=\"pend-stage pend-stage-time\" data-pend=\"time-stage\">\
          <canvas class=\"pend-layer\" aria-hidden=\"true\"></canvas><canvas class=\"pend-layer\" aria-hidden=\"true\"></canvas>\
-         <canvas class=\"pend-layer\" role=\"img\" data-i18n-attr=\"aria-label=pendulum-plot-label\"></canvas></div>\
+         <canvas class=\"pend-layer\" role=\"img\" data-i18n-attr=\"aria-label=pendulum-plot-label\" \
+         aria-describedby=\"pend-readouts pend-plots-note\"></canvas></div>\
          <div class=\"pend-stage pend-stage-phase\" data-pend=\"phase-stage\">\
          <canvas class=\"pend-layer\" aria-hidden=\"true\"></canvas><canvas class=\"pend-layer\" aria-hidden=\"true\"></canvas>\
-         <canvas class=\"pend-layer\" role=\"img\" data-i18n-attr=\"aria-label=pendulum-phase-label\"></canvas></div>\
-         </div><p class=\"pend-note\" data-i18n=\"pendulum-plots-note\"></p></section>\
+         <canvas class=\"pend-layer\" role=\"img\" data-i18n-attr=\"aria-label=pendulum-phase-label\" \
+         aria-describedby=\"pend-readouts pend-plots-note\"></canvas></div>\
+         </div><p class=\"pend-note\" id=\"pend-plots-note\" data-i18n=\"pendulum-plots-note\"></p></section>\
          <div class=\"pend-mid\">\
          <section class=\"pend-card\"><h2 data-i18n=\"pendulum-params-title\"></h2>\
          <form class=\"pend-form\" data-pend=\"form\" novalidate></form></section>\

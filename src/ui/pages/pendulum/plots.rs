@@ -11,6 +11,7 @@ use crate::recipes::pendulum_energy::Integrator;
 use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
+use crate::view::palette;
 use crate::view::pendulum::{separatrix, Track};
 
 /// The error panel's range (log axis): from rounding-error level to far beyond blow-up.
@@ -92,12 +93,14 @@ impl Plots {
                 ctx::t(id)
             }
         };
-        // Colours per track (the page's integrator first, the second one's distinct hues):
-        // ke, pe, total, true energy (also the angle, rate, error and phase curves).
-        const KE: [(u8, u8, u8); 2] = [(23, 190, 207), (140, 86, 75)];
-        const PE: [(u8, u8, u8); 2] = [(255, 127, 14), (227, 119, 194)];
-        const TOTAL: [(u8, u8, u8); 2] = [(44, 160, 44), (188, 189, 34)];
-        const TRUE: [(u8, u8, u8); 2] = [(31, 119, 180), (124, 58, 237)];
+        // Okabe–Ito colours per track (the page's integrator first, the second one's other
+        // hues): ke, pe, total, true energy (also the angle, rate, error and phase curves).
+        // KE and PE cross and the total lies on the true energy: each pair stays apart with
+        // every common colour-vision deficiency (the total is black, the true energy blue).
+        const KE: [(u8, u8, u8); 2] = [palette::VERMILION.rgb, palette::ORANGE.rgb];
+        const PE: [(u8, u8, u8); 2] = [palette::SKY_BLUE.rgb, palette::REDDISH_PURPLE.rgb];
+        const TOTAL: [(u8, u8, u8); 2] = [palette::BLACK.rgb, (110, 110, 110)];
+        const TRUE: [(u8, u8, u8); 2] = [palette::BLUE.rgb, palette::BLUISH_GREEN.rgb];
         let mut energy = Vec::new();
         let mut theta = Vec::new();
         let mut omega = Vec::new();

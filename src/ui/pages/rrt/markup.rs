@@ -45,7 +45,7 @@ pub fn page() -> String {
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"rrt-layer\" data-testid=\"rrt-2d-canvas\" tabindex=\"0\" role=\"img\" \
-         data-i18n-attr=\"aria-label=rrt-canvas-label\"></canvas></div>\
+         data-i18n-attr=\"aria-label=rrt-canvas-label\" aria-describedby=\"rrt-readouts\"></canvas></div>\
          <div class=\"rrt-tools\">\
          <button type=\"button\" class=\"button\" data-action=\"add-box\" data-i18n=\"rrt-add-box\"></button>\
          <button type=\"button\" class=\"button\" data-action=\"delete-box\" data-i18n=\"rrt-delete-box\"></button>\
@@ -53,6 +53,7 @@ pub fn page() -> String {
          <label class=\"rrt-switch\"><input type=\"checkbox\" data-rrt=\"substep-mode\">\
          <span data-i18n=\"rrt-substep-mode\"></span></label></div>\
          <p class=\"rrt-refusal\" data-rrt=\"world-message\" data-testid=\"rrt-2d-world-message\" role=\"alert\" hidden></p>\
+         <p class=\"rrt-note\" data-rrt=\"key-target\" data-testid=\"rrt-2d-key-target\" role=\"status\" hidden></p>\
          <p class=\"rrt-note\" data-i18n=\"rrt-world-note\"></p></section>\
          <div class=\"rrt-side\">\
          <section class=\"rrt-card\"><h2 data-i18n=\"rrt-sub-title\"></h2>\

@@ -11,7 +11,9 @@
 //! stepper's model) and wires them: the world editor's drags (move a box, resize it by a
 //! corner, move the start or the goal) go through `crate::view::rrt::drag`, which refuses a
 //! start or goal inside a box or outside the square with a message; every edit restarts the
-//! run at iteration 0.
+//! run at iteration 0. The same edits by keyboard (on the focused view or the page): `n`
+//! chooses the start, the goal or a box in turn, Shift + arrows move it by 0.01
+//! through the same `drag`, Delete removes the selected box.
 
 mod exports;
 mod markup;
@@ -63,6 +65,8 @@ const URL_EVERY_MS: f64 = 500.0;
 const FRAME_BUDGET_MS: f64 = 1.5;
 /// Runs up to this budget restart on every move of a drag; bigger ones when it ends.
 const LIVE_RESTART_MAX_ITER: usize = 20_000;
+/// How far Shift + an arrow moves the start, the goal or a box (world units: the square is 1).
+const KEY_STEP: f64 = 0.01;
 
 /// Longest slice of the run to its end per main-thread task, ms (the page stays responsive:
 /// no task near 100 ms whatever `max_iter`).
@@ -166,6 +170,10 @@ struct Inner {
     dragging: RefCell<Option<DragStart>>,
     hover: Cell<Option<Grab>>,
     selected: Cell<Option<usize>>,
+    /// What Shift + arrows move (chosen with `n`).
+    key_grab: Cell<Option<Grab>>,
+    /// Says what Shift + arrows move.
+    key_target: Element,
     refusal: Cell<Option<Refusal>>,
     world_message: Element,
     substeps: substeps::SubSteps,
@@ -221,6 +229,7 @@ impl Page for RrtPage {
         let start_it = state.it;
         let stepper_slot: Element = role(&root, "stepper")?;
         let world_message: Element = role(&root, "world-message")?;
+        let key_target: Element = role(&root, "key-target")?;
         let substep_mode: HtmlInputElement = role(&root, "substep-mode")?;
         let finishing: Element = role(&root, "finishing")?;
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
@@ -246,6 +255,8 @@ impl Page for RrtPage {
                 dragging: RefCell::new(None),
                 hover: Cell::new(None),
                 selected: Cell::new(None),
+                key_grab: Cell::new(None),
+                key_target,
                 refusal: Cell::new(None),
                 world_message,
                 substeps,
@@ -286,7 +297,22 @@ impl Page for RrtPage {
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
-        keymap::STEPPER.to_vec()
+        let mut keys = keymap::STEPPER.to_vec();
+        keys.extend([
+            Shortcut {
+                keys: "n",
+                message_id: "rrt-key-select",
+            },
+            Shortcut {
+                keys: "Shift + ← ↑ → ↓",
+                message_id: "rrt-key-move",
+            },
+            Shortcut {
+                keys: "Delete",
+                message_id: "rrt-key-delete",
+            },
+        ]);
+        keys
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
@@ -463,6 +489,94 @@ impl Inner {
     /// Keys: in sub-step mode the step keys walk the sub-steps (as the step buttons do); the
     /// stepper's otherwise.
     fn on_key(&self, event: &KeyboardEvent) -> bool {
+        if !keymap::has_command_modifier(event) {
+            let step = |dx: f64, dy: f64| self.nudge_world([dx * KEY_STEP, dy * KEY_STEP]);
+            match (event.key().as_str(), event.shift_key()) {
+                ("n" | "N", _) => self.choose_key_target(),
+                ("ArrowLeft", true) => step(-1.0, 0.0),
+                ("ArrowRight", true) => step(1.0, 0.0),
+                ("ArrowUp", true) => step(0.0, 1.0),
+                ("ArrowDown", true) => step(0.0, -1.0),
+                ("Delete", _) if self.selected.get().is_some() => self.delete_box(),
+                _ => {
+                    return self.on_stepper_key(event);
+                }
+            }
+            return true;
+        }
+        self.on_stepper_key(event)
+    }
+
+    /// `n`: the next thing Shift + arrows move (the start, the goal, each box, round again).
+    fn choose_key_target(&self) {
+        let boxes = self.state.borrow().obstacles.len();
+        let next = match self.key_grab.get() {
+            None => Grab::Start,
+            Some(Grab::Start) => Grab::Goal,
+            Some(Grab::Goal) if boxes > 0 => Grab::Box(0),
+            Some(Grab::Box(i) | Grab::Corner(i, _)) if i + 1 < boxes => Grab::Box(i + 1),
+            _ => Grab::Start,
+        };
+        self.key_grab.set(Some(next));
+        self.selected.set(match next {
+            Grab::Box(i) => Some(i),
+            _ => None,
+        });
+        self.hover.set(Some(next));
+        self.show_key_target();
+        self.update_marks();
+    }
+
+    /// Shows what Shift + arrows move (in the current language), or nothing.
+    fn show_key_target(&self) {
+        let text = self.key_grab.get().map(|grab| {
+            let what = match grab {
+                Grab::Start => ctx::t("rrt-point-start"),
+                Grab::Goal => ctx::t("rrt-point-goal"),
+                Grab::Box(i) | Grab::Corner(i, _) => {
+                    ctx::t_args("rrt-box-n", &[("n", FluentArg::Number((i + 1) as f64))])
+                }
+            };
+            ctx::t_args("rrt-key-target", &[("what", FluentArg::Text(what))])
+        });
+        self.key_target.set_text_content(text.as_deref());
+        dom::show(&self.key_target, text.is_some());
+    }
+
+    /// Shift + an arrow: moves the chosen start, goal or box by `delta` (world units) as a
+    /// drag would, refused with the same messages; the run starts again.
+    fn nudge_world(&self, delta: [f64; 2]) {
+        let Some(grab) = self.key_grab.get() else {
+            self.choose_key_target();
+            return;
+        };
+        let before = self.state.borrow().clone();
+        let from = match grab {
+            Grab::Start => before.start,
+            Grab::Goal => before.goal,
+            _ => [0.0, 0.0],
+        };
+        self.command(Command::Pause);
+        match drag(
+            &before,
+            grab,
+            from,
+            [from[0] + delta[0], from[1] + delta[1]],
+        ) {
+            Ok(next) => {
+                self.show_refusal(None);
+                if next != before {
+                    self.set_state(next, true);
+                    if let Some(url) = self.url.as_ref() {
+                        url.schedule();
+                    }
+                }
+            }
+            Err(r) => self.show_refusal(Some(r)),
+        }
+    }
+
+    fn on_stepper_key(&self, event: &KeyboardEvent) -> bool {
         if self.substep_mode.checked() && !keymap::has_command_modifier(event) {
             match event.key().as_str() {
                 "ArrowRight" | "PageDown" => {
@@ -693,6 +807,8 @@ impl Inner {
         }
         let index = self.selected.get().unwrap_or(usize::MAX);
         self.selected.set(None);
+        self.key_grab.set(None);
+        self.show_key_target();
         self.show_refusal(None);
         self.set_state(delete_box(&current, index), true);
     }
@@ -707,6 +823,8 @@ impl Inner {
             ..current.clone()
         };
         self.selected.set(None);
+        self.key_grab.set(None);
+        self.show_key_target();
         self.show_refusal(None);
         if next != current {
             self.set_state(next, true);
@@ -976,6 +1094,7 @@ impl Inner {
         let _ = dom::relocalize(&self.root);
         self.params.borrow().form.relocalize();
         self.url_notice.relocalize();
+        self.show_key_target();
         if let Some(s) = self.stepper.borrow().as_ref() {
             s.relocalize();
         }

@@ -11,6 +11,7 @@ use web_sys::{CanvasRenderingContext2d, Element};
 use crate::recipes::rrt_2d::{check_points, RrtIteration, RrtOutcome};
 use crate::ui::kit::canvas::{dash, disc, ring, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
+use crate::view::palette;
 use crate::view::rrt::{corners, Frame, Grab, PageState, Phase};
 
 use super::Run;
@@ -19,13 +20,17 @@ const BG: &str = "#fbfcfe";
 const GRID: &str = "#e6eaf0";
 const BOX_FILL: &str = "#cfd6e0";
 const BOX_EDGE: &str = "#4b5563";
-const START: &str = "#15803d";
-const GOAL: &str = "#b91c1c";
+// Start and goal: Okabe–Ito bluish green and vermilion (apart with every common
+// colour-vision deficiency), also labelled S and G.
+const START: &str = palette::BLUISH_GREEN.hex;
+const GOAL: &str = palette::VERMILION.hex;
 const TREE: &str = "rgba(26, 77, 143, 0.55)";
 const NODE: &str = "rgba(26, 77, 143, 0.8)";
 const PATH: &str = "#c2410c";
 const MARK: &str = "#7c3aed";
-const HIT: &str = "#dc2626";
+// A refused candidate and its colliding check point: near-black, so that it never relies on
+// red against the orange of an added one.
+const HIT: &str = "#111827";
 
 /// Margin around the square, CSS px.
 const MARGIN: f64 = 14.0;

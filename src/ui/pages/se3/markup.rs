@@ -80,15 +80,15 @@ pub fn page() -> String {
          <pre class=\"se3-row\" data-{P}=\"csv-row\" data-testid=\"se3-relative-row\"></pre>\
          <p class=\"se3-note\" data-i18n=\"se3-check-note\"></p></section>\
          <section class=\"se3-card\"><h2 data-i18n=\"se3-rot-title\"></h2>\
-         <p class=\"se3-note\" data-i18n=\"se3-rot-lede\"></p>\
+         <p class=\"se3-note\" id=\"se3-rot-lede\" data-i18n=\"se3-rot-lede\"></p>\
          <label class=\"se3-select\"><span data-i18n=\"se3-rot-source\"></span> \
          <select data-{P}=\"rot-source\"><option value=\"b\" data-i18n=\"se3-rot-source-b\"></option>\
          <option value=\"a\" data-i18n=\"se3-rot-source-a\"></option>\
          <option value=\"rel\" data-i18n=\"se3-rot-source-rel\"></option></select></label>\
          <div class=\"se3-rot-stage\" data-{P}=\"rot-stage\">\
          <canvas class=\"se3-layer\" data-testid=\"se3-relative-rotations\" role=\"img\" \
-         data-i18n-attr=\"aria-label=se3-rot-canvas-label\"></canvas></div>\
-         <div class=\"se3-matrices\">{rrec}{rint}</div>\
+         data-i18n-attr=\"aria-label=se3-rot-canvas-label\" aria-describedby=\"se3-rot-lede se3-rot-matrices\"></canvas></div>\
+         <div class=\"se3-matrices\" id=\"se3-rot-matrices\">{rrec}{rint}</div>\
          <p class=\"se3-check\"><span data-i18n=\"se3-rot-diff\"></span> \
          <strong data-readout=\"rot-diff\"></strong></p></section>\
          <section class=\"se3-card\"><h2 data-i18n=\"se3-exports-title\"></h2>\

@@ -279,6 +279,9 @@ impl Inner {
                 p.draw(canvas, camera, ink);
             }
         })?;
+        // The poses' readouts are the view's text alternative.
+        view.canvas_element()
+            .set_attribute("aria-describedby", &format!("{P}-readouts"))?;
         *self.view.borrow_mut() = Some(view);
         Ok(())
     }

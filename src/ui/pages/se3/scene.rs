@@ -16,6 +16,7 @@ use web_sys::CanvasRenderingContext2d;
 use crate::ui::ctx;
 use crate::ui::kit::canvas::{dash, disc, solid, Ink, LayeredCanvas};
 use crate::view::camera3d::{ground_grid, Camera, Preset};
+use crate::view::palette;
 use crate::view::se3_relative::{
     axis_length, path_in_a, ring_radius, yaw_ring, Grab, Solved, Triad, RING_POINTS,
 };
@@ -23,7 +24,13 @@ use crate::view::se3_relative::{
 const BG: &str = "#fbfcfe";
 const GRID: &str = "#e3e8ef";
 /// x, y, z.
-pub const AXIS_COLOURS: [&str; 3] = ["#d62828", "#1f9d3a", "#1d4ed8"];
+/// x, y, z: the Okabe–Ito vermilion, bluish green and blue of the DH page's colour-blind-safe
+/// axes (still red, green, blue to most eyes; red and green alone are one colour to many).
+pub const AXIS_COLOURS: [&str; 3] = [
+    palette::VERMILION.hex,
+    palette::BLUISH_GREEN.hex,
+    palette::BLUE.hex,
+];
 const LABEL: &str = "#111827";
 const ARROW: &str = "#7c3aed";
 const HOVER: &str = "#f59e0b";

@@ -187,7 +187,7 @@ pub fn page() -> String {
          <div class=\"tele-top\">\
          <section class=\"tele-card tele-view\">\
          <div class=\"tele-stage\" data-tele=\"stage\">\
-         <canvas class=\"tele-canvas\" data-testid=\"teleop-canvas\" tabindex=\"0\" \
+         <canvas class=\"tele-canvas\" data-testid=\"teleop-canvas\" tabindex=\"0\" role=\"img\" aria-describedby=\"tele-readouts-list tele-readouts\" \
          data-i18n-attr=\"aria-label=teleop-canvas-label\"></canvas></div>\
          <p class=\"tele-stop\" data-tele=\"stop\" role=\"status\"></p>\
          <div class=\"tele-buttons\" data-tele=\"live-buttons\">\

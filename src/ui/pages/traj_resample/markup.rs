@@ -27,7 +27,7 @@ pub fn page() -> String {
          <div class=\"traj-stage\" data-traj=\"stage\">\
          <canvas class=\"traj-layer\" aria-hidden=\"true\"></canvas><canvas class=\"traj-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"traj-layer\" role=\"img\" tabindex=\"0\" data-testid=\"traj-resample-canvas\" \
-         data-i18n-attr=\"aria-label=traj-canvas-label\"></canvas></div>\
+         data-i18n-attr=\"aria-label=traj-canvas-label\" aria-describedby=\"traj-readouts\"></canvas></div>\
          <p class=\"traj-note\" data-i18n=\"traj-plot-note\"></p></section>\
          <section class=\"traj-card\"><h2 data-i18n=\"traj-readouts-title\"></h2>{readouts}\
          <p class=\"traj-note\" data-i18n=\"traj-drop-note\"></p></section>\

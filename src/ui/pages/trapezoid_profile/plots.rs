@@ -28,9 +28,11 @@ use crate::view::trapezoid_profile::{amax_from_corner, bands, phases, Phases};
 const C_LINE: (u8, u8, u8) = (26, 77, 143);
 const C_CURSOR: (u8, u8, u8) = (194, 65, 12);
 const BANDS: [(&str, &str); 3] = [
-    ("rgba(21, 128, 61, 0.10)", "trap-phase-accel"),
+    // Okabe–Ito blue and vermilion tints (accelerate, brake), apart with every common
+    // colour-vision deficiency; the phases are also labelled over the first panel.
+    ("rgba(0, 114, 178, 0.10)", "trap-phase-accel"),
     ("rgba(120, 128, 140, 0.08)", "trap-phase-cruise"),
-    ("rgba(194, 65, 12, 0.10)", "trap-phase-brake"),
+    ("rgba(213, 94, 0, 0.10)", "trap-phase-brake"),
 ];
 
 /// Which handle.

@@ -25,7 +25,7 @@ fn readout_table() -> String {
         ));
     }
     format!(
-        "<table class=\"ume-table\" data-testid=\"umeyama-2d-readouts\"><thead><tr><th></th>\
+        "<table class=\"ume-table\" id=\"ume-readouts\" data-testid=\"umeyama-2d-readouts\"><thead><tr><th></th>\
          <th scope=\"col\" data-i18n=\"umeyama-ro-estimate\"></th>\
          <th scope=\"col\" data-i18n=\"umeyama-ro-truth\"></th></tr></thead><tbody>{rows}</tbody></table>"
     )
@@ -73,13 +73,13 @@ pub fn page() -> String {
          <div class=\"sig-top\"><section class=\"sig-card\"><h2 data-i18n=\"umeyama-view-title\"></h2>\
          <div class=\"sig-stage ume-stage\" data-{P}=\"stage\">\
          <canvas class=\"sig-layer\" data-testid=\"umeyama-2d-canvas\" role=\"img\" tabindex=\"0\" \
-         data-i18n-attr=\"aria-label=umeyama-canvas-label\"></canvas></div>{legend}\
+         data-i18n-attr=\"aria-label=umeyama-canvas-label\" aria-describedby=\"ume-readouts\"></canvas></div>{legend}\
          <div class=\"ume-tools\">{add}{remove}{mirror}{recipe}</div>\
          <p class=\"ume-message\" data-{P}=\"message\" data-testid=\"umeyama-2d-message\" role=\"status\" hidden></p>\
          <p class=\"sig-note\" data-i18n=\"umeyama-view-note\"></p>\
          <div data-{P}=\"stepper\"></div>\
-         <div class=\"ume-step\" data-testid=\"umeyama-2d-step\" aria-live=\"polite\">\
-         <h3 data-{P}=\"step-title\"></h3><p data-{P}=\"step-text\"></p>\
+         <div class=\"ume-step\" data-testid=\"umeyama-2d-step\">\
+         <h3 data-{P}=\"step-title\" aria-live=\"polite\"></h3><p data-{P}=\"step-text\"></p>\
          <div class=\"ume-mats\" data-{P}=\"step-mats\"></div></div></section>\
          <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"umeyama-ro-title\"></h2>{table}{live}\
          <p class=\"sig-note\" data-i18n=\"umeyama-ro-note\"></p></section>\
