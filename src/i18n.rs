@@ -11,7 +11,7 @@
 //!
 //! No web-sys: this module compiles and is tested natively.
 
-use std::cell::RefCell;
+use std::cell::{OnceCell, RefCell};
 use std::collections::BTreeSet;
 
 use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
@@ -226,8 +226,12 @@ impl FluentArg {
 /// The Fluent bundles of both languages, plus the notes about missing messages and
 /// formatting errors not yet handed out.
 pub struct I18n {
-    en: FluentBundle<FluentResource>,
-    ja: FluentBundle<FluentResource>,
+    /// Each language's bundle, built from its files on the language's first use, so that a
+    /// page in one language never parses the other's files (about half of the app's start).
+    en: OnceCell<FluentBundle<FluentResource>>,
+    ja: OnceCell<FluentBundle<FluentResource>>,
+    /// The files (language, name, text) of the languages not built yet.
+    sources: RefCell<Vec<(Lang, String, String)>>,
     /// Every note ever made (so each is made once).
     noted: RefCell<BTreeSet<String>>,
     /// Notes not yet taken by [`I18n::take_warnings`].
@@ -241,53 +245,73 @@ impl Default for I18n {
 }
 
 impl I18n {
-    /// Both bundles built from [`LOCALE_FILES`]. A syntax error or a duplicate id does not
-    /// stop the app: the rest of the file loads and the problem becomes a warning.
+    /// The bundles of [`LOCALE_FILES`] (each built on its language's first use).
     pub fn new() -> I18n {
         I18n::from_sources(LOCALE_FILES)
     }
 
-    /// Bundles built from the given `(language, file name, text)` sources.
+    /// Bundles of the given `(language, file name, text)` sources, each built on its
+    /// language's first use.
     pub fn from_sources(sources: &[(Lang, &str, &str)]) -> I18n {
-        let i18n = I18n {
-            en: new_bundle(Lang::En),
-            ja: new_bundle(Lang::Ja),
+        I18n {
+            en: OnceCell::new(),
+            ja: OnceCell::new(),
+            sources: RefCell::new(
+                sources
+                    .iter()
+                    .map(|(lang, file, text)| (*lang, file.to_string(), text.to_string()))
+                    .collect(),
+            ),
             noted: RefCell::new(BTreeSet::new()),
             pending: RefCell::new(Vec::new()),
+        }
+    }
+
+    /// Builds `lang`'s bundle now if it is not built yet (its syntax errors and duplicate ids
+    /// become warnings then).
+    pub fn preload(&self, lang: Lang) {
+        self.bundle(lang);
+    }
+
+    fn bundle(&self, lang: Lang) -> &FluentBundle<FluentResource> {
+        let cell = match lang {
+            Lang::En => &self.en,
+            Lang::Ja => &self.ja,
         };
-        let mut i18n = i18n;
-        let mut problems = Vec::new();
-        for (lang, file, text) in sources {
-            let resource = match FluentResource::try_new(text.to_string()) {
+        cell.get_or_init(|| self.build(lang))
+    }
+
+    /// `lang`'s bundle from its files (taken out of `sources`). A syntax error or a duplicate
+    /// id does not stop the app: the rest of the file loads and the problem becomes a warning.
+    fn build(&self, lang: Lang) -> FluentBundle<FluentResource> {
+        let files: Vec<(Lang, String, String)> = match self.sources.try_borrow_mut() {
+            Ok(mut sources) => {
+                let (mine, rest) = std::mem::take(&mut *sources)
+                    .into_iter()
+                    .partition(|(l, _, _)| *l == lang);
+                *sources = rest;
+                mine
+            }
+            Err(_) => Vec::new(),
+        };
+        let mut bundle = new_bundle(lang);
+        for (_, file, text) in files {
+            let resource = match FluentResource::try_new(text) {
                 Ok(resource) => resource,
                 Err((resource, errors)) => {
                     for error in errors {
-                        problems.push(format!("{}/{file}: syntax error: {error}", lang.code()));
+                        self.note(format!("{}/{file}: syntax error: {error}", lang.code()));
                     }
                     resource
                 }
             };
-            let bundle = match lang {
-                Lang::En => &mut i18n.en,
-                Lang::Ja => &mut i18n.ja,
-            };
             if let Err(errors) = bundle.add_resource(resource) {
                 for error in errors {
-                    problems.push(format!("{}/{file}: {error}", lang.code()));
+                    self.note(format!("{}/{file}: {error}", lang.code()));
                 }
             }
         }
-        for problem in problems {
-            i18n.note(problem);
-        }
-        i18n
-    }
-
-    fn bundle(&self, lang: Lang) -> &FluentBundle<FluentResource> {
-        match lang {
-            Lang::En => &self.en,
-            Lang::Ja => &self.ja,
-        }
+        bundle
     }
 
     /// Whether `lang`'s own bundle has message `id` with a value (no fallback).
@@ -465,6 +489,8 @@ mod tests {
     #[test]
     fn every_file_loads_without_syntax_errors_or_duplicates() {
         let i18n = I18n::new();
+        i18n.preload(Lang::En);
+        i18n.preload(Lang::Ja);
         assert_eq!(i18n.take_warnings(), Vec::<String>::new());
     }
 

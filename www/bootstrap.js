@@ -4,7 +4,11 @@
 try {
   const { default: init, startApp } = await import('../pkg/bsv_playground.js');
   await init();
+  // Marks that tests/e2e/firstframe.bench.mjs reads (wasm compiled and instantiated; the
+  // shell and the route mounted).
+  performance.mark('bsv-wasm-ready');
   startApp();
+  performance.mark('bsv-app-ready');
   registerServiceWorker();
 } catch (error) {
   console.error('BSV Playground could not start:', error);
