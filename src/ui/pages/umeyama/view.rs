@@ -2,14 +2,15 @@
 //! draggable), the noisy targets Y, the aligned points `s R X + t` with their residual lines,
 //! the true similarity's handles (translation and rotation/scale), and what the current
 //! teaching step adds (centroids, centred sets, the covariance's columns, the SVD's axes, the
-//! scale circles, the translation arrow). Redrawn whole on every change: a few hundred
-//! primitives, well under a millisecond.
+//! scale circles, the translation arrow). Redrawn whole on every change: the marks of one
+//! kind and colour go in one path (one stroke or fill for all the residuals, all the points),
+//! and the label font is set once a frame, so a drag's frame makes a few dozen canvas calls.
 
 use glam::DVec2;
 use wasm_bindgen::JsValue;
 use web_sys::{CanvasRenderingContext2d, Element};
 
-use crate::ui::kit::canvas::{dash, disc, ring, solid, Ink, LayeredCanvas};
+use crate::ui::kit::canvas::{dash, ring, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
 use crate::view::umeyama_2d::{rotation_handle, svd, Frame, Grab, Scene, Step};
 
@@ -70,9 +71,66 @@ fn arrow(c: &CanvasRenderingContext2d, a: DVec2, b: DVec2, stroke: &str, width: 
     c.fill();
 }
 
-fn square(c: &CanvasRenderingContext2d, p: DVec2, half: f64, fill: &str) {
+/// Segments `a`–`b`, one path stroked once.
+fn segments(
+    c: &CanvasRenderingContext2d,
+    pairs: impl Iterator<Item = (DVec2, DVec2)>,
+    stroke: &str,
+    width: f64,
+) {
+    c.set_stroke_style_str(stroke);
+    c.set_line_width(width);
+    c.begin_path();
+    for (a, b) in pairs {
+        c.move_to(a.x, a.y);
+        c.line_to(b.x, b.y);
+    }
+    c.stroke();
+}
+
+/// Circles of radius `r` around `centres`, one path.
+fn circles(c: &CanvasRenderingContext2d, centres: impl Iterator<Item = DVec2>, r: f64) {
+    c.begin_path();
+    for p in centres {
+        c.move_to(p.x + r, p.y);
+        let _ = c.arc(p.x, p.y, r, 0.0, std::f64::consts::TAU);
+    }
+}
+
+/// Filled discs (the source points).
+fn discs(c: &CanvasRenderingContext2d, centres: impl Iterator<Item = DVec2>, r: f64, fill: &str) {
     c.set_fill_style_str(fill);
-    c.fill_rect(p.x - half, p.y - half, 2.0 * half, 2.0 * half);
+    circles(c, centres, r);
+    c.fill();
+}
+
+/// Stroked circles (the aligned points, the centred X).
+fn rings(
+    c: &CanvasRenderingContext2d,
+    centres: impl Iterator<Item = DVec2>,
+    r: f64,
+    stroke: &str,
+    width: f64,
+) {
+    c.set_stroke_style_str(stroke);
+    c.set_line_width(width);
+    circles(c, centres, r);
+    c.stroke();
+}
+
+/// Filled squares of half side `half` (the targets), one path.
+fn squares(
+    c: &CanvasRenderingContext2d,
+    centres: impl Iterator<Item = DVec2>,
+    half: f64,
+    fill: &str,
+) {
+    c.set_fill_style_str(fill);
+    c.begin_path();
+    for p in centres {
+        c.rect(p.x - half, p.y - half, 2.0 * half, 2.0 * half);
+    }
+    c.fill();
 }
 
 fn diamond(c: &CanvasRenderingContext2d, p: DVec2, r: f64, stroke: &str, width: f64) {
@@ -104,8 +162,8 @@ fn cross(c: &CanvasRenderingContext2d, p: DVec2, r: f64, stroke: &str, width: f6
     );
 }
 
-fn label(c: &CanvasRenderingContext2d, p: DVec2, text: &str, fill: &str, ink: Ink) {
-    c.set_font(&ink.font(13.0, true));
+/// Text beside `p` in the label font ([`SceneView::draw`] sets it once a frame).
+fn label(c: &CanvasRenderingContext2d, p: DVec2, text: &str, fill: &str) {
     c.set_fill_style_str(fill);
     let _ = c.fill_text(text, p.x + 8.0, p.y - 8.0);
 }
@@ -229,9 +287,8 @@ impl SceneView {
         let faded = centred || step == Step::Centroids;
         // Correspondences X_i → Y_i.
         if step == Step::Overview || step == Step::Centroids {
-            for (p, q) in scene.x.iter().zip(&scene.y) {
-                line(c, f.px(*p), f.px(*q), FAINT, lw);
-            }
+            let pairs = scene.x.iter().zip(&scene.y);
+            segments(c, pairs.map(|(p, q)| (f.px(*p), f.px(*q))), FAINT, lw);
         }
         c.set_global_alpha(if faded { 0.3 } else { 1.0 });
         // Aligned points and residuals (the fit's result).
@@ -242,27 +299,25 @@ impl SceneView {
             } else {
                 1.6 * lw
             };
-            for (a, q) in s.aligned.iter().zip(&scene.y) {
-                line(c, f.px(*a), f.px(*q), RESIDUAL, width);
-            }
+            let pairs = s.aligned.iter().zip(&scene.y);
+            segments(c, pairs.map(|(a, q)| (f.px(*a), f.px(*q))), RESIDUAL, width);
             c.set_line_dash(&solid()).ok();
         }
-        for q in &scene.y {
-            square(c, f.px(*q), 0.9 * r, Y_COL);
+        squares(c, scene.y.iter().map(|q| f.px(*q)), 0.9 * r, Y_COL);
+        discs(c, scene.x.iter().map(|p| f.px(*p)), r, X_COL);
+        if let Some(p) = marks.selected.and_then(|i| scene.x.get(i)) {
+            ring(c, f.px(*p), r + 4.0 * lw, SELECT, 2.5 * lw);
         }
-        for (i, p) in scene.x.iter().enumerate() {
-            let at = f.px(*p);
-            disc(c, at, r, X_COL);
-            if marks.selected == Some(i) {
-                ring(c, at, r + 4.0 * lw, SELECT, 2.5 * lw);
-            } else if marks.hover == Some(Grab::Point(i)) {
-                ring(c, at, r + 3.0 * lw, X_COL, 1.5 * lw);
+        if let Some(Grab::Point(i)) = marks.hover {
+            if marks.selected != Some(i) {
+                if let Some(p) = scene.x.get(i) {
+                    ring(c, f.px(*p), r + 3.0 * lw, X_COL, 1.5 * lw);
+                }
             }
         }
         if !faded {
-            for a in &s.aligned {
-                ring(c, f.px(*a), r + 1.5 * lw, ALIGNED, 2.0 * lw);
-            }
+            let aligned = s.aligned.iter().map(|a| f.px(*a));
+            rings(c, aligned, r + 1.5 * lw, ALIGNED, 2.0 * lw);
         }
         c.set_global_alpha(1.0);
         // The truth's handles: t, and t + s (cos θ, sin θ).
@@ -275,8 +330,9 @@ impl SceneView {
         let hover_w = |g: Grab| if marks.hover == Some(g) { 3.5 } else { 2.0 };
         diamond(c, t, 8.0 * lw, TRUTH, hover_w(Grab::Translation) * lw);
         ring(c, rh, 6.0 * lw, TRUTH, hover_w(Grab::Rotation) * lw);
-        label(c, t, "t", TRUTH, ink);
-        label(c, rh, "s·R", TRUTH, ink);
+        c.set_font(&ink.font(13.0, true));
+        label(c, t, "t", TRUTH);
+        label(c, rh, "s·R", TRUTH);
         self.draw_step(c, scene, step, ink);
     }
 
@@ -295,36 +351,40 @@ impl SceneView {
                     ring(c, at, 9.0 * lw, col, 2.5 * lw);
                     cross(c, at, 13.0 * lw, col, 2.0 * lw);
                 }
-                label(c, f.px(s.mu_x), "μx", X_COL, ink);
-                label(c, f.px(s.mu_y), "μy", Y_COL, ink);
-                for p in &scene.x {
-                    line(c, f.px(*p), f.px(s.mu_x), "rgba(26, 77, 143, 0.25)", lw);
-                }
-                for q in &scene.y {
-                    line(c, f.px(*q), f.px(s.mu_y), "rgba(194, 65, 12, 0.25)", lw);
-                }
+                label(c, f.px(s.mu_x), "μx", X_COL);
+                label(c, f.px(s.mu_y), "μy", Y_COL);
+                let (mx, my) = (f.px(s.mu_x), f.px(s.mu_y));
+                let to_mx = scene.x.iter().map(|p| (f.px(*p), mx));
+                segments(c, to_mx, "rgba(26, 77, 143, 0.25)", lw);
+                let to_my = scene.y.iter().map(|q| (f.px(*q), my));
+                segments(c, to_my, "rgba(194, 65, 12, 0.25)", lw);
             }
             Step::Centred | Step::Covariance | Step::Svd | Step::Reflection => {
-                for (p, q) in s.centred_x.iter().zip(&s.centred_y) {
-                    line(c, at_origin(*p), at_origin(*q), FAINT, lw);
-                }
-                for p in &s.centred_x {
-                    ring(c, at_origin(*p), r, X_COL, 2.0 * lw);
-                }
+                let pairs = s.centred_x.iter().zip(&s.centred_y);
+                segments(
+                    c,
+                    pairs.map(|(p, q)| (at_origin(*p), at_origin(*q))),
+                    FAINT,
+                    lw,
+                );
+                let centred_x = s.centred_x.iter().map(|p| at_origin(*p));
+                rings(c, centred_x, r, X_COL, 2.0 * lw);
+                c.set_stroke_style_str(Y_COL);
+                c.set_line_width(2.0 * lw);
+                c.begin_path();
                 for q in &s.centred_y {
                     let at = at_origin(*q);
-                    c.set_stroke_style_str(Y_COL);
-                    c.set_line_width(2.0 * lw);
-                    c.stroke_rect(at.x - r, at.y - r, 2.0 * r, 2.0 * r);
+                    c.rect(at.x - r, at.y - r, 2.0 * r, 2.0 * r);
                 }
+                c.stroke();
                 cross(c, o, 10.0 * lw, "#111827", 1.5 * lw);
                 if step == Step::Covariance {
                     // C's columns: where C sends the axes.
                     let col = |j: usize| [s.cov[0][j], s.cov[1][j]];
                     arrow(c, o, at_origin(col(0)), "#0f766e", 3.0 * lw);
                     arrow(c, o, at_origin(col(1)), "#0f766e", 3.0 * lw);
-                    label(c, at_origin(col(0)), "C e₁", "#0f766e", ink);
-                    label(c, at_origin(col(1)), "C e₂", "#0f766e", ink);
+                    label(c, at_origin(col(0)), "C e₁", "#0f766e");
+                    label(c, at_origin(col(1)), "C e₂", "#0f766e");
                 }
                 if step == Step::Svd || step == Step::Reflection {
                     let d = svd(s);
@@ -341,8 +401,8 @@ impl SceneView {
                         let uk = [u[0][k] * d.s[k], u[1][k] * d.s[k]];
                         arrow(c, o, at_origin(v), X_COL, 2.5 * lw);
                         arrow(c, o, at_origin(uk), Y_COL, 2.5 * lw);
-                        label(c, at_origin(v), v_name, X_COL, ink);
-                        label(c, at_origin(uk), u_name, Y_COL, ink);
+                        label(c, at_origin(v), v_name, X_COL);
+                        label(c, at_origin(uk), u_name, Y_COL);
                     }
                     if step == Step::Reflection && s.reflection_fixed() {
                         // The column the fix negated, as it was.
@@ -363,14 +423,12 @@ impl SceneView {
                     f.px(s.mu_x) + DVec2::new(rx * 0.7, -rx * 0.7),
                     "√var_x",
                     X_COL,
-                    ink,
                 );
                 label(
                     c,
                     f.px(s.mu_y) + DVec2::new(ry * 0.7, -ry * 0.7),
                     "s·√var_x",
                     Y_COL,
-                    ink,
                 );
             }
             Step::Translation => {
@@ -382,13 +440,12 @@ impl SceneView {
                         s.scale * (rot[1][0] * p[0] + rot[1][1] * p[1]),
                     ]
                 };
-                for p in &scene.x {
-                    ring(c, f.px(srx(p)), r, "rgba(21, 128, 61, 0.5)", 1.5 * lw);
-                }
+                let moved = scene.x.iter().map(|p| f.px(srx(p)));
+                rings(c, moved, r, "rgba(21, 128, 61, 0.5)", 1.5 * lw);
                 let from = srx(&s.mu_x);
                 arrow(c, f.px(from), f.px(s.mu_y), ALIGNED, 3.0 * lw);
                 arrow(c, o, f.px(s.t), ALIGNED, 2.0 * lw);
-                label(c, f.px(s.t), "t̂", ALIGNED, ink);
+                label(c, f.px(s.t), "t̂", ALIGNED);
             }
             Step::Rmse => {}
         }
