@@ -344,6 +344,8 @@ impl Form {
         let (field, control) = self.fields.get(index).zip(self.controls.get(index))?;
         write(field, control, value);
         match control {
+            // A text box's value sanitization only drops line breaks.
+            Control::Input(_) if !value.contains(['\r', '\n']) => Some(value.to_string()),
             Control::Input(i) => Some(i.value()),
             Control::Select(s) => Some(s.value()),
             Control::File(_) => None,
