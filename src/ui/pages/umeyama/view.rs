@@ -1,14 +1,19 @@
-//! The view: one HiDPI canvas with the world's grid and axes, the source points X (numbered,
-//! draggable), the noisy targets Y, the aligned points `s R X + t` with their residual lines,
+//! The view: two HiDPI canvas layers, below the world's grid and axes (drawn again only when
+//! the frame, the size or the ink change: a drag's frames keep it), above the source points X
+//! (draggable), the noisy targets Y, the aligned points `s R X + t` with their residual lines,
 //! the true similarity's handles (translation and rotation/scale), and what the current
 //! teaching step adds (centroids, centred sets, the covariance's columns, the SVD's axes, the
-//! scale circles, the translation arrow). Redrawn whole on every change: the marks of one
+//! scale circles, the translation arrow), redrawn whole on every change. The marks of one
 //! kind and colour go in one path (one stroke or fill for all the residuals, all the points),
-//! and the label font is set once a frame, so a drag's frame makes a few dozen canvas calls.
+//! and the labels are small images drawn once per font (canvas text makes Chromium bring the
+//! page's style up to date first, after the form's and the slider's changes): a drag's frame
+//! makes a few dozen canvas calls and draws no text.
+
+use std::cell::{Cell, RefCell};
 
 use glam::DVec2;
-use wasm_bindgen::JsValue;
-use web_sys::{CanvasRenderingContext2d, Element};
+use wasm_bindgen::{JsCast, JsValue};
+use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement};
 
 use crate::ui::kit::canvas::{dash, ring, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
@@ -35,10 +40,72 @@ pub struct Marks {
     pub hover: Option<Grab>,
 }
 
+/// What the grid layer depends on: the frame, the CSS size and the ink.
+type GridKey = (Frame, (f64, f64), Ink);
+
 /// The view component.
 pub struct SceneView {
+    /// The grid's layer below, the marks' layer on top.
     pub canvas: LayeredCanvas,
     pub frame: Frame,
+    /// What the grid layer shows now: frame, size and ink (`None`: draw it).
+    grid_drawn: Cell<Option<GridKey>>,
+    /// The labels drawn so far, in the label font and pixel ratio they were drawn for.
+    labels: RefCell<Labels>,
+}
+
+/// The label images of one font and pixel ratio.
+#[derive(Default)]
+struct Labels {
+    font: String,
+    dpr: f64,
+    drawn: Vec<Label>,
+}
+
+/// One label's text drawn once into a canvas of its own.
+struct Label {
+    text: &'static str,
+    fill: &'static str,
+    /// `None`: it could not be made; the text is drawn directly.
+    image: Option<LabelImage>,
+}
+
+/// A label's image: its canvas, CSS size, and where its text's origin lies in it.
+struct LabelImage {
+    canvas: HtmlCanvasElement,
+    w: f64,
+    h: f64,
+    origin: DVec2,
+}
+
+impl LabelImage {
+    /// `text` in `font` and `fill` at `dpr` device pixels per CSS pixel.
+    fn new(text: &str, fill: &str, font: &str, dpr: f64) -> Option<LabelImage> {
+        let document = web_sys::window()?.document()?;
+        let canvas: HtmlCanvasElement = document.create_element("canvas").ok()?.dyn_into().ok()?;
+        let ctx: CanvasRenderingContext2d = canvas.get_context("2d").ok()??.dyn_into().ok()?;
+        ctx.set_font(font);
+        let m = ctx.measure_text(text).ok()?;
+        const PAD: f64 = 2.0;
+        let finite = |v: f64| if v.is_finite() { v.max(0.0) } else { 0.0 };
+        let left = finite(m.actual_bounding_box_left()) + PAD;
+        let right = finite(m.actual_bounding_box_right()).max(finite(m.width())) + PAD;
+        let ascent = finite(m.actual_bounding_box_ascent()) + PAD;
+        let descent = finite(m.actual_bounding_box_descent()) + PAD;
+        canvas.set_width(((left + right) * dpr).ceil().max(1.0) as u32);
+        canvas.set_height(((ascent + descent) * dpr).ceil().max(1.0) as u32);
+        // The new size reset the context.
+        ctx.set_transform(dpr, 0.0, 0.0, dpr, 0.0, 0.0).ok()?;
+        ctx.set_font(font);
+        ctx.set_fill_style_str(fill);
+        ctx.fill_text(text, left, ascent).ok()?;
+        Some(LabelImage {
+            w: f64::from(canvas.width()) / dpr,
+            h: f64::from(canvas.height()) / dpr,
+            origin: DVec2::new(left, ascent),
+            canvas,
+        })
+    }
 }
 
 fn line(c: &CanvasRenderingContext2d, a: DVec2, b: DVec2, stroke: &str, width: f64) {
@@ -162,24 +229,21 @@ fn cross(c: &CanvasRenderingContext2d, p: DVec2, r: f64, stroke: &str, width: f6
     );
 }
 
-/// Text beside `p` in the label font ([`SceneView::draw`] sets it once a frame).
-fn label(c: &CanvasRenderingContext2d, p: DVec2, text: &str, fill: &str) {
-    c.set_fill_style_str(fill);
-    let _ = c.fill_text(text, p.x + 8.0, p.y - 8.0);
-}
-
 impl SceneView {
     /// Wraps the canvas of `stage`.
     pub fn find(stage: &Element) -> Result<SceneView, JsValue> {
         Ok(SceneView {
             canvas: LayeredCanvas::from_stage(stage)?,
             frame: Frame::fit(([-1.0, -1.0], [1.0, 1.0]), (100.0, 100.0), 0.0),
+            grid_drawn: Cell::new(None),
+            labels: RefCell::new(Labels::default()),
         })
     }
 
     /// Sizes the canvas to the stage and fits the frame to `scene`.
     pub fn fit(&mut self, scene: &Scene) {
         self.canvas.fit();
+        self.grid_drawn.set(None);
         self.refit(scene);
     }
 
@@ -267,15 +331,86 @@ impl SceneView {
         );
     }
 
-    /// Draws `scene` at teaching `step`.
-    pub fn draw(&self, scene: &Scene, step: Step, marks: Marks, ink: Ink) {
-        let layer = self.canvas.top();
+    /// The grid layer: background, grid, axes and the grid step, when they changed.
+    fn draw_grid(&self, ink: Ink) {
+        let key = (self.frame, self.canvas.size(), ink);
+        if self.grid_drawn.get() == Some(key) {
+            return;
+        }
+        let layer = self.canvas.layer(0);
         layer.begin();
         let c = &layer.ctx;
         let (w, h) = self.canvas.size();
         c.set_fill_style_str(BG);
         c.fill_rect(0.0, 0.0, w, h);
         self.grid(c, ink);
+        self.grid_drawn.set(Some(key));
+    }
+
+    /// Labels in `ink`'s label font at the top layer's pixel ratio from now on.
+    fn label_font(&self, ink: Ink) {
+        let font = ink.font(13.0, true);
+        let dpr = self.canvas.top().dpr;
+        let mut labels = self.labels.borrow_mut();
+        if labels.font != font || labels.dpr != dpr {
+            *labels = Labels {
+                font,
+                dpr,
+                drawn: Vec::new(),
+            };
+        }
+    }
+
+    /// `text` in `fill` beside `p` (its origin 8 px right of and above `p`): its image, on
+    /// whole device pixels.
+    fn label(
+        &self,
+        c: &CanvasRenderingContext2d,
+        p: DVec2,
+        text: &'static str,
+        fill: &'static str,
+    ) {
+        let at = p + DVec2::new(8.0, -8.0);
+        let mut labels = self.labels.borrow_mut();
+        let index = match labels
+            .drawn
+            .iter()
+            .position(|l| l.text == text && l.fill == fill)
+        {
+            Some(i) => i,
+            None => {
+                let image = LabelImage::new(text, fill, &labels.font, labels.dpr);
+                labels.drawn.push(Label { text, fill, image });
+                labels.drawn.len() - 1
+            }
+        };
+        let dpr = labels.dpr;
+        match &labels.drawn[index].image {
+            Some(image) => {
+                let snap = |v: f64| (v * dpr).round() / dpr;
+                let corner = at - image.origin;
+                let _ = c.draw_image_with_html_canvas_element_and_dw_and_dh(
+                    &image.canvas,
+                    snap(corner.x),
+                    snap(corner.y),
+                    image.w,
+                    image.h,
+                );
+            }
+            None => {
+                c.set_font(&labels.font);
+                c.set_fill_style_str(fill);
+                let _ = c.fill_text(text, at.x, at.y);
+            }
+        }
+    }
+
+    /// Draws `scene` at teaching `step`.
+    pub fn draw(&self, scene: &Scene, step: Step, marks: Marks, ink: Ink) {
+        self.draw_grid(ink);
+        let layer = self.canvas.top();
+        layer.begin();
+        let c = &layer.ctx;
         let f = &self.frame;
         let s = &scene.steps;
         let lw = ink.line;
@@ -330,9 +465,9 @@ impl SceneView {
         let hover_w = |g: Grab| if marks.hover == Some(g) { 3.5 } else { 2.0 };
         diamond(c, t, 8.0 * lw, TRUTH, hover_w(Grab::Translation) * lw);
         ring(c, rh, 6.0 * lw, TRUTH, hover_w(Grab::Rotation) * lw);
-        c.set_font(&ink.font(13.0, true));
-        label(c, t, "t", TRUTH);
-        label(c, rh, "s·R", TRUTH);
+        self.label_font(ink);
+        self.label(c, t, "t", TRUTH);
+        self.label(c, rh, "s·R", TRUTH);
         self.draw_step(c, scene, step, ink);
     }
 
@@ -351,8 +486,8 @@ impl SceneView {
                     ring(c, at, 9.0 * lw, col, 2.5 * lw);
                     cross(c, at, 13.0 * lw, col, 2.0 * lw);
                 }
-                label(c, f.px(s.mu_x), "μx", X_COL);
-                label(c, f.px(s.mu_y), "μy", Y_COL);
+                self.label(c, f.px(s.mu_x), "μx", X_COL);
+                self.label(c, f.px(s.mu_y), "μy", Y_COL);
                 let (mx, my) = (f.px(s.mu_x), f.px(s.mu_y));
                 let to_mx = scene.x.iter().map(|p| (f.px(*p), mx));
                 segments(c, to_mx, "rgba(26, 77, 143, 0.25)", lw);
@@ -383,8 +518,8 @@ impl SceneView {
                     let col = |j: usize| [s.cov[0][j], s.cov[1][j]];
                     arrow(c, o, at_origin(col(0)), "#0f766e", 3.0 * lw);
                     arrow(c, o, at_origin(col(1)), "#0f766e", 3.0 * lw);
-                    label(c, at_origin(col(0)), "C e₁", "#0f766e");
-                    label(c, at_origin(col(1)), "C e₂", "#0f766e");
+                    self.label(c, at_origin(col(0)), "C e₁", "#0f766e");
+                    self.label(c, at_origin(col(1)), "C e₂", "#0f766e");
                 }
                 if step == Step::Svd || step == Step::Reflection {
                     let d = svd(s);
@@ -401,8 +536,8 @@ impl SceneView {
                         let uk = [u[0][k] * d.s[k], u[1][k] * d.s[k]];
                         arrow(c, o, at_origin(v), X_COL, 2.5 * lw);
                         arrow(c, o, at_origin(uk), Y_COL, 2.5 * lw);
-                        label(c, at_origin(v), v_name, X_COL);
-                        label(c, at_origin(uk), u_name, Y_COL);
+                        self.label(c, at_origin(v), v_name, X_COL);
+                        self.label(c, at_origin(uk), u_name, Y_COL);
                     }
                     if step == Step::Reflection && s.reflection_fixed() {
                         // The column the fix negated, as it was.
@@ -418,13 +553,13 @@ impl SceneView {
                 let ry = s.scale * s.var_x.sqrt() * f.scale;
                 ring(c, f.px(s.mu_x), rx, X_COL, 2.0 * lw);
                 ring(c, f.px(s.mu_y), ry, Y_COL, 2.0 * lw);
-                label(
+                self.label(
                     c,
                     f.px(s.mu_x) + DVec2::new(rx * 0.7, -rx * 0.7),
                     "√var_x",
                     X_COL,
                 );
-                label(
+                self.label(
                     c,
                     f.px(s.mu_y) + DVec2::new(ry * 0.7, -ry * 0.7),
                     "s·√var_x",
@@ -445,7 +580,7 @@ impl SceneView {
                 let from = srx(&s.mu_x);
                 arrow(c, f.px(from), f.px(s.mu_y), ALIGNED, 3.0 * lw);
                 arrow(c, o, f.px(s.t), ALIGNED, 2.0 * lw);
-                label(c, f.px(s.t), "t̂", ALIGNED);
+                self.label(c, f.px(s.t), "t̂", ALIGNED);
             }
             Step::Rmse => {}
         }
