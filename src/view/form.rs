@@ -507,7 +507,9 @@ mod tests {
     fn checking_only_the_edited_fields_after_a_clean_check_finds_the_same() {
         // (recipe, texts that pass, edits of one or two fields: good, bad, cross-field)
         let points = "0.1,0.2;1,-1;2.5,0.3;-1,-1";
-        let cases: [(&'static str, &[(&str, &str)], &[&[(&str, &str)]]); 4] = [
+        /// Field texts by argument name.
+        type Texts<'a> = &'a [(&'a str, &'a str)];
+        let cases: [(&'static str, Texts, &[Texts]); 4] = [
             (
                 "pid-step",
                 &[("steps", "120"), ("Kp", "1.5")],
