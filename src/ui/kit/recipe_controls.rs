@@ -191,6 +191,22 @@ impl<T: Clone + 'static> RecipeControls<T> {
         png: fn(&P),
     ) -> Result<(), JsValue> {
         let form = self.container.clone();
+        // What the user types changes a field before any listener hears of it: the texts last
+        // checked are no longer the fields' (a page's own listener on the field runs first).
+        scope.keep(crate::ui::dom::Listener::capture_for_page(
+            &form,
+            "input",
+            page,
+            move |p, e| {
+                let typed = e
+                    .target()
+                    .and_then(|t| t.dyn_into::<Element>().ok())
+                    .is_some_and(|t| t.has_attribute("data-field"));
+                if typed {
+                    *get(p).clean.borrow_mut() = None;
+                }
+            },
+        )?);
         scope.listen_for(&form, "input", page, move |p, e| {
             if let Some(value) = get(p).edit(e) {
                 changed(p, value);
