@@ -248,6 +248,21 @@ pub struct Form {
     changed: Cell<Option<usize>>,
 }
 
+/// Writes `value` into `control` of `field` (a choice the select does not offer is the
+/// default; a file picker is left alone).
+fn write(field: &FieldDef, control: &Control, value: &str) {
+    match control {
+        Control::Input(input) => input.set_value(value),
+        Control::Select(select) => {
+            let value = value.trim().to_ascii_lowercase();
+            let known = matches!(field.spec.kind,
+                ArgKind::Choice(c) if c.contains(&value.as_str()));
+            select.set_value(if known { &value } else { field.default() });
+        }
+        Control::File(_) => {}
+    }
+}
+
 fn query<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
     crate::ui::dom::find(root, selector, "form")
 }
@@ -318,16 +333,22 @@ impl Form {
                 .get(index)
                 .map(String::as_str)
                 .unwrap_or(field.default());
-            match control {
-                Control::Input(input) => input.set_value(value),
-                Control::Select(select) => {
-                    let value = value.trim().to_ascii_lowercase();
-                    let known = matches!(field.spec.kind,
-                        ArgKind::Choice(c) if c.contains(&value.as_str()));
-                    select.set_value(if known { &value } else { field.default() });
-                }
-                Control::File(_) => {}
-            }
+            write(field, control, value);
+        }
+    }
+
+    /// Writes `value` into field `index` alone, as [`Form::fill`] would, and returns the text
+    /// the field now holds (what [`Form::texts`] reads for it; `None` for a file picker or no
+    /// such field). A drag that moves one argument writes one box instead of all of them.
+    pub fn set_value(&self, index: usize, value: &str) -> Option<String> {
+        let (field, control) = self.fields.get(index).zip(self.controls.get(index))?;
+        write(field, control, value);
+        match control {
+            // A text box's value sanitization only drops line breaks.
+            Control::Input(_) if !value.contains(['\r', '\n']) => Some(value.to_string()),
+            Control::Input(i) => Some(i.value()),
+            Control::Select(s) => Some(s.value()),
+            Control::File(_) => None,
         }
     }
 
@@ -378,6 +399,13 @@ impl Form {
     pub fn note_edit(&self, element: &Element) {
         if let Some(name) = element.get_attribute("data-field") {
             self.changed.set(self.index_of(&name));
+        }
+    }
+
+    /// Notes that field `index` was edited last ([`Form::note_edit`] without the element).
+    pub fn note_changed(&self, index: usize) {
+        if index < self.fields.len() {
+            self.changed.set(Some(index));
         }
     }
 

@@ -10,7 +10,7 @@
 //! Hooks: text fields `data-field="<name>"`, messages `data-field-error="<name>"` (the kit
 //! form's), sliders `data-slider="<name>"`, downloads `data-download="<file>"`.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::rc::Weak;
 
 use wasm_bindgen::{JsCast, JsValue};
@@ -25,7 +25,7 @@ use crate::error::RecipeError;
 use crate::recipes::RecipeInfo;
 use crate::ui::dom;
 use crate::view::command_line::RunArgs;
-use crate::view::form::{recipe_fields, validate};
+use crate::view::form::{recipe_fields, validate, validate_changed, FieldDef};
 use crate::view::signal::{read_texts, write_texts, Slider};
 
 /// The kernel's parse + validate of a recipe's arguments.
@@ -74,6 +74,25 @@ pub struct RecipeControls<T> {
     valid: RefCell<(Vec<Option<String>>, T)>,
     /// Messages shown beside fields and the fields marked invalid.
     shown: RefCell<Shown>,
+    /// The texts of the last check when it passed with nothing shown (`None` otherwise).
+    clean: RefCell<Option<Vec<Option<String>>>>,
+    /// [`RecipeControls::check_only_edits`] was called.
+    only_edits: Cell<bool>,
+}
+
+/// The texts of a valid set as the last valid arguments keep them: trimmed, `None` where
+/// blank or the default.
+fn canonical(texts: &[Option<String>], fields: &[FieldDef]) -> Vec<Option<String>> {
+    texts
+        .iter()
+        .zip(fields)
+        .map(|(t, f)| {
+            t.as_deref()
+                .map(str::trim)
+                .filter(|t| !t.is_empty() && *t != f.default())
+                .map(str::to_string)
+        })
+        .collect()
 }
 
 fn parse_texts<T>(
@@ -152,6 +171,8 @@ impl<T: Clone + 'static> RecipeControls<T> {
             parse,
             valid: RefCell::new((defaults, default_value)),
             shown: RefCell::new((Vec::new(), Vec::new())),
+            clean: RefCell::new(None),
+            only_edits: Cell::new(false),
         };
         controls.check(None);
         controls.show_commands();
@@ -170,6 +191,22 @@ impl<T: Clone + 'static> RecipeControls<T> {
         png: fn(&P),
     ) -> Result<(), JsValue> {
         let form = self.container.clone();
+        // What the user types changes a field before any listener hears of it: the texts last
+        // checked are no longer the fields' (a page's own listener on the field runs first).
+        scope.keep(crate::ui::dom::Listener::capture_for_page(
+            &form,
+            "input",
+            page,
+            move |p, e| {
+                let typed = e
+                    .target()
+                    .and_then(|t| t.dyn_into::<Element>().ok())
+                    .is_some_and(|t| t.has_attribute("data-field"));
+                if typed {
+                    *get(p).clean.borrow_mut() = None;
+                }
+            },
+        )?);
         scope.listen_for(&form, "input", page, move |p, e| {
             if let Some(value) = get(p).edit(e) {
                 changed(p, value);
@@ -221,6 +258,11 @@ impl<T: Clone + 'static> RecipeControls<T> {
     /// Sets several fields at once (a drag of a point that is two arguments) and checks the
     /// form once; `slider` is the field whose slider is being dragged (left alone).
     pub fn set_texts(&self, values: &[(&str, &str)], slider: Option<usize>) -> Option<T> {
+        if self.only_edits.get() {
+            if let Some(result) = self.set_edited_texts(values, slider) {
+                return result;
+            }
+        }
         {
             let form = self.form.borrow();
             let mut texts: Vec<String> = form
@@ -273,6 +315,97 @@ impl<T: Clone + 'static> RecipeControls<T> {
         self.check_changed(None)
     }
 
+    /// From now on a drag, a key or a slider ([`RecipeControls::set_texts`],
+    /// [`RecipeControls::set_text`], a slider's input) writes only the fields whose text it
+    /// changes and, while the form shows no message, checks only those alone before the whole
+    /// set ([`validate_changed`]): the same messages, value, sliders and command lines as
+    /// before for a fraction of a live page's frame. The page then changes the fields only
+    /// through these methods and [`RecipeControls::reset`] (not with [`Form::fill`]); what the
+    /// user types is checked in full as before.
+    pub fn check_only_edits(&self) {
+        self.only_edits.set(true);
+    }
+
+    /// [`RecipeControls::set_texts`] after a check that passed with nothing shown: the new
+    /// value, if any (`None`: the form showed something, so all of it is checked as before).
+    fn set_edited_texts(
+        &self,
+        values: &[(&str, &str)],
+        slider: Option<usize>,
+    ) -> Option<Option<T>> {
+        let mut texts = self.clean.borrow().clone()?;
+        let mut edited = Vec::new();
+        let mut form = self.form.borrow_mut();
+        for (name, text) in values {
+            let Some(index) = form.index_of(name) else {
+                continue;
+            };
+            if texts[index].as_deref() == Some(*text) {
+                continue;
+            }
+            let now = form.set_value(index, text);
+            if texts[index] != now {
+                texts[index] = now;
+                edited.push(index);
+            }
+        }
+        if let Some(index) = values.first().and_then(|(name, _)| form.index_of(name)) {
+            form.note_changed(index);
+        }
+        if edited.is_empty() {
+            drop(form);
+            self.exports.clear_status();
+            return Some(None);
+        }
+        let (info, parse) = (self.info, self.parse);
+        let checked = validate_changed(
+            &form.fields,
+            &texts,
+            form.changed(),
+            &edited,
+            |t| parse_texts(info, &form, t, parse),
+            |_| None,
+        );
+        // Nothing was shown: only a new message needs the form's fields written.
+        if !(checked.messages.is_empty() && checked.marked.is_empty()) {
+            let messages: Vec<(usize, Message)> = checked
+                .messages
+                .iter()
+                .map(|(i, e)| (*i, Message::Recipe(e.clone())))
+                .collect();
+            form.show(&messages, &checked.marked);
+            *self.shown.borrow_mut() = (messages, checked.marked.clone());
+        }
+        let ok = checked.is_valid() && checked.marked.is_empty();
+        let value = checked.value.filter(|_| ok);
+        let Some(value) = value else {
+            drop(form);
+            *self.clean.borrow_mut() = None;
+            self.exports.clear_status();
+            return Some(None);
+        };
+        let canonical = canonical(&texts, &form.fields);
+        drop(form);
+        for (index, el) in &self.sliders {
+            if edited.contains(index) && Some(*index) != slider {
+                if let Some(Some(text)) = texts.get(*index) {
+                    if text.trim().parse::<f64>().is_ok() {
+                        el.set_value(text.trim());
+                    }
+                }
+            }
+        }
+        *self.clean.borrow_mut() = Some(texts);
+        let new = self.valid.borrow().0 != canonical;
+        *self.valid.borrow_mut() = (canonical, value);
+        self.exports.clear_status();
+        if !new {
+            return Some(None);
+        }
+        self.show_commands();
+        Some(Some(self.value()))
+    }
+
     fn check_changed(&self, slider: Option<usize>) -> Option<T> {
         let before = self.valid.borrow().0.clone();
         let valid = self.check(slider);
@@ -305,19 +438,11 @@ impl<T: Clone + 'static> RecipeControls<T> {
         form.show(&messages, &checked.marked);
         *self.shown.borrow_mut() = (messages, checked.marked.clone());
         let ok = checked.value.is_some() && checked.is_valid();
+        let clean = ok && checked.messages.is_empty() && checked.marked.is_empty();
         if let Some(value) = checked.value.filter(|_| ok) {
-            let canonical: Vec<Option<String>> = texts
-                .iter()
-                .zip(&form.fields)
-                .map(|(t, f)| {
-                    t.as_deref()
-                        .map(str::trim)
-                        .filter(|t| !t.is_empty() && *t != f.default())
-                        .map(str::to_string)
-                })
-                .collect();
-            *self.valid.borrow_mut() = (canonical, value);
+            *self.valid.borrow_mut() = (canonical(&texts, &form.fields), value);
         }
+        *self.clean.borrow_mut() = clean.then_some(texts);
         drop(form);
         if ok {
             self.sync_sliders(slider);

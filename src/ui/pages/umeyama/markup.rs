@@ -72,6 +72,7 @@ pub fn page() -> String {
          data-i18n=\"umeyama-edited\" hidden></p></header>\
          <div class=\"sig-top\"><section class=\"sig-card\"><h2 data-i18n=\"umeyama-view-title\"></h2>\
          <div class=\"sig-stage ume-stage\" data-{P}=\"stage\">\
+         <canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"sig-layer\" data-testid=\"umeyama-2d-canvas\" role=\"img\" tabindex=\"0\" \
          data-i18n-attr=\"aria-label=umeyama-canvas-label\" aria-describedby=\"ume-readouts\"></canvas></div>{legend}\
          <div class=\"ume-tools\">{add}{remove}{mirror}{recipe}</div>\

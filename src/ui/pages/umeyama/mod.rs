@@ -12,6 +12,12 @@
 //! and the exports. Every edit goes through the form's texts, so the downloads and the command
 //! line are `bsv umeyama-2d` with the same words; an edited run also exports
 //! `umeyama_points.csv` and says that it is no longer the Python recipe's.
+//!
+//! Speed (a drag's or slider's frame, budget 4 ms): the form checks only the fields an edit
+//! changed ([`RecipeControls::check_only_edits`]); the touch handles, the points' pixel
+//! positions and the edited notice are written only when they change (the handles not at all
+//! during a drag of the view: they are placed when it ends); the step panel rewrites only the
+//! matrix cells whose number changed.
 
 mod markup;
 mod steps;
@@ -39,6 +45,7 @@ use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
+use crate::view::drag::HandleShape;
 use crate::view::signal::{sig, Slider};
 use crate::view::umeyama_2d::{
     add_point, editable, hit_test, move_point, new_point_spot, points_text, remove_point,
@@ -135,6 +142,12 @@ struct Inner {
     edited: Element,
     points_button: Option<Element>,
     readouts: Readouts,
+    /// The touch handles placed last (`None`: place them at the next redraw).
+    handles_placed: RefCell<Option<Vec<HandleShape>>>,
+    /// The text of `data-points-px` now.
+    points_px: RefCell<String>,
+    /// Whether the edited notice shows now (`None`: not set yet).
+    edited_shown: Cell<Option<bool>>,
     url: RefCell<Option<UrlWriter>>,
     scope: RefCell<Scope>,
 }
@@ -157,6 +170,7 @@ impl Page for UmeyamaPage {
             &[STEP_KEY],
             setup_from_args,
         )?;
+        controls.check_only_edits();
         let scene = Scene::new(&controls.value())
             .ok_or_else(|| JsValue::from_str("umeyama: a run without points"))?;
         let start_step = ctx
@@ -196,6 +210,9 @@ impl Page for UmeyamaPage {
                 edited,
                 points_button,
                 readouts,
+                handles_placed: RefCell::new(None),
+                points_px: RefCell::new(String::new()),
+                edited_shown: Cell::new(None),
                 url: RefCell::new(Some(url)),
                 scope: RefCell::new(scope),
             }
@@ -429,6 +446,9 @@ impl Inner {
     /// What depends on the run alone: the edited notice and the points download.
     fn show_run(&self) {
         let recipe = self.scene.borrow().setup.is_recipe();
+        if self.edited_shown.replace(Some(!recipe)) == Some(!recipe) {
+            return;
+        }
         dom::show(&self.edited, !recipe);
         if let Some(b) = &self.points_button {
             dom::show(b, !recipe);
@@ -657,6 +677,7 @@ impl Inner {
         if let Some(d) = self.drag.borrow().as_ref() {
             d.relayout();
         }
+        *self.handles_placed.borrow_mut() = None;
         self.redraw();
     }
 
@@ -683,20 +704,32 @@ impl Inner {
             Ink::current(),
         );
         bench::record_to("__umeyamaDrawMs", now_ms() - draw_started);
-        if let Some(d) = self.drag.borrow().as_ref() {
-            d.set_handles(&view.handles(&scene));
+        // The touch handles matter when a touch starts: not during a drag (the pointer is
+        // captured); they are placed when it ends.
+        if self.dragging.get().is_none() {
+            let shapes = view.handles(&scene);
+            let mut placed = self.handles_placed.borrow_mut();
+            if placed.as_ref() != Some(&shapes) {
+                if let Some(d) = self.drag.borrow().as_ref() {
+                    d.set_handles(&shapes);
+                }
+                *placed = Some(shapes);
+            }
         }
         // Where the points and handles are, for tests and assistive tools (CSS px).
         let top = &view.canvas.top().canvas;
-        let px: Vec<String> = scene
-            .x
-            .iter()
-            .map(|p| {
-                let q = view.frame.px(*p);
-                format!("{:.1},{:.1}", q.x, q.y)
-            })
-            .collect();
-        let _ = top.set_attribute("data-points-px", &px.join(";"));
+        let mut px = String::with_capacity(12 * scene.x.len());
+        for (i, p) in scene.x.iter().enumerate() {
+            let q = view.frame.px(*p);
+            let sep = if i == 0 { "" } else { ";" };
+            px.push_str(&format!("{sep}{:.1},{:.1}", q.x, q.y));
+        }
+        let mut shown_px = self.points_px.borrow_mut();
+        if *shown_px != px {
+            let _ = top.set_attribute("data-points-px", &px);
+            *shown_px = px;
+        }
+        drop(shown_px);
         let truth = scene.truth();
         for (name, p) in [
             ("data-handle-t", truth.t),

@@ -1,6 +1,7 @@
 //! The step panel under the stepper: the step's title, what it computes (with the numbers of
 //! this run where they matter) and the small matrices it produces, from
-//! [`crate::view::umeyama_2d::shown_for`].
+//! [`crate::view::umeyama_2d::shown_for`]. The matrices' tables are built when the step
+//! changes; a drag that only changes their numbers rewrites the cells whose text changed.
 
 use std::cell::RefCell;
 
@@ -10,7 +11,7 @@ use web_sys::Element;
 use crate::ui::kit::form::escape;
 use crate::ui::{ctx, dom};
 use crate::view::signal::sig;
-use crate::view::umeyama_2d::{shown_for, umeyama_scale, Scene, Step};
+use crate::view::umeyama_2d::{shown_for, umeyama_scale, Scene, Shown, Step};
 
 use super::P;
 
@@ -19,8 +20,35 @@ pub struct StepPanel {
     title: Element,
     text: Element,
     mats: Element,
-    /// What the panel shows now (written only when it changes).
-    shown: RefCell<(String, String, String)>,
+    /// The title and text shown now (written only when they change).
+    shown: RefCell<(String, String)>,
+    /// The matrices' layout shown now (step, symbols, shapes) and their cells, each with the
+    /// text and `data-value` it shows.
+    cells: RefCell<(String, Vec<Cell>)>,
+}
+
+/// One number of a matrix: its `<td>`, text and exact value shown.
+struct Cell {
+    td: Element,
+    text: String,
+    value: String,
+}
+
+/// What fixes the matrices' markup: the step, each matrix's symbol and shape.
+fn layout(key: &str, shown: &[Shown]) -> String {
+    let mut out = key.to_string();
+    for m in shown {
+        out.push_str(&format!(
+            "|{}:{}",
+            m.symbol,
+            m.rows
+                .iter()
+                .map(|r| r.len().to_string())
+                .collect::<Vec<_>>()
+                .join(",")
+        ));
+    }
+    out
 }
 
 /// A matrix as an HTML table beside its symbol.
@@ -53,6 +81,7 @@ impl StepPanel {
             text: role("step-text")?,
             mats: role("step-mats")?,
             shown: RefCell::new(Default::default()),
+            cells: RefCell::new(Default::default()),
         })
     }
 
@@ -73,10 +102,6 @@ impl StepPanel {
             },
             _ => ctx::t(&format!("umeyama-step-{key}-text")),
         };
-        let html: String = shown_for(scene, step)
-            .iter()
-            .map(|m| matrix_html(m.symbol, &m.rows))
-            .collect();
         let mut shown = self.shown.borrow_mut();
         if shown.0 != title {
             self.title.set_text_content(Some(&title));
@@ -86,10 +111,47 @@ impl StepPanel {
             self.text.set_text_content(Some(&text));
             shown.1 = text;
         }
-        if shown.2 != html {
-            self.mats.set_inner_html(&html);
-            let _ = self.mats.set_attribute("data-step", key);
-            shown.2 = html;
+        self.show_matrices(key, &shown_for(scene, step));
+    }
+
+    /// The matrices: built anew for another layout, else only the changed cells rewritten.
+    fn show_matrices(&self, key: &str, matrices: &[Shown]) {
+        let mut cells = self.cells.borrow_mut();
+        let layout = layout(key, matrices);
+        let values = matrices.iter().flat_map(|m| m.rows.iter().flatten());
+        if cells.0 == layout {
+            for (cell, v) in cells.1.iter_mut().zip(values) {
+                let text = sig(*v, 4);
+                if cell.text != text {
+                    cell.td.set_text_content(Some(&text));
+                    cell.text = text;
+                }
+                let value = crate::pyfmt::py_float(*v);
+                if cell.value != value {
+                    let _ = cell.td.set_attribute("data-value", &value);
+                    cell.value = value;
+                }
+            }
+            return;
         }
+        let html: String = matrices
+            .iter()
+            .map(|m| matrix_html(m.symbol, &m.rows))
+            .collect();
+        self.mats.set_inner_html(&html);
+        let _ = self.mats.set_attribute("data-step", key);
+        let tds = dom::matching(&self.mats, "td").unwrap_or_default();
+        let found = tds.len() == values.clone().count();
+        cells.1 = tds
+            .into_iter()
+            .zip(values)
+            .map(|(td, v)| Cell {
+                td,
+                text: sig(*v, 4),
+                value: crate::pyfmt::py_float(*v),
+            })
+            .collect();
+        // Cells not found as built: the next frame builds them again.
+        cells.0 = if found { layout } else { String::new() };
     }
 }

@@ -1,15 +1,21 @@
-//! The view: one HiDPI canvas with the world's grid and axes, the source points X (numbered,
-//! draggable), the noisy targets Y, the aligned points `s R X + t` with their residual lines,
+//! The view: two HiDPI canvas layers, below the world's grid and axes (drawn again only when
+//! the frame, the size or the ink change: a drag's frames keep it), above the source points X
+//! (draggable), the noisy targets Y, the aligned points `s R X + t` with their residual lines,
 //! the true similarity's handles (translation and rotation/scale), and what the current
 //! teaching step adds (centroids, centred sets, the covariance's columns, the SVD's axes, the
-//! scale circles, the translation arrow). Redrawn whole on every change: a few hundred
-//! primitives, well under a millisecond.
+//! scale circles, the translation arrow), redrawn whole on every change. The marks of one
+//! kind and colour go in one path (one stroke or fill for all the residuals, all the points),
+//! and the labels are small images drawn once per font (canvas text makes Chromium bring the
+//! page's style up to date first, after the form's and the slider's changes): a drag's frame
+//! makes a few dozen canvas calls and draws no text.
+
+use std::cell::{Cell, RefCell};
 
 use glam::DVec2;
-use wasm_bindgen::JsValue;
-use web_sys::{CanvasRenderingContext2d, Element};
+use wasm_bindgen::{JsCast, JsValue};
+use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement};
 
-use crate::ui::kit::canvas::{dash, disc, ring, solid, Ink, LayeredCanvas};
+use crate::ui::kit::canvas::{dash, ring, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
 use crate::view::umeyama_2d::{rotation_handle, svd, Frame, Grab, Scene, Step};
 
@@ -34,10 +40,72 @@ pub struct Marks {
     pub hover: Option<Grab>,
 }
 
+/// What the grid layer depends on: the frame, the CSS size and the ink.
+type GridKey = (Frame, (f64, f64), Ink);
+
 /// The view component.
 pub struct SceneView {
+    /// The grid's layer below, the marks' layer on top.
     pub canvas: LayeredCanvas,
     pub frame: Frame,
+    /// What the grid layer shows now: frame, size and ink (`None`: draw it).
+    grid_drawn: Cell<Option<GridKey>>,
+    /// The labels drawn so far, in the label font and pixel ratio they were drawn for.
+    labels: RefCell<Labels>,
+}
+
+/// The label images of one font and pixel ratio.
+#[derive(Default)]
+struct Labels {
+    font: String,
+    dpr: f64,
+    drawn: Vec<Label>,
+}
+
+/// One label's text drawn once into a canvas of its own.
+struct Label {
+    text: &'static str,
+    fill: &'static str,
+    /// `None`: it could not be made; the text is drawn directly.
+    image: Option<LabelImage>,
+}
+
+/// A label's image: its canvas, CSS size, and where its text's origin lies in it.
+struct LabelImage {
+    canvas: HtmlCanvasElement,
+    w: f64,
+    h: f64,
+    origin: DVec2,
+}
+
+impl LabelImage {
+    /// `text` in `font` and `fill` at `dpr` device pixels per CSS pixel.
+    fn new(text: &str, fill: &str, font: &str, dpr: f64) -> Option<LabelImage> {
+        let document = web_sys::window()?.document()?;
+        let canvas: HtmlCanvasElement = document.create_element("canvas").ok()?.dyn_into().ok()?;
+        let ctx: CanvasRenderingContext2d = canvas.get_context("2d").ok()??.dyn_into().ok()?;
+        ctx.set_font(font);
+        let m = ctx.measure_text(text).ok()?;
+        const PAD: f64 = 2.0;
+        let finite = |v: f64| if v.is_finite() { v.max(0.0) } else { 0.0 };
+        let left = finite(m.actual_bounding_box_left()) + PAD;
+        let right = finite(m.actual_bounding_box_right()).max(finite(m.width())) + PAD;
+        let ascent = finite(m.actual_bounding_box_ascent()) + PAD;
+        let descent = finite(m.actual_bounding_box_descent()) + PAD;
+        canvas.set_width(((left + right) * dpr).ceil().max(1.0) as u32);
+        canvas.set_height(((ascent + descent) * dpr).ceil().max(1.0) as u32);
+        // The new size reset the context.
+        ctx.set_transform(dpr, 0.0, 0.0, dpr, 0.0, 0.0).ok()?;
+        ctx.set_font(font);
+        ctx.set_fill_style_str(fill);
+        ctx.fill_text(text, left, ascent).ok()?;
+        Some(LabelImage {
+            w: f64::from(canvas.width()) / dpr,
+            h: f64::from(canvas.height()) / dpr,
+            origin: DVec2::new(left, ascent),
+            canvas,
+        })
+    }
 }
 
 fn line(c: &CanvasRenderingContext2d, a: DVec2, b: DVec2, stroke: &str, width: f64) {
@@ -70,9 +138,66 @@ fn arrow(c: &CanvasRenderingContext2d, a: DVec2, b: DVec2, stroke: &str, width: 
     c.fill();
 }
 
-fn square(c: &CanvasRenderingContext2d, p: DVec2, half: f64, fill: &str) {
+/// Segments `a`–`b`, one path stroked once.
+fn segments(
+    c: &CanvasRenderingContext2d,
+    pairs: impl Iterator<Item = (DVec2, DVec2)>,
+    stroke: &str,
+    width: f64,
+) {
+    c.set_stroke_style_str(stroke);
+    c.set_line_width(width);
+    c.begin_path();
+    for (a, b) in pairs {
+        c.move_to(a.x, a.y);
+        c.line_to(b.x, b.y);
+    }
+    c.stroke();
+}
+
+/// Circles of radius `r` around `centres`, one path.
+fn circles(c: &CanvasRenderingContext2d, centres: impl Iterator<Item = DVec2>, r: f64) {
+    c.begin_path();
+    for p in centres {
+        c.move_to(p.x + r, p.y);
+        let _ = c.arc(p.x, p.y, r, 0.0, std::f64::consts::TAU);
+    }
+}
+
+/// Filled discs (the source points).
+fn discs(c: &CanvasRenderingContext2d, centres: impl Iterator<Item = DVec2>, r: f64, fill: &str) {
     c.set_fill_style_str(fill);
-    c.fill_rect(p.x - half, p.y - half, 2.0 * half, 2.0 * half);
+    circles(c, centres, r);
+    c.fill();
+}
+
+/// Stroked circles (the aligned points, the centred X).
+fn rings(
+    c: &CanvasRenderingContext2d,
+    centres: impl Iterator<Item = DVec2>,
+    r: f64,
+    stroke: &str,
+    width: f64,
+) {
+    c.set_stroke_style_str(stroke);
+    c.set_line_width(width);
+    circles(c, centres, r);
+    c.stroke();
+}
+
+/// Filled squares of half side `half` (the targets), one path.
+fn squares(
+    c: &CanvasRenderingContext2d,
+    centres: impl Iterator<Item = DVec2>,
+    half: f64,
+    fill: &str,
+) {
+    c.set_fill_style_str(fill);
+    c.begin_path();
+    for p in centres {
+        c.rect(p.x - half, p.y - half, 2.0 * half, 2.0 * half);
+    }
+    c.fill();
 }
 
 fn diamond(c: &CanvasRenderingContext2d, p: DVec2, r: f64, stroke: &str, width: f64) {
@@ -104,24 +229,21 @@ fn cross(c: &CanvasRenderingContext2d, p: DVec2, r: f64, stroke: &str, width: f6
     );
 }
 
-fn label(c: &CanvasRenderingContext2d, p: DVec2, text: &str, fill: &str, ink: Ink) {
-    c.set_font(&ink.font(13.0, true));
-    c.set_fill_style_str(fill);
-    let _ = c.fill_text(text, p.x + 8.0, p.y - 8.0);
-}
-
 impl SceneView {
     /// Wraps the canvas of `stage`.
     pub fn find(stage: &Element) -> Result<SceneView, JsValue> {
         Ok(SceneView {
             canvas: LayeredCanvas::from_stage(stage)?,
             frame: Frame::fit(([-1.0, -1.0], [1.0, 1.0]), (100.0, 100.0), 0.0),
+            grid_drawn: Cell::new(None),
+            labels: RefCell::new(Labels::default()),
         })
     }
 
     /// Sizes the canvas to the stage and fits the frame to `scene`.
     pub fn fit(&mut self, scene: &Scene) {
         self.canvas.fit();
+        self.grid_drawn.set(None);
         self.refit(scene);
     }
 
@@ -209,15 +331,86 @@ impl SceneView {
         );
     }
 
-    /// Draws `scene` at teaching `step`.
-    pub fn draw(&self, scene: &Scene, step: Step, marks: Marks, ink: Ink) {
-        let layer = self.canvas.top();
+    /// The grid layer: background, grid, axes and the grid step, when they changed.
+    fn draw_grid(&self, ink: Ink) {
+        let key = (self.frame, self.canvas.size(), ink);
+        if self.grid_drawn.get() == Some(key) {
+            return;
+        }
+        let layer = self.canvas.layer(0);
         layer.begin();
         let c = &layer.ctx;
         let (w, h) = self.canvas.size();
         c.set_fill_style_str(BG);
         c.fill_rect(0.0, 0.0, w, h);
         self.grid(c, ink);
+        self.grid_drawn.set(Some(key));
+    }
+
+    /// Labels in `ink`'s label font at the top layer's pixel ratio from now on.
+    fn label_font(&self, ink: Ink) {
+        let font = ink.font(13.0, true);
+        let dpr = self.canvas.top().dpr;
+        let mut labels = self.labels.borrow_mut();
+        if labels.font != font || labels.dpr != dpr {
+            *labels = Labels {
+                font,
+                dpr,
+                drawn: Vec::new(),
+            };
+        }
+    }
+
+    /// `text` in `fill` beside `p` (its origin 8 px right of and above `p`): its image, on
+    /// whole device pixels.
+    fn label(
+        &self,
+        c: &CanvasRenderingContext2d,
+        p: DVec2,
+        text: &'static str,
+        fill: &'static str,
+    ) {
+        let at = p + DVec2::new(8.0, -8.0);
+        let mut labels = self.labels.borrow_mut();
+        let index = match labels
+            .drawn
+            .iter()
+            .position(|l| l.text == text && l.fill == fill)
+        {
+            Some(i) => i,
+            None => {
+                let image = LabelImage::new(text, fill, &labels.font, labels.dpr);
+                labels.drawn.push(Label { text, fill, image });
+                labels.drawn.len() - 1
+            }
+        };
+        let dpr = labels.dpr;
+        match &labels.drawn[index].image {
+            Some(image) => {
+                let snap = |v: f64| (v * dpr).round() / dpr;
+                let corner = at - image.origin;
+                let _ = c.draw_image_with_html_canvas_element_and_dw_and_dh(
+                    &image.canvas,
+                    snap(corner.x),
+                    snap(corner.y),
+                    image.w,
+                    image.h,
+                );
+            }
+            None => {
+                c.set_font(&labels.font);
+                c.set_fill_style_str(fill);
+                let _ = c.fill_text(text, at.x, at.y);
+            }
+        }
+    }
+
+    /// Draws `scene` at teaching `step`.
+    pub fn draw(&self, scene: &Scene, step: Step, marks: Marks, ink: Ink) {
+        self.draw_grid(ink);
+        let layer = self.canvas.top();
+        layer.begin();
+        let c = &layer.ctx;
         let f = &self.frame;
         let s = &scene.steps;
         let lw = ink.line;
@@ -229,9 +422,8 @@ impl SceneView {
         let faded = centred || step == Step::Centroids;
         // Correspondences X_i → Y_i.
         if step == Step::Overview || step == Step::Centroids {
-            for (p, q) in scene.x.iter().zip(&scene.y) {
-                line(c, f.px(*p), f.px(*q), FAINT, lw);
-            }
+            let pairs = scene.x.iter().zip(&scene.y);
+            segments(c, pairs.map(|(p, q)| (f.px(*p), f.px(*q))), FAINT, lw);
         }
         c.set_global_alpha(if faded { 0.3 } else { 1.0 });
         // Aligned points and residuals (the fit's result).
@@ -242,27 +434,25 @@ impl SceneView {
             } else {
                 1.6 * lw
             };
-            for (a, q) in s.aligned.iter().zip(&scene.y) {
-                line(c, f.px(*a), f.px(*q), RESIDUAL, width);
-            }
+            let pairs = s.aligned.iter().zip(&scene.y);
+            segments(c, pairs.map(|(a, q)| (f.px(*a), f.px(*q))), RESIDUAL, width);
             c.set_line_dash(&solid()).ok();
         }
-        for q in &scene.y {
-            square(c, f.px(*q), 0.9 * r, Y_COL);
+        squares(c, scene.y.iter().map(|q| f.px(*q)), 0.9 * r, Y_COL);
+        discs(c, scene.x.iter().map(|p| f.px(*p)), r, X_COL);
+        if let Some(p) = marks.selected.and_then(|i| scene.x.get(i)) {
+            ring(c, f.px(*p), r + 4.0 * lw, SELECT, 2.5 * lw);
         }
-        for (i, p) in scene.x.iter().enumerate() {
-            let at = f.px(*p);
-            disc(c, at, r, X_COL);
-            if marks.selected == Some(i) {
-                ring(c, at, r + 4.0 * lw, SELECT, 2.5 * lw);
-            } else if marks.hover == Some(Grab::Point(i)) {
-                ring(c, at, r + 3.0 * lw, X_COL, 1.5 * lw);
+        if let Some(Grab::Point(i)) = marks.hover {
+            if marks.selected != Some(i) {
+                if let Some(p) = scene.x.get(i) {
+                    ring(c, f.px(*p), r + 3.0 * lw, X_COL, 1.5 * lw);
+                }
             }
         }
         if !faded {
-            for a in &s.aligned {
-                ring(c, f.px(*a), r + 1.5 * lw, ALIGNED, 2.0 * lw);
-            }
+            let aligned = s.aligned.iter().map(|a| f.px(*a));
+            rings(c, aligned, r + 1.5 * lw, ALIGNED, 2.0 * lw);
         }
         c.set_global_alpha(1.0);
         // The truth's handles: t, and t + s (cos θ, sin θ).
@@ -275,8 +465,9 @@ impl SceneView {
         let hover_w = |g: Grab| if marks.hover == Some(g) { 3.5 } else { 2.0 };
         diamond(c, t, 8.0 * lw, TRUTH, hover_w(Grab::Translation) * lw);
         ring(c, rh, 6.0 * lw, TRUTH, hover_w(Grab::Rotation) * lw);
-        label(c, t, "t", TRUTH, ink);
-        label(c, rh, "s·R", TRUTH, ink);
+        self.label_font(ink);
+        self.label(c, t, "t", TRUTH);
+        self.label(c, rh, "s·R", TRUTH);
         self.draw_step(c, scene, step, ink);
     }
 
@@ -295,36 +486,40 @@ impl SceneView {
                     ring(c, at, 9.0 * lw, col, 2.5 * lw);
                     cross(c, at, 13.0 * lw, col, 2.0 * lw);
                 }
-                label(c, f.px(s.mu_x), "μx", X_COL, ink);
-                label(c, f.px(s.mu_y), "μy", Y_COL, ink);
-                for p in &scene.x {
-                    line(c, f.px(*p), f.px(s.mu_x), "rgba(26, 77, 143, 0.25)", lw);
-                }
-                for q in &scene.y {
-                    line(c, f.px(*q), f.px(s.mu_y), "rgba(194, 65, 12, 0.25)", lw);
-                }
+                self.label(c, f.px(s.mu_x), "μx", X_COL);
+                self.label(c, f.px(s.mu_y), "μy", Y_COL);
+                let (mx, my) = (f.px(s.mu_x), f.px(s.mu_y));
+                let to_mx = scene.x.iter().map(|p| (f.px(*p), mx));
+                segments(c, to_mx, "rgba(26, 77, 143, 0.25)", lw);
+                let to_my = scene.y.iter().map(|q| (f.px(*q), my));
+                segments(c, to_my, "rgba(194, 65, 12, 0.25)", lw);
             }
             Step::Centred | Step::Covariance | Step::Svd | Step::Reflection => {
-                for (p, q) in s.centred_x.iter().zip(&s.centred_y) {
-                    line(c, at_origin(*p), at_origin(*q), FAINT, lw);
-                }
-                for p in &s.centred_x {
-                    ring(c, at_origin(*p), r, X_COL, 2.0 * lw);
-                }
+                let pairs = s.centred_x.iter().zip(&s.centred_y);
+                segments(
+                    c,
+                    pairs.map(|(p, q)| (at_origin(*p), at_origin(*q))),
+                    FAINT,
+                    lw,
+                );
+                let centred_x = s.centred_x.iter().map(|p| at_origin(*p));
+                rings(c, centred_x, r, X_COL, 2.0 * lw);
+                c.set_stroke_style_str(Y_COL);
+                c.set_line_width(2.0 * lw);
+                c.begin_path();
                 for q in &s.centred_y {
                     let at = at_origin(*q);
-                    c.set_stroke_style_str(Y_COL);
-                    c.set_line_width(2.0 * lw);
-                    c.stroke_rect(at.x - r, at.y - r, 2.0 * r, 2.0 * r);
+                    c.rect(at.x - r, at.y - r, 2.0 * r, 2.0 * r);
                 }
+                c.stroke();
                 cross(c, o, 10.0 * lw, "#111827", 1.5 * lw);
                 if step == Step::Covariance {
                     // C's columns: where C sends the axes.
                     let col = |j: usize| [s.cov[0][j], s.cov[1][j]];
                     arrow(c, o, at_origin(col(0)), "#0f766e", 3.0 * lw);
                     arrow(c, o, at_origin(col(1)), "#0f766e", 3.0 * lw);
-                    label(c, at_origin(col(0)), "C e₁", "#0f766e", ink);
-                    label(c, at_origin(col(1)), "C e₂", "#0f766e", ink);
+                    self.label(c, at_origin(col(0)), "C e₁", "#0f766e");
+                    self.label(c, at_origin(col(1)), "C e₂", "#0f766e");
                 }
                 if step == Step::Svd || step == Step::Reflection {
                     let d = svd(s);
@@ -341,8 +536,8 @@ impl SceneView {
                         let uk = [u[0][k] * d.s[k], u[1][k] * d.s[k]];
                         arrow(c, o, at_origin(v), X_COL, 2.5 * lw);
                         arrow(c, o, at_origin(uk), Y_COL, 2.5 * lw);
-                        label(c, at_origin(v), v_name, X_COL, ink);
-                        label(c, at_origin(uk), u_name, Y_COL, ink);
+                        self.label(c, at_origin(v), v_name, X_COL);
+                        self.label(c, at_origin(uk), u_name, Y_COL);
                     }
                     if step == Step::Reflection && s.reflection_fixed() {
                         // The column the fix negated, as it was.
@@ -358,19 +553,17 @@ impl SceneView {
                 let ry = s.scale * s.var_x.sqrt() * f.scale;
                 ring(c, f.px(s.mu_x), rx, X_COL, 2.0 * lw);
                 ring(c, f.px(s.mu_y), ry, Y_COL, 2.0 * lw);
-                label(
+                self.label(
                     c,
                     f.px(s.mu_x) + DVec2::new(rx * 0.7, -rx * 0.7),
                     "√var_x",
                     X_COL,
-                    ink,
                 );
-                label(
+                self.label(
                     c,
                     f.px(s.mu_y) + DVec2::new(ry * 0.7, -ry * 0.7),
                     "s·√var_x",
                     Y_COL,
-                    ink,
                 );
             }
             Step::Translation => {
@@ -382,13 +575,12 @@ impl SceneView {
                         s.scale * (rot[1][0] * p[0] + rot[1][1] * p[1]),
                     ]
                 };
-                for p in &scene.x {
-                    ring(c, f.px(srx(p)), r, "rgba(21, 128, 61, 0.5)", 1.5 * lw);
-                }
+                let moved = scene.x.iter().map(|p| f.px(srx(p)));
+                rings(c, moved, r, "rgba(21, 128, 61, 0.5)", 1.5 * lw);
                 let from = srx(&s.mu_x);
                 arrow(c, f.px(from), f.px(s.mu_y), ALIGNED, 3.0 * lw);
                 arrow(c, o, f.px(s.t), ALIGNED, 2.0 * lw);
-                label(c, f.px(s.t), "t̂", ALIGNED, ink);
+                self.label(c, f.px(s.t), "t̂", ALIGNED);
             }
             Step::Rmse => {}
         }
