@@ -110,6 +110,7 @@ teleop-col-actions = Actions
 teleop-replay = Replay
 teleop-relabel = Label
 teleop-download-file = Download { $file }
+teleop-export-writing = Writing { $file }: { $done } of { $total } rows…
 teleop-first-failure = { $event } at step { $step }
 teleop-no-failure = No failure event in this episode.
 teleop-ev-grasp = grasp

@@ -110,6 +110,7 @@ teleop-col-actions = 操作
 teleop-replay = 再生
 teleop-relabel = ラベル
 teleop-download-file = { $file } をダウンロード
+teleop-export-writing = { $file } を書き出し中：{ $total } 行のうち { $done } 行…
 teleop-first-failure = ステップ { $step } で{ $event }
 teleop-no-failure = このエピソードに失敗の出来事はありません。
 teleop-ev-grasp = 把持

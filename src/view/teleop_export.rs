@@ -16,7 +16,10 @@ use crate::teleop::{episode_csv_head, push_episode_csv_rows, Episode};
 #[derive(Debug, Clone)]
 enum Kind {
     /// One episode's CSV: the slices are the file.
-    Episode { episode: Episode, head_done: bool },
+    Episode {
+        episode: Box<Episode>,
+        head_done: bool,
+    },
     /// The evidence: every episode's CSV hashed, then the JSON.
     Evidence {
         session: Box<Session>,
@@ -48,7 +51,7 @@ impl ExportJob {
         Some(ExportJob {
             file: episode_file_name(number),
             kind: Kind::Episode {
-                episode: entry.episode.clone(),
+                episode: Box::new(entry.episode.clone()),
                 head_done: false,
             },
             next_row: 0,
@@ -59,7 +62,11 @@ impl ExportJob {
 
     /// `teleop_session_evidence.json` of `session`, `ended_at` its end time if it has none.
     pub fn evidence(session: &Session, ended_at: &str) -> ExportJob {
-        let rows_total = session.episodes.iter().map(|e| e.episode.records.len()).sum();
+        let rows_total = session
+            .episodes
+            .iter()
+            .map(|e| e.episode.records.len())
+            .sum();
         ExportJob {
             file: EVIDENCE_NAME.to_string(),
             kind: Kind::Evidence {
