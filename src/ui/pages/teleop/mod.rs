@@ -1188,9 +1188,11 @@ impl Inner {
     }
 
     fn download(&self, file: &str) {
+        let started_ms = now_ms();
         let more = self
             .exports
             .download(file, &self.session.borrow(), &iso_now());
+        bench::record_export(now_ms() - started_ms);
         if more {
             self.schedule_export();
         }
@@ -1198,7 +1200,9 @@ impl Inner {
 
     /// One slice of a file being written (the file offered at its end).
     fn export_slice(&self) {
+        let started_ms = now_ms();
         let more = self.exports.write_slice(&self.session.borrow());
+        bench::record_export(now_ms() - started_ms);
         if more {
             self.schedule_export();
         }
