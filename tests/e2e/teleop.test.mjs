@@ -16,7 +16,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createHash } from 'node:crypto';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { openApp, browser, OUT } from './harness.mjs';
@@ -538,6 +538,21 @@ test('60 s episodes export in slices: progress shown, no task of 100 ms, bsv tel
     const table = (await download(page, 'teleop_episodes.csv')).toString('utf8').trim().split('\n');
     assert.match(table[1], /^1,pick-place,FAILURE,timeout,,0,timeout,60(\.0)?,/);
     assert.equal(listed['teleop_episodes.csv'].sha256, sha256(Buffer.from(table.join('\n') + '\n')));
+    // Two files asked for at once: the second waits for the first; both arrive whole.
+    const both = [];
+    const arrived = new Promise((resolve) => {
+      page.on('download', async (d) => {
+        both.push({ name: d.suggestedFilename(), bytes: readFileSync(await d.path()) });
+        if (both.length === 2) resolve();
+      });
+    });
+    await page.locator('[data-download="teleop_episode_2.csv"]').click();
+    await page.locator('[data-download="teleop_session_evidence.json"]').click();
+    await arrived;
+    assert.deepEqual(both.map((d) => d.name).sort(), ['teleop_episode_2.csv', 'teleop_session_evidence.json']);
+    assert.ok(both.find((d) => d.name === 'teleop_episode_2.csv').bytes.equals(csv));
+    const again = JSON.parse(both.find((d) => d.name === 'teleop_session_evidence.json').bytes.toString('utf8'));
+    assert.deepEqual({ ...again, endedAt: doc.endedAt }, doc);
     assert.deepEqual(errors, []);
   } finally {
     rmSync(dir, { recursive: true, force: true });

@@ -3,7 +3,8 @@
 //! tasks ([`crate::view::teleop_export::ExportJob`]: a 60 s episode is 6,000 rows, and the
 //! evidence hashes every episode's CSV), each slice's bytes a `Blob` and the file a `Blob` of
 //! them (no copy), with a progress line (`data-tele="export-progress"`, `data-state`
-//! `writing|idle`). A click on another file while one is written queues it.
+//! `writing|idle`). A click on another file while one is written queues it; each file is the
+//! session as it was at its click.
 
 use std::cell::RefCell;
 use std::collections::VecDeque;
@@ -12,7 +13,7 @@ use wasm_bindgen::JsValue;
 use web_sys::{Blob, BlobPropertyBag, Element};
 
 use crate::i18n::FluentArg;
-use crate::teleop::session::{Session, EPISODES_NAME, EVIDENCE_NAME};
+use crate::teleop::session::{episode_file_name, Session, EPISODES_NAME, EVIDENCE_NAME};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::teleop_export::ExportJob;
@@ -33,8 +34,8 @@ struct Writing {
 pub struct Exports {
     progress: Element,
     writing: RefCell<Option<Writing>>,
-    /// Files asked for while another was written, with the end time of their session.
-    queue: RefCell<VecDeque<(String, String)>>,
+    /// Files asked for while another was written.
+    queue: RefCell<VecDeque<ExportJob>>,
 }
 
 impl Exports {
@@ -65,36 +66,26 @@ impl Exports {
             .as_ref()
             .map(|w| w.job.file().to_string());
         if let Some(current) = busy {
-            let mut queue = self.queue.borrow_mut();
-            if current != file && !queue.iter().any(|(f, _)| f == file) {
-                queue.push_back((file.to_string(), ended_at.to_string()));
+            let queued = self.queue.borrow().iter().any(|j| j.file() == file);
+            if current != file && !queued {
+                if let Some(job) = job_of(file, session, ended_at) {
+                    self.queue.borrow_mut().push_back(job);
+                }
             }
             return true;
         }
-        if !self.start(file, session, ended_at) {
+        let Some(job) = job_of(file, session, ended_at) else {
             return false;
-        }
-        self.write_slice(session)
+        };
+        self.start(job);
+        self.write_slice()
     }
 
-    fn start(&self, file: &str, session: &Session, ended_at: &str) -> bool {
-        let job = if file == EVIDENCE_NAME {
-            Some(ExportJob::evidence(session, ended_at))
-        } else {
-            session
-                .episodes
-                .iter()
-                .find(|e| crate::teleop::session::episode_file_name(e.number) == file)
-                .and_then(|e| ExportJob::episode(session, e.number))
-        };
-        let Some(job) = job else {
-            return false;
-        };
+    fn start(&self, job: ExportJob) {
         *self.writing.borrow_mut() = Some(Writing {
             job,
             slices: js_sys::Array::new(),
         });
-        true
     }
 
     /// Whether a file is being written.
@@ -103,8 +94,8 @@ impl Exports {
     }
 
     /// Writes the file for about [`MS_PER_TASK`]; at its end offers it and starts the next
-    /// file asked for (from `session` as it is then). `true` while more is left.
-    pub fn write_slice(&self, session: &Session) -> bool {
+    /// file asked for. `true` while more is left.
+    pub fn write_slice(&self) -> bool {
         let started = now_ms();
         let mut writing = self.writing.borrow_mut();
         let Some(w) = writing.as_mut() else {
@@ -130,7 +121,7 @@ impl Exports {
                     writing.take();
                     drop(writing);
                     web_sys::console::warn_1(&e);
-                    return self.next(session);
+                    return self.next();
                 }
             }
         }
@@ -149,28 +140,23 @@ impl Exports {
         if let Err(e) = saved {
             web_sys::console::warn_1(&e);
         }
-        self.next(session)
+        self.next()
     }
 
     /// Starts the next queued file, if any; `true` when a slice is due.
-    fn next(&self, session: &Session) -> bool {
-        loop {
-            let Some((file, ended_at)) = self.queue.borrow_mut().pop_front() else {
-                self.show_progress(None);
-                return false;
-            };
-            if file == EPISODES_NAME {
-                continue;
-            }
-            if self.start(&file, session, &ended_at) {
-                let progress = self
-                    .writing
-                    .borrow()
-                    .as_ref()
-                    .map(|w| w.job.progress())
-                    .unwrap_or((0, 0));
+    fn next(&self) -> bool {
+        let next = self.queue.borrow_mut().pop_front();
+        match next {
+            Some(job) => {
+                let progress = job.progress();
+                let file = job.file().to_string();
+                self.start(job);
                 self.show_progress(Some((&file, progress)));
-                return true;
+                true
+            }
+            None => {
+                self.show_progress(None);
+                false
             }
         }
     }
@@ -213,6 +199,18 @@ impl Exports {
             if text.is_some() { "writing" } else { "idle" },
         );
     }
+}
+
+/// The job writing `file` of `session` (`None`: no such file).
+fn job_of(file: &str, session: &Session, ended_at: &str) -> Option<ExportJob> {
+    if file == EVIDENCE_NAME {
+        return Some(ExportJob::evidence(session, ended_at));
+    }
+    session
+        .episodes
+        .iter()
+        .find(|e| episode_file_name(e.number) == file)
+        .and_then(|e| ExportJob::episode(session, e.number))
 }
 
 /// A `Blob` of `parts` (bytes, or blobs when `of_blobs`) of type `mime`.

@@ -1201,7 +1201,7 @@ impl Inner {
     /// One slice of a file being written (the file offered at its end).
     fn export_slice(&self) {
         let started_ms = now_ms();
-        let more = self.exports.write_slice(&self.session.borrow());
+        let more = self.exports.write_slice();
         bench::record_export(now_ms() - started_ms);
         if more {
             self.schedule_export();
