@@ -24,6 +24,8 @@
 //!   load, bit for bit (the kernel is deterministic), which keeps ten minute-long episodes
 //!   well under the browser's storage quota.
 
+use std::rc::Rc;
+
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Map, Value};
 
@@ -216,7 +218,8 @@ pub fn run_length(commands: &[Command]) -> Vec<(u32, Command)> {
 pub struct EpisodeEntry {
     /// 1, 2, ... in recording order.
     pub number: usize,
-    pub episode: Episode,
+    /// The episode (shared: a copy of the session, as an export takes, copies no steps).
+    pub episode: Rc<Episode>,
     pub metrics: EpisodeMetrics,
     /// `None` until the pilot labels it.
     pub label: Option<Label>,
@@ -232,7 +235,7 @@ impl EpisodeEntry {
         let metrics = metrics(&episode);
         EpisodeEntry {
             number,
-            episode,
+            episode: Rc::new(episode),
             metrics,
             label: None,
             category: None,
@@ -1786,7 +1789,7 @@ mod tests {
         let last = &back.episodes[3];
         assert!(last.interrupted);
         assert_eq!(last.label, None);
-        assert_eq!(last.episode, in_progress, "simulated again bit for bit");
+        assert_eq!(*last.episode, in_progress, "simulated again bit for bit");
         assert_eq!(
             last.proposal(),
             (Label::Failure, Some(FailureCategory::OperatorAbort))

@@ -6,8 +6,11 @@
 //! [`crate::teleop::episode_csv`], and the evidence is [`Session::evidence`] (each episode's
 //! CSV hashed as it is written, never held whole).
 //!
-//! A job works on a snapshot of the session taken when it starts: what the pilot does
-//! meanwhile (labels, new episodes) goes into the next export.
+//! A job works on a snapshot of the session taken when it starts (the episodes are shared,
+//! not copied): what the pilot does meanwhile (labels, new episodes) goes into the next
+//! export.
+
+use std::rc::Rc;
 
 use crate::teleop::session::{episode_file_name, Artifact, Session, Sha256, EVIDENCE_NAME};
 use crate::teleop::{episode_csv_head, push_episode_csv_rows, Episode};
@@ -17,7 +20,7 @@ use crate::teleop::{episode_csv_head, push_episode_csv_rows, Episode};
 enum Kind {
     /// One episode's CSV: the slices are the file.
     Episode {
-        episode: Box<Episode>,
+        episode: Rc<Episode>,
         head_done: bool,
     },
     /// The evidence: every episode's CSV hashed, then the JSON.
@@ -51,7 +54,7 @@ impl ExportJob {
         Some(ExportJob {
             file: episode_file_name(number),
             kind: Kind::Episode {
-                episode: Box::new(entry.episode.clone()),
+                episode: Rc::clone(&entry.episode),
                 head_done: false,
             },
             next_row: 0,
