@@ -152,10 +152,20 @@ impl EpisodeRecorder {
     }
 }
 
-/// The episode as `teleop_episode_<n>.csv` (see the module docs).
+/// The episode as `teleop_episode_<n>.csv` (see the module docs): [`episode_csv_head`] then
+/// [`push_episode_csv_rows`] of every step.
 pub fn episode_csv(episode: &Episode) -> String {
+    let mut out = episode_csv_head(episode);
+    out.reserve(episode.records.len() * 260);
+    push_episode_csv_rows(&mut out, episode, 0..episode.records.len());
+    out
+}
+
+/// The rows of an episode CSV before its step rows: the marker, the config rows and the
+/// column header (a page writing a long episode in slices starts with these).
+pub fn episode_csv_head(episode: &Episode) -> String {
     let c = &episode.config;
-    let mut out = String::with_capacity(256 + episode.records.len() * 260);
+    let mut out = String::with_capacity(1024);
     out.push_str(MARKER);
     out.push('\n');
     let mut row = |key: &str, values: &[f64]| {
@@ -204,8 +214,21 @@ pub fn episode_csv(episode: &Episode) -> String {
     ));
     out.push_str(&COLUMNS.join(","));
     out.push('\n');
+    out
+}
+
+/// Appends the step rows `steps` (0-based, clamped to the episode) of the episode CSV to
+/// `out`: [`episode_csv`] is the head and every step's row, so slices written one after the
+/// other give the same bytes.
+pub fn push_episode_csv_rows(out: &mut String, episode: &Episode, steps: std::ops::Range<usize>) {
+    let n = episode.commands.len().min(episode.records.len());
+    let start = steps.start.min(n);
+    let end = steps.end.min(n).max(start);
     let bit = |b: bool| if b { "1" } else { "0" };
-    for (cmd, r) in episode.commands.iter().zip(&episode.records) {
+    let rows = episode.commands[start..end]
+        .iter()
+        .zip(&episode.records[start..end]);
+    for (cmd, r) in rows {
         let mut first = true;
         let mut num = |out: &mut String, v: f64| {
             if !first {
@@ -214,21 +237,21 @@ pub fn episode_csv(episode: &Episode) -> String {
             first = false;
             push_py_float(out, v);
         };
-        num(&mut out, r.t_s);
-        num(&mut out, cmd.dx);
-        num(&mut out, cmd.dz);
-        num(&mut out, cmd.dphi);
+        num(out, r.t_s);
+        num(out, cmd.dx);
+        num(out, cmd.dz);
+        num(out, cmd.dphi);
         out.push(',');
         out.push_str(bit(cmd.gripper_closed));
         for v in [r.applied.dx, r.applied.dz, r.applied.dphi] {
             out.push(',');
-            push_py_float(&mut out, v);
+            push_py_float(out, v);
         }
         out.push(',');
         out.push_str(bit(r.applied.gripper_closed));
         for v in [r.q[0], r.q[1], r.q[2], r.x, r.z, r.phi] {
             out.push(',');
-            push_py_float(&mut out, v);
+            push_py_float(out, v);
         }
         out.push(',');
         out.push_str(bit(r.gripper_closed));
@@ -236,14 +259,17 @@ pub fn episode_csv(episode: &Episode) -> String {
         out.push_str(bit(r.held));
         for v in [r.block_x, r.block_z, r.manipulability] {
             out.push(',');
-            push_py_float(&mut out, v);
+            push_py_float(out, v);
         }
         out.push(',');
-        let events: Vec<String> = r.events.iter().map(Event::text).collect();
-        out.push_str(&events.join(";"));
+        for (i, e) in r.events.iter().enumerate() {
+            if i > 0 {
+                out.push(';');
+            }
+            out.push_str(&e.text());
+        }
         out.push('\n');
     }
-    out
 }
 
 /// A header row: its cells after the key, and its row number.
@@ -862,6 +888,29 @@ mod tests {
             let crlf = format!("\u{feff}{}", text.replace('\n', "\r\n"));
             assert_eq!(parse_episode_csv(&crlf).unwrap(), episode);
         }
+    }
+
+    #[test]
+    fn csv_written_in_slices_is_the_same_bytes() {
+        let episode = flown(noisy_reach());
+        let whole = episode_csv(&episode);
+        let n = episode.records.len();
+        assert!(n > 1000, "{n} steps");
+        assert!(episode.records.iter().any(|r| !r.events.is_empty()));
+        for slice in [1, 97, 1024, n, n + 5] {
+            let mut text = episode_csv_head(&episode);
+            let mut next = 0;
+            while next < n {
+                push_episode_csv_rows(&mut text, &episode, next..next + slice);
+                next += slice;
+            }
+            assert_eq!(text, whole, "slices of {slice} rows");
+        }
+        // Ranges past the end write nothing.
+        let mut tail = String::new();
+        push_episode_csv_rows(&mut tail, &episode, n..n + 10);
+        push_episode_csv_rows(&mut tail, &episode, n + 3..n + 1);
+        assert_eq!(tail, "");
     }
 
     #[test]

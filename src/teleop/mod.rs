@@ -39,8 +39,8 @@ mod error;
 pub use arm::{fk, jacobian, manipulability, ArmParams, Pose2};
 pub use control::{ik_step, ControlParams, IkMethod};
 pub use episode::{
-    episode_csv, parse_episode_csv, proposed_label, replay, Episode, EpisodeRecorder,
-    FailureCategory, Label, ReplayMismatch,
+    episode_csv, episode_csv_head, parse_episode_csv, proposed_label, push_episode_csv_rows,
+    replay, Episode, EpisodeRecorder, FailureCategory, Label, ReplayMismatch,
 };
 pub use error::TeleopError;
 pub use metrics::{metrics, EpisodeMetrics, Fitts};

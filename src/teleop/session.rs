@@ -24,6 +24,8 @@
 //!   load, bit for bit (the kernel is deterministic), which keeps ten minute-long episodes
 //!   well under the browser's storage quota.
 
+use std::rc::Rc;
+
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Map, Value};
 
@@ -216,7 +218,8 @@ pub fn run_length(commands: &[Command]) -> Vec<(u32, Command)> {
 pub struct EpisodeEntry {
     /// 1, 2, ... in recording order.
     pub number: usize,
-    pub episode: Episode,
+    /// The episode (shared: a copy of the session, as an export takes, copies no steps).
+    pub episode: Rc<Episode>,
     pub metrics: EpisodeMetrics,
     /// `None` until the pilot labels it.
     pub label: Option<Label>,
@@ -232,7 +235,7 @@ impl EpisodeEntry {
         let metrics = metrics(&episode);
         EpisodeEntry {
             number,
-            episode,
+            episode: Rc::new(episode),
             metrics,
             label: None,
             category: None,
@@ -291,6 +294,28 @@ impl Preflight {
     /// Both checks passed.
     pub fn passed(&self) -> bool {
         self.moved && self.reset_verified == Some(true)
+    }
+}
+
+/// One file of the evidence's `dataArtifacts`: its name, size and SHA-256.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Artifact {
+    /// The file's name.
+    pub path: String,
+    /// Its size, bytes.
+    pub bytes: u64,
+    /// The SHA-256 of its bytes, lowercase hex.
+    pub sha256: String,
+}
+
+impl Artifact {
+    /// The artifact of the file `path` holding `text`.
+    pub fn of(path: &str, text: &str) -> Artifact {
+        Artifact {
+            path: path.to_string(),
+            bytes: text.len() as u64,
+            sha256: sha256_hex(text.as_bytes()),
+        }
     }
 }
 
@@ -491,7 +516,19 @@ impl Session {
     /// `teleop_session_evidence.json` (pretty-printed, keys in the schema's order), with
     /// `ended_at` as the end time when the session has none yet.
     pub fn evidence(&self, ended_at: &str) -> String {
-        let value = self.evidence_value(ended_at);
+        let artifacts: Vec<Artifact> = self
+            .episodes
+            .iter()
+            .map(|e| Artifact::of(&episode_file_name(e.number), &e.csv()))
+            .collect();
+        self.evidence_with(ended_at, &artifacts)
+    }
+
+    /// The evidence given the artifacts of the episodes' CSVs (one per episode, in order),
+    /// hashed beforehand (a page hashes long episodes in slices): the same text as
+    /// [`Session::evidence`] when they are the episodes' [`Artifact::of`].
+    pub fn evidence_with(&self, ended_at: &str, episode_artifacts: &[Artifact]) -> String {
+        let value = self.evidence_value_with(ended_at, episode_artifacts);
         let mut text = serde_json::to_string_pretty(&value).unwrap_or_default();
         text.push('\n');
         text
@@ -499,23 +536,31 @@ impl Session {
 
     /// The evidence as a JSON value.
     pub fn evidence_value(&self, ended_at: &str) -> Value {
+        let artifacts: Vec<Artifact> = self
+            .episodes
+            .iter()
+            .map(|e| Artifact::of(&episode_file_name(e.number), &e.csv()))
+            .collect();
+        self.evidence_value_with(ended_at, &artifacts)
+    }
+
+    /// The evidence as a JSON value, given the episodes' artifacts (see
+    /// [`Session::evidence_with`]).
+    fn evidence_value_with(&self, ended_at: &str, episode_artifacts: &[Artifact]) -> Value {
         let s = self.summary();
         let episodes_csv = self.episodes_csv();
-        let mut artifacts = vec![json!({
-            "path": EPISODES_NAME,
-            "mediaType": "text/csv",
-            "bytes": episodes_csv.len(),
-            "sha256": sha256_hex(episodes_csv.as_bytes()),
-        })];
-        for e in &self.episodes {
-            let csv = e.csv();
-            artifacts.push(json!({
-                "path": episode_file_name(e.number),
-                "mediaType": "text/csv",
-                "bytes": csv.len(),
-                "sha256": sha256_hex(csv.as_bytes()),
-            }));
-        }
+        let table = Artifact::of(EPISODES_NAME, &episodes_csv);
+        let artifacts: Vec<Value> = std::iter::once(&table)
+            .chain(episode_artifacts)
+            .map(|a| {
+                json!({
+                    "path": a.path,
+                    "mediaType": "text/csv",
+                    "bytes": a.bytes,
+                    "sha256": a.sha256,
+                })
+            })
+            .collect();
         let mut safety = Vec::new();
         for e in &self.episodes {
             for (step, r) in e.episode.records.iter().enumerate() {
@@ -1268,30 +1313,105 @@ pub fn compare(first: &Summary, second: &Summary) -> Vec<ComparisonRow> {
 
 /// The SHA-256 of `bytes`, lowercase hex (FIPS 180-4).
 pub fn sha256_hex(bytes: &[u8]) -> String {
-    const K: [u32; 64] = [
-        0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4,
-        0xab1c5ed5, 0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe,
-        0x9bdc06a7, 0xc19bf174, 0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f,
-        0x4a7484aa, 0x5cb0a9dc, 0x76f988da, 0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7,
-        0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967, 0x27b70a85, 0x2e1b2138, 0x4d2c6dfc,
-        0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85, 0xa2bfe8a1, 0xa81a664b,
-        0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070, 0x19a4c116,
-        0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
-        0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7,
-        0xc67178f2,
-    ];
-    let mut h: [u32; 8] = [
-        0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab,
-        0x5be0cd19,
-    ];
-    let mut message = bytes.to_vec();
-    let bit_len = (bytes.len() as u64).wrapping_mul(8);
-    message.push(0x80);
-    while message.len() % 64 != 56 {
-        message.push(0);
+    let mut hasher = Sha256::new();
+    hasher.update(bytes);
+    hasher.finish_hex()
+}
+
+/// SHA-256 round constants.
+const SHA256_K: [u32; 64] = [
+    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
+    0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
+    0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
+    0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967,
+    0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
+    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070,
+    0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
+    0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2,
+];
+
+/// A SHA-256 fed in pieces (FIPS 180-4): the hash of the pieces one after the other is the
+/// hash of their concatenation, so a page can hash a file while it writes it in slices.
+#[derive(Debug, Clone)]
+pub struct Sha256 {
+    h: [u32; 8],
+    /// Bytes of the block not yet compressed.
+    block: [u8; 64],
+    filled: usize,
+    /// Bytes fed so far.
+    len: u64,
+}
+
+impl Default for Sha256 {
+    fn default() -> Self {
+        Sha256::new()
     }
-    message.extend_from_slice(&bit_len.to_be_bytes());
-    for block in message.chunks_exact(64) {
+}
+
+impl Sha256 {
+    /// A hasher of nothing yet.
+    pub fn new() -> Sha256 {
+        Sha256 {
+            h: [
+                0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab,
+                0x5be0cd19,
+            ],
+            block: [0; 64],
+            filled: 0,
+            len: 0,
+        }
+    }
+
+    /// Bytes fed so far.
+    pub fn len(&self) -> u64 {
+        self.len
+    }
+
+    /// Whether nothing was fed yet.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Feeds `bytes`.
+    pub fn update(&mut self, mut bytes: &[u8]) {
+        self.len = self.len.wrapping_add(bytes.len() as u64);
+        if self.filled > 0 {
+            let take = (64 - self.filled).min(bytes.len());
+            self.block[self.filled..self.filled + take].copy_from_slice(&bytes[..take]);
+            self.filled += take;
+            bytes = &bytes[take..];
+            if self.filled < 64 {
+                return;
+            }
+            let block = self.block;
+            self.compress(&block);
+            self.filled = 0;
+        }
+        let mut blocks = bytes.chunks_exact(64);
+        for block in &mut blocks {
+            self.compress(block);
+        }
+        let rest = blocks.remainder();
+        self.block[..rest.len()].copy_from_slice(rest);
+        self.filled = rest.len();
+    }
+
+    /// The hash of everything fed, lowercase hex.
+    pub fn finish_hex(mut self) -> String {
+        let bit_len = self.len.wrapping_mul(8);
+        let mut tail = [0u8; 128];
+        tail[..self.filled].copy_from_slice(&self.block[..self.filled]);
+        tail[self.filled] = 0x80;
+        let total = if self.filled < 56 { 64 } else { 128 };
+        tail[total - 8..total].copy_from_slice(&bit_len.to_be_bytes());
+        for block in tail[..total].chunks_exact(64) {
+            self.compress(block);
+        }
+        self.h.iter().map(|x| format!("{x:08x}")).collect()
+    }
+
+    /// One 64-byte block.
+    fn compress(&mut self, block: &[u8]) {
         let mut w = [0u32; 64];
         for (i, word) in block.chunks_exact(4).enumerate() {
             w[i] = u32::from_be_bytes([word[0], word[1], word[2], word[3]]);
@@ -1304,14 +1424,14 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
                 .wrapping_add(w[i - 7])
                 .wrapping_add(s1);
         }
-        let [mut a, mut b, mut c, mut d, mut e, mut f, mut g, mut hh] = h;
+        let [mut a, mut b, mut c, mut d, mut e, mut f, mut g, mut hh] = self.h;
         for i in 0..64 {
             let s1 = e.rotate_right(6) ^ e.rotate_right(11) ^ e.rotate_right(25);
             let ch = (e & f) ^ (!e & g);
             let t1 = hh
                 .wrapping_add(s1)
                 .wrapping_add(ch)
-                .wrapping_add(K[i])
+                .wrapping_add(SHA256_K[i])
                 .wrapping_add(w[i]);
             let s0 = a.rotate_right(2) ^ a.rotate_right(13) ^ a.rotate_right(22);
             let maj = (a & b) ^ (a & c) ^ (b & c);
@@ -1325,11 +1445,10 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
             b = a;
             a = t1.wrapping_add(t2);
         }
-        for (x, y) in h.iter_mut().zip([a, b, c, d, e, f, g, hh]) {
+        for (x, y) in self.h.iter_mut().zip([a, b, c, d, e, f, g, hh]) {
             *x = x.wrapping_add(y);
         }
     }
-    h.iter().map(|x| format!("{x:08x}")).collect()
 }
 
 #[cfg(test)]
@@ -1397,6 +1516,38 @@ mod tests {
         assert_eq!(
             sha256_hex(&million),
             "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0"
+        );
+    }
+
+    #[test]
+    fn sha256_fed_in_pieces_is_the_hash_of_the_whole() {
+        let million = vec![b'a'; 1_000_000];
+        let mut h = Sha256::new();
+        for piece in million.chunks(7) {
+            h.update(piece);
+        }
+        assert_eq!(h.len(), 1_000_000);
+        assert_eq!(
+            h.finish_hex(),
+            "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0"
+        );
+        // Every length around the padding's edges (55, 56, 63, 64, 119, 120 …), cut anywhere.
+        let bytes: Vec<u8> = (0u32..300).map(|i| (i * 37 % 251) as u8).collect();
+        for len in [0, 1, 55, 56, 57, 63, 64, 65, 119, 120, 127, 128, 129, 300] {
+            let whole = &bytes[..len];
+            let want = sha256_hex(whole);
+            for cut in [1, 3, 63, 64, 65, 200] {
+                let mut h = Sha256::new();
+                h.update(&[]);
+                for piece in whole.chunks(cut) {
+                    h.update(piece);
+                }
+                assert_eq!(h.finish_hex(), want, "{len} bytes in pieces of {cut}");
+            }
+        }
+        assert_eq!(
+            sha256_hex(&bytes[..56]),
+            "928e47b7ec93b2357b1dedf2f5f4fa86151cdf7b05f5d0a73cef7a2de1ee02c0"
         );
     }
 
@@ -1638,7 +1789,7 @@ mod tests {
         let last = &back.episodes[3];
         assert!(last.interrupted);
         assert_eq!(last.label, None);
-        assert_eq!(last.episode, in_progress, "simulated again bit for bit");
+        assert_eq!(*last.episode, in_progress, "simulated again bit for bit");
         assert_eq!(
             last.proposal(),
             (Label::Failure, Some(FailureCategory::OperatorAbort))

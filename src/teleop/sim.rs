@@ -14,8 +14,13 @@
 //!    [`Event::SpeedLimit`] names the joint that limited it; joint position limits then clamp
 //!    each joint ([`Event::JointLimit`]);
 //! 5. if the new pose puts a link, a finger or the carried block into the table or an
-//!    obstacle, the arm does not move this step ([`Event::Collision`]): contact stops it, as a
-//!    real arm's safety stop would;
+//!    obstacle, or a link (1–3, not a finger) into the block lying at rest (on the table or an
+//!    obstacle, not grasped), the arm does not move this step ([`Event::Collision`]): contact
+//!    stops it, as a real arm's safety stop would. Touching the resting block with a link is a
+//!    contact, as the Academy's task rules count it; pushing it is not modelled (the block does
+//!    not move). The fingers are left to the gripper rules of step 6 (a grasp within the
+//!    tolerances, else a miss), and a link the block came to rest against may move away from it
+//!    (a move counts only when it brings the link closer);
 //! 6. the gripper follows the command: closing with the block's centre within
 //!    `GRASP_TOLERANCE_M` of the tip and the fingers within `GRASP_ANGLE_TOLERANCE_RAD` of a
 //!    pair of faces grasps it ([`Event::Grasp`]), closing on nothing is [`Event::GraspMiss`];
@@ -40,9 +45,10 @@ use super::arm::{fk, jacobian, manipulability};
 use super::control::ik_step;
 use super::error::TeleopError;
 use super::scene::{
-    arm_capsules, first_contact, point_box_distance, Box2, Capsule, Layout, SceneConfig,
-    SceneGeometry, Segment, TargetStatus, TargetView, Task, BLOCK_HALF, CLOSED_HALF_WIDTH,
-    CONTACT_SLOP_M, GRASP_ANGLE_TOLERANCE_RAD, GRASP_TOLERANCE_M, OPEN_HALF_WIDTH, TABLE_Z,
+    arm_capsules, first_contact, point_box_distance, segment_box_distance, Box2, Capsule, Layout,
+    SceneConfig, SceneGeometry, Segment, TargetStatus, TargetView, Task, BLOCK_HALF,
+    CLOSED_HALF_WIDTH, CONTACT_SLOP_M, GRASP_ANGLE_TOLERANCE_RAD, GRASP_TOLERANCE_M,
+    OPEN_HALF_WIDTH, TABLE_Z,
 };
 use crate::rng::NumpyRng;
 
@@ -533,7 +539,9 @@ impl Sim {
         let mut contact = [false; 4];
         if q_new != q {
             let capsules = arm_capsules(&arm, &q_new, self.finger_half_width());
-            if let Some(link) = first_contact(&capsules, &self.layout.obstacles) {
+            if let Some(link) = first_contact(&capsules, &self.layout.obstacles)
+                .or_else(|| self.resting_block_contact(&q, &capsules))
+            {
                 contact[usize::from(link) - 1] = true;
             } else if self.state.block.held && self.held_block_contact(&q_new) {
                 contact[3] = true;
@@ -548,6 +556,35 @@ impl Sim {
         if !contact.iter().any(|c| *c) {
             self.state.q = q_new;
         }
+    }
+
+    /// The first link (1–3; the fingers are left to the gripper rules) that the move from `q`
+    /// to the pose of `moved` (its capsules) brings into the block lying at rest: closer to it
+    /// than the link's radius, and closer than at `q` (a link the block came to rest against
+    /// may move away). `None` while the block is held or falling.
+    fn resting_block_contact(&self, q: &[f64; 3], moved: &[Capsule; 5]) -> Option<u8> {
+        let b = &self.state.block;
+        if b.held || !b.resting {
+            return None;
+        }
+        // At rest the block lies face down (angle 0): an axis-aligned square.
+        let block = Box2 {
+            x0: b.x - BLOCK_HALF,
+            z0: b.z - BLOCK_HALF,
+            x1: b.x + BLOCK_HALF,
+            z1: b.z + BLOCK_HALF,
+        };
+        let gap = |cap: &Capsule| segment_box_distance(&cap.segment, &block) - cap.radius;
+        let mut before: Option<[Capsule; 5]> = None;
+        (0..3).find_map(|i| {
+            let now = gap(&moved[i]);
+            if now >= 0.0 {
+                return None;
+            }
+            let was = before
+                .get_or_insert_with(|| arm_capsules(&self.config.arm, q, self.finger_half_width()));
+            (now < gap(&was[i])).then_some(i as u8 + 1)
+        })
     }
 
     /// Whether the block, carried at pose `q`, would press into the table or an obstacle
@@ -960,6 +997,70 @@ mod tests {
         let mut s = sim(SceneConfig::default());
         for c in held_for(DOWN, 300) {
             s.step(&c);
+        }
+        let before = s.state().q;
+        let r = s.step(&UP);
+        assert_ne!(r.q, before);
+        assert_eq!(r.events, vec![]);
+    }
+
+    #[test]
+    fn a_link_touching_the_resting_block_is_a_collision_and_the_block_stays() {
+        use crate::teleop::scene::FINGER_LENGTH;
+        let config = SceneConfig::default();
+        let (bx, bz) = Layout::of(&config.task).block_start;
+        // The open gripper pointing down, lowered over the block and pressed on: the palm
+        // (link 3, FINGER_LENGTH behind the tip, radius link_radius) meets the block's top.
+        let descend = |x: f64| {
+            let above = Waypoint {
+                x,
+                z: bz + 0.04,
+                phi: Some(-std::f64::consts::FRAC_PI_2),
+                gripper_closed: false,
+                hold_steps: 0,
+            };
+            let press = Waypoint {
+                z: TABLE_Z - 0.02,
+                hold_steps: 0,
+                ..above
+            };
+            fly(config.clone(), vec![above, press], 1500).unwrap()
+        };
+        let episode = descend(bx);
+        let ev = events(&episode);
+        let collisions: Vec<_> = ev
+            .iter()
+            .filter(|(_, e)| matches!(e, Event::Collision { .. }))
+            .collect();
+        assert_eq!(collisions.len(), 1, "{ev:?}");
+        assert_eq!(collisions[0].1, Event::Collision { link: 3 });
+        assert!(!ev
+            .iter()
+            .any(|(_, e)| *e == Event::Grasp || *e == Event::GraspMiss));
+        let last = episode.records.last().unwrap();
+        // Stopped where the palm's capsule touches the block's top, above the table contact.
+        let touch_z = bz + BLOCK_HALF + config.arm.link_radius - FINGER_LENGTH;
+        assert!(
+            (last.z - touch_z).abs() < 0.002,
+            "tip z {} (touch at {touch_z})",
+            last.z
+        );
+        assert!(last.z > TABLE_Z + super::super::scene::FINGER_RADIUS + 0.002);
+        // The block is not pushed.
+        assert_eq!((last.block_x, last.block_z), (bx, bz));
+        // The same descent beside the block goes down to the table.
+        let beside = descend(bx + 0.05);
+        let low = beside.records.last().unwrap();
+        assert!(
+            low.z < TABLE_Z + super::super::scene::FINGER_RADIUS + 0.002,
+            "{} {:?}",
+            low.z,
+            events(&beside)
+        );
+        // Moving away from the block works at once.
+        let mut s = sim(config.clone());
+        for c in &episode.commands {
+            s.step(c);
         }
         let before = s.state().q;
         let r = s.step(&UP);

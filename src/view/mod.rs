@@ -35,6 +35,7 @@
 //! - [`teleop`]: the Robot Pilot page: settings and their checks, readout texts, view transform.
 //! - [`teleop_input`]: the Robot Pilot page's input mapping (Isaac Lab keyboard and gamepad, clutch),
 //!   the fixed-step accumulator.
+//! - [`teleop_export`]: the Robot Pilot page's episode CSV and evidence written in slices.
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
@@ -63,6 +64,7 @@ pub mod signal;
 pub mod stepper;
 pub mod table;
 pub mod teleop;
+pub mod teleop_export;
 pub mod teleop_input;
 pub mod traj_resample;
 pub mod trapezoid_profile;

@@ -25,6 +25,11 @@
 //! The simulation runs at a fixed 100 Hz whatever the display rate: [`Accumulator`] turns the
 //! frame intervals into whole steps, and a key press that arrives between two steps is given one
 //! step on the next frame, so at latency 0 the arm moves on the very next displayed frame.
+//!
+//! The page asks for animation frames only while something can change ([`FrameDemand`]): keys
+//! held, a gamepad connected (it is polled, it sends no events), the clutch held, the
+//! episode's clock running or a notice waiting to time out. An idle page requests no frames;
+//! the next input asks for one, and that frame steps at once.
 
 /// Isaac Lab `Se3KeyboardCfg` defaults.
 pub const KEYBOARD_POS_SENSITIVITY: f64 = 0.4;
@@ -250,6 +255,35 @@ impl Accumulator {
     }
 }
 
+/// What keeps the page's frame loop running (see the module docs).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct FrameDemand {
+    /// A command key is held.
+    pub keys_held: bool,
+    /// A gamepad is connected: it is polled every frame.
+    pub pad_connected: bool,
+    /// The pointer holds the clutch.
+    pub clutch_held: bool,
+    /// The episode's clock runs (engaged, started, not ended): a step is owed every 10 ms.
+    pub episode_running: bool,
+    /// An input arrived that no frame has taken yet.
+    pub fresh_input: bool,
+    /// A notice shows until this time (ms, the frame clock), then the frame clears it.
+    pub notice_until_ms: Option<f64>,
+}
+
+impl FrameDemand {
+    /// Whether another frame is needed after the frame at `now_ms`.
+    pub fn needs_frames(&self, now_ms: f64) -> bool {
+        self.keys_held
+            || self.pad_connected
+            || self.clutch_held
+            || self.episode_running
+            || self.fresh_input
+            || self.notice_until_ms.is_some_and(|until| until > now_ms)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -384,6 +418,47 @@ mod tests {
             "{a:?}"
         );
         assert_eq!(clutch_axes((0.1, 0.1), (0.1, 0.1)), [0.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn an_idle_page_needs_no_frames() {
+        let idle = FrameDemand::default();
+        assert!(!idle.needs_frames(0.0));
+        let each = [
+            FrameDemand {
+                keys_held: true,
+                ..idle
+            },
+            FrameDemand {
+                pad_connected: true,
+                ..idle
+            },
+            FrameDemand {
+                clutch_held: true,
+                ..idle
+            },
+            FrameDemand {
+                episode_running: true,
+                ..idle
+            },
+            FrameDemand {
+                fresh_input: true,
+                ..idle
+            },
+        ];
+        for d in each {
+            assert!(d.needs_frames(0.0), "{d:?}");
+        }
+        // A notice keeps frames coming until the frame that clears it.
+        let notice = FrameDemand {
+            notice_until_ms: Some(600.0),
+            ..idle
+        };
+        assert!(notice.needs_frames(599.9));
+        assert!(!notice.needs_frames(600.0));
+        // Idle, then a press: the first frame takes one step at once (no time owed).
+        let mut acc = Accumulator::default();
+        assert_eq!(acc.steps(0.0, true), 1);
     }
 
     #[test]

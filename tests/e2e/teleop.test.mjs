@@ -7,11 +7,16 @@
 // the downloaded bytes); a reload keeps the session, and an episode cut off by the reload comes
 // back interrupted; a bad saved file is refused with a message naming what is wrong, the
 // session kept; Japanese leaves no English UI text. Screenshots go to tests/e2e/out/.
+// An idle page requests no animation frames, and a key press still moves the tip on the next
+// frame. Four 60 s episodes (stored sessions of 6,000 commands each) export in slices: the
+// episode CSV and the evidence with a progress line and no main-thread task of 100 ms, and
+// `bsv teleop-replay` reproduces the CSV. A second session after an exported first: the
+// comparison keeps the first, the second's files are its own, and a reload keeps both.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createHash } from 'node:crypto';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { openApp, browser, OUT } from './harness.mjs';
@@ -325,5 +330,291 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
     } finally {
       await close();
     }
+  }
+});
+
+/** Preflight with the keyboard (the arm moved, a reset checked), then Record ten. */
+async function preflightThenRecord(page) {
+  await canvas(page).focus();
+  await hold(page, 'w', 250);
+  await page.keyboard.press('r');
+  assert.equal(await page.locator('[data-check="reset"]').getAttribute('data-state'), 'done');
+  await page.locator('[data-module="record-ten"]').click();
+}
+
+/** Records one episode (`key` held `ms`), ended with End episode and labelled as proposed. */
+async function recordEpisode(page, key, ms) {
+  await canvas(page).focus();
+  await hold(page, key, ms);
+  await page.locator('[data-action="end-episode"]').click();
+  const panel = page.locator('[data-tele="label-panel"]');
+  await panel.waitFor({ state: 'visible' });
+  await page.locator('[data-action="confirm-label"]').click();
+  await panel.waitFor({ state: 'hidden' });
+  await page.keyboard.press('r');
+}
+
+/** A page whose requestAnimationFrame calls are counted (window.__rafCalls) and whose main-thread
+ * tasks over 50 ms are listed (window.__longTasks, ms). */
+async function openCounted(hash = '#/teleop') {
+  const app = await open(hash);
+  await app.context.addInitScript(() => {
+    window.__rafCalls = 0;
+    const raf = window.requestAnimationFrame.bind(window);
+    window.requestAnimationFrame = (cb) => { window.__rafCalls++; return raf(cb); };
+    window.__longTasks = [];
+    new PerformanceObserver((list) => {
+      for (const e of list.getEntries()) window.__longTasks.push(e.duration);
+    }).observe({ type: 'longtask', buffered: true });
+  });
+  await app.page.reload();
+  await app.page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
+  return app;
+}
+
+/** requestAnimationFrame calls during `ms` of wall time. */
+async function framesDuring(page, ms) {
+  return page.evaluate(async (ms) => {
+    const n0 = window.__rafCalls;
+    await new Promise((r) => setTimeout(r, ms));
+    return window.__rafCalls - n0;
+  }, ms);
+}
+
+test('an idle page requests no frames; a key press moves the tip on the next frame', async () => {
+  const { page, errors, close } = await openCounted();
+  try {
+    await page.waitForTimeout(300);
+    assert.ok((await framesDuring(page, 1000)) <= 1, 'idle after the mount: no frames');
+    await canvas(page).focus();
+    // keydown → the first frame after it shows a moved tip (x readout).
+    const frames = await page.evaluate(
+      () =>
+        new Promise((resolve) => {
+          const x0 = document.querySelector('[data-readout="x"]').textContent;
+          const c = document.querySelector('[data-testid="teleop-canvas"]');
+          c.dispatchEvent(new KeyboardEvent('keydown', { code: 'KeyW', key: 'w', bubbles: true }));
+          let n = 0;
+          const tick = () => {
+            n++;
+            if (document.querySelector('[data-readout="x"]').textContent !== x0 || n > 30) {
+              window.dispatchEvent(new KeyboardEvent('keyup', { code: 'KeyW', key: 'w', bubbles: true }));
+              resolve(n);
+            } else requestAnimationFrame(tick);
+          };
+          requestAnimationFrame(tick);
+        }),
+    );
+    assert.equal(frames, 1, 'the tip moved on the next frame');
+    // Held keys keep the frames coming and the tip moving.
+    const r0 = await readouts(page);
+    await page.keyboard.down('q');
+    const held = await framesDuring(page, 1000);
+    await page.keyboard.up('q');
+    // (A busy machine's headless Chromium may give far fewer than 60 frames a second.)
+    assert.ok(held >= 5, `${held} frames while Q was held`);
+    assert.ok(Number((await readouts(page)).z) > Number(r0.z) + 0.01);
+    // The episode's clock runs after the first input (time passes); a reset stops it.
+    const t0 = Number((await readouts(page)).time);
+    await page.waitForTimeout(300);
+    assert.ok(Number((await readouts(page)).time) > t0 + 0.1, 'the episode clock runs');
+    await page.keyboard.press('r');
+    await page.waitForTimeout(200);
+    assert.ok((await framesDuring(page, 1000)) <= 1, 'idle again after the reset');
+    assert.equal((await readouts(page)).time, '0.00');
+    // The on-screen buttons wake it too: the gripper closes on the next frame.
+    await page.locator('[data-action="gripper"]').click();
+    await page.waitForFunction(() => document.querySelector('[data-readout="gripper"]').dataset.value === 'closed');
+    // A pad connecting asks for a frame (it is then polled every frame).
+    await page.keyboard.press('r');
+    await page.waitForTimeout(200);
+    const woken = await page.evaluate(async () => {
+      const n0 = window.__rafCalls;
+      window.dispatchEvent(new Event('gamepadconnected'));
+      await new Promise((r) => setTimeout(r, 100));
+      return window.__rafCalls - n0;
+    });
+    assert.ok(woken >= 1, 'gamepadconnected asks for a frame');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+/** The stored session with its episode replaced by `copies` episodes of 6,000 commands (60 s at
+ * 100 Hz: the default time box ends each at its last step), in four runs of varied commands. */
+function sixtySecondSession(stored, copies) {
+  const s = JSON.parse(stored);
+  const [entry] = s.episodes;
+  const cmd = (dx, dz, dphi, gripper_closed) => ({ dx, dz, dphi, gripper_closed });
+  entry.episode.runs = [
+    [1500, cmd(1, 0, 0, false)],
+    [1500, cmd(0, 1, 0.5, false)],
+    [1500, cmd(-1, -0.5, 0, false)],
+    [1500, cmd(0.3, -0.2, -1, false)],
+  ];
+  entry.label = 'FAILURE';
+  entry.category = 'timeout';
+  s.episodes = Array.from({ length: copies }, () => structuredClone(entry));
+  s.in_progress = null;
+  return JSON.stringify(s);
+}
+
+test('60 s episodes export in slices: progress shown, no task of 100 ms, bsv teleop-replay reproduces the CSV', async () => {
+  const { page, context, errors, close } = await openCounted();
+  const dir = mkdtempSync(join(tmpdir(), 'bsv-teleop-long-'));
+  try {
+    await preflightThenRecord(page);
+    await recordEpisode(page, 'w', 200);
+    const stored = await page.evaluate(() => localStorage.getItem('bsv.teleop.session'));
+    // Stored before the app loads again (the page saves its own session on pagehide), once.
+    await context.addInitScript((s) => {
+      if (sessionStorage.getItem('long-session') === null) {
+        sessionStorage.setItem('long-session', '1');
+        localStorage.setItem('bsv.teleop.session', s);
+      }
+    }, sixtySecondSession(stored, 4));
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 4);
+    assert.match(await page.locator('[data-tele="episodes"] tbody tr').first().innerText(), /60(\.00)? s/);
+    // Every text the progress line shows is recorded.
+    await page.evaluate(() => {
+      window.__progress = [];
+      const el = document.querySelector('[data-tele="export-progress"]');
+      new MutationObserver(() => { if (!el.hidden) window.__progress.push(el.textContent); })
+        .observe(el, { childList: true, characterData: true, subtree: true, attributes: true });
+    });
+    await page.waitForTimeout(500);
+    // Downloads `file` up to three times (the machine running the tests may be busy): the bytes
+    // of the first, the wall time and the long tasks (ms) of each, stopping at a clean one.
+    const exported = async (file) => {
+      const tries = [];
+      let bytes = null;
+      for (let i = 0; i < 3 && !tries.some((t) => t.tasks.every((d) => d < 100)); i++) {
+        await page.evaluate(() => { window.__longTasks = []; });
+        const t0 = Date.now();
+        const got = await download(page, file);
+        bytes ??= got;
+        assert.ok(got.equals(bytes), `${file}: the same bytes each time`);
+        tries.push({ ms: Date.now() - t0, tasks: await page.evaluate(() => window.__longTasks.map(Math.round)) });
+      }
+      return { bytes, tries };
+    };
+
+    // One episode's CSV: 6,000 rows, about 1.6 MB.
+    const { bytes: csv, tries: csvTries } = await exported('teleop_episode_1.csv');
+    const lines = csv.toString('utf8').trim().split('\n');
+    const rows = lines.filter((l) => !l.startsWith('#')).length - 1;
+    assert.equal(rows, 6000);
+    assert.ok(csv.length > 1_000_000, `${csv.length} bytes`);
+    assert.match(lines.at(-1), /,timeout$/);
+    const file = join(dir, 'teleop_episode_1.csv');
+    writeFileSync(file, csv);
+    const out = execFileSync(BSV, ['teleop-replay', file], { encoding: 'utf8' });
+    assert.match(out, /^replayed 6000 steps of pick-place \(dls\): every recorded step reproduced exactly\noutcome: timeout\nduration_s: 60\.0\n/);
+    const progress = await page.evaluate(() => window.__progress.splice(0));
+    assert.ok(progress.some((t) => /^Writing teleop_episode_1\.csv: [\d,]+ of 6,000 rows…$/.test(t)), `progress: ${progress.join(' | ')}`);
+    assert.equal(await page.locator('[data-tele="export-progress"]').getAttribute('data-state'), 'idle');
+    assert.ok(await page.locator('[data-tele="export-progress"]').isHidden());
+
+    // The evidence: the four CSVs (24,000 rows) hashed in slices.
+    const { bytes: evidence, tries: evidenceTries } = await exported('teleop_session_evidence.json');
+    const doc = JSON.parse(evidence.toString('utf8'));
+    checkEvidence(doc);
+    assert.equal(doc.episodes.attempted, 4);
+    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.path, a]));
+    assert.equal(listed['teleop_episode_1.csv'].sha256, sha256(csv));
+    assert.equal(listed['teleop_episode_1.csv'].bytes, csv.length);
+    assert.equal(listed['teleop_episode_4.csv'].sha256, sha256(csv), 'the same commands, the same bytes');
+    const progress2 = await page.evaluate(() => window.__progress.splice(0));
+    assert.ok(progress2.some((t) => /^Writing teleop_session_evidence\.json: [\d,]+ of 24,000 rows…$/.test(t)), `progress: ${progress2.join(' | ')}`);
+
+    // (Written in one task, the evidence's is about 240 ms and the CSV's 70 ms on an idle machine.)
+    console.log(`# teleop exports (ms, long tasks): episode CSV ${JSON.stringify(csvTries)}, evidence of 4 × 60 s ${JSON.stringify(evidenceTries)}`);
+    for (const [name, tries] of [['the CSV', csvTries], ['the evidence', evidenceTries]]) {
+      assert.ok(tries.some((t) => t.tasks.every((d) => d < 100)), `a task of 100 ms or more each time ${name} was written: ${JSON.stringify(tries)}`);
+    }
+    // The file's bytes are what the episodes table and the evidence say (the progress line gone).
+    const table = (await download(page, 'teleop_episodes.csv')).toString('utf8').trim().split('\n');
+    assert.match(table[1], /^1,pick-place,FAILURE,timeout,,0,timeout,60(\.0)?,/);
+    assert.equal(listed['teleop_episodes.csv'].sha256, sha256(Buffer.from(table.join('\n') + '\n')));
+    // Two files asked for at once: the second waits for the first; both arrive whole.
+    const both = [];
+    const arrived = new Promise((resolve) => {
+      page.on('download', async (d) => {
+        both.push({ name: d.suggestedFilename(), bytes: readFileSync(await d.path()) });
+        if (both.length === 2) resolve();
+      });
+    });
+    await page.locator('[data-download="teleop_episode_2.csv"]').click();
+    await page.locator('[data-download="teleop_session_evidence.json"]').click();
+    await arrived;
+    assert.deepEqual(both.map((d) => d.name).sort(), ['teleop_episode_2.csv', 'teleop_session_evidence.json']);
+    assert.ok(both.find((d) => d.name === 'teleop_episode_2.csv').bytes.equals(csv));
+    const again = JSON.parse(both.find((d) => d.name === 'teleop_session_evidence.json').bytes.toString('utf8'));
+    assert.deepEqual({ ...again, endedAt: doc.endedAt }, doc);
+    assert.deepEqual(errors, []);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+    await close();
+  }
+});
+
+test('a second session after an exported first: the comparison keeps the first, the files are the second\'s, a reload keeps both', async () => {
+  const { page, errors, close } = await open();
+  const dir = mkdtempSync(join(tmpdir(), 'bsv-teleop-second-'));
+  try {
+    await preflightThenRecord(page);
+    await recordEpisode(page, 'w', 300);
+    const firstCsv = await download(page, 'teleop_episode_1.csv');
+    const first = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
+    assert.equal(first.episodes.attempted, 1);
+    // Start the second session: Record ten, no episodes, the first kept for the comparison.
+    await page.locator('[data-action="second-session"]').click();
+    assert.equal(await page.locator('[data-tele="status"]').innerText(), 'The second session started at Record ten; the first is kept for the comparison.');
+    assert.equal(await page.locator('[data-module="record-ten"]').getAttribute('aria-current'), 'step');
+    assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 0);
+    assert.equal((await readouts(page)).episode, '1 / 10');
+    const cell = (id, col) => page.locator(`[data-tele="compare"] [data-compare="${id}"] td:nth-child(${col})`).innerText();
+    assert.equal(await cell('attempted', 2), '1');
+    assert.equal(await cell('attempted', 3), '0');
+    // Its first episode (Q instead of W): its own files.
+    await recordEpisode(page, 'q', 300);
+    assert.equal(await cell('attempted', 3), '1');
+    assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 1);
+    const secondCsv = await download(page, 'teleop_episode_1.csv');
+    assert.notEqual(sha256(secondCsv), sha256(firstCsv), 'episode 1 of the second session is its own');
+    const file = join(dir, 'teleop_episode_1.csv');
+    writeFileSync(file, secondCsv);
+    execFileSync(BSV, ['teleop-replay', file], { encoding: 'utf8' });
+    const second = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
+    checkEvidence(second);
+    assert.equal(second.episodes.attempted, 1);
+    assert.deepEqual(second.dataArtifacts.map((a) => a.path), ['teleop_episodes.csv', 'teleop_episode_1.csv']);
+    assert.equal(second.dataArtifacts[1].sha256, sha256(secondCsv));
+    assert.equal(second.pilotId, first.pilotId);
+    assert.ok(Date.parse(second.startedAt) >= Date.parse(first.endedAt), `${second.startedAt} after ${first.endedAt}`);
+    assert.equal(second.metrics.preflightResetVerified, true, 'the preflight carries over');
+    // A reload keeps both sessions.
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    assert.equal(await cell('attempted', 2), '1');
+    assert.equal(await cell('attempted', 3), '1');
+    assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 1);
+    // New session: the second becomes the first; the new one starts at preflight, empty.
+    await page.locator('[data-action="new-session"]').click();
+    assert.equal(await page.locator('[data-tele="status"]').innerText(), 'A new session started; the previous one is kept as the first session for the comparison.');
+    assert.equal(await page.locator('[data-module="preflight"]').getAttribute('aria-current'), 'step');
+    assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 0);
+    assert.equal(await cell('attempted', 2), '1');
+    assert.equal(await cell('attempted', 3), '0');
+    const third = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
+    assert.equal(third.episodes.attempted, 0);
+    assert.deepEqual(third.dataArtifacts.map((a) => a.path), ['teleop_episodes.csv']);
+    assert.deepEqual(errors, []);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+    await close();
   }
 });

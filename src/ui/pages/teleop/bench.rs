@@ -1,21 +1,34 @@
 //! Timing hooks for `tests/e2e/teleop.bench.mjs`, built only with the `bench` cargo feature:
 //! every live frame's work (poll the devices, step the simulation, draw, readouts), ms, is
-//! pushed to `window.__teleopFrameMs` (the last 5000). Without the feature, [`record`] does
-//! nothing.
+//! pushed to `window.__teleopFrameMs`, and every slice of a file written in slices (an
+//! episode's CSV, the evidence) to `window.__teleopExportMs` (the last 5000 of each). Without
+//! the feature, [`record`] and [`record_export`] do nothing.
 
 #[cfg(not(feature = "bench"))]
 pub(super) fn record(_ms: f64) {}
 
+#[cfg(not(feature = "bench"))]
+pub(super) fn record_export(_ms: f64) {}
+
 #[cfg(feature = "bench")]
 pub(super) fn record(ms: f64) {
+    push("__teleopFrameMs", ms);
+}
+
+#[cfg(feature = "bench")]
+pub(super) fn record_export(ms: f64) {
+    push("__teleopExportMs", ms);
+}
+
+#[cfg(feature = "bench")]
+fn push(name: &str, ms: f64) {
     use wasm_bindgen::prelude::*;
     use wasm_bindgen::JsCast;
-    const FRAMES: &str = "__teleopFrameMs";
     const KEEP: u32 = 5000;
     let Some(window) = web_sys::window() else {
         return;
     };
-    let key = JsValue::from_str(FRAMES);
+    let key = JsValue::from_str(name);
     let list = js_sys::Reflect::get(&window, &key)
         .ok()
         .and_then(|v| v.dyn_into::<js_sys::Array>().ok())

@@ -232,6 +232,7 @@ pub fn page() -> String {
          <label class=\"button tele-open\"><span data-i18n=\"teleop-open\"></span>\
          <input type=\"file\" multiple accept=\".json,.csv,application/json,text/csv\" data-tele=\"open\" class=\"kit-visually-hidden\"></label>\
          <button type=\"button\" class=\"button\" data-action=\"new-session\" data-i18n=\"teleop-new-session\"></button></div>\
+         <p class=\"tele-note\" data-tele=\"export-progress\" data-state=\"idle\" role=\"status\" hidden></p>\
          <p class=\"tele-note\" data-i18n=\"teleop-open-note\"></p>\
          <p class=\"tele-error\" data-tele=\"open-error\" role=\"alert\" hidden></p>\
          <p class=\"tele-note\" data-tele=\"status\" role=\"status\"></p></section>\

@@ -5,14 +5,17 @@
 //!
 //! The page is a struct of components, one file each: `scene_view` (the arm, scene and trail
 //! on the canvas), `devices` (keys, gamepad, clutch), `settings` (the validated form),
-//! `label_panel`, `episode_table` (episodes and the repeatability table), `review` (replay
-//! under the kit's stepper, the timeline), `markup` and `bench`. This file holds the live
+//! `label_panel`, `episode_table` (episodes and the repeatability table), `exports` (the
+//! downloads, long files written in slices), `review` (replay under the kit's stepper, the
+//! timeline), `markup` and `bench`. This file holds the live
 //! simulation (`Live`) and the session, and wires them.
 //!
 //! The simulation runs at a fixed 100 Hz on the kit's frame loop: each displayed frame takes
 //! the whole 10 ms steps its interval owes (`crate::view::teleop_input::Accumulator`), and a
 //! key press between two steps gets one at once, so at latency 0 the arm moves on the next
-//! frame. An episode starts at the pilot's first input after a reset (an idle arm is not
+//! frame. The loop asks for frames only while something can change
+//! (`crate::view::teleop_input::FrameDemand`): an idle page requests none, and the next input
+//! asks for one. An episode starts at the pilot's first input after a reset (an idle arm is not
 //! timed), and ends at success, at the time box, by End episode or by a reset. The session
 //! is saved in localStorage after every episode and label, every two seconds while
 //! recording and on `pagehide`; an episode cut off by a reload comes back as interrupted.
@@ -20,6 +23,7 @@
 mod bench;
 mod devices;
 mod episode_table;
+mod exports;
 mod label_panel;
 mod markup;
 mod review;
@@ -34,8 +38,8 @@ use wasm_bindgen::JsCast;
 use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, PointerEvent};
 
 use crate::teleop::session::{
-    category_from_id, episode_file_name, label_from_id, EpisodeEntry, InputDevice, Module, Session,
-    SessionError, EPISODES_NAME, EVIDENCE_NAME, RECORD_TARGET,
+    category_from_id, label_from_id, EpisodeEntry, InputDevice, Module, Session, SessionError,
+    EPISODES_NAME, EVIDENCE_NAME, RECORD_TARGET,
 };
 use crate::teleop::{Command, Episode, Event, Sim, StepRecord};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
@@ -43,12 +47,13 @@ use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::kit::stepper::{Speed, StepperOptions, StepperWidget};
 use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
-use crate::ui::schedule::now_ms;
+use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::teleop::{metres, radians, sensitivity_defaults, Settings, SettingsTexts};
-use crate::view::teleop_input::{key_action, Accumulator, KeyAction};
+use crate::view::teleop_input::{key_action, Accumulator, FrameDemand, KeyAction};
 
 use devices::{Clutch, Devices};
+use exports::Exports;
 use label_panel::LabelPanel;
 use review::{Replay, Timeline};
 use scene_view::SceneView;
@@ -203,6 +208,9 @@ pub struct Inner {
     stepper: RefCell<Option<StepperWidget<Replay>>>,
     timeline: RefCell<Timeline>,
     frame: RefCell<Option<FrameLoop>>,
+    exports: Exports,
+    /// The next slice of a file being written.
+    export_timer: RefCell<Option<Rc<Timer>>>,
     last_save_ms: Cell<f64>,
     /// The device status shown (`None`: to be written).
     shown_device: RefCell<Option<String>>,
@@ -298,6 +306,7 @@ impl Page for TeleopPage {
         let timeline = Timeline::new(find(&root, "[data-testid=\"teleop-timeline\"]")?)?;
         let readouts = Readouts::find(&root)?;
         let labels = LabelPanel::find(&root)?;
+        let exports = Exports::find(&root)?;
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| Inner {
             me: me.clone(),
             root: root.clone(),
@@ -315,6 +324,8 @@ impl Page for TeleopPage {
             stepper: RefCell::new(None),
             timeline: RefCell::new(timeline),
             frame: RefCell::new(None),
+            exports,
+            export_timer: RefCell::new(None),
             last_save_ms: Cell::new(0.0),
             shown_device: RefCell::new(None),
             shown_stop: RefCell::new(String::new()),
@@ -377,8 +388,9 @@ impl Inner {
         let mut scope = self.scope.borrow_mut();
         let me = &self.me;
         let frame = scope.dirty_frame_loop(me, |p: &Inner, _bits, t| p.frame(t));
-        frame.set_animating(true);
+        frame.request();
         *self.frame.borrow_mut() = Some(frame);
+        *self.export_timer.borrow_mut() = Some(scope.timer(me, Inner::export_slice));
         scope.listen_for(&self.els.engage, "click", me, |p, _| p.toggle_engage())?;
         scope.listen_for(&self.els.gripper, "click", me, |p, _| p.toggle_gripper())?;
         scope.listen_for(&self.els.reset, "click", me, |p, _| p.reset())?;
@@ -425,6 +437,9 @@ impl Inner {
             p.devices.borrow_mut().keys.clear()
         })?;
         scope.listen_for(&window, "pagehide", me, |p, _| p.save())?;
+        // A pad is polled once per frame while connected; an idle page polls nothing until
+        // one connects.
+        scope.listen_for(&window, "gamepadconnected", me, |p, _| p.request_frame())?;
         scope.listen_for(&canvas, "pointerdown", me, |p, e| p.pointer_down(e))?;
         scope.listen_for(&canvas, "pointermove", me, |p, e| p.pointer_move(e))?;
         for ev in ["pointerup", "pointercancel", "lostpointercapture"] {
@@ -523,6 +538,8 @@ impl Inner {
                     c.tip_start.1 + at.1 - c.pointer_start.1,
                 );
                 d.fresh = true;
+                drop(d);
+                self.request_frame();
             }
         }
     }
@@ -569,6 +586,7 @@ impl Inner {
     /// One displayed frame: poll the pad, step the simulation, draw, readouts.
     fn frame(&self, t_ms: f64) {
         if self.in_review() {
+            self.animate(false);
             return;
         }
         let started_ms = now_ms();
@@ -667,6 +685,33 @@ impl Inner {
         bench::record(now_ms() - started_ms);
         if self.recording_in_progress() && now_ms() - self.last_save_ms.get() > SAVE_EVERY_MS {
             self.save();
+        }
+        let busy = self.frame_demand().needs_frames(t_ms);
+        self.animate(busy);
+    }
+
+    /// What keeps frames coming after this one.
+    fn frame_demand(&self) -> FrameDemand {
+        let live = self.live.borrow();
+        let d = self.devices.borrow();
+        FrameDemand {
+            keys_held: d.keys.any(),
+            pad_connected: d.pad_name.is_some(),
+            clutch_held: d.clutch.is_some(),
+            episode_running: live.engaged && live.started && !live.ended,
+            fresh_input: d.fresh,
+            notice_until_ms: live.stop.as_ref().map(|(until, _, _)| *until),
+        }
+    }
+
+    /// Keeps the frames coming, or lets them stop (idle: the next frame, asked for by an
+    /// input, counts no time from this one).
+    fn animate(&self, on: bool) {
+        if !on {
+            self.live.borrow_mut().last_frame_ms = None;
+        }
+        if let Some(f) = self.frame.borrow().as_ref() {
+            f.set_animating(on);
         }
     }
 
@@ -1143,21 +1188,29 @@ impl Inner {
     }
 
     fn download(&self, file: &str) {
-        let s = self.session.borrow();
-        let text = if file == EPISODES_NAME {
-            Some((s.episodes_csv(), "text/csv"))
-        } else if file == EVIDENCE_NAME {
-            Some((s.evidence(&iso_now()), "application/json"))
-        } else {
-            s.episodes
-                .iter()
-                .find(|e| episode_file_name(e.number) == file)
-                .map(|e| (e.csv(), "text/csv"))
-        };
-        if let Some((text, mime)) = text {
-            if let Err(err) = crate::ui::download::download_text(file, &text, mime) {
-                web_sys::console::warn_1(&err);
-            }
+        let started_ms = now_ms();
+        let more = self
+            .exports
+            .download(file, &self.session.borrow(), &iso_now());
+        bench::record_export(now_ms() - started_ms);
+        if more {
+            self.schedule_export();
+        }
+    }
+
+    /// One slice of a file being written (the file offered at its end).
+    fn export_slice(&self) {
+        let started_ms = now_ms();
+        let more = self.exports.write_slice();
+        bench::record_export(now_ms() - started_ms);
+        if more {
+            self.schedule_export();
+        }
+    }
+
+    fn schedule_export(&self) {
+        if let Some(t) = self.export_timer.borrow().as_ref() {
+            t.schedule(0);
         }
     }
 
@@ -1526,6 +1579,7 @@ impl Inner {
 
     fn relocalize(&self) {
         let _ = dom::relocalize(&self.root);
+        self.exports.relocalize();
         self.settings.borrow().render();
         self.labels.borrow().render();
         *self.shown_device.borrow_mut() = None;

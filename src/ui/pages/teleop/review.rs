@@ -3,6 +3,8 @@
 //! recorded states: the kernel is deterministic), and a timeline under the stepper with every
 //! event as a tick and the first failure marked (`data-first-failure`, the step from 1).
 
+use std::rc::Rc;
+
 use wasm_bindgen::JsValue;
 use web_sys::HtmlCanvasElement;
 
@@ -13,7 +15,8 @@ use crate::ui::kit::stepper::{Length, StepModel};
 /// The stepper's model: an episode and the replaying simulation.
 pub struct Replay {
     pub number: usize,
-    pub episode: Episode,
+    /// Shared with the session (no copy of its steps).
+    pub episode: Rc<Episode>,
     sim: Option<Sim>,
     /// Steps taken by `sim`.
     at: u64,
@@ -23,7 +26,7 @@ pub struct Replay {
 
 impl Replay {
     /// Replays episode `number`.
-    pub fn new(number: usize, episode: Episode, first_failure: Option<(u64, Event)>) -> Replay {
+    pub fn new(number: usize, episode: Rc<Episode>, first_failure: Option<(u64, Event)>) -> Replay {
         let sim = Sim::new(episode.config.clone()).ok();
         Replay {
             number,

@@ -1,0 +1,225 @@
+//! The session's downloads: `teleop_episodes.csv` at once (one short row per episode), and
+//! `teleop_episode_<n>.csv` and `teleop_session_evidence.json` written in slices between
+//! tasks ([`crate::view::teleop_export::ExportJob`]: a 60 s episode is 6,000 rows, and the
+//! evidence hashes every episode's CSV), each slice's bytes a `Blob` and the file a `Blob` of
+//! them (no copy), with a progress line (`data-tele="export-progress"`, `data-state`
+//! `writing|idle`). A click on another file while one is written queues it; each file is the
+//! session as it was at its click.
+
+use std::cell::RefCell;
+use std::collections::VecDeque;
+
+use wasm_bindgen::JsValue;
+use web_sys::{Blob, BlobPropertyBag, Element};
+
+use crate::i18n::FluentArg;
+use crate::teleop::session::{episode_file_name, Session, EPISODES_NAME, EVIDENCE_NAME};
+use crate::ui::schedule::now_ms;
+use crate::ui::{ctx, dom};
+use crate::view::teleop_export::ExportJob;
+
+/// Rows written (or hashed) between two clock reads.
+const ROWS_PER_PIECE: usize = 200;
+/// Time spent writing per task, ms (a frame at 60 Hz: the page stays responsive while a long
+/// file is written, with room for a busy machine under the 100 ms of a long task).
+const MS_PER_TASK: f64 = 16.0;
+
+/// A file being written: the job and the `Blob` of each slice so far.
+struct Writing {
+    job: ExportJob,
+    slices: js_sys::Array,
+}
+
+/// The exports component.
+pub struct Exports {
+    progress: Element,
+    writing: RefCell<Option<Writing>>,
+    /// Files asked for while another was written.
+    queue: RefCell<VecDeque<ExportJob>>,
+}
+
+impl Exports {
+    /// Finds the progress line under `root`.
+    pub fn find(root: &Element) -> Result<Exports, JsValue> {
+        Ok(Exports {
+            progress: dom::find(root, "[data-tele=\"export-progress\"]", "teleop")?,
+            writing: RefCell::new(None),
+            queue: RefCell::new(VecDeque::new()),
+        })
+    }
+
+    /// Downloads `file` of `session` (`ended_at`: its end time if it has none): the episodes
+    /// table at once, an episode's CSV or the evidence in slices; `true` when more slices are
+    /// due (call [`Exports::write_slice`] in the next tasks).
+    pub fn download(&self, file: &str, session: &Session, ended_at: &str) -> bool {
+        if file == EPISODES_NAME {
+            if let Err(e) =
+                crate::ui::download::download_text(file, &session.episodes_csv(), "text/csv")
+            {
+                web_sys::console::warn_1(&e);
+            }
+            return self.is_writing();
+        }
+        let busy = self
+            .writing
+            .borrow()
+            .as_ref()
+            .map(|w| w.job.file().to_string());
+        if let Some(current) = busy {
+            let queued = self.queue.borrow().iter().any(|j| j.file() == file);
+            if current != file && !queued {
+                if let Some(job) = job_of(file, session, ended_at) {
+                    self.queue.borrow_mut().push_back(job);
+                }
+            }
+            return true;
+        }
+        let Some(job) = job_of(file, session, ended_at) else {
+            return false;
+        };
+        self.start(job);
+        self.write_slice()
+    }
+
+    fn start(&self, job: ExportJob) {
+        *self.writing.borrow_mut() = Some(Writing {
+            job,
+            slices: js_sys::Array::new(),
+        });
+    }
+
+    /// Whether a file is being written.
+    pub fn is_writing(&self) -> bool {
+        self.writing.borrow().is_some()
+    }
+
+    /// Writes the file for about [`MS_PER_TASK`]; at its end offers it and starts the next
+    /// file asked for. `true` while more is left.
+    pub fn write_slice(&self) -> bool {
+        let started = now_ms();
+        let mut writing = self.writing.borrow_mut();
+        let Some(w) = writing.as_mut() else {
+            return false;
+        };
+        let mut text = String::new();
+        while !w.job.is_done() {
+            text.push_str(&w.job.step(ROWS_PER_PIECE));
+            if now_ms() - started >= MS_PER_TASK {
+                break;
+            }
+        }
+        let file = w.job.file().to_string();
+        let mime = w.job.mime();
+        if !text.is_empty() {
+            // The slice's bytes (no JS string for the garbage collector).
+            let bytes = js_sys::Array::of1(&js_sys::Uint8Array::from(text.as_bytes()));
+            match blob(&bytes, mime, false) {
+                Ok(b) => {
+                    w.slices.push(&b);
+                }
+                Err(e) => {
+                    writing.take();
+                    drop(writing);
+                    web_sys::console::warn_1(&e);
+                    return self.next();
+                }
+            }
+        }
+        if !w.job.is_done() {
+            let progress = w.job.progress();
+            drop(writing);
+            self.show_progress(Some((&file, progress)));
+            return true;
+        }
+        let slices = w.slices.clone();
+        writing.take();
+        drop(writing);
+        // A Blob of Blobs refers to their bytes: nothing is copied here.
+        let saved =
+            blob(&slices, mime, true).and_then(|b| crate::ui::download::download_blob(&b, &file));
+        if let Err(e) = saved {
+            web_sys::console::warn_1(&e);
+        }
+        self.next()
+    }
+
+    /// Starts the next queued file, if any; `true` when a slice is due.
+    fn next(&self) -> bool {
+        let next = self.queue.borrow_mut().pop_front();
+        match next {
+            Some(job) => {
+                let progress = job.progress();
+                let file = job.file().to_string();
+                self.start(job);
+                self.show_progress(Some((&file, progress)));
+                true
+            }
+            None => {
+                self.show_progress(None);
+                false
+            }
+        }
+    }
+
+    /// Re-renders the progress line in the current language.
+    pub fn relocalize(&self) {
+        let shown = self
+            .writing
+            .borrow()
+            .as_ref()
+            .map(|w| (w.job.file().to_string(), w.job.progress()));
+        match shown {
+            Some((file, progress)) => self.show_progress(Some((&file, progress))),
+            None => self.show_progress(None),
+        }
+    }
+
+    /// The progress line (`None`: hidden).
+    fn show_progress(&self, shown: Option<(&str, (usize, usize))>) {
+        let text = shown.map(|(file, (done, total))| {
+            ctx::t_args(
+                "teleop-export-writing",
+                &[
+                    ("file", FluentArg::Text(file.to_string())),
+                    (
+                        "done",
+                        FluentArg::Text(crate::pyfmt::group_u64(done as u64)),
+                    ),
+                    (
+                        "total",
+                        FluentArg::Text(crate::pyfmt::group_u64(total as u64)),
+                    ),
+                ],
+            )
+        });
+        self.progress.set_text_content(text.as_deref());
+        dom::show(&self.progress, text.is_some());
+        let _ = self.progress.set_attribute(
+            "data-state",
+            if text.is_some() { "writing" } else { "idle" },
+        );
+    }
+}
+
+/// The job writing `file` of `session` (`None`: no such file).
+fn job_of(file: &str, session: &Session, ended_at: &str) -> Option<ExportJob> {
+    if file == EVIDENCE_NAME {
+        return Some(ExportJob::evidence(session, ended_at));
+    }
+    session
+        .episodes
+        .iter()
+        .find(|e| episode_file_name(e.number) == file)
+        .and_then(|e| ExportJob::episode(session, e.number))
+}
+
+/// A `Blob` of `parts` (bytes, or blobs when `of_blobs`) of type `mime`.
+fn blob(parts: &js_sys::Array, mime: &str, of_blobs: bool) -> Result<Blob, JsValue> {
+    let options = BlobPropertyBag::new();
+    options.set_type(mime);
+    if of_blobs {
+        Blob::new_with_blob_sequence_and_options(parts, &options)
+    } else {
+        Blob::new_with_u8_array_sequence_and_options(parts, &options)
+    }
+}
