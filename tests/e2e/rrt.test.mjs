@@ -225,6 +225,85 @@ test('dragging the obstacle changes the URL and the tree; an invalid goal is ref
   }
 });
 
+test('by keyboard, c chooses a corner of the chosen box and Shift + arrows resize the box through the corner drag (URL, CLI downloads, refusals); the ? overlay lists c', async () => {
+  const { page, errors, close } = await open();
+  try {
+    const canvas = page.locator('[data-testid="rrt-2d-canvas"]');
+    const target = page.locator('[data-testid="rrt-2d-key-target"]');
+    const waitObstacle = (box) => page.waitForFunction(
+      (b) => new URLSearchParams(location.hash.split('?')[1] ?? '').get('obstacle') === b, box, { timeout: 3000 });
+    await canvas.focus();
+    for (const key of ['n', 'n', 'n']) await page.keyboard.press(key);
+    assert.equal(await target.innerText(), 'Shift + arrows move box 1.');
+    await page.keyboard.press('c');
+    assert.equal(await target.innerText(), 'Shift + arrows move the top-right corner of box 1.');
+    // The recipe's box 0.35,0.25,0.65,0.75: its top-right corner 0.02 right and 0.01 up.
+    await page.keyboard.press('Shift+ArrowRight');
+    await page.keyboard.press('Shift+ArrowRight');
+    await page.keyboard.press('Shift+ArrowUp');
+    await waitObstacle('0.35,0.25,0.67,0.76');
+    assert.equal((await counters(page)).iteration, 0, 'the run starts again');
+    // The next corner anticlockwise: the top-left one, 0.01 left.
+    await page.keyboard.press('c');
+    assert.equal(await target.innerText(), 'Shift + arrows move the top-left corner of box 1.');
+    await page.keyboard.press('Shift+ArrowLeft');
+    const box = '0.34,0.25,0.67,0.76';
+    await waitObstacle(box);
+    // The run and the downloads are the CLI's in the resized world.
+    const args = ['7', '800', '--obstacle', box];
+    assert.equal(await page.locator('[data-cmd="bsv"]').innerText(), `bsv rrt-2d ${args.join(' ')}`);
+    await page.locator('[data-action="end"]').click();
+    assert.equal((await counters(page)).nodes, cliNodes(args));
+    const want = cli(['rrt-2d', ...args]).files;
+    for (const file of ['rrt_nodes.csv', 'rrt_path.csv']) {
+      assertSameBytes(await download(page, file), want.get(file), `resized by keys: ${file}`);
+    }
+    // After the four corners, c comes back to the whole box.
+    await canvas.focus();
+    for (const key of ['c', 'c', 'c']) await page.keyboard.press(key);
+    assert.equal(await target.innerText(), 'Shift + arrows move box 1.');
+    // A corner cannot cross the opposite one: the box keeps its smallest side (0.02).
+    await page.keyboard.press('c');
+    for (let k = 0; k < 60; k++) await page.keyboard.press('Shift+ArrowDown');
+    await waitObstacle('0.34,0.25,0.67,0.27');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+  // c with the start chosen (or nothing): the top-right corner of the selected box, else box 1.
+  // A corner that would make the box cover the goal is refused with the drag's message.
+  const near = await open('#/rrt-2d?obstacle=0.5,0.5,0.9,0.89');
+  try {
+    const { page } = near;
+    const target = page.locator('[data-testid="rrt-2d-key-target"]');
+    const message = page.locator('[data-testid="rrt-2d-world-message"]');
+    await page.locator('[data-testid="rrt-2d-canvas"]').focus();
+    await page.keyboard.press('c');
+    assert.equal(await target.innerText(), 'Shift + arrows move the top-right corner of box 1.');
+    await page.keyboard.press('Shift+ArrowUp');
+    assert.equal(await message.isVisible(), true);
+    assert.match(await message.innerText(), /box 1 would cover the goal/);
+    assert.equal((await query(page)).get('obstacle'), '0.5,0.5,0.9,0.89');
+    await page.keyboard.press('Shift+ArrowDown');
+    await page.waitForFunction(() => /obstacle=0\.5(%2C|,)0\.5(%2C|,)0\.9(%2C|,)0\.88/.test(location.hash), null, { timeout: 3000 });
+    assert.equal(await message.isVisible(), false);
+    // The ? overlay lists the key, in English and in Japanese.
+    await page.keyboard.press('?');
+    assert.match(await page.locator('[data-testid="page-keys"]').innerText(), /c\s+Choose a corner of the chosen box/);
+    await page.keyboard.press('Escape');
+    await page.keyboard.press('l');
+    await page.keyboard.press('?');
+    assert.match(await page.locator('[data-testid="page-keys"]').innerText(), /c\s+選んだ箱の角を選ぶ/);
+    await page.keyboard.press('Escape');
+    await page.locator('[data-testid="rrt-2d-canvas"]').focus();
+    await page.keyboard.press('c');
+    assert.equal(await target.innerText(), 'Shift + 矢印キーで箱 1 の左上の角を動かします。');
+    assert.deepEqual(near.errors, []);
+  } finally {
+    await near.close();
+  }
+});
+
 test('a bad field shows its message and keeps the last run', async () => {
   const { page, errors, close } = await open();
   try {
