@@ -291,14 +291,18 @@ impl Page for RrtPage {
         });
         inner.install()?;
         inner.build_stepper()?;
-        inner.world.borrow_mut().fit();
         inner.exports.update(&inner.state.borrow());
-        inner.redraw_world();
         if start_it > 0 {
             inner.pending_it.set(Some(start_it));
         }
         inner.finish_slice_for(MOUNT_SLICE_MS);
+        // The URL is written after the first frame (it only tidies it), not in the mount's
+        // task.
+        inner.url_written.set(now_ms());
         inner.update();
+        // The canvases are sized and drawn by the stage's first ResizeObserver callback, in
+        // the first frame after its layout and before its paint: measuring them here would
+        // force the whole page's first layout inside the mount's task.
         Ok(RrtPage(inner))
     }
 
@@ -982,6 +986,9 @@ impl Inner {
             .setup()
             .map_or(crate::recipes::rrt_2d::GOAL_TOL, |s| s.world.goal_tol);
         let world = self.world.borrow();
+        if !world.is_sized() {
+            return;
+        }
         world.draw_world(&state, tol, Ink::current());
         if let Some(d) = self.drag.borrow().as_ref() {
             d.set_handles(&world.handles(&state));
