@@ -319,7 +319,10 @@ pub(crate) fn route_changed(def: Option<&'static PageDef>) -> Result<(), JsValue
         for link in dom::matching(&nav, "a[data-page]")? {
             if link.get_attribute("data-page").as_deref() == Some(current) {
                 link.set_attribute("aria-current", "page")?;
-                reveal_in_nav(&link);
+                // Measured after the page's first paint: measuring now would force the whole
+                // new page's first layout inside the task that mounts it.
+                let link = link.clone();
+                crate::ui::schedule::after_paint(move || reveal_in_nav(&link))?;
             } else {
                 link.remove_attribute("aria-current")?;
             }

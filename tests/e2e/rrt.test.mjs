@@ -8,6 +8,11 @@
 // main-thread task of 100 ms or more while it does, at End (a cursor into the finished run, no
 // copy) or while the 864k-row nodes CSV is written (in slices) (a 'longtask' observer; the
 // mount's are reported); End and the CSVs equal `bsv`.
+// Opening the page, from another page or as a fresh load, takes no main-thread task of 50 ms or
+// more (the canvases are sized and drawn in the first frame, not measured in the mount's task),
+// for the default and a 20,000-iteration run (judged on the best of up to five tries made while
+// plain 10 ms tasks run unstretched); first frames are reported. By keyboard, `c` chooses a corner of the chosen box and
+// Shift + arrows resize the box as a corner drag does (URL, CLI downloads, refusals).
 // In a build with `--features bench` it also reports the frame work p95 while playing as fast
 // as possible to 50,000 nodes.
 import { test } from 'node:test';
@@ -225,6 +230,85 @@ test('dragging the obstacle changes the URL and the tree; an invalid goal is ref
   }
 });
 
+test('by keyboard, c chooses a corner of the chosen box and Shift + arrows resize the box through the corner drag (URL, CLI downloads, refusals); the ? overlay lists c', async () => {
+  const { page, errors, close } = await open();
+  try {
+    const canvas = page.locator('[data-testid="rrt-2d-canvas"]');
+    const target = page.locator('[data-testid="rrt-2d-key-target"]');
+    const waitObstacle = (box) => page.waitForFunction(
+      (b) => new URLSearchParams(location.hash.split('?')[1] ?? '').get('obstacle') === b, box, { timeout: 3000 });
+    await canvas.focus();
+    for (const key of ['n', 'n', 'n']) await page.keyboard.press(key);
+    assert.equal(await target.innerText(), 'Shift + arrows move box 1.');
+    await page.keyboard.press('c');
+    assert.equal(await target.innerText(), 'Shift + arrows move the top-right corner of box 1.');
+    // The recipe's box 0.35,0.25,0.65,0.75: its top-right corner 0.02 right and 0.01 up.
+    await page.keyboard.press('Shift+ArrowRight');
+    await page.keyboard.press('Shift+ArrowRight');
+    await page.keyboard.press('Shift+ArrowUp');
+    await waitObstacle('0.35,0.25,0.67,0.76');
+    assert.equal((await counters(page)).iteration, 0, 'the run starts again');
+    // The next corner anticlockwise: the top-left one, 0.01 left.
+    await page.keyboard.press('c');
+    assert.equal(await target.innerText(), 'Shift + arrows move the top-left corner of box 1.');
+    await page.keyboard.press('Shift+ArrowLeft');
+    const box = '0.34,0.25,0.67,0.76';
+    await waitObstacle(box);
+    // The run and the downloads are the CLI's in the resized world.
+    const args = ['7', '800', '--obstacle', box];
+    assert.equal(await page.locator('[data-cmd="bsv"]').innerText(), `bsv rrt-2d ${args.join(' ')}`);
+    await page.locator('[data-action="end"]').click();
+    assert.equal((await counters(page)).nodes, cliNodes(args));
+    const want = cli(['rrt-2d', ...args]).files;
+    for (const file of ['rrt_nodes.csv', 'rrt_path.csv']) {
+      assertSameBytes(await download(page, file), want.get(file), `resized by keys: ${file}`);
+    }
+    // After the four corners, c comes back to the whole box.
+    await canvas.focus();
+    for (const key of ['c', 'c', 'c']) await page.keyboard.press(key);
+    assert.equal(await target.innerText(), 'Shift + arrows move box 1.');
+    // A corner cannot cross the opposite one: the box keeps its smallest side (0.02).
+    await page.keyboard.press('c');
+    for (let k = 0; k < 60; k++) await page.keyboard.press('Shift+ArrowDown');
+    await waitObstacle('0.34,0.25,0.67,0.27');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+  // c with the start chosen (or nothing): the top-right corner of the selected box, else box 1.
+  // A corner that would make the box cover the goal is refused with the drag's message.
+  const near = await open('#/rrt-2d?obstacle=0.5,0.5,0.9,0.89');
+  try {
+    const { page } = near;
+    const target = page.locator('[data-testid="rrt-2d-key-target"]');
+    const message = page.locator('[data-testid="rrt-2d-world-message"]');
+    await page.locator('[data-testid="rrt-2d-canvas"]').focus();
+    await page.keyboard.press('c');
+    assert.equal(await target.innerText(), 'Shift + arrows move the top-right corner of box 1.');
+    await page.keyboard.press('Shift+ArrowUp');
+    assert.equal(await message.isVisible(), true);
+    assert.match(await message.innerText(), /box 1 would cover the goal/);
+    assert.equal((await query(page)).get('obstacle'), '0.5,0.5,0.9,0.89');
+    await page.keyboard.press('Shift+ArrowDown');
+    await page.waitForFunction(() => /obstacle=0\.5(%2C|,)0\.5(%2C|,)0\.9(%2C|,)0\.88/.test(location.hash), null, { timeout: 3000 });
+    assert.equal(await message.isVisible(), false);
+    // The ? overlay lists the key, in English and in Japanese.
+    await page.keyboard.press('?');
+    assert.match(await page.locator('[data-testid="page-keys"]').innerText(), /c\s+Choose a corner of the chosen box/);
+    await page.keyboard.press('Escape');
+    await page.keyboard.press('l');
+    await page.keyboard.press('?');
+    assert.match(await page.locator('[data-testid="page-keys"]').innerText(), /c\s+選んだ箱の角を選ぶ/);
+    await page.keyboard.press('Escape');
+    await page.locator('[data-testid="rrt-2d-canvas"]').focus();
+    await page.keyboard.press('c');
+    assert.equal(await target.innerText(), 'Shift + 矢印キーで箱 1 の左上の角を動かします。');
+    assert.deepEqual(near.errors, []);
+  } finally {
+    await near.close();
+  }
+});
+
 test('a bad field shows its message and keeps the last run', async () => {
   const { page, errors, close } = await open();
   try {
@@ -282,6 +366,110 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
     } finally {
       await close();
     }
+  }
+});
+
+test('opening the page (the default, and 20,000 iterations with the goal walled in), from another page or as a fresh load, takes no main-thread task of 50 ms or more; it opens ready to step', { timeout: 300_000 }, async (t) => {
+  const walls = ['0.7,0.7,0.9,0.72', '0.7,0.88,0.9,0.9', '0.7,0.7,0.72,0.9', '0.88,0.7,0.9,0.9'];
+  const cases = ['#/rrt-2d', `#/rrt-2d?max_iter=20000&${walls.map((w) => `obstacle=${w}`).join('&')}&goal=0.8,0.8`];
+  const { page, context, errors, close } = await open('#/');
+  try {
+    // Registered before any script of the page runs: a fresh load's own tasks are all seen.
+    await context.addInitScript(() => {
+      window.__longTasks = [];
+      new PerformanceObserver((list) => {
+        for (const e of list.getEntries()) window.__longTasks.push(Math.round(e.duration));
+      }).observe({ type: 'longtask', buffered: true });
+      new MutationObserver((_, observer) => {
+        if (document.documentElement?.dataset.appReady === '1') {
+          observer.disconnect();
+          requestAnimationFrame(() => { window.__firstFrameMs = performance.now(); });
+        }
+      }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-app-ready'] });
+    });
+    /** The page grown to its end (in slices after the first frame), ready to step: its long tasks. */
+    const settled = async (hash) => {
+      await page.waitForSelector('[data-testid="rrt-2d-finishing"][data-state="done"]', { state: 'attached', timeout: 60_000 });
+      await page.waitForTimeout(500);
+      const c = await counters(page);
+      assert.deepEqual([c.iteration, c.nodes, c.path_points], [0, 1, 0], `${hash}: ready to step`);
+      return page.evaluate(() => window.__longTasks.slice());
+    };
+    /** From the IK page: the page's own mount, its first frame (layout, the canvases sized and drawn), the run's slices. */
+    const opened = async (hash) => {
+      await page.goto('about:blank');
+      await page.goto(`${server.url}/#/ik-2r`);
+      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20_000 });
+      await page.waitForTimeout(500);
+      const frameMs = await page.evaluate(async (h) => {
+        window.__longTasks = [];
+        const t0 = performance.now();
+        location.hash = h;
+        await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+        return Math.round(performance.now() - t0);
+      }, hash);
+      const tasks = await settled(hash);
+      console.log(`rrt opened from the IK page ${hash}: first frame after ${frameMs} ms; tasks of 50 ms or more: [${tasks}] ms`);
+      return tasks;
+    };
+    /**
+     * A fresh load: the app's start (wasm, translations, shell) and the page's. In this one
+     * browser context, as for a returning visitor: the wasm's compiled code is cached, so a
+     * first visit's compilation is not in it (the first-frame bench measures cold loads).
+     */
+    const loaded = async (hash) => {
+      await page.goto('about:blank');
+      await page.goto(`${server.url}/${hash}`);
+      await page.waitForFunction(() => typeof window.__firstFrameMs === 'number', null, { timeout: 20_000 });
+      const firstFrame = await page.evaluate(() => Math.round(window.__firstFrameMs));
+      const tasks = await settled(hash);
+      console.log(`rrt fresh load ${hash}: first frame ${firstFrame} ms after the navigation; tasks of 50 ms or more: [${tasks}] ms`);
+      return tasks;
+    };
+    // Whether this machine can run twenty plain 10 ms tasks without one showing as 50 ms or
+    // more (long tasks are wall-clock: on a machine shared beyond its cores any task stretches).
+    const calm = () => page.evaluate(async () => {
+      const seen = [];
+      const observer = new PerformanceObserver((list) => { for (const e of list.getEntries()) seen.push(e.duration); });
+      observer.observe({ type: 'longtask' });
+      for (let i = 0; i < 20; i++) {
+        await new Promise((r) => setTimeout(() => {
+          const end = performance.now() + 10;
+          while (performance.now() < end);
+          r();
+        }, 0));
+      }
+      await new Promise((r) => setTimeout(r, 200));
+      observer.disconnect();
+      return seen.length === 0;
+    });
+    // Each case: up to five tries, judged by the best (a mount that blocks for 50 ms does so
+    // every time; load only stretches tasks). Without a try under the bound, the result stands
+    // only if the machine was calm just before one of the tries.
+    const best = async (tryOnce) => {
+      let longest = Infinity;
+      let judged = false;
+      for (let k = 0; k < 5 && longest >= 50; k++) {
+        judged = (await calm()) || judged;
+        longest = Math.min(longest, Math.max(0, ...(await tryOnce())));
+      }
+      return longest < 50 || judged ? longest : null;
+    };
+    const results = [];
+    for (const hash of cases) {
+      results.push(['opening', hash, await best(() => opened(hash))]);
+      results.push(['fresh load', hash, await best(() => loaded(hash))]);
+    }
+    assert.deepEqual(errors, []);
+    const summary = results.map(([what, hash, ms]) => `${what} ${hash.slice(0, 30)}: ${ms ?? 'not judged'} ms`).join('; ');
+    console.log(`rrt longest task (best try): ${summary}`);
+    if (results.some(([, , ms]) => ms === null)) {
+      t.skip(`machine too loaded to judge a 50 ms bound (plain 10 ms tasks stretched): ${summary}`);
+      return;
+    }
+    for (const [what, hash, ms] of results) assert.ok(ms < 50, `${what} ${hash}: a main-thread task took ${ms} ms`);
+  } finally {
+    await close();
   }
 });
 

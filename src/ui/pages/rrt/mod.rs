@@ -12,8 +12,10 @@
 //! corner, move the start or the goal) go through `crate::view::rrt::drag`, which refuses a
 //! start or goal inside a box or outside the square with a message; every edit restarts the
 //! run at iteration 0. The same edits by keyboard (on the focused view or the page): `n`
-//! chooses the start, the goal or a box in turn, Shift + arrows move it by 0.01
-//! through the same `drag`, Delete removes the selected box.
+//! chooses the start, the goal or a box in turn, `c` a corner of that box (each corner in
+//! turn, then the whole box again), Shift + arrows move the choice by 0.01 through the same
+//! `drag` (a corner resizes its box, with a corner drag's checks), Delete removes the
+//! selected box.
 
 mod exports;
 mod markup;
@@ -42,7 +44,8 @@ use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::rrt::{
-    add_box, delete_box, drag, hit_test, phases, rate_per_s, Grab, PageState, Phase, Refusal,
+    add_box, corners, delete_box, drag, hit_test, phases, rate_per_s, Grab, PageState, Phase,
+    Refusal,
 };
 
 /// The page, as the shell's page table lists it.
@@ -65,8 +68,19 @@ const URL_EVERY_MS: f64 = 500.0;
 const FRAME_BUDGET_MS: f64 = 1.5;
 /// Runs up to this budget restart on every move of a drag; bigger ones when it ends.
 const LIVE_RESTART_MAX_ITER: usize = 20_000;
-/// How far Shift + an arrow moves the start, the goal or a box (world units: the square is 1).
+/// How far Shift + an arrow moves the start, the goal, a box or a corner (world units: the
+/// square is 1).
 const KEY_STEP: f64 = 0.01;
+/// The corners `c` chooses in turn ([`Grab::Corner`] numbering): top right, top left, bottom
+/// left, bottom right.
+const CORNER_ORDER: [u8; 4] = [2, 3, 0, 1];
+/// Fluent ids of "corner k of box n", by [`Grab::Corner`] numbering.
+const CORNER_IDS: [&str; 4] = [
+    "rrt-corner-bottom-left",
+    "rrt-corner-bottom-right",
+    "rrt-corner-top-right",
+    "rrt-corner-top-left",
+];
 
 /// Longest slice of the run to its end per main-thread task, ms (the page stays responsive:
 /// no task near 100 ms whatever `max_iter`).
@@ -277,14 +291,18 @@ impl Page for RrtPage {
         });
         inner.install()?;
         inner.build_stepper()?;
-        inner.world.borrow_mut().fit();
         inner.exports.update(&inner.state.borrow());
-        inner.redraw_world();
         if start_it > 0 {
             inner.pending_it.set(Some(start_it));
         }
         inner.finish_slice_for(MOUNT_SLICE_MS);
+        // The URL is written after the first frame (it only tidies it), not in the mount's
+        // task.
+        inner.url_written.set(now_ms());
         inner.update();
+        // The canvases are sized and drawn by the stage's first ResizeObserver callback, in
+        // the first frame after its layout and before its paint: measuring them here would
+        // force the whole page's first layout inside the mount's task.
         Ok(RrtPage(inner))
     }
 
@@ -302,6 +320,10 @@ impl Page for RrtPage {
             Shortcut {
                 keys: "n",
                 message_id: "rrt-key-select",
+            },
+            Shortcut {
+                keys: "c",
+                message_id: "rrt-key-corner",
             },
             Shortcut {
                 keys: "Shift + ← ↑ → ↓",
@@ -493,6 +515,7 @@ impl Inner {
             let step = |dx: f64, dy: f64| self.nudge_world([dx * KEY_STEP, dy * KEY_STEP]);
             match (event.key().as_str(), event.shift_key()) {
                 ("n" | "N", _) => self.choose_key_target(),
+                ("c" | "C", _) => self.choose_corner(),
                 ("ArrowLeft", true) => step(-1.0, 0.0),
                 ("ArrowRight", true) => step(1.0, 0.0),
                 ("ArrowUp", true) => step(0.0, 1.0),
@@ -527,15 +550,50 @@ impl Inner {
         self.update_marks();
     }
 
+    /// `c`: a corner of the chosen box (the selected one when the start or the goal is
+    /// chosen) for Shift + arrows to resize it: the top-right corner first, then the others
+    /// anticlockwise, then the whole box again. Nothing without a box.
+    fn choose_corner(&self) {
+        let boxes = self.state.borrow().obstacles.len();
+        let next = match self.key_grab.get() {
+            Some(Grab::Box(i)) if i < boxes => Grab::Corner(i, CORNER_ORDER[0]),
+            Some(Grab::Corner(i, k)) if i < boxes => {
+                match CORNER_ORDER.iter().position(|&c| c == k) {
+                    Some(at) if at + 1 < CORNER_ORDER.len() => {
+                        Grab::Corner(i, CORNER_ORDER[at + 1])
+                    }
+                    _ => Grab::Box(i),
+                }
+            }
+            _ => match self.selected.get().filter(|&i| i < boxes) {
+                Some(i) => Grab::Corner(i, CORNER_ORDER[0]),
+                None if boxes > 0 => Grab::Corner(0, CORNER_ORDER[0]),
+                None => return,
+            },
+        };
+        let (Grab::Box(i) | Grab::Corner(i, _)) = next else {
+            return;
+        };
+        self.key_grab.set(Some(next));
+        self.selected.set(Some(i));
+        self.hover.set(Some(next));
+        self.show_key_target();
+        self.update_marks();
+    }
+
     /// Shows what Shift + arrows move (in the current language), or nothing.
     fn show_key_target(&self) {
         let text = self.key_grab.get().map(|grab| {
             let what = match grab {
                 Grab::Start => ctx::t("rrt-point-start"),
                 Grab::Goal => ctx::t("rrt-point-goal"),
-                Grab::Box(i) | Grab::Corner(i, _) => {
+                Grab::Box(i) => {
                     ctx::t_args("rrt-box-n", &[("n", FluentArg::Number((i + 1) as f64))])
                 }
+                Grab::Corner(i, k) => ctx::t_args(
+                    CORNER_IDS[usize::from(k) % CORNER_IDS.len()],
+                    &[("n", FluentArg::Number((i + 1) as f64))],
+                ),
             };
             ctx::t_args("rrt-key-target", &[("what", FluentArg::Text(what))])
         });
@@ -543,8 +601,9 @@ impl Inner {
         dom::show(&self.key_target, text.is_some());
     }
 
-    /// Shift + an arrow: moves the chosen start, goal or box by `delta` (world units) as a
-    /// drag would, refused with the same messages; the run starts again.
+    /// Shift + an arrow: moves the chosen start, goal, box or corner (resizing its box) by
+    /// `delta` (world units) as a drag would, refused with the same messages; the run starts
+    /// again.
     fn nudge_world(&self, delta: [f64; 2]) {
         let Some(grab) = self.key_grab.get() else {
             self.choose_key_target();
@@ -554,7 +613,11 @@ impl Inner {
         let from = match grab {
             Grab::Start => before.start,
             Grab::Goal => before.goal,
-            _ => [0.0, 0.0],
+            Grab::Corner(i, k) => before
+                .obstacles
+                .get(i)
+                .map_or([0.0, 0.0], |b| corners(b)[usize::from(k) % 4]),
+            Grab::Box(_) => [0.0, 0.0],
         };
         self.command(Command::Pause);
         match drag(
@@ -923,6 +986,9 @@ impl Inner {
             .setup()
             .map_or(crate::recipes::rrt_2d::GOAL_TOL, |s| s.world.goal_tol);
         let world = self.world.borrow();
+        if !world.is_sized() {
+            return;
+        }
         world.draw_world(&state, tol, Ink::current());
         if let Some(d) = self.drag.borrow().as_ref() {
             d.set_handles(&world.handles(&state));

@@ -42,6 +42,9 @@ pub struct WorldView {
     /// Nodes drawn on the tree layer, and the run generation they belong to.
     tree_drawn: usize,
     tree_generation: Option<u64>,
+    /// Whether [`WorldView::fit`] has measured the stage: until then (the mount's task, before
+    /// the first layout) nothing is drawn.
+    sized: bool,
 }
 
 impl WorldView {
@@ -52,6 +55,7 @@ impl WorldView {
             frame: Frame::fit(1.0, 1.0, 0.0),
             tree_drawn: 0,
             tree_generation: None,
+            sized: false,
         })
     }
 
@@ -62,6 +66,12 @@ impl WorldView {
         let (w, h) = self.canvas.size();
         self.frame = Frame::fit(w, h, MARGIN);
         self.tree_generation = None;
+        self.sized = true;
+    }
+
+    /// Whether the layers have their size (the view is drawn from then on).
+    pub fn is_sized(&self) -> bool {
+        self.sized
     }
 
     /// Hit radius of handles, px.
@@ -106,6 +116,9 @@ impl WorldView {
 
     /// Layer 0: the world of `state` with the goal tolerance `goal_tol`.
     pub fn draw_world(&self, state: &PageState, goal_tol: f64, ink: Ink) {
+        if !self.sized {
+            return;
+        }
         let layer = self.canvas.layer(0);
         layer.begin();
         let c = &layer.ctx;
@@ -172,6 +185,9 @@ impl WorldView {
     /// hides the iteration's new node until its outcome), at most `most` nodes per call;
     /// `true` once the tree is drawn to `upto`.
     pub fn draw_tree(&mut self, run: &Run, upto: usize, most: usize, ink: Ink) -> bool {
+        if !self.sized {
+            return true;
+        }
         let layer = self.canvas.layer(1);
         let shown = run.shown();
         let all = shown.nodes();
@@ -227,6 +243,9 @@ impl WorldView {
         state: &PageState,
         ink: Ink,
     ) {
+        if !self.sized {
+            return;
+        }
         let layer = self.canvas.top();
         layer.begin();
         let c = &layer.ctx;
