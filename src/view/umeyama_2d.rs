@@ -725,7 +725,11 @@ mod tests {
         assert_eq!(next_selection(Some(2), 12, true), Some(3));
         assert_eq!(next_selection(Some(11), 12, true), Some(0));
         assert_eq!(next_selection(Some(0), 12, false), Some(11));
-        assert_eq!(next_selection(Some(20), 12, true), Some(0), "out of range: none");
+        assert_eq!(
+            next_selection(Some(20), 12, true),
+            Some(0),
+            "out of range: none"
+        );
         assert_eq!(next_selection(None, 0, true), None);
         let scene = default_scene();
         let (i, at) = selected_point(&scene, Some(2)).unwrap();
@@ -738,7 +742,10 @@ mod tests {
         let mut points = editable(&scene.x);
         points = move_point(&points, 2, key_step_target(points[2], (1.0, 0.0)));
         let on_grid = points[2];
-        assert_eq!(on_grid, [snap_to(at[0] + 0.01, DRAG_GRID), snap_to(at[1], DRAG_GRID)]);
+        assert_eq!(
+            on_grid,
+            [snap_to(at[0] + 0.01, DRAG_GRID), snap_to(at[1], DRAG_GRID)]
+        );
         for _ in 0..3 {
             points = move_point(&points, 2, key_step_target(points[2], (1.0, 0.0)));
         }
