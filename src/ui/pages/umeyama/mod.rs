@@ -625,7 +625,8 @@ impl Inner {
             self.select_next(true);
             return;
         };
-        let Some(from) = self.points().get(i).copied() else {
+        // Where the editor holds it (`self.points()[i]`, without copying them all).
+        let Some((_, from)) = selected_point(&self.scene.borrow(), Some(i)) else {
             return;
         };
         self.show_refusal(None);
