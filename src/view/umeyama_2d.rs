@@ -382,6 +382,36 @@ pub fn remove_point(points: &[[f64; 2]], i: usize) -> Result<Vec<[f64; 2]>, Refu
     Ok(out)
 }
 
+/// The point `n` selects after `selected` among `count` points (`forward`), or Shift + `n`
+/// (not `forward`): the next or previous in the list, round again; from none, the first or
+/// the last. `None` without points.
+pub fn next_selection(selected: Option<usize>, count: usize, forward: bool) -> Option<usize> {
+    if count == 0 {
+        return None;
+    }
+    Some(match (selected.filter(|&i| i < count), forward) {
+        (None, true) => 0,
+        (None, false) => count - 1,
+        (Some(i), true) => (i + 1) % count,
+        (Some(i), false) => (i + count - 1) % count,
+    })
+}
+
+/// Where Shift + an arrow sends point `p`: one [`DRAG_GRID`] step along `(dx, dy)` (each −1,
+/// 0 or 1). A drag to there (`move_point`) puts it on the drag grid: a point already on it
+/// moves by exactly one step.
+pub fn key_step_target(p: [f64; 2], (dx, dy): (f64, f64)) -> [f64; 2] {
+    [p[0] + dx * DRAG_GRID, p[1] + dy * DRAG_GRID]
+}
+
+/// The selected point of `scene` (its index, when in range) and where it is as the editor
+/// holds it (on [`GRID`], as `--x` writes it).
+pub fn selected_point(scene: &Scene, selected: Option<usize>) -> Option<(usize, [f64; 2])> {
+    let i = selected?;
+    let p = scene.x.get(i)?;
+    Some((i, [snap_to(p[0], GRID), snap_to(p[1], GRID)]))
+}
+
 /// Where a new point goes when added by the button: beyond the points' extent on a slow
 /// spiral, so successive ones do not pile up.
 pub fn new_point_spot(points: &[[f64; 2]]) -> [f64; 2] {
@@ -686,6 +716,53 @@ mod tests {
         assert_eq!(num(snap_to(-0.0001, GRID)), "0");
         let spot = new_point_spot(&scene.x);
         assert!(spot[0].is_finite() && spot[1].is_finite());
+    }
+
+    #[test]
+    fn keys_select_in_turn_and_step_on_the_drag_grid() {
+        assert_eq!(next_selection(None, 12, true), Some(0));
+        assert_eq!(next_selection(None, 12, false), Some(11));
+        assert_eq!(next_selection(Some(2), 12, true), Some(3));
+        assert_eq!(next_selection(Some(11), 12, true), Some(0));
+        assert_eq!(next_selection(Some(0), 12, false), Some(11));
+        assert_eq!(
+            next_selection(Some(20), 12, true),
+            Some(0),
+            "out of range: none"
+        );
+        assert_eq!(next_selection(None, 0, true), None);
+        let scene = default_scene();
+        let (i, at) = selected_point(&scene, Some(2)).unwrap();
+        assert_eq!(i, 2);
+        assert_eq!(at, editable(&scene.x)[2]);
+        assert_eq!(selected_point(&scene, Some(12)), None);
+        assert_eq!(selected_point(&scene, None), None);
+        // The first step lands on the drag grid; from there each step is exactly 0.01, and
+        // the text --x takes says so.
+        let mut points = editable(&scene.x);
+        points = move_point(&points, 2, key_step_target(points[2], (1.0, 0.0)));
+        let on_grid = points[2];
+        assert_eq!(
+            on_grid,
+            [snap_to(at[0] + 0.01, DRAG_GRID), snap_to(at[1], DRAG_GRID)]
+        );
+        for _ in 0..3 {
+            points = move_point(&points, 2, key_step_target(points[2], (1.0, 0.0)));
+        }
+        points = move_point(&points, 2, key_step_target(points[2], (0.0, -1.0)));
+        assert_eq!(
+            points[2],
+            [
+                snap_to(on_grid[0] + 0.03, DRAG_GRID),
+                snap_to(on_grid[1] - 0.01, DRAG_GRID)
+            ]
+        );
+        let others = |v: &[[f64; 2]]| {
+            let mut v = v.to_vec();
+            v.remove(2);
+            v
+        };
+        assert_eq!(others(&points), others(&editable(&scene.x)));
     }
 
     #[test]

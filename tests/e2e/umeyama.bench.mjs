@@ -3,7 +3,8 @@
 // then keeps each frame's work in window.__umeyamaFrameMs: from the pointer move or slider
 // input to the drawn view, the form's check, the kernel's fit, the step panel and the readouts
 // included). `make bench` (scripts/bench.sh) assembles such a dist in target/bench-dist.
-// Cases: dragging a point (12 and 40 points) and dragging the sigma slider.
+// Cases: dragging a point (12 and 40 points), dragging the sigma and angle sliders, and moving
+// a point with Shift + arrows (40 points).
 //
 // Budget: frame work p95 < 4 ms. With UMEYAMA_BENCH_STRICT=1 the exit code is 1 when it is
 // missed; otherwise this only reports.
@@ -43,11 +44,22 @@ async function dragSlider(page, name) {
   await page.mouse.up();
 }
 
+/** Point 1 selected with `n`, then moved by Shift + arrows, one press a frame (back and forth). */
+async function keyMoves(page) {
+  await page.locator('[data-testid="umeyama-2d-canvas"]').focus();
+  await page.keyboard.press('n');
+  for (let k = 0; k < MOVES; k++) {
+    await page.keyboard.press(k % 40 < 20 ? 'Shift+ArrowRight' : 'Shift+ArrowLeft');
+    await nextFrame(page);
+  }
+}
+
 const cases = [
   ['point drag, 12 points', '#/umeyama-2d', dragPoint],
   ['point drag, 40 points', '#/umeyama-2d?n=40', dragPoint],
   ['sigma slider, 12 points', '#/umeyama-2d', (page) => dragSlider(page, 'sigma')],
   ['angle slider, 40 points', '#/umeyama-2d?n=40&step=3', (page) => dragSlider(page, 'angle')],
+  ['Shift+arrow keys, 40 pts', '#/umeyama-2d?n=40', keyMoves],
 ];
 
 const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);

@@ -273,6 +273,133 @@ test('points are added by a click and removed with Delete, within 2 to 40', asyn
   }
 });
 
+/** `v` on the grid `step` as the page's editor puts it (view::umeyama_2d::snap_to). */
+function snap(v, step) {
+  const digits = Math.max(0, -Math.floor(Math.log10(step)));
+  const s = Number((Math.sign(v) * Math.round(Math.abs(v) / step) * step).toFixed(digits));
+  return s === 0 ? 0 : s;
+}
+
+/** The points of an `umeyama_points.csv` (its x, y columns). */
+const pointsOf = (bytes) => bytes.toString('utf8').trim().split('\n').slice(1).map((l) => l.split(',').slice(0, 2).map(Number));
+
+/** The text `--x` takes. */
+const xText = (points) => points.map(([a, b]) => `${a},${b}`).join(';');
+
+/** Whether the selection ring (amber, 9 px out) is drawn around point `i` of the view. */
+const ringAt = (page, i) => canvas(page).evaluate((c, i) => {
+  const [x, y] = c.dataset.pointsPx.split(';')[i].split(',').map(Number);
+  const dpr = c.width / c.getBoundingClientRect().width;
+  const ctx = c.getContext('2d');
+  let amber = 0;
+  for (let a = 0; a < 360; a += 15) {
+    const t = (a * Math.PI) / 180;
+    const [r, g, b] = ctx.getImageData(Math.round((x + 9 * Math.cos(t)) * dpr), Math.round((y + 9 * Math.sin(t)) * dpr), 1, 1).data;
+    if (Math.abs(r - 245) < 30 && Math.abs(g - 158) < 40 && b < 80) amber++;
+  }
+  return amber >= 12;
+}, i);
+
+test('by keyboard: n selects point 3, Shift + arrows move it as a drag does (x, readouts, exports = bsv), Delete removes it', async () => {
+  // The recipe's points X at full precision: an option that changes only the truth makes bsv
+  // write them; the editor holds them on its 0.001 grid.
+  const editor = pointsOf(run(['0.02', '3', '12', '--tx', '0.5']).files.get(POINTS)).map(([a, b]) => [snap(a, 0.001), snap(b, 0.001)]);
+  const { page, errors, close } = await open('#/umeyama-2d');
+  try {
+    const status = page.locator('[data-testid="umeyama-2d-selection"]');
+    assert.equal(await status.getAttribute('role'), 'status');
+    assert.equal(await status.getAttribute('aria-live'), 'polite');
+    assert.equal(await status.innerText(), 'No point selected (12 points). Press n to select the next point, Shift + n the previous one.');
+    await canvas(page).focus();
+    for (let k = 0; k < 3; k++) await page.keyboard.press('n');
+    await page.keyboard.press('Shift+N');
+    assert.equal(await canvas(page).getAttribute('data-selected'), '1', 'Shift + n: the previous point');
+    await page.keyboard.press('n');
+    assert.equal(await canvas(page).getAttribute('data-selected'), '2');
+    const said = (p) => `Point 3 of 12 selected, at (${p[0]}, ${p[1]}). Shift + arrows move it by 0.01; Delete removes it.`;
+    assert.equal(await status.innerText(), said(editor[2]));
+    assert.equal(await ringAt(page, 2), true, 'the selection ring around point 3');
+    assert.equal(await ringAt(page, 0), false, 'no ring around point 1');
+    assert.equal(await page.locator('[data-field="x"]').inputValue(), '', 'selecting edits nothing');
+
+    // Shift + arrows: the first step lands on the drag grid (0.01), each next one moves 0.01.
+    let p = editor[2];
+    for (const [key, dx, dy] of [['ArrowRight', 1, 0], ['ArrowRight', 1, 0], ['ArrowRight', 1, 0], ['ArrowUp', 0, 1], ['ArrowUp', 0, 1]]) {
+      await page.keyboard.press(`Shift+${key}`);
+      p = [snap(p[0] + dx * 0.01, 0.01), snap(p[1] + dy * 0.01, 0.01)];
+    }
+    const moved = editor.map((q, i) => (i === 2 ? p : q));
+    const x = xText(moved);
+    await page.waitForFunction((x) => new URLSearchParams(location.hash.split('?')[1]).get('x') === x, x, { timeout: 3000 });
+    assert.equal(await page.locator('[data-field="x"]').inputValue(), x);
+    const { values, files } = run(['0.02', '3', '12', '--x', x]);
+    assertFit(await readouts(page), values, `moved by keys: ${x}`);
+    assertSameBytes(await download(page, CSV), files.get(CSV), 'csv after the key moves');
+    assertSameBytes(await download(page, POINTS), files.get(POINTS), 'points after the key moves');
+    assert.equal(await page.locator('[data-cmd="bsv"]').innerText(), `bsv umeyama-2d 0.02 3 12 --x '${x}'`);
+    assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), true);
+    await page.waitForFunction(([el, text]) => el.textContent === text, [await status.elementHandle(), said(p)], { timeout: 3000 });
+    assert.equal(await ringAt(page, 2), true, 'the ring follows the point');
+
+    // A key held down: ten moves in one burst change the status line once, after they settle.
+    await page.evaluate(() => {
+      const el = document.querySelector('[data-testid="umeyama-2d-selection"]');
+      window.__selectionSaid = [];
+      new MutationObserver(() => window.__selectionSaid.push(el.textContent)).observe(el, { childList: true, characterData: true, subtree: true });
+      const c = document.querySelector('[data-testid="umeyama-2d-canvas"]');
+      for (let k = 0; k < 10; k++) c.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowDown', shiftKey: true, bubbles: true, cancelable: true }));
+    });
+    assert.deepEqual(await page.evaluate(() => window.__selectionSaid), [], 'nothing said while the key moves');
+    p = [p[0], snap(p[1] - 0.1, 0.01)];
+    await page.waitForFunction(() => window.__selectionSaid.length > 0, null, { timeout: 3000 });
+    await page.waitForTimeout(500);
+    assert.deepEqual(await page.evaluate(() => window.__selectionSaid), [said(p)]);
+    const x2 = xText(editor.map((q, i) => (i === 2 ? p : q)));
+    assert.equal(await page.locator('[data-field="x"]').inputValue(), x2);
+    assertFit(await readouts(page), run(['0.02', '3', '12', '--x', x2]).values, `after the burst: ${x2}`);
+
+    // Page keys do nothing while a control has focus.
+    await page.locator('[data-action="mirror"]').focus();
+    for (const key of ['n', 'Shift+ArrowRight', 'Delete']) await page.keyboard.press(key);
+    assert.equal(await canvas(page).getAttribute('data-selected'), '2');
+    assert.equal(await page.locator('[data-field="x"]').inputValue(), x2);
+
+    // Delete removes point 3: 11 points, none selected.
+    await canvas(page).focus();
+    await page.keyboard.press('Delete');
+    const left = xText(editor.filter((_, i) => i !== 2));
+    await page.waitForFunction((x) => /[?&]n=11/.test(location.hash) && new URLSearchParams(location.hash.split('?')[1]).get('x') === x, left, { timeout: 3000 });
+    assert.equal(await page.locator('[data-field="x"]').inputValue(), left);
+    assert.equal((await pointsPx(page)).length, 11);
+    assertFit(await readouts(page), run(['0.02', '3', '11', '--x', left]).values, 'after Delete');
+    assert.equal(await status.innerText(), 'No point selected (11 points). Press n to select the next point, Shift + n the previous one.');
+    assert.equal(await canvas(page).getAttribute('data-selected'), '');
+
+    // The ? overlay lists the keys.
+    await page.keyboard.press('?');
+    const keys = await page.locator('[data-testid="page-keys"]').innerText();
+    assert.match(keys, /n\s+Shift \+ n\s+Select the next point \(Shift \+ n: the previous one\)/);
+    assert.match(keys, /Shift \+ ← ↑ → ↓\s+Move the selected point by 0\.01, as a drag does/);
+    await page.keyboard.press('Escape');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+  // In Japanese: the status line and the keys.
+  const { page: ja, errors: jaErrors, close: closeJa } = await open('#/umeyama-2d?lang=ja');
+  try {
+    await canvas(ja).focus();
+    await ja.keyboard.press('Shift+N');
+    const text = await ja.locator('[data-testid="umeyama-2d-selection"]').innerText();
+    assert.equal(text, `点 12（全 12 点）を選択中：位置 (${editor[11][0]}, ${editor[11][1]})。Shift + 矢印キーで 0.01 ずつ動かし、Delete で削除できます。`);
+    await ja.keyboard.press('?');
+    assert.match(await ja.locator('[data-testid="page-keys"]').innerText(), /次の点を選ぶ（Shift \+ n で前の点）/);
+    assert.deepEqual(jaErrors, []);
+  } finally {
+    await closeJa();
+  }
+});
+
 test('Japanese leaves no English UI text', async () => {
   const english = englishStrings();
   for (const hash of ['#/umeyama-2d?lang=ja&step=5&mirror=yes', '#/umeyama-2d?lang=ja&step=6']) {

@@ -76,6 +76,8 @@ pub fn page() -> String {
          <canvas class=\"sig-layer\" data-testid=\"umeyama-2d-canvas\" role=\"img\" tabindex=\"0\" \
          data-i18n-attr=\"aria-label=umeyama-canvas-label\" aria-describedby=\"ume-readouts\"></canvas></div>{legend}\
          <div class=\"ume-tools\">{add}{remove}{mirror}{recipe}</div>\
+         <p class=\"sig-note ume-selection\" data-{P}=\"selection\" data-testid=\"umeyama-2d-selection\" \
+         role=\"status\" aria-live=\"polite\"></p>\
          <p class=\"ume-message\" data-{P}=\"message\" data-testid=\"umeyama-2d-message\" role=\"status\" hidden></p>\
          <p class=\"sig-note\" data-i18n=\"umeyama-view-note\"></p>\
          <div data-{P}=\"stepper\"></div>\

@@ -6,6 +6,12 @@
 //! centred sets → covariance → SVD → reflection fix → scale → translation → rmse, each with
 //! its matrices (`crate::view::umeyama_2d`, from the kernel's own `umeyama_steps`).
 //!
+//! By keyboard (on the focused view or the page, never in a field): `n` / Shift + `n` select
+//! the next / previous point (the selection ring shows it), Shift + arrows move it by the drag
+//! grid through the very path a pointer drag takes, `a` adds a point, Delete removes the
+//! selected one. A polite status line says which point is selected and where: at once when the
+//! selection changes, once a held key or a typed `x` settles, at a drag's end (never during).
+//!
 //! Components, one file each: `view` (the canvas), `steps` (the step panel), `markup` (with
 //! the explanation); the kit's [`RecipeControls`] is the form (the recipe's arguments and the
 //! options `--scale --angle --tx --ty --mirror --x`), the URL (keys = the CLI's argument names)
@@ -43,13 +49,14 @@ use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::{Command, Length, StepModel, StepperOptions, StepperWidget};
 use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
-use crate::ui::schedule::now_ms;
+use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::drag::HandleShape;
 use crate::view::signal::{sig, Slider};
 use crate::view::umeyama_2d::{
-    add_point, editable, hit_test, move_point, new_point_spot, points_text, remove_point,
-    rotation_texts, translation_texts, Grab, Refusal, Scene, Step, STEPS,
+    add_point, editable, hit_test, key_step_target, move_point, new_point_spot, next_selection,
+    num, points_text, remove_point, rotation_texts, selected_point, translation_texts, Grab,
+    Refusal, Scene, Step, STEPS,
 };
 
 /// The page, as the shell's page table lists it.
@@ -61,6 +68,10 @@ const P: &str = "ume";
 const PNG: &str = "umeyama_2d.png";
 /// A click this soon after a drag ended is the drag's own (ms).
 const CLICK_AFTER_DRAG_MS: f64 = 400.0;
+/// How long the selection's status line waits after the last change of the points (a key
+/// held down, a typed `x`) before it says where the selected point is, ms: a screen reader
+/// hears where it stopped, not every step.
+const SELECTION_SETTLE_MS: i32 = 400;
 /// The URL key of the step shown (the rest are the CLI's argument names).
 const STEP_KEY: &str = "step";
 const SLIDERS: [Slider; 6] = [
@@ -139,6 +150,13 @@ struct Inner {
     /// When the last drag ended, ms: the click the browser sends after it is not an add.
     drag_ended: Cell<f64>,
     message: Element,
+    /// The status line: which point is selected and where (or that none is).
+    selection: Element,
+    /// What the status line says now: the point count, and the selected point and where it
+    /// is (`None`: not said yet).
+    selection_said: Cell<Option<SelectionKey>>,
+    /// Says the selection once the points stop changing.
+    selection_timer: Rc<Timer>,
     edited: Element,
     points_button: Option<Element>,
     readouts: Readouts,
@@ -151,6 +169,10 @@ struct Inner {
     url: RefCell<Option<UrlWriter>>,
     scope: RefCell<Scope>,
 }
+
+/// What the selection's status line depends on: the point count, the selected point and its
+/// place in the scene.
+type SelectionKey = (usize, Option<(usize, [f64; 2])>);
 
 fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
     dom::find(root, &format!("[data-{P}=\"{name}\"]"), P)
@@ -182,6 +204,7 @@ impl Page for UmeyamaPage {
         let panel = steps::StepPanel::find(&root)?;
         let readouts = Readouts::find(&root)?;
         let message = role(&root, "message")?;
+        let selection = role(&root, "selection")?;
         let edited = role(&root, "edited")?;
         let points_button = root
             .query_selector(&format!("[data-download=\"{POINTS_CSV}\"]"))
@@ -190,6 +213,7 @@ impl Page for UmeyamaPage {
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
             let mut scope = Scope::new();
             let url = UrlWriter::new(&mut scope, me, Inner::query);
+            let selection_timer = scope.timer(me, Inner::show_selection);
             Inner {
                 me: me.clone(),
                 root,
@@ -207,6 +231,9 @@ impl Page for UmeyamaPage {
                 work_started: Cell::new(None),
                 drag_ended: Cell::new(f64::NEG_INFINITY),
                 message,
+                selection,
+                selection_said: Cell::new(None),
+                selection_timer,
                 edited,
                 points_button,
                 readouts,
@@ -226,6 +253,7 @@ impl Page for UmeyamaPage {
         inner.command(Command::Seek(start_step));
         inner.show_run();
         inner.redraw();
+        inner.show_selection();
         Ok(UmeyamaPage(inner))
     }
 
@@ -235,6 +263,8 @@ impl Page for UmeyamaPage {
             s.relocalize();
         }
         self.0.render_refusal();
+        self.0.selection_said.set(None);
+        self.0.show_selection();
         self.0.redraw();
     }
 
@@ -244,34 +274,43 @@ impl Page for UmeyamaPage {
 
     fn shortcuts(&self) -> Vec<Shortcut> {
         let mut keys = keymap::STEPPER.to_vec();
-        keys.push(Shortcut {
-            keys: "Delete  Backspace",
-            message_id: "umeyama-key-delete",
-        });
-        keys.push(Shortcut {
-            keys: "a",
-            message_id: "umeyama-key-add",
-        });
+        keys.extend([
+            Shortcut {
+                keys: "n  Shift + n",
+                message_id: "umeyama-key-select",
+            },
+            Shortcut {
+                keys: "Shift + ← ↑ → ↓",
+                message_id: "umeyama-key-move",
+            },
+            Shortcut {
+                keys: "Delete  Backspace",
+                message_id: "umeyama-key-delete",
+            },
+            Shortcut {
+                keys: "a",
+                message_id: "umeyama-key-add",
+            },
+        ]);
         keys
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        match event.key().as_str() {
-            "Delete" | "Backspace" => {
-                self.0.remove_point();
-                true
+        let p = &self.0;
+        if !keymap::has_command_modifier(event) {
+            match (event.key().as_str(), event.shift_key()) {
+                ("Delete" | "Backspace", _) => p.remove_point(),
+                ("a" | "A", _) => p.add_point_button(),
+                ("n" | "N", back) => p.select_next(!back),
+                ("ArrowLeft", true) => p.nudge_point((-1.0, 0.0)),
+                ("ArrowRight", true) => p.nudge_point((1.0, 0.0)),
+                ("ArrowUp", true) => p.nudge_point((0.0, 1.0)),
+                ("ArrowDown", true) => p.nudge_point((0.0, -1.0)),
+                _ => return p.stepper_key(event),
             }
-            "a" | "A" => {
-                self.0.add_point_button();
-                true
-            }
-            _ => self
-                .0
-                .stepper
-                .borrow()
-                .as_ref()
-                .is_some_and(|s| s.on_key(event)),
+            return true;
         }
+        p.stepper_key(event)
     }
 }
 
@@ -397,6 +436,13 @@ impl Inner {
         Ok(())
     }
 
+    fn stepper_key(&self, event: &KeyboardEvent) -> bool {
+        self.stepper
+            .borrow()
+            .as_ref()
+            .is_some_and(|s| s.on_key(event))
+    }
+
     fn command(&self, command: Command) {
         if let Some(s) = self.stepper.borrow().as_ref() {
             s.apply(command);
@@ -423,9 +469,13 @@ impl Inner {
         if self.selected.get().is_some_and(|i| i >= count) {
             self.selected.set(None);
         }
+        // During a drag of the view the status line waits for its end.
         if self.dragging.get().is_none() {
             let scene = self.scene.borrow();
             self.view.borrow_mut().refit_if_needed(&scene);
+            if self.selection_said.get() != Some(self.selection_key(&scene)) {
+                self.selection_timer.schedule(SELECTION_SETTLE_MS);
+            }
         }
         self.show_run();
         self.redraw_from(started);
@@ -505,6 +555,7 @@ impl Inner {
                 self.show_refusal(None);
                 self.selected.set(Some(next.len() - 1));
                 self.set_points(&next);
+                self.show_selection_now();
                 self.write_url_now();
             }
             Err(r) => self.show_refusal(Some(r)),
@@ -524,6 +575,7 @@ impl Inner {
                 self.show_refusal(None);
                 self.selected.set(None);
                 self.set_points(&next);
+                self.show_selection_now();
                 self.write_url_now();
             }
             Err(r) => self.show_refusal(Some(r)),
@@ -551,7 +603,87 @@ impl Inner {
         if let Some(setup) = self.controls.set_texts(&defaults, None) {
             self.changed(setup);
         }
+        self.show_selection_now();
         self.write_url_now();
+    }
+
+    /// `n` (`forward`) or Shift + `n`: selects the next or previous point, and says so.
+    fn select_next(&self, forward: bool) {
+        let count = self.scene.borrow().x.len();
+        self.selected
+            .set(next_selection(self.selected.get(), count, forward));
+        self.show_refusal(None);
+        self.show_selection_now();
+        self.redraw();
+    }
+
+    /// Shift + an arrow: moves the selected point one drag-grid step along `direction` as a
+    /// pointer drag to there would (the same [`Inner::drag_to`]: the form's `x`, the URL,
+    /// the readouts and the exports follow); with none selected, selects the first.
+    fn nudge_point(&self, direction: (f64, f64)) {
+        let Some(i) = self.selected.get() else {
+            self.select_next(true);
+            return;
+        };
+        // Where the editor holds it (`self.points()[i]`, without copying them all).
+        let Some((_, from)) = selected_point(&self.scene.borrow(), Some(i)) else {
+            return;
+        };
+        self.show_refusal(None);
+        self.work_started.set(Some(now_ms()));
+        self.drag_to(Grab::Point(i), key_step_target(from, direction));
+    }
+
+    // ---------- The selection's status line ----------
+
+    fn selection_key(&self, scene: &Scene) -> SelectionKey {
+        let at = self
+            .selected
+            .get()
+            .and_then(|i| scene.x.get(i).map(|p| (i, *p)));
+        (scene.x.len(), at)
+    }
+
+    /// Says the selection now (a pending settled update is dropped).
+    fn show_selection_now(&self) {
+        self.selection_timer.cancel();
+        self.show_selection();
+    }
+
+    /// The status line: "Point 3 of 12 selected, at (x, y)…" or that none is; written only
+    /// when what it says changed (a polite live region: each write is read out). The view's
+    /// `data-selected` is the selected index (empty: none), for tests.
+    fn show_selection(&self) {
+        let Ok(scene) = self.scene.try_borrow() else {
+            return;
+        };
+        let key = self.selection_key(&scene);
+        if self.selection_said.replace(Some(key)) == Some(key) {
+            return;
+        }
+        let count = FluentArg::Number(scene.x.len() as f64);
+        let text = match selected_point(&scene, self.selected.get()) {
+            Some((i, at)) => ctx::t_args(
+                "umeyama-selected",
+                &[
+                    ("n", FluentArg::Number((i + 1) as f64)),
+                    ("count", count),
+                    ("x", FluentArg::Text(num(at[0]))),
+                    ("y", FluentArg::Text(num(at[1]))),
+                ],
+            ),
+            None => ctx::t_args("umeyama-selected-none", &[("count", count)]),
+        };
+        drop(scene);
+        self.selection.set_text_content(Some(&text));
+        if let Ok(view) = self.view.try_borrow() {
+            let index = self.selected.get().map(|i| i.to_string());
+            let _ = view
+                .canvas
+                .top()
+                .canvas
+                .set_attribute("data-selected", index.as_deref().unwrap_or(""));
+        }
     }
 
     /// A click (or tap) on the view: select the point under it, or add one on empty space.
@@ -581,6 +713,7 @@ impl Inner {
         match hit {
             Some(Grab::Point(i)) => {
                 self.selected.set(Some(i));
+                self.show_selection_now();
                 self.redraw();
             }
             Some(_) => {}
@@ -594,6 +727,7 @@ impl Inner {
                 self.dragging.set(Some(handle));
                 if let Grab::Point(i) = handle {
                     self.selected.set(Some(i));
+                    self.show_selection_now();
                 }
                 self.show_refusal(None);
                 focus_without_scroll(&self.view.borrow().canvas.top().canvas);
@@ -602,29 +736,7 @@ impl Inner {
             DragEvent::Move { handle, at } => {
                 self.work_started.set(Some(now_ms()));
                 let to = self.view.borrow().frame.world(at);
-                match handle {
-                    Grab::Point(i) => {
-                        let next = move_point(&self.points(), i, to);
-                        self.set_points(&next);
-                    }
-                    Grab::Translation => {
-                        let [a, b] = translation_texts(to);
-                        if let Some(setup) =
-                            self.controls.set_texts(&[(a.0, &a.1), (b.0, &b.1)], None)
-                        {
-                            self.changed(setup);
-                        }
-                    }
-                    Grab::Rotation => {
-                        let t = self.scene.borrow().truth().t;
-                        let [a, b] = rotation_texts(t, to);
-                        if let Some(setup) =
-                            self.controls.set_texts(&[(a.0, &a.1), (b.0, &b.1)], None)
-                        {
-                            self.changed(setup);
-                        }
-                    }
-                }
+                self.drag_to(handle, to);
             }
             DragEvent::End { .. } => {
                 self.dragging.set(None);
@@ -638,6 +750,7 @@ impl Inner {
                     self.view.borrow_mut().refit(&scene);
                 }
                 self.redraw();
+                self.show_selection_now();
                 self.write_url_now();
             }
             DragEvent::Hover(at) => {
@@ -664,6 +777,30 @@ impl Inner {
                 }
             }
             DragEvent::Tap { .. } => {}
+        }
+    }
+
+    /// `handle` dragged to world point `to` (a pointer drag's move, or Shift + an arrow):
+    /// through the form's texts, as the command line has them.
+    fn drag_to(&self, handle: Grab, to: [f64; 2]) {
+        match handle {
+            Grab::Point(i) => {
+                let next = move_point(&self.points(), i, to);
+                self.set_points(&next);
+            }
+            Grab::Translation => {
+                let [a, b] = translation_texts(to);
+                if let Some(setup) = self.controls.set_texts(&[(a.0, &a.1), (b.0, &b.1)], None) {
+                    self.changed(setup);
+                }
+            }
+            Grab::Rotation => {
+                let t = self.scene.borrow().truth().t;
+                let [a, b] = rotation_texts(t, to);
+                if let Some(setup) = self.controls.set_texts(&[(a.0, &a.1), (b.0, &b.1)], None) {
+                    self.changed(setup);
+                }
+            }
         }
     }
 

@@ -29,6 +29,7 @@ const RESIDUAL: &str = "#b91c1c";
 const TRUTH: &str = "#7c3aed";
 const FAINT: &str = "rgba(74, 83, 96, 0.25)";
 const SELECT: &str = "#f59e0b";
+const SELECT_EDGE: &str = "#1f2937";
 
 /// Margin around what is shown, CSS px.
 const MARGIN: f64 = 34.0;
@@ -441,7 +442,9 @@ impl SceneView {
         squares(c, scene.y.iter().map(|q| f.px(*q)), 0.9 * r, Y_COL);
         discs(c, scene.x.iter().map(|p| f.px(*p)), r, X_COL);
         if let Some(p) = marks.selected.and_then(|i| scene.x.get(i)) {
+            // Amber, edged in dark so it stands out on the light ground (3:1 and more).
             ring(c, f.px(*p), r + 4.0 * lw, SELECT, 2.5 * lw);
+            ring(c, f.px(*p), r + 5.75 * lw, SELECT_EDGE, lw);
         }
         if let Some(Grab::Point(i)) = marks.hover {
             if marks.selected != Some(i) {
