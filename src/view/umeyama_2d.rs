@@ -93,6 +93,15 @@ impl Scene {
     }
 }
 
+/// The grid lines of spacing `step` over `lo..=hi`: the multiples k with k·step from the one at
+/// or below `lo` to the last at or below `hi`; `None` when they are not finite or more than
+/// 1,000 (points near ±1e308, from a huge sigma, make the span infinite).
+pub fn grid_multiples(lo: f64, hi: f64, step: f64) -> Option<std::ops::RangeInclusive<i64>> {
+    let (first, last) = ((lo / step).floor(), (hi / step).floor());
+    (first.is_finite() && last.is_finite() && (0.0..=1000.0).contains(&(last - first)))
+        .then(|| first as i64..=last as i64)
+}
+
 /// A 2×2 matrix, row-major.
 pub type Mat2 = [[f64; 2]; 2];
 
@@ -849,5 +858,16 @@ mod tests {
         );
         let out = crate::recipes::run(INFO.id, &run.raw()).unwrap();
         assert!(out.file(POINTS_CSV).is_some());
+    }
+
+    #[test]
+    fn grid_lines_are_counted_and_bounded() {
+        assert_eq!(grid_multiples(-0.25, 1.0, 0.5), Some(-1..=2));
+        assert_eq!(grid_multiples(0.0, 0.0, 0.5), Some(0..=0));
+        // A huge sigma puts targets near ±1e308: no endless grid.
+        assert_eq!(grid_multiples(-1e308, 1e308, 1.0), None);
+        assert_eq!(grid_multiples(f64::NEG_INFINITY, 1.0, 0.5), None);
+        assert_eq!(grid_multiples(0.0, 1.0, f64::NAN), None);
+        assert_eq!(grid_multiples(0.0, 2000.0, 1.0), None);
     }
 }

@@ -440,3 +440,25 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
     }
   }
 });
+
+test('a huge sigma (1e308: targets near ±1e308 and infinite) leaves the page working, with the CLI\'s nan fit and bytes', async () => {
+  const { files } = run(['1e308']);
+  const { page, errors, close } = await open('#/umeyama-2d');
+  try {
+    await page.locator('[data-field="sigma"]').evaluate((e) => {
+      e.value = '1e308';
+      e.dispatchEvent(new Event('input', { bubbles: true }));
+    });
+    await page.waitForFunction(() => document.querySelector('[data-cmd="bsv"]')?.innerText === 'bsv umeyama-2d 1e308 3 12');
+    // The tab did not hang or die: it still answers, and draws a frame.
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+    assertSameBytes(await download(page, CSV), files.get(CSV), 'sigma 1e308');
+    // Back to a small sigma: the fit and the grid come back.
+    await slide(page, 'sigma', '0.02');
+    await page.waitForFunction(() => document.querySelector('[data-cmd="bsv"]')?.innerText === 'bsv umeyama-2d 0.02 3 12');
+    assertFit(await readouts(page), run([]).values, 'back to the default');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

@@ -301,22 +301,26 @@ impl SceneView {
         if !(step.is_finite() && step > 0.0) {
             return;
         }
+        // Whole multiples of the step, counted: with points near ±1e308 (a huge sigma) the
+        // span is not finite and `x += step` would never reach the end.
+        let (Some(xs), Some(ys)) = (
+            crate::view::umeyama_2d::grid_multiples(lo[0], hi[0], step),
+            crate::view::umeyama_2d::grid_multiples(lo[1], hi[1], step),
+        ) else {
+            return;
+        };
         c.set_stroke_style_str(GRID);
         c.set_line_width(ink.line);
         c.begin_path();
-        let mut x = (lo[0] / step).floor() * step;
-        while x <= hi[0] {
-            let p = f.px([x, 0.0]);
+        for k in xs {
+            let p = f.px([k as f64 * step, 0.0]);
             c.move_to(p.x, 0.0);
             c.line_to(p.x, h);
-            x += step;
         }
-        let mut y = (lo[1] / step).floor() * step;
-        while y <= hi[1] {
-            let p = f.px([0.0, y]);
+        for k in ys {
+            let p = f.px([0.0, k as f64 * step]);
             c.move_to(0.0, p.y);
             c.line_to(w, p.y);
-            y += step;
         }
         c.stroke();
         let o = f.px([0.0, 0.0]);
