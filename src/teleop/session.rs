@@ -309,6 +309,12 @@ impl SessionLoader {
         }
     }
 
+    /// The session so far: its pilot, device, module and preflight as stored, and the
+    /// episodes simulated again until now.
+    pub fn session(&self) -> &Session {
+        &self.session
+    }
+
     /// Steps simulated so far and in all.
     pub fn progress(&self) -> (usize, usize) {
         (self.steps_done, self.steps_total)
@@ -1915,7 +1921,10 @@ mod tests {
                 calls += 1;
                 assert!(calls <= steps, "slice {slice}: ends");
                 let (done, _) = loader.progress();
-                assert!(done <= calls * slice.max(1), "slice {slice}: at most {slice} a call");
+                assert!(
+                    done <= calls * slice.max(1),
+                    "slice {slice}: at most {slice} a call"
+                );
             }
             assert_eq!(loader.progress(), (total, total));
             assert_eq!(loader.finish(), Some(whole.clone()), "slice {slice}");
