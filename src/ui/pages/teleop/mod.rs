@@ -335,7 +335,10 @@ impl Page for TeleopPage {
             s.episodes.clear();
             s
         });
-        let (session, first, restored, loading) = if loading.run_until(now_ms() + LOAD_SLICE_MS) {
+        let load_started_ms = now_ms();
+        let loaded = loading.run_until(load_started_ms + LOAD_SLICE_MS);
+        bench::record_load(now_ms() - load_started_ms);
+        let (session, first, restored, loading) = if loaded {
             let restored = loading.session_done.is_some();
             let session = loading.session_done.take();
             (session, loading.first_done.take(), restored, None)
@@ -1653,10 +1656,12 @@ impl Inner {
 
     /// One slice of the stored sessions simulated again; at the end, the sessions shown.
     fn load_slice(&self) {
+        let started_ms = now_ms();
         let done = match self.loading.borrow_mut().as_mut() {
-            Some(l) => l.run_until(now_ms() + LOAD_SLICE_MS),
+            Some(l) => l.run_until(started_ms + LOAD_SLICE_MS),
             None => return,
         };
+        bench::record_load(now_ms() - started_ms);
         if !done {
             self.render_loading();
             self.schedule_load();
