@@ -32,7 +32,7 @@ use serde_json::{json, Map, Value};
 use crate::pyfmt::push_py_float;
 use crate::teleop::{
     episode_csv, metrics, parse_episode_csv, proposed_label, Command, Episode, EpisodeMetrics,
-    Event, FailureCategory, Label, SceneConfig, Sim, State,
+    Event, FailureCategory, Label, SceneConfig, Sim, State, StepRecord,
 };
 
 /// The evidence file's name.
@@ -198,6 +198,131 @@ impl StoredEpisode {
             commands,
             records,
         })
+    }
+}
+
+/// A stored session simulated again in slices of steps ([`SessionLoader::run`]), so that a
+/// page opening ten minute-long episodes (60,000 steps) never blocks its tab for long; the
+/// session it gives ([`SessionLoader::finish`]) is [`Session::from_json`]'s, bit for bit.
+#[derive(Debug, Clone)]
+pub struct SessionLoader {
+    /// The session so far (the episodes simulated again, in order).
+    session: Session,
+    /// Episodes still to simulate, in order (the one in progress last, interrupted).
+    pending: std::collections::VecDeque<StoredEntry>,
+    /// The episode being simulated: its entry, simulation, commands and records so far.
+    current: Option<(StoredEntry, Sim, Vec<Command>, Vec<StepRecord>)>,
+    steps_total: usize,
+    steps_done: usize,
+}
+
+impl SessionLoader {
+    /// Parses a stored session (no simulation yet); `None` if the text is not a stored
+    /// session of this version.
+    pub fn new(text: &str) -> Option<SessionLoader> {
+        let stored: StoredSession = serde_json::from_str(text).ok()?;
+        if stored.version != STORED_VERSION {
+            return None;
+        }
+        let mut pending: std::collections::VecDeque<StoredEntry> =
+            stored.episodes.into_iter().collect();
+        if let Some(p) = stored.in_progress {
+            pending.push_back(StoredEntry {
+                episode: p,
+                label: None,
+                category: None,
+                note: String::new(),
+                interrupted: true,
+            });
+        }
+        let steps_total = pending
+            .iter()
+            .map(|e| {
+                e.episode
+                    .runs
+                    .iter()
+                    .map(|(n, _)| *n as usize)
+                    .sum::<usize>()
+            })
+            .sum();
+        Some(SessionLoader {
+            session: Session {
+                pilot_id: stored.pilot_id,
+                input_device: stored.input_device,
+                module: stored.module,
+                preflight: stored.preflight,
+                started_at: stored.started_at,
+                ended_at: stored.ended_at,
+                episodes: Vec::new(),
+            },
+            pending,
+            current: None,
+            steps_total,
+            steps_done: 0,
+        })
+    }
+
+    /// Simulates up to `max_steps` more steps. `Some(true)` when every episode is done, `Some(false)` when
+    /// there is more, `None` if an episode does not simulate again (refused configuration, or
+    /// a start state that is not the configuration's).
+    pub fn run(&mut self, max_steps: usize) -> Option<bool> {
+        let mut budget = max_steps;
+        loop {
+            if self.current.is_none() {
+                let Some(entry) = self.pending.pop_front() else {
+                    return Some(true);
+                };
+                let sim = Sim::new(entry.episode.config.clone()).ok()?;
+                if *sim.start_state() != entry.episode.start {
+                    return None;
+                }
+                let commands = entry.episode.commands();
+                let records = Vec::with_capacity(commands.len());
+                self.current = Some((entry, sim, commands, records));
+            }
+            let (_, sim, commands, records) = self.current.as_mut()?;
+            let from = records.len();
+            let to = commands.len().min(from.saturating_add(budget));
+            for c in &commands[from..to] {
+                records.push(sim.step(c));
+            }
+            budget -= to - from;
+            self.steps_done += to - from;
+            if records.len() < commands.len() {
+                return Some(false);
+            }
+            let (entry, _, commands, records) = self.current.take()?;
+            let episode = Episode {
+                config: entry.episode.config,
+                start: entry.episode.start,
+                commands,
+                records,
+            };
+            let n = self.session.record(episode, entry.interrupted);
+            let e = self.session.episodes.get_mut(n - 1)?;
+            e.label = entry.label.as_deref().and_then(label_from_id);
+            e.category = entry.category.as_deref().and_then(category_from_id);
+            e.note = entry.note;
+            if budget == 0 && !self.pending.is_empty() {
+                return Some(false);
+            }
+        }
+    }
+
+    /// The session so far: its pilot, device, module and preflight as stored, and the
+    /// episodes simulated again until now.
+    pub fn session(&self) -> &Session {
+        &self.session
+    }
+
+    /// Steps simulated so far and in all.
+    pub fn progress(&self) -> (usize, usize) {
+        (self.steps_done, self.steps_total)
+    }
+
+    /// The session, once [`SessionLoader::run`] said `Some(true)` (`None` before).
+    pub fn finish(self) -> Option<Session> {
+        (self.current.is_none() && self.pending.is_empty()).then_some(self.session)
     }
 }
 
@@ -429,34 +554,11 @@ impl Session {
 
     /// A session from its stored JSON; an episode in progress comes back as an interrupted
     /// episode at the end. `None` if the text is not a stored session of this version or an
-    /// episode does not simulate again.
+    /// episode does not simulate again. All at once: [`SessionLoader`] does the same in slices.
     pub fn from_json(text: &str) -> Option<Session> {
-        let stored: StoredSession = serde_json::from_str(text).ok()?;
-        if stored.version != STORED_VERSION {
-            return None;
-        }
-        let mut session = Session {
-            pilot_id: stored.pilot_id,
-            input_device: stored.input_device,
-            module: stored.module,
-            preflight: stored.preflight,
-            started_at: stored.started_at,
-            ended_at: stored.ended_at,
-            episodes: Vec::new(),
-        };
-        for e in stored.episodes {
-            let episode = e.episode.episode()?;
-            let n = session.record(episode, e.interrupted);
-            let entry = session.episodes.get_mut(n - 1)?;
-            entry.label = e.label.as_deref().and_then(label_from_id);
-            entry.category = e.category.as_deref().and_then(category_from_id);
-            entry.note = e.note;
-        }
-        if let Some(p) = stored.in_progress {
-            let episode = p.episode()?;
-            session.record(episode, true);
-        }
-        Some(session)
+        let mut loader = SessionLoader::new(text)?;
+        while !loader.run(usize::MAX)? {}
+        loader.finish()
     }
 
     /// `teleop_episodes.csv`: one row per episode.
@@ -1801,6 +1903,48 @@ mod tests {
             json.len()
         );
         assert_eq!(Session::from_json("{}"), None);
+    }
+
+    #[test]
+    fn a_session_loaded_in_slices_is_the_one_loaded_at_once() {
+        let s = session();
+        let in_progress = episode(&push(25, 0.5, 0.5, false));
+        let json = s.to_json(Some(&in_progress));
+        let whole = Session::from_json(&json).expect("whole");
+        for slice in [0, 1, 7, 1000] {
+            let mut loader = SessionLoader::new(&json).expect("loader");
+            let (_, total) = loader.progress();
+            let steps: usize = whole.episodes.iter().map(|e| e.episode.records.len()).sum();
+            assert_eq!(total, steps);
+            let mut calls = 0;
+            while !loader.run(slice.max(1)).expect("simulates") {
+                calls += 1;
+                assert!(calls <= steps, "slice {slice}: ends");
+                let (done, _) = loader.progress();
+                assert!(
+                    done <= calls * slice.max(1),
+                    "slice {slice}: at most {slice} a call"
+                );
+            }
+            assert_eq!(loader.progress(), (total, total));
+            assert_eq!(loader.finish(), Some(whole.clone()), "slice {slice}");
+        }
+        // Not finished: no session yet.
+        let mut loader = SessionLoader::new(&json).expect("loader");
+        assert_eq!(loader.run(3), Some(false));
+        assert_eq!(loader.finish(), None);
+        // A start state that is not the configuration's: refused, as at once.
+        let mut stored: StoredSession = serde_json::from_str(&json).expect("stored");
+        stored.episodes[1].episode.start.q[0] += 0.1;
+        let bad = serde_json::to_string(&stored).expect("json");
+        assert_eq!(Session::from_json(&bad), None);
+        let mut loader = SessionLoader::new(&bad).expect("parses");
+        let mut result = Some(false);
+        while result == Some(false) {
+            result = loader.run(5);
+        }
+        assert_eq!(result, None);
+        assert!(SessionLoader::new("{}").is_none());
     }
 
     #[test]

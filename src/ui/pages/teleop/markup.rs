@@ -181,6 +181,7 @@ pub fn page() -> String {
          <header class=\"tele-head\"><h1 data-i18n=\"teleop-title\"></h1>\
          <p class=\"tele-lede\" data-i18n=\"teleop-lede\"></p>\
          <p class=\"tele-disclaimer\" data-testid=\"teleop-disclaimer\" data-i18n=\"teleop-disclaimer\"></p>\
+         <p class=\"tele-notice\" data-tele=\"loading\" role=\"status\" hidden></p>\
          <p class=\"tele-notice\" data-tele=\"restored\" role=\"status\" hidden></p></header>\
          {modules}\
          <p class=\"tele-module-help\" data-tele=\"module-help\"></p>\
@@ -203,6 +204,13 @@ pub fn page() -> String {
          <div data-tele=\"stepper\"></div>\
          <canvas class=\"tele-timeline\" data-testid=\"teleop-timeline\" role=\"img\" \
          data-i18n-attr=\"aria-label=teleop-timeline-label\"></canvas>\
+         <ul class=\"tele-legend\" data-tele=\"timeline-legend\">\
+         <li><span class=\"tele-key tele-key-fail\" aria-hidden=\"true\">✕</span><span data-i18n=\"teleop-legend-failure\"></span></li>\
+         <li><span class=\"tele-key tele-key-success\" aria-hidden=\"true\">○</span><span data-i18n=\"teleop-legend-success\"></span></li>\
+         <li><span class=\"tele-key tele-key-warn\" aria-hidden=\"true\">■</span><span data-i18n=\"teleop-legend-warning\"></span></li>\
+         <li><span class=\"tele-key tele-key-release\" aria-hidden=\"true\">|</span><span data-i18n=\"teleop-legend-release\"></span></li>\
+         <li><span class=\"tele-key tele-key-fail\" aria-hidden=\"true\">▼</span><span data-i18n=\"teleop-legend-first-failure\"></span></li>\
+         <li><span class=\"tele-key tele-key-now\" aria-hidden=\"true\">┃</span><span data-i18n=\"teleop-legend-now\"></span></li></ul>\
          <p class=\"tele-note\" data-tele=\"review-event\"></p></div>\
          </section>\
          <section class=\"tele-card\"><h2 data-i18n=\"teleop-readouts-title\"></h2>{readouts}{live}\

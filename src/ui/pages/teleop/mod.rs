@@ -39,7 +39,7 @@ use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, Poin
 
 use crate::teleop::session::{
     category_from_id, label_from_id, EpisodeEntry, InputDevice, Module, Session, SessionError,
-    EPISODES_NAME, EVIDENCE_NAME, RECORD_TARGET,
+    SessionLoader, EPISODES_NAME, EVIDENCE_NAME, RECORD_TARGET,
 };
 use crate::teleop::{Command, Episode, Event, Sim, StepRecord};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
@@ -68,6 +68,11 @@ const STORE_KEY: &str = "bsv.teleop.session";
 const FIRST_KEY: &str = "bsv.teleop.first";
 /// Save the session in progress at least this often while recording, ms.
 const SAVE_EVERY_MS: f64 = 2000.0;
+/// Longest slice of work simulating stored sessions again, ms (then the tab paints and
+/// takes input before the next).
+const LOAD_SLICE_MS: f64 = 12.0;
+/// Steps simulated between two looks at the clock while loading (about 3 ms in wasm).
+const LOAD_CHUNK_STEPS: usize = 500;
 /// How long a joint-limit or singularity notice stays after its last event, ms.
 const STOP_NOTICE_MS: f64 = 600.0;
 /// The tip has moved (preflight) once this far from its start, m.
@@ -162,6 +167,78 @@ impl Live {
     }
 }
 
+/// The stored sessions (the one in progress, then the first) being simulated again, in
+/// slices of at most [`LOAD_SLICE_MS`]: ten minute-long episodes are 60,000 steps, several
+/// hundred ms in one task. Until they are done the page is inert and saves nothing.
+struct Loading {
+    session: Option<SessionLoader>,
+    first: Option<SessionLoader>,
+    /// The sessions simulated again (`None`: none stored, or one that does not simulate).
+    session_done: Option<Session>,
+    first_done: Option<Session>,
+    /// Steps of the loaders already finished, and of all.
+    steps_finished: usize,
+    steps_total: usize,
+}
+
+impl Loading {
+    fn new(session: Option<SessionLoader>, first: Option<SessionLoader>) -> Loading {
+        let steps_total = [&session, &first]
+            .iter()
+            .filter_map(|l| l.as_ref())
+            .map(|l| l.progress().1)
+            .sum();
+        Loading {
+            session,
+            first,
+            session_done: None,
+            first_done: None,
+            steps_finished: 0,
+            steps_total,
+        }
+    }
+
+    /// Simulates until `until_ms` ([`now_ms`] clock) or the end; `true` when both are done.
+    fn run_until(&mut self, until_ms: f64) -> bool {
+        loop {
+            let (slot, out) = if self.session.is_some() {
+                (&mut self.session, &mut self.session_done)
+            } else if self.first.is_some() {
+                (&mut self.first, &mut self.first_done)
+            } else {
+                return true;
+            };
+            let result = slot.as_mut().and_then(|l| l.run(LOAD_CHUNK_STEPS));
+            if result != Some(false) {
+                if let Some(l) = slot.take() {
+                    self.steps_finished += l.progress().1;
+                    *out = if result == Some(true) {
+                        l.finish()
+                    } else {
+                        None
+                    };
+                }
+            }
+            if now_ms() >= until_ms {
+                return self.session.is_none() && self.first.is_none();
+            }
+        }
+    }
+
+    /// Percent of the steps simulated.
+    fn percent(&self) -> u32 {
+        let current = [&self.session, &self.first]
+            .iter()
+            .filter_map(|l| l.as_ref())
+            .map(|l| l.progress().0)
+            .sum::<usize>();
+        let done = (self.steps_finished + current).min(self.steps_total);
+        (done * 100)
+            .checked_div(self.steps_total)
+            .map_or(100, |p| p as u32)
+    }
+}
+
 struct Els {
     engage: Element,
     gripper: Element,
@@ -177,6 +254,7 @@ struct Els {
     review_event: Element,
     stepper_slot: Element,
     restored: Element,
+    loading: Element,
     open: Element,
     open_error: Element,
     status: Element,
@@ -211,6 +289,9 @@ pub struct Inner {
     exports: Exports,
     /// The next slice of a file being written.
     export_timer: RefCell<Option<Rc<Timer>>>,
+    /// Stored sessions still being simulated again, and the timer of the next slice.
+    loading: RefCell<Option<Loading>>,
+    load_timer: RefCell<Option<Rc<Timer>>>,
     last_save_ms: Cell<f64>,
     /// The device status shown (`None`: to be written).
     shown_device: RefCell<Option<String>>,
@@ -242,11 +323,30 @@ impl Page for TeleopPage {
         let root = ctx.root.clone();
         root.set_inner_html(&markup::page());
         dom::relocalize(&root)?;
-        let stored = dom::storage_get(STORE_KEY).and_then(|t| Session::from_json(&t));
-        let restored = stored.is_some();
+        // The stored sessions are simulated again: at once when that is short, else in
+        // slices after the first paint (the page inert meanwhile, its session the stored
+        // one's pilot, device and module without episodes).
+        let mut loading = Loading::new(
+            dom::storage_get(STORE_KEY).and_then(|t| SessionLoader::new(&t)),
+            dom::storage_get(FIRST_KEY).and_then(|t| SessionLoader::new(&t)),
+        );
+        let interim = loading.session.as_ref().map(|l| {
+            let mut s = l.session().clone();
+            s.episodes.clear();
+            s
+        });
+        let load_started_ms = now_ms();
+        let loaded = loading.run_until(load_started_ms + LOAD_SLICE_MS);
+        bench::record_load(now_ms() - load_started_ms);
+        let (session, first, restored, loading) = if loaded {
+            let restored = loading.session_done.is_some();
+            let session = loading.session_done.take();
+            (session, loading.first_done.take(), restored, None)
+        } else {
+            (interim, None, false, Some(loading))
+        };
         let session =
-            stored.unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
-        let first = dom::storage_get(FIRST_KEY).and_then(|t| Session::from_json(&t));
+            session.unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
         let mut texts = SettingsTexts::defaults(session.input_device);
         texts.pilot = session.pilot_id.clone();
         for (k, v) in &ctx.query {
@@ -290,6 +390,7 @@ impl Page for TeleopPage {
             review_event: role(&root, "review-event")?,
             stepper_slot: role(&root, "stepper")?,
             restored: role(&root, "restored")?,
+            loading: role(&root, "loading")?,
             open: role(&root, "open")?,
             open_error: role(&root, "open-error")?,
             status: role(&root, "status")?,
@@ -326,6 +427,8 @@ impl Page for TeleopPage {
             frame: RefCell::new(None),
             exports,
             export_timer: RefCell::new(None),
+            loading: RefCell::new(None),
+            load_timer: RefCell::new(None),
             last_save_ms: Cell::new(0.0),
             shown_device: RefCell::new(None),
             shown_stop: RefCell::new(String::new()),
@@ -333,21 +436,13 @@ impl Page for TeleopPage {
         });
         inner.install()?;
         inner.view.borrow_mut().fit();
-        if restored {
-            inner
-                .els
-                .restored
-                .set_text_content(Some(&ctx::t("teleop-restored")));
-            dom::show(&inner.els.restored, true);
-            let unlabelled = inner.session.borrow().unlabelled();
-            if let Some(n) = unlabelled {
-                inner.open_label(n);
-            }
+        let sliced = loading.is_some();
+        *inner.loading.borrow_mut() = loading;
+        if sliced {
+            inner.set_busy(true);
+            inner.schedule_load();
         }
-        let module = inner.session.borrow().module;
-        inner.enter_module(module);
-        inner.render_buttons();
-        inner.render_session();
+        inner.show_session(restored);
         inner.write_url();
         Ok(TeleopPage(inner))
     }
@@ -369,7 +464,7 @@ impl Page for TeleopPage {
     fn on_key(&self, event: &KeyboardEvent) -> bool {
         // The page body has focus (the canvas's own listener takes keys first): L stays
         // the shell's language key here.
-        if event.code() == "KeyL" {
+        if event.code() == "KeyL" || self.0.loading.borrow().is_some() {
             return false;
         }
         self.0.key_down(event)
@@ -391,6 +486,7 @@ impl Inner {
         frame.request();
         *self.frame.borrow_mut() = Some(frame);
         *self.export_timer.borrow_mut() = Some(scope.timer(me, Inner::export_slice));
+        *self.load_timer.borrow_mut() = Some(scope.timer(me, Inner::load_slice));
         scope.listen_for(&self.els.engage, "click", me, |p, _| p.toggle_engage())?;
         scope.listen_for(&self.els.gripper, "click", me, |p, _| p.toggle_gripper())?;
         scope.listen_for(&self.els.reset, "click", me, |p, _| p.reset())?;
@@ -585,6 +681,10 @@ impl Inner {
 
     /// One displayed frame: poll the pad, step the simulation, draw, readouts.
     fn frame(&self, t_ms: f64) {
+        if self.loading.borrow().is_some() {
+            // Stored sessions are still being loaded: no input drives the arm yet.
+            return;
+        }
         if self.in_review() {
             self.animate(false);
             return;
@@ -1505,7 +1605,86 @@ impl Inner {
 
     // ---- Storage ----
 
+    /// The session on screen: the restored notice and the label panel of its first unlabelled
+    /// episode if it was `restored`, its module, buttons and tables.
+    fn show_session(&self, restored: bool) {
+        if restored {
+            self.els
+                .restored
+                .set_text_content(Some(&ctx::t("teleop-restored")));
+            dom::show(&self.els.restored, true);
+            let unlabelled = self.session.borrow().unlabelled();
+            if let Some(n) = unlabelled {
+                self.open_label(n);
+            }
+        }
+        let module = self.session.borrow().module;
+        self.enter_module(module);
+        self.render_buttons();
+        self.render_session();
+    }
+
+    /// While stored sessions are simulated again: the progress line shown, and everything
+    /// below the header inert (nothing the pilot does can change a session not yet loaded).
+    fn set_busy(&self, on: bool) {
+        let _ = self
+            .root
+            .set_attribute("aria-busy", if on { "true" } else { "false" });
+        for part in dom::matching(&self.root, ".tele > :not(.tele-head)").unwrap_or_default() {
+            if on {
+                let _ = part.set_attribute("inert", "");
+            } else {
+                let _ = part.remove_attribute("inert");
+            }
+        }
+        self.render_loading();
+        dom::show(&self.els.loading, on);
+    }
+
+    fn render_loading(&self) {
+        if let Some(l) = self.loading.borrow().as_ref() {
+            let text = ctx::t_args("teleop-loading", &[("percent", l.percent().into())]);
+            self.els.loading.set_text_content(Some(&text));
+        }
+    }
+
+    fn schedule_load(&self) {
+        if let Some(t) = self.load_timer.borrow().as_ref() {
+            t.schedule(0);
+        }
+    }
+
+    /// One slice of the stored sessions simulated again; at the end, the sessions shown.
+    fn load_slice(&self) {
+        let started_ms = now_ms();
+        let done = match self.loading.borrow_mut().as_mut() {
+            Some(l) => l.run_until(started_ms + LOAD_SLICE_MS),
+            None => return,
+        };
+        bench::record_load(now_ms() - started_ms);
+        if !done {
+            self.render_loading();
+            self.schedule_load();
+            return;
+        }
+        let Some(l) = self.loading.borrow_mut().take() else {
+            return;
+        };
+        self.set_busy(false);
+        let restored = l.session_done.is_some();
+        *self.first.borrow_mut() = l.first_done;
+        *self.session.borrow_mut() = l
+            .session_done
+            .unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
+        self.show_session(restored);
+        self.request_frame();
+    }
+
     fn save(&self) {
+        if self.loading.borrow().is_some() {
+            // The stored session is not loaded yet: what is stored stays.
+            return;
+        }
         self.last_save_ms.set(now_ms());
         // Only the commands are stored (the records are simulated again on load).
         let in_progress = if self.recording_in_progress() {
@@ -1524,6 +1703,9 @@ impl Inner {
     }
 
     fn save_first(&self) {
+        if self.loading.borrow().is_some() {
+            return;
+        }
         if let Some(first) = self.first.borrow().as_ref() {
             dom::storage_set(FIRST_KEY, &first.to_json(None));
         }
@@ -1580,6 +1762,7 @@ impl Inner {
     fn relocalize(&self) {
         let _ = dom::relocalize(&self.root);
         self.exports.relocalize();
+        self.render_loading();
         self.settings.borrow().render();
         self.labels.borrow().render();
         *self.shown_device.borrow_mut() = None;

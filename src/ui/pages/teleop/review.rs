@@ -1,7 +1,9 @@
 //! Failure review: one recorded episode replayed under the kit's stepper (play, pause, step,
 //! scrub), the scene simulated again from the episode's start state and commands (exactly the
 //! recorded states: the kernel is deterministic), and a timeline under the stepper with every
-//! event as a tick and the first failure marked (`data-first-failure`, the step from 1).
+//! event as a mark and the first failure marked (`data-first-failure`, the step from 1). The
+//! marks differ in shape as well as colour (Okabe–Ito): failures crosses, successes rings,
+//! warnings squares, the first failure a triangle; the legend under the timeline says so.
 
 use std::rc::Rc;
 
@@ -11,6 +13,10 @@ use web_sys::HtmlCanvasElement;
 use crate::teleop::{Episode, Event, SceneGeometry, Sim};
 use crate::ui::kit::canvas::{Ink, Layer};
 use crate::ui::kit::stepper::{Length, StepModel};
+use crate::view::palette;
+
+/// Releases on the timeline (neutral: neither a failure nor a success).
+const GREY: &str = "#4a5360";
 
 /// The stepper's model: an episode and the replaying simulation.
 pub struct Replay {
@@ -121,29 +127,72 @@ impl Timeline {
         let x_of = |step: f64| 6.0 + (w - 12.0) * step / n;
         c.set_fill_style_str("#e3e8ef");
         c.fill_rect(6.0, h / 2.0 - 3.0, w - 12.0, 6.0);
-        for (i, r) in replay.episode.records.iter().enumerate() {
-            for e in &r.events {
-                let colour = match e {
-                    Event::Collision { .. } | Event::Drop | Event::GraspMiss | Event::Timeout => {
-                        "#a4161a"
-                    }
-                    Event::JointLimit { .. } | Event::Singularity | Event::SpeedLimit { .. } => {
-                        "#b45309"
-                    }
-                    Event::Success | Event::TargetReached { .. } | Event::Grasp => "#1d6b35",
-                    Event::Release => "#4a5360",
+        // Each kind of event its own colour (Okabe–Ito) and its own shape, so that colour is
+        // never the only cue: failures vermilion crosses, successes bluish-green rings,
+        // warnings (limits, singularity) reddish-purple squares, releases grey ticks. One
+        // path per kind; a mark on the pixel column of the last one of its kind is skipped.
+        let y = h / 2.0;
+        let r = (h / 2.0 - 4.0).clamp(3.0, 4.0 * ink.line.max(1.0));
+        let mut last = [f64::NAN; 4];
+        let mut marks: [Vec<f64>; 4] = Default::default();
+        for (i, rec) in replay.episode.records.iter().enumerate() {
+            for e in &rec.events {
+                let kind = match e {
+                    Event::Collision { .. } | Event::Drop | Event::GraspMiss | Event::Timeout => 0,
+                    Event::Success | Event::TargetReached { .. } | Event::Grasp => 1,
+                    Event::JointLimit { .. } | Event::Singularity | Event::SpeedLimit { .. } => 2,
+                    Event::Release => 3,
                 };
-                c.set_fill_style_str(colour);
-                c.fill_rect(x_of(i as f64 + 1.0) - 1.0, 4.0, 2.0 * ink.line, h - 8.0);
+                let x = x_of(i as f64 + 1.0).round();
+                if last[kind] != x {
+                    last[kind] = x;
+                    marks[kind].push(x);
+                }
             }
         }
+        c.set_line_width(1.5 * ink.line.max(1.0));
+        // Releases: grey ticks.
+        c.set_stroke_style_str(GREY);
+        c.begin_path();
+        for x in &marks[3] {
+            c.move_to(*x, y - r);
+            c.line_to(*x, y + r);
+        }
+        c.stroke();
+        // Warnings: reddish-purple squares.
+        c.set_fill_style_str(palette::REDDISH_PURPLE.hex);
+        c.begin_path();
+        for x in &marks[2] {
+            c.rect(x - r * 0.7, y - r * 0.7, r * 1.4, r * 1.4);
+        }
+        c.fill();
+        // Successes: bluish-green rings.
+        c.set_stroke_style_str(palette::BLUISH_GREEN.hex);
+        c.begin_path();
+        for x in &marks[1] {
+            c.move_to(x + r, y);
+            let _ = c.arc(*x, y, r, 0.0, std::f64::consts::TAU);
+        }
+        c.stroke();
+        // Failures: vermilion crosses.
+        c.set_stroke_style_str(palette::VERMILION.hex);
+        c.set_line_width(2.0 * ink.line.max(1.0));
+        c.begin_path();
+        for x in &marks[0] {
+            c.move_to(x - r, y - r);
+            c.line_to(x + r, y + r);
+            c.move_to(x - r, y + r);
+            c.line_to(x + r, y - r);
+        }
+        c.stroke();
         if let Some((step, _)) = replay.first_failure {
             let x = x_of(step as f64);
-            c.set_fill_style_str("#a4161a");
+            // The first failure: a vermilion triangle pointing down at it.
+            c.set_fill_style_str(palette::VERMILION.hex);
             c.begin_path();
-            c.move_to(x, h / 2.0);
-            c.line_to(x - 7.0, 0.0);
-            c.line_to(x + 7.0, 0.0);
+            c.move_to(x, h / 2.0 - r - 1.0);
+            c.line_to(x - 6.0, 0.0);
+            c.line_to(x + 6.0, 0.0);
             c.close_path();
             c.fill();
             let _ = l
@@ -153,7 +202,7 @@ impl Timeline {
             let _ = l.canvas.remove_attribute("data-first-failure");
         }
         let x = x_of(replay.index() as f64);
-        c.set_fill_style_str("#1a4d8f");
+        c.set_fill_style_str(palette::BLUE.hex);
         c.fill_rect(x - 1.5, 0.0, 3.0, h);
     }
 }
