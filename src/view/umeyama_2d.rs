@@ -99,7 +99,7 @@ impl Scene {
 pub fn grid_multiples(lo: f64, hi: f64, step: f64) -> Option<std::ops::RangeInclusive<i64>> {
     let (first, last) = ((lo / step).floor(), (hi / step).floor());
     (first.is_finite() && last.is_finite() && (0.0..=1000.0).contains(&(last - first)))
-        .then(|| first as i64..=last as i64)
+        .then_some(first as i64..=last as i64)
 }
 
 /// A 2×2 matrix, row-major.

@@ -168,3 +168,31 @@ impl ProgressPanel {
         self.set(done, total);
     }
 }
+
+/// The one-line progress of a file written in slices: message `message_id` (with `$file`,
+/// `$done` and `$total`, grouped digits) while `shown` is `Some((file, (done, total)))`;
+/// hidden with `None`. `data-state` is `writing` or `idle` (test hooks).
+pub fn show_writing_line(line: &Element, message_id: &str, shown: Option<(&str, (usize, usize))>) {
+    let text = shown.map(|(file, (done, total))| {
+        ctx::t_args(
+            message_id,
+            &[
+                ("file", FluentArg::Text(file.to_string())),
+                (
+                    "done",
+                    FluentArg::Text(crate::pyfmt::group_u64(done as u64)),
+                ),
+                (
+                    "total",
+                    FluentArg::Text(crate::pyfmt::group_u64(total as u64)),
+                ),
+            ],
+        )
+    });
+    line.set_text_content(text.as_deref());
+    show(line, text.is_some());
+    let _ = line.set_attribute(
+        "data-state",
+        if text.is_some() { "writing" } else { "idle" },
+    );
+}

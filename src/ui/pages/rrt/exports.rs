@@ -12,11 +12,10 @@ use std::cell::{Cell, RefCell};
 use wasm_bindgen::JsValue;
 use web_sys::{Blob, BlobPropertyBag, Element};
 
-use crate::i18n::FluentArg;
 use crate::recipes::rrt_2d::{nodes_csv_part, path_csv, INFO};
+use crate::ui::dom;
 use crate::ui::kit::exports::Exports as Commands;
 use crate::ui::schedule::now_ms;
-use crate::ui::{ctx, dom};
 use crate::view::rrt::PageState;
 
 use super::Run;
@@ -190,27 +189,7 @@ impl Exports {
 
     /// The progress line of a sliced file (`None`: hidden), and the button disabled meanwhile.
     fn show_progress(&self, rows: Option<(usize, usize)>) {
-        let text = rows.map(|(done, total)| {
-            ctx::t_args(
-                "rrt-csv-writing",
-                &[
-                    ("file", FluentArg::Text("rrt_nodes.csv".to_string())),
-                    (
-                        "done",
-                        FluentArg::Text(crate::pyfmt::group_u64(done as u64)),
-                    ),
-                    (
-                        "total",
-                        FluentArg::Text(crate::pyfmt::group_u64(total as u64)),
-                    ),
-                ],
-            )
-        });
-        self.progress.set_text_content(text.as_deref());
-        dom::show(&self.progress, text.is_some());
-        let _ = self.progress.set_attribute(
-            "data-state",
-            if rows.is_some() { "writing" } else { "idle" },
-        );
+        let shown = rows.map(|rows| ("rrt_nodes.csv", rows));
+        crate::ui::kit::progress::show_writing_line(&self.progress, "rrt-csv-writing", shown);
     }
 }

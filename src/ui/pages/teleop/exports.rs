@@ -12,10 +12,9 @@ use std::collections::VecDeque;
 use wasm_bindgen::JsValue;
 use web_sys::{Blob, BlobPropertyBag, Element};
 
-use crate::i18n::FluentArg;
 use crate::teleop::session::{episode_file_name, Session, EPISODES_NAME, EVIDENCE_NAME};
+use crate::ui::dom;
 use crate::ui::schedule::now_ms;
-use crate::ui::{ctx, dom};
 use crate::view::teleop_export::ExportJob;
 
 /// Rows written (or hashed) between two clock reads.
@@ -176,28 +175,7 @@ impl Exports {
 
     /// The progress line (`None`: hidden).
     fn show_progress(&self, shown: Option<(&str, (usize, usize))>) {
-        let text = shown.map(|(file, (done, total))| {
-            ctx::t_args(
-                "teleop-export-writing",
-                &[
-                    ("file", FluentArg::Text(file.to_string())),
-                    (
-                        "done",
-                        FluentArg::Text(crate::pyfmt::group_u64(done as u64)),
-                    ),
-                    (
-                        "total",
-                        FluentArg::Text(crate::pyfmt::group_u64(total as u64)),
-                    ),
-                ],
-            )
-        });
-        self.progress.set_text_content(text.as_deref());
-        dom::show(&self.progress, text.is_some());
-        let _ = self.progress.set_attribute(
-            "data-state",
-            if text.is_some() { "writing" } else { "idle" },
-        );
+        crate::ui::kit::progress::show_writing_line(&self.progress, "teleop-export-writing", shown);
     }
 }
 
