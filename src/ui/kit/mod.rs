@@ -24,6 +24,7 @@
 //! - [`orbit`]: a 3D view: orbit by drag, zoom by wheel/pinch/keys, preset views, a page's
 //!   claimed drags, and the painter of [`crate::view::scene3d`] marks.
 
+pub mod bench_log;
 pub mod canvas;
 pub mod drag;
 pub mod exports;

@@ -564,23 +564,6 @@ pub fn thinned_columns<const N: usize>(
 
 /// Bench builds keep the duration of every recompute + redraw of a live page, ms, in
 /// `window.__signalFrameMs` (`tests/e2e/signals.bench.mjs` reads it).
-#[cfg(feature = "bench")]
 pub fn record_frame_ms(ms: f64) {
-    let Some(window) = web_sys::window() else {
-        return;
-    };
-    let key = JsValue::from_str("__signalFrameMs");
-    let list = js_sys::Reflect::get(&window, &key)
-        .ok()
-        .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
-        .unwrap_or_else(|| {
-            let a = js_sys::Array::new();
-            let _ = js_sys::Reflect::set(&window, &key, &a);
-            a
-        });
-    list.push(&JsValue::from_f64(ms));
+    crate::ui::kit::bench_log::push_ms("__signalFrameMs", ms, crate::ui::kit::bench_log::KEEP_ALL);
 }
-
-/// Without the `bench` feature: nothing.
-#[cfg(not(feature = "bench"))]
-pub fn record_frame_ms(_ms: f64) {}

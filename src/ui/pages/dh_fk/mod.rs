@@ -513,22 +513,6 @@ impl Inner {
 
 /// Bench builds keep each draw's and each recompute's duration, ms, in `window.<name>`
 /// (`__dhFrameMs`, `__dhChangeMs`; `tests/e2e/dh_fk.bench.mjs` reads them).
-#[cfg(feature = "bench")]
 fn bench_record(name: &str, ms: f64) {
-    let Some(window) = web_sys::window() else {
-        return;
-    };
-    let key = JsValue::from_str(name);
-    let list = js_sys::Reflect::get(&window, &key)
-        .ok()
-        .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
-        .unwrap_or_else(|| {
-            let a = js_sys::Array::new();
-            let _ = js_sys::Reflect::set(&window, &key, &a);
-            a
-        });
-    list.push(&JsValue::from_f64(ms));
+    crate::ui::kit::bench_log::push_ms(name, ms, crate::ui::kit::bench_log::KEEP_ALL);
 }
-
-#[cfg(not(feature = "bench"))]
-fn bench_record(_name: &str, _ms: f64) {}

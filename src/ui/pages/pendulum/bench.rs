@@ -26,7 +26,6 @@ mod hooks {
     use std::rc::Weak;
 
     use wasm_bindgen::prelude::*;
-    use wasm_bindgen::JsCast;
 
     use super::super::Inner;
     use crate::ui::kit::stepper::StepModel;
@@ -38,22 +37,7 @@ mod hooks {
 
     /// Records one frame's work.
     pub(in super::super) fn record(ms: f64) {
-        let Some(window) = web_sys::window() else {
-            return;
-        };
-        let key = JsValue::from_str(FRAMES);
-        let list = js_sys::Reflect::get(&window, &key)
-            .ok()
-            .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
-            .unwrap_or_else(|| {
-                let a = js_sys::Array::new();
-                let _ = js_sys::Reflect::set(&window, &key, &a);
-                a
-            });
-        list.push(&JsValue::from_f64(ms));
-        if list.length() > KEEP {
-            list.shift();
-        }
+        crate::ui::kit::bench_log::push_ms(FRAMES, ms, KEEP);
     }
 
     /// Installs `window.__pendulumBench` (and an empty `__pendulumFrameMs`).

@@ -1174,24 +1174,8 @@ impl Inner {
 
 /// Bench builds keep every frame's work in `window.__rrtFrameMs` (advance + draw, ms) and
 /// `window.__rrtDrawMs` (the drawing alone).
-#[cfg(feature = "bench")]
 fn bench_record(work_ms: f64, draw_ms: f64) {
-    let Some(window) = web_sys::window() else {
-        return;
-    };
-    for (name, ms) in [("__rrtFrameMs", work_ms), ("__rrtDrawMs", draw_ms)] {
-        let key = JsValue::from_str(name);
-        let list = js_sys::Reflect::get(&window, &key)
-            .ok()
-            .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
-            .unwrap_or_else(|| {
-                let a = js_sys::Array::new();
-                let _ = js_sys::Reflect::set(&window, &key, &a);
-                a
-            });
-        list.push(&JsValue::from_f64(ms));
-    }
+    use crate::ui::kit::bench_log::{push_ms, KEEP_ALL};
+    push_ms("__rrtFrameMs", work_ms, KEEP_ALL);
+    push_ms("__rrtDrawMs", draw_ms, KEEP_ALL);
 }
-
-#[cfg(not(feature = "bench"))]
-fn bench_record(_work_ms: f64, _draw_ms: f64) {}

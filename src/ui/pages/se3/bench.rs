@@ -12,28 +12,7 @@ impl Timings {
     }
 
     /// Records one frame's work, ms.
-    #[cfg(feature = "bench")]
     pub fn push(&self, ms: f64) {
-        use wasm_bindgen::{JsCast, JsValue};
-        let Some(window) = web_sys::window() else {
-            return;
-        };
-        let key = JsValue::from_str("__se3FrameMs");
-        let list = js_sys::Reflect::get(&window, &key)
-            .ok()
-            .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
-            .unwrap_or_else(|| {
-                let a = js_sys::Array::new();
-                let _ = js_sys::Reflect::set(&window, &key, &a);
-                a
-            });
-        if list.length() >= 5000 {
-            list.shift();
-        }
-        list.push(&JsValue::from_f64(ms));
+        crate::ui::kit::bench_log::push_ms("__se3FrameMs", ms, 5000);
     }
-
-    /// Without the `bench` feature: nothing.
-    #[cfg(not(feature = "bench"))]
-    pub fn push(&self, _ms: f64) {}
 }

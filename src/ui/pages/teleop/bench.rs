@@ -31,23 +31,5 @@ pub(super) fn record_export(ms: f64) {
 
 #[cfg(feature = "bench")]
 fn push(name: &str, ms: f64) {
-    use wasm_bindgen::prelude::*;
-    use wasm_bindgen::JsCast;
-    const KEEP: u32 = 5000;
-    let Some(window) = web_sys::window() else {
-        return;
-    };
-    let key = JsValue::from_str(name);
-    let list = js_sys::Reflect::get(&window, &key)
-        .ok()
-        .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
-        .unwrap_or_else(|| {
-            let a = js_sys::Array::new();
-            let _ = js_sys::Reflect::set(&window, &key, &a);
-            a
-        });
-    list.push(&JsValue::from_f64(ms));
-    if list.length() > KEEP {
-        list.shift();
-    }
+    crate::ui::kit::bench_log::push_ms(name, ms, 5000);
 }

@@ -910,24 +910,7 @@ impl Inner {
 /// `window.__umeyamaFrameMs`; of it, the form's check (input to valid arguments) in
 /// `__umeyamaFormMs` and the canvas drawing in `__umeyamaDrawMs`.
 mod bench {
-    #[cfg(feature = "bench")]
     pub fn record_to(name: &str, ms: f64) {
-        use wasm_bindgen::{JsCast, JsValue};
-        let Some(window) = web_sys::window() else {
-            return;
-        };
-        let key = JsValue::from_str(name);
-        let list = js_sys::Reflect::get(&window, &key)
-            .ok()
-            .and_then(|v| v.dyn_into::<js_sys::Array>().ok())
-            .unwrap_or_else(|| {
-                let a = js_sys::Array::new();
-                let _ = js_sys::Reflect::set(&window, &key, &a);
-                a
-            });
-        list.push(&JsValue::from_f64(ms));
+        crate::ui::kit::bench_log::push_ms(name, ms, crate::ui::kit::bench_log::KEEP_ALL);
     }
-
-    #[cfg(not(feature = "bench"))]
-    pub fn record_to(_name: &str, _ms: f64) {}
 }
