@@ -131,9 +131,14 @@ pub fn after_paint(f: impl FnOnce() + 'static) -> Result<(), JsValue> {
     Ok(())
 }
 
+thread_local! {
+    /// The window's `performance`, looked up once: pages read the clock several times a
+    /// frame, and each lookup was two calls into JS.
+    static PERFORMANCE: Option<web_sys::Performance> =
+        web_sys::window().and_then(|w| w.performance());
+}
+
 /// `performance.now()` in milliseconds (0 where there is no clock).
 pub fn now_ms() -> f64 {
-    web_sys::window()
-        .and_then(|w| w.performance())
-        .map_or(0.0, |p| p.now())
+    PERFORMANCE.with(|p| p.as_ref().map_or(0.0, web_sys::Performance::now))
 }

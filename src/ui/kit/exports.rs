@@ -158,6 +158,8 @@ struct Lines {
     shown: Option<Shown>,
     /// The texts written (python, bsv, note), to skip unchanged writes.
     written: [String; 3],
+    /// Whether the Python line's copy button shows (`None`: not set yet).
+    python_copy_shown: Option<bool>,
 }
 
 /// The panel's elements and what it shows.
@@ -180,6 +182,7 @@ impl Exports {
                 file_note: Some(find(format!("[data-{prefix}=\"file-note\"]"))?),
                 shown: None,
                 written: Default::default(),
+                python_copy_shown: None,
             }]),
             status_line: find(format!("[data-testid=\"{prefix}-copy-status\"]"))?,
             status: Rc::new(RefCell::new(None)),
@@ -200,6 +203,7 @@ impl Exports {
                 file_note: None,
                 shown: None,
                 written: Default::default(),
+                python_copy_shown: None,
             });
         }
         Ok(Exports {
@@ -260,8 +264,11 @@ impl Exports {
 
     /// Clears the status line (the form changed).
     pub fn clear_status(&self) {
-        *self.status.borrow_mut() = None;
-        self.status_line.set_text_content(None);
+        // Called on every edit (a drag's every frame): the line is written only when it said
+        // something.
+        if self.status.borrow_mut().take().is_some() {
+            self.status_line.set_text_content(None);
+        }
     }
 
     /// A copy button (`data-copy`: `python`, `bsv`, or `<file>:python|bsv` in a panel of
@@ -371,12 +378,16 @@ impl Lines {
                 (python.clone().unwrap_or_default(), bsv.clone(), note, None)
             }
         };
-        if let Some(Ok(Some(copy))) = self
-            .python
-            .parent_element()
-            .map(|row| row.query_selector("[data-copy=\"python\"], [data-copy$=\":python\"]"))
-        {
-            show(&copy, !python.is_empty());
+        let copy_shown = !python.is_empty();
+        if self.python_copy_shown != Some(copy_shown) {
+            if let Some(Ok(Some(copy))) = self
+                .python
+                .parent_element()
+                .map(|row| row.query_selector("[data-copy=\"python\"], [data-copy$=\":python\"]"))
+            {
+                show(&copy, copy_shown);
+            }
+            self.python_copy_shown = Some(copy_shown);
         }
         if self.written[0] != python {
             self.python.set_text_content(Some(&python));

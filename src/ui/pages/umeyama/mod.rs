@@ -22,8 +22,8 @@
 //! Speed (a drag's or slider's frame, budget 4 ms): the form checks only the fields an edit
 //! changed ([`RecipeControls::check_only_edits`]); the touch handles, the points' pixel
 //! positions and the edited notice are written only when they change (the handles not at all
-//! during a drag of the view: they are placed when it ends); the step panel rewrites only the
-//! matrix cells whose number changed.
+//! during a drag of the view or a run of Shift + arrows: they are placed when it ends); the
+//! step panel rewrites only the matrix cells whose number changed; the labels are bitmaps.
 
 mod markup;
 mod steps;
@@ -164,6 +164,11 @@ struct Inner {
     handles_placed: RefCell<Option<Vec<HandleShape>>>,
     /// The text of `data-points-px` now.
     points_px: RefCell<String>,
+    /// The texts of `data-handle-t` and `data-handle-r` now.
+    handles_px: RefCell<[String; 2]>,
+    /// Shift + arrows are moving a point: the touch handles wait until the status line
+    /// settles ([`Inner::show_selection`]).
+    key_moving: Cell<bool>,
     /// Whether the edited notice shows now (`None`: not set yet).
     edited_shown: Cell<Option<bool>>,
     url: RefCell<Option<UrlWriter>>,
@@ -239,6 +244,8 @@ impl Page for UmeyamaPage {
                 readouts,
                 handles_placed: RefCell::new(None),
                 points_px: RefCell::new(String::new()),
+                handles_px: RefCell::new(Default::default()),
+                key_moving: Cell::new(false),
                 edited_shown: Cell::new(None),
                 url: RefCell::new(Some(url)),
                 scope: RefCell::new(scope),
@@ -631,7 +638,10 @@ impl Inner {
         };
         self.show_refusal(None);
         self.work_started.set(Some(now_ms()));
+        self.key_moving.set(true);
         self.drag_to(Grab::Point(i), key_step_target(from, direction));
+        // Also when nothing moved: the settle places the handles and ends the run.
+        self.selection_timer.schedule(SELECTION_SETTLE_MS);
     }
 
     // ---------- The selection's status line ----------
@@ -657,6 +667,13 @@ impl Inner {
         let Ok(scene) = self.scene.try_borrow() else {
             return;
         };
+        // A run of Shift + arrows has settled (or the selection changed): the touch handles
+        // go where the points are now.
+        if self.key_moving.replace(false) {
+            if let Ok(view) = self.view.try_borrow() {
+                self.place_handles(&view, &scene);
+            }
+        }
         let key = self.selection_key(&scene);
         if self.selection_said.replace(Some(key)) == Some(key) {
             return;
@@ -842,16 +859,9 @@ impl Inner {
         );
         bench::record_to("__umeyamaDrawMs", now_ms() - draw_started);
         // The touch handles matter when a touch starts: not during a drag (the pointer is
-        // captured); they are placed when it ends.
-        if self.dragging.get().is_none() {
-            let shapes = view.handles(&scene);
-            let mut placed = self.handles_placed.borrow_mut();
-            if placed.as_ref() != Some(&shapes) {
-                if let Some(d) = self.drag.borrow().as_ref() {
-                    d.set_handles(&shapes);
-                }
-                *placed = Some(shapes);
-            }
+        // captured) or a run of Shift + arrows; they are placed when it ends.
+        if self.dragging.get().is_none() && !self.key_moving.get() {
+            self.place_handles(&view, &scene);
         }
         // Where the points and handles are, for tests and assistive tools (CSS px).
         let top = &view.canvas.top().canvas;
@@ -868,20 +878,42 @@ impl Inner {
         }
         drop(shown_px);
         let truth = scene.truth();
-        for (name, p) in [
+        let handles = [
             ("data-handle-t", truth.t),
             (
                 "data-handle-r",
                 crate::view::umeyama_2d::rotation_handle(&truth),
             ),
-        ] {
+        ]
+        .map(|(name, p)| {
             let q = view.frame.px(p);
-            let _ = top.set_attribute(name, &format!("{:.1},{:.1}", q.x, q.y));
+            (name, format!("{:.1},{:.1}", q.x, q.y))
+        });
+        let mut shown_handles = self.handles_px.borrow_mut();
+        for ((name, text), shown) in handles.into_iter().zip(shown_handles.iter_mut()) {
+            if *shown != text {
+                let _ = top.set_attribute(name, &text);
+                *shown = text;
+            }
         }
+        drop(shown_handles);
         drop(view);
         self.panel.show(&scene, step);
         self.show_readouts(&scene);
         bench::record_to("__umeyamaFrameMs", now_ms() - started);
+    }
+
+    /// The touch overlay over the view's handles, where they are now (written only when
+    /// they moved).
+    fn place_handles(&self, view: &view::SceneView, scene: &Scene) {
+        let shapes = view.handles(scene);
+        let mut placed = self.handles_placed.borrow_mut();
+        if placed.as_ref() != Some(&shapes) {
+            if let Some(d) = self.drag.borrow().as_ref() {
+                d.set_handles(&shapes);
+            }
+            *placed = Some(shapes);
+        }
     }
 
     fn show_readouts(&self, scene: &Scene) {

@@ -6,14 +6,16 @@
 //! scale circles, the translation arrow), redrawn whole on every change. The marks of one
 //! kind and colour go in one path (one stroke or fill for all the residuals, all the points),
 //! and the labels are small images drawn once per font (canvas text makes Chromium bring the
-//! page's style up to date first, after the form's and the slider's changes): a drag's frame
-//! makes a few dozen canvas calls and draws no text.
+//! page's style up to date first, after the form's and the slider's changes), drawn from
+//! `ImageBitmap`s once made: a drag's frame makes a few dozen canvas calls and draws no text.
 
 use std::cell::{Cell, RefCell};
+use std::rc::Rc;
 
 use glam::DVec2;
+use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
-use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement};
+use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement, ImageBitmap};
 
 use crate::ui::kit::canvas::{dash, ring, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
@@ -72,8 +74,13 @@ struct Label {
 }
 
 /// A label's image: its canvas, CSS size, and where its text's origin lies in it.
+///
+/// Once the browser has made it, the image is drawn from an `ImageBitmap` of the canvas: a
+/// canvas drawn into another one is copied ("snapshot") on every draw, now and then for
+/// milliseconds, which a bitmap never needs.
 struct LabelImage {
     canvas: HtmlCanvasElement,
+    bitmap: Rc<RefCell<Option<ImageBitmap>>>,
     w: f64,
     h: f64,
     origin: DVec2,
@@ -100,7 +107,22 @@ impl LabelImage {
         ctx.set_font(font);
         ctx.set_fill_style_str(fill);
         ctx.fill_text(text, left, ascent).ok()?;
+        let bitmap = Rc::new(RefCell::new(None));
+        if let Ok(promise) =
+            web_sys::window()?.create_image_bitmap_with_html_canvas_element(&canvas)
+        {
+            let slot = Rc::downgrade(&bitmap);
+            let made = Closure::once_into_js(move |made: JsValue| {
+                if let (Some(slot), Ok(made)) = (slot.upgrade(), made.dyn_into::<ImageBitmap>()) {
+                    *slot.borrow_mut() = Some(made);
+                }
+            });
+            // A refusal leaves the canvas drawn, as before.
+            let refused = Closure::once_into_js(|_: JsValue| {});
+            crate::ui::dom::then(&promise, &made, &refused);
+        }
         Some(LabelImage {
+            bitmap,
             w: f64::from(canvas.width()) / dpr,
             h: f64::from(canvas.height()) / dpr,
             origin: DVec2::new(left, ascent),
@@ -394,13 +416,19 @@ impl SceneView {
             Some(image) => {
                 let snap = |v: f64| (v * dpr).round() / dpr;
                 let corner = at - image.origin;
-                let _ = c.draw_image_with_html_canvas_element_and_dw_and_dh(
-                    &image.canvas,
-                    snap(corner.x),
-                    snap(corner.y),
-                    image.w,
-                    image.h,
-                );
+                let (x, y) = (snap(corner.x), snap(corner.y));
+                let _ = match image.bitmap.borrow().as_ref() {
+                    Some(bitmap) => {
+                        c.draw_image_with_image_bitmap_and_dw_and_dh(bitmap, x, y, image.w, image.h)
+                    }
+                    None => c.draw_image_with_html_canvas_element_and_dw_and_dh(
+                        &image.canvas,
+                        x,
+                        y,
+                        image.w,
+                        image.h,
+                    ),
+                };
             }
             None => {
                 c.set_font(&labels.font);
