@@ -2,6 +2,8 @@
 # shortcut overlay, the not-found page and the crash banner.
 
 app-name = BSV Playground
+# The brand on phone-width screens (the full name is still read out).
+app-name-short = BSV
 app-subtitle = Robotics drills that run in your browser
 
 skip-to-content = Skip to content

@@ -2,6 +2,8 @@
 # `?` のショートカット一覧、ページが見つからないときの表示、エラー時のバナー。
 
 app-name = BSV Playground
+# スマートフォン幅の画面でのブランド表示（読み上げは正式名のまま）。
+app-name-short = BSV
 app-subtitle = ブラウザで動くロボット工学ドリル
 
 skip-to-content = 本文へ移動

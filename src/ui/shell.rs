@@ -142,9 +142,15 @@ fn build_header() -> Result<Element, JsValue> {
     header.set_attribute("data-testid", "site-header")?;
 
     let brand = dom::el_class("div", "brand")?;
-    let name = dom::el_i18n("a", "brand-name", "app-name")?;
+    // The full name, and a short one that phones show instead (screen readers always hear
+    // the full name: the short one is aria-hidden, the full one only visually hidden there).
+    let name = dom::el_class("a", "brand-name")?;
     name.set_attribute("href", "#/")?;
     name.set_attribute("data-testid", "brand")?;
+    dom::append(&name, &dom::el_i18n("span", "brand-full", "app-name")?)?;
+    let short = dom::el_i18n("span", "brand-short", "app-name-short")?;
+    short.set_attribute("aria-hidden", "true")?;
+    dom::append(&name, &short)?;
     dom::append(&brand, &name)?;
     let subtitle = dom::el_i18n("span", "brand-subtitle", "app-subtitle")?;
     subtitle.set_attribute("data-testid", "brand-subtitle")?;

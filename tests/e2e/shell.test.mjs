@@ -408,6 +408,34 @@ test('at phone width every tap target is at least 44 px and the header is compac
   }
 });
 
+test('at phone widths the brand shows whole beside the tools, in both languages, and keeps its full name for screen readers', async () => {
+  for (const width of [390, 360, 320]) {
+    const { page, errors, close } = await openApp(server.url, '#/ik-2r', { viewport: { width, height: 740 } });
+    try {
+      for (const lang of ['en', 'ja']) {
+        const brand = await page.locator('.brand-short').boundingBox();
+        const tools = await page.locator('[data-testid="lesson-add"]').boundingBox();
+        assert.ok(brand && brand.x >= 0 && brand.x + brand.width <= tools.x, `${width}px ${lang}: the brand ${JSON.stringify(brand)} ends before the tools ${JSON.stringify(tools)}`);
+        const tail = await page.locator('[data-testid="help-button"]').boundingBox();
+        assert.ok(tail.x + tail.width <= width, `${width}px ${lang}: the tools end on screen`);
+        // The accessible names are the full ones.
+        const names = await page.evaluate(() => ({
+          brand: document.querySelector('[data-testid="brand"] .brand-full').textContent,
+          add: document.querySelector('[data-testid="lesson-add"] .tool-full').textContent,
+          hidden: [...document.querySelectorAll('.brand-short, .tool-short')].every((e) => e.getAttribute('aria-hidden') === 'true'),
+        }));
+        assert.equal(names.brand, 'BSV Playground');
+        assert.ok(names.add.length > 3 && names.hidden, `${width}px ${lang}: ${JSON.stringify(names)}`);
+        if (lang === 'en') await page.click('[data-testid="lang-switch"]');
+      }
+      await page.screenshot({ path: join(OUT, `ik2r-header-${width}-ja.png`), fullPage: false });
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
 test('the drills menu groups the drill pages, closes on Escape, outside and navigation, and marks its button on a drill page', async () => {
   for (const viewport of [{ width: 1920, height: 1080 }, { width: 390, height: 844 }]) {
     const { page, errors, close } = await openApp(server.url, '#/', { viewport });
