@@ -213,6 +213,8 @@ impl<S: SignalPage> Page for Signal<S> {
             spec.own_keys,
             S::PARSE,
         )?;
+        // A slider's or a handle's frame checks only the field it changed.
+        controls.check_only_edits();
         let stage: Element = dom::find(&root, &format!("[data-{p}=\"stage\"]"), p)?;
         let readouts = Readouts::find(&root)?;
         let parts = S::prepare(&ctx, &root, &controls, &stage)?;
