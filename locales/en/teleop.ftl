@@ -5,6 +5,7 @@ teleop-title = Robot Pilot practice
 teleop-lede = Drive a simulated three-joint arm with a gripper with the keys and gamepad mapping of Isaac Lab's teleop devices, through the Academy's five modules: preflight, basic control, ten recorded demonstrations, failure review and repeatability. Every attempt is kept, labelled and replayable; the session's evidence file is yours to download.
 teleop-disclaimer = A practice simulator for learning, running only in your browser: not a safety-rated controller, not connected to any robot, and not NVIDIA software (no Isaac code is used or redistributed).
 teleop-restored = Your session was restored from this browser. An episode cut off by the reload is kept and marked interrupted.
+teleop-store-unreadable = The session stored in this browser could not be checked again (an episode no longer replays in this version), so a new session was started for the same pilot. The stored one is kept in this browser's storage under bsv.teleop.session.unreadable.
 teleop-modules-label = Session modules
 teleop-module-preflight = Preflight
 teleop-module-basic-control = Basic control

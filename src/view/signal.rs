@@ -65,6 +65,16 @@ pub fn snap(value: f64, step: f64) -> String {
     }
 }
 
+/// The axis range to show while a slider is held: `shown` as long as it holds `fitted`, else
+/// grown to hold both (never shrunk: the axes stay put while the curve moves inside them and
+/// are refitted when the slider is let go).
+pub fn held_range(shown: (f64, f64), fitted: (f64, f64)) -> (f64, f64) {
+    if !(shown.0.is_finite() && shown.1.is_finite() && shown.0 < shown.1) {
+        return fitted;
+    }
+    (shown.0.min(fitted.0), shown.1.max(fitted.1))
+}
+
 /// `range` widened to multiples of a 1-2-5 step (about 8 intervals), so that small changes of
 /// the data often keep the same axes (and the plot redraws only its series).
 pub fn nice_range(range: (f64, f64)) -> (f64, f64) {
@@ -219,6 +229,16 @@ mod tests {
             .iter()
             .map(|(k, v)| (k.to_string(), v.to_string()))
             .collect()
+    }
+
+    #[test]
+    fn a_held_range_grows_and_never_shrinks() {
+        assert_eq!(held_range((0.0, 2.0), (0.0, 1.0)), (0.0, 2.0));
+        assert_eq!(held_range((0.0, 2.0), (-0.5, 3.0)), (-0.5, 3.0));
+        assert_eq!(held_range((0.0, 2.0), (1.0, 2.5)), (0.0, 2.5));
+        // Nothing shown yet (or nothing usable): the fitted range.
+        assert_eq!(held_range((f64::NAN, 1.0), (0.0, 1.0)), (0.0, 1.0));
+        assert_eq!(held_range((1.0, 1.0), (0.0, 3.0)), (0.0, 3.0));
     }
 
     #[test]

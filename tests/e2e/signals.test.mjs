@@ -115,6 +115,36 @@ for (const [id, file, defaults, search, args] of DOWNLOADS) {
   });
 }
 
+test('cubic-path: while a slider is held the axes only grow (the curve moves inside them); let go, they fit the data again', async () => {
+  const { page, errors, close } = await open('#/cubic-path');
+  try {
+    const canvas = page.locator('[data-testid="cubic-path-canvas"]');
+    const endY = () => canvas.evaluate((c) => Number(c.dataset.endY));
+    const slider = page.locator('[data-slider="q1"]');
+    const box = await slider.boundingBox();
+    // q1 runs from -3.2 to 3.2 along the slider: press at 3.0, move to 0.5 and hold.
+    const at = (q) => box.x + 8 + ((q + 3.2) / 6.4) * (box.width - 16);
+    await page.mouse.move(at(3.0), box.y + box.height / 2);
+    await page.mouse.down();
+    for (let k = 1; k <= 10; k++) await page.mouse.move(at(3.0 - 0.25 * k), box.y + box.height / 2);
+    const q1 = Number(await page.locator('[data-field="q1"]').inputValue());
+    assert.ok(Math.abs(q1 - 0.5) < 0.1, `q1 ${q1}`);
+    const held = await endY();
+    await page.mouse.up();
+    await page.waitForFunction((y) => Number(document.querySelector('[data-testid="cubic-path-canvas"]').dataset.endY) < y - 20, held, { timeout: 3000 });
+    // Fitted again, the end point (q1, T) sits near the top of the position panel; held, it
+    // sat low in the range that still held q1 = 3.
+    const fitted = await endY();
+    assert.ok(fitted < held - 20, `held ${held} px, fitted ${fitted} px`);
+    // The readouts are the CSV's for the value let go at.
+    const { rows } = run('cubic_path.csv', ['cubic-path', '0.0', String(q1), '1.0', '0.02']);
+    assert.equal((await readouts(page)).rows, rows.length);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; divergence warns', async () => {
   const { page, errors, close } = await open('#/pid-step?steps=300');
   try {

@@ -626,6 +626,46 @@ test('ten stored 60 s episodes and one cut off load in slices: no task of 100 ms
   }
 });
 
+test('a stored session that no longer replays (loaded in slices): a new session for the same pilot, said so, the stored text kept aside', async () => {
+  const { page, context, errors, close } = await openCounted();
+  try {
+    await preflightThenRecord(page);
+    await recordEpisode(page, 'w', 200);
+    const s = JSON.parse(sixtySecondSession(await page.evaluate(() => localStorage.getItem('bsv.teleop.session')), 10));
+    s.pilot_id = 'ana-7';
+    // The last episode's start is not the configuration's any more: it does not replay.
+    assert.ok(Array.isArray(s.episodes[9].episode.start.q), JSON.stringify(Object.keys(s.episodes[9].episode.start)));
+    s.episodes[9].episode.start.q[0] += 0.25;
+    const text = JSON.stringify(s);
+    await context.addInitScript((t) => {
+      if (sessionStorage.getItem('bad-load') === null) {
+        sessionStorage.setItem('bad-load', '1');
+        localStorage.setItem('bsv.teleop.session', t);
+      }
+    }, text);
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    const notice = page.locator('[data-tele="restored"]');
+    await notice.waitFor({ state: 'visible', timeout: 20000 });
+    assert.match(await notice.innerText(), /could not be checked again[\s\S]*bsv\.teleop\.session\.unreadable/);
+    assert.equal(await page.locator('.tele [inert]').count(), 0, 'the page takes input again');
+    assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 0);
+    // The same pilot in the settings and in the new session; the stored text kept as it was.
+    assert.equal(await page.locator('[data-field="pilot"]').inputValue(), 'ana-7');
+    assert.equal(await page.evaluate(() => localStorage.getItem('bsv.teleop.session.unreadable')), text);
+    await page.evaluate(() => window.dispatchEvent(new Event('pagehide')));
+    const saved = JSON.parse(await page.evaluate(() => localStorage.getItem('bsv.teleop.session')));
+    assert.equal(saved.pilot_id, 'ana-7');
+    assert.equal(saved.episodes.length, 0);
+    // Japanese says it too.
+    await page.click('[data-testid="lang-switch"]');
+    assert.match(await notice.innerText(), /再確認できませんでした/);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('a second session after an exported first: the comparison keeps the first, the files are the second\'s, a reload keeps both', async () => {
   const { page, errors, close } = await open();
   const dir = mkdtempSync(join(tmpdir(), 'bsv-teleop-second-'));

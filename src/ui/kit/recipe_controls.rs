@@ -78,6 +78,9 @@ pub struct RecipeControls<T> {
     clean: RefCell<Option<Vec<Option<String>>>>,
     /// [`RecipeControls::check_only_edits`] was called.
     only_edits: Cell<bool>,
+    /// A slider is being moved: its `input` came, its `change` (released, or a key's step
+    /// done) not yet.
+    sliding: Cell<bool>,
 }
 
 /// The texts of a valid set as the last valid arguments keep them: trimmed, `None` where
@@ -173,6 +176,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
             shown: RefCell::new((Vec::new(), Vec::new())),
             clean: RefCell::new(None),
             only_edits: Cell::new(false),
+            sliding: Cell::new(false),
         };
         controls.check(None);
         controls.show_commands();
@@ -238,15 +242,31 @@ impl<T: Clone + 'static> RecipeControls<T> {
         let target = event.target()?.dyn_into::<Element>().ok()?;
         let from_slider = target.get_attribute("data-slider");
         if let Some(name) = &from_slider {
+            self.sliding.set(true);
             let value = target.dyn_ref::<HtmlInputElement>()?.value();
             return self.set_text(name, &value, true);
         }
         self.form.borrow().note_edit(&target);
+        self.sliding.set(false);
         self.check_changed(None)
+    }
+
+    /// Whether a slider is being moved (its `change` has not come yet): a live page keeps
+    /// its axes steady meanwhile and refits them when [`RecipeControls::end_slide`] says the
+    /// slider was let go.
+    pub fn sliding(&self) -> bool {
+        self.sliding.get()
+    }
+
+    /// A slider's `change` (let go, or a key's step done): whether one was being moved.
+    pub fn end_slide(&self) -> bool {
+        self.sliding.replace(false)
     }
 
     /// Sets field `name` to `text` (a drag, a key, a slider) and checks the form.
     pub fn set_text(&self, name: &str, text: &str, from_slider: bool) -> Option<T> {
+        // Any other edit ends a slide whose `change` never came.
+        self.sliding.set(from_slider);
         let slider = if from_slider {
             self.form.borrow().index_of(name)
         } else {
@@ -310,6 +330,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
 
     /// Back to the recipe's defaults.
     pub fn reset(&self) -> Option<T> {
+        self.sliding.set(false);
         self.form.borrow().reset();
         self.notice.set(Vec::new());
         self.check_changed(None)

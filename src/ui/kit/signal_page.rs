@@ -61,6 +61,32 @@ pub struct SignalSpec {
     pub keys: &'static [Shortcut],
 }
 
+/// What a signal page's axes do on a redraw.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Fit {
+    /// Keep their ranges (a drag of a plot handle: the point stays under the pointer).
+    Keep,
+    /// Grow to hold the data, never shrink (a slider being moved:
+    /// [`crate::view::signal::held_range`]); refitted when it is let go.
+    Hold,
+    /// Fit the data.
+    Refit,
+}
+
+impl Fit {
+    /// For a change of the arguments: `Keep` while a plot handle is dragged, `Hold` while a
+    /// slider is moved, else `Refit`.
+    pub fn for_change<T: Clone + 'static>(dragging: bool, controls: &RecipeControls<T>) -> Fit {
+        if dragging {
+            Fit::Keep
+        } else if controls.sliding() {
+            Fit::Hold
+        } else {
+            Fit::Refit
+        }
+    }
+}
+
 /// The parts every signal page has once it is mounted.
 pub struct Shell<T> {
     pub root: Element,
@@ -130,6 +156,11 @@ pub trait SignalPage: Sized + 'static {
     fn changed(&self, params: Self::Params);
     /// Everything again (mount, size, language, mode).
     fn redraw_all(&self);
+    /// A slider was let go (its `change`): the axes held while it moved are refitted. By
+    /// default everything is drawn again.
+    fn slider_released(&self) {
+        self.redraw_all();
+    }
     /// Saves the plot as [`SignalSpec::png`].
     fn png(&self);
     /// The URL pairs (the arguments that differ from the defaults, by default).
@@ -239,6 +270,15 @@ impl<S: SignalPage> Page for Signal<S> {
                 .controls
                 .attach(&mut scope, &me, controls_of::<S>, timed_change::<S>, S::png)?;
             scope.observe_resize(&[&shell.stage], &me, S::redraw_all)?;
+            for slider in dom::matching(&shell.root, "[data-slider]")? {
+                scope.listen_for(&slider, "change", &me, |p: &S, _| {
+                    if p.shell().controls.end_slide() {
+                        let t0 = now_ms();
+                        p.slider_released();
+                        record_frame_ms(now_ms() - t0);
+                    }
+                })?;
+            }
         }
         page.install(&me)?;
         let t0 = now_ms();

@@ -22,7 +22,7 @@ use crate::recipes::cubic_path::{
 };
 use crate::ui::ctx;
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{Shell, Signal, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{Fit, Shell, Signal, SignalPage, SignalSpec};
 use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::view::cubic_path::{readouts as numbers, Peak};
 use crate::view::signal::{sig, snap, Slider};
@@ -180,7 +180,7 @@ impl SignalPage for CubicPage {
                     let mut all = p.overlays.get();
                     all[k] = on;
                     p.overlays.set(all);
-                    p.redraw(true, false);
+                    p.redraw(Fit::Refit, false);
                     p.shell.url.schedule();
                 })
             })?;
@@ -205,7 +205,8 @@ impl SignalPage for CubicPage {
         };
         *self.path.borrow_mut() = (params, path);
         let dragging = self.plots.borrow().dragging();
-        let peak = self.redraw(!dragging, false).map_or(0.0, |p| p.value);
+        let fit = Fit::for_change(dragging, &self.shell.controls);
+        let peak = self.redraw(fit, false).map_or(0.0, |p| p.value);
         self.shell.readouts.announce(&ctx::t_strings(
             "cubic-live",
             &[
@@ -218,7 +219,11 @@ impl SignalPage for CubicPage {
     }
 
     fn redraw_all(&self) {
-        self.redraw(true, true);
+        self.redraw(Fit::Refit, true);
+    }
+
+    fn slider_released(&self) {
+        self.redraw(Fit::Refit, false);
     }
 
     fn png(&self) {
@@ -247,9 +252,10 @@ impl SignalPage for CubicPage {
 }
 
 impl CubicPage {
-    /// Readouts and plots; `refit` rescales the axes to the data (not while dragging),
-    /// `resized` refits the canvases (size, language, mode). The peak velocity.
-    fn redraw(&self, refit: bool, resized: bool) -> Option<Peak> {
+    /// Readouts and plots; `fit` says what the axes do (kept while a handle is dragged, held
+    /// while a slider moves), `resized` refits the canvases (size, language, mode). The peak
+    /// velocity.
+    fn redraw(&self, fit: Fit, resized: bool) -> Option<Peak> {
         let (params, path) = &*self.path.borrow();
         let r = numbers(params, path);
         if let Some(v) = r.peak_velocity {
@@ -265,10 +271,10 @@ impl CubicPage {
             .show_numbers(&[("a0", c.a0), ("a1", c.a1), ("a2", c.a2), ("a3", c.a3)]);
         let rows = r.rows.to_string();
         self.shell.readouts.set_with_value("rows", &rows, &rows);
-        let sample =
-            self.plots
-                .borrow_mut()
-                .show(params, path, self.overlays.get(), refit, resized);
+        let sample = self
+            .plots
+            .borrow_mut()
+            .show(params, path, self.overlays.get(), fit, resized);
         self.show_cursor_readouts(sample);
         r.peak_velocity
     }

@@ -17,10 +17,10 @@ use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
-use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, SignalPage, SignalPlot};
+use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, Fit, SignalPage, SignalPlot};
 use crate::view::cubic_path::{quintic, ranges, time_range, trapezoid};
 use crate::view::palette;
-use crate::view::signal::{nice_range, snap};
+use crate::view::signal::{held_range, nice_range, snap};
 
 /// Colours: the cubic, the quintic, the trapezoid, the cursor.
 /// The three curves meet at both ends: Okabe–Ito blue, reddish purple and bluish green stay
@@ -84,7 +84,7 @@ impl Plots {
             }
             DragEvent::End { .. } => {
                 page.plots.borrow_mut().sp.dragging = false;
-                page.redraw(true, false);
+                page.redraw(Fit::Refit, false);
                 page.shell.url.write_now();
             }
             DragEvent::Hover(at) | DragEvent::Tap { at } => {
@@ -105,27 +105,37 @@ impl Plots {
         self.sp.plot.to_px(0, p.duration_s, p.q1)
     }
 
-    /// Shows `path` (and the overlays that are on) and the cursor; `refit` rescales the
-    /// axes, `resized` refits the canvases. The sample under the cursor.
+    /// Shows `path` (and the overlays that are on) and the cursor; `fit` says what the axes
+    /// do, `resized` refits the canvases. The sample under the cursor.
     pub fn show(
         &mut self,
         p: &CubicParams,
         path: &CubicPath,
         overlays: [bool; 2],
-        refit: bool,
+        fit: Fit,
         resized: bool,
     ) -> Option<CubicSample> {
         let ink = Ink::current();
-        if refit || self.shown != Some((*p, overlays)) {
+        if fit != Fit::Keep || self.shown != Some((*p, overlays)) {
             let quint = overlays[0].then(|| quintic(p, 200));
             let trap = overlays[1].then(|| trapezoid(p, 300)).flatten();
             let on = [quint.is_some(), trap.is_some()];
             let extra: Vec<Vec<CubicSample>> = [quint, trap].into_iter().flatten().collect();
             let mut all: Vec<&[CubicSample]> = vec![&path.samples];
             all.extend(extra.iter().map(Vec::as_slice));
-            if refit {
-                self.x_range = time_range(p);
-                self.y_ranges = ranges(&all).map(nice_range);
+            match fit {
+                Fit::Keep => {}
+                Fit::Hold => {
+                    self.x_range = held_range(self.x_range, time_range(p));
+                    let fitted = ranges(&all).map(nice_range);
+                    for (y, f) in self.y_ranges.iter_mut().zip(fitted) {
+                        *y = held_range(*y, f);
+                    }
+                }
+                Fit::Refit => {
+                    self.x_range = time_range(p);
+                    self.y_ranges = ranges(&all).map(nice_range);
+                }
             }
             self.set_spec(on);
             let series = extra

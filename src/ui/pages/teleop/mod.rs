@@ -66,6 +66,9 @@ pub const PAGE: PageDef = PageDef::of::<TeleopPage>("teleop", "teleop-nav", "tel
 const STORE_KEY: &str = "bsv.teleop.session";
 /// localStorage key of the first session (for the repeatability comparison).
 const FIRST_KEY: &str = "bsv.teleop.first";
+/// Where a stored session that no longer simulates is kept (the page then starts a new one,
+/// and saving it would otherwise overwrite the pilot's only copy).
+const UNREADABLE_KEY: &str = "bsv.teleop.session.unreadable";
 /// Save the session in progress at least this often while recording, ms.
 const SAVE_EVERY_MS: f64 = 2000.0;
 /// Longest slice of work simulating stored sessions again, ms (then the tab paints and
@@ -167,10 +170,26 @@ impl Live {
     }
 }
 
+/// What became of the stored session on load.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Stored {
+    /// None was stored.
+    None,
+    /// It was simulated again and is shown.
+    Restored,
+    /// It did not simulate again (or could not be read): a new session was started and the
+    /// stored text kept under [`UNREADABLE_KEY`].
+    Unreadable,
+}
+
 /// The stored sessions (the one in progress, then the first) being simulated again, in
 /// slices of at most [`LOAD_SLICE_MS`]: ten minute-long episodes are 60,000 steps, several
 /// hundred ms in one task. Until they are done the page is inert and saves nothing.
 struct Loading {
+    /// The stored session's text, if any (kept aside if it does not simulate).
+    stored: Option<String>,
+    /// The stored session's pilot and device, if it could be read.
+    stored_pilot: Option<(String, InputDevice)>,
     session: Option<SessionLoader>,
     first: Option<SessionLoader>,
     /// The sessions simulated again (`None`: none stored, or one that does not simulate).
@@ -182,13 +201,20 @@ struct Loading {
 }
 
 impl Loading {
-    fn new(session: Option<SessionLoader>, first: Option<SessionLoader>) -> Loading {
+    fn new(stored: Option<String>, first: Option<SessionLoader>) -> Loading {
+        let session = stored.as_deref().and_then(SessionLoader::new);
+        let stored_pilot = session.as_ref().map(|l| {
+            let s = l.session();
+            (s.pilot_id.clone(), s.input_device)
+        });
         let steps_total = [&session, &first]
             .iter()
             .filter_map(|l| l.as_ref())
             .map(|l| l.progress().1)
             .sum();
         Loading {
+            stored,
+            stored_pilot,
             session,
             first,
             session_done: None,
@@ -222,6 +248,27 @@ impl Loading {
             if now_ms() >= until_ms {
                 return self.session.is_none() && self.first.is_none();
             }
+        }
+    }
+
+    /// Once done: the session simulated again, or else a new one for the stored pilot and
+    /// device (or the defaults); and whether a stored session did not simulate (its text is
+    /// then kept under [`UNREADABLE_KEY`]).
+    fn outcome(&mut self) -> (Session, Stored) {
+        if let Some(session) = self.session_done.take() {
+            return (session, Stored::Restored);
+        }
+        let (pilot, device) = self
+            .stored_pilot
+            .clone()
+            .unwrap_or_else(|| ("pilot".to_string(), InputDevice::Keyboard));
+        let fresh = Session::new(&pilot, device, &iso_now());
+        match &self.stored {
+            Some(text) => {
+                dom::storage_set(UNREADABLE_KEY, text);
+                (fresh, Stored::Unreadable)
+            }
+            None => (fresh, Stored::None),
         }
     }
 
@@ -327,7 +374,7 @@ impl Page for TeleopPage {
         // slices after the first paint (the page inert meanwhile, its session the stored
         // one's pilot, device and module without episodes).
         let mut loading = Loading::new(
-            dom::storage_get(STORE_KEY).and_then(|t| SessionLoader::new(&t)),
+            dom::storage_get(STORE_KEY),
             dom::storage_get(FIRST_KEY).and_then(|t| SessionLoader::new(&t)),
         );
         let interim = loading.session.as_ref().map(|l| {
@@ -338,15 +385,14 @@ impl Page for TeleopPage {
         let load_started_ms = now_ms();
         let loaded = loading.run_until(load_started_ms + LOAD_SLICE_MS);
         bench::record_load(now_ms() - load_started_ms);
-        let (session, first, restored, loading) = if loaded {
-            let restored = loading.session_done.is_some();
-            let session = loading.session_done.take();
-            (session, loading.first_done.take(), restored, None)
+        let (session, first, stored, loading) = if loaded {
+            let (session, stored) = loading.outcome();
+            (session, loading.first_done.take(), stored, None)
         } else {
-            (interim, None, false, Some(loading))
+            let session =
+                interim.unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
+            (session, None, Stored::None, Some(loading))
         };
-        let session =
-            session.unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
         let mut texts = SettingsTexts::defaults(session.input_device);
         texts.pilot = session.pilot_id.clone();
         for (k, v) in &ctx.query {
@@ -442,7 +488,7 @@ impl Page for TeleopPage {
             inner.set_busy(true);
             inner.schedule_load();
         }
-        inner.show_session(restored);
+        inner.show_session(stored);
         inner.write_url();
         Ok(TeleopPage(inner))
     }
@@ -1606,17 +1652,31 @@ impl Inner {
     // ---- Storage ----
 
     /// The session on screen: the restored notice and the label panel of its first unlabelled
-    /// episode if it was `restored`, its module, buttons and tables.
-    fn show_session(&self, restored: bool) {
-        if restored {
-            self.els
-                .restored
-                .set_text_content(Some(&ctx::t("teleop-restored")));
-            dom::show(&self.els.restored, true);
-            let unlabelled = self.session.borrow().unlabelled();
-            if let Some(n) = unlabelled {
-                self.open_label(n);
+    /// episode if it was restored (or the notice that the stored one did not load and where
+    /// it is kept), its module, buttons and tables.
+    fn show_session(&self, stored: Stored) {
+        match stored {
+            Stored::Restored => {
+                let _ = dom::set_i18n(&self.els.restored, "teleop-restored");
+                dom::show(&self.els.restored, true);
+                let unlabelled = self.session.borrow().unlabelled();
+                if let Some(n) = unlabelled {
+                    self.open_label(n);
+                }
             }
+            Stored::Unreadable => {
+                let _ = dom::set_i18n(&self.els.restored, "teleop-store-unreadable");
+                dom::show(&self.els.restored, true);
+            }
+            Stored::None => {}
+        }
+        // The settings show the session's pilot (a new session keeps the stored one's).
+        let pilot = self.session.borrow().pilot_id.clone();
+        let mut texts = self.settings.borrow().texts();
+        if texts.pilot != pilot {
+            texts.pilot = pilot;
+            self.settings.borrow().show(&texts);
+            self.settings_edited();
         }
         let module = self.session.borrow().module;
         self.enter_module(module);
@@ -1667,16 +1727,14 @@ impl Inner {
             self.schedule_load();
             return;
         }
-        let Some(l) = self.loading.borrow_mut().take() else {
+        let Some(mut l) = self.loading.borrow_mut().take() else {
             return;
         };
         self.set_busy(false);
-        let restored = l.session_done.is_some();
+        let (session, stored) = l.outcome();
         *self.first.borrow_mut() = l.first_done;
-        *self.session.borrow_mut() = l
-            .session_done
-            .unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
-        self.show_session(restored);
+        *self.session.borrow_mut() = session;
+        self.show_session(stored);
         self.request_frame();
     }
 

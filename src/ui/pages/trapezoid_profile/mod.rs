@@ -18,7 +18,7 @@ use web_sys::{Element, KeyboardEvent};
 
 use crate::recipes::trapezoid_profile::{params_from_args, TrapParams, TrapSample, INFO};
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{Shell, Signal, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{Fit, Shell, Signal, SignalPage, SignalSpec};
 use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
@@ -172,7 +172,7 @@ impl SignalPage for TrapPage {
             samples_into(&params, &mut profile.1);
         }
         let dragging = self.plots.borrow().dragging();
-        self.redraw(!dragging, false);
+        self.redraw(Fit::for_change(dragging, &self.shell.controls), false);
         let ph = phases(&params);
         let (total, peak) = (ph.t_total, ph.v_peak);
         self.shell.readouts.announce_settled(300.0, move || {
@@ -190,7 +190,11 @@ impl SignalPage for TrapPage {
 
     fn redraw_all(&self) {
         self.plots.borrow_mut().relocalize();
-        self.redraw(true, true);
+        self.redraw(Fit::Refit, true);
+    }
+
+    fn slider_released(&self) {
+        self.redraw(Fit::Refit, false);
     }
 
     fn png(&self) {
@@ -219,9 +223,9 @@ impl SignalPage for TrapPage {
 }
 
 impl TrapPage {
-    /// Readouts, the triangle note and the plots; `refit` rescales the axes, `resized` refits
-    /// the canvases (size, language, mode).
-    fn redraw(&self, refit: bool, resized: bool) {
+    /// Readouts, the triangle note and the plots; `fit` says what the axes do, `resized`
+    /// refits the canvases (size, language, mode).
+    fn redraw(&self, fit: Fit, resized: bool) {
         let (params, profile) = &*self.profile.borrow();
         let ph = phases(params);
         let ro = &self.shell.readouts;
@@ -245,7 +249,7 @@ impl TrapPage {
         let sample = self
             .plots
             .borrow_mut()
-            .show(params, profile, &ph, refit, resized);
+            .show(params, profile, &ph, fit, resized);
         self.show_cursor_readouts(sample);
     }
 

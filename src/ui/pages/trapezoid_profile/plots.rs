@@ -20,9 +20,9 @@ use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
-use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, SignalPage, SignalPlot};
+use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, Fit, SignalPage, SignalPlot};
 use crate::view::plot::auto_range;
-use crate::view::signal::{extents, nice_range, snap};
+use crate::view::signal::{extents, held_range, nice_range, snap};
 use crate::view::trapezoid_profile::{amax_from_corner, bands, phases, Phases};
 
 const C_LINE: (u8, u8, u8) = (26, 77, 143);
@@ -101,7 +101,7 @@ impl Plots {
             }
             DragEvent::End { .. } => {
                 page.plots.borrow_mut().sp.dragging = false;
-                page.redraw(true, false);
+                page.redraw(Fit::Refit, false);
                 page.shell.url.write_now();
             }
             DragEvent::Hover(at) | DragEvent::Tap { at } => {
@@ -148,24 +148,33 @@ impl Plots {
         ])
     }
 
-    /// Shows the `samples` and the cursor; `refit` rescales the axes, `resized` refits the
+    /// Shows the `samples` and the cursor; `fit` says what the axes do, `resized` refits the
     /// canvases. The sample under the cursor.
     pub fn show(
         &mut self,
         p: &TrapParams,
         samples: &[TrapSample],
         ph: &Phases,
-        refit: bool,
+        fit: Fit,
         resized: bool,
     ) -> Option<TrapSample> {
         let ink = Ink::current();
-        if refit {
-            self.x_range = nice_range((0.0, (ph.t_total * 1.1).max(1e-9)));
+        if fit != Fit::Keep {
+            let x_range = nice_range((0.0, (ph.t_total * 1.1).max(1e-9)));
             let [s, v, a] = extents(samples.iter().map(|s| [s.s, s.v, s.a]));
             let r = |(lo, hi): (f64, f64), with: f64| {
                 nice_range(auto_range([lo, hi, 0.0, with], 0.08).unwrap_or((-1.0, 1.0)))
             };
-            let y_ranges = [r(s, ph.distance), r(v, ph.vmax * 1.3), r(a, ph.amax)];
+            let mut y_ranges = [r(s, ph.distance), r(v, ph.vmax * 1.3), r(a, ph.amax)];
+            self.x_range = x_range;
+            if fit == Fit::Hold {
+                if let Some(spec) = self.sp.plot.spec() {
+                    self.x_range = held_range(spec.x.range, x_range);
+                    for (y, panel) in y_ranges.iter_mut().zip(&spec.panels) {
+                        *y = held_range(panel.y.range, *y);
+                    }
+                }
+            }
             let same = self.sp.plot.spec().is_some_and(|spec| {
                 spec.x.range == self.x_range && spec.panels.iter().map(|p| p.y.range).eq(y_ranges)
             });
