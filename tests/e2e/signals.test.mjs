@@ -121,6 +121,7 @@ test('cubic-path: while a slider is held the axes only grow (the curve moves ins
     const canvas = page.locator('[data-testid="cubic-path-canvas"]');
     const endY = () => canvas.evaluate((c) => Number(c.dataset.endY));
     const slider = page.locator('[data-slider="q1"]');
+    await slider.scrollIntoViewIfNeeded();
     const box = await slider.boundingBox();
     // q1 runs from -3.2 to 3.2 along the slider: press at 3.0, move to 0.5 and hold.
     const at = (q) => box.x + 8 + ((q + 3.2) / 6.4) * (box.width - 16);
