@@ -156,11 +156,9 @@ pub trait SignalPage: Sized + 'static {
     fn changed(&self, params: Self::Params);
     /// Everything again (mount, size, language, mode).
     fn redraw_all(&self);
-    /// A slider was let go (its `change`): the axes held while it moved are refitted. By
-    /// default everything is drawn again.
-    fn slider_released(&self) {
-        self.redraw_all();
-    }
+    /// A slider was let go (its `change`): a page that held its axes while it moved
+    /// ([`Fit::Hold`]) refits them here. By default nothing (the last change drew it all).
+    fn slider_released(&self) {}
     /// Saves the plot as [`SignalSpec::png`].
     fn png(&self);
     /// The URL pairs (the arguments that differ from the defaults, by default).
