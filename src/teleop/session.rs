@@ -182,23 +182,6 @@ impl StoredEpisode {
         }
         out
     }
-
-    /// The episode, simulated again from its start state (`None` if the configuration is
-    /// refused or the start state is not the configuration's).
-    pub fn episode(&self) -> Option<Episode> {
-        let commands = self.commands();
-        let mut sim = Sim::new(self.config.clone()).ok()?;
-        if *sim.start_state() != self.start {
-            return None;
-        }
-        let records = commands.iter().map(|c| sim.step(c)).collect();
-        Some(Episode {
-            config: self.config.clone(),
-            start: self.start.clone(),
-            commands,
-            records,
-        })
-    }
 }
 
 /// A stored session simulated again in slices of steps ([`SessionLoader::run`]), so that a

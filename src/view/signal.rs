@@ -75,6 +75,14 @@ pub fn held_range(shown: (f64, f64), fitted: (f64, f64)) -> (f64, f64) {
     (shown.0.min(fitted.0), shown.1.max(fitted.1))
 }
 
+/// [`held_range`] of each panel's range.
+pub fn held_ranges<const N: usize>(
+    shown: [(f64, f64); N],
+    fitted: [(f64, f64); N],
+) -> [(f64, f64); N] {
+    std::array::from_fn(|k| held_range(shown[k], fitted[k]))
+}
+
 /// `range` widened to multiples of a 1-2-5 step (about 8 intervals), so that small changes of
 /// the data often keep the same axes (and the plot redraws only its series).
 pub fn nice_range(range: (f64, f64)) -> (f64, f64) {
@@ -239,6 +247,10 @@ mod tests {
         // Nothing shown yet (or nothing usable): the fitted range.
         assert_eq!(held_range((f64::NAN, 1.0), (0.0, 1.0)), (0.0, 1.0));
         assert_eq!(held_range((1.0, 1.0), (0.0, 3.0)), (0.0, 3.0));
+        assert_eq!(
+            held_ranges([(0.0, 2.0), (-1.0, 1.0)], [(0.0, 1.0), (-2.0, 0.5)]),
+            [(0.0, 2.0), (-2.0, 1.0)]
+        );
     }
 
     #[test]

@@ -460,6 +460,17 @@ test('an idle page requests no frames; a key press moves the tip on the next fra
 
 /** The stored session with its episode replaced by `copies` episodes of 6,000 commands (60 s at
  * 100 Hz: the default time box ends each at its last step), in four runs of varied commands. */
+/** Puts `text` in the stored session before the app next loads, once (the page saves its own
+ *  session on pagehide, and later reloads load that). */
+function storeSessionOnNextLoad(context, text) {
+  return context.addInitScript((t) => {
+    if (sessionStorage.getItem('bsv-test-stored') === null) {
+      sessionStorage.setItem('bsv-test-stored', '1');
+      localStorage.setItem('bsv.teleop.session', t);
+    }
+  }, text);
+}
+
 function sixtySecondSession(stored, copies) {
   const s = JSON.parse(stored);
   const [entry] = s.episodes;
@@ -484,13 +495,7 @@ test('60 s episodes export in slices: progress shown, no task of 100 ms, bsv tel
     await preflightThenRecord(page);
     await recordEpisode(page, 'w', 200);
     const stored = await page.evaluate(() => localStorage.getItem('bsv.teleop.session'));
-    // Stored before the app loads again (the page saves its own session on pagehide), once.
-    await context.addInitScript((s) => {
-      if (sessionStorage.getItem('long-session') === null) {
-        sessionStorage.setItem('long-session', '1');
-        localStorage.setItem('bsv.teleop.session', s);
-      }
-    }, sixtySecondSession(stored, 4));
+    await storeSessionOnNextLoad(context, sixtySecondSession(stored, 4));
     await page.reload();
     await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
     await page.locator('[data-tele="restored"]').waitFor({ state: 'visible' });
@@ -587,13 +592,7 @@ test('ten stored 60 s episodes and one cut off load in slices: no task of 100 ms
     const s = JSON.parse(sixtySecondSession(await page.evaluate(() => localStorage.getItem('bsv.teleop.session')), 10));
     // An eleventh episode, 30 s in, under way when the tab reloaded.
     s.in_progress = { ...s.episodes[0].episode, runs: s.episodes[0].episode.runs.slice(0, 2) };
-    // Stored before the app loads again (the page saves its own session on pagehide).
-    await context.addInitScript((text) => {
-      if (sessionStorage.getItem('long-load') === null) {
-        sessionStorage.setItem('long-load', '1');
-        localStorage.setItem('bsv.teleop.session', text);
-      }
-    }, JSON.stringify(s));
+    await storeSessionOnNextLoad(context, JSON.stringify(s));
     // Loads the stored session up to three times (the machine running the tests may be busy),
     // stopping at one with no long task: each try's long tasks (ms) and wall time.
     const tries = [];
@@ -637,12 +636,7 @@ test('a stored session that no longer replays (loaded in slices): a new session 
     assert.ok(Array.isArray(s.episodes[9].episode.start.q), JSON.stringify(Object.keys(s.episodes[9].episode.start)));
     s.episodes[9].episode.start.q[0] += 0.25;
     const text = JSON.stringify(s);
-    await context.addInitScript((t) => {
-      if (sessionStorage.getItem('bad-load') === null) {
-        sessionStorage.setItem('bad-load', '1');
-        localStorage.setItem('bsv.teleop.session', t);
-      }
-    }, text);
+    await storeSessionOnNextLoad(context, text);
     await page.reload();
     await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
     const notice = page.locator('[data-tele="restored"]');

@@ -242,7 +242,6 @@ impl<T: Clone + 'static> RecipeControls<T> {
         let target = event.target()?.dyn_into::<Element>().ok()?;
         let from_slider = target.get_attribute("data-slider");
         if let Some(name) = &from_slider {
-            self.sliding.set(true);
             let value = target.dyn_ref::<HtmlInputElement>()?.value();
             return self.set_text(name, &value, true);
         }

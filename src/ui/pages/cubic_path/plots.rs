@@ -20,7 +20,7 @@ use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, Fit, SignalPage, SignalPlot};
 use crate::view::cubic_path::{quintic, ranges, time_range, trapezoid};
 use crate::view::palette;
-use crate::view::signal::{held_range, nice_range, snap};
+use crate::view::signal::{held_range, held_ranges, nice_range, snap};
 
 /// Colours: the cubic, the quintic, the trapezoid, the cursor.
 /// The three curves meet at both ends: Okabe–Ito blue, reddish purple and bluish green stay
@@ -127,10 +127,7 @@ impl Plots {
                 Fit::Keep => {}
                 Fit::Hold => {
                     self.x_range = held_range(self.x_range, time_range(p));
-                    let fitted = ranges(&all).map(nice_range);
-                    for (y, f) in self.y_ranges.iter_mut().zip(fitted) {
-                        *y = held_range(*y, f);
-                    }
+                    self.y_ranges = held_ranges(self.y_ranges, ranges(&all).map(nice_range));
                 }
                 Fit::Refit => {
                     self.x_range = time_range(p);

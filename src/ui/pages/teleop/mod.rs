@@ -170,6 +170,11 @@ impl Live {
     }
 }
 
+/// A new session with the default pilot id and the keyboard.
+fn new_session() -> Session {
+    Session::new("pilot", InputDevice::Keyboard, &iso_now())
+}
+
 /// What became of the stored session on load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Stored {
@@ -188,8 +193,9 @@ enum Stored {
 struct Loading {
     /// The stored session's text, if any (kept aside if it does not simulate).
     stored: Option<String>,
-    /// The stored session's pilot and device, if it could be read.
-    stored_pilot: Option<(String, InputDevice)>,
+    /// The stored session without its episodes (pilot, device, module), if it could be read:
+    /// the page's session while the episodes are simulated again.
+    interim: Option<Session>,
     session: Option<SessionLoader>,
     first: Option<SessionLoader>,
     /// The sessions simulated again (`None`: none stored, or one that does not simulate).
@@ -203,9 +209,10 @@ struct Loading {
 impl Loading {
     fn new(stored: Option<String>, first: Option<SessionLoader>) -> Loading {
         let session = stored.as_deref().and_then(SessionLoader::new);
-        let stored_pilot = session.as_ref().map(|l| {
-            let s = l.session();
-            (s.pilot_id.clone(), s.input_device)
+        let interim = session.as_ref().map(|l| {
+            let mut s = l.session().clone();
+            s.episodes.clear();
+            s
         });
         let steps_total = [&session, &first]
             .iter()
@@ -214,7 +221,7 @@ impl Loading {
             .sum();
         Loading {
             stored,
-            stored_pilot,
+            interim,
             session,
             first,
             session_done: None,
@@ -258,11 +265,10 @@ impl Loading {
         if let Some(session) = self.session_done.take() {
             return (session, Stored::Restored);
         }
-        let (pilot, device) = self
-            .stored_pilot
-            .clone()
-            .unwrap_or_else(|| ("pilot".to_string(), InputDevice::Keyboard));
-        let fresh = Session::new(&pilot, device, &iso_now());
+        let fresh = match &self.interim {
+            Some(s) => Session::new(&s.pilot_id, s.input_device, &iso_now()),
+            None => new_session(),
+        };
         match &self.stored {
             Some(text) => {
                 dom::storage_set(UNREADABLE_KEY, text);
@@ -377,11 +383,6 @@ impl Page for TeleopPage {
             dom::storage_get(STORE_KEY),
             dom::storage_get(FIRST_KEY).and_then(|t| SessionLoader::new(&t)),
         );
-        let interim = loading.session.as_ref().map(|l| {
-            let mut s = l.session().clone();
-            s.episodes.clear();
-            s
-        });
         let load_started_ms = now_ms();
         let loaded = loading.run_until(load_started_ms + LOAD_SLICE_MS);
         bench::record_load(now_ms() - load_started_ms);
@@ -389,8 +390,7 @@ impl Page for TeleopPage {
             let (session, stored) = loading.outcome();
             (session, loading.first_done.take(), stored, None)
         } else {
-            let session =
-                interim.unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
+            let session = loading.interim.clone().unwrap_or_else(new_session);
             (session, None, Stored::None, Some(loading))
         };
         let mut texts = SettingsTexts::defaults(session.input_device);
@@ -1669,14 +1669,6 @@ impl Inner {
                 dom::show(&self.els.restored, true);
             }
             Stored::None => {}
-        }
-        // The settings show the session's pilot (a new session keeps the stored one's).
-        let pilot = self.session.borrow().pilot_id.clone();
-        let mut texts = self.settings.borrow().texts();
-        if texts.pilot != pilot {
-            texts.pilot = pilot;
-            self.settings.borrow().show(&texts);
-            self.settings_edited();
         }
         let module = self.session.borrow().module;
         self.enter_module(module);

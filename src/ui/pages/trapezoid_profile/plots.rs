@@ -22,7 +22,7 @@ use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, Fit, SignalPage, SignalPlot};
 use crate::view::plot::auto_range;
-use crate::view::signal::{extents, held_range, nice_range, snap};
+use crate::view::signal::{extents, held_range, held_ranges, nice_range, snap};
 use crate::view::trapezoid_profile::{amax_from_corner, bands, phases, Phases};
 
 const C_LINE: (u8, u8, u8) = (26, 77, 143);
@@ -165,16 +165,14 @@ impl Plots {
             let r = |(lo, hi): (f64, f64), with: f64| {
                 nice_range(auto_range([lo, hi, 0.0, with], 0.08).unwrap_or((-1.0, 1.0)))
             };
-            let mut y_ranges = [r(s, ph.distance), r(v, ph.vmax * 1.3), r(a, ph.amax)];
-            self.x_range = x_range;
-            if fit == Fit::Hold {
-                if let Some(spec) = self.sp.plot.spec() {
-                    self.x_range = held_range(spec.x.range, x_range);
-                    for (y, panel) in y_ranges.iter_mut().zip(&spec.panels) {
-                        *y = held_range(panel.y.range, *y);
-                    }
-                }
-            }
+            let fitted = [r(s, ph.distance), r(v, ph.vmax * 1.3), r(a, ph.amax)];
+            let y_ranges = if fit == Fit::Hold {
+                self.x_range = held_range(self.x_range, x_range);
+                held_ranges(self.y_ranges, fitted)
+            } else {
+                self.x_range = x_range;
+                fitted
+            };
             let same = self.sp.plot.spec().is_some_and(|spec| {
                 spec.x.range == self.x_range && spec.panels.iter().map(|p| p.y.range).eq(y_ranges)
             });

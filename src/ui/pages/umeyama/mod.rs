@@ -72,6 +72,9 @@ const CLICK_AFTER_DRAG_MS: f64 = 400.0;
 /// held down, a typed `x`) before it says where the selected point is, ms: a screen reader
 /// hears where it stopped, not every step.
 const SELECTION_SETTLE_MS: i32 = 400;
+/// Where the points, the translation handle and the rotation handle are (CSS px, for tests
+/// and assistive tools), attributes of the top canvas written only when they change.
+const PX_ATTRS: [&str; 3] = ["data-points-px", "data-handle-t", "data-handle-r"];
 /// The URL key of the step shown (the rest are the CLI's argument names).
 const STEP_KEY: &str = "step";
 const SLIDERS: [Slider; 6] = [
@@ -162,10 +165,8 @@ struct Inner {
     readouts: Readouts,
     /// The touch handles placed last (`None`: place them at the next redraw).
     handles_placed: RefCell<Option<Vec<HandleShape>>>,
-    /// The text of `data-points-px` now.
-    points_px: RefCell<String>,
-    /// The texts of `data-handle-t` and `data-handle-r` now.
-    handles_px: RefCell<[String; 2]>,
+    /// The texts of the [`PX_ATTRS`] now.
+    px_written: RefCell<[String; 3]>,
     /// Shift + arrows are moving a point: the touch handles wait until the status line
     /// settles ([`Inner::show_selection`]).
     key_moving: Cell<bool>,
@@ -243,8 +244,7 @@ impl Page for UmeyamaPage {
                 points_button,
                 readouts,
                 handles_placed: RefCell::new(None),
-                points_px: RefCell::new(String::new()),
-                handles_px: RefCell::new(Default::default()),
+                px_written: RefCell::new(Default::default()),
                 key_moving: Cell::new(false),
                 edited_shown: Cell::new(None),
                 url: RefCell::new(Some(url)),
@@ -865,38 +865,29 @@ impl Inner {
         }
         // Where the points and handles are, for tests and assistive tools (CSS px).
         let top = &view.canvas.top().canvas;
-        let mut px = String::with_capacity(12 * scene.x.len());
-        for (i, p) in scene.x.iter().enumerate() {
-            let q = view.frame.px(*p);
-            let sep = if i == 0 { "" } else { ";" };
-            px.push_str(&format!("{sep}{:.1},{:.1}", q.x, q.y));
-        }
-        let mut shown_px = self.points_px.borrow_mut();
-        if *shown_px != px {
-            let _ = top.set_attribute("data-points-px", &px);
-            *shown_px = px;
-        }
-        drop(shown_px);
-        let truth = scene.truth();
-        let handles = [
-            ("data-handle-t", truth.t),
-            (
-                "data-handle-r",
-                crate::view::umeyama_2d::rotation_handle(&truth),
-            ),
-        ]
-        .map(|(name, p)| {
+        let px_of = |p: [f64; 2]| {
             let q = view.frame.px(p);
-            (name, format!("{:.1},{:.1}", q.x, q.y))
-        });
-        let mut shown_handles = self.handles_px.borrow_mut();
-        for ((name, text), shown) in handles.into_iter().zip(shown_handles.iter_mut()) {
+            format!("{:.1},{:.1}", q.x, q.y)
+        };
+        let truth = scene.truth();
+        let texts = [
+            scene
+                .x
+                .iter()
+                .map(|p| px_of(*p))
+                .collect::<Vec<_>>()
+                .join(";"),
+            px_of(truth.t),
+            px_of(crate::view::umeyama_2d::rotation_handle(&truth)),
+        ];
+        let mut written = self.px_written.borrow_mut();
+        for ((name, text), shown) in PX_ATTRS.iter().zip(texts).zip(written.iter_mut()) {
             if *shown != text {
                 let _ = top.set_attribute(name, &text);
                 *shown = text;
             }
         }
-        drop(shown_handles);
+        drop(written);
         drop(view);
         self.panel.show(&scene, step);
         self.show_readouts(&scene);
