@@ -259,9 +259,159 @@ pub fn legend_layout(
     rows
 }
 
+/// The smallest type a y-axis title is shrunk to, as a fraction of the tick labels' size.
+pub const MIN_TITLE_SCALE: f64 = 0.75;
+
+/// A y-axis title laid out along a panel's height: its lines (drawn rotated, side by side)
+/// and the type size as a fraction of the tick labels'.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AxisTitle {
+    pub lines: Vec<String>,
+    pub scale: f64,
+}
+
+/// Lays out a y-axis title along `room` px (the panel's height; projector type on a short
+/// panel is what makes it tight): `title [unit]` on one line when it fits; else, when
+/// `two_lines` allows (the label area is wide enough), the title and `[unit]` on two lines;
+/// the type shrunk (to no less than [`MIN_TITLE_SCALE`]) until the longest line fits; a line
+/// still too long is cut and ends in "…". `measure` is a text's width at full size; titles
+/// never run into the next panel's.
+pub fn axis_title(
+    title: &str,
+    unit: &str,
+    room: f64,
+    two_lines: bool,
+    measure: impl Fn(&str) -> f64,
+) -> AxisTitle {
+    let one = if unit.is_empty() {
+        title.to_string()
+    } else {
+        format!("{title} [{unit}]")
+    };
+    let fits = |lines: &[String], scale: f64| lines.iter().all(|l| measure(l) * scale <= room);
+    let mut candidates = vec![vec![one]];
+    if two_lines && !unit.is_empty() {
+        candidates.push(vec![title.to_string(), format!("[{unit}]")]);
+    }
+    for lines in &candidates {
+        if fits(lines, 1.0) {
+            return AxisTitle {
+                lines: lines.clone(),
+                scale: 1.0,
+            };
+        }
+    }
+    let lines = candidates.pop().unwrap_or_default();
+    let longest = lines.iter().map(|l| measure(l)).fold(0.0, f64::max);
+    let scale = if longest > 0.0 {
+        (room / longest).clamp(MIN_TITLE_SCALE, 1.0)
+    } else {
+        1.0
+    };
+    let lines = lines
+        .into_iter()
+        .map(|line| {
+            if measure(&line) * scale <= room {
+                return line;
+            }
+            let chars: Vec<char> = line.chars().collect();
+            (0..chars.len())
+                .rev()
+                .map(|n| format!("{}…", chars[..n].iter().collect::<String>().trim_end()))
+                .find(|cut| measure(cut) * scale <= room)
+                .unwrap_or_default()
+        })
+        .collect();
+    AxisTitle { lines, scale }
+}
+
+/// Places labels of `(centre, width)` along x, in order, inside `[x0, x1]` with at least
+/// `gap` between them: each as near its centre as it can be; one that cannot fit after the
+/// label before it is left out (`None`). Returns the centres.
+pub fn place_labels(labels: &[(f64, f64)], x0: f64, x1: f64, gap: f64) -> Vec<Option<f64>> {
+    let mut next = x0;
+    labels
+        .iter()
+        .map(|&(centre, w)| {
+            let left = (centre - w / 2.0).min(x1 - w).max(next);
+            if left + w > x1 + 1e-9 {
+                return None;
+            }
+            next = left + w + gap;
+            Some(left + w / 2.0)
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn labels_stay_inside_and_apart() {
+        // Room enough: each on its centre.
+        let at = place_labels(&[(50.0, 20.0), (150.0, 20.0)], 0.0, 200.0, 4.0);
+        assert_eq!(at, [Some(50.0), Some(150.0)]);
+        // A label wider than its band at the left edge moves right, inside the area (it ran
+        // over the y tick labels); the next one moves right after it.
+        let at = place_labels(
+            &[(20.0, 80.0), (70.0, 40.0), (180.0, 40.0)],
+            0.0,
+            200.0,
+            6.0,
+        );
+        assert_eq!(at, [Some(40.0), Some(106.0), Some(180.0)]);
+        // At the right edge: moved left; one that cannot fit any more is left out.
+        let at = place_labels(
+            &[(100.0, 90.0), (190.0, 40.0), (199.0, 60.0)],
+            0.0,
+            200.0,
+            6.0,
+        );
+        assert_eq!(at, [Some(100.0), Some(180.0), None]);
+    }
+
+    /// A fixed-pitch stand-in for the canvas: 10 px a character.
+    fn pitch(s: &str) -> f64 {
+        10.0 * s.chars().count() as f64
+    }
+
+    #[test]
+    fn axis_titles_fit_their_panel() {
+        // Room enough: one line, full size.
+        let t = axis_title("angle q", "rad", 200.0, true, pitch);
+        assert_eq!(t.lines, ["angle q [rad]"]);
+        assert_eq!(t.scale, 1.0);
+        // Too long for one line (25 chars = 250 px in 200): title and unit on two lines.
+        let t = axis_title("acceleration qdd", "rad/s²", 200.0, true, pitch);
+        assert_eq!(t.lines, ["acceleration qdd", "[rad/s²]"]);
+        assert_eq!(t.scale, 1.0);
+        // No room for a second line: one line, shrunk.
+        let t = axis_title("acceleration qdd", "rad/s²", 200.0, false, pitch);
+        assert_eq!(t.lines, ["acceleration qdd [rad/s²]"]);
+        assert!((t.scale - 0.8).abs() < 1e-12);
+        // Shorter still: shrunk to the least size, then cut.
+        let t = axis_title("acceleration qdd", "rad/s²", 90.0, true, pitch);
+        assert_eq!(t.scale, MIN_TITLE_SCALE);
+        for line in &t.lines {
+            assert!(pitch(line) * t.scale <= 90.0, "{line} fits");
+        }
+        assert_eq!(t.lines, ["acceleratio…", "[rad/s²]"]);
+        // No unit: one line whatever the room; Japanese is measured the same way.
+        let t = axis_title("位置 s", "", 30.0, true, pitch);
+        assert_eq!(t.lines.len(), 1);
+        assert!(pitch(&t.lines[0]) * t.scale <= 30.0);
+        // Every line of every layout fits, at any room.
+        for room in [0.0, 5.0, 40.0, 75.0, 120.0, 160.0, 260.0] {
+            for two in [false, true] {
+                let t = axis_title("velocity qd", "rad/s", room, two, pitch);
+                assert!(
+                    t.lines.iter().all(|l| pitch(l) * t.scale <= room),
+                    "{room} {two}: {t:?}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn scales_map_and_invert() {

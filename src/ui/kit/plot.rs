@@ -26,10 +26,11 @@ use plotters::prelude::*;
 use plotters_canvas::CanvasBackend;
 use web_sys::Element;
 
-use super::canvas::{solid, Ink, LayeredCanvas};
+use super::canvas::{font_px, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
 use crate::view::plot::{
-    decimate, legend_layout, log_axis_range, log_tick_label, nice_step, tick_label, LinearScale,
+    axis_title, decimate, legend_layout, log_axis_range, log_tick_label, nice_step, tick_label,
+    LinearScale,
 };
 
 use glam::DVec2;
@@ -50,6 +51,19 @@ impl AxisSpec {
             format!("{} [{}]", self.title, self.unit)
         }
     }
+}
+
+/// What the layout leaves around a panel's plotting area, CSS px: the y-axis title fits in it.
+#[derive(Clone, Copy)]
+struct TitleRoom {
+    /// One legend row's height.
+    legend_row: f64,
+    /// The chart's margin.
+    margin: f64,
+    /// The y labels' band (ticks and title).
+    y_label: f64,
+    /// The x labels' band under the last panel.
+    x_label: f64,
 }
 
 /// How a series is marked.
@@ -449,7 +463,6 @@ impl Plot {
             let tick = ("sans-serif", font)
                 .into_font()
                 .color(&RGBColor(58, 66, 80));
-            let y_desc = panel.y.desc();
             let x_fmt = |v: &f64| tick_label(*v, x_step);
             let y_fmt = |v: &f64| {
                 if log {
@@ -467,7 +480,6 @@ impl Plot {
                 .y_labels(y_labels)
                 .x_label_formatter(&x_fmt)
                 .y_label_formatter(&y_fmt)
-                .y_desc(y_desc.as_str())
                 .label_style(tick.clone())
                 .axis_desc_style(tick)
                 .light_line_style(RGBColor(235, 238, 243))
@@ -492,6 +504,14 @@ impl Plot {
         // cover the data.
         let ctx = &layer.ctx;
         let _ = ctx.set_transform(dpr, 0.0, 0.0, dpr, 0.0, 0.0);
+        let css = |px: i32| f64::from(px) / dpr;
+        let room = TitleRoom {
+            legend_row: css(legend_row),
+            margin: css(margin),
+            y_label: css(y_label),
+            x_label: css(x_label),
+        };
+        self.draw_y_titles(ink, &spec, &rows, room);
         ctx.set_font(&legend_font);
         ctx.set_text_baseline("middle");
         ctx.set_text_align("left");
@@ -521,6 +541,56 @@ impl Plot {
             }
         }
         Ok(())
+    }
+
+    /// Each panel's y-axis title, rotated, at the left of its label area and centred on its
+    /// plotting area where it fits: on a short panel (projector type) it may use the panel's
+    /// legend rows and margins, then goes on two lines (title and unit), then shrinks, then is
+    /// cut (`view::plot::axis_title`), so it never runs into the next panel's title.
+    fn draw_y_titles(&self, ink: Ink, spec: &PlotSpec, rows: &[i32], room: TitleRoom) {
+        let TitleRoom {
+            legend_row: row_h,
+            margin,
+            y_label: label_w,
+            x_label,
+        } = room;
+        let ctx = &self.canvas.layer(0).ctx;
+        let px = ink.text_px(12.0);
+        ctx.set_font(&font_px(px, false));
+        let line_h = 1.2 * px;
+        let measure = |s: &str| ctx.measure_text(s).map_or(0.0, |m| m.width());
+        let two_lines = label_w >= 5.0 * px;
+        ctx.set_fill_style_str("#3a4250");
+        ctx.set_text_align("center");
+        ctx.set_text_baseline("middle");
+        let last = self.areas.len().saturating_sub(1);
+        for (i, ((area, panel), r)) in self.areas.iter().zip(&spec.panels).zip(rows).enumerate() {
+            // The panel's own slot: its legend rows and margins, and under the last panel the
+            // x labels' band (its left part, under the y ticks, is empty).
+            let top = area.y0 - row_h * f64::from(*r) - margin + 3.0;
+            let bottom = area.y1 + if i == last { x_label } else { margin } - 3.0;
+            let room = (bottom - top).max(0.0);
+            let title = axis_title(&panel.y.title, &panel.y.unit, room, two_lines, measure);
+            if title.scale < 1.0 {
+                ctx.set_font(&font_px(px * title.scale, false));
+            }
+            let length = title.lines.iter().map(|l| measure(l)).fold(0.0, f64::max);
+            let half = length / 2.0;
+            let cy = ((area.y0 + area.y1) / 2.0)
+                .min(area.y1 - half)
+                .max(top + half);
+            for (k, line) in title.lines.iter().enumerate() {
+                let cx = margin + line_h * title.scale * (0.6 + k as f64);
+                ctx.save();
+                let _ = ctx.translate(cx, cy);
+                let _ = ctx.rotate(-std::f64::consts::FRAC_PI_2);
+                let _ = ctx.fill_text(line, 0.0, 0.0);
+                ctx.restore();
+            }
+            if title.scale < 1.0 {
+                ctx.set_font(&font_px(px, false));
+            }
+        }
     }
 
     fn scales(&self, panel: usize) -> Option<(LinearScale, LinearScale, Area)> {

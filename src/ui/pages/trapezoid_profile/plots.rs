@@ -21,7 +21,7 @@ use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, Fit, SignalPage, SignalPlot};
-use crate::view::plot::auto_range;
+use crate::view::plot::{auto_range, place_labels};
 use crate::view::signal::{extents, held_range, held_ranges, nice_range, snap};
 use crate::view::trapezoid_profile::{amax_from_corner, bands, phases, Phases};
 
@@ -231,6 +231,10 @@ impl Plots {
         c.set_font(&ink.font(12.0, true));
         c.set_text_align("center");
         c.set_text_baseline("top");
+        // Bands first; then their labels, kept inside the plotting area and apart (a narrow
+        // band's label would run over the y ticks or its neighbour's), each on a halo of the
+        // background so the curve under it does not hide it.
+        let mut shown = Vec::new();
         for (((t0, t1), (fill, _)), label) in bands(ph).into_iter().zip(BANDS).zip(labels.iter()) {
             let (Some(a), Some(b)) = (plot.to_px(0, t0, 0.0), plot.to_px(0, t1, 0.0)) else {
                 continue;
@@ -242,8 +246,24 @@ impl Plots {
             for (y0, y1) in &panels {
                 c.fill_rect(a.x, *y0, b.x - a.x, y1 - y0);
             }
-            c.set_fill_style_str("#3a4250");
-            let _ = c.fill_text(label, (a.x + b.x) / 2.0, top.2 + 4.0);
+            let w = c.measure_text(label).map_or(0.0, |m| m.width());
+            shown.push((label, ((a.x + b.x) / 2.0, w)));
+        }
+        let places: Vec<(f64, f64)> = shown.iter().map(|(_, p)| *p).collect();
+        let gap = 8.0 * ink.text;
+        c.set_line_width(4.0 * ink.line);
+        c.set_line_join("round");
+        c.set_stroke_style_str("rgba(251, 252, 254, 0.85)");
+        c.set_fill_style_str("#3a4250");
+        for ((label, _), x) in
+            shown
+                .iter()
+                .zip(place_labels(&places, top.0 + 2.0, top.1 - 2.0, gap))
+        {
+            if let Some(x) = x {
+                let _ = c.stroke_text(label, x, top.2 + 4.0);
+                let _ = c.fill_text(label, x, top.2 + 4.0);
+            }
         }
         // The asked vmax, dashed, on the velocity panel.
         if let (Some(l), Some(r)) = (
