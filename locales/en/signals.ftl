@@ -10,6 +10,7 @@ signals-png = Download the plots (PNG)
 signals-key-reset = Back to the recipe's defaults
 signals-ax-t = time t
 signals-unit-s = s
+signals-computing = Computing { $rows } rows… { $percent } %. The plot and the readouts show the last run until it is done.
 
 ## Cubic path
 cubic-title = Cubic path

@@ -10,6 +10,7 @@ signals-png = グラフを保存（PNG）
 signals-key-reset = レシピの既定値に戻す
 signals-ax-t = 時刻 t
 signals-unit-s = 秒
+signals-computing = { $rows } 行を計算中… { $percent } %。終わるまで、グラフと読み取り値は前の結果のままです。
 
 ## 3 次経路
 cubic-title = 3 次経路

@@ -153,31 +153,38 @@ pub fn compute_with(
     params: &CubicParams,
     progress: &mut Progress,
 ) -> Result<CubicPath, RecipeError> {
+    let rows = samples(params)?;
+    let n = rows.len() as u64;
+    let samples = rows
+        .enumerate()
+        .map(|(k, s)| {
+            progress.phase_at(0, 2, k as u64, n);
+            s
+        })
+        .collect();
+    Ok(CubicPath {
+        q0: params.q0,
+        q1: params.q1,
+        duration_s: params.duration_s,
+        samples,
+    })
+}
+
+/// The samples of [`compute`], one at a time (a live page computes a million in slices).
+pub fn samples(
+    params: &CubicParams,
+) -> Result<impl ExactSizeIterator<Item = CubicSample>, RecipeError> {
     let ts = params.times()?;
-    let n = ts.len() as u64;
     let (q0, q1, big_t) = (params.q0, params.q1, params.duration_s);
     let (a0, a1) = (q0, 0.0);
     let a2 = 3.0 * (q1 - q0) / (big_t * big_t);
     let a3 = -2.0 * (q1 - q0) / (big_t * big_t * big_t);
-    let samples = ts
-        .into_iter()
-        .enumerate()
-        .map(|(k, t)| {
-            progress.phase_at(0, 2, k as u64, n);
-            CubicSample {
-                t,
-                q: a0 + a1 * t + a2 * t * t + a3 * t * t * t,
-                qd: a1 + 2.0 * a2 * t + 3.0 * a3 * t * t,
-                qdd: 2.0 * a2 + 6.0 * a3 * t,
-            }
-        })
-        .collect();
-    Ok(CubicPath {
-        q0,
-        q1,
-        duration_s: big_t,
-        samples,
-    })
+    Ok(ts.into_iter().map(move |t| CubicSample {
+        t,
+        q: a0 + a1 * t + a2 * t * t + a3 * t * t * t,
+        qd: a1 + 2.0 * a2 * t + 3.0 * a3 * t * t,
+        qdd: 2.0 * a2 + 6.0 * a3 * t,
+    }))
 }
 
 impl CubicPath {

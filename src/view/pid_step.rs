@@ -23,9 +23,14 @@ use crate::recipes::pid_step::{self, PidParams, PidSample};
 /// The kernel's response of valid `p` ([`pid_step::response`]), with unrounded times `k·dt`;
 /// none for invalid `p`.
 pub fn response(p: &PidParams) -> Vec<PidSample> {
-    pid_step::response(p)
-        .map(Iterator::collect)
-        .unwrap_or_default()
+    rows(p).map(|(rows, _)| rows.collect()).unwrap_or_default()
+}
+
+/// [`response`] one row at a time, and how many rows (what the page computes, in slices when
+/// there are many); none for invalid `p`.
+pub fn rows(p: &PidParams) -> Option<(pid_step::Response, u64)> {
+    let rows = pid_step::response(p).ok()?;
+    Some((rows, u64::try_from(p.steps).unwrap_or(0)))
 }
 
 /// A row's time as the CSV writes it (`round(t, 4)`; unchanged for the kernel's rows).
@@ -51,38 +56,49 @@ const RISE_TO: f64 = 0.9;
 /// Half-width of the settling band, as a fraction of r.
 const SETTLE_BAND: f64 = 0.02;
 
-/// The figures of `samples`.
+/// The figures of `samples`, in one pass over them (a million rows are 40 MB: six passes,
+/// one a figure, were most of a live page's frame).
 pub fn figures(samples: &[PidSample]) -> StepFigures {
-    let mut out = StepFigures {
-        peak_u: samples
-            .iter()
-            .filter(|s| s.u.is_finite())
-            .fold(None::<(f64, f64)>, |best, s| match best {
-                Some((_, u)) if u.abs() >= s.u.abs() => best,
-                _ => Some((s.t, s.u)),
-            })
-            .map(|(t, u)| (py_round(t, 4), u)),
-        ..StepFigures::default()
-    };
+    let mut out = StepFigures::default();
     let Some(last) = samples.last() else {
         return out;
     };
-    if samples.iter().any(|s| !s.y.is_finite()) {
+    let r = last.r;
+    let (rise_from, rise_to, band) = (RISE_FROM * r, RISE_TO * r, SETTLE_BAND * r.abs());
+    let mut peak_u = None::<(f64, f64)>;
+    let mut finite = true;
+    let (mut first_from, mut first_to) = (None, None);
+    let mut max_y = f64::NEG_INFINITY;
+    let mut outside = None;
+    for (i, s) in samples.iter().enumerate() {
+        // The first of the largest |u| (a later tie does not replace it).
+        if s.u.is_finite() && peak_u.is_none_or(|(_, u)| u.abs() < s.u.abs()) {
+            peak_u = Some((s.t, s.u));
+        }
+        if !s.y.is_finite() {
+            finite = false;
+            continue;
+        }
+        if first_from.is_none() && s.y >= rise_from {
+            first_from = Some(i);
+        }
+        if first_to.is_none() && s.y >= rise_to {
+            first_to = Some(i);
+        }
+        max_y = max_y.max(s.y);
+        if (s.y - r).abs() > band {
+            outside = Some(i);
+        }
+    }
+    out.peak_u = peak_u.map(|(t, u)| (py_round(t, 4), u));
+    if !finite {
         return out;
     }
-    let r = last.r;
-    let first_at = |level: f64| samples.iter().find(|s| s.y >= level * r).map(csv_t);
-    out.rise_time = match (first_at(RISE_FROM), first_at(RISE_TO)) {
-        (Some(a), Some(b)) => Some(b - a),
-        _ => None,
-    };
-    let max_y = samples.iter().fold(f64::NEG_INFINITY, |m, s| m.max(s.y));
+    let t_of = |i: usize| csv_t(&samples[i]);
+    out.rise_time = first_from.zip(first_to).map(|(a, b)| t_of(b) - t_of(a));
     out.overshoot_pct = Some(((max_y - r) / r * 100.0).max(0.0));
-    let outside = samples
-        .iter()
-        .rposition(|s| (s.y - r).abs() > SETTLE_BAND * r.abs());
     out.settling_time = match outside {
-        None => Some(csv_t(&samples[0])),
+        None => Some(t_of(0)),
         Some(i) => samples.get(i + 1).map(csv_t),
     };
     out.steady_state_error = Some(r - last.y);

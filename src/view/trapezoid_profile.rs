@@ -9,6 +9,8 @@
 //! ```
 //! (the kernel's own operations, so `t_total` is the kernel's to the last bit).
 
+use std::iter::Take;
+
 use crate::recipes::trapezoid_profile::{self, TrapParams, TrapSample, MAX_ROWS};
 
 /// The phases of one profile, s; the velocity reached.
@@ -59,18 +61,14 @@ pub fn phases(p: &TrapParams) -> Phases {
 /// prints `round(t, 5)` through a decimal formatting on every row, which costs more than the
 /// loop). At most [`MAX_ROWS`]; none for invalid `p`.
 pub fn samples(p: &TrapParams) -> Vec<TrapSample> {
-    let mut rows = Vec::new();
-    samples_into(p, &mut rows);
-    rows
+    rows(p).map(|(rows, _)| rows.collect()).unwrap_or_default()
 }
 
-/// [`samples`] into `rows` (emptied first): a live page reuses one buffer, so a drag at
-/// hundreds of thousands of rows does not grow a new one on every frame.
-pub fn samples_into(p: &TrapParams, rows: &mut Vec<TrapSample>) {
-    rows.clear();
-    if let Ok(kernel) = trapezoid_profile::samples(p) {
-        rows.extend(kernel.take(MAX_ROWS as usize));
-    }
+/// [`samples`] one row at a time, and about how many ([`TrapParams::rows_estimate`]): what
+/// the page computes, in slices when there are many; none for invalid `p`.
+pub fn rows(p: &TrapParams) -> Option<(Take<trapezoid_profile::Samples>, u64)> {
+    let rows = trapezoid_profile::samples(p).ok()?;
+    Some((rows.take(MAX_ROWS as usize), p.rows_estimate()))
 }
 
 /// The three phases as time bands `(start, end)`: accelerate, cruise (empty for a triangle),

@@ -191,6 +191,58 @@ test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; dive
   }
 });
 
+test('a run over 150,000 rows is computed a slice per frame: the last run stays until it is done, then the figures are the CSV\'s', async () => {
+  // 400,000 steps of the PID (the CSV's rows): too many to compute within one frame.
+  const { page, errors, close } = await open('#/pid-step?Kp=2&Ki=4&Kd=0.05&tau=0.8&steps=400000');
+  const line = page.locator('[data-testid="pid-step-computing"]');
+  try {
+    await page.evaluate(() => {
+      window.__tasks = [];
+      new PerformanceObserver((l) => { for (const e of l.getEntries()) window.__tasks.push(e.duration); }).observe({ type: 'longtask' });
+    });
+    await line.waitFor({ state: 'hidden', timeout: 20000 });
+    const figuresOf = (rows) => {
+      const first = (level) => rows.find((row) => row[2] >= level)[0];
+      const lastOut = rows.findLastIndex((row) => Math.abs(row[2] - 1) > 0.02);
+      return { rise: first(0.9) - first(0.1), settling: rows[lastOut + 1][0], sse: 1 - rows[rows.length - 1][2], final: rows[rows.length - 1][2] };
+    };
+    const shown = async () => {
+      const r = await readouts(page);
+      return { rise: r['rise-time'], settling: r['settling-time'], sse: r['steady-state-error'], final: r['final-y'] };
+    };
+    const before = figuresOf(run('pid_step.csv', ['pid-step', '2', '4', '0.05', '0.8', '400000']).rows);
+    assert.deepEqual(await shown(), before);
+    // A change: the line says how far the new run is, in %, while the plot and the readouts
+    // keep the last run; then the new run's figures are the CSV's.
+    // (Typed and read in one task: 400,000 rows take only a few frames.)
+    const during = await page.evaluate(() => {
+      const field = document.querySelector('[data-field="Kp"]');
+      field.value = '3';
+      field.dispatchEvent(new Event('input', { bubbles: true }));
+      const l = document.querySelector('[data-testid="pid-step-computing"]');
+      return { hidden: l.hidden, text: l.textContent, final: Number(document.querySelector('[data-readout="final-y"]').dataset.value) };
+    });
+    assert.equal(during.hidden, false);
+    assert.match(during.text, /^Computing 400,000 rows… \d+ %/);
+    assert.equal(during.final, before.final, 'the last run stays while the new one is computed');
+    await line.waitFor({ state: 'hidden', timeout: 20000 });
+    const after = figuresOf(run('pid_step.csv', ['pid-step', '3', '4', '0.05', '0.8', '400000']).rows);
+    assert.notDeepEqual(after, before);
+    assert.deepEqual(await shown(), after);
+    // A small run again is drawn within its input's frame: no line.
+    await page.locator('[data-field="steps"]').fill('300');
+    await page.waitForFunction(() => document.querySelector('[data-readout="final-y"]').dataset.value !== undefined);
+    assert.equal(await line.isVisible(), false);
+    const small = figuresOf(run('pid_step.csv', ['pid-step', '3', '4', '0.05', '0.8', '300']).rows);
+    assert.deepEqual(await shown(), small);
+    const tasks = await page.evaluate(() => window.__tasks);
+    console.log(`pid-step 400,000 rows: longest task ${Math.round(Math.max(0, ...tasks))} ms (${tasks.length} over 50 ms)`);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('trapezoid-profile: dragging vmax up on a short move makes a triangle', async () => {
   const { page, errors, close } = await open('#/trapezoid-profile');
   try {

@@ -9,7 +9,7 @@
 //!
 //! A page says what differs in a [`SignalPage`]: its [`SignalSpec`] (prefix, recipe, sliders,
 //! readouts, explanation sections), its extra markup, what it builds before it exists
-//! ([`SignalPage::prepare`]), its listeners, its `changed` and `redraw_all`; it registers as
+//! ([`SignalPage::prepare`]), its listeners, its kernel and `show_run`, and `redraw_all`; it registers as
 //! `PageDef::of::<Signal<MyPage>>(…)`. Its plot is a [`SignalPlot`]: the kit plot with the
 //! drag handles, the hover cursor and the PNG every signal page has.
 //!
@@ -18,6 +18,7 @@
 //! `recipe-<recipe id>-blurb`, the recipe's quirks id and the `signals-*` card titles.
 //! Hooks: `data-testid="<recipe id>-canvas"` on the top canvas, `data-<prefix>="stage"`.
 
+use std::any::Any;
 use std::cell::RefCell;
 use std::rc::{Rc, Weak};
 
@@ -27,6 +28,7 @@ use web_sys::{CanvasRenderingContext2d, Element, KeyboardEvent};
 
 use super::canvas::Ink;
 use super::drag::{Drag, DragEvent, PointerKind};
+use super::frame::FrameLoop;
 use super::plot::{AxisSpec, Mark, Plot, SeriesSpec};
 use super::readouts::{self, Readouts};
 use super::recipe_controls::{self, record_frame_ms, Parse, RecipeControls};
@@ -38,6 +40,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::drag::HandleShape;
+use crate::view::progress::group_digits;
 use crate::view::signal::{nearest_row, sig, Slider};
 
 /// What a signal page is, as the shell needs it.
@@ -87,6 +90,37 @@ impl Fit {
     }
 }
 
+/// Runs of more rows than this are computed a slice per animation frame (at most
+/// [`SLICE_MS`] of kernel work each), the last run staying on the plot and in the readouts
+/// meanwhile, a line under the plot saying how far it is; a newer change replaces it. Smaller
+/// runs are recomputed within the input's frame (about 15 ms at this size, kernel, readouts and
+/// plot). A million rows (every page's limit) in one task was 100-300 ms.
+pub const LIVE_ROWS: u64 = 150_000;
+/// The kernel work of one slice, ms.
+pub const SLICE_MS: f64 = 8.0;
+/// Rows pulled between two looks at the clock.
+const CLOCK_EVERY: usize = 2048;
+
+/// Where a run shown by [`SignalPage::show_run`] comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RunFrom {
+    /// The page's first run (the URL's arguments).
+    Mount,
+    /// A change, computed within its input's frame.
+    Input,
+    /// A change computed in slices, shown once finished (the input may be over).
+    Slices,
+}
+
+/// A run being computed in slices.
+struct Sliced<P, R> {
+    params: P,
+    source: Box<dyn Iterator<Item = R>>,
+    rows: Vec<R>,
+    total: u64,
+    from: RunFrom,
+}
+
 /// The parts every signal page has once it is mounted.
 pub struct Shell<T> {
     pub root: Element,
@@ -96,6 +130,11 @@ pub struct Shell<T> {
     pub readouts: Readouts,
     pub url: UrlWriter,
     scope: RefCell<Scope>,
+    /// A run over [`LIVE_ROWS`] being computed a slice per frame (a [`Sliced`] of the page's
+    /// params and rows), the loop that computes it, and the line that says so.
+    pending: RefCell<Option<Box<dyn Any>>>,
+    slices: FrameLoop,
+    computing: Element,
 }
 
 impl<T: Clone + 'static> Shell<T> {
@@ -128,6 +167,8 @@ impl<T: Clone + 'static> Shell<T> {
 pub trait SignalPage: Sized + 'static {
     /// The recipe's parameters.
     type Params: Clone + 'static;
+    /// One row of the kernel's table.
+    type Row: 'static;
     /// What the page builds before it exists ([`SignalPage::prepare`]).
     type Parts;
     const SPEC: SignalSpec;
@@ -152,8 +193,13 @@ pub trait SignalPage: Sized + 'static {
     fn shell(&self) -> &Shell<Self::Params>;
     /// Listeners of the page's own (the plot's drags, checkboxes), once it exists.
     fn install(&self, me: &Weak<Self>) -> Result<(), JsValue>;
-    /// New valid arguments: recompute and redraw now (within the input's frame).
-    fn changed(&self, params: Self::Params);
+    /// The kernel's rows of `params`, yielded one at a time, and how many there are (about:
+    /// the recipe's own estimate); `None` when the kernel refuses `params`.
+    #[allow(clippy::type_complexity)]
+    fn kernel(params: &Self::Params) -> Option<(Box<dyn Iterator<Item = Self::Row>>, u64)>;
+    /// Shows the finished run of `params`: readouts, plots and URL; a change's run is also
+    /// announced (not the page's first).
+    fn show_run(&self, params: Self::Params, rows: Vec<Self::Row>, from: RunFrom);
     /// Everything again (mount, size, language, mode).
     fn redraw_all(&self);
     /// A slider was let go (its `change`): a page that held its axes while it moved
@@ -191,6 +237,7 @@ fn markup<S: SignalPage>() -> String {
          <div class=\"sig-stage\" data-{p}=\"stage\">{under}<canvas class=\"sig-layer\" \
          data-testid=\"{id}-canvas\" role=\"img\" tabindex=\"0\" data-i18n-attr=\"aria-label={p}-canvas-label\" \
          aria-describedby=\"{p}-readouts\"></canvas></div>\
+         <p class=\"sig-computing\" data-{p}=\"computing\" data-testid=\"{id}-computing\" hidden></p>\
          {stage_extra}</section>\
          <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}{ro_extra}</section>\
          <section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\
@@ -212,15 +259,119 @@ fn controls_of<S: SignalPage>(page: &S) -> &RecipeControls<S::Params> {
 /// A change of the arguments, timed (bench builds keep the time: recompute + redraw).
 fn timed_change<S: SignalPage>(page: &S, params: S::Params) {
     let t0 = now_ms();
-    page.changed(params);
+    change(page, params);
     record_frame_ms(now_ms() - t0);
+}
+
+/// New valid arguments: a run of at most [`LIVE_ROWS`] rows is computed and shown now
+/// (within the input's frame); a bigger one is computed a slice per frame, then shown. Either
+/// replaces a run still being computed.
+pub fn change<S: SignalPage>(page: &S, params: S::Params) {
+    start(page, params, RunFrom::Input);
+}
+
+fn start<S: SignalPage>(page: &S, params: S::Params, from: RunFrom) {
+    let shell = page.shell();
+    shell.pending.replace(None);
+    let Some((source, total)) = S::kernel(&params) else {
+        shell.slices.cancel();
+        dom::show(&shell.computing, false);
+        return;
+    };
+    if total <= LIVE_ROWS {
+        shell.slices.cancel();
+        dom::show(&shell.computing, false);
+        page.show_run(params, source.collect(), from);
+        return;
+    }
+    let from = if from == RunFrom::Mount {
+        from
+    } else {
+        RunFrom::Slices
+    };
+    let rows = Vec::with_capacity(total as usize);
+    shell.pending.replace(Some(Box::new(Sliced {
+        params,
+        source,
+        rows,
+        total,
+        from,
+    })));
+    show_computing(shell, 0, total);
+    shell.slices.request();
+}
+
+/// The first run of `params` for [`SignalPage::prepare`]: the rows now when there are at most
+/// [`LIVE_ROWS`], else none (the shell computes them in slices once the page is mounted).
+pub fn first_rows<S: SignalPage>(params: &S::Params) -> Vec<S::Row> {
+    match S::kernel(params) {
+        Some((source, total)) if total <= LIVE_ROWS => source.collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// One slice of the pending run; shows it when it is complete, else asks for the next frame.
+fn compute_slice<S: SignalPage>(page: &S) {
+    let shell = page.shell();
+    let t0 = now_ms();
+    let finished = {
+        let mut pending = shell.pending.borrow_mut();
+        let Some(job) = pending
+            .as_mut()
+            .and_then(|b| b.downcast_mut::<Sliced<S::Params, S::Row>>())
+        else {
+            return;
+        };
+        let mut done = false;
+        while !done && now_ms() - t0 < SLICE_MS {
+            for _ in 0..CLOCK_EVERY {
+                match job.source.next() {
+                    Some(row) => job.rows.push(row),
+                    None => {
+                        done = true;
+                        break;
+                    }
+                }
+            }
+        }
+        if done {
+            pending.take()
+        } else {
+            show_computing(shell, job.rows.len() as u64, job.total);
+            None
+        }
+    };
+    match finished.and_then(|b| b.downcast::<Sliced<S::Params, S::Row>>().ok()) {
+        Some(job) => {
+            dom::show(&shell.computing, false);
+            let job = *job;
+            page.show_run(job.params, job.rows, job.from);
+        }
+        None => shell.slices.request(),
+    }
+    record_frame_ms(now_ms() - t0);
+}
+
+/// The line under the plot: `done` of `total` rows computed.
+fn show_computing<T: Clone + 'static>(shell: &Shell<T>, done: u64, total: u64) {
+    let pct = (done as f64 / total.max(1) as f64 * 100.0)
+        .floor()
+        .min(99.0);
+    shell.computing.set_text_content(Some(&ctx::t_strings(
+        "signals-computing",
+        &[
+            ("rows", group_digits(total)),
+            ("percent", format!("{pct:.0}")),
+        ],
+    )));
+    dom::show(&shell.computing, true);
 }
 
 /// A mounted signal page.
 pub struct Signal<S>(Rc<S>);
 
 impl<S: SignalPage> Signal<S> {
-    /// The page (for keys that change the arguments: call [`SignalPage::changed`]).
+    /// The page (for keys that change the arguments: call [`change`]).
     pub fn page(&self) -> &S {
         &self.0
     }
@@ -246,10 +397,12 @@ impl<S: SignalPage> Page for Signal<S> {
         controls.check_only_edits();
         let stage: Element = dom::find(&root, &format!("[data-{p}=\"stage\"]"), p)?;
         let readouts = Readouts::find(&root)?;
+        let computing: Element = dom::find(&root, &format!("[data-{p}=\"computing\"]"), p)?;
         let parts = S::prepare(&ctx, &root, &controls, &stage)?;
         let page = Rc::new_cyclic(|me: &Weak<S>| {
             let mut scope = Scope::new();
             let url = UrlWriter::new(&mut scope, me, S::query);
+            let slices = scope.frame_loop(me, |p: &S, _| compute_slice(p));
             let shell = Shell {
                 root,
                 controls,
@@ -257,6 +410,9 @@ impl<S: SignalPage> Page for Signal<S> {
                 readouts,
                 url,
                 scope: RefCell::new(scope),
+                pending: RefCell::new(None),
+                slices,
+                computing,
             };
             S::new(shell, parts)
         });
@@ -282,6 +438,11 @@ impl<S: SignalPage> Page for Signal<S> {
         let t0 = now_ms();
         page.redraw_all();
         record_frame_ms(now_ms() - t0);
+        // A first run too big for the mount's task (`first_rows` left it empty): in slices.
+        let params = page.shell().controls.value();
+        if S::kernel(&params).is_some_and(|(_, total)| total > LIVE_ROWS) {
+            start(&*page, params, RunFrom::Mount);
+        }
         Ok(Signal(page))
     }
 

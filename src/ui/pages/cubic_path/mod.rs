@@ -18,11 +18,13 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 
 use crate::pyfmt::py_float;
 use crate::recipes::cubic_path::{
-    compute, params_from_args, CubicParams, CubicPath, CubicSample, INFO,
+    params_from_args, samples, CubicParams, CubicPath, CubicSample, INFO,
 };
 use crate::ui::ctx;
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{Fit, Shell, Signal, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{
+    change, first_rows, Fit, RunFrom, Shell, Signal, SignalPage, SignalSpec,
+};
 use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::view::cubic_path::{readouts as numbers, Peak};
 use crate::view::signal::{sig, snap, Slider};
@@ -110,6 +112,7 @@ pub struct Parts {
 
 impl SignalPage for CubicPage {
     type Params = CubicParams;
+    type Row = CubicSample;
     type Parts = Parts;
     const SPEC: SignalSpec = SignalSpec {
         prefix: P,
@@ -141,7 +144,7 @@ impl SignalPage for CubicPage {
         stage: &Element,
     ) -> Result<Parts, JsValue> {
         let params = controls.value();
-        let path = compute(&params).map_err(|e| JsValue::from_str(&e.to_string()))?;
+        let path = path_of(&params, first_rows::<CubicPage>(&params));
         let overlays = OVERLAYS.map(|o| ctx.get(o) == Some("1"));
         for (o, on) in OVERLAYS.iter().zip(overlays) {
             crate::ui::dom::find::<HtmlInputElement>(root, &format!("[data-overlay=\"{o}\"]"), P)?
@@ -198,15 +201,21 @@ impl SignalPage for CubicPage {
         pairs
     }
 
-    /// New valid arguments: recompute and redraw now (within the input's frame).
-    fn changed(&self, params: CubicParams) {
-        let Ok(path) = compute(&params) else {
-            return;
-        };
-        *self.path.borrow_mut() = (params, path);
+    fn kernel(p: &CubicParams) -> Option<(Box<dyn Iterator<Item = CubicSample>>, u64)> {
+        let rows = samples(p).ok()?;
+        let n = rows.len() as u64;
+        Some((Box::new(rows), n))
+    }
+
+    fn show_run(&self, params: CubicParams, rows: Vec<CubicSample>, from: RunFrom) {
+        *self.path.borrow_mut() = (params, path_of(&params, rows));
         let dragging = self.plots.borrow().dragging();
         let fit = Fit::for_change(dragging, &self.shell.controls);
         let peak = self.redraw(fit, false).map_or(0.0, |p| p.value);
+        if from == RunFrom::Mount {
+            self.shell.url.schedule();
+            return;
+        }
         self.shell.readouts.announce(&ctx::t_strings(
             "cubic-live",
             &[
@@ -245,7 +254,7 @@ impl SignalPage for CubicPage {
             _ => return false,
         };
         if let Some(p) = next {
-            self.changed(p);
+            change(self, p);
         }
         true
     }
@@ -294,5 +303,15 @@ impl CubicPage {
                 ("cursor-qdd", s.qdd),
             ]);
         }
+    }
+}
+
+/// The recipe's path of `p` from its samples.
+fn path_of(p: &CubicParams, samples: Vec<CubicSample>) -> CubicPath {
+    CubicPath {
+        q0: p.q0,
+        q1: p.q1,
+        duration_s: p.duration_s,
+        samples,
     }
 }

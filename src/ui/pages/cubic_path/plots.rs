@@ -17,7 +17,7 @@ use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
-use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, Fit, SignalPage, SignalPlot};
+use crate::ui::kit::signal_page::{self, axis, draw_handle, reach, series, Fit, SignalPlot};
 use crate::view::cubic_path::{quintic, ranges, time_range, trapezoid};
 use crate::view::palette;
 use crate::view::signal::{held_range, held_ranges, nice_range, snap};
@@ -79,7 +79,7 @@ impl Plots {
                     .controls
                     .set_texts(&[("q1", &q), ("T", &t)], None)
                 {
-                    page.changed(p);
+                    signal_page::change(page, p);
                 }
             }
             DragEvent::End { .. } => {

@@ -10,19 +10,22 @@
 mod plots;
 
 use std::cell::{Cell, RefCell};
-use std::rc::Weak;
+use std::rc::{Rc, Weak};
 
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
+use crate::error::RecipeWarning;
 use crate::pyfmt::py_round;
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{Shell, Signal, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{
+    change, first_rows, RunFrom, Shell, Signal, SignalPage, SignalSpec,
+};
 use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
-use crate::view::pid_step::{figures, response, StepFigures};
+use crate::view::pid_step::{figures, rows, StepFigures};
 use crate::view::signal::{sig, snap, Slider};
 
 /// The page, as the shell's page table lists it.
@@ -76,14 +79,31 @@ const READOUTS: [(&str, &str); 11] = [
     ("cursor-u", "pid-ro-cursor-u"),
 ];
 
-/// The run shown (and its figures), the run the ghost is drawn from (a new ghost, a new
-/// generation), and the last committed run.
+/// The run shown (its figures and warnings), the run the ghost is drawn from (a new ghost, a
+/// new generation), and the last committed run. Runs are shared, never copied (a million rows
+/// are 40 MB).
 pub struct Runs {
-    now: Vec<PidSample>,
+    now: Rc<Vec<PidSample>>,
     figures: StepFigures,
-    committed: Vec<PidSample>,
-    ghost: Option<Vec<PidSample>>,
+    warnings: Vec<RecipeWarning>,
+    committed: Rc<Vec<PidSample>>,
+    ghost: Option<Rc<Vec<PidSample>>>,
     ghost_generation: u64,
+}
+
+impl Runs {
+    /// The run `rows` with no ghost, committed.
+    fn first(rows: Vec<PidSample>) -> Runs {
+        let now = Rc::new(rows);
+        Runs {
+            figures: figures(&now),
+            warnings: warnings(&now),
+            committed: now.clone(),
+            now,
+            ghost: None,
+            ghost_generation: 0,
+        }
+    }
 }
 
 /// The page's keys.
@@ -116,6 +136,7 @@ pub struct Parts {
 
 impl SignalPage for PidPage {
     type Params = PidParams;
+    type Row = PidSample;
     type Parts = Parts;
     const SPEC: SignalSpec = SignalSpec {
         prefix: P,
@@ -149,17 +170,11 @@ impl SignalPage for PidPage {
         controls: &RecipeControls<PidParams>,
         stage: &Element,
     ) -> Result<Parts, JsValue> {
-        let rows = response(&controls.value());
+        let rows = first_rows::<PidPage>(&controls.value());
         Ok(Parts {
             plots: plots::Plots::new(stage)?,
             warning: dom::find(root, &format!("[data-{P}=\"warning\"]"), P)?,
-            runs: Runs {
-                committed: rows.clone(),
-                figures: figures(&rows),
-                now: rows,
-                ghost: None,
-                ghost_generation: 0,
-            },
+            runs: Runs::first(rows),
         })
     }
 
@@ -185,21 +200,35 @@ impl SignalPage for PidPage {
         self.plots.borrow_mut().attach(me, &self.shell.stage)
     }
 
-    /// New valid arguments: the first change after a committed one turns the committed run
-    /// into the ghost; then recompute and redraw now.
-    fn changed(&self, params: PidParams) {
-        let rows = response(&params);
+    /// The kernel's loop ([`crate::view::pid_step::rows`]: the CSV's rows, times unrounded).
+    fn kernel(p: &PidParams) -> Option<(Box<dyn Iterator<Item = PidSample>>, u64)> {
+        let (rows, n) = rows(p)?;
+        Some((Box::new(rows), n))
+    }
+
+    /// A run: the first change after a committed one turns the committed run into the ghost.
+    /// The page's first run has no ghost; a run computed in slices and finished after its
+    /// input ended is committed at once (the input's `change` came before it).
+    fn show_run(&self, _params: PidParams, rows: Vec<PidSample>, from: RunFrom) {
         {
             let mut runs = self.runs.borrow_mut();
-            if !self.changing.replace(true) {
-                // The committed run becomes the ghost: no copy, the next commit replaces it.
-                runs.ghost = Some(std::mem::take(&mut runs.committed));
-                runs.ghost_generation += 1;
+            if from == RunFrom::Mount {
+                *runs = Runs::first(rows);
+            } else {
+                if !self.changing.replace(true) {
+                    // The committed run becomes the ghost; the next commit replaces it.
+                    runs.ghost = Some(std::mem::take(&mut runs.committed));
+                    runs.ghost_generation += 1;
+                }
+                runs.figures = figures(&rows);
+                runs.warnings = warnings(&rows);
+                runs.now = Rc::new(rows);
             }
-            runs.figures = figures(&rows);
-            runs.now = rows;
         }
         self.redraw(false);
+        if from == RunFrom::Slices && !self.shell.controls.sliding() {
+            self.commit();
+        }
         let f = self.runs.borrow().figures;
         // The unit belongs to a number only: "not reached" stands alone.
         let or_none = |x: Option<f64>, unit_id: &str| {
@@ -208,6 +237,10 @@ impl SignalPage for PidPage {
                 |x| ctx::t_strings(unit_id, &[("value", sig(x, 3))]),
             )
         };
+        if from == RunFrom::Mount {
+            self.shell.url.schedule();
+            return;
+        }
         self.shell.readouts.announce(&ctx::t_strings(
             "pid-live",
             &[
@@ -238,7 +271,7 @@ impl SignalPage for PidPage {
             _ => return false,
         };
         if let Some(p) = next {
-            self.changed(p);
+            change(self, p);
         }
         self.commit();
         true
@@ -271,7 +304,8 @@ impl PidPage {
         show("peak-u", f.peak_u.map(|p| p.1), 4);
         show("peak-u-t", f.peak_u.map(|p| p.0), 4);
         show("final-y", f.final_y, 4);
-        let text: Vec<String> = warnings(&runs.now)
+        let text: Vec<String> = runs
+            .warnings
             .iter()
             .map(|w| ctx::t_args(w.message_id(), &fluent_args(w.message_args())))
             .collect();
@@ -279,7 +313,9 @@ impl PidPage {
         dom::show(&self.warning, !text.is_empty());
         let sample = self.plots.borrow_mut().show(
             &runs.now,
-            runs.ghost.as_deref().map(|g| (runs.ghost_generation, g)),
+            runs.ghost
+                .as_deref()
+                .map(|g| (runs.ghost_generation, g.as_slice())),
             resized,
         );
         drop(runs);

@@ -44,11 +44,12 @@ struct GhostCache {
     u: Vec<(f64, f64)>,
 }
 
-/// The (lo, hi) of the finite y and u of `rows`, clamped to ±1e12 (an overflowed run plots
-/// up to where it broke); `(inf, -inf)` when there is none.
-fn y_u_extents(rows: &[PidSample]) -> [(f64, f64); 2] {
+/// The (lo, hi) of the finite values of a thinned series, clamped to ±1e12 (an overflowed
+/// run plots up to where it broke); `(inf, -inf)` when there is none.
+fn extent(points: &[(f64, f64)]) -> (f64, f64) {
     let clamp = |v: f64| v.clamp(-1e12, 1e12);
-    extents(rows.iter().map(|s| [s.y, s.u])).map(|(lo, hi)| (clamp(lo), clamp(hi)))
+    let [(lo, hi)] = extents(points.iter().map(|p| [p.1]));
+    (clamp(lo), clamp(hi))
 }
 
 /// The axis range of extents `a` and `b` and the value `with`, padded and snapped.
@@ -115,23 +116,31 @@ impl Plots {
         top.push(series("pid-series-y", C_Y, Mark::LineAndPoints, 2.0, 1.0));
         let mut bottom: Vec<SeriesSpec> = ghost_series("pid-series-ghost-u").into_iter().collect();
         bottom.push(series("pid-series-u", C_U, Mark::LineAndPoints, 2.0, 1.0));
+        // The ghost thinned once (a new ghost, a new x range or a new size), its ranges from
+        // its thinned points (each pixel column keeps its lowest and highest: the same extents
+        // as the run's, without another pass over a million rows).
+        if let Some((generation, rows)) = ghost {
+            let key = (generation, x, self.sp.plot.panel_px(0));
+            if self.ghost.as_ref().map(|c| c.key) != Some(key) {
+                let [y, u] =
+                    thinned_columns(&self.sp.plot, x, rows.iter().map(|s| (s.t, [s.y, s.u])));
+                self.ghost = Some(GhostCache {
+                    key,
+                    y_range: extent(&y),
+                    u_range: extent(&u),
+                    y,
+                    u,
+                });
+            }
+        }
         let none = (f64::INFINITY, f64::NEG_INFINITY);
         let (ghost_y, ghost_u) = self
             .ghost
             .as_ref()
             .filter(|_| ghost.is_some())
             .map_or((none, none), |c| (c.y_range, c.u_range));
-        // A new ghost: its ranges now (its thinned series once the axes are set, below).
-        let fresh = ghost
-            .filter(|(generation, _)| self.ghost.as_ref().map(|c| c.key.0) != Some(*generation));
-        let (ghost_y, ghost_u) = match fresh {
-            Some((_, rows)) => {
-                let [y, u] = y_u_extents(rows);
-                (y, u)
-            }
-            None => (ghost_y, ghost_u),
-        };
-        let [now_y, now_u] = y_u_extents(now);
+        let [y, u] = thinned_columns(&self.sp.plot, x, now.iter().map(|s| (s.t, [s.y, s.u])));
+        let (now_y, now_u) = (extent(&y), extent(&u));
         self.sp.plot.set_spec(PlotSpec {
             x: axis("signals-ax-t", "signals-unit-s", x),
             panels: vec![
@@ -146,29 +155,15 @@ impl Plots {
             ],
             cursor_rgb: C_R,
         });
-        if let Some((generation, rows)) = ghost {
-            let key = (generation, x, self.sp.plot.panel_px(0));
-            if self.ghost.as_ref().map(|c| c.key) != Some(key) {
-                let [y, u] =
-                    thinned_columns(&self.sp.plot, x, rows.iter().map(|s| (s.t, [s.y, s.u])));
-                let cache = GhostCache {
-                    key,
-                    y_range: ghost_y,
-                    u_range: ghost_u,
-                    y,
-                    u,
-                };
-                self.sp.plot.set_series(0, 0, cache.y.clone());
-                self.sp.plot.set_series(1, 0, cache.u.clone());
-                self.ghost = Some(cache);
-            }
+        if let Some(cache) = self.ghost.as_ref().filter(|_| ghost.is_some()) {
+            self.sp.plot.set_series(0, 0, cache.y.clone());
+            self.sp.plot.set_series(1, 0, cache.u.clone());
         }
         // r is the recipe's constant setpoint: its two ends draw it.
         let r = match (now.first(), now.last()) {
             (Some(a), Some(b)) => vec![(a.t, a.r), (b.t, b.r)],
             _ => Vec::new(),
         };
-        let [y, u] = thinned_columns(&self.sp.plot, x, now.iter().map(|s| (s.t, [s.y, s.u])));
         self.sp.plot.set_series(0, g, r);
         self.sp.plot.set_series(0, g + 1, y);
         self.sp.plot.set_series(1, g, u);

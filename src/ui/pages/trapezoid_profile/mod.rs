@@ -18,11 +18,13 @@ use web_sys::{Element, KeyboardEvent};
 
 use crate::recipes::trapezoid_profile::{params_from_args, TrapParams, TrapSample, INFO};
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{Fit, Shell, Signal, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{
+    change, first_rows, Fit, RunFrom, Shell, Signal, SignalPage, SignalSpec,
+};
 use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
-use crate::view::trapezoid_profile::{phases, samples, samples_into, Phases};
+use crate::view::trapezoid_profile::{phases, rows, Phases};
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef =
@@ -112,6 +114,7 @@ fn shape_id(ph: &Phases) -> &'static str {
 
 impl SignalPage for TrapPage {
     type Params = TrapParams;
+    type Row = TrapSample;
     type Parts = Parts;
     const SPEC: SignalSpec = SignalSpec {
         prefix: P,
@@ -143,7 +146,7 @@ impl SignalPage for TrapPage {
         Ok(Parts {
             plots: plots::Plots::new(stage)?,
             triangle_note: dom::find(root, &format!("[data-{P}=\"triangle\"]"), P)?,
-            profile: (params, samples(&params)),
+            profile: (params, first_rows::<TrapPage>(&params)),
         })
     }
 
@@ -164,17 +167,23 @@ impl SignalPage for TrapPage {
         self.plots.borrow_mut().attach(me, &self.shell.stage)
     }
 
-    /// New valid arguments: recompute and redraw now.
-    fn changed(&self, params: TrapParams) {
-        {
-            let mut profile = self.profile.borrow_mut();
-            profile.0 = params;
-            samples_into(&params, &mut profile.1);
-        }
+    /// The kernel's samples ([`crate::view::trapezoid_profile::rows`]: the CSV's rows, times
+    /// unrounded).
+    fn kernel(p: &TrapParams) -> Option<(Box<dyn Iterator<Item = TrapSample>>, u64)> {
+        let (rows, n) = rows(p)?;
+        Some((Box::new(rows), n))
+    }
+
+    fn show_run(&self, params: TrapParams, rows: Vec<TrapSample>, from: RunFrom) {
+        *self.profile.borrow_mut() = (params, rows);
         let dragging = self.plots.borrow().dragging();
         self.redraw(Fit::for_change(dragging, &self.shell.controls), false);
         let ph = phases(&params);
         let (total, peak) = (ph.t_total, ph.v_peak);
+        if from == RunFrom::Mount {
+            self.shell.url.schedule();
+            return;
+        }
         self.shell.readouts.announce_settled(300.0, move || {
             ctx::t_strings(
                 "trap-live",
@@ -216,7 +225,7 @@ impl SignalPage for TrapPage {
             _ => return false,
         };
         if let Some(p) = next {
-            self.changed(p);
+            change(self, p);
         }
         true
     }

@@ -20,7 +20,7 @@ use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
-use crate::ui::kit::signal_page::{axis, draw_handle, reach, series, Fit, SignalPage, SignalPlot};
+use crate::ui::kit::signal_page::{self, axis, draw_handle, reach, series, Fit, SignalPlot};
 use crate::view::plot::{auto_range, place_labels};
 use crate::view::signal::{extents, held_range, held_ranges, nice_range, snap};
 use crate::view::trapezoid_profile::{amax_from_corner, bands, phases, Phases};
@@ -96,7 +96,7 @@ impl Plots {
                         .and_then(|a| controls.set_text("amax", &snap(a.max(0.01), 0.01), false)),
                 };
                 if let Some(p) = next {
-                    page.changed(p);
+                    signal_page::change(page, p);
                 }
             }
             DragEvent::End { .. } => {
@@ -159,20 +159,31 @@ impl Plots {
         resized: bool,
     ) -> Option<TrapSample> {
         let ink = Ink::current();
+        // The time axis first (it comes from the phases), then the rows thinned to it, then
+        // the value axes from the thinned points (each pixel column keeps its lowest and
+        // highest: the same extents as the rows', without another pass over a million).
+        let x_range = match fit {
+            Fit::Keep => self.x_range,
+            Fit::Hold => held_range(self.x_range, fitted_x(ph)),
+            Fit::Refit => fitted_x(ph),
+        };
+        let rows = samples.iter().map(|s| (s.t, [s.s, s.v, s.a]));
+        let columns = thinned_columns(&self.sp.plot, x_range, rows);
         if fit != Fit::Keep {
-            let x_range = nice_range((0.0, (ph.t_total * 1.1).max(1e-9)));
-            let [s, v, a] = extents(samples.iter().map(|s| [s.s, s.v, s.a]));
+            let [s, v, a] = std::array::from_fn(|k| {
+                let [e] = extents(columns[k].iter().map(|p| [p.1]));
+                e
+            });
             let r = |(lo, hi): (f64, f64), with: f64| {
                 nice_range(auto_range([lo, hi, 0.0, with], 0.08).unwrap_or((-1.0, 1.0)))
             };
             let fitted = [r(s, ph.distance), r(v, ph.vmax * 1.3), r(a, ph.amax)];
             let y_ranges = if fit == Fit::Hold {
-                self.x_range = held_range(self.x_range, x_range);
                 held_ranges(self.y_ranges, fitted)
             } else {
-                self.x_range = x_range;
                 fitted
             };
+            self.x_range = x_range;
             let same = self.sp.plot.spec().is_some_and(|spec| {
                 spec.x.range == self.x_range && spec.panels.iter().map(|p| p.y.range).eq(y_ranges)
             });
@@ -184,8 +195,6 @@ impl Plots {
         if resized {
             self.sp.plot.invalidate_all();
         }
-        let rows = samples.iter().map(|s| (s.t, [s.s, s.v, s.a]));
-        let columns = thinned_columns(&self.sp.plot, self.x_range, rows);
         for (panel, pts) in columns.into_iter().enumerate() {
             self.sp.plot.set_series(panel, 0, pts);
         }
@@ -293,4 +302,9 @@ impl Plots {
     pub fn png(&self, file: &str) {
         self.sp.png(file);
     }
+}
+
+/// The time axis that holds the whole move.
+fn fitted_x(ph: &Phases) -> (f64, f64) {
+    nice_range((0.0, (ph.t_total * 1.1).max(1e-9)))
 }
