@@ -52,6 +52,23 @@ pub fn peak(samples: &[CubicSample], f: fn(&CubicSample) -> f64) -> Option<Peak>
     best
 }
 
+/// [`peak`] of each of `fs`, in one pass over `samples`.
+pub fn peaks<const N: usize>(
+    samples: &[CubicSample],
+    fs: [fn(&CubicSample) -> f64; N],
+) -> [Option<Peak>; N] {
+    let mut best = [None::<Peak>; N];
+    for s in samples {
+        for (b, f) in best.iter_mut().zip(fs) {
+            let v = f(s);
+            if b.is_none_or(|b| v.abs() > b.value.abs()) {
+                *b = Some(Peak { t: s.t, value: v });
+            }
+        }
+    }
+    best
+}
+
 /// The page's readouts of one path.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Readouts {
@@ -63,9 +80,10 @@ pub struct Readouts {
 
 /// The readouts of `path` computed with `p` (its samples, as the CSV has them).
 pub fn readouts(p: &CubicParams, path: &CubicPath) -> Readouts {
+    let [peak_velocity, peak_acceleration] = peaks(&path.samples, [|s| s.qd, |s| s.qdd]);
     Readouts {
-        peak_velocity: peak(&path.samples, |s| s.qd),
-        peak_acceleration: peak(&path.samples, |s| s.qdd),
+        peak_velocity,
+        peak_acceleration,
         coefficients: coefficients(p),
         rows: path.samples.len(),
     }
@@ -121,12 +139,20 @@ pub fn trapezoid(p: &CubicParams, n: usize) -> Option<Vec<CubicSample>> {
 
 /// Ranges of the three panels (q, qd, qdd) holding `series`, padded by 8 %.
 pub fn ranges(series: &[&[CubicSample]]) -> [(f64, f64); 3] {
-    let rows = series
-        .iter()
-        .flat_map(|s| s.iter())
-        .map(|s| [s.q, s.qd, s.qdd]);
-    crate::view::signal::extents(rows)
-        .map(|(lo, hi)| auto_range([lo, hi, 0.0], 0.08).unwrap_or((-1.0, 1.0)))
+    let all = || series.iter().flat_map(|s| s.iter());
+    [
+        panel_range(all().map(|s| s.q)),
+        panel_range(all().map(|s| s.qd)),
+        panel_range(all().map(|s| s.qdd)),
+    ]
+}
+
+/// The range of one panel holding `values` (the finite ones) and zero, padded by 8 %. A page
+/// passes its thinned points: each pixel column keeps its lowest and highest value, so the
+/// range is the same as the samples'.
+pub fn panel_range(values: impl IntoIterator<Item = f64>) -> (f64, f64) {
+    let [(lo, hi)] = crate::view::signal::extents(values.into_iter().map(|v| [v]));
+    auto_range([lo, hi, 0.0], 0.08).unwrap_or((-1.0, 1.0))
 }
 
 /// The time axis: 0 to T with room for dragging T further (a quarter more).
@@ -232,6 +258,26 @@ mod tests {
             300
         )
         .is_none());
+    }
+
+    #[test]
+    fn peaks_in_one_pass_are_each_columns_peak() {
+        for p in [
+            CubicParams::default(),
+            CubicParams {
+                q0: 0.5,
+                q1: -2.0,
+                duration_s: 3.0,
+                dt_s: 0.07,
+            },
+        ] {
+            let path = compute(&p).unwrap();
+            let [v, a] = peaks(&path.samples, [|s| s.qd, |s| s.qdd]);
+            assert_eq!(v, peak(&path.samples, |s| s.qd));
+            assert_eq!(a, peak(&path.samples, |s| s.qdd));
+            assert!(v.is_some() && a.is_some());
+        }
+        assert_eq!(peaks(&[], [|s| s.q]), [None]);
     }
 
     #[test]

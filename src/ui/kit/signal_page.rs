@@ -271,13 +271,28 @@ pub fn change<S: SignalPage>(page: &S, params: S::Params) {
 }
 
 fn start<S: SignalPage>(page: &S, params: S::Params, from: RunFrom) {
+    match S::kernel(&params) {
+        Some((source, total)) => run(page, params, source, total, from),
+        None => {
+            let shell = page.shell();
+            shell.pending.replace(None);
+            shell.slices.cancel();
+            dom::show(&shell.computing, false);
+        }
+    }
+}
+
+/// Shows the run of `params` whose rows `source` yields (`total` of them): now, or computed
+/// in slices when there are more than [`LIVE_ROWS`].
+fn run<S: SignalPage>(
+    page: &S,
+    params: S::Params,
+    source: Box<dyn Iterator<Item = S::Row>>,
+    total: u64,
+    from: RunFrom,
+) {
     let shell = page.shell();
     shell.pending.replace(None);
-    let Some((source, total)) = S::kernel(&params) else {
-        shell.slices.cancel();
-        dom::show(&shell.computing, false);
-        return;
-    };
     if total <= LIVE_ROWS {
         shell.slices.cancel();
         dom::show(&shell.computing, false);
@@ -440,8 +455,8 @@ impl<S: SignalPage> Page for Signal<S> {
         record_frame_ms(now_ms() - t0);
         // A first run too big for the mount's task (`first_rows` left it empty): in slices.
         let params = page.shell().controls.value();
-        if S::kernel(&params).is_some_and(|(_, total)| total > LIVE_ROWS) {
-            start(&*page, params, RunFrom::Mount);
+        if let Some((source, total)) = S::kernel(&params).filter(|(_, n)| *n > LIVE_ROWS) {
+            run(&*page, params, source, total, RunFrom::Mount);
         }
         Ok(Signal(page))
     }

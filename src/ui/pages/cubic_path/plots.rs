@@ -18,7 +18,7 @@ use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::ui::kit::signal_page::{self, axis, draw_handle, reach, series, Fit, SignalPlot};
-use crate::view::cubic_path::{quintic, ranges, time_range, trapezoid};
+use crate::view::cubic_path::{panel_range, quintic, time_range, trapezoid};
 use crate::view::palette;
 use crate::view::signal::{held_range, held_ranges, nice_range, snap};
 
@@ -121,27 +121,37 @@ impl Plots {
             let trap = overlays[1].then(|| trapezoid(p, 300)).flatten();
             let on = [quint.is_some(), trap.is_some()];
             let extra: Vec<Vec<CubicSample>> = [quint, trap].into_iter().flatten().collect();
-            let mut all: Vec<&[CubicSample]> = vec![&path.samples];
-            all.extend(extra.iter().map(Vec::as_slice));
-            match fit {
-                Fit::Keep => {}
-                Fit::Hold => {
-                    self.x_range = held_range(self.x_range, time_range(p));
-                    self.y_ranges = held_ranges(self.y_ranges, ranges(&all).map(nice_range));
-                }
-                Fit::Refit => {
-                    self.x_range = time_range(p);
-                    self.y_ranges = ranges(&all).map(nice_range);
-                }
-            }
-            self.set_spec(on);
-            let series = extra
+            // The time axis first, then every series thinned to it, then the value axes from
+            // the thinned points (no other pass over a million samples).
+            let x_range = match fit {
+                Fit::Keep => self.x_range,
+                Fit::Hold => held_range(self.x_range, time_range(p)),
+                Fit::Refit => time_range(p),
+            };
+            let thinned: Vec<[Vec<(f64, f64)>; 3]> = extra
                 .iter()
                 .map(Vec::as_slice)
-                .chain([path.samples.as_slice()]);
-            for (k, v) in series.enumerate() {
-                let rows = v.iter().map(|s| (s.t, [s.q, s.qd, s.qdd]));
-                let columns = thinned_columns(&self.sp.plot, self.x_range, rows);
+                .chain([path.samples.as_slice()])
+                .map(|v| {
+                    let rows = v.iter().map(|s| (s.t, [s.q, s.qd, s.qdd]));
+                    thinned_columns(&self.sp.plot, x_range, rows)
+                })
+                .collect();
+            if fit != Fit::Keep {
+                let fitted: [(f64, f64); 3] = std::array::from_fn(|k| {
+                    nice_range(panel_range(
+                        thinned.iter().flat_map(|c| c[k].iter().map(|p| p.1)),
+                    ))
+                });
+                self.x_range = x_range;
+                self.y_ranges = if fit == Fit::Hold {
+                    held_ranges(self.y_ranges, fitted)
+                } else {
+                    fitted
+                };
+            }
+            self.set_spec(on);
+            for (k, columns) in thinned.into_iter().enumerate() {
                 for (panel, pts) in columns.into_iter().enumerate() {
                     self.sp.plot.set_series(panel, k, pts);
                 }
