@@ -391,19 +391,43 @@ pub fn remove_point(points: &[[f64; 2]], i: usize) -> Result<Vec<[f64; 2]>, Refu
     Ok(out)
 }
 
-/// The point `n` selects after `selected` among `count` points (`forward`), or Shift + `n`
-/// (not `forward`): the next or previous in the list, round again; from none, the first or
-/// the last. `None` without points.
-pub fn next_selection(selected: Option<usize>, count: usize, forward: bool) -> Option<usize> {
-    if count == 0 {
-        return None;
-    }
-    Some(match (selected.filter(|&i| i < count), forward) {
+/// What `n` selects after `selected` (`forward`), or Shift + `n` (not `forward`): the points
+/// in the list order, then the truth's translation handle, then its rotation handle, round
+/// again; from none, the first point or the rotation handle. A point out of range counts as
+/// none.
+pub fn next_selection(selected: Option<Grab>, count: usize, forward: bool) -> Option<Grab> {
+    // Position k in the round: points 0..count, then t, then s·R.
+    let n = count + 2;
+    let at = |k: usize| match k {
+        k if k < count => Grab::Point(k),
+        k if k == count => Grab::Translation,
+        _ => Grab::Rotation,
+    };
+    let k = match selected {
+        Some(Grab::Point(i)) if i < count => Some(i),
+        Some(Grab::Translation) => Some(count),
+        Some(Grab::Rotation) => Some(count + 1),
+        _ => None,
+    };
+    Some(at(match (k, forward) {
         (None, true) => 0,
-        (None, false) => count - 1,
-        (Some(i), true) => (i + 1) % count,
-        (Some(i), false) => (i + count - 1) % count,
-    })
+        (None, false) => n - 1,
+        (Some(k), true) => (k + 1) % n,
+        (Some(k), false) => (k + n - 1) % n,
+    }))
+}
+
+/// Where Shift + an arrow sends the rotation handle of `truth`: ← → turn it by
+/// [`ANGLE_GRID`]° (counter-clockwise for →), ↑ ↓ grow or shrink the scale by [`DRAG_GRID`]
+/// (`(dx, dy)`, each −1, 0 or 1). A drag to there ([`rotation_texts`]) snaps it: the angle and
+/// the scale move by exactly one step.
+pub fn rotation_key_target(truth: &Similarity, (dx, dy): (f64, f64)) -> [f64; 2] {
+    let angle = (truth.angle_deg + dx * ANGLE_GRID).to_radians();
+    let scale = (truth.scale + dy * DRAG_GRID).max(DRAG_GRID);
+    [
+        truth.t[0] + scale * angle.cos(),
+        truth.t[1] + scale * angle.sin(),
+    ]
 }
 
 /// Where Shift + an arrow sends point `p`: one [`DRAG_GRID`] step along `(dx, dy)` (each −1,
@@ -728,18 +752,48 @@ mod tests {
     }
 
     #[test]
+    fn rotation_keys_turn_and_scale_by_one_step() {
+        let scene = default_scene();
+        let truth = scene.truth();
+        let texts = |to: [f64; 2]| rotation_texts(truth.t, to);
+        let [(_, angle), (_, scale)] = texts(rotation_handle(&truth));
+        let (angle, scale): (f64, f64) = (angle.parse().unwrap(), scale.parse().unwrap());
+        let step = |d| {
+            let [(_, a), (_, s)] = texts(rotation_key_target(&truth, d));
+            (a.parse::<f64>().unwrap(), s.parse::<f64>().unwrap())
+        };
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-9;
+        let (a, s) = step((1.0, 0.0));
+        assert!(close(a, angle + ANGLE_GRID) && close(s, scale), "{a} {s}");
+        let (a, s) = step((-1.0, 0.0));
+        assert!(close(a, angle - ANGLE_GRID) && close(s, scale), "{a} {s}");
+        let (a, s) = step((0.0, 1.0));
+        assert!(close(a, angle) && close(s, scale + DRAG_GRID), "{a} {s}");
+        let (a, s) = step((0.0, -1.0));
+        assert!(close(a, angle) && close(s, scale - DRAG_GRID), "{a} {s}");
+    }
+
+    #[test]
     fn keys_select_in_turn_and_step_on_the_drag_grid() {
-        assert_eq!(next_selection(None, 12, true), Some(0));
-        assert_eq!(next_selection(None, 12, false), Some(11));
-        assert_eq!(next_selection(Some(2), 12, true), Some(3));
-        assert_eq!(next_selection(Some(11), 12, true), Some(0));
-        assert_eq!(next_selection(Some(0), 12, false), Some(11));
+        use Grab::{Point, Rotation, Translation};
+        assert_eq!(next_selection(None, 12, true), Some(Point(0)));
+        assert_eq!(next_selection(None, 12, false), Some(Rotation));
+        assert_eq!(next_selection(Some(Point(2)), 12, true), Some(Point(3)));
+        // After the last point: the translation handle, then the rotation handle, then round.
+        assert_eq!(next_selection(Some(Point(11)), 12, true), Some(Translation));
+        assert_eq!(next_selection(Some(Translation), 12, true), Some(Rotation));
+        assert_eq!(next_selection(Some(Rotation), 12, true), Some(Point(0)));
+        assert_eq!(next_selection(Some(Point(0)), 12, false), Some(Rotation));
         assert_eq!(
-            next_selection(Some(20), 12, true),
-            Some(0),
+            next_selection(Some(Translation), 12, false),
+            Some(Point(11))
+        );
+        assert_eq!(
+            next_selection(Some(Point(20)), 12, true),
+            Some(Point(0)),
             "out of range: none"
         );
-        assert_eq!(next_selection(None, 0, true), None);
+        assert_eq!(next_selection(None, 0, true), Some(Translation));
         let scene = default_scene();
         let (i, at) = selected_point(&scene, Some(2)).unwrap();
         assert_eq!(i, 2);

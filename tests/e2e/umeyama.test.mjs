@@ -378,8 +378,8 @@ test('by keyboard: n selects point 3, Shift + arrows move it as a drag does (x, 
     // The ? overlay lists the keys.
     await page.keyboard.press('?');
     const keys = await page.locator('[data-testid="page-keys"]').innerText();
-    assert.match(keys, /n\s+Shift \+ n\s+Select the next point \(Shift \+ n: the previous one\)/);
-    assert.match(keys, /Shift \+ ← ↑ → ↓\s+Move the selected point by 0\.01, as a drag does/);
+    assert.match(keys, /n\s+Shift \+ n\s+Select the next point, then the translation handle t, then the rotation handle s·R \(Shift \+ n: the previous one\)/);
+    assert.match(keys, /Shift \+ ← ↑ → ↓\s+Move the selected point or t by 0\.01, as a drag does; turn s·R by 0\.5° \(← →\) or scale it by 0\.01 \(↑ ↓\)/);
     await page.keyboard.press('Escape');
     assert.deepEqual(errors, []);
   } finally {
@@ -389,14 +389,46 @@ test('by keyboard: n selects point 3, Shift + arrows move it as a drag does (x, 
   const { page: ja, errors: jaErrors, close: closeJa } = await open('#/umeyama-2d?lang=ja');
   try {
     await canvas(ja).focus();
-    await ja.keyboard.press('Shift+N');
+    // Back from none: the rotation handle, the translation handle, then the last point.
+    for (let k = 0; k < 3; k++) await ja.keyboard.press('Shift+N');
     const text = await ja.locator('[data-testid="umeyama-2d-selection"]').innerText();
     assert.equal(text, `点 12（全 12 点）を選択中：位置 (${editor[11][0]}, ${editor[11][1]})。Shift + 矢印キーで 0.01 ずつ動かし、Delete で削除できます。`);
     await ja.keyboard.press('?');
-    assert.match(await ja.locator('[data-testid="page-keys"]').innerText(), /次の点を選ぶ（Shift \+ n で前の点）/);
+    assert.match(await ja.locator('[data-testid="page-keys"]').innerText(), /次の点を選ぶ。最後の点の次は平行移動のハンドル t、その次は回転のハンドル s·R（Shift \+ n で前へ）/);
     assert.deepEqual(jaErrors, []);
   } finally {
     await closeJa();
+  }
+});
+
+test('by keyboard: n goes on to the translation and rotation handles; Shift + arrows move t, turn and scale s·R as a drag does (fields, readouts = bsv)', async () => {
+  const { page, errors, close } = await open('#/umeyama-2d');
+  try {
+    const field = async (name) => page.locator(`[data-field="${name}"]`).inputValue();
+    const status = page.locator('[data-testid="umeyama-2d-selection"]');
+    await canvas(page).focus();
+    for (let k = 0; k < 13; k++) await page.keyboard.press('n');
+    assert.equal(await canvas(page).getAttribute('data-selected'), 't', 'after the 12 points: the translation handle');
+    const [tx, ty] = [Number(await field('tx')), Number(await field('ty'))];
+    assert.equal(await status.innerText(), `Translation handle t selected, at (${tx}, ${ty}). Shift + arrows move it by 0.01.`);
+    for (const key of ['ArrowRight', 'ArrowRight', 'ArrowUp']) await page.keyboard.press(`Shift+${key}`);
+    const [tx2, ty2] = [snap(snap(tx + 0.01, 0.01) + 0.01, 0.01), snap(ty + 0.01, 0.01)];
+    assert.deepEqual([Number(await field('tx')), Number(await field('ty'))], [tx2, ty2]);
+    await page.keyboard.press('n');
+    assert.equal(await canvas(page).getAttribute('data-selected'), 'r');
+    const [angle, scale] = [Number(await field('angle')), Number(await field('scale'))];
+    assert.equal(await status.innerText(), `Rotation handle s·R selected: angle ${angle}°, scale ${scale}. Shift + ← → turn it by 0.5°, Shift + ↑ ↓ scale it by 0.01.`);
+    for (const key of ['ArrowRight', 'ArrowUp', 'ArrowUp']) await page.keyboard.press(`Shift+${key}`);
+    assert.deepEqual([Number(await field('angle')), Number(await field('scale'))], [snap(angle + 0.5, 0.5), snap(snap(scale + 0.01, 0.01) + 0.01, 0.01)]);
+    assert.deepEqual([Number(await field('tx')), Number(await field('ty'))], [tx2, ty2], 'turning s·R keeps t');
+    const args = ['0.02', '3', '12', '--scale', await field('scale'), '--angle', await field('angle'), '--tx', await field('tx'), '--ty', await field('ty')];
+    assertFit(await readouts(page), run(args).values, `handles moved by keys: ${args.join(' ')}`);
+    // And round again: the first point.
+    await page.keyboard.press('n');
+    assert.equal(await canvas(page).getAttribute('data-selected'), '0');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
   }
 });
 

@@ -7,10 +7,12 @@
 //! its matrices (`crate::view::umeyama_2d`, from the kernel's own `umeyama_steps`).
 //!
 //! By keyboard (on the focused view or the page, never in a field): `n` / Shift + `n` select
-//! the next / previous point (the selection ring shows it), Shift + arrows move it by the drag
-//! grid through the very path a pointer drag takes, `a` adds a point, Delete removes the
-//! selected one. A polite status line says which point is selected and where: at once when the
-//! selection changes, once a held key or a typed `x` settles, at a drag's end (never during).
+//! the next / previous point, then the translation handle, then the rotation handle (the
+//! selection ring shows it); Shift + arrows move a point or the translation by the drag grid,
+//! and turn (← →, by the angle grid) or scale (↑ ↓) the rotation handle, through the very path
+//! a pointer drag takes; `a` adds a point, Delete removes the selected one. A polite status
+//! line says what is selected and where: at once when the selection changes, once a held key
+//! or a typed `x` settles, at a drag's end (never during).
 //!
 //! Components, one file each: `view` (the canvas), `steps` (the step panel), `markup` (with
 //! the explanation); the kit's [`RecipeControls`] is the form (the recipe's arguments and the
@@ -55,8 +57,8 @@ use crate::view::drag::HandleShape;
 use crate::view::signal::{sig, Slider};
 use crate::view::umeyama_2d::{
     add_point, editable, hit_test, key_step_target, move_point, new_point_spot, next_selection,
-    num, points_text, remove_point, rotation_texts, selected_point, translation_texts, Grab,
-    Refusal, Scene, Step, STEPS,
+    num, points_text, remove_point, rotation_key_target, rotation_texts, selected_point,
+    translation_texts, Grab, Refusal, Scene, Step, STEPS,
 };
 
 /// The page, as the shell's page table lists it.
@@ -144,7 +146,8 @@ struct Inner {
     stepper: RefCell<Option<StepperWidget<StepIndex>>>,
     drag: RefCell<Option<Drag<Grab>>>,
     dragging: Cell<Option<Grab>>,
-    selected: Cell<Option<usize>>,
+    /// A point or one of the truth's handles (`n` and Shift + `n` go round them).
+    selected: Cell<Option<Grab>>,
     hover: Cell<Option<Grab>>,
     refusal: Cell<Option<Refusal>>,
     /// When the input being handled arrived (a drag move, a slider), ms: its frame's work
@@ -176,9 +179,9 @@ struct Inner {
     scope: RefCell<Scope>,
 }
 
-/// What the selection's status line depends on: the point count, the selected point and its
-/// place in the scene.
-type SelectionKey = (usize, Option<(usize, [f64; 2])>);
+/// What the selection's status line depends on: the point count, what is selected and where
+/// (a point's place; the translation; the rotation handle's angle and scale).
+type SelectionKey = (usize, Option<(Grab, [f64; 2])>);
 
 fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
     dom::find(root, &format!("[data-{P}=\"{name}\"]"), P)
@@ -473,7 +476,7 @@ impl Inner {
         };
         let count = scene.x.len();
         *self.scene.borrow_mut() = scene;
-        if self.selected.get().is_some_and(|i| i >= count) {
+        if matches!(self.selected.get(), Some(Grab::Point(i)) if i >= count) {
             self.selected.set(None);
         }
         // During a drag of the view the status line waits for its end.
@@ -560,7 +563,7 @@ impl Inner {
         match add_point(&points, at) {
             Ok(next) => {
                 self.show_refusal(None);
-                self.selected.set(Some(next.len() - 1));
+                self.selected.set(Some(Grab::Point(next.len() - 1)));
                 self.set_points(&next);
                 self.show_selection_now();
                 self.write_url_now();
@@ -576,7 +579,11 @@ impl Inner {
 
     fn remove_point(&self) {
         let points = self.points();
-        let index = self.selected.get().unwrap_or(usize::MAX);
+        // None selected, or a handle: the last point goes (the button's "remove").
+        let index = match self.selected.get() {
+            Some(Grab::Point(i)) => i,
+            _ => usize::MAX,
+        };
         match remove_point(&points, index) {
             Ok(next) => {
                 self.show_refusal(None);
@@ -614,7 +621,8 @@ impl Inner {
         self.write_url_now();
     }
 
-    /// `n` (`forward`) or Shift + `n`: selects the next or previous point, and says so.
+    /// `n` (`forward`) or Shift + `n`: selects the next or previous point or handle, and says
+    /// so.
     fn select_next(&self, forward: bool) {
         let count = self.scene.borrow().x.len();
         self.selected
@@ -624,22 +632,33 @@ impl Inner {
         self.redraw();
     }
 
-    /// Shift + an arrow: moves the selected point one drag-grid step along `direction` as a
-    /// pointer drag to there would (the same [`Inner::drag_to`]: the form's `x`, the URL,
-    /// the readouts and the exports follow); with none selected, selects the first.
+    /// Shift + an arrow: moves what is selected one step along `direction` as a pointer drag
+    /// to there would (the same [`Inner::drag_to`]: the form, the URL, the readouts and the
+    /// exports follow): a point or the translation by [`DRAG_GRID`], the rotation handle
+    /// turned by ← → and scaled by ↑ ↓ ([`rotation_key_target`]); with none selected,
+    /// selects the first point.
     fn nudge_point(&self, direction: (f64, f64)) {
-        let Some(i) = self.selected.get() else {
+        let Some(grab) = self.selected.get() else {
             self.select_next(true);
             return;
         };
-        // Where the editor holds it (`self.points()[i]`, without copying them all).
-        let Some((_, from)) = selected_point(&self.scene.borrow(), Some(i)) else {
+        let to = {
+            let scene = self.scene.borrow();
+            match grab {
+                // Where the editor holds it (`self.points()[i]`, without copying them all).
+                Grab::Point(i) => selected_point(&scene, Some(i))
+                    .map(|(_, from)| key_step_target(from, direction)),
+                Grab::Translation => Some(key_step_target(scene.truth().t, direction)),
+                Grab::Rotation => Some(rotation_key_target(&scene.truth(), direction)),
+            }
+        };
+        let Some(to) = to else {
             return;
         };
         self.show_refusal(None);
         self.work_started.set(Some(now_ms()));
         self.key_moving.set(true);
-        self.drag_to(Grab::Point(i), key_step_target(from, direction));
+        self.drag_to(grab, to);
         // Also when nothing moved: the settle places the handles and ends the run.
         self.selection_timer.schedule(SELECTION_SETTLE_MS);
     }
@@ -647,10 +666,15 @@ impl Inner {
     // ---------- The selection's status line ----------
 
     fn selection_key(&self, scene: &Scene) -> SelectionKey {
-        let at = self
-            .selected
-            .get()
-            .and_then(|i| scene.x.get(i).map(|p| (i, *p)));
+        let at = self.selected.get().and_then(|g| {
+            let truth = scene.truth();
+            match g {
+                Grab::Point(i) => scene.x.get(i).copied(),
+                Grab::Translation => Some(truth.t),
+                Grab::Rotation => Some([truth.angle_deg, truth.scale]),
+            }
+            .map(|at| (g, at))
+        });
         (scene.x.len(), at)
     }
 
@@ -660,9 +684,10 @@ impl Inner {
         self.show_selection();
     }
 
-    /// The status line: "Point 3 of 12 selected, at (x, y)…" or that none is; written only
+    /// The status line: "Point 3 of 12 selected, at (x, y)…", the handle selected, or that
+    /// none is; written only
     /// when what it says changed (a polite live region: each write is read out). The view's
-    /// `data-selected` is the selected index (empty: none), for tests.
+    /// `data-selected` is the selected point's index, `t` or `r` (empty: none), for tests.
     fn show_selection(&self) {
         let Ok(scene) = self.scene.try_borrow() else {
             return;
@@ -679,27 +704,51 @@ impl Inner {
             return;
         }
         let count = FluentArg::Number(scene.x.len() as f64);
-        let text = match selected_point(&scene, self.selected.get()) {
-            Some((i, at)) => ctx::t_args(
-                "umeyama-selected",
+        let truth = scene.truth();
+        let text = match self.selected.get() {
+            Some(Grab::Translation) => ctx::t_args(
+                "umeyama-selected-translation",
                 &[
-                    ("n", FluentArg::Number((i + 1) as f64)),
-                    ("count", count),
-                    ("x", FluentArg::Text(num(at[0]))),
-                    ("y", FluentArg::Text(num(at[1]))),
+                    ("x", FluentArg::Text(num(truth.t[0]))),
+                    ("y", FluentArg::Text(num(truth.t[1]))),
                 ],
             ),
+            Some(Grab::Rotation) => ctx::t_args(
+                "umeyama-selected-rotation",
+                &[
+                    ("angle", FluentArg::Text(num(truth.angle_deg))),
+                    ("scale", FluentArg::Text(num(truth.scale))),
+                ],
+            ),
+            Some(Grab::Point(i)) => match selected_point(&scene, Some(i)) {
+                Some((i, at)) => ctx::t_args(
+                    "umeyama-selected",
+                    &[
+                        ("n", FluentArg::Number((i + 1) as f64)),
+                        ("count", count),
+                        ("x", FluentArg::Text(num(at[0]))),
+                        ("y", FluentArg::Text(num(at[1]))),
+                    ],
+                ),
+                None => ctx::t_args("umeyama-selected-none", &[("count", count)]),
+            },
             None => ctx::t_args("umeyama-selected-none", &[("count", count)]),
         };
         drop(scene);
         self.selection.set_text_content(Some(&text));
         if let Ok(view) = self.view.try_borrow() {
-            let index = self.selected.get().map(|i| i.to_string());
+            // A point's index, `t` or `r` (empty: none).
+            let said = match self.selected.get() {
+                Some(Grab::Point(i)) => i.to_string(),
+                Some(Grab::Translation) => "t".into(),
+                Some(Grab::Rotation) => "r".into(),
+                None => String::new(),
+            };
             let _ = view
                 .canvas
                 .top()
                 .canvas
-                .set_attribute("data-selected", index.as_deref().unwrap_or(""));
+                .set_attribute("data-selected", &said);
         }
     }
 
@@ -728,12 +777,11 @@ impl Inner {
         };
         focus_without_scroll(&self.view.borrow().canvas.top().canvas);
         match hit {
-            Some(Grab::Point(i)) => {
-                self.selected.set(Some(i));
+            Some(grab) => {
+                self.selected.set(Some(grab));
                 self.show_selection_now();
                 self.redraw();
             }
-            Some(_) => {}
             None => self.add_point_at(world),
         }
     }
@@ -742,10 +790,8 @@ impl Inner {
         match ev {
             DragEvent::Start { handle, .. } => {
                 self.dragging.set(Some(handle));
-                if let Grab::Point(i) = handle {
-                    self.selected.set(Some(i));
-                    self.show_selection_now();
-                }
+                self.selected.set(Some(handle));
+                self.show_selection_now();
                 self.show_refusal(None);
                 focus_without_scroll(&self.view.borrow().canvas.top().canvas);
                 self.redraw();

@@ -39,7 +39,8 @@ const MARGIN: f64 = 34.0;
 /// What is highlighted.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Marks {
-    pub selected: Option<usize>,
+    /// A point or one of the truth's handles.
+    pub selected: Option<Grab>,
     pub hover: Option<Grab>,
 }
 
@@ -473,13 +474,17 @@ impl SceneView {
         }
         squares(c, scene.y.iter().map(|q| f.px(*q)), 0.9 * r, Y_COL);
         discs(c, scene.x.iter().map(|p| f.px(*p)), r, X_COL);
-        if let Some(p) = marks.selected.and_then(|i| scene.x.get(i)) {
+        let selected_point = match marks.selected {
+            Some(Grab::Point(i)) => scene.x.get(i),
+            _ => None,
+        };
+        if let Some(p) = selected_point {
             // Amber, edged in dark so it stands out on the light ground (3:1 and more).
             ring(c, f.px(*p), r + 4.0 * lw, SELECT, 2.5 * lw);
             ring(c, f.px(*p), r + 5.75 * lw, SELECT_EDGE, lw);
         }
         if let Some(Grab::Point(i)) = marks.hover {
-            if marks.selected != Some(i) {
+            if marks.selected != Some(Grab::Point(i)) {
                 if let Some(p) = scene.x.get(i) {
                     ring(c, f.px(*p), r + 3.0 * lw, X_COL, 1.5 * lw);
                 }
@@ -500,6 +505,16 @@ impl SceneView {
         let hover_w = |g: Grab| if marks.hover == Some(g) { 3.5 } else { 2.0 };
         diamond(c, t, 8.0 * lw, TRUTH, hover_w(Grab::Translation) * lw);
         ring(c, rh, 6.0 * lw, TRUTH, hover_w(Grab::Rotation) * lw);
+        // The selected handle: the points' amber ring, edged in dark.
+        let selected_handle = match marks.selected {
+            Some(Grab::Translation) => Some((t, 8.0)),
+            Some(Grab::Rotation) => Some((rh, 6.0)),
+            _ => None,
+        };
+        if let Some((at, size)) = selected_handle {
+            ring(c, at, (size + 5.0) * lw, SELECT, 2.5 * lw);
+            ring(c, at, (size + 6.75) * lw, SELECT_EDGE, lw);
+        }
         self.label_font(ink);
         self.label(c, t, "t", TRUTH);
         self.label(c, rh, "s·R", TRUTH);
