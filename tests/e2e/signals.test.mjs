@@ -229,11 +229,23 @@ test('a run over 150,000 rows is computed a slice per frame: the last run stays 
     const after = figuresOf(run('pid_step.csv', ['pid-step', '3', '4', '0.05', '0.8', '400000']).rows);
     assert.notDeepEqual(after, before);
     assert.deepEqual(await shown(), after);
+    // Two changes while a run is being computed (a slider dragged): that run is shown, then
+    // the latest change is computed; the one in between is never computed.
+    await page.evaluate(() => {
+      const field = document.querySelector('[data-field="Kp"]');
+      for (const v of ['5', '6', '4']) {
+        field.value = v;
+        field.dispatchEvent(new Event('input', { bubbles: true }));
+      }
+    });
+    await line.waitFor({ state: 'hidden', timeout: 20000 });
+    const latest = figuresOf(run('pid_step.csv', ['pid-step', '4', '4', '0.05', '0.8', '400000']).rows);
+    assert.deepEqual(await shown(), latest);
     // A small run again is drawn within its input's frame: no line.
     await page.locator('[data-field="steps"]').fill('300');
     await page.waitForFunction(() => document.querySelector('[data-readout="final-y"]').dataset.value !== undefined);
     assert.equal(await line.isVisible(), false);
-    const small = figuresOf(run('pid_step.csv', ['pid-step', '3', '4', '0.05', '0.8', '300']).rows);
+    const small = figuresOf(run('pid_step.csv', ['pid-step', '4', '4', '0.05', '0.8', '300']).rows);
     assert.deepEqual(await shown(), small);
     const tasks = await page.evaluate(() => window.__tasks);
     console.log(`pid-step 400,000 rows: longest task ${Math.round(Math.max(0, ...tasks))} ms (${tasks.length} over 50 ms)`);

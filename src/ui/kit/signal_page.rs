@@ -92,7 +92,8 @@ impl Fit {
 
 /// Runs of more rows than this are computed a slice per animation frame (at most
 /// [`SLICE_MS`] of kernel work each), the last run staying on the plot and in the readouts
-/// meanwhile, a line under the plot saying how far it is; a newer change replaces it. Smaller
+/// meanwhile, a line under the plot saying how far it is (a newer big change is computed
+/// after it, only the latest kept; a newer small one replaces it). Smaller
 /// runs are recomputed within the input's frame (about 15 ms at this size, kernel, readouts and
 /// plot). A million rows (every page's limit) in one task was 100-300 ms.
 pub const LIVE_ROWS: u64 = 150_000;
@@ -119,6 +120,8 @@ struct Sliced<P, R> {
     rows: Vec<R>,
     total: u64,
     from: RunFrom,
+    /// The latest big change that came meanwhile: computed once this run is shown.
+    next: Option<P>,
 }
 
 /// The parts every signal page has once it is mounted.
@@ -264,8 +267,9 @@ fn timed_change<S: SignalPage>(page: &S, params: S::Params) {
 }
 
 /// New valid arguments: a run of at most [`LIVE_ROWS`] rows is computed and shown now
-/// (within the input's frame); a bigger one is computed a slice per frame, then shown. Either
-/// replaces a run still being computed.
+/// (within the input's frame), replacing a run still being computed; a bigger one is computed
+/// a slice per frame, then shown, or, while another big run is being computed, once that one
+/// is shown (only the latest such change is kept).
 pub fn change<S: SignalPage>(page: &S, params: S::Params) {
     start(page, params, RunFrom::Input);
 }
@@ -292,6 +296,19 @@ fn run<S: SignalPage>(
     from: RunFrom,
 ) {
     let shell = page.shell();
+    if total > LIVE_ROWS {
+        // A big run under way: it goes on and is shown, then the latest change is computed
+        // (a slider dragged over a million rows shows a run every few frames, not none).
+        if let Some(job) = shell
+            .pending
+            .borrow_mut()
+            .as_mut()
+            .and_then(|b| b.downcast_mut::<Sliced<S::Params, S::Row>>())
+        {
+            job.next = Some(params);
+            return;
+        }
+    }
     shell.pending.replace(None);
     if total <= LIVE_ROWS {
         shell.slices.cancel();
@@ -311,6 +328,7 @@ fn run<S: SignalPage>(
         rows,
         total,
         from,
+        next: None,
     })));
     show_computing(shell, 0, total);
     shell.slices.request();
@@ -361,6 +379,9 @@ fn compute_slice<S: SignalPage>(page: &S) {
             dom::show(&shell.computing, false);
             let job = *job;
             page.show_run(job.params, job.rows, job.from);
+            if let Some(next) = job.next {
+                start(page, next, RunFrom::Input);
+            }
         }
         None => shell.slices.request(),
     }
