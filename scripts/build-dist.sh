@@ -29,6 +29,8 @@ cp -r www dist/www
 cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm dist/pkg/
 # wasm-bindgen `inline_js` / `module` snippets, if any crate uses them.
 [[ -d pkg/snippets ]] && cp -r pkg/snippets dist/pkg/
+# A release build is minified (the glue and the stylesheet; scripts/minify.mjs).
+[[ "$profile" == --release ]] && node scripts/minify.mjs dist
 # The offline service worker of exactly these files (dist/sw.js; see www/sw.js).
 node scripts/sw-build.mjs dist
 
