@@ -26,9 +26,9 @@ if [[ "$(wasm-bindgen --version 2>/dev/null)" != "wasm-bindgen $WASM_BINDGEN_VER
   # Not --locked: the registry mirror lags one of the crates its lock file pins.
   cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION" --force
 fi
-if [[ ! -x node_modules/.bin/wasm-opt || ! -d node_modules/playwright-core || ! -d node_modules/axe-core ]] \
+if [[ ! -x node_modules/.bin/wasm-opt || ! -d node_modules/playwright-core || ! -d node_modules/axe-core || ! -d node_modules/terser ]] \
   || ! cmp -s package-lock.json node_modules/.package-lock.json.copy 2>/dev/null; then
-  say "installing npm tools (binaryen's wasm-opt, playwright-core, axe-core) from package-lock.json"
+  say "installing npm tools (binaryen's wasm-opt, terser, playwright-core, axe-core) from package-lock.json"
   npm ci --no-audit --no-fund --loglevel=error
   cp package-lock.json node_modules/.package-lock.json.copy
 fi
