@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what building (and, with --browser, testing) needs, and only what is missing:
 # the Rust wasm32 target, wasm-pack and wasm-bindgen-cli at pinned versions (cargo install),
-# wasm-opt, playwright-core and axe-core from npm (package-lock.json pins them), and with --browser
+# wasm-opt, terser, playwright-core and axe-core from npm (package-lock.json pins them), and with --browser
 # Debian's chromium, chromium-driver and a Japanese font (apt-get).
 set -euo pipefail
 cd "$(dirname "$0")/.."
