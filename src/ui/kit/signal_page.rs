@@ -9,8 +9,9 @@
 //!
 //! A page says what differs in a [`SignalPage`]: its [`SignalSpec`] (prefix, recipe, sliders,
 //! readouts, explanation sections), its extra markup, what it builds before it exists
-//! ([`SignalPage::prepare`]), its listeners, its kernel and `show_run`, and `redraw_all`; it registers as
-//! `PageDef::of::<Signal<MyPage>>(…)`. Its plot is a [`SignalPlot`]: the kit plot with the
+//! ([`SignalPage::prepare`]), its listeners, its kernel (rows one at a time: the shell computes
+//! a big run a slice per frame, [`LIVE_ROWS`]), its `show_run` and `redraw_all`; it registers
+//! as `PageDef::of::<Signal<MyPage>>(…)`. Its plot is a [`SignalPlot`]: the kit plot with the
 //! drag handles, the hover cursor and the PNG every signal page has.
 //!
 //! Fluent ids it reads: `<prefix>-title`, `<prefix>-plots-title`, `<prefix>-canvas-label`,
@@ -93,9 +94,9 @@ impl Fit {
 /// Runs of more rows than this are computed a slice per animation frame (at most
 /// [`SLICE_MS`] of kernel work each), the last run staying on the plot and in the readouts
 /// meanwhile, a line under the plot saying how far it is (a newer big change is computed
-/// after it, only the latest kept; a newer small one replaces it). Smaller
-/// runs are recomputed within the input's frame (about 15 ms at this size, kernel, readouts and
-/// plot). A million rows (every page's limit) in one task was 100-300 ms.
+/// after it, only the latest kept; a newer small one replaces it). Smaller runs are
+/// recomputed within the input's frame (about 15 ms at this size: kernel, readouts and plot).
+/// A million rows (every page's limit) in one task was 100-300 ms.
 pub const LIVE_ROWS: u64 = 150_000;
 /// The kernel work of one slice, ms.
 pub const SLICE_MS: f64 = 8.0;
