@@ -40,19 +40,8 @@ pub struct Peak {
     pub value: f64,
 }
 
-/// The first sample where `|f|` is largest (`None` for no samples).
-pub fn peak(samples: &[CubicSample], f: fn(&CubicSample) -> f64) -> Option<Peak> {
-    let mut best: Option<Peak> = None;
-    for s in samples {
-        let v = f(s);
-        if best.is_none_or(|b| v.abs() > b.value.abs()) {
-            best = Some(Peak { t: s.t, value: v });
-        }
-    }
-    best
-}
-
-/// [`peak`] of each of `fs`, in one pass over `samples`.
+/// For each of `fs`, the first sample where `|f|` is largest (`None` for no samples), in one
+/// pass over `samples`.
 pub fn peaks<const N: usize>(
     samples: &[CubicSample],
     fs: [fn(&CubicSample) -> f64; N],
@@ -135,16 +124,6 @@ pub fn trapezoid(p: &CubicParams, n: usize) -> Option<Vec<CubicSample>> {
             })
             .collect(),
     )
-}
-
-/// Ranges of the three panels (q, qd, qdd) holding `series`, padded by 8 %.
-pub fn ranges(series: &[&[CubicSample]]) -> [(f64, f64); 3] {
-    let all = || series.iter().flat_map(|s| s.iter());
-    [
-        panel_range(all().map(|s| s.q)),
-        panel_range(all().map(|s| s.qd)),
-        panel_range(all().map(|s| s.qdd)),
-    ]
 }
 
 /// The range of one panel holding `values` (the finite ones) and zero, padded by 8 %. A page
@@ -262,6 +241,17 @@ mod tests {
 
     #[test]
     fn peaks_in_one_pass_are_each_columns_peak() {
+        // The plain search of one column, as a reference.
+        let peak = |samples: &[CubicSample], f: fn(&CubicSample) -> f64| {
+            let mut best: Option<Peak> = None;
+            for s in samples {
+                let v = f(s);
+                if best.is_none_or(|b| v.abs() > b.value.abs()) {
+                    best = Some(Peak { t: s.t, value: v });
+                }
+            }
+            best
+        };
         for p in [
             CubicParams::default(),
             CubicParams {
@@ -285,7 +275,12 @@ mod tests {
         let p = CubicParams::default();
         let path = compute(&p).unwrap();
         let quint = quintic(&p, 100);
-        let [q, qd, qdd] = ranges(&[&path.samples, &quint]);
+        let all = || path.samples.iter().chain(&quint);
+        let [q, qd, qdd] = [
+            panel_range(all().map(|s| s.q)),
+            panel_range(all().map(|s| s.qd)),
+            panel_range(all().map(|s| s.qdd)),
+        ];
         assert!(q.0 < 0.0 && q.1 > 1.2);
         assert!(qd.1 > 15.0 * 1.2 / 8.0);
         assert!(qdd.0 < -7.2 && qdd.1 > 7.2);

@@ -12,7 +12,7 @@
 //! Times are the CSV's `t` column (row k: `t = round(k·0.05, 4)` s, y after that step). A
 //! response that is not finite has no figures but the peak u where one exists.
 //!
-//! [`response`] is the kernel's loop ([`pid_step::response`]: r, y, u and e are the CSV's to
+//! [`rows`] is the kernel's loop ([`pid_step::response`]: r, y, u and e are the CSV's to
 //! the last bit), with `t = k·dt` left unrounded: the CSV rounds every row's time through a
 //! decimal formatting (Python's `round`), which costs more than the loop itself; the figures
 //! round only the few times they report.
@@ -20,14 +20,9 @@
 use crate::pyfmt::py_round;
 use crate::recipes::pid_step::{self, PidParams, PidSample};
 
-/// The kernel's response of valid `p` ([`pid_step::response`]), with unrounded times `k·dt`;
-/// none for invalid `p`.
-pub fn response(p: &PidParams) -> Vec<PidSample> {
-    rows(p).map(|(rows, _)| rows.collect()).unwrap_or_default()
-}
-
-/// [`response`] one row at a time, and how many rows (what the page computes, in slices when
-/// there are many); none for invalid `p`.
+/// The kernel's response of valid `p` ([`pid_step::response`]), with unrounded times `k·dt`,
+/// one row at a time, and how many rows (what the page computes, in slices when there are
+/// many); none for invalid `p`.
 pub fn rows(p: &PidParams) -> Option<(pid_step::Response, u64)> {
     let rows = pid_step::response(p).ok()?;
     Some((rows, u64::try_from(p.steps).unwrap_or(0)))
@@ -183,7 +178,8 @@ mod tests {
                 steps: 0,
             },
         ] {
-            let (fast, kernel) = (response(&p), simulate(&p).unwrap());
+            let fast: Vec<PidSample> = rows(&p).unwrap().0.collect();
+            let kernel = simulate(&p).unwrap();
             assert_eq!(fast.len(), kernel.len());
             for (f, k) in fast.iter().zip(&kernel) {
                 let bits = |s: &PidSample| [s.r, s.y, s.u, s.e].map(f64::to_bits);

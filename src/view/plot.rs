@@ -259,6 +259,15 @@ pub fn legend_layout(
     rows
 }
 
+/// An axis title as one line: `title [unit]`, or the title alone without a unit.
+pub fn axis_desc(title: &str, unit: &str) -> String {
+    if unit.is_empty() {
+        title.to_string()
+    } else {
+        format!("{title} [{unit}]")
+    }
+}
+
 /// The smallest type a y-axis title is shrunk to, as a fraction of the tick labels' size.
 pub const MIN_TITLE_SCALE: f64 = 0.75;
 
@@ -283,11 +292,7 @@ pub fn axis_title(
     two_lines: bool,
     measure: impl Fn(&str) -> f64,
 ) -> AxisTitle {
-    let one = if unit.is_empty() {
-        title.to_string()
-    } else {
-        format!("{title} [{unit}]")
-    };
+    let one = axis_desc(title, unit);
     let fits = |lines: &[String], scale: f64| lines.iter().all(|l| measure(l) * scale <= room);
     let mut candidates = vec![vec![one]];
     if two_lines && !unit.is_empty() {

@@ -143,6 +143,14 @@ pub fn extents<const N: usize>(rows: impl IntoIterator<Item = [f64; N]>) -> [(f6
     out
 }
 
+/// The (lo, hi) of the finite y of `points` (a thinned series: each pixel column keeps its
+/// lowest and highest point, so this is the extent of every sample it was thinned from);
+/// `(inf, -inf)` when there is none.
+pub fn y_extent<'a>(points: impl IntoIterator<Item = &'a (f64, f64)>) -> (f64, f64) {
+    let [e] = extents(points.into_iter().map(|p| [p.1]));
+    e
+}
+
 /// The (index, point) of the first, min, max and last points of one pixel column.
 type Kept = [(usize, (f64, f64)); 4];
 

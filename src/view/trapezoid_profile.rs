@@ -11,7 +11,7 @@
 
 use std::iter::Take;
 
-use crate::recipes::trapezoid_profile::{self, TrapParams, TrapSample, MAX_ROWS};
+use crate::recipes::trapezoid_profile::{self, TrapParams, MAX_ROWS};
 
 /// The phases of one profile, s; the velocity reached.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -59,13 +59,9 @@ pub fn phases(p: &TrapParams) -> Phases {
 /// The kernel's samples of valid `p` ([`trapezoid_profile::samples`]: s, v, a and the row
 /// count are the CSV's to the last bit), with the accumulated time left unrounded (the kernel
 /// prints `round(t, 5)` through a decimal formatting on every row, which costs more than the
-/// loop). At most [`MAX_ROWS`]; none for invalid `p`.
-pub fn samples(p: &TrapParams) -> Vec<TrapSample> {
-    rows(p).map(|(rows, _)| rows.collect()).unwrap_or_default()
-}
-
-/// [`samples`] one row at a time, and about how many ([`TrapParams::rows_estimate`]): what
-/// the page computes, in slices when there are many; none for invalid `p`.
+/// loop), one row at a time, at most [`MAX_ROWS`], and about how many
+/// ([`TrapParams::rows_estimate`]): what the page computes, in slices when there are many;
+/// none for invalid `p`.
 pub fn rows(p: &TrapParams) -> Option<(Take<trapezoid_profile::Samples>, u64)> {
     let rows = trapezoid_profile::samples(p).ok()?;
     Some((rows.take(MAX_ROWS as usize), p.rows_estimate()))
@@ -91,7 +87,7 @@ pub fn amax_from_corner(t: f64, v: f64) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::recipes::trapezoid_profile::compute;
+    use crate::recipes::trapezoid_profile::{compute, TrapSample};
 
     #[test]
     fn phases_match_the_kernel_s_profile() {
@@ -165,7 +161,8 @@ mod tests {
                 dt: 0.00007,
             },
         ] {
-            let (fast, kernel) = (samples(&p), compute(&p).unwrap().samples);
+            let fast: Vec<TrapSample> = rows(&p).unwrap().0.collect();
+            let kernel = compute(&p).unwrap().samples;
             assert_eq!(fast.len(), kernel.len(), "{p:?}");
             for (f, k) in fast.iter().zip(&kernel) {
                 let bits = |x: &TrapSample| [x.s, x.v, x.a].map(f64::to_bits);

@@ -29,8 +29,8 @@ use web_sys::Element;
 use super::canvas::{font_px, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
 use crate::view::plot::{
-    axis_title, decimate, legend_layout, log_axis_range, log_tick_label, nice_step, tick_label,
-    LinearScale,
+    axis_desc, axis_title, decimate, legend_layout, log_axis_range, log_tick_label, nice_step,
+    tick_label, LinearScale,
 };
 
 use glam::DVec2;
@@ -45,11 +45,7 @@ pub struct AxisSpec {
 
 impl AxisSpec {
     fn desc(&self) -> String {
-        if self.unit.is_empty() {
-            self.title.clone()
-        } else {
-            format!("{} [{}]", self.title, self.unit)
-        }
+        axis_desc(&self.title, &self.unit)
     }
 }
 

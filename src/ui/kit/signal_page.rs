@@ -185,12 +185,15 @@ pub trait SignalPage: Sized + 'static {
     fn readouts_markup() -> String {
         String::new()
     }
-    /// The plot and whatever else the page needs, from the mounted markup and controls.
+    /// The plot and whatever else the page needs, from the mounted markup and controls, and
+    /// the first run's rows (none when the run is bigger than [`LIVE_ROWS`]: the shell computes
+    /// it in slices once the page is mounted).
     fn prepare(
         ctx: &MountCtx,
         root: &Element,
         controls: &RecipeControls<Self::Params>,
         stage: &Element,
+        rows: Vec<Self::Row>,
     ) -> Result<Self::Parts, JsValue>;
     /// The page, from the shell and its parts.
     fn new(shell: Shell<Self::Params>, parts: Self::Parts) -> Self;
@@ -201,8 +204,8 @@ pub trait SignalPage: Sized + 'static {
     /// the recipe's own estimate); `None` when the kernel refuses `params`.
     #[allow(clippy::type_complexity)]
     fn kernel(params: &Self::Params) -> Option<(Box<dyn Iterator<Item = Self::Row>>, u64)>;
-    /// Shows the finished run of `params`: readouts, plots and URL; a change's run is also
-    /// announced (not the page's first).
+    /// Shows the finished run of `params`: readouts and plots; a change's run is also
+    /// announced (not the page's first). The shell writes the URL.
     fn show_run(&self, params: Self::Params, rows: Vec<Self::Row>, from: RunFrom);
     /// Everything again (mount, size, language, mode).
     fn redraw_all(&self);
@@ -271,20 +274,24 @@ fn timed_change<S: SignalPage>(page: &S, params: S::Params) {
 /// (within the input's frame), replacing a run still being computed; a bigger one is computed
 /// a slice per frame, then shown, or, while another big run is being computed, once that one
 /// is shown (only the latest such change is kept).
+/// The URL follows the arguments at once.
 pub fn change<S: SignalPage>(page: &S, params: S::Params) {
     start(page, params, RunFrom::Input);
+    page.shell().url.schedule();
 }
 
 fn start<S: SignalPage>(page: &S, params: S::Params, from: RunFrom) {
     match S::kernel(&params) {
         Some((source, total)) => run(page, params, source, total, from),
-        None => {
-            let shell = page.shell();
-            shell.pending.replace(None);
-            shell.slices.cancel();
-            dom::show(&shell.computing, false);
-        }
+        None => stop_slices(page.shell()),
     }
+}
+
+/// Drops the run being computed in slices, if any, and its line.
+fn stop_slices<T: Clone + 'static>(shell: &Shell<T>) {
+    shell.pending.replace(None);
+    shell.slices.cancel();
+    dom::show(&shell.computing, false);
 }
 
 /// Shows the run of `params` whose rows `source` yields (`total` of them): now, or computed
@@ -297,24 +304,20 @@ fn run<S: SignalPage>(
     from: RunFrom,
 ) {
     let shell = page.shell();
-    if total > LIVE_ROWS {
-        // A big run under way: it goes on and is shown, then the latest change is computed
-        // (a slider dragged over a million rows shows a run every few frames, not none).
-        if let Some(job) = shell
-            .pending
-            .borrow_mut()
-            .as_mut()
-            .and_then(|b| b.downcast_mut::<Sliced<S::Params, S::Row>>())
-        {
-            job.next = Some(params);
-            return;
-        }
-    }
-    shell.pending.replace(None);
     if total <= LIVE_ROWS {
-        shell.slices.cancel();
-        dom::show(&shell.computing, false);
+        stop_slices(shell);
         page.show_run(params, source.collect(), from);
+        return;
+    }
+    // A big run under way: it goes on and is shown, then the latest change is computed (a
+    // slider dragged over a million rows shows a run every few frames, not none).
+    if let Some(job) = shell
+        .pending
+        .borrow_mut()
+        .as_mut()
+        .and_then(|b| b.downcast_mut::<Sliced<S::Params, S::Row>>())
+    {
+        job.next = Some(params);
         return;
     }
     let from = if from == RunFrom::Mount {
@@ -333,15 +336,6 @@ fn run<S: SignalPage>(
     })));
     show_computing(shell, 0, total);
     shell.slices.request();
-}
-
-/// The first run of `params` for [`SignalPage::prepare`]: the rows now when there are at most
-/// [`LIVE_ROWS`], else none (the shell computes them in slices once the page is mounted).
-pub fn first_rows<S: SignalPage>(params: &S::Params) -> Vec<S::Row> {
-    match S::kernel(params) {
-        Some((source, total)) if total <= LIVE_ROWS => source.collect(),
-        _ => Vec::new(),
-    }
 }
 
 /// One slice of the pending run; shows it when it is complete, else asks for the next frame.
@@ -435,7 +429,14 @@ impl<S: SignalPage> Page for Signal<S> {
         let stage: Element = dom::find(&root, &format!("[data-{p}=\"stage\"]"), p)?;
         let readouts = Readouts::find(&root)?;
         let computing: Element = dom::find(&root, &format!("[data-{p}=\"computing\"]"), p)?;
-        let parts = S::prepare(&ctx, &root, &controls, &stage)?;
+        // The first run: its rows now, or (too big for the mount's task) in slices once the
+        // page is mounted.
+        let params = controls.value();
+        let (first, big) = match S::kernel(&params) {
+            Some((source, total)) if total <= LIVE_ROWS => (source.collect(), None),
+            big => (Vec::new(), big),
+        };
+        let parts = S::prepare(&ctx, &root, &controls, &stage, first)?;
         let page = Rc::new_cyclic(|me: &Weak<S>| {
             let mut scope = Scope::new();
             let url = UrlWriter::new(&mut scope, me, S::query);
@@ -475,9 +476,7 @@ impl<S: SignalPage> Page for Signal<S> {
         let t0 = now_ms();
         page.redraw_all();
         record_frame_ms(now_ms() - t0);
-        // A first run too big for the mount's task (`first_rows` left it empty): in slices.
-        let params = page.shell().controls.value();
-        if let Some((source, total)) = S::kernel(&params).filter(|(_, n)| *n > LIVE_ROWS) {
+        if let Some((source, total)) = big {
             run(&*page, params, source, total, RunFrom::Mount);
         }
         Ok(Signal(page))

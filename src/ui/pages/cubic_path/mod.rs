@@ -22,9 +22,7 @@ use crate::recipes::cubic_path::{
 };
 use crate::ui::ctx;
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{
-    change, first_rows, Fit, RunFrom, Shell, Signal, SignalPage, SignalSpec,
-};
+use crate::ui::kit::signal_page::{change, Fit, RunFrom, Shell, Signal, SignalPage, SignalSpec};
 use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::view::cubic_path::{readouts as numbers, Peak};
 use crate::view::signal::{sig, snap, Slider};
@@ -142,9 +140,10 @@ impl SignalPage for CubicPage {
         root: &Element,
         controls: &RecipeControls<CubicParams>,
         stage: &Element,
+        rows: Vec<CubicSample>,
     ) -> Result<Parts, JsValue> {
         let params = controls.value();
-        let path = path_of(&params, first_rows::<CubicPage>(&params));
+        let path = path_of(&params, rows);
         let overlays = OVERLAYS.map(|o| ctx.get(o) == Some("1"));
         for (o, on) in OVERLAYS.iter().zip(overlays) {
             crate::ui::dom::find::<HtmlInputElement>(root, &format!("[data-overlay=\"{o}\"]"), P)?
@@ -213,7 +212,6 @@ impl SignalPage for CubicPage {
         let fit = Fit::for_change(dragging, &self.shell.controls);
         let peak = self.redraw(fit, false).map_or(0.0, |p| p.value);
         if from == RunFrom::Mount {
-            self.shell.url.schedule();
             return;
         }
         self.shell.readouts.announce(&ctx::t_strings(
@@ -224,7 +222,6 @@ impl SignalPage for CubicPage {
                 ("peak", sig(peak, 4)),
             ],
         ));
-        self.shell.url.schedule();
     }
 
     fn redraw_all(&self) {

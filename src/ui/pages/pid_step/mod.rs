@@ -19,9 +19,7 @@ use crate::error::RecipeWarning;
 use crate::pyfmt::py_round;
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{
-    change, first_rows, RunFrom, Shell, Signal, SignalPage, SignalSpec,
-};
+use crate::ui::kit::signal_page::{change, RunFrom, Shell, Signal, SignalPage, SignalSpec};
 use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
@@ -167,10 +165,10 @@ impl SignalPage for PidPage {
     fn prepare(
         _ctx: &MountCtx,
         root: &Element,
-        controls: &RecipeControls<PidParams>,
+        _controls: &RecipeControls<PidParams>,
         stage: &Element,
+        rows: Vec<PidSample>,
     ) -> Result<Parts, JsValue> {
-        let rows = first_rows::<PidPage>(&controls.value());
         Ok(Parts {
             plots: plots::Plots::new(stage)?,
             warning: dom::find(root, &format!("[data-{P}=\"warning\"]"), P)?,
@@ -238,7 +236,6 @@ impl SignalPage for PidPage {
             )
         };
         if from == RunFrom::Mount {
-            self.shell.url.schedule();
             return;
         }
         self.shell.readouts.announce(&ctx::t_strings(
@@ -249,7 +246,6 @@ impl SignalPage for PidPage {
                 ("settling", or_none(f.settling_time, "pid-live-seconds")),
             ],
         ));
-        self.shell.url.schedule();
     }
 
     fn redraw_all(&self) {

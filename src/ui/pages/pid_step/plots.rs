@@ -16,7 +16,7 @@ use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec, SeriesSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::ui::kit::signal_page::{axis, series, SignalPlot};
 use crate::view::plot::auto_range;
-use crate::view::signal::{extents, nice_range};
+use crate::view::signal::{nice_range, y_extent};
 
 const C_Y: (u8, u8, u8) = (26, 77, 143);
 const C_R: (u8, u8, u8) = (194, 65, 12);
@@ -48,7 +48,7 @@ struct GhostCache {
 /// run plots up to where it broke); `(inf, -inf)` when there is none.
 fn extent(points: &[(f64, f64)]) -> (f64, f64) {
     let clamp = |v: f64| v.clamp(-1e12, 1e12);
-    let [(lo, hi)] = extents(points.iter().map(|p| [p.1]));
+    let (lo, hi) = y_extent(points);
     (clamp(lo), clamp(hi))
 }
 

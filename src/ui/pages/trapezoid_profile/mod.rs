@@ -18,9 +18,7 @@ use web_sys::{Element, KeyboardEvent};
 
 use crate::recipes::trapezoid_profile::{params_from_args, TrapParams, TrapSample, INFO};
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{
-    change, first_rows, Fit, RunFrom, Shell, Signal, SignalPage, SignalSpec,
-};
+use crate::ui::kit::signal_page::{change, Fit, RunFrom, Shell, Signal, SignalPage, SignalSpec};
 use crate::ui::page::{MountCtx, PageDef, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
@@ -141,12 +139,13 @@ impl SignalPage for TrapPage {
         root: &Element,
         controls: &RecipeControls<TrapParams>,
         stage: &Element,
+        rows: Vec<TrapSample>,
     ) -> Result<Parts, JsValue> {
         let params = controls.value();
         Ok(Parts {
             plots: plots::Plots::new(stage)?,
             triangle_note: dom::find(root, &format!("[data-{P}=\"triangle\"]"), P)?,
-            profile: (params, first_rows::<TrapPage>(&params)),
+            profile: (params, rows),
         })
     }
 
@@ -181,7 +180,6 @@ impl SignalPage for TrapPage {
         let ph = phases(&params);
         let (total, peak) = (ph.t_total, ph.v_peak);
         if from == RunFrom::Mount {
-            self.shell.url.schedule();
             return;
         }
         self.shell.readouts.announce_settled(300.0, move || {
@@ -194,7 +192,6 @@ impl SignalPage for TrapPage {
                 ],
             )
         });
-        self.shell.url.schedule();
     }
 
     fn redraw_all(&self) {

@@ -22,7 +22,7 @@ use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::ui::kit::signal_page::{self, axis, draw_handle, reach, series, Fit, SignalPlot};
 use crate::view::plot::{auto_range, place_labels};
-use crate::view::signal::{extents, held_range, held_ranges, nice_range, snap};
+use crate::view::signal::{held_range, held_ranges, nice_range, snap, y_extent};
 use crate::view::trapezoid_profile::{amax_from_corner, bands, phases, Phases};
 
 const C_LINE: (u8, u8, u8) = (26, 77, 143);
@@ -170,10 +170,7 @@ impl Plots {
         let rows = samples.iter().map(|s| (s.t, [s.s, s.v, s.a]));
         let columns = thinned_columns(&self.sp.plot, x_range, rows);
         if fit != Fit::Keep {
-            let [s, v, a] = std::array::from_fn(|k| {
-                let [e] = extents(columns[k].iter().map(|p| [p.1]));
-                e
-            });
+            let [s, v, a] = std::array::from_fn(|k| y_extent(&columns[k]));
             let r = |(lo, hi): (f64, f64), with: f64| {
                 nice_range(auto_range([lo, hi, 0.0, with], 0.08).unwrap_or((-1.0, 1.0)))
             };

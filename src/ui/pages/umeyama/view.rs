@@ -196,6 +196,13 @@ fn discs(c: &CanvasRenderingContext2d, centres: impl Iterator<Item = DVec2>, r: 
 }
 
 /// Stroked circles (the aligned points, the centred X).
+/// The selection ring of radius `r` around `at`: amber, edged in dark so it stands out on
+/// the light ground (3:1 and more).
+fn selection_ring(c: &CanvasRenderingContext2d, at: DVec2, r: f64, lw: f64) {
+    ring(c, at, r, SELECT, 2.5 * lw);
+    ring(c, at, r + 1.75 * lw, SELECT_EDGE, lw);
+}
+
 fn rings(
     c: &CanvasRenderingContext2d,
     centres: impl Iterator<Item = DVec2>,
@@ -479,9 +486,7 @@ impl SceneView {
             _ => None,
         };
         if let Some(p) = selected_point {
-            // Amber, edged in dark so it stands out on the light ground (3:1 and more).
-            ring(c, f.px(*p), r + 4.0 * lw, SELECT, 2.5 * lw);
-            ring(c, f.px(*p), r + 5.75 * lw, SELECT_EDGE, lw);
+            selection_ring(c, f.px(*p), r + 4.0 * lw, lw);
         }
         if let Some(Grab::Point(i)) = marks.hover {
             if marks.selected != Some(Grab::Point(i)) {
@@ -505,15 +510,14 @@ impl SceneView {
         let hover_w = |g: Grab| if marks.hover == Some(g) { 3.5 } else { 2.0 };
         diamond(c, t, 8.0 * lw, TRUTH, hover_w(Grab::Translation) * lw);
         ring(c, rh, 6.0 * lw, TRUTH, hover_w(Grab::Rotation) * lw);
-        // The selected handle: the points' amber ring, edged in dark.
+        // The selected handle: the points' ring.
         let selected_handle = match marks.selected {
             Some(Grab::Translation) => Some((t, 8.0)),
             Some(Grab::Rotation) => Some((rh, 6.0)),
             _ => None,
         };
         if let Some((at, size)) = selected_handle {
-            ring(c, at, (size + 5.0) * lw, SELECT, 2.5 * lw);
-            ring(c, at, (size + 6.75) * lw, SELECT_EDGE, lw);
+            selection_ring(c, at, (size + 5.0) * lw, lw);
         }
         self.label_font(ink);
         self.label(c, t, "t", TRUTH);
