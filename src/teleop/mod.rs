@@ -14,7 +14,7 @@
 //! clock and no hash-map order is involved, so a start state plus a command stream replays
 //! exactly.
 
-// Each of this kernel's files warns about missing docs itself (`session.rs` is the page's).
+// Each of this kernel's files warns about missing docs itself (`session` is the page's).
 pub mod arm;
 pub mod control;
 pub mod episode;
