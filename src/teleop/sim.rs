@@ -1,37 +1,5 @@
 //! One 10 ms step of the Robot Pilot scene, and the state it changes.
 //!
-//! A step, in order:
-//! 1. the operator's [`Command`] (axes clamped to [−1, 1], NaN → 0) enters the latency queue
-//!    and the command `latency_steps` steps old leaves it (the queue starts full of idle
-//!    commands with the start gripper state), so a command acts exactly
-//!    `latency_steps` steps after it was given;
-//! 2. with `noise_sigma > 0`, `sigma × N(0, 1)` is added to each of its three axes (three
-//!    draws per step, dx then dz then dphi, from `np.random.default_rng(noise_seed)`);
-//! 3. the task step `Δx = (dx v, dz v, dphi ω) × DT` (`v`, `ω`: the speeds of
-//!    [`SceneConfig::tip_speed_m_per_s`] and [`SceneConfig::turn_speed_rad_per_s`]) becomes a
-//!    joint step by the IK method ([`super::control`]);
-//! 4. joint speed limits scale the whole step down (its direction is kept) and
-//!    [`Event::SpeedLimit`] names the joint that limited it; joint position limits then clamp
-//!    each joint ([`Event::JointLimit`]);
-//! 5. if the new pose puts a link, a finger or the carried block into the table or an
-//!    obstacle, or a link (1–3, not a finger) into the block lying at rest (on the table or an
-//!    obstacle, not grasped), the arm does not move this step ([`Event::Collision`]): contact
-//!    stops it, as a real arm's safety stop would. Touching the resting block with a link is a
-//!    contact, as the Academy's task rules count it; pushing it is not modelled (the block does
-//!    not move). The fingers are left to the gripper rules of step 6 (a grasp within the
-//!    tolerances, else a miss), and a link the block came to rest against may move away from it
-//!    (a move counts only when it brings the link closer);
-//! 6. the gripper follows the command: closing with the block's centre within
-//!    `GRASP_TOLERANCE_M` of the tip and the fingers within `GRASP_ANGLE_TOLERANCE_RAD` of a
-//!    pair of faces grasps it ([`Event::Grasp`]), closing on nothing is [`Event::GraspMiss`];
-//!    opening lets go ([`Event::Release`], and [`Event::Drop`] when the block's centre is not
-//!    over the goal region and its bottom is more than `PLACE_HEIGHT_M` above the surface
-//!    under it: a block set down outside the goal is a goal miss, not a drop); a released block falls (g = 9.81 m/s², explicit Euler) onto the
-//!    table or an obstacle top and settles face down;
-//! 7. the task's goal condition is counted ([`SceneConfig::success_steps`] consecutive steps
-//!    → [`Event::TargetReached`] / [`Event::Success`]), then the time box
-//!    ([`Event::Timeout`]).
-//!
 //! Events of a condition that lasts (limits, collisions, singularity) are reported once, when
 //! the condition starts.
 
@@ -59,8 +27,8 @@ pub const GRAVITY: f64 = 9.81;
 /// IK jitters along it).
 pub const LIMIT_REARM_RAD: f64 = 0.01;
 /// A block let go with its bottom at most this high above the surface under it is set
-/// down, not dropped: outside the goal that is a goal miss (see [`super::episode::proposed_label`]),
-/// not [`Event::Drop`], m.
+/// down, not dropped: outside the goal that is a goal miss (see
+/// [`super::episode::proposed_label`]), not [`Event::Drop`], m.
 pub const PLACE_HEIGHT_M: f64 = 0.005;
 /// Below this manipulability, relative to `l1 l2` (|sin q2| < 0.1, q2 within 5.7° of
 /// stretched out or folded), a commanded motion reports [`Event::Singularity`].
@@ -447,8 +415,37 @@ impl Sim {
         }
     }
 
-    /// Advances one 10 ms step (see the module docs). After the episode ended, nothing
-    /// changes and the record has no events.
+    /// Advances one 10 ms step; after the episode ended, nothing changes and the record has
+    /// no events. A step, in order:
+    /// 1. the operator's [`Command`] (axes clamped to [−1, 1], NaN → 0) enters the latency queue
+    ///    and the command `latency_steps` steps old leaves it (the queue starts full of idle
+    ///    commands with the start gripper state), so a command acts exactly `latency_steps` steps
+    ///    after it was given;
+    /// 2. with `noise_sigma > 0`, `sigma × N(0, 1)` is added to each of its three axes (three draws
+    ///    per step, dx then dz then dphi, from `np.random.default_rng(noise_seed)`);
+    /// 3. the task step `Δx = (dx v, dz v, dphi ω) × DT` (`v`, `ω`: the speeds of
+    ///    [`SceneConfig::tip_speed_m_per_s`] and [`SceneConfig::turn_speed_rad_per_s`]) becomes a
+    ///    joint step by the IK method ([`super::control`]);
+    /// 4. joint speed limits scale the whole step down (its direction is kept) and
+    ///    [`Event::SpeedLimit`] names the joint that limited it; joint position limits then clamp
+    ///    each joint ([`Event::JointLimit`]);
+    /// 5. if the new pose puts a link, a finger or the carried block into the table or an obstacle,
+    ///    or a link (1–3, not a finger) into the block lying at rest (on the table or an obstacle,
+    ///    not grasped), the arm does not move this step ([`Event::Collision`]): contact stops it,
+    ///    as a real arm's safety stop would. Touching the resting block with a link is a contact,
+    ///    as the Academy's task rules count it; pushing it is not modelled (the block does not
+    ///    move). The fingers are left to the gripper rules of step 6 (a grasp within the
+    ///    tolerances, else a miss), and a link the block came to rest against may move away from it
+    ///    (a move counts only when it brings the link closer);
+    /// 6. the gripper follows the command: closing with the block's centre within
+    ///    `GRASP_TOLERANCE_M` of the tip and the fingers within `GRASP_ANGLE_TOLERANCE_RAD` of a
+    ///    pair of faces grasps it ([`Event::Grasp`]), closing on nothing is [`Event::GraspMiss`];
+    ///    opening lets go ([`Event::Release`], and [`Event::Drop`] when the block's centre is not
+    ///    over the goal region and its bottom is more than `PLACE_HEIGHT_M` above the surface under
+    ///    it: a block set down outside the goal is a goal miss, not a drop); a released block falls
+    ///    (g = 9.81 m/s², explicit Euler) onto the table or an obstacle top and settles face down;
+    /// 7. the task's goal condition is counted ([`SceneConfig::success_steps`] consecutive steps →
+    ///    [`Event::TargetReached`] / [`Event::Success`]), then the time box ([`Event::Timeout`]).
     pub fn step(&mut self, cmd: &Command) -> StepRecord {
         let cmd = cmd.sanitized();
         if self.state.done.is_some() {

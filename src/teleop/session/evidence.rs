@@ -400,10 +400,12 @@ pub fn check_evidence(doc: &Value) -> Result<(), EvidenceProblem> {
     Ok(())
 }
 
-/// Whether `text` is an RFC 3339 date-time with a `T` between date and time, as browsers
-/// write it: `YYYY-MM-DDTHH:MM:SS[.fff](Z|±HH:MM)`, a real date and time of day.
+/// Whether `text` is an RFC 3339 date-time (the schema's `format: date-time`) in the ISO 8601
+/// shape browsers write, `YYYY-MM-DDTHH:MM:SS[.fff](Z|±HH:MM)`: a date and a time of day that
+/// exist, and `T` (or `t`) between them, where RFC 3339 would also let a space or any other
+/// character stand.
 pub fn is_iso8601(text: &str) -> bool {
-    text.as_bytes().get(10) == Some(&b'T')
+    matches!(text.as_bytes().get(10), Some(b'T' | b't'))
         && time::OffsetDateTime::parse(text, &time::format_description::well_known::Rfc3339).is_ok()
 }
 

@@ -188,9 +188,9 @@ impl SessionLoader {
         })
     }
 
-    /// Simulates up to `max_steps` more steps. `Some(true)` when every episode is done, `Some(false)` when
-    /// there is more, `None` if an episode does not simulate again (refused configuration, or
-    /// a start state that is not the configuration's).
+    /// Simulates up to `max_steps` more steps. `Some(true)` when every episode is done,
+    /// `Some(false)` when there is more, `None` if an episode does not simulate again (refused
+    /// configuration, or a start state that is not the configuration's).
     pub fn run(&mut self, max_steps: usize) -> Option<bool> {
         let mut budget = max_steps;
         loop {

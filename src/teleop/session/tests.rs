@@ -297,6 +297,14 @@ fn iso_dates() {
     ] {
         assert!(!is_iso8601(bad), "{bad}");
     }
+    // The shape is not enough: the date and the time of day must exist.
+    for impossible in [
+        "2026-13-02T05:00:00Z",
+        "2026-02-30T05:00:00Z",
+        "2026-12-02T25:00:00Z",
+    ] {
+        assert!(!is_iso8601(impossible), "{impossible}");
+    }
 }
 
 #[test]
