@@ -53,12 +53,7 @@ impl Session {
     /// `teleop_session_evidence.json` (pretty-printed, keys in the schema's order), with
     /// `ended_at` as the end time when the session has none yet.
     pub fn evidence(&self, ended_at: &str) -> String {
-        let artifacts: Vec<Artifact> = self
-            .episodes
-            .iter()
-            .map(|e| Artifact::of(&episode_file_name(e.number), &e.csv()))
-            .collect();
-        self.evidence_with(ended_at, &artifacts)
+        self.evidence_with(ended_at, &self.episode_artifacts())
     }
 
     /// The evidence given the artifacts of the episodes' CSVs (one per episode, in order),
@@ -73,12 +68,15 @@ impl Session {
 
     /// The evidence as a JSON value.
     pub fn evidence_value(&self, ended_at: &str) -> Value {
-        let artifacts: Vec<Artifact> = self
-            .episodes
+        self.evidence_value_with(ended_at, &self.episode_artifacts())
+    }
+
+    /// The artifacts of the episodes' time series, in order.
+    fn episode_artifacts(&self) -> Vec<Artifact> {
+        self.episodes
             .iter()
             .map(|e| Artifact::of(&episode_file_name(e.number), &e.csv()))
-            .collect();
-        self.evidence_value_with(ended_at, &artifacts)
+            .collect()
     }
 
     /// The evidence as a JSON value, given the episodes' artifacts (see

@@ -5,8 +5,8 @@
 //! `teleop_session_evidence.json`. Plain Rust, no web-sys, no clock (the page passes the
 //! RFC 3339 times in).
 //!
-//! - `practice`: the [`Session`], its modules, preflight and labelled [`EpisodeEntry`]s;
-//! - `summary`: its figures ([`Summary`]) and the repeatability comparison;
+//! - `practice`: the [`Session`], its modules, preflight and labelled [`EpisodeEntry`]s, its
+//!   figures ([`Summary`]) and the repeatability comparison;
 //! - `stored`: the stored form (localStorage) and the sliced [`SessionLoader`];
 //! - `table`: `teleop_episodes.csv`, written and read back;
 //! - `evidence`: the evidence JSON, its SHA-256 artifacts and [`check_evidence`];
@@ -16,7 +16,6 @@ mod evidence;
 mod files;
 mod practice;
 mod stored;
-mod summary;
 mod table;
 
 pub use evidence::{
@@ -25,13 +24,13 @@ pub use evidence::{
 };
 pub use files::SessionError;
 pub use practice::{
-    category_from_id, clean_pilot_id, label_from_id, label_id, EpisodeEntry, InputDevice, Module,
-    Preflight, Session, CATEGORIES, PILOT_ID_MAX, RECORD_TARGET,
+    category_from_id, clean_pilot_id, compare, label_from_id, label_id, ComparisonRow,
+    EpisodeEntry, InputDevice, Module, Preflight, Session, Summary, CATEGORIES, PILOT_ID_MAX,
+    RECORD_TARGET,
 };
 pub use stored::{
     run_length, SessionLoader, StoredEntry, StoredEpisode, StoredSession, STORED_VERSION,
 };
-pub use summary::{compare, ComparisonRow, Summary};
 pub use table::{csv_text, episode_file_name, EPISODES_HEADER, EPISODES_NAME};
 
 #[cfg(test)]
