@@ -37,6 +37,25 @@ fn events(episode: &Episode) -> Vec<(u64, Event)> {
         .collect()
 }
 
+/// The one collision of `episode` and its step (there must be exactly one).
+fn only_collision(episode: &Episode) -> (u64, Event) {
+    let ev = events(episode);
+    let collisions: Vec<_> = ev
+        .iter()
+        .filter(|(_, e)| matches!(e, Event::Collision { .. }))
+        .collect();
+    assert_eq!(collisions.len(), 1, "{ev:?}");
+    *collisions[0]
+}
+
+/// Checks that the arm of `s` moves up at once, without an event.
+fn moves_up_at_once(s: &mut Sim) {
+    let before = s.state().q;
+    let r = s.step(&UP);
+    assert_ne!(r.q, before);
+    assert_eq!(r.events, vec![]);
+}
+
 /// The pick-place plan up to (and including) the waypoint that closes the gripper.
 fn grasp_plan(config: &SceneConfig) -> Vec<Waypoint> {
     plan(config).into_iter().take(3).collect()
@@ -134,13 +153,7 @@ fn setting_the_block_down_outside_the_goal_is_no_drop() {
 fn driving_into_the_table_is_one_collision_and_the_arm_stops() {
     let config = SceneConfig::default();
     let episode = Episode::record(config, &held_for(DOWN, 300)).unwrap();
-    let ev = events(&episode);
-    let collisions: Vec<_> = ev
-        .iter()
-        .filter(|(_, e)| matches!(e, Event::Collision { .. }))
-        .collect();
-    assert_eq!(collisions.len(), 1, "{ev:?}");
-    let (step, event) = *collisions[0];
+    let (step, event) = only_collision(&episode);
     assert_eq!(event, Event::Collision { link: 3 });
     // From then on the arm does not move, and nothing reaches below the table.
     let stopped = &episode.records[step as usize - 1];
@@ -152,10 +165,7 @@ fn driving_into_the_table_is_one_collision_and_the_arm_stops() {
     for c in held_for(DOWN, 300) {
         s.step(&c);
     }
-    let before = s.state().q;
-    let r = s.step(&UP);
-    assert_ne!(r.q, before);
-    assert_eq!(r.events, vec![]);
+    moves_up_at_once(&mut s);
 }
 
 #[test]
@@ -180,13 +190,8 @@ fn a_link_touching_the_resting_block_is_a_collision_and_the_block_stays() {
         fly(config.clone(), vec![above, press], 1500).unwrap()
     };
     let episode = descend(bx);
+    assert_eq!(only_collision(&episode).1, Event::Collision { link: 3 });
     let ev = events(&episode);
-    let collisions: Vec<_> = ev
-        .iter()
-        .filter(|(_, e)| matches!(e, Event::Collision { .. }))
-        .collect();
-    assert_eq!(collisions.len(), 1, "{ev:?}");
-    assert_eq!(collisions[0].1, Event::Collision { link: 3 });
     assert!(!ev
         .iter()
         .any(|(_, e)| *e == Event::Grasp || *e == Event::GraspMiss));
@@ -215,10 +220,7 @@ fn a_link_touching_the_resting_block_is_a_collision_and_the_block_stays() {
     for c in &episode.commands {
         s.step(c);
     }
-    let before = s.state().q;
-    let r = s.step(&UP);
-    assert_ne!(r.q, before);
-    assert_eq!(r.events, vec![]);
+    moves_up_at_once(&mut s);
 }
 
 #[test]
