@@ -6,6 +6,7 @@
 //! something in B: through `crate::…`, `super::…` or `self::…`, or a parent naming its child
 //! module (`child::Item`). A child that uses its parent's items while the parent uses the child
 //! is a circle too; a module's own `mod tests` reaching it by `super::` is not.
+#![cfg(not(target_arch = "wasm32"))]
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
