@@ -172,9 +172,11 @@ function checkEvidence(doc) {
   for (const v of Object.values(e)) assert.ok(Number.isInteger(v) && v >= 0);
   assert.equal(e.successful + e.failed, e.attempted);
   assert.ok(Array.isArray(doc.safetyEvents));
+  for (const ev of doc.safetyEvents) assert.equal(typeof ev, 'string');
   assert.ok(Array.isArray(doc.dataArtifacts));
   for (const a of doc.dataArtifacts) {
-    assert.equal(typeof a.path, 'string');
+    assert.equal(typeof a.type, 'string');
+    assert.equal(typeof a.uriOrRef, 'string');
     assert.match(a.sha256, /^[0-9a-f]{64}$/);
   }
   for (const [k, v] of Object.entries(doc.metrics)) {
@@ -235,7 +237,7 @@ test('a scripted session: preflight, an episode recorded, labelled, exported; bs
     assert.equal(doc.inputDevice, 'keyboard');
     assert.equal(doc.metrics['failures.collision'], 1);
     assert.equal(doc.metrics.preflightResetVerified, true);
-    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.path, a.sha256]));
+    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.uriOrRef, a.sha256]));
     assert.equal(listed['teleop_episode_1.csv'], sha256(episodeCsv));
     assert.equal(listed['teleop_episodes.csv'], sha256(Buffer.from(table.join('\n') + '\n')));
 
@@ -546,7 +548,7 @@ test('60 s episodes export in slices: progress shown, no task of 100 ms, bsv tel
     const doc = JSON.parse(evidence.toString('utf8'));
     checkEvidence(doc);
     assert.equal(doc.episodes.attempted, 4);
-    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.path, a]));
+    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.uriOrRef, a]));
     assert.equal(listed['teleop_episode_1.csv'].sha256, sha256(csv));
     assert.equal(listed['teleop_episode_1.csv'].bytes, csv.length);
     assert.equal(listed['teleop_episode_4.csv'].sha256, sha256(csv), 'the same commands, the same bytes');
@@ -690,7 +692,7 @@ test('a second session after an exported first: the comparison keeps the first, 
     const second = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
     checkEvidence(second);
     assert.equal(second.episodes.attempted, 1);
-    assert.deepEqual(second.dataArtifacts.map((a) => a.path), ['teleop_episodes.csv', 'teleop_episode_1.csv']);
+    assert.deepEqual(second.dataArtifacts.map((a) => a.uriOrRef), ['teleop_episodes.csv', 'teleop_episode_1.csv']);
     assert.equal(second.dataArtifacts[1].sha256, sha256(secondCsv));
     assert.equal(second.pilotId, first.pilotId);
     assert.ok(Date.parse(second.startedAt) >= Date.parse(first.endedAt), `${second.startedAt} after ${first.endedAt}`);
@@ -711,7 +713,7 @@ test('a second session after an exported first: the comparison keeps the first, 
     assert.equal(await cell('attempted', 3), '0');
     const third = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
     assert.equal(third.episodes.attempted, 0);
-    assert.deepEqual(third.dataArtifacts.map((a) => a.path), ['teleop_episodes.csv']);
+    assert.deepEqual(third.dataArtifacts.map((a) => a.uriOrRef), ['teleop_episodes.csv']);
     assert.deepEqual(errors, []);
   } finally {
     rmSync(dir, { recursive: true, force: true });

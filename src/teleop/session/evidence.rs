@@ -5,10 +5,11 @@
 //!   `failed` the rest (FAILURE, PARTIAL, interrupted, unlabelled): a session's evidence never
 //!   hides an attempt. `recoveryEpisodes` counts SUCCESS episodes in which a failure event
 //!   (grasp miss, drop, collision) happened before the success: the pilot recovered.
-//! - `safetyEvents` lists every collision of a recorded episode (episode, step, time, link):
-//!   on a real arm those are the contacts a reviewer must see.
-//! - `dataArtifacts` lists `teleop_episodes.csv` and every `teleop_episode_<n>.csv` with the
-//!   SHA-256 of its exact bytes ([`sha256_hex`]).
+//! - `safetyEvents` lists every collision of a recorded episode as one line of text (the
+//!   schema's items are strings): `collision: episode 3, step 120, t 1.2 s, link forearm`.
+//! - `dataArtifacts` lists `teleop_episodes.csv` and every `teleop_episode_<n>.csv`: `type`
+//!   ([`TABLE_TYPE`], [`EPISODE_TYPE`]), `uriOrRef` (the file's name), the SHA-256 of its
+//!   exact bytes ([`sha256_hex`]), and `mediaType` and `bytes`, which the schema allows.
 //! - `startedAt` and `endedAt` are RFC 3339 date-times (the schema's `format: date-time`).
 
 use serde_json::{json, Map, Value};
@@ -26,6 +27,12 @@ pub const RUNTIME: &str = "bsv-playground";
 
 /// `embodiment` of the evidence: our simulated arm, not an SO-101.
 pub const EMBODIMENT: &str = "bsv-planar-3r-gripper-sim";
+
+/// `type` of the per-episode summary table among the `dataArtifacts`.
+pub const TABLE_TYPE: &str = "episode-table";
+
+/// `type` of an episode's time series among the `dataArtifacts`.
+pub const EPISODE_TYPE: &str = "episode-timeseries";
 
 /// One file of the evidence's `dataArtifacts`: its name, size and SHA-256.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -85,14 +92,15 @@ impl Session {
         let s = self.summary();
         let episodes_csv = self.episodes_csv();
         let table = Artifact::of(EPISODES_NAME, &episodes_csv);
-        let artifacts: Vec<Value> = std::iter::once(&table)
-            .chain(episode_artifacts)
-            .map(|a| {
+        let artifacts: Vec<Value> = std::iter::once((TABLE_TYPE, &table))
+            .chain(episode_artifacts.iter().map(|a| (EPISODE_TYPE, a)))
+            .map(|(kind, a)| {
                 json!({
-                    "path": a.path,
+                    "type": kind,
+                    "uriOrRef": a.path,
+                    "sha256": a.sha256,
                     "mediaType": "text/csv",
                     "bytes": a.bytes,
-                    "sha256": a.sha256,
                 })
             })
             .collect();
@@ -101,13 +109,13 @@ impl Session {
             for (step, r) in e.episode.records.iter().enumerate() {
                 for ev in &r.events {
                     if let Event::Collision { link } = ev {
-                        safety.push(json!({
-                            "episode": e.number,
-                            "step": step + 1,
-                            "tS": r.t_s,
-                            "type": ev.id(),
-                            "link": link,
-                        }));
+                        safety.push(Value::String(format!(
+                            "{}: episode {}, step {}, t {:.2} s, link {link}",
+                            ev.id(),
+                            e.number,
+                            step + 1,
+                            r.t_s,
+                        )));
                     }
                 }
             }
@@ -349,9 +357,14 @@ pub fn check_evidence(doc: &Value) -> Result<(), EvidenceProblem> {
     if counts[1] + counts[2] != counts[0] || counts[3] > counts[1] {
         return Err(value_err("episodes"));
     }
-    if !field("safetyEvents")?.is_array() {
-        return Err(EvidenceProblem::Type {
+    let events = field("safetyEvents")?
+        .as_array()
+        .ok_or_else(|| EvidenceProblem::Type {
             field: "safetyEvents".into(),
+        })?;
+    if let Some(i) = events.iter().position(|e| !e.is_string()) {
+        return Err(EvidenceProblem::Type {
+            field: format!("safetyEvents[{i}]"),
         });
     }
     let artifacts = field("dataArtifacts")?
@@ -360,11 +373,12 @@ pub fn check_evidence(doc: &Value) -> Result<(), EvidenceProblem> {
             field: "dataArtifacts".into(),
         })?;
     for (i, a) in artifacts.iter().enumerate() {
-        let path_ok = a["path"].as_str().is_some_and(|p| !p.is_empty());
-        if !path_ok {
-            return Err(EvidenceProblem::Missing {
-                field: format!("dataArtifacts[{i}].path"),
-            });
+        for key in ["type", "uriOrRef"] {
+            if a[key].as_str().is_none_or(str::is_empty) {
+                return Err(EvidenceProblem::Missing {
+                    field: format!("dataArtifacts[{i}].{key}"),
+                });
+            }
         }
         let sha_ok = a["sha256"].as_str().is_some_and(|s| {
             s.len() == 64

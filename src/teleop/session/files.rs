@@ -103,7 +103,7 @@ impl Session {
         let listed = |name: &str| -> Option<String> {
             evidence["dataArtifacts"].as_array().and_then(|a| {
                 a.iter()
-                    .find(|x| x["path"].as_str() == Some(name))
+                    .find(|x| x["uriOrRef"].as_str() == Some(name))
                     .and_then(|x| x["sha256"].as_str())
                     .map(str::to_string)
             })

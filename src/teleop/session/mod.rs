@@ -20,7 +20,7 @@ mod table;
 
 pub use evidence::{
     check_evidence, is_iso8601, sha256_hex, Artifact, EvidenceProblem, Sha256, EMBODIMENT,
-    EVIDENCE_KEYS, EVIDENCE_NAME, RUNTIME,
+    EPISODE_TYPE, EVIDENCE_KEYS, EVIDENCE_NAME, RUNTIME, TABLE_TYPE,
 };
 pub use files::SessionError;
 pub use practice::{

@@ -138,8 +138,14 @@ fn evidence_follows_the_schema_field_by_field() {
     for (name, text) in s.files(END).iter().skip(1) {
         let a = artifacts
             .iter()
-            .find(|a| a["path"] == name.as_str())
+            .find(|a| a["uriOrRef"] == name.as_str())
             .expect("listed");
+        let kind = if name == EPISODES_NAME {
+            TABLE_TYPE
+        } else {
+            EPISODE_TYPE
+        };
+        assert_eq!(a["type"], kind);
         assert_eq!(a["sha256"], sha256_hex(text.as_bytes()));
         assert_eq!(a["bytes"], text.len());
     }
@@ -156,9 +162,10 @@ fn evidence_follows_the_schema_field_by_field() {
     assert_eq!(m["ikMethod"], "dls");
     // The dive into the table is a safety event.
     let safety = doc["safetyEvents"].as_array().expect("array");
-    assert!(safety
-        .iter()
-        .any(|e| e["episode"] == 3 && e["type"] == "collision"));
+    assert!(safety.iter().all(Value::is_string));
+    assert!(safety.iter().any(|e| e
+        .as_str()
+        .is_some_and(|t| t.starts_with("collision: episode 3, step "))));
 }
 
 #[test]
@@ -253,6 +260,24 @@ fn each_schema_rule_names_its_field() {
         }),
         EvidenceProblem::Value {
             field: field("dataArtifacts[0].sha256")
+        }
+    );
+    assert_eq!(
+        broken(&|d| {
+            d["dataArtifacts"][1]
+                .as_object_mut()
+                .map(|a| a.remove("uriOrRef"));
+        }),
+        EvidenceProblem::Missing {
+            field: field("dataArtifacts[1].uriOrRef")
+        }
+    );
+    assert_eq!(
+        broken(&|d| {
+            d["safetyEvents"] = json!([{"episode": 3}]);
+        }),
+        EvidenceProblem::Type {
+            field: field("safetyEvents[0]")
         }
     );
     assert_eq!(
@@ -489,4 +514,73 @@ fn modules_in_order() {
     assert_eq!(Module::from_id("record-ten"), Some(Module::RecordTen));
     assert!(Module::RecordTen.records() && !Module::BasicControl.records());
     assert_eq!(clean_pilot_id(&"x".repeat(100)).len(), PILOT_ID_MAX);
+}
+
+/// The Academy's published schema, validated by a real JSON Schema validator (formats
+/// asserted): a fresh session, a session with a failure of every category, and one stored
+/// and loaded again.
+#[cfg(not(target_arch = "wasm32"))]
+mod academy_schema {
+    use super::*;
+
+    const SCHEMA: &str = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../shared/robot-pilot/teleop-session-evidence-v0.1.schema.json"
+    );
+
+    fn validator() -> jsonschema::Validator {
+        let text = std::fs::read_to_string(SCHEMA).expect("the Academy's schema beside the repo");
+        let schema: Value = serde_json::from_str(&text).expect("schema is JSON");
+        jsonschema::options()
+            .should_validate_formats(true)
+            .build(&schema)
+            .expect("a valid schema")
+    }
+
+    fn assert_valid(session: &Session) {
+        let doc: Value = serde_json::from_str(&session.evidence(END)).expect("json");
+        let errors: Vec<String> = validator()
+            .iter_errors(&doc)
+            .map(|e| format!("{} at {}", e, e.instance_path()))
+            .collect();
+        assert!(errors.is_empty(), "{}", errors.join("\n"));
+        assert_eq!(check_evidence(&doc), Ok(()));
+    }
+
+    #[test]
+    fn a_fresh_session_is_valid() {
+        assert_valid(&Session::new("Pilot 7", InputDevice::Keyboard, START));
+    }
+
+    #[test]
+    fn failures_of_every_category_are_valid() {
+        let mut s = session();
+        for (i, category) in CATEGORIES.iter().enumerate() {
+            s.record(episode(&push(10 + i, 0.0, -1.0, false)), i % 3 == 0);
+            let n = s.episodes.len() - 1;
+            s.episodes[n].set_label(Label::Failure, Some(*category), "see \"notes\"");
+        }
+        s.record(episode(&push(5, 1.0, 0.0, false)), false);
+        assert_valid(&s);
+        let doc = s.evidence_value(END);
+        for category in CATEGORIES {
+            assert!(doc["metrics"][format!("failures.{}", category.id())].as_u64() >= Some(1));
+        }
+        assert!(!doc["safetyEvents"].as_array().expect("array").is_empty());
+    }
+
+    #[test]
+    fn a_session_loaded_from_storage_is_valid() {
+        let s = session();
+        let in_progress = episode(&push(12, 0.0, 1.0, false));
+        let back = Session::from_json(&s.to_json(Some(&in_progress))).expect("loads");
+        assert_valid(&back);
+    }
+
+    #[test]
+    fn the_validator_refuses_the_old_artifact_shape() {
+        let mut doc = session().evidence_value(END);
+        doc["dataArtifacts"][0] = json!({"path": "teleop_episodes.csv", "sha256": null});
+        assert!(!validator().is_valid(&doc));
+    }
 }
