@@ -9,7 +9,7 @@
 //! trapezoid: t_acc = T / 3,  vmax = 1.5 |Δ| / T,  amax = 4.5 |Δ| / T²   (ends at T)
 //! ```
 
-use crate::recipes::cubic_path::{CubicParams, CubicPath, CubicSample};
+use crate::recipes::cubic_path::{CubicParams, CubicSample};
 use crate::recipes::trapezoid_profile::{self, TrapParams};
 use crate::view::plot::auto_range;
 
@@ -67,14 +67,14 @@ pub struct Readouts {
     pub rows: usize,
 }
 
-/// The readouts of `path` computed with `p` (its samples, as the CSV has them).
-pub fn readouts(p: &CubicParams, path: &CubicPath) -> Readouts {
-    let [peak_velocity, peak_acceleration] = peaks(&path.samples, [|s| s.qd, |s| s.qdd]);
+/// The readouts of the path of `p` from its `samples` (as the CSV has them).
+pub fn readouts(p: &CubicParams, samples: &[CubicSample]) -> Readouts {
+    let [peak_velocity, peak_acceleration] = peaks(samples, [|s| s.qd, |s| s.qdd]);
     Readouts {
         peak_velocity,
         peak_acceleration,
         coefficients: coefficients(p),
-        rows: path.samples.len(),
+        rows: samples.len(),
     }
 }
 
@@ -177,7 +177,7 @@ mod tests {
     #[test]
     fn peaks_are_the_csv_s() {
         let p = CubicParams::default();
-        let r = readouts(&p, &compute(&p).unwrap());
+        let r = readouts(&p, &compute(&p).unwrap().samples);
         let qd = csv_column("cubic-path", &[], 2);
         let qdd = csv_column("cubic-path", &[], 3);
         let max_abs = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
@@ -190,7 +190,7 @@ mod tests {
         assert_eq!(r.rows, 51);
         // A move down has negative peaks.
         let down = CubicParams { q1: -1.0, ..p };
-        let r = readouts(&down, &compute(&down).unwrap());
+        let r = readouts(&down, &compute(&down).unwrap().samples);
         assert!(r.peak_velocity.unwrap().value < 0.0);
     }
 

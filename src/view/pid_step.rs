@@ -19,6 +19,8 @@
 
 use crate::pyfmt::py_round;
 use crate::recipes::pid_step::{self, PidParams, PidSample};
+use crate::view::plot::auto_range;
+use crate::view::signal::{nice_range, y_extent};
 
 /// The kernel's response of valid `p` ([`pid_step::response`]), with unrounded times `k·dt`,
 /// one row at a time, and how many rows (what the page computes, in slices when there are
@@ -99,6 +101,21 @@ pub fn figures(samples: &[PidSample]) -> StepFigures {
     out.steady_state_error = Some(r - last.y);
     out.final_y = Some(last.y);
     out
+}
+
+/// The (lo, hi) of the finite values of a thinned series, clamped to ±1e12 (an overflowed
+/// run plots up to where it broke); `(inf, -inf)` when there is none.
+pub fn plot_extent(points: &[(f64, f64)]) -> (f64, f64) {
+    let clamp = |v: f64| v.clamp(-1e12, 1e12);
+    let (lo, hi) = y_extent(points);
+    (clamp(lo), clamp(hi))
+}
+
+/// The axis range of extents `a` and `b` and the value `with`, padded by 6 % and snapped to
+/// 1-2-5 steps.
+pub fn plot_range(a: (f64, f64), b: (f64, f64), with: f64) -> (f64, f64) {
+    let r = auto_range([a.0, a.1, b.0, b.1, with], 0.06).unwrap_or((-1.0, 1.0));
+    nice_range(r)
 }
 
 #[cfg(test)]

@@ -17,6 +17,18 @@ pub struct Slider {
     pub step: f64,
 }
 
+impl Slider {
+    /// The slider of argument `name` from `min` to `max` by `step`.
+    pub const fn new(name: &'static str, min: f64, max: f64, step: f64) -> Slider {
+        Slider {
+            name,
+            min,
+            max,
+            step,
+        }
+    }
+}
+
 /// The texts of the recipe's arguments the URL sets (`None`: the default), in argument
 /// order, and the keys it has that are neither arguments nor in `own_keys` (the page's).
 pub fn read_texts(
