@@ -9,9 +9,18 @@
 //! trapezoid: t_acc = T / 3,  vmax = 1.5 |Δ| / T,  amax = 4.5 |Δ| / T²   (ends at T)
 //! ```
 
-use crate::recipes::cubic_path::{CubicParams, CubicSample};
+use crate::recipes::cubic_path::{self, CubicParams, CubicSample};
 use crate::recipes::trapezoid_profile::{self, TrapParams};
 use crate::view::plot::auto_range;
+use crate::view::signal::SignalRow;
+
+/// The kernel's samples of valid `p` ([`cubic_path::samples`]), one at a time, and how many;
+/// none for invalid `p`.
+pub fn rows(p: &CubicParams) -> Option<(impl Iterator<Item = CubicSample>, u64)> {
+    let rows = cubic_path::samples(p).ok()?;
+    let n = rows.len() as u64;
+    Some((rows, n))
+}
 
 /// `q(t) = a0 + a1 t + a2 t² + a3 t³`, computed as the kernel computes it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -137,6 +146,21 @@ pub fn panel_range(values: impl IntoIterator<Item = f64>) -> (f64, f64) {
 /// The time axis: 0 to T with room for dragging T further (a quarter more).
 pub fn time_range(p: &CubicParams) -> (f64, f64) {
     (0.0, p.duration_s * 1.25)
+}
+
+impl SignalRow for CubicSample {
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn cursor_readouts(&self) -> [(&'static str, f64); 4] {
+        [
+            ("cursor-t", self.t),
+            ("cursor-q", self.q),
+            ("cursor-qd", self.qd),
+            ("cursor-qdd", self.qdd),
+        ]
+    }
 }
 
 #[cfg(test)]

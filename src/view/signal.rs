@@ -29,6 +29,14 @@ impl Slider {
     }
 }
 
+/// A row of a signal page's table, as the plot's cursor reads it.
+pub trait SignalRow: 'static {
+    /// Its time, s (the plots' shared axis).
+    fn t(&self) -> f64;
+    /// The cursor's readouts of it: `(data-readout, value)`.
+    fn cursor_readouts(&self) -> [(&'static str, f64); 4];
+}
+
 /// The texts of the recipe's arguments the URL sets (`None`: the default), in argument
 /// order, and the keys it has that are neither arguments nor in `own_keys` (the page's).
 pub fn read_texts(

@@ -36,14 +36,7 @@ use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::view::signal::sig;
-
-/// A row of a signal page's table, as the cursor reads it.
-pub trait SignalRow: 'static {
-    /// Its time, s (the plot's shared axis).
-    fn t(&self) -> f64;
-    /// The cursor's readouts of it: `(data-readout, value)`.
-    fn cursor_readouts(&self) -> Vec<(&'static str, f64)>;
-}
+pub use crate::view::signal::SignalRow;
 
 /// Why a page shows its run again.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -11,7 +11,7 @@ use web_sys::{CanvasRenderingContext2d, Element};
 use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
-use crate::ui::kit::plot::{AxisSpec, Mark, Plot, SeriesSpec};
+use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};
 use crate::ui::kit::recipe_controls::thinned_columns;
 use crate::view::drag::HandleShape;
 use crate::view::signal::{held_range, held_ranges, nearest_row};
@@ -184,6 +184,29 @@ impl<H: Copy + PartialEq + 'static> SignalPlot<H> {
         !self.plot.spec().is_some_and(|spec| {
             spec.x.range == x && spec.panels.iter().map(|p| p.y.range).eq(y_ranges)
         })
+    }
+
+    /// Sets the spec of three panels over the time axis, each of `series`, their value axes
+    /// `(title id, unit id)` over [`SignalPlot::y_ranges`].
+    pub fn set_panels(
+        &mut self,
+        axes: [(&str, &str); 3],
+        series: Vec<SeriesSpec>,
+        cursor_rgb: (u8, u8, u8),
+    ) {
+        let panels = axes
+            .iter()
+            .zip(self.y_ranges)
+            .map(|((title, unit), range)| PanelSpec {
+                y: axis(title, unit, range),
+                series: series.clone(),
+            })
+            .collect();
+        self.plot.set_spec(PlotSpec {
+            x: time_axis(self.x_range),
+            panels,
+            cursor_rgb,
+        });
     }
 
     /// The points of `rows` (`(t, [y; N])`) thinned to the plot over time axis `x`, one

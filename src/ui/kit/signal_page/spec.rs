@@ -54,7 +54,8 @@ pub enum Arrows {
 }
 
 /// Two arrow keys that step argument `field` by `step` (Shift: ten steps), snapped to
-/// `step`, never below `floor`; `read` is its value in the arguments.
+/// `step`, never below `floor` (`f64::NEG_INFINITY`: no floor); `read` is its value in the
+/// arguments.
 pub struct Nudge<P> {
     pub arrows: Arrows,
     /// What the keys do, for the `?` overlay.
@@ -66,9 +67,9 @@ pub struct Nudge<P> {
 }
 
 impl<P> Nudge<P> {
-    /// `arrows` stepping `field` by `step` from `read`, not below `floor`.
-    pub const fn new(
-        arrows: Arrows,
+    /// ↑ ↓ stepping `field` by `step` from `read`, not below `floor`; the keys' Fluent id
+    /// `message_id`.
+    pub const fn up_down(
         message_id: &'static str,
         field: &'static str,
         read: fn(&P) -> f64,
@@ -76,12 +77,26 @@ impl<P> Nudge<P> {
         floor: f64,
     ) -> Nudge<P> {
         Nudge {
-            arrows,
+            arrows: Arrows::UpDown,
             message_id,
             field,
             read,
             step,
             floor,
+        }
+    }
+
+    /// ← → stepping `field` by `step` from `read`, not below `floor`.
+    pub const fn left_right(
+        message_id: &'static str,
+        field: &'static str,
+        read: fn(&P) -> f64,
+        step: f64,
+        floor: f64,
+    ) -> Nudge<P> {
+        Nudge {
+            arrows: Arrows::LeftRight,
+            ..Nudge::up_down(message_id, field, read, step, floor)
         }
     }
 

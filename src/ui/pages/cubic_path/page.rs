@@ -1,17 +1,15 @@
 //! The cubic-path drill: its sliders, readouts, keys and overlays; the path's readouts and
 //! announcement; the end point's drag.
 
-use std::cell::RefCell;
-
 use glam::DVec2;
 use wasm_bindgen::JsValue;
 
-use super::plots::{self, Plots};
+use super::plots;
 use crate::pyfmt::py_float;
-use crate::recipes::cubic_path::{params_from_args, samples, CubicParams, CubicSample, INFO};
+use crate::recipes::cubic_path::{params_from_args, CubicParams, CubicSample, INFO};
 use crate::ui::ctx;
-use crate::ui::kit::signal_page::{Arrows, Draw, Kit, Nudge, SignalPage, SignalRow, SignalSpec};
-use crate::view::cubic_path::readouts as numbers;
+use crate::ui::kit::signal_page::{boxed, Draw, Kit, Nudge, SignalPage, SignalSpec};
+use crate::view::cubic_path::{readouts as numbers, rows};
 use crate::view::signal::{sig, Slider};
 
 const SLIDERS: [Slider; 4] = [
@@ -36,28 +34,12 @@ const READOUTS: [(&str, &str); 13] = [
     ("cursor-qdd", "cubic-ro-cursor-qdd"),
 ];
 const NUDGES: [Nudge<CubicParams>; 2] = [
-    Nudge::new(
-        Arrows::UpDown,
-        "cubic-key-q1",
-        "q1",
-        |p| p.q1,
-        0.01,
-        f64::NEG_INFINITY,
-    ),
-    Nudge::new(
-        Arrows::LeftRight,
-        "cubic-key-t",
-        "T",
-        |p| p.duration_s,
-        0.01,
-        0.01,
-    ),
+    Nudge::up_down("cubic-key-q1", "q1", |p| p.q1, 0.01, f64::NEG_INFINITY),
+    Nudge::left_right("cubic-key-t", "T", |p| p.duration_s, 0.01, 0.01),
 ];
 
-/// The page's state: what its plots show.
-pub struct CubicPage {
-    plots: RefCell<Plots>,
-}
+/// The page: its state is the kit's (the run, the overlays, the plot).
+pub struct CubicPage;
 
 impl SignalPage for CubicPage {
     type Params = CubicParams;
@@ -67,11 +49,7 @@ impl SignalPage for CubicPage {
         prefix: "cubic",
         info: &INFO,
         parse: params_from_args,
-        kernel: |p| {
-            let rows = samples(p).ok()?;
-            let n = rows.len() as u64;
-            Some((Box::new(rows), n))
-        },
+        kernel: |p| rows(p).map(boxed),
         png: "cubic_path_plots.png",
         layers: 4,
         sliders: &SLIDERS,
@@ -84,9 +62,7 @@ impl SignalPage for CubicPage {
     };
 
     fn build(_kit: &Kit<CubicPage>) -> Result<CubicPage, JsValue> {
-        Ok(CubicPage {
-            plots: RefCell::new(Plots::default()),
-        })
+        Ok(CubicPage)
     }
 
     /// Readouts and plots; a change's run is announced with its peak velocity.
@@ -105,13 +81,7 @@ impl SignalPage for CubicPage {
         let rows = r.rows.to_string();
         kit.readouts.set_with_value("rows", &rows, &rows);
         let overlays = [kit.overlay(0), kit.overlay(1)];
-        self.plots.borrow_mut().set_data(
-            &mut kit.plot.borrow_mut(),
-            &params,
-            &run.rows,
-            overlays,
-            draw,
-        );
+        plots::set_data(&mut kit.plot.borrow_mut(), &run, overlays, draw);
         drop(run);
         kit.draw_plot();
         plots::draw_end(&mut kit.plot.borrow_mut(), &params);
@@ -137,20 +107,5 @@ impl SignalPage for CubicPage {
     /// Mid-move.
     fn cursor_start(params: &CubicParams, _: &[CubicSample]) -> f64 {
         params.duration_s / 2.0
-    }
-}
-
-impl SignalRow for CubicSample {
-    fn t(&self) -> f64 {
-        self.t
-    }
-
-    fn cursor_readouts(&self) -> Vec<(&'static str, f64)> {
-        vec![
-            ("cursor-t", self.t),
-            ("cursor-q", self.q),
-            ("cursor-qd", self.qd),
-            ("cursor-qdd", self.qdd),
-        ]
     }
 }

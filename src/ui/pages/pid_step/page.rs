@@ -9,11 +9,8 @@ use web_sys::Element;
 
 use super::plots::Plots;
 use crate::error::RecipeWarning;
-use crate::pyfmt::py_round;
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
-use crate::ui::kit::signal_page::{
-    boxed, Arrows, Draw, Kit, Nudge, RunFrom, SignalPage, SignalRow, SignalSpec,
-};
+use crate::ui::kit::signal_page::{boxed, Draw, Kit, Nudge, RunFrom, SignalPage, SignalSpec};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
 use crate::view::pid_step::{figures, rows, StepFigures};
@@ -39,8 +36,7 @@ const READOUTS: [(&str, &str); 11] = [
     ("cursor-y", "pid-ro-cursor-y"),
     ("cursor-u", "pid-ro-cursor-u"),
 ];
-const NUDGES: [Nudge<PidParams>; 1] = [Nudge::new(
-    Arrows::UpDown,
+const NUDGES: [Nudge<PidParams>; 1] = [Nudge::up_down(
     "pid-key-kp",
     "Kp",
     |p| p.kp,
@@ -182,21 +178,5 @@ impl SignalPage for PidPage {
         if self.changing.replace(false) {
             self.runs.borrow_mut().committed = kit.run().rows.clone();
         }
-    }
-}
-
-impl SignalRow for PidSample {
-    fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// The CSV's row: its time as the CSV writes it (`round(t, 4)`).
-    fn cursor_readouts(&self) -> Vec<(&'static str, f64)> {
-        vec![
-            ("cursor-t", py_round(self.t, 4)),
-            ("cursor-r", self.r),
-            ("cursor-y", self.y),
-            ("cursor-u", self.u),
-        ]
     }
 }

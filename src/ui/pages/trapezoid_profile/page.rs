@@ -8,11 +8,8 @@ use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use super::plots::{self, Grab, Plots};
-use crate::pyfmt::py_round;
 use crate::recipes::trapezoid_profile::{params_from_args, TrapParams, TrapSample, INFO};
-use crate::ui::kit::signal_page::{
-    boxed, Arrows, Draw, Kit, Nudge, SignalPage, SignalRow, SignalSpec,
-};
+use crate::ui::kit::signal_page::{boxed, Draw, Kit, Nudge, SignalPage, SignalSpec};
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
 use crate::view::trapezoid_profile::{phases, rows, Phases};
@@ -37,22 +34,8 @@ const READOUTS: [(&str, &str); 11] = [
     ("cursor-a", "trap-ro-cursor-a"),
 ];
 const NUDGES: [Nudge<TrapParams>; 2] = [
-    Nudge::new(
-        Arrows::UpDown,
-        "trap-key-vmax",
-        "vmax",
-        |p| p.vmax.abs(),
-        0.01,
-        0.01,
-    ),
-    Nudge::new(
-        Arrows::LeftRight,
-        "trap-key-amax",
-        "amax",
-        |p| p.amax.abs(),
-        0.01,
-        0.01,
-    ),
+    Nudge::up_down("trap-key-vmax", "vmax", |p| p.vmax.abs(), 0.01, 0.01),
+    Nudge::left_right("trap-key-amax", "amax", |p| p.amax.abs(), 0.01, 0.01),
 ];
 
 /// The page's state: the plots' labels and the triangle note.
@@ -138,22 +121,6 @@ impl SignalPage for TrapPage {
         let (field, value) = plots::dragged(&kit.plot.borrow(), handle, at)?;
         kit.controls
             .set_text(field, &snap(value.max(0.01), 0.01), false)
-    }
-}
-
-impl SignalRow for TrapSample {
-    fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// The CSV's row: its time as the CSV writes it (`round(t, 5)`).
-    fn cursor_readouts(&self) -> Vec<(&'static str, f64)> {
-        vec![
-            ("cursor-t", py_round(self.t, 5)),
-            ("cursor-s", self.s),
-            ("cursor-v", self.v),
-            ("cursor-a", self.a),
-        ]
     }
 }
 

@@ -11,8 +11,8 @@ use glam::DVec2;
 use crate::recipes::trapezoid_profile::TrapSample;
 use crate::ui::ctx;
 use crate::ui::kit::canvas::{dash, solid, Ink};
-use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
-use crate::ui::kit::signal_page::{axis, draw_handle, series, time_axis, Draw, SignalPlot};
+use crate::ui::kit::plot::Mark;
+use crate::ui::kit::signal_page::{draw_handle, series, Draw, SignalPlot};
 use crate::view::plot::{auto_range, place_labels};
 use crate::view::signal::{nice_range, y_extent};
 use crate::view::trapezoid_profile::{amax_from_corner, bands, Phases};
@@ -63,20 +63,8 @@ pub fn set_data(sp: &mut SignalPlot<Grab>, samples: &[TrapSample], ph: &Phases, 
     let fitted = [r(s, ph.distance), r(v, ph.vmax * 1.3), r(a, ph.amax)];
     if sp.fit_axes(draw.fit, x, fitted) || draw.resized {
         let line = series("trap-series-profile", C_LINE, Mark::LineAndPoints, 2.0, 1.0);
-        let panel = |title: &str, range| PanelSpec {
-            y: axis(title, "", range),
-            series: vec![line.clone()],
-        };
-        let y = sp.y_ranges;
-        sp.plot.set_spec(PlotSpec {
-            x: time_axis(sp.x_range),
-            panels: vec![
-                panel("trap-ax-s", y[0]),
-                panel("trap-ax-v", y[1]),
-                panel("trap-ax-a", y[2]),
-            ],
-            cursor_rgb: C_CURSOR,
-        });
+        let axes = [("trap-ax-s", ""), ("trap-ax-v", ""), ("trap-ax-a", "")];
+        sp.set_panels(axes, vec![line], C_CURSOR);
     }
     if draw.resized {
         sp.plot.invalidate_all();
