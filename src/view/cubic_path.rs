@@ -149,17 +149,14 @@ pub fn time_range(p: &CubicParams) -> (f64, f64) {
 }
 
 impl SignalRow for CubicSample {
+    const CURSOR: [&'static str; 4] = ["cursor-t", "cursor-q", "cursor-qd", "cursor-qdd"];
+
     fn t(&self) -> f64 {
         self.t
     }
 
-    fn cursor_readouts(&self) -> [(&'static str, f64); 4] {
-        [
-            ("cursor-t", self.t),
-            ("cursor-q", self.q),
-            ("cursor-qd", self.qd),
-            ("cursor-qdd", self.qdd),
-        ]
+    fn cursor_values(&self) -> [f64; 4] {
+        [self.t, self.q, self.qd, self.qdd]
     }
 }
 

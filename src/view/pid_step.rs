@@ -119,18 +119,15 @@ pub fn plot_range(a: (f64, f64), b: (f64, f64), with: f64) -> (f64, f64) {
 }
 
 impl SignalRow for PidSample {
+    const CURSOR: [&'static str; 4] = ["cursor-t", "cursor-r", "cursor-y", "cursor-u"];
+
     fn t(&self) -> f64 {
         self.t
     }
 
     /// The CSV's row: its time as the CSV writes it (`round(t, 4)`).
-    fn cursor_readouts(&self) -> [(&'static str, f64); 4] {
-        [
-            ("cursor-t", csv_t(self)),
-            ("cursor-r", self.r),
-            ("cursor-y", self.y),
-            ("cursor-u", self.u),
-        ]
+    fn cursor_values(&self) -> [f64; 4] {
+        [csv_t(self), self.r, self.y, self.u]
     }
 }
 
@@ -263,7 +260,7 @@ mod tests {
             u: 2.0,
             e: 0.5,
         };
-        let values = row.cursor_readouts().map(|(_, x)| x);
+        let values = row.cursor_values();
         assert_eq!(values, [0.15, 1.0, 0.5, 2.0]);
     }
 

@@ -31,10 +31,12 @@ impl Slider {
 
 /// A row of a signal page's table, as the plot's cursor reads it.
 pub trait SignalRow: 'static {
+    /// The cursor's readouts (`data-readout` keys): the time, then the row's three columns.
+    const CURSOR: [&'static str; 4];
     /// Its time, s (the plots' shared axis).
     fn t(&self) -> f64;
-    /// The cursor's readouts of it: `(data-readout, value)`.
-    fn cursor_readouts(&self) -> [(&'static str, f64); 4];
+    /// The values of [`SignalRow::CURSOR`]: the time as the CSV writes it, then the columns.
+    fn cursor_values(&self) -> [f64; 4];
 }
 
 /// The texts of the recipe's arguments the URL sets (`None`: the default), in argument

@@ -87,18 +87,15 @@ pub fn amax_from_corner(t: f64, v: f64) -> Option<f64> {
 }
 
 impl SignalRow for TrapSample {
+    const CURSOR: [&'static str; 4] = ["cursor-t", "cursor-s", "cursor-v", "cursor-a"];
+
     fn t(&self) -> f64 {
         self.t
     }
 
     /// The CSV's row: its time as the CSV writes it (`round(t, 5)`).
-    fn cursor_readouts(&self) -> [(&'static str, f64); 4] {
-        [
-            ("cursor-t", py_round(self.t, 5)),
-            ("cursor-s", self.s),
-            ("cursor-v", self.v),
-            ("cursor-a", self.a),
-        ]
+    fn cursor_values(&self) -> [f64; 4] {
+        [py_round(self.t, 5), self.s, self.v, self.a]
     }
 }
 
@@ -220,7 +217,7 @@ mod tests {
             a: 3.0,
         };
         assert_eq!(row.t(), 0.123456789);
-        let values = row.cursor_readouts().map(|(_, x)| x);
+        let values = row.cursor_values();
         assert_eq!(values, [0.12346, 1.0, 2.0, 3.0]);
     }
 }

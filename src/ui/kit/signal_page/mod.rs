@@ -143,12 +143,14 @@ impl<S: SignalPage> Kit<S> {
         let readouts = {
             let mut plot = self.plot.borrow_mut();
             let row = plot.cursor_row(&run.rows, start, <S::Row as SignalRow>::t);
-            let readouts = row.map(SignalRow::cursor_readouts);
+            let readouts = row.map(SignalRow::cursor_values);
             let _ = plot.plot.draw(Ink::current());
             readouts
         };
         if let Some(values) = readouts {
-            self.show_numbers(&values);
+            for (key, x) in <S::Row as SignalRow>::CURSOR.into_iter().zip(values) {
+                self.show_number(key, x, 4);
+            }
         }
     }
 }
@@ -404,7 +406,7 @@ impl<S: SignalPage> Page for Signal<S> {
         let spec = &S::SPEC;
         let p = spec.prefix;
         let root = ctx.root.clone();
-        root.set_inner_html(&spec::markup(spec));
+        root.set_inner_html(&spec::markup(spec, <S::Row as SignalRow>::CURSOR));
         dom::relocalize(&root)?;
         let controls = RecipeControls::mount(
             &root,

@@ -30,7 +30,7 @@ pub struct SignalSpec<P: 'static, R: 'static> {
     /// Canvases in the stage: 3 (axes, data, cursor) or 4 (axes, data, marks, cursor).
     pub layers: usize,
     pub sliders: &'static [Slider],
-    /// `(data-readout, label id)`.
+    /// `(data-readout, label id)`, before the cursor's (`<prefix>-ro-<key>`).
     pub readouts: &'static [(&'static str, &'static str)],
     /// The explanation's sections (`<prefix>-explain-<section>`), before the quirks.
     pub explain: &'static [&'static str],
@@ -53,6 +53,28 @@ pub enum Arrows {
     LeftRight,
 }
 
+impl Arrows {
+    /// These arrows stepping `field` by `step` from `read`, not below `floor`; the keys'
+    /// Fluent id `message_id`.
+    pub const fn nudge<P>(
+        self,
+        message_id: &'static str,
+        field: &'static str,
+        read: fn(&P) -> f64,
+        step: f64,
+        floor: f64,
+    ) -> Nudge<P> {
+        Nudge {
+            arrows: self,
+            message_id,
+            field,
+            read,
+            step,
+            floor,
+        }
+    }
+}
+
 /// Two arrow keys that step argument `field` by `step` (Shift: ten steps), snapped to
 /// `step`, never below `floor` (`f64::NEG_INFINITY`: no floor); `read` is its value in the
 /// arguments.
@@ -67,39 +89,6 @@ pub struct Nudge<P> {
 }
 
 impl<P> Nudge<P> {
-    /// ↑ ↓ stepping `field` by `step` from `read`, not below `floor`; the keys' Fluent id
-    /// `message_id`.
-    pub const fn up_down(
-        message_id: &'static str,
-        field: &'static str,
-        read: fn(&P) -> f64,
-        step: f64,
-        floor: f64,
-    ) -> Nudge<P> {
-        Nudge {
-            arrows: Arrows::UpDown,
-            message_id,
-            field,
-            read,
-            step,
-            floor,
-        }
-    }
-
-    /// ← → stepping `field` by `step` from `read`, not below `floor`.
-    pub const fn left_right(
-        message_id: &'static str,
-        field: &'static str,
-        read: fn(&P) -> f64,
-        step: f64,
-        floor: f64,
-    ) -> Nudge<P> {
-        Nudge {
-            arrows: Arrows::LeftRight,
-            ..Nudge::up_down(message_id, field, read, step, floor)
-        }
-    }
-
     /// The text of `field` after key `event` (of value `params`), if the key is one of its
     /// two.
     pub fn text(&self, event: &KeyboardEvent, params: &P) -> Option<String> {
@@ -132,8 +121,9 @@ pub fn shortcuts<P, R>(spec: &SignalSpec<P, R>) -> Vec<Shortcut> {
 }
 
 /// The page's markup: head (title, blurb, URL notice), the plot card (stage, progress line,
-/// overlays, notes), readouts, parameters, exports and explanation.
-pub fn markup<P, R>(spec: &SignalSpec<P, R>) -> String {
+/// overlays, notes), readouts (the page's, then the `cursor` keys), parameters, exports and
+/// explanation.
+pub fn markup<P, R>(spec: &SignalSpec<P, R>, cursor: [&str; 4]) -> String {
     let (p, id) = (spec.prefix, spec.info.id);
     let (form, notice, exports) = recipe_controls::markup(p, spec.info, spec.png, "signals-png");
     let explain: String = spec
@@ -144,6 +134,14 @@ pub fn markup<P, R>(spec: &SignalSpec<P, R>) -> String {
                 "<h3 data-i18n=\"{p}-explain-{k}-title\"></h3><p data-i18n=\"{p}-explain-{k}\"></p>"
             )
         })
+        .collect();
+    let cursor_labels = cursor.map(|key| format!("{p}-ro-{key}"));
+    let ro: Vec<(&str, &str)> = (spec.readouts.iter().copied())
+        .chain(
+            cursor
+                .into_iter()
+                .zip(cursor_labels.iter().map(String::as_str)),
+        )
         .collect();
     let under = "<canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas>"
         .repeat(spec.layers.saturating_sub(1));
@@ -172,7 +170,7 @@ pub fn markup<P, R>(spec: &SignalSpec<P, R>) -> String {
          <section class=\"sig-card sig-explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
          <h3 data-i18n=\"signals-quirks-title\"></h3><p data-i18n=\"{quirks}\"></p></section></div>",
         under_plot = spec.under_plot,
-        ro = readouts::markup(p, spec.readouts),
+        ro = readouts::markup(p, &ro),
         live = readouts::live_markup(p),
         under_readouts = spec.under_readouts,
         quirks = spec.info.quirks_id,

@@ -8,35 +8,9 @@ use super::plots;
 use crate::pyfmt::py_float;
 use crate::recipes::cubic_path::{params_from_args, CubicParams, CubicSample, INFO};
 use crate::ui::ctx;
-use crate::ui::kit::signal_page::{boxed, Draw, Kit, Nudge, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, SignalPage, SignalSpec};
 use crate::view::cubic_path::{readouts as numbers, rows};
 use crate::view::signal::{sig, Slider};
-
-const SLIDERS: [Slider; 4] = [
-    Slider::new("q0", -3.2, 3.2, 0.01),
-    Slider::new("q1", -3.2, 3.2, 0.01),
-    Slider::new("T", 0.1, 5.0, 0.01),
-    Slider::new("dt", 0.001, 0.2, 0.001),
-];
-const READOUTS: [(&str, &str); 13] = [
-    ("peak-velocity", "cubic-ro-peak-v"),
-    ("peak-velocity-t", "cubic-ro-peak-v-t"),
-    ("peak-acceleration", "cubic-ro-peak-a"),
-    ("peak-acceleration-t", "cubic-ro-peak-a-t"),
-    ("a0", "cubic-ro-a0"),
-    ("a1", "cubic-ro-a1"),
-    ("a2", "cubic-ro-a2"),
-    ("a3", "cubic-ro-a3"),
-    ("rows", "cubic-ro-rows"),
-    ("cursor-t", "cubic-ro-cursor-t"),
-    ("cursor-q", "cubic-ro-cursor-q"),
-    ("cursor-qd", "cubic-ro-cursor-qd"),
-    ("cursor-qdd", "cubic-ro-cursor-qdd"),
-];
-const NUDGES: [Nudge<CubicParams>; 2] = [
-    Nudge::up_down("cubic-key-q1", "q1", |p| p.q1, 0.01, f64::NEG_INFINITY),
-    Nudge::left_right("cubic-key-t", "T", |p| p.duration_s, 0.01, 0.01),
-];
 
 /// The page: its state is the kit's (the run, the overlays, the plot).
 pub struct CubicPage;
@@ -52,10 +26,28 @@ impl SignalPage for CubicPage {
         kernel: |p| rows(p).map(boxed),
         png: "cubic_path_plots.png",
         layers: 4,
-        sliders: &SLIDERS,
-        readouts: &READOUTS,
+        sliders: &[
+            Slider::new("q0", -3.2, 3.2, 0.01),
+            Slider::new("q1", -3.2, 3.2, 0.01),
+            Slider::new("T", 0.1, 5.0, 0.01),
+            Slider::new("dt", 0.001, 0.2, 0.001),
+        ],
+        readouts: &[
+            ("peak-velocity", "cubic-ro-peak-v"),
+            ("peak-velocity-t", "cubic-ro-peak-v-t"),
+            ("peak-acceleration", "cubic-ro-peak-a"),
+            ("peak-acceleration-t", "cubic-ro-peak-a-t"),
+            ("a0", "cubic-ro-a0"),
+            ("a1", "cubic-ro-a1"),
+            ("a2", "cubic-ro-a2"),
+            ("a3", "cubic-ro-a3"),
+            ("rows", "cubic-ro-rows"),
+        ],
         explain: &["what", "input", "steps", "expected"],
-        nudges: &NUDGES,
+        nudges: &[
+            Arrows::UpDown.nudge("cubic-key-q1", "q1", |p| p.q1, 0.01, f64::NEG_INFINITY),
+            Arrows::LeftRight.nudge("cubic-key-t", "T", |p| p.duration_s, 0.01, 0.01),
+        ],
         overlays: &plots::OVERLAYS,
         under_plot: "<p class=\"sig-note\" data-i18n=\"cubic-drag-hint\"></p>",
         under_readouts: "",

@@ -10,39 +10,11 @@ use web_sys::Element;
 use super::plots::Plots;
 use crate::error::RecipeWarning;
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
-use crate::ui::kit::signal_page::{boxed, Draw, Kit, Nudge, RunFrom, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, RunFrom, SignalPage, SignalSpec};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
 use crate::view::pid_step::{figures, rows, StepFigures};
 use crate::view::signal::{sig, Slider};
-
-const SLIDERS: [Slider; 5] = [
-    Slider::new("Kp", 0.0, 10.0, 0.05),
-    Slider::new("Ki", 0.0, 5.0, 0.05),
-    Slider::new("Kd", 0.0, 1.0, 0.01),
-    Slider::new("tau", 0.0, 5.0, 0.05),
-    Slider::new("steps", 0.0, 1000.0, 10.0),
-];
-const READOUTS: [(&str, &str); 11] = [
-    ("rise-time", "pid-ro-rise"),
-    ("overshoot", "pid-ro-overshoot"),
-    ("settling-time", "pid-ro-settling"),
-    ("steady-state-error", "pid-ro-sse"),
-    ("peak-u", "pid-ro-peak-u"),
-    ("peak-u-t", "pid-ro-peak-u-t"),
-    ("final-y", "pid-ro-final-y"),
-    ("cursor-t", "pid-ro-cursor-t"),
-    ("cursor-r", "pid-ro-cursor-r"),
-    ("cursor-y", "pid-ro-cursor-y"),
-    ("cursor-u", "pid-ro-cursor-u"),
-];
-const NUDGES: [Nudge<PidParams>; 1] = [Nudge::up_down(
-    "pid-key-kp",
-    "Kp",
-    |p| p.kp,
-    0.05,
-    f64::NEG_INFINITY,
-)];
 
 /// The figures and warnings of the run shown, the run the ghost is drawn from (a new ghost, a
 /// new generation), and the last committed run (runs are shared, never copied).
@@ -87,12 +59,26 @@ impl SignalPage for PidPage {
         kernel: |p| rows(p).map(boxed),
         png: "pid_step_plots.png",
         layers: 3,
-        sliders: &SLIDERS,
-        readouts: &READOUTS,
+        sliders: &[
+            Slider::new("Kp", 0.0, 10.0, 0.05),
+            Slider::new("Ki", 0.0, 5.0, 0.05),
+            Slider::new("Kd", 0.0, 1.0, 0.01),
+            Slider::new("tau", 0.0, 5.0, 0.05),
+            Slider::new("steps", 0.0, 1000.0, 10.0),
+        ],
+        readouts: &[
+            ("rise-time", "pid-ro-rise"),
+            ("overshoot", "pid-ro-overshoot"),
+            ("settling-time", "pid-ro-settling"),
+            ("steady-state-error", "pid-ro-sse"),
+            ("peak-u", "pid-ro-peak-u"),
+            ("peak-u-t", "pid-ro-peak-u-t"),
+            ("final-y", "pid-ro-final-y"),
+        ],
         explain: &[
             "gains", "plant", "toy", "real", "input", "steps", "expected",
         ],
-        nudges: &NUDGES,
+        nudges: &[Arrows::UpDown.nudge("pid-key-kp", "Kp", |p| p.kp, 0.05, f64::NEG_INFINITY)],
         overlays: &[],
         under_plot: "<p class=\"sig-warning\" data-pid=\"warning\" \
                      data-testid=\"pid-step-warning\" role=\"alert\" hidden></p>\

@@ -9,34 +9,10 @@ use web_sys::Element;
 
 use super::plots::{self, Grab, Plots};
 use crate::recipes::trapezoid_profile::{params_from_args, TrapParams, TrapSample, INFO};
-use crate::ui::kit::signal_page::{boxed, Draw, Kit, Nudge, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, SignalPage, SignalSpec};
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
 use crate::view::trapezoid_profile::{phases, rows, Phases};
-
-const SLIDERS: [Slider; 4] = [
-    Slider::new("distance", 0.0, 5.0, 0.05),
-    Slider::new("vmax", 0.05, 3.0, 0.01),
-    Slider::new("amax", 0.05, 5.0, 0.01),
-    Slider::new("dt", 0.001, 0.1, 0.001),
-];
-const READOUTS: [(&str, &str); 11] = [
-    ("shape", "trap-ro-shape"),
-    ("t-acc", "trap-ro-t-acc"),
-    ("t-flat", "trap-ro-t-flat"),
-    ("t-total", "trap-ro-t-total"),
-    ("v-peak", "trap-ro-v-peak"),
-    ("final-s", "trap-ro-final-s"),
-    ("rows", "trap-ro-rows"),
-    ("cursor-t", "trap-ro-cursor-t"),
-    ("cursor-s", "trap-ro-cursor-s"),
-    ("cursor-v", "trap-ro-cursor-v"),
-    ("cursor-a", "trap-ro-cursor-a"),
-];
-const NUDGES: [Nudge<TrapParams>; 2] = [
-    Nudge::up_down("trap-key-vmax", "vmax", |p| p.vmax.abs(), 0.01, 0.01),
-    Nudge::left_right("trap-key-amax", "amax", |p| p.amax.abs(), 0.01, 0.01),
-];
 
 /// The page's state: the plots' labels and the triangle note.
 pub struct TrapPage {
@@ -56,10 +32,26 @@ impl SignalPage for TrapPage {
         kernel: |p| rows(p).map(boxed),
         png: "trap_profile_plots.png",
         layers: 4,
-        sliders: &SLIDERS,
-        readouts: &READOUTS,
+        sliders: &[
+            Slider::new("distance", 0.0, 5.0, 0.05),
+            Slider::new("vmax", 0.05, 3.0, 0.01),
+            Slider::new("amax", 0.05, 5.0, 0.01),
+            Slider::new("dt", 0.001, 0.1, 0.001),
+        ],
+        readouts: &[
+            ("shape", "trap-ro-shape"),
+            ("t-acc", "trap-ro-t-acc"),
+            ("t-flat", "trap-ro-t-flat"),
+            ("t-total", "trap-ro-t-total"),
+            ("v-peak", "trap-ro-v-peak"),
+            ("final-s", "trap-ro-final-s"),
+            ("rows", "trap-ro-rows"),
+        ],
         explain: &["what", "input", "steps", "expected"],
-        nudges: &NUDGES,
+        nudges: &[
+            Arrows::UpDown.nudge("trap-key-vmax", "vmax", |p| p.vmax.abs(), 0.01, 0.01),
+            Arrows::LeftRight.nudge("trap-key-amax", "amax", |p| p.amax.abs(), 0.01, 0.01),
+        ],
         overlays: &[],
         under_plot: "<p class=\"sig-warning\" data-trap=\"triangle\" \
                      data-testid=\"trapezoid-profile-triangle\" role=\"status\" \
