@@ -5,7 +5,7 @@
 //!
 //! The kit does the rest: the markup, the controls ([`RecipeControls`]: form, sliders, URL,
 //! exports), the plot ([`SignalPlot`]: drags, hover cursor, PNG), the first run, every change
-//! (a run over [`LIVE_ROWS`] computed in slices, [`sliced`]), the URL, the arrow keys and `r`,
+//! (a run over [`LIVE_ROWS`] rows computed a slice per frame), the URL, the arrow keys and `r`,
 //! a slider let go, a drag ended, an overlay toggled, and a language, projector or size change
 //! (everything shown again).
 
@@ -22,7 +22,7 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 
 pub use self::plot::{axis, draw_handle, series, time_axis, Fit, SignalPlot};
 use self::sliced::Sliced;
-pub use self::sliced::{boxed, Rows, RunFrom, LIVE_ROWS, SLICE_MS};
+pub use self::sliced::{boxed, Rows, RunFrom, LIVE_ROWS};
 pub use self::spec::{Arrows, Nudge, SignalSpec};
 use crate::pyfmt::py_float;
 use crate::ui::dom;

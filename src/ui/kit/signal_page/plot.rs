@@ -64,7 +64,8 @@ pub struct SignalPlot<H: Copy + PartialEq + 'static> {
     pub dragging: bool,
     /// The hovered time (`None`: none yet, the cursor stands where the page says).
     pub cursor_t: Option<f64>,
-    /// The time axis and the panels' value axes (see [`SignalPlot::fit_axes`]).
+    /// The time axis and, for a plot of three panels, their value axes, as the last
+    /// [`SignalPlot::fit_axes`] left them.
     pub x_range: (f64, f64),
     pub y_ranges: [(f64, f64); 3],
 }
