@@ -9,7 +9,7 @@
 //
 // Budget: p95 < 4 ms. With SE3_BENCH_STRICT=1 the exit code is 1 when it is missed; otherwise
 // this only reports.
-import { openApp, closeBrowser, startServer } from './harness.mjs';
+import { openApp, closeBrowser, startServer } from '../e2e/harness.mjs';
 import { stats, nextFrame } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };

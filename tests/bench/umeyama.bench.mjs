@@ -8,9 +8,7 @@
 //
 // Budget: frame work p95 < 4 ms. With UMEYAMA_BENCH_STRICT=1 the exit code is 1 when it is
 // missed; otherwise this only reports.
-import { join } from 'node:path';
-import { openApp, closeBrowser, ROOT } from './harness.mjs';
-import { startStaticServer } from '../../scripts/serve.mjs';
+import { openApp, closeBrowser, startServer } from '../e2e/harness.mjs';
 import { stats, nextFrame } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
@@ -62,7 +60,7 @@ const cases = [
   ['Shift+arrow keys, 40 pts', '#/umeyama-2d?n=40', keyMoves],
 ];
 
-const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);
+const server = await startServer();
 let over = false;
 try {
   console.log('case                       n   p50 ms  p95 ms  max ms  budget');
