@@ -2,7 +2,8 @@
 //! `www/bootstrap.js`.
 //!
 //! `startApp` is an ordinary export, not `#[wasm_bindgen(start)]`, because the same wasm also
-//! runs under Node (kernel tests, `runRecipe`) where there is no DOM to build.
+//! runs under Node (kernel tests, `runRecipe`) where there is no DOM to build. `pageTable()`
+//! tells the browser tests the page table.
 //!
 //! - [`page`]: the contract between the shell and a page.
 //! - [`kit`]: what pages are built from (scope, URL state, keymap, stepper, PNG export...).
@@ -18,7 +19,6 @@
 //! - [`update_banner`]: the offline install's "reload to update" offer.
 //! - [`overlay`]: the `?` shortcut list.
 //! - [`pages`]: the page table and the pages.
-//! - [`kit`]: widgets shared by pages (the worker for long runs, its progress panel).
 //! - [`download`]: saving CSV and PNG files from the page.
 //! - [`clipboard`]: copying command lines.
 //! - [`command_line`]: shell quoting for the command lines the pages show.
@@ -51,6 +51,22 @@ pub mod update_banner;
 pub fn start_app() -> Result<(), JsValue> {
     install_panic_hook();
     shell::start()
+}
+
+/// The page table, in navigation order: `[{ id, group }]`, `group` being the Drills menu's
+/// group (`"kinematics"`, `"dynamics"`, `"trajectories"`, `"planning"`) or `null` for a
+/// top-level link. The browser tests check the navigation and the drill chain against it.
+#[wasm_bindgen(js_name = pageTable)]
+pub fn page_table() -> Result<js_sys::Array, JsValue> {
+    let table = js_sys::Array::new();
+    for def in pages::PAGES {
+        let entry = js_sys::Object::new();
+        js_sys::Reflect::set(&entry, &"id".into(), &def.id.into())?;
+        let group = def.nav.group().map_or(JsValue::NULL, JsValue::from);
+        js_sys::Reflect::set(&entry, &"group".into(), &group)?;
+        table.push(&entry);
+    }
+    Ok(table)
 }
 
 fn install_panic_hook() {

@@ -22,14 +22,10 @@ use crate::recipes::cubic_path::{
 };
 use crate::ui::ctx;
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{change, Fit, RunFrom, Shell, Signal, SignalPage, SignalSpec};
-use crate::ui::page::{MountCtx, PageDef, Shortcut};
+use crate::ui::kit::signal_page::{change, Fit, RunFrom, Shell, SignalPage, SignalSpec};
+use crate::ui::page::{MountCtx, Shortcut};
 use crate::view::cubic_path::{readouts as numbers, Peak};
 use crate::view::signal::{sig, snap, Slider};
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef =
-    PageDef::of::<Signal<CubicPage>>("cubic-path", "cubic-title", "cubic-blurb");
 
 const P: &str = "cubic";
 /// The overlays (URL key = `data-overlay`).

@@ -37,6 +37,7 @@ mod url;
 use std::cell::RefCell;
 use std::rc::{Rc, Weak};
 
+use wasm_bindgen::JsValue;
 use web_sys::{Element, HtmlSelectElement, KeyboardEvent};
 
 use self::file::InputFile;
@@ -49,24 +50,9 @@ use crate::ui::kit::form::{Form, Message};
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::{IgnoredKey, IgnoredReason, UrlNotice, UrlWriter};
-use crate::ui::page::{PageDef, PageHandle, Shortcut};
-use crate::ui::router;
+use crate::ui::page::{self, MountCtx, Shortcut};
 use crate::ui::schedule::Timer;
 use crate::view::command_line::RunArgs;
-use crate::view::drills::RECIPE_KEY;
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef {
-    id: "drills",
-    title_id: "drills-title",
-    blurb_id: "drills-blurb",
-    mount: mount::mount,
-};
-
-/// The link to one drill: `#/drills?recipe=<id>`.
-pub fn link(recipe_id: &str) -> String {
-    router::build_hash(PAGE.id, &[(RECIPE_KEY.to_string(), recipe_id.to_string())])
-}
 
 /// The class and test-id prefix of the page's kit widgets.
 const PREFIX: &str = "drills";
@@ -186,10 +172,14 @@ pub(crate) struct Page {
     background: RefCell<Option<Rc<background::Background>>>,
 }
 
-/// The shell's handle on the page.
-struct Handle(Rc<Page>);
+/// The drills page.
+pub struct DrillsPage(Rc<Page>);
 
-impl PageHandle for Handle {
+impl page::Page for DrillsPage {
+    fn mount(ctx: MountCtx) -> Result<DrillsPage, JsValue> {
+        mount::mount(ctx).map(DrillsPage)
+    }
+
     fn relocalize(&self) {
         self.0.relocalize();
     }
@@ -201,8 +191,10 @@ impl PageHandle for Handle {
     fn on_key(&self, event: &KeyboardEvent) -> bool {
         keys::on_key(&self.0, event)
     }
+}
 
-    fn unmount(&self) {
+impl Drop for DrillsPage {
+    fn drop(&mut self) {
         self.0.unmount();
     }
 }

@@ -46,9 +46,9 @@ mod hooks {
     use wasm_bindgen::prelude::*;
     use wasm_bindgen::JsCast;
 
-    use super::super::{dirty, Page};
     use super::Timings;
     use crate::ui::kit::canvas::Ink;
+    use crate::ui::pages::ik2r::{dirty, Page};
     use crate::ui::schedule::now_ms;
 
     const TIMINGS: &str = "__ik2rTimings";
@@ -97,7 +97,7 @@ mod hooks {
     }
 
     /// Installs `window.__ik2rBench`.
-    pub(in super::super) fn install_hooks(weak: &Weak<Page>) -> Result<(), JsValue> {
+    pub(in crate::ui::pages::ik2r) fn install_hooks(weak: &Weak<Page>) -> Result<(), JsValue> {
         let window = web_sys::window().ok_or_else(|| JsValue::from_str("no window"))?;
         let hooks = js_sys::Object::new();
         let w = weak.clone();
@@ -150,7 +150,7 @@ mod hooks {
     }
 
     /// Removes `window.__ik2rBench` (the page unmounted).
-    pub(in super::super) fn remove_hooks() {
+    pub(in crate::ui::pages::ik2r) fn remove_hooks() {
         if let Some(window) = web_sys::window() {
             let _ = js_sys::Reflect::delete_property(&window, &HOOKS.into());
         }

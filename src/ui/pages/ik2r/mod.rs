@@ -45,18 +45,10 @@ use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::DragEvent;
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
-use crate::ui::page::{MountCtx, PageDef, PageHandle, Shortcut};
+use crate::ui::page::{self, MountCtx, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::view::ik2r::{elbow_of, Grab, Params, State, WsColor};
 use crate::view::url::UrlState;
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef {
-    id: "ik-2r",
-    title_id: "ik2r-title",
-    blurb_id: "ik2r-blurb",
-    mount,
-};
 
 /// What needs redrawing on the next animation frame.
 mod dirty {
@@ -102,7 +94,7 @@ pub(crate) struct Page {
     timings: bench::Timings,
 }
 
-fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
+fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
     let root = ctx.root.clone();
     root.set_inner_html(&markup::page());
     let (state, ignored) = State::read(&ctx.query);
@@ -149,7 +141,7 @@ fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
     }
     page.exports.borrow().update_commands(&state);
     page.invalidate(dirty::ALL);
-    Ok(Box::new(Handle(page)))
+    Ok(page)
 }
 
 impl Page {
@@ -551,10 +543,14 @@ impl Page {
     }
 }
 
-/// The shell's handle on the page.
-struct Handle(Rc<Page>);
+/// The IK playground.
+pub struct Ik2rPage(Rc<Page>);
 
-impl PageHandle for Handle {
+impl page::Page for Ik2rPage {
+    fn mount(ctx: MountCtx) -> Result<Ik2rPage, JsValue> {
+        mount(ctx).map(Ik2rPage)
+    }
+
     fn relocalize(&self) {
         self.0.relocalize();
     }
@@ -570,8 +566,10 @@ impl PageHandle for Handle {
     fn on_key(&self, event: &KeyboardEvent) -> bool {
         keys::on_key(&self.0, event)
     }
+}
 
-    fn unmount(&self) {
+impl Drop for Ik2rPage {
+    fn drop(&mut self) {
         self.0.unmount();
     }
 }

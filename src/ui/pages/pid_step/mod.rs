@@ -19,15 +19,12 @@ use crate::error::RecipeWarning;
 use crate::pyfmt::py_round;
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{change, RunFrom, Shell, Signal, SignalPage, SignalSpec};
-use crate::ui::page::{MountCtx, PageDef, Shortcut};
+use crate::ui::kit::signal_page::{change, RunFrom, Shell, SignalPage, SignalSpec};
+use crate::ui::page::{MountCtx, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
 use crate::view::pid_step::{figures, rows, StepFigures};
 use crate::view::signal::{sig, snap, Slider};
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<Signal<PidPage>>("pid-step", "pid-title", "pid-blurb");
 
 const P: &str = "pid";
 const SLIDERS: [Slider; 5] = [

@@ -46,7 +46,7 @@ use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::kit::stepper::{Speed, StepperOptions, StepperWidget};
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::teleop::{metres, radians, sensitivity_defaults, Settings, SettingsTexts};
@@ -58,9 +58,6 @@ use label_panel::LabelPanel;
 use review::{Replay, Timeline};
 use scene_view::SceneView;
 use settings::SettingsForm;
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<TeleopPage>("teleop", "teleop-nav", "teleop-blurb");
 
 /// localStorage key of the session in progress.
 const STORE_KEY: &str = "bsv.teleop.session";

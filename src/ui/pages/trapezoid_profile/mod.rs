@@ -18,15 +18,11 @@ use web_sys::{Element, KeyboardEvent};
 
 use crate::recipes::trapezoid_profile::{params_from_args, TrapParams, TrapSample, INFO};
 use crate::ui::kit::recipe_controls::{Parse, RecipeControls};
-use crate::ui::kit::signal_page::{change, Fit, RunFrom, Shell, Signal, SignalPage, SignalSpec};
-use crate::ui::page::{MountCtx, PageDef, Shortcut};
+use crate::ui::kit::signal_page::{change, Fit, RunFrom, Shell, SignalPage, SignalSpec};
+use crate::ui::page::{MountCtx, Shortcut};
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
 use crate::view::trapezoid_profile::{phases, rows, Phases};
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef =
-    PageDef::of::<Signal<TrapPage>>("trapezoid-profile", "trap-title", "trap-blurb");
 
 const P: &str = "trap";
 const SLIDERS: [Slider; 4] = [
