@@ -1,7 +1,7 @@
 //! The navigation's "Drills" menu: a disclosure button in the header and a panel of the drill
 //! pages in groups (kinematics, dynamics and control, trajectories, planning), so the header
 //! stays one row however many drill pages there are. A page's group is its [`Nav`] in the page
-//! table, the menu lists them in the table's order; pages in no group are top-level links.
+//! table; groups and pages follow the table's order. Pages in no group are top-level links.
 //!
 //! The panel opens and closes with the button (`aria-expanded`), closes on `Escape` (focus back
 //! on the button), on a click outside it and on every route change. The button is marked
@@ -50,12 +50,18 @@ pub(crate) fn build(
     panel.set_id(MENU_ID);
     panel.set_attribute("data-testid", "nav-menu")?;
     panel.set_attribute("hidden", "")?;
+    // The groups in the order the table first names them, each with its pages in table order.
+    let mut groups: Vec<(Nav, &'static str)> = Vec::new();
+    for def in pages {
+        if let Some(key) = def.nav.group() {
+            if !groups.iter().any(|(nav, _)| *nav == def.nav) {
+                groups.push((def.nav, key));
+            }
+        }
+    }
     let mut ids = Vec::new();
-    for nav in Nav::GROUPS {
-        let defs: Vec<&'static PageDef> = pages.iter().filter(|def| def.nav == nav).collect();
-        let Some(key) = nav.group().filter(|_| !defs.is_empty()) else {
-            continue;
-        };
+    for (nav, key) in groups {
+        let defs = pages.iter().filter(|def| def.nav == nav);
         let title_id = format!("nav-group-{key}");
         let group = dom::el_class("div", "nav-group")?;
         let heading = dom::el_i18n("p", "nav-group-title", &title_id)?;

@@ -117,7 +117,7 @@ fn mount_boxed<P: Page>(ctx: MountCtx) -> Result<Box<dyn Page>, JsValue> {
 pub enum Nav {
     /// A top-level link of the header.
     Top,
-    /// The groups of the Drills menu, in the menu's order.
+    /// The groups of the Drills menu (in the order the page table first names them).
     Kinematics,
     Dynamics,
     Trajectories,
@@ -125,14 +125,6 @@ pub enum Nav {
 }
 
 impl Nav {
-    /// The Drills menu's groups, in order.
-    pub const GROUPS: [Nav; 4] = [
-        Nav::Kinematics,
-        Nav::Dynamics,
-        Nav::Trajectories,
-        Nav::Planning,
-    ];
-
     /// The group's key (`None` for a top-level link).
     pub fn group(self) -> Option<&'static str> {
         match self {
