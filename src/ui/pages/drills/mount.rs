@@ -9,7 +9,10 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event, KeyboardEvent};
 
-use super::{form, markup, Els, Page, Slot, State, Status, UrlNotes, PREFIX};
+use super::background::Background;
+use super::form;
+use super::markup::{self, PREFIX};
+use super::state::{Els, Page, Slot, State, Status, UrlNotes};
 use crate::recipes;
 use crate::ui::dom::{self, Listener};
 use crate::ui::kit::exports::Exports;
@@ -114,7 +117,12 @@ impl Page {
             }
         });
         // Big runs: the worker's progress panel, under the status line (background.rs).
-        let background = super::background::Background::new(Rc::downgrade(&page))?;
+        let weak = Rc::downgrade(&page);
+        let background = Background::new(move || {
+            if let Some(page) = weak.upgrade() {
+                page.cancel_background();
+            }
+        })?;
         page.els
             .status
             .after_with_node_1(background.panel.element())?;
