@@ -1,9 +1,8 @@
 //! The contract between the app shell and its pages.
 //!
-//! The shell owns the header, the footer, the `?` overlay and the lesson bar, and hosts the
-//! page the router names. A page is one struct holding its state and a
-//! [`Scope`](crate::ui::kit::scope::Scope), implementing [`Page`]; the page table
-//! (`crate::ui::pages::PAGES`) registers it with one line that also places it in the navigation:
+//! A page is one struct holding its state and a [`Scope`](crate::ui::kit::scope::Scope),
+//! implementing [`Page`]; the page table (`crate::ui::pages::PAGES`) registers it with one
+//! line that also places it in the navigation:
 //!
 //! ```ignore
 //! PageDef::of::<ik2r::Ik2rPage>("ik-2r", "ik2r-title", "ik2r-blurb", Nav::Kinematics),

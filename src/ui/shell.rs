@@ -3,22 +3,16 @@
 //! projector toggle, `?` button), the `<main>` that hosts the page the router names, the
 //! footer with the safety disclaimer, and the keys.
 //!
-//! - Hosting: on start and on every `hashchange` the shell drops the mounted page and mounts
-//!   the one the route names (an unknown id shows a localized "page not found" with a link
-//!   home). Only the shell imports the page table; what lies below it (pages, lesson bar, drill
-//!   chain, menu) gets the table from the shell ([`ShellLink`]) and asks it for what it needs.
-//!
-//! - Language: `?lang=` in the URL, else the saved choice (localStorage `bsv.lang`), else
-//!   `navigator.languages`, else English. Only an explicit switch (button or `l`) is saved.
-//!   A switch re-renders every `[data-i18n]` / `[data-i18n-attr]`, `<html lang>` and
-//!   `document.title`, then calls the page's `relocalize()`; nothing reloads.
-//! - Projector mode: class `projector` on `<html>` (CSS does type, lines and contrast), saved
-//!   in localStorage `bsv.projector`, and passed to the page's `set_projector()`.
-//! - Keys follow [`keymap`]: `?` shortcut list, `p` projector, `l` language (ignored with
-//!   Ctrl/Alt/Meta and while typing in a field); every other key goes to the page's `on_key`
-//!   only while the page body or a page canvas has focus, never a control. Keys the page does
-//!   not take keep their default, so presenter remotes (PageUp/PageDown, `b`, `.`) keep
-//!   working as the presentation software expects.
+//! - Hosting: on every route the shell drops the mounted page and mounts the one the route
+//!   names (else a localized "page not found"). Only the shell imports the page table; what
+//!   lies below it gets the table from the shell ([`ShellLink`]) and asks it for what it needs.
+//! - Language: `?lang=`, else the saved choice (`bsv.lang`), else `navigator.languages`, else
+//!   English; a switch re-renders every localized string and calls the page's `relocalize()`.
+//! - Projector mode: class `projector` on `<html>`, saved in `bsv.projector`, passed to the
+//!   page's `set_projector()`.
+//! - Keys follow [`keymap`]: `?`, `p`, `l` are the shell's; other keys go to the page's `on_key`
+//!   only while the page body or a canvas has focus. Keys the page does not take keep their
+//!   default, so presenter remotes keep working.
 
 use std::cell::RefCell;
 use std::rc::Rc;
