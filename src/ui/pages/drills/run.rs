@@ -151,11 +151,8 @@ impl Page {
         let ok = result.is_ok();
         match result {
             Ok(out) => {
-                let mut st = self.st.borrow_mut();
-                st.shown = Some(Shown::new(args, input_name, out));
-                st.runs += 1;
-                st.status = Status::Done(ms);
-                st.failed = None;
+                let shown = Shown::new(args, input_name, out);
+                self.st.borrow_mut().succeeded(shown, ms);
             }
             Err(error) => {
                 let slot = self.slot_for(&error);
@@ -286,11 +283,8 @@ impl Page {
                 match result {
                     Ok(out) => {
                         page.exports.clear_status();
-                        let mut st = page.st.borrow_mut();
-                        st.shown = Some(Shown::from_worker(run_args, input_name, out));
-                        st.runs += 1;
-                        st.status = Status::Done(ms);
-                        st.failed = None;
+                        let shown = Shown::from_worker(run_args, input_name, out);
+                        page.st.borrow_mut().succeeded(shown, ms);
                     }
                     Err(error) => {
                         if let Some(recipe_error) = error.recipe_error().cloned() {

@@ -117,6 +117,16 @@ pub(super) struct State {
     pub(super) exact: bool,
 }
 
+impl State {
+    /// A run succeeded in `ms` milliseconds: its result is shown, a failure before it is gone.
+    pub(super) fn succeeded(&mut self, shown: Shown, ms: f64) {
+        self.shown = Some(shown);
+        self.runs += 1;
+        self.status = Status::Done(ms);
+        self.failed = None;
+    }
+}
+
 /// The mounted page.
 pub(super) struct Page {
     pub(super) els: Els,
