@@ -1,12 +1,14 @@
 //! The foot of every drill page: the seed's "next step" sentence with a link to the next
 //! drill, and the whole chain (pendulum → … → Robot Pilot practice) as a strip of links with
 //! the page's own steps marked ([`crate::view::drill_chain`]). Hidden on pages off the chain.
+//! Which pages exist (a step links to its recipe's page when there is one) comes from the
+//! shell's page table, as `exists`.
 
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
 use crate::recipes;
-use crate::ui::{dom, pages, router};
+use crate::ui::{dom, router};
 use crate::view::drill_chain::{self, CHAIN};
 
 const CHAIN_ID: &str = "drill-chain";
@@ -15,11 +17,7 @@ fn page_of(recipe: &str) -> Option<&'static str> {
     recipes::find(recipe).and_then(|r| r.info.page)
 }
 
-fn exists(page: &str) -> bool {
-    pages::find(page).is_some()
-}
-
-fn href(step: &str) -> Option<String> {
+fn href(step: &str, exists: impl Fn(&str) -> bool) -> Option<String> {
     drill_chain::link(step, page_of, exists).map(|l| router::build_hash(l.page, &l.query))
 }
 
@@ -34,7 +32,7 @@ pub(crate) fn build() -> Result<Element, JsValue> {
 }
 
 /// Fills the chain for page `current` (or hides it off the chain).
-pub(crate) fn route_changed(current: &str) -> Result<(), JsValue> {
+pub(crate) fn route_changed(current: &str, exists: impl Fn(&str) -> bool) -> Result<(), JsValue> {
     let Some(nav) = dom::document()?.get_element_by_id(CHAIN_ID) else {
         return Ok(());
     };
@@ -50,7 +48,7 @@ pub(crate) fn route_changed(current: &str) -> Result<(), JsValue> {
     dom::append(&nav, &heading)?;
     if let Some(next) = CHAIN
         .get(primary + 1)
-        .and_then(|step| href(step).map(|h| (step, h)))
+        .and_then(|step| href(step, &exists).map(|h| (step, h)))
     {
         let line = dom::el_class("p", "chain-next")?;
         line.set_attribute("data-testid", "chain-next")?;
@@ -65,7 +63,9 @@ pub(crate) fn route_changed(current: &str) -> Result<(), JsValue> {
 
     let list = dom::el_class("ol", "chain-steps")?;
     for (i, step) in CHAIN.iter().enumerate() {
-        let Some(target) = href(step) else { continue };
+        let Some(target) = href(step, &exists) else {
+            continue;
+        };
         let item = dom::el("li")?;
         let link = dom::el_i18n("a", "chain-step", &drill_chain::label_id(step))?;
         link.set_attribute("href", &target)?;
@@ -82,9 +82,13 @@ pub(crate) fn route_changed(current: &str) -> Result<(), JsValue> {
 
 /// The href of the drill before (`delta` = -1) or after (+1) page `current` in the chain, for
 /// presenter remotes at the top or the end of a page.
-pub(crate) fn neighbour_href(current: &str, delta: isize) -> Option<String> {
+pub(crate) fn neighbour_href(
+    current: &str,
+    delta: isize,
+    exists: impl Fn(&str) -> bool,
+) -> Option<String> {
     // From the step whose "next step" sentence the page shows (the IK page: the workspace).
     let from = drill_chain::primary_position(current, page_of)?;
     let to = from.checked_add_signed(delta)?;
-    CHAIN.get(to).and_then(|step| href(step))
+    CHAIN.get(to).and_then(|step| href(step, exists))
 }

@@ -3,15 +3,17 @@
 //! title and note, a progress strip, and the keys of presenter remotes (PageDown / → next,
 //! PageUp / ← back; a step that asks for it first steps the page's own stepper). The lesson
 //! itself is [`crate::view::lesson`]; it is kept in localStorage (`bsv.lesson`) so it survives
-//! a reload; the `#/lesson` page edits it.
+//! a reload; the `#/lesson` page edits it. What presenting needs of the shell (step the page,
+//! mount it again, projector mode) is returned as [`ShellRequest`]s for the shell to carry out.
 
 use std::cell::RefCell;
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
-use web_sys::{Element, KeyboardEvent};
+use web_sys::{Element, Event, KeyboardEvent};
 
-use crate::ui::{ctx, dom, pages, router};
+use crate::ui::page::{ShellLink, ShellRequest};
+use crate::ui::{ctx, dom, router};
 use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
 
 /// localStorage key of the current lesson (its `.json` text).
@@ -22,13 +24,9 @@ thread_local! {
     static PRESENTING: RefCell<Option<(Lesson, Presenter)>> = const { RefCell::new(None) };
 }
 
-/// Whether page `id` exists (a lesson step must name one).
-pub fn is_page(id: &str) -> bool {
-    pages::find(id).is_some()
-}
-
-/// The stored lesson (empty when none or unreadable).
-pub fn stored() -> Lesson {
+/// The stored lesson (empty when none or unreadable); `is_page` says which page ids exist (a
+/// lesson step must name one).
+pub fn stored(is_page: impl Fn(&str) -> bool) -> Lesson {
     dom::storage_get(LESSON_STORAGE_KEY)
         .and_then(|text| Lesson::from_json(&text, is_page).ok())
         .unwrap_or_default()
@@ -40,7 +38,7 @@ pub fn store(lesson: &Lesson) {
 }
 
 /// The header button and its live status line.
-pub(crate) fn build_add_button() -> Result<Element, JsValue> {
+pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
     let wrap = dom::el_class("span", "lesson-add-wrap")?;
     // Phones show "+" alone; its name is still the full text (visually hidden there).
     let button = dom::el_class("button", "tool-button lesson-add")?;
@@ -56,7 +54,7 @@ pub(crate) fn build_add_button() -> Result<Element, JsValue> {
     status.set_attribute("data-testid", "lesson-add-status")?;
     let shown = status.clone();
     dom::Listener::new(&button, "click", move |_| {
-        if let Some(count) = add_current_view() {
+        if let Some(count) = add_current_view(shell) {
             shown.set_text_content(Some(&ctx::t_strings(
                 "lesson-added",
                 &[("count", count.to_string())],
@@ -70,14 +68,15 @@ pub(crate) fn build_add_button() -> Result<Element, JsValue> {
 }
 
 /// Appends the page shown now to the stored lesson; the number of steps after it.
-fn add_current_view() -> Option<usize> {
+fn add_current_view(shell: ShellLink) -> Option<usize> {
     let route = router::current_route();
-    let def = pages::find(&route.page)?;
+    let def = shell.find(&route.page)?;
     if def.id == "lesson" {
         return None;
     }
     let hash = crate::view::url::build_hash(&route.page, &route.page_query());
-    let mut lesson = stored();
+    let is_page = |id: &str| shell.is_page(id);
+    let mut lesson = stored(is_page);
     if lesson.title.is_empty() {
         lesson.title = ctx::t("lesson-untitled");
     }
@@ -96,40 +95,40 @@ pub(crate) fn build_bar() -> Result<Element, JsValue> {
     bar.set_attribute("data-testid", "lesson-bar")?;
     dom::set_i18n_attrs(&bar, &[("aria-label", "lesson-bar-label")])?;
     dom::show(&bar, false);
-    // One listener for the bar's buttons (they are redrawn at every step).
-    dom::Listener::new(&bar, "click", |event| {
-        let target = event
-            .target()
-            .and_then(|t| t.dyn_into::<Element>().ok())
-            .and_then(|e| e.closest("[data-action]").ok().flatten());
-        let Some(target) = target else { return };
-        let result = match target.get_attribute("data-action").as_deref() {
-            Some("lesson-next") => press(true),
-            Some("lesson-prev") => press(false),
-            Some("lesson-end") => stop(),
-            Some("lesson-go") => {
-                let i = target
-                    .get_attribute("data-index")
-                    .and_then(|i| i.parse::<usize>().ok())
-                    .unwrap_or(0);
-                let action = PRESENTING.with(|p| {
-                    let mut p = p.borrow_mut();
-                    p.as_mut().map(|(l, pr)| pr.go(l, i))
-                });
-                action.map_or(Ok(()), apply)
-            }
-            _ => Ok(()),
-        };
-        if let Err(error) = result {
-            web_sys::console::error_2(&"BSV Playground: lesson".into(), &error);
-        }
-    })?
-    .forever();
     Ok(bar)
 }
 
-/// Starts presenting `lesson` at step `index`.
-pub fn present(lesson: Lesson, index: usize) -> Result<(), JsValue> {
+/// A click in the bar (its buttons are redrawn at every step, so the shell listens on the
+/// bar): what the presenter asks of the shell.
+pub(crate) fn on_bar_click(event: &Event) -> Result<Vec<ShellRequest>, JsValue> {
+    let target = event
+        .target()
+        .and_then(|t| t.dyn_into::<Element>().ok())
+        .and_then(|e| e.closest("[data-action]").ok().flatten());
+    let Some(target) = target else {
+        return Ok(Vec::new());
+    };
+    match target.get_attribute("data-action").as_deref() {
+        Some("lesson-next") => press(true),
+        Some("lesson-prev") => press(false),
+        Some("lesson-end") => stop().map(|()| Vec::new()),
+        Some("lesson-go") => {
+            let i = target
+                .get_attribute("data-index")
+                .and_then(|i| i.parse::<usize>().ok())
+                .unwrap_or(0);
+            let action = PRESENTING.with(|p| {
+                let mut p = p.borrow_mut();
+                p.as_mut().map(|(l, pr)| pr.go(l, i))
+            });
+            action.map_or(Ok(Vec::new()), apply)
+        }
+        _ => Ok(Vec::new()),
+    }
+}
+
+/// Starts presenting `lesson` at step `index`; projector mode on, then what the step asks.
+pub fn present(lesson: Lesson, index: usize) -> Result<Vec<ShellRequest>, JsValue> {
     let mut presenter = Presenter::default();
     let action = presenter.go(&lesson, index);
     PRESENTING.with(|p| *p.borrow_mut() = Some((lesson, presenter)));
@@ -137,8 +136,9 @@ pub fn present(lesson: Lesson, index: usize) -> Result<(), JsValue> {
         // Full screen needs a user gesture; without one the lesson still runs in the window.
         let _ = root.request_fullscreen();
     }
-    crate::ui::shell::set_projector_for_lesson(true)?;
-    apply(action)
+    let mut requests = vec![ShellRequest::Projector(true)];
+    requests.extend(apply(action)?);
+    Ok(requests)
 }
 
 /// Stops presenting.
@@ -160,7 +160,7 @@ pub fn presenting() -> bool {
 }
 
 /// Next / back while presenting (buttons and keys).
-fn press(forward: bool) -> Result<(), JsValue> {
+fn press(forward: bool) -> Result<Vec<ShellRequest>, JsValue> {
     let action = PRESENTING.with(|p| {
         let mut p = p.borrow_mut();
         let (lesson, presenter) = p.as_mut()?;
@@ -172,17 +172,17 @@ fn press(forward: bool) -> Result<(), JsValue> {
     });
     match action {
         Some(action) => apply(action),
-        None => Ok(()),
+        None => Ok(Vec::new()),
     }
 }
 
-fn apply(action: PresenterAction) -> Result<(), JsValue> {
+/// Shows what the presenter moved to; a step of the page's stepper or showing the current
+/// route again is the shell's to do.
+fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
+    let mut requests = Vec::new();
     match action {
-        PresenterAction::Stay => render(),
-        PresenterAction::StepPage => {
-            crate::ui::shell::step_page()?;
-            render()
-        }
+        PresenterAction::Stay => {}
+        PresenterAction::StepPage => requests.push(ShellRequest::StepPage),
         PresenterAction::Show(i) => {
             let route = PRESENTING.with(|p| {
                 p.borrow()
@@ -193,31 +193,36 @@ fn apply(action: PresenterAction) -> Result<(), JsValue> {
                 let window = dom::window()?;
                 if window.location().hash()? == route {
                     // Same state: re-mount it from the start.
-                    crate::ui::shell::remount()?;
+                    requests.push(ShellRequest::Remount);
                 } else {
                     window.location().set_hash(&route)?;
                 }
             }
-            render()
         }
     }
+    render()?;
+    Ok(requests)
 }
 
-/// A key while presenting: PageDown / → next, PageUp / ← back, Escape ends. True if taken.
-pub(crate) fn on_key(event: &KeyboardEvent) -> Result<bool, JsValue> {
+/// A key while presenting: PageDown / → next, PageUp / ← back, Escape ends. `None` if not
+/// taken, else what the presenter asks of the shell.
+pub(crate) fn on_key(event: &KeyboardEvent) -> Result<Option<Vec<ShellRequest>>, JsValue> {
     if !presenting() || crate::ui::kit::keymap::has_command_modifier(event) {
-        return Ok(false);
+        return Ok(None);
     }
     if crate::ui::kit::keymap::is_typing(event.target()) {
-        return Ok(false);
+        return Ok(None);
     }
-    match event.key().as_str() {
+    let requests = match event.key().as_str() {
         "PageDown" | "ArrowRight" => press(true)?,
         "PageUp" | "ArrowLeft" => press(false)?,
-        "Escape" | "Esc" => stop()?,
-        _ => return Ok(false),
-    }
-    Ok(true)
+        "Escape" | "Esc" => {
+            stop()?;
+            Vec::new()
+        }
+        _ => return Ok(None),
+    };
+    Ok(Some(requests))
 }
 
 /// Redraws the bar: progress strip, step title and note, buttons.

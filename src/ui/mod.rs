@@ -1,28 +1,14 @@
 //! The browser UI (wasm32 only): the app shell and its pages, started by `startApp()` from
-//! `www/bootstrap.js`.
+//! `www/bootstrap.js`; `pageTable()` tells the browser tests the page table. `startApp` is an
+//! ordinary export, not `#[wasm_bindgen(start)]`, because the same wasm also runs under Node
+//! (kernel tests, `runRecipe`) where there is no DOM to build.
 //!
-//! `startApp` is an ordinary export, not `#[wasm_bindgen(start)]`, because the same wasm also
-//! runs under Node (kernel tests, `runRecipe`) where there is no DOM to build.
-//!
-//! - [`page`]: the contract between the shell and a page.
-//! - [`kit`]: what pages are built from (scope, URL state, keymap, stepper, PNG export...).
-//! - [`ctx`]: current language, bundles, projector mode.
-//! - [`router`]: the URL (codec in [`crate::view::url`]), `hashchange`, `replace_query`.
-//! - [`dom`]: element builders, localized text, storage, listeners.
-//! - [`shell`]: header, navigation, language switch, projector mode, footer, keys, and the
-//!   host of the mounted page.
-//! - [`lesson_bar`]: "add this view to the lesson" and presenting a lesson over any page.
-//! - [`nav_menu`]: the header's grouped Drills menu.
-//! - [`drill_chain`]: the seed's next-step chain at the foot of drill pages.
-//! - [`section_keys`]: PageDown / PageUp of presenter remotes on pages that do not step.
-//! - [`update_banner`]: the offline install's "reload to update" offer.
-//! - [`overlay`]: the `?` shortcut list.
-//! - [`pages`]: the page table and the pages.
-//! - [`kit`]: widgets shared by pages (the worker for long runs, its progress panel).
-//! - [`download`]: saving CSV and PNG files from the page.
-//! - [`clipboard`]: copying command lines.
-//! - [`command_line`]: shell quoting for the command lines the pages show.
-//! - [`schedule`]: debounced timers, work after the next paint, the clock.
+//! - [`shell`] hosts the page the [`router`] names, with the header ([`nav_menu`]), the
+//!   [`lesson_bar`], the [`drill_chain`], [`section_keys`], the [`overlay`] and the
+//!   [`update_banner`]; it alone imports the page table, [`pages`].
+//! - [`page`] is the contract between the shell and a page; pages are built from the [`kit`],
+//!   [`dom`], [`ctx`] (language, projector mode) and [`schedule`] (timers, after paint).
+//! - [`download`], [`clipboard`], [`command_line`]: files, copies and shell quoting.
 
 use wasm_bindgen::prelude::*;
 
@@ -51,6 +37,22 @@ pub mod update_banner;
 pub fn start_app() -> Result<(), JsValue> {
     install_panic_hook();
     shell::start()
+}
+
+/// The page table, in navigation order: `[{ id, group }]`, `group` being the Drills menu's
+/// group (`"kinematics"`, `"dynamics"`, `"trajectories"`, `"planning"`) or `null` for a
+/// top-level link. The browser tests check the navigation and the drill chain against it.
+#[wasm_bindgen(js_name = pageTable)]
+pub fn page_table() -> Result<js_sys::Array, JsValue> {
+    let table = js_sys::Array::new();
+    for def in pages::PAGES {
+        let entry = js_sys::Object::new();
+        js_sys::Reflect::set(&entry, &"id".into(), &def.id.into())?;
+        let group = def.nav.group().map_or(JsValue::NULL, JsValue::from);
+        js_sys::Reflect::set(&entry, &"group".into(), &group)?;
+        table.push(&entry);
+    }
+    Ok(table)
 }
 
 fn install_panic_hook() {

@@ -1,6 +1,7 @@
 //! The navigation's "Drills" menu: a disclosure button in the header and a panel of the drill
 //! pages in groups (kinematics, dynamics and control, trajectories, planning), so the header
-//! stays one row however many drill pages there are. Pages in no group are top-level links.
+//! stays one row however many drill pages there are. A page's group is its [`Nav`] in the page
+//! table; groups and pages follow the table's order. Pages in no group are top-level links.
 //!
 //! The panel opens and closes with the button (`aria-expanded`), closes on `Escape` (focus back
 //! on the button), on a click outside it and on every route change. The button is marked
@@ -12,8 +13,8 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event, KeyboardEvent, Node};
 
-use crate::ui::page::PageDef;
-use crate::ui::{dom, pages, router};
+use crate::ui::page::{Nav, PageDef};
+use crate::ui::{dom, router};
 
 const MENU_ID: &str = "nav-menu";
 
@@ -22,11 +23,14 @@ pub(crate) struct NavMenu {
     item: Element,
     button: Element,
     panel: Element,
+    /// The ids of the pages in the menu.
+    ids: Vec<&'static str>,
 }
 
-/// Builds `<li>` with the button and the grouped panel; `link` makes one page link exactly as
-/// the shell makes its top-level ones.
+/// Builds `<li>` with the button and the panel of `pages`' groups; `link` makes one page link
+/// exactly as the shell makes its top-level ones.
 pub(crate) fn build(
+    pages: &'static [PageDef],
     link: impl Fn(&'static PageDef) -> Result<Element, JsValue>,
 ) -> Result<Rc<NavMenu>, JsValue> {
     let item = dom::el_class("li", "nav-menu-item")?;
@@ -46,19 +50,28 @@ pub(crate) fn build(
     panel.set_id(MENU_ID);
     panel.set_attribute("data-testid", "nav-menu")?;
     panel.set_attribute("hidden", "")?;
-    for (title_id, ids) in pages::NAV_GROUPS {
-        let defs: Vec<&'static PageDef> = ids.iter().filter_map(|id| pages::find(id)).collect();
-        if defs.is_empty() {
-            continue;
+    // The groups in the order the table first names them, each with its pages in table order.
+    let mut groups: Vec<(Nav, &'static str)> = Vec::new();
+    for def in pages {
+        if let Some(key) = def.nav.group() {
+            if !groups.iter().any(|(nav, _)| *nav == def.nav) {
+                groups.push((def.nav, key));
+            }
         }
+    }
+    let mut ids = Vec::new();
+    for (nav, key) in groups {
+        let defs = pages.iter().filter(|def| def.nav == nav);
+        let title_id = format!("nav-group-{key}");
         let group = dom::el_class("div", "nav-group")?;
-        let heading = dom::el_i18n("p", "nav-group-title", title_id)?;
+        let heading = dom::el_i18n("p", "nav-group-title", &title_id)?;
         let heading_id = format!("{title_id}-heading");
         heading.set_id(&heading_id);
         dom::append(&group, &heading)?;
         let list = dom::el("ul")?;
         list.set_attribute("aria-labelledby", &heading_id)?;
         for def in defs {
+            ids.push(def.id);
             let li = dom::el("li")?;
             dom::append(&li, &link(def)?)?;
             dom::append(&list, &li)?;
@@ -72,6 +85,7 @@ pub(crate) fn build(
         item,
         button,
         panel,
+        ids,
     });
     menu.listen()?;
     Ok(menu)
@@ -97,9 +111,7 @@ impl NavMenu {
     /// After a route change: closed, and the button marked when the page is one of the menu's.
     pub(crate) fn route_changed(&self, current: &str) {
         self.set_open(false);
-        let inside = pages::NAV_GROUPS
-            .iter()
-            .any(|(_, ids)| ids.contains(&current));
+        let inside = self.ids.contains(&current);
         let _ = self
             .button
             .class_list()

@@ -1,31 +1,18 @@
 //! The contract between the app shell and its pages.
 //!
-//! The shell owns the header (product name, navigation, language switch, projector toggle),
-//! the footer (safety disclaimer), the `?` shortcut overlay and hosts the page the router
-//! names. A page is one struct holding its state and a [`Scope`](crate::ui::kit::scope::Scope)
-//! (its listeners, timers, frame loop, observers), implementing [`Page`]; it registers itself
-//! with one line in `crate::ui::pages::PAGES`:
+//! A page is one struct holding its state and a [`Scope`](crate::ui::kit::scope::Scope),
+//! implementing [`Page`]; the page table (`crate::ui::pages::PAGES`) registers it with one
+//! line that also places it in the navigation:
 //!
 //! ```ignore
-//! pub const PAGE: PageDef = PageDef::of::<Pendulum>("pendulum", "pendulum-title", "pendulum-blurb");
+//! PageDef::of::<ik2r::Ik2rPage>("ik-2r", "ik2r-title", "ik2r-blurb", Nav::Kinematics),
 //! ```
 //!
-//! When its route `#/<id>` opens, the shell empties the `<main>` element and calls
-//! [`Page::mount`], keeping the page until the route changes; then it drops it (unmount =
-//! drop: the scope removes everything). Pages written before the kit implement
-//! [`PageHandle`] directly and fill in [`PageDef`] by hand (`unmount` is then called before
-//! the drop).
-//!
-//! Localized text: any element with `data-i18n="msg-id"` has its text set by the shell from
-//! the current bundle, now and on every language switch; `data-i18n-attr="title=msg-id;
-//! aria-label=msg-id"` does the same for attributes. Strings a page formats itself (canvas
-//! labels, validation messages with arguments) are redrawn in `PageHandle::relocalize`, with
-//! `crate::ui::ctx::t` / `t_args` (the current language's bundle).
-//!
-//! Page state lives in the URL query after the route (`#/ik-2r?L1=0.12&q1=0.3&lang=ja`):
-//! `MountCtx::query` has it on mount, and the page calls `crate::ui::router::replace_query`
-//! with its whole state whenever it changes (history.replaceState, no reload, no new history
-//! entry). `lang` is the shell's and is added by the router.
+//! On its route `#/<id>` the shell empties `<main>`, calls [`Page::mount`] and keeps the page
+//! until the route changes; then it drops it (the scope removes what the page installed).
+//! Text in `data-i18n` / `data-i18n-attr` elements is the shell's; what a page formats itself
+//! is redrawn in [`Page::relocalize`]. Page state lives in the URL query after the route:
+//! [`MountCtx::query`] on mount, `crate::ui::router::replace_query` on every change.
 
 use wasm_bindgen::JsValue;
 use web_sys::{Element, KeyboardEvent};
@@ -38,12 +25,52 @@ pub struct Shortcut {
     pub message_id: &'static str,
 }
 
+/// What a page or the lesson presenter asks the shell to do.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ShellRequest {
+    /// Send the mounted page one PageDown, as a presenter remote would (a lesson step that
+    /// steps the page's stepper).
+    StepPage,
+    /// Mount the current route again (a lesson step shown a second time starts afresh).
+    Remount,
+    /// Projector mode on or off (a lesson being presented turns it on).
+    Projector(bool),
+}
+
+/// What the shell lends a page: the page table and a way to ask the shell for something.
+#[derive(Clone, Copy)]
+pub struct ShellLink {
+    /// Every page, in navigation order.
+    pub pages: &'static [PageDef],
+    /// Carries out a request.
+    pub request: fn(ShellRequest) -> Result<(), JsValue>,
+}
+
+impl ShellLink {
+    /// The page with route id `id`.
+    pub fn find(&self, id: &str) -> Option<&'static PageDef> {
+        find(self.pages, id)
+    }
+
+    /// Whether page `id` exists.
+    pub fn is_page(&self, id: &str) -> bool {
+        self.find(id).is_some()
+    }
+}
+
+/// The page with route id `id` in `pages`.
+pub fn find(pages: &'static [PageDef], id: &str) -> Option<&'static PageDef> {
+    pages.iter().find(|def| def.id == id)
+}
+
 /// What a page gets when it mounts.
 pub struct MountCtx {
     /// The empty `<main>` element the page fills.
     pub root: Element,
     /// The query of the route, decoded, in order (`lang` removed).
     pub query: Vec<(String, String)>,
+    /// The page table and the shell's requests.
+    pub shell: ShellLink,
 }
 
 impl MountCtx {
@@ -56,29 +83,8 @@ impl MountCtx {
     }
 }
 
-/// A mounted page.
-pub trait PageHandle {
-    /// The language changed: redraw whatever the page formats itself.
-    fn relocalize(&self) {}
-    /// Projector mode turned on or off: redraw canvases with larger type and lines.
-    fn set_projector(&self, _on: bool) {}
-    /// The page's keys, listed in the `?` overlay after the shell's own.
-    fn shortcuts(&self) -> Vec<Shortcut> {
-        Vec::new()
-    }
-    /// A key pressed while the page (its body or canvas, not a control) has focus and no
-    /// overlay is open; return `true` if the page handled it (the shell then calls
-    /// `preventDefault`).
-    fn on_key(&self, _event: &KeyboardEvent) -> bool {
-        false
-    }
-    /// The route is leaving this page (called just before it is dropped): drop listeners,
-    /// cancel animation frames. A [`Page`] needs none: its scope does it on drop.
-    fn unmount(&self) {}
-}
-
 /// A page: one struct holding its state and its scope, built by `mount` and dropped when the
-/// route changes. Every [`Page`] is a [`PageHandle`].
+/// route changes.
 pub trait Page: 'static {
     /// Builds the page under `ctx.root` from the URL's query.
     fn mount(ctx: MountCtx) -> Result<Self, JsValue>
@@ -101,26 +107,36 @@ pub trait Page: 'static {
     }
 }
 
-impl<P: Page> PageHandle for P {
-    fn relocalize(&self) {
-        Page::relocalize(self);
-    }
-    fn set_projector(&self, on: bool) {
-        Page::set_projector(self, on);
-    }
-    fn shortcuts(&self) -> Vec<Shortcut> {
-        Page::shortcuts(self)
-    }
-    fn on_key(&self, event: &KeyboardEvent) -> bool {
-        Page::on_key(self, event)
-    }
-}
-
-fn mount_boxed<P: Page>(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
+fn mount_boxed<P: Page>(ctx: MountCtx) -> Result<Box<dyn Page>, JsValue> {
     Ok(Box::new(P::mount(ctx)?))
 }
 
-/// A page the shell can route to.
+/// Where a page's link sits in the header's navigation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Nav {
+    /// A top-level link of the header.
+    Top,
+    /// The groups of the Drills menu (in the order the page table first names them).
+    Kinematics,
+    Dynamics,
+    Trajectories,
+    Planning,
+}
+
+impl Nav {
+    /// The group's key (`None` for a top-level link).
+    pub fn group(self) -> Option<&'static str> {
+        match self {
+            Nav::Top => None,
+            Nav::Kinematics => Some("kinematics"),
+            Nav::Dynamics => Some("dynamics"),
+            Nav::Trajectories => Some("trajectories"),
+            Nav::Planning => Some("planning"),
+        }
+    }
+}
+
+/// A page the shell can route to: one line of the page table.
 #[derive(Clone, Copy)]
 pub struct PageDef {
     /// Route id: `#/<id>`; also the prefix of its `data-testid`s and Fluent ids.
@@ -129,8 +145,10 @@ pub struct PageDef {
     pub title_id: &'static str,
     /// Fluent id of its one-line description on the home-page card.
     pub blurb_id: &'static str,
+    /// Where its link sits in the navigation.
+    pub nav: Nav,
     /// Builds the page under `ctx.root`.
-    pub mount: fn(MountCtx) -> Result<Box<dyn PageHandle>, JsValue>,
+    pub mount: fn(MountCtx) -> Result<Box<dyn Page>, JsValue>,
 }
 
 impl PageDef {
@@ -139,11 +157,13 @@ impl PageDef {
         id: &'static str,
         title_id: &'static str,
         blurb_id: &'static str,
+        nav: Nav,
     ) -> PageDef {
         PageDef {
             id,
             title_id,
             blurb_id,
+            nav,
             mount: mount_boxed::<P>,
         }
     }

@@ -16,9 +16,21 @@ use std::cell::Cell;
 use wasm_bindgen::prelude::*;
 
 use crate::ui::{ctx, dom};
+use crate::view::drills::RECIPE_KEY;
 pub use crate::view::url::{
     build_hash, parse_hash, percent_decode, percent_encode, with_lang, Route, HOME_ID, LANG_KEY,
 };
+
+/// Route id of the drills page, where every recipe runs (`#/drills?recipe=<id>`).
+pub const DRILLS_ID: &str = "drills";
+
+/// The link to one drill: `#/drills?recipe=<id>`.
+pub fn drill_hash(recipe_id: &str) -> String {
+    build_hash(
+        DRILLS_ID,
+        &[(RECIPE_KEY.to_string(), recipe_id.to_string())],
+    )
+}
 
 thread_local! {
     static LANG_IN_URL: Cell<bool> = const { Cell::new(false) };

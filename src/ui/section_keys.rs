@@ -19,8 +19,13 @@ const SECTIONS: &str =
 /// Pixels of slack: a section whose top is within this of the viewport's top is "here".
 const SLACK_PX: f64 = 12.0;
 
-/// Handles PageDown / PageUp the page did not take; true when it did something.
-pub(crate) fn on_key(event: &KeyboardEvent, current_page: Option<&str>) -> Result<bool, JsValue> {
+/// Handles PageDown / PageUp the page did not take; true when it did something. `exists` says
+/// which pages the drill chain may link to.
+pub(crate) fn on_key(
+    event: &KeyboardEvent,
+    current_page: Option<&str>,
+    exists: impl Fn(&str) -> bool,
+) -> Result<bool, JsValue> {
     let forward = match event.key().as_str() {
         "PageDown" => true,
         "PageUp" => false,
@@ -74,7 +79,7 @@ pub(crate) fn on_key(event: &KeyboardEvent, current_page: Option<&str>) -> Resul
         return Ok(true);
     }
     let neighbour = current_page
-        .and_then(|page| drill_chain::neighbour_href(page, if forward { 1 } else { -1 }));
+        .and_then(|page| drill_chain::neighbour_href(page, if forward { 1 } else { -1 }, exists));
     if let Some(href) = neighbour {
         // Start the next page from its top, not from the (persistent) chain at the foot.
         if let Some(main) = document.get_element_by_id("app-main") {

@@ -1,23 +1,18 @@
 //! The app shell: a "Skip to content" link, the header (product name and subtitle, navigation
-//! of the pages that exist with the drill pages in a grouped menu ([`nav_menu`]), language switch, projector toggle, `?` button), the `<main>` that
-//! hosts the page the router names, the footer with the safety disclaimer, and the keys.
+//! of the page table with the drill pages in a grouped menu ([`nav_menu`]), language switch,
+//! projector toggle, `?` button), the `<main>` that hosts the page the router names, the
+//! footer with the safety disclaimer, and the keys.
 //!
-//! - Hosting: on start and on every `hashchange` the shell drops the mounted page and mounts
-//!   the one the route names (an unknown id shows a localized "page not found" with a link
-//!   home). The import graph is a tree: shell → router, overlay, pages, kit; router and overlay
-//!   import neither the shell nor the pages.
-//!
-//! - Language: `?lang=` in the URL, else the saved choice (localStorage `bsv.lang`), else
-//!   `navigator.languages`, else English. Only an explicit switch (button or `l`) is saved.
-//!   A switch re-renders every `[data-i18n]` / `[data-i18n-attr]`, `<html lang>` and
-//!   `document.title`, then calls the page's `relocalize()`; nothing reloads.
-//! - Projector mode: class `projector` on `<html>` (CSS does type, lines and contrast), saved
-//!   in localStorage `bsv.projector`, and passed to the page's `set_projector()`.
-//! - Keys follow [`keymap`]: `?` shortcut list, `p` projector, `l` language (ignored with
-//!   Ctrl/Alt/Meta and while typing in a field); every other key goes to the page's `on_key`
-//!   only while the page body or a page canvas has focus, never a control. Keys the page does
-//!   not take keep their default, so presenter remotes (PageUp/PageDown, `b`, `.`) keep
-//!   working as the presentation software expects.
+//! - Hosting: on every route the shell drops the mounted page and mounts the one the route
+//!   names (else a localized "page not found"). Only the shell imports the page table; what
+//!   lies below it gets the table from the shell ([`ShellLink`]) and asks it for what it needs.
+//! - Language: `?lang=`, else the saved choice (`bsv.lang`), else `navigator.languages`, else
+//!   English; a switch re-renders every localized string and calls the page's `relocalize()`.
+//! - Projector mode: class `projector` on `<html>`, saved in `bsv.projector`, passed to the
+//!   page's `set_projector()`.
+//! - Keys follow [`keymap`]: `?`, `p`, `l` are the shell's; other keys go to the page's `on_key`
+//!   only while the page body or a canvas has focus. Keys the page does not take keep their
+//!   default, so presenter remotes keep working.
 
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -31,16 +26,23 @@ use crate::ui::drill_chain;
 use crate::ui::kit::keymap::{self, ShellKey};
 use crate::ui::lesson_bar;
 use crate::ui::nav_menu::{self, NavMenu};
-use crate::ui::page::{MountCtx, PageDef, PageHandle};
-use crate::ui::router::Route;
+use crate::ui::page::{self, MountCtx, Nav, Page, PageDef, ShellLink, ShellRequest};
+use crate::ui::pages::PAGES;
+use crate::ui::router::{Route, HOME_ID};
 use crate::ui::section_keys;
 use crate::ui::update_banner;
-use crate::ui::{ctx, dom, overlay, pages, router};
+use crate::ui::{ctx, dom, overlay, router};
 
 /// localStorage key of the language the user chose.
 pub const LANG_STORAGE_KEY: &str = "bsv.lang";
 /// localStorage key of projector mode (`"1"` on, `"0"` off).
 pub const PROJECTOR_STORAGE_KEY: &str = "bsv.projector";
+
+/// The page table and the shell's requests, lent to pages and the lesson bar.
+const SHELL: ShellLink = ShellLink {
+    pages: PAGES,
+    request: perform,
+};
 
 const APP_ID: &str = "app";
 const MAIN_ID: &str = "app-main";
@@ -77,7 +79,12 @@ pub(crate) fn start() -> Result<(), JsValue> {
     dom::append(&app, &drill_chain::build()?)?;
     dom::append(&app, &build_footer()?)?;
     dom::append(&app, &update_banner::build()?)?;
-    dom::append(&app, &lesson_bar::build_bar()?)?;
+    let bar = lesson_bar::build_bar()?;
+    dom::Listener::new(&bar, "click", |event| {
+        report(lesson_bar::on_bar_click(&event).and_then(perform_all));
+    })?
+    .forever();
+    dom::append(&app, &bar)?;
     if let Some(status) = document.get_element_by_id("boot-status") {
         status.remove();
     }
@@ -161,15 +168,12 @@ fn build_header() -> Result<Element, JsValue> {
     nav.set_attribute("data-testid", "site-nav")?;
     dom::set_i18n_attrs(&nav, &[("aria-label", "nav-label")])?;
     let list = dom::el("ul")?;
-    let menu = nav_menu::build(nav_link)?;
-    for def in pages::PAGES
-        .iter()
-        .filter(|def| !pages::in_nav_group(def.id))
-    {
+    let menu = nav_menu::build(PAGES, nav_link)?;
+    for def in PAGES.iter().filter(|def| def.nav == Nav::Top) {
         let item = dom::el("li")?;
         dom::append(&item, &nav_link(def)?)?;
         dom::append(&list, &item)?;
-        if def.id == pages::HOME_ID {
+        if def.id == HOME_ID {
             dom::append(&list, menu.item())?;
         }
     }
@@ -178,7 +182,7 @@ fn build_header() -> Result<Element, JsValue> {
     dom::append(&header, &nav)?;
 
     let tools = dom::el_class("div", "header-tools")?;
-    dom::append(&tools, &lesson_bar::build_add_button()?)?;
+    dom::append(&tools, &lesson_bar::build_add_button(SHELL)?)?;
     let lang = dom::el_class("button", "tool-button lang-switch")?;
     lang.set_attribute("type", "button")?;
     lang.set_attribute("data-testid", "lang-switch")?;
@@ -222,7 +226,7 @@ fn nav_link(def: &'static PageDef) -> Result<Element, JsValue> {
 
 /// The home page is "Home" in the navigation; other pages use their title.
 fn nav_title_id(def: &PageDef) -> &'static str {
-    if def.id == pages::HOME_ID {
+    if def.id == HOME_ID {
         "nav-home"
     } else {
         def.title_id
@@ -314,7 +318,7 @@ fn apply_projector_class(on: bool) -> Result<(), JsValue> {
 }
 
 fn current_def() -> Option<&'static PageDef> {
-    current_page_id().and_then(pages::find)
+    current_page_id().and_then(|id| page::find(PAGES, id))
 }
 
 /// After a route change: mark the current page in the navigation, set the document title.
@@ -339,7 +343,7 @@ pub(crate) fn route_changed(def: Option<&'static PageDef>) -> Result<(), JsValue
             menu.route_changed(current);
         }
     });
-    drill_chain::route_changed(current)?;
+    drill_chain::route_changed(current, |id| SHELL.is_page(id))?;
     lesson_bar::render()?;
     update_title(def)
 }
@@ -371,7 +375,7 @@ fn reveal_in_nav(link: &Element) {
 fn update_title(def: Option<&'static PageDef>) -> Result<(), JsValue> {
     let app = ctx::t("app-name");
     let title = match def {
-        Some(def) if def.id == pages::HOME_ID => format!("{app} — {}", ctx::t("app-subtitle")),
+        Some(def) if def.id == HOME_ID => format!("{app} — {}", ctx::t("app-subtitle")),
         Some(def) => format!("{} — {app}", ctx::t(def.title_id)),
         None => format!("{} — {app}", ctx::t("notfound-title")),
     };
@@ -405,15 +409,16 @@ fn on_keydown(event: &KeyboardEvent) -> Result<(), JsValue> {
             ShellKey::Lang => switch_lang(ctx::lang().other()),
         };
     }
-    if lesson_bar::on_key(event)? {
+    if let Some(requests) = lesson_bar::on_key(event)? {
         event.prevent_default();
-        return Ok(());
+        return perform_all(requests);
     }
     if keymap::page_may_take(event) && with_page(|page| page.on_key(event)) == Some(true) {
         event.prevent_default();
         return Ok(());
     }
-    if section_keys::on_key(event, current_page_id())? {
+    let exists = |id: &str| SHELL.is_page(id);
+    if section_keys::on_key(event, current_page_id(), exists)? {
         event.prevent_default();
     }
     Ok(())
@@ -438,7 +443,7 @@ fn toggle_overlay() -> Result<(), JsValue> {
 
 struct Mounted {
     page_id: &'static str,
-    handle: Box<dyn PageHandle>,
+    page: Box<dyn Page>,
 }
 
 thread_local! {
@@ -447,38 +452,38 @@ thread_local! {
 }
 
 /// Calls `f` with the mounted page, if any (`None` also while the page is being swapped).
-fn with_page<R>(f: impl FnOnce(&dyn PageHandle) -> R) -> Option<R> {
+fn with_page<R>(f: impl FnOnce(&dyn Page) -> R) -> Option<R> {
     MOUNTED
         .try_with(|cell| {
             let mounted = cell.try_borrow().ok()?;
-            mounted.as_ref().map(|m| f(m.handle.as_ref()))
+            mounted.as_ref().map(|m| f(m.page.as_ref()))
         })
         .ok()
         .flatten()
 }
 
-/// Sends the mounted page one PageDown, as a presenter remote would (a lesson step that steps
-/// the page's stepper).
-pub(crate) fn step_page() -> Result<(), JsValue> {
+/// Carries out what a page or the lesson presenter asked for.
+fn perform(request: ShellRequest) -> Result<(), JsValue> {
+    match request {
+        ShellRequest::StepPage => step_page(),
+        ShellRequest::Remount => mount_route(&router::current_route()),
+        ShellRequest::Projector(on) if ctx::projector() != on => set_projector(on),
+        ShellRequest::Projector(_) => Ok(()),
+    }
+}
+
+fn perform_all(requests: Vec<ShellRequest>) -> Result<(), JsValue> {
+    requests.into_iter().try_for_each(perform)
+}
+
+/// Sends the mounted page one PageDown, as a presenter remote would.
+fn step_page() -> Result<(), JsValue> {
     let init = web_sys::KeyboardEventInit::new();
     init.set_key("PageDown");
     init.set_bubbles(true);
     init.set_cancelable(true);
     let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init)?;
     with_page(|page| page.on_key(&event));
-    Ok(())
-}
-
-/// Mounts the current route again (a lesson step shown a second time starts afresh).
-pub(crate) fn remount() -> Result<(), JsValue> {
-    mount_route(&router::current_route())
-}
-
-/// Projector mode on or off for a lesson being presented.
-pub(crate) fn set_projector_for_lesson(on: bool) -> Result<(), JsValue> {
-    if ctx::projector() != on {
-        set_projector(on)?;
-    }
     Ok(())
 }
 
@@ -499,13 +504,10 @@ fn mount_route(route: &Route) -> Result<(), JsValue> {
         }
     }
     let old = MOUNTED.with(|cell| cell.try_borrow_mut().ok().and_then(|mut m| m.take()));
-    if let Some(old) = old {
-        old.handle.unmount();
-        drop(old);
-    }
+    drop(old);
     let main = main_element()?;
     dom::clear(&main);
-    let def = pages::find(&route.page);
+    let def = page::find(PAGES, &route.page);
     match def {
         Some(def) => mount_page(def, &main, route.page_query())?,
         None => render_not_found(&main)?,
@@ -525,17 +527,18 @@ fn mount_page(
     let mount_ctx = MountCtx {
         root: main.clone(),
         query,
+        shell: SHELL,
     };
     match (def.mount)(mount_ctx) {
-        Ok(handle) => {
+        Ok(page) => {
             if ctx::projector() {
-                handle.set_projector(true);
+                page.set_projector(true);
             }
             MOUNTED.with(|cell| {
                 if let Ok(mut mounted) = cell.try_borrow_mut() {
                     *mounted = Some(Mounted {
                         page_id: def.id,
-                        handle,
+                        page,
                     });
                 }
             });

@@ -16,6 +16,20 @@ const HEADLINE_EN = 'Robotics: simulate, sample, log — then practice teleop';
 
 const text = (page, selector) => page.locator(selector).first().innerText();
 
+/** The app's page table, `[{ id, group }]` in navigation order, from its own glue module. */
+const pageTable = (page) =>
+  page.evaluate(async () => (await import(new URL('pkg/bsv_playground.js', document.baseURI).href)).pageTable());
+
+/** The navigation the page table asks for: top-level ids, and the menu's groups in order. */
+function navFromTable(table) {
+  const top = table.filter((p) => p.group === null).map((p) => p.id);
+  const groups = [...new Set(table.filter((p) => p.group !== null).map((p) => p.group))].map((group) => ({
+    heading: `nav-group-${group}-heading`,
+    ids: table.filter((p) => p.group === group).map((p) => p.id),
+  }));
+  return { top, groups };
+}
+
 /** The visible strings the language switch must change. */
 async function shellTexts(page) {
   return {
@@ -41,13 +55,18 @@ test('the shell renders in English with the home page, navigation and disclaimer
     assert.match(await text(page, '[data-testid="site-footer"]'), /Works offline; no data leaves this page\./);
     assert.match(await text(page, '[data-testid="brand"]'), /BSV Playground/);
     assert.match(t.title, /^BSV Playground/);
-    // Only pages that exist are in the navigation: home, the drills menu (the IK page, the
-    // pendulum, PID, the cubic and trapezoid pages, trajectory resampling, the RRT stepper, in
-    // their groups) and all drills.
+    // The navigation is the app's page table in its order: home, then the drills menu (each
+    // group under its heading, pages in table order), then the other top-level pages.
+    const nav = navFromTable(await pageTable(page));
+    assert.equal(nav.top[0], 'home');
+    assert.ok(nav.groups.length > 0 && nav.groups.every((g) => g.ids.length > 0));
     const navIds = await page.locator('[data-testid="site-nav"] a').evaluateAll((as) => as.map((a) => a.dataset.page));
-    assert.deepEqual(navIds, ['home', 'ik-2r', 'dh-fk', 'se3-relative', 'umeyama-2d', 'pendulum-energy', 'pid-step', 'cubic-path', 'trapezoid-profile', 'traj-resample', 'rrt-2d', 'teleop', 'drills', 'lesson']);
+    assert.deepEqual(navIds, [nav.top[0], ...nav.groups.flatMap((g) => g.ids), ...nav.top.slice(1)]);
     const topLevel = await page.locator('[data-testid="site-nav"] > ul > li > a').evaluateAll((as) => as.map((a) => a.dataset.page));
-    assert.deepEqual(topLevel, ['home', 'teleop', 'drills', 'lesson']);
+    assert.deepEqual(topLevel, nav.top);
+    const menuGroups = await page.locator('[data-testid="nav-menu"] .nav-group').evaluateAll((gs) =>
+      gs.map((g) => ({ heading: g.querySelector('.nav-group-title').id, ids: [...g.querySelectorAll('a')].map((a) => a.dataset.page) })));
+    assert.deepEqual(menuGroups, nav.groups);
     assert.equal(await page.locator('[data-testid="nav-home"]').getAttribute('aria-current'), 'page');
     // Twelve recipe cards, each with both command lines and a link to its drill; the IK ones
     // also link to the IK page.
@@ -485,9 +504,14 @@ test('drill pages end with the seed\'s next-step chain; the home page has none',
     const steps = await chain.locator('.chain-step').evaluateAll((as) => as.map((a) => a.dataset.step));
     assert.equal(steps[0], 'pendulum-energy');
     assert.ok(steps.indexOf('rrt-2d') > steps.indexOf('se3-relative'));
-    // A recipe without a page of its own runs on the drills page.
+    // Every step links to a page of the app's page table: its own page when the table has
+    // one, else its recipe's page or the drills page.
+    const ids = new Set((await pageTable(page)).map((p) => p.id));
     for (const [step, href] of await chain.locator('.chain-step').evaluateAll((as) => as.map((a) => [a.dataset.step, a.getAttribute('href')]))) {
-      assert.ok(href === `#/${step}` || href === `#/drills?recipe=${step}` || href === '#/ik-2r' || href === '#/teleop', `${step}: ${href}`);
+      const target = href.replace(/^#\//, '').split('?')[0];
+      assert.ok(ids.has(target), `${step}: ${href} is not a page`);
+      if (ids.has(step)) assert.equal(href, `#/${step}`);
+      else assert.ok(href === `#/drills?recipe=${step}` || href === '#/ik-2r', `${step}: ${href}`);
     }
     // The IK page stands for three steps of the chain.
     await page.goto(`${server.url}#/ik-2r`);

@@ -2,7 +2,7 @@
 //!
 //! - Shell keys ([`SHELL`]: `?`, `P`, `L`, `Esc` for the overlay) work everywhere except while
 //!   the user types in a field (input, textarea, select, contenteditable).
-//! - Page keys ([`crate::ui::page::PageHandle::on_key`], and the stepper's [`STEPPER`]) act only
+//! - Page keys ([`crate::ui::page::Page::on_key`], and the stepper's [`STEPPER`]) act only
 //!   when the page itself has focus: the page body (nothing focused, `<main>`, or any
 //!   non-control element in it) or a page canvas (`tabindex="0"`, with a visible focus ring).
 //!   Never while a control has focus (button, input, select, textarea, link, summary, an ARIA

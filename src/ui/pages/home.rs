@@ -11,38 +11,34 @@
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
+use super::home_picture;
 use crate::args::ArgSpec;
 use crate::recipes::{RecipeInfo, RECIPES};
 use crate::ui::command_line::shell_word;
 use crate::ui::dom::{append, el, el_class, el_i18n, el_text};
-use crate::ui::page::{MountCtx, PageDef, PageHandle};
-use crate::ui::pages;
-use crate::ui::pages::home_picture;
+use crate::ui::page::{MountCtx, Page, PageDef, ShellLink};
+use crate::ui::router::{self, HOME_ID};
 
-/// The home page (`#/`).
-pub const PAGE: PageDef = PageDef {
-    id: "home",
-    title_id: "home-page-title",
-    blurb_id: "home-intro",
-    mount,
-};
+/// The home page (`#/`): markup only, every text a `data-i18n` message.
+pub struct HomePage;
 
-struct HomePage;
+impl Page for HomePage {
+    fn mount(ctx: MountCtx) -> Result<HomePage, JsValue> {
+        build(&ctx.root, ctx.shell)?;
+        Ok(HomePage)
+    }
+}
 
-impl PageHandle for HomePage {}
-
-fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
-    let root = ctx.root;
-
+fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
     let hero = el_class("section", "hero")?;
     let headline = el_i18n("h1", "headline", "home-headline")?;
     headline.set_attribute("data-testid", "home-headline")?;
     append(&hero, &headline)?;
     append(&hero, &el_i18n("p", "intro", "home-intro")?)?;
-    append(&root, &hero)?;
+    append(root, &hero)?;
 
-    for def in pages::PAGES.iter().filter(|d| d.id != pages::HOME_ID) {
-        append(&root, &featured_card(def)?)?;
+    for def in shell.pages.iter().filter(|d| d.id != HOME_ID) {
+        append(root, &featured_card(def)?)?;
     }
 
     let recipes = el_class("section", "recipes")?;
@@ -56,13 +52,12 @@ fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
     )?;
     let grid = el_class("ol", "recipe-grid")?;
     for recipe in RECIPES.iter() {
-        append(&grid, &recipe_card(recipe.info)?)?;
+        append(&grid, &recipe_card(recipe.info, shell)?)?;
     }
     append(&recipes, &grid)?;
-    append(&root, &recipes)?;
-    append(&root, &tools_section()?)?;
-    home_picture::draw_all(&root)?;
-    Ok(Box::new(HomePage))
+    append(root, &recipes)?;
+    append(root, &tools_section()?)?;
+    home_picture::draw_all(root)
 }
 
 /// The seed's "Compare the tools" table: each tool's key (its Fluent ids are
@@ -130,7 +125,7 @@ fn tools_section() -> Result<Element, JsValue> {
 /// The big link to an in-browser tool: "Interactive tool…", its title with an arrow, its blurb.
 fn featured_card(def: &PageDef) -> Result<Element, JsValue> {
     let card = el_class("a", "featured-card")?;
-    card.set_attribute("href", &crate::ui::router::build_hash(def.id, &[]))?;
+    card.set_attribute("href", &router::build_hash(def.id, &[]))?;
     card.set_attribute("data-testid", &format!("featured-{}", def.id))?;
     append(
         &card,
@@ -146,7 +141,7 @@ fn featured_card(def: &PageDef) -> Result<Element, JsValue> {
     Ok(card)
 }
 
-fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
+fn recipe_card(info: &RecipeInfo, shell: ShellLink) -> Result<Element, JsValue> {
     let id = info.id;
     let item = el_class("li", "recipe-card")?;
     item.set_attribute("data-testid", &format!("recipe-card-{id}"))?;
@@ -158,7 +153,7 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
     blurb.set_id(&home_picture::blurb_id(id));
     append(&item, &blurb)?;
     // The live page that runs it (from the recipe's facts): "Pairs with … →", linked.
-    let live_page = info.page.and_then(pages::find);
+    let live_page = info.page.and_then(|id| shell.find(id));
     if let Some(def) = live_page {
         let pairs = el_class("p", "recipe-pairs")?;
         append(
@@ -169,7 +164,7 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
         append(
             &pairs,
             &card_link(
-                &crate::ui::router::build_hash(def.id, &[]),
+                &router::build_hash(def.id, &[]),
                 def.title_id,
                 &format!("recipe-pairs-{id}"),
             )?,
@@ -221,7 +216,7 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
         append(
             &links,
             &card_link(
-                &crate::ui::router::build_hash(def.id, &[]),
+                &router::build_hash(def.id, &[]),
                 def.title_id,
                 &format!("recipe-link-{id}"),
             )?,
@@ -235,7 +230,7 @@ fn recipe_card(info: &RecipeInfo) -> Result<Element, JsValue> {
 /// otherwise hold twelve identical "Run this drill" entries).
 fn drill_link(id: &str) -> Result<Element, JsValue> {
     let link = card_link(
-        &pages::drills::link(id),
+        &router::drill_hash(id),
         "home-card-drill",
         &format!("recipe-drill-{id}"),
     )?;

@@ -1,69 +1,44 @@
-//! The page table: every page the shell can route to (and lists in its navigation). Only pages
-//! that work are listed. Which recipe runs on which page is a recipe fact (`RecipeInfo::page`,
-//! read by the home cards); every recipe also runs on the drills page
+//! The page table: every page the shell can route to, in navigation order, each with its place
+//! in the navigation. A page's code is reached only through its line here; the shell lends the
+//! table to the pages that list others ([`crate::ui::page::ShellLink`]). Which recipe runs on
+//! which page is a recipe fact (`RecipeInfo::page`); every recipe also runs on the drills page
 //! (`#/drills?recipe=<id>`).
 
-use crate::ui::page::PageDef;
+use crate::ui::kit::signal_page::Signal;
+use crate::ui::page::{Nav, PageDef};
+use crate::ui::router::{DRILLS_ID, HOME_ID};
 
-pub mod cubic_path;
-pub mod dh_fk;
-pub mod drills;
-pub mod home;
+mod cubic_path;
+mod dh_fk;
+mod drills;
+mod home;
 mod home_picture;
-pub mod ik2r;
-pub mod lesson;
-pub mod pendulum;
-pub mod pid_step;
-pub mod rrt;
-pub mod se3;
-pub mod teleop;
-pub mod traj_resample;
-pub mod trapezoid_profile;
-pub mod umeyama;
+mod ik2r;
+mod lesson;
+mod pendulum;
+mod pid_step;
+mod rrt;
+mod se3;
+mod teleop;
+mod traj_resample;
+mod trapezoid_profile;
+mod umeyama;
 
-/// Route id of the home page (`#/`, `#/home`).
-pub const HOME_ID: &str = home::PAGE.id;
-
-/// All pages, in navigation order.
+/// All pages, in navigation order (the Drills menu lists its groups' pages in this order).
+#[rustfmt::skip]
 pub const PAGES: &[PageDef] = &[
-    home::PAGE,
-    ik2r::PAGE,
-    pendulum::PAGE,
-    traj_resample::PAGE,
-    rrt::PAGE,
-    se3::PAGE,
-    cubic_path::PAGE,
-    pid_step::PAGE,
-    trapezoid_profile::PAGE,
-    dh_fk::PAGE,
-    umeyama::PAGE,
-    teleop::PAGE,
-    drills::PAGE,
-    lesson::PAGE,
+    PageDef::of::<home::HomePage>(HOME_ID, "home-page-title", "home-intro", Nav::Top),
+    PageDef::of::<ik2r::Ik2rPage>("ik-2r", "ik2r-title", "ik2r-blurb", Nav::Kinematics),
+    PageDef::of::<dh_fk::DhPage>("dh-fk", "dh-title", "dh-blurb", Nav::Kinematics),
+    PageDef::of::<se3::Se3Page>("se3-relative", "se3-title", "se3-blurb", Nav::Kinematics),
+    PageDef::of::<umeyama::UmeyamaPage>("umeyama-2d", "umeyama-title", "umeyama-blurb", Nav::Kinematics),
+    PageDef::of::<pendulum::PendulumPage>("pendulum-energy", "pendulum-title", "pendulum-blurb", Nav::Dynamics),
+    PageDef::of::<Signal<pid_step::PidPage>>("pid-step", "pid-title", "pid-blurb", Nav::Dynamics),
+    PageDef::of::<Signal<cubic_path::CubicPage>>("cubic-path", "cubic-title", "cubic-blurb", Nav::Trajectories),
+    PageDef::of::<Signal<trapezoid_profile::TrapPage>>("trapezoid-profile", "trap-title", "trap-blurb", Nav::Trajectories),
+    PageDef::of::<traj_resample::TrajResample>("traj-resample", "traj-title", "traj-blurb", Nav::Trajectories),
+    PageDef::of::<rrt::RrtPage>("rrt-2d", "rrt-title", "rrt-blurb", Nav::Planning),
+    PageDef::of::<teleop::TeleopPage>("teleop", "teleop-nav", "teleop-blurb", Nav::Top),
+    PageDef::of::<drills::DrillsPage>(DRILLS_ID, "drills-title", "drills-blurb", Nav::Top),
+    PageDef::of::<lesson::LessonPage>("lesson", "lesson-title", "lesson-blurb", Nav::Top),
 ];
-
-/// The navigation's "Drills" menu: groups of drill pages (the Fluent id of each group's
-/// heading, then page ids in order). Ids of pages not (yet) in [`PAGES`] are skipped; pages in
-/// no group are top-level links of the header.
-pub const NAV_GROUPS: &[(&str, &[&str])] = &[
-    (
-        "nav-group-kinematics",
-        &["ik-2r", "dh-fk", "se3-relative", "umeyama-2d"],
-    ),
-    ("nav-group-dynamics", &["pendulum-energy", "pid-step"]),
-    (
-        "nav-group-trajectories",
-        &["cubic-path", "trapezoid-profile", "traj-resample"],
-    ),
-    ("nav-group-planning", &["rrt-2d"]),
-];
-
-/// Whether page `id` is listed in the drills menu rather than as a top-level link.
-pub fn in_nav_group(id: &str) -> bool {
-    NAV_GROUPS.iter().any(|(_, ids)| ids.contains(&id))
-}
-
-/// The page with route id `id`.
-pub fn find(id: &str) -> Option<&'static PageDef> {
-    PAGES.iter().find(|def| def.id == id)
-}

@@ -29,7 +29,7 @@ use crate::ui::kit::recipe_controls::RecipeControls;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::Command;
 use crate::ui::kit::url_state::UrlWriter;
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
@@ -39,9 +39,6 @@ use crate::view::dh_fk::{
 };
 use crate::view::scene3d::AxisPalette;
 use markup::P;
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<DhPage>("dh-fk", "dh-title", "dh-blurb");
 
 /// Quiet time after which the tip's new position is announced, ms.
 const ANNOUNCE_QUIET_MS: f64 = 600.0;

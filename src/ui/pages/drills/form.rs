@@ -3,8 +3,8 @@
 //! where it belongs (beside its field, beside the file picker, or under the form).
 
 use super::file::PRECHECK_MAX_BYTES;
-use super::run::Plan;
-use super::{Page, Slot, PREFIX};
+use super::markup::PREFIX;
+use super::state::{Page, Plan, Slot};
 use crate::args::Args;
 use crate::error::RecipeError;
 use crate::recipes::RecipeInfo;

@@ -5,7 +5,8 @@
 //! it.
 
 use super::file::InputFile;
-use super::{texts, Page, Status};
+use super::state::{Page, Status};
+use super::texts;
 use crate::recipes::traj_resample;
 use crate::ui::ctx::t_strings;
 use crate::ui::kit::form::Message;

@@ -4,7 +4,7 @@
 
 use web_sys::KeyboardEvent;
 
-use super::Page;
+use super::state::Page;
 use crate::ui::page::Shortcut;
 
 /// The page's keys for the `?` overlay.

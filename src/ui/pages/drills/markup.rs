@@ -4,10 +4,12 @@
 //! the code drives carry `data-drills="<role>"`, and the ones tests drive carry `data-testid`,
 //! `data-field`, `data-download`, `data-cmd` and `data-copy`.
 
-use super::PREFIX;
 use crate::recipes::RECIPES;
 use crate::ui::kit::form::escape;
 use crate::ui::kit::{exports, readouts};
+
+/// The class and test-id prefix of the page's kit widgets.
+pub(super) const PREFIX: &str = "drills";
 
 fn recipe_options() -> String {
     let mut html = String::new();

@@ -9,22 +9,24 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event, KeyboardEvent};
 
-use super::{form, markup, Els, Handle, Page, Slot, State, Status, UrlNotes, PREFIX};
+use super::background::Background;
+use super::form;
+use super::markup::{self, PREFIX};
+use super::state::{Els, Page, Slot, State, Status, UrlNotes};
 use crate::recipes;
 use crate::ui::dom::{self, Listener};
 use crate::ui::kit::exports::Exports;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::{IgnoredKey, UrlNotice, UrlState, UrlWriter};
-use crate::ui::page::{MountCtx, PageHandle};
+use crate::ui::page::MountCtx;
 use crate::ui::schedule::Timer;
 use crate::view::drills::DrillsQuery;
 use crate::view::form::recipe_fields;
 
 /// Builds the page into the shell's main element.
-pub(super) fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
-    let page = Page::build(ctx)?;
-    Ok(Box::new(Handle(page)))
+pub(super) fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
+    Page::build(ctx)
 }
 
 fn find<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
@@ -115,7 +117,12 @@ impl Page {
             }
         });
         // Big runs: the worker's progress panel, under the status line (background.rs).
-        let background = super::background::Background::new(Rc::downgrade(&page))?;
+        let weak = Rc::downgrade(&page);
+        let background = Background::new(move || {
+            if let Some(page) = weak.upgrade() {
+                page.cancel_background();
+            }
+        })?;
         page.els
             .status
             .after_with_node_1(background.panel.element())?;

@@ -5,7 +5,8 @@
 
 use wasm_bindgen::prelude::*;
 
-use super::{form, texts, Page, Status, UrlNotes};
+use super::state::{Page, Status, UrlNotes};
+use super::{form, texts};
 use crate::recipes::{Recipe, RECIPES};
 use crate::ui::dom;
 

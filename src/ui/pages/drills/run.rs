@@ -4,30 +4,16 @@
 //! bar. A run computes the recipe's output (with the opened input file attached) and shows it,
 //! or puts its error where it belongs.
 
-use super::result::Shown;
-use super::{Page, Status};
+use super::shown::Shown;
+use super::state::{Page, Slot, Status};
 use crate::recipes;
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::kit::form::{reveal, Message, Reveal};
+use crate::ui::kit::worker::{self, WorkerError};
 use crate::ui::schedule::{after_paint, now_ms};
 
 /// Milliseconds between the last keystroke and a small drill's run.
 const AUTO_RUN_DELAY_MS: i32 = 250;
-
-/// What a valid form will cost.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Plan {
-    /// Rows of work (the recipe's `plan`); `None` when only the run can size it (a large
-    /// input file).
-    pub rows: Option<u64>,
-}
-
-impl Plan {
-    /// Whether the page may run it while the user types.
-    pub fn is_small(&self) -> bool {
-        crate::view::form::runs_while_typing(self.rows)
-    }
-}
 
 impl Page {
     /// A field changed: validate, rewrite the URL soon, run soon if small.
@@ -134,7 +120,7 @@ impl Page {
             .borrow()
             .errors
             .iter()
-            .any(|(s, _)| matches!(s, super::Slot::Field(_)));
+            .any(|(s, _)| matches!(s, Slot::Field(_)));
         if has_field_error {
             self.form.borrow().focus_first_error();
         } else {
@@ -165,11 +151,8 @@ impl Page {
         let ok = result.is_ok();
         match result {
             Ok(out) => {
-                let mut st = self.st.borrow_mut();
-                st.shown = Some(Shown::new(args, input_name, out));
-                st.runs += 1;
-                st.status = Status::Done(ms);
-                st.failed = None;
+                let shown = Shown::new(args, input_name, out);
+                self.st.borrow_mut().succeeded(shown, ms);
             }
             Err(error) => {
                 let slot = self.slot_for(&error);
@@ -249,5 +232,146 @@ impl Page {
             _ => false,
         };
         crate::ui::dom::show(&self.els.stale, stale && st.status != Status::Running);
+    }
+}
+
+/// Runs in the Web Worker ([`Background`](super::background::Background)).
+impl Page {
+    /// Runs the form's arguments in the worker; `Running` until it ends or is cancelled.
+    pub(super) fn run_in_background(&self) {
+        let args = self.current_args();
+        let (inputs, input_name) = {
+            let st = self.st.borrow();
+            match st
+                .input
+                .as_ref()
+                .filter(|f| args.positional.contains(&f.name))
+            {
+                Some(f) => (vec![(f.name.clone(), f.text.clone())], Some(f.name.clone())),
+                None => (Vec::new(), None),
+            }
+        };
+        let Some(bg) = self.background.borrow().clone() else {
+            return;
+        };
+        bg.error.borrow_mut().take();
+        bg.panel.start();
+        let t0 = now_ms();
+        let weak_progress = self.weak.borrow().clone();
+        let weak_done = self.weak.borrow().clone();
+        let run_args = args.clone();
+        let job = worker::run_recipe(
+            args.recipe,
+            args.raw(),
+            inputs,
+            move |done, total| {
+                if let Some(page) = weak_progress.upgrade() {
+                    if let Some(bg) = page.background.borrow().as_ref() {
+                        bg.panel.set(done, total);
+                    }
+                }
+            },
+            move |result| {
+                let Some(page) = weak_done.upgrade() else {
+                    return;
+                };
+                let ms = now_ms() - t0;
+                if let Some(bg) = page.background.borrow().clone() {
+                    bg.job.borrow_mut().take();
+                    bg.panel.hide();
+                }
+                match result {
+                    Ok(out) => {
+                        page.exports.clear_status();
+                        let shown = Shown::from_worker(run_args, input_name, out);
+                        page.st.borrow_mut().succeeded(shown, ms);
+                    }
+                    Err(error) => {
+                        if let Some(recipe_error) = error.recipe_error().cloned() {
+                            // As a run on the page: beside the field it names, same words.
+                            let slot = page.slot_for(&recipe_error);
+                            page.st.borrow_mut().failed =
+                                Some((run_args, slot, Message::Recipe(recipe_error)));
+                        } else if let Some(bg) = page.background.borrow().as_ref() {
+                            *bg.error.borrow_mut() = Some(error);
+                        }
+                        page.st.borrow_mut().status = Status::Failed;
+                    }
+                }
+                page.after_background_run();
+            },
+        );
+        match job {
+            Ok(job) => *bg.job.borrow_mut() = Some(job),
+            Err(e) => {
+                bg.panel.hide();
+                *bg.error.borrow_mut() = Some(WorkerError::Failed(
+                    e.as_string().unwrap_or_else(|| format!("{e:?}")),
+                ));
+                self.st.borrow_mut().status = Status::Failed;
+                self.after_background_run();
+            }
+        }
+    }
+
+    /// Cancel: stops the worker; the last result stays.
+    pub(super) fn cancel_background(&self) {
+        if let Some(bg) = self.background.borrow().as_ref() {
+            bg.stop();
+        }
+        self.st.borrow_mut().status = Status::Idle;
+        self.render_status();
+        self.validate();
+    }
+
+    fn after_background_run(&self) {
+        self.validate();
+        if let Err(e) = self.render_output() {
+            web_sys::console::error_2(&"drills: result".into(), &e);
+        }
+        self.render_background_error();
+        self.render_status();
+        // The URL in a task of its own: `history.replaceState` alone can take tens of ms
+        // (measured ~75 ms in headless Chromium right after a 60 MB result), and together with
+        // the rendering it made one task over 100 ms.
+        self.url.schedule_in(0);
+        // Bring the outcome into view, as a run on the page does (Run asked for it), after the
+        // browser has laid out and painted the new result (one long task otherwise).
+        let weak = self.weak.borrow().clone();
+        let _ = after_paint(move || {
+            let Some(page) = weak.upgrade() else {
+                return;
+            };
+            let has_background_error = page
+                .background
+                .borrow()
+                .as_ref()
+                .is_some_and(|bg| bg.error.borrow().is_some());
+            if page.st.borrow().status == Status::Failed {
+                if has_background_error {
+                    reveal(&page.els.error, Reveal::Nearest);
+                } else {
+                    page.reveal_first_error();
+                }
+            } else {
+                page.announce_result();
+                reveal(&page.els.output, Reveal::Start);
+            }
+        });
+    }
+
+    /// The last worker run's error under the form (after `render_errors`, which owns that
+    /// element otherwise).
+    pub(super) fn render_background_error(&self) {
+        let Some(bg) = self.background.borrow().clone() else {
+            return;
+        };
+        let text = bg.error.borrow().as_ref().map(WorkerError::text);
+        if let Some(text) = text {
+            if self.st.borrow().status == Status::Failed {
+                self.els.error.set_text_content(Some(&text));
+                crate::ui::dom::show(&self.els.error, true);
+            }
+        }
     }
 }

@@ -3,7 +3,7 @@
 //! typing), and the kit's notice about what the opened link asked for that the page could not
 //! do as asked, led by the page's own sentence about an unknown drill.
 
-use super::Page;
+use super::state::Page;
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::kit::url_state::{NoticeLead, UrlState};
 use crate::view::drills::DrillsQuery;

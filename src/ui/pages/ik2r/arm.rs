@@ -22,9 +22,9 @@ use web_sys::{
     CanvasRenderingContext2d, Element, HtmlCanvasElement, HtmlInputElement, HtmlSelectElement,
 };
 
+use super::markup::role;
 use super::workspace::{self, WorkspaceImage};
-use super::{role, Page};
-use crate::planar2r::{Elbow, PoseReport};
+use crate::planar2r::{Arm, Elbow, PoseReport};
 use crate::recipes::ik_workspace::{Workspace, WorkspaceParams};
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom::{show, Listener};
@@ -56,6 +56,37 @@ mod colour {
     pub const PIN: &str = "rgba(217, 72, 15, 0.7)";
     pub const HOVER: &str = "rgba(255, 196, 0, 0.45)";
     pub const LABEL_HALO: &str = "rgba(251, 252, 254, 0.85)";
+}
+
+/// What the arm view's pointer and toolbar ask of the page.
+pub(super) trait ArmHost: 'static {
+    /// The part of the arm a pointer of `kind` grabs at canvas point `at` (see [`grab_at`]).
+    fn grab_at(&self, at: DVec2, kind: PointerKind) -> Option<Grab>;
+    /// A drag, tap or hover on the view.
+    fn on_arm(&self, ev: DragEvent<Grab>);
+    /// A toolbar control changed.
+    fn on_control(&self, control: ArmControl);
+}
+
+/// The toolbar's controls.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum ArmControl {
+    Elbow(Elbow),
+    /// The workspace grid shown or hidden.
+    Workspace(bool),
+    Colour(WsColor),
+    Reset,
+}
+
+/// The part of the arm a pointer of `kind` grabs at canvas point `at`: a finger grabs only
+/// the arm itself (elsewhere it scrolls); a mouse or pen grabs the nearest part.
+pub(super) fn grab_at(xf: &ViewXf, st: &State, at: DVec2, kind: PointerKind) -> Option<Grab> {
+    let arm = st.params.arm();
+    if kind == PointerKind::Touch {
+        part_at(xf, &arm, st.q1, st.q2, at, true)
+    } else {
+        Some(ik2r::hit_test(xf, &arm, st.q1, st.q2, at, kind.is_coarse()))
+    }
 }
 
 /// The arm view component.
@@ -122,63 +153,59 @@ impl ArmView {
         self.stage.clone()
     }
 
-    /// The drag and the toolbar's listeners.
-    pub fn attach(&mut self, weak: &Weak<Page>, out: &mut Vec<Listener>) -> Result<(), JsValue> {
-        let (w_hit, w_on) = (weak.clone(), weak.clone());
+    /// The drag and the toolbar's listeners, reporting to `host`.
+    pub fn attach<H: ArmHost>(
+        &mut self,
+        host: &Weak<H>,
+        out: &mut Vec<Listener>,
+    ) -> Result<(), JsValue> {
+        let (w_hit, w_on) = (host.clone(), host.clone());
+        let top: Element = self.top.clone().into();
         self.drag = Some(Drag::attach(
             &self.stage,
             &self.top,
-            move |at, kind| {
-                let page = w_hit.upgrade()?;
-                let st = *page.state.borrow();
-                let xf = page.arm.borrow().xf;
-                let arm = st.params.arm();
-                let touch = kind.is_coarse();
-                if kind == PointerKind::Touch {
-                    // A finger grabs only the arm itself; elsewhere it scrolls.
-                    part_at(&xf, &arm, st.q1, st.q2, at, true)
-                } else {
-                    Some(ik2r::hit_test(&xf, &arm, st.q1, st.q2, at, touch))
-                }
-            },
+            move |at, kind| w_hit.upgrade()?.grab_at(at, kind),
             move |ev: DragEvent<Grab>| {
-                if let Some(page) = w_on.upgrade() {
+                if let Some(host) = w_on.upgrade() {
                     if matches!(ev, DragEvent::Start { .. }) {
-                        let top: Element = page.arm.borrow().top.clone().into();
                         focus_without_scroll(&top);
                     }
-                    page.on_arm(ev);
+                    host.on_arm(ev);
                 }
             },
         )?);
         for (input, elbow) in [(&self.elbow_down, Elbow::Down), (&self.elbow_up, Elbow::Up)] {
-            out.push(Listener::for_page(input, "change", weak, move |p, _| {
-                p.set_elbow(elbow)
-            })?);
+            out.push(Listener::for_page(
+                input,
+                "change",
+                host,
+                move |h: &H, _| h.on_control(ArmControl::Elbow(elbow)),
+            )?);
         }
+        let toggle = self.ws_toggle.clone();
         out.push(Listener::for_page(
             &self.ws_toggle,
             "change",
-            weak,
-            |p, _| {
-                let on = p.arm.borrow().ws_toggle.checked();
-                p.set_workspace_visible(on);
-            },
+            host,
+            move |h: &H, _| h.on_control(ArmControl::Workspace(toggle.checked())),
         )?);
+        let select = self.ws_color.clone();
         out.push(Listener::for_page(
             &self.ws_color,
             "change",
-            weak,
-            |p, _| {
-                let value = p.arm.borrow().ws_color.value();
-                if let Some(c) = WsColor::from_key(&value) {
-                    p.set_ws_colour(c);
+            host,
+            move |h: &H, _| {
+                if let Some(c) = WsColor::from_key(&select.value()) {
+                    h.on_control(ArmControl::Colour(c));
                 }
             },
         )?);
-        out.push(Listener::for_page(&self.reset, "click", weak, |p, _| {
-            p.reset()
-        })?);
+        out.push(Listener::for_page(
+            &self.reset,
+            "click",
+            host,
+            |h: &H, _| h.on_control(ArmControl::Reset),
+        )?);
         Ok(())
     }
 
@@ -464,48 +491,10 @@ impl ArmView {
         let ctx = &layer.ctx;
         let [base, elbow, tip] = joints_on_screen(xf, &arm, rep.q1, rep.q2);
 
-        if let Some((g1, g2)) = ghost {
-            let [gb, ge, gt] = joints_on_screen(xf, &arm, g1, g2);
-            ctx.set_stroke_style_str(colour::GHOST);
-            ctx.set_line_width(5.0 * s);
-            ctx.set_line_cap("round");
-            let _ = ctx.set_line_dash(&dash(8.0 * s, 6.0 * s));
-            ctx.begin_path();
-            ctx.move_to(gb.x, gb.y);
-            ctx.line_to(ge.x, ge.y);
-            ctx.line_to(gt.x, gt.y);
-            ctx.stroke();
-            let _ = ctx.set_line_dash(&solid());
-            circle(ctx, gt, 5.0 * s, Some(colour::GHOST), None, 0.0);
+        if let Some(ghost) = ghost {
+            draw_ghost(ctx, xf, &arm, ghost, s);
         }
-
-        // Manipulability ellipse at the tip; singular directions: major solid, minor dashed.
-        let e = rep.ellipse;
-        let rx = (ELLIPSE_SCALE * e.sigma_max * xf.px_per_m).max(0.0);
-        let ry = (ELLIPSE_SCALE * e.sigma_min * xf.px_per_m).max(0.0);
-        let rot = -e.angle_rad;
-        ctx.set_fill_style_str(colour::ELLIPSE_FILL);
-        ctx.set_stroke_style_str(colour::ELLIPSE_EDGE);
-        ctx.set_line_width(1.5 * s);
-        ctx.begin_path();
-        if ctx
-            .ellipse(tip.x, tip.y, rx, ry.max(0.01), rot, 0.0, 2.0 * PI)
-            .is_ok()
-        {
-            ctx.fill();
-            ctx.stroke();
-        }
-        let (c, sn) = (rot.cos(), rot.sin());
-        ctx.begin_path();
-        ctx.move_to(tip.x - rx * c, tip.y - rx * sn);
-        ctx.line_to(tip.x + rx * c, tip.y + rx * sn);
-        ctx.stroke();
-        let _ = ctx.set_line_dash(&dash(3.0 * s, 3.0 * s));
-        ctx.begin_path();
-        ctx.move_to(tip.x + ry * sn, tip.y - ry * c);
-        ctx.line_to(tip.x - ry * sn, tip.y + ry * c);
-        ctx.stroke();
-        let _ = ctx.set_line_dash(&solid());
+        draw_ellipse(ctx, xf, rep, tip, s);
 
         // Pointer outside the reach: a dashed line from the pinned tip to the pointer.
         if let Some(p) = self.pinned_pointer {
@@ -575,8 +564,24 @@ impl ArmView {
             2.5 * s,
         );
 
-        // Link labels outside the bend, on a light box (never on top of each other); a box
-        // costs a rectangle where a stroked text outline costs a second text draw per frame.
+        self.draw_link_labels(ctx, [base, elbow, tip], ink);
+
+        let c = &self.top;
+        let _ = c.set_attribute("data-tip-x", &tip.x.to_string());
+        let _ = c.set_attribute("data-tip-y", &tip.y.to_string());
+        let _ = c.set_attribute("data-elbow-x", &elbow.x.to_string());
+        let _ = c.set_attribute("data-elbow-y", &elbow.y.to_string());
+        if let (Some(d), true) = (&self.drag, handles) {
+            let shapes = ik2r::handles(xf, &arm, rep.q1, rep.q2, true).map(|(_, shape)| shape);
+            d.set_handles(&shapes);
+        }
+    }
+
+    /// Link labels outside the bend, on a light box (never on top of each other); a box
+    /// costs a rectangle where a stroked text outline costs a second text draw per frame.
+    fn draw_link_labels(&self, ctx: &CanvasRenderingContext2d, joints: [DVec2; 3], ink: Ink) {
+        let [base, elbow, tip] = joints;
+        let s = ink.line;
         let font_px = ink.text_px(12.0);
         let gap = 10.0 * s + font_px * 0.75;
         let (box_w, box_h) = (font_px * 1.5, font_px * 1.2);
@@ -599,22 +604,64 @@ impl ArmView {
         for (label, at) in ["L1", "L2"].into_iter().zip(centres) {
             let _ = ctx.fill_text(label, at.x, at.y);
         }
-
-        let c = &self.top;
-        let _ = c.set_attribute("data-tip-x", &tip.x.to_string());
-        let _ = c.set_attribute("data-tip-y", &tip.y.to_string());
-        let _ = c.set_attribute("data-elbow-x", &elbow.x.to_string());
-        let _ = c.set_attribute("data-elbow-y", &elbow.y.to_string());
-        if let (Some(d), true) = (&self.drag, handles) {
-            let shapes = ik2r::handles(xf, &arm, rep.q1, rep.q2, true).map(|(_, shape)| shape);
-            d.set_handles(&shapes);
-        }
     }
 
     /// The arm view (both layers) as one canvas, for the PNG download.
     pub fn flatten(&self) -> Result<HtmlCanvasElement, JsValue> {
         self.canvas.flatten(colour::BG)
     }
+}
+
+/// The pose under the heatmap's pointer, dashed and grey.
+fn draw_ghost(
+    ctx: &CanvasRenderingContext2d,
+    xf: &ViewXf,
+    arm: &Arm,
+    (g1, g2): (f64, f64),
+    s: f64,
+) {
+    let [gb, ge, gt] = joints_on_screen(xf, arm, g1, g2);
+    ctx.set_stroke_style_str(colour::GHOST);
+    ctx.set_line_width(5.0 * s);
+    ctx.set_line_cap("round");
+    let _ = ctx.set_line_dash(&dash(8.0 * s, 6.0 * s));
+    ctx.begin_path();
+    ctx.move_to(gb.x, gb.y);
+    ctx.line_to(ge.x, ge.y);
+    ctx.line_to(gt.x, gt.y);
+    ctx.stroke();
+    let _ = ctx.set_line_dash(&solid());
+    circle(ctx, gt, 5.0 * s, Some(colour::GHOST), None, 0.0);
+}
+
+/// The manipulability ellipse at the tip; singular directions: major solid, minor dashed.
+fn draw_ellipse(ctx: &CanvasRenderingContext2d, xf: &ViewXf, rep: &PoseReport, tip: DVec2, s: f64) {
+    let e = rep.ellipse;
+    let rx = (ELLIPSE_SCALE * e.sigma_max * xf.px_per_m).max(0.0);
+    let ry = (ELLIPSE_SCALE * e.sigma_min * xf.px_per_m).max(0.0);
+    let rot = -e.angle_rad;
+    ctx.set_fill_style_str(colour::ELLIPSE_FILL);
+    ctx.set_stroke_style_str(colour::ELLIPSE_EDGE);
+    ctx.set_line_width(1.5 * s);
+    ctx.begin_path();
+    if ctx
+        .ellipse(tip.x, tip.y, rx, ry.max(0.01), rot, 0.0, 2.0 * PI)
+        .is_ok()
+    {
+        ctx.fill();
+        ctx.stroke();
+    }
+    let (c, sn) = (rot.cos(), rot.sin());
+    ctx.begin_path();
+    ctx.move_to(tip.x - rx * c, tip.y - rx * sn);
+    ctx.line_to(tip.x + rx * c, tip.y + rx * sn);
+    ctx.stroke();
+    let _ = ctx.set_line_dash(&dash(3.0 * s, 3.0 * s));
+    ctx.begin_path();
+    ctx.move_to(tip.x + ry * sn, tip.y - ry * c);
+    ctx.line_to(tip.x - ry * sn, tip.y + ry * c);
+    ctx.stroke();
+    let _ = ctx.set_line_dash(&solid());
 }
 
 fn circle(

@@ -9,7 +9,20 @@
 //! - `plot()`: the sweep series redraw;
 //! - `heatmap(n)`: an `n × n` heatmap recompute, paint and background draw.
 //!
-//! Without the feature, [`Timings::push`] and the hook functions do nothing.
+//! The page does the work through [`BenchHost`]; without the feature, [`Timings::push`] and
+//! the hook functions do nothing.
+
+/// The work the hooks time, done by the page.
+#[cfg(feature = "bench")]
+pub(super) trait BenchHost: 'static {
+    /// A drag frame to tip target `(x, y)` metres.
+    fn bench_frame(&self, x: f64, y: f64);
+    /// The sweep series redraw.
+    fn bench_plot(&self);
+    /// An `n × n` heatmap recompute and background draw; `false` if it could not run. The
+    /// page goes back to its own resolution afterwards.
+    fn bench_heatmap(&self, n: usize) -> bool;
+}
 
 /// The `window.__ik2rTimings` object (bench builds).
 pub(super) struct Timings {
@@ -27,9 +40,7 @@ impl Timings {
 }
 
 #[cfg(not(feature = "bench"))]
-pub(super) fn install_hooks(
-    _weak: &std::rc::Weak<super::Page>,
-) -> Result<(), wasm_bindgen::JsValue> {
+pub(super) fn install_hooks<H>(_host: &std::rc::Weak<H>) -> Result<(), wasm_bindgen::JsValue> {
     Ok(())
 }
 
@@ -46,9 +57,7 @@ mod hooks {
     use wasm_bindgen::prelude::*;
     use wasm_bindgen::JsCast;
 
-    use super::super::{dirty, Page};
-    use super::Timings;
-    use crate::ui::kit::canvas::Ink;
+    use crate::ui::pages::ik2r::bench::{BenchHost, Timings};
     use crate::ui::schedule::now_ms;
 
     const TIMINGS: &str = "__ik2rTimings";
@@ -97,7 +106,7 @@ mod hooks {
     }
 
     /// Installs `window.__ik2rBench`.
-    pub(in super::super) fn install_hooks(weak: &Weak<Page>) -> Result<(), JsValue> {
+    pub fn install_hooks<H: BenchHost>(weak: &Weak<H>) -> Result<(), JsValue> {
         let window = web_sys::window().ok_or_else(|| JsValue::from_str("no window"))?;
         let hooks = js_sys::Object::new();
         let w = weak.clone();
@@ -106,8 +115,7 @@ mod hooks {
                 return f64::NAN;
             };
             let t0 = now_ms();
-            page.move_tip(x_mm / 1000.0, y_mm / 1000.0);
-            page.draw_frame();
+            page.bench_frame(x_mm / 1000.0, y_mm / 1000.0);
             now_ms() - t0
         });
         let w = weak.clone();
@@ -115,9 +123,8 @@ mod hooks {
             let Some(page) = w.upgrade() else {
                 return f64::NAN;
             };
-            let st = *page.state.borrow();
             let t0 = now_ms();
-            page.sweep.borrow_mut().draw(&st, Ink::current());
+            page.bench_plot();
             now_ms() - t0
         });
         let w = weak.clone();
@@ -130,17 +137,12 @@ mod hooks {
             } else {
                 256
             };
-            let arm = page.state.borrow().params.arm();
             let t0 = now_ms();
-            if !page.heat.borrow_mut().recompute(&arm, n) {
-                return f64::NAN;
+            if page.bench_heatmap(n) {
+                now_ms() - t0
+            } else {
+                f64::NAN
             }
-            page.heat.borrow().draw_background(Ink::current());
-            let ms = now_ms() - t0;
-            // Back to the page's own resolution afterwards.
-            page.heat_timer.schedule(50);
-            page.invalidate(dirty::FRAME);
-            ms
         });
         js_sys::Reflect::set(&hooks, &"frame".into(), &frame.into_js_value())?;
         js_sys::Reflect::set(&hooks, &"plot".into(), &plot.into_js_value())?;
@@ -150,7 +152,7 @@ mod hooks {
     }
 
     /// Removes `window.__ik2rBench` (the page unmounted).
-    pub(in super::super) fn remove_hooks() {
+    pub fn remove_hooks() {
         if let Some(window) = web_sys::window() {
             let _ = js_sys::Reflect::delete_property(&window, &HOOKS.into());
         }

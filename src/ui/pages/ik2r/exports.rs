@@ -10,7 +10,6 @@ use std::rc::Weak;
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
-use super::Page;
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom;
 use crate::ui::kit::exports::{self as kit, RunEntry};
@@ -66,31 +65,49 @@ impl Exports {
         })
     }
 
-    pub fn attach(&self, weak: &Weak<Page>, scope: &mut Scope) -> Result<(), JsValue> {
+    /// The download and copy buttons' listeners: a download goes to `on_download` with its
+    /// file name, a copy to `on_copy` with its key.
+    pub fn attach<H: 'static>(
+        &self,
+        host: &Weak<H>,
+        scope: &mut Scope,
+        on_download: impl Fn(&H, &str) + Clone + 'static,
+        on_copy: impl Fn(&H, &str) + Clone + 'static,
+    ) -> Result<(), JsValue> {
         for button in dom::matching(&self.root, "[data-download]")? {
             let file = button.get_attribute("data-download").unwrap_or_default();
-            scope.listen_for(&button, "click", weak, move |p, _| {
-                let st = *p.state.borrow();
-                let result = if file == ARM_PNG {
-                    p.arm
-                        .borrow()
-                        .flatten()
-                        .and_then(|c| crate::ui::kit::png::download(&c, ARM_PNG))
-                } else {
-                    csv_download(&file, &st)
-                };
-                if let Err(e) = result {
-                    p.exports.borrow().panel.download_failed(&file, &e);
-                }
-            })?;
+            let on_download = on_download.clone();
+            scope.listen_for(&button, "click", host, move |h, _| on_download(h, &file))?;
         }
         for button in dom::matching(&self.root, "[data-copy]")? {
             let key = button.get_attribute("data-copy").unwrap_or_default();
-            scope.listen_for(&button, "click", weak, move |p, _| {
-                p.exports.borrow().panel.copy(&key)
-            })?;
+            let on_copy = on_copy.clone();
+            scope.listen_for(&button, "click", host, move |h, _| on_copy(h, &key))?;
         }
         Ok(())
+    }
+
+    /// Copies the command line `key` (the panel says so on its status line).
+    pub fn copy(&self, key: &str) {
+        self.panel.copy(key);
+    }
+
+    /// Downloads `file`: a recipe CSV of `st`, or the arm view (`arm`, flattened) as PNG; a
+    /// failure is said on the status line.
+    pub fn download(
+        &self,
+        file: &str,
+        st: &State,
+        arm: impl FnOnce() -> Result<web_sys::HtmlCanvasElement, JsValue>,
+    ) {
+        let result = if file == ARM_PNG {
+            arm().and_then(|c| crate::ui::kit::png::download(&c, ARM_PNG))
+        } else {
+            csv_download(file, st)
+        };
+        if let Err(e) = result {
+            self.panel.download_failed(file, &e);
+        }
     }
 
     /// The command lines of the current parameters (the jacobian-2r ones follow the pose's

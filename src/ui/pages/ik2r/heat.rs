@@ -14,7 +14,7 @@ use glam::DVec2;
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, HtmlCanvasElement};
 
-use super::{role, Page};
+use super::markup::role;
 use crate::planar2r::{wrap_angle, Arm};
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::kit::canvas::{dash, solid, Ink};
@@ -22,6 +22,15 @@ use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::heatmap::{Heatmap, HeatmapSpec, MARKER_RADIUS_PX};
 use crate::view::drag::HandleShape;
 use crate::view::ik2r::{fmt_fixed, fmt_sig, heat_axis, heat_fill, Params, State};
+
+/// What the heatmap's pointer asks of the page.
+pub(super) trait HeatHost: 'static {
+    /// Whether a pointer of `kind` at canvas point `at` grabs the heatmap (see
+    /// [`HeatPanel::grabs`]).
+    fn heat_grab(&self, at: DVec2, kind: PointerKind) -> Option<()>;
+    /// A drag, tap or hover on the heatmap.
+    fn on_heat(&self, ev: DragEvent<()>);
+}
 
 /// The heatmap component.
 pub(super) struct HeatPanel {
@@ -64,29 +73,30 @@ impl HeatPanel {
         target.is_some_and(|t| &t == canvas)
     }
 
-    pub fn attach(&mut self, weak: &Weak<Page>) -> Result<(), JsValue> {
-        let (w_hit, w_on) = (weak.clone(), weak.clone());
+    /// The drag on the heatmap, reporting to `host`.
+    pub fn attach<H: HeatHost>(&mut self, host: &Weak<H>) -> Result<(), JsValue> {
+        let (w_hit, w_on) = (host.clone(), host.clone());
         self.drag = Some(Drag::attach(
             &self.stage,
             &self.top,
-            move |at, kind| {
-                let page = w_hit.upgrade()?;
-                let heat = page.heat.borrow();
-                if kind == PointerKind::Touch {
-                    // A finger drags the marker only; elsewhere it scrolls (a tap jumps).
-                    let st = page.state.borrow();
-                    heat.marker_handle(&st).contains(at).then_some(())
-                } else {
-                    heat.pose_at(at).map(|_| ())
-                }
-            },
+            move |at, kind| w_hit.upgrade()?.heat_grab(at, kind),
             move |ev: DragEvent<()>| {
-                if let Some(page) = w_on.upgrade() {
-                    page.on_heat(ev);
+                if let Some(host) = w_on.upgrade() {
+                    host.on_heat(ev);
                 }
             },
         )?);
         Ok(())
+    }
+
+    /// Whether a pointer of `kind` at canvas point `at` grabs the heatmap: a finger only on
+    /// the marker (elsewhere it scrolls; a tap jumps), a mouse or pen anywhere on the grid.
+    pub fn grabs(&self, st: &State, at: DVec2, kind: PointerKind) -> Option<()> {
+        if kind == PointerKind::Touch {
+            self.marker_handle(st).contains(at).then_some(())
+        } else {
+            self.pose_at(at).map(|_| ())
+        }
     }
 
     pub fn detach(&mut self) {

@@ -6,7 +6,6 @@
 
 use web_sys::KeyboardEvent;
 
-use super::Page;
 use crate::ui::page::Shortcut;
 
 /// Tip nudge, metres (Shift: ten times).
@@ -48,52 +47,47 @@ pub fn shortcuts() -> Vec<Shortcut> {
     ]
 }
 
-/// Handles one key; `true` when it was the page's.
-pub(super) fn on_key(page: &Page, event: &KeyboardEvent) -> bool {
-    if event.ctrl_key() || event.meta_key() || event.alt_key() {
-        return false;
-    }
-    let k = if event.shift_key() { 10.0 } else { 1.0 };
-    let key = event.key();
-    let nudge = |dx: f64, dy: f64| page.nudge_tip(dx * NUDGE_M * k, dy * NUDGE_M * k);
-    let turn = |d1: f64, d2: f64| page.turn(d1 * TURN_RAD * k, d2 * TURN_RAD * k);
-    if page.is_heatmap(event.target()) {
-        match key.as_str() {
-            "ArrowLeft" => turn(-1.0, 0.0),
-            "ArrowRight" => turn(1.0, 0.0),
-            "ArrowUp" => turn(0.0, 1.0),
-            "ArrowDown" => turn(0.0, -1.0),
-            _ => return on_any_view(page, key.as_str(), turn),
-        }
-        return true;
-    }
-    match key.as_str() {
-        "ArrowLeft" => nudge(-1.0, 0.0),
-        "ArrowRight" => nudge(1.0, 0.0),
-        "ArrowUp" => nudge(0.0, 1.0),
-        "ArrowDown" => nudge(0.0, -1.0),
-        other => return on_any_view(page, other, turn),
-    }
-    true
+/// What a key asks of the page.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum KeyAction {
+    /// Move the tip by `(dx, dy)` metres by IK.
+    Nudge(f64, f64),
+    /// Turn the joints by `(d1, d2)` radians.
+    Turn(f64, f64),
+    FlipElbow,
+    Reset,
+    ToggleWorkspace,
 }
 
-/// The keys that do the same on the arm view, the heatmap and the page body.
-fn on_any_view(page: &Page, key: &str, turn: impl Fn(f64, f64)) -> bool {
-    match key {
+/// The page's action for one key (`on_heatmap`: the key's target is the heatmap, whose arrows
+/// turn the joints); `None` when the key is not the page's.
+pub(super) fn action(event: &KeyboardEvent, on_heatmap: bool) -> Option<KeyAction> {
+    if event.ctrl_key() || event.meta_key() || event.alt_key() {
+        return None;
+    }
+    let k = if event.shift_key() { 10.0 } else { 1.0 };
+    let nudge = |dx: f64, dy: f64| KeyAction::Nudge(dx * NUDGE_M * k, dy * NUDGE_M * k);
+    let turn = |d1: f64, d2: f64| KeyAction::Turn(d1 * TURN_RAD * k, d2 * TURN_RAD * k);
+    let key = event.key();
+    let arrow = match key.as_str() {
+        "ArrowLeft" => Some((-1.0, 0.0)),
+        "ArrowRight" => Some((1.0, 0.0)),
+        "ArrowUp" => Some((0.0, 1.0)),
+        "ArrowDown" => Some((0.0, -1.0)),
+        _ => None,
+    };
+    if let Some((x, y)) = arrow {
+        // On the heatmap ← → turn q1 and ↑ ↓ turn q2; elsewhere the arrows move the tip.
+        return Some(if on_heatmap { turn(x, y) } else { nudge(x, y) });
+    }
+    Some(match key.as_str() {
         "[" | "{" => turn(-1.0, 0.0),
         "]" | "}" => turn(1.0, 0.0),
         "-" | "_" => turn(0.0, -1.0),
         "=" | "+" => turn(0.0, 1.0),
-        "e" | "E" => {
-            let elbow = page.state.borrow().elbow.flipped();
-            page.set_elbow(elbow);
-        }
-        "r" | "R" => page.reset(),
-        "w" | "W" => {
-            let on = !page.state.borrow().show_ws;
-            page.set_workspace_visible(on);
-        }
-        _ => return false,
-    }
-    true
+        "e" | "E" => KeyAction::FlipElbow,
+        "r" | "R" => KeyAction::Reset,
+        "w" | "W" => KeyAction::ToggleWorkspace,
+        _ => return None,
+    })
 }

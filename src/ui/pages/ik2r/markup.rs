@@ -4,11 +4,21 @@
 //! `data-ik2r="<role>"`, and the ones tests drive carry `data-testid` / `data-readout` /
 //! `data-download`.
 
-use super::{explain, exports, readouts};
+use wasm_bindgen::{JsCast, JsValue};
+use web_sys::Element;
+
+use super::explain;
+use crate::ui::dom;
 use crate::ui::kit::readouts::live_markup;
 
-/// The whole page.
-pub fn page() -> String {
+/// The element `[data-ik2r="name"]` of the page.
+pub fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
+    dom::find(root, &format!("[data-ik2r=\"{name}\"]"), "ik-2r")
+}
+
+/// The whole page, with the components' own markup: the readouts card and the phone strip
+/// (`readouts`, `strip`) and the downloads panel (`downloads`).
+pub fn page(readouts: &str, strip: &str, downloads: &str) -> String {
     format!(
         "<div class=\"ik2r\" data-testid=\"ik-2r-page\">\
 <header class=\"ik2r-head\"><h1 data-i18n=\"ik2r-title\"></h1><p class=\"ik2r-lede\" data-i18n=\"ik2r-lede\"></p>\
@@ -63,10 +73,7 @@ data-i18n-attr=\"aria-label=ik2r-plot-label\" aria-describedby=\"ik2r-plot-hint 
 {downloads}\
 {explain}\
 </div>",
-        readouts = readouts::markup(),
-        strip = readouts::strip_markup(),
         live = live_markup("ik-2r"),
-        downloads = exports::markup(),
         explain = explain::markup(),
     )
 }

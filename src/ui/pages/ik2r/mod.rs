@@ -9,16 +9,10 @@
 //! w  = sqrt(det(J Jᵀ)) = |det J|,   ellipse semi-axes σ_max ≥ σ_min (singular values of J)
 //! ```
 //!
-//! The page is a struct of components, one file each, each owning its elements, its state,
-//! its drawing and its `relocalize`: `arm` (the arm view with its toolbar and workspace
-//! overlay), `heat` (the joint-space heatmap), `sweep` (the jacobian-2r plot),
-//! `params` (the parameters form), `readouts` (live numbers, the phone strip, the
-//! screen-reader summary) and `exports` (downloads, command lines, copy). This file holds
-//! the shared state ([`State`], from the pure `crate::view::ik2r`) and wires the components:
-//! input goes to a component, the page updates the state, and the frame loop redraws what
-//! each change made dirty, once per animation frame (backgrounds only on parameter, size,
-//! language or mode changes; a drag frame draws the arm layer, the heatmap marker, the
-//! readouts and the sweep series).
+//! Components, one file each (`arm`, `heat`, `sweep`, `params`, `readouts`, `exports`, `keys`,
+//! `bench`), own their elements, drawing and `relocalize`, and report input to the page through
+//! their host traits or callbacks; this file holds the state ([`State`]) and redraws what each
+//! change made dirty, once per animation frame.
 
 mod arm;
 mod bench;
@@ -36,27 +30,23 @@ use std::cell::RefCell;
 use std::rc::{Rc, Weak};
 
 use wasm_bindgen::prelude::*;
-use wasm_bindgen::JsCast;
 use web_sys::{Element, KeyboardEvent};
 
+use self::arm::{ArmControl, ArmHost};
+#[cfg(feature = "bench")]
+use self::bench::BenchHost;
+use self::heat::HeatHost;
+use self::keys::KeyAction;
 use crate::planar2r::{wrap_angle, Elbow};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
-use crate::ui::kit::drag::DragEvent;
+use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
-use crate::ui::page::{MountCtx, PageDef, PageHandle, Shortcut};
+use crate::ui::page::{self, MountCtx, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::view::ik2r::{elbow_of, Grab, Params, State, WsColor};
 use crate::view::url::UrlState;
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef {
-    id: "ik-2r",
-    title_id: "ik2r-title",
-    blurb_id: "ik2r-blurb",
-    mount,
-};
 
 /// What needs redrawing on the next animation frame.
 mod dirty {
@@ -69,11 +59,6 @@ mod dirty {
     pub const FRAME: u32 = 16;
     pub const PLOT_DATA: u32 = 32;
     pub const ALL: u32 = 63;
-}
-
-/// The element `[data-ik2r="name"]` of the page.
-fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
-    dom::find(root, &format!("[data-ik2r=\"{name}\"]"), "ik-2r")
 }
 
 /// The mounted page.
@@ -102,11 +87,15 @@ pub(crate) struct Page {
     timings: bench::Timings,
 }
 
-fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
+fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
     let root = ctx.root.clone();
-    root.set_inner_html(&markup::page());
+    root.set_inner_html(&markup::page(
+        &readouts::markup(),
+        &readouts::strip_markup(),
+        &exports::markup(),
+    ));
     let (state, ignored) = State::read(&ctx.query);
-    let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
+    let url_notice = UrlNotice::new(markup::role(&root, "url-notice")?, ignored)?;
     let (arm, heat, sweep) = (
         arm::ArmView::find(&root)?,
         heat::HeatPanel::find(&root)?,
@@ -149,7 +138,7 @@ fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
     }
     page.exports.borrow().update_commands(&state);
     page.invalidate(dirty::ALL);
-    Ok(Box::new(Handle(page)))
+    Ok(page)
 }
 
 impl Page {
@@ -167,8 +156,24 @@ impl Page {
         let mut listeners = Vec::new();
         self.arm.borrow_mut().attach(weak, &mut listeners)?;
         self.heat.borrow_mut().attach(weak)?;
-        self.params.borrow().attach(weak, &mut scope)?;
-        self.exports.borrow().attach(weak, &mut scope)?;
+        self.params
+            .borrow()
+            .attach(weak, &mut scope, |p: &Page, target| {
+                let old = p.state.borrow().params;
+                let next = p.params.borrow_mut().on_input(target, old);
+                p.apply_params(old, next);
+            })?;
+        self.exports.borrow().attach(
+            weak,
+            &mut scope,
+            |p: &Page, file| {
+                let st = *p.state.borrow();
+                p.exports
+                    .borrow()
+                    .download(file, &st, || p.arm.borrow().flatten());
+            },
+            |p: &Page, key| p.exports.borrow().copy(key),
+        )?;
         for l in listeners {
             scope.keep(l);
         }
@@ -331,6 +336,27 @@ impl Page {
     /// Whether a key's `target` is the heatmap (its arrows turn the joints).
     fn is_heatmap(&self, target: Option<web_sys::EventTarget>) -> bool {
         self.heat.try_borrow().is_ok_and(|h| h.is_canvas(target))
+    }
+
+    /// One key; `true` when it was the page's.
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        let Some(action) = keys::action(event, self.is_heatmap(event.target())) else {
+            return false;
+        };
+        match action {
+            KeyAction::Nudge(dx, dy) => self.nudge_tip(dx, dy),
+            KeyAction::Turn(d1, d2) => self.turn(d1, d2),
+            KeyAction::FlipElbow => {
+                let elbow = self.state.borrow().elbow.flipped();
+                self.set_elbow(elbow);
+            }
+            KeyAction::Reset => self.reset(),
+            KeyAction::ToggleWorkspace => {
+                let on = !self.state.borrow().show_ws;
+                self.set_workspace_visible(on);
+            }
+        }
+        true
     }
 
     /// Turns the joints by `(d1, d2)` rad.
@@ -551,10 +577,14 @@ impl Page {
     }
 }
 
-/// The shell's handle on the page.
-struct Handle(Rc<Page>);
+/// The IK playground.
+pub struct Ik2rPage(Rc<Page>);
 
-impl PageHandle for Handle {
+impl page::Page for Ik2rPage {
+    fn mount(ctx: MountCtx) -> Result<Ik2rPage, JsValue> {
+        mount(ctx).map(Ik2rPage)
+    }
+
     fn relocalize(&self) {
         self.0.relocalize();
     }
@@ -568,10 +598,69 @@ impl PageHandle for Handle {
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        keys::on_key(&self.0, event)
+        self.0.on_key(event)
+    }
+}
+
+impl ArmHost for Page {
+    fn grab_at(&self, at: glam::DVec2, kind: PointerKind) -> Option<Grab> {
+        let st = *self.state.borrow();
+        let xf = self.arm.borrow().xf;
+        arm::grab_at(&xf, &st, at, kind)
     }
 
-    fn unmount(&self) {
+    fn on_arm(&self, ev: DragEvent<Grab>) {
+        Page::on_arm(self, ev);
+    }
+
+    fn on_control(&self, control: ArmControl) {
+        match control {
+            ArmControl::Elbow(elbow) => self.set_elbow(elbow),
+            ArmControl::Workspace(on) => self.set_workspace_visible(on),
+            ArmControl::Colour(colour) => self.set_ws_colour(colour),
+            ArmControl::Reset => self.reset(),
+        }
+    }
+}
+
+impl HeatHost for Page {
+    fn heat_grab(&self, at: glam::DVec2, kind: PointerKind) -> Option<()> {
+        let st = *self.state.borrow();
+        self.heat.borrow().grabs(&st, at, kind)
+    }
+
+    fn on_heat(&self, ev: DragEvent<()>) {
+        Page::on_heat(self, ev);
+    }
+}
+
+#[cfg(feature = "bench")]
+impl BenchHost for Page {
+    fn bench_frame(&self, x: f64, y: f64) {
+        self.move_tip(x, y);
+        self.draw_frame();
+    }
+
+    fn bench_plot(&self) {
+        let st = *self.state.borrow();
+        self.sweep.borrow_mut().draw(&st, Ink::current());
+    }
+
+    fn bench_heatmap(&self, n: usize) -> bool {
+        let arm = self.state.borrow().params.arm();
+        if !self.heat.borrow_mut().recompute(&arm, n) {
+            return false;
+        }
+        self.heat.borrow().draw_background(Ink::current());
+        // Back to the page's own resolution afterwards.
+        self.heat_timer.schedule(50);
+        self.invalidate(dirty::FRAME);
+        true
+    }
+}
+
+impl Drop for Ik2rPage {
+    fn drop(&mut self) {
         self.0.unmount();
     }
 }

@@ -14,7 +14,7 @@ use std::rc::Weak;
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::Element;
 
-use super::{role, Page};
+use super::markup::role;
 use crate::ui::kit::form::{Form, FormOptions, Group, Message};
 use crate::ui::kit::scope::Scope;
 use crate::view::form::validate;
@@ -77,16 +77,19 @@ impl ParamsForm {
         Ok(ParamsForm { element, form })
     }
 
-    pub fn attach(&self, weak: &Weak<Page>, scope: &mut Scope) -> Result<(), JsValue> {
-        scope.listen_for(&self.element, "input", weak, |p, e| {
-            let Some(target) = e.target().and_then(|t| t.dyn_into::<Element>().ok()) else {
-                return;
-            };
-            let old = p.state.borrow().params;
-            let next = p.params.borrow_mut().on_input(&target, old);
-            p.apply_params(old, next);
+    /// The form's listeners: an edit goes to `on_input` with the edited element.
+    pub fn attach<H: 'static>(
+        &self,
+        host: &Weak<H>,
+        scope: &mut Scope,
+        on_input: impl Fn(&H, &Element) + 'static,
+    ) -> Result<(), JsValue> {
+        scope.listen_for(&self.element, "input", host, move |h, e| {
+            if let Some(target) = e.target().and_then(|t| t.dyn_into::<Element>().ok()) {
+                on_input(h, &target);
+            }
         })?;
-        scope.listen_for(&self.element, "submit", weak, |_, e| e.prevent_default())
+        scope.listen_for(&self.element, "submit", host, |_, e| e.prevent_default())
     }
 
     /// The user edited the field holding `target`: validates every field and returns the

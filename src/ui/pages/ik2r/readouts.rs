@@ -12,7 +12,7 @@
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use super::role;
+use super::markup::role;
 use crate::planar2r::PoseReport;
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::kit::readouts::{self as kit, ReadoutRow};

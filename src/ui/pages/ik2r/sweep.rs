@@ -7,7 +7,7 @@
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
-use super::role;
+use super::markup::role;
 use crate::ui::ctx;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::plot::{AxisSpec, Mark, PanelSpec, Plot, PlotSpec, SeriesSpec};

@@ -18,39 +18,43 @@ use web_sys::{Element, Event, HtmlInputElement, HtmlTextAreaElement};
 
 use crate::ui::dom::{self, Listener};
 use crate::ui::kit::input_file;
-use crate::ui::lesson_bar::{self, is_page};
-use crate::ui::page::{MountCtx, PageDef, PageHandle};
+use crate::ui::lesson_bar;
+use crate::ui::page::{MountCtx, Page, ShellLink};
 use crate::ui::{ctx, download, router};
 use crate::view::lesson::{Lesson, LessonError, MAX_PAGE_STEPS};
 
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef {
-    id: "lesson",
-    title_id: "lesson-title",
-    blurb_id: "lesson-blurb",
-    mount,
-};
+/// The lesson page.
+pub struct LessonPage(Rc<Editor>);
 
-struct LessonPage {
+/// The lesson being edited, its elements and listeners.
+struct Editor {
     root: Element,
+    /// The page table (a step must name a page) and the shell's requests.
+    shell: ShellLink,
     lesson: RefCell<Lesson>,
     listeners: RefCell<Vec<Listener>>,
     steps_listeners: RefCell<Vec<Listener>>,
 }
 
-impl PageHandle for Rc<LessonPage> {
+impl Page for LessonPage {
+    fn mount(ctx: MountCtx) -> Result<LessonPage, JsValue> {
+        mount(ctx).map(LessonPage)
+    }
+
     fn relocalize(&self) {
-        let _ = self.render_steps();
+        let _ = self.0.render_steps();
     }
 }
 
-fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
+fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
     let root = ctx.root.clone();
     root.set_inner_html(MARKUP);
     dom::relocalize(&root)?;
-    let page = Rc::new(LessonPage {
+    let is_page = |id: &str| ctx.shell.is_page(id);
+    let page = Rc::new(Editor {
         root,
-        lesson: RefCell::new(lesson_bar::stored()),
+        shell: ctx.shell,
+        lesson: RefCell::new(lesson_bar::stored(is_page)),
         listeners: RefCell::new(Vec::new()),
         steps_listeners: RefCell::new(Vec::new()),
     });
@@ -65,7 +69,7 @@ fn mount(ctx: MountCtx) -> Result<Box<dyn PageHandle>, JsValue> {
     }
     page.wire()?;
     page.render_steps()?;
-    Ok(Box::new(page))
+    Ok(page)
 }
 
 const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>\
@@ -95,7 +99,20 @@ const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>
 <input type=\"text\" readonly data-readout=\"lesson-link\"></label>\
 </section></div>";
 
-impl LessonPage {
+impl Editor {
+    fn is_page(&self, id: &str) -> bool {
+        self.shell.is_page(id)
+    }
+
+    /// Presents the lesson from step `index`, with what that asks of the shell.
+    fn present(&self, index: usize) -> Result<(), JsValue> {
+        let lesson = self.lesson.borrow().clone();
+        for request in lesson_bar::present(lesson, index)? {
+            (self.shell.request)(request)?;
+        }
+        Ok(())
+    }
+
     fn find<T: JsCast>(&self, selector: &str) -> Result<T, JsValue> {
         dom::find(&self.root, selector, "lesson")
     }
@@ -198,7 +215,7 @@ impl LessonPage {
     fn imported(self: &Rc<Self>, text: Result<String, String>) -> Result<(), JsValue> {
         let parsed = text
             .map_err(|detail| LessonError::NotALesson { detail })
-            .and_then(|t| Lesson::from_json(&t, is_page));
+            .and_then(|t| Lesson::from_json(&t, |id| self.is_page(id)));
         match parsed {
             Ok(lesson) => self.replace(lesson),
             Err(error) => self.show_error(&error),
@@ -210,7 +227,7 @@ impl LessonPage {
             let replace = self.lesson.borrow().steps.is_empty()
                 || dom::window()?.confirm_with_message(&ctx::t("lesson-replace-confirm"))?;
             if replace {
-                if let Some(lesson) = builtin::lesson(&key, is_page) {
+                if let Some(lesson) = builtin::lesson(&key, |id| self.is_page(id)) {
                     self.replace(lesson)?;
                 }
             }
@@ -225,9 +242,8 @@ impl LessonPage {
         }
         match target.get_attribute("data-action").as_deref() {
             Some("lesson-present") => {
-                let lesson = self.lesson.borrow().clone();
-                if !lesson.steps.is_empty() {
-                    lesson_bar::present(lesson, 0)?;
+                if !self.lesson.borrow().steps.is_empty() {
+                    self.present(0)?;
                 }
                 return Ok(());
             }
@@ -256,8 +272,7 @@ impl LessonPage {
                     self.lesson.borrow_mut().steps.remove(i);
                 }
                 "present" => {
-                    let lesson = self.lesson.borrow().clone();
-                    return lesson_bar::present(lesson, i);
+                    return self.present(i);
                 }
                 _ => return Ok(()),
             }

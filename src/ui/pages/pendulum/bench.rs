@@ -27,8 +27,8 @@ mod hooks {
 
     use wasm_bindgen::prelude::*;
 
-    use super::super::Inner;
     use crate::ui::kit::stepper::StepModel;
+    use crate::ui::pages::pendulum::Inner;
     use crate::ui::schedule::now_ms;
 
     const FRAMES: &str = "__pendulumFrameMs";
@@ -36,12 +36,12 @@ mod hooks {
     const KEEP: u32 = 5000;
 
     /// Records one frame's work.
-    pub(in super::super) fn record(ms: f64) {
+    pub(in crate::ui::pages::pendulum) fn record(ms: f64) {
         crate::ui::kit::bench_log::push_ms(FRAMES, ms, KEEP);
     }
 
     /// Installs `window.__pendulumBench` (and an empty `__pendulumFrameMs`).
-    pub(in super::super) fn install_hooks(weak: &Weak<Inner>) {
+    pub(in crate::ui::pages::pendulum) fn install_hooks(weak: &Weak<Inner>) {
         let Some(window) = web_sys::window() else {
             return;
         };
@@ -81,7 +81,7 @@ mod hooks {
     }
 
     /// Removes `window.__pendulumBench` (the page unmounted).
-    pub(in super::super) fn remove_hooks() {
+    pub(in crate::ui::pages::pendulum) fn remove_hooks() {
         if let Some(window) = web_sys::window() {
             let _ = js_sys::Reflect::delete_property(&window, &HOOKS.into());
         }

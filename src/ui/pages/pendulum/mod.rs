@@ -37,14 +37,10 @@ use crate::ui::kit::keymap;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::{Command, Length, Speed, StepModel, StepperOptions, StepperWidget};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::pendulum::{cli_args, other, PageQuery, Track};
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef =
-    PageDef::of::<PendulumPage>("pendulum-energy", "pendulum-title", "pendulum-blurb");
 
 /// Speeds, multiples of real time.
 const SPEEDS: [f64; 7] = [0.1, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0];

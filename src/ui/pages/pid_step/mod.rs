@@ -11,8 +11,3 @@ mod page;
 mod plots;
 
 pub use self::page::PidPage;
-use crate::ui::kit::signal_page::Signal;
-use crate::ui::page::PageDef;
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<Signal<PidPage>>("pid-step", "pid-title", "pid-blurb");

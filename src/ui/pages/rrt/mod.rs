@@ -40,16 +40,13 @@ use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::{Command, Length, Speed, StepModel, StepperOptions, StepperWidget};
 use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::rrt::{
     add_box, corners, delete_box, drag, hit_test, phases, rate_per_s, Grab, PageState, Phase,
     Refusal,
 };
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<RrtPage>("rrt-2d", "rrt-title", "rrt-blurb");
 
 /// Playing speeds: iterations per second, then as fast as possible.
 const SPEEDS: [Speed; 5] = [

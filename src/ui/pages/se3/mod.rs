@@ -36,7 +36,7 @@ use crate::ui::kit::orbit::{self, OrbitOptions, OrbitView};
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
@@ -45,9 +45,6 @@ use crate::view::se3_relative::{
     yaw_text, AngleUnit, Grab, PoseFields, Solved, VIEW_KEY,
 };
 use crate::view::signal::sig;
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<Se3Page>("se3-relative", "se3-title", "se3-blurb");
 
 const P: &str = "se3";
 const PNG: &str = "se3_relative.png";

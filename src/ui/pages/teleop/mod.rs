@@ -40,7 +40,7 @@ use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, Poin
 use crate::teleop::session::{InputDevice, Module, Session};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::scope::{FrameLoop, Scope};
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::teleop_input::{key_action, KeyAction};
@@ -58,9 +58,6 @@ use scene_view::SceneView;
 use session_panel::{open_error_text, PanelAction, SessionPanel};
 use sessions::Sessions;
 use settings::SettingsForm;
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<TeleopPage>("teleop", "teleop-nav", "teleop-blurb");
 
 /// The page's components.
 struct Inner {

@@ -44,15 +44,12 @@ use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
 use crate::ui::kit::worker::{self, Job, RunOptions, WorkerError, WorkerFile, WorkerInput};
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{after_paint, now_ms, Timer};
 use crate::view::command_line::RunArgs;
 use crate::view::envelope::{csv_envelope, Envelope, BUCKETS};
 use crate::view::form::{recipe_fields, runs_while_typing, validate};
 use crate::view::traj_resample::{file_too_large, readings, PageQuery};
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef = PageDef::of::<TrajResample>("traj-resample", "traj-title", "traj-blurb");
 
 /// The recipe the page runs.
 const RECIPE: &str = traj_resample::INFO.id;

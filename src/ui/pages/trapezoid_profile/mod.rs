@@ -12,9 +12,3 @@ mod page;
 mod plots;
 
 pub use self::page::TrapPage;
-use crate::ui::kit::signal_page::Signal;
-use crate::ui::page::PageDef;
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef =
-    PageDef::of::<Signal<TrapPage>>("trapezoid-profile", "trap-title", "trap-blurb");

@@ -50,7 +50,7 @@ use crate::ui::kit::recipe_controls::RecipeControls;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::{Command, Length, StepModel, StepperOptions, StepperWidget};
 use crate::ui::kit::url_state::UrlWriter;
-use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
+use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::drag::HandleShape;
@@ -60,10 +60,6 @@ use crate::view::umeyama_2d::{
     num, points_text, remove_point, rotation_key_target, rotation_texts, selected_point,
     translation_texts, Grab, Refusal, Scene, Step, STEPS,
 };
-
-/// The page, as the shell's page table lists it.
-pub const PAGE: PageDef =
-    PageDef::of::<UmeyamaPage>("umeyama-2d", "umeyama-title", "umeyama-blurb");
 
 /// Class and role prefix.
 const P: &str = "ume";
