@@ -237,7 +237,13 @@ impl Page for PendulumPage {
             }
         });
         inner.install()?;
-        bench::install_hooks(&Rc::downgrade(&inner));
+        #[cfg(feature = "bench")]
+        {
+            let weak = Rc::downgrade(&inner);
+            bench::install_hooks(move |steps| {
+                weak.upgrade().map_or(f64::NAN, |p| p.bench_frame(steps))
+            });
+        }
         inner.view.borrow_mut().canvas.fit();
         inner.rebuild(DEFAULT_SPEED)?;
         let h = inner.sim.borrow().params.timestep_s;
@@ -466,11 +472,29 @@ impl Inner {
         )));
     }
 
-    /// Bench builds: the same run again from the start (fresh tracks and plots).
+    /// Bench builds: one frame's work, `steps` timesteps further (from the start again once
+    /// the run is over), and its duration, ms.
     #[cfg(feature = "bench")]
-    fn replay_from_start(&self) {
-        let params = self.sim.borrow().params;
-        self.restart(params);
+    fn bench_frame(&self, steps: u64) -> f64 {
+        let over = self
+            .sim
+            .try_borrow()
+            .map_or(true, |sim| sim.index + steps > sim.steps);
+        if over {
+            // Over the end: the same run from the start, as a replay (not timed).
+            let params = self.sim.borrow().params;
+            self.restart(params);
+        }
+        let t0 = now_ms();
+        {
+            let Ok(mut sim) = self.sim.try_borrow_mut() else {
+                return f64::NAN;
+            };
+            let next = (sim.index + steps).min(sim.steps);
+            sim.go_to(next);
+        }
+        self.update();
+        now_ms() - t0
     }
 
     fn command(&self, command: Command) {

@@ -18,7 +18,7 @@ use crate::ui::kit::exports::Exports as Commands;
 use crate::ui::schedule::now_ms;
 use crate::view::rrt::PageState;
 
-use super::Run;
+use super::run::Run;
 
 /// Nodes whose CSV is written at once on a click; a bigger tree's is written in slices.
 const NODES_AT_ONCE: usize = 50_000;

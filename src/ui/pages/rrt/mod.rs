@@ -20,6 +20,7 @@
 mod exports;
 mod markup;
 mod params;
+mod run;
 mod substeps;
 mod world;
 
@@ -32,13 +33,13 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 use crate::error::RecipeError;
 use crate::i18n::FluentArg;
 use crate::pyfmt::fixed;
-use crate::recipes::rrt_2d::{Rrt, RrtAt, RrtCursor, RrtOutcome, RrtSetup};
+use crate::recipes::rrt_2d::RrtOutcome;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
-use crate::ui::kit::stepper::{Command, Length, Speed, StepModel, StepperOptions, StepperWidget};
+use crate::ui::kit::stepper::{Command, Speed, StepperOptions, StepperWidget};
 use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
 use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
@@ -47,6 +48,7 @@ use crate::view::rrt::{
     add_box, corners, delete_box, drag, hit_test, phases, rate_per_s, Grab, PageState, Phase,
     Refusal,
 };
+use run::Run;
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef::of::<RrtPage>("rrt-2d", "rrt-title", "rrt-blurb");
@@ -93,75 +95,6 @@ const TREE_MS_PER_TASK: f64 = 8.0;
 /// The first slice of the run to its end, in the mount's task, ms (a run of a few thousand
 /// iterations is complete in it).
 const MOUNT_SLICE_MS: f64 = 4.0;
-
-/// The run: grown to its end in time slices between frames (its length and the exports),
-/// and the iteration shown, a cursor into it (the tree shown is a prefix of the run's: no
-/// copy, End and any jump replay at most 64 iterations without a search).
-pub struct Run {
-    /// The run to its end, as far as the slices have grown it.
-    pub finished: Rrt,
-    /// The iteration shown.
-    pub cursor: RrtCursor,
-    /// Changes whenever the tree shown shrinks or is another run's (the tree layer is then
-    /// redrawn whole).
-    pub generation: u64,
-    /// Time the last `go_to` took, ms.
-    pub advance_ms: f64,
-}
-
-impl Run {
-    fn new(setup: &RrtSetup, generation: u64) -> Result<Run, RecipeError> {
-        let finished = Rrt::with_setup(setup)?;
-        Ok(Run {
-            cursor: finished.cursor(),
-            finished,
-            generation,
-            advance_ms: 0.0,
-        })
-    }
-
-    /// The run as it stood at the iteration shown.
-    pub fn shown(&self) -> RrtAt<'_> {
-        self.finished.at(&self.cursor)
-    }
-
-    /// Whether the run to its end is complete (its length known, the exports ready).
-    pub fn is_finished(&self) -> bool {
-        self.finished.is_done()
-    }
-
-    /// Grows the run to its end for about `budget_ms`; `true` once it is complete.
-    fn finish_for(&mut self, budget_ms: f64) -> bool {
-        let started = now_ms();
-        while !self.finished.is_done() {
-            for _ in 0..256 {
-                if self.finished.step_record().is_none() {
-                    break;
-                }
-            }
-            if now_ms() - started >= budget_ms {
-                break;
-            }
-        }
-        self.finished.is_done()
-    }
-}
-
-impl StepModel for Run {
-    /// The iterations known: the whole run once finished, else as far as it has grown.
-    fn length(&self) -> Length {
-        Length::Finite(self.finished.iterations() as u64)
-    }
-    fn go_to(&mut self, index: u64) {
-        let started = now_ms();
-        let k = usize::try_from(index).unwrap_or(usize::MAX);
-        if k < self.shown().iterations() {
-            self.generation += 1;
-        }
-        self.finished.seek_cursor(&mut self.cursor, k);
-        self.advance_ms = now_ms() - started;
-    }
-}
 
 /// A drag under way: what, where it began (world), the state before it.
 type DragStart = (Grab, [f64; 2], PageState);

@@ -14,7 +14,7 @@ use crate::view::drag::HandleShape;
 use crate::view::palette;
 use crate::view::rrt::{corners, Frame, Grab, PageState, Phase};
 
-use super::Run;
+use super::run::Run;
 
 const BG: &str = "#fbfcfe";
 const GRID: &str = "#e6eaf0";

@@ -45,12 +45,11 @@ use crate::view::se3_relative::{
     yaw_text, AngleUnit, Grab, PoseFields, Solved, VIEW_KEY,
 };
 use crate::view::signal::sig;
+use markup::{P, PNG};
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef::of::<Se3Page>("se3-relative", "se3-title", "se3-blurb");
 
-const P: &str = "se3";
-const PNG: &str = "se3_relative.png";
 /// The camera frames this share of the scene's radius: the frames fill the view (their axis
 /// tips may reach its edge).
 const CLOSER: f64 = 0.8;

@@ -19,7 +19,7 @@ use crate::view::se3_relative::{
     field_name, is_angle, rad_to_deg_text, AngleUnit, PoseFields, FIELDS,
 };
 
-use super::P;
+use super::markup::P;
 
 /// Frame A's six fields, then frame B's.
 const GROUPS: [Group; 2] = [

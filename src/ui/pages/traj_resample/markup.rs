@@ -2,8 +2,10 @@
 //! (the kit's form, filled by the code), the result's downloads and command lines, and the
 //! explanation with the seed's recipe text. Every fixed word is a `data-i18n` id.
 
-use super::PREFIX;
 use crate::ui::kit::{exports, readouts};
+
+/// Class and test-id prefix of the kit widgets.
+pub const PREFIX: &str = "traj";
 
 /// The readouts: `(data-readout key, label id)`.
 const READOUTS: [(&str, &str); 6] = [

@@ -50,14 +50,13 @@ use crate::view::command_line::RunArgs;
 use crate::view::envelope::{csv_envelope, Envelope, BUCKETS};
 use crate::view::form::{recipe_fields, runs_while_typing, validate};
 use crate::view::traj_resample::{file_too_large, readings, PageQuery};
+use markup::PREFIX;
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef::of::<TrajResample>("traj-resample", "traj-title", "traj-blurb");
 
 /// The recipe the page runs.
 const RECIPE: &str = traj_resample::INFO.id;
-/// Class and test-id prefix of the kit widgets.
-const PREFIX: &str = "traj";
 /// Input files up to this size are read on the page (their errors show at once, their
 /// small runs happen while typing); bigger ones go to the worker unread.
 pub const PRECHECK_MAX_BYTES: u64 = 4 * 1024 * 1024;

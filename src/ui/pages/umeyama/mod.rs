@@ -45,6 +45,7 @@ use crate::recipes::umeyama_2d::{setup_from_args, UmeyamaSetup, INFO, POINTS_CSV
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
+use crate::ui::kit::page_root::PageRoot;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::recipe_controls::RecipeControls;
 use crate::ui::kit::scope::Scope;
@@ -60,14 +61,12 @@ use crate::view::umeyama_2d::{
     num, points_text, remove_point, rotation_key_target, rotation_texts, selected_point,
     translation_texts, Grab, Refusal, Scene, Step, STEPS,
 };
+use markup::{P, PNG};
 
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef =
     PageDef::of::<UmeyamaPage>("umeyama-2d", "umeyama-title", "umeyama-blurb");
 
-/// Class and role prefix.
-const P: &str = "ume";
-const PNG: &str = "umeyama_2d.png";
 /// A click this soon after a drag ended is the drag's own (ms).
 const CLICK_AFTER_DRAG_MS: f64 = 400.0;
 /// How long the selection's status line waits after the last change of the points (a key
@@ -77,6 +76,13 @@ const SELECTION_SETTLE_MS: i32 = 400;
 /// Where the points, the translation handle and the rotation handle are (CSS px, for tests
 /// and assistive tools), attributes of the top canvas written only when they change.
 const PX_ATTRS: [&str; 3] = ["data-points-px", "data-handle-t", "data-handle-r"];
+/// The page's keys besides the stepper's.
+const KEYS: [Shortcut; 4] = [
+    keymap::key("n  Shift + n", "umeyama-key-select"),
+    keymap::key("Shift + ← ↑ → ↓", "umeyama-key-move"),
+    keymap::key("Delete  Backspace", "umeyama-key-delete"),
+    keymap::key("a", "umeyama-key-add"),
+];
 /// The URL key of the step shown (the rest are the CLI's argument names).
 const STEP_KEY: &str = "step";
 const SLIDERS: [Slider; 6] = [
@@ -137,7 +143,7 @@ pub struct UmeyamaPage(Rc<Inner>);
 
 struct Inner {
     me: Weak<Inner>,
-    root: Element,
+    root: PageRoot,
     controls: RecipeControls<UmeyamaSetup>,
     scene: RefCell<Scene>,
     view: RefCell<view::SceneView>,
@@ -183,15 +189,9 @@ struct Inner {
 /// (a point's place; the translation; the rotation handle's angle and scale).
 type SelectionKey = (usize, Option<(Grab, [f64; 2])>);
 
-fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
-    dom::find(root, &format!("[data-{P}=\"{name}\"]"), P)
-}
-
 impl Page for UmeyamaPage {
     fn mount(ctx: MountCtx) -> Result<UmeyamaPage, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
+        let root = PageRoot::fill(&ctx.root, &markup::page(), P, P)?;
         let controls = RecipeControls::mount(
             &root,
             P,
@@ -208,13 +208,13 @@ impl Page for UmeyamaPage {
             .get(STEP_KEY)
             .and_then(|s| s.trim().parse::<u64>().ok())
             .map_or(0, |s| s.min(STEPS.len() as u64 - 1));
-        let stage: Element = role(&root, "stage")?;
+        let stage: Element = root.role("stage")?;
         let view = view::SceneView::find(&stage)?;
         let panel = steps::StepPanel::find(&root)?;
         let readouts = Readouts::find(&root)?;
-        let message = role(&root, "message")?;
-        let selection = role(&root, "selection")?;
-        let edited = role(&root, "edited")?;
+        let message = root.role("message")?;
+        let selection = root.role("selection")?;
+        let edited = root.role("edited")?;
         let points_button = root
             .query_selector(&format!("[data-download=\"{POINTS_CSV}\"]"))
             .ok()
@@ -283,26 +283,7 @@ impl Page for UmeyamaPage {
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
-        let mut keys = keymap::STEPPER.to_vec();
-        keys.extend([
-            Shortcut {
-                keys: "n  Shift + n",
-                message_id: "umeyama-key-select",
-            },
-            Shortcut {
-                keys: "Shift + ← ↑ → ↓",
-                message_id: "umeyama-key-move",
-            },
-            Shortcut {
-                keys: "Delete  Backspace",
-                message_id: "umeyama-key-delete",
-            },
-            Shortcut {
-                keys: "a",
-                message_id: "umeyama-key-add",
-            },
-        ]);
-        keys
+        keymap::with_stepper(&KEYS)
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
@@ -369,7 +350,7 @@ impl Inner {
                 p.work_started.set(Some(now_ms()));
             })?;
         }
-        let form: Element = role(&self.root, "form")?;
+        let form: Element = self.root.role("form")?;
         scope.listen_for(&form, "change", me, |p, _| p.write_url_now())?;
         for (action, f) in [
             ("add", Inner::add_point_button as fn(&Inner)),
@@ -377,7 +358,7 @@ impl Inner {
             ("mirror", Inner::mirror_preset),
             ("recipe", Inner::recipe_run),
         ] {
-            let button: Element = dom::find(&self.root, &format!("[data-action=\"{action}\"]"), P)?;
+            let button: Element = self.root.find(&format!("[data-action=\"{action}\"]"))?;
             scope.listen_for(&button, "click", me, move |p, _| f(p))?;
         }
         let top = self.view.borrow().canvas.top().canvas.clone();
@@ -413,7 +394,7 @@ impl Inner {
     }
 
     fn build_stepper(&self) -> Result<(), JsValue> {
-        let slot: Element = role(&self.root, "stepper")?;
+        let slot: Element = self.root.role("stepper")?;
         let me = self.me.clone();
         let widget = StepperWidget::new(
             &slot,

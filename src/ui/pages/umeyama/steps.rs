@@ -13,7 +13,7 @@ use crate::ui::{ctx, dom};
 use crate::view::signal::sig;
 use crate::view::umeyama_2d::{shown_for, umeyama_scale, Scene, Shown, Step};
 
-use super::P;
+use super::markup::P;
 
 /// The panel component.
 pub struct StepPanel {
