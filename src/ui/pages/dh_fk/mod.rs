@@ -51,10 +51,7 @@ const ANNOUNCE_QUIET_MS: f64 = 600.0;
 const TWEEN_MS: f64 = 550.0;
 
 /// The page's keys besides the stepper's and the view's.
-const ROW_KEYS: Shortcut = Shortcut {
-    keys: "1  2  3",
-    message_id: "dh-key-row",
-};
+const ROW_KEYS: Shortcut = keymap::key("1  2  3", "dh-key-row");
 
 /// The chain as last validly posed.
 struct Posed {

@@ -37,6 +37,7 @@ use crate::recipes::rrt_2d::RrtOutcome;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
+use crate::ui::kit::page_root::PageRoot;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::{Command, Speed, StepperOptions, StepperWidget};
@@ -53,6 +54,13 @@ use run::Run;
 /// The page, as the shell's page table lists it.
 pub const PAGE: PageDef = PageDef::of::<RrtPage>("rrt-2d", "rrt-title", "rrt-blurb");
 
+/// The page's keys besides the stepper's.
+const KEYS: [Shortcut; 4] = [
+    keymap::key("n", "rrt-key-select"),
+    keymap::key("c", "rrt-key-corner"),
+    keymap::key("Shift + ← ↑ → ↓", "rrt-key-move"),
+    keymap::key("Delete", "rrt-key-delete"),
+];
 /// Playing speeds: iterations per second, then as fast as possible.
 const SPEEDS: [Speed; 5] = [
     Speed::PerSecond(1.0),
@@ -104,7 +112,7 @@ pub struct RrtPage(Rc<Inner>);
 
 struct Inner {
     me: Weak<Inner>,
-    root: Element,
+    root: PageRoot,
     /// The last valid state (the form's texts and the world; `it` is the run's).
     state: RefCell<PageState>,
     /// The state the run was made from (a drag of a big run restarts at its end).
@@ -134,7 +142,6 @@ struct Inner {
     exports: exports::Exports,
     url_notice: UrlNotice,
     url: Option<UrlWriter>,
-    url_written: Cell<f64>,
     /// Nodes/second while playing: the sample's start (ms, nodes) and the last rate.
     rate_from: Cell<Option<(f64, usize)>>,
     rate: Cell<Option<f64>>,
@@ -151,34 +158,28 @@ struct Inner {
     scope: RefCell<Scope>,
 }
 
-fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
-    dom::find(root, &format!("[data-rrt=\"{name}\"]"), "rrt")
-}
-
 fn js_error(e: &RecipeError) -> JsValue {
     JsValue::from_str(&ctx::error_text(e))
 }
 
 impl Page for RrtPage {
     fn mount(ctx: MountCtx) -> Result<RrtPage, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
+        let root = PageRoot::fill(&ctx.root, &markup::page(), "rrt", "rrt")?;
         let (state, ignored) = PageState::read(&ctx.query);
-        let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
-        let params = params::Params::build(role(&root, "form")?, &state)?;
+        let url_notice = UrlNotice::new(root.role("url-notice")?, ignored)?;
+        let params = params::Params::build(root.role("form")?, &state)?;
         let setup = state.setup().map_err(|e| js_error(&e))?;
         let run = Rc::new(RefCell::new(Run::new(&setup, 0).map_err(|e| js_error(&e))?));
-        let world = world::WorldView::find(&role(&root, "stage")?)?;
+        let world = world::WorldView::find(&root.role("stage")?)?;
         let substeps = substeps::SubSteps::find(&root)?;
         let readouts = Readouts::find(&root)?;
         let exports = exports::Exports::find(&root)?;
         let start_it = state.it;
-        let stepper_slot: Element = role(&root, "stepper")?;
-        let world_message: Element = role(&root, "world-message")?;
-        let key_target: Element = role(&root, "key-target")?;
-        let substep_mode: HtmlInputElement = role(&root, "substep-mode")?;
-        let finishing: Element = role(&root, "finishing")?;
+        let stepper_slot: Element = root.role("stepper")?;
+        let world_message: Element = root.role("world-message")?;
+        let key_target: Element = root.role("key-target")?;
+        let substep_mode: HtmlInputElement = root.role("substep-mode")?;
+        let finishing: Element = root.role("finishing")?;
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
             let mut scope = Scope::new();
             let url = Some(UrlWriter::new(&mut scope, me, Inner::query));
@@ -215,7 +216,6 @@ impl Page for RrtPage {
                 exports,
                 url_notice,
                 url,
-                url_written: Cell::new(0.0),
                 rate_from: Cell::new(None),
                 rate: Cell::new(None),
                 scope: RefCell::new(scope),
@@ -231,7 +231,9 @@ impl Page for RrtPage {
         inner.finish_slice_for(MOUNT_SLICE_MS);
         // The URL is written after the first frame (it only tidies it), not in the mount's
         // task.
-        inner.url_written.set(now_ms());
+        if let Some(url) = inner.url.as_ref() {
+            url.hold_from_now();
+        }
         inner.update();
         // The canvases are sized and drawn by the stage's first ResizeObserver callback, in
         // the first frame after its layout and before its paint: measuring them here would
@@ -248,26 +250,7 @@ impl Page for RrtPage {
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
-        let mut keys = keymap::STEPPER.to_vec();
-        keys.extend([
-            Shortcut {
-                keys: "n",
-                message_id: "rrt-key-select",
-            },
-            Shortcut {
-                keys: "c",
-                message_id: "rrt-key-corner",
-            },
-            Shortcut {
-                keys: "Shift + ← ↑ → ↓",
-                message_id: "rrt-key-move",
-            },
-            Shortcut {
-                keys: "Delete",
-                message_id: "rrt-key-delete",
-            },
-        ]);
-        keys
+        keymap::with_stepper(&KEYS)
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
@@ -304,8 +287,7 @@ impl Inner {
             ("delete-box", Inner::delete_box),
             ("recipe-world", Inner::recipe_world),
         ] {
-            let button: Element =
-                dom::find(&self.root, &format!("[data-action=\"{action}\"]"), "rrt")?;
+            let button: Element = self.root.find(&format!("[data-action=\"{action}\"]"))?;
             scope.listen_for(&button, "click", me, move |p, _| f(p))?;
         }
         // In sub-step mode the step and back buttons walk the sub-steps, as the keys do:
@@ -358,7 +340,7 @@ impl Inner {
             }
         })?;
         for kind in ["python", "bsv"] {
-            let button: Element = dom::find(&self.root, &format!("[data-copy=\"{kind}\"]"), "rrt")?;
+            let button: Element = self.root.find(&format!("[data-copy=\"{kind}\"]"))?;
             scope.listen_for(&button, "click", me, move |p, _| {
                 p.exports.commands.copy(kind)
             })?;
@@ -1026,13 +1008,7 @@ impl Inner {
         drop(run);
         bench_record(work, draw_ms);
         if let Some(url) = self.url.as_ref() {
-            let now = now_ms();
-            if now - self.url_written.get() > URL_EVERY_MS {
-                self.url_written.set(now);
-                url.write_now();
-            } else {
-                url.schedule();
-            }
+            url.write_at_most_every(URL_EVERY_MS);
         }
     }
 

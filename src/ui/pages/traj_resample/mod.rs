@@ -39,6 +39,7 @@ use crate::ui::kit::exports::Exports;
 use crate::ui::kit::form::{Form, Message, RECIPE_GROUPS};
 use crate::ui::kit::input_file::{self, Picked, ReadProblem};
 use crate::ui::kit::keymap;
+use crate::ui::kit::page_root::PageRoot;
 use crate::ui::kit::progress::ProgressPanel;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
@@ -130,7 +131,7 @@ pub struct TrajResample(Rc<Inner>);
 
 struct Inner {
     me: Weak<Inner>,
-    root: Element,
+    root: PageRoot,
     page: Element,
     status_line: Element,
     form: RefCell<Form>,
@@ -156,23 +157,17 @@ struct Inner {
     scope: RefCell<Scope>,
 }
 
-fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
-    dom::find(root, &format!("[data-traj=\"{name}\"]"), "traj-resample")
-}
-
 fn target(event: &Event) -> Option<Element> {
     event.target().and_then(|t| t.dyn_into::<Element>().ok())
 }
 
 impl Page for TrajResample {
     fn mount(mount: MountCtx) -> Result<TrajResample, JsValue> {
-        let root = mount.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
+        let root = PageRoot::fill(&mount.root, &markup::page(), "traj", "traj-resample")?;
         let (query, ignored) = PageQuery::read(&mount.query);
-        let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
+        let url_notice = UrlNotice::new(root.role("url-notice")?, ignored)?;
         let form = Form::build(
-            &role(&root, "form")?,
+            &root.role("form")?,
             PREFIX,
             &RECIPE_GROUPS,
             recipe_fields(&traj_resample::INFO),
@@ -188,16 +183,12 @@ impl Page for TrajResample {
                 }
             })?
         };
-        let page: Element = dom::find(
-            &root,
-            "[data-testid=\"traj-resample-page\"]",
-            "traj-resample",
-        )?;
+        let page: Element = root.find("[data-testid=\"traj-resample-page\"]")?;
         let exports = Exports::find(&root, PREFIX)?;
         let readouts = Readouts::find(&root)?;
-        let status_line: Element = role(&root, "status")?;
+        let status_line: Element = root.role("status")?;
         status_line.after_with_node_1(progress.element())?;
-        let joints = joints::Joints::new(&role(&root, "stage")?)?;
+        let joints = joints::Joints::new(&root.role("stage")?)?;
         let source = match query.csv_path {
             Some(name) => Source::Missing(name),
             None => Source::Sample,
@@ -250,18 +241,9 @@ impl Page for TrajResample {
 
     fn shortcuts(&self) -> Vec<Shortcut> {
         vec![
-            Shortcut {
-                keys: "o",
-                message_id: "traj-key-open",
-            },
-            Shortcut {
-                keys: "s",
-                message_id: "traj-key-sample",
-            },
-            Shortcut {
-                keys: "d",
-                message_id: "traj-key-download",
-            },
+            keymap::key("o", "traj-key-open"),
+            keymap::key("s", "traj-key-sample"),
+            keymap::key("d", "traj-key-download"),
         ]
     }
 
@@ -331,7 +313,7 @@ impl Inner {
     fn install(&self) -> Result<(), JsValue> {
         let mut scope = self.scope.borrow_mut();
         let me = &self.me;
-        let form_el: Element = role(&self.root, "form")?;
+        let form_el: Element = self.root.role("form")?;
         scope.listen_for(&form_el, "input", me, |p, e| {
             if let Some(el) = target(e).filter(|el| el.has_attribute("data-field")) {
                 p.form.borrow().note_edit(&el);
@@ -370,7 +352,7 @@ impl Inner {
                 p.open(picked);
             }
         })?;
-        let output: Element = role(&self.root, "output")?;
+        let output: Element = self.root.role("output")?;
         scope.listen_for(&output, "click", me, |p, e| {
             let Some(el) = target(e) else {
                 return;
@@ -384,7 +366,7 @@ impl Inner {
                 p.download_png();
             }
         })?;
-        let stage: Element = role(&self.root, "stage")?;
+        let stage: Element = self.root.role("stage")?;
         scope.observe_resize(&[&stage], me, |p| {
             p.joints.borrow_mut().relayout();
             p.draw();
@@ -822,7 +804,7 @@ impl Inner {
                 &[("s", s.args.positional.get(1).cloned().unwrap_or_default())],
             ),
         );
-        if let Ok(files) = role::<Element>(&self.root, "files") {
+        if let Ok(files) = self.root.role::<Element>("files") {
             let mut html = String::new();
             for f in &s.files {
                 html.push_str(&crate::ui::kit::exports::download_button(PREFIX, f.name()));
