@@ -25,7 +25,7 @@ use web_sys::{Element, HtmlElement, HtmlInputElement, HtmlSelectElement};
 use crate::args::ArgKind;
 use crate::error::RecipeError;
 use crate::ui::ctx;
-use crate::view::form::{error_args, fluent_args, speaker, FieldDef};
+use crate::view::form::{error_args, fluent_args, speaker, Checked, FieldDef};
 
 /// A fieldset of the form: its legend and an optional note under it (Fluent ids).
 #[derive(Debug, Clone, Copy)]
@@ -267,6 +267,15 @@ fn query<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
     crate::ui::dom::find(root, selector, "form")
 }
 
+/// The recipe's errors a check found, as messages beside their fields.
+pub fn recipe_messages<T>(checked: &Checked<T>) -> Vec<(usize, Message)> {
+    checked
+        .messages
+        .iter()
+        .map(|(i, e)| (*i, Message::Recipe(e.clone())))
+        .collect()
+}
+
 impl Form {
     /// Builds the form of `fields` into `container` (classes `<prefix>-*`) and fills it with
     /// `values` (a missing value is the default).
@@ -447,6 +456,14 @@ impl Form {
         self.shown = messages.to_vec();
         self.marked = marked.to_vec();
         self.render();
+    }
+
+    /// Shows what a check of the form's texts found (its errors beside their fields, the
+    /// fields marked); returns the messages shown.
+    pub fn show_checked<T>(&mut self, checked: &Checked<T>) -> Vec<(usize, Message)> {
+        let messages = recipe_messages(checked);
+        self.show(&messages, &checked.marked);
+        messages
     }
 
     /// The note beside field `index` that a cross-field limit shown beside another field

@@ -36,7 +36,7 @@ use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::exports::Exports;
-use crate::ui::kit::form::{Form, Message, RECIPE_GROUPS};
+use crate::ui::kit::form::{recipe_messages, Form, Message, RECIPE_GROUPS};
 use crate::ui::kit::input_file::{self, Picked, ReadProblem};
 use crate::ui::kit::keymap;
 use crate::ui::kit::page_root::PageRoot;
@@ -498,11 +498,7 @@ impl Inner {
         };
         let file_index = form.file_index();
         let checked = validate(&form.fields, &texts, form.changed(), check, |_| file_index);
-        let mut messages: Vec<(usize, Message)> = checked
-            .messages
-            .iter()
-            .map(|(i, e)| (*i, Message::Recipe(e.clone())))
-            .collect();
+        let mut messages = recipe_messages(&checked);
         let mut marked = checked.marked.clone();
         if let (Some(problem), Some(i)) = (self.file_problem.borrow().clone(), file_index) {
             messages.retain(|(k, _)| *k != i);
