@@ -4,20 +4,17 @@
 //! pseudocode line that decided it, and the run's CSVs byte for byte those of `bsv rrt-2d`
 //! with the page's arguments.
 //!
-//! The page is a struct of components, one file each: `world` (the three-layer view: world,
-//! tree appended to, marks of the moment), `substeps` (the sub-step panel and pseudocode),
-//! `params` (the validated form), `exports` (CSVs, PNG, command lines) and `markup` (with the
-//! explanation); counters are the kit's readouts. This file holds the run ([`Run`], the
-//! stepper's model) and wires them: the world editor's drags (move a box, resize it by a
-//! corner, move the start or the goal) go through `crate::view::rrt::drag`, which refuses a
-//! start or goal inside a box or outside the square with a message; every edit restarts the
-//! run at iteration 0. The same edits by keyboard (on the focused view or the page): `n`
-//! chooses the start, the goal or a box in turn, `c` a corner of that box (each corner in
-//! turn, then the whole box again), Shift + arrows move the choice by 0.01 through the same
-//! `drag` (a corner resizes its box, with a corner drag's checks), Delete removes the
-//! selected box.
+//! Components, one file each: `run` (the run and the stepper's model), `world` (the
+//! three-layer view), `substeps` (the sub-step panel and pseudocode), `key_target` (the world
+//! editor by keyboard), `counters`, `params` (the validated form), `exports` (CSVs, PNG,
+//! command lines) and `markup`. This file wires them: the world editor's drags (move a box,
+//! resize it by a corner, move the start or the goal) go through `crate::view::rrt::drag`,
+//! which refuses a start or goal inside a box or outside the square with a message; every
+//! edit restarts the run at iteration 0.
 
+mod counters;
 mod exports;
+mod key_target;
 mod markup;
 mod params;
 mod run;
@@ -32,22 +29,20 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 
 use crate::error::RecipeError;
 use crate::i18n::FluentArg;
-use crate::pyfmt::fixed;
 use crate::recipes::rrt_2d::RrtOutcome;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
+use crate::ui::kit::message_line::MessageLine;
 use crate::ui::kit::page_root::PageRoot;
-use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
-use crate::ui::kit::stepper::{Command, Speed, StepperOptions, StepperWidget};
+use crate::ui::kit::stepper::{Command, StepperWidget};
 use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
 use crate::ui::page::{MountCtx, Page, PageDef, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::rrt::{
-    add_box, corners, delete_box, drag, hit_test, phases, rate_per_s, Grab, PageState, Phase,
-    Refusal,
+    add_box, delete_box, drag, hit_test, phases, Grab, PageState, Phase, Refusal,
 };
 use run::Run;
 
@@ -61,45 +56,14 @@ const KEYS: [Shortcut; 4] = [
     keymap::key("Shift + ← ↑ → ↓", "rrt-key-move"),
     keymap::key("Delete", "rrt-key-delete"),
 ];
-/// Playing speeds: iterations per second, then as fast as possible.
-const SPEEDS: [Speed; 5] = [
-    Speed::PerSecond(1.0),
-    Speed::PerSecond(10.0),
-    Speed::PerSecond(100.0),
-    Speed::PerSecond(1000.0),
-    Speed::Max,
-];
-/// 10 iterations a second.
-const DEFAULT_SPEED: usize = 1;
 /// Shortest time between two URL writes while playing, ms.
 const URL_EVERY_MS: f64 = 500.0;
-/// Work per frame (iterations + drawing) playing as fast as possible aims under, ms: the
-/// stepper halves its chunk above twice this, so frames stay under about 4 ms.
-const FRAME_BUDGET_MS: f64 = 1.5;
 /// Runs up to this budget restart on every move of a drag; bigger ones when it ends.
 const LIVE_RESTART_MAX_ITER: usize = 20_000;
-/// How far Shift + an arrow moves the start, the goal, a box or a corner (world units: the
-/// square is 1).
-const KEY_STEP: f64 = 0.01;
-/// The corners `c` chooses in turn ([`Grab::Corner`] numbering): top right, top left, bottom
-/// left, bottom right.
-const CORNER_ORDER: [u8; 4] = [2, 3, 0, 1];
-/// Fluent ids of "corner k of box n", by [`Grab::Corner`] numbering.
-const CORNER_IDS: [&str; 4] = [
-    "rrt-corner-bottom-left",
-    "rrt-corner-bottom-right",
-    "rrt-corner-top-right",
-    "rrt-corner-top-left",
-];
 
 /// Longest slice of the run to its end per main-thread task, ms (the page stays responsive:
 /// no task near 100 ms whatever `max_iter`).
 const FINISH_SLICE_MS: f64 = 20.0;
-/// Tree nodes drawn at a time, chunks drawn for up to [`TREE_MS_PER_TASK`] per task; a
-/// bigger tree is drawn over the next tasks.
-const TREE_NODES_PER_CHUNK: usize = 1_000;
-/// Time spent drawing tree chunks per task, ms.
-const TREE_MS_PER_TASK: f64 = 8.0;
 /// The first slice of the run to its end, in the mount's task, ms (a run of a few thousand
 /// iterations is complete in it).
 const MOUNT_SLICE_MS: f64 = 4.0;
@@ -125,12 +89,10 @@ struct Inner {
     dragging: RefCell<Option<DragStart>>,
     hover: Cell<Option<Grab>>,
     selected: Cell<Option<usize>>,
-    /// What Shift + arrows move (chosen with `n`).
-    key_grab: Cell<Option<Grab>>,
-    /// Says what Shift + arrows move.
-    key_target: Element,
-    refusal: Cell<Option<Refusal>>,
-    world_message: Element,
+    /// What Shift + arrows move (chosen with `n`), said in its line.
+    key_target: MessageLine<Grab>,
+    /// Why the last edit of the world was refused.
+    refusal: MessageLine<Refusal>,
     substeps: substeps::SubSteps,
     substep_mode: HtmlInputElement,
     /// In sub-step mode: the sub-step shown (index into the iteration's phases).
@@ -138,13 +100,10 @@ struct Inner {
     /// The sub-step keys are moving the stepper (keep `phase`).
     substep_driving: Cell<bool>,
     params: RefCell<params::Params>,
-    readouts: Readouts,
+    counters: counters::Counters,
     exports: exports::Exports,
     url_notice: UrlNotice,
     url: Option<UrlWriter>,
-    /// Nodes/second while playing: the sample's start (ms, nodes) and the last rate.
-    rate_from: Cell<Option<(f64, usize)>>,
-    rate: Cell<Option<f64>>,
     /// Grows the run to its end, one slice per task.
     finisher: Rc<Timer>,
     /// Draws the rest of a big tree over the next tasks.
@@ -156,6 +115,16 @@ struct Inner {
     /// "Running to the end: 12,345 of 1,000,000 iterations", while it is.
     finishing: Element,
     scope: RefCell<Scope>,
+}
+
+/// Why an edit of the world was refused, in the current language.
+fn refusal_text(r: Refusal) -> String {
+    let (id, point, index) = r.message();
+    let mut args = vec![("index", FluentArg::Number(index as f64))];
+    if let Some(p) = point {
+        args.push(("point", FluentArg::Text(ctx::t(p.name_id()))));
+    }
+    ctx::t_args(id, &args)
 }
 
 fn js_error(e: &RecipeError) -> JsValue {
@@ -172,12 +141,12 @@ impl Page for RrtPage {
         let run = Rc::new(RefCell::new(Run::new(&setup, 0).map_err(|e| js_error(&e))?));
         let world = world::WorldView::find(&root.role("stage")?)?;
         let substeps = substeps::SubSteps::find(&root)?;
-        let readouts = Readouts::find(&root)?;
+        let counters = counters::Counters::find(&root)?;
         let exports = exports::Exports::find(&root)?;
         let start_it = state.it;
         let stepper_slot: Element = root.role("stepper")?;
-        let world_message: Element = root.role("world-message")?;
-        let key_target: Element = root.role("key-target")?;
+        let refusal = MessageLine::new(root.role("world-message")?, refusal_text);
+        let key_target = MessageLine::new(root.role("key-target")?, key_target::text);
         let substep_mode: HtmlInputElement = root.role("substep-mode")?;
         let finishing: Element = root.role("finishing")?;
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
@@ -203,21 +172,17 @@ impl Page for RrtPage {
                 dragging: RefCell::new(None),
                 hover: Cell::new(None),
                 selected: Cell::new(None),
-                key_grab: Cell::new(None),
                 key_target,
-                refusal: Cell::new(None),
-                world_message,
+                refusal,
                 substeps,
                 substep_mode,
                 phase: Cell::new(None),
                 substep_driving: Cell::new(false),
                 params: RefCell::new(params),
-                readouts,
+                counters,
                 exports,
                 url_notice,
                 url,
-                rate_from: Cell::new(None),
-                rate: Cell::new(None),
                 scope: RefCell::new(scope),
                 root,
             }
@@ -392,15 +357,7 @@ impl Inner {
         let widget = StepperWidget::new(
             &self.stepper_slot,
             self.run.clone(),
-            StepperOptions {
-                speeds: SPEEDS.to_vec(),
-                initial_speed: DEFAULT_SPEED,
-                speed_label: Box::new(|speed| match speed {
-                    Speed::PerSecond(rate) => ctx::t_args("rrt-speed", &[("rate", rate.into())]),
-                    Speed::Max => ctx::t("kit-stepper-speed-max"),
-                }),
-                testid: "rrt-2d-stepper",
-            },
+            run::stepper_options(),
             move |_| {
                 if let Some(p) = me.upgrade() {
                     p.update();
@@ -408,7 +365,7 @@ impl Inner {
             },
         )?;
         // As fast as possible, yet whole frames (the tree appended, the panel) stay short.
-        widget.set_frame_budget(FRAME_BUDGET_MS, true);
+        widget.set_frame_budget(run::FRAME_BUDGET_MS, true);
         *self.stepper.borrow_mut() = Some(widget);
         Ok(())
     }
@@ -427,7 +384,9 @@ impl Inner {
     /// stepper's otherwise.
     fn on_key(&self, event: &KeyboardEvent) -> bool {
         if !keymap::has_command_modifier(event) {
-            let step = |dx: f64, dy: f64| self.nudge_world([dx * KEY_STEP, dy * KEY_STEP]);
+            let step = |dx: f64, dy: f64| {
+                self.nudge_world([dx * key_target::KEY_STEP, dy * key_target::KEY_STEP])
+            };
             match (event.key().as_str(), event.shift_key()) {
                 ("n" | "N", _) => self.choose_key_target(),
                 ("c" | "C", _) => self.choose_corner(),
@@ -448,92 +407,40 @@ impl Inner {
     /// `n`: the next thing Shift + arrows move (the start, the goal, each box, round again).
     fn choose_key_target(&self) {
         let boxes = self.state.borrow().obstacles.len();
-        let next = match self.key_grab.get() {
-            None => Grab::Start,
-            Some(Grab::Start) => Grab::Goal,
-            Some(Grab::Goal) if boxes > 0 => Grab::Box(0),
-            Some(Grab::Box(i) | Grab::Corner(i, _)) if i + 1 < boxes => Grab::Box(i + 1),
-            _ => Grab::Start,
-        };
-        self.key_grab.set(Some(next));
+        let next = key_target::next_target(self.key_target.get(), boxes);
+        self.key_target.set(Some(next));
         self.selected.set(match next {
             Grab::Box(i) => Some(i),
             _ => None,
         });
         self.hover.set(Some(next));
-        self.show_key_target();
         self.update_marks();
     }
 
-    /// `c`: a corner of the chosen box (the selected one when the start or the goal is
-    /// chosen) for Shift + arrows to resize it: the top-right corner first, then the others
-    /// anticlockwise, then the whole box again. Nothing without a box.
+    /// `c`: a corner of the chosen box for Shift + arrows to resize it, or the whole box
+    /// again ([`key_target::next_corner`]). Nothing without a box.
     fn choose_corner(&self) {
         let boxes = self.state.borrow().obstacles.len();
-        let next = match self.key_grab.get() {
-            Some(Grab::Box(i)) if i < boxes => Grab::Corner(i, CORNER_ORDER[0]),
-            Some(Grab::Corner(i, k)) if i < boxes => {
-                match CORNER_ORDER.iter().position(|&c| c == k) {
-                    Some(at) if at + 1 < CORNER_ORDER.len() => {
-                        Grab::Corner(i, CORNER_ORDER[at + 1])
-                    }
-                    _ => Grab::Box(i),
-                }
-            }
-            _ => match self.selected.get().filter(|&i| i < boxes) {
-                Some(i) => Grab::Corner(i, CORNER_ORDER[0]),
-                None if boxes > 0 => Grab::Corner(0, CORNER_ORDER[0]),
-                None => return,
-            },
-        };
-        let (Grab::Box(i) | Grab::Corner(i, _)) = next else {
+        let next = key_target::next_corner(self.key_target.get(), self.selected.get(), boxes);
+        let Some(next @ (Grab::Box(i) | Grab::Corner(i, _))) = next else {
             return;
         };
-        self.key_grab.set(Some(next));
+        self.key_target.set(Some(next));
         self.selected.set(Some(i));
         self.hover.set(Some(next));
-        self.show_key_target();
         self.update_marks();
-    }
-
-    /// Shows what Shift + arrows move (in the current language), or nothing.
-    fn show_key_target(&self) {
-        let text = self.key_grab.get().map(|grab| {
-            let what = match grab {
-                Grab::Start => ctx::t("rrt-point-start"),
-                Grab::Goal => ctx::t("rrt-point-goal"),
-                Grab::Box(i) => {
-                    ctx::t_args("rrt-box-n", &[("n", FluentArg::Number((i + 1) as f64))])
-                }
-                Grab::Corner(i, k) => ctx::t_args(
-                    CORNER_IDS[usize::from(k) % CORNER_IDS.len()],
-                    &[("n", FluentArg::Number((i + 1) as f64))],
-                ),
-            };
-            ctx::t_args("rrt-key-target", &[("what", FluentArg::Text(what))])
-        });
-        self.key_target.set_text_content(text.as_deref());
-        dom::show(&self.key_target, text.is_some());
     }
 
     /// Shift + an arrow: moves the chosen start, goal, box or corner (resizing its box) by
     /// `delta` (world units) as a drag would, refused with the same messages; the run starts
     /// again.
     fn nudge_world(&self, delta: [f64; 2]) {
-        let Some(grab) = self.key_grab.get() else {
+        let Some(grab) = self.key_target.get() else {
             self.choose_key_target();
             return;
         };
         let before = self.state.borrow().clone();
-        let from = match grab {
-            Grab::Start => before.start,
-            Grab::Goal => before.goal,
-            Grab::Corner(i, k) => before
-                .obstacles
-                .get(i)
-                .map_or([0.0, 0.0], |b| corners(b)[usize::from(k) % 4]),
-            Grab::Box(_) => [0.0, 0.0],
-        };
+        let from = key_target::start_point(&before, grab);
         self.command(Command::Pause);
         match drag(
             &before,
@@ -659,35 +566,13 @@ impl Inner {
             return;
         };
         let done = run.is_finished();
-        let text = (!done).then(|| {
-            ctx::t_args(
-                "rrt-finishing",
-                &[
-                    (
-                        "it",
-                        FluentArg::Text(crate::pyfmt::group_u64(run.finished.iterations() as u64)),
-                    ),
-                    (
-                        "max",
-                        FluentArg::Text(crate::pyfmt::group_u64(run.finished.max_iter() as u64)),
-                    ),
-                ],
-            )
-        });
+        let text = (!done).then(|| run.progress_text());
         self.finishing.set_text_content(text.as_deref());
         dom::show(&self.finishing, !done);
         let _ = self
             .finishing
             .set_attribute("data-state", if done { "done" } else { "running" });
-        let writing = self.exports.writing();
-        for el in [&self.exports.nodes, &self.exports.path] {
-            let busy = writing && *el == self.exports.nodes;
-            let _ = if done && !busy {
-                el.remove_attribute("disabled")
-            } else {
-                el.set_attribute("disabled", "")
-            };
-        }
+        self.exports.enable_csv(done);
     }
 
     // ---------- Editing ----------
@@ -750,20 +635,6 @@ impl Inner {
 
     fn show_refusal(&self, refusal: Option<Refusal>) {
         self.refusal.set(refusal);
-        self.render_refusal();
-    }
-
-    fn render_refusal(&self) {
-        let text = self.refusal.get().map(|r| {
-            let (id, point, index) = r.message();
-            let mut args = vec![("index", FluentArg::Number(index as f64))];
-            if let Some(p) = point {
-                args.push(("point", FluentArg::Text(ctx::t(p.name_id()))));
-            }
-            ctx::t_args(id, &args)
-        });
-        self.world_message.set_text_content(text.as_deref());
-        dom::show(&self.world_message, text.is_some());
     }
 
     fn add_box(&self) {
@@ -785,8 +656,7 @@ impl Inner {
         }
         let index = self.selected.get().unwrap_or(usize::MAX);
         self.selected.set(None);
-        self.key_grab.set(None);
-        self.show_key_target();
+        self.key_target.set(None);
         self.show_refusal(None);
         self.set_state(delete_box(&current, index), true);
     }
@@ -801,8 +671,7 @@ impl Inner {
             ..current.clone()
         };
         self.selected.set(None);
-        self.key_grab.set(None);
-        self.show_key_target();
+        self.key_target.set(None);
         self.show_refusal(None);
         if next != current {
             self.set_state(next, true);
@@ -947,13 +816,10 @@ impl Inner {
                 _ => 0,
             };
         }
-        let started = now_ms();
-        let ink = Ink::current();
-        let mut world = self.world.borrow_mut();
-        let mut complete = world.draw_tree(&run, upto, TREE_NODES_PER_CHUNK, ink);
-        while !complete && now_ms() - started < TREE_MS_PER_TASK {
-            complete = world.draw_tree(&run, upto, TREE_NODES_PER_CHUNK, ink);
-        }
+        let complete = self
+            .world
+            .borrow_mut()
+            .draw_tree_for_a_task(&run, upto, Ink::current());
         if complete {
             self.tree_more.cancel();
         } else {
@@ -1003,7 +869,7 @@ impl Inner {
             return;
         };
         self.substeps.show(run.shown().last(), phase);
-        self.show_counters(&run);
+        self.counters.show(&run, self.playing());
         let work = run.advance_ms + now_ms() - started;
         drop(run);
         bench_record(work, draw_ms);
@@ -1012,69 +878,17 @@ impl Inner {
         }
     }
 
-    fn show_counters(&self, run: &Run) {
-        let rrt = run.shown();
-        let counts = rrt.counts();
-        let path = rrt.path();
-        let n = rrt.nodes().len();
-        let group = |v: usize| crate::pyfmt::group_u64(v as u64);
-        let r = &self.readouts;
-        r.set("iteration", &group(rrt.iterations()));
-        r.set("nodes", &group(n));
-        r.set("rejected_out", &group(counts.out_of_square));
-        r.set("rejected_collision", &group(counts.collision));
-        r.set("rejected_zero", &group(counts.zero_length));
-        r.set("path_points", &group(path.len()));
-        r.set(
-            "length",
-            &if path.is_empty() {
-                "—".to_string()
-            } else {
-                fixed(rrt.path_length(), 3)
-            },
-        );
-        if self.playing() {
-            let now = now_ms();
-            match self.rate_from.get() {
-                Some((t0, n0)) => {
-                    if let Some(rate) = rate_per_s(n0, n, now - t0) {
-                        self.rate.set(Some(rate));
-                        self.rate_from.set(Some((now, n)));
-                    }
-                }
-                None => self.rate_from.set(Some((now, n))),
-            }
-        } else {
-            self.rate_from.set(None);
-            self.rate.set(None);
-        }
-        r.set(
-            "nodes_per_s",
-            &self
-                .rate
-                .get()
-                .map_or("—".to_string(), |v| group(v.round() as usize)),
-        );
-        r.announce(&ctx::t_args(
-            "rrt-live",
-            &[
-                ("it", FluentArg::Number(rrt.iterations() as f64)),
-                ("nodes", FluentArg::Number(n as f64)),
-            ],
-        ));
-    }
-
     /// The language changed.
     fn relocalize(&self) {
         let _ = dom::relocalize(&self.root);
         self.params.borrow().form.relocalize();
         self.url_notice.relocalize();
-        self.show_key_target();
+        self.key_target.relocalize();
         if let Some(s) = self.stepper.borrow().as_ref() {
             s.relocalize();
         }
         self.exports.relocalize();
-        self.render_refusal();
+        self.refusal.relocalize();
         self.show_finishing();
         self.redraw_world();
         self.update();

@@ -2,9 +2,39 @@
 //! and the iteration shown, a cursor into it; the stepper's model.
 
 use crate::error::RecipeError;
+use crate::i18n::FluentArg;
+use crate::pyfmt::group_u64;
 use crate::recipes::rrt_2d::{Rrt, RrtAt, RrtCursor, RrtSetup};
-use crate::ui::kit::stepper::{Length, StepModel};
+use crate::ui::ctx;
+use crate::ui::kit::stepper::{Length, Speed, StepModel, StepperOptions};
 use crate::ui::schedule::now_ms;
+
+/// Playing speeds: iterations per second, then as fast as possible.
+const SPEEDS: [Speed; 5] = [
+    Speed::PerSecond(1.0),
+    Speed::PerSecond(10.0),
+    Speed::PerSecond(100.0),
+    Speed::PerSecond(1000.0),
+    Speed::Max,
+];
+/// 10 iterations a second.
+const DEFAULT_SPEED: usize = 1;
+/// Work per frame (iterations + drawing) playing as fast as possible aims under, ms: the
+/// stepper halves its chunk above twice this, so frames stay under about 4 ms.
+pub const FRAME_BUDGET_MS: f64 = 1.5;
+
+/// The stepper over the run: its speeds, labelled in iterations per second.
+pub fn stepper_options() -> StepperOptions {
+    StepperOptions {
+        speeds: SPEEDS.to_vec(),
+        initial_speed: DEFAULT_SPEED,
+        speed_label: Box::new(|speed| match speed {
+            Speed::PerSecond(rate) => ctx::t_args("rrt-speed", &[("rate", rate.into())]),
+            Speed::Max => ctx::t("kit-stepper-speed-max"),
+        }),
+        testid: "rrt-2d-stepper",
+    }
+}
 
 /// The run: grown to its end in time slices between frames (its length and the exports),
 /// and the iteration shown, a cursor into it (the tree shown is a prefix of the run's: no
@@ -40,6 +70,23 @@ impl Run {
     /// Whether the run to its end is complete (its length known, the exports ready).
     pub fn is_finished(&self) -> bool {
         self.finished.is_done()
+    }
+
+    /// "Running to the end: 12,345 of 1,000,000 iterations", in the current language.
+    pub fn progress_text(&self) -> String {
+        ctx::t_args(
+            "rrt-finishing",
+            &[
+                (
+                    "it",
+                    FluentArg::Text(group_u64(self.finished.iterations() as u64)),
+                ),
+                (
+                    "max",
+                    FluentArg::Text(group_u64(self.finished.max_iter() as u64)),
+                ),
+            ],
+        )
     }
 
     /// Grows the run to its end for about `budget_ms`; `true` once it is complete.
