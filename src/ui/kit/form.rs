@@ -10,12 +10,9 @@
 //! Messages use the field's label ("Number of steps: “abc” must be a whole number…"), not the
 //! argument's internal name; every field an error involves gets `aria-invalid="true"`.
 //!
-//! A page can present more than one recipe's arguments (the IK page: ik-workspace,
-//! jacobian-2r, manip-grid and its own heatmap resolution, in its own fieldsets) and ask for
-//! more with [`FormOptions`] and [`Form::build_with`]: a unit beside a field's box, and a note
-//! beside each field a cross-field limit involves ("part of the same limit as Step").
-//! [`Form::focus_first_error`] and [`reveal`] bring a field or a result into view clear of
-//! sticky bars (the phone's sticky Run bar, a sticky header).
+//! A page can present more than one recipe's arguments, in its own fieldsets, and ask for
+//! more with [`FormOptions`]. [`Form::focus_first_error`] and [`reveal`] bring a field or a
+//! result into view clear of sticky bars (the phone's sticky Run bar, a sticky header).
 
 use std::cell::Cell;
 
@@ -46,7 +43,10 @@ pub const RECIPE_GROUPS: [Group; 2] = [
     },
 ];
 
-/// What a page asks of its form beyond the recipe facts (the default: nothing more).
+/// What a page asks of its form beyond the recipe facts (the default: nothing more): a unit
+/// beside a field's box, and a note beside each field a cross-field limit involves ("part of
+/// the same limit as Step"). The IK page asks for them: ik-workspace, jacobian-2r, manip-grid
+/// and its own heatmap resolution, in its own fieldsets.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct FormOptions<'a> {
     /// Fluent id of the unit shown beside a field's box, by field name.

@@ -9,12 +9,6 @@
 //! `exports` (the kit's panel: CSV, PNG, command lines), `markup` (with the explanation) and
 //! `bench` (timing hooks, bench builds only). This file holds the run ([`Sim`], the
 //! stepper's model, from the pure `crate::view::pendulum`) and wires them.
-//!
-//! At the recipe's default damping the pendulum is at rest after about a second of its five,
-//! so the default view (playing from the start) ends still. The page keeps the recipe's
-//! defaults (the CSV is `bsv pendulum-energy 5`'s) and says so at the end of the run, with a
-//! Replay button and one that sets the damping to 0 (a swing that lasts, and Euler's drift
-//! alone).
 
 mod bench;
 mod exports;
@@ -112,7 +106,11 @@ impl StepModel for Sim {
 /// Fluent arguments as texts.
 type FluentTexts = Vec<(&'static str, String)>;
 
-/// What the notice under the pendulum says.
+/// What the notice under the pendulum says. At the recipe's default damping the pendulum is
+/// at rest after about a second of its five, so the default view (playing from the start)
+/// ends still. The page keeps the recipe's defaults (the CSV is `bsv pendulum-energy 5`'s)
+/// and says so at the end of the run, with a Replay button and one that sets the damping to
+/// 0 (a swing that lasts, and Euler's drift alone).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum EndNotice {
     /// The damper has left the pendulum at rest.

@@ -4,15 +4,10 @@
 //! the time span; download `traj_resampled.csv`, byte for byte what `bsv traj-resample`
 //! writes for the same file and dt.
 //!
-//! How a run happens: a small input (at most [`PRECHECK_MAX_BYTES`], read and decoded at once,
-//! as the CLI decodes a file) whose run is small runs on the page as soon as it is valid;
-//! anything bigger (up to the recipe's 128 MiB; a bigger file is refused unread, with the
-//! page's own message in MiB) runs in the kit's Web Worker with progress and
-//! Cancel: the page hands the worker the file itself (never reading a big file's text on its
-//! main thread), and the worker sends back the files and their plot envelopes (min/max per
-//! bucket, [`crate::view::envelope`]), so a million rows draw in one frame. Every problem (a
-//! bad cell, a file that is not UTF-8, a dt too small) is the kernel's error, shown beside its
-//! field with its row and column; the last good plot and download stay.
+//! A small input runs on the page as soon as it is valid, a big one in the kit's Web Worker
+//! ([`Inner::run`]). Every problem (a bad cell, a file that is not UTF-8, a dt too small) is
+//! the kernel's error, shown beside its field with its row and column; the last good plot
+//! and download stay.
 //!
 //! Components, one file each: `joints` (the plot of every joint), `markup` (with the
 //! explanation); the form, exports, readouts, URL, progress panel and input files are the
@@ -525,6 +520,14 @@ impl Inner {
 
     /// Runs the valid form: on the page when small, else in the worker. The same arguments
     /// as the result shown do not run again.
+    ///
+    /// A small input (at most [`PRECHECK_MAX_BYTES`], read and decoded at once, as the CLI
+    /// decodes a file) whose run is small runs on the page; anything bigger (up to the
+    /// recipe's 128 MiB; a bigger file is refused unread, with the page's own message in MiB)
+    /// runs in the kit's Web Worker with progress and Cancel: the page hands the worker the
+    /// file itself (never reading a big file's text on its main thread), and the worker sends
+    /// back the files and their plot envelopes (min/max per bucket, [`crate::view::envelope`]),
+    /// so a million rows draw in one frame.
     fn run(&self) {
         let Some(rows) = *self.plan.borrow() else {
             return;
