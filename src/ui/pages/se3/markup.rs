@@ -56,7 +56,7 @@ pub fn page() -> String {
     })
     .collect();
     format!(
-        "<div class=\"se3\">\
+        "<div class=\"kit-page se3\">\
          <header class=\"se3-head\"><h1 data-i18n=\"se3-title\"></h1>\
          <p class=\"se3-lede\" data-i18n=\"se3-lede\"></p>\
          <p class=\"se3-notice\" data-{P}=\"url-notice\" hidden></p></header>\
