@@ -23,7 +23,7 @@ use wasm_bindgen::JsCast;
 use web_sys::{CanvasRenderingContext2d, Element, Event, KeyboardEvent, PointerEvent};
 
 use super::canvas::{dash, focus_without_scroll, solid, Ink, LayeredCanvas};
-use super::drag::{DragEvent, PointerKind};
+use super::drag::{client, DragEvent, PointerKind};
 use super::form::escape;
 use super::scope::{FrameLoop, Scope};
 use crate::ui::dom;
@@ -160,20 +160,6 @@ fn kind_of(e: &PointerEvent) -> PointerKind {
         "pen" => PointerKind::Pen,
         _ => PointerKind::Touch,
     }
-}
-
-/// The event's client position (fractional where the browser gives it).
-fn client(e: &PointerEvent) -> DVec2 {
-    let coord = |name: &str, fallback: i32| {
-        js_sys::Reflect::get(e, &JsValue::from_str(name))
-            .ok()
-            .and_then(|v| v.as_f64())
-            .unwrap_or(f64::from(fallback))
-    };
-    DVec2::new(
-        coord("clientX", e.client_x()),
-        coord("clientY", e.client_y()),
-    )
 }
 
 fn markup<H>(options: &OrbitOptions<H>) -> String {
