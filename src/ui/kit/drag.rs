@@ -96,9 +96,8 @@ pub struct Drag<H: Copy + PartialEq + 'static> {
     _listeners: Vec<Listener>,
 }
 
-/// The pointer's position on `surface`, CSS px (fractional where the browser gives it).
-fn local(surface: &Element, e: &PointerEvent) -> DVec2 {
-    let r = surface.get_bounding_client_rect();
+/// The event's client position, CSS px (fractional where the browser gives it).
+pub fn client(e: &PointerEvent) -> DVec2 {
     let coord = |name: &str, fallback: i32| {
         js_sys::Reflect::get(e, &JsValue::from_str(name))
             .ok()
@@ -106,9 +105,15 @@ fn local(surface: &Element, e: &PointerEvent) -> DVec2 {
             .unwrap_or(f64::from(fallback))
     };
     DVec2::new(
-        coord("clientX", e.client_x()) - r.left(),
-        coord("clientY", e.client_y()) - r.top(),
+        coord("clientX", e.client_x()),
+        coord("clientY", e.client_y()),
     )
+}
+
+/// The pointer's position on `surface`, CSS px (fractional where the browser gives it).
+fn local(surface: &Element, e: &PointerEvent) -> DVec2 {
+    let r = surface.get_bounding_client_rect();
+    client(e) - DVec2::new(r.left(), r.top())
 }
 
 impl<H: Copy + PartialEq + 'static> Drag<H> {

@@ -10,12 +10,9 @@
 //! Messages use the field's label ("Number of steps: “abc” must be a whole number…"), not the
 //! argument's internal name; every field an error involves gets `aria-invalid="true"`.
 //!
-//! A page can present more than one recipe's arguments (the IK page: ik-workspace,
-//! jacobian-2r, manip-grid and its own heatmap resolution, in its own fieldsets) and ask for
-//! more with [`FormOptions`] and [`Form::build_with`]: a unit beside a field's box, and a note
-//! beside each field a cross-field limit involves ("part of the same limit as Step").
-//! [`Form::focus_first_error`] and [`reveal`] bring a field or a result into view clear of
-//! sticky bars (the phone's sticky Run bar, a sticky header).
+//! A page can present more than one recipe's arguments, in its own fieldsets, and ask for
+//! more with [`FormOptions`]. [`Form::focus_first_error`] and [`reveal`] bring a field or a
+//! result into view clear of sticky bars (the phone's sticky Run bar, a sticky header).
 
 use std::cell::Cell;
 
@@ -25,7 +22,7 @@ use web_sys::{Element, HtmlElement, HtmlInputElement, HtmlSelectElement};
 use crate::args::ArgKind;
 use crate::error::RecipeError;
 use crate::ui::ctx;
-use crate::view::form::{error_args, fluent_args, speaker, FieldDef};
+use crate::view::form::{error_args, fluent_args, speaker, Checked, FieldDef};
 
 /// A fieldset of the form: its legend and an optional note under it (Fluent ids).
 #[derive(Debug, Clone, Copy)]
@@ -46,7 +43,10 @@ pub const RECIPE_GROUPS: [Group; 2] = [
     },
 ];
 
-/// What a page asks of its form beyond the recipe facts (the default: nothing more).
+/// What a page asks of its form beyond the recipe facts (the default: nothing more): a unit
+/// beside a field's box, and a note beside each field a cross-field limit involves ("part of
+/// the same limit as Step"). The IK page asks for them: ik-workspace, jacobian-2r, manip-grid
+/// and its own heatmap resolution, in its own fieldsets.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct FormOptions<'a> {
     /// Fluent id of the unit shown beside a field's box, by field name.
@@ -267,6 +267,15 @@ fn query<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
     crate::ui::dom::find(root, selector, "form")
 }
 
+/// The recipe's errors a check found, as messages beside their fields.
+pub fn recipe_messages<T>(checked: &Checked<T>) -> Vec<(usize, Message)> {
+    checked
+        .messages
+        .iter()
+        .map(|(i, e)| (*i, Message::Recipe(e.clone())))
+        .collect()
+}
+
 impl Form {
     /// Builds the form of `fields` into `container` (classes `<prefix>-*`) and fills it with
     /// `values` (a missing value is the default).
@@ -447,6 +456,14 @@ impl Form {
         self.shown = messages.to_vec();
         self.marked = marked.to_vec();
         self.render();
+    }
+
+    /// Shows what a check of the form's texts found (its errors beside their fields, the
+    /// fields marked); returns the messages shown.
+    pub fn show_checked<T>(&mut self, checked: &Checked<T>) -> Vec<(usize, Message)> {
+        let messages = recipe_messages(checked);
+        self.show(&messages, &checked.marked);
+        messages
     }
 
     /// The note beside field `index` that a cross-field limit shown beside another field

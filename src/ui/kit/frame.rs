@@ -7,7 +7,7 @@
 //! A page gets its loop from its scope ([`crate::ui::kit::scope::Scope::dirty_frame_loop`], or
 //! [`crate::ui::kit::scope::Scope::frame_loop`] when it needs no bits), which cancels the
 //! pending frame on drop; clones share one loop, and the loop also cancels its frame when the
-//! last clone goes.
+//! last clone goes. [`reduced_motion`] says whether the user asked for less animation.
 
 use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
@@ -134,4 +134,22 @@ impl FrameLoop {
     pub fn cancel(&self) {
         self.shared.cancel();
     }
+}
+
+/// Whether the user asked for reduced motion (`prefers-reduced-motion: reduce`): no autoplay,
+/// steps jump instead of moving.
+pub fn reduced_motion() -> bool {
+    let Some(window) = web_sys::window() else {
+        return false;
+    };
+    js_sys::Reflect::get(&window, &"matchMedia".into())
+        .ok()
+        .and_then(|f| f.dyn_into::<js_sys::Function>().ok())
+        .and_then(|f| {
+            f.call1(&window, &"(prefers-reduced-motion: reduce)".into())
+                .ok()
+        })
+        .and_then(|m| js_sys::Reflect::get(&m, &"matches".into()).ok())
+        .and_then(|v| v.as_bool())
+        .unwrap_or(false)
 }

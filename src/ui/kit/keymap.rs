@@ -54,6 +54,16 @@ pub const SHELL: &[Shortcut] = &[
     },
 ];
 
+/// One key of a page's list: the key as shown and the Fluent id of what it does.
+pub const fn key(keys: &'static str, message_id: &'static str) -> Shortcut {
+    Shortcut { keys, message_id }
+}
+
+/// The stepper's keys, then the page's `own` keys.
+pub fn with_stepper(own: &[Shortcut]) -> Vec<Shortcut> {
+    STEPPER.iter().chain(own).copied().collect()
+}
+
 /// The stepper's keys (`crate::ui::kit::stepper`); a page that has a stepper lists them with
 /// its own.
 pub const STEPPER: &[Shortcut] = &[

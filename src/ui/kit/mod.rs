@@ -1,6 +1,8 @@
 //! The page kit: what every page is built from. Each widget owns its elements, state and
 //! listeners; pure parts (codecs, state machines, view models) live in [`crate::view`].
 //!
+//! - [`message_line`]: a line of text said from a value, hidden without one.
+//! - [`page_root`]: a page's root, filled with its markup and localized; its parts by role.
 //! - [`scope`]: listeners, timers, the frame loop and observers of a page, removed on drop.
 //! - [`url_state`]: a page's state in the URL (read, debounced write, notice of ignored keys).
 //! - [`keymap`]: the app's one keymap and the focus rule for page keys.
@@ -33,7 +35,9 @@ pub mod frame;
 pub mod heatmap;
 pub mod input_file;
 pub mod keymap;
+pub mod message_line;
 pub mod orbit;
+pub mod page_root;
 pub mod plot;
 pub mod png;
 pub mod progress;

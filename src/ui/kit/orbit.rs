@@ -12,12 +12,7 @@
 //! changes. A page that drags things in the view (gizmos) gives a `claim` hit test: a press
 //! it claims (`Some(handle)`) becomes that page's drag ([`DragEvent`] `Start`/`Move`/`End`,
 //! plus `Hover`/`Leave` for a mouse), any other press orbits.
-//!
-//! [`paint`] draws the marks of a [`crate::view::scene3d::Scene`] (lines, arrows, dots,
-//! labels in painter's order) with the projector's ink.
-//!
-//! Hooks: the top canvas carries the page's `data-testid` and `tabindex="0"`; the preset
-//! buttons `data-action="view-<preset>"`; the stage `data-orbit="stage"`.
+//! [`paint`] draws the marks of a [`crate::view::scene3d::Scene`] with the projector's ink.
 
 use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
@@ -28,7 +23,7 @@ use wasm_bindgen::JsCast;
 use web_sys::{CanvasRenderingContext2d, Element, Event, KeyboardEvent, PointerEvent};
 
 use super::canvas::{dash, focus_without_scroll, solid, Ink, LayeredCanvas};
-use super::drag::{DragEvent, PointerKind};
+use super::drag::{client, DragEvent, PointerKind};
 use super::form::escape;
 use super::scope::{FrameLoop, Scope};
 use crate::ui::dom;
@@ -150,7 +145,9 @@ struct Inner<H: Copy + PartialEq + 'static> {
     frame: RefCell<Option<FrameLoop>>,
 }
 
-/// A 3D view; its listeners, observer and frame loop go away on drop.
+/// A 3D view; its listeners, observer and frame loop go away on drop. Hooks: the top canvas
+/// carries the page's `data-testid` and `tabindex="0"`; the preset buttons
+/// `data-action="view-<preset>"`; the stage `data-orbit="stage"`.
 pub struct OrbitView<H: Copy + PartialEq + 'static = ()> {
     inner: Rc<Inner<H>>,
     root: Element,
@@ -163,20 +160,6 @@ fn kind_of(e: &PointerEvent) -> PointerKind {
         "pen" => PointerKind::Pen,
         _ => PointerKind::Touch,
     }
-}
-
-/// The event's client position (fractional where the browser gives it).
-fn client(e: &PointerEvent) -> DVec2 {
-    let coord = |name: &str, fallback: i32| {
-        js_sys::Reflect::get(e, &JsValue::from_str(name))
-            .ok()
-            .and_then(|v| v.as_f64())
-            .unwrap_or(f64::from(fallback))
-    };
-    DVec2::new(
-        coord("clientX", e.client_x()),
-        coord("clientY", e.client_y()),
-    )
 }
 
 fn markup<H>(options: &OrbitOptions<H>) -> String {
@@ -656,8 +639,8 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
     }
 }
 
-/// Paints projected scene marks (already in painter's order) on `ctx`, with line widths and
-/// label sizes scaled by `ink`.
+/// Paints projected scene marks (lines, arrows, dots, labels, already in painter's order) on
+/// `ctx`, with line widths and label sizes scaled by `ink`.
 pub fn paint(ctx: &CanvasRenderingContext2d, marks: &[Mark], ink: Ink) {
     let mut color = "";
     let mut width = f64::NAN;

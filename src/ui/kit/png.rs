@@ -14,6 +14,25 @@ pub fn download(canvas: &HtmlCanvasElement, file_name: &str) -> Result<(), JsVal
     download::download_canvas_png(canvas, file_name)
 }
 
+/// A new canvas of `width` × `height` (at least 1 × 1) filled with `background`, and its 2D
+/// context.
+fn filled(
+    width: u32,
+    height: u32,
+    background: &str,
+) -> Result<(HtmlCanvasElement, CanvasRenderingContext2d), JsValue> {
+    let out = dom::el("canvas")?.dyn_into::<HtmlCanvasElement>()?;
+    out.set_width(width.max(1));
+    out.set_height(height.max(1));
+    let context = out
+        .get_context("2d")?
+        .ok_or_else(|| JsValue::from_str("png: no 2d context"))?
+        .dyn_into::<CanvasRenderingContext2d>()?;
+    context.set_fill_style_str(background);
+    context.fill_rect(0.0, 0.0, f64::from(width), f64::from(height));
+    Ok((out, context))
+}
+
 /// A new canvas the size of the first layer with `background` (a CSS colour) and every layer
 /// drawn on it in order (bottom first): what a stack of layered canvases shows.
 pub fn flatten(
@@ -24,15 +43,7 @@ pub fn flatten(
         .first()
         .map(|c| (c.width(), c.height()))
         .unwrap_or((1, 1));
-    let out = dom::el("canvas")?.dyn_into::<HtmlCanvasElement>()?;
-    out.set_width(width.max(1));
-    out.set_height(height.max(1));
-    let context = out
-        .get_context("2d")?
-        .ok_or_else(|| JsValue::from_str("png: no 2d context"))?
-        .dyn_into::<CanvasRenderingContext2d>()?;
-    context.set_fill_style_str(background);
-    context.fill_rect(0.0, 0.0, f64::from(width), f64::from(height));
+    let (out, context) = filled(width, height, background)?;
     for layer in layers {
         context.draw_image_with_html_canvas_element_and_dw_and_dh(
             layer,
@@ -71,15 +82,7 @@ pub fn download_stacked(
         .map(HtmlCanvasElement::height)
         .max()
         .unwrap_or(1);
-    let out = dom::el("canvas")?.dyn_into::<HtmlCanvasElement>()?;
-    out.set_width(width.max(1));
-    out.set_height(height.max(1));
-    let context = out
-        .get_context("2d")?
-        .ok_or_else(|| JsValue::from_str("png: no 2d context"))?
-        .dyn_into::<CanvasRenderingContext2d>()?;
-    context.set_fill_style_str(background);
-    context.fill_rect(0.0, 0.0, f64::from(width), f64::from(height));
+    let (out, context) = filled(width, height, background)?;
     let mut x = 0.0;
     for part in &parts {
         context.draw_image_with_html_canvas_element(part, x, 0.0)?;

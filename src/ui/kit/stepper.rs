@@ -7,15 +7,6 @@
 //! The state machine is [`crate::view::stepper`] (natively tested); this file turns clicks,
 //! keys and animation frames into its commands and calls the page's [`StepModel`]. Buttons
 //! carry `data-action="start|back|run|step|end|reset"`; the run button has `aria-pressed`.
-//!
-//! ```ignore
-//! let stepper = StepperWidget::new(&toolbar_slot, model.clone(), StepperOptions {
-//!     speeds: vec![Speed::PerSecond(10.0), Speed::PerSecond(100.0), Speed::Max],
-//!     ..StepperOptions::default()
-//! }, move |index| page.redraw(index))?;
-//! // in the page's on_key: if stepper.on_key(event) { return true; }
-//! // in the page's shortcuts(): keys.extend_from_slice(keymap::STEPPER);
-//! ```
 
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
@@ -112,6 +103,15 @@ pub struct StepperWidget<M: StepModel + 'static> {
 impl<M: StepModel + 'static> StepperWidget<M> {
     /// Builds the widget at the end of `parent`. `on_change(index)` runs after every move of
     /// the model (the page redraws there).
+    ///
+    /// ```ignore
+    /// let stepper = StepperWidget::new(&toolbar_slot, model.clone(), StepperOptions {
+    ///     speeds: vec![Speed::PerSecond(10.0), Speed::PerSecond(100.0), Speed::Max],
+    ///     ..StepperOptions::default()
+    /// }, move |index| page.redraw(index))?;
+    /// // in the page's on_key: if stepper.on_key(event) { return true; }
+    /// // in the page's shortcuts(): keymap::with_stepper(&PAGE_KEYS)
+    /// ```
     pub fn new(
         parent: &Element,
         model: Rc<RefCell<M>>,

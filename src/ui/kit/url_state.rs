@@ -6,14 +6,14 @@
 //! The pure part (the trait, [`IgnoredKey`]) is in [`crate::view::url`], so a page's round
 //! trip `read(write(s)) == s` is a native `cargo test`.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use crate::ui::kit::scope::Scope;
-use crate::ui::schedule::Timer;
+use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom, router};
 pub use crate::view::url::{IgnoredKey, IgnoredReason, UrlState};
 
@@ -25,6 +25,8 @@ pub const DEBOUNCE_MS: i32 = 300;
 pub struct UrlWriter {
     timer: Rc<Timer>,
     write: Box<dyn Fn()>,
+    /// When [`UrlWriter::write_at_most_every`] last wrote, ms.
+    written: Cell<f64>,
 }
 
 impl UrlWriter {
@@ -45,7 +47,11 @@ impl UrlWriter {
                 router::replace_query(&pairs(&p));
             }
         });
-        UrlWriter { timer, write }
+        UrlWriter {
+            timer,
+            write,
+            written: Cell::new(0.0),
+        }
     }
 
     /// Writes now (and drops a pending debounced write).
@@ -63,6 +69,23 @@ impl UrlWriter {
     /// where `history.replaceState` alone can take tens of milliseconds).
     pub fn schedule_in(&self, ms: i32) {
         self.timer.schedule(ms);
+    }
+
+    /// While something plays (the debounced write would never fire): writes now when the
+    /// last write of this method is more than `every_ms` ago, else schedules one.
+    pub fn write_at_most_every(&self, every_ms: f64) {
+        let now = now_ms();
+        if now - self.written.get() > every_ms {
+            self.written.set(now);
+            self.write_now();
+        } else {
+            self.schedule();
+        }
+    }
+
+    /// Counts now as a write of [`UrlWriter::write_at_most_every`]: its first write waits.
+    pub fn hold_from_now(&self) {
+        self.written.set(now_ms());
     }
 }
 

@@ -4,31 +4,15 @@
 //!
 //! Two halves live here:
 //! - [`worker_run_recipe`] (`workerRunRecipe`), the export the worker script calls; it runs in
-//!   the worker and never touches the DOM. It returns each file's bytes, from which the worker
-//!   builds a `Blob` (so a 50 MB CSV is never decoded or copied on the main thread) plus the
-//!   file's first [`HEAD_LINES`] lines for a preview, the summary and the warnings, and the
-//!   messages already in English and Japanese (the worker has the same Fluent bundles).
-//! - [`run_recipe`] / [`Job`], used by pages on the main thread. One worker serves one job at
-//!   a time; it is started lazily and kept for the next job. Starting a job while another runs
-//!   cancels the other. [`Job::cancel`] (or dropping the `Job`) terminates the worker, so the
-//!   run stops at once even in the middle of a kernel loop; the next job starts a fresh one. A
-//!   message of a cancelled job that arrives late is ignored (every message carries its job
-//!   number).
-//!
-//! Input files go as text or, for a file the page never read ([`WorkerInput::Blob`]: a 100 MB
-//! CSV the user opened), as the `Blob` itself: the worker reads its bytes and decodes them by
-//! the CLI's one policy ([`crate::recipes::decode_input`]). With [`RunOptions::envelope`] the
-//! worker also sends the plot envelope ([`crate::view::envelope`]) of every input and output
-//! file, so a page plots a million rows without parsing them on its main thread.
-//!
-//! Messages, page → worker: `{ job, id, args: [..], names: [..], texts: [string | Blob],
-//! envelope }`; worker → page: `{ job, type: "progress", done, total }` (at most ~10 a second),
-//! `{ job, type: "done", summary, warnings: [{en, ja}], i18n: [..], files: [{ name, blob, bytes,
-//! rows, head, envelope }], inputs: [{ name, envelope }] }`,
-//! `{ job, type: "error", error, param, en, ja, english, i18n }` (the recipe refused: `error`
-//! is the [`RecipeError`] itself, serialized, so the page can put it beside its field and word it
-//! exactly as its own run's error) or
-//! `{ job, type: "crash", message }` (the worker could not load or stopped).
+//!   the worker and never touches the DOM. It returns each file's bytes (the worker makes a
+//!   `Blob` of them: a 50 MB CSV is never decoded or copied on the main thread), a preview of
+//!   [`HEAD_LINES`] lines, the summary, the warnings and the messages in English and Japanese.
+//! - [`run_recipe`] / [`Job`], used by pages on the main thread: one worker, started lazily
+//!   and kept, serves one job at a time; a new job or [`Job::cancel`] terminates a running one
+//!   at once (the next starts a fresh worker), and a late message of a cancelled job is
+//!   ignored (each carries its job number). A file the page never read goes as the `Blob`
+//!   itself ([`WorkerInput::Blob`]); with [`RunOptions::envelope`] the worker also sends each
+//!   file's plot envelope. The messages between page and worker: [`run_recipe_with`].
 
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
@@ -642,6 +626,15 @@ pub fn run_recipe(
 }
 
 /// [`run_recipe`] with inputs as text or files and [`RunOptions`].
+///
+/// Messages, page → worker: `{ job, id, args: [..], names: [..], texts: [string | Blob],
+/// envelope }`; worker → page: `{ job, type: "progress", done, total }` (at most ~10 a second),
+/// `{ job, type: "done", summary, warnings: [{en, ja}], i18n: [..], files: [{ name, blob, bytes,
+/// rows, head, envelope }], inputs: [{ name, envelope }] }`,
+/// `{ job, type: "error", error, param, en, ja, english, i18n }` (the recipe refused: `error`
+/// is the [`RecipeError`] itself, serialized, so the page can put it beside its field and word it
+/// exactly as its own run's error) or
+/// `{ job, type: "crash", message }` (the worker could not load or stopped).
 pub fn run_recipe_with(
     id: &str,
     args: Vec<String>,

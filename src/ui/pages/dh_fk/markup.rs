@@ -125,7 +125,7 @@ pub fn page() -> String {
         })
         .collect();
     format!(
-        "<div class=\"dh\" data-testid=\"dh-fk-page\">\
+        "<div class=\"kit-page dh\" data-testid=\"dh-fk-page\">\
          <header class=\"dh-head\"><h1 data-i18n=\"dh-title\"></h1>\
          <p class=\"dh-lede\" data-i18n=\"recipe-dh-fk-blurb\"></p>{notice}</header>\
          <div class=\"dh-top\">\

@@ -23,7 +23,9 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 
 use crate::recipes::dh_fk::{params_from_args, run, DhParams, CSV_NAME, INFO, JOINTS};
 use crate::ui::kit::canvas::{Ink, LayeredCanvas};
+use crate::ui::kit::frame;
 use crate::ui::kit::keymap;
+use crate::ui::kit::page_root::PageRoot;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::recipe_controls::RecipeControls;
 use crate::ui::kit::scope::Scope;
@@ -46,10 +48,7 @@ const ANNOUNCE_QUIET_MS: f64 = 600.0;
 const TWEEN_MS: f64 = 550.0;
 
 /// The page's keys besides the stepper's and the view's.
-const ROW_KEYS: Shortcut = Shortcut {
-    keys: "1  2  3",
-    message_id: "dh-key-row",
-};
+const ROW_KEYS: Shortcut = keymap::key("1  2  3", "dh-key-row");
 
 /// The chain as last validly posed.
 struct Posed {
@@ -81,7 +80,7 @@ pub struct DhPage(Rc<Inner>);
 
 struct Inner {
     me: Weak<Inner>,
-    root: Element,
+    root: PageRoot,
     controls: RecipeControls<DhParams>,
     posed: RefCell<Posed>,
     query: Cell<PageQuery>,
@@ -100,28 +99,9 @@ struct Inner {
     scope: RefCell<Scope>,
 }
 
-/// Whether the user asked for reduced motion (steps jump instead of moving).
-fn reduced_motion() -> bool {
-    let Some(window) = web_sys::window() else {
-        return false;
-    };
-    js_sys::Reflect::get(&window, &"matchMedia".into())
-        .ok()
-        .and_then(|f| f.dyn_into::<js_sys::Function>().ok())
-        .and_then(|f| {
-            f.call1(&window, &"(prefers-reduced-motion: reduce)".into())
-                .ok()
-        })
-        .and_then(|m| js_sys::Reflect::get(&m, &"matches".into()).ok())
-        .and_then(|v| v.as_bool())
-        .unwrap_or(false)
-}
-
 impl Page for DhPage {
     fn mount(ctx: MountCtx) -> Result<DhPage, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
+        let root = PageRoot::fill(&ctx.root, &markup::page(), P, P)?;
         let controls = RecipeControls::mount(
             &root,
             P,
@@ -137,13 +117,13 @@ impl Page for DhPage {
         let mut sliders = Vec::new();
         for i in 1..=JOINTS {
             sliders.push((
-                dom::find(&root, &format!("[data-slider=\"q{i}\"]"), P)?,
-                dom::find(&root, &format!("[data-dh=\"q{i}-value\"]"), P)?,
+                root.find(&format!("[data-slider=\"q{i}\"]"))?,
+                root.role(&format!("q{i}-value"))?,
             ));
         }
-        let cb_axes: HtmlInputElement = dom::find(&root, "[data-option=\"cb-axes\"]", P)?;
+        let cb_axes: HtmlInputElement = root.find("[data-option=\"cb-axes\"]")?;
         cb_axes.set_checked(query.palette == AxisPalette::ColorBlindSafe);
-        let legend = dom::find(&root, "[data-dh=\"legend\"]", P)?;
+        let legend = root.role("legend")?;
         let dh_table = tables::DhTable::find(&root)?;
         let pose_table = tables::PoseTable::find(&root)?;
         let readouts = Readouts::find(&root)?;
@@ -254,7 +234,7 @@ impl Inner {
 
     /// The view and the row walk (their callbacks hold the page weakly).
     fn build(&self, preset: Preset) -> Result<(), JsValue> {
-        let slot: Element = dom::find(&self.root, "[data-dh=\"view\"]", P)?;
+        let slot: Element = self.root.role("view")?;
         let (me_draw, me_view) = (self.me.clone(), self.me.clone());
         let view = chain_view::ChainView::new(
             &slot,
@@ -440,7 +420,7 @@ impl Inner {
         q.step = step;
         self.query.set(q);
         let adjacent = step + 1 == from || from + 1 == step;
-        if self.animate.get() && adjacent && !reduced_motion() {
+        if self.animate.get() && adjacent && !frame::reduced_motion() {
             self.tween.set(Some((from, step, now_ms())));
         } else {
             self.tween.set(None);

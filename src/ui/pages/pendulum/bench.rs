@@ -7,13 +7,10 @@
 //!   timesteps further (from the start again once the run is over), and returns its
 //!   duration (`performance.now()`).
 //!
-//! Without the feature, [`record`] and the hook functions do nothing.
+//! Without the feature, [`record`] and [`remove_hooks`] do nothing.
 
 #[cfg(not(feature = "bench"))]
 pub(super) fn record(_ms: f64) {}
-
-#[cfg(not(feature = "bench"))]
-pub(super) fn install_hooks(_weak: &std::rc::Weak<super::Inner>) {}
 
 #[cfg(not(feature = "bench"))]
 pub(super) fn remove_hooks() {}
@@ -23,65 +20,39 @@ pub(super) use hooks::{install_hooks, record, remove_hooks};
 
 #[cfg(feature = "bench")]
 mod hooks {
-    use std::rc::Weak;
-
     use wasm_bindgen::prelude::*;
-
-    use crate::ui::kit::stepper::StepModel;
-    use crate::ui::pages::pendulum::Inner;
-    use crate::ui::schedule::now_ms;
 
     const FRAMES: &str = "__pendulumFrameMs";
     const HOOKS: &str = "__pendulumBench";
     const KEEP: u32 = 5000;
 
     /// Records one frame's work.
-    pub(in crate::ui::pages::pendulum) fn record(ms: f64) {
+    pub(crate) fn record(ms: f64) {
         crate::ui::kit::bench_log::push_ms(FRAMES, ms, KEEP);
     }
 
-    /// Installs `window.__pendulumBench` (and an empty `__pendulumFrameMs`).
-    pub(in crate::ui::pages::pendulum) fn install_hooks(weak: &Weak<Inner>) {
+    /// Installs `window.__pendulumBench` (and an empty `__pendulumFrameMs`): its
+    /// `frame(steps)` calls `frame` with `steps` clamped to 1..=1e6 (1 if not finite).
+    pub(crate) fn install_hooks(frame: impl Fn(u64) -> f64 + 'static) {
         let Some(window) = web_sys::window() else {
             return;
         };
         let _ = js_sys::Reflect::set(&window, &FRAMES.into(), &js_sys::Array::new());
         let hooks = js_sys::Object::new();
-        let w = weak.clone();
         let frame = Closure::<dyn FnMut(f64) -> f64>::new(move |steps: f64| {
-            let Some(page) = w.upgrade() else {
-                return f64::NAN;
-            };
             let steps = if steps.is_finite() {
                 steps.clamp(1.0, 1e6) as u64
             } else {
                 1
             };
-            let over = page
-                .sim
-                .try_borrow()
-                .map_or(true, |sim| sim.index + steps > sim.steps);
-            if over {
-                // Over the end: the same run from the start, as a replay (not timed).
-                page.replay_from_start();
-            }
-            let t0 = now_ms();
-            {
-                let Ok(mut sim) = page.sim.try_borrow_mut() else {
-                    return f64::NAN;
-                };
-                let next = (sim.index + steps).min(sim.steps);
-                sim.go_to(next);
-            }
-            page.update();
-            now_ms() - t0
+            frame(steps)
         });
         let _ = js_sys::Reflect::set(&hooks, &"frame".into(), &frame.into_js_value());
         let _ = js_sys::Reflect::set(&window, &HOOKS.into(), &hooks);
     }
 
     /// Removes `window.__pendulumBench` (the page unmounted).
-    pub(in crate::ui::pages::pendulum) fn remove_hooks() {
+    pub(crate) fn remove_hooks() {
         if let Some(window) = web_sys::window() {
             let _ = js_sys::Reflect::delete_property(&window, &HOOKS.into());
         }

@@ -8,7 +8,7 @@ use super::readouts;
 /// The page's HTML.
 pub fn page() -> String {
     format!(
-        "<div class=\"pend\">\
+        "<div class=\"kit-page pend\">\
          <header class=\"pend-head\"><h1 data-i18n=\"pendulum-title\"></h1>\
          <p class=\"pend-lede\" data-i18n=\"pendulum-lede\"></p>\
          <p class=\"pend-notice\" data-pend=\"url-notice\" hidden></p></header>\

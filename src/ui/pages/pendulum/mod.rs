@@ -9,12 +9,6 @@
 //! `exports` (the kit's panel: CSV, PNG, command lines), `markup` (with the explanation) and
 //! `bench` (timing hooks, bench builds only). This file holds the run ([`Sim`], the
 //! stepper's model, from the pure `crate::view::pendulum`) and wires them.
-//!
-//! At the recipe's default damping the pendulum is at rest after about a second of its five,
-//! so the default view (playing from the start) ends still. The page keeps the recipe's
-//! defaults (the CSV is `bsv pendulum-energy 5`'s) and says so at the end of the run, with a
-//! Replay button and one that sets the damping to 0 (a swing that lasts, and Euler's drift
-//! alone).
 
 mod bench;
 mod exports;
@@ -33,7 +27,9 @@ use web_sys::{Element, HtmlCanvasElement, HtmlInputElement, KeyboardEvent};
 
 use crate::recipes::pendulum_energy::{Integrator, PendulumParams};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
+use crate::ui::kit::frame::reduced_motion;
 use crate::ui::kit::keymap;
+use crate::ui::kit::page_root::PageRoot;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::{Command, Length, Speed, StepModel, StepperOptions, StepperWidget};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
@@ -106,7 +102,11 @@ impl StepModel for Sim {
 /// Fluent arguments as texts.
 type FluentTexts = Vec<(&'static str, String)>;
 
-/// What the notice under the pendulum says.
+/// What the notice under the pendulum says. At the recipe's default damping the pendulum is
+/// at rest after about a second of its five, so the default view (playing from the start)
+/// ends still. The page keeps the recipe's defaults (the CSV is `bsv pendulum-energy 5`'s)
+/// and says so at the end of the run, with a Replay button and one that sets the damping to
+/// 0 (a swing that lasts, and Euler's drift alone).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum EndNotice {
     /// The damper has left the pendulum at rest.
@@ -120,7 +120,7 @@ pub struct PendulumPage(Rc<Inner>);
 
 struct Inner {
     me: Weak<Inner>,
-    root: Element,
+    root: PageRoot,
     sim: Rc<RefCell<Sim>>,
     /// The texts of the last valid run (the URL's and the command lines').
     texts: RefCell<Vec<String>>,
@@ -144,41 +144,15 @@ struct Inner {
     exports: exports::Exports,
     url_notice: UrlNotice,
     url: Option<UrlWriter>,
-    /// When the URL was last written, ms.
-    url_written: Cell<f64>,
     scope: RefCell<Scope>,
-}
-
-fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
-    dom::find(root, &format!("[data-pend=\"{name}\"]"), "pendulum")
-}
-
-/// Whether the user asked for reduced motion (no autoplay).
-fn reduced_motion() -> bool {
-    let Some(window) = web_sys::window() else {
-        return false;
-    };
-    let media = js_sys::Reflect::get(&window, &"matchMedia".into())
-        .ok()
-        .and_then(|f| f.dyn_into::<js_sys::Function>().ok())
-        .and_then(|f| {
-            f.call1(&window, &"(prefers-reduced-motion: reduce)".into())
-                .ok()
-        });
-    media
-        .and_then(|m| js_sys::Reflect::get(&m, &"matches".into()).ok())
-        .and_then(|v| v.as_bool())
-        .unwrap_or(false)
 }
 
 impl Page for PendulumPage {
     fn mount(ctx: MountCtx) -> Result<PendulumPage, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
+        let root = PageRoot::fill(&ctx.root, &markup::page(), "pend", "pendulum")?;
         let (query, ignored) = PageQuery::read(&ctx.query);
-        let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
-        let mut form = params::Params::build(role(&root, "form")?, &query.texts)?;
+        let url_notice = UrlNotice::new(root.role("url-notice")?, ignored)?;
+        let mut form = params::Params::build(root.role("form")?, &query.texts)?;
         // The URL's values if valid, else the recipe's defaults (the fields keep the text
         // and show why).
         let (params, texts) = match form.check() {
@@ -188,21 +162,20 @@ impl Page for PendulumPage {
                 crate::view::pendulum::default_texts(),
             ),
         };
-        let compare_box: HtmlInputElement =
-            dom::find(&root, "[data-field=\"compare\"]", "pendulum")?;
+        let compare_box: HtmlInputElement = root.find("[data-field=\"compare\"]")?;
         compare_box.set_checked(query.compare);
         let sim = Rc::new(RefCell::new(Sim::new(params, query.compare)?));
-        let stepper_slot = role(&root, "stepper")?;
-        let view = view::PendulumView::find(&role(&root, "view-stage")?)?;
-        let plots = plots::Plots::find(&role(&root, "time-stage")?, &role(&root, "phase-stage")?)?;
+        let stepper_slot = root.role("stepper")?;
+        let view = view::PendulumView::find(&root.role("view-stage")?)?;
+        let plots = plots::Plots::find(&root.role("time-stage")?, &root.role("phase-stage")?)?;
         let readouts = readouts::Readouts::find(&root)?;
         let exports = exports::Exports::find(&root)?;
-        let h_slider: HtmlInputElement = role(&root, "h-slider")?;
+        let h_slider: HtmlInputElement = root.role("h-slider")?;
         h_slider.set_max(&(TIMESTEPS.len() - 1).to_string());
-        let h_value = role(&root, "h-value")?;
-        let end_notice = role(&root, "end")?;
-        let end_text = role(&root, "end-text")?;
-        let undamped = dom::find(&root, "[data-action=\"undamped\"]", "pendulum")?;
+        let h_value = root.role("h-value")?;
+        let end_notice = root.role("end")?;
+        let end_text = root.role("end-text")?;
+        let undamped = root.find("[data-action=\"undamped\"]")?;
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
             let mut scope = Scope::new();
             let url = Some(UrlWriter::new(&mut scope, me, Inner::query));
@@ -227,13 +200,18 @@ impl Page for PendulumPage {
                 exports,
                 url_notice,
                 url,
-                url_written: Cell::new(0.0),
                 scope: RefCell::new(scope),
                 root,
             }
         });
         inner.install()?;
-        bench::install_hooks(&Rc::downgrade(&inner));
+        #[cfg(feature = "bench")]
+        {
+            let weak = Rc::downgrade(&inner);
+            bench::install_hooks(move |steps| {
+                weak.upgrade().map_or(f64::NAN, |p| p.bench_frame(steps))
+            });
+        }
         inner.view.borrow_mut().canvas.fit();
         inner.rebuild(DEFAULT_SPEED)?;
         let h = inner.sim.borrow().params.timestep_s;
@@ -306,7 +284,7 @@ impl Inner {
                 .set_text("timestep", &crate::pyfmt::py_float(h));
             p.edited();
         })?;
-        let replay: Element = dom::find(&self.root, "[data-action=\"replay\"]", "pendulum")?;
+        let replay: Element = self.root.find("[data-action=\"replay\"]")?;
         scope.listen_for(&replay, "click", me, |p, _| p.command(Command::Play))?;
         scope.listen_for(&self.undamped, "click", me, |p, _| {
             p.params.borrow_mut().set_text("damping", "0");
@@ -324,8 +302,7 @@ impl Inner {
         })?;
         scope.listen_for(&self.exports.png, "click", me, |p, _| p.download_png())?;
         for kind in ["bsv", "python"] {
-            let button: Element =
-                dom::find(&self.root, &format!("[data-copy=\"{kind}\"]"), "pendulum")?;
+            let button: Element = self.root.find(&format!("[data-copy=\"{kind}\"]"))?;
             scope.listen_for(&button, "click", me, move |p, _| p.exports.kit.copy(kind))?;
         }
         let canvas = self.view.borrow().canvas.top().canvas.clone();
@@ -334,7 +311,7 @@ impl Inner {
         })?;
         let stages: Vec<Element> = ["view-stage", "time-stage", "phase-stage"]
             .iter()
-            .filter_map(|n| role::<Element>(&self.root, n).ok())
+            .filter_map(|n| self.root.role::<Element>(n).ok())
             .collect();
         scope.observe_resize(&stages.iter().collect::<Vec<_>>(), me, |p| p.relayout())?;
         Ok(())
@@ -462,11 +439,29 @@ impl Inner {
         )));
     }
 
-    /// Bench builds: the same run again from the start (fresh tracks and plots).
+    /// Bench builds: one frame's work, `steps` timesteps further (from the start again once
+    /// the run is over), and its duration, ms.
     #[cfg(feature = "bench")]
-    fn replay_from_start(&self) {
-        let params = self.sim.borrow().params;
-        self.restart(params);
+    fn bench_frame(&self, steps: u64) -> f64 {
+        let over = self
+            .sim
+            .try_borrow()
+            .map_or(true, |sim| sim.index + steps > sim.steps);
+        if over {
+            // Over the end: the same run from the start, as a replay (not timed).
+            let params = self.sim.borrow().params;
+            self.restart(params);
+        }
+        let t0 = now_ms();
+        {
+            let Ok(mut sim) = self.sim.try_borrow_mut() else {
+                return f64::NAN;
+            };
+            let next = (sim.index + steps).min(sim.steps);
+            sim.go_to(next);
+        }
+        self.update();
+        now_ms() - t0
     }
 
     fn command(&self, command: Command) {
@@ -624,13 +619,7 @@ impl Inner {
         bench::record(work);
         // While playing, the debounced write would never fire: write at most twice a second.
         if let Some(url) = self.url.as_ref() {
-            let now = crate::ui::schedule::now_ms();
-            if now - self.url_written.get() > URL_EVERY_MS {
-                self.url_written.set(now);
-                url.write_now();
-            } else {
-                url.schedule();
-            }
+            url.write_at_most_every(URL_EVERY_MS);
         }
     }
 }

@@ -10,7 +10,7 @@ use web_sys::Element;
 use crate::error::RecipeError;
 use crate::recipes::parse_args;
 use crate::recipes::pendulum_energy::{PendulumParams, INFO};
-use crate::ui::kit::form::{Form, Message, RECIPE_GROUPS};
+use crate::ui::kit::form::{Form, RECIPE_GROUPS};
 use crate::view::command_line::RunArgs;
 use crate::view::form::{recipe_fields, validate};
 use crate::view::pendulum::default_texts;
@@ -70,13 +70,7 @@ impl Params {
             |t| check_texts(&self.form, t),
             |_| Some(0),
         );
-        let messages: Vec<(usize, Message)> = checked
-            .messages
-            .iter()
-            .map(|(i, e)| (*i, Message::Recipe(e.clone())))
-            .collect();
-        let marked = checked.marked.clone();
-        self.form.show(&messages, &marked);
+        self.form.show_checked(&checked);
         checked.value
     }
 

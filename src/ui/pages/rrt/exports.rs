@@ -18,7 +18,7 @@ use crate::ui::kit::exports::Exports as Commands;
 use crate::ui::schedule::now_ms;
 use crate::view::rrt::PageState;
 
-use super::Run;
+use super::run::Run;
 
 /// Nodes whose CSV is written at once on a click; a bigger tree's is written in slices.
 const NODES_AT_ONCE: usize = 50_000;
@@ -124,8 +124,22 @@ impl Exports {
         self.write_slice(run)
     }
 
+    /// The CSV downloads enabled once the run to its end is `done` (`rrt_nodes.csv` not while
+    /// a sliced one is being written).
+    pub fn enable_csv(&self, done: bool) {
+        let writing = self.writing();
+        for el in [&self.nodes, &self.path] {
+            let busy = writing && *el == self.nodes;
+            let _ = if done && !busy {
+                el.remove_attribute("disabled")
+            } else {
+                el.set_attribute("disabled", "")
+            };
+        }
+    }
+
     /// Whether a sliced `rrt_nodes.csv` is being written.
-    pub fn writing(&self) -> bool {
+    fn writing(&self) -> bool {
         self.job.borrow().is_some()
     }
 

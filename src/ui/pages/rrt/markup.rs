@@ -33,7 +33,7 @@ fn code() -> String {
 /// The page's HTML.
 pub fn page() -> String {
     format!(
-        "<div class=\"rrt\">\
+        "<div class=\"kit-page rrt\">\
          <header class=\"rrt-head\"><h1 data-i18n=\"rrt-title\"></h1>\
          <p class=\"rrt-lede\" data-i18n=\"rrt-lede\"></p>\
          <p class=\"rrt-notice\" data-rrt=\"url-notice\" hidden></p></header>\

@@ -4,22 +4,20 @@
 //! pseudocode line that decided it, and the run's CSVs byte for byte those of `bsv rrt-2d`
 //! with the page's arguments.
 //!
-//! The page is a struct of components, one file each: `world` (the three-layer view: world,
-//! tree appended to, marks of the moment), `substeps` (the sub-step panel and pseudocode),
-//! `params` (the validated form), `exports` (CSVs, PNG, command lines) and `markup` (with the
-//! explanation); counters are the kit's readouts. This file holds the run ([`Run`], the
-//! stepper's model) and wires them: the world editor's drags (move a box, resize it by a
-//! corner, move the start or the goal) go through `crate::view::rrt::drag`, which refuses a
-//! start or goal inside a box or outside the square with a message; every edit restarts the
-//! run at iteration 0. The same edits by keyboard (on the focused view or the page): `n`
-//! chooses the start, the goal or a box in turn, `c` a corner of that box (each corner in
-//! turn, then the whole box again), Shift + arrows move the choice by 0.01 through the same
-//! `drag` (a corner resizes its box, with a corner drag's checks), Delete removes the
-//! selected box.
+//! Components, one file each: `run` (the run and the stepper's model), `world` (the
+//! three-layer view), `substeps` (the sub-step panel and pseudocode), `key_target` (the world
+//! editor by keyboard), `counters`, `params` (the validated form), `exports` (CSVs, PNG,
+//! command lines) and `markup`. This file wires them: the world editor's drags (move a box,
+//! resize it by a corner, move the start or the goal) go through `crate::view::rrt::drag`,
+//! which refuses a start or goal inside a box or outside the square with a message; every
+//! edit restarts the run at iteration 0.
 
+mod counters;
 mod exports;
+mod key_target;
 mod markup;
 mod params;
+mod run;
 mod substeps;
 mod world;
 
@@ -31,134 +29,41 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 
 use crate::error::RecipeError;
 use crate::i18n::FluentArg;
-use crate::pyfmt::fixed;
-use crate::recipes::rrt_2d::{Rrt, RrtAt, RrtCursor, RrtOutcome, RrtSetup};
+use crate::recipes::rrt_2d::RrtOutcome;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
-use crate::ui::kit::readouts::Readouts;
+use crate::ui::kit::message_line::MessageLine;
+use crate::ui::kit::page_root::PageRoot;
 use crate::ui::kit::scope::Scope;
-use crate::ui::kit::stepper::{Command, Length, Speed, StepModel, StepperOptions, StepperWidget};
+use crate::ui::kit::stepper::{Command, StepperWidget};
 use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::rrt::{
-    add_box, corners, delete_box, drag, hit_test, phases, rate_per_s, Grab, PageState, Phase,
-    Refusal,
+    add_box, delete_box, drag, hit_test, phases, Grab, PageState, Phase, Refusal,
 };
+use run::Run;
 
-/// Playing speeds: iterations per second, then as fast as possible.
-const SPEEDS: [Speed; 5] = [
-    Speed::PerSecond(1.0),
-    Speed::PerSecond(10.0),
-    Speed::PerSecond(100.0),
-    Speed::PerSecond(1000.0),
-    Speed::Max,
+/// The page's keys besides the stepper's.
+const KEYS: [Shortcut; 4] = [
+    keymap::key("n", "rrt-key-select"),
+    keymap::key("c", "rrt-key-corner"),
+    keymap::key("Shift + ← ↑ → ↓", "rrt-key-move"),
+    keymap::key("Delete", "rrt-key-delete"),
 ];
-/// 10 iterations a second.
-const DEFAULT_SPEED: usize = 1;
 /// Shortest time between two URL writes while playing, ms.
 const URL_EVERY_MS: f64 = 500.0;
-/// Work per frame (iterations + drawing) playing as fast as possible aims under, ms: the
-/// stepper halves its chunk above twice this, so frames stay under about 4 ms.
-const FRAME_BUDGET_MS: f64 = 1.5;
 /// Runs up to this budget restart on every move of a drag; bigger ones when it ends.
 const LIVE_RESTART_MAX_ITER: usize = 20_000;
-/// How far Shift + an arrow moves the start, the goal, a box or a corner (world units: the
-/// square is 1).
-const KEY_STEP: f64 = 0.01;
-/// The corners `c` chooses in turn ([`Grab::Corner`] numbering): top right, top left, bottom
-/// left, bottom right.
-const CORNER_ORDER: [u8; 4] = [2, 3, 0, 1];
-/// Fluent ids of "corner k of box n", by [`Grab::Corner`] numbering.
-const CORNER_IDS: [&str; 4] = [
-    "rrt-corner-bottom-left",
-    "rrt-corner-bottom-right",
-    "rrt-corner-top-right",
-    "rrt-corner-top-left",
-];
 
 /// Longest slice of the run to its end per main-thread task, ms (the page stays responsive:
 /// no task near 100 ms whatever `max_iter`).
 const FINISH_SLICE_MS: f64 = 20.0;
-/// Tree nodes drawn at a time, chunks drawn for up to [`TREE_MS_PER_TASK`] per task; a
-/// bigger tree is drawn over the next tasks.
-const TREE_NODES_PER_CHUNK: usize = 1_000;
-/// Time spent drawing tree chunks per task, ms.
-const TREE_MS_PER_TASK: f64 = 8.0;
 /// The first slice of the run to its end, in the mount's task, ms (a run of a few thousand
 /// iterations is complete in it).
 const MOUNT_SLICE_MS: f64 = 4.0;
-
-/// The run: grown to its end in time slices between frames (its length and the exports),
-/// and the iteration shown, a cursor into it (the tree shown is a prefix of the run's: no
-/// copy, End and any jump replay at most 64 iterations without a search).
-pub struct Run {
-    /// The run to its end, as far as the slices have grown it.
-    pub finished: Rrt,
-    /// The iteration shown.
-    pub cursor: RrtCursor,
-    /// Changes whenever the tree shown shrinks or is another run's (the tree layer is then
-    /// redrawn whole).
-    pub generation: u64,
-    /// Time the last `go_to` took, ms.
-    pub advance_ms: f64,
-}
-
-impl Run {
-    fn new(setup: &RrtSetup, generation: u64) -> Result<Run, RecipeError> {
-        let finished = Rrt::with_setup(setup)?;
-        Ok(Run {
-            cursor: finished.cursor(),
-            finished,
-            generation,
-            advance_ms: 0.0,
-        })
-    }
-
-    /// The run as it stood at the iteration shown.
-    pub fn shown(&self) -> RrtAt<'_> {
-        self.finished.at(&self.cursor)
-    }
-
-    /// Whether the run to its end is complete (its length known, the exports ready).
-    pub fn is_finished(&self) -> bool {
-        self.finished.is_done()
-    }
-
-    /// Grows the run to its end for about `budget_ms`; `true` once it is complete.
-    fn finish_for(&mut self, budget_ms: f64) -> bool {
-        let started = now_ms();
-        while !self.finished.is_done() {
-            for _ in 0..256 {
-                if self.finished.step_record().is_none() {
-                    break;
-                }
-            }
-            if now_ms() - started >= budget_ms {
-                break;
-            }
-        }
-        self.finished.is_done()
-    }
-}
-
-impl StepModel for Run {
-    /// The iterations known: the whole run once finished, else as far as it has grown.
-    fn length(&self) -> Length {
-        Length::Finite(self.finished.iterations() as u64)
-    }
-    fn go_to(&mut self, index: u64) {
-        let started = now_ms();
-        let k = usize::try_from(index).unwrap_or(usize::MAX);
-        if k < self.shown().iterations() {
-            self.generation += 1;
-        }
-        self.finished.seek_cursor(&mut self.cursor, k);
-        self.advance_ms = now_ms() - started;
-    }
-}
 
 /// A drag under way: what, where it began (world), the state before it.
 type DragStart = (Grab, [f64; 2], PageState);
@@ -168,7 +73,7 @@ pub struct RrtPage(Rc<Inner>);
 
 struct Inner {
     me: Weak<Inner>,
-    root: Element,
+    root: PageRoot,
     /// The last valid state (the form's texts and the world; `it` is the run's).
     state: RefCell<PageState>,
     /// The state the run was made from (a drag of a big run restarts at its end).
@@ -181,12 +86,10 @@ struct Inner {
     dragging: RefCell<Option<DragStart>>,
     hover: Cell<Option<Grab>>,
     selected: Cell<Option<usize>>,
-    /// What Shift + arrows move (chosen with `n`).
-    key_grab: Cell<Option<Grab>>,
-    /// Says what Shift + arrows move.
-    key_target: Element,
-    refusal: Cell<Option<Refusal>>,
-    world_message: Element,
+    /// What Shift + arrows move (chosen with `n`), said in its line.
+    key_target: MessageLine<Grab>,
+    /// Why the last edit of the world was refused.
+    refusal: MessageLine<Refusal>,
     substeps: substeps::SubSteps,
     substep_mode: HtmlInputElement,
     /// In sub-step mode: the sub-step shown (index into the iteration's phases).
@@ -194,14 +97,10 @@ struct Inner {
     /// The sub-step keys are moving the stepper (keep `phase`).
     substep_driving: Cell<bool>,
     params: RefCell<params::Params>,
-    readouts: Readouts,
+    counters: counters::Counters,
     exports: exports::Exports,
     url_notice: UrlNotice,
     url: Option<UrlWriter>,
-    url_written: Cell<f64>,
-    /// Nodes/second while playing: the sample's start (ms, nodes) and the last rate.
-    rate_from: Cell<Option<(f64, usize)>>,
-    rate: Cell<Option<f64>>,
     /// Grows the run to its end, one slice per task.
     finisher: Rc<Timer>,
     /// Draws the rest of a big tree over the next tasks.
@@ -215,8 +114,14 @@ struct Inner {
     scope: RefCell<Scope>,
 }
 
-fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
-    dom::find(root, &format!("[data-rrt=\"{name}\"]"), "rrt")
+/// Why an edit of the world was refused, in the current language.
+fn refusal_text(r: Refusal) -> String {
+    let (id, point, index) = r.message();
+    let mut args = vec![("index", FluentArg::Number(index as f64))];
+    if let Some(p) = point {
+        args.push(("point", FluentArg::Text(ctx::t(p.name_id()))));
+    }
+    ctx::t_args(id, &args)
 }
 
 fn js_error(e: &RecipeError) -> JsValue {
@@ -225,24 +130,22 @@ fn js_error(e: &RecipeError) -> JsValue {
 
 impl Page for RrtPage {
     fn mount(ctx: MountCtx) -> Result<RrtPage, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
+        let root = PageRoot::fill(&ctx.root, &markup::page(), "rrt", "rrt")?;
         let (state, ignored) = PageState::read(&ctx.query);
-        let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
-        let params = params::Params::build(role(&root, "form")?, &state)?;
+        let url_notice = UrlNotice::new(root.role("url-notice")?, ignored)?;
+        let params = params::Params::build(root.role("form")?, &state)?;
         let setup = state.setup().map_err(|e| js_error(&e))?;
         let run = Rc::new(RefCell::new(Run::new(&setup, 0).map_err(|e| js_error(&e))?));
-        let world = world::WorldView::find(&role(&root, "stage")?)?;
+        let world = world::WorldView::find(&root.role("stage")?)?;
         let substeps = substeps::SubSteps::find(&root)?;
-        let readouts = Readouts::find(&root)?;
+        let counters = counters::Counters::find(&root)?;
         let exports = exports::Exports::find(&root)?;
         let start_it = state.it;
-        let stepper_slot: Element = role(&root, "stepper")?;
-        let world_message: Element = role(&root, "world-message")?;
-        let key_target: Element = role(&root, "key-target")?;
-        let substep_mode: HtmlInputElement = role(&root, "substep-mode")?;
-        let finishing: Element = role(&root, "finishing")?;
+        let stepper_slot: Element = root.role("stepper")?;
+        let refusal = MessageLine::new(root.role("world-message")?, refusal_text);
+        let key_target = MessageLine::new(root.role("key-target")?, key_target::text);
+        let substep_mode: HtmlInputElement = root.role("substep-mode")?;
+        let finishing: Element = root.role("finishing")?;
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
             let mut scope = Scope::new();
             let url = Some(UrlWriter::new(&mut scope, me, Inner::query));
@@ -266,22 +169,17 @@ impl Page for RrtPage {
                 dragging: RefCell::new(None),
                 hover: Cell::new(None),
                 selected: Cell::new(None),
-                key_grab: Cell::new(None),
                 key_target,
-                refusal: Cell::new(None),
-                world_message,
+                refusal,
                 substeps,
                 substep_mode,
                 phase: Cell::new(None),
                 substep_driving: Cell::new(false),
                 params: RefCell::new(params),
-                readouts,
+                counters,
                 exports,
                 url_notice,
                 url,
-                url_written: Cell::new(0.0),
-                rate_from: Cell::new(None),
-                rate: Cell::new(None),
                 scope: RefCell::new(scope),
                 root,
             }
@@ -295,7 +193,9 @@ impl Page for RrtPage {
         inner.finish_slice_for(MOUNT_SLICE_MS);
         // The URL is written after the first frame (it only tidies it), not in the mount's
         // task.
-        inner.url_written.set(now_ms());
+        if let Some(url) = inner.url.as_ref() {
+            url.hold_from_now();
+        }
         inner.update();
         // The canvases are sized and drawn by the stage's first ResizeObserver callback, in
         // the first frame after its layout and before its paint: measuring them here would
@@ -312,26 +212,7 @@ impl Page for RrtPage {
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
-        let mut keys = keymap::STEPPER.to_vec();
-        keys.extend([
-            Shortcut {
-                keys: "n",
-                message_id: "rrt-key-select",
-            },
-            Shortcut {
-                keys: "c",
-                message_id: "rrt-key-corner",
-            },
-            Shortcut {
-                keys: "Shift + ← ↑ → ↓",
-                message_id: "rrt-key-move",
-            },
-            Shortcut {
-                keys: "Delete",
-                message_id: "rrt-key-delete",
-            },
-        ]);
-        keys
+        keymap::with_stepper(&KEYS)
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
@@ -368,8 +249,7 @@ impl Inner {
             ("delete-box", Inner::delete_box),
             ("recipe-world", Inner::recipe_world),
         ] {
-            let button: Element =
-                dom::find(&self.root, &format!("[data-action=\"{action}\"]"), "rrt")?;
+            let button: Element = self.root.find(&format!("[data-action=\"{action}\"]"))?;
             scope.listen_for(&button, "click", me, move |p, _| f(p))?;
         }
         // In sub-step mode the step and back buttons walk the sub-steps, as the keys do:
@@ -422,7 +302,7 @@ impl Inner {
             }
         })?;
         for kind in ["python", "bsv"] {
-            let button: Element = dom::find(&self.root, &format!("[data-copy=\"{kind}\"]"), "rrt")?;
+            let button: Element = self.root.find(&format!("[data-copy=\"{kind}\"]"))?;
             scope.listen_for(&button, "click", me, move |p, _| {
                 p.exports.commands.copy(kind)
             })?;
@@ -474,15 +354,7 @@ impl Inner {
         let widget = StepperWidget::new(
             &self.stepper_slot,
             self.run.clone(),
-            StepperOptions {
-                speeds: SPEEDS.to_vec(),
-                initial_speed: DEFAULT_SPEED,
-                speed_label: Box::new(|speed| match speed {
-                    Speed::PerSecond(rate) => ctx::t_args("rrt-speed", &[("rate", rate.into())]),
-                    Speed::Max => ctx::t("kit-stepper-speed-max"),
-                }),
-                testid: "rrt-2d-stepper",
-            },
+            run::stepper_options(),
             move |_| {
                 if let Some(p) = me.upgrade() {
                     p.update();
@@ -490,7 +362,7 @@ impl Inner {
             },
         )?;
         // As fast as possible, yet whole frames (the tree appended, the panel) stay short.
-        widget.set_frame_budget(FRAME_BUDGET_MS, true);
+        widget.set_frame_budget(run::FRAME_BUDGET_MS, true);
         *self.stepper.borrow_mut() = Some(widget);
         Ok(())
     }
@@ -509,7 +381,9 @@ impl Inner {
     /// stepper's otherwise.
     fn on_key(&self, event: &KeyboardEvent) -> bool {
         if !keymap::has_command_modifier(event) {
-            let step = |dx: f64, dy: f64| self.nudge_world([dx * KEY_STEP, dy * KEY_STEP]);
+            let step = |dx: f64, dy: f64| {
+                self.nudge_world([dx * key_target::KEY_STEP, dy * key_target::KEY_STEP])
+            };
             match (event.key().as_str(), event.shift_key()) {
                 ("n" | "N", _) => self.choose_key_target(),
                 ("c" | "C", _) => self.choose_corner(),
@@ -530,92 +404,40 @@ impl Inner {
     /// `n`: the next thing Shift + arrows move (the start, the goal, each box, round again).
     fn choose_key_target(&self) {
         let boxes = self.state.borrow().obstacles.len();
-        let next = match self.key_grab.get() {
-            None => Grab::Start,
-            Some(Grab::Start) => Grab::Goal,
-            Some(Grab::Goal) if boxes > 0 => Grab::Box(0),
-            Some(Grab::Box(i) | Grab::Corner(i, _)) if i + 1 < boxes => Grab::Box(i + 1),
-            _ => Grab::Start,
-        };
-        self.key_grab.set(Some(next));
+        let next = key_target::next_target(self.key_target.get(), boxes);
+        self.key_target.set(Some(next));
         self.selected.set(match next {
             Grab::Box(i) => Some(i),
             _ => None,
         });
         self.hover.set(Some(next));
-        self.show_key_target();
         self.update_marks();
     }
 
-    /// `c`: a corner of the chosen box (the selected one when the start or the goal is
-    /// chosen) for Shift + arrows to resize it: the top-right corner first, then the others
-    /// anticlockwise, then the whole box again. Nothing without a box.
+    /// `c`: a corner of the chosen box for Shift + arrows to resize it, or the whole box
+    /// again ([`key_target::next_corner`]). Nothing without a box.
     fn choose_corner(&self) {
         let boxes = self.state.borrow().obstacles.len();
-        let next = match self.key_grab.get() {
-            Some(Grab::Box(i)) if i < boxes => Grab::Corner(i, CORNER_ORDER[0]),
-            Some(Grab::Corner(i, k)) if i < boxes => {
-                match CORNER_ORDER.iter().position(|&c| c == k) {
-                    Some(at) if at + 1 < CORNER_ORDER.len() => {
-                        Grab::Corner(i, CORNER_ORDER[at + 1])
-                    }
-                    _ => Grab::Box(i),
-                }
-            }
-            _ => match self.selected.get().filter(|&i| i < boxes) {
-                Some(i) => Grab::Corner(i, CORNER_ORDER[0]),
-                None if boxes > 0 => Grab::Corner(0, CORNER_ORDER[0]),
-                None => return,
-            },
-        };
-        let (Grab::Box(i) | Grab::Corner(i, _)) = next else {
+        let next = key_target::next_corner(self.key_target.get(), self.selected.get(), boxes);
+        let Some(next @ (Grab::Box(i) | Grab::Corner(i, _))) = next else {
             return;
         };
-        self.key_grab.set(Some(next));
+        self.key_target.set(Some(next));
         self.selected.set(Some(i));
         self.hover.set(Some(next));
-        self.show_key_target();
         self.update_marks();
-    }
-
-    /// Shows what Shift + arrows move (in the current language), or nothing.
-    fn show_key_target(&self) {
-        let text = self.key_grab.get().map(|grab| {
-            let what = match grab {
-                Grab::Start => ctx::t("rrt-point-start"),
-                Grab::Goal => ctx::t("rrt-point-goal"),
-                Grab::Box(i) => {
-                    ctx::t_args("rrt-box-n", &[("n", FluentArg::Number((i + 1) as f64))])
-                }
-                Grab::Corner(i, k) => ctx::t_args(
-                    CORNER_IDS[usize::from(k) % CORNER_IDS.len()],
-                    &[("n", FluentArg::Number((i + 1) as f64))],
-                ),
-            };
-            ctx::t_args("rrt-key-target", &[("what", FluentArg::Text(what))])
-        });
-        self.key_target.set_text_content(text.as_deref());
-        dom::show(&self.key_target, text.is_some());
     }
 
     /// Shift + an arrow: moves the chosen start, goal, box or corner (resizing its box) by
     /// `delta` (world units) as a drag would, refused with the same messages; the run starts
     /// again.
     fn nudge_world(&self, delta: [f64; 2]) {
-        let Some(grab) = self.key_grab.get() else {
+        let Some(grab) = self.key_target.get() else {
             self.choose_key_target();
             return;
         };
         let before = self.state.borrow().clone();
-        let from = match grab {
-            Grab::Start => before.start,
-            Grab::Goal => before.goal,
-            Grab::Corner(i, k) => before
-                .obstacles
-                .get(i)
-                .map_or([0.0, 0.0], |b| corners(b)[usize::from(k) % 4]),
-            Grab::Box(_) => [0.0, 0.0],
-        };
+        let from = key_target::start_point(&before, grab);
         self.command(Command::Pause);
         match drag(
             &before,
@@ -741,35 +563,13 @@ impl Inner {
             return;
         };
         let done = run.is_finished();
-        let text = (!done).then(|| {
-            ctx::t_args(
-                "rrt-finishing",
-                &[
-                    (
-                        "it",
-                        FluentArg::Text(crate::pyfmt::group_u64(run.finished.iterations() as u64)),
-                    ),
-                    (
-                        "max",
-                        FluentArg::Text(crate::pyfmt::group_u64(run.finished.max_iter() as u64)),
-                    ),
-                ],
-            )
-        });
+        let text = (!done).then(|| run.progress_text());
         self.finishing.set_text_content(text.as_deref());
         dom::show(&self.finishing, !done);
         let _ = self
             .finishing
             .set_attribute("data-state", if done { "done" } else { "running" });
-        let writing = self.exports.writing();
-        for el in [&self.exports.nodes, &self.exports.path] {
-            let busy = writing && *el == self.exports.nodes;
-            let _ = if done && !busy {
-                el.remove_attribute("disabled")
-            } else {
-                el.set_attribute("disabled", "")
-            };
-        }
+        self.exports.enable_csv(done);
     }
 
     // ---------- Editing ----------
@@ -832,20 +632,6 @@ impl Inner {
 
     fn show_refusal(&self, refusal: Option<Refusal>) {
         self.refusal.set(refusal);
-        self.render_refusal();
-    }
-
-    fn render_refusal(&self) {
-        let text = self.refusal.get().map(|r| {
-            let (id, point, index) = r.message();
-            let mut args = vec![("index", FluentArg::Number(index as f64))];
-            if let Some(p) = point {
-                args.push(("point", FluentArg::Text(ctx::t(p.name_id()))));
-            }
-            ctx::t_args(id, &args)
-        });
-        self.world_message.set_text_content(text.as_deref());
-        dom::show(&self.world_message, text.is_some());
     }
 
     fn add_box(&self) {
@@ -867,8 +653,7 @@ impl Inner {
         }
         let index = self.selected.get().unwrap_or(usize::MAX);
         self.selected.set(None);
-        self.key_grab.set(None);
-        self.show_key_target();
+        self.key_target.set(None);
         self.show_refusal(None);
         self.set_state(delete_box(&current, index), true);
     }
@@ -883,8 +668,7 @@ impl Inner {
             ..current.clone()
         };
         self.selected.set(None);
-        self.key_grab.set(None);
-        self.show_key_target();
+        self.key_target.set(None);
         self.show_refusal(None);
         if next != current {
             self.set_state(next, true);
@@ -1029,13 +813,10 @@ impl Inner {
                 _ => 0,
             };
         }
-        let started = now_ms();
-        let ink = Ink::current();
-        let mut world = self.world.borrow_mut();
-        let mut complete = world.draw_tree(&run, upto, TREE_NODES_PER_CHUNK, ink);
-        while !complete && now_ms() - started < TREE_MS_PER_TASK {
-            complete = world.draw_tree(&run, upto, TREE_NODES_PER_CHUNK, ink);
-        }
+        let complete = self
+            .world
+            .borrow_mut()
+            .draw_tree_for_a_task(&run, upto, Ink::current());
         if complete {
             self.tree_more.cancel();
         } else {
@@ -1085,71 +866,13 @@ impl Inner {
             return;
         };
         self.substeps.show(run.shown().last(), phase);
-        self.show_counters(&run);
+        self.counters.show(&run, self.playing());
         let work = run.advance_ms + now_ms() - started;
         drop(run);
         bench_record(work, draw_ms);
         if let Some(url) = self.url.as_ref() {
-            let now = now_ms();
-            if now - self.url_written.get() > URL_EVERY_MS {
-                self.url_written.set(now);
-                url.write_now();
-            } else {
-                url.schedule();
-            }
+            url.write_at_most_every(URL_EVERY_MS);
         }
-    }
-
-    fn show_counters(&self, run: &Run) {
-        let rrt = run.shown();
-        let counts = rrt.counts();
-        let path = rrt.path();
-        let n = rrt.nodes().len();
-        let group = |v: usize| crate::pyfmt::group_u64(v as u64);
-        let r = &self.readouts;
-        r.set("iteration", &group(rrt.iterations()));
-        r.set("nodes", &group(n));
-        r.set("rejected_out", &group(counts.out_of_square));
-        r.set("rejected_collision", &group(counts.collision));
-        r.set("rejected_zero", &group(counts.zero_length));
-        r.set("path_points", &group(path.len()));
-        r.set(
-            "length",
-            &if path.is_empty() {
-                "—".to_string()
-            } else {
-                fixed(rrt.path_length(), 3)
-            },
-        );
-        if self.playing() {
-            let now = now_ms();
-            match self.rate_from.get() {
-                Some((t0, n0)) => {
-                    if let Some(rate) = rate_per_s(n0, n, now - t0) {
-                        self.rate.set(Some(rate));
-                        self.rate_from.set(Some((now, n)));
-                    }
-                }
-                None => self.rate_from.set(Some((now, n))),
-            }
-        } else {
-            self.rate_from.set(None);
-            self.rate.set(None);
-        }
-        r.set(
-            "nodes_per_s",
-            &self
-                .rate
-                .get()
-                .map_or("—".to_string(), |v| group(v.round() as usize)),
-        );
-        r.announce(&ctx::t_args(
-            "rrt-live",
-            &[
-                ("it", FluentArg::Number(rrt.iterations() as f64)),
-                ("nodes", FluentArg::Number(n as f64)),
-            ],
-        ));
     }
 
     /// The language changed.
@@ -1157,12 +880,12 @@ impl Inner {
         let _ = dom::relocalize(&self.root);
         self.params.borrow().form.relocalize();
         self.url_notice.relocalize();
-        self.show_key_target();
+        self.key_target.relocalize();
         if let Some(s) = self.stepper.borrow().as_ref() {
             s.relocalize();
         }
         self.exports.relocalize();
-        self.render_refusal();
+        self.refusal.relocalize();
         self.show_finishing();
         self.redraw_world();
         self.update();

@@ -6,7 +6,7 @@
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use crate::ui::kit::form::{Form, Message, RECIPE_GROUPS};
+use crate::ui::kit::form::{Form, RECIPE_GROUPS};
 use crate::view::form::validate;
 use crate::view::rrt::{form_fields, PageState};
 
@@ -66,12 +66,7 @@ impl Params {
             },
             |_| Some(0),
         );
-        let messages: Vec<(usize, Message)> = checked
-            .messages
-            .iter()
-            .map(|(i, e)| (*i, Message::Recipe(e.clone())))
-            .collect();
-        self.form.show(&messages, &checked.marked);
+        self.form.show_checked(&checked);
         checked
             .value
             .is_some()

@@ -10,11 +10,18 @@ use web_sys::{CanvasRenderingContext2d, Element};
 
 use crate::recipes::rrt_2d::{check_points, RrtIteration, RrtOutcome};
 use crate::ui::kit::canvas::{dash, disc, ring, solid, Ink, LayeredCanvas};
+use crate::ui::schedule::now_ms;
 use crate::view::drag::HandleShape;
 use crate::view::palette;
 use crate::view::rrt::{corners, Frame, Grab, PageState, Phase};
 
-use super::Run;
+use super::run::Run;
+
+/// Tree nodes drawn at a time, chunks drawn for up to [`TREE_MS_PER_TASK`] per task; a
+/// bigger tree is drawn over the next tasks.
+const TREE_NODES_PER_CHUNK: usize = 1_000;
+/// Time spent drawing tree chunks per task, ms.
+const TREE_MS_PER_TASK: f64 = 8.0;
 
 const BG: &str = "#fbfcfe";
 const GRID: &str = "#e6eaf0";
@@ -180,11 +187,23 @@ impl WorldView {
         let _ = c.fill_text("G", g.x + 9.0 * ink.line, g.y - 8.0);
     }
 
+    /// [`WorldView::draw_tree`] in chunks of [`TREE_NODES_PER_CHUNK`] for up to
+    /// [`TREE_MS_PER_TASK`]; `true` once the tree is drawn to `upto` (else the rest waits for
+    /// the next tasks).
+    pub fn draw_tree_for_a_task(&mut self, run: &Run, upto: usize, ink: Ink) -> bool {
+        let started = now_ms();
+        let mut complete = self.draw_tree(run, upto, TREE_NODES_PER_CHUNK, ink);
+        while !complete && now_ms() - started < TREE_MS_PER_TASK {
+            complete = self.draw_tree(run, upto, TREE_NODES_PER_CHUNK, ink);
+        }
+        complete
+    }
+
     /// Layer 1: the tree's first `upto` nodes, appending the ones not drawn yet (the whole
     /// tree after a step back, a new run, a resize, or fewer nodes asked for: sub-step mode
     /// hides the iteration's new node until its outcome), at most `most` nodes per call;
     /// `true` once the tree is drawn to `upto`.
-    pub fn draw_tree(&mut self, run: &Run, upto: usize, most: usize, ink: Ink) -> bool {
+    fn draw_tree(&mut self, run: &Run, upto: usize, most: usize, ink: Ink) -> bool {
         if !self.sized {
             return true;
         }

@@ -6,7 +6,10 @@
 use crate::recipes::se3_relative::CSV_NAME;
 use crate::ui::kit::{exports, readouts};
 
-use super::{P, PNG};
+/// Class and role prefix.
+pub const P: &str = "se3";
+/// The PNG of the 3D view.
+pub const PNG: &str = "se3_relative.png";
 
 /// `(data-readout key, Fluent id of its label in radians)`: the relative pose.
 pub const READOUTS: [(&str, &str); 6] = [
@@ -53,7 +56,7 @@ pub fn page() -> String {
     })
     .collect();
     format!(
-        "<div class=\"se3\">\
+        "<div class=\"kit-page se3\">\
          <header class=\"se3-head\"><h1 data-i18n=\"se3-title\"></h1>\
          <p class=\"se3-lede\" data-i18n=\"se3-lede\"></p>\
          <p class=\"se3-notice\" data-{P}=\"url-notice\" hidden></p></header>\

@@ -32,7 +32,9 @@ use crate::recipes::se3_relative::{Se3Params, CSV_NAME, INFO};
 use crate::ui::kit::canvas::{Ink, LayeredCanvas};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::exports::Exports;
+use crate::ui::kit::keymap;
 use crate::ui::kit::orbit::{self, OrbitOptions, OrbitView};
+use crate::ui::kit::page_root::PageRoot;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
@@ -45,9 +47,14 @@ use crate::view::se3_relative::{
     yaw_text, AngleUnit, Grab, PoseFields, Solved, VIEW_KEY,
 };
 use crate::view::signal::sig;
+use markup::{P, PNG};
 
-const P: &str = "se3";
-const PNG: &str = "se3_relative.png";
+/// The page's keys besides the orbit view's.
+const KEYS: [Shortcut; 3] = [
+    keymap::key("1 2 3 4", "se3-key-views"),
+    keymap::key("u", "se3-key-unit"),
+    keymap::key("r", "se3-key-reset"),
+];
 /// The camera frames this share of the scene's radius: the frames fill the view (their axis
 /// tips may reach its edge).
 const CLOSER: f64 = 0.8;
@@ -69,7 +76,7 @@ pub struct Se3Page(Rc<Inner>);
 
 struct Inner {
     me: Weak<Inner>,
-    root: Element,
+    root: PageRoot,
     poses: RefCell<poses::Poses>,
     solved: RefCell<Solved>,
     /// The 3D view (camera, orbit, zoom, presets), made once the page exists.
@@ -101,29 +108,25 @@ fn js_error(e: &crate::error::RecipeError) -> JsValue {
 
 impl Page for Se3Page {
     fn mount(ctx: MountCtx) -> Result<Se3Page, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
-        let find = |sel: &str| -> Result<Element, JsValue> { dom::find(&root, sel, P) };
+        let root = PageRoot::fill(&ctx.root, &markup::page(), P, P)?;
         let (fields, ignored) = PoseFields::read(&ctx.query);
         let preset = ctx.get(VIEW_KEY).and_then(Preset::from_id);
         let mut ignored = ignored;
         if ctx.get(VIEW_KEY).is_some() && preset.is_none() {
             ignored.push(crate::view::url::IgnoredKey::invalid(VIEW_KEY));
         }
-        let notice = UrlNotice::new(find(&format!("[data-{P}=\"url-notice\"]"))?, ignored)?;
-        let poses = poses::Poses::build(find(&format!("[data-{P}=\"form\"]"))?, fields)?;
+        let notice = UrlNotice::new(root.role("url-notice")?, ignored)?;
+        let poses = poses::Poses::build(root.role("form")?, fields)?;
         let params = poses.params();
         params.validate().map_err(|e| js_error(&e))?;
         let solved = solve(&params);
-        let rotations =
-            rotations::Rotations::find(&root, &find(&format!("[data-{P}=\"rot-stage\"]"))?)?;
-        let source: HtmlSelectElement = dom::find(&root, &format!("[data-{P}=\"rot-source\"]"), P)?;
+        let rotations = rotations::Rotations::find(&root, &root.role("rot-stage")?)?;
+        let source: HtmlSelectElement = root.role("rot-source")?;
         let tables = tables::Matrices::find(&root)?;
         let readouts = Readouts::find(&root)?;
         let exports = Exports::find(&root, P)?;
         let unit = poses.fields.unit;
-        let slot = find(&format!("[data-{P}=\"view\"]"))?;
+        let slot: Element = root.role("view")?;
         let preset = preset.unwrap_or(Preset::Iso);
         let (target, radius) = scene_frame(&params);
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
@@ -187,22 +190,7 @@ impl Page for Se3Page {
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
-        let mut keys = orbit::KEYS.to_vec();
-        keys.extend([
-            Shortcut {
-                keys: "1 2 3 4",
-                message_id: "se3-key-views",
-            },
-            Shortcut {
-                keys: "u",
-                message_id: "se3-key-unit",
-            },
-            Shortcut {
-                keys: "r",
-                message_id: "se3-key-reset",
-            },
-        ]);
-        keys
+        orbit::KEYS.iter().chain(&KEYS).copied().collect()
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
@@ -310,16 +298,16 @@ impl Inner {
             })?;
         }
         scope.listen_for(&self.source, "change", me, |p, _| p.show_rotations(None))?;
-        let csv: Element = dom::find(&self.root, &format!("[data-download=\"{CSV_NAME}\"]"), P)?;
+        let csv: Element = self.root.find(&format!("[data-download=\"{CSV_NAME}\"]"))?;
         scope.listen_for(&csv, "click", me, |p, _| p.download())?;
-        let png: Element = dom::find(&self.root, &format!("[data-download=\"{PNG}\"]"), P)?;
+        let png: Element = self.root.find(&format!("[data-download=\"{PNG}\"]"))?;
         scope.listen_for(&png, "click", me, |p, _| {
             if let Some(view) = p.view.borrow().as_ref() {
                 view.png(PNG);
             }
         })?;
         for kind in ["python", "bsv"] {
-            let button: Element = dom::find(&self.root, &format!("[data-copy=\"{kind}\"]"), P)?;
+            let button: Element = self.root.find(&format!("[data-copy=\"{kind}\"]"))?;
             scope.listen_for(&button, "click", me, move |p, _| p.exports.copy(kind))?;
         }
         let rot_stage = self.rotations.borrow().canvas.stage.clone();

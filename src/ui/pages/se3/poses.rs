@@ -19,7 +19,7 @@ use crate::view::se3_relative::{
     field_name, is_angle, rad_to_deg_text, AngleUnit, PoseFields, FIELDS,
 };
 
-use super::P;
+use super::markup::P;
 
 /// Frame A's six fields, then frame B's.
 const GROUPS: [Group; 2] = [
@@ -207,12 +207,7 @@ impl Poses {
             |t| parse(&fields, t),
             |_| Some(0),
         );
-        let messages: Vec<(usize, Message)> = checked
-            .messages
-            .iter()
-            .map(|(i, e)| (*i, Message::Recipe(e.clone())))
-            .collect();
-        self.form.show(&messages, &checked.marked);
+        let messages = self.form.show_checked(&checked);
         self.shown = (messages, checked.marked.clone());
         let ok = checked.is_valid();
         if let Some(value) = checked.value.filter(|_| ok) {

@@ -2,8 +2,10 @@
 //! (the kit's form, filled by the code), the result's downloads and command lines, and the
 //! explanation with the seed's recipe text. Every fixed word is a `data-i18n` id.
 
-use super::PREFIX;
 use crate::ui::kit::{exports, readouts};
+
+/// Class and test-id prefix of the kit widgets.
+pub const PREFIX: &str = "traj";
 
 /// The readouts: `(data-readout key, label id)`.
 const READOUTS: [(&str, &str); 6] = [
@@ -18,7 +20,7 @@ const READOUTS: [(&str, &str); 6] = [
 /// The page's HTML.
 pub fn page() -> String {
     format!(
-        "<div class=\"traj\" data-testid=\"traj-resample-page\" data-state=\"ready\">\
+        "<div class=\"kit-page traj\" data-testid=\"traj-resample-page\" data-state=\"ready\">\
          <header class=\"traj-head\"><h1 data-i18n=\"traj-title\"></h1>\
          <p class=\"traj-lede\" data-i18n=\"traj-lede\"></p>\
          <p class=\"traj-notice\" data-traj=\"url-notice\" data-testid=\"traj-url-notice\" hidden></p></header>\

@@ -4,15 +4,10 @@
 //! the time span; download `traj_resampled.csv`, byte for byte what `bsv traj-resample`
 //! writes for the same file and dt.
 //!
-//! How a run happens: a small input (at most [`PRECHECK_MAX_BYTES`], read and decoded at once,
-//! as the CLI decodes a file) whose run is small runs on the page as soon as it is valid;
-//! anything bigger (up to the recipe's 128 MiB; a bigger file is refused unread, with the
-//! page's own message in MiB) runs in the kit's Web Worker with progress and
-//! Cancel: the page hands the worker the file itself (never reading a big file's text on its
-//! main thread), and the worker sends back the files and their plot envelopes (min/max per
-//! bucket, [`crate::view::envelope`]), so a million rows draw in one frame. Every problem (a
-//! bad cell, a file that is not UTF-8, a dt too small) is the kernel's error, shown beside its
-//! field with its row and column; the last good plot and download stay.
+//! A small input runs on the page as soon as it is valid, a big one in the kit's Web Worker
+//! ([`Inner::run`]). Every problem (a bad cell, a file that is not UTF-8, a dt too small) is
+//! the kernel's error, shown beside its field with its row and column; the last good plot
+//! and download stay.
 //!
 //! Components, one file each: `joints` (the plot of every joint), `markup` (with the
 //! explanation); the form, exports, readouts, URL, progress panel and input files are the
@@ -36,9 +31,10 @@ use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::exports::Exports;
-use crate::ui::kit::form::{Form, Message, RECIPE_GROUPS};
+use crate::ui::kit::form::{recipe_messages, Form, Message, RECIPE_GROUPS};
 use crate::ui::kit::input_file::{self, Picked, ReadProblem};
 use crate::ui::kit::keymap;
+use crate::ui::kit::page_root::PageRoot;
 use crate::ui::kit::progress::ProgressPanel;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
@@ -50,11 +46,10 @@ use crate::view::command_line::RunArgs;
 use crate::view::envelope::{csv_envelope, Envelope, BUCKETS};
 use crate::view::form::{recipe_fields, runs_while_typing, validate};
 use crate::view::traj_resample::{file_too_large, readings, PageQuery};
+use markup::PREFIX;
 
 /// The recipe the page runs.
 const RECIPE: &str = traj_resample::INFO.id;
-/// Class and test-id prefix of the kit widgets.
-const PREFIX: &str = "traj";
 /// Input files up to this size are read on the page (their errors show at once, their
 /// small runs happen while typing); bigger ones go to the worker unread.
 pub const PRECHECK_MAX_BYTES: u64 = 4 * 1024 * 1024;
@@ -128,7 +123,7 @@ pub struct TrajResample(Rc<Inner>);
 
 struct Inner {
     me: Weak<Inner>,
-    root: Element,
+    root: PageRoot,
     page: Element,
     status_line: Element,
     form: RefCell<Form>,
@@ -154,23 +149,17 @@ struct Inner {
     scope: RefCell<Scope>,
 }
 
-fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
-    dom::find(root, &format!("[data-traj=\"{name}\"]"), "traj-resample")
-}
-
 fn target(event: &Event) -> Option<Element> {
     event.target().and_then(|t| t.dyn_into::<Element>().ok())
 }
 
 impl Page for TrajResample {
     fn mount(mount: MountCtx) -> Result<TrajResample, JsValue> {
-        let root = mount.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
+        let root = PageRoot::fill(&mount.root, &markup::page(), "traj", "traj-resample")?;
         let (query, ignored) = PageQuery::read(&mount.query);
-        let url_notice = UrlNotice::new(role(&root, "url-notice")?, ignored)?;
+        let url_notice = UrlNotice::new(root.role("url-notice")?, ignored)?;
         let form = Form::build(
-            &role(&root, "form")?,
+            &root.role("form")?,
             PREFIX,
             &RECIPE_GROUPS,
             recipe_fields(&traj_resample::INFO),
@@ -186,16 +175,12 @@ impl Page for TrajResample {
                 }
             })?
         };
-        let page: Element = dom::find(
-            &root,
-            "[data-testid=\"traj-resample-page\"]",
-            "traj-resample",
-        )?;
+        let page: Element = root.find("[data-testid=\"traj-resample-page\"]")?;
         let exports = Exports::find(&root, PREFIX)?;
         let readouts = Readouts::find(&root)?;
-        let status_line: Element = role(&root, "status")?;
+        let status_line: Element = root.role("status")?;
         status_line.after_with_node_1(progress.element())?;
-        let joints = joints::Joints::new(&role(&root, "stage")?)?;
+        let joints = joints::Joints::new(&root.role("stage")?)?;
         let source = match query.csv_path {
             Some(name) => Source::Missing(name),
             None => Source::Sample,
@@ -248,18 +233,9 @@ impl Page for TrajResample {
 
     fn shortcuts(&self) -> Vec<Shortcut> {
         vec![
-            Shortcut {
-                keys: "o",
-                message_id: "traj-key-open",
-            },
-            Shortcut {
-                keys: "s",
-                message_id: "traj-key-sample",
-            },
-            Shortcut {
-                keys: "d",
-                message_id: "traj-key-download",
-            },
+            keymap::key("o", "traj-key-open"),
+            keymap::key("s", "traj-key-sample"),
+            keymap::key("d", "traj-key-download"),
         ]
     }
 
@@ -329,7 +305,7 @@ impl Inner {
     fn install(&self) -> Result<(), JsValue> {
         let mut scope = self.scope.borrow_mut();
         let me = &self.me;
-        let form_el: Element = role(&self.root, "form")?;
+        let form_el: Element = self.root.role("form")?;
         scope.listen_for(&form_el, "input", me, |p, e| {
             if let Some(el) = target(e).filter(|el| el.has_attribute("data-field")) {
                 p.form.borrow().note_edit(&el);
@@ -368,7 +344,7 @@ impl Inner {
                 p.open(picked);
             }
         })?;
-        let output: Element = role(&self.root, "output")?;
+        let output: Element = self.root.role("output")?;
         scope.listen_for(&output, "click", me, |p, e| {
             let Some(el) = target(e) else {
                 return;
@@ -382,7 +358,7 @@ impl Inner {
                 p.download_png();
             }
         })?;
-        let stage: Element = role(&self.root, "stage")?;
+        let stage: Element = self.root.role("stage")?;
         scope.observe_resize(&[&stage], me, |p| {
             p.joints.borrow_mut().relayout();
             p.draw();
@@ -514,11 +490,7 @@ impl Inner {
         };
         let file_index = form.file_index();
         let checked = validate(&form.fields, &texts, form.changed(), check, |_| file_index);
-        let mut messages: Vec<(usize, Message)> = checked
-            .messages
-            .iter()
-            .map(|(i, e)| (*i, Message::Recipe(e.clone())))
-            .collect();
+        let mut messages = recipe_messages(&checked);
         let mut marked = checked.marked.clone();
         if let (Some(problem), Some(i)) = (self.file_problem.borrow().clone(), file_index) {
             messages.retain(|(k, _)| *k != i);
@@ -545,6 +517,14 @@ impl Inner {
 
     /// Runs the valid form: on the page when small, else in the worker. The same arguments
     /// as the result shown do not run again.
+    ///
+    /// A small input (at most [`PRECHECK_MAX_BYTES`], read and decoded at once, as the CLI
+    /// decodes a file) whose run is small runs on the page; anything bigger (up to the
+    /// recipe's 128 MiB; a bigger file is refused unread, with the page's own message in MiB)
+    /// runs in the kit's Web Worker with progress and Cancel: the page hands the worker the
+    /// file itself (never reading a big file's text on its main thread), and the worker sends
+    /// back the files and their plot envelopes (min/max per bucket, [`crate::view::envelope`]),
+    /// so a million rows draw in one frame.
     fn run(&self) {
         let Some(rows) = *self.plan.borrow() else {
             return;
@@ -820,7 +800,7 @@ impl Inner {
                 &[("s", s.args.positional.get(1).cloned().unwrap_or_default())],
             ),
         );
-        if let Ok(files) = role::<Element>(&self.root, "files") {
+        if let Ok(files) = self.root.role::<Element>("files") {
             let mut html = String::new();
             for f in &s.files {
                 html.push_str(&crate::ui::kit::exports::download_button(PREFIX, f.name()));

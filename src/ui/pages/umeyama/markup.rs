@@ -5,7 +5,10 @@
 use crate::recipes::umeyama_2d::INFO;
 use crate::ui::kit::{readouts, recipe_controls};
 
-use super::{P, PNG};
+/// Class and role prefix.
+pub const P: &str = "ume";
+/// The PNG of the view.
+pub const PNG: &str = "umeyama_2d.png";
 
 /// `(data-readout of the estimate, of the truth, label id)`.
 pub const READOUT_ROWS: [(&str, &str, &str); 5] = [

@@ -2,32 +2,18 @@
 //! space to add one; remove the selected one with the button or Delete), the true similarity
 //! (fields, sliders, and two handles in the view: the translation and the rotation/scale), the
 //! noise σ, the seed and n; the noisy targets Y, the aligned points `s R X + t` with their
-//! residuals, and the estimate against the truth. The stepper walks the fit: centroids →
-//! centred sets → covariance → SVD → reflection fix → scale → translation → rmse, each with
-//! its matrices (`crate::view::umeyama_2d`, from the kernel's own `umeyama_steps`).
+//! residuals, and the estimate against the truth. The stepper walks the fit, centroids to
+//! rmse, each step with its matrices (`crate::view::umeyama_2d`).
 //!
-//! By keyboard (on the focused view or the page, never in a field): `n` / Shift + `n` select
-//! the next / previous point, then the translation handle, then the rotation handle (the
-//! selection ring shows it); Shift + arrows move a point or the translation by the drag grid,
-//! and turn (← →, by the angle grid) or scale (↑ ↓) the rotation handle, through the very path
-//! a pointer drag takes; `a` adds a point, Delete removes the selected one. A polite status
-//! line says what is selected and where: at once when the selection changes, once a held key
-//! or a typed `x` settles, at a drag's end (never during).
-//!
-//! Components, one file each: `view` (the canvas), `steps` (the step panel), `markup` (with
-//! the explanation); the kit's [`RecipeControls`] is the form (the recipe's arguments and the
-//! options `--scale --angle --tx --ty --mirror --x`), the URL (keys = the CLI's argument names)
-//! and the exports. Every edit goes through the form's texts, so the downloads and the command
-//! line are `bsv umeyama-2d` with the same words; an edited run also exports
-//! `umeyama_points.csv` and says that it is no longer the Python recipe's.
-//!
-//! Speed (a drag's or slider's frame, budget 4 ms): the form checks only the fields an edit
-//! changed ([`RecipeControls::check_only_edits`]); the touch handles, the points' pixel
-//! positions and the edited notice are written only when they change (the handles not at all
-//! during a drag of the view or a run of Shift + arrows: they are placed when it ends); the
-//! step panel rewrites only the matrix cells whose number changed; the labels are bitmaps.
+//! Components, one file each: `view` (the canvas), `steps` (the stepper's model and the step
+//! panel), `selection` (the status line), `markup`; the kit's [`RecipeControls`] is the form
+//! (the recipe's arguments and `--scale --angle --tx --ty --mirror --x`), the URL (keys = the
+//! CLI's argument names) and the exports. Every edit goes through the form's texts, so the
+//! downloads and the command line are `bsv umeyama-2d` with the same words. A drag's or
+//! slider's frame (budget 4 ms) checks only the fields it changed and writes only what changed.
 
 mod markup;
+mod selection;
 mod steps;
 mod view;
 
@@ -45,10 +31,12 @@ use crate::recipes::umeyama_2d::{setup_from_args, UmeyamaSetup, INFO, POINTS_CSV
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
+use crate::ui::kit::message_line::MessageLine;
+use crate::ui::kit::page_root::PageRoot;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::recipe_controls::RecipeControls;
 use crate::ui::kit::scope::Scope;
-use crate::ui::kit::stepper::{Command, Length, StepModel, StepperOptions, StepperWidget};
+use crate::ui::kit::stepper::{Command, StepperWidget};
 use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
@@ -57,22 +45,28 @@ use crate::view::drag::HandleShape;
 use crate::view::signal::{sig, Slider};
 use crate::view::umeyama_2d::{
     add_point, editable, hit_test, key_step_target, move_point, new_point_spot, next_selection,
-    num, points_text, remove_point, rotation_key_target, rotation_texts, selected_point,
+    points_text, remove_point, rotation_key_target, rotation_texts, selected_point,
     translation_texts, Grab, Refusal, Scene, Step, STEPS,
 };
+use markup::{P, PNG};
 
-/// Class and role prefix.
-const P: &str = "ume";
-const PNG: &str = "umeyama_2d.png";
 /// A click this soon after a drag ended is the drag's own (ms).
 const CLICK_AFTER_DRAG_MS: f64 = 400.0;
 /// How long the selection's status line waits after the last change of the points (a key
 /// held down, a typed `x`) before it says where the selected point is, ms: a screen reader
 /// hears where it stopped, not every step.
 const SELECTION_SETTLE_MS: i32 = 400;
-/// Where the points, the translation handle and the rotation handle are (CSS px, for tests
-/// and assistive tools), attributes of the top canvas written only when they change.
-const PX_ATTRS: [&str; 3] = ["data-points-px", "data-handle-t", "data-handle-r"];
+/// The page's keys besides the stepper's (on the focused view or the page, never in a
+/// field): `n` / Shift + `n` select the next / previous point, then the translation handle,
+/// then the rotation handle; Shift + arrows move a point or the translation by the drag grid,
+/// and turn (← →, by the angle grid) or scale (↑ ↓) the rotation handle, through the very
+/// path a pointer drag takes; `a` adds a point, Delete removes the selected one.
+const KEYS: [Shortcut; 4] = [
+    keymap::key("n  Shift + n", "umeyama-key-select"),
+    keymap::key("Shift + ← ↑ → ↓", "umeyama-key-move"),
+    keymap::key("Delete  Backspace", "umeyama-key-delete"),
+    keymap::key("a", "umeyama-key-add"),
+];
 /// The URL key of the step shown (the rest are the CLI's argument names).
 const STEP_KEY: &str = "step";
 const SLIDERS: [Slider; 6] = [
@@ -114,49 +108,32 @@ const SLIDERS: [Slider; 6] = [
     },
 ];
 
-/// The stepper's model: which teaching step is shown.
-pub struct StepIndex {
-    index: u64,
-}
-
-impl StepModel for StepIndex {
-    fn length(&self) -> Length {
-        Length::Finite(STEPS.len() as u64 - 1)
-    }
-    fn go_to(&mut self, index: u64) {
-        self.index = index.min(STEPS.len() as u64 - 1);
-    }
-}
-
 /// The mounted page.
 pub struct UmeyamaPage(Rc<Inner>);
 
 struct Inner {
     me: Weak<Inner>,
-    root: Element,
+    root: PageRoot,
     controls: RecipeControls<UmeyamaSetup>,
     scene: RefCell<Scene>,
     view: RefCell<view::SceneView>,
     panel: steps::StepPanel,
-    model: Rc<RefCell<StepIndex>>,
-    stepper: RefCell<Option<StepperWidget<StepIndex>>>,
+    model: Rc<RefCell<steps::StepIndex>>,
+    stepper: RefCell<Option<StepperWidget<steps::StepIndex>>>,
     drag: RefCell<Option<Drag<Grab>>>,
     dragging: Cell<Option<Grab>>,
     /// A point or one of the truth's handles (`n` and Shift + `n` go round them).
     selected: Cell<Option<Grab>>,
     hover: Cell<Option<Grab>>,
-    refusal: Cell<Option<Refusal>>,
+    /// Why the last edit of the points was refused.
+    refusal: MessageLine<Refusal>,
     /// When the input being handled arrived (a drag move, a slider), ms: its frame's work
     /// counts from there (the form's check included).
     work_started: Cell<Option<f64>>,
     /// When the last drag ended, ms: the click the browser sends after it is not an add.
     drag_ended: Cell<f64>,
-    message: Element,
     /// The status line: which point is selected and where (or that none is).
-    selection: Element,
-    /// What the status line says now: the point count, and the selected point and where it
-    /// is (`None`: not said yet).
-    selection_said: Cell<Option<SelectionKey>>,
+    selection: selection::SelectionLine,
     /// Says the selection once the points stop changing.
     selection_timer: Rc<Timer>,
     edited: Element,
@@ -164,8 +141,6 @@ struct Inner {
     readouts: Readouts,
     /// The touch handles placed last (`None`: place them at the next redraw).
     handles_placed: RefCell<Option<Vec<HandleShape>>>,
-    /// The texts of the [`PX_ATTRS`] now.
-    px_written: RefCell<[String; 3]>,
     /// Shift + arrows are moving a point: the touch handles wait until the status line
     /// settles ([`Inner::show_selection`]).
     key_moving: Cell<bool>,
@@ -175,19 +150,17 @@ struct Inner {
     scope: RefCell<Scope>,
 }
 
-/// What the selection's status line depends on: the point count, what is selected and where
-/// (a point's place; the translation; the rotation handle's angle and scale).
-type SelectionKey = (usize, Option<(Grab, [f64; 2])>);
-
-fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
-    dom::find(root, &format!("[data-{P}=\"{name}\"]"), P)
+/// Why an edit of the points was refused, in the current language.
+fn refusal_text(r: Refusal) -> String {
+    ctx::t_args(
+        r.message_id(),
+        &[("count", FluentArg::Number(r.count() as f64))],
+    )
 }
 
 impl Page for UmeyamaPage {
     fn mount(ctx: MountCtx) -> Result<UmeyamaPage, JsValue> {
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
+        let root = PageRoot::fill(&ctx.root, &markup::page(), P, P)?;
         let controls = RecipeControls::mount(
             &root,
             P,
@@ -204,13 +177,13 @@ impl Page for UmeyamaPage {
             .get(STEP_KEY)
             .and_then(|s| s.trim().parse::<u64>().ok())
             .map_or(0, |s| s.min(STEPS.len() as u64 - 1));
-        let stage: Element = role(&root, "stage")?;
+        let stage: Element = root.role("stage")?;
         let view = view::SceneView::find(&stage)?;
         let panel = steps::StepPanel::find(&root)?;
         let readouts = Readouts::find(&root)?;
-        let message = role(&root, "message")?;
-        let selection = role(&root, "selection")?;
-        let edited = role(&root, "edited")?;
+        let refusal = MessageLine::new(root.role("message")?, refusal_text);
+        let selection = selection::SelectionLine::new(root.role("selection")?);
+        let edited = root.role("edited")?;
         let points_button = root
             .query_selector(&format!("[data-download=\"{POINTS_CSV}\"]"))
             .ok()
@@ -226,24 +199,21 @@ impl Page for UmeyamaPage {
                 scene: RefCell::new(scene),
                 view: RefCell::new(view),
                 panel,
-                model: Rc::new(RefCell::new(StepIndex { index: start_step })),
+                model: Rc::new(RefCell::new(steps::StepIndex { index: start_step })),
                 stepper: RefCell::new(None),
                 drag: RefCell::new(None),
                 dragging: Cell::new(None),
                 selected: Cell::new(None),
                 hover: Cell::new(None),
-                refusal: Cell::new(None),
+                refusal,
                 work_started: Cell::new(None),
                 drag_ended: Cell::new(f64::NEG_INFINITY),
-                message,
                 selection,
-                selection_said: Cell::new(None),
                 selection_timer,
                 edited,
                 points_button,
                 readouts,
                 handles_placed: RefCell::new(None),
-                px_written: RefCell::new(Default::default()),
                 key_moving: Cell::new(false),
                 edited_shown: Cell::new(None),
                 url: RefCell::new(Some(url)),
@@ -268,8 +238,8 @@ impl Page for UmeyamaPage {
         if let Some(s) = self.0.stepper.borrow().as_ref() {
             s.relocalize();
         }
-        self.0.render_refusal();
-        self.0.selection_said.set(None);
+        self.0.refusal.relocalize();
+        self.0.selection.forget();
         self.0.show_selection();
         self.0.redraw();
     }
@@ -279,26 +249,7 @@ impl Page for UmeyamaPage {
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
-        let mut keys = keymap::STEPPER.to_vec();
-        keys.extend([
-            Shortcut {
-                keys: "n  Shift + n",
-                message_id: "umeyama-key-select",
-            },
-            Shortcut {
-                keys: "Shift + ← ↑ → ↓",
-                message_id: "umeyama-key-move",
-            },
-            Shortcut {
-                keys: "Delete  Backspace",
-                message_id: "umeyama-key-delete",
-            },
-            Shortcut {
-                keys: "a",
-                message_id: "umeyama-key-add",
-            },
-        ]);
-        keys
+        keymap::with_stepper(&KEYS)
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
@@ -365,7 +316,7 @@ impl Inner {
                 p.work_started.set(Some(now_ms()));
             })?;
         }
-        let form: Element = role(&self.root, "form")?;
+        let form: Element = self.root.role("form")?;
         scope.listen_for(&form, "change", me, |p, _| p.write_url_now())?;
         for (action, f) in [
             ("add", Inner::add_point_button as fn(&Inner)),
@@ -373,7 +324,7 @@ impl Inner {
             ("mirror", Inner::mirror_preset),
             ("recipe", Inner::recipe_run),
         ] {
-            let button: Element = dom::find(&self.root, &format!("[data-action=\"{action}\"]"), P)?;
+            let button: Element = self.root.find(&format!("[data-action=\"{action}\"]"))?;
             scope.listen_for(&button, "click", me, move |p, _| f(p))?;
         }
         let top = self.view.borrow().canvas.top().canvas.clone();
@@ -409,26 +360,12 @@ impl Inner {
     }
 
     fn build_stepper(&self) -> Result<(), JsValue> {
-        let slot: Element = role(&self.root, "stepper")?;
+        let slot: Element = self.root.role("stepper")?;
         let me = self.me.clone();
         let widget = StepperWidget::new(
             &slot,
             self.model.clone(),
-            StepperOptions {
-                speeds: vec![
-                    crate::ui::kit::stepper::Speed::PerSecond(0.5),
-                    crate::ui::kit::stepper::Speed::PerSecond(1.0),
-                    crate::ui::kit::stepper::Speed::PerSecond(2.0),
-                ],
-                initial_speed: 1,
-                speed_label: Box::new(|speed| match speed {
-                    crate::ui::kit::stepper::Speed::PerSecond(rate) if rate > 0.0 => {
-                        ctx::t_args("umeyama-speed", &[("seconds", (1.0 / rate).into())])
-                    }
-                    other => crate::ui::kit::stepper::default_speed_label(other),
-                }),
-                testid: "umeyama-2d-stepper",
-            },
+            steps::stepper_options(),
             move |_| {
                 if let Some(p) = me.upgrade() {
                     p.redraw();
@@ -479,7 +416,7 @@ impl Inner {
         if self.dragging.get().is_none() {
             let scene = self.scene.borrow();
             self.view.borrow_mut().refit_if_needed(&scene);
-            if self.selection_said.get() != Some(self.selection_key(&scene)) {
+            if !self.selection.says(&scene, self.selected.get()) {
                 self.selection_timer.schedule(SELECTION_SETTLE_MS);
             }
         }
@@ -540,18 +477,6 @@ impl Inner {
 
     fn show_refusal(&self, refusal: Option<Refusal>) {
         self.refusal.set(refusal);
-        self.render_refusal();
-    }
-
-    fn render_refusal(&self) {
-        let text = self.refusal.get().map(|r| {
-            ctx::t_args(
-                r.message_id(),
-                &[("count", FluentArg::Number(r.count() as f64))],
-            )
-        });
-        self.message.set_text_content(text.as_deref());
-        dom::show(&self.message, text.is_some());
     }
 
     fn add_point_at(&self, at: [f64; 2]) {
@@ -661,29 +586,14 @@ impl Inner {
 
     // ---------- The selection's status line ----------
 
-    fn selection_key(&self, scene: &Scene) -> SelectionKey {
-        let at = self.selected.get().and_then(|g| {
-            let truth = scene.truth();
-            match g {
-                Grab::Point(i) => scene.x.get(i).copied(),
-                Grab::Translation => Some(truth.t),
-                Grab::Rotation => Some([truth.angle_deg, truth.scale]),
-            }
-            .map(|at| (g, at))
-        });
-        (scene.x.len(), at)
-    }
-
     /// Says the selection now (a pending settled update is dropped).
     fn show_selection_now(&self) {
         self.selection_timer.cancel();
         self.show_selection();
     }
 
-    /// The status line: "Point 3 of 12 selected, at (x, y)…", the handle selected, or that
-    /// none is; written only
-    /// when what it says changed (a polite live region: each write is read out). The view's
-    /// `data-selected` is the selected point's index, `t` or `r` (empty: none), for tests.
+    /// The status line ([`selection::SelectionLine`]) and the view's `data-selected`, when
+    /// what they say changed; a settled run of Shift + arrows also places the touch handles.
     fn show_selection(&self) {
         let Ok(scene) = self.scene.try_borrow() else {
             return;
@@ -695,56 +605,17 @@ impl Inner {
                 self.place_handles(&view, &scene);
             }
         }
-        let key = self.selection_key(&scene);
-        if self.selection_said.replace(Some(key)) == Some(key) {
+        let selected = self.selected.get();
+        if !self.selection.show(&scene, selected) {
             return;
         }
-        let count = FluentArg::Number(scene.x.len() as f64);
-        let truth = scene.truth();
-        let text = match self.selected.get() {
-            Some(Grab::Translation) => ctx::t_args(
-                "umeyama-selected-translation",
-                &[
-                    ("x", FluentArg::Text(num(truth.t[0]))),
-                    ("y", FluentArg::Text(num(truth.t[1]))),
-                ],
-            ),
-            Some(Grab::Rotation) => ctx::t_args(
-                "umeyama-selected-rotation",
-                &[
-                    ("angle", FluentArg::Text(num(truth.angle_deg))),
-                    ("scale", FluentArg::Text(num(truth.scale))),
-                ],
-            ),
-            Some(Grab::Point(i)) => match selected_point(&scene, Some(i)) {
-                Some((i, at)) => ctx::t_args(
-                    "umeyama-selected",
-                    &[
-                        ("n", FluentArg::Number((i + 1) as f64)),
-                        ("count", count),
-                        ("x", FluentArg::Text(num(at[0]))),
-                        ("y", FluentArg::Text(num(at[1]))),
-                    ],
-                ),
-                None => ctx::t_args("umeyama-selected-none", &[("count", count)]),
-            },
-            None => ctx::t_args("umeyama-selected-none", &[("count", count)]),
-        };
         drop(scene);
-        self.selection.set_text_content(Some(&text));
         if let Ok(view) = self.view.try_borrow() {
-            // A point's index, `t` or `r` (empty: none).
-            let said = match self.selected.get() {
-                Some(Grab::Point(i)) => i.to_string(),
-                Some(Grab::Translation) => "t".into(),
-                Some(Grab::Rotation) => "r".into(),
-                None => String::new(),
-            };
             let _ = view
                 .canvas
                 .top()
                 .canvas
-                .set_attribute("data-selected", &said);
+                .set_attribute("data-selected", &selection::selected_attr(selected));
         }
     }
 
@@ -905,31 +776,7 @@ impl Inner {
         if self.dragging.get().is_none() && !self.key_moving.get() {
             self.place_handles(&view, &scene);
         }
-        // Where the points and handles are, for tests and assistive tools (CSS px).
-        let top = &view.canvas.top().canvas;
-        let px_of = |p: [f64; 2]| {
-            let q = view.frame.px(p);
-            format!("{:.1},{:.1}", q.x, q.y)
-        };
-        let truth = scene.truth();
-        let texts = [
-            scene
-                .x
-                .iter()
-                .map(|p| px_of(*p))
-                .collect::<Vec<_>>()
-                .join(";"),
-            px_of(truth.t),
-            px_of(crate::view::umeyama_2d::rotation_handle(&truth)),
-        ];
-        let mut written = self.px_written.borrow_mut();
-        for ((name, text), shown) in PX_ATTRS.iter().zip(texts).zip(written.iter_mut()) {
-            if *shown != text {
-                let _ = top.set_attribute(name, &text);
-                *shown = text;
-            }
-        }
-        drop(written);
+        view.write_px(&scene);
         drop(view);
         self.panel.show(&scene, step);
         self.show_readouts(&scene);

@@ -1,7 +1,8 @@
-//! The step panel under the stepper: the step's title, what it computes (with the numbers of
-//! this run where they matter) and the small matrices it produces, from
-//! [`crate::view::umeyama_2d::shown_for`]. The matrices' tables are built when the step
-//! changes; a drag that only changes their numbers rewrites the cells whose text changed.
+//! The teaching steps: the stepper's model and options, and the step panel under the
+//! stepper: the step's title, what it computes (with the numbers of this run where they
+//! matter) and the small matrices it produces, from [`crate::view::umeyama_2d::shown_for`].
+//! The matrices' tables are built when the step changes; a drag that only changes their
+//! numbers rewrites the cells whose text changed.
 
 use std::cell::RefCell;
 
@@ -9,11 +10,41 @@ use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use crate::ui::kit::form::escape;
+use crate::ui::kit::stepper::{default_speed_label, Length, Speed, StepModel, StepperOptions};
 use crate::ui::{ctx, dom};
 use crate::view::signal::sig;
-use crate::view::umeyama_2d::{shown_for, umeyama_scale, Scene, Shown, Step};
+use crate::view::umeyama_2d::{shown_for, umeyama_scale, Scene, Shown, Step, STEPS};
 
-use super::P;
+use super::markup::P;
+
+/// The stepper's model: which teaching step is shown.
+pub struct StepIndex {
+    pub index: u64,
+}
+
+impl StepModel for StepIndex {
+    fn length(&self) -> Length {
+        Length::Finite(STEPS.len() as u64 - 1)
+    }
+    fn go_to(&mut self, index: u64) {
+        self.index = index.min(STEPS.len() as u64 - 1);
+    }
+}
+
+/// The stepper over the steps: its speeds, labelled in seconds per step.
+pub fn stepper_options() -> StepperOptions {
+    StepperOptions {
+        speeds: [0.5, 1.0, 2.0].map(Speed::PerSecond).to_vec(),
+        initial_speed: 1,
+        speed_label: Box::new(|speed| match speed {
+            Speed::PerSecond(rate) if rate > 0.0 => {
+                ctx::t_args("umeyama-speed", &[("seconds", (1.0 / rate).into())])
+            }
+            other => default_speed_label(other),
+        }),
+        testid: "umeyama-2d-stepper",
+    }
+}
 
 /// The panel component.
 pub struct StepPanel {

@@ -8,6 +8,7 @@
 //! and the labels are small images drawn once per font (canvas text makes Chromium bring the
 //! page's style up to date first, after the form's and the slider's changes), drawn from
 //! `ImageBitmap`s once made: a drag's frame makes a few dozen canvas calls and draws no text.
+//! Where the points and handles are (CSS px) is written on the top canvas for tests.
 
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
@@ -56,7 +57,13 @@ pub struct SceneView {
     grid_drawn: Cell<Option<GridKey>>,
     /// The labels drawn so far, in the label font and pixel ratio they were drawn for.
     labels: RefCell<Labels>,
+    /// The texts of the [`PX_ATTRS`] now.
+    px_written: RefCell<[String; 3]>,
 }
+
+/// Where the points, the translation handle and the rotation handle are (CSS px, for tests
+/// and assistive tools), attributes of the top canvas written only when they change.
+const PX_ATTRS: [&str; 3] = ["data-points-px", "data-handle-t", "data-handle-r"];
 
 /// The label images of one font and pixel ratio.
 #[derive(Default)]
@@ -268,7 +275,35 @@ impl SceneView {
             frame: Frame::fit(([-1.0, -1.0], [1.0, 1.0]), (100.0, 100.0), 0.0),
             grid_drawn: Cell::new(None),
             labels: RefCell::new(Labels::default()),
+            px_written: RefCell::new(Default::default()),
         })
+    }
+
+    /// Writes where the points and handles of `scene` are ([`PX_ATTRS`]) where that changed.
+    pub fn write_px(&self, scene: &Scene) {
+        let top = &self.canvas.top().canvas;
+        let px_of = |p: [f64; 2]| {
+            let q = self.frame.px(p);
+            format!("{:.1},{:.1}", q.x, q.y)
+        };
+        let truth = scene.truth();
+        let texts = [
+            scene
+                .x
+                .iter()
+                .map(|p| px_of(*p))
+                .collect::<Vec<_>>()
+                .join(";"),
+            px_of(truth.t),
+            px_of(rotation_handle(&truth)),
+        ];
+        let mut written = self.px_written.borrow_mut();
+        for ((name, text), shown) in PX_ATTRS.iter().zip(texts).zip(written.iter_mut()) {
+            if *shown != text {
+                let _ = top.set_attribute(name, &text);
+                *shown = text;
+            }
+        }
     }
 
     /// Sizes the canvas to the stage and fits the frame to `scene`.
