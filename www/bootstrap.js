@@ -4,7 +4,7 @@
 try {
   const { default: init, startApp } = await import('../pkg/bsv_playground.js');
   await init();
-  // Marks that tests/e2e/firstframe.bench.mjs reads (wasm compiled and instantiated; the
+  // Marks that tests/bench/firstframe.bench.mjs reads (wasm compiled and instantiated; the
   // shell and the route mounted).
   performance.mark('bsv-wasm-ready');
   startApp();

@@ -1,4 +1,4 @@
-//! Timings for the page benchmarks (`tests/e2e/*.bench.mjs`), in bench builds only: each
+//! Timings for the page benchmarks (`tests/bench/*.bench.mjs`), in bench builds only: each
 //! record is pushed, in milliseconds, to the array `window.<name>` (made on first use), which
 //! the benchmark reads. Without the `bench` cargo feature [`push_ms`] does nothing, so the app
 //! build carries none of it.

@@ -581,7 +581,7 @@ pub fn thinned_columns<const N: usize>(
 }
 
 /// Bench builds keep the duration of every recompute + redraw of a live page, ms, in
-/// `window.__signalFrameMs` (`tests/e2e/signals.bench.mjs` reads it).
+/// `window.__signalFrameMs` (`tests/bench/signals.bench.mjs` reads it).
 pub fn record_frame_ms(ms: f64) {
     crate::ui::kit::bench_log::push_ms("__signalFrameMs", ms, crate::ui::kit::bench_log::KEEP_ALL);
 }

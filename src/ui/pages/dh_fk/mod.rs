@@ -489,7 +489,7 @@ impl Inner {
 }
 
 /// Bench builds keep each draw's and each recompute's duration, ms, in `window.<name>`
-/// (`__dhFrameMs`, `__dhChangeMs`; `tests/e2e/dh_fk.bench.mjs` reads them).
+/// (`__dhFrameMs`, `__dhChangeMs`; `tests/bench/dh_fk.bench.mjs` reads them).
 fn bench_record(name: &str, ms: f64) {
     crate::ui::kit::bench_log::push_ms(name, ms, crate::ui::kit::bench_log::KEEP_ALL);
 }

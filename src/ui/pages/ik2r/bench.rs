@@ -1,4 +1,4 @@
-//! Timing hooks for `tests/e2e/ik2r.bench.mjs`, built only with the `bench` cargo feature
+//! Timing hooks for `tests/bench/ik2r.bench.mjs`, built only with the `bench` cargo feature
 //! (`scripts/bench.sh` builds such a dist; the app build has none of this): the page records
 //! what each real frame cost in `window.__ik2rTimings` (`frame`, `plot`, `heatmap`,
 //! `workspace`: arrays of milliseconds, last 5000 each), and `window.__ik2rBench` runs one

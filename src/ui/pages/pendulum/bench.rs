@@ -1,4 +1,4 @@
-//! Timing hooks for `tests/e2e/pendulum.bench.mjs`, built only with the `bench` cargo feature
+//! Timing hooks for `tests/bench/pendulum.bench.mjs`, built only with the `bench` cargo feature
 //! (`scripts/bench.sh` builds such a dist; the app build has none of this):
 //!
 //! - every real frame's work (advance the tracks, draw the pendulum, append to the plots,

@@ -1,4 +1,4 @@
-//! Timing hooks for `tests/e2e/se3.bench.mjs`, built only with the `bench` cargo feature
+//! Timing hooks for `tests/bench/se3.bench.mjs`, built only with the `bench` cargo feature
 //! (`scripts/bench.sh` builds such a dist): every drag frame's work (hit, drag maths, form,
 //! solve, matrices, readouts, both canvases) is pushed, in milliseconds, to
 //! `window.__se3FrameMs` (the last 5000). Without the feature, nothing.

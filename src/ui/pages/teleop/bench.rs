@@ -1,4 +1,4 @@
-//! Timing hooks for `tests/e2e/teleop.bench.mjs`, built only with the `bench` cargo feature:
+//! Timing hooks for `tests/bench/teleop.bench.mjs`, built only with the `bench` cargo feature:
 //! every live frame's work (poll the devices, step the simulation, draw, readouts), ms, is
 //! pushed to `window.__teleopFrameMs`, and every slice of a file written in slices (an
 //! episode's CSV, the evidence) to `window.__teleopExportMs`, and every slice of a stored
