@@ -133,7 +133,7 @@ pub fn after_paint(f: impl FnOnce() + 'static) -> Result<(), JsValue> {
 
 thread_local! {
     /// The window's `performance`, looked up once: pages read the clock several times a
-    /// frame, and each lookup was two calls into JS.
+    /// frame, and each lookup would be two calls into JS.
     static PERFORMANCE: Option<web_sys::Performance> =
         web_sys::window().and_then(|w| w.performance());
 }
