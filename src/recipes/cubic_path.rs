@@ -15,8 +15,15 @@
 //!   every coefficient finite;
 //! - at most [`MAX_ROWS`] samples.
 
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{
+    lines,
+    series::{BLUE, ORANGE},
+    Picture, Table,
+};
+use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound, Plan};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::pyfmt::{py_float, CsvText};
@@ -64,6 +71,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-cubic-path-quirks",
     plan: plan_of::<Entry>,
     page: Some("cubic-path"),
+    picture,
 };
 
 /// Parameters of the path (the recipe's defaults: 0.0 → 1.2 rad in 1.0 s, dt 0.02 s).
@@ -233,6 +241,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = CubicParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<CubicParams, RecipeError> {
         params_from_args(args)
@@ -255,9 +264,13 @@ impl Kernel for Entry {
     }
 }
 
-/// Runs the recipe from command-line style arguments.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: position and velocity over time.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(FILE_NAME)?)?;
+    Some(lines(
+        &t.col("t_s")?,
+        &[(&t.col("q")?, BLUE), (&t.col("qd")?, ORANGE)],
+    ))
 }
 
 #[cfg(test)]
@@ -267,7 +280,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
+    use crate::recipes::testkit::run_strs;
     use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
 
     #[test]
@@ -303,7 +316,7 @@ mod tests {
             dt_s: 0.1,
         })
         .unwrap();
-        let out = run_strs(INFO.id, &["-0.5", "2", "0.3", "0.1"]).unwrap();
+        let out = run_strs::<Entry>(&["-0.5", "2", "0.3", "0.1"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(path.to_csv().as_str()));
         // np.arange(0, 0.3 + 1e-12, 0.1) has 4 values: 0.30000000000000004 is the last.
         assert_eq!(
@@ -316,7 +329,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            assert_rejects(INFO.id, raw, param, ok)
+            assert_rejects::<Entry>(raw, param, ok)
         };
         use RecipeError as E;
         check(&["0", "1", "0"], "T", |e| {
@@ -345,7 +358,7 @@ mod tests {
         assert!(matches!(nan.validate(), Err(E::NotFinite { .. })));
         // A dt longer than T gives the start sample only.
         assert_eq!(
-            run_strs(INFO.id, &["0", "1", "1", "5"])
+            run_strs::<Entry>(&["0", "1", "1", "5"])
                 .unwrap()
                 .summary
                 .split(' ')

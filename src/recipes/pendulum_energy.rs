@@ -27,8 +27,15 @@
 //! step. With `b = 0` it is conserved up to the integrator's error; the recipe's point-mass
 //! figure is not an energy of this body at all.
 
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, rows_within, ArgKind, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{
+    lines,
+    series::{BLUE, GREEN, ORANGE},
+    Picture, Table,
+};
+use crate::args::{finite, in_range, positive, rows_within, ArgKind, ArgSpec, Args, Bound, Plan};
 use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, CsvText};
 
@@ -123,6 +130,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-pendulum-energy-quirks",
     plan: plan_of::<Entry>,
     page: Some("pendulum-energy"),
+    picture,
 };
 
 /// MuJoCo's integrator choice.
@@ -529,6 +537,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = PendulumParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<PendulumParams, RecipeError> {
         params_from_args(args)
@@ -549,9 +558,18 @@ impl Kernel for Entry {
     }
 }
 
-/// Entry point for the CLI and `runRecipe`.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the kinetic, potential and total energy over time.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(CSV_NAME)?)?;
+    let x = t.col("t_s")?;
+    Some(lines(
+        &x,
+        &[
+            (&t.col("ke_j")?, ORANGE),
+            (&t.col("pe_j")?, GREEN),
+            (&t.col("total_j")?, BLUE),
+        ],
+    ))
 }
 
 #[cfg(test)]
@@ -561,12 +579,13 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::args_strs;
+    use crate::recipes::kernel::run_of;
+    use crate::recipes::testkit::args_strs;
 
     #[test]
     fn arg_defaults_are_the_params_defaults() {
         assert_eq!(
-            PendulumParams::from_args(&args_strs(INFO.id, &[]).unwrap()).unwrap(),
+            PendulumParams::from_args(&args_strs::<Entry>(&[]).unwrap()).unwrap(),
             PendulumParams::default()
         );
     }
@@ -623,7 +642,7 @@ mod tests {
 
     #[test]
     fn row_count_and_summary() {
-        let out = run_args(&args_strs(INFO.id, &["0.1"]).unwrap()).unwrap();
+        let out = run_of::<Entry>(&args_strs::<Entry>(&["0.1"]).unwrap()).unwrap();
         let csv = out.file(CSV_NAME).unwrap();
         assert_eq!(csv.lines().count(), 1 + 50);
         assert!(out
@@ -631,13 +650,14 @@ mod tests {
             .starts_with("wrote 50 rows -> pendulum_energy.csv; energy range"));
         assert!(out.summary.ends_with(" J (damping present)"));
         // Same text without damping, as the recipe prints.
-        let out = run_args(&args_strs(INFO.id, &["0.1", "--damping", "0"]).unwrap()).unwrap();
+        let out =
+            run_of::<Entry>(&args_strs::<Entry>(&["0.1", "--damping", "0"]).unwrap()).unwrap();
         assert!(out.summary.ends_with(" J (damping present)"));
     }
 
     #[test]
     fn rejects_bad_parameters() {
-        let err = |raw: &[&str]| run_args(&args_strs(INFO.id, raw).unwrap()).unwrap_err();
+        let err = |raw: &[&str]| run_of::<Entry>(&args_strs::<Entry>(raw).unwrap()).unwrap_err();
         assert!(matches!(err(&["0"]), RecipeError::NotPositive { .. }));
         assert!(matches!(err(&["0.001"]), RecipeError::OutOfRange { .. }));
         assert!(matches!(

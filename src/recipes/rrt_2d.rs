@@ -33,11 +33,19 @@
 //! as it stood at any earlier iteration without copying it (its tree is a prefix of the
 //! run's; the run logs each iteration's nearest node, so a replay needs no search).
 
-use super::{plan_of, CsvFile, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::{CsvFile, RecipeOutput};
+use super::picture::{
+    pairs,
+    series::{GREY, ORANGE},
+    Mark, Picture, Table, UnitFrame,
+};
+use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound, Plan};
 use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, Cell, CsvText};
 use crate::rng::{check_seed, NumpyRng};
+use glam::DVec2;
 
 mod nearest_index;
 pub use nearest_index::NearestIndex;
@@ -200,6 +208,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-rrt-2d-quirks",
     plan: plan_of::<Entry>,
     page: Some("rrt-2d"),
+    picture,
 };
 
 const PATH_CSV: &str = "rrt_path.csv";
@@ -1280,6 +1289,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = RrtSetup;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<RrtSetup, RecipeError> {
         setup_from_args(args)
@@ -1302,9 +1312,34 @@ impl Kernel for Entry {
     }
 }
 
-/// Runs the recipe from command-line style arguments.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the tree's edges and the path found, in the unit square.
+pub fn picture(output: &RecipeOutput, aspect: f64) -> Option<Picture> {
+    let nodes = Table::parse(output.file(NODES_CSV)?)?;
+    let path = Table::parse(output.file(PATH_CSV)?)?;
+    let pts = pairs(&nodes.col("x")?, &nodes.col("y")?);
+    let parent = nodes.col("parent")?;
+    let frame = UnitFrame::fit([DVec2::ZERO, DVec2::ONE].into_iter(), Some(aspect));
+    let edges = pts
+        .iter()
+        .zip(&parent)
+        .filter(|(_, p)| **p >= 0.0)
+        .filter_map(|(c, p)| Some((frame.map(*c), frame.map(*pts.get(*p as usize)?))))
+        .collect();
+    Some(Picture {
+        marks: vec![
+            Mark::Segments {
+                series: GREY,
+                pairs: edges,
+            },
+            Mark::Line {
+                series: ORANGE,
+                points: pairs(&path.col("x")?, &path.col("y")?)
+                    .into_iter()
+                    .map(|p| frame.map(p))
+                    .collect(),
+            },
+        ],
+    })
 }
 
 #[cfg(test)]
@@ -1314,7 +1349,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
+    use crate::recipes::testkit::run_strs;
 
     /// Steps a tree to the end, checking that each event changes the tree as it says.
     fn step_to_end(params: &RrtParams) -> (Rrt, Vec<RrtStep>) {
@@ -1430,7 +1465,7 @@ mod tests {
             }
         )));
 
-        let out = run_strs(INFO.id, &["7", "300", "--goal-x", "0.5", "--goal-y=0.5"]).unwrap();
+        let out = run_strs::<Entry>(&["7", "300", "--goal-x", "0.5", "--goal-y=0.5"]).unwrap();
         assert_eq!(out.file("rrt_path.csv"), Some("x,y\r\n"));
         assert_eq!(
             out.summary,
@@ -1455,7 +1490,7 @@ mod tests {
 
     #[test]
     fn zero_iterations_write_only_the_start() {
-        let out = run_strs(INFO.id, &["7", "0"]).unwrap();
+        let out = run_strs::<Entry>(&["7", "0"]).unwrap();
         assert_eq!(
             out.file("rrt_nodes.csv"),
             Some("id,x,y,parent\r\n0,0.1,0.1,-1\r\n")
@@ -1481,7 +1516,7 @@ mod tests {
 
     #[test]
     fn rejects_bad_arguments() {
-        let err = |v: &[&str]| run_strs(INFO.id, v).unwrap_err();
+        let err = |v: &[&str]| run_strs::<Entry>(v).unwrap_err();
         assert!(matches!(err(&["-1"]), RecipeError::OutOfRange { .. }));
         assert!(matches!(
             err(&["9223372036854775808"]),

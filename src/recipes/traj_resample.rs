@@ -23,11 +23,19 @@
 //! dropped, as in the recipe. Rows are the 1-based line of the file a record starts on (the
 //! header is row 1).
 
+use glam::DVec2;
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 
-use super::{plan_of, CsvFile, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, positive, rows_within, ArgKind, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::{CsvFile, RecipeOutput};
+use super::picture::{
+    pairs,
+    series::{BLUE, ORANGE},
+    Mark, Picture, Table, UnitFrame,
+};
+use crate::args::{finite, positive, rows_within, ArgKind, ArgSpec, Args, Bound, Plan};
 use crate::error::RecipeError;
 use crate::numpy::{arange, arange_len};
 use crate::pyfmt::{push_fixed, py_float, CsvText};
@@ -94,6 +102,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-traj-resample-quirks",
     plan: plan_of::<Entry>,
     page: Some("traj-resample"),
+    picture,
 };
 
 /// The recipe's arguments; `Default` is the recipe's (the sample, 0.02 s).
@@ -848,6 +857,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = ResampleParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<ResampleParams, RecipeError> {
         params_from_args(args)
@@ -878,9 +888,42 @@ impl Kernel for Entry {
     }
 }
 
-/// Entry point for the CLI and `runRecipe`.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the resampled joints as lines over the labelled samples as dots.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(RESAMPLED_NAME)?)?;
+    let raw = Table::parse(output.file(SAMPLE_NAME)?)?;
+    let x = t.col("t_s")?;
+    let (q1, q2) = (t.col("q1")?, t.col("q2")?);
+    let (rx, r1, r2) = (raw.col("t_s")?, raw.col("q1")?, raw.col("q2")?);
+    let frame = UnitFrame::fit(
+        pairs(&x, &q1)
+            .into_iter()
+            .chain(pairs(&x, &q2))
+            .chain(pairs(&rx, &r1))
+            .chain(pairs(&rx, &r2)),
+        None,
+    );
+    let m = |v: Vec<DVec2>| v.into_iter().map(|p| frame.map(p)).collect::<Vec<_>>();
+    Some(Picture {
+        marks: vec![
+            Mark::Line {
+                series: BLUE,
+                points: m(pairs(&x, &q1)),
+            },
+            Mark::Line {
+                series: ORANGE,
+                points: m(pairs(&x, &q2)),
+            },
+            Mark::Dots {
+                series: BLUE,
+                points: m(pairs(&rx, &r1)),
+            },
+            Mark::Dots {
+                series: ORANGE,
+                points: m(pairs(&rx, &r2)),
+            },
+        ],
+    })
 }
 
 #[cfg(test)]
@@ -890,7 +933,8 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::args_strs;
+    use crate::recipes::kernel::run_of;
+    use crate::recipes::testkit::args_strs;
 
     fn parse_err(text: &str) -> RecipeError {
         parse_trajectory(text).unwrap_err()
@@ -906,7 +950,7 @@ mod tests {
 
     #[test]
     fn sample_resamples_like_the_recipe() {
-        let out = run_args(&Args::default()).unwrap();
+        let out = run_of::<Entry>(&Args::default()).unwrap();
         assert_eq!(
             out.summary,
             "wrote labeled synthetic sample: traj_sample_labeled.csv\n\
@@ -920,7 +964,7 @@ mod tests {
 
     #[test]
     fn reference_runs_are_byte_identical() {
-        let out = run_args(&Args::default()).unwrap();
+        let out = run_of::<Entry>(&Args::default()).unwrap();
         assert_eq!(
             out.file(RESAMPLED_NAME),
             Some(include_str!(
@@ -953,20 +997,20 @@ mod tests {
 
     #[test]
     fn empty_path_means_the_sample_and_unknown_paths_are_named() {
-        let args = args_strs(INFO.id, &["", "0.05"]).unwrap();
-        assert!(run_args(&args)
+        let args = args_strs::<Entry>(&["", "0.05"]).unwrap();
+        assert!(run_of::<Entry>(&args)
             .unwrap()
             .summary
             .contains("resampled 5 -> 12 rows"));
-        let args = args_strs(INFO.id, &["mine.csv"]).unwrap();
+        let args = args_strs::<Entry>(&["mine.csv"]).unwrap();
         assert_eq!(
-            run_args(&args).unwrap_err(),
+            run_of::<Entry>(&args).unwrap_err(),
             RecipeError::InputMissing {
                 name: "mine.csv".into()
             }
         );
         let args = args.with_inputs(vec![("mine.csv".into(), "t_s,a\n0,1\n1,3\n".into())]);
-        let out = run_args(&args).unwrap();
+        let out = run_of::<Entry>(&args).unwrap();
         assert_eq!(
             out.summary,
             "resampled 2 -> 51 rows at dt=0.02s -> traj_resampled.csv"

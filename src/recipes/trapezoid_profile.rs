@@ -25,7 +25,10 @@
 //!   `d_acc` finite (Python raises OverflowError on `t_acc ** 2`). Signs are dropped as in the
 //!   recipe (`abs()`), so the range applies to the magnitude.
 
-use super::{plan_of, Kernel, Progress, RecipeInfo, RecipeOutput};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{lines, series::BLUE, Picture, Table};
 use crate::args::{finite, positive, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::pyfmt::{fixed, py_round, CsvText};
@@ -67,6 +70,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-trapezoid-profile-quirks",
     plan: plan_of::<Entry>,
     page: Some("trapezoid-profile"),
+    picture,
 };
 
 /// Move and sampling parameters (the recipe's defaults: 1.0, 0.5, 1.0, dt 0.01 s).
@@ -359,13 +363,14 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = TrapParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<TrapParams, RecipeError> {
         params_from_args(args)
     }
 
-    fn plan(params: &TrapParams, _args: &Args) -> Result<super::Plan, RecipeError> {
-        Ok(super::Plan {
+    fn plan(params: &TrapParams, _args: &Args) -> Result<crate::args::Plan, RecipeError> {
+        Ok(crate::args::Plan {
             rows: params.rows_estimate(),
         })
     }
@@ -381,9 +386,10 @@ impl Kernel for Entry {
     }
 }
 
-/// Runs the recipe from command-line style arguments.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the velocity over time.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(FILE_NAME)?)?;
+    Some(lines(&t.col("t")?, &[(&t.col("v")?, BLUE)]))
 }
 
 #[cfg(test)]
@@ -393,7 +399,7 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
+    use crate::recipes::testkit::run_strs;
     use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
 
     #[test]
@@ -406,7 +412,7 @@ mod tests {
         let p = compute(&TrapParams::default()).unwrap();
         assert!(!p.triangle);
         assert_eq!(p.samples[1].s, 5e-05);
-        let tri = run_strs(INFO.id, &["0.2", "1.0", "2.0", "0.005"]).unwrap();
+        let tri = run_strs::<Entry>(&["0.2", "1.0", "2.0", "0.005"]).unwrap();
         assert_eq!(
             tri.summary,
             "wrote 127 samples t_total=0.6325s vmax_used=0.6325 -> trap_profile.csv"
@@ -415,15 +421,15 @@ mod tests {
 
     #[test]
     fn signs_are_dropped_like_abs() {
-        let a = run_strs(INFO.id, &["-1.0", "-0.5", "-1.0", "0.01"]).unwrap();
-        let b = run_strs(INFO.id, &[]).unwrap();
+        let a = run_strs::<Entry>(&["-1.0", "-0.5", "-1.0", "0.01"]).unwrap();
+        let b = run_strs::<Entry>(&[]).unwrap();
         assert_eq!(a, b);
     }
 
     #[test]
     fn zero_distance_is_one_row_with_the_triangle_quirk() {
         // Python: t_total = 0, one decel row whose s is the untruncated d_acc = 0.125.
-        let out = run_strs(INFO.id, &["0", "0.5", "1.0", "0.01"]).unwrap();
+        let out = run_strs::<Entry>(&["0", "0.5", "1.0", "0.01"]).unwrap();
         assert_eq!(
             out.file(FILE_NAME),
             Some("t,s,v,a\r\n0.0,0.125,0.0,-1.0\r\n")
@@ -443,7 +449,7 @@ mod tests {
             dt: 0.07,
         };
         let p = compute(&params).unwrap();
-        let out = run_strs(INFO.id, &["3", "2", "4", "0.07"]).unwrap();
+        let out = run_strs::<Entry>(&["3", "2", "4", "0.07"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(p.to_csv().as_str()));
         assert_eq!(out.summary, p.summary());
         // Cruise phase present; ends at rest at the full distance.
@@ -455,7 +461,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            assert_rejects(INFO.id, raw, param, ok)
+            assert_rejects::<Entry>(raw, param, ok)
         };
         use RecipeError as E;
         check(&["1", "0.5", "1", "0"], "dt", |e| {
@@ -490,7 +496,7 @@ mod tests {
             ["1e9", "1e9", "1e-9", "1e30"],
             ["1e-300", "1e9", "1e-9", "1"],
         ] {
-            match run_strs(INFO.id, &raw) {
+            match run_strs::<Entry>(&raw) {
                 Ok(out) => assert!(!out.file(FILE_NAME).unwrap().contains("inf")),
                 Err(e) => assert!(matches!(e, E::TooLarge { .. }), "{raw:?} {e:?}"),
             }

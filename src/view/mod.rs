@@ -9,7 +9,7 @@
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
 //! - [`palette`]: the Okabe–Ito colours of plot series and view marks (colour-blind safe).
 //! - [`card_picture`]: the home page's recipe-card pictures, drawn from each kernel's defaults.
-//! - [`camera3d`]: the orbit camera of the 3D views (projection, orbit, zoom, presets, hits).
+//! - [`camera3d`]: the orbit camera of the 3D views ([`crate::camera3d`], re-exported).
 //! - [`drill_chain`]: the seed's "next step" chain of drills at the foot of each drill page.
 //! - [`lesson`]: lessons (steps of page states), their URL and file forms, the presenter.
 //! - [`scene3d`]: what a 3D view draws (lines, arrows, triads, grid), projected and
@@ -39,7 +39,7 @@
 //! - [`progress`]: the progress panel of long runs (percent, rows, time left).
 //! - [`worker`]: the preview head of a file a worker run sends back.
 
-pub mod camera3d;
+pub use crate::camera3d;
 pub mod card_picture;
 pub mod command_line;
 pub mod cubic_path;
