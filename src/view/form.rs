@@ -11,75 +11,9 @@
 //!
 //! `kit::form` (wasm) draws this model; this file is plain Rust, tested natively.
 
-use crate::args::{ArgKind, ArgSpec, Bound};
+pub use super::field::{recipe_fields, typed, FieldDef};
 use crate::error::RecipeError;
 use crate::i18n::FluentArg;
-use crate::recipes::RecipeInfo;
-
-/// One field of the form.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FieldDef {
-    /// The argument it sets (name, default, kind, unit, limits, hint id).
-    pub spec: &'static ArgSpec,
-    /// A `--flag` option (after the positional arguments on the command line).
-    pub flag: bool,
-    /// Fluent id of the label (`recipe-<id>-arg-<name>` / `-flag-<name>`).
-    pub label_id: String,
-    /// The fieldset it belongs to (an index into the form's groups).
-    pub group: usize,
-}
-
-impl FieldDef {
-    /// The argument's name (`data-field`, URL key, command-line flag).
-    pub fn name(&self) -> &'static str {
-        self.spec.name
-    }
-
-    /// The recipe's default, as the recipe writes it.
-    pub fn default(&self) -> &'static str {
-        self.spec.default
-    }
-
-    /// The field is traj-resample-style file input (a picker, not a text box).
-    pub fn is_file(&self) -> bool {
-        self.spec.kind == ArgKind::File
-    }
-
-    /// The phone keypad: `numeric` for whole numbers, `decimal` for numbers that are never
-    /// negative, `text` where a minus sign or commas are needed (phone decimal pads often
-    /// have no minus key).
-    pub fn inputmode(&self) -> &'static str {
-        match self.spec.kind {
-            ArgKind::Integer | ArgKind::Seed => "numeric",
-            ArgKind::Number if never_negative(self.spec.min) => "decimal",
-            _ => "text",
-        }
-    }
-
-    /// A wide field (a list, points or a file takes a whole row).
-    pub fn is_wide(&self) -> bool {
-        matches!(
-            self.spec.kind,
-            ArgKind::List { .. } | ArgKind::File | ArgKind::Points
-        )
-    }
-}
-
-fn never_negative(min: Bound) -> bool {
-    min.value().is_some_and(|m| m >= 0.0)
-}
-
-/// The fields of a recipe: its positional arguments (group 0) then its options (group 1).
-pub fn recipe_fields(info: &RecipeInfo) -> Vec<FieldDef> {
-    info.all_args()
-        .map(|(spec, flag)| FieldDef {
-            spec,
-            flag,
-            label_id: spec.label_id(info.id, flag),
-            group: usize::from(flag),
-        })
-        .collect()
-}
 
 /// Runs whose plan (the recipe's rows of work) is at most this many rows run while the user
 /// types; bigger ones wait for Run (they may take from a fraction of a second to a few
@@ -89,15 +23,6 @@ pub const AUTO_RUN_MAX_ROWS: u64 = 50_000;
 /// Whether a run of `rows` (`None`: only the run can size it) may start while the user types.
 pub fn runs_while_typing(rows: Option<u64>) -> bool {
     rows.is_some_and(|r| r <= AUTO_RUN_MAX_ROWS)
-}
-
-/// The text typed in each field, trimmed, `None` where it is blank (blank = the default).
-pub fn typed(texts: &[Option<String>], index: usize) -> Option<&str> {
-    texts
-        .get(index)
-        .and_then(|t| t.as_deref())
-        .map(str::trim)
-        .filter(|t| !t.is_empty())
 }
 
 /// What validation found.

@@ -2,8 +2,8 @@
 //! natively (the wasm-only `crate::ui` module draws what these compute).
 //!
 //! - [`url`]: the URL codec (`#/<page>?k=v`, percent-encoding, `lang`).
-//! - [`form`]: the parameter form's fields and validation; [`command_line`]: `bsv` / `python`
-//!   lines of a run; [`table`]: CSV previews and rounded cells.
+//! - [`field`], [`form`]: the parameter form's fields and validation; [`command_line`]:
+//!   `bsv` / `python` lines of a run; [`table`]: CSV previews and rounded cells.
 //! - [`stepper`]: the stepper's state machine (step, back, play at a speed, scrub).
 //! - [`plot`]: scales, ticks, y ranges, cursor lookup, min/max decimation of the kit plot.
 //! - [`heatmap`]: colour map, RGBA fill, node grid and layout of the kit heatmap.
@@ -48,6 +48,7 @@ pub mod drag;
 pub mod drill_chain;
 pub mod drills;
 pub mod envelope;
+pub mod field;
 pub mod form;
 pub mod heatmap;
 pub mod ik2r;
