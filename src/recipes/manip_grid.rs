@@ -392,7 +392,7 @@ mod tests {
         ] {
             assert_rejects::<Entry>(raw, param, |e| matches!(e, RecipeError::OutOfRange { .. }));
         }
-        // Whole numbers in any notation are accepted (issue 8); a fraction is not.
+        // Whole numbers in any notation are accepted; a fraction is not.
         let e = run_strs::<Entry>(&["0.12", "0.10", "24.5"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotAnInteger { .. }) && e.param() == Some("n"));
         for whole in ["24.0", "2.4e1", "24"] {

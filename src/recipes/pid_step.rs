@@ -444,7 +444,7 @@ mod tests {
         check(&["1", "1", "1", "1", "80.5"], "steps", |e| {
             matches!(e, E::NotAnInteger { .. })
         });
-        // Whole numbers in any notation (issue 8): "80.0" and "8e1" are 80 steps.
+        // Whole numbers in any notation: "80.0" and "8e1" are 80 steps.
         for whole in ["80.0", "8e1"] {
             let out = run_strs::<Entry>(&["1.2", "0.4", "0.05", "0.8", whole]).unwrap();
             assert_eq!(

@@ -68,8 +68,7 @@ pub const ARGS: [ArgSpec; 2] = [
     .hint("recipe-rrt-2d-hint-max_iter"),
 ];
 
-/// The goal's coordinates (`--goal-x`, `--goal-y`), the first options of this port: aliases
-/// of `--goal`'s coordinates.
+/// The goal's coordinates (`--goal-x`, `--goal-y`): aliases of `--goal`'s coordinates.
 pub const FLAGS: [ArgSpec; 2] = [
     ArgSpec::number(
         "goal-x",

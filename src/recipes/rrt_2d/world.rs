@@ -239,7 +239,7 @@ pub(super) fn check_box(i: usize, b: &Obstacle) -> Result<(), RecipeError> {
 
 /// Everything a run needs: the recipe's parameters, the world, and whether the goal was
 /// given with `--goal` (then a goal inside a box is refused; through `--goal-x`/`--goal-y`
-/// alone it is allowed, as before, and the run warns).
+/// alone it is allowed, and the run warns).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct RrtSetup {
     pub params: RrtParams,
