@@ -16,7 +16,7 @@
 //! - at most [`MAX_ROWS`] samples.
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
 use super::output::RecipeOutput;
 use super::picture::{
     lines,
@@ -26,7 +26,7 @@ use super::picture::{
 use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound, Plan};
 use crate::error::RecipeError;
 use crate::numpy;
-use crate::pyfmt::{py_float, CsvText};
+use crate::pyfmt::py_float;
 
 /// Largest waypoint magnitude, rad (or whatever unit the user means): keeps `q1 - q0` and the
 /// coefficients finite.
@@ -203,13 +203,8 @@ impl CubicPath {
 
     /// [`Self::to_csv`] reporting its rows as the second half of `progress`.
     pub fn to_csv_with(&self, progress: &mut Progress) -> String {
-        let mut csv = CsvText::with_header(&HEADER);
-        let n = self.samples.len() as u64;
-        for (k, s) in self.samples.iter().enumerate() {
-            progress.phase_at(1, 2, k as u64, n);
-            csv.floats(&[s.t, s.q, s.qd, s.qdd]);
-        }
-        csv.finish()
+        let rows = self.samples.iter().map(|s| [s.t, s.q, s.qd, s.qdd]);
+        float_csv_with(&HEADER, rows, progress)
     }
 
     /// The line the recipe prints (numbers as Python's `repr`).
@@ -275,18 +270,11 @@ pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::testkit::run_strs;
-    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
-    }
+    use crate::recipes::testkit::{assert_rejects, run_strs};
 
     #[test]
     fn reference_rows_and_boundary_conditions() {

@@ -351,21 +351,12 @@ pub fn picture(output: &RecipeOutput, aspect: f64) -> Option<Picture> {
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
     use crate::recipes::kernel::run_of;
     use crate::recipes::testkit::run_strs;
-
-    #[test]
-    fn arg_defaults_are_the_params_defaults() {
-        assert_eq!(
-            DhParams::from_args(&Args::default()).unwrap(),
-            DhParams::default()
-        );
-    }
 
     #[test]
     fn reference_runs_are_byte_identical() {

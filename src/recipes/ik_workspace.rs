@@ -365,7 +365,6 @@ pub fn picture(output: &RecipeOutput, aspect: f64) -> Option<Picture> {
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
@@ -416,12 +415,6 @@ mod tests {
                 }
             }
         }
-    }
-
-    #[test]
-    fn defaults_in_one_place() {
-        let parsed = params_from_args(&Args::default()).unwrap();
-        assert_eq!(parsed, WorkspaceParams::default());
     }
 
     #[test]

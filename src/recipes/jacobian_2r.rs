@@ -22,7 +22,7 @@
 
 use super::ik_workspace::{check_link_m, LINK_ARGS};
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
 use super::output::RecipeOutput;
 use super::picture::{
     pairs,
@@ -33,7 +33,7 @@ use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound,
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{self, Arm};
-use crate::pyfmt::{fixed, CsvText};
+use crate::pyfmt::fixed;
 use glam::DVec2;
 
 /// Largest joint angle magnitude accepted, rad (about 160 turns): keeps `q1_stop + 1e-12`
@@ -257,11 +257,8 @@ pub fn to_csv(samples: &[JacobianSample]) -> String {
 
 /// [`to_csv`] reporting its rows as the second half of `progress`.
 pub fn to_csv_with(samples: &[JacobianSample], progress: &mut Progress) -> String {
-    let mut csv = CsvText::with_header(&HEADER);
-    let n = samples.len() as u64;
-    for (k, s) in samples.iter().enumerate() {
-        progress.phase_at(1, 2, k as u64, n);
-        csv.floats(&[
+    let rows = samples.iter().map(|s| {
+        [
             s.q1,
             s.q2,
             s.x,
@@ -270,9 +267,9 @@ pub fn to_csv_with(samples: &[JacobianSample], progress: &mut Progress) -> Strin
             s.manipulability,
             s.sigma_min,
             s.sigma_max,
-        ]);
-    }
-    csv.finish()
+        ]
+    });
+    float_csv_with(&HEADER, rows, progress)
 }
 
 /// The line the recipe prints (`min manip` with 4 decimals). An empty slice, which
@@ -362,21 +359,14 @@ pub fn picture(output: &RecipeOutput, aspect: f64) -> Option<Picture> {
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::testkit::run_strs;
-    use crate::recipes::testkit::{self, assert_defaults_in_one_place};
+    use crate::recipes::testkit::{self, run_strs};
 
     fn assert_rejects(raw: &[&str], param: &str, check: fn(&RecipeError) -> bool) {
         testkit::assert_rejects::<Entry>(raw, param, check)
-    }
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
     }
 
     #[test]

@@ -5,6 +5,7 @@ use super::info::RecipeInfo;
 use super::output::RecipeOutput;
 use crate::args::{Args, Plan};
 use crate::error::RecipeError;
+use crate::pyfmt::CsvText;
 
 /// Progress of a run: `report(done, total)` rows of work, called at most every ~1 % of
 /// `total` (and once at the end). Counting never changes what a recipe computes.
@@ -136,4 +137,21 @@ impl Recipe {
             run_progress: run_progress_of::<K>,
         }
     }
+}
+
+/// A CSV of `header` and one row of floats (as Python prints them) per item of `rows`,
+/// reporting its rows as the second half of `progress`: the writing phase of a run that
+/// computes its rows first.
+pub fn float_csv_with<const N: usize>(
+    header: &[&str],
+    rows: impl ExactSizeIterator<Item = [f64; N]>,
+    progress: &mut Progress,
+) -> String {
+    let mut csv = CsvText::with_header(header);
+    let n = rows.len() as u64;
+    for (k, row) in rows.enumerate() {
+        progress.phase_at(1, 2, k as u64, n);
+        csv.floats(&row);
+    }
+    csv.finish()
 }

@@ -301,18 +301,11 @@ pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::testkit::run_strs;
-    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
-    }
+    use crate::recipes::testkit::{assert_rejects, run_strs};
 
     #[test]
     fn default_grid_matches_reference() {

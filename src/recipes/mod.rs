@@ -132,11 +132,10 @@ pub fn decode_input(name: &str, bytes: &[u8]) -> Result<String, RecipeError> {
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
-    use super::testkit::strings;
+    use super::testkit::{assert_defaults_in_one_place, strings};
     use super::*;
     use crate::args::{ArgKind, Bound};
     use crate::error::RecipeWarning;
@@ -292,6 +291,23 @@ mod tests {
             }
         }
         assert!(checked >= 40, "{checked}");
+    }
+
+    /// Each recipe's arguments left off give its `Params::default()`.
+    #[test]
+    fn defaults_in_one_place() {
+        assert_defaults_in_one_place::<pendulum_energy::Entry>();
+        assert_defaults_in_one_place::<ik_workspace::Entry>();
+        assert_defaults_in_one_place::<traj_resample::Entry>();
+        assert_defaults_in_one_place::<dh_fk::Entry>();
+        assert_defaults_in_one_place::<jacobian_2r::Entry>();
+        assert_defaults_in_one_place::<cubic_path::Entry>();
+        assert_defaults_in_one_place::<se3_relative::Entry>();
+        assert_defaults_in_one_place::<rrt_2d::Entry>();
+        assert_defaults_in_one_place::<pid_step::Entry>();
+        assert_defaults_in_one_place::<manip_grid::Entry>();
+        assert_defaults_in_one_place::<trapezoid_profile::Entry>();
+        assert_defaults_in_one_place::<umeyama_2d::Entry>();
     }
 
     #[test]

@@ -19,7 +19,7 @@
 //!   then `nan`, and the table shows that exactly as Python prints it.
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
 use super::output::RecipeOutput;
 use super::picture::{
     lines,
@@ -31,7 +31,7 @@ use crate::args::{
 };
 use crate::error::RecipeError;
 use crate::error::RecipeWarning;
-use crate::pyfmt::{fixed, py_round, CsvText};
+use crate::pyfmt::{fixed, py_round};
 
 /// Controller and plant sample period, s (fixed in the recipe).
 pub const DT_S: f64 = 0.05;
@@ -246,13 +246,8 @@ pub fn to_csv(samples: &[PidSample]) -> String {
 
 /// [`to_csv`] reporting its rows as the second half of `progress`.
 pub fn to_csv_with(samples: &[PidSample], progress: &mut Progress) -> String {
-    let mut csv = CsvText::with_header(&HEADER);
-    let n = samples.len() as u64;
-    for (k, s) in samples.iter().enumerate() {
-        progress.phase_at(1, 2, k as u64, n);
-        csv.floats(&[s.t, s.r, s.y, s.u, s.e]);
-    }
-    csv.finish()
+    let rows = samples.iter().map(|s| [s.t, s.r, s.y, s.u, s.e]);
+    float_csv_with(&HEADER, rows, progress)
 }
 
 /// What looks wrong with a response: an output that overflowed (not finite from some step
@@ -334,18 +329,11 @@ pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::testkit::run_strs;
-    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
-    }
+    use crate::recipes::testkit::{assert_rejects, run_strs};
 
     #[test]
     fn round_is_pythons() {

@@ -351,21 +351,12 @@ pub fn picture(_output: &RecipeOutput, aspect: f64) -> Option<Picture> {
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
     use crate::recipes::kernel::run_of;
     use crate::recipes::testkit::args_strs;
-
-    #[test]
-    fn arg_defaults_are_the_params_defaults() {
-        assert_eq!(
-            Se3Params::from_args(&Args::default()).unwrap(),
-            Se3Params::default()
-        );
-    }
 
     #[test]
     fn default_run_is_byte_identical_to_the_reference() {

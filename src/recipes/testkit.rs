@@ -1,5 +1,8 @@
 //! What the recipes' unit tests share: running a kernel from string slices, checking that the
 //! defaults live in one place, and that a rejection names the right argument.
+//!
+//! The test modules alias `wasm_bindgen_test` as `test` under wasm32, so the same tests run
+//! natively and, under `wasm-pack test --node`, as wasm.
 
 use std::fmt::Debug;
 

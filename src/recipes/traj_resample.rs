@@ -410,24 +410,8 @@ impl Shape {
 /// Reads the [`Shape`] of a trajectory CSV (see there); errors are those the header and the
 /// first and last lines show (the run checks every line).
 pub fn shape_of(text: &str) -> Result<Shape, RecipeError> {
-    let bytes = text.len() as u64;
-    if bytes > MAX_INPUT_BYTES {
-        return Err(RecipeError::InputTooLarge {
-            bytes,
-            limit: MAX_INPUT_BYTES,
-        });
-    }
-    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut reader = CsvReader::new(body);
+    let (mut reader, header, layout) = open_csv(text, MAX_INPUT_BYTES)?;
     let mut fields: Vec<Cow<'_, str>> = Vec::new();
-    let Some(_) = reader.next_record(&mut fields)? else {
-        return Err(RecipeError::CsvTooFewRows {
-            rows: 0,
-            min: MIN_ROWS,
-        });
-    };
-    let header: Vec<String> = fields.iter().map(|f| f.to_string()).collect();
-    let layout = ColumnLayout::new(&header)?;
     let time_index = layout.slots.iter().position(|s| matches!(s, Slot::Time));
     let time_of = |fields: &[Cow<'_, str>]| -> Option<f64> {
         time_index
@@ -483,13 +467,12 @@ fn parse_with_limits(
     parse_limited(text, max_bytes, max_cells, &mut Progress::silent())
 }
 
-/// [`parse_with_limits`] reporting bytes read as the first third of `progress`.
-fn parse_limited(
+/// A trajectory CSV of at most `max_bytes` opened past its header (a byte-order mark
+/// dropped): the reader, the header and its column layout.
+fn open_csv(
     text: &str,
     max_bytes: u64,
-    max_cells: u64,
-    progress: &mut Progress,
-) -> Result<Trajectory, RecipeError> {
+) -> Result<(CsvReader<'_>, Vec<String>, ColumnLayout), RecipeError> {
     let bytes = text.len() as u64;
     if bytes > max_bytes {
         return Err(RecipeError::InputTooLarge {
@@ -497,10 +480,9 @@ fn parse_limited(
             limit: max_bytes,
         });
     }
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut reader = CsvReader::new(text);
+    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut reader = CsvReader::new(body);
     let mut fields: Vec<Cow<'_, str>> = Vec::new();
-
     let Some(_) = reader.next_record(&mut fields)? else {
         return Err(RecipeError::CsvTooFewRows {
             rows: 0,
@@ -509,12 +491,24 @@ fn parse_limited(
     };
     let header: Vec<String> = fields.iter().map(|f| f.to_string()).collect();
     let layout = ColumnLayout::new(&header)?;
+    Ok((reader, header, layout))
+}
+
+/// [`parse_with_limits`] reporting bytes read as the first third of `progress`.
+fn parse_limited(
+    text: &str,
+    max_bytes: u64,
+    max_cells: u64,
+    progress: &mut Progress,
+) -> Result<Trajectory, RecipeError> {
+    let (mut reader, header, layout) = open_csv(text, max_bytes)?;
+    let mut fields: Vec<Cow<'_, str>> = Vec::new();
 
     let mut t: Vec<f64> = Vec::new();
     let mut q: Vec<Vec<f64>> = vec![Vec::new(); layout.joint_names.len()];
     let mut row_values = vec![0.0; layout.joint_names.len()];
     let cells_per_row = 1 + layout.joint_names.len() as u64;
-    let total_bytes = text.len() as u64;
+    let total_bytes = reader.text.len() as u64;
     while let Some(row) = reader.next_record(&mut fields)? {
         progress.phase_at(0, 3, reader.pos as u64, total_bytes);
         if fields.len() != header.len() {

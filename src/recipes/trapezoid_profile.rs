@@ -26,12 +26,12 @@
 //!   recipe (`abs()`), so the range applies to the magnitude.
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
 use super::output::RecipeOutput;
 use super::picture::{lines, series::BLUE, Picture, Table};
 use crate::args::{finite, positive, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
-use crate::pyfmt::{fixed, py_round, CsvText};
+use crate::pyfmt::{fixed, py_round};
 
 /// Smallest accepted `|vmax|`, `|amax|` (non-zero).
 pub const MAGNITUDE_MIN: f64 = 1e-9;
@@ -326,13 +326,8 @@ impl Profile {
 
     /// [`Self::to_csv`] reporting its rows as the second half of `progress`.
     pub fn to_csv_with(&self, progress: &mut Progress) -> String {
-        let mut csv = CsvText::with_header(&HEADER);
-        let n = self.samples.len() as u64;
-        for (k, s) in self.samples.iter().enumerate() {
-            progress.phase_at(1, 2, k as u64, n);
-            csv.floats(&[s.t, s.s, s.v, s.a]);
-        }
-        csv.finish()
+        let rows = self.samples.iter().map(|s| [s.t, s.s, s.v, s.a]);
+        float_csv_with(&HEADER, rows, progress)
     }
 
     /// The line the recipe prints.
@@ -394,18 +389,11 @@ pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::testkit::run_strs;
-    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
-    }
+    use crate::recipes::testkit::{assert_rejects, run_strs};
 
     #[test]
     fn trapezoid_and_triangle_reference_summaries() {

@@ -1,4 +1,3 @@
-// The same tests run natively and, under `wasm-pack test --node`, as wasm.
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
