@@ -77,3 +77,21 @@ pub fn typed(texts: &[Option<String>], index: usize) -> Option<&str> {
         .map(str::trim)
         .filter(|t| !t.is_empty())
 }
+
+/// The fields' label and hint ids that have no message in some language (`"ja: <id>"`).
+#[cfg(test)]
+pub(crate) fn missing_messages(fields: &[FieldDef]) -> Vec<String> {
+    use crate::i18n::{I18n, Lang};
+    let i18n = I18n::new();
+    let mut missing = Vec::new();
+    for field in fields {
+        for lang in Lang::ALL {
+            for id in [field.label_id.as_str(), field.spec.hint_id] {
+                if !i18n.has_message(lang, id) {
+                    missing.push(format!("{}: {id}", lang.code()));
+                }
+            }
+        }
+    }
+    missing
+}

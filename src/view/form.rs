@@ -13,6 +13,7 @@
 
 pub use super::field::{recipe_fields, typed, FieldDef};
 use crate::error::RecipeError;
+pub use crate::i18n::fluent_args;
 use crate::i18n::FluentArg;
 
 /// Runs whose plan (the recipe's rows of work) is at most this many rows run while the user
@@ -177,26 +178,13 @@ pub fn error_args(
     fluent_args(error.message_args_labelled(label))
 }
 
-/// Text arguments as Fluent arguments, whole-number texts as numbers.
-pub fn fluent_args(args: Vec<(&'static str, String)>) -> Vec<(&'static str, FluentArg)> {
-    args.into_iter()
-        .map(|(name, value)| {
-            let is_count = !value.is_empty() && value.bytes().all(|b| b.is_ascii_digit());
-            let arg = match value.parse::<u64>() {
-                Ok(count) if is_count => FluentArg::Number(count as f64),
-                _ => FluentArg::Text(value),
-            };
-            (name, arg)
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::args::Args;
     use crate::i18n::{I18n, Lang};
     use crate::recipes::{self, RECIPES};
+    use crate::view::field::missing_messages;
 
     /// The recipe's own plan (parse + validate) on the form's texts, as the drills page runs it.
     fn checker(id: &'static str) -> impl Fn(&[Option<String>]) -> Result<u64, RecipeError> {
@@ -252,22 +240,9 @@ mod tests {
         assert_eq!(rrt[0].inputmode(), "numeric");
         assert!(recipe_fields(&recipes::traj_resample::INFO)[0].is_file());
         assert!(recipe_fields(&recipes::dh_fk::INFO)[0].is_wide());
-        let i18n = I18n::new();
         for recipe in RECIPES {
-            for field in recipe_fields(recipe.info) {
-                for lang in Lang::ALL {
-                    assert!(
-                        i18n.has_message(lang, &field.label_id),
-                        "{}",
-                        field.label_id
-                    );
-                    assert!(
-                        i18n.has_message(lang, field.spec.hint_id),
-                        "{}",
-                        field.spec.hint_id
-                    );
-                }
-            }
+            let fields = recipe_fields(recipe.info);
+            assert_eq!(missing_messages(&fields), Vec::<String>::new());
         }
     }
 

@@ -1,12 +1,6 @@
 use super::*;
 use crate::view::drag::dist_to_segment;
-
-fn q(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
-    pairs
-        .iter()
-        .map(|(k, v)| (k.to_string(), v.to_string()))
-        .collect()
-}
+use crate::view::url::query as q;
 
 #[test]
 fn url_round_trip_restores_every_bit() {
@@ -100,21 +94,8 @@ fn the_form_is_the_recipes_arguments_and_the_heatmap_resolution() {
     let texts: Vec<Option<String>> = p.texts().into_iter().map(Some).collect();
     assert_eq!(Params::from_texts(&texts), Ok(p));
     assert_eq!(Params::from_texts(&[]), Ok(p), "no text: the defaults");
-    let i18n = crate::i18n::I18n::new();
-    for field in form_fields() {
-        for lang in crate::i18n::Lang::ALL {
-            assert!(
-                i18n.has_message(lang, &field.label_id),
-                "{}",
-                field.label_id
-            );
-            assert!(
-                i18n.has_message(lang, field.spec.hint_id),
-                "{}",
-                field.spec.hint_id
-            );
-        }
-    }
+    let missing = crate::view::field::missing_messages(&form_fields());
+    assert_eq!(missing, Vec::<String>::new());
 }
 
 #[test]
