@@ -1,6 +1,6 @@
-//! The parameter form's model, read from a recipe's facts ([`ArgSpec`]): one field per
-//! argument (label id, hint id, unit, keypad, default) and the validation that puts each
-//! message beside the right field.
+//! The parameter form's model, read from a recipe's facts
+//! ([`ArgSpec`](crate::args::ArgSpec)): one field per argument (label id, hint id, unit,
+//! keypad, default) and the validation that puts each message beside the right field.
 //!
 //! Validation runs the kernel's own parse + validate (the page passes it as a `check`
 //! closure), so the messages are the recipe's. Each field the user typed in is first checked
