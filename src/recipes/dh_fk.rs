@@ -328,24 +328,17 @@ pub fn picture(output: &RecipeOutput, aspect: f64) -> Option<Picture> {
             .chain(grid2.iter().flat_map(|(a, b)| [*a, *b])),
         Some(aspect),
     );
+    let grid = Mark::Segments {
+        series: GREY,
+        pairs: grid2
+            .iter()
+            .map(|(a, b)| (frame.map(*a), frame.map(*b)))
+            .collect(),
+    };
+    let chain = chain2.iter().map(|p| frame.map(*p)).collect();
+    let [line, dots] = Mark::joined_dots(chain, BLUE, ORANGE);
     Some(Picture {
-        marks: vec![
-            Mark::Segments {
-                series: GREY,
-                pairs: grid2
-                    .iter()
-                    .map(|(a, b)| (frame.map(*a), frame.map(*b)))
-                    .collect(),
-            },
-            Mark::Line {
-                series: BLUE,
-                points: chain2.iter().map(|p| frame.map(*p)).collect(),
-            },
-            Mark::Dots {
-                series: ORANGE,
-                points: chain2.iter().map(|p| frame.map(*p)).collect(),
-            },
-        ],
+        marks: vec![grid, line, dots],
     })
 }
 

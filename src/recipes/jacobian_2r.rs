@@ -336,24 +336,17 @@ pub fn picture(output: &RecipeOutput, aspect: f64) -> Option<Picture> {
     let t = Table::parse(output.file(FILE_NAME)?)?;
     let tips = pairs(&t.col("x_m")?, &t.col("y_m")?);
     let frame = UnitFrame::fit(tips.iter().copied().chain([DVec2::ZERO]), Some(aspect));
+    let reach = Mark::Segments {
+        series: GREY,
+        pairs: tips
+            .iter()
+            .map(|p| (frame.map(DVec2::ZERO), frame.map(*p)))
+            .collect(),
+    };
+    let arc = tips.iter().map(|p| frame.map(*p)).collect();
+    let [line, dots] = Mark::joined_dots(arc, BLUE, ORANGE);
     Some(Picture {
-        marks: vec![
-            Mark::Segments {
-                series: GREY,
-                pairs: tips
-                    .iter()
-                    .map(|p| (frame.map(DVec2::ZERO), frame.map(*p)))
-                    .collect(),
-            },
-            Mark::Line {
-                series: BLUE,
-                points: tips.iter().map(|p| frame.map(*p)).collect(),
-            },
-            Mark::Dots {
-                series: ORANGE,
-                points: tips.iter().map(|p| frame.map(*p)).collect(),
-            },
-        ],
+        marks: vec![reach, line, dots],
     })
 }
 

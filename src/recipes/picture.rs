@@ -25,6 +25,22 @@ pub enum Mark {
     },
 }
 
+impl Mark {
+    /// A polyline through `points` in series `line`, and a dot at each point in series `dots`.
+    pub fn joined_dots(points: Vec<DVec2>, line: u8, dots: u8) -> [Mark; 2] {
+        [
+            Mark::Line {
+                series: line,
+                points: points.clone(),
+            },
+            Mark::Dots {
+                series: dots,
+                points,
+            },
+        ]
+    }
+}
+
 /// A recipe card's picture.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Picture {

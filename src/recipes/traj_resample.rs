@@ -898,25 +898,18 @@ pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
         None,
     );
     let m = |v: Vec<DVec2>| v.into_iter().map(|p| frame.map(p)).collect::<Vec<_>>();
+    // The resampled joints as lines first, the labelled samples as dots over them.
+    let joints = [(&q1, &r1, BLUE), (&q2, &r2, ORANGE)];
+    let lines = joints.iter().map(|(q, _, series)| Mark::Line {
+        series: *series,
+        points: m(pairs(&x, q)),
+    });
+    let dots = joints.iter().map(|(_, r, series)| Mark::Dots {
+        series: *series,
+        points: m(pairs(&rx, r)),
+    });
     Some(Picture {
-        marks: vec![
-            Mark::Line {
-                series: BLUE,
-                points: m(pairs(&x, &q1)),
-            },
-            Mark::Line {
-                series: ORANGE,
-                points: m(pairs(&x, &q2)),
-            },
-            Mark::Dots {
-                series: BLUE,
-                points: m(pairs(&rx, &r1)),
-            },
-            Mark::Dots {
-                series: ORANGE,
-                points: m(pairs(&rx, &r2)),
-            },
-        ],
+        marks: lines.chain(dots).collect(),
     })
 }
 
