@@ -24,7 +24,8 @@ dist:
 dist-dev:
 	scripts/build-dist.sh --dev
 
-## Speed figures: kernels natively and as wasm in Node, and the IK page in headless Chromium
+## Speed figures against their budgets: kernels natively and as wasm in Node, the app's size and
+## first frame, then every page bench of tests/bench/ in headless Chromium
 bench:
 	scripts/setup.sh --browser
 	scripts/bench.sh

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `make bench`: speed figures (a command, not a timed test). Kernels natively and as wasm in
-# Node (release builds), the app's size and first interactive frame, then every page's frame work
-# in headless Chromium.
+# Node (release builds), the app's size and first interactive frame, then every page bench of
+# tests/bench/ in headless Chromium, each figure printed against its budget.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -28,28 +28,19 @@ cp -r dist target/bench-dist
 cp target/bench-web/bsv_playground.js target/bench-web/bsv_playground_bg.wasm target/bench-dist/pkg/
 
 echo
-echo "== size of the app (dist/, every file gzipped at level 9; issue 14's budget is 350 KB)"
+echo "== size of the app (dist/, every file gzipped at level 9; the budget is 350 KB)"
 node scripts/size.mjs dist
 
 echo
 echo "== first interactive frame: cold loads of the release dist/ from localhost in headless Chromium"
-node tests/e2e/firstframe.bench.mjs
+node tests/bench/firstframe.bench.mjs
 
-for page in $(cd tests/e2e && ls *.bench.mjs | sed 's/\.bench\.mjs$//'); do
-  if [[ -f tests/e2e/$page.bench.mjs && $page != firstframe ]]; then
-    echo
-    echo "== $page page in headless Chromium"
-    BSV_DIST=target/bench-dist node tests/e2e/$page.bench.mjs
-  fi
+# Every page bench (tests/bench/<page>.bench.mjs) on the dist with the bench hooks; each prints
+# its figures against their budgets.
+for bench in tests/bench/*.bench.mjs; do
+  page=$(basename "$bench" .bench.mjs)
+  [[ $page == firstframe ]] && continue
+  echo
+  echo "== $page page in headless Chromium"
+  BSV_DIST=target/bench-dist node "$bench"
 done
-
-echo
-echo "== RRT page in headless Chromium: frame work playing as fast as possible to 50,000 nodes"
-# Only the bench test of the file (window.__rrtFrameMs, __rrtDrawMs).
-BSV_DIST=target/bench-dist node --test --test-reporter=spec \
-  --test-name-pattern='frame work p95' tests/e2e/rrt.test.mjs
-
-echo
-echo "== signal pages in headless Chromium: slider drag recompute + redraw"
-BSV_DIST=target/bench-dist node --test --test-reporter=spec \
-  --test-name-pattern='p95' tests/e2e/signals.test.mjs

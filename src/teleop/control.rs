@@ -11,24 +11,9 @@
 //!               λ(σ)² = λmin²                                   σ_min ≥ σ_thresh
 //!               λ(σ)² = λmin² + (1 − (σ_min / σ_thresh)²) λmax²  σ_min < σ_thresh
 //! ```
-//! `σ_min` is the smallest singular value of J (Isaac Lab's `adaptive_dls` takes the same three
-//! parameters, `lambda_min`, `lambda_max`, `sigma_thresh`; the blend is the classic one of
-//! Nakamura–Hanafusa and Chiaverini). J is square here, so `pinv` is `J⁻¹`: it grows without
-//! bound near a singularity, which is what the page lets a class see; at an exactly singular J
-//! (a zero pivot) it returns `None` and the arm does not move.
-//!
-//! The transpose's step size α is Buss's choice ("Introduction to inverse kinematics with
-//! Jacobian transpose, pseudoinverse and damped least squares methods", 2004, eq. 7): the
-//! step along `Jᵀ Δx` whose task-space image `J Jᵀ Δx` comes closest to `Δx`. Isaac Lab's
-//! plain `k Jᵀ Δx` has no α; with our task vector mixing metres (links of about 0.1 m, so
-//! `J Jᵀ` ≈ 0.04 m² for position) and radians (≈ 3 for the angle row), a fixed k either
-//! barely moves the tip or makes the angle overshoot many times over. With α the transpose
-//! moves at the commanded size along the best transpose direction, and still shows its
-//! weakness: the direction is not the commanded one.
-//!
-//! The 3×3 solves use Gaussian elimination with partial pivoting and `σ_min` comes from cyclic
-//! Jacobi rotations of `J Jᵀ` (a fixed number of sweeps): arithmetic and `sqrt` only, so the
-//! same bits natively and in wasm.
+//! `σ_min` is the smallest singular value of J. The 3×3 solves use Gaussian elimination with
+//! partial pivoting and `σ_min` comes from cyclic Jacobi rotations of `J Jᵀ` (a fixed number
+//! of sweeps): arithmetic and `sqrt` only, so the same bits natively and in wasm.
 
 #![warn(missing_docs)]
 
@@ -41,11 +26,22 @@ pub enum IkMethod {
     /// Damped least squares, the default.
     #[default]
     Dls,
-    /// Moore–Penrose pseudo-inverse (no damping).
+    /// Moore–Penrose pseudo-inverse (no damping). J is square here, so `pinv` is `J⁻¹`: it
+    /// grows without bound near a singularity, which is what the page lets a class see; at an
+    /// exactly singular J (a zero pivot) it gives no step and the arm does not move.
     Pinv,
-    /// Jacobian transpose with a gain.
+    /// Jacobian transpose with a gain, scaled by Buss's step size α ("Introduction to inverse
+    /// kinematics with Jacobian transpose, pseudoinverse and damped least squares methods",
+    /// 2004, eq. 7): the step along `Jᵀ Δx` whose task-space image `J Jᵀ Δx` comes closest to
+    /// `Δx`. Isaac Lab's plain `k Jᵀ Δx` has no α; with our task vector mixing metres (links
+    /// of about 0.1 m, so `J Jᵀ` ≈ 0.04 m² for position) and radians (≈ 3 for the angle row),
+    /// a fixed k either barely moves the tip or makes the angle overshoot many times over.
+    /// With α the transpose moves at the commanded size along the best transpose direction,
+    /// and still shows its weakness: the direction is not the commanded one.
     Trans,
-    /// Damped least squares whose damping grows as the smallest singular value falls.
+    /// Damped least squares whose damping grows as the smallest singular value falls (Isaac
+    /// Lab's `adaptive_dls` takes the same three parameters, `lambda_min`, `lambda_max`,
+    /// `sigma_thresh`; the blend is the classic one of Nakamura–Hanafusa and Chiaverini).
     AdaptiveDls,
 }
 

@@ -7,6 +7,9 @@ use std::fmt;
 
 use crate::pyfmt::human;
 
+/// The first row of an episode CSV, the row whose absence is [`TeleopError::NotAnEpisode`].
+pub const EPISODE_MARKER: &str = "# bsv teleop episode,1";
+
 /// What [`crate::teleop::SceneConfig::validate`] or [`crate::teleop::parse_episode_csv`]
 /// rejects. `field` is the [`crate::teleop::SceneConfig`] field name (`latency_steps`,
 /// `pos_sensitivity`, `targets` …), which is also the key of the episode CSV's header row.
@@ -125,7 +128,7 @@ impl fmt::Display for TeleopError {
             TeleopError::NotAnEpisode => write!(
                 f,
                 "not a teleop episode file (the first row must be '{}')",
-                crate::teleop::episode::MARKER
+                EPISODE_MARKER
             ),
             TeleopError::MissingHeader { key } => {
                 write!(f, "the episode file has no '# {key},...' header row")

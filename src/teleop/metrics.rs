@@ -21,9 +21,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::arm::{fk, manipulability};
-use super::episode::Episode;
-use super::scene::Task;
-use super::sim::{Event, Outcome, Sim};
+use super::scene::{SceneConfig, Task};
+use super::sim::{Event, Outcome, Sim, State, StepRecord};
 
 /// Fitts' law figures of a reach episode.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -61,7 +60,7 @@ pub struct EpisodeMetrics {
     pub drops: u32,
     /// [`Event::TargetReached`] count.
     pub targets_reached: u32,
-    /// The smallest [`super::manipulability`] of the episode, start included.
+    /// The smallest [`manipulability`] of the episode, start included.
     pub min_manipulability: f64,
     /// Fitts' figures (reach tasks with a target reached).
     pub fitts: Option<Fitts>,
@@ -76,166 +75,95 @@ fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
     (dx * dx + dz * dz).sqrt()
 }
 
-/// The figures of `episode`, from its records (no re-simulation).
-pub fn metrics(episode: &Episode) -> EpisodeMetrics {
-    let config = &episode.config;
-    let arm = &config.arm;
-    let start_tip = fk(arm, &episode.start.q);
-    let mut m = EpisodeMetrics {
-        duration_s: episode.records.last().map_or(0.0, |r| r.t_s),
-        path_m: 0.0,
-        efficiency: 0.0,
-        collisions: 0,
-        joint_limit_stops: 0,
-        speed_limit_stops: 0,
-        singularity_stops: 0,
-        grasps: 0,
-        grasp_misses: 0,
-        drops: 0,
-        targets_reached: 0,
-        min_manipulability: manipulability(arm, &episode.start.q),
-        fitts: None,
-        first_failure: None,
-        outcome: episode.outcome(),
-    };
-    let mut prev = (start_tip.x, start_tip.z);
-    let mut ideal = 0.0;
-    // Reach: where and when the previous target was confirmed; Fitts per target.
-    let mut leg_start = (prev, 0.0);
-    let mut fitts: Vec<(f64, f64)> = Vec::new();
-    let dwell_s = f64::from(config.success_steps.saturating_sub(1)) * Sim::DT;
-    for r in &episode.records {
-        let tip = (r.x, r.z);
-        m.path_m += dist(prev, tip);
-        prev = tip;
-        m.min_manipulability = m.min_manipulability.min(r.manipulability);
-        for e in &r.events {
-            match e {
-                Event::Collision { .. } => m.collisions += 1,
-                Event::JointLimit { .. } => m.joint_limit_stops += 1,
-                Event::SpeedLimit { .. } => m.speed_limit_stops += 1,
-                Event::Singularity => m.singularity_stops += 1,
-                Event::Grasp => m.grasps += 1,
-                Event::GraspMiss => m.grasp_misses += 1,
-                Event::Drop => m.drops += 1,
-                Event::TargetReached { index } => {
-                    m.targets_reached += 1;
-                    if let Some(t) = config.task.targets().get(*index) {
-                        let d = dist(leg_start.0, (t.x, t.z));
-                        ideal += (d - t.radius).max(0.0);
-                        let id =
-                            crate::math::log(d / (2.0 * t.radius) + 1.0) / std::f64::consts::LN_2;
-                        let movement_s = r.t_s - dwell_s - leg_start.1;
-                        if movement_s > 0.0 {
-                            fitts.push((id, id / movement_s));
+impl EpisodeMetrics {
+    /// The figures of an episode run with `config` from `start`, from its `records` (no
+    /// re-simulation).
+    pub fn of(config: &SceneConfig, start: &State, records: &[StepRecord]) -> EpisodeMetrics {
+        let arm = &config.arm;
+        let start_tip = fk(arm, &start.q);
+        let mut m = EpisodeMetrics {
+            duration_s: records.last().map_or(0.0, |r| r.t_s),
+            path_m: 0.0,
+            efficiency: 0.0,
+            collisions: 0,
+            joint_limit_stops: 0,
+            speed_limit_stops: 0,
+            singularity_stops: 0,
+            grasps: 0,
+            grasp_misses: 0,
+            drops: 0,
+            targets_reached: 0,
+            min_manipulability: manipulability(arm, &start.q),
+            fitts: None,
+            first_failure: None,
+            outcome: Outcome::of(records),
+        };
+        let mut prev = (start_tip.x, start_tip.z);
+        let mut ideal = 0.0;
+        // Reach: where and when the previous target was confirmed; Fitts per target.
+        let mut leg_start = (prev, 0.0);
+        let mut fitts: Vec<(f64, f64)> = Vec::new();
+        let dwell_s = f64::from(config.success_steps.saturating_sub(1)) * Sim::DT;
+        for r in records {
+            let tip = (r.x, r.z);
+            m.path_m += dist(prev, tip);
+            prev = tip;
+            m.min_manipulability = m.min_manipulability.min(r.manipulability);
+            for e in &r.events {
+                match e {
+                    Event::Collision { .. } => m.collisions += 1,
+                    Event::JointLimit { .. } => m.joint_limit_stops += 1,
+                    Event::SpeedLimit { .. } => m.speed_limit_stops += 1,
+                    Event::Singularity => m.singularity_stops += 1,
+                    Event::Grasp => m.grasps += 1,
+                    Event::GraspMiss => m.grasp_misses += 1,
+                    Event::Drop => m.drops += 1,
+                    Event::TargetReached { index } => {
+                        m.targets_reached += 1;
+                        if let Some(t) = config.task.targets().get(*index) {
+                            let d = dist(leg_start.0, (t.x, t.z));
+                            ideal += (d - t.radius).max(0.0);
+                            let id = crate::math::log(d / (2.0 * t.radius) + 1.0)
+                                / std::f64::consts::LN_2;
+                            let movement_s = r.t_s - dwell_s - leg_start.1;
+                            if movement_s > 0.0 {
+                                fitts.push((id, id / movement_s));
+                            }
                         }
+                        leg_start = (tip, r.t_s);
                     }
-                    leg_start = (tip, r.t_s);
+                    _ => {}
                 }
-                _ => {}
-            }
-            if m.first_failure.is_none() && e.is_failure() {
-                m.first_failure = Some((r.step, *e));
-            }
-        }
-    }
-    if !matches!(config.task, Task::Reach { .. }) {
-        let block0 = (episode.start.block.x, episode.start.block.z);
-        if m.grasps > 0 {
-            ideal += dist((start_tip.x, start_tip.z), block0);
-        }
-        if m.outcome == Some(Outcome::Success) {
-            if let Some(last) = episode.records.last() {
-                ideal += dist(block0, (last.block_x, last.block_z));
+                if m.first_failure.is_none() && e.is_failure() {
+                    m.first_failure = Some((r.step, *e));
+                }
             }
         }
+        if !matches!(config.task, Task::Reach { .. }) {
+            let block0 = (start.block.x, start.block.z);
+            if m.grasps > 0 {
+                ideal += dist((start_tip.x, start_tip.z), block0);
+            }
+            if m.outcome == Some(Outcome::Success) {
+                if let Some(last) = records.last() {
+                    ideal += dist(block0, (last.block_x, last.block_z));
+                }
+            }
+        }
+        if m.path_m > 0.0 {
+            m.efficiency = (ideal / m.path_m).min(1.0);
+        }
+        if !fitts.is_empty() {
+            let n = fitts.len() as f64;
+            m.fitts = Some(Fitts {
+                id_bits: fitts.iter().map(|f| f.0).sum::<f64>() / n,
+                throughput_bits_per_s: fitts.iter().map(|f| f.1).sum::<f64>() / n,
+                targets: fitts.len(),
+            });
+        }
+        m
     }
-    if m.path_m > 0.0 {
-        m.efficiency = (ideal / m.path_m).min(1.0);
-    }
-    if !fitts.is_empty() {
-        let n = fitts.len() as f64;
-        m.fitts = Some(Fitts {
-            id_bits: fitts.iter().map(|f| f.0).sum::<f64>() / n,
-            throughput_bits_per_s: fitts.iter().map(|f| f.1).sum::<f64>() / n,
-            targets: fitts.len(),
-        });
-    }
-    m
 }
 
 #[cfg(test)]
-mod tests {
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    use super::*;
-    use crate::teleop::pilot::{fly, plan};
-    use crate::teleop::scene::SceneConfig;
-
-    #[test]
-    fn reach_metrics_and_fitts() {
-        let config = SceneConfig {
-            task: Task::from_id("reach").unwrap(),
-            ..SceneConfig::default()
-        };
-        let episode = fly(config.clone(), plan(&config), 6000).unwrap();
-        let m = metrics(&episode);
-        assert_eq!(m.outcome, Some(Outcome::Success));
-        assert_eq!(m.targets_reached, 6);
-        let fitts = m.fitts.unwrap();
-        assert_eq!(fitts.targets, 6);
-        // The first target from the start tip (0.10, 0.06): D = |(0.07, −0.02)|, W = 0.04.
-        let targets = config.task.targets();
-        let mut prev = (0.10, 0.06);
-        let mut ids = Vec::new();
-        let mut t_prev = 0.0;
-        let mut throughputs = Vec::new();
-        let reached: Vec<&crate::teleop::StepRecord> = episode
-            .records
-            .iter()
-            .filter(|r| {
-                r.events
-                    .iter()
-                    .any(|e| matches!(e, Event::TargetReached { .. }))
-            })
-            .collect();
-        for (t, r) in targets.iter().zip(&reached) {
-            let d = ((t.x - prev.0).powi(2) + (t.z - prev.1).powi(2)).sqrt();
-            let id = (d / (2.0 * t.radius) + 1.0).log2();
-            ids.push(id);
-            throughputs.push(id / (r.t_s - 0.09 - t_prev));
-            prev = (r.x, r.z);
-            t_prev = r.t_s;
-        }
-        assert!((ids[0] - ((0.0053f64).sqrt() / 0.04 + 1.0).log2()).abs() < 1e-3);
-        let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-        assert!((fitts.id_bits - mean(&ids)).abs() < 1e-12);
-        assert!((fitts.throughput_bits_per_s - mean(&throughputs)).abs() < 1e-9);
-        assert!(fitts.id_bits > 1.5 && fitts.id_bits < 4.3);
-        // The path is at least the ideal one, so efficiency ≤ 1, and well above zero.
-        assert!(m.efficiency > 0.5 && m.efficiency <= 1.0);
-        assert!(m.path_m > 0.8);
-        assert_eq!(m.duration_s, episode.records.last().unwrap().t_s);
-    }
-
-    #[test]
-    fn pick_place_metrics() {
-        let config = SceneConfig::default();
-        let episode = fly(config.clone(), plan(&config), 6000).unwrap();
-        let m = metrics(&episode);
-        assert_eq!(
-            (m.grasps, m.drops, m.collisions, m.grasp_misses),
-            (1, 0, 0, 0)
-        );
-        assert_eq!(m.first_failure, None);
-        assert!(m.fitts.is_none());
-        assert!(m.efficiency > 0.4 && m.efficiency <= 1.0);
-        let min_w = episode
-            .records
-            .iter()
-            .map(|r| r.manipulability)
-            .fold(f64::INFINITY, f64::min);
-        assert!(m.min_manipulability <= min_w);
-    }
-}
+mod tests;

@@ -233,7 +233,7 @@ pub struct SceneConfig {
     /// Commands reach the arm this many 10 ms steps late (0 to 50, i.e. 0 to 500 ms).
     pub latency_steps: u32,
     /// Standard deviation of the Gaussian noise added to each command axis (in the
-    /// normalised units of [`super::Command`]; 0 = none; at most 1).
+    /// normalised units of [`super::sim::Command`]; 0 = none; at most 1).
     pub noise_sigma: f64,
     /// Seed of the noise (`np.random.default_rng(seed)`), at most 2^63 − 1.
     pub noise_seed: u64,

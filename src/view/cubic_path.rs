@@ -9,9 +9,18 @@
 //! trapezoid: t_acc = T / 3,  vmax = 1.5 |Δ| / T,  amax = 4.5 |Δ| / T²   (ends at T)
 //! ```
 
-use crate::recipes::cubic_path::{CubicParams, CubicPath, CubicSample};
+use crate::recipes::cubic_path::{self, CubicParams, CubicSample};
 use crate::recipes::trapezoid_profile::{self, TrapParams};
 use crate::view::plot::auto_range;
+use crate::view::signal::SignalRow;
+
+/// The kernel's samples of valid `p` ([`cubic_path::samples`]), one at a time, and how many;
+/// none for invalid `p`.
+pub fn rows(p: &CubicParams) -> Option<(impl Iterator<Item = CubicSample>, u64)> {
+    let rows = cubic_path::samples(p).ok()?;
+    let n = rows.len() as u64;
+    Some((rows, n))
+}
 
 /// `q(t) = a0 + a1 t + a2 t² + a3 t³`, computed as the kernel computes it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,14 +76,14 @@ pub struct Readouts {
     pub rows: usize,
 }
 
-/// The readouts of `path` computed with `p` (its samples, as the CSV has them).
-pub fn readouts(p: &CubicParams, path: &CubicPath) -> Readouts {
-    let [peak_velocity, peak_acceleration] = peaks(&path.samples, [|s| s.qd, |s| s.qdd]);
+/// The readouts of the path of `p` from its `samples` (as the CSV has them).
+pub fn readouts(p: &CubicParams, samples: &[CubicSample]) -> Readouts {
+    let [peak_velocity, peak_acceleration] = peaks(samples, [|s| s.qd, |s| s.qdd]);
     Readouts {
         peak_velocity,
         peak_acceleration,
         coefficients: coefficients(p),
-        rows: path.samples.len(),
+        rows: samples.len(),
     }
 }
 
@@ -139,6 +148,18 @@ pub fn time_range(p: &CubicParams) -> (f64, f64) {
     (0.0, p.duration_s * 1.25)
 }
 
+impl SignalRow for CubicSample {
+    const CURSOR: [&'static str; 4] = ["cursor-t", "cursor-q", "cursor-qd", "cursor-qdd"];
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn cursor_values(&self) -> [f64; 4] {
+        [self.t, self.q, self.qd, self.qdd]
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -177,7 +198,7 @@ mod tests {
     #[test]
     fn peaks_are_the_csv_s() {
         let p = CubicParams::default();
-        let r = readouts(&p, &compute(&p).unwrap());
+        let r = readouts(&p, &compute(&p).unwrap().samples);
         let qd = csv_column(&[], 2);
         let qdd = csv_column(&[], 3);
         let max_abs = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
@@ -190,7 +211,7 @@ mod tests {
         assert_eq!(r.rows, 51);
         // A move down has negative peaks.
         let down = CubicParams { q1: -1.0, ..p };
-        let r = readouts(&down, &compute(&down).unwrap());
+        let r = readouts(&down, &compute(&down).unwrap().samples);
         assert!(r.peak_velocity.unwrap().value < 0.0);
     }
 

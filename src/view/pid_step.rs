@@ -19,6 +19,8 @@
 
 use crate::pyfmt::py_round;
 use crate::recipes::pid_step::{self, PidParams, PidSample};
+use crate::view::plot::auto_range;
+use crate::view::signal::{nice_range, y_extent, SignalRow};
 
 /// The kernel's response of valid `p` ([`pid_step::response`]), with unrounded times `k·dt`,
 /// one row at a time, and how many rows (what the page computes, in slices when there are
@@ -99,6 +101,34 @@ pub fn figures(samples: &[PidSample]) -> StepFigures {
     out.steady_state_error = Some(r - last.y);
     out.final_y = Some(last.y);
     out
+}
+
+/// The (lo, hi) of the finite values of a thinned series, clamped to ±1e12 (an overflowed
+/// run plots up to where it broke); an empty range (`lo > hi`) when there is none.
+pub fn plot_extent(points: &[(f64, f64)]) -> (f64, f64) {
+    let clamp = |v: f64| v.clamp(-1e12, 1e12);
+    let (lo, hi) = y_extent(points);
+    (clamp(lo), clamp(hi))
+}
+
+/// The axis range of extents `a` and `b` and the value `with`, padded by 6 % and snapped to
+/// 1-2-5 steps.
+pub fn plot_range(a: (f64, f64), b: (f64, f64), with: f64) -> (f64, f64) {
+    let r = auto_range([a.0, a.1, b.0, b.1, with], 0.06).unwrap_or((-1.0, 1.0));
+    nice_range(r)
+}
+
+impl SignalRow for PidSample {
+    const CURSOR: [&'static str; 4] = ["cursor-t", "cursor-r", "cursor-y", "cursor-u"];
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// The CSV's row: its time as the CSV writes it (`round(t, 4)`).
+    fn cursor_values(&self) -> [f64; 4] {
+        [csv_t(self), self.r, self.y, self.u]
+    }
 }
 
 #[cfg(test)]
@@ -219,5 +249,28 @@ mod tests {
         );
         assert!(f.peak_u.unwrap().1.is_finite());
         assert_eq!(figures(&[]), StepFigures::default());
+    }
+
+    #[test]
+    fn the_cursor_reads_the_csv_row() {
+        let row = PidSample {
+            t: 0.15000000000000002,
+            r: 1.0,
+            y: 0.5,
+            u: 2.0,
+            e: 0.5,
+        };
+        let values = row.cursor_values();
+        assert_eq!(values, [0.15, 1.0, 0.5, 2.0]);
+    }
+
+    #[test]
+    fn an_overflowed_run_plots_up_to_where_it_broke() {
+        let points = [(0.0, 1.0), (0.05, f64::INFINITY), (0.1, -1e300)];
+        assert_eq!(plot_extent(&points), (-1e12, 1.0));
+        assert_eq!(plot_extent(&[]), (1e12, -1e12));
+        let none = (f64::INFINITY, f64::NEG_INFINITY);
+        let (lo, hi) = plot_range((0.0, 1.0), none, 1.0);
+        assert!(lo < 0.0 && hi > 1.0, "padded: {lo} {hi}");
     }
 }

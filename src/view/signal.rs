@@ -17,6 +17,28 @@ pub struct Slider {
     pub step: f64,
 }
 
+impl Slider {
+    /// The slider of argument `name` from `min` to `max` by `step`.
+    pub const fn new(name: &'static str, min: f64, max: f64, step: f64) -> Slider {
+        Slider {
+            name,
+            min,
+            max,
+            step,
+        }
+    }
+}
+
+/// A row of a signal page's table, as the plot's cursor reads it.
+pub trait SignalRow: 'static {
+    /// The cursor's readouts (`data-readout` keys): the time, then the row's three columns.
+    const CURSOR: [&'static str; 4];
+    /// Its time, s (the plots' shared axis).
+    fn t(&self) -> f64;
+    /// The values of [`SignalRow::CURSOR`]: the time as the CSV writes it, then the columns.
+    fn cursor_values(&self) -> [f64; 4];
+}
+
 /// The texts of the recipe's arguments the URL sets (`None`: the default), in argument
 /// order, and the keys it has that are neither arguments nor in `own_keys` (the page's).
 pub fn read_texts(

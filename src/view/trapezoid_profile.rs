@@ -11,7 +11,9 @@
 
 use std::iter::Take;
 
-use crate::recipes::trapezoid_profile::{self, TrapParams, MAX_ROWS};
+use crate::pyfmt::py_round;
+use crate::recipes::trapezoid_profile::{self, TrapParams, TrapSample, MAX_ROWS};
+use crate::view::signal::SignalRow;
 
 /// The phases of one profile, s; the velocity reached.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -84,10 +86,23 @@ pub fn amax_from_corner(t: f64, v: f64) -> Option<f64> {
     (t > 0.0 && v > 0.0).then(|| v / t)
 }
 
+impl SignalRow for TrapSample {
+    const CURSOR: [&'static str; 4] = ["cursor-t", "cursor-s", "cursor-v", "cursor-a"];
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// The CSV's row: its time as the CSV writes it (`round(t, 5)`).
+    fn cursor_values(&self) -> [f64; 4] {
+        [py_round(self.t, 5), self.s, self.v, self.a]
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::recipes::trapezoid_profile::{compute, TrapSample};
+    use crate::recipes::trapezoid_profile::compute;
 
     #[test]
     fn phases_match_the_kernel_s_profile() {
@@ -191,5 +206,18 @@ mod tests {
         assert_eq!(amax_from_corner(0.5, 0.5), Some(1.0));
         assert_eq!(amax_from_corner(0.0, 0.5), None);
         assert_eq!(amax_from_corner(0.5, -0.1), None);
+    }
+
+    #[test]
+    fn the_cursor_reads_the_csv_row() {
+        let row = TrapSample {
+            t: 0.123456789,
+            s: 1.0,
+            v: 2.0,
+            a: 3.0,
+        };
+        assert_eq!(row.t(), 0.123456789);
+        let values = row.cursor_values();
+        assert_eq!(values, [0.12346, 1.0, 2.0, 3.0]);
     }
 }

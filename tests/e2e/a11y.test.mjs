@@ -1,21 +1,14 @@
 // Accessibility: axe-core (npm, test only) finds no serious or critical violation on any route,
 // in English and Japanese, with the `?` overlay and the drills menu open too.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
-import { closeBrowser, openApp, startServer } from './harness.mjs';
+import { serveApp, openApp } from './harness.mjs';
 
 const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 
-let server;
-before(async () => {
-  server = await startServer();
-});
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+const server = serveApp();
 
 /** Serious and critical violations on the page as it stands, one line each. */
 async function violations(page, what) {

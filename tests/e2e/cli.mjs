@@ -1,12 +1,11 @@
 // The `bsv` CLI as the reference the pages' downloads are checked against: building it, running
 // it into a fresh folder, saving what a page downloads, and comparing the two byte for byte.
 import assert from 'node:assert/strict';
-import { before, after } from 'node:test';
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { ROOT, startServer, closeBrowser } from './harness.mjs';
+import { ROOT, serveApp } from './harness.mjs';
 
 export const BSV = join(ROOT, 'target', 'debug', 'bsv');
 
@@ -21,17 +20,7 @@ export function buildCli() {
  * close. Returns `{ url }` (the server's, once it is up).
  */
 export function serveAppWithCli(onClose = () => {}) {
-  let server;
-  before(async () => {
-    buildCli();
-    server = await startServer();
-  }, { timeout: 600_000 });
-  after(async () => {
-    onClose();
-    await closeBrowser();
-    await server?.close();
-  });
-  return { get url() { return server.url; } };
+  return serveApp({ setup: buildCli, teardown: onClose, timeout: 600_000 });
 }
 
 /** Runs `bsv <args> --out DIR`: its stdout (trailing newline removed) and every file written.
@@ -45,6 +34,17 @@ export function cli(args) {
   } finally {
     rmSync(dir, { recursive: true, force: true });
   }
+}
+
+/**
+ * The CSV `file` of `bsv <args>`: its bytes, its column names and its data rows as cell texts
+ * (with the run's other files and stdout).
+ */
+export function cliCsv(args, file) {
+  const { files, stdout } = cli(args);
+  const bytes = files.get(file);
+  const [head, ...rows] = bytes.toString('utf8').trim().split(/\r?\n/).map((l) => l.split(','));
+  return { bytes, head, rows, files, stdout };
 }
 
 /** Clicks the page's `[data-download="<file>"]` button and returns the bytes it saved. */

@@ -2,22 +2,15 @@
 // runs under it without a violation (no inline script, no <style> injection, no style
 // attribute, no eval), and the harness really fails a test on a violation or an i18n warning
 // (it is made to catch injected ones here).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { startServer, openApp, closeBrowser, takeProblems, seenProblems, assertNoProblems, ROOT } from './harness.mjs';
+import { serveApp, openApp, takeProblems, seenProblems, assertNoProblems, ROOT } from './harness.mjs';
 
 const POLICY = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self'; object-src 'none'; base-uri 'none'";
 
-let server;
-before(async () => {
-  server = await startServer();
-});
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+const server = serveApp();
 
 /** Waits until the harness has seen at least `n` problems (they stay). */
 async function problemsAtLeast(n, timeout = 5000) {

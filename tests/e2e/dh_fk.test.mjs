@@ -7,8 +7,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { openApp, OUT } from './harness.mjs';
-import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, OUT, readouts } from './harness.mjs';
+import { serveAppWithCli, cliCsv, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
 // The CLI is built and dist/ served before the tests; all is closed after them.
@@ -19,15 +19,13 @@ const CANVAS = '[data-testid="dh-fk-canvas"]';
 const KEYS = ['x', 'y', 'z', 'roll', 'pitch', 'yaw'];
 
 /** `bsv dh-fk [angles]`: the CSV bytes and its data rows as cell texts. */
-function run(args) {
-  const bytes = cli(['dh-fk', ...args]).files.get('dh_fk.csv');
-  const rows = bytes.toString('utf8').trim().split(/\r?\n/).slice(1).map((l) => l.split(','));
-  return { bytes, rows };
-}
+const run = (args) => cliCsv(['dh-fk', ...args], 'dh_fk.csv');
 
 /** The exact readout values (data-value) of the tip. */
-const readouts = (page) => page.evaluate((keys) => Object.fromEntries(
-  keys.map((k) => [k, document.querySelector(`[data-readout="${k}"]`).dataset.value])), KEYS);
+const tipReadouts = async (page) => {
+  const r = await readouts(page);
+  return Object.fromEntries(KEYS.map((k) => [k, r[k]]));
+};
 
 /** The pose table's cells, row by row. */
 const poseCells = (page) => page.evaluate(() => [...document.querySelectorAll('[data-testid="dh-fk-pose-table"] tbody tr')]
@@ -36,7 +34,7 @@ const poseCells = (page) => page.evaluate(() => [...document.querySelectorAll('[
 /** Asserts the readouts are the CSV's frame-3 row and the pose table is the CSV's rows. */
 async function assertNumbers(page, want, label) {
   const tip = want.rows[3];
-  assert.deepEqual(await readouts(page), Object.fromEntries(KEYS.map((k, i) => [k, tip[i + 1]])), `${label}: readouts`);
+  assert.deepEqual(await tipReadouts(page), Object.fromEntries(KEYS.map((k, i) => [k, tip[i + 1]])), `${label}: readouts`);
   assert.deepEqual(await poseCells(page), want.rows, `${label}: pose table`);
 }
 
@@ -116,7 +114,7 @@ test('orbiting changes the pixels, never the numbers; presets, keys and the whee
   const { page, errors, close } = await open('#/dh-fk');
   try {
     await page.waitForSelector(CANVAS);
-    const numbers = await readouts(page);
+    const numbers = await tipReadouts(page);
     const shot0 = await canvasShot(page);
     assert.equal(await page.locator('[data-action="view-iso"]').getAttribute('aria-pressed'), 'true');
     const box = await page.locator(CANVAS).boundingBox();
@@ -128,7 +126,7 @@ test('orbiting changes the pixels, never the numbers; presets, keys and the whee
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
     const shot1 = await canvasShot(page);
     assert.notEqual(shot1, shot0, 'a drag orbits the view');
-    assert.deepEqual(await readouts(page), numbers, 'orbiting leaves the numbers alone');
+    assert.deepEqual(await tipReadouts(page), numbers, 'orbiting leaves the numbers alone');
     assert.equal(await page.locator('[data-action="view-iso"]').getAttribute('aria-pressed'), 'false');
     // The drag focused the canvas: the arrow keys orbit it, + zooms.
     assert.equal(await page.evaluate(() => document.activeElement?.dataset.testid), 'dh-fk-canvas');
@@ -158,12 +156,12 @@ test('orbiting changes the pixels, never the numbers; presets, keys and the whee
     });
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
     assert.notEqual(await canvasShot(page), shot3, 'a pinch zooms');
-    assert.deepEqual(await readouts(page), numbers);
+    assert.deepEqual(await tipReadouts(page), numbers);
     // A preset: pressed, in the URL.
     await page.locator('[data-action="view-front"]').click();
     assert.equal(await page.locator('[data-action="view-front"]').getAttribute('aria-pressed'), 'true');
     await page.waitForFunction(() => location.hash.includes('view=front'));
-    assert.deepEqual(await readouts(page), numbers);
+    assert.deepEqual(await tipReadouts(page), numbers);
     assert.deepEqual(errors, []);
   } finally {
     await close();

@@ -6,7 +6,11 @@
 // `console.warn` of the app's i18n (a missing or broken Fluent message); any such problem
 // fails the test during which it happened (an `afterEach` hook of every file that imports this
 // harness). A test that provokes one on purpose takes it with `takeProblems()`.
-import { afterEach } from 'node:test';
+//
+// Also what the test files share: the server hooks of a file, a page's readouts and URL query,
+// and the screenshots of a page.
+import assert from 'node:assert/strict';
+import { afterEach, before, after } from 'node:test';
 import { chromium } from 'playwright-core';
 import { mkdirSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
@@ -33,6 +37,25 @@ export const DIST = resolve(ROOT, process.env.BSV_DIST || 'dist');
 /** Serves DIST (dist/ unless BSV_DIST names another) on 127.0.0.1 at a free port: { url, close }. */
 export function startServer() {
   return startStaticServer(DIST, 0);
+}
+
+/**
+ * Registers the hooks of a test file: before its tests `setup()` runs and DIST is served; after
+ * them `teardown()` runs, then the browser and the server close. Returns `{ url }` (the
+ * server's, once it is up).
+ */
+export function serveApp({ setup = () => {}, teardown = () => {}, timeout = Infinity } = {}) {
+  let server;
+  before(async () => {
+    await setup();
+    server = await startServer();
+  }, { timeout });
+  after(async () => {
+    await teardown();
+    await closeBrowser();
+    await server?.close();
+  });
+  return { get url() { return server.url; } };
 }
 
 /** What the app's i18n logs with console.warn (src/ui/ctx.rs: `i18n: <note>`). */
@@ -143,4 +166,50 @@ export async function openApp(url, hash = '#/', { viewport = { width: 1280, heig
   await page.goto(`${url}/${hash}`);
   await page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
   return { page, context, errors, close: () => context.close() };
+}
+
+/**
+ * `data-readout` → what each readout of the page holds: its exact value (`data-value`); with
+ * `text: true` its shown text (trimmed), with `text: 'fallback'` the shown text of a readout
+ * that has no value. With `numbers`, a number wherever the string is one and null for an empty
+ * or absent one. `root` (a selector) limits the readouts to those inside it, `except` leaves
+ * out those inside an element it matches.
+ */
+export function readouts(page, { text = false, numbers = false, root = 'body', except = null } = {}) {
+  return page.evaluate(({ text, numbers, root, except }) => {
+    const out = {};
+    for (const el of document.querySelector(root).querySelectorAll('[data-readout]')) {
+      if (except && el.closest(except)) continue;
+      const shown = el.textContent.trim();
+      let v = text === true ? shown : text === 'fallback' ? (el.dataset.value ?? shown) : el.dataset.value;
+      if (numbers) v = v === undefined || v === '' ? null : Number.isNaN(Number(v)) ? v : Number(v);
+      out[el.dataset.readout] = v;
+    }
+    return out;
+  }, { text, numbers, root, except });
+}
+
+/** The URL query of the page (after the `?` of its hash) as an object. */
+export const query = (page) => page.evaluate(() => Object.fromEntries(new URLSearchParams(location.hash.split('?')[1] ?? '')));
+
+/**
+ * Saves the screenshot of each `[file, hash, options]` of `shots` (options as openApp's) to
+ * OUT: opens the app there, runs `prepare(page)` (by default it waits 300 ms), asserts that the
+ * page is no wider than its viewport, saves the page (`shot`: options of page.screenshot), runs
+ * `then(page, file)` and asserts that no console error came.
+ */
+export async function screenshots(url, shots, { prepare = (page) => page.waitForTimeout(300), shot = {}, then = async () => {} } = {}) {
+  for (const [file, hash, options] of shots) {
+    const { page, errors, close } = await openApp(url, hash, options);
+    try {
+      await prepare(page);
+      const width = await page.evaluate(() => document.documentElement.scrollWidth);
+      assert.ok(width <= options.viewport.width, `${file}: page ${width} px wide`);
+      await page.screenshot({ path: join(OUT, file), ...shot });
+      await then(page, file);
+      assert.deepEqual(errors, [], file);
+    } finally {
+      await close();
+    }
+  }
 }

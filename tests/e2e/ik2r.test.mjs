@@ -9,7 +9,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { openApp, OUT, ROOT } from './harness.mjs';
+import { openApp, OUT, ROOT, readouts } from './harness.mjs';
 import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
@@ -68,15 +68,10 @@ function expected(q1, q2, l1 = L1, l2 = L2) {
 const READOUTS = ['q1', 'q2', 'q1_deg', 'q2_deg', 'x_mm', 'y_mm', 'det_j', 'manipulability',
   'sigma_min', 'sigma_max', 'j11', 'j12', 'j21', 'j22'];
 
-async function readouts(page) {
-  return page.evaluate((names) => {
-    const out = {};
-    for (const n of names) {
-      const el = document.querySelector(`[data-readout="${n}"]`);
-      out[n] = el ? Number(el.textContent) : NaN;
-    }
-    return out;
-  }, READOUTS);
+/** The READOUTS as shown, as numbers (NaN where one is missing). */
+async function shownNumbers(page) {
+  const r = await readouts(page, { text: true });
+  return Object.fromEntries(READOUTS.map((n) => [n, Number(r[n] ?? NaN)]));
 }
 
 /**
@@ -162,7 +157,7 @@ test('dragging the tip gives the IK of the pointer; the marker follows; the elbo
   const { page, errors, close } = await openIk();
   try {
     // Defaults: q1 = 0.3, q2 = 0.8.
-    assertReadouts(await readouts(page), expected(0.3, 0.8), 'initial');
+    assertReadouts(await shownNumbers(page), expected(0.3, 0.8), 'initial');
 
     const g = await armGeometry(page);
     let last;
@@ -173,7 +168,7 @@ test('dragging the tip gives the IK of the pointer; the marker follows; the elbo
       last = [wx, wy];
       const sol = ik(wx, wy, L1, L2);
       assert.ok(sol, `(${wx}, ${wy}) is reachable`);
-      assertReadouts(await readouts(page), expected(sol.q1, sol.q2), `tip at (${x}, ${y})`);
+      assertReadouts(await shownNumbers(page), expected(sol.q1, sol.q2), `tip at (${x}, ${y})`);
       const m = await marker(page);
       assert.ok(Math.abs(m.q1 - wrap(sol.q1)) < 1e-9 && Math.abs(m.q2 - wrap(sol.q2)) < 1e-9,
         `heatmap marker ${JSON.stringify(m)} vs ${sol.q1}, ${sol.q2}`);
@@ -181,10 +176,10 @@ test('dragging the tip gives the IK of the pointer; the marker follows; the elbo
     }
 
     // The elbow switch: same tip, q2 changes sign; the other branch of the same point.
-    const before = await readouts(page);
+    const before = await shownNumbers(page);
     await page.locator('[data-testid="ik-2r-elbow-up"]').check();
     await settle(page);
-    const up = await readouts(page);
+    const up = await shownNumbers(page);
     assert.ok(up.q2 < 0 && Math.abs(up.q2 + before.q2) < 1e-6, `q2 ${before.q2} -> ${up.q2}`);
     assert.ok(Math.abs(up.x_mm - before.x_mm) < 1e-3 && Math.abs(up.y_mm - before.y_mm) < 1e-3);
     const other = ik(...last, L1, L2, true);
@@ -193,12 +188,12 @@ test('dragging the tip gives the IK of the pointer; the marker follows; the elbo
     const target = clientAt(g, 0.1, 0.1);
     await dragTipTo(page, target);
     const solUp = ik(...worldAt(g, ...target), L1, L2, true);
-    assertReadouts(await readouts(page), expected(solUp.q1, solUp.q2), 'elbow-up drag');
+    assertReadouts(await shownNumbers(page), expected(solUp.q1, solUp.q2), 'elbow-up drag');
     // Key e flips back.
     await page.locator('body').click({ position: { x: 5, y: 5 } });
     await page.keyboard.press('e');
     await settle(page);
-    assert.ok((await readouts(page)).q2 > 0);
+    assert.ok((await shownNumbers(page)).q2 > 0);
     assert.equal(await page.locator('[data-testid="ik-2r-elbow-down"]').isChecked(), true);
     assert.deepEqual(errors, []);
   } finally {
@@ -217,7 +212,7 @@ test('a pointer out of reach pins the tip to the annulus and says so; links turn
     await drag(page, [Math.round(g.left + g.tipX), Math.round(g.top + g.tipY)], far, { release: false });
     assert.equal(await note.isVisible(), true);
     assert.match(await note.innerText(), /Out of reach/);
-    const pinned = await readouts(page);
+    const pinned = await shownNumbers(page);
     const r = Math.hypot(pinned.x_mm, pinned.y_mm);
     assert.ok(Math.abs(r - 220) < 2e-3, `pinned at r = ${r} mm`);
     const [wx, wy] = worldAt(g, ...far);
@@ -231,11 +226,11 @@ test('a pointer out of reach pins the tip to the annulus and says so; links turn
     await page.keyboard.press('r');
     await settle(page);
     let g2 = await armGeometry(page);
-    const start = await readouts(page);
+    const start = await shownNumbers(page);
     const mid = [Math.round(g2.left + (g2.elbowX + g2.tipX) / 2), Math.round(g2.top + (g2.elbowY + g2.tipY) / 2)];
     const to = [mid[0] - 40, mid[1] + 60];
     await drag(page, mid, to);
-    const afterQ2 = await readouts(page);
+    const afterQ2 = await shownNumbers(page);
     assert.ok(Math.abs(afterQ2.q1 - start.q1) < 1e-12, 'link 2 leaves q1 alone');
     const [px, py] = worldAt(g2, ...to);
     const [ex, ey] = [L1 * Math.cos(start.q1), L1 * Math.sin(start.q1)];
@@ -248,7 +243,7 @@ test('a pointer out of reach pins the tip to the annulus and says so; links turn
     const mid1 = [Math.round(g2.left + (g2.ox + g2.elbowX) / 2), Math.round(g2.top + (g2.oy + g2.elbowY) / 2)];
     const to1 = [mid1[0] - 30, mid1[1] - 50];
     await drag(page, mid1, to1);
-    const afterQ1 = await readouts(page);
+    const afterQ1 = await shownNumbers(page);
     const [p1x, p1y] = worldAt(g2, ...to1);
     assert.ok(Math.abs(afterQ1.q2 - afterQ2.q2) < 1e-6, 'link 1 leaves q2 alone');
     assert.ok(Math.abs(afterQ1.q1 - Math.atan2(p1y, p1x)) < 1e-5);
@@ -322,7 +317,7 @@ test('each download is byte for byte the CLI output for the command shown under 
       assertSameBytes(bytes, cli([id, ...args]).files.get(file), `${file} after edits vs bsv ${id} ${args.join(' ')}`);
     }
     assert.match(await command(page, 'ik_workspace.csv', 'bsv'), /^bsv ik-workspace 0\.12 0\.15 200 25$/);
-    const q2 = (await readouts(page)).q2;
+    const q2 = (await shownNumbers(page)).q2;
     const jac = (await command(page, 'jacobian_2r.csv', 'bsv')).split(/\s+/);
     assert.ok(Math.abs(Number(jac.at(-1)) - q2) < 1e-6, 'the sweep uses the current q2');
 
@@ -397,14 +392,14 @@ test('an invalid L2 is flagged beside the field, the last valid L2 stays, the ar
       const target = clientAt(g, 0.05 + Math.random() * 0.05, 0.12);
       await dragTipTo(page, target);
       const sol = ik(...worldAt(g, ...target), L1, L2);
-      assertReadouts(await readouts(page), expected(sol.q1, sol.q2), `with L2 field "${bad}"`);
+      assertReadouts(await shownNumbers(page), expected(sol.q1, sol.q2), `with L2 field "${bad}"`);
       assert.match(await command(page, 'ik_workspace.csv', 'bsv'), /^bsv ik-workspace 0\.12 0\.1 200 10$/);
     }
     // A valid value clears the message and is used at once.
     await field.fill('0.08');
     assert.equal(await message.isVisible(), false);
     await settle(page);
-    const r = await readouts(page);
+    const r = await shownNumbers(page);
     assertReadouts(r, expected(r.q1, r.q2, L1, 0.08), 'L2 = 0.08');
     await page.waitForFunction(() => /L2=0\.08&/.test(location.hash), null, { timeout: 3000 });
     // The heatmap is recomputed (debounced) for a new resolution; out-of-range ones are refused.
@@ -429,7 +424,7 @@ test('a URL with state restores it exactly; invalid URL values are ignored with 
   const hash = `#/ik-2r?L1=0.15&L2=0.08&q1=${q1}&q2=${q2}&elbow=up&ws=1&wsc=manip&res=128&n=30&q1_start=-1&q1_stop=1&q1_step=0.25&half_mm=300&step_mm=15`;
   const { page, errors, close } = await openIk(hash);
   try {
-    const r = await readouts(page);
+    const r = await shownNumbers(page);
     assertReadouts(r, expected(q1, q2, 0.15, 0.08), 'from URL');
     assert.equal(await page.locator('[data-field="L1"]').inputValue(), '0.15');
     assert.equal(await page.locator('[data-field="res"]').inputValue(), '128');
@@ -447,10 +442,10 @@ test('a URL with state restores it exactly; invalid URL values are ignored with 
     await settle(page);
     await page.waitForFunction(() => /q1=0\.52/.test(location.hash), null, { timeout: 3000 });
     const url = page.url();
-    const now = await readouts(page);
+    const now = await shownNumbers(page);
     const again = await openIk(url.slice(url.indexOf('#')));
     try {
-      assert.deepEqual(await readouts(again.page), now);
+      assert.deepEqual(await shownNumbers(again.page), now);
     } finally {
       await again.close();
     }
@@ -465,7 +460,7 @@ test('a URL with state restores it exactly; invalid URL values are ignored with 
     assert.equal(await notice.isVisible(), true);
     const text = await notice.innerText();
     for (const key of ['L2', 'q1', 'res', 'elbow', 'half_mm', 'step_mm']) assert.match(text, new RegExp(key));
-    assertReadouts(await readouts(bad.page), expected(0.3, 0.8), 'defaults after a bad URL');
+    assertReadouts(await shownNumbers(bad.page), expected(0.3, 0.8), 'defaults after a bad URL');
     assert.deepEqual(bad.errors, []);
   } finally {
     await bad.close();
@@ -478,30 +473,30 @@ test('keys nudge the tip and the joints, toggle the grid and reset; a heatmap cl
   const { page, errors, close } = await openIk();
   try {
     await page.locator('body').click({ position: { x: 5, y: 5 } });
-    let r0 = await readouts(page);
+    let r0 = await shownNumbers(page);
     await page.keyboard.press('ArrowRight');
     await settle(page);
-    let r = await readouts(page);
+    let r = await shownNumbers(page);
     // Expected values from rounded readouts (x, y to 1 µm): tolerances × 20.
     let sol = ik((r0.x_mm + 1) / 1000, r0.y_mm / 1000, L1, L2);
     assertReadouts(r, expected(sol.q1, sol.q2), 'ArrowRight', 20);
     await page.keyboard.press('Shift+ArrowUp');
     await settle(page);
     r0 = r;
-    r = await readouts(page);
+    r = await shownNumbers(page);
     sol = ik(r0.x_mm / 1000, (r0.y_mm + 10) / 1000, L1, L2);
     assertReadouts(r, expected(sol.q1, sol.q2), 'Shift+ArrowUp', 20);
     await page.keyboard.press('[');
     await settle(page);
-    assert.ok(Math.abs((await readouts(page)).q1 - wrap(r.q1 - 0.01)) < 1e-6);
+    assert.ok(Math.abs((await shownNumbers(page)).q1 - wrap(r.q1 - 0.01)) < 1e-6);
     await page.keyboard.press('=');
     await settle(page);
-    assert.ok(Math.abs((await readouts(page)).q2 - wrap(r.q2 + 0.01)) < 1e-6);
+    assert.ok(Math.abs((await shownNumbers(page)).q2 - wrap(r.q2 + 0.01)) < 1e-6);
     await page.keyboard.press('w');
     assert.equal(await page.locator('[data-testid="ik-2r-ws-toggle"]').isChecked(), true);
     await page.keyboard.press('r');
     await settle(page);
-    assertReadouts(await readouts(page), expected(0.3, 0.8), 'after reset');
+    assertReadouts(await shownNumbers(page), expected(0.3, 0.8), 'after reset');
     assert.equal(await page.locator('[data-testid="ik-2r-ws-toggle"]').isChecked(), false);
 
     // Click the heatmap cell (i, j) = (64, 200) of 256: the pose becomes that cell's angles.
@@ -516,7 +511,7 @@ test('keys nudge the tip and the joints, toggle the grid and reset; a heatmap cl
     await page.mouse.click(cell.x, cell.y);
     await settle(page);
     const q = (i) => -Math.PI + (2 * Math.PI * i) / (cell.n - 1);
-    assertReadouts(await readouts(page), expected(q(64), q(200)), 'heatmap click');
+    assertReadouts(await shownNumbers(page), expected(q(64), q(200)), 'heatmap click');
     const m = await marker(page);
     assert.ok(Math.abs(m.q1 - q(64)) < 1e-12 && Math.abs(m.q2 - q(200)) < 1e-12);
     // The ? overlay lists the page's keys.
@@ -541,7 +536,7 @@ test('keys to full stretch say out of reach; the live region says the pose; no b
     for (let k = 0; k < 12; k++) await page.keyboard.press('Shift+ArrowRight');
     await settle(page);
     assert.equal(await note.isVisible(), true, 'out-of-reach note after key moves');
-    const r = await readouts(page);
+    const r = await shownNumbers(page);
     assert.ok(Math.abs(Math.hypot(r.x_mm, r.y_mm) - 220) < 2e-3, `stretched: r = ${Math.hypot(r.x_mm, r.y_mm)}`);
     // The polite summary follows once the keys stop: the pose in whole degrees and mm.
     await page.waitForFunction(() => document.querySelector('[data-testid="ik-2r-live"]').textContent !== '', null, { timeout: 3000 });
@@ -606,7 +601,7 @@ test('on a phone the page fits the width and a touch drag moves the arm', async 
     }, { from: [g.left + g.tipX, g.top + g.tipY], to: target });
     await settle(page);
     const sol = ik(...worldAt(g, ...target), L1, L2);
-    assertReadouts(await readouts(page), expected(sol.q1, sol.q2), 'touch drag');
+    assertReadouts(await shownNumbers(page), expected(sol.q1, sol.q2), 'touch drag');
     assert.equal(await page.locator('[data-testid="ik-2r-canvas"]').evaluate((c) => getComputedStyle(c).touchAction), 'none');
     await page.screenshot({ path: join(OUT, 'ik2r-phone-390.png') });
 
@@ -636,7 +631,7 @@ test('on a phone the page fits the width and a touch drag moves the arm', async 
     }, empty);
     await settle(page);
     const [ex, ey] = worldAt(g2, ...empty);
-    const tapped = await readouts(page);
+    const tapped = await shownNumbers(page);
     assert.ok(Math.abs(tapped.x_mm - ex * 1000) < 1e-3 && Math.abs(tapped.y_mm - ey * 1000) < 1e-3,
       `tap at (${ex * 1000}, ${ey * 1000}) mm, tip at (${tapped.x_mm}, ${tapped.y_mm})`);
     // The key numbers sit right above the arm view at phone width (sticky while it shows).

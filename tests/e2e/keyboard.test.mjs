@@ -2,18 +2,11 @@
 // every visible control of every route with a visible focus ring and no pointer-only element;
 // every canvas has a localized name and a text alternative; the live summaries are paced while
 // dragging; with `prefers-reduced-motion: reduce` nothing moves by itself.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { closeBrowser, openApp, startServer } from './harness.mjs';
+import { serveApp, openApp } from './harness.mjs';
 
-let server;
-before(async () => {
-  server = await startServer();
-});
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+const server = serveApp();
 
 /** Every route of the navigation (home, the drill pages, drills, lesson). */
 async function routes(page) {

@@ -1,27 +1,18 @@
 // Lessons: built from three pages with "+ Lesson", edited, exported, imported (a bad file is
 // named and the lesson kept), and presented with PageDown: each step shows the state of its
 // permalink (same readouts), and a step that asks for it first steps the page's stepper.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { OUT, closeBrowser, openApp, startServer } from './harness.mjs';
+import { serveApp, OUT, openApp, readouts } from './harness.mjs';
 
-let server;
-before(async () => {
-  server = await startServer();
-});
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+const server = serveApp();
 
 const ROUTES = ['#/pid-step?Kp=2&Ki=0.1', '#/rrt-2d?seed=11', '#/ik-2r?q1=0.3&q2=1.1'];
 
-/** `data-readout` → shown text, for the page as it stands. */
-const readouts = (page) => page.evaluate(() => Object.fromEntries([...document.querySelectorAll('#app-main [data-readout]')]
-  .filter((e) => !e.closest('.lesson'))
-  .map((e) => [e.dataset.readout, e.dataset.value ?? e.textContent.trim()])));
+/** The page's readouts as it stands (the lesson bar's left out). */
+const pageReadouts = (page) => readouts(page, { text: 'fallback', root: '#app-main', except: '.lesson' });
 
 async function goto(page, hash) {
   await page.goto(`${server.url}/${hash}`);
@@ -37,7 +28,7 @@ test('a lesson built from three pages is exported, imported and presented with P
     const expected = [];
     for (const route of ROUTES) {
       await goto(page, route);
-      expected.push(await readouts(page));
+      expected.push(await pageReadouts(page));
       await page.click('[data-testid="lesson-add"]');
     }
     assert.match(await page.locator('[data-testid="lesson-add-status"]').textContent(), /step 3/);
@@ -86,14 +77,14 @@ test('a lesson built from three pages is exported, imported and presented with P
     await bar.waitFor({ state: 'visible' });
     await page.waitForFunction(() => location.hash.startsWith('#/pid-step'));
     await page.waitForTimeout(400);
-    assert.deepEqual(await readouts(page), expected[0]);
+    assert.deepEqual(await pageReadouts(page), expected[0]);
     assert.match(await bar.innerText(), /1 \/ 3/);
     await page.screenshot({ path: join(OUT, 'lesson-present-en.png') });
 
     await page.keyboard.press('PageDown');
     await page.waitForFunction(() => location.hash.startsWith('#/rrt-2d'));
     await page.waitForTimeout(400);
-    assert.deepEqual(await readouts(page), expected[1]);
+    assert.deepEqual(await pageReadouts(page), expected[1]);
     assert.match(await page.locator('[data-testid="lesson-note"]').innerText(), /Three iterations/);
     for (let k = 1; k <= 3; k += 1) {
       await page.keyboard.press('PageDown');
@@ -103,7 +94,7 @@ test('a lesson built from three pages is exported, imported and presented with P
     await page.keyboard.press('PageDown');
     await page.waitForFunction(() => location.hash.startsWith('#/ik-2r'));
     await page.waitForTimeout(400);
-    assert.deepEqual(await readouts(page), expected[2]);
+    assert.deepEqual(await pageReadouts(page), expected[2]);
     // Back goes to the previous step from its start.
     await page.keyboard.press('PageUp');
     await page.waitForFunction(() => location.hash.startsWith('#/rrt-2d'));

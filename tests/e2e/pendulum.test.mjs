@@ -5,12 +5,12 @@
 // message and the run keeps the last valid timestep; the Python line only when just the duration
 // differs; the PNG holds both plots; the timestep slider sets h (field, URL, run); a damped run
 // that has come to rest offers Replay and damping 0. Screenshots (EN/JA 1920×1080, projector,
-// phone 390 px) go to tests/e2e/out/. In a build with `--features bench` it also reports the
-// frame work (advance + draw + plot append) p95 at 10× speed, 0.001 s, both integrators.
+// phone 390 px) go to tests/e2e/out/. The frame work while playing is a figure of
+// tests/bench/pendulum.bench.mjs.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { openApp, OUT } from './harness.mjs';
+import { openApp, OUT, readouts, screenshots } from './harness.mjs';
 import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
@@ -24,15 +24,8 @@ function csvRows(buf) {
   return lines.slice(1).map((l) => l.split(',').map(Number));
 }
 
-async function readouts(page) {
-  return page.evaluate(() => {
-    const out = {};
-    for (const el of document.querySelectorAll('[data-readout]')) {
-      out[el.dataset.readout] = el.dataset.value === '' ? null : Number(el.dataset.value);
-    }
-    return out;
-  });
-}
+/** `data-readout` → exact value (data-value, a number) of the page. */
+const pageValues = (page) => readouts(page, { numbers: true });
 
 async function toStart(page) {
   await page.locator('[data-action="reset"]').click();
@@ -45,7 +38,7 @@ test('after n steps the readouts show row n of the CSV; back is exact', async ()
   const { page, errors, close } = await open();
   try {
     await toStart(page);
-    const r0 = await readouts(page);
+    const r0 = await pageValues(page);
     assert.equal(r0.t, 0);
     assert.ok(Math.abs(r0.theta - (120 * Math.PI) / 180) < 1e-15);
     assert.equal(r0.omega, 0);
@@ -57,17 +50,17 @@ test('after n steps the readouts show row n of the CSV; back is exact', async ()
         await page.keyboard.press(n % 2 ? 'ArrowRight' : 'PageDown');
         n += 1;
       }
-      const r = await readouts(page);
+      const r = await pageValues(page);
       const [t, theta, omega, ke, pe, total] = want[k - 1];
       assert.deepEqual([r.t, r.theta, r.omega, r.ke, r.pe, r.total], [t, theta, omega, ke, pe, total], `row ${k}`);
     }
     await page.keyboard.press('ArrowLeft');
     await page.locator('[data-action="back"]').click();
-    const r = await readouts(page);
+    const r = await pageValues(page);
     assert.deepEqual([r.t, r.theta, r.omega, r.total], [want[22][0], want[22][1], want[22][2], want[22][5]]);
     // Step buttons too.
     await page.locator('[data-action="step"]').click();
-    assert.equal((await readouts(page)).theta, want[23][1]);
+    assert.equal((await pageValues(page)).theta, want[23][1]);
     assert.deepEqual(errors, []);
   } finally {
     await close();
@@ -88,7 +81,7 @@ test('End then download equals bsv: defaults and a URL setting every parameter',
     const { page, errors, close } = await open(hash);
     try {
       await page.locator('[data-action="end"]').click();
-      const r = await readouts(page);
+      const r = await pageValues(page);
       const last = rows[rows.length - 1];
       assert.deepEqual([r.t, r.theta, r.omega, r.total], [last[0], last[1], last[2], last[5]], hash);
       assertSameBytes(await download(page, 'pendulum_energy.csv'), want, hash);
@@ -138,7 +131,7 @@ test('the timestep control sets h (field, URL, run); the end of a damped run off
     const want = csvRows(cli(['pendulum-energy', '5', '--timestep', '0.05']).files.get('pendulum_energy.csv'));
     assert.equal(want.length, 100);
     await page.locator('[data-action="step"]').click();
-    assert.equal((await readouts(page)).theta, want[0][1]);
+    assert.equal((await pageValues(page)).theta, want[0][1]);
     const notice = page.locator('[data-pend="end"]');
     assert.equal(await notice.isVisible(), false);
     await page.locator('[data-action="end"]').click();
@@ -169,7 +162,7 @@ test('the default view swings by itself; play advances t; reduced motion does no
     await toStart(page);
     await page.locator('[data-action="run"]').click();
     await page.waitForTimeout(600);
-    const t1 = (await readouts(page)).t;
+    const t1 = (await pageValues(page)).t;
     assert.ok(t1 > 0.2 && t1 < 2, `t after 0.6 s at 1×: ${t1}`);
     // The URL follows the state.
     await page.waitForFunction(() => /[?&]t=/.test(location.hash), null, { timeout: 3000 });
@@ -192,7 +185,7 @@ test('compare mode shows both drifts, RK4 far smaller', async () => {
   try {
     assert.equal(await page.locator('[data-field="compare"]').isChecked(), true);
     await page.locator('[data-action="end"]').click();
-    const r = await readouts(page);
+    const r = await pageValues(page);
     assert.ok(await page.locator('[data-readout="drift-euler"]').isVisible());
     assert.ok(await page.locator('[data-readout="drift-rk4"]').isVisible());
     assert.ok(Math.abs(r['drift-euler']) > 1e-5, `euler ${r['drift-euler']}`);
@@ -246,7 +239,7 @@ test('a bad timestep shows its message and the run keeps the last valid timestep
     }
     await page.locator('[data-action="step"]').click();
     await page.locator('[data-action="step"]').click();
-    const r = await readouts(page);
+    const r = await pageValues(page);
     assert.deepEqual([r.t, r.theta], [rows[1][0], rows[1][1]]);
     assertSameBytes(await download(page, 'pendulum_energy.csv'), want, 'bad timestep keeps 0.002');
     await field.fill('0.004');
@@ -290,49 +283,23 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
     ['pendulum-phone-390.png', '#/pendulum-energy?lang=ja&compare=1', { viewport: { width: 390, height: 844 } }],
     ['pendulum-phone-390-en.png', '#/pendulum-energy?compare=1', { viewport: { width: 390, height: 844 } }],
   ];
-  for (const [file, hash, opts] of shots) {
-    const { page, errors, close } = await open(hash, opts);
-    try {
+  await screenshots(server.url, shots, {
+    prepare: async (page) => {
       await page.waitForTimeout(1200);
       await page.locator('[data-action="run"]').click();
-      const width = await page.evaluate(() => document.documentElement.scrollWidth);
-      assert.ok(width <= opts.viewport.width, `${file}: page ${width} px wide`);
-      await page.screenshot({ path: join(OUT, file), caret: 'initial' });
-      // An element screenshot taller than the viewport makes Playwright inject a style the
-      // CSP blocks (now and then): a phone gets one picture per plot.
+    },
+    shot: { caret: 'initial' },
+    // An element screenshot taller than the viewport makes Playwright inject a style the CSP
+    // blocks (now and then): a phone gets one picture per plot.
+    then: async (page, file) => {
       const plots = page.locator('.pend-plots');
-      if ((await plots.boundingBox()).height <= opts.viewport.height) {
+      if ((await plots.boundingBox()).height <= page.viewportSize().height) {
         await plots.screenshot({ path: join(OUT, file.replace('.png', '-plots.png')), caret: 'initial' });
       } else {
         for (const which of ['time', 'phase']) {
           await page.locator(`.pend-stage-${which}`).screenshot({ path: join(OUT, file.replace('.png', `-${which}.png`)), caret: 'initial' });
         }
       }
-      assert.deepEqual(errors, [], file);
-    } finally {
-      await close();
-    }
-  }
-});
-
-test('frame work p95 at 10× speed, 0.001 s, both integrators (bench builds only)', async (t) => {
-  const { page, close } = await open('#/pendulum-energy?timestep=0.001&compare=1&duration_s=20');
-  try {
-    if (!(await page.evaluate(() => Array.isArray(window.__pendulumFrameMs)))) {
-      t.skip('no bench hooks in this build');
-      return;
-    }
-    await toStart(page);
-    await page.locator('[data-stepper="speed"]').selectOption({ index: 6 });
-    await page.evaluate(() => { window.__pendulumFrameMs.length = 0; });
-    await page.locator('[data-action="run"]').click();
-    await page.waitForTimeout(4000);
-    const ms = (await page.evaluate(() => window.__pendulumFrameMs.slice())).sort((a, b) => a - b);
-    const p95 = ms[Math.floor(ms.length * 0.95)];
-    const tNow = (await readouts(page)).t;
-    console.log(`pendulum frame work: ${ms.length} frames, median ${ms[ms.length >> 1].toFixed(2)} ms, p95 ${p95.toFixed(2)} ms, max ${ms[ms.length - 1].toFixed(2)} ms; t = ${tNow}`);
-    assert.ok(tNow > 20 * 0.5, `10× for 4 s reached t = ${tNow}`);
-  } finally {
-    await close();
-  }
+    },
+  });
 });

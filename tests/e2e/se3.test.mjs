@@ -7,9 +7,8 @@
 // projector, phone 390 px) go to tests/e2e/out/.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { join } from 'node:path';
-import { openApp, OUT } from './harness.mjs';
-import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, readouts, query, screenshots } from './harness.mjs';
+import { serveAppWithCli, cliCsv, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
 // The CLI is built and dist/ served before the tests; all is closed after them.
@@ -22,17 +21,15 @@ const KEYS = ['x', 'y', 'z', 'roll', 'pitch', 'yaw'];
 
 /** `bsv se3-relative <args>`: the CSV bytes and its one row of numbers. */
 function run(args) {
-  const bytes = cli(['se3-relative', ...args]).files.get('se3_relative.csv');
-  const row = bytes.toString('utf8').trim().split('\n')[1].split(',').map(Number);
-  return { bytes, row };
+  const { bytes, rows } = cliCsv(['se3-relative', ...args], 'se3_relative.csv');
+  return { bytes, row: rows[0].map(Number) };
 }
 
 /** The relative pose readouts' exact values (data-value). */
-const readouts = (page) =>
-  page.evaluate((keys) => keys.map((k) => Number(document.querySelector(`[data-readout="${k}"]`).dataset.value)), KEYS);
-
-/** The URL query of the page as an object. */
-const query = (page) => page.evaluate(() => Object.fromEntries(new URLSearchParams(location.hash.split('?')[1] ?? '')));
+const pose = async (page) => {
+  const r = await readouts(page, { numbers: true });
+  return KEYS.map((k) => r[k]);
+};
 
 /** The twelve recipe arguments the URL holds (defaults filled in). */
 async function urlArgs(page) {
@@ -47,7 +44,7 @@ test('defaults: readouts, CSV row and download equal bsv se3-relative', async ()
   const { page, errors, close } = await open('#/se3-relative');
   try {
     const want = run([]);
-    assert.deepEqual(await readouts(page), want.row);
+    assert.deepEqual(await pose(page), want.row);
     assert.equal(await page.locator('[data-testid="se3-relative-row"]').innerText(), want.bytes.toString('utf8').trim().replace(/\r\n/g, '\n'));
     assertSameBytes(await download(page, 'se3_relative.csv'), want.bytes, 'defaults');
     assert.match(await page.locator('[data-testid="se3-cmd-bsv"]').innerText(), /^bsv se3-relative 0 0 0 0 0 0 0\.1 0\.05 0\.02 0\.2 0\.1 -0\.3$/);
@@ -76,7 +73,7 @@ test('a URL with other values: readouts and download equal bsv with the same arg
   const { page, errors, close } = await open(hash);
   try {
     const want = run(args);
-    assert.deepEqual(await readouts(page), want.row);
+    assert.deepEqual(await pose(page), want.row);
     assertSameBytes(await download(page, 'se3_relative.csv'), want.bytes, 'URL values');
     assert.equal(await page.locator('[data-testid="se3-cmd-bsv"]').innerText(), `bsv se3-relative ${args.join(' ')}`);
     assert.equal(await page.locator('[data-testid="se3-relative-canvas"]').getAttribute('data-view'), 'top');
@@ -97,14 +94,14 @@ test('a typed field changes the readouts as the kernel says; a bad value keeps t
     assert.equal(args[2], '-0.25');
     assert.equal(args[11], '1.3');
     const want = run(args);
-    assert.deepEqual(await readouts(page), want.row);
+    assert.deepEqual(await pose(page), want.row);
     // A bad value: its message beside the field, the result and the download stay.
     await page.locator('[data-field="by"]').fill('abc');
     const message = page.locator('[data-field-error="by"]');
     assert.ok(await message.isVisible());
     assert.match(await message.innerText(), /Frame B: y/);
     assert.equal(await page.locator('[data-field="by"]').getAttribute('aria-invalid'), 'true');
-    assert.deepEqual(await readouts(page), want.row);
+    assert.deepEqual(await pose(page), want.row);
     assertSameBytes(await download(page, 'se3_relative.csv'), want.bytes, 'last valid after a bad value');
     await settle(page);
     assert.deepEqual(await urlArgs(page), args, 'the URL keeps the last valid values');
@@ -132,7 +129,7 @@ test('degrees: fields and readouts in degrees, URL, command line and CSV in radi
     assert.equal(q.br, undefined, 'untouched angles keep their radians');
     const args = await urlArgs(page);
     const want = run(args);
-    assert.deepEqual(await readouts(page), want.row, 'exact values stay radians');
+    assert.deepEqual(await pose(page), want.row, 'exact values stay radians');
     const yawShown = Number(await page.locator('[data-readout="yaw"]').innerText());
     assert.ok(Math.abs(yawShown - (want.row[5] * 180) / Math.PI) < 1e-3, `${yawShown}`);
     assertSameBytes(await download(page, 'se3_relative.csv'), want.bytes, 'degree mode');
@@ -172,7 +169,7 @@ test('dragging B\'s origin moves B in the view plane; the readouts follow the ke
       assert.equal(await page.locator(`[data-field="${n}"]`).inputValue(), args[i]);
     }
     const want = run(args);
-    assert.deepEqual(await readouts(page), want.row);
+    assert.deepEqual(await pose(page), want.row);
     assertSameBytes(await download(page, 'se3_relative.csv'), want.bytes, 'after a drag');
     // B's origin is drawn where the pointer let go (to the millimetre).
     const nx = box.x + Number(await canvas.getAttribute('data-b-x'));
@@ -215,7 +212,7 @@ test('dragging A\'s yaw ring changes A\'s yaw alone, to the kernel\'s numbers; i
     assert.deepEqual(args.slice(6), DEFAULTS.slice(6), 'B stays');
     assert.match(await page.locator('[data-field="aw"]').inputValue(), /^-?\d+(\.\d)?$/, 'a round number of degrees');
     const want = run(args);
-    assert.deepEqual(await readouts(page), want.row);
+    assert.deepEqual(await pose(page), want.row);
     assert.deepEqual(errors, []);
   } finally {
     await close();
@@ -245,16 +242,5 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
     ['se3-relative-projector-1920.png', '#/se3-relative?aw=0.6&bx=0.15&by=0.1&bz=0.08', { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
     ['se3-relative-phone-390.png', '#/se3-relative?lang=ja', { viewport: { width: 390, height: 844 } }],
   ];
-  for (const [file, hash, opts] of shots) {
-    const { page, errors, close } = await open(hash, opts);
-    try {
-      await page.waitForTimeout(300);
-      const scroll = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
-      assert.ok(scroll <= 0, `${file}: scrolls sideways by ${scroll}px`);
-      await page.screenshot({ path: join(OUT, file) });
-      assert.deepEqual(errors, []);
-    } finally {
-      await close();
-    }
-  }
+  await screenshots(server.url, shots);
 });

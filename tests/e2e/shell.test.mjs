@@ -2,20 +2,13 @@
 // reload, ?lang= in the URL, the saved language, the ? shortcut overlay, projector mode, the
 // not-found route, the home page's recipe cards, and a phone-width layout without horizontal
 // scrolling. Screenshots of the home page go to tests/e2e/out/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { startServer, openApp, closeBrowser, browser, OUT, ROOT } from './harness.mjs';
+import { serveApp, openApp, browser, OUT, ROOT } from './harness.mjs';
 
-let server;
-before(async () => {
-  server = await startServer();
-});
-after(async () => {
-  await closeBrowser();
-  await server?.close();
-});
+const server = serveApp();
 
 const DISCLAIMER_EN = 'Research, education and simulation only.';
 const DISCLAIMER_JA = '研究・教育・シミュレーション専用です。';
@@ -82,7 +75,7 @@ test('the shell renders in English with the home page, navigation and disclaimer
     }
     const pid = page.locator('[data-testid="recipe-card-pid-step"]');
     assert.match(await pid.innerText(), /In the browser:\s*Run this drill\s*(?:: Discrete PID step response \(toy plant\))?\W*PID step response/);
-    // Every recipe now has a page of its own (the three IK recipes share the IK page).
+    // Every recipe has a page of its own (the three IK recipes share the IK page).
     for (const id of ['ik-workspace', 'jacobian-2r', 'manip-grid']) {
       assert.ok((await page.locator(`[data-testid="recipe-card-${id}"] a`).evaluateAll((as) => as.map((a) => a.getAttribute('href')))).includes('#/ik-2r'), id);
     }

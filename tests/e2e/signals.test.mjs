@@ -3,13 +3,12 @@
 // `bsv` byte for byte for the defaults and for a URL with other values; a bad value shows its
 // message beside the field and the page keeps the last valid plot and download; Japanese leaves
 // no English UI text. Screenshots (EN/JA 1920×1080, projector, phone 390 px) go to
-// tests/e2e/out/. In a build with `--features bench`, it also reports the recompute + redraw
-// time of slider drags (p95) at the default sizes and at 100,000 samples.
+// tests/e2e/out/. The recompute + redraw time of slider drags is a figure of
+// tests/bench/signals.bench.mjs.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { join } from 'node:path';
-import { openApp, OUT } from './harness.mjs';
-import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, readouts, query, screenshots } from './harness.mjs';
+import { serveAppWithCli, cli, cliCsv, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
 const app = serveAppWithCli();
@@ -17,22 +16,12 @@ const open = (hash, opts = {}) => openApp(app.url, hash, opts);
 
 /** The CSV of `bsv <args>` as rows of numbers, and the file's bytes. */
 function run(file, args) {
-  const bytes = cli(args).files.get(file);
-  const rows = bytes.toString('utf8').trim().split('\n').slice(1).map((l) => l.split(',').map(Number));
-  return { bytes, rows };
+  const { bytes, rows } = cliCsv(args, file);
+  return { bytes, rows: rows.map((r) => r.map(Number)) };
 }
 
 /** `data-readout` → exact value (data-value, a number) of the page. */
-async function readouts(page) {
-  return page.evaluate(() => {
-    const out = {};
-    for (const el of document.querySelectorAll('[data-readout]')) {
-      const v = el.dataset.value;
-      out[el.dataset.readout] = v === undefined || v === '' ? null : Number.isNaN(Number(v)) ? v : Number(v);
-    }
-    return out;
-  });
-}
+const pageValues = (page) => readouts(page, { numbers: true });
 
 /** Sets a slider as a drag does (value, then an input event) and lets a frame pass. */
 async function slide(page, name, value) {
@@ -44,9 +33,6 @@ async function slide(page, name, value) {
 
 /** The pixels of the data layer of the page's plot. */
 const dataLayer = (page) => page.evaluate(() => document.querySelectorAll('.sig-stage canvas')[1].toDataURL());
-
-/** The URL query of the page as an object. */
-const query = (page) => page.evaluate(() => Object.fromEntries(new URLSearchParams(location.hash.split('?')[1] ?? '')));
 
 const maxAbs = (rows, col) => rows.reduce((best, r) => (Math.abs(r[col]) > Math.abs(best[col]) ? r : best), rows[0]);
 
@@ -65,7 +51,7 @@ test('cubic-path: dragging the end point moves q1 and T; readouts are the CSV\'s
     assert.ok(Number(q.T) > 1 && Number(q.q1) < 1.2, JSON.stringify(q));
     assert.equal(await page.locator('[data-field="T"]').inputValue(), q.T);
     const { rows } = run('cubic_path.csv', ['cubic-path', '0.0', q.q1, q.T, '0.02']);
-    const r = await readouts(page);
+    const r = await pageValues(page);
     const peakV = maxAbs(rows, 2);
     const peakA = maxAbs(rows, 3);
     assert.equal(r['peak-velocity'], peakV[2]);
@@ -77,10 +63,10 @@ test('cubic-path: dragging the end point moves q1 and T; readouts are the CSV\'s
     await slide(page, 'q0', 0.5);
     assert.equal(await page.locator('[data-field="q0"]').inputValue(), '0.5');
     const again = run('cubic_path.csv', ['cubic-path', '0.5', q.q1, q.T, '0.02']).rows;
-    assert.equal((await readouts(page))['peak-velocity'], maxAbs(again, 2)[2]);
+    assert.equal((await pageValues(page))['peak-velocity'], maxAbs(again, 2)[2]);
     // Hovering a plot moves the cursor readout to the sample under it.
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
-    const c = await readouts(page);
+    const c = await pageValues(page);
     const sample = again.find((row) => row[0] === c['cursor-t']);
     assert.ok(sample, `cursor t ${c['cursor-t']} is a sample time`);
     assert.deepEqual([c['cursor-q'], c['cursor-qd'], c['cursor-qdd']], [sample[1], sample[2], sample[3]]);
@@ -139,7 +125,7 @@ test('cubic-path: while a slider is held the axes only grow (the curve moves ins
     assert.ok(fitted < held - 20, `held ${held} px, fitted ${fitted} px`);
     // The readouts are the CSV's for the value let go at.
     const { rows } = run('cubic_path.csv', ['cubic-path', '0.0', String(q1), '1.0', '0.02']);
-    assert.equal((await readouts(page)).rows, rows.length);
+    assert.equal((await pageValues(page)).rows, rows.length);
     assert.deepEqual(errors, []);
   } finally {
     await close();
@@ -153,7 +139,7 @@ test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; dive
     await slide(page, 'Ki', 4);
     await page.locator('[data-slider="Ki"]').dispatchEvent('change');
     const { rows } = run('pid_step.csv', ['pid-step', '2', '4', '0.05', '0.8', '300']);
-    const r = await readouts(page);
+    const r = await pageValues(page);
     const first = (level) => rows.find((row) => row[2] >= level)[0];
     assert.equal(r['rise-time'], first(0.9) - first(0.1));
     const maxY = Math.max(...rows.map((row) => row[2]));
@@ -169,7 +155,7 @@ test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; dive
     const box = await page.locator('[data-testid="pid-step-canvas"]').boundingBox();
     for (const f of [0.3, 0.7]) {
       await page.mouse.move(box.x + box.width * f, box.y + box.height / 3);
-      const c = await readouts(page);
+      const c = await pageValues(page);
       const row = rows.find((x) => x[0] === c['cursor-t']);
       assert.ok(row, `cursor t ${c['cursor-t']} is a CSV time`);
       assert.deepEqual([c['cursor-r'], c['cursor-y'], c['cursor-u']], [row[1], row[2], row[3]]);
@@ -178,7 +164,7 @@ test('pid-step: a Kp slider changes the figures as the CSV says; the ghost; dive
     await page.locator('[data-field="Kp"]').fill('-5');
     await page.waitForSelector('[data-testid="pid-step-warning"]:not([hidden])');
     assert.match(await page.locator('[data-testid="pid-step-warning"]').innerText(), /unstable/);
-    assert.equal((await readouts(page))['rise-time'], null);
+    assert.equal((await pageValues(page))['rise-time'], null);
     // The live summary says "not reached" bare, a unit only after a number.
     const live = page.locator('[data-testid="pid-live"]');
     // (Announcements are throttled: wait for the one of Kp = -5, not an earlier one.)
@@ -196,10 +182,6 @@ test('a run over 150,000 rows is computed a slice per frame: the last run stays 
   const { page, errors, close } = await open('#/pid-step?Kp=2&Ki=4&Kd=0.05&tau=0.8&steps=400000');
   const line = page.locator('[data-testid="pid-step-computing"]');
   try {
-    await page.evaluate(() => {
-      window.__tasks = [];
-      new PerformanceObserver((l) => { for (const e of l.getEntries()) window.__tasks.push(e.duration); }).observe({ type: 'longtask' });
-    });
     await line.waitFor({ state: 'hidden', timeout: 20000 });
     const figuresOf = (rows) => {
       const first = (level) => rows.find((row) => row[2] >= level)[0];
@@ -207,7 +189,7 @@ test('a run over 150,000 rows is computed a slice per frame: the last run stays 
       return { rise: first(0.9) - first(0.1), settling: rows[lastOut + 1][0], sse: 1 - rows[rows.length - 1][2], final: rows[rows.length - 1][2] };
     };
     const shown = async () => {
-      const r = await readouts(page);
+      const r = await pageValues(page);
       return { rise: r['rise-time'], settling: r['settling-time'], sse: r['steady-state-error'], final: r['final-y'] };
     };
     const before = figuresOf(run('pid_step.csv', ['pid-step', '2', '4', '0.05', '0.8', '400000']).rows);
@@ -247,8 +229,6 @@ test('a run over 150,000 rows is computed a slice per frame: the last run stays 
     assert.equal(await line.isVisible(), false);
     const small = figuresOf(run('pid_step.csv', ['pid-step', '4', '4', '0.05', '0.8', '300']).rows);
     assert.deepEqual(await shown(), small);
-    const tasks = await page.evaluate(() => window.__tasks);
-    console.log(`pid-step 400,000 rows: longest task ${Math.round(Math.max(0, ...tasks))} ms (${tasks.length} over 50 ms)`);
     assert.deepEqual(errors, []);
   } finally {
     await close();
@@ -259,7 +239,7 @@ test('trapezoid-profile: dragging vmax up on a short move makes a triangle', asy
   const { page, errors, close } = await open('#/trapezoid-profile');
   try {
     assert.equal(await page.locator('[data-testid="trapezoid-profile-triangle"]').isVisible(), false);
-    assert.equal((await readouts(page)).shape, 'trapezoid');
+    assert.equal((await pageValues(page)).shape, 'trapezoid');
     const canvas = page.locator('[data-testid="trapezoid-profile-canvas"]');
     const box = await canvas.boundingBox();
     const h = await canvas.evaluate((c) => [Number(c.dataset.vmaxX), Number(c.dataset.vmaxY)]);
@@ -272,7 +252,7 @@ test('trapezoid-profile: dragging vmax up on a short move makes a triangle', asy
     assert.ok(Number(q.vmax) > 0.5, q.vmax);
     const out = cli(['trapezoid-profile', '1.0', q.vmax, '1.0', '0.01']);
     const summary = /t_total=([\d.]+)s vmax_used=([\d.]+)/.exec(out.stdout);
-    const r = await readouts(page);
+    const r = await pageValues(page);
     assert.equal(r['t-total'].toFixed(4), summary[1]);
     assert.equal(r['v-peak'].toFixed(4), summary[2]);
     const rows = out.files.get('trap_profile.csv').toString().trim().split('\n').slice(1).map((l) => l.split(',').map(Number));
@@ -281,7 +261,7 @@ test('trapezoid-profile: dragging vmax up on a short move makes a triangle', asy
     // Hovering the plots moves the cursor readout to the CSV row under it.
     for (const f of [0.25, 0.6]) {
       await page.mouse.move(box.x + box.width * f, box.y + box.height / 2);
-      const c = await readouts(page);
+      const c = await pageValues(page);
       const row = rows.find((x) => x[0] === c['cursor-t']);
       assert.ok(row, `cursor t ${c['cursor-t']} is a CSV time`);
       assert.deepEqual([c['cursor-s'], c['cursor-v'], c['cursor-a']], [row[1], row[2], row[3]]);
@@ -289,8 +269,8 @@ test('trapezoid-profile: dragging vmax up on a short move makes a triangle', asy
     // Distance 0.2 with the slider: a triangle, said so.
     await slide(page, 'distance', 0.2);
     await page.waitForSelector('[data-testid="trapezoid-profile-triangle"]:not([hidden])');
-    assert.equal((await readouts(page)).shape, 'triangle');
-    assert.equal((await readouts(page))['t-flat'], 0);
+    assert.equal((await pageValues(page)).shape, 'triangle');
+    assert.equal((await pageValues(page))['t-flat'], 0);
     assert.deepEqual(errors, []);
   } finally {
     await close();
@@ -309,7 +289,7 @@ for (const [id, file, field, cases] of BAD) {
     const { page, errors, close } = await open(`#/${id}`);
     try {
       const before = await dataLayer(page);
-      const shown = await readouts(page);
+      const shown = await pageValues(page);
       const input = page.locator(`[data-field="${field}"]`);
       const message = page.locator(`[data-field-error="${field}"]`);
       assert.equal(await message.isVisible(), false);
@@ -320,7 +300,7 @@ for (const [id, file, field, cases] of BAD) {
         assert.equal(await input.getAttribute('aria-invalid'), 'true');
       }
       assert.equal(await dataLayer(page), before, 'the plot is the last valid one');
-      assert.deepEqual(await readouts(page), shown);
+      assert.deepEqual(await pageValues(page), shown);
       assertSameBytes(await download(page, file), bytes, `${id} with a bad ${field}`);
       assert.deepEqual(errors, []);
     } finally {
@@ -360,59 +340,15 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
       [`${id}-projector-1920.png`, `#/${id}${search}`, { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
       [`${id}-phone-390.png`, `#/${id}${search}${search ? '&' : '?'}lang=ja`, { viewport: { width: 390, height: 844 } }],
     ];
-    for (const [file, hash, opts] of shots) {
-      const { page, errors, close } = await open(hash, opts);
-      try {
+    await screenshots(app.url, shots, {
+      prepare: async (page) => {
         if (id === 'pid-step') {
           await slide(page, 'Kp', 4);
           await page.locator('[data-slider="Kp"]').dispatchEvent('change');
           await slide(page, 'Kp', 2);
         }
         await page.waitForTimeout(300);
-        const width = await page.evaluate(() => document.documentElement.scrollWidth);
-        assert.ok(width <= opts.viewport.width, `${file}: page ${width} px wide`);
-        await page.screenshot({ path: join(OUT, file) });
-        assert.deepEqual(errors, []);
-      } finally {
-        await close();
-      }
-    }
-  }
-});
-
-test('slider drag recompute + redraw p95 (bench builds only)', async (t) => {
-  const cases = [
-    ['cubic-path', '', 'q1', [0.2, 3.0]],
-    ['cubic-path', '?T=2&dt=0.00002', 'q1', [0.2, 3.0]],
-    ['pid-step', '', 'Kp', [0.5, 6]],
-    ['pid-step', '?steps=100000', 'Kp', [0.5, 1.5]],
-    ['trapezoid-profile', '', 'vmax', [0.1, 2.5]],
-    ['trapezoid-profile', '?dt=0.000025', 'vmax', [0.1, 2.5]],
-  ];
-  for (const [id, search, name, [lo, hi]] of cases) {
-    const { page, close } = await open(`#/${id}${search}`, { viewport: { width: 1920, height: 1080 } });
-    try {
-      if (!(await page.evaluate(() => Array.isArray(window.__signalFrameMs)))) {
-        t.skip('no bench hooks in this build');
-        return;
-      }
-      await page.evaluate(() => { window.__signalFrameMs.length = 0; });
-      const slider = page.locator(`[data-slider="${name}"]`);
-      const box = await slider.boundingBox();
-      await page.mouse.move(box.x + 4, box.y + box.height / 2);
-      await page.mouse.down();
-      for (let k = 0; k <= 120; k++) {
-        const f = k / 120;
-        await page.mouse.move(box.x + 4 + f * (box.width - 8), box.y + box.height / 2);
-        await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
-      }
-      await page.mouse.up();
-      const ms = (await page.evaluate(() => window.__signalFrameMs.slice())).sort((a, b) => a - b);
-      const p95 = ms[Math.min(ms.length - 1, Math.ceil(ms.length * 0.95) - 1)];
-      console.log(`${id}${search} ${name} ${lo}..${hi}: ${ms.length} updates, median ${ms[ms.length >> 1].toFixed(2)} ms, p95 ${p95.toFixed(2)} ms, max ${ms[ms.length - 1].toFixed(2)} ms`);
-      assert.ok(ms.length > 20, `${ms.length} updates`);
-    } finally {
-      await close();
-    }
+      },
+    });
   }
 });

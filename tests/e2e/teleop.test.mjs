@@ -9,11 +9,11 @@
 // session kept; Japanese leaves no English UI text. Screenshots go to tests/e2e/out/.
 // An idle page requests no animation frames, and a key press still moves the tip on the next
 // frame. Four 60 s episodes (stored sessions of 6,000 commands each) export in slices: the
-// episode CSV and the evidence with a progress line and no main-thread task of 100 ms, and
-// `bsv teleop-replay` reproduces the CSV. Ten stored 60 s episodes and one cut off load in
-// slices after a reload (a progress line, no task of 100 ms), the session intact. A second
-// session after an exported first: the
-// comparison keeps the first, the second's files are its own, and a reload keeps both.
+// episode CSV and the evidence with a progress line, and `bsv teleop-replay` reproduces the CSV.
+// Ten stored 60 s episodes and one cut off load in slices after a reload (a progress line), the
+// session intact. A second session after an exported first: the comparison keeps the first, the
+// second's files are its own, and a reload keeps both. The main-thread tasks of the exports and
+// of the load are figures of tests/bench/teleop.bench.mjs.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createHash } from 'node:crypto';
@@ -21,7 +21,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { openApp, browser, OUT } from './harness.mjs';
+import { openApp, browser, readouts, screenshots } from './harness.mjs';
 import { serveAppWithCli, BSV, download } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
@@ -30,13 +30,8 @@ const server = serveAppWithCli();
 
 const open = (hash = '#/teleop', opts = {}) => openApp(server.url, hash, opts);
 
-async function readouts(page) {
-  return page.evaluate(() => {
-    const out = {};
-    for (const el of document.querySelectorAll('[data-readout]')) out[el.dataset.readout] = el.textContent;
-    return out;
-  });
-}
+/** `data-readout` → shown text of the page. */
+const shownReadouts = (page) => readouts(page, { text: true });
 
 async function hold(page, key, ms) {
   await page.keyboard.down(key);
@@ -49,21 +44,21 @@ const canvas = (page) => page.locator('[data-testid="teleop-canvas"]');
 test('holding W moves x up, Q moves z up; the arm starts engaged', async () => {
   const { page, errors, close } = await open();
   try {
-    const r0 = await readouts(page);
+    const r0 = await shownReadouts(page);
     assert.equal(await page.locator('[data-readout="state"]').getAttribute('data-value'), 'engaged');
     await canvas(page).focus();
     await hold(page, 'w', 300);
-    const r1 = await readouts(page);
+    const r1 = await shownReadouts(page);
     assert.ok(Number(r1.x) > Number(r0.x) + 0.01, `x ${r0.x} → ${r1.x}`);
     assert.ok(Math.abs(Number(r1.z) - Number(r0.z)) < 0.01, `z stays: ${r0.z} → ${r1.z}`);
     await hold(page, 'q', 300);
-    const r2 = await readouts(page);
+    const r2 = await shownReadouts(page);
     assert.ok(Number(r2.z) > Number(r1.z) + 0.01, `z ${r1.z} → ${r2.z}`);
     // Space pauses: W then moves nothing.
     await page.keyboard.press('Space');
     assert.equal(await page.locator('[data-readout="state"]').getAttribute('data-value'), 'paused');
     await hold(page, 'w', 200);
-    const r3 = await readouts(page);
+    const r3 = await shownReadouts(page);
     assert.equal(r3.x, r2.x);
     // K closes the gripper (readout and button).
     await page.keyboard.press('k');
@@ -83,19 +78,19 @@ test('a pointer drag on the arm view pulls the tip only while held (clutch)', as
   try {
     await page.locator('[data-device="pointer"]').click();
     const box = await canvas(page).boundingBox();
-    const r0 = await readouts(page);
+    const r0 = await shownReadouts(page);
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     await page.mouse.down();
     await page.mouse.move(box.x + box.width / 2 + 40, box.y + box.height / 2 - 30, { steps: 4 });
     await page.waitForTimeout(400);
-    const r1 = await readouts(page);
+    const r1 = await shownReadouts(page);
     assert.ok(Number(r1.x) > Number(r0.x) + 0.01, `x ${r0.x} → ${r1.x}`);
     assert.ok(Number(r1.z) > Number(r0.z) + 0.01, `z ${r0.z} → ${r1.z}`);
     await page.mouse.up();
     await page.waitForTimeout(150);
-    const r2 = await readouts(page);
+    const r2 = await shownReadouts(page);
     await page.waitForTimeout(200);
-    assert.equal((await readouts(page)).x, r2.x, 'released: the tip stays');
+    assert.equal((await shownReadouts(page)).x, r2.x, 'released: the tip stays');
     assert.equal(await page.locator('[data-check="moved"]').getAttribute('data-state'), 'done');
     assert.deepEqual(errors, []);
   } finally {
@@ -122,18 +117,18 @@ test('an injected gamepad moves the arm and is named', async () => {
     // The gamepad's sensitivities (Isaac Lab's 1.0 / 1.6) replace the keyboard's.
     assert.equal(await page.locator('[data-field="pos_sensitivity"]').inputValue(), '1');
     assert.equal(await page.locator('[data-field="rot_sensitivity"]').inputValue(), '1.6');
-    const r0 = await readouts(page);
+    const r0 = await shownReadouts(page);
     // Left stick up (negative in the standard mapping): +x.
     await page.evaluate(() => { window.__testPad.axes[1] = -1; });
     await page.waitForTimeout(250);
     await page.evaluate(() => { window.__testPad.axes[1] = 0; });
-    const r1 = await readouts(page);
+    const r1 = await shownReadouts(page);
     assert.ok(Number(r1.x) > Number(r0.x) + 0.01, `x ${r0.x} → ${r1.x}`);
     // Right stick up: +z.
     await page.evaluate(() => { window.__testPad.axes[3] = -1; });
     await page.waitForTimeout(250);
     await page.evaluate(() => { window.__testPad.axes[3] = 0; });
-    const r2 = await readouts(page);
+    const r2 = await shownReadouts(page);
     assert.ok(Number(r2.z) > Number(r1.z) + 0.01, `z ${r1.z} → ${r2.z}`);
     // X (button 2) toggles the gripper on its press.
     await page.evaluate(() => { window.__testPad.buttons[2] = { pressed: true, touched: true, value: 1 }; });
@@ -151,7 +146,7 @@ function sha256(buf) {
   return createHash('sha256').update(buf).digest('hex');
 }
 
-/** The rules of teleop-session-evidence v0.1 as the issue lists them. */
+/** The rules of teleop-session-evidence v0.1. */
 function checkEvidence(doc) {
   const keys = ['schemaVersion', 'evidenceId', 'pilotId', 'taskId', 'environment', 'runtime', 'runtimeVersion', 'embodiment',
     'inputDevice', 'startedAt', 'endedAt', 'episodes', 'safetyEvents', 'dataArtifacts', 'metrics', 'review'];
@@ -172,9 +167,11 @@ function checkEvidence(doc) {
   for (const v of Object.values(e)) assert.ok(Number.isInteger(v) && v >= 0);
   assert.equal(e.successful + e.failed, e.attempted);
   assert.ok(Array.isArray(doc.safetyEvents));
+  for (const ev of doc.safetyEvents) assert.equal(typeof ev, 'string');
   assert.ok(Array.isArray(doc.dataArtifacts));
   for (const a of doc.dataArtifacts) {
-    assert.equal(typeof a.path, 'string');
+    assert.equal(typeof a.type, 'string');
+    assert.equal(typeof a.uriOrRef, 'string');
     assert.match(a.sha256, /^[0-9a-f]{64}$/);
   }
   for (const [k, v] of Object.entries(doc.metrics)) {
@@ -193,10 +190,10 @@ test('a scripted session: preflight, an episode recorded, labelled, exported; bs
     assert.equal(await page.locator('[data-check="moved"]').getAttribute('data-state'), 'done');
     await page.keyboard.press('r');
     assert.equal(await page.locator('[data-check="reset"]').getAttribute('data-state'), 'done');
-    assert.equal((await readouts(page)).x, '0.1000');
+    assert.equal((await shownReadouts(page)).x, '0.1000');
     // Record ten.
     await page.locator('[data-module="record-ten"]').click();
-    assert.equal((await readouts(page)).episode, '1 / 10');
+    assert.equal((await shownReadouts(page)).episode, '1 / 10');
     await canvas(page).focus();
     await hold(page, 'w', 400);
     await hold(page, 'e', 300);
@@ -211,7 +208,7 @@ test('a scripted session: preflight, an episode recorded, labelled, exported; bs
     await page.locator('[data-field="note"]').fill('wrist hit, "table"');
     await page.locator('[data-action="confirm-label"]').click();
     await panel.waitFor({ state: 'hidden' });
-    assert.equal((await readouts(page)).episode, '2 / 10');
+    assert.equal((await shownReadouts(page)).episode, '2 / 10');
 
     // The episode's time series replays exactly with the CLI.
     const episodeCsv = await download(page, 'teleop_episode_1.csv');
@@ -235,7 +232,7 @@ test('a scripted session: preflight, an episode recorded, labelled, exported; bs
     assert.equal(doc.inputDevice, 'keyboard');
     assert.equal(doc.metrics['failures.collision'], 1);
     assert.equal(doc.metrics.preflightResetVerified, true);
-    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.path, a.sha256]));
+    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.uriOrRef, a.sha256]));
     assert.equal(listed['teleop_episode_1.csv'], sha256(episodeCsv));
     assert.equal(listed['teleop_episodes.csv'], sha256(Buffer.from(table.join('\n') + '\n')));
 
@@ -243,7 +240,7 @@ test('a scripted session: preflight, an episode recorded, labelled, exported; bs
     // interrupted, and offered for labelling.
     await canvas(page).focus();
     await hold(page, 's', 150);
-    assert.equal((await readouts(page)).x, Number(last1x).toFixed(4), 'an ended episode takes no input before a reset');
+    assert.equal((await shownReadouts(page)).x, Number(last1x).toFixed(4), 'an ended episode takes no input before a reset');
     await page.keyboard.press('r');
     await hold(page, 's', 250);
     await page.reload();
@@ -265,7 +262,7 @@ test('a scripted session: preflight, an episode recorded, labelled, exported; bs
     await page.locator('[data-testid="teleop-stepper"] [data-action="end"]').click();
     // At the end, the readouts show the CSV's last row (x, z are columns 13 and 14).
     const last = episodeCsv.toString('utf8').trim().split('\n').pop().split(',');
-    const end = await readouts(page);
+    const end = await shownReadouts(page);
     assert.equal(end.x, Number(last[12]).toFixed(4));
     assert.equal(end.z, Number(last[13]).toFixed(4));
     // The timeline's marks: Okabe–Ito vermilion (the first failure's triangle, the crosses),
@@ -334,20 +331,14 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
     ['teleop-projector-1920.png', '#/teleop', { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
     ['teleop-phone-390.png', '#/teleop?lang=ja', { viewport: { width: 390, height: 844 } }],
   ];
-  for (const [name, hash, opts] of shots) {
-    const { page, errors, close } = await open(hash, opts);
-    try {
+  await screenshots(server.url, shots, {
+    prepare: async (page) => {
       await canvas(page).focus();
       await hold(page, 'w', 250);
       await hold(page, 'q', 150);
-      const width = await page.evaluate(() => document.documentElement.scrollWidth);
-      assert.ok(width <= opts.viewport.width, `${name}: no horizontal scroll (${width})`);
-      await page.screenshot({ path: join(OUT, name), fullPage: true });
-      assert.deepEqual(errors, []);
-    } finally {
-      await close();
-    }
-  }
+    },
+    shot: { fullPage: true },
+  });
 });
 
 /** Preflight with the keyboard (the arm moved, a reset checked), then Record ten. */
@@ -371,18 +362,13 @@ async function recordEpisode(page, key, ms) {
   await page.keyboard.press('r');
 }
 
-/** A page whose requestAnimationFrame calls are counted (window.__rafCalls) and whose main-thread
- * tasks over 50 ms are listed (window.__longTasks, ms). */
+/** A page whose requestAnimationFrame calls are counted (window.__rafCalls). */
 async function openCounted(hash = '#/teleop') {
   const app = await open(hash);
   await app.context.addInitScript(() => {
     window.__rafCalls = 0;
     const raf = window.requestAnimationFrame.bind(window);
     window.requestAnimationFrame = (cb) => { window.__rafCalls++; return raf(cb); };
-    window.__longTasks = [];
-    new PerformanceObserver((list) => {
-      for (const e of list.getEntries()) window.__longTasks.push(e.duration);
-    }).observe({ type: 'longtask', buffered: true });
   });
   await app.page.reload();
   await app.page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
@@ -424,21 +410,21 @@ test('an idle page requests no frames; a key press moves the tip on the next fra
     );
     assert.equal(frames, 1, 'the tip moved on the next frame');
     // Held keys keep the frames coming and the tip moving.
-    const r0 = await readouts(page);
+    const r0 = await shownReadouts(page);
     await page.keyboard.down('q');
     const held = await framesDuring(page, 1000);
     await page.keyboard.up('q');
     // (A busy machine's headless Chromium may give far fewer than 60 frames a second.)
     assert.ok(held >= 5, `${held} frames while Q was held`);
-    assert.ok(Number((await readouts(page)).z) > Number(r0.z) + 0.01);
+    assert.ok(Number((await shownReadouts(page)).z) > Number(r0.z) + 0.01);
     // The episode's clock runs after the first input (time passes); a reset stops it.
-    const t0 = Number((await readouts(page)).time);
+    const t0 = Number((await shownReadouts(page)).time);
     await page.waitForTimeout(300);
-    assert.ok(Number((await readouts(page)).time) > t0 + 0.1, 'the episode clock runs');
+    assert.ok(Number((await shownReadouts(page)).time) > t0 + 0.1, 'the episode clock runs');
     await page.keyboard.press('r');
     await page.waitForTimeout(200);
     assert.ok((await framesDuring(page, 1000)) <= 1, 'idle again after the reset');
-    assert.equal((await readouts(page)).time, '0.00');
+    assert.equal((await shownReadouts(page)).time, '0.00');
     // The on-screen buttons wake it too: the gripper closes on the next frame.
     await page.locator('[data-action="gripper"]').click();
     await page.waitForFunction(() => document.querySelector('[data-readout="gripper"]').dataset.value === 'closed');
@@ -488,8 +474,8 @@ function sixtySecondSession(stored, copies) {
   return JSON.stringify(s);
 }
 
-test('60 s episodes export in slices: progress shown, no task of 100 ms, bsv teleop-replay reproduces the CSV', async () => {
-  const { page, context, errors, close } = await openCounted();
+test('60 s episodes export in slices: progress shown, bsv teleop-replay reproduces the CSV', async () => {
+  const { page, context, errors, close } = await open();
   const dir = mkdtempSync(join(tmpdir(), 'bsv-teleop-long-'));
   try {
     await preflightThenRecord(page);
@@ -509,24 +495,8 @@ test('60 s episodes export in slices: progress shown, no task of 100 ms, bsv tel
         .observe(el, { childList: true, characterData: true, subtree: true, attributes: true });
     });
     await page.waitForTimeout(500);
-    // Downloads `file` up to three times (the machine running the tests may be busy): the bytes
-    // of the first, the wall time and the long tasks (ms) of each, stopping at a clean one.
-    const exported = async (file) => {
-      const tries = [];
-      let bytes = null;
-      for (let i = 0; i < 3 && !tries.some((t) => t.tasks.every((d) => d < 100)); i++) {
-        await page.evaluate(() => { window.__longTasks = []; });
-        const t0 = Date.now();
-        const got = await download(page, file);
-        bytes ??= got;
-        assert.ok(got.equals(bytes), `${file}: the same bytes each time`);
-        tries.push({ ms: Date.now() - t0, tasks: await page.evaluate(() => window.__longTasks.map(Math.round)) });
-      }
-      return { bytes, tries };
-    };
-
     // One episode's CSV: 6,000 rows, about 1.6 MB.
-    const { bytes: csv, tries: csvTries } = await exported('teleop_episode_1.csv');
+    const csv = await download(page, 'teleop_episode_1.csv');
     const lines = csv.toString('utf8').trim().split('\n');
     const rows = lines.filter((l) => !l.startsWith('#')).length - 1;
     assert.equal(rows, 6000);
@@ -542,22 +512,17 @@ test('60 s episodes export in slices: progress shown, no task of 100 ms, bsv tel
     assert.ok(await page.locator('[data-tele="export-progress"]').isHidden());
 
     // The evidence: the four CSVs (24,000 rows) hashed in slices.
-    const { bytes: evidence, tries: evidenceTries } = await exported('teleop_session_evidence.json');
+    const evidence = await download(page, 'teleop_session_evidence.json');
     const doc = JSON.parse(evidence.toString('utf8'));
     checkEvidence(doc);
     assert.equal(doc.episodes.attempted, 4);
-    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.path, a]));
+    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.uriOrRef, a]));
     assert.equal(listed['teleop_episode_1.csv'].sha256, sha256(csv));
     assert.equal(listed['teleop_episode_1.csv'].bytes, csv.length);
     assert.equal(listed['teleop_episode_4.csv'].sha256, sha256(csv), 'the same commands, the same bytes');
     const progress2 = await page.evaluate(() => window.__progress.splice(0));
     assert.ok(progress2.some((t) => /^Writing teleop_session_evidence\.json: [\d,]+ of 24,000 rows…$/.test(t)), `progress: ${progress2.join(' | ')}`);
 
-    // (Written in one task, the evidence's is about 240 ms and the CSV's 70 ms on an idle machine.)
-    console.log(`# teleop exports (ms, long tasks): episode CSV ${JSON.stringify(csvTries)}, evidence of 4 × 60 s ${JSON.stringify(evidenceTries)}`);
-    for (const [name, tries] of [['the CSV', csvTries], ['the evidence', evidenceTries]]) {
-      assert.ok(tries.some((t) => t.tasks.every((d) => d < 100)), `a task of 100 ms or more each time ${name} was written: ${JSON.stringify(tries)}`);
-    }
     // The file's bytes are what the episodes table and the evidence say (the progress line gone).
     const table = (await download(page, 'teleop_episodes.csv')).toString('utf8').trim().split('\n');
     assert.match(table[1], /^1,pick-place,FAILURE,timeout,,0,timeout,60(\.0)?,/);
@@ -584,8 +549,8 @@ test('60 s episodes export in slices: progress shown, no task of 100 ms, bsv tel
   }
 });
 
-test('ten stored 60 s episodes and one cut off load in slices: no task of 100 ms, the session intact', async () => {
-  const { page, context, errors, close } = await openCounted();
+test('ten stored 60 s episodes and one cut off load in slices: a progress line, the session intact', async () => {
+  const { page, context, errors, close } = await open();
   try {
     await preflightThenRecord(page);
     await recordEpisode(page, 'w', 200);
@@ -593,20 +558,11 @@ test('ten stored 60 s episodes and one cut off load in slices: no task of 100 ms
     // An eleventh episode, 30 s in, under way when the tab reloaded.
     s.in_progress = { ...s.episodes[0].episode, runs: s.episodes[0].episode.runs.slice(0, 2) };
     await storeSessionOnNextLoad(context, JSON.stringify(s));
-    // Loads the stored session up to three times (the machine running the tests may be busy),
-    // stopping at one with no long task: each try's long tasks (ms) and wall time.
-    const tries = [];
-    for (let i = 0; i < 3 && !tries.some((t) => t.tasks.every((d) => d < 100)); i++) {
-      const t0 = Date.now();
-      await page.reload();
-      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
-      const shown = await page.evaluate(() => document.querySelector('[data-tele="loading"]').textContent);
-      await page.locator('[data-tele="restored"]').waitFor({ state: 'visible', timeout: 20000 });
-      tries.push({ ms: Date.now() - t0, shown, tasks: await page.evaluate(() => window.__longTasks.map(Math.round)) });
-    }
-    console.log(`# teleop load of 10 × 60 s + 30 s stored (ms, long tasks): ${JSON.stringify(tries)}`);
-    assert.ok(tries.some((t) => t.tasks.every((d) => d < 100)), `a long task while loading: ${JSON.stringify(tries)}`);
-    assert.match(tries[0].shown, /^Checking the recorded episodes of your stored session… \d+ %$/);
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    const loading = await page.evaluate(() => document.querySelector('[data-tele="loading"]').textContent);
+    await page.locator('[data-tele="restored"]').waitFor({ state: 'visible', timeout: 20000 });
+    assert.match(loading, /^Checking the recorded episodes of your stored session… \d+ %$/);
     assert.equal(await page.locator('[data-tele="loading"]').isHidden(), true);
     assert.equal(await page.locator('.tele [inert]').count(), 0, 'the page takes input again');
     // The session intact: ten 60 s episodes labelled FAILURE / timeout, and the one cut off
@@ -674,7 +630,7 @@ test('a second session after an exported first: the comparison keeps the first, 
     assert.equal(await page.locator('[data-tele="status"]').innerText(), 'The second session started at Record ten; the first is kept for the comparison.');
     assert.equal(await page.locator('[data-module="record-ten"]').getAttribute('aria-current'), 'step');
     assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 0);
-    assert.equal((await readouts(page)).episode, '1 / 10');
+    assert.equal((await shownReadouts(page)).episode, '1 / 10');
     const cell = (id, col) => page.locator(`[data-tele="compare"] [data-compare="${id}"] td:nth-child(${col})`).innerText();
     assert.equal(await cell('attempted', 2), '1');
     assert.equal(await cell('attempted', 3), '0');
@@ -690,7 +646,7 @@ test('a second session after an exported first: the comparison keeps the first, 
     const second = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
     checkEvidence(second);
     assert.equal(second.episodes.attempted, 1);
-    assert.deepEqual(second.dataArtifacts.map((a) => a.path), ['teleop_episodes.csv', 'teleop_episode_1.csv']);
+    assert.deepEqual(second.dataArtifacts.map((a) => a.uriOrRef), ['teleop_episodes.csv', 'teleop_episode_1.csv']);
     assert.equal(second.dataArtifacts[1].sha256, sha256(secondCsv));
     assert.equal(second.pilotId, first.pilotId);
     assert.ok(Date.parse(second.startedAt) >= Date.parse(first.endedAt), `${second.startedAt} after ${first.endedAt}`);
@@ -711,7 +667,7 @@ test('a second session after an exported first: the comparison keeps the first, 
     assert.equal(await cell('attempted', 3), '0');
     const third = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
     assert.equal(third.episodes.attempted, 0);
-    assert.deepEqual(third.dataArtifacts.map((a) => a.path), ['teleop_episodes.csv']);
+    assert.deepEqual(third.dataArtifacts.map((a) => a.uriOrRef), ['teleop_episodes.csv']);
     assert.deepEqual(errors, []);
   } finally {
     rmSync(dir, { recursive: true, force: true });

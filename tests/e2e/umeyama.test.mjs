@@ -7,9 +7,8 @@
 // Screenshots (EN/JA 1920×1080, projector, phone 390 px) go to tests/e2e/out/.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { join } from 'node:path';
-import { openApp, OUT } from './harness.mjs';
-import { serveAppWithCli, cli, download, assertSameBytes } from './cli.mjs';
+import { openApp, readouts, query, screenshots } from './harness.mjs';
+import { serveAppWithCli, cliCsv, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
 // The CLI is built and dist/ served before the tests; all is closed after them.
@@ -21,21 +20,12 @@ const POINTS = 'umeyama_points.csv';
 
 /** `bsv umeyama-2d <args>`: the CSV's numbers by column name, and the files' bytes. */
 function run(args) {
-  const out = cli(['umeyama-2d', ...args]);
-  const [head, row] = out.files.get(CSV).toString('utf8').trim().split('\n');
-  const values = Object.fromEntries(head.trim().split(',').map((k, i) => [k, Number(row.split(',')[i])]));
-  return { values, files: out.files, stdout: out.stdout };
+  const { head, rows, files, stdout } = cliCsv(['umeyama-2d', ...args], CSV);
+  return { values: Object.fromEntries(head.map((k, i) => [k, Number(rows[0][i])])), files, stdout };
 }
 
-/** `data-readout` → exact value (data-value) of the page. */
-const readouts = (page) => page.evaluate(() => {
-  const out = {};
-  for (const el of document.querySelectorAll('[data-readout]')) {
-    const v = el.dataset.value;
-    out[el.dataset.readout] = v === undefined || v === '' ? null : Number(v);
-  }
-  return out;
-});
+/** `data-readout` → exact value (data-value, a number) of the page. */
+const pageValues = (page) => readouts(page, { numbers: true });
 
 /** The readouts equal the CSV's estimate, exactly. */
 function assertFit(r, values, label) {
@@ -45,9 +35,6 @@ function assertFit(r, values, label) {
     label,
   );
 }
-
-/** The URL query of the page as an object. */
-const query = (page) => page.evaluate(() => Object.fromEntries(new URLSearchParams(location.hash.split('?')[1] ?? '')));
 
 /** The CLI arguments of the page's URL (the keys are the CLI's). */
 function argsOf(q) {
@@ -82,7 +69,7 @@ test('opens on the recipe\'s fit with its numbers, ready to step', async () => {
   const { values } = run([]);
   const { page, errors, close } = await open('#/umeyama-2d');
   try {
-    const r = await readouts(page);
+    const r = await pageValues(page);
     assertFit(r, values, 'defaults');
     assert.deepEqual([r['scale-true'], r['angle-true'], r['tx-true'], r['ty-true']], [1.3, 35, 0.4, -0.2]);
     assert.equal((await pointsPx(page)).length, 12);
@@ -100,14 +87,14 @@ test('opens on the recipe\'s fit with its numbers, ready to step', async () => {
 test('dragging a point changes the readouts to the kernel\'s; the edited run exports its points', async () => {
   const { page, errors, close } = await open('#/umeyama-2d');
   try {
-    const before = await readouts(page);
+    const before = await pageValues(page);
     const px = await pointsPx(page);
     await drag(page, px[0], 60, -40);
     await page.waitForFunction(() => /[?&]x=/.test(location.hash), null, { timeout: 3000 });
     const q = await query(page);
     assert.equal(q.x.split(';').length, 12);
     const { values, files } = run(argsOf(q));
-    const r = await readouts(page);
+    const r = await pageValues(page);
     assertFit(r, values, `after the drag: ${JSON.stringify(q)}`);
     assert.notEqual(r.scale, before.scale);
     assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), true);
@@ -123,15 +110,15 @@ test('dragging a point changes the readouts to the kernel\'s; the edited run exp
     await page.waitForFunction(() => /[?&]angle=/.test(location.hash), null, { timeout: 3000 });
     const q2 = await query(page);
     assert.notEqual(Number(q2.angle), 35);
-    assertFit(await readouts(page), run(argsOf(q2)).values, 'after the rotation handle');
+    assertFit(await pageValues(page), run(argsOf(q2)).values, 'after the rotation handle');
     // A slider: sigma 0.2 runs the kernel again.
     await slide(page, 'sigma', 0.2);
     assert.equal(await page.locator('[data-field="sigma"]').inputValue(), '0.2');
-    assertFit(await readouts(page), run(argsOf({ ...q2, sigma: '0.2' })).values, 'after the sigma slider');
+    assertFit(await pageValues(page), run(argsOf({ ...q2, sigma: '0.2' })).values, 'after the sigma slider');
     // Back to the recipe: the edited notice goes, the download is the recipe's again.
     await page.locator('[data-action="recipe"]').click();
     assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), false);
-    assertFit(await readouts(page), run(['0.2']).values, 'the recipe again');
+    assertFit(await pageValues(page), run(['0.2']).values, 'the recipe again');
     assert.deepEqual(errors, []);
   } finally {
     await close();
@@ -154,7 +141,7 @@ test('the downloads equal bsv for the defaults and for a URL with other values',
       if (edited) assertSameBytes(await download(page, POINTS), files.get(POINTS), `${hash} points`);
       else assert.equal(files.has(POINTS), false);
       assert.equal(await page.locator('[data-cmd="bsv"]').innerText(), line);
-      assertFit(await readouts(page), values, hash);
+      assertFit(await pageValues(page), values, hash);
       assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), edited);
       assert.deepEqual(errors, []);
     } finally {
@@ -168,7 +155,7 @@ test('bad values show their messages and the page keeps the last valid view', as
   const { page, errors, close } = await open('#/umeyama-2d');
   try {
     const view = await pixels(page);
-    const shown = await readouts(page);
+    const shown = await pageValues(page);
     for (const [field, bad, pattern] of [
       ['sigma', '-1', /0 or more|at least 0|between/],
       ['n', '1', /between 2 and 100,000/],
@@ -184,7 +171,7 @@ test('bad values show their messages and the page keeps the last valid view', as
       assert.match(await message.innerText(), pattern, `${field}=${bad}`);
       assert.equal(await input.getAttribute('aria-invalid'), 'true');
       assert.equal(await pixels(page), view, `${field}=${bad}: the view is the last valid one`);
-      assert.deepEqual(await readouts(page), shown);
+      assert.deepEqual(await pageValues(page), shown);
       assertSameBytes(await download(page, CSV), files.get(CSV), `${field}=${bad}`);
       await input.fill(was);
       assert.equal(await message.isVisible(), false, `${field} restored`);
@@ -224,7 +211,7 @@ test('the stepper walks the fit; the mirror preset shows the reflection fix', as
     await canvas(page).focus();
     await page.keyboard.press('ArrowRight');
     assert.match(await page.locator('[data-ume="step-text"]').innerText(), /Umeyama’s method would use S₁ − S₂/);
-    assertFit(await readouts(page), run(['0.02', '3', '12', '--mirror', 'yes']).values, 'mirrored');
+    assertFit(await pageValues(page), run(['0.02', '3', '12', '--mirror', 'yes']).values, 'mirrored');
     // Keys in a field do not step.
     await page.locator('[data-field="seed"]').focus();
     await page.keyboard.press('ArrowRight');
@@ -245,7 +232,7 @@ test('points are added by a click and removed with Delete, within 2 to 40', asyn
     assert.equal((await pointsPx(page)).length, 4);
     await page.waitForFunction(() => /n=4/.test(location.hash), null, { timeout: 3000 });
     const q = await query(page);
-    assertFit(await readouts(page), run(argsOf(q)).values, 'after the click');
+    assertFit(await pageValues(page), run(argsOf(q)).values, 'after the click');
     // Delete removes the selected (new) point; the last two cannot go.
     await canvas(page).focus();
     await page.keyboard.press('Delete');
@@ -261,11 +248,11 @@ test('points are added by a click and removed with Delete, within 2 to 40', asyn
     assert.equal((await pointsPx(page)).length, 40);
     await page.locator('[data-action="add"]').click();
     assert.match(await message.innerText(), /already 40 points/);
-    assertFit(await readouts(page), run(argsOf(await query(page))).values, '40 points');
+    assertFit(await pageValues(page), run(argsOf(await query(page))).values, '40 points');
     // A new n draws the recipe's points again.
     await page.locator('[data-field="n"]').fill('6');
     await page.waitForFunction(() => !/[?&]x=/.test(location.hash) && /n=6/.test(location.hash), null, { timeout: 3000 });
-    assertFit(await readouts(page), run(['0', '3', '6']).values, 'n = 6');
+    assertFit(await pageValues(page), run(['0', '3', '6']).values, 'n = 6');
     assert.equal(await page.locator('[data-testid="umeyama-2d-edited"]').isVisible(), false);
     assert.deepEqual(errors, []);
   } finally {
@@ -333,7 +320,7 @@ test('by keyboard: n selects point 3, Shift + arrows move it as a drag does (x, 
     await page.waitForFunction((x) => new URLSearchParams(location.hash.split('?')[1]).get('x') === x, x, { timeout: 3000 });
     assert.equal(await page.locator('[data-field="x"]').inputValue(), x);
     const { values, files } = run(['0.02', '3', '12', '--x', x]);
-    assertFit(await readouts(page), values, `moved by keys: ${x}`);
+    assertFit(await pageValues(page), values, `moved by keys: ${x}`);
     assertSameBytes(await download(page, CSV), files.get(CSV), 'csv after the key moves');
     assertSameBytes(await download(page, POINTS), files.get(POINTS), 'points after the key moves');
     assert.equal(await page.locator('[data-cmd="bsv"]').innerText(), `bsv umeyama-2d 0.02 3 12 --x '${x}'`);
@@ -356,7 +343,7 @@ test('by keyboard: n selects point 3, Shift + arrows move it as a drag does (x, 
     assert.deepEqual(await page.evaluate(() => window.__selectionSaid), [said(p)]);
     const x2 = xText(editor.map((q, i) => (i === 2 ? p : q)));
     assert.equal(await page.locator('[data-field="x"]').inputValue(), x2);
-    assertFit(await readouts(page), run(['0.02', '3', '12', '--x', x2]).values, `after the burst: ${x2}`);
+    assertFit(await pageValues(page), run(['0.02', '3', '12', '--x', x2]).values, `after the burst: ${x2}`);
 
     // Page keys do nothing while a control has focus.
     await page.locator('[data-action="mirror"]').focus();
@@ -371,7 +358,7 @@ test('by keyboard: n selects point 3, Shift + arrows move it as a drag does (x, 
     await page.waitForFunction((x) => /[?&]n=11/.test(location.hash) && new URLSearchParams(location.hash.split('?')[1]).get('x') === x, left, { timeout: 3000 });
     assert.equal(await page.locator('[data-field="x"]').inputValue(), left);
     assert.equal((await pointsPx(page)).length, 11);
-    assertFit(await readouts(page), run(['0.02', '3', '11', '--x', left]).values, 'after Delete');
+    assertFit(await pageValues(page), run(['0.02', '3', '11', '--x', left]).values, 'after Delete');
     assert.equal(await status.innerText(), 'No point selected (11 points). Press n to select the next point, Shift + n the previous one.');
     assert.equal(await canvas(page).getAttribute('data-selected'), '');
 
@@ -422,7 +409,7 @@ test('by keyboard: n goes on to the translation and rotation handles; Shift + ar
     assert.deepEqual([Number(await field('angle')), Number(await field('scale'))], [snap(angle + 0.5, 0.5), snap(snap(scale + 0.01, 0.01) + 0.01, 0.01)]);
     assert.deepEqual([Number(await field('tx')), Number(await field('ty'))], [tx2, ty2], 'turning s·R keeps t');
     const args = ['0.02', '3', '12', '--scale', await field('scale'), '--angle', await field('angle'), '--tx', await field('tx'), '--ty', await field('ty')];
-    assertFit(await readouts(page), run(args).values, `handles moved by keys: ${args.join(' ')}`);
+    assertFit(await pageValues(page), run(args).values, `handles moved by keys: ${args.join(' ')}`);
     // And round again: the first point.
     await page.keyboard.press('n');
     assert.equal(await canvas(page).getAttribute('data-selected'), '0');
@@ -459,18 +446,7 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
     ['umeyama-projector-1920.png', '#/umeyama-2d?step=6', { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.projector': '1' } }],
     ['umeyama-phone-390.png', '#/umeyama-2d?lang=ja&step=1', { viewport: { width: 390, height: 844 } }],
   ];
-  for (const [file, hash, opts] of shots) {
-    const { page, errors, close } = await open(hash, opts);
-    try {
-      await page.waitForTimeout(300);
-      const width = await page.evaluate(() => document.documentElement.scrollWidth);
-      assert.ok(width <= opts.viewport.width, `${file}: page ${width} px wide`);
-      await page.screenshot({ path: join(OUT, file) });
-      assert.deepEqual(errors, []);
-    } finally {
-      await close();
-    }
-  }
+  await screenshots(server.url, shots);
 });
 
 test('a huge sigma (1e308: targets near ±1e308 and infinite) leaves the page working, with the CLI\'s nan fit and bytes', async () => {
@@ -488,7 +464,7 @@ test('a huge sigma (1e308: targets near ±1e308 and infinite) leaves the page wo
     // Back to a small sigma: the fit and the grid come back.
     await slide(page, 'sigma', '0.02');
     await page.waitForFunction(() => document.querySelector('[data-cmd="bsv"]')?.innerText === 'bsv umeyama-2d 0.02 3 12');
-    assertFit(await readouts(page), run([]).values, 'back to the default');
+    assertFit(await pageValues(page), run([]).values, 'back to the default');
     assert.deepEqual(errors, []);
   } finally {
     await close();

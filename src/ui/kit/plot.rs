@@ -129,6 +129,75 @@ pub struct Plot {
 
 type DrawArea = DrawingArea<CanvasBackend, Shift>;
 
+/// The axes layer's measures, device px.
+#[derive(Debug, Clone, Copy)]
+struct AxesLayout {
+    dpr: f64,
+    margin: i32,
+    /// The x labels' band under the last panel and the y labels' band.
+    x_label: i32,
+    y_label: i32,
+    /// The tick labels' size.
+    font: f64,
+    /// One legend row's height.
+    legend_row: i32,
+    /// Each panel's plotting height and one legend row.
+    each: i32,
+}
+
+impl AxesLayout {
+    /// The measures on a canvas `w` px wide; `None` when the margins leave no room to speak
+    /// of. On a very narrow canvas with projector type the full label area would leave
+    /// plotters a plotting area of negative width, where it lays the labels out as if on the
+    /// right and measures them through an inline-styled <span> (blocked by the CSP), so the
+    /// labels take at most half of the room.
+    fn of(w: f64, dpr: f64, ink: Ink) -> Option<AxesLayout> {
+        let k = dpr * ink.text;
+        let margin = (8.0 * dpr * ink.text.sqrt()).round() as i32;
+        let font = ink.text_px(12.0) * dpr;
+        let room = w as i32 - 2 * margin - (1.2 * font) as i32;
+        if room < (4.0 * font) as i32 {
+            return None;
+        }
+        Some(AxesLayout {
+            dpr,
+            margin,
+            x_label: (34.0 * k).round() as i32,
+            y_label: ((74.0 * k).round() as i32).min(room / 2),
+            font,
+            legend_row: (ink.text_px(12.0) * 1.5 * dpr).round() as i32,
+            each: 0,
+        })
+    }
+}
+
+/// A legend entry's line swatch, CSS px.
+fn legend_swatch(ink: Ink) -> f64 {
+    18.0 * ink.line
+}
+
+/// The gap between two legend entries, CSS px.
+fn legend_gap(ink: Ink) -> f64 {
+    14.0 * ink.text
+}
+
+/// `root` cut into one area per panel, top to bottom: each the panel's plotting height and
+/// its `rows` legend rows, the last taking what remains.
+fn split_panels(root: DrawArea, rows: &[i32], lay: &AxesLayout) -> Vec<DrawArea> {
+    let mut rest = root;
+    let mut panels = Vec::new();
+    for (i, r) in rows.iter().enumerate() {
+        if i + 1 == rows.len() {
+            panels.push(rest.clone());
+        } else {
+            let (upper, lower) = rest.split_vertically(lay.each + lay.legend_row * r);
+            panels.push(upper);
+            rest = lower;
+        }
+    }
+    panels
+}
+
 fn err<E: std::fmt::Debug>(e: E) -> String {
     format!("{e:?}")
 }
@@ -359,39 +428,60 @@ impl Plot {
             f64::from(layer.canvas.height()),
         );
         layer.ctx.fill_rect(0.0, 0.0, w, h);
-        let dpr = layer.dpr;
-        let k = dpr * ink.text;
-        let margin = (8.0 * dpr * ink.text.sqrt()).round() as i32;
-        let x_label = (34.0 * k).round() as i32;
-        let font = ink.text_px(12.0) * dpr;
-        // What the margins leave for the y labels and the plotting area. On a very narrow
-        // canvas with projector type the full label area would leave plotters a plotting area
-        // of negative width, where it lays the labels out as if on the right and measures
-        // them through an inline-styled <span> (blocked by the CSP). So the labels take at
-        // most half of the room, and with no room to speak of only the background is drawn.
-        let room = w as i32 - 2 * margin - (1.2 * font) as i32;
-        if room < (4.0 * font) as i32 {
+        let Some(mut lay) = AxesLayout::of(w, layer.dpr, ink) else {
             self.areas.clear();
             return Ok(());
-        }
-        let y_label = ((74.0 * k).round() as i32).min(room / 2);
-        let n = spec.panels.len().max(1) as i32;
+        };
         let backend =
             CanvasBackend::with_canvas_object(layer.canvas.clone()).ok_or("no canvas backend")?;
         let root = backend.into_drawing_area();
         let total = layer.canvas.height() as i32;
-        let legend_row = (ink.text_px(12.0) * 1.5 * dpr).round() as i32;
-        // Legend rows per panel: entries packed in order into rows as wide as the plotting
-        // area, so many series (or a narrow screen, or projector type) wrap, never overflow.
-        let swatch = 18.0 * ink.line;
-        let gap = 14.0 * ink.text;
-        let legend_font = ink.font(12.0, false);
-        layer.ctx.set_font(&legend_font);
+        let legends = self.legends(&spec, ink, &lay);
+        // Every panel gets the same plotting height; a panel whose legend wraps to more rows
+        // is that much taller (its rows are added, not taken from its data).
+        let n = spec.panels.len().max(1) as i32;
+        let rows: Vec<i32> = legends
+            .iter()
+            .map(|r| r.len().max(1) as i32)
+            .chain(std::iter::repeat(1))
+            .take(n as usize)
+            .collect();
+        lay.each = (total - lay.x_label - lay.legend_row * rows.iter().sum::<i32>()) / n;
+        let panels = split_panels(root, &rows, &lay);
+        self.areas.clear();
+        for (i, (area, panel)) in panels.iter().zip(&spec.panels).enumerate() {
+            let rows = rows.get(i).copied().unwrap_or(1);
+            let plotting = self.draw_mesh(area, i, &spec, panel, rows, &lay)?;
+            self.areas.push(plotting);
+        }
+        // Legends: one row above each panel's plotting area, right-aligned, so they never
+        // cover the data.
+        let dpr = lay.dpr;
+        let _ = layer.ctx.set_transform(dpr, 0.0, 0.0, dpr, 0.0, 0.0);
+        let css = |px: i32| f64::from(px) / dpr;
+        let room = TitleRoom {
+            legend_row: css(lay.legend_row),
+            margin: css(lay.margin),
+            y_label: css(lay.y_label),
+            x_label: css(lay.x_label),
+        };
+        self.draw_y_titles(ink, &spec, &rows, room);
+        self.draw_legends(ink, &spec, &legends, &lay);
+        Ok(())
+    }
+
+    /// Each panel's legend rows: its named series' entries `(series, text width)` packed in
+    /// order into rows as wide as the plotting area, so many series (or a narrow screen, or
+    /// projector type) wrap, never overflow.
+    fn legends(&self, spec: &PlotSpec, ink: Ink, lay: &AxesLayout) -> Vec<Vec<Vec<(usize, f64)>>> {
+        let layer = self.canvas.layer(0);
+        layer.ctx.set_font(&ink.font(12.0, false));
+        let dpr = lay.dpr;
         let css_width = f64::from(layer.canvas.width()) / dpr;
         // The plotting area's width: less the margins, the y labels and the right-hand room.
-        let legend_width = css_width - (f64::from(2 * margin + y_label) + 1.2 * font) / dpr;
-        let legends: Vec<Vec<Vec<(usize, f64)>>> = spec
-            .panels
+        let legend_width =
+            css_width - (f64::from(2 * lay.margin + lay.y_label) + 1.2 * lay.font) / dpr;
+        spec.panels
             .iter()
             .map(|panel| {
                 let entries: Vec<(usize, f64)> = panel
@@ -404,115 +494,119 @@ impl Plot {
                         (i, w)
                     })
                     .collect();
-                legend_layout(&entries, swatch + 6.0, gap, legend_width)
+                legend_layout(
+                    &entries,
+                    legend_swatch(ink) + 6.0,
+                    legend_gap(ink),
+                    legend_width,
+                )
             })
-            .collect();
-        // Every panel gets the same plotting height; a panel whose legend wraps to more rows
-        // is that much taller (its rows are added, not taken from its data).
-        let rows: Vec<i32> = legends
-            .iter()
-            .map(|r| r.len().max(1) as i32)
-            .chain(std::iter::repeat(1))
-            .take(n as usize)
-            .collect();
-        let each = (total - x_label - legend_row * rows.iter().sum::<i32>()) / n;
-        let mut rest: DrawArea = root;
-        let mut panels = Vec::new();
-        for (i, r) in rows.iter().enumerate() {
-            if i + 1 == rows.len() {
-                panels.push(rest.clone());
-            } else {
-                let (upper, lower) = rest.split_vertically(each + legend_row * r);
-                panels.push(upper);
-                rest = lower;
-            }
-        }
+            .collect()
+    }
+
+    /// The mesh of panel `i` (`rows` legend rows above it) in `area`: frame, grid, ticks and
+    /// their labels, and the x title under the last panel. Its plotting area, CSS px.
+    fn draw_mesh(
+        &self,
+        area: &DrawArea,
+        i: usize,
+        spec: &PlotSpec,
+        panel: &PanelSpec,
+        rows: i32,
+        lay: &AxesLayout,
+    ) -> Result<Area, String> {
+        let AxesLayout {
+            dpr,
+            margin,
+            x_label,
+            y_label,
+            font,
+            legend_row,
+            each,
+        } = *lay;
         // Label decimals from a finer step than plotters' ticks, so no two ticks read alike.
         let x_step = nice_step(spec.x.range.0, spec.x.range.1, 12);
         let x_desc = spec.x.desc();
-        self.areas.clear();
-        for (i, (area, panel)) in panels.iter().zip(&spec.panels).enumerate() {
-            let bottom = i + 1 == spec.panels.len();
-            let log = self.is_log_y(i);
-            let y = self.axis_y(i, panel.y.range);
-            let y_step = nice_step(y.0, y.1, 10);
-            // A log axis: ticks on whole decades where the span allows (plotters picks 1-2-5
-            // steps of at most this many labels).
-            // No more labels than fit the panel's height (projector type is large).
-            let fit = ((f64::from(each + legend_row) / (2.2 * font)).floor() as usize).max(2);
-            let y_labels = if log {
-                ((y.1 - y.0).abs().floor() as usize + 1).clamp(2, 8)
-            } else {
-                5
-            }
-            .min(fit);
-            let rows = rows.get(i).copied().unwrap_or(1);
-            let mut chart = ChartBuilder::on(area)
-                .margin(margin)
-                .margin_top(margin + legend_row * rows)
-                // Room for half of the last x tick label, centred on the right edge.
-                .margin_right(margin + (1.2 * font) as i32)
-                .x_label_area_size(if bottom { x_label } else { 0 })
-                .y_label_area_size(y_label)
-                .build_cartesian_2d(spec.x.range.0..spec.x.range.1, y.0..y.1)
-                .map_err(err)?;
-            let tick = ("sans-serif", font)
-                .into_font()
-                .color(&RGBColor(58, 66, 80));
-            let x_fmt = |v: &f64| tick_label(*v, x_step);
-            let y_fmt = |v: &f64| {
-                if log {
-                    return log_tick_label(*v);
-                }
-                // Ticks computed as sums can miss zero by a rounding error.
-                if v.abs() < (y.1 - y.0).abs() * 1e-9 {
-                    "0".to_string()
-                } else {
-                    tick_label(*v, y_step)
-                }
-            };
-            let mut mesh = chart.configure_mesh();
-            mesh.x_labels(6)
-                .y_labels(y_labels)
-                .x_label_formatter(&x_fmt)
-                .y_label_formatter(&y_fmt)
-                .label_style(tick.clone())
-                .axis_desc_style(tick)
-                .light_line_style(RGBColor(235, 238, 243))
-                .bold_line_style(RGBColor(214, 219, 227));
-            if bottom {
-                mesh.x_desc(x_desc.as_str());
-            }
-            if log {
-                // Linear subdivisions of decades would mislead.
-                mesh.y_max_light_lines(0);
-            }
-            mesh.draw().map_err(err)?;
-            let (xr, yr) = chart.plotting_area().get_pixel_range();
-            self.areas.push(Area {
-                x0: f64::from(xr.start) / dpr,
-                x1: f64::from(xr.end) / dpr,
-                y0: f64::from(yr.start) / dpr,
-                y1: f64::from(yr.end) / dpr,
-            });
+        let bottom = i + 1 == spec.panels.len();
+        let log = self.is_log_y(i);
+        let y = self.axis_y(i, panel.y.range);
+        let y_step = nice_step(y.0, y.1, 10);
+        // A log axis: ticks on whole decades where the span allows (plotters picks 1-2-5
+        // steps of at most this many labels).
+        // No more labels than fit the panel's height (projector type is large).
+        let fit = ((f64::from(each + legend_row) / (2.2 * font)).floor() as usize).max(2);
+        let y_labels = if log {
+            ((y.1 - y.0).abs().floor() as usize + 1).clamp(2, 8)
+        } else {
+            5
         }
-        // Legends: one row above each panel's plotting area, right-aligned, so they never
-        // cover the data.
-        let ctx = &layer.ctx;
-        let _ = ctx.set_transform(dpr, 0.0, 0.0, dpr, 0.0, 0.0);
-        let css = |px: i32| f64::from(px) / dpr;
-        let room = TitleRoom {
-            legend_row: css(legend_row),
-            margin: css(margin),
-            y_label: css(y_label),
-            x_label: css(x_label),
+        .min(fit);
+        let mut chart = ChartBuilder::on(area)
+            .margin(margin)
+            .margin_top(margin + legend_row * rows)
+            // Room for half of the last x tick label, centred on the right edge.
+            .margin_right(margin + (1.2 * font) as i32)
+            .x_label_area_size(if bottom { x_label } else { 0 })
+            .y_label_area_size(y_label)
+            .build_cartesian_2d(spec.x.range.0..spec.x.range.1, y.0..y.1)
+            .map_err(err)?;
+        let tick = ("sans-serif", font)
+            .into_font()
+            .color(&RGBColor(58, 66, 80));
+        let x_fmt = |v: &f64| tick_label(*v, x_step);
+        let y_fmt = |v: &f64| {
+            if log {
+                return log_tick_label(*v);
+            }
+            // Ticks computed as sums can miss zero by a rounding error.
+            if v.abs() < (y.1 - y.0).abs() * 1e-9 {
+                "0".to_string()
+            } else {
+                tick_label(*v, y_step)
+            }
         };
-        self.draw_y_titles(ink, &spec, &rows, room);
-        ctx.set_font(&legend_font);
+        let mut mesh = chart.configure_mesh();
+        mesh.x_labels(6)
+            .y_labels(y_labels)
+            .x_label_formatter(&x_fmt)
+            .y_label_formatter(&y_fmt)
+            .label_style(tick.clone())
+            .axis_desc_style(tick)
+            .light_line_style(RGBColor(235, 238, 243))
+            .bold_line_style(RGBColor(214, 219, 227));
+        if bottom {
+            mesh.x_desc(x_desc.as_str());
+        }
+        if log {
+            // Linear subdivisions of decades would mislead.
+            mesh.y_max_light_lines(0);
+        }
+        mesh.draw().map_err(err)?;
+        let (xr, yr) = chart.plotting_area().get_pixel_range();
+        Ok(Area {
+            x0: f64::from(xr.start) / dpr,
+            x1: f64::from(xr.end) / dpr,
+            y0: f64::from(yr.start) / dpr,
+            y1: f64::from(yr.end) / dpr,
+        })
+    }
+
+    /// The legends' rows above each panel's plotting area, each row's last series ending at
+    /// the right edge (CSS px transform set).
+    fn draw_legends(
+        &self,
+        ink: Ink,
+        spec: &PlotSpec,
+        legends: &[Vec<Vec<(usize, f64)>>],
+        lay: &AxesLayout,
+    ) {
+        let ctx = &self.canvas.layer(0).ctx;
+        let (swatch, gap) = (legend_swatch(ink), legend_gap(ink));
+        ctx.set_font(&ink.font(12.0, false));
         ctx.set_text_baseline("middle");
         ctx.set_text_align("left");
-        let row_h = f64::from(legend_row) / dpr;
-        for ((area, panel), rows) in self.areas.iter().zip(&spec.panels).zip(&legends) {
+        let row_h = f64::from(lay.legend_row) / lay.dpr;
+        for ((area, panel), rows) in self.areas.iter().zip(&spec.panels).zip(legends) {
             for (r, row) in rows.iter().enumerate() {
                 let cy = area.y0 - row_h * (rows.len() - r) as f64 + row_h / 2.0 - 1.0;
                 let mut x = area.x1;
@@ -536,7 +630,6 @@ impl Plot {
                 }
             }
         }
-        Ok(())
     }
 
     /// Each panel's y-axis title, rotated, at the left of its label area and centred on its

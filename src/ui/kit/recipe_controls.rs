@@ -388,13 +388,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
         );
         // Nothing was shown: only a new message needs the form's fields written.
         if !(checked.messages.is_empty() && checked.marked.is_empty()) {
-            let messages: Vec<(usize, Message)> = checked
-                .messages
-                .iter()
-                .map(|(i, e)| (*i, Message::Recipe(e.clone())))
-                .collect();
-            form.show(&messages, &checked.marked);
-            *self.shown.borrow_mut() = (messages, checked.marked.clone());
+            self.show_messages(&mut form, &checked.messages, &checked.marked);
         }
         let ok = checked.is_valid() && checked.marked.is_empty();
         let value = checked.value.filter(|_| ok);
@@ -450,13 +444,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
             |t| parse_texts(info, &form, t, parse),
             |_| None,
         );
-        let messages: Vec<(usize, Message)> = checked
-            .messages
-            .iter()
-            .map(|(i, e)| (*i, Message::Recipe(e.clone())))
-            .collect();
-        form.show(&messages, &checked.marked);
-        *self.shown.borrow_mut() = (messages, checked.marked.clone());
+        self.show_messages(&mut form, &checked.messages, &checked.marked);
         let ok = checked.value.is_some() && checked.is_valid();
         let clean = ok && checked.messages.is_empty() && checked.marked.is_empty();
         if let Some(value) = checked.value.filter(|_| ok) {
@@ -468,6 +456,16 @@ impl<T: Clone + 'static> RecipeControls<T> {
             self.sync_sliders(slider);
         }
         ok
+    }
+
+    /// Shows the recipe's `messages` beside their fields and marks fields `marked`.
+    fn show_messages(&self, form: &mut Form, messages: &[(usize, RecipeError)], marked: &[usize]) {
+        let messages: Vec<(usize, Message)> = messages
+            .iter()
+            .map(|(i, e)| (*i, Message::Recipe(e.clone())))
+            .collect();
+        form.show(&messages, marked);
+        *self.shown.borrow_mut() = (messages, marked.to_vec());
     }
 
     fn sync_sliders(&self, skip: Option<usize>) {

@@ -75,6 +75,60 @@ impl Devices {
         self.keys.clear();
         self.clutch = None;
     }
+
+    /// A key of `code` went down (a new one is an input).
+    pub fn press_key(&mut self, code: &str) {
+        if self.keys.press(code) {
+            self.fresh = true;
+        }
+    }
+
+    /// Opens or closes the gripper.
+    pub fn toggle_gripper(&mut self) {
+        self.gripper_closed = !self.gripper_closed;
+        self.fresh = true;
+    }
+
+    /// Pointer `pointer_id` took the clutch at `at` (world m) with the tip at `tip`.
+    pub fn grab(&mut self, pointer_id: i32, at: (f64, f64), tip: (f64, f64)) {
+        self.clutch = Some(Clutch {
+            pointer_id,
+            pointer_start: at,
+            tip_start: tip,
+            target: tip,
+        });
+        self.fresh = true;
+    }
+
+    /// Pointer `pointer_id` moved to `at`: the clutch's target follows it if that pointer
+    /// holds it (`true`).
+    pub fn drag(&mut self, pointer_id: i32, at: (f64, f64)) -> bool {
+        let Some(c) = self.clutch.as_mut() else {
+            return false;
+        };
+        if c.pointer_id != pointer_id {
+            return false;
+        }
+        c.target = (
+            c.tip_start.0 + at.0 - c.pointer_start.0,
+            c.tip_start.1 + at.1 - c.pointer_start.1,
+        );
+        self.fresh = true;
+        true
+    }
+
+    /// Pointer `pointer_id` let go (the clutch opens if it held it).
+    pub fn release(&mut self, pointer_id: i32) {
+        if self.clutch.is_some_and(|c| c.pointer_id == pointer_id) {
+            self.clutch = None;
+        }
+    }
+
+    /// Back to the start: no clutch, the gripper open.
+    pub fn reset(&mut self) {
+        self.clutch = None;
+        self.gripper_closed = false;
+    }
 }
 
 fn get(target: &JsValue, key: &str) -> JsValue {

@@ -1,16 +1,75 @@
 //! The session's episodes, one row each (number, label, category, duration, path, efficiency,
 //! collisions, first failure) with Replay, Label and the episode's CSV download
 //! (`data-download="teleop_episode_<n>.csv"`); the repeatability table (first session beside
-//! the second). Rebuilt when the session changes and on a language switch.
+//! the second); the session line and the texts of the two session downloads. Rebuilt when the
+//! session changes and on a language switch.
 
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
-use crate::teleop::session::{compare, episode_file_name, Session, Summary};
+use crate::teleop::session::{
+    compare, episode_file_name, Session, Summary, EPISODES_NAME, EVIDENCE_NAME, RECORD_TARGET,
+};
 use crate::ui::{ctx, dom};
 use crate::view::teleop::{comparison_cell, fixed_clean};
 
 use super::label_panel::label_message;
+use super::markup::{find, role};
+
+/// The two tables, the session line and the session downloads.
+pub struct EpisodeTables {
+    episodes_body: Element,
+    compare_body: Element,
+    session_line: Element,
+    downloads: Vec<(&'static str, Element)>,
+}
+
+impl EpisodeTables {
+    /// Finds the tables under `root`.
+    pub fn find(root: &Element) -> Result<EpisodeTables, JsValue> {
+        let downloads = [EPISODES_NAME, EVIDENCE_NAME]
+            .into_iter()
+            .map(|name| {
+                let el = find(root, &format!("button[data-download=\"{name}\"]"))?;
+                Ok((name, el))
+            })
+            .collect::<Result<Vec<_>, JsValue>>()?;
+        Ok(EpisodeTables {
+            episodes_body: find(root, "[data-tele=\"episodes\"] tbody")?,
+            compare_body: find(root, "[data-tele=\"compare\"] tbody")?,
+            session_line: role(root, "session-line")?,
+            downloads,
+        })
+    }
+
+    /// Rebuilds them for `session` (and `first`, the first session, if any).
+    pub fn render(&self, session: &Session, first: Option<&Session>) {
+        if let Err(e) = render_episodes(&self.episodes_body, session) {
+            web_sys::console::warn_1(&e);
+        }
+        let sum = session.summary();
+        let first = first.map(Session::summary);
+        if let Err(e) = render_comparison(&self.compare_body, first.as_ref(), &sum) {
+            web_sys::console::warn_1(&e);
+        }
+        let line = ctx::t_strings(
+            "teleop-session-line",
+            &[
+                ("pilot", session.pilot_id.clone()),
+                ("attempted", sum.attempted.to_string()),
+                ("successful", sum.successful.to_string()),
+                ("target", RECORD_TARGET.to_string()),
+            ],
+        );
+        self.session_line.set_text_content(Some(&line));
+        for (name, button) in &self.downloads {
+            button.set_text_content(Some(&ctx::t_strings(
+                "teleop-download-file",
+                &[("file", name.to_string())],
+            )));
+        }
+    }
+}
 
 fn cell(row: &Element, text: &str) -> Result<Element, JsValue> {
     let td = dom::el_text("td", "", text)?;
@@ -41,7 +100,7 @@ fn button(
 }
 
 /// Rebuilds the episodes table's body from `session`.
-pub fn render_episodes(tbody: &Element, session: &Session) -> Result<(), JsValue> {
+fn render_episodes(tbody: &Element, session: &Session) -> Result<(), JsValue> {
     dom::clear(tbody);
     for e in &session.episodes {
         let tr = dom::el("tr")?;
@@ -96,7 +155,7 @@ pub fn render_episodes(tbody: &Element, session: &Session) -> Result<(), JsValue
 }
 
 /// Rebuilds the comparison table's body: `first` (if any) beside `second`.
-pub fn render_comparison(
+fn render_comparison(
     tbody: &Element,
     first: Option<&Summary>,
     second: &Summary,

@@ -4,18 +4,23 @@
 //! evidence hashes every episode's CSV), each slice's bytes a `Blob` and the file a `Blob` of
 //! them (no copy), with a progress line (`data-tele="export-progress"`, `data-state`
 //! `writing|idle`). A click on another file while one is written queues it; each file is the
-//! session as it was at its click.
+//! session as it was at its click. Each slice runs in its own task (a timer at 0 ms).
 
 use std::cell::RefCell;
 use std::collections::VecDeque;
+use std::rc::{Rc, Weak};
 
 use wasm_bindgen::JsValue;
 use web_sys::{Blob, BlobPropertyBag, Element};
 
 use crate::teleop::session::{episode_file_name, Session, EPISODES_NAME, EVIDENCE_NAME};
-use crate::ui::dom;
-use crate::ui::schedule::now_ms;
+use crate::ui::kit::scope::Scope;
+use crate::ui::schedule::{now_ms, Timer};
 use crate::view::teleop_export::ExportJob;
+
+use super::bench;
+use super::markup::role;
+use super::sessions::iso_now;
 
 /// Rows written (or hashed) between two clock reads.
 const ROWS_PER_PIECE: usize = 200;
@@ -35,22 +40,52 @@ pub struct Exports {
     writing: RefCell<Option<Writing>>,
     /// Files asked for while another was written.
     queue: RefCell<VecDeque<ExportJob>>,
+    /// The next slice.
+    timer: Rc<Timer>,
+    _scope: Scope,
 }
 
 impl Exports {
     /// Finds the progress line under `root`.
-    pub fn find(root: &Element) -> Result<Exports, JsValue> {
-        Ok(Exports {
-            progress: dom::find(root, "[data-tele=\"export-progress\"]", "teleop")?,
-            writing: RefCell::new(None),
-            queue: RefCell::new(VecDeque::new()),
-        })
+    pub fn find(root: &Element) -> Result<Rc<Exports>, JsValue> {
+        let progress = role(root, "export-progress")?;
+        Ok(Rc::new_cyclic(|me: &Weak<Exports>| {
+            let mut scope = Scope::new();
+            let timer = scope.timer(me, Exports::slice);
+            Exports {
+                progress,
+                writing: RefCell::new(None),
+                queue: RefCell::new(VecDeque::new()),
+                timer,
+                _scope: scope,
+            }
+        }))
     }
 
-    /// Downloads `file` of `session` (`ended_at`: its end time if it has none): the episodes
-    /// table at once, an episode's CSV or the evidence in slices; `true` when more slices are
-    /// due (call [`Exports::write_slice`] in the next tasks).
-    pub fn download(&self, file: &str, session: &Session, ended_at: &str) -> bool {
+    /// Downloads `file` of `session` (ended now if it has no end time): the episodes table
+    /// at once, an episode's CSV or the evidence in slices, in the next tasks.
+    pub fn download(&self, file: &str, session: &Session) {
+        let started_ms = now_ms();
+        let more = self.start_download(file, session, &iso_now());
+        bench::record_export(now_ms() - started_ms);
+        if more {
+            self.timer.schedule(0);
+        }
+    }
+
+    /// One slice of the file being written (the file offered at its end).
+    fn slice(&self) {
+        let started_ms = now_ms();
+        let more = self.write_slice();
+        bench::record_export(now_ms() - started_ms);
+        if more {
+            self.timer.schedule(0);
+        }
+    }
+
+    /// Starts `file` (`ended_at`: the session's end time if it has none); `true` when more
+    /// slices are due.
+    fn start_download(&self, file: &str, session: &Session, ended_at: &str) -> bool {
         if file == EPISODES_NAME {
             if let Err(e) =
                 crate::ui::download::download_text(file, &session.episodes_csv(), "text/csv")
@@ -88,13 +123,13 @@ impl Exports {
     }
 
     /// Whether a file is being written.
-    pub fn is_writing(&self) -> bool {
+    fn is_writing(&self) -> bool {
         self.writing.borrow().is_some()
     }
 
     /// Writes the file for about [`MS_PER_TASK`]; at its end offers it and starts the next
     /// file asked for. `true` while more is left.
-    pub fn write_slice(&self) -> bool {
+    fn write_slice(&self) -> bool {
         let started = now_ms();
         let mut writing = self.writing.borrow_mut();
         let Some(w) = writing.as_mut() else {

@@ -1,15 +1,21 @@
 //! The label panel shown right after a recorded episode ends: SUCCESS / FAILURE / PARTIAL
 //! (`data-label`), one of the Academy's ten failure categories (`data-category`, not for a
 //! SUCCESS), a note, and Confirm. The kernel's proposal (the label and the first event it
-//! detected; FAILURE / operator-abort for an interrupted episode) is preselected.
+//! detected; FAILURE / operator-abort for an interrupted episode) is preselected. Confirm
+//! writes the label into the session.
 
 use wasm_bindgen::prelude::*;
-use web_sys::Element;
+use wasm_bindgen::JsCast;
+use web_sys::{Element, Event as DomEvent};
 
-use crate::teleop::session::{label_id, EpisodeEntry, CATEGORIES};
+use crate::teleop::session::{
+    category_from_id, label_from_id, label_id, EpisodeEntry, Session, CATEGORIES,
+};
 use crate::teleop::{FailureCategory, Label};
 use crate::ui::{ctx, dom};
 use crate::view::teleop::fixed_clean;
+
+use super::markup::bool_text;
 
 /// The panel.
 pub struct LabelPanel {
@@ -19,11 +25,11 @@ pub struct LabelPanel {
     proposal: Element,
     labels: Vec<(Label, Element)>,
     categories: Vec<(FailureCategory, Element)>,
-    pub note: Element,
+    note: Element,
     /// The episode being labelled (number from 1).
-    pub episode: Option<usize>,
-    pub label: Label,
-    pub category: Option<FailureCategory>,
+    episode: Option<usize>,
+    label: Label,
+    category: Option<FailureCategory>,
     proposed: (Label, Option<FailureCategory>),
     summary_args: Vec<(&'static str, String)>,
     interrupted: bool,
@@ -59,8 +65,15 @@ impl LabelPanel {
         })
     }
 
+    /// Opens the panel for episode `n` (from 1) of `session`, if it has one.
+    pub fn open_episode(&mut self, session: &Session, n: usize) {
+        if let Some(entry) = session.episodes.get(n.wrapping_sub(1)) {
+            self.open(entry);
+        }
+    }
+
     /// Opens the panel for `entry` (its label if it has one, else the proposal).
-    pub fn open(&mut self, entry: &EpisodeEntry) {
+    fn open(&mut self, entry: &EpisodeEntry) {
         self.episode = Some(entry.number);
         self.proposed = entry.proposal();
         let (label, category) = match entry.label {
@@ -92,8 +105,44 @@ impl LabelPanel {
         dom::show(&self.root, false);
     }
 
+    /// A click in the panel: a label or a category picked; `true` on Confirm while an
+    /// episode is open (then [`LabelPanel::confirm`]).
+    pub fn click(&mut self, e: &DomEvent) -> bool {
+        let Some(target) = e.target().and_then(|t| t.dyn_into::<Element>().ok()) else {
+            return false;
+        };
+        let Ok(Some(button)) = target.closest("button") else {
+            return false;
+        };
+        if let Some(id) = button.get_attribute("data-label") {
+            if let Some(l) = label_from_id(&id) {
+                self.pick_label(l);
+            }
+        } else if let Some(id) = button.get_attribute("data-category") {
+            if let Some(c) = category_from_id(&id) {
+                self.pick_category(c);
+            }
+        } else if button.get_attribute("data-action").as_deref() == Some("confirm-label") {
+            return self.episode.is_some();
+        }
+        false
+    }
+
+    /// Writes the label picked, its category and the note into `session`'s episode and
+    /// closes the panel.
+    pub fn confirm(&mut self, session: &mut Session) {
+        let Some(n) = self.episode else {
+            return;
+        };
+        let note = self.note_text();
+        if let Some(entry) = session.episodes.get_mut(n - 1) {
+            entry.set_label(self.label, self.category, &note);
+        }
+        self.close();
+    }
+
     /// The note typed.
-    pub fn note_text(&self) -> String {
+    fn note_text(&self) -> String {
         js_sys::Reflect::get(&self.note, &JsValue::from_str("value"))
             .ok()
             .and_then(|v| v.as_string())
@@ -102,7 +151,7 @@ impl LabelPanel {
 
     /// Picks a label (a SUCCESS drops the category; a failure without one takes the
     /// proposal's, or operator-abort).
-    pub fn pick_label(&mut self, label: Label) {
+    fn pick_label(&mut self, label: Label) {
         self.label = label;
         if label == Label::Success {
             self.category = None;
@@ -113,7 +162,7 @@ impl LabelPanel {
     }
 
     /// Picks a category (and FAILURE if SUCCESS was picked).
-    pub fn pick_category(&mut self, category: FailureCategory) {
+    fn pick_category(&mut self, category: FailureCategory) {
         self.category = Some(category);
         if self.label == Label::Success {
             self.label = Label::Failure;
@@ -157,14 +206,6 @@ impl LabelPanel {
             let _ = el.set_attribute("aria-pressed", bool_text(Some(*c) == self.category));
             let _ = el.set_attribute("aria-disabled", bool_text(self.label == Label::Success));
         }
-    }
-}
-
-fn bool_text(b: bool) -> &'static str {
-    if b {
-        "true"
-    } else {
-        "false"
     }
 }
 

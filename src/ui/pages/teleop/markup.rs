@@ -1,12 +1,73 @@
 //! The page's markup: heading and disclaimer, the module bar, the arm view with its buttons and
 //! the review stepper, the readouts, the preflight checks, the label panel, the episodes with
 //! the downloads and the file opener, the repeatability table, the settings and the key map.
-//! Every text is a Fluent id (`data-i18n`), filled by the shell.
+//! Every text is a Fluent id (`data-i18n`), filled by the shell. [`role`] and [`find`] find
+//! its parts; [`KEYS`] is the key map, shown on the page and in the `?` overlay.
+
+use wasm_bindgen::{JsCast, JsValue};
+use web_sys::Element;
 
 use crate::teleop::session::{label_id, Module, CATEGORIES, EPISODES_NAME, EVIDENCE_NAME};
 use crate::teleop::Label;
+use crate::ui::dom;
 use crate::ui::kit::readouts::{self, ReadoutRow};
+use crate::ui::page::Shortcut;
 use crate::view::teleop::IK_IDS;
+
+/// The page's keys.
+pub const KEYS: &[Shortcut] = &[
+    Shortcut {
+        keys: "W / S",
+        message_id: "teleop-key-x",
+    },
+    Shortcut {
+        keys: "Q / E",
+        message_id: "teleop-key-z",
+    },
+    Shortcut {
+        keys: "→ ← / ↑ ↓",
+        message_id: "teleop-key-arrows",
+    },
+    Shortcut {
+        keys: "T / G",
+        message_id: "teleop-key-phi",
+    },
+    Shortcut {
+        keys: "K",
+        message_id: "teleop-key-gripper",
+    },
+    Shortcut {
+        keys: "R",
+        message_id: "teleop-key-reset",
+    },
+    Shortcut {
+        keys: "L",
+        message_id: "teleop-key-clear",
+    },
+    Shortcut {
+        keys: "Space",
+        message_id: "teleop-key-engage",
+    },
+];
+
+/// An ARIA state's text (`aria-pressed`, `aria-disabled`, ...).
+pub fn bool_text(b: bool) -> &'static str {
+    if b {
+        "true"
+    } else {
+        "false"
+    }
+}
+
+/// The element `sel` under `root`.
+pub fn find<T: JsCast>(root: &Element, sel: &str) -> Result<T, JsValue> {
+    dom::find(root, sel, "teleop")
+}
+
+/// The element `[data-tele="name"]` under `root`.
+pub fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
+    find(root, &format!("[data-tele=\"{name}\"]"))
+}
 
 fn modules() -> String {
     let mut html = String::from(
@@ -154,20 +215,11 @@ fn settings() -> String {
 }
 
 fn keymap() -> String {
-    let rows = [
-        ("W / S", "teleop-key-x"),
-        ("Q / E", "teleop-key-z"),
-        ("→ ← / ↑ ↓", "teleop-key-arrows"),
-        ("T / G", "teleop-key-phi"),
-        ("K", "teleop-key-gripper"),
-        ("R", "teleop-key-reset"),
-        ("L", "teleop-key-clear"),
-        ("Space", "teleop-key-engage"),
-    ];
     let mut html = String::from("<dl class=\"tele-keys\">");
-    for (k, id) in rows {
+    for key in KEYS {
         html.push_str(&format!(
-            "<div><dt><kbd>{k}</kbd></dt><dd data-i18n=\"{id}\"></dd></div>"
+            "<div><dt><kbd>{}</kbd></dt><dd data-i18n=\"{}\"></dd></div>",
+            key.keys, key.message_id
         ));
     }
     html.push_str("</dl>");

@@ -4,16 +4,25 @@
 //! event as a mark and the first failure marked (`data-first-failure`, the step from 1). The
 //! marks differ in shape as well as colour (Okabe–Ito): failures crosses, successes rings,
 //! warnings squares, the first failure a triangle; the legend under the timeline says so.
+//! [`Review`] is the component (`data-tele="review"`): the stepper, the timeline, the title
+//! and the events line.
 
+use std::cell::RefCell;
 use std::rc::Rc;
 
 use wasm_bindgen::JsValue;
-use web_sys::HtmlCanvasElement;
+use web_sys::{Element, HtmlCanvasElement, KeyboardEvent};
 
+use crate::teleop::session::EpisodeEntry;
 use crate::teleop::{Episode, Event, SceneGeometry, Sim};
 use crate::ui::kit::canvas::{Ink, Layer};
-use crate::ui::kit::stepper::{Length, StepModel};
+use crate::ui::kit::stepper::{Length, Speed, StepModel, StepperOptions, StepperWidget};
+use crate::ui::{ctx, dom};
 use crate::view::palette;
+
+use super::markup::{find, role};
+use super::readouts::Readouts;
+use super::scene_view::SceneView;
 
 /// Releases on the timeline (neutral: neither a failure nor a success).
 const GREY: &str = "#4a5360";
@@ -204,5 +213,153 @@ impl Timeline {
         let x = x_of(replay.index() as f64);
         c.set_fill_style_str(palette::BLUE.hex);
         c.fill_rect(x - 1.5, 0.0, 3.0, h);
+    }
+}
+
+/// The failure review.
+pub struct Review {
+    pub root: Element,
+    title: Element,
+    event: Element,
+    stepper_slot: Element,
+    timeline: RefCell<Timeline>,
+    replay: RefCell<Option<Rc<RefCell<Replay>>>>,
+    stepper: RefCell<Option<StepperWidget<Replay>>>,
+}
+
+impl Review {
+    /// Finds the review under `root`.
+    pub fn find(root: &Element) -> Result<Review, JsValue> {
+        let timeline = Timeline::new(find(root, "[data-testid=\"teleop-timeline\"]")?)?;
+        Ok(Review {
+            timeline: RefCell::new(timeline),
+            root: role(root, "review")?,
+            title: role(root, "review-title")?,
+            event: role(root, "review-event")?,
+            stepper_slot: role(root, "stepper")?,
+            replay: RefCell::new(None),
+            stepper: RefCell::new(None),
+        })
+    }
+
+    /// Shows or hides the review.
+    pub fn show(&self, on: bool) {
+        dom::show(&self.root, on);
+    }
+
+    /// Replays `entry` (episode `n`) under a new stepper; `on_step` runs on every step shown
+    /// (it draws the review).
+    pub fn start(&self, n: usize, entry: &EpisodeEntry, on_step: impl Fn() + 'static) {
+        self.stop();
+        let first = entry
+            .metrics
+            .first_failure
+            .as_ref()
+            .map(|(step, ev)| (*step, *ev));
+        let model = Rc::new(RefCell::new(Replay::new(n, entry.episode.clone(), first)));
+        *self.replay.borrow_mut() = Some(model.clone());
+        let widget = StepperWidget::new(
+            &self.stepper_slot,
+            model,
+            StepperOptions {
+                speeds: vec![
+                    Speed::PerSecond(25.0),
+                    Speed::PerSecond(100.0),
+                    Speed::PerSecond(400.0),
+                ],
+                initial_speed: 1,
+                testid: "teleop-stepper",
+                ..StepperOptions::default()
+            },
+            move |_| on_step(),
+        );
+        match widget {
+            Ok(w) => *self.stepper.borrow_mut() = Some(w),
+            Err(e) => web_sys::console::warn_1(&e),
+        }
+        self.render_title(n);
+        self.timeline.borrow_mut().fit();
+    }
+
+    /// Drops the replay and its stepper.
+    pub fn stop(&self) {
+        self.stepper.borrow_mut().take();
+        self.replay.borrow_mut().take();
+        dom::clear(&self.stepper_slot);
+    }
+
+    /// A key for the stepper; `true` if taken.
+    pub fn on_key(&self, event: &KeyboardEvent) -> bool {
+        self.stepper
+            .borrow()
+            .as_ref()
+            .is_some_and(|s| s.on_key(event))
+    }
+
+    /// Sizes the timeline to its box.
+    pub fn fit(&self) {
+        self.timeline.borrow_mut().fit();
+    }
+
+    fn render_title(&self, n: usize) {
+        self.title.set_text_content(Some(&ctx::t_strings(
+            "teleop-review-title",
+            &[("n", n.to_string())],
+        )));
+    }
+
+    /// Draws the replayed step: the scene and its trail in `view`, the timeline, the step's
+    /// numbers in `readouts`, the first failure and the step's events.
+    pub fn draw(&self, view: &mut SceneView, readouts: &Readouts) {
+        let Some(model) = self.replay.borrow().clone() else {
+            return;
+        };
+        let Ok(replay) = model.try_borrow() else {
+            return;
+        };
+        let ink = Ink::current();
+        if let Some(g) = replay.geometry() {
+            view.trail = replay.trail();
+            view.draw(&g, None, ink);
+        }
+        self.timeline.borrow().draw(&replay, ink);
+        let i = replay.index() as usize;
+        if let Some(r) = i.checked_sub(1).and_then(|k| replay.episode.records.get(k)) {
+            readouts.show_record(r);
+        }
+        let events: Vec<String> = replay
+            .events_now()
+            .iter()
+            .map(|e| ctx::t(&format!("teleop-ev-{}", e.id())))
+            .collect();
+        let first = replay
+            .first_failure
+            .map(|(step, ev)| {
+                ctx::t_strings(
+                    "teleop-first-failure",
+                    &[
+                        ("event", ctx::t(&format!("teleop-ev-{}", ev.id()))),
+                        ("step", step.to_string()),
+                    ],
+                )
+            })
+            .unwrap_or_else(|| ctx::t("teleop-no-failure"));
+        let text = if events.is_empty() {
+            first
+        } else {
+            format!("{first} · {}", events.join(", "))
+        };
+        self.event.set_text_content(Some(&text));
+    }
+
+    /// The stepper and the title in the current language.
+    pub fn relocalize(&self) {
+        if let Some(s) = self.stepper.borrow().as_ref() {
+            s.relocalize();
+        }
+        if let Some(model) = self.replay.borrow().as_ref() {
+            let n = model.borrow().number;
+            self.render_title(n);
+        }
     }
 }

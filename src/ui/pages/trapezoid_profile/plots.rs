@@ -6,24 +6,16 @@
 //! time axis snaps to 1-2-5 steps, so a slider drag redraws the axes only when the move
 //! outgrows them.
 
-use std::rc::Weak;
-
 use glam::DVec2;
-use wasm_bindgen::JsValue;
-use web_sys::Element;
 
-use super::TrapPage;
-use crate::pyfmt::py_round;
-use crate::recipes::trapezoid_profile::{TrapParams, TrapSample};
+use crate::recipes::trapezoid_profile::TrapSample;
 use crate::ui::ctx;
-use crate::ui::kit::canvas::{dash, focus_without_scroll, solid, Ink};
-use crate::ui::kit::drag::{DragEvent, PointerKind};
-use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec};
-use crate::ui::kit::recipe_controls::thinned_columns;
-use crate::ui::kit::signal_page::{self, axis, draw_handle, reach, series, Fit, SignalPlot};
+use crate::ui::kit::canvas::{dash, solid, Ink};
+use crate::ui::kit::plot::Mark;
+use crate::ui::kit::signal_page::{draw_handle, series, Draw, SignalPlot};
 use crate::view::plot::{auto_range, place_labels};
-use crate::view::signal::{held_range, held_ranges, nice_range, snap, y_extent};
-use crate::view::trapezoid_profile::{amax_from_corner, bands, phases, Phases};
+use crate::view::signal::{nice_range, y_extent};
+use crate::view::trapezoid_profile::{amax_from_corner, bands, Phases};
 
 const C_LINE: (u8, u8, u8) = (26, 77, 143);
 const C_CURSOR: (u8, u8, u8) = (194, 65, 12);
@@ -42,188 +34,59 @@ pub enum Grab {
     Corner,
 }
 
-/// The plots component.
+/// The phase labels in the current language (Fluent lookups kept out of every frame).
+#[derive(Default)]
 pub struct Plots {
-    sp: SignalPlot<Grab>,
-    x_range: (f64, f64),
-    y_ranges: [(f64, f64); 3],
-    /// The phase labels in the current language (Fluent lookups kept out of every frame).
     labels: Option<[String; 3]>,
 }
 
-impl Plots {
-    pub fn new(stage: &Element) -> Result<Plots, JsValue> {
-        Ok(Plots {
-            sp: SignalPlot::new(stage)?,
-            x_range: (0.0, 1.0),
-            y_ranges: [(-1.0, 1.0); 3],
-            labels: None,
-        })
+/// The argument a drag of `handle` to CSS px `at` sets, and its value (before snapping).
+pub fn dragged(sp: &SignalPlot<Grab>, handle: Grab, at: DVec2) -> Option<(&'static str, f64)> {
+    let (t, v) = sp.plot.from_px(1, at)?;
+    match handle {
+        Grab::Vmax => Some(("vmax", v)),
+        Grab::Corner => amax_from_corner(t, v).map(|a| ("amax", a)),
     }
+}
 
+/// Sets the axes and the thinned `samples` of the profile of phases `ph`.
+pub fn set_data(sp: &mut SignalPlot<Grab>, samples: &[TrapSample], ph: &Phases, draw: Draw) {
+    // The time axis first (it comes from the phases), then the rows thinned to it, then the
+    // value axes from the thinned points (each pixel column keeps its lowest and highest: the
+    // same extents as the rows', without another pass over a million).
+    let x = sp.x_for(draw.fit, nice_range((0.0, (ph.t_total * 1.1).max(1e-9))));
+    let columns = sp.thin(x, samples.iter().map(|s| (s.t, [s.s, s.v, s.a])));
+    let [s, v, a] = std::array::from_fn(|k| y_extent(&columns[k]));
+    let r = |(lo, hi): (f64, f64), with: f64| {
+        nice_range(auto_range([lo, hi, 0.0, with], 0.08).unwrap_or((-1.0, 1.0)))
+    };
+    let fitted = [r(s, ph.distance), r(v, ph.vmax * 1.3), r(a, ph.amax)];
+    if sp.fit_axes(draw.fit, x, fitted) || draw.resized {
+        let line = series("trap-series-profile", C_LINE, Mark::LineAndPoints, 2.0, 1.0);
+        let axes = [("trap-ax-s", ""), ("trap-ax-v", ""), ("trap-ax-a", "")];
+        sp.set_panels(axes, vec![line], C_CURSOR);
+    }
+    if draw.resized {
+        sp.plot.invalidate_all();
+    }
+    for (panel, pts) in columns.into_iter().enumerate() {
+        sp.plot.set_series(panel, 0, pts);
+    }
+}
+
+impl Plots {
     /// The language or the mode changed: texts are looked up again.
     pub fn relocalize(&mut self) {
         self.labels = None;
     }
 
-    /// The two handles' drags.
-    pub fn attach(&mut self, me: &Weak<TrapPage>, stage: &Element) -> Result<(), JsValue> {
-        self.sp.attach(stage, me, Plots::hit, Plots::on_drag)
-    }
-
-    fn hit(page: &TrapPage, at: DVec2, kind: PointerKind) -> Option<Grab> {
-        let handles = page.plots.borrow().handles(&page.profile.borrow().0)?;
-        handles
-            .into_iter()
-            .find(|(_, px)| px.distance(at) <= reach(kind))
-            .map(|(g, _)| g)
-    }
-
-    fn on_drag(page: &TrapPage, ev: DragEvent<Grab>) {
-        match ev {
-            DragEvent::Start { handle, at, .. } | DragEvent::Move { handle, at } => {
-                if matches!(ev, DragEvent::Start { .. }) {
-                    page.plots.borrow_mut().sp.dragging = true;
-                    focus_without_scroll(&page.plots.borrow().sp.plot.canvas.top().canvas);
-                }
-                let Some((t, v)) = page.plots.borrow().sp.plot.from_px(1, at) else {
-                    return;
-                };
-                let controls = &page.shell.controls;
-                let next = match handle {
-                    Grab::Vmax => controls.set_text("vmax", &snap(v.max(0.01), 0.01), false),
-                    Grab::Corner => amax_from_corner(t, v)
-                        .and_then(|a| controls.set_text("amax", &snap(a.max(0.01), 0.01), false)),
-                };
-                if let Some(p) = next {
-                    signal_page::change(page, p);
-                }
-            }
-            DragEvent::End { .. } => {
-                page.plots.borrow_mut().sp.dragging = false;
-                page.redraw(Fit::Refit, false);
-                page.shell.url.write_now();
-            }
-            DragEvent::Hover(at) | DragEvent::Tap { at } => {
-                if page.plots.borrow_mut().sp.hover(at) {
-                    page.show_cursor();
-                }
-            }
-            DragEvent::Leave => {}
-        }
-    }
-
-    /// The sample of `samples` under the cursor, drawn there.
-    pub fn cursor(&mut self, samples: &[TrapSample]) -> Option<TrapSample> {
-        let sample = self.cursor_sample(samples);
-        let _ = self.sp.plot.draw(Ink::current());
-        sample
-    }
-
-    /// The sample of `samples` under the cursor (mid-move before any hover), its time as the
-    /// CSV writes it (`round(t, 5)`); the cursor is set there.
-    fn cursor_sample(&mut self, samples: &[TrapSample]) -> Option<TrapSample> {
-        let mid = samples.last().map_or(0.0, |s| s.t / 2.0);
-        let sample = self.sp.cursor_row(samples, mid, |s| s.t).copied();
-        sample.map(|s| TrapSample {
-            t: py_round(s.t, 5),
-            ..s
-        })
-    }
-
-    /// Whether a handle is being dragged.
-    pub fn dragging(&self) -> bool {
-        self.sp.dragging
-    }
-
-    /// The handles, CSS px: vmax at mid-move, the corner at (t_acc, v_peak).
-    fn handles(&self, p: &TrapParams) -> Option<[(Grab, DVec2); 2]> {
-        let ph = phases(p);
-        Some([
-            (
-                Grab::Vmax,
-                self.sp.plot.to_px(1, ph.t_total / 2.0, ph.vmax)?,
-            ),
-            (Grab::Corner, self.sp.plot.to_px(1, ph.t_acc, ph.v_peak)?),
-        ])
-    }
-
-    /// Shows the `samples` and the cursor; `fit` says what the axes do, `resized` refits the
-    /// canvases. The sample under the cursor.
-    pub fn show(
-        &mut self,
-        p: &TrapParams,
-        samples: &[TrapSample],
-        ph: &Phases,
-        fit: Fit,
-        resized: bool,
-    ) -> Option<TrapSample> {
-        let ink = Ink::current();
-        // The time axis first (it comes from the phases), then the rows thinned to it, then
-        // the value axes from the thinned points (each pixel column keeps its lowest and
-        // highest: the same extents as the rows', without another pass over a million).
-        let x_range = match fit {
-            Fit::Keep => self.x_range,
-            Fit::Hold => held_range(self.x_range, fitted_x(ph)),
-            Fit::Refit => fitted_x(ph),
-        };
-        let rows = samples.iter().map(|s| (s.t, [s.s, s.v, s.a]));
-        let columns = thinned_columns(&self.sp.plot, x_range, rows);
-        if fit != Fit::Keep {
-            let [s, v, a] = std::array::from_fn(|k| y_extent(&columns[k]));
-            let r = |(lo, hi): (f64, f64), with: f64| {
-                nice_range(auto_range([lo, hi, 0.0, with], 0.08).unwrap_or((-1.0, 1.0)))
-            };
-            let fitted = [r(s, ph.distance), r(v, ph.vmax * 1.3), r(a, ph.amax)];
-            let y_ranges = if fit == Fit::Hold {
-                held_ranges(self.y_ranges, fitted)
-            } else {
-                fitted
-            };
-            self.x_range = x_range;
-            let same = self.sp.plot.spec().is_some_and(|spec| {
-                spec.x.range == self.x_range && spec.panels.iter().map(|p| p.y.range).eq(y_ranges)
-            });
-            self.y_ranges = y_ranges;
-            if !same || resized {
-                self.set_spec();
-            }
-        }
-        if resized {
-            self.sp.plot.invalidate_all();
-        }
-        for (panel, pts) in columns.into_iter().enumerate() {
-            self.sp.plot.set_series(panel, 0, pts);
-        }
-        let cursor = self.cursor_sample(samples);
-        let _ = self.sp.plot.draw(ink);
-        self.draw_marks(p, ph, ink);
-        cursor
-    }
-
-    fn set_spec(&mut self) {
-        let line = series("trap-series-profile", C_LINE, Mark::LineAndPoints, 2.0, 1.0);
-        let panel = |title: &str, range| PanelSpec {
-            y: axis(title, "", range),
-            series: vec![line.clone()],
-        };
-        self.sp.plot.set_spec(PlotSpec {
-            x: axis("signals-ax-t", "signals-unit-s", self.x_range),
-            panels: vec![
-                panel("trap-ax-s", self.y_ranges[0]),
-                panel("trap-ax-v", self.y_ranges[1]),
-                panel("trap-ax-a", self.y_ranges[2]),
-            ],
-            cursor_rgb: C_CURSOR,
-        });
-    }
-
     /// Bands, labels, the asked vmax and the handles on the marks layer.
-    fn draw_marks(&mut self, p: &TrapParams, ph: &Phases, ink: Ink) {
+    pub fn draw_marks(&mut self, sp: &mut SignalPlot<Grab>, ph: &Phases) {
+        let ink = Ink::current();
         let labels = self
             .labels
             .get_or_insert_with(|| BANDS.map(|(_, id)| ctx::t(id)));
-        let plot = &self.sp.plot;
+        let plot = &sp.plot;
         let marks = plot.canvas.layer(2);
         marks.begin();
         let c = &marks.ctx;
@@ -273,8 +136,8 @@ impl Plots {
         }
         // The asked vmax, dashed, on the velocity panel.
         if let (Some(l), Some(r)) = (
-            plot.to_px(1, self.x_range.0, ph.vmax),
-            plot.to_px(1, self.x_range.1, ph.vmax),
+            plot.to_px(1, sp.x_range.0, ph.vmax),
+            plot.to_px(1, sp.x_range.1, ph.vmax),
         ) {
             c.set_stroke_style_str("rgba(194, 65, 12, 0.8)");
             c.set_line_width(1.5 * ink.line);
@@ -285,23 +148,15 @@ impl Plots {
             c.stroke();
             let _ = c.set_line_dash(&solid());
         }
-        let Some(handles) = self.handles(p) else {
+        // The handles: vmax at mid-move, the corner at (t_acc, v_peak).
+        let (Some(vmax), Some(corner)) = (
+            plot.to_px(1, ph.t_total / 2.0, ph.vmax),
+            plot.to_px(1, ph.t_acc, ph.v_peak),
+        ) else {
             return;
         };
-        for (_, at) in handles {
-            draw_handle(c, at, ink);
-        }
-        self.sp
-            .set_handles(&["vmax", "corner"], &handles.map(|(_, at)| at));
+        draw_handle(c, vmax, ink);
+        draw_handle(c, corner, ink);
+        sp.set_handles(&[(Grab::Vmax, "vmax", vmax), (Grab::Corner, "corner", corner)]);
     }
-
-    /// Saves the plots as a PNG.
-    pub fn png(&self, file: &str) {
-        self.sp.png(file);
-    }
-}
-
-/// The time axis that holds the whole move.
-fn fitted_x(ph: &Phases) -> (f64, f64) {
-    nice_range((0.0, (ph.t_total * 1.1).max(1e-9)))
 }

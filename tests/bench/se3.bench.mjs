@@ -9,18 +9,17 @@
 //
 // Budget: p95 < 4 ms. With SE3_BENCH_STRICT=1 the exit code is 1 when it is missed; otherwise
 // this only reports.
-import { openApp, closeBrowser, startServer } from './harness.mjs';
-import { stats, nextFrame } from './bench-table.mjs';
+import { openApp } from '../e2e/harness.mjs';
+import { BenchTable, nextFrame, runBench } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
 const BUDGET_MS = 4;
+const table = new BenchTable();
 
 const recorded = (page) => page.evaluate(() => (window.__se3FrameMs ?? []).length);
 
-let over = false;
-const server = await startServer();
-try {
-  const { page } = await openApp(server.url, '#/se3-relative', { viewport: VIEWPORT });
+await runBench({ table, strict: 'SE3_BENCH_STRICT' }, async (url) => {
+  const { page } = await openApp(url, '#/se3-relative', { viewport: VIEWPORT });
   const canvas = page.locator('[data-testid="se3-relative-canvas"]');
   await canvas.scrollIntoViewIfNeeded();
   const box = await canvas.boundingBox();
@@ -43,15 +42,6 @@ try {
   if (gizmo.length === 0) {
     throw new Error('no window.__se3FrameMs: serve a dist built with --features bench (make bench)');
   }
-  console.log('work                 n   p50 ms  p95 ms  max ms  budget');
-  for (const [name, values] of [['gizmo drag frame', gizmo], ['orbit drag frame', orbit]]) {
-    const s = stats(values);
-    const ok = s.p95 < BUDGET_MS ? 'ok' : 'OVER';
-    over ||= ok === 'OVER';
-    console.log(`${name.padEnd(18)} ${String(s.n).padStart(4)}  ${s.p50.toFixed(2).padStart(6)}  ${s.p95.toFixed(2).padStart(6)}  ${s.max.toFixed(2).padStart(6)}  p95 < ${BUDGET_MS} ms ${ok}`);
-  }
-} finally {
-  await closeBrowser();
-  await server.close();
-}
-if (over && process.env.SE3_BENCH_STRICT === '1') process.exit(1);
+  table.report('gizmo drag frame', gizmo, BUDGET_MS);
+  table.report('orbit drag frame', orbit, BUDGET_MS);
+});

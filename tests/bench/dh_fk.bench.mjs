@@ -10,8 +10,8 @@
 //   the frame drawn after it.
 //
 // Budget: p95 < 4 ms for each. With DH_BENCH_STRICT=1 the exit code is 1 when it is missed.
-import { openApp, closeBrowser, startServer } from './harness.mjs';
-import { BenchTable, nextFrame } from './bench-table.mjs';
+import { openApp } from '../e2e/harness.mjs';
+import { BenchTable, nextFrame, runBench } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
 const table = new BenchTable();
@@ -19,9 +19,8 @@ const table = new BenchTable();
 const taken = (page) => page.evaluate(() => ({ frame: (window.__dhFrameMs || []).length, change: (window.__dhChangeMs || []).length }));
 const since = (page, c) => page.evaluate((c) => ({ frame: window.__dhFrameMs.slice(c.frame), change: (window.__dhChangeMs || []).slice(c.change) }), c);
 
-const server = await startServer();
-try {
-  const app = await openApp(server.url, '#/dh-fk?row=3&step=2', { viewport: VIEWPORT });
+await runBench({ table, strict: 'DH_BENCH_STRICT' }, async (url) => {
+  const app = await openApp(url, '#/dh-fk?row=3&step=2', { viewport: VIEWPORT });
   const { page } = app;
   await page.waitForSelector('[data-testid="dh-fk-canvas"]');
   await nextFrame(page);
@@ -58,10 +57,4 @@ try {
   table.report('slider drag: recompute (FK, tables, readouts)', s.change, 4);
   table.report('slider drag: frame draw', s.frame, 4);
   await app.close();
-} finally {
-  await closeBrowser();
-  await server.close();
-}
-
-table.print();
-if (process.env.DH_BENCH_STRICT === '1' && table.over()) process.exitCode = 1;
+});

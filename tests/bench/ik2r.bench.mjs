@@ -12,15 +12,14 @@
 //
 // Budgets: drag frame p95 < 4 ms, heatmap 256 < 16 ms, 512 < 50 ms. With IK2R_BENCH_STRICT=1
 // the exit code is 1 when a budget is missed; otherwise this only reports.
-import { openApp, closeBrowser, startServer } from './harness.mjs';
-import { BenchTable, nextFrame } from './bench-table.mjs';
+import { openApp } from '../e2e/harness.mjs';
+import { BenchTable, nextFrame, runBench } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
 const table = new BenchTable();
 
-const server = await startServer();
-try {
-  const app = await openApp(server.url, '#/ik-2r', { viewport: VIEWPORT });
+await runBench({ table, strict: 'IK2R_BENCH_STRICT' }, async (url) => {
+  const app = await openApp(url, '#/ik-2r', { viewport: VIEWPORT });
   const { page } = app;
   await page.waitForSelector('[data-testid="ik-2r-canvas"][data-tip-x]');
   await nextFrame(page);
@@ -81,14 +80,8 @@ try {
   await app.close();
 
   // The largest workspace grid the form allows (1001 × 1001 cells).
-  const ws = await openApp(server.url, '#/ik-2r?ws=1&half_mm=500&step_mm=1', { viewport: VIEWPORT });
+  const ws = await openApp(url, '#/ik-2r?ws=1&half_mm=500&step_mm=1', { viewport: VIEWPORT });
   await ws.page.waitForFunction(() => window.__ik2rTimings?.workspace?.length > 0, null, { timeout: 60000 });
   table.report('workspace 1001×1001 (ik_workspace::compute)', await ws.page.evaluate(() => __ik2rTimings.workspace));
   await ws.close();
-} finally {
-  await closeBrowser();
-  await server.close();
-}
-
-table.print();
-if (process.env.IK2R_BENCH_STRICT === '1' && table.over()) process.exitCode = 1;
+});

@@ -1,18 +1,15 @@
-// First interactive frame (issue 14, "Size and first paint"), on the dist folder named by
-// BSV_DIST (default dist/), served from localhost: cold loads in headless Chromium, each in a
-// new browser context (empty HTTP cache, no service worker), 1280×800. The time is from the
-// navigation's start to the first animation frame after the shell set html[data-app-ready]
-// (the route mounted and its listeners installed: the page answers input from that frame on).
-// Printed per route: n, median, p95 and max, against the budget of a 500 ms median. Also the
-// sizes of the dist (scripts/size.mjs). With FIRSTFRAME_STRICT=1 the exit code is 1 when the
-// budget is missed; otherwise this only reports.
-import { join } from 'node:path';
-import { browser, closeBrowser, ROOT } from './harness.mjs';
-import { startStaticServer } from '../../scripts/serve.mjs';
+// First interactive frame, on the dist folder named by BSV_DIST (default dist/), served from
+// localhost: cold loads in headless Chromium, each in a new browser context (empty HTTP cache,
+// no service worker), 1280×800. The time is from the navigation's start to the first animation
+// frame after the shell set html[data-app-ready] (the route mounted and its listeners
+// installed: the page answers input from that frame on). Printed per route: n, median, p95 and
+// max, against the budget of a 500 ms median. Also the sizes of the dist (scripts/size.mjs).
+// With FIRSTFRAME_STRICT=1 the exit code is 1 when the budget is missed; otherwise this only
+// reports.
+import { browser, closeBrowser, startServer, DIST } from '../e2e/harness.mjs';
 import { stats } from './bench-table.mjs';
 import { measure, KB, BUDGET } from '../../scripts/size.mjs';
 
-const DIST = join(ROOT, process.env.BSV_DIST ?? 'dist');
 const ROUTES = ['#/', '#/ik-2r', '#/rrt-2d', '#/pendulum-energy', '#/teleop', '#/ik-2r?lang=ja'];
 const LOADS = Number(process.env.FIRSTFRAME_LOADS ?? 9);
 const BUDGET_MS = 500;
@@ -61,7 +58,7 @@ console.log(
     `${(wasm.gzip / KB).toFixed(1)} KB gzip); budget ${(BUDGET / KB).toFixed(0)} KB (node scripts/size.mjs for the table)`,
 );
 
-const server = await startStaticServer(DIST, 0);
+const server = await startServer();
 let over = false;
 try {
   // One load first so that Chromium itself is warm (its own start is not the app's).

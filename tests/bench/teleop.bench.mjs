@@ -1,11 +1,11 @@
 // Speed of the Robot Pilot page (#/teleop) in headless Chromium at 1920×1080, on the dist folder
 // named by BSV_DIST (default dist/); it needs a wasm built with `--features bench`
 // (window.__teleopFrameMs: every live frame's work, ms) — `make bench` (scripts/bench.sh)
-// assembles one in target/bench-dist. The case of the issue: the pilot holding keys (x, then z,
+// assembles one in target/bench-dist. The case: the pilot holding keys (x, then z,
 // then both with the gripper turning) for 6 s of wall time on the pick-and-place task, then on
 // the reach task with 200 ms latency; each frame polls the devices, steps the simulation (about
-// 1.7 steps at 60 Hz), draws the arm, scene and trail and writes the readouts. Also the key
-// press → next frame latency: frames between a keydown and the first changed x readout.
+// 1.7 steps at 60 Hz), draws the arm, scene and trail and writes the readouts. (That a key press
+// moves the tip on the next frame is a check of tests/e2e/teleop.test.mjs.)
 //
 // Then the load of a stored session of ten 60 s episodes (60,000 steps simulated again, in
 // slices: window.__teleopLoadMs, and the reload's main-thread tasks over 50 ms), the idle page
@@ -14,16 +14,14 @@
 // and the evidence (the ten CSVs hashed), each written in slices: wall time, slices
 // (window.__teleopExportMs: p50, p95, max) and main-thread tasks over 50 ms.
 //
-// Budget: frame work p95 < 4 ms; an export slice, a load slice and a load's task < 100 ms.
+// Budgets: frame work p95 < 4 ms; an export's or the load's slices and main-thread tasks < 100 ms.
 // With TELEOP_BENCH_STRICT=1 the exit code is 1 when one is missed; otherwise this only reports.
-import { join } from 'node:path';
-import { openApp, closeBrowser, ROOT } from './harness.mjs';
-import { startStaticServer } from '../../scripts/serve.mjs';
+import { openApp, closeBrowser, startServer } from '../e2e/harness.mjs';
 import { stats } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
 
-const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);
+const server = await startServer();
 let over = false;
 try {
   for (const [label, hash] of [
@@ -37,29 +35,6 @@ try {
       }
       const canvas = page.locator('[data-testid="teleop-canvas"]');
       await canvas.focus();
-      // Key press → first frame that shows a moved tip (latency 0 only).
-      if (label.includes('latency 0')) {
-        const frames = await page.evaluate(
-          () =>
-            new Promise((resolve) => {
-              const x0 = document.querySelector('[data-readout="x"]').textContent;
-              const canvas = document.querySelector('[data-testid="teleop-canvas"]');
-              canvas.dispatchEvent(new KeyboardEvent('keydown', { code: 'KeyW', key: 'w', bubbles: true }));
-              let n = 0;
-              const tick = () => {
-                n++;
-                if (document.querySelector('[data-readout="x"]').textContent !== x0 || n > 30) {
-                  canvas.dispatchEvent(new KeyboardEvent('keyup', { code: 'KeyW', key: 'w', bubbles: true }));
-                  window.dispatchEvent(new KeyboardEvent('keyup', { code: 'KeyW', key: 'w', bubbles: true }));
-                  resolve(n);
-                } else requestAnimationFrame(tick);
-              };
-              requestAnimationFrame(tick);
-            }),
-        );
-        console.log(`key press → moved tip: frame ${frames} after the keydown (1 = the next frame)`);
-        await page.keyboard.press('r');
-      }
       await page.evaluate(() => { window.__teleopFrameMs.length = 0; });
       await page.keyboard.down('w');
       await page.waitForTimeout(1500);
@@ -149,9 +124,9 @@ try {
         const wall = Date.now() - t0;
         const { slices, tasks } = await page.evaluate(() => ({ slices: window.__teleopExportMs ?? [], tasks: window.__longTasks.map(Math.round) }));
         const s = stats(slices);
-        const ok = s.max < 100;
+        const ok = s.max < 100 && tasks.every((d) => d < 100);
         over ||= !ok;
-        console.log(`export ${file} (ten 60 s episodes): ${wall} ms, ${s.n} slices p50 ${s.p50?.toFixed(1)} p95 ${s.p95?.toFixed(1)} max ${s.max?.toFixed(1)} ms, tasks over 50 ms ${JSON.stringify(tasks)}  budget slice max < 100 ms ${ok ? 'ok' : 'OVER'}`);
+        console.log(`export ${file} (ten 60 s episodes): ${wall} ms, ${s.n} slices p50 ${s.p50?.toFixed(1)} p95 ${s.p95?.toFixed(1)} max ${s.max?.toFixed(1)} ms, tasks over 50 ms ${JSON.stringify(tasks)}  budget slice max and tasks < 100 ms ${ok ? 'ok' : 'OVER'}`);
       }
     } finally {
       await close();

@@ -8,14 +8,13 @@
 //
 // Budget: frame work p95 < 4 ms. With UMEYAMA_BENCH_STRICT=1 the exit code is 1 when it is
 // missed; otherwise this only reports.
-import { join } from 'node:path';
-import { openApp, closeBrowser, ROOT } from './harness.mjs';
-import { startStaticServer } from '../../scripts/serve.mjs';
-import { stats, nextFrame } from './bench-table.mjs';
+import { openApp } from '../e2e/harness.mjs';
+import { BenchTable, nextFrame, runBench } from './bench-table.mjs';
 
 const VIEWPORT = { width: 1920, height: 1080 };
 const MOVES = 150;
 const BUDGET_MS = 4;
+const table = new BenchTable();
 
 async function dragPoint(page) {
   const canvas = page.locator('[data-testid="umeyama-2d-canvas"]');
@@ -62,39 +61,25 @@ const cases = [
   ['Shift+arrow keys, 40 pts', '#/umeyama-2d?n=40', keyMoves],
 ];
 
-const server = await startStaticServer(join(ROOT, process.env.BSV_DIST ?? 'dist'), 0);
-let over = false;
-try {
-  console.log('case                       n   p50 ms  p95 ms  max ms  budget');
+await runBench({ table, strict: 'UMEYAMA_BENCH_STRICT' }, async (url) => {
   for (const [name, hash, act] of cases) {
-    const { page, close } = await openApp(server.url, hash, { viewport: VIEWPORT });
+    const { page, close } = await openApp(url, hash, { viewport: VIEWPORT });
     try {
+      if (!(await page.evaluate(() => Array.isArray(window.__umeyamaFrameMs)))) {
+        throw new Error('no window.__umeyamaFrameMs: serve a dist built with --features bench (make bench)');
+      }
       // Only the input's frames: the records of the page's mount (its first draw makes the
       // grid layer and the label images, tens of ms once) are dropped.
       await page.evaluate(() => {
         for (const k of ['__umeyamaFrameMs', '__umeyamaFormMs', '__umeyamaDrawMs']) window[k] = [];
       });
       await act(page);
-      const ms = await page.evaluate(() => window.__umeyamaFrameMs?.slice());
-      if (!Array.isArray(ms)) {
-        console.log('no bench hooks in this build (build the wasm with --features bench)');
-        break;
-      }
-      const s = stats(ms);
-      const ok = s.p95 < BUDGET_MS;
-      over ||= !ok;
-      console.log(`${name.padEnd(25)} ${String(s.n).padStart(4)}  ${s.p50.toFixed(2).padStart(6)}  ${s.p95.toFixed(2).padStart(6)}  ${s.max.toFixed(2).padStart(6)}  p95 < ${BUDGET_MS} ms ${ok ? 'ok' : 'OVER'}`);
+      table.report(name, await page.evaluate(() => window.__umeyamaFrameMs.slice()), BUDGET_MS);
       // Of it: the form's check and the canvas drawing.
-      for (const [part, key] of [['  of it: form check', '__umeyamaFormMs'], ['  of it: canvas draw', '__umeyamaDrawMs']]) {
-        const p = stats(await page.evaluate((k) => window[k]?.slice() ?? [], key));
-        if (p.n) console.log(`${part.padEnd(25)} ${String(p.n).padStart(4)}  ${p.p50.toFixed(2).padStart(6)}  ${p.p95.toFixed(2).padStart(6)}  ${p.max.toFixed(2).padStart(6)}`);
-      }
+      table.report('  of it: form check', await page.evaluate(() => window.__umeyamaFormMs?.slice() ?? []));
+      table.report('  of it: canvas draw', await page.evaluate(() => window.__umeyamaDrawMs?.slice() ?? []));
     } finally {
       await close();
     }
   }
-} finally {
-  await closeBrowser();
-  await server.close();
-}
-if (over && process.env.UMEYAMA_BENCH_STRICT === '1') process.exit(1);
+});

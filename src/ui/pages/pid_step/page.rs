@@ -1,0 +1,168 @@
+//! The PID step drill: its sliders, readouts and key; the runs (the one shown, the last
+//! committed, the ghost), their figures, warnings and announcement.
+
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+
+use wasm_bindgen::JsValue;
+use web_sys::Element;
+
+use super::plots::Plots;
+use crate::error::RecipeWarning;
+use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
+use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, RunFrom, SignalPage, SignalSpec};
+use crate::ui::{ctx, dom};
+use crate::view::form::fluent_args;
+use crate::view::pid_step::{figures, rows, StepFigures};
+use crate::view::signal::{sig, Slider};
+
+/// The figures and warnings of the run shown, the run the ghost is drawn from (a new ghost, a
+/// new generation), and the last committed run (runs are shared, never copied).
+struct Runs {
+    figures: StepFigures,
+    warnings: Vec<RecipeWarning>,
+    committed: Rc<Vec<PidSample>>,
+    ghost: Option<Rc<Vec<PidSample>>>,
+    ghost_generation: u64,
+}
+
+impl Runs {
+    /// The run `rows` with no ghost, committed.
+    fn first(rows: &Rc<Vec<PidSample>>) -> Runs {
+        Runs {
+            figures: figures(rows),
+            warnings: warnings(rows),
+            committed: rows.clone(),
+            ghost: None,
+            ghost_generation: 0,
+        }
+    }
+}
+
+/// The page's state: the runs and whether a change is under way.
+pub struct PidPage {
+    plots: RefCell<Plots>,
+    warning: Element,
+    runs: RefCell<Runs>,
+    changing: Cell<bool>,
+}
+
+impl SignalPage for PidPage {
+    type Params = PidParams;
+    type Row = PidSample;
+    type Handle = ();
+    const SPEC: SignalSpec<PidParams, PidSample> = SignalSpec {
+        prefix: "pid",
+        info: &INFO,
+        parse: params_from_args,
+        // The kernel's loop: the CSV's rows, times unrounded.
+        kernel: |p| rows(p).map(boxed),
+        png: "pid_step_plots.png",
+        layers: 3,
+        sliders: &[
+            Slider::new("Kp", 0.0, 10.0, 0.05),
+            Slider::new("Ki", 0.0, 5.0, 0.05),
+            Slider::new("Kd", 0.0, 1.0, 0.01),
+            Slider::new("tau", 0.0, 5.0, 0.05),
+            Slider::new("steps", 0.0, 1000.0, 10.0),
+        ],
+        readouts: &[
+            ("rise-time", "pid-ro-rise"),
+            ("overshoot", "pid-ro-overshoot"),
+            ("settling-time", "pid-ro-settling"),
+            ("steady-state-error", "pid-ro-sse"),
+            ("peak-u", "pid-ro-peak-u"),
+            ("peak-u-t", "pid-ro-peak-u-t"),
+            ("final-y", "pid-ro-final-y"),
+        ],
+        explain: &[
+            "gains", "plant", "toy", "real", "input", "steps", "expected",
+        ],
+        nudges: &[Arrows::UpDown.nudge("pid-key-kp", "Kp", |p| p.kp, 0.05, f64::NEG_INFINITY)],
+        overlays: &[],
+        under_plot: "<p class=\"sig-warning\" data-pid=\"warning\" \
+                     data-testid=\"pid-step-warning\" role=\"alert\" hidden></p>\
+                     <p class=\"sig-note\" data-i18n=\"pid-ghost-note\"></p>",
+        under_readouts: "<p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>",
+    };
+
+    fn build(kit: &Kit<PidPage>) -> Result<PidPage, JsValue> {
+        Ok(PidPage {
+            plots: RefCell::new(Plots::default()),
+            warning: kit.role("warning")?,
+            runs: RefCell::new(Runs::first(&kit.run().rows)),
+            changing: Cell::new(false),
+        })
+    }
+
+    /// A new run: the first change after a committed one turns the committed run into the
+    /// ghost; the page's first run has none. Then readouts, warning and plots.
+    fn show(&self, kit: &Kit<PidPage>, draw: Draw) {
+        let run = kit.run();
+        let mut runs = self.runs.borrow_mut();
+        if draw.run == Some(RunFrom::Mount) {
+            *runs = Runs::first(&run.rows);
+        } else if draw.run.is_some() {
+            if !self.changing.replace(true) {
+                // The committed run becomes the ghost; the next commit replaces it.
+                runs.ghost = Some(std::mem::take(&mut runs.committed));
+                runs.ghost_generation += 1;
+            }
+            runs.figures = figures(&run.rows);
+            runs.warnings = warnings(&run.rows);
+        }
+        let f = runs.figures;
+        let show = |key: &str, x: Option<f64>, digits: usize| match x {
+            Some(x) => kit.show_number(key, x, digits),
+            None => kit.readouts.set_with_value(key, &ctx::t("pid-ro-none"), ""),
+        };
+        show("rise-time", f.rise_time, 4);
+        show("overshoot", f.overshoot_pct, 3);
+        show("settling-time", f.settling_time, 4);
+        show("steady-state-error", f.steady_state_error, 4);
+        show("peak-u", f.peak_u.map(|p| p.1), 4);
+        show("peak-u-t", f.peak_u.map(|p| p.0), 4);
+        show("final-y", f.final_y, 4);
+        let text: Vec<String> = runs
+            .warnings
+            .iter()
+            .map(|w| ctx::t_args(w.message_id(), &fluent_args(w.message_args())))
+            .collect();
+        self.warning.set_text_content(Some(&text.join(" ")));
+        dom::show(&self.warning, !text.is_empty());
+        let ghost = runs
+            .ghost
+            .as_deref()
+            .map(|g| (runs.ghost_generation, g.as_slice()));
+        let mut sp = kit.plot.borrow_mut();
+        self.plots
+            .borrow_mut()
+            .set_data(&mut sp, &run.rows, ghost, draw.resized);
+        drop((sp, runs, run));
+        kit.draw_plot();
+        if draw.changed() {
+            // The unit belongs to a number only: "not reached" stands alone.
+            let or_none = |x: Option<f64>, unit_id: &str| {
+                x.map_or_else(
+                    || ctx::t("pid-ro-none"),
+                    |x| ctx::t_strings(unit_id, &[("value", sig(x, 3))]),
+                )
+            };
+            kit.readouts.announce(&ctx::t_strings(
+                "pid-live",
+                &[
+                    ("rise", or_none(f.rise_time, "pid-live-seconds")),
+                    ("overshoot", or_none(f.overshoot_pct, "pid-live-percent")),
+                    ("settling", or_none(f.settling_time, "pid-live-seconds")),
+                ],
+            ));
+        }
+    }
+
+    /// The run shown is the one the next change leaves as the ghost.
+    fn change_ended(&self, kit: &Kit<PidPage>) {
+        if self.changing.replace(false) {
+            self.runs.borrow_mut().committed = kit.run().rows.clone();
+        }
+    }
+}
