@@ -423,7 +423,7 @@ mod tests {
 
     #[cfg(not(target_arch = "wasm32"))]
     mod properties {
-        use super::super::*;
+        use super::*;
         use proptest::prelude::*;
 
         proptest! {

@@ -429,7 +429,7 @@ mod tests {
 
     #[cfg(not(target_arch = "wasm32"))]
     mod properties {
-        use super::super::*;
+        use super::*;
         use proptest::prelude::*;
 
         const PI: f64 = std::f64::consts::PI;
