@@ -149,34 +149,20 @@ const WALLS: [&str; 8] = [
     "--obstacle",
     "0.88,0.7,0.9,0.9",
 ];
-const WALLED_20K: &[&str] = &[
-    "7",
-    "20000",
-    "--obstacle",
-    "0.7,0.7,0.9,0.72",
-    "--obstacle",
-    "0.7,0.88,0.9,0.9",
-    "--obstacle",
-    "0.7,0.7,0.72,0.9",
-    "--obstacle",
-    "0.88,0.7,0.9,0.9",
-    "--goal",
-    "0.8,0.8",
-];
-const WALLED_1M: &[&str] = &[
-    "7",
-    "1000000",
-    "--obstacle",
-    "0.7,0.7,0.9,0.72",
-    "--obstacle",
-    "0.7,0.88,0.9,0.9",
-    "--obstacle",
-    "0.7,0.7,0.72,0.9",
-    "--obstacle",
-    "0.88,0.7,0.9,0.9",
-    "--goal",
-    "0.8,0.8",
-];
+/// The command line of `max_iter` iterations in the walled-in world of `WALLS`.
+const fn walled(max_iter: &'static str) -> [&'static str; 12] {
+    let mut args = [
+        "7", max_iter, "", "", "", "", "", "", "", "", "--goal", "0.8,0.8",
+    ];
+    let mut i = 0;
+    while i < WALLS.len() {
+        args[2 + i] = WALLS[i];
+        i += 1;
+    }
+    args
+}
+const WALLED_20K: &[&str] = &walled("20000");
+const WALLED_1M: &[&str] = &walled("1000000");
 
 /// The walled-in world of `WALLS` with `max_iter` iterations.
 pub fn walled_setup(max_iter: usize) -> crate::recipes::rrt_2d::RrtSetup {

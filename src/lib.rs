@@ -3,6 +3,7 @@
 //!
 //! - [`recipes`]: one kernel per recipe, numbers in, tables out; no web-sys.
 //! - [`planar2r`]: planar two-link kinematics shared by the 2R recipes and the IK page.
+//! - [`camera3d`]: the orbit camera of the 3D views and the 3D card pictures.
 //! - [`teleop`]: the Robot Pilot practice simulation (planar 3R arm, gripper, block, differential
 //!   IK, latency, noise, episodes, exact replay); no web-sys.
 //! - [`rng`]: numpy-compatible `default_rng` (PCG64 + SeedSequence + ziggurat normal).
@@ -21,6 +22,7 @@
 pub mod api;
 pub mod args;
 pub mod bench;
+pub mod camera3d;
 pub mod error;
 pub mod i18n;
 pub mod math;

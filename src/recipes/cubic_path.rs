@@ -15,11 +15,18 @@
 //!   every coefficient finite;
 //! - at most [`MAX_ROWS`] samples.
 
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{
+    lines,
+    series::{BLUE, ORANGE},
+    Picture, Table,
+};
+use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound, Plan};
 use crate::error::RecipeError;
 use crate::numpy;
-use crate::pyfmt::{py_float, CsvText};
+use crate::pyfmt::py_float;
 
 /// Largest waypoint magnitude, rad (or whatever unit the user means): keeps `q1 - q0` and the
 /// coefficients finite.
@@ -64,6 +71,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-cubic-path-quirks",
     plan: plan_of::<Entry>,
     page: Some("cubic-path"),
+    picture,
 };
 
 /// Parameters of the path (the recipe's defaults: 0.0 → 1.2 rad in 1.0 s, dt 0.02 s).
@@ -195,13 +203,8 @@ impl CubicPath {
 
     /// [`Self::to_csv`] reporting its rows as the second half of `progress`.
     pub fn to_csv_with(&self, progress: &mut Progress) -> String {
-        let mut csv = CsvText::with_header(&HEADER);
-        let n = self.samples.len() as u64;
-        for (k, s) in self.samples.iter().enumerate() {
-            progress.phase_at(1, 2, k as u64, n);
-            csv.floats(&[s.t, s.q, s.qd, s.qdd]);
-        }
-        csv.finish()
+        let rows = self.samples.iter().map(|s| [s.t, s.q, s.qd, s.qdd]);
+        float_csv_with(&HEADER, rows, progress)
     }
 
     /// The line the recipe prints (numbers as Python's `repr`).
@@ -233,6 +236,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = CubicParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<CubicParams, RecipeError> {
         params_from_args(args)
@@ -255,25 +259,22 @@ impl Kernel for Entry {
     }
 }
 
-/// Runs the recipe from command-line style arguments.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: position and velocity over time.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(FILE_NAME)?)?;
+    Some(lines(
+        &t.col("t_s")?,
+        &[(&t.col("q")?, BLUE), (&t.col("qd")?, ORANGE)],
+    ))
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
-    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
-    }
+    use crate::recipes::testkit::{assert_rejects, run_strs};
 
     #[test]
     fn reference_rows_and_boundary_conditions() {
@@ -303,7 +304,7 @@ mod tests {
             dt_s: 0.1,
         })
         .unwrap();
-        let out = run_strs(INFO.id, &["-0.5", "2", "0.3", "0.1"]).unwrap();
+        let out = run_strs::<Entry>(&["-0.5", "2", "0.3", "0.1"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(path.to_csv().as_str()));
         // np.arange(0, 0.3 + 1e-12, 0.1) has 4 values: 0.30000000000000004 is the last.
         assert_eq!(
@@ -316,7 +317,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            assert_rejects(INFO.id, raw, param, ok)
+            assert_rejects::<Entry>(raw, param, ok)
         };
         use RecipeError as E;
         check(&["0", "1", "0"], "T", |e| {
@@ -345,7 +346,7 @@ mod tests {
         assert!(matches!(nan.validate(), Err(E::NotFinite { .. })));
         // A dt longer than T gives the start sample only.
         assert_eq!(
-            run_strs(INFO.id, &["0", "1", "1", "5"])
+            run_strs::<Entry>(&["0", "1", "1", "5"])
                 .unwrap()
                 .summary
                 .split(' ')

@@ -19,10 +19,18 @@
 //! negative zeros appear exactly where the recipe makes them: `pitch = atan2(−(+0.0), 1) = −0.0`
 //! for a joint frame whose `R₂₀` is zero.
 
+use glam::{DVec2, DVec3};
 use nalgebra::{Matrix3, Matrix4};
 
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, parse_f64, ArgKind, ArgSpec, Args};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{
+    series::{BLUE, GREY, ORANGE},
+    Mark, Picture, Table, UnitFrame,
+};
+use crate::args::{finite, parse_f64, ArgKind, ArgSpec, Args, Plan};
+use crate::camera3d::{ground_grid, Camera, Preset};
 use crate::error::RecipeError;
 use crate::numpy::matmul;
 use crate::pyfmt::{fixed, Cell, CsvText};
@@ -100,6 +108,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-dh-fk-quirks",
     plan: plan_of::<Entry>,
     page: Some("dh-fk"),
+    picture,
 };
 
 /// The link transform `T_mdh(α, a, d, θ)`, entry for entry as the recipe builds it.
@@ -278,6 +287,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = DhParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<DhParams, RecipeError> {
         params_from_args(args)
@@ -298,31 +308,52 @@ impl Kernel for Entry {
     }
 }
 
-/// Entry point for the CLI and `runRecipe`.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the chain's joints in an iso view over a ground grid.
+pub fn picture(output: &RecipeOutput, aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(CSV_NAME)?)?;
+    let (x, y, z) = (t.col("x_m")?, t.col("y_m")?, t.col("z_m")?);
+    let chain: Vec<DVec3> = (0..x.len()).map(|i| DVec3::new(x[i], y[i], z[i])).collect();
+    let cam = Camera::framing(DVec3::new(0.0, 0.0, 0.15), 0.3, Preset::Iso, 1.0, 1.0);
+    let grid: Vec<(DVec3, DVec3)> = ground_grid(4, 0.1);
+    let project = |p: DVec3| cam.project(p).map(|q| DVec2::new(q.at.x, 1.0 - q.at.y));
+    let grid2: Vec<(DVec2, DVec2)> = grid
+        .into_iter()
+        .filter_map(|(a, b)| Some((project(a)?, project(b)?)))
+        .collect();
+    let chain2: Vec<DVec2> = chain.into_iter().filter_map(project).collect();
+    let frame = UnitFrame::fit(
+        chain2
+            .iter()
+            .copied()
+            .chain(grid2.iter().flat_map(|(a, b)| [*a, *b])),
+        Some(aspect),
+    );
+    let grid = Mark::Segments {
+        series: GREY,
+        pairs: grid2
+            .iter()
+            .map(|(a, b)| (frame.map(*a), frame.map(*b)))
+            .collect(),
+    };
+    let chain = chain2.iter().map(|p| frame.map(*p)).collect();
+    let [line, dots] = Mark::joined_dots(chain, BLUE, ORANGE);
+    Some(Picture {
+        marks: vec![grid, line, dots],
+    })
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
-
-    #[test]
-    fn arg_defaults_are_the_params_defaults() {
-        assert_eq!(
-            DhParams::from_args(&Args::default()).unwrap(),
-            DhParams::default()
-        );
-    }
+    use crate::recipes::kernel::run_of;
+    use crate::recipes::testkit::run_strs;
 
     #[test]
     fn reference_runs_are_byte_identical() {
-        let out = run_args(&Args::default()).unwrap();
+        let out = run_of::<Entry>(&Args::default()).unwrap();
         assert_eq!(
             out.file(CSV_NAME),
             Some(include_str!("../../tests/golden/dh_default/dh_fk.csv"))
@@ -331,7 +362,7 @@ mod tests {
             out.summary,
             "frames 4 -> dh_fk.csv; tip xyz=(0.2257,0.0457,0.0026)"
         );
-        let out = run_strs(INFO.id, &["1.0,-0.5,2.0"]).unwrap();
+        let out = run_strs::<Entry>(&["1.0,-0.5,2.0"]).unwrap();
         assert_eq!(
             out.file(CSV_NAME),
             Some(include_str!("../../tests/golden/dh_other/dh_fk.csv"))
@@ -367,7 +398,7 @@ mod tests {
     #[test]
     fn angle_list_errors() {
         assert_eq!(
-            run_strs(INFO.id, &["0.1,0.2"]).unwrap_err(),
+            run_strs::<Entry>(&["0.1,0.2"]).unwrap_err(),
             RecipeError::WrongCount {
                 param: "angles".into(),
                 expected: 3,
@@ -375,24 +406,24 @@ mod tests {
             }
         );
         assert!(matches!(
-            run_strs(INFO.id, &["0.1,0.2,0.3,0.4"]),
+            run_strs::<Entry>(&["0.1,0.2,0.3,0.4"]),
             Err(RecipeError::WrongCount { got: 4, .. })
         ));
         assert!(matches!(
-            run_strs(INFO.id, &["0.1,,0.3"]),
+            run_strs::<Entry>(&["0.1,,0.3"]),
             Err(RecipeError::NotANumber { .. })
         ));
         assert!(matches!(
-            run_strs(INFO.id, &["0.1,nan,0.3"]),
+            run_strs::<Entry>(&["0.1,nan,0.3"]),
             Err(RecipeError::NotFinite { .. })
         ));
         // Spaces around items are fine, as with Python's float().
-        assert!(run_strs(INFO.id, &[" 0.1, 0.2 ,0.3"]).is_ok());
+        assert!(run_strs::<Entry>(&[" 0.1, 0.2 ,0.3"]).is_ok());
     }
 
     #[cfg(not(target_arch = "wasm32"))]
     mod properties {
-        use super::super::*;
+        use super::*;
         use proptest::prelude::*;
 
         proptest! {

@@ -18,8 +18,15 @@
 //! - `step_mm` must be > 0 (Python divides by zero or builds an empty grid) and the grid may
 //!   hold at most [`MAX_AXIS_SAMPLES`] × [`MAX_AXIS_SAMPLES`] cells.
 
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, within_limit, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{
+    pairs,
+    series::{BLUE, GREY},
+    Mark, Picture, Table, UnitFrame,
+};
+use crate::args::{finite, in_range, positive, within_limit, ArgSpec, Args, Bound, Plan};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{Arm, Elbow};
@@ -78,6 +85,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-ik-workspace-quirks",
     plan: plan_of::<Entry>,
     page: Some("ik-2r"),
+    picture,
 };
 
 /// Parameters of the workspace grid (the recipe's defaults: 0.12 m, 0.10 m, 200 mm, 10 mm).
@@ -308,6 +316,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = WorkspaceParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<WorkspaceParams, RecipeError> {
         params_from_args(args)
@@ -330,19 +339,37 @@ impl Kernel for Entry {
     }
 }
 
-/// Runs the recipe from command-line style arguments.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the grid's reachable points over the unreachable ones.
+pub fn picture(output: &RecipeOutput, aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(FILE_NAME)?)?;
+    let pts = pairs(&t.col("x_mm")?, &t.col("y_mm")?);
+    let reach = t.col("reachable")?;
+    let frame = UnitFrame::fit(pts.iter().copied(), Some(aspect));
+    let (mut yes, mut no) = (Vec::new(), Vec::new());
+    for (p, r) in pts.iter().zip(&reach) {
+        if *r > 0.5 { &mut yes } else { &mut no }.push(frame.map(*p));
+    }
+    Some(Picture {
+        marks: vec![
+            Mark::Dots {
+                series: GREY,
+                points: no,
+            },
+            Mark::Dots {
+                series: BLUE,
+                points: yes,
+            },
+        ],
+    })
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
+    use crate::recipes::testkit::run_strs;
 
     fn param_of(err: RecipeError) -> String {
         err.param().unwrap_or("").to_string()
@@ -391,12 +418,6 @@ mod tests {
     }
 
     #[test]
-    fn defaults_in_one_place() {
-        let parsed = params_from_args(&Args::default()).unwrap();
-        assert_eq!(parsed, WorkspaceParams::default());
-    }
-
-    #[test]
     fn default_grid_counts_and_cells() {
         let ws = compute(&WorkspaceParams::default()).unwrap();
         assert_eq!(
@@ -435,7 +456,7 @@ mod tests {
             step_mm: 7.5,
         };
         let ws = compute(&params).unwrap();
-        let out = run_strs(INFO.id, &["0.2", "0.15", "60", "7.5"]).unwrap();
+        let out = run_strs::<Entry>(&["0.2", "0.15", "60", "7.5"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(ws.to_csv().as_str()));
         assert_eq!(out.summary, ws.summary());
         let text = ws.to_csv();
@@ -447,7 +468,7 @@ mod tests {
 
     #[test]
     fn half_zero_is_one_cell() {
-        let out = run_strs(INFO.id, &["0.12", "0.10", "0", "10"]).unwrap();
+        let out = run_strs::<Entry>(&["0.12", "0.10", "0", "10"]).unwrap();
         assert_eq!(
             out.summary,
             "grid 1×1 = 1 cells, reachable 0 -> ik_workspace.csv"
@@ -460,19 +481,19 @@ mod tests {
 
     #[test]
     fn rejections_name_the_parameter() {
-        let e = run_strs(INFO.id, &["0"]).unwrap_err();
+        let e = run_strs::<Entry>(&["0"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotPositive { .. }) && param_of(e) == "L1");
-        let e = run_strs(INFO.id, &["0.12", "2e6"]).unwrap_err();
+        let e = run_strs::<Entry>(&["0.12", "2e6"]).unwrap_err();
         assert!(matches!(e, RecipeError::OutOfRange { .. }) && param_of(e) == "L2");
-        let e = run_strs(INFO.id, &["0.12", "0.1", "-5"]).unwrap_err();
+        let e = run_strs::<Entry>(&["0.12", "0.1", "-5"]).unwrap_err();
         assert!(matches!(e, RecipeError::OutOfRange { .. }) && param_of(e) == "half_mm");
-        let e = run_strs(INFO.id, &["0.12", "0.1", "200", "0"]).unwrap_err();
+        let e = run_strs::<Entry>(&["0.12", "0.1", "200", "0"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotPositive { .. }) && param_of(e) == "step_mm");
-        let e = run_strs(INFO.id, &["0.12", "0.1", "200", "abc"]).unwrap_err();
+        let e = run_strs::<Entry>(&["0.12", "0.1", "200", "abc"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotANumber { .. }) && param_of(e) == "step_mm");
-        let e = run_strs(INFO.id, &["0.12", "0.1", "nan"]).unwrap_err();
+        let e = run_strs::<Entry>(&["0.12", "0.1", "nan"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotFinite { .. }) && param_of(e) == "half_mm");
-        let e = run_strs(INFO.id, &["0.12", "0.1", "1", "2", "3"]).unwrap_err();
+        let e = run_strs::<Entry>(&["0.12", "0.1", "1", "2", "3"]).unwrap_err();
         assert!(matches!(e, RecipeError::TooManyArgs { max: 4, got: 5 }));
         // The typed API rejects what the parser cannot produce.
         let nan = WorkspaceParams {
@@ -502,7 +523,7 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
-        let e = run_strs(INFO.id, &["0.12", "0.1", "1e6", "1e-300"]).unwrap_err();
+        let e = run_strs::<Entry>(&["0.12", "0.1", "1e6", "1e-300"]).unwrap_err();
         assert!(matches!(e, RecipeError::TooLarge { .. }) && param_of(e) == "step_mm");
     }
 }

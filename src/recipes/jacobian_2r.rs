@@ -21,12 +21,20 @@
 //! - at most [`MAX_SAMPLES`] samples.
 
 use super::ik_workspace::{check_link_m, LINK_ARGS};
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{
+    pairs,
+    series::{BLUE, GREY, ORANGE},
+    Mark, Picture, Table, UnitFrame,
+};
+use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound, Plan};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{self, Arm};
-use crate::pyfmt::{fixed, CsvText};
+use crate::pyfmt::fixed;
+use glam::DVec2;
 
 /// Largest joint angle magnitude accepted, rad (about 160 turns): keeps `q1_stop + 1e-12`
 /// distinct from `q1_stop`, so a sweep of one point is never empty.
@@ -91,6 +99,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-jacobian-2r-quirks",
     plan: plan_of::<Entry>,
     page: Some("ik-2r"),
+    picture,
 };
 
 /// Parameters of the sweep (the recipe's defaults: 0.12 m, 0.10 m, 0 to 1.57 by 0.1, q2 0.8).
@@ -248,11 +257,8 @@ pub fn to_csv(samples: &[JacobianSample]) -> String {
 
 /// [`to_csv`] reporting its rows as the second half of `progress`.
 pub fn to_csv_with(samples: &[JacobianSample], progress: &mut Progress) -> String {
-    let mut csv = CsvText::with_header(&HEADER);
-    let n = samples.len() as u64;
-    for (k, s) in samples.iter().enumerate() {
-        progress.phase_at(1, 2, k as u64, n);
-        csv.floats(&[
+    let rows = samples.iter().map(|s| {
+        [
             s.q1,
             s.q2,
             s.x,
@@ -261,9 +267,9 @@ pub fn to_csv_with(samples: &[JacobianSample], progress: &mut Progress) -> Strin
             s.manipulability,
             s.sigma_min,
             s.sigma_max,
-        ]);
-    }
-    csv.finish()
+        ]
+    });
+    float_csv_with(&HEADER, rows, progress)
 }
 
 /// The line the recipe prints (`min manip` with 4 decimals). An empty slice, which
@@ -302,6 +308,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = SweepParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<SweepParams, RecipeError> {
         params_from_args(args)
@@ -323,28 +330,36 @@ impl Kernel for Entry {
     }
 }
 
-/// Runs the recipe from command-line style arguments.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the sweep turns q1 at a fixed q2, so the tip's arc, with the
+/// arm's reach to each tip.
+pub fn picture(output: &RecipeOutput, aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(FILE_NAME)?)?;
+    let tips = pairs(&t.col("x_m")?, &t.col("y_m")?);
+    let frame = UnitFrame::fit(tips.iter().copied().chain([DVec2::ZERO]), Some(aspect));
+    let reach = Mark::Segments {
+        series: GREY,
+        pairs: tips
+            .iter()
+            .map(|p| (frame.map(DVec2::ZERO), frame.map(*p)))
+            .collect(),
+    };
+    let arc = tips.iter().map(|p| frame.map(*p)).collect();
+    let [line, dots] = Mark::joined_dots(arc, BLUE, ORANGE);
+    Some(Picture {
+        marks: vec![reach, line, dots],
+    })
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
-    use crate::recipes::testkit::{self, assert_defaults_in_one_place};
+    use crate::recipes::testkit::{self, run_strs};
 
     fn assert_rejects(raw: &[&str], param: &str, check: fn(&RecipeError) -> bool) {
-        testkit::assert_rejects(INFO.id, raw, param, check)
-    }
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
+        testkit::assert_rejects::<Entry>(raw, param, check)
     }
 
     #[test]
@@ -375,7 +390,7 @@ mod tests {
             q2: 0.0,
         };
         let rows = sweep(&params).unwrap();
-        let out = run_strs(INFO.id, &["0.3", "0.25", "-1", "1", "0.25", "0"]).unwrap();
+        let out = run_strs::<Entry>(&["0.3", "0.25", "-1", "1", "0.25", "0"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(to_csv(&rows).as_str()));
         assert_eq!(out.summary, summary(&rows));
         // q2 = 0 is the stretched-out singularity.
@@ -395,9 +410,9 @@ mod tests {
 
     #[test]
     fn one_point_sweep() {
-        let out = run_strs(INFO.id, &["0.12", "0.10", "0.5", "0.5", "0.1"]).unwrap();
+        let out = run_strs::<Entry>(&["0.12", "0.10", "0.5", "0.5", "0.1"]).unwrap();
         assert!(out.summary.starts_with("wrote 1 Jacobian samples"));
-        let out = run_strs(INFO.id, &["0.12", "0.10", "-1000", "-1000", "0.1"]).unwrap();
+        let out = run_strs::<Entry>(&["0.12", "0.10", "-1000", "-1000", "0.1"]).unwrap();
         assert!(out.summary.starts_with("wrote 1 Jacobian samples"));
     }
 

@@ -17,8 +17,11 @@
 //!   [`LINK_MAX_M`](super::ik_workspace::LINK_MAX_M).
 
 use super::ik_workspace::{check_link_m, LINK_ARGS};
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{check_count, parse_count, ArgKind, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{Mark, Picture, Table};
+use crate::args::{check_count, parse_count, ArgKind, ArgSpec, Args, Bound, Plan};
 use crate::error::RecipeError;
 use crate::planar2r::Arm;
 use crate::pyfmt::{fixed, CsvText};
@@ -51,6 +54,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-manip-grid-quirks",
     plan: plan_of::<Entry>,
     page: Some("ik-2r"),
+    picture,
 };
 
 /// Parameters of the grid (the recipe's defaults: 0.12 m, 0.10 m, n = 24).
@@ -242,6 +246,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = GridParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<GridParams, RecipeError> {
         params_from_args(args)
@@ -263,25 +268,44 @@ impl Kernel for Entry {
     }
 }
 
-/// Runs the recipe from command-line style arguments.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the manipulability over the (q1, q2) grid, scaled to its peak.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(FILE_NAME)?)?;
+    let (q1, q2, m) = (t.col("q1")?, t.col("q2")?, t.col("manip")?);
+    let distinct = |v: &[f64]| {
+        let mut s: Vec<f64> = v.to_vec();
+        s.sort_by(f64::total_cmp);
+        s.dedup();
+        s
+    };
+    let (xs, ys) = (distinct(&q1), distinct(&q2));
+    let top = m
+        .iter()
+        .copied()
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    let mut values = vec![0.0; xs.len() * ys.len()];
+    for i in 0..m.len() {
+        let cx = xs.binary_search_by(|v| v.total_cmp(&q1[i])).ok()?;
+        let cy = ys.binary_search_by(|v| v.total_cmp(&q2[i])).ok()?;
+        values[cy * xs.len() + cx] = if top > 0.0 { m[i] / top } else { 0.0 };
+    }
+    Some(Picture {
+        marks: vec![Mark::Cells {
+            cols: xs.len(),
+            rows: ys.len(),
+            values,
+        }],
+    })
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
-    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
-    }
+    use crate::recipes::testkit::{assert_rejects, run_strs};
 
     #[test]
     fn default_grid_matches_reference() {
@@ -304,7 +328,7 @@ mod tests {
             n: 5,
         })
         .unwrap();
-        let out = run_strs(INFO.id, &["0.3", "0.2", "5"]).unwrap();
+        let out = run_strs::<Entry>(&["0.3", "0.2", "5"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(g.to_csv().as_str()));
         assert_eq!(out.summary, g.summary());
         // n = 5: q = -pi, -pi/2, 0, pi/2, pi; the maximum |det| = L1 L2 is first reached at
@@ -317,7 +341,7 @@ mod tests {
 
     #[test]
     fn n_one_is_a_single_config() {
-        let out = run_strs(INFO.id, &["0.12", "0.10", "1"]).unwrap();
+        let out = run_strs::<Entry>(&["0.12", "0.10", "1"]).unwrap();
         assert_eq!(
             out.file(FILE_NAME),
             Some("q1,q2,detJ,manip\r\n-3.141592653589793,-3.141592653589793,-1.469576158976824e-18,1.469576158976824e-18\r\n")
@@ -359,20 +383,18 @@ mod tests {
             (&["0.12", "0.10", "1025"][..], "n"),
             (&["0.12", "0.10", "99999999999999999999999"][..], "n"),
         ] {
-            assert_rejects(INFO.id, raw, param, |e| {
-                matches!(e, RecipeError::OutOfRange { .. })
-            });
+            assert_rejects::<Entry>(raw, param, |e| matches!(e, RecipeError::OutOfRange { .. }));
         }
-        // Whole numbers in any notation are accepted (issue 8); a fraction is not.
-        let e = run_strs(INFO.id, &["0.12", "0.10", "24.5"]).unwrap_err();
+        // Whole numbers in any notation are accepted; a fraction is not.
+        let e = run_strs::<Entry>(&["0.12", "0.10", "24.5"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotAnInteger { .. }) && e.param() == Some("n"));
         for whole in ["24.0", "2.4e1", "24"] {
-            let out = run_strs(INFO.id, &["0.12", "0.10", whole]).unwrap();
+            let out = run_strs::<Entry>(&["0.12", "0.10", whole]).unwrap();
             assert!(out.summary.starts_with("wrote 576 configs"), "{whole}");
         }
-        let e = run_strs(INFO.id, &["0.12", "0"]).unwrap_err();
+        let e = run_strs::<Entry>(&["0.12", "0"]).unwrap_err();
         assert!(matches!(e, RecipeError::NotPositive { .. }) && e.param() == Some("L2"));
-        let e = run_strs(INFO.id, &["1e7"]).unwrap_err();
+        let e = run_strs::<Entry>(&["1e7"]).unwrap_err();
         assert!(matches!(e, RecipeError::OutOfRange { .. }) && e.param() == Some("L1"));
         assert_eq!(
             GridParams {

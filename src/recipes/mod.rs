@@ -2,22 +2,23 @@
 //! validation, a typed run, and the CSV table(s) plus the summary line the Python recipe prints.
 //!
 //! Each module states its facts once, in its `INFO` ([`RecipeInfo`]): arguments with kind,
-//! unit, limits and hint ([`ArgSpec`]), the files it writes, its quirks text and its cost
-//! estimate. Each implements [`Kernel`], the one shape of every recipe:
-//! `params` (parse → validate) → `plan` (rows of work, without running) → `run` (with
-//! progress) → CSV. The CLI, `runRecipe`, the pages and the tests reach them all the same way:
-//! [`run`] / [`run_with_progress`] with the recipe id and command-line style arguments.
-
-pub use crate::args::Plan;
-use crate::args::{ArgSpec, Args};
-use crate::error::{RecipeError, RecipeWarning};
+//! unit, limits and hint ([`ArgSpec`](crate::args::ArgSpec)), the files it writes, its quirks
+//! text, its cost estimate and its home-card picture ([`picture`]). Each implements
+//! [`Kernel`], the one shape of every recipe: `params` (parse → validate) → `plan` (rows of
+//! work, without running) → `run` (with progress) → CSV. The CLI, `runRecipe`, the pages and
+//! the tests reach them all the same way: [`run`] / [`run_with_progress`] with the recipe id
+//! and command-line style arguments.
 
 pub mod cubic_path;
 pub mod dh_fk;
 pub mod ik_workspace;
+pub mod info;
 pub mod jacobian_2r;
+pub mod kernel;
 pub mod manip_grid;
+pub mod output;
 pub mod pendulum_energy;
+pub mod picture;
 pub mod pid_step;
 pub mod rrt_2d;
 pub mod se3_relative;
@@ -25,281 +26,31 @@ pub mod traj_resample;
 pub mod trapezoid_profile;
 pub mod umeyama_2d;
 
-/// What a recipe is called, which Python script it mirrors, and what it takes and writes.
-#[derive(Debug, Clone, Copy)]
-pub struct RecipeInfo {
-    /// Recipe id, as on the command line (`ik-workspace`).
-    pub id: &'static str,
-    /// The Python recipe's file name.
-    pub python: &'static str,
-    /// Positional arguments in order, with the recipe's defaults.
-    pub args: &'static [ArgSpec],
-    /// `--flag value` options beyond the recipe (empty for most).
-    pub flags: &'static [ArgSpec],
-    /// The CSV file names it writes.
-    pub writes: &'static [&'static str],
-    /// Fluent id (recipes.ftl) of what this port decides where the Python recipe is silent or
-    /// crashes, in a sentence or two for the reader of the page: `recipe-<id>-quirks`.
-    pub quirks_id: &'static str,
-    /// The cost of a run with these arguments, without running it: parse + validate, then
-    /// rows of work (traj-resample reads the attached input's shape, cheaply).
-    pub plan: fn(&Args) -> Result<Plan, RecipeError>,
-    /// Route id of the live page that runs this recipe interactively (`ik-2r`), if any.
-    pub page: Option<&'static str>,
-}
+#[cfg(test)]
+pub(crate) mod testkit;
 
-impl RecipeInfo {
-    /// Every argument: the positional ones in order, then the `--flag` options (`true`).
-    pub fn all_args(&self) -> impl Iterator<Item = (&'static ArgSpec, bool)> {
-        let args: &'static [ArgSpec] = self.args;
-        let flags: &'static [ArgSpec] = self.flags;
-        args.iter()
-            .map(|a| (a, false))
-            .chain(flags.iter().map(|a| (a, true)))
-    }
+pub use crate::args::Plan;
+pub use info::RecipeInfo;
+pub use kernel::{plan_of, run_of, run_progress_of, Kernel, Progress, Recipe, RunWithProgress};
+pub use output::{CsvFile, RecipeOutput};
 
-    /// The argument (positional or flag) called `name`, and whether it is a flag.
-    pub fn arg(&self, name: &str) -> Option<(&'static ArgSpec, bool)> {
-        self.all_args().find(|(a, _)| a.name == name)
-    }
-
-    /// Fluent id of the recipe's title (recipes.ftl).
-    pub fn title_id(&self) -> String {
-        format!("recipe-{}-title", self.id)
-    }
-
-    /// Fluent id of the recipe's one-line description (recipes.ftl).
-    pub fn blurb_id(&self) -> String {
-        format!("recipe-{}-blurb", self.id)
-    }
-}
-
-/// Progress of a run: `report(done, total)` rows of work, called at most every ~1 % of
-/// `total` (and once at the end). Counting never changes what a recipe computes.
-pub struct Progress<'a> {
-    report: Option<&'a mut dyn FnMut(u64, u64)>,
-    total: u64,
-    every: u64,
-    next: u64,
-}
-
-impl<'a> Progress<'a> {
-    /// Reports to `report`, `total` rows of work in all.
-    pub fn new(report: &'a mut dyn FnMut(u64, u64), total: u64) -> Progress<'a> {
-        let every = total.div_ceil(100).max(1);
-        Progress {
-            report: Some(report),
-            total,
-            every,
-            next: every,
-        }
-    }
-
-    /// Reports nothing (the plain `run`).
-    pub fn silent() -> Progress<'static> {
-        Progress {
-            report: None,
-            total: 0,
-            every: u64::MAX,
-            next: u64::MAX,
-        }
-    }
-
-    /// The total rows of work.
-    pub fn total(&self) -> u64 {
-        self.total
-    }
-
-    /// `done` rows of work are done; reports when another ~1 % has passed.
-    #[inline]
-    pub fn at(&mut self, done: u64) {
-        if done >= self.next {
-            self.next = done.saturating_add(self.every);
-            if let Some(report) = self.report.as_mut() {
-                report(done.min(self.total), self.total);
-            }
-        }
-    }
-
-    /// Row `k` of `n` of phase `phase` (0-based) of `phases` equal phases (e.g. computing the
-    /// rows, then writing their CSV text).
-    #[inline]
-    pub fn phase_at(&mut self, phase: u64, phases: u64, k: u64, n: u64) {
-        if self.report.is_some() && n > 0 && phases > 0 {
-            let share = self.total as f64 / phases as f64;
-            let done = share * phase as f64 + share * (k as f64 / n as f64);
-            self.at(done as u64);
-        }
-    }
-
-    /// The run is over: reports `total` of `total`.
-    pub fn finish(&mut self) {
-        if let Some(report) = self.report.as_mut() {
-            report(self.total, self.total);
-        }
-        self.next = u64::MAX;
-    }
-}
-
-/// The one shape of every recipe: parse and validate the arguments, estimate the work, run
-/// with progress. A module implements it on a unit struct `Entry`; [`RECIPES`] and each
-/// `INFO.plan` are instances of the generic functions below.
-pub trait Kernel {
-    /// The typed, validated arguments.
-    type Params;
-    /// Parses and validates: every argument error a run would give, before any work.
-    fn params(args: &Args) -> Result<Self::Params, RecipeError>;
-    /// Rows of work of a run with `params` (`args` holds attached inputs).
-    fn plan(params: &Self::Params, args: &Args) -> Result<Plan, RecipeError>;
-    /// Runs, reporting rows done to `progress` (total = `plan`'s rows).
-    fn run(
-        params: &Self::Params,
-        args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError>;
-}
-
-/// [`Kernel::params`] then [`Kernel::plan`].
-pub fn plan_of<K: Kernel>(args: &Args) -> Result<Plan, RecipeError> {
-    K::plan(&K::params(args)?, args)
-}
-
-/// A run without progress.
-pub fn run_of<K: Kernel>(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    K::run(&K::params(args)?, args, &mut Progress::silent())
-}
-
-/// A run reporting `progress(done, total)` rows (total from [`Kernel::plan`]).
-pub fn run_progress_of<K: Kernel>(
-    args: &Args,
-    progress: &mut dyn FnMut(u64, u64),
-) -> Result<RecipeOutput, RecipeError> {
-    let params = K::params(args)?;
-    let plan = K::plan(&params, args)?;
-    let mut tracker = Progress::new(progress, plan.rows.max(1));
-    let out = K::run(&params, args, &mut tracker)?;
-    tracker.finish();
-    Ok(out)
-}
-
-/// One CSV file a recipe writes.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CsvFile {
-    pub name: String,
-    pub text: String,
-}
-
-/// The files and the printed summary of one recipe run.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RecipeOutput {
-    pub files: Vec<CsvFile>,
-    /// Exactly what the Python recipe prints (lines joined with `\n`, no trailing newline).
-    pub summary: String,
-    /// What looks wrong with the result (diverged, unreachable goal...); not in the CSV.
-    pub warnings: Vec<RecipeWarning>,
-}
-
-impl RecipeOutput {
-    /// A run that wrote one file.
-    pub fn single(name: &str, text: String, summary: String) -> RecipeOutput {
-        RecipeOutput {
-            files: vec![CsvFile {
-                name: name.to_string(),
-                text,
-            }],
-            summary,
-            warnings: Vec::new(),
-        }
-    }
-
-    /// The same output with `warnings` added.
-    pub fn with_warnings(mut self, warnings: Vec<RecipeWarning>) -> RecipeOutput {
-        self.warnings.extend(warnings);
-        self
-    }
-
-    /// The text of the file called `name`, if the run wrote it.
-    pub fn file(&self, name: &str) -> Option<&str> {
-        self.files
-            .iter()
-            .find(|f| f.name == name)
-            .map(|f| f.text.as_str())
-    }
-}
-
-/// A run reporting `progress(done, total)` rows of work.
-pub type RunWithProgress = fn(&Args, &mut dyn FnMut(u64, u64)) -> Result<RecipeOutput, RecipeError>;
-
-/// A recipe: its facts and its entry points (instances of [`run_of`] / [`run_progress_of`]).
-#[derive(Clone, Copy)]
-pub struct Recipe {
-    pub info: &'static RecipeInfo,
-    pub run: fn(&Args) -> Result<RecipeOutput, RecipeError>,
-    pub run_progress: RunWithProgress,
-}
+use crate::args::Args;
+use crate::error::RecipeError;
 
 /// All recipes, in the order of the BSV page.
 pub const RECIPES: [Recipe; 12] = [
-    Recipe {
-        info: &pendulum_energy::INFO,
-        run: run_of::<pendulum_energy::Entry>,
-        run_progress: run_progress_of::<pendulum_energy::Entry>,
-    },
-    Recipe {
-        info: &ik_workspace::INFO,
-        run: run_of::<ik_workspace::Entry>,
-        run_progress: run_progress_of::<ik_workspace::Entry>,
-    },
-    Recipe {
-        info: &traj_resample::INFO,
-        run: run_of::<traj_resample::Entry>,
-        run_progress: run_progress_of::<traj_resample::Entry>,
-    },
-    Recipe {
-        info: &dh_fk::INFO,
-        run: run_of::<dh_fk::Entry>,
-        run_progress: run_progress_of::<dh_fk::Entry>,
-    },
-    Recipe {
-        info: &jacobian_2r::INFO,
-        run: run_of::<jacobian_2r::Entry>,
-        run_progress: run_progress_of::<jacobian_2r::Entry>,
-    },
-    Recipe {
-        info: &cubic_path::INFO,
-        run: run_of::<cubic_path::Entry>,
-        run_progress: run_progress_of::<cubic_path::Entry>,
-    },
-    Recipe {
-        info: &se3_relative::INFO,
-        run: run_of::<se3_relative::Entry>,
-        run_progress: run_progress_of::<se3_relative::Entry>,
-    },
-    Recipe {
-        info: &rrt_2d::INFO,
-        run: run_of::<rrt_2d::Entry>,
-        run_progress: run_progress_of::<rrt_2d::Entry>,
-    },
-    Recipe {
-        info: &pid_step::INFO,
-        run: run_of::<pid_step::Entry>,
-        run_progress: run_progress_of::<pid_step::Entry>,
-    },
-    Recipe {
-        info: &manip_grid::INFO,
-        run: run_of::<manip_grid::Entry>,
-        run_progress: run_progress_of::<manip_grid::Entry>,
-    },
-    Recipe {
-        info: &trapezoid_profile::INFO,
-        run: run_of::<trapezoid_profile::Entry>,
-        run_progress: run_progress_of::<trapezoid_profile::Entry>,
-    },
-    Recipe {
-        info: &umeyama_2d::INFO,
-        run: run_of::<umeyama_2d::Entry>,
-        run_progress: run_progress_of::<umeyama_2d::Entry>,
-    },
+    Recipe::of::<pendulum_energy::Entry>(),
+    Recipe::of::<ik_workspace::Entry>(),
+    Recipe::of::<traj_resample::Entry>(),
+    Recipe::of::<dh_fk::Entry>(),
+    Recipe::of::<jacobian_2r::Entry>(),
+    Recipe::of::<cubic_path::Entry>(),
+    Recipe::of::<se3_relative::Entry>(),
+    Recipe::of::<rrt_2d::Entry>(),
+    Recipe::of::<pid_step::Entry>(),
+    Recipe::of::<manip_grid::Entry>(),
+    Recipe::of::<trapezoid_profile::Entry>(),
+    Recipe::of::<umeyama_2d::Entry>(),
 ];
 
 /// The recipe with this id.
@@ -324,11 +75,6 @@ pub fn parse_args(id: &str, raw: &[String]) -> Result<Args, RecipeError> {
     let recipe = find(id).ok_or_else(|| RecipeError::UnknownRecipe { id: id.to_string() })?;
     Args::parse(raw, recipe.info.args, recipe.info.flags)
 }
-
-#[cfg(test)]
-pub(crate) mod testkit;
-#[cfg(test)]
-pub(crate) use testkit::{args_strs, run_strs};
 
 /// Runs recipe `id` with arguments and input files `(name, text)` that path arguments name
 /// (traj-resample's CSV).
@@ -385,14 +131,14 @@ pub fn decode_input(name: &str, bytes: &[u8]) -> Result<String, RecipeError> {
 }
 
 #[cfg(test)]
-mod facts_tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
+mod tests {
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
-    use super::testkit::strings;
+    use super::testkit::{assert_defaults_in_one_place, strings};
     use super::*;
     use crate::args::{ArgKind, Bound};
+    use crate::error::RecipeWarning;
     use crate::i18n::{I18n, Lang};
     use crate::pyfmt::human;
 
@@ -449,6 +195,41 @@ mod facts_tests {
             }
         }
         assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+    }
+
+    #[test]
+    fn every_recipe_has_a_title_a_blurb_and_a_label_per_argument() {
+        let i18n = I18n::new();
+        let mut missing = Vec::new();
+        for recipe in RECIPES {
+            let info = recipe.info;
+            let mut ids = vec![
+                format!("recipe-{}-title", info.id),
+                format!("recipe-{}-blurb", info.id),
+            ];
+            ids.extend(
+                info.args
+                    .iter()
+                    .map(|a| format!("recipe-{}-arg-{}", info.id, a.name)),
+            );
+            ids.extend(
+                info.flags
+                    .iter()
+                    .map(|a| format!("recipe-{}-flag-{}", info.id, a.name)),
+            );
+            for id in ids {
+                for lang in Lang::ALL {
+                    if !i18n.has_message(lang, &id) {
+                        missing.push(format!("{}: {id}", lang.code()));
+                    }
+                }
+            }
+        }
+        assert!(
+            missing.is_empty(),
+            "no message for:\n{}",
+            missing.join("\n")
+        );
     }
 
     /// Raw arguments with every argument at its default except `name` = `value`.
@@ -510,6 +291,23 @@ mod facts_tests {
             }
         }
         assert!(checked >= 40, "{checked}");
+    }
+
+    /// Each recipe's arguments left off give its `Params::default()`.
+    #[test]
+    fn defaults_in_one_place() {
+        assert_defaults_in_one_place::<pendulum_energy::Entry>();
+        assert_defaults_in_one_place::<ik_workspace::Entry>();
+        assert_defaults_in_one_place::<traj_resample::Entry>();
+        assert_defaults_in_one_place::<dh_fk::Entry>();
+        assert_defaults_in_one_place::<jacobian_2r::Entry>();
+        assert_defaults_in_one_place::<cubic_path::Entry>();
+        assert_defaults_in_one_place::<se3_relative::Entry>();
+        assert_defaults_in_one_place::<rrt_2d::Entry>();
+        assert_defaults_in_one_place::<pid_step::Entry>();
+        assert_defaults_in_one_place::<manip_grid::Entry>();
+        assert_defaults_in_one_place::<trapezoid_profile::Entry>();
+        assert_defaults_in_one_place::<umeyama_2d::Entry>();
     }
 
     #[test]

@@ -27,10 +27,17 @@
 //! step. With `b = 0` it is conserved up to the integrator's error; the recipe's point-mass
 //! figure is not an energy of this body at all.
 
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, positive, rows_within, ArgKind, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{
+    lines,
+    series::{BLUE, GREEN, ORANGE},
+    Picture, Table,
+};
+use crate::args::{finite, in_range, positive, rows_within, ArgKind, ArgSpec, Args, Bound, Plan};
 use crate::error::{RecipeError, RecipeWarning};
-use crate::pyfmt::{fixed, CsvText};
+use crate::pyfmt::fixed;
 
 /// Gravity of the recipe's model, m/s².
 pub const GRAVITY: f64 = 9.81;
@@ -123,6 +130,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-pendulum-energy-quirks",
     plan: plan_of::<Entry>,
     page: Some("pendulum-energy"),
+    picture,
 };
 
 /// MuJoCo's integrator choice.
@@ -500,21 +508,16 @@ pub fn run_with(
     progress: &mut Progress,
 ) -> Result<RecipeOutput, RecipeError> {
     let rows = simulate_with(params, progress)?;
-    let mut csv = CsvText::with_header(&CSV_HEADER);
-    let n = rows.len() as u64;
-    for (k, r) in rows.iter().enumerate() {
-        progress.phase_at(1, 2, k as u64, n);
-        csv.floats(&[r.t_s, r.theta, r.omega, r.ke, r.pe, r.total]);
-    }
+    let table = rows
+        .iter()
+        .map(|r| [r.t_s, r.theta, r.omega, r.ke, r.pe, r.total]);
+    let csv = float_csv_with(&CSV_HEADER, table, progress);
     let summary = format!(
         "wrote {} rows -> {CSV_NAME}; energy range drift≈{} J (damping present)",
         rows.len(),
         fixed(energy_drift(&rows), 6)
     );
-    Ok(
-        RecipeOutput::single(CSV_NAME, csv.finish(), summary)
-            .with_warnings(warnings(params, &rows)),
-    )
+    Ok(RecipeOutput::single(CSV_NAME, csv, summary).with_warnings(warnings(params, &rows)))
 }
 
 /// Reads the recipe's positional argument and flags and validates them.
@@ -529,6 +532,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = PendulumParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<PendulumParams, RecipeError> {
         params_from_args(args)
@@ -549,27 +553,28 @@ impl Kernel for Entry {
     }
 }
 
-/// Entry point for the CLI and `runRecipe`.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the kinetic, potential and total energy over time.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(CSV_NAME)?)?;
+    let x = t.col("t_s")?;
+    Some(lines(
+        &x,
+        &[
+            (&t.col("ke_j")?, ORANGE),
+            (&t.col("pe_j")?, GREEN),
+            (&t.col("total_j")?, BLUE),
+        ],
+    ))
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::args_strs;
-
-    #[test]
-    fn arg_defaults_are_the_params_defaults() {
-        assert_eq!(
-            PendulumParams::from_args(&args_strs(INFO.id, &[]).unwrap()).unwrap(),
-            PendulumParams::default()
-        );
-    }
+    use crate::recipes::kernel::run_of;
+    use crate::recipes::testkit::args_strs;
 
     #[test]
     fn first_row_matches_mujoco() {
@@ -623,7 +628,7 @@ mod tests {
 
     #[test]
     fn row_count_and_summary() {
-        let out = run_args(&args_strs(INFO.id, &["0.1"]).unwrap()).unwrap();
+        let out = run_of::<Entry>(&args_strs::<Entry>(&["0.1"]).unwrap()).unwrap();
         let csv = out.file(CSV_NAME).unwrap();
         assert_eq!(csv.lines().count(), 1 + 50);
         assert!(out
@@ -631,13 +636,14 @@ mod tests {
             .starts_with("wrote 50 rows -> pendulum_energy.csv; energy range"));
         assert!(out.summary.ends_with(" J (damping present)"));
         // Same text without damping, as the recipe prints.
-        let out = run_args(&args_strs(INFO.id, &["0.1", "--damping", "0"]).unwrap()).unwrap();
+        let out =
+            run_of::<Entry>(&args_strs::<Entry>(&["0.1", "--damping", "0"]).unwrap()).unwrap();
         assert!(out.summary.ends_with(" J (damping present)"));
     }
 
     #[test]
     fn rejects_bad_parameters() {
-        let err = |raw: &[&str]| run_args(&args_strs(INFO.id, raw).unwrap()).unwrap_err();
+        let err = |raw: &[&str]| run_of::<Entry>(&args_strs::<Entry>(raw).unwrap()).unwrap_err();
         assert!(matches!(err(&["0"]), RecipeError::NotPositive { .. }));
         assert!(matches!(err(&["0.001"]), RecipeError::OutOfRange { .. }));
         assert!(matches!(

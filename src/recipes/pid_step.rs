@@ -18,11 +18,20 @@
 //! - the gains may be any finite numbers. An unstable loop grows until it overflows to `inf` and
 //!   then `nan`, and the table shows that exactly as Python prints it.
 
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{check_count, finite, in_range, parse_count, ArgKind, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{
+    lines,
+    series::{BLUE, ORANGE},
+    Picture, Table,
+};
+use crate::args::{
+    check_count, finite, in_range, parse_count, ArgKind, ArgSpec, Args, Bound, Plan,
+};
 use crate::error::RecipeError;
 use crate::error::RecipeWarning;
-use crate::pyfmt::{fixed, py_round, CsvText};
+use crate::pyfmt::{fixed, py_round};
 
 /// Controller and plant sample period, s (fixed in the recipe).
 pub const DT_S: f64 = 0.05;
@@ -69,6 +78,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-pid-step-quirks",
     plan: plan_of::<Entry>,
     page: Some("pid-step"),
+    picture,
 };
 
 /// Controller gains, plant time constant and run length (the recipe's defaults: 1.2, 0.4, 0.05,
@@ -236,13 +246,8 @@ pub fn to_csv(samples: &[PidSample]) -> String {
 
 /// [`to_csv`] reporting its rows as the second half of `progress`.
 pub fn to_csv_with(samples: &[PidSample], progress: &mut Progress) -> String {
-    let mut csv = CsvText::with_header(&HEADER);
-    let n = samples.len() as u64;
-    for (k, s) in samples.iter().enumerate() {
-        progress.phase_at(1, 2, k as u64, n);
-        csv.floats(&[s.t, s.r, s.y, s.u, s.e]);
-    }
-    csv.finish()
+    let rows = samples.iter().map(|s| [s.t, s.r, s.y, s.u, s.e]);
+    float_csv_with(&HEADER, rows, progress)
 }
 
 /// What looks wrong with a response: an output that overflowed (not finite from some step
@@ -290,6 +295,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = PidParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<PidParams, RecipeError> {
         params_from_args(args)
@@ -312,25 +318,22 @@ impl Kernel for Entry {
     }
 }
 
-/// Runs the recipe from command-line style arguments.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the setpoint and the plant's response over time.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(FILE_NAME)?)?;
+    Some(lines(
+        &t.col("t")?,
+        &[(&t.col("r")?, ORANGE), (&t.col("y")?, BLUE)],
+    ))
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
-    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
-    }
+    use crate::recipes::testkit::{assert_rejects, run_strs};
 
     #[test]
     fn round_is_pythons() {
@@ -379,7 +382,7 @@ mod tests {
             steps: 5,
         };
         let rows = simulate(&params).unwrap();
-        let out = run_strs(INFO.id, &["2", "0", "0.1", "0", "5"]).unwrap();
+        let out = run_strs::<Entry>(&["2", "0", "0.1", "0", "5"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(to_csv(&rows).as_str()));
         assert_eq!(out.summary, summary(&rows));
         // tau = 0: the plant follows u at once (a = 1).
@@ -388,7 +391,7 @@ mod tests {
 
     #[test]
     fn zero_steps_is_header_only() {
-        let out = run_strs(INFO.id, &["1", "1", "1", "1", "0"]).unwrap();
+        let out = run_strs::<Entry>(&["1", "1", "1", "1", "0"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some("t,r,y,u,e\r\n"));
         assert_eq!(
             out.summary,
@@ -415,7 +418,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            assert_rejects(INFO.id, raw, param, ok)
+            assert_rejects::<Entry>(raw, param, ok)
         };
         use RecipeError as E;
         check(&["1", "1", "1", "1", "-1"], "steps", |e| {
@@ -429,9 +432,9 @@ mod tests {
         check(&["1", "1", "1", "1", "80.5"], "steps", |e| {
             matches!(e, E::NotAnInteger { .. })
         });
-        // Whole numbers in any notation (issue 8): "80.0" and "8e1" are 80 steps.
+        // Whole numbers in any notation: "80.0" and "8e1" are 80 steps.
         for whole in ["80.0", "8e1"] {
-            let out = run_strs(INFO.id, &["1.2", "0.4", "0.05", "0.8", whole]).unwrap();
+            let out = run_strs::<Entry>(&["1.2", "0.4", "0.05", "0.8", whole]).unwrap();
             assert_eq!(
                 out.summary,
                 "wrote 80 PID samples final_y=0.7967 -> pid_step.csv"

@@ -20,10 +20,15 @@
 //! (`acc = 0; acc = fma(a, b, acc)` in index order, see [`crate::numpy::matmul`]), so an exactly zero entry is
 //! `+0.0` as in numpy, and `-0.0` appears only where the recipe negates (`pitch = asin(−0.0)`).
 
+use glam::{DVec2, DVec3};
 use nalgebra::{Matrix3, Matrix4, SMatrix, Vector3};
 
-use super::{plan_of, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, ArgSpec, Args};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{series, Mark, Picture, UnitFrame};
+use crate::args::{finite, ArgSpec, Args, Plan};
+use crate::camera3d::{Camera, Preset};
 use crate::error::RecipeError;
 use crate::numpy::matmul;
 use crate::pyfmt::{fixed, CsvText};
@@ -85,6 +90,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-se3-relative-quirks",
     plan: plan_of::<Entry>,
     page: Some("se3-relative"),
+    picture,
 };
 
 /// A pose as the recipe takes it: position in metres, roll/pitch/yaw in radians (Z·Y·X).
@@ -275,6 +281,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = Se3Params;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<Se3Params, RecipeError> {
         params_from_args(args)
@@ -293,31 +300,67 @@ impl Kernel for Entry {
     }
 }
 
-/// Entry point for the CLI and `runRecipe`.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: frames A and B (the recipe's defaults) as triads in an iso view,
+/// with the arrow A → B.
+pub fn picture(_output: &RecipeOutput, aspect: f64) -> Option<Picture> {
+    let params = Se3Params::default();
+    let cam = Camera::framing(DVec3::new(0.05, 0.025, 0.01), 0.12, Preset::Iso, 1.0, 1.0);
+    let project = |p: DVec3| cam.project(p).map(|q| DVec2::new(q.at.x, 1.0 - q.at.y));
+    let triad = |t: Matrix4<f64>, len: f64| -> Vec<(u8, DVec2, DVec2)> {
+        let o = DVec3::new(t[(0, 3)], t[(1, 3)], t[(2, 3)]);
+        (0..3)
+            .filter_map(|k| {
+                let axis = DVec3::new(t[(0, k)], t[(1, k)], t[(2, k)]);
+                Some((k as u8, project(o)?, project(o + axis * len)?))
+            })
+            .collect()
+    };
+    let mut axes = triad(params.a.to_matrix(), 0.05);
+    axes.extend(triad(params.b.to_matrix(), 0.05));
+    let arrow: Vec<DVec2> = [params.a, params.b]
+        .iter()
+        .filter_map(|p| project(DVec3::new(p.x, p.y, p.z)))
+        .collect();
+    let frame = UnitFrame::fit(
+        axes.iter()
+            .flat_map(|(_, a, b)| [*a, *b])
+            .chain(arrow.iter().copied()),
+        Some(aspect),
+    );
+    let colour = |k: u8| match k {
+        0 => series::RED,
+        1 => series::GREEN,
+        _ => series::BLUE,
+    };
+    let mut marks: Vec<Mark> = (0..3u8)
+        .map(|k| Mark::Segments {
+            series: colour(k),
+            pairs: axes
+                .iter()
+                .filter(|(axis, _, _)| *axis == k)
+                .map(|(_, a, b)| (frame.map(*a), frame.map(*b)))
+                .collect(),
+        })
+        .collect();
+    marks.push(Mark::Line {
+        series: series::ORANGE,
+        points: arrow.iter().map(|p| frame.map(*p)).collect(),
+    });
+    Some(Picture { marks })
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::args_strs;
-
-    #[test]
-    fn arg_defaults_are_the_params_defaults() {
-        assert_eq!(
-            Se3Params::from_args(&Args::default()).unwrap(),
-            Se3Params::default()
-        );
-    }
+    use crate::recipes::kernel::run_of;
+    use crate::recipes::testkit::args_strs;
 
     #[test]
     fn default_run_is_byte_identical_to_the_reference() {
-        let out = run_args(&Args::default()).unwrap();
+        let out = run_of::<Entry>(&Args::default()).unwrap();
         assert_eq!(
             out.file(CSV_NAME),
             Some(include_str!(
@@ -335,14 +378,14 @@ mod tests {
         // T_A⁻¹ T_A = I: translation +0.0 (matmul sums), pitch = asin(-(+0.0)) = -0.0.
         let p = ["0.3", "-0.2", "0.1", "0.5", "-0.4", "1.2"];
         let raw: Vec<&str> = p.iter().chain(p.iter()).copied().collect();
-        let rel = Se3Params::from_args(&args_strs(INFO.id, &raw).unwrap())
+        let rel = Se3Params::from_args(&args_strs::<Entry>(&raw).unwrap())
             .unwrap()
             .relative()
             .unwrap();
         for v in rel.to_array() {
             assert!(v.abs() < 1e-15, "{rel:?}");
         }
-        let out = run_args(&args_strs(INFO.id, &["0"; 12]).unwrap()).unwrap();
+        let out = run_of::<Entry>(&args_strs::<Entry>(&["0"; 12]).unwrap()).unwrap();
         assert_eq!(
             out.file(CSV_NAME).unwrap(),
             "x_m,y_m,z_m,roll_rad,pitch_rad,yaw_rad\r\n0.0,0.0,0.0,0.0,-0.0,0.0\r\n"
@@ -371,7 +414,7 @@ mod tests {
     #[test]
     fn rejects_non_numbers() {
         assert!(matches!(
-            run_args(&args_strs(INFO.id, &["0", "x"]).unwrap()),
+            run_of::<Entry>(&args_strs::<Entry>(&["0", "x"]).unwrap()),
             Err(RecipeError::NotANumber { param, .. }) if param == "ay"
         ));
         let p = Se3Params {
@@ -386,7 +429,7 @@ mod tests {
 
     #[cfg(not(target_arch = "wasm32"))]
     mod properties {
-        use super::super::*;
+        use super::*;
         use proptest::prelude::*;
 
         const PI: f64 = std::f64::consts::PI;

@@ -23,11 +23,19 @@
 //! dropped, as in the recipe. Rows are the 1-based line of the file a record starts on (the
 //! header is row 1).
 
+use glam::DVec2;
 use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 
-use super::{plan_of, CsvFile, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, positive, rows_within, ArgKind, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::{CsvFile, RecipeOutput};
+use super::picture::{
+    pairs,
+    series::{BLUE, ORANGE},
+    Mark, Picture, Table, UnitFrame,
+};
+use crate::args::{finite, positive, rows_within, ArgKind, ArgSpec, Args, Bound, Plan};
 use crate::error::RecipeError;
 use crate::numpy::{arange, arange_len};
 use crate::pyfmt::{push_fixed, py_float, CsvText};
@@ -94,6 +102,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-traj-resample-quirks",
     plan: plan_of::<Entry>,
     page: Some("traj-resample"),
+    picture,
 };
 
 /// The recipe's arguments; `Default` is the recipe's (the sample, 0.02 s).
@@ -401,24 +410,8 @@ impl Shape {
 /// Reads the [`Shape`] of a trajectory CSV (see there); errors are those the header and the
 /// first and last lines show (the run checks every line).
 pub fn shape_of(text: &str) -> Result<Shape, RecipeError> {
-    let bytes = text.len() as u64;
-    if bytes > MAX_INPUT_BYTES {
-        return Err(RecipeError::InputTooLarge {
-            bytes,
-            limit: MAX_INPUT_BYTES,
-        });
-    }
-    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut reader = CsvReader::new(body);
+    let (mut reader, header, layout) = open_csv(text, MAX_INPUT_BYTES)?;
     let mut fields: Vec<Cow<'_, str>> = Vec::new();
-    let Some(_) = reader.next_record(&mut fields)? else {
-        return Err(RecipeError::CsvTooFewRows {
-            rows: 0,
-            min: MIN_ROWS,
-        });
-    };
-    let header: Vec<String> = fields.iter().map(|f| f.to_string()).collect();
-    let layout = ColumnLayout::new(&header)?;
     let time_index = layout.slots.iter().position(|s| matches!(s, Slot::Time));
     let time_of = |fields: &[Cow<'_, str>]| -> Option<f64> {
         time_index
@@ -474,13 +467,12 @@ fn parse_with_limits(
     parse_limited(text, max_bytes, max_cells, &mut Progress::silent())
 }
 
-/// [`parse_with_limits`] reporting bytes read as the first third of `progress`.
-fn parse_limited(
+/// A trajectory CSV of at most `max_bytes` opened past its header (a byte-order mark
+/// dropped): the reader, the header and its column layout.
+fn open_csv(
     text: &str,
     max_bytes: u64,
-    max_cells: u64,
-    progress: &mut Progress,
-) -> Result<Trajectory, RecipeError> {
+) -> Result<(CsvReader<'_>, Vec<String>, ColumnLayout), RecipeError> {
     let bytes = text.len() as u64;
     if bytes > max_bytes {
         return Err(RecipeError::InputTooLarge {
@@ -488,10 +480,9 @@ fn parse_limited(
             limit: max_bytes,
         });
     }
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut reader = CsvReader::new(text);
+    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut reader = CsvReader::new(body);
     let mut fields: Vec<Cow<'_, str>> = Vec::new();
-
     let Some(_) = reader.next_record(&mut fields)? else {
         return Err(RecipeError::CsvTooFewRows {
             rows: 0,
@@ -500,12 +491,24 @@ fn parse_limited(
     };
     let header: Vec<String> = fields.iter().map(|f| f.to_string()).collect();
     let layout = ColumnLayout::new(&header)?;
+    Ok((reader, header, layout))
+}
+
+/// [`parse_with_limits`] reporting bytes read as the first third of `progress`.
+fn parse_limited(
+    text: &str,
+    max_bytes: u64,
+    max_cells: u64,
+    progress: &mut Progress,
+) -> Result<Trajectory, RecipeError> {
+    let (mut reader, header, layout) = open_csv(text, max_bytes)?;
+    let mut fields: Vec<Cow<'_, str>> = Vec::new();
 
     let mut t: Vec<f64> = Vec::new();
     let mut q: Vec<Vec<f64>> = vec![Vec::new(); layout.joint_names.len()];
     let mut row_values = vec![0.0; layout.joint_names.len()];
     let cells_per_row = 1 + layout.joint_names.len() as u64;
-    let total_bytes = text.len() as u64;
+    let total_bytes = reader.text.len() as u64;
     while let Some(row) = reader.next_record(&mut fields)? {
         progress.phase_at(0, 3, reader.pos as u64, total_bytes);
         if fields.len() != header.len() {
@@ -848,6 +851,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = ResampleParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<ResampleParams, RecipeError> {
         params_from_args(args)
@@ -878,285 +882,36 @@ impl Kernel for Entry {
     }
 }
 
-/// Entry point for the CLI and `runRecipe`.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the resampled joints as lines over the labelled samples as dots.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(RESAMPLED_NAME)?)?;
+    let raw = Table::parse(output.file(SAMPLE_NAME)?)?;
+    let x = t.col("t_s")?;
+    let (q1, q2) = (t.col("q1")?, t.col("q2")?);
+    let (rx, r1, r2) = (raw.col("t_s")?, raw.col("q1")?, raw.col("q2")?);
+    let frame = UnitFrame::fit(
+        pairs(&x, &q1)
+            .into_iter()
+            .chain(pairs(&x, &q2))
+            .chain(pairs(&rx, &r1))
+            .chain(pairs(&rx, &r2)),
+        None,
+    );
+    let m = |v: Vec<DVec2>| v.into_iter().map(|p| frame.map(p)).collect::<Vec<_>>();
+    // The resampled joints as lines first, the labelled samples as dots over them.
+    let joints = [(&q1, &r1, BLUE), (&q2, &r2, ORANGE)];
+    let lines = joints.iter().map(|(q, _, series)| Mark::Line {
+        series: *series,
+        points: m(pairs(&x, q)),
+    });
+    let dots = joints.iter().map(|(_, r, series)| Mark::Dots {
+        series: *series,
+        points: m(pairs(&rx, r)),
+    });
+    Some(Picture {
+        marks: lines.chain(dots).collect(),
+    })
 }
 
 #[cfg(test)]
-mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    use super::*;
-    use crate::recipes::args_strs;
-
-    fn parse_err(text: &str) -> RecipeError {
-        parse_trajectory(text).unwrap_err()
-    }
-
-    #[test]
-    fn arg_defaults_are_the_params_defaults() {
-        assert_eq!(
-            ResampleParams::from_args(&Args::default()).unwrap(),
-            ResampleParams::default()
-        );
-    }
-
-    #[test]
-    fn sample_resamples_like_the_recipe() {
-        let out = run_args(&Args::default()).unwrap();
-        assert_eq!(
-            out.summary,
-            "wrote labeled synthetic sample: traj_sample_labeled.csv\n\
-             resampled 5 -> 28 rows at dt=0.02s -> traj_resampled.csv"
-        );
-        assert_eq!(out.file(SAMPLE_NAME), Some(SAMPLE));
-        let csv = out.file(RESAMPLED_NAME).unwrap();
-        assert!(csv.starts_with("t_s,q1,q2\r\n0.000000,0.00000000,0.00000000\r\n"));
-        assert!(csv.ends_with("0.540000,0.60666667,0.50666667\r\n"));
-    }
-
-    #[test]
-    fn reference_runs_are_byte_identical() {
-        let out = run_args(&Args::default()).unwrap();
-        assert_eq!(
-            out.file(RESAMPLED_NAME),
-            Some(include_str!(
-                "../../tests/golden/resample_default/traj_resampled.csv"
-            ))
-        );
-        assert_eq!(
-            out.file(SAMPLE_NAME),
-            Some(include_str!(
-                "../../tests/golden/resample_default/traj_sample_labeled.csv"
-            ))
-        );
-        let input = include_str!("../../tests/golden/resample_3joint/input.csv");
-        let params = ResampleParams {
-            csv_path: "input.csv".into(),
-            dt: 0.05,
-        };
-        let out = run_text(&params, input).unwrap();
-        assert_eq!(
-            out.file(RESAMPLED_NAME),
-            Some(include_str!(
-                "../../tests/golden/resample_3joint/traj_resampled.csv"
-            ))
-        );
-        assert_eq!(
-            out.summary,
-            "resampled 40 -> 79 rows at dt=0.05s -> traj_resampled.csv"
-        );
-    }
-
-    #[test]
-    fn empty_path_means_the_sample_and_unknown_paths_are_named() {
-        let args = args_strs(INFO.id, &["", "0.05"]).unwrap();
-        assert!(run_args(&args)
-            .unwrap()
-            .summary
-            .contains("resampled 5 -> 12 rows"));
-        let args = args_strs(INFO.id, &["mine.csv"]).unwrap();
-        assert_eq!(
-            run_args(&args).unwrap_err(),
-            RecipeError::InputMissing {
-                name: "mine.csv".into()
-            }
-        );
-        let args = args.with_inputs(vec![("mine.csv".into(), "t_s,a\n0,1\n1,3\n".into())]);
-        let out = run_args(&args).unwrap();
-        assert_eq!(
-            out.summary,
-            "resampled 2 -> 51 rows at dt=0.02s -> traj_resampled.csv"
-        );
-        assert_eq!(out.files.len(), 1);
-    }
-
-    #[test]
-    fn bom_crlf_quotes_and_blank_lines() {
-        let text = "\u{feff}\"t_s\",\"q,1\",note,q2\r\n\r\n0,\" 1.5 \",\"a \"\"quoted\"\"\nnote\",2\r\n1,2.5,x,4\r\n\r\n";
-        let traj = parse_trajectory(text).unwrap();
-        assert_eq!(traj.columns, vec!["q,1", "q2"]);
-        assert_eq!(traj.t, vec![0.0, 1.0]);
-        assert_eq!(traj.q, vec![vec![1.5, 2.5], vec![2.0, 4.0]]);
-        // A joint name that needs quoting is quoted in the output, as csv.writer does.
-        let out = resample(&traj, 0.5).unwrap().to_csv();
-        assert!(out.starts_with("t_s,\"q,1\",q2\r\n"));
-        // Lone \r line ends, no trailing newline, underscores like float().
-        let traj = parse_trajectory("t_s,q\r0,1_000\r1,2").unwrap();
-        assert_eq!(traj.q, vec![vec![1000.0, 2.0]]);
-    }
-
-    #[test]
-    fn repeated_column_takes_the_last_value_like_dictreader() {
-        let traj = parse_trajectory("t_s,q,q\n0,x,1\n1,y,2\n").unwrap();
-        assert_eq!(traj.columns, vec!["q"]);
-        assert_eq!(traj.q, vec![vec![1.0, 2.0]]);
-    }
-
-    #[test]
-    fn rejects_missing_time_column() {
-        assert_eq!(
-            parse_err("time,q1\n0,1\n1,2\n"),
-            RecipeError::CsvMissingColumn {
-                column: "t_s".into()
-            }
-        );
-    }
-
-    #[test]
-    fn rejects_bad_cells_naming_row_and_column() {
-        assert_eq!(
-            parse_err("t_s,q1,q2\n0,1,2\n0.1,abc,2\n"),
-            RecipeError::CsvBadCell {
-                row: 3,
-                column: "q1".into(),
-                value: "abc".into()
-            }
-        );
-        assert_eq!(
-            parse_err("t_s,q1\n\n0,1\n0.1,inf\n"),
-            RecipeError::CsvBadCell {
-                row: 4,
-                column: "q1".into(),
-                value: "inf".into()
-            }
-        );
-        assert_eq!(
-            parse_err("t_s,q1\n0,1\nnan,2\n"),
-            RecipeError::CsvBadCell {
-                row: 3,
-                column: "t_s".into(),
-                value: "nan".into()
-            }
-        );
-        assert!(matches!(
-            parse_err("t_s,q1\n0,1\n1,\n"),
-            RecipeError::CsvBadCell { row: 3, .. }
-        ));
-    }
-
-    #[test]
-    fn rejects_ragged_rows() {
-        assert_eq!(
-            parse_err("t_s,q1,q2\n0,1,2\n1,2\n"),
-            RecipeError::CsvRagged {
-                row: 3,
-                expected: 3,
-                got: 2
-            }
-        );
-        assert_eq!(
-            parse_err("t_s,q1\n0,1,9\n"),
-            RecipeError::CsvRagged {
-                row: 2,
-                expected: 2,
-                got: 3
-            }
-        );
-    }
-
-    #[test]
-    fn rejects_too_few_rows() {
-        assert_eq!(
-            parse_err("t_s,q1\n0,1\n"),
-            RecipeError::CsvTooFewRows { rows: 1, min: 2 }
-        );
-        assert_eq!(
-            parse_err(""),
-            RecipeError::CsvTooFewRows { rows: 0, min: 2 }
-        );
-    }
-
-    #[test]
-    fn rejects_time_not_strictly_increasing() {
-        assert_eq!(
-            parse_err("t_s,q1\n0,1\n0.5,2\n0.5,3\n"),
-            RecipeError::CsvTimeNotIncreasing { row: 4 }
-        );
-        assert_eq!(
-            parse_err("t_s,q1\n1,1\n0,2\n"),
-            RecipeError::CsvTimeNotIncreasing { row: 3 }
-        );
-    }
-
-    #[test]
-    fn rejects_no_joint_columns() {
-        assert_eq!(
-            parse_err("t_s,note\n0,a\n1,b\n"),
-            RecipeError::CsvNoJointColumns
-        );
-    }
-
-    #[test]
-    fn rejects_unterminated_quote() {
-        assert_eq!(
-            parse_err("t_s,q1\n0,1\n1,\"2\n"),
-            RecipeError::CsvUnterminatedQuote { row: 3 }
-        );
-    }
-
-    #[test]
-    fn rejects_oversized_input_and_output() {
-        let text = "t_s,a,b\n0,0,0\n1,0,0\n2,0,0\n3,0,0\n";
-        assert!(parse_with_limits(text, 100, 12).is_ok());
-        assert_eq!(
-            parse_with_limits(text, 20, 12).unwrap_err(),
-            RecipeError::InputTooLarge {
-                bytes: text.len() as u64,
-                limit: 20
-            }
-        );
-        // Stops at the third row; the message counts all four rows of three cells.
-        assert_eq!(
-            parse_with_limits(text, 100, 8).unwrap_err(),
-            RecipeError::TooLarge {
-                param: "csv_path".into(),
-                count: 12,
-                limit: 8,
-                also: vec![],
-                square: false,
-            }
-        );
-        let traj = parse_trajectory("t_s,a,b\n0,0,0\n100,1,1\n").unwrap();
-        assert!(matches!(
-            resample(&traj, 1e-5),
-            Err(RecipeError::TooLarge {
-                count: 20_000_002,
-                limit: MAX_OUTPUT_CELLS,
-                ..
-            })
-        ));
-        assert!(matches!(
-            resample(&traj, 0.0),
-            Err(RecipeError::NotPositive { .. })
-        ));
-    }
-
-    #[test]
-    fn interp_matches_numpy_edge_cases() {
-        let xp = [0.0, 1.0, 3.0];
-        let fp = [0.0, 10.0, 30.0];
-        // Exact sample, last sample, outside on both sides, between, NaN.
-        let got = interp(&[1.0, 3.0, -1.0, 4.0, 2.0, f64::NAN], &xp, &fp);
-        assert_eq!(&got[..5], &[10.0, 30.0, 0.0, 30.0, 20.0]);
-        assert!(got[5].is_nan());
-        // Unsorted queries give the same as sorted ones.
-        assert_eq!(interp(&[2.0, 0.5], &xp, &fp), vec![20.0, 5.0]);
-    }
-
-    #[test]
-    fn hand_built_trajectory_is_checked() {
-        let traj = Trajectory {
-            columns: vec!["q1".into()],
-            t: vec![0.0, 1.0],
-            q: vec![vec![0.0]],
-        };
-        assert!(matches!(
-            resample(&traj, 0.1),
-            Err(RecipeError::WrongCount { .. })
-        ));
-    }
-}
+mod tests;

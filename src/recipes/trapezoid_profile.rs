@@ -25,10 +25,13 @@
 //!   `d_acc` finite (Python raises OverflowError on `t_acc ** 2`). Signs are dropped as in the
 //!   recipe (`abs()`), so the range applies to the magnitude.
 
-use super::{plan_of, Kernel, Progress, RecipeInfo, RecipeOutput};
+use super::info::RecipeInfo;
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::output::RecipeOutput;
+use super::picture::{lines, series::BLUE, Picture, Table};
 use crate::args::{finite, positive, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
-use crate::pyfmt::{fixed, py_round, CsvText};
+use crate::pyfmt::{fixed, py_round};
 
 /// Smallest accepted `|vmax|`, `|amax|` (non-zero).
 pub const MAGNITUDE_MIN: f64 = 1e-9;
@@ -67,6 +70,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-trapezoid-profile-quirks",
     plan: plan_of::<Entry>,
     page: Some("trapezoid-profile"),
+    picture,
 };
 
 /// Move and sampling parameters (the recipe's defaults: 1.0, 0.5, 1.0, dt 0.01 s).
@@ -322,13 +326,8 @@ impl Profile {
 
     /// [`Self::to_csv`] reporting its rows as the second half of `progress`.
     pub fn to_csv_with(&self, progress: &mut Progress) -> String {
-        let mut csv = CsvText::with_header(&HEADER);
-        let n = self.samples.len() as u64;
-        for (k, s) in self.samples.iter().enumerate() {
-            progress.phase_at(1, 2, k as u64, n);
-            csv.floats(&[s.t, s.s, s.v, s.a]);
-        }
-        csv.finish()
+        let rows = self.samples.iter().map(|s| [s.t, s.s, s.v, s.a]);
+        float_csv_with(&HEADER, rows, progress)
     }
 
     /// The line the recipe prints.
@@ -359,13 +358,14 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = TrapParams;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<TrapParams, RecipeError> {
         params_from_args(args)
     }
 
-    fn plan(params: &TrapParams, _args: &Args) -> Result<super::Plan, RecipeError> {
-        Ok(super::Plan {
+    fn plan(params: &TrapParams, _args: &Args) -> Result<crate::args::Plan, RecipeError> {
+        Ok(crate::args::Plan {
             rows: params.rows_estimate(),
         })
     }
@@ -381,32 +381,26 @@ impl Kernel for Entry {
     }
 }
 
-/// Runs the recipe from command-line style arguments.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the velocity over time.
+pub fn picture(output: &RecipeOutput, _aspect: f64) -> Option<Picture> {
+    let t = Table::parse(output.file(FILE_NAME)?)?;
+    Some(lines(&t.col("t")?, &[(&t.col("v")?, BLUE)]))
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
-    use crate::recipes::testkit::{assert_defaults_in_one_place, assert_rejects};
-
-    #[test]
-    fn defaults_in_one_place() {
-        assert_defaults_in_one_place::<Entry>();
-    }
+    use crate::recipes::testkit::{assert_rejects, run_strs};
 
     #[test]
     fn trapezoid_and_triangle_reference_summaries() {
         let p = compute(&TrapParams::default()).unwrap();
         assert!(!p.triangle);
         assert_eq!(p.samples[1].s, 5e-05);
-        let tri = run_strs(INFO.id, &["0.2", "1.0", "2.0", "0.005"]).unwrap();
+        let tri = run_strs::<Entry>(&["0.2", "1.0", "2.0", "0.005"]).unwrap();
         assert_eq!(
             tri.summary,
             "wrote 127 samples t_total=0.6325s vmax_used=0.6325 -> trap_profile.csv"
@@ -415,15 +409,15 @@ mod tests {
 
     #[test]
     fn signs_are_dropped_like_abs() {
-        let a = run_strs(INFO.id, &["-1.0", "-0.5", "-1.0", "0.01"]).unwrap();
-        let b = run_strs(INFO.id, &[]).unwrap();
+        let a = run_strs::<Entry>(&["-1.0", "-0.5", "-1.0", "0.01"]).unwrap();
+        let b = run_strs::<Entry>(&[]).unwrap();
         assert_eq!(a, b);
     }
 
     #[test]
     fn zero_distance_is_one_row_with_the_triangle_quirk() {
         // Python: t_total = 0, one decel row whose s is the untruncated d_acc = 0.125.
-        let out = run_strs(INFO.id, &["0", "0.5", "1.0", "0.01"]).unwrap();
+        let out = run_strs::<Entry>(&["0", "0.5", "1.0", "0.01"]).unwrap();
         assert_eq!(
             out.file(FILE_NAME),
             Some("t,s,v,a\r\n0.0,0.125,0.0,-1.0\r\n")
@@ -443,7 +437,7 @@ mod tests {
             dt: 0.07,
         };
         let p = compute(&params).unwrap();
-        let out = run_strs(INFO.id, &["3", "2", "4", "0.07"]).unwrap();
+        let out = run_strs::<Entry>(&["3", "2", "4", "0.07"]).unwrap();
         assert_eq!(out.file(FILE_NAME), Some(p.to_csv().as_str()));
         assert_eq!(out.summary, p.summary());
         // Cruise phase present; ends at rest at the full distance.
@@ -455,7 +449,7 @@ mod tests {
     #[test]
     fn rejections_name_the_parameter() {
         let check = |raw: &[&str], param: &str, ok: fn(&RecipeError) -> bool| {
-            assert_rejects(INFO.id, raw, param, ok)
+            assert_rejects::<Entry>(raw, param, ok)
         };
         use RecipeError as E;
         check(&["1", "0.5", "1", "0"], "dt", |e| {
@@ -490,7 +484,7 @@ mod tests {
             ["1e9", "1e9", "1e-9", "1e30"],
             ["1e-300", "1e9", "1e-9", "1"],
         ] {
-            match run_strs(INFO.id, &raw) {
+            match run_strs::<Entry>(&raw) {
                 Ok(out) => assert!(!out.file(FILE_NAME).unwrap().contains("inf")),
                 Err(e) => assert!(matches!(e, E::TooLarge { .. }), "{raw:?} {e:?}"),
             }

@@ -22,11 +22,15 @@
 //! point `i` gets the recipe's noise for point `i`. With any option set the run also writes
 //! `umeyama_points.csv`: X, Y and the aligned points `s R X + t`, one row per point.
 
-use super::{plan_of, CsvFile, Kernel, Plan, Progress, RecipeInfo, RecipeOutput};
-use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound};
+use super::info::RecipeInfo;
+use super::kernel::{plan_of, Kernel, Progress};
+use super::output::{CsvFile, RecipeOutput};
+use super::picture::{series, Mark, Picture, UnitFrame};
+use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound, Plan};
 use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, CsvText};
 use crate::rng::NumpyRng;
+use glam::DVec2;
 use nalgebra::{Matrix2, Vector2};
 
 /// The true scale of the recipe's transform.
@@ -122,6 +126,7 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-umeyama-2d-quirks",
     plan: plan_of::<Entry>,
     page: Some("umeyama-2d"),
+    picture,
 };
 
 const CSV: &str = "umeyama_2d.csv";
@@ -628,6 +633,7 @@ pub struct Entry;
 
 impl Kernel for Entry {
     type Params = UmeyamaSetup;
+    const INFO: &'static RecipeInfo = &INFO;
 
     fn params(args: &Args) -> Result<UmeyamaSetup, RecipeError> {
         setup_from_args(args)
@@ -648,19 +654,62 @@ impl Kernel for Entry {
     }
 }
 
-/// Parses `sigma seed n` and the options, runs, and writes the recipe's output.
-pub fn run_args(args: &Args) -> Result<RecipeOutput, RecipeError> {
-    super::run_of::<Entry>(args)
+/// The home card's picture: the recipe's noisy targets Y and the aligned source points
+/// s R X + t (its defaults), with residuals.
+pub fn picture(_output: &RecipeOutput, aspect: f64) -> Option<Picture> {
+    let params = UmeyamaParams::default();
+    let (x, y) = sample_points(&params);
+    let fit = umeyama(&x, &y);
+    let (s, c) = fit.rotation_deg.to_radians().sin_cos();
+    let aligned: Vec<DVec2> = x
+        .iter()
+        .map(|p| {
+            DVec2::new(
+                fit.scale * (c * p[0] - s * p[1]) + fit.tx,
+                fit.scale * (s * p[0] + c * p[1]) + fit.ty,
+            )
+        })
+        .collect();
+    let source: Vec<DVec2> = x.iter().map(|p| DVec2::new(p[0], p[1])).collect();
+    let target: Vec<DVec2> = y.iter().map(|p| DVec2::new(p[0], p[1])).collect();
+    let frame = UnitFrame::fit(
+        source.iter().chain(&target).chain(&aligned).copied(),
+        Some(aspect),
+    );
+    let m = |v: &[DVec2]| v.iter().map(|p| frame.map(*p)).collect::<Vec<_>>();
+    Some(Picture {
+        marks: vec![
+            Mark::Segments {
+                series: series::GREY,
+                pairs: target
+                    .iter()
+                    .zip(&aligned)
+                    .map(|(a, b)| (frame.map(*a), frame.map(*b)))
+                    .collect(),
+            },
+            Mark::Dots {
+                series: series::GREY,
+                points: m(&source),
+            },
+            Mark::Dots {
+                series: series::ORANGE,
+                points: m(&target),
+            },
+            Mark::Dots {
+                series: series::BLUE,
+                points: m(&aligned),
+            },
+        ],
+    })
 }
 
 #[cfg(test)]
 mod tests {
-    // The same tests run natively and, under `wasm-pack test --node`, as wasm.
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::recipes::run_strs;
+    use crate::recipes::testkit::run_strs;
 
     fn transform(x: &[[f64; 2]], scale: f64, angle_deg: f64, t: [f64; 2]) -> Vec<[f64; 2]> {
         let (sin, cos) = crate::math::sincos(angle_deg.to_radians());
@@ -759,7 +808,7 @@ mod tests {
 
     #[test]
     fn rejects_bad_arguments() {
-        let err = |v: &[&str]| run_strs(INFO.id, v).unwrap_err();
+        let err = |v: &[&str]| run_strs::<Entry>(v).unwrap_err();
         assert!(matches!(err(&["-0.1"]), RecipeError::OutOfRange { .. }));
         assert!(matches!(err(&["inf"]), RecipeError::NotFinite { .. }));
         assert!(matches!(
@@ -806,14 +855,11 @@ mod tests {
 
     #[test]
     fn options_at_their_defaults_are_the_recipe_byte_for_byte() {
-        let recipe = run_strs(INFO.id, &["0.05", "9", "20"]).unwrap();
-        let same = run_strs(
-            INFO.id,
-            &[
-                "0.05", "9", "20", "--scale", "1.3", "--angle", "35.0", "--tx", "0.4", "--ty",
-                "-0.2", "--mirror", "no",
-            ],
-        )
+        let recipe = run_strs::<Entry>(&["0.05", "9", "20"]).unwrap();
+        let same = run_strs::<Entry>(&[
+            "0.05", "9", "20", "--scale", "1.3", "--angle", "35.0", "--tx", "0.4", "--ty", "-0.2",
+            "--mirror", "no",
+        ])
         .unwrap();
         assert_eq!(recipe, same);
         assert_eq!(recipe.files.len(), 1);
@@ -860,7 +906,7 @@ mod tests {
             assert_eq!(y3[i], y[i]);
         }
         let out = run_setup(&setup).unwrap();
-        let recipe = crate::recipes::run_strs(INFO.id, &["0.1", "11", "5"]).unwrap();
+        let recipe = run_strs::<Entry>(&["0.1", "11", "5"]).unwrap();
         assert_eq!(out.files[0], recipe.files[0]);
         let points = out.file(POINTS_CSV).unwrap();
         assert_eq!(points.lines().count(), 6);
@@ -879,12 +925,9 @@ mod tests {
 
     #[test]
     fn the_truth_options_move_y_and_the_csv_states_them() {
-        let out = run_strs(
-            INFO.id,
-            &[
-                "0", "3", "12", "--scale", "2", "--angle", "-90", "--tx", "1", "--ty", "2",
-            ],
-        )
+        let out = run_strs::<Entry>(&[
+            "0", "3", "12", "--scale", "2", "--angle", "-90", "--tx", "1", "--ty", "2",
+        ])
         .unwrap();
         let csv = out.file(CSV).unwrap();
         let row: Vec<f64> = csv
@@ -932,7 +975,7 @@ mod tests {
 
     #[test]
     fn bad_options_are_refused_naming_them() {
-        let err = |v: &[&str]| run_strs(INFO.id, v).unwrap_err();
+        let err = |v: &[&str]| run_strs::<Entry>(v).unwrap_err();
         assert!(matches!(
             err(&["--x", "0,0"]),
             RecipeError::OutOfRange { ref param, .. } if param == "x"
@@ -954,7 +997,7 @@ mod tests {
             &["0.02", "3", "--x", "0,0;1,0;0,1"][..],
             &["0.02", "3", "7", "--x", "0,0;1,0;0,1"][..],
         ] {
-            let out = run_strs(INFO.id, raw).unwrap();
+            let out = run_strs::<Entry>(raw).unwrap();
             assert_eq!(out.file(POINTS_CSV).unwrap().lines().count(), 4);
         }
     }

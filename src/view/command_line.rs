@@ -9,7 +9,7 @@
 //! options, so their line carries the positional values only (pages say so when options are
 //! set).
 
-use super::form::{typed, FieldDef};
+use super::field::{typed, FieldDef};
 
 /// `text` as one POSIX shell word: as it is when it holds only plain characters, else in
 /// single quotes (`''` for an empty word).
@@ -123,7 +123,7 @@ impl RunArgs {
 
 #[cfg(test)]
 mod tests {
-    use super::super::form::recipe_fields;
+    use super::super::field::recipe_fields;
     use super::*;
     use crate::recipes::{self, RECIPES};
 

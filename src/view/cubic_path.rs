@@ -163,11 +163,11 @@ impl SignalRow for CubicSample {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::recipes::cubic_path::compute;
-    use crate::recipes::run_strs;
+    use crate::recipes::cubic_path::{compute, Entry};
+    use crate::recipes::testkit::run_strs;
 
-    fn csv_column(id: &str, raw: &[&str], col: usize) -> Vec<f64> {
-        let out = run_strs(id, raw).unwrap();
+    fn csv_column(raw: &[&str], col: usize) -> Vec<f64> {
+        let out = run_strs::<Entry>(raw).unwrap();
         let text = out.files[0].text.clone();
         text.lines()
             .skip(1)
@@ -199,8 +199,8 @@ mod tests {
     fn peaks_are_the_csv_s() {
         let p = CubicParams::default();
         let r = readouts(&p, &compute(&p).unwrap().samples);
-        let qd = csv_column("cubic-path", &[], 2);
-        let qdd = csv_column("cubic-path", &[], 3);
+        let qd = csv_column(&[], 2);
+        let qdd = csv_column(&[], 3);
         let max_abs = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         assert_eq!(r.peak_velocity.unwrap().value, max_abs(&qd));
         assert_eq!(r.peak_acceleration.unwrap().value.abs(), max_abs(&qdd));

@@ -14,9 +14,9 @@
 use glam::{DMat3, DMat4, DVec3, DVec4};
 use nalgebra::Matrix4;
 
+use crate::camera3d::Preset;
 use crate::pyfmt::py_float;
 use crate::recipes::dh_fk::{forward_kinematics, MdhLink, DEMO_CHAIN, JOINTS};
-use crate::view::camera3d::Preset;
 use crate::view::scene3d::AxisPalette;
 use crate::view::url::IgnoredKey;
 

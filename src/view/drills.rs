@@ -116,18 +116,11 @@ impl UrlState for DrillsQuery {
 mod tests {
     use super::*;
     use crate::view::form::recipe_fields as fields;
-    use crate::view::url::parse_hash;
+    use crate::view::url::{parse_hash, query as pairs};
 
     /// The query the page is handed for `#/drills?<query>` (decoded by the router).
     fn q(query: &str) -> Vec<(String, String)> {
         parse_hash(&format!("#/drills?{query}")).page_query()
-    }
-
-    fn pairs(items: &[(&str, &str)]) -> Vec<(String, String)> {
-        items
-            .iter()
-            .map(|(k, v)| (k.to_string(), v.to_string()))
-            .collect()
     }
 
     #[test]

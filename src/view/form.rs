@@ -1,6 +1,6 @@
-//! The parameter form's model, read from a recipe's facts ([`ArgSpec`]): one field per
-//! argument (label id, hint id, unit, keypad, default) and the validation that puts each
-//! message beside the right field.
+//! The parameter form's model, read from a recipe's facts
+//! ([`ArgSpec`](crate::args::ArgSpec)): one field per argument (label id, hint id, unit,
+//! keypad, default) and the validation that puts each message beside the right field.
 //!
 //! Validation runs the kernel's own parse + validate (the page passes it as a `check`
 //! closure), so the messages are the recipe's. Each field the user typed in is first checked
@@ -11,75 +11,10 @@
 //!
 //! `kit::form` (wasm) draws this model; this file is plain Rust, tested natively.
 
-use crate::args::{ArgKind, ArgSpec, Bound};
+pub use super::field::{recipe_fields, typed, FieldDef};
 use crate::error::RecipeError;
+pub use crate::i18n::fluent_args;
 use crate::i18n::FluentArg;
-use crate::recipes::RecipeInfo;
-
-/// One field of the form.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FieldDef {
-    /// The argument it sets (name, default, kind, unit, limits, hint id).
-    pub spec: &'static ArgSpec,
-    /// A `--flag` option (after the positional arguments on the command line).
-    pub flag: bool,
-    /// Fluent id of the label (`recipe-<id>-arg-<name>` / `-flag-<name>`).
-    pub label_id: String,
-    /// The fieldset it belongs to (an index into the form's groups).
-    pub group: usize,
-}
-
-impl FieldDef {
-    /// The argument's name (`data-field`, URL key, command-line flag).
-    pub fn name(&self) -> &'static str {
-        self.spec.name
-    }
-
-    /// The recipe's default, as the recipe writes it.
-    pub fn default(&self) -> &'static str {
-        self.spec.default
-    }
-
-    /// The field is traj-resample-style file input (a picker, not a text box).
-    pub fn is_file(&self) -> bool {
-        self.spec.kind == ArgKind::File
-    }
-
-    /// The phone keypad: `numeric` for whole numbers, `decimal` for numbers that are never
-    /// negative, `text` where a minus sign or commas are needed (phone decimal pads often
-    /// have no minus key).
-    pub fn inputmode(&self) -> &'static str {
-        match self.spec.kind {
-            ArgKind::Integer | ArgKind::Seed => "numeric",
-            ArgKind::Number if never_negative(self.spec.min) => "decimal",
-            _ => "text",
-        }
-    }
-
-    /// A wide field (a list, points or a file takes a whole row).
-    pub fn is_wide(&self) -> bool {
-        matches!(
-            self.spec.kind,
-            ArgKind::List { .. } | ArgKind::File | ArgKind::Points
-        )
-    }
-}
-
-fn never_negative(min: Bound) -> bool {
-    min.value().is_some_and(|m| m >= 0.0)
-}
-
-/// The fields of a recipe: its positional arguments (group 0) then its options (group 1).
-pub fn recipe_fields(info: &RecipeInfo) -> Vec<FieldDef> {
-    info.all_args()
-        .map(|(spec, flag)| FieldDef {
-            spec,
-            flag,
-            label_id: spec.label_id(info.id, flag),
-            group: usize::from(flag),
-        })
-        .collect()
-}
 
 /// Runs whose plan (the recipe's rows of work) is at most this many rows run while the user
 /// types; bigger ones wait for Run (they may take from a fraction of a second to a few
@@ -89,15 +24,6 @@ pub const AUTO_RUN_MAX_ROWS: u64 = 50_000;
 /// Whether a run of `rows` (`None`: only the run can size it) may start while the user types.
 pub fn runs_while_typing(rows: Option<u64>) -> bool {
     rows.is_some_and(|r| r <= AUTO_RUN_MAX_ROWS)
-}
-
-/// The text typed in each field, trimmed, `None` where it is blank (blank = the default).
-pub fn typed(texts: &[Option<String>], index: usize) -> Option<&str> {
-    texts
-        .get(index)
-        .and_then(|t| t.as_deref())
-        .map(str::trim)
-        .filter(|t| !t.is_empty())
 }
 
 /// What validation found.
@@ -252,26 +178,13 @@ pub fn error_args(
     fluent_args(error.message_args_labelled(label))
 }
 
-/// Text arguments as Fluent arguments, whole-number texts as numbers.
-pub fn fluent_args(args: Vec<(&'static str, String)>) -> Vec<(&'static str, FluentArg)> {
-    args.into_iter()
-        .map(|(name, value)| {
-            let is_count = !value.is_empty() && value.bytes().all(|b| b.is_ascii_digit());
-            let arg = match value.parse::<u64>() {
-                Ok(count) if is_count => FluentArg::Number(count as f64),
-                _ => FluentArg::Text(value),
-            };
-            (name, arg)
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::args::Args;
     use crate::i18n::{I18n, Lang};
     use crate::recipes::{self, RECIPES};
+    use crate::view::field::missing_messages;
 
     /// The recipe's own plan (parse + validate) on the form's texts, as the drills page runs it.
     fn checker(id: &'static str) -> impl Fn(&[Option<String>]) -> Result<u64, RecipeError> {
@@ -327,22 +240,9 @@ mod tests {
         assert_eq!(rrt[0].inputmode(), "numeric");
         assert!(recipe_fields(&recipes::traj_resample::INFO)[0].is_file());
         assert!(recipe_fields(&recipes::dh_fk::INFO)[0].is_wide());
-        let i18n = I18n::new();
         for recipe in RECIPES {
-            for field in recipe_fields(recipe.info) {
-                for lang in Lang::ALL {
-                    assert!(
-                        i18n.has_message(lang, &field.label_id),
-                        "{}",
-                        field.label_id
-                    );
-                    assert!(
-                        i18n.has_message(lang, field.spec.hint_id),
-                        "{}",
-                        field.spec.hint_id
-                    );
-                }
-            }
+            let fields = recipe_fields(recipe.info);
+            assert_eq!(missing_messages(&fields), Vec::<String>::new());
         }
     }
 

@@ -134,12 +134,12 @@ impl SignalRow for PidSample {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::recipes::pid_step::{simulate, PidParams};
-    use crate::recipes::run_strs;
+    use crate::recipes::pid_step::{simulate, Entry, PidParams};
+    use crate::recipes::testkit::run_strs;
 
     /// The CSV of `bsv pid-step <raw>` as rows of numbers (t, r, y, u, e).
     fn csv(raw: &[&str]) -> Vec<[f64; 5]> {
-        let out = run_strs("pid-step", raw).unwrap();
+        let out = run_strs::<Entry>(raw).unwrap();
         out.files[0]
             .text
             .lines()

@@ -696,13 +696,7 @@ mod tests {
     use super::*;
     use crate::recipes::rrt_2d::{output, run_setup, Rrt};
     use crate::recipes::Progress;
-
-    fn q(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
-        pairs
-            .iter()
-            .map(|(k, v)| (k.to_string(), v.to_string()))
-            .collect()
-    }
+    use crate::view::url::query as q;
 
     #[test]
     fn default_is_the_recipe_and_its_command_lines() {

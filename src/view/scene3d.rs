@@ -11,7 +11,7 @@
 
 use glam::{DMat3, DVec2, DVec3};
 
-use super::camera3d::{ground_grid, Camera};
+use crate::camera3d::{ground_grid, Camera};
 
 /// How a mark is stroked (widths in CSS px before the projector scale).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -377,7 +377,7 @@ pub fn arrow_wings(from: DVec2, to: DVec2, width_px: f64) -> [DVec2; 2] {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::camera3d::Preset;
+    use crate::camera3d::Preset;
 
     fn cam(preset: Preset) -> Camera {
         Camera::framing(DVec3::ZERO, 0.5, preset, 800.0, 600.0)

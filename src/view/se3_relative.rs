@@ -1,7 +1,7 @@
 //! The relative SE(3) pose page (`#/se3-relative`), plain Rust: the twelve fields in the
 //! recipe's units or in degrees, the URL, the 4×4 matrices' text, intrinsic and extrinsic
 //! rotations, the composition check, and the 3D view's scene, gizmo hit tests and drag maths
-//! (through [`crate::view::camera3d`]).
+//! (through [`crate::camera3d`]).
 //!
 //! The recipe takes radians. The page's rad/deg switch changes only how the six angle
 //! fields are shown and typed: the page keeps each field's text **in the recipe's units**
@@ -17,9 +17,9 @@
 use glam::{DVec2, DVec3};
 use nalgebra::{Matrix3, Matrix4};
 
+use crate::camera3d::{hit_point, Camera, Projected};
 use crate::pyfmt::py_float;
 use crate::recipes::se3_relative::{relative_transform, rpy_to_rotation, Pose, Se3Params, INFO};
-use crate::view::camera3d::{hit_point, Camera, Projected};
 use crate::view::url::IgnoredKey;
 
 /// The number of fields: A's x, y, z, roll, pitch, yaw, then B's.
@@ -623,7 +623,7 @@ pub fn mm_text(v: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::camera3d::Preset;
+    use crate::camera3d::Preset;
 
     #[test]
     fn degrees_round_trip_and_keep_untouched_radians() {

@@ -261,13 +261,7 @@ pub fn nearest_row<T>(rows: &[T], t: f64, t_of: impl Fn(&T) -> f64) -> Option<&T
 mod tests {
     use super::*;
     use crate::recipes::{cubic_path, pid_step};
-
-    fn q(pairs: &[(&str, &str)]) -> Vec<(String, String)> {
-        pairs
-            .iter()
-            .map(|(k, v)| (k.to_string(), v.to_string()))
-            .collect()
-    }
+    use crate::view::url::query as q;
 
     #[test]
     fn a_held_range_grows_and_never_shrinks() {

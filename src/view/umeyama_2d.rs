@@ -648,7 +648,7 @@ mod tests {
         let fit = umeyama_2d::run(&UmeyamaParams::default()).unwrap();
         assert_eq!(scene.fit(), fit);
         // The CSV row is made of the same numbers.
-        let out = crate::recipes::run_strs(INFO.id, &[]).unwrap();
+        let out = crate::recipes::testkit::run_strs::<umeyama_2d::Entry>(&[]).unwrap();
         let row = out.files[0].text.lines().nth(1).unwrap().to_string();
         let want: Vec<String> = [fit.scale, fit.rotation_deg, fit.tx, fit.ty, fit.rmse]
             .iter()

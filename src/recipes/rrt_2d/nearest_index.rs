@@ -15,7 +15,7 @@
 //! it stops as soon as the query lies farther inside the current cell than the best distance
 //! (nothing outside can win).
 
-use super::distance;
+use super::geometry::distance;
 
 /// Points per leaf before it splits (one block of the pool).
 const LEAF_CAPACITY: usize = 64;
