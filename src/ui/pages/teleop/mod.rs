@@ -239,6 +239,7 @@ impl Inner {
                 }
             }
         })?;
+        scope.listen_for(&self.root, "keydown", me, |p, e| p.key_on_button(e))?;
         let window = dom::window()?;
         scope.listen_for(&window, "keyup", me, |p, e| {
             if let Some(k) = e.dyn_ref::<KeyboardEvent>() {
@@ -292,6 +293,35 @@ impl Inner {
         }
         self.request_frame();
         true
+    }
+
+    /// A key on one of the page's buttons (the focus stays on a button after a click): the
+    /// arm's hold keys, K and R still drive it; Space and Enter stay the button's, L the
+    /// shell's language key.
+    fn key_on_button(&self, e: &DomEvent) {
+        let Some(k) = e.dyn_ref::<KeyboardEvent>() else {
+            return;
+        };
+        let on_button = e
+            .target()
+            .and_then(|t| t.dyn_into::<Element>().ok())
+            .is_some_and(|el| el.tag_name().eq_ignore_ascii_case("button"));
+        if !on_button
+            || crate::ui::kit::keymap::has_command_modifier(k)
+            || crate::ui::overlay::is_open()
+            || self.loader.is_loading()
+            || self.in_review()
+        {
+            return;
+        }
+        let driving = matches!(
+            key_action(&k.code()),
+            Some(KeyAction::Hold { .. } | KeyAction::ToggleGripper | KeyAction::Reset)
+        );
+        if driving && self.key_down(k) {
+            e.prevent_default();
+            e.stop_propagation();
+        }
     }
 
     fn pointer_world(&self, e: &PointerEvent) -> (f64, f64) {
