@@ -6,18 +6,26 @@ teleop-lede = Drive a simulated three-joint arm with a gripper with the keys and
 teleop-disclaimer = A practice simulator for learning, running only in your browser: not a safety-rated controller, not connected to any robot, and not NVIDIA software (no Isaac code is used or redistributed).
 teleop-restored = Your session was restored from this browser. An episode cut off by the reload is kept and marked interrupted.
 teleop-store-unreadable = The session stored in this browser could not be checked again (it cannot be read, or an episode no longer replays in this version), so a new session was started (for the same pilot when the stored one names it). The stored one is kept in this browser's storage under bsv.teleop.session.unreadable.
+teleop-storage-full = Not saved: this browser refused to store the session (its storage is full or turned off). The recording goes on in this tab and nothing is lost while it stays open; download the files now to keep them (“Open saved session files…” opens them again).
+teleop-storage-episodes = { $count ->
+    [one] Download the episode's CSV
+   *[other] Download the { $count } episode CSVs
+}
 teleop-modules-label = Session modules
 teleop-module-preflight = Preflight
 teleop-module-basic-control = Basic control
 teleop-module-record-ten = Record ten
 teleop-module-failure-review = Failure review
 teleop-module-repeatability = Repeatability
+teleop-unlock-record-ten = Finish the preflight: move the arm, then do a checked reset (R).
+teleop-unlock-record-ten-reset = Finish the preflight: do a checked reset (R).
+teleop-unlock-episode = Opens once an episode is recorded in Record ten.
 teleop-help-preflight = Choose your input device, move the arm with it, then press R (or Reset): the page checks that the reset really returns the scene to its start state.
 teleop-help-basic-control = Free practice, not recorded. Learn the keys and the limits below, then go on to Record ten.
 teleop-help-record-ten = Every attempt is recorded, failures too. Label each episode when it ends; R or Reset starts the next one. Aim for { $target } episodes.
 teleop-help-failure-review = Replay any episode: play, pause, step and scrub; the first failure is marked on the timeline.
 teleop-help-repeatability = Record a second session and compare it with the first, side by side.
-teleop-canvas-label = The simulated arm, table, block, goal and targets. Click here, then W/S move the tip along x, Q/E along z, T/G turn the gripper, K opens or closes it, R resets, Space engages or pauses.
+teleop-canvas-label = The simulated arm, table, block, goal and targets. W/S move the tip along x, Q/E along z, T/G turn the gripper, K opens or closes it, R resets, Space engages or pauses; dragging on the view pulls the tip.
 teleop-timeline-label = The episode's events along its time: failures are vermilion crosses, successes bluish-green rings, limit warnings purple squares; the triangle marks the first failure.
 teleop-reset = Reset (R)
 teleop-end-episode = End episode
@@ -49,11 +57,16 @@ teleop-stop-limit = Joint { $joint } is at its limit: motion along this directio
 teleop-stop-singular = Near a singularity: the controller slows the motion (see the manipulability).
 teleop-pad-none = No gamepad yet: connect one and press a button on the pad.
 teleop-pad-connected = Gamepad: { $name }
-teleop-keyboard-hint = Keyboard: click the arm view first, then hold W/S, Q/E, T/G.
+teleop-pad-offer = The gamepad “{ $name }” is sending input. Use it for this session?
+teleop-pad-offer-use = Use this gamepad
+teleop-pad-offer-dismiss = Not now
+teleop-keyboard-hint = Keyboard: hold W/S, Q/E, T/G; the keys work anywhere on the page except while typing in a field.
 teleop-pointer-hint = Pointer or touch: press on the arm view and drag; the tip follows only while you hold (a clutch).
 teleop-ended-success = Success in { $t } s.
 teleop-ended-timeout = Time is up (the episode's time box).
 teleop-ended-pilot = Episode ended.
+teleop-ended-recorded = { $outcome } Recorded as episode { $n }: label it below; R (Reset) starts the next one.
+teleop-ended-recorded-success = { $outcome } Recorded as episode { $n } and counted as a SUCCESS (relabel it below if it was not); R (Reset) starts the next one.
 teleop-end-nothing = Nothing to end yet: the episode starts with your first input.
 teleop-preflight-title = Preflight
 teleop-device-label = Input device
@@ -98,7 +111,10 @@ teleop-note-label = Note (optional)
 teleop-label-confirm = Confirm label
 teleop-unlabelled = not labelled
 teleop-episodes-title = Episodes and evidence
-teleop-session-line = Pilot { $pilot }: { $attempted } episodes recorded (aim: { $target }), { $successful } successful.
+teleop-session-line = { $attempted ->
+    [one] Pilot id “{ $pilot }”: 1 episode recorded (aim: { $target }), { $successful } successful.
+   *[other] Pilot id “{ $pilot }”: { $attempted } episodes recorded (aim: { $target }), { $successful } successful.
+}
 teleop-col-n = #
 teleop-col-label = Label
 teleop-col-category = Category

@@ -674,3 +674,325 @@ test('a second session after an exported first: the comparison keeps the first, 
     await close();
   }
 });
+
+// ---- A new pilot's first session: the pad offered, closed modules explained, a success
+// counted at once and shown over the arm view, storage full ----
+
+/** A fresh page at `hash` with an injected standard gamepad (window.__testPad, at rest). */
+async function openWithPad(hash, viewport = { width: 1366, height: 768 }) {
+  const context = await (await browser()).newContext({ viewport, locale: 'en-US', acceptDownloads: true, deviceScaleFactor: 1 });
+  await context.addInitScript(() => {
+    const buttons = Array.from({ length: 17 }, () => ({ pressed: false, touched: false, value: 0 }));
+    const pad = { id: 'Test Pad (STANDARD GAMEPAD)', index: 0, connected: true, mapping: 'standard', timestamp: 0, axes: [0, 0, 0, 0], buttons };
+    window.__testPad = pad;
+    Object.defineProperty(Navigator.prototype, 'getGamepads', { configurable: true, value: () => [pad, null, null, null] });
+  });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(`${server.url}/${hash}`);
+  await page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
+  return { page, errors, close: () => context.close() };
+}
+
+/** The left stick pushed up (`value` of full, +x) for `ms`, then released. */
+async function padPush(page, value, ms) {
+  await page.evaluate((v) => { window.__testPad.axes[1] = -v; }, value);
+  await page.waitForTimeout(ms);
+  await page.evaluate(() => { window.__testPad.axes[1] = 0; });
+}
+
+/** Preflight with the gamepad (chosen, moved, a checked reset), then Record ten. */
+async function padPreflightThenRecord(page) {
+  await page.locator('[data-device="gamepad"]').click();
+  await padPush(page, 0.5, 250);
+  await page.keyboard.press('r');
+  assert.equal(await page.locator('[data-check="reset"]').getAttribute('data-state'), 'done');
+  await page.locator('[data-module="record-ten"]').click();
+}
+
+/** Drives the pad through the reach task's six default targets (a steady pilot: a proportional
+ * pull towards each target's centre, the next one after 300 ms inside 2 mm) until the episode's
+ * outcome shows; its text. */
+async function padReachToSuccess(page) {
+  return page.evaluate(() => {
+    const targets = [[0.17, 0.04], [0.04, 0.12], [0.12, 0.09], [0.03, 0.02], [0.19, -0.01], [-0.10, 0.08]];
+    const pad = window.__testPad;
+    const read = (k) => Number(document.querySelector(`[data-readout="${k}"]`).textContent);
+    const outcome = document.querySelector('[data-testid="episode-outcome"]');
+    const pull = (v) => Math.max(-1, Math.min(1, v / 0.03));
+    let i = 0;
+    let inside = null;
+    const t0 = performance.now();
+    return new Promise((resolve, reject) => {
+      const tick = (now) => {
+        if (!outcome.hidden || now - t0 > 50000) {
+          pad.axes[1] = 0;
+          pad.axes[3] = 0;
+          if (outcome.hidden) reject(new Error(`no outcome after 50 s (target ${i})`));
+          else resolve(outcome.textContent);
+          return;
+        }
+        const [tx, tz] = targets[Math.min(i, targets.length - 1)];
+        const ex = tx - read('x');
+        const ez = tz - read('z');
+        pad.axes[1] = -pull(ex);
+        pad.axes[3] = -pull(ez);
+        if (Math.hypot(ex, ez) < 0.002) {
+          inside ??= now;
+          if (now - inside > 300) {
+            i++;
+            inside = null;
+          }
+        } else inside = null;
+        requestAnimationFrame(tick);
+      };
+      requestAnimationFrame(tick);
+    });
+  });
+}
+
+/** The bounding box of `sel`, rounded: { x, y, width, height }. */
+async function boxOf(page, sel) {
+  const b = await page.locator(sel).boundingBox();
+  return Object.fromEntries(Object.entries(b).map(([k, v]) => [k, Math.round(v)]));
+}
+
+test('a gamepad that sends input is offered at once, never switched to by itself (EN/JA)', async () => {
+  const { page, errors, close } = await openWithPad('#/teleop');
+  try {
+    const offer = page.locator('[data-testid="gamepad-offer"]');
+    assert.ok(await offer.isHidden(), 'a pad at rest is not offered');
+    // The pad sends input while the keyboard is chosen: offered, not switched to.
+    await page.evaluate(() => { window.__testPad.axes[1] = -0.5; });
+    await offer.waitFor({ state: 'visible' });
+    assert.equal(await offer.getAttribute('role'), 'status');
+    assert.match(await offer.innerText(), /The gamepad “Test Pad \(STANDARD GAMEPAD\)” is sending input\. Use it for this session\?/);
+    await page.waitForTimeout(300);
+    await page.evaluate(() => { window.__testPad.axes[1] = 0; });
+    assert.equal(await page.locator('[data-device="keyboard"]').getAttribute('aria-checked'), 'true');
+    assert.equal(await page.locator('[data-device="gamepad"]').getAttribute('aria-checked'), 'false');
+    // Japanese says it too; its button switches the device.
+    await page.click('[data-testid="lang-switch"]');
+    assert.match(await offer.innerText(), /ゲームパッド「Test Pad \(STANDARD GAMEPAD\)」から入力があります。このセッションでこのゲームパッドを使いますか？/);
+    assert.equal(await page.locator('[data-action="use-gamepad"]').innerText(), 'このゲームパッドを使う');
+    await page.locator('[data-action="use-gamepad"]').click();
+    assert.equal(await page.locator('[data-device="gamepad"]').getAttribute('aria-checked'), 'true');
+    assert.ok(await offer.isHidden());
+    assert.match(await page.locator('[data-tele="device-status"]').innerText(), /Test Pad/);
+    assert.equal(await page.locator('[data-field="pos_sensitivity"]').inputValue(), '1', 'the gamepad\'s sensitivity');
+    await padPush(page, 0.5, 250);
+    assert.ok(await offer.isHidden(), 'no offer while the gamepad is in use');
+    assert.equal(await page.locator('[data-check="moved"]').getAttribute('data-state'), 'done');
+    // Back to the keyboard: offered again; "Not now" keeps the keyboard and the offer away.
+    await page.click('[data-testid="lang-switch"]');
+    await page.locator('[data-device="keyboard"]').click();
+    await page.evaluate(() => { window.__testPad.axes[3] = -0.5; });
+    await offer.waitFor({ state: 'visible' });
+    await page.evaluate(() => { window.__testPad.axes[3] = 0; });
+    await page.locator('[data-action="dismiss-gamepad"]').click();
+    assert.ok(await offer.isHidden());
+    await padPush(page, 0.5, 300);
+    assert.ok(await offer.isHidden(), 'declined: not offered again for this pad');
+    assert.equal(await page.locator('[data-device="keyboard"]').getAttribute('aria-checked'), 'true');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a closed module says what opens it, visibly and in its accessible description', async () => {
+  const { page, errors, close } = await open();
+  try {
+    /** The closed module's line: shown, and the module's (and Next module's) description. */
+    const why = async (module) => {
+      const button = page.locator(`[data-module="${module}"]`);
+      assert.equal(await button.getAttribute('aria-disabled'), 'true', module);
+      const id = await button.getAttribute('aria-describedby');
+      assert.ok(id, `${module} has a description`);
+      const line = page.locator(`#${id}`);
+      assert.ok(await line.isVisible(), `${module}: its line is visible`);
+      assert.equal(await line.getAttribute('data-testid'), `module-unlock-${module}`);
+      return line.innerText();
+    };
+    assert.equal(await why('record-ten'), 'Finish the preflight: move the arm, then do a checked reset (R).');
+    assert.equal(await why('failure-review'), 'Opens once an episode is recorded in Record ten.');
+    assert.equal(await why('repeatability'), 'Opens once an episode is recorded in Record ten.');
+    for (const open of ['preflight', 'basic-control']) {
+      assert.equal(await page.locator(`[data-module="${open}"]`).getAttribute('aria-describedby'), null);
+      assert.ok(await page.locator(`[data-testid="module-unlock-${open}"]`).isHidden());
+    }
+    // In Basic control, Next module (closed) is described by Record ten's line.
+    await page.locator('[data-module="basic-control"]').click();
+    assert.equal(await page.locator('[data-action="next-module"]').getAttribute('aria-disabled'), 'true');
+    assert.equal(await page.locator('[data-action="next-module"]').getAttribute('aria-describedby'), 'tele-why-record-ten');
+    // The line follows the preflight: moved, then only the checked reset is left.
+    await page.locator('[data-module="preflight"]').click();
+    await canvas(page).focus();
+    await hold(page, 'w', 250);
+    assert.equal(await why('record-ten'), 'Finish the preflight: do a checked reset (R).');
+    // Japanese.
+    await page.click('[data-testid="lang-switch"]');
+    assert.equal(await why('record-ten'), '先に事前点検を：R で確認付きのリセットをします。');
+    assert.equal(await why('failure-review'), '「10 回記録」でエピソードを 1 つ記録すると開きます。');
+    await page.click('[data-testid="lang-switch"]');
+    // The reset opens Record ten: its line goes.
+    await canvas(page).focus();
+    await page.keyboard.press('r');
+    const record = page.locator('[data-module="record-ten"]');
+    assert.equal(await record.getAttribute('aria-disabled'), 'false');
+    assert.equal(await record.getAttribute('aria-describedby'), null);
+    assert.ok(await page.locator('[data-testid="module-unlock-record-ten"]').isHidden());
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a success counts at once, its outcome over the arm view; the session line reads right in EN and JA', async () => {
+  const { page, errors, close } = await openWithPad('#/teleop?task=reach');
+  try {
+    // The keys work without a click on the arm view, and the hint says so.
+    assert.doesNotMatch(await page.locator('[data-tele="device-status"]').innerText(), /click/i);
+    const x0 = Number((await readouts(page)).x);
+    await hold(page, 'w', 250);
+    const x1 = Number((await readouts(page)).x);
+    assert.ok(x1 > x0 + 0.01, `W moves the tip with the page focused: ${x0} → ${x1}`);
+    await page.locator('[data-device="keyboard"]').click();
+    await hold(page, 'w', 250);
+    const x2 = Number((await readouts(page)).x);
+    assert.ok(x2 > x1 + 0.01, `W moves the tip with a button focused: ${x1} → ${x2}`);
+    await padPreflightThenRecord(page);
+    const text = await padReachToSuccess(page);
+    assert.match(text, /^Success in \d+\.\d\d s\. Recorded as episode 1 and counted as a SUCCESS \(relabel it below if it was not\); R \(Reset\) starts the next one\.$/);
+    const outcome = page.locator('[data-testid="episode-outcome"]');
+    assert.equal(await outcome.getAttribute('data-outcome'), 'success');
+    assert.equal(await outcome.getAttribute('data-tele'), 'ended');
+    // Over the arm view, in the first screen at 1366×768.
+    const o = await boxOf(page, '[data-testid="episode-outcome"]');
+    const c = await boxOf(page, '[data-testid="teleop-canvas"]');
+    assert.ok(o.x >= c.x && o.y >= c.y && o.x + o.width <= c.x + c.width && o.y + o.height <= c.y + c.height, `outcome ${JSON.stringify(o)} in the arm view ${JSON.stringify(c)}`);
+    assert.ok(o.y + o.height <= 768, `outcome in the first screen: ${JSON.stringify(o)}`);
+    await page.screenshot({ path: join(OUT, 'teleop-success-en-1366.png') });
+    // Counted at once: the line, the table, the label panel (SUCCESS preselected), the evidence.
+    const line = page.locator('[data-tele="session-line"]');
+    assert.equal(await line.innerText(), 'Pilot id “pilot”: 1 episode recorded (aim: 10), 1 successful.');
+    assert.match(await page.locator('[data-tele="episodes"] tbody tr').first().innerText(), /^1\s+SUCCESS/);
+    assert.equal(await page.locator('[data-label="SUCCESS"]').getAttribute('aria-pressed'), 'true');
+    const doc = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
+    checkEvidence(doc);
+    assert.deepEqual(doc.episodes, { attempted: 1, successful: 1, failed: 0, recoveryEpisodes: 0 });
+    assert.equal(doc.inputDevice, 'gamepad');
+    const table = (await download(page, 'teleop_episodes.csv')).toString('utf8').trim().split('\n');
+    assert.match(table[1], /^1,reach,SUCCESS,,,0,success,/);
+    // A second episode, ended by the pilot: not counted as a success; plurals.
+    await page.keyboard.press('r');
+    assert.ok(await outcome.isHidden(), 'a reset hides the outcome');
+    await padPush(page, 0.5, 200);
+    await page.locator('[data-action="end-episode"]').click();
+    assert.match(await outcome.innerText(), /^Episode ended\. Recorded as episode 2: label it below; R \(Reset\) starts the next one\.$/);
+    assert.equal(await line.innerText(), 'Pilot id “pilot”: 2 episodes recorded (aim: 10), 1 successful.');
+    await page.click('[data-testid="lang-switch"]');
+    assert.equal(await line.innerText(), 'パイロット ID「pilot」：2 エピソードを記録（目標 10）、うち成功 1。');
+    assert.match(await outcome.innerText(), /^エピソードを終了しました。エピソード 2 として記録しました。/);
+    assert.doesNotMatch(await page.locator('[data-tele="device-status"]').innerText(), /クリック/);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('on a phone (390×844, JA) the arm view is on the first screen, the outcome over it', async () => {
+  const { page, errors, close } = await openWithPad('#/teleop?task=reach&lang=ja', { width: 390, height: 844 });
+  try {
+    const c0 = await boxOf(page, '[data-testid="teleop-canvas"]');
+    assert.ok(c0.y < 844, `the arm view starts in the first screen: ${JSON.stringify(c0)}`);
+    assert.ok(c0.y + c0.height <= 844, `the whole arm view in the first screen: ${JSON.stringify(c0)}`);
+    const width = await page.evaluate(() => document.documentElement.scrollWidth);
+    assert.ok(width <= 390, `no horizontal scroll (${width})`);
+    await padPreflightThenRecord(page);
+    assert.ok((await boxOf(page, '[data-testid="teleop-canvas"]')).y < 844, 'still in Record ten');
+    const text = await padReachToSuccess(page);
+    assert.match(text, /^\d+\.\d\d 秒で成功しました。エピソード 1 として記録し、成功 \(SUCCESS\) に数えました/);
+    const o = await boxOf(page, '[data-testid="episode-outcome"]');
+    const c = await boxOf(page, '[data-testid="teleop-canvas"]');
+    assert.ok(o.y >= c.y && o.y + o.height <= c.y + c.height && o.y + o.height <= 844, `outcome ${JSON.stringify(o)} over the arm view ${JSON.stringify(c)}`);
+    assert.equal(await page.locator('[data-tele="session-line"]').innerText(), 'パイロット ID「pilot」：1 エピソードを記録（目標 10）、うち成功 1。');
+    await page.screenshot({ path: join(OUT, 'teleop-success-ja-390.png') });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('storage full while recording: the recording goes on, the page says it is not saved and offers the files (EN/JA)', async () => {
+  const { page, errors, close } = await open();
+  try {
+    await preflightThenRecord(page);
+    const stored = await page.evaluate(() => localStorage.getItem('bsv.teleop.session'));
+    // From now on the browser's storage is full.
+    await page.evaluate(() => {
+      window.__realSetItem = Storage.prototype.setItem;
+      Storage.prototype.setItem = function setItem() {
+        throw new DOMException('The quota has been exceeded.', 'QuotaExceededError');
+      };
+    });
+    const warning = page.locator('[data-testid="storage-warning"]');
+    assert.ok(await warning.isHidden());
+    await recordEpisode(page, 'w', 300);
+    await warning.waitFor({ state: 'visible' });
+    assert.equal(await warning.getAttribute('role'), 'alert');
+    assert.match(await warning.innerText(), /^Not saved: this browser refused to store the session \(its storage is full or turned off\)\. The recording goes on in this tab/);
+    assert.equal(await page.locator('[data-testid="storage-download-episodes"]').innerText(), 'Download the episode\'s CSV');
+    // Recording goes on: a second episode, nothing dropped.
+    await recordEpisode(page, 'q', 300);
+    assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 2);
+    assert.equal(await page.locator('[data-testid="storage-download-episodes"]').innerText(), 'Download the 2 episode CSVs');
+    assert.equal(await page.evaluate(() => localStorage.getItem('bsv.teleop.session')), stored, 'the store is as it was');
+    // The warning's downloads: the evidence, the table, every episode's CSV.
+    const saved = async (testid, count = 1) => {
+      const files = [];
+      const arrived = new Promise((resolve) => {
+        const onDownload = async (d) => {
+          files.push({ name: d.suggestedFilename(), bytes: readFileSync(await d.path()) });
+          if (files.length === count) {
+            page.off('download', onDownload);
+            resolve();
+          }
+        };
+        page.on('download', onDownload);
+      });
+      await page.locator(`[data-testid="${testid}"]`).click();
+      await arrived;
+      return files;
+    };
+    const [evidence] = await saved('storage-download-evidence');
+    assert.equal(evidence.name, 'teleop_session_evidence.json');
+    const doc = JSON.parse(evidence.bytes.toString('utf8'));
+    checkEvidence(doc);
+    assert.equal(doc.episodes.attempted, 2);
+    const [table] = await saved('storage-download-table');
+    assert.equal(table.name, 'teleop_episodes.csv');
+    assert.equal(table.bytes.toString('utf8').trim().split('\n').length, 3);
+    const csvs = await saved('storage-download-episodes', 2);
+    assert.deepEqual(csvs.map((f) => f.name).sort(), ['teleop_episode_1.csv', 'teleop_episode_2.csv']);
+    const listed = Object.fromEntries(doc.dataArtifacts.map((a) => [a.uriOrRef, a.sha256]));
+    for (const f of csvs) assert.equal(listed[f.name], sha256(f.bytes), f.name);
+    // Japanese.
+    await page.click('[data-testid="lang-switch"]');
+    assert.match(await warning.innerText(), /^保存されていません：このブラウザがセッションを保存できませんでした/);
+    assert.equal(await page.locator('[data-testid="storage-download-episodes"]').innerText(), 'エピソードの CSV（2 件）をダウンロード');
+    await page.click('[data-testid="lang-switch"]');
+    // Storage back: the next save stores everything and the warning goes.
+    await page.evaluate(() => { Storage.prototype.setItem = window.__realSetItem; });
+    await canvas(page).focus();
+    await page.keyboard.press('r');
+    await warning.waitFor({ state: 'hidden' });
+    const back = JSON.parse(await page.evaluate(() => localStorage.getItem('bsv.teleop.session')));
+    assert.equal(back.episodes.length, 2);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

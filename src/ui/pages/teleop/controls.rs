@@ -1,6 +1,9 @@
 //! The live arm's buttons (`data-action` `engage`, `gripper`, `reset`, `end-episode`), their
-//! texts and pressed states, and the line that says how an episode ended
-//! (`data-tele="ended"`). They hide in the failure review.
+//! texts and pressed states, and the episode's outcome over the arm view (`data-tele="ended"`,
+//! `data-testid="episode-outcome"`, `data-outcome` `success|timeout|ended`): how it ended and,
+//! in Record ten, under which number it was recorded. They hide in the failure review.
+
+use std::cell::RefCell;
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
@@ -17,6 +20,21 @@ pub struct Controls {
     pub reset: Element,
     pub end: Element,
     ended: Element,
+    /// The outcome shown (rewritten in a new language).
+    shown: RefCell<Option<Ended>>,
+}
+
+/// How an episode ended.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ended {
+    /// `None`: ended by the pilot.
+    pub outcome: Option<Outcome>,
+    /// The episode's time, s.
+    pub t_s: f64,
+    /// Its number in the session, if it was recorded.
+    pub recorded: Option<usize>,
+    /// It was recorded labelled SUCCESS.
+    pub counted_success: bool,
 }
 
 impl Controls {
@@ -28,6 +46,7 @@ impl Controls {
             reset: find(root, "[data-action=\"reset\"]")?,
             end: find(root, "[data-action=\"end-episode\"]")?,
             ended: role(root, "ended")?,
+            shown: RefCell::new(None),
         })
     }
 
@@ -62,21 +81,44 @@ impl Controls {
         }
     }
 
-    /// How the episode ended (`outcome`; `None`: ended by the pilot), at `t_s`.
-    pub fn show_ended(&self, outcome: Option<Outcome>, t_s: f64) {
-        let text = match outcome {
-            Some(Outcome::Success) => {
-                ctx::t_strings("teleop-ended-success", &[("t", format!("{t_s:.2}"))])
-            }
-            Some(Outcome::Timeout) => ctx::t("teleop-ended-timeout"),
-            None => ctx::t("teleop-ended-pilot"),
-        };
-        self.ended.set_text_content(Some(&text));
+    /// How the episode ended, over the arm view.
+    pub fn show_ended(&self, ended: Ended) {
+        *self.shown.borrow_mut() = Some(ended);
+        self.render_ended();
         dom::show(&self.ended, true);
     }
 
-    /// The ended line hidden.
+    /// The outcome's text in the current language.
+    pub fn render_ended(&self) {
+        let Some(e) = *self.shown.borrow() else {
+            return;
+        };
+        let (outcome, kind) = match e.outcome {
+            Some(Outcome::Success) => (
+                ctx::t_strings("teleop-ended-success", &[("t", format!("{:.2}", e.t_s))]),
+                "success",
+            ),
+            Some(Outcome::Timeout) => (ctx::t("teleop-ended-timeout"), "timeout"),
+            None => (ctx::t("teleop-ended-pilot"), "ended"),
+        };
+        let _ = self.ended.set_attribute("data-outcome", kind);
+        let text = match e.recorded {
+            Some(n) => {
+                let id = if e.counted_success {
+                    "teleop-ended-recorded-success"
+                } else {
+                    "teleop-ended-recorded"
+                };
+                ctx::t_args(id, &[("outcome", outcome.into()), ("n", n.into())])
+            }
+            None => outcome,
+        };
+        self.ended.set_text_content(Some(&text));
+    }
+
+    /// The outcome hidden.
     pub fn hide_ended(&self) {
+        *self.shown.borrow_mut() = None;
         dom::show(&self.ended, false);
     }
 }

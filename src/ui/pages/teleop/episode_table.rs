@@ -52,13 +52,13 @@ impl EpisodeTables {
         if let Err(e) = render_comparison(&self.compare_body, first.as_ref(), &sum) {
             web_sys::console::warn_1(&e);
         }
-        let line = ctx::t_strings(
+        let line = ctx::t_args(
             "teleop-session-line",
             &[
-                ("pilot", session.pilot_id.clone()),
-                ("attempted", sum.attempted.to_string()),
-                ("successful", sum.successful.to_string()),
-                ("target", RECORD_TARGET.to_string()),
+                ("pilot", session.pilot_id.clone().into()),
+                ("attempted", sum.attempted.into()),
+                ("successful", sum.successful.into()),
+                ("target", RECORD_TARGET.into()),
             ],
         );
         self.session_line.set_text_content(Some(&line));

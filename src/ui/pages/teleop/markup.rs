@@ -1,6 +1,8 @@
-//! The page's markup: heading and disclaimer, the module bar, the arm view with its buttons and
-//! the review stepper, the readouts, the preflight checks, the label panel, the episodes with
-//! the downloads and the file opener, the repeatability table, the settings and the key map.
+//! The page's markup: heading, notices and the storage warning, introduction and disclaimer,
+//! the module bar, the arm view (the episode's outcome and the gamepad offer over it) with its
+//! buttons and the review stepper, the readouts, the preflight checks, the label panel, the
+//! episodes with the downloads and the file opener, the repeatability table, the settings and
+//! the key map.
 //! Every text is a Fluent id (`data-i18n`), filled by the shell. [`role`] and [`find`] find
 //! its parts; [`KEYS`] is the key map, shown on the page and in the `?` overlay.
 
@@ -76,7 +78,8 @@ fn modules() -> String {
     for (i, m) in Module::ALL.iter().enumerate() {
         html.push_str(&format!(
             "<li><button type=\"button\" class=\"tele-module\" data-module=\"{id}\">\
-             <span class=\"tele-module-n\">{n}</span> <span data-i18n=\"teleop-module-{id}\"></span></button></li>",
+             <span class=\"tele-module-n\">{n}</span> <span data-i18n=\"teleop-module-{id}\"></span></button>\
+             <span class=\"tele-module-why\" id=\"tele-why-{id}\" data-testid=\"module-unlock-{id}\" hidden></span></li>",
             id = m.id(),
             n = i + 1,
         ));
@@ -226,22 +229,51 @@ fn keymap() -> String {
     html
 }
 
+/// The warning that the session is not saved, with its downloads (`data-save-now`: a file
+/// name, or `episode-csvs` for every episode's CSV).
+fn storage_warning() -> String {
+    format!(
+        "<div class=\"tele-notice tele-warning\" data-testid=\"storage-warning\" role=\"alert\" hidden>\
+         <p data-i18n=\"teleop-storage-full\"></p><div class=\"tele-buttons\">\
+         <button type=\"button\" class=\"button primary\" data-save-now=\"{EVIDENCE_NAME}\" \
+         data-testid=\"storage-download-evidence\"></button>\
+         <button type=\"button\" class=\"button\" data-save-now=\"{EPISODES_NAME}\" \
+         data-testid=\"storage-download-table\"></button>\
+         <button type=\"button\" class=\"button\" data-save-now=\"episode-csvs\" \
+         data-testid=\"storage-download-episodes\"></button></div></div>"
+    )
+}
+
+/// The offer to use a gamepad that sends input while another device is chosen.
+fn gamepad_offer() -> String {
+    "<div class=\"tele-offer\" data-testid=\"gamepad-offer\" role=\"status\" hidden>\
+     <p data-tele=\"offer-text\"></p><div class=\"tele-buttons\">\
+     <button type=\"button\" class=\"button primary\" data-action=\"use-gamepad\" \
+     data-i18n=\"teleop-pad-offer-use\"></button>\
+     <button type=\"button\" class=\"button\" data-action=\"dismiss-gamepad\" \
+     data-i18n=\"teleop-pad-offer-dismiss\"></button></div></div>"
+        .to_string()
+}
+
 /// The page's HTML.
 pub fn page() -> String {
     format!(
         "<div class=\"tele\">\
          <header class=\"tele-head\"><h1 data-i18n=\"teleop-title\"></h1>\
-         <p class=\"tele-lede\" data-i18n=\"teleop-lede\"></p>\
-         <p class=\"tele-disclaimer\" data-testid=\"teleop-disclaimer\" data-i18n=\"teleop-disclaimer\"></p>\
          <p class=\"tele-notice\" data-tele=\"loading\" role=\"status\" hidden></p>\
-         <p class=\"tele-notice\" data-tele=\"restored\" role=\"status\" hidden></p></header>\
+         <p class=\"tele-notice\" data-tele=\"restored\" role=\"status\" hidden></p>{storage}</header>\
+         <div class=\"tele-intro\"><p class=\"tele-lede\" data-i18n=\"teleop-lede\"></p>\
+         <p class=\"tele-disclaimer\" data-testid=\"teleop-disclaimer\" data-i18n=\"teleop-disclaimer\"></p></div>\
          {modules}\
          <p class=\"tele-module-help\" data-tele=\"module-help\"></p>\
          <div class=\"tele-top\">\
          <section class=\"tele-card tele-view\">\
          <div class=\"tele-stage\" data-tele=\"stage\">\
          <canvas class=\"tele-canvas\" data-testid=\"teleop-canvas\" tabindex=\"0\" role=\"img\" aria-describedby=\"tele-readouts-list tele-readouts\" \
-         data-i18n-attr=\"aria-label=teleop-canvas-label\"></canvas></div>\
+         data-i18n-attr=\"aria-label=teleop-canvas-label\"></canvas>\
+         <div class=\"tele-overlay\">\
+         <p class=\"tele-ended\" data-tele=\"ended\" data-testid=\"episode-outcome\" role=\"status\" hidden></p>\
+         {offer}</div></div>\
          <p class=\"tele-stop\" data-tele=\"stop\" role=\"status\"></p>\
          <div class=\"tele-buttons\" data-tele=\"live-buttons\">\
          <button type=\"button\" class=\"button primary\" data-action=\"engage\" aria-pressed=\"true\"></button>\
@@ -250,7 +282,6 @@ pub fn page() -> String {
          <button type=\"button\" class=\"button\" data-action=\"end-episode\" data-i18n=\"teleop-end-episode\"></button>\
          <button type=\"button\" class=\"button\" data-action=\"next-module\" data-i18n=\"teleop-next-module\"></button></div>\
          <p class=\"tele-device\" data-tele=\"device-status\" role=\"status\"></p>\
-         <p class=\"tele-ended\" data-tele=\"ended\" role=\"status\" hidden></p>\
          <div class=\"tele-review\" data-tele=\"review\" hidden>\
          <p class=\"tele-sub\" data-tele=\"review-title\"></p>\
          <div data-tele=\"stepper\"></div>\
@@ -309,6 +340,8 @@ pub fn page() -> String {
          <p data-i18n=\"teleop-about-not\"></p></section>\
          </div>",
         modules = modules(),
+        storage = storage_warning(),
+        offer = gamepad_offer(),
         readouts = readouts_markup(),
         live = readouts::live_markup("tele"),
         keys = keymap(),

@@ -6,8 +6,8 @@
 //! The page is a struct of components, one file each: `live` (the simulation at 100 Hz),
 //! `devices`, `scene_view`, `readouts`, `controls` (the live arm's buttons), `session_panel`
 //! (`module_bar` with the preflight, `episode_table`, the file opener), `label_panel`,
-//! `review`, `settings`, `exports` and `loading` (both in slices), over `sessions` (the two
-//! sessions and their storage).
+//! `review`, `settings`, `exports` and `loading` (both in slices), `gamepad_offer` and
+//! `storage_warning`, over `sessions` (the two sessions and their storage).
 //! This file wires them: mount, events to components, the frame loop. The loop asks for
 //! frames only while something can change (`crate::view::teleop_input::FrameDemand`). The
 //! session is saved after every episode and label, every two seconds while recording and on
@@ -18,6 +18,7 @@ mod controls;
 mod devices;
 mod episode_table;
 mod exports;
+mod gamepad_offer;
 mod label_panel;
 mod live;
 mod loading;
@@ -29,6 +30,7 @@ mod scene_view;
 mod session_panel;
 mod sessions;
 mod settings;
+mod storage_warning;
 
 use std::cell::RefCell;
 use std::rc::{Rc, Weak};
@@ -37,7 +39,7 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, PointerEvent};
 
-use crate::teleop::session::{InputDevice, Module, Session};
+use crate::teleop::session::{episode_file_name, InputDevice, Module, Session};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::page::{MountCtx, Page, Shortcut};
@@ -45,9 +47,10 @@ use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::teleop_input::{key_action, KeyAction};
 
-use controls::Controls;
+use controls::{Controls, Ended};
 use devices::Devices;
 use exports::Exports;
+use gamepad_offer::GamepadOffer;
 use label_panel::LabelPanel;
 use live::{Live, SettingsEdit};
 use loading::{Loaded, Loader, Stored};
@@ -58,6 +61,7 @@ use scene_view::SceneView;
 use session_panel::{open_error_text, PanelAction, SessionPanel};
 use sessions::Sessions;
 use settings::SettingsForm;
+use storage_warning::StorageWarning;
 
 /// The page's components.
 struct Inner {
@@ -71,6 +75,8 @@ struct Inner {
     view: RefCell<SceneView>,
     readouts: Readouts,
     controls: Controls,
+    offer: GamepadOffer,
+    storage: StorageWarning,
     panel: SessionPanel,
     settings: RefCell<SettingsForm>,
     labels: RefCell<LabelPanel>,
@@ -105,6 +111,8 @@ impl Page for TeleopPage {
         let view = SceneView::find(&stage)?;
         let readouts = Readouts::find(&root)?;
         let controls = Controls::find(&root)?;
+        let offer = GamepadOffer::find(&root)?;
+        let storage = StorageWarning::find(&root)?;
         let panel = SessionPanel::find(&root)?;
         let labels = LabelPanel::find(&root)?;
         let review = Review::find(&root)?;
@@ -120,6 +128,8 @@ impl Page for TeleopPage {
             view: RefCell::new(view),
             readouts,
             controls,
+            offer,
+            storage,
             panel,
             settings: RefCell::new(form),
             labels: RefCell::new(labels),
@@ -186,6 +196,14 @@ impl Inner {
         scope.listen_for(&c.gripper, "click", me, |p, _| p.toggle_gripper())?;
         scope.listen_for(&c.reset, "click", me, |p, _| p.reset())?;
         scope.listen_for(&c.end, "click", me, |p, _| p.end_episode())?;
+        scope.listen_for(&self.offer.accept, "click", me, |p, _| {
+            p.offer.hide();
+            p.choose_device(InputDevice::Gamepad);
+        })?;
+        scope.listen_for(&self.offer.dismiss, "click", me, |p, _| {
+            p.offer.decline();
+            focus_without_scroll(&p.canvas);
+        })?;
         scope.listen_for(&self.panel.bar.next, "click", me, |p, _| {
             let next = p.sessions.module().next();
             if p.sessions.allows(next) {
@@ -218,6 +236,7 @@ impl Inner {
                 }
             }
         })?;
+        scope.listen_for(&self.root, "keydown", me, |p, e| p.key_on_button(e))?;
         let window = dom::window()?;
         scope.listen_for(&window, "keyup", me, |p, e| {
             if let Some(k) = e.dyn_ref::<KeyboardEvent>() {
@@ -271,6 +290,35 @@ impl Inner {
         }
         self.request_frame();
         true
+    }
+
+    /// A key on one of the page's buttons (the focus stays on a button after a click): the
+    /// arm's hold keys, K and R still drive it; Space and Enter stay the button's, L the
+    /// shell's language key.
+    fn key_on_button(&self, e: &DomEvent) {
+        let Some(k) = e.dyn_ref::<KeyboardEvent>() else {
+            return;
+        };
+        let on_button = e
+            .target()
+            .and_then(|t| t.dyn_into::<Element>().ok())
+            .is_some_and(|el| el.tag_name().eq_ignore_ascii_case("button"));
+        if !on_button
+            || crate::ui::kit::keymap::has_command_modifier(k)
+            || crate::ui::overlay::is_open()
+            || self.loader.is_loading()
+            || self.in_review()
+        {
+            return;
+        }
+        let driving = matches!(
+            key_action(&k.code()),
+            Some(KeyAction::Hold { .. } | KeyAction::ToggleGripper | KeyAction::Reset)
+        );
+        if driving && self.key_down(k) {
+            e.prevent_default();
+            e.stop_propagation();
+        }
     }
 
     fn pointer_world(&self, e: &PointerEvent) -> (f64, f64) {
@@ -352,6 +400,11 @@ impl Inner {
             self.render_buttons();
         }
         let device = self.sessions.current.borrow().input_device;
+        {
+            let d = self.devices.borrow();
+            self.offer
+                .polled(device, d.pad_name.as_deref(), d.pad_out.active);
+        }
         let stepped = self.live.borrow_mut().advance(
             t_ms,
             &mut self.devices.borrow_mut(),
@@ -460,14 +513,23 @@ impl Inner {
             live.ended = true;
             (live.episode(), live.sim.done())
         };
-        let t_s = episode.records.last().map_or(0.0, |r| r.t_s);
-        self.controls.show_ended(outcome, t_s);
-        if self.sessions.module().records() {
-            let n = self.sessions.current.borrow_mut().record(episode, false);
-            self.open_label(n);
-            self.render_session();
-            self.save();
+        let mut ended = Ended {
+            outcome,
+            t_s: episode.records.last().map_or(0.0, |r| r.t_s),
+            recorded: None,
+            counted_success: false,
+        };
+        if !self.sessions.module().records() {
+            self.controls.show_ended(ended);
+            return;
         }
+        let (n, counted_success) = self.sessions.record(episode);
+        ended.recorded = Some(n);
+        ended.counted_success = counted_success;
+        self.controls.show_ended(ended);
+        self.open_label(n);
+        self.render_session();
+        self.save();
     }
 
     /// Records the episode under way, if the module records (before the module or the
@@ -603,6 +665,12 @@ impl Inner {
                 self.exports
                     .download(&file, &self.sessions.current.borrow());
             }
+            Some(PanelAction::DownloadEpisodeCsvs) => {
+                let s = self.sessions.current.borrow();
+                for e in &s.episodes {
+                    self.exports.download(&episode_file_name(e.number), &s);
+                }
+            }
             Some(PanelAction::SecondSession) => self.second_session(),
             Some(PanelAction::NewSession) => self.new_session(),
             None => {}
@@ -736,11 +804,18 @@ impl Inner {
         self.request_frame();
     }
 
+    /// Stores the session; says so when the browser refuses (the session goes on in memory).
     fn save(&self) {
         self.sessions.save(|| {
             self.recording_in_progress()
                 .then(|| self.live.borrow().commands_only())
         });
+        self.render_storage();
+    }
+
+    fn render_storage(&self) {
+        let episodes = self.sessions.current.borrow().episodes.len();
+        self.storage.render(self.sessions.unsaved(), episodes);
     }
 
     fn render_session(&self) {
@@ -766,6 +841,9 @@ impl Inner {
         self.labels.borrow().render();
         self.render_device_status(true);
         self.render_buttons();
+        self.controls.render_ended();
+        self.offer.render();
+        self.render_storage();
         self.render_modules();
         self.render_session();
         self.review.relocalize();

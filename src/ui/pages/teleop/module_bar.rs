@@ -1,5 +1,7 @@
 //! The module bar (`data-module`, `aria-current` on the current one, `aria-disabled` on those
-//! not yet open) with its help line and Next module, and the preflight under the readouts:
+//! not yet open, each of those with the line that says what opens it, shown under it and its
+//! accessible description) with its help line and Next module, and the preflight under the
+//! readouts:
 //! the device choice (`data-device`, `aria-checked`), the checks (`data-check`, `data-state`
 //! `todo|done|failed`) and the device status (the pad's name, or the hint of the device).
 
@@ -8,7 +10,7 @@ use std::cell::RefCell;
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use crate::teleop::session::{InputDevice, Module, RECORD_TARGET};
+use crate::teleop::session::{InputDevice, Module, Session, RECORD_TARGET};
 use crate::ui::{ctx, dom};
 
 use super::markup::{bool_text, find, role};
@@ -17,6 +19,8 @@ use super::sessions::Sessions;
 /// The bar and the preflight.
 pub struct ModuleBar {
     pub modules: Vec<(Module, Element)>,
+    /// Under each module: what opens it (shown while it is not open).
+    unlocks: Vec<Element>,
     pub devices: Vec<(InputDevice, Element)>,
     pub next: Element,
     help: Element,
@@ -39,8 +43,13 @@ impl ModuleBar {
             .iter()
             .map(|d| Ok((*d, find(root, &format!("[data-device=\"{}\"]", d.id()))?)))
             .collect::<Result<Vec<_>, JsValue>>()?;
+        let unlocks = Module::ALL
+            .iter()
+            .map(|m| find(root, &format!("#tele-why-{}", m.id())))
+            .collect::<Result<Vec<_>, JsValue>>()?;
         Ok(ModuleBar {
             modules,
+            unlocks,
             next: find(root, "[data-action=\"next-module\"]")?,
             help: role(root, "module-help")?,
             preflight: role(root, "preflight")?,
@@ -96,17 +105,34 @@ impl ModuleBar {
         self.render_open(sessions);
     }
 
-    /// Which modules are open (and Next module).
+    /// Which modules are open, what opens the others (and Next module).
     pub fn render_open(&self, sessions: &Sessions) {
-        for (m, el) in &self.modules {
-            let _ = el.set_attribute("aria-disabled", bool_text(!sessions.allows(*m)));
+        let s = sessions.current.borrow();
+        for ((m, el), why) in self.modules.iter().zip(&self.unlocks) {
+            let open = sessions.allows(*m);
+            let _ = el.set_attribute("aria-disabled", bool_text(!open));
+            if open {
+                let _ = el.remove_attribute("aria-describedby");
+            } else {
+                why.set_text_content(Some(&ctx::t(unlock_message(*m, &s))));
+                let _ = el.set_attribute("aria-describedby", &why.id());
+            }
+            dom::show(why, !open);
         }
-        let current = sessions.module();
+        let current = s.module;
+        drop(s);
         let next = current.next();
         let next_ok = next != current && sessions.allows(next);
         let _ = self
             .next
             .set_attribute("aria-disabled", bool_text(!next_ok));
+        if next_ok || next == current {
+            let _ = self.next.remove_attribute("aria-describedby");
+        } else {
+            let _ = self
+                .next
+                .set_attribute("aria-describedby", &format!("tele-why-{}", next.id()));
+        }
     }
 
     /// The device status: the pad's name or that none is connected, or the hint of the
@@ -132,5 +158,14 @@ impl ModuleBar {
     /// Whether the device status is still to be written.
     pub fn device_unwritten(&self) -> bool {
         self.shown_device.borrow().is_none()
+    }
+}
+
+/// The Fluent id of what opens module `m` of `session` while it is closed.
+fn unlock_message(m: Module, session: &Session) -> &'static str {
+    match m {
+        Module::RecordTen if session.preflight.moved => "teleop-unlock-record-ten-reset",
+        Module::RecordTen => "teleop-unlock-record-ten",
+        _ => "teleop-unlock-episode",
     }
 }

@@ -17,6 +17,7 @@ use super::loading::Stored;
 use super::markup::role;
 use super::module_bar::ModuleBar;
 use super::sessions::Sessions;
+use super::storage_warning::EPISODE_CSVS;
 
 /// A click on one of the panel's buttons.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -25,8 +26,10 @@ pub enum PanelAction {
     Replay(usize),
     /// Label episode n again (`data-relabel`).
     Relabel(usize),
-    /// Download a file (`data-download`).
+    /// Download a file (`data-download`, or `data-save-now` of the storage warning).
     Download(String),
+    /// Download every episode's CSV (the storage warning).
+    DownloadEpisodeCsvs,
     SecondSession,
     NewSession,
 }
@@ -108,6 +111,12 @@ impl SessionPanel {
             Some(PanelAction::Relabel(n))
         } else if let Some(file) = button.get_attribute("data-download") {
             Some(PanelAction::Download(file))
+        } else if let Some(file) = button.get_attribute("data-save-now") {
+            Some(if file == EPISODE_CSVS {
+                PanelAction::DownloadEpisodeCsvs
+            } else {
+                PanelAction::Download(file)
+            })
         } else {
             match button.get_attribute("data-action").as_deref() {
                 Some("second-session") => Some(PanelAction::SecondSession),

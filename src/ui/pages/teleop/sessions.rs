@@ -2,11 +2,15 @@
 //! side), and their copies in localStorage: which modules they open, how one session gives
 //! way to another (the one replaced is kept as the first when it has episodes), and saving.
 //! Only the commands of an episode are stored; its records are simulated again on load.
+//! A store the browser refuses (its storage full, or turned off) leaves the sessions in
+//! memory, unchanged, and marks them unsaved until a later store succeeds.
 
 use std::cell::{Cell, RefCell};
 
+use wasm_bindgen::JsValue;
+
 use crate::teleop::session::{InputDevice, Module, Session};
-use crate::teleop::Episode;
+use crate::teleop::{Episode, Label};
 use crate::ui::dom;
 use crate::ui::schedule::now_ms;
 
@@ -41,6 +45,8 @@ pub struct Sessions {
     /// stays until they are).
     held: Cell<bool>,
     last_save_ms: Cell<f64>,
+    /// The browser refused the last store of the current session, of the first session.
+    unsaved: Cell<(bool, bool)>,
 }
 
 impl Sessions {
@@ -50,6 +56,7 @@ impl Sessions {
             first: RefCell::new(first),
             held: Cell::new(false),
             last_save_ms: Cell::new(0.0),
+            unsaved: Cell::new((false, false)),
         }
     }
 
@@ -121,6 +128,23 @@ impl Sessions {
         self.replace(Session::new(&pilot, device, &iso_now()), false);
     }
 
+    /// Records a just-ended episode in the current session: its number, and whether it was
+    /// recorded labelled SUCCESS. A SUCCESS the rules propose (the goal held, no failure
+    /// event before it) is so labelled at once, as Isaac Lab's recorder marks a successful
+    /// demonstration: it counts in the figures and the evidence, and the pilot may relabel it.
+    pub fn record(&self, episode: Episode) -> (usize, bool) {
+        let mut s = self.current.borrow_mut();
+        let n = s.record(episode, false);
+        let Some(entry) = s.episodes.last_mut() else {
+            return (n, false);
+        };
+        let success = entry.proposal() == (Label::Success, None);
+        if success {
+            entry.set_label(Label::Success, None, "");
+        }
+        (n, success)
+    }
+
     /// Whether a save is due while recording.
     pub fn save_due(&self) -> bool {
         now_ms() - self.last_save_ms.get() > SAVE_EVERY_MS
@@ -135,7 +159,8 @@ impl Sessions {
         self.last_save_ms.set(now_ms());
         let in_progress = in_progress();
         let json = self.current.borrow().to_json(in_progress.as_ref());
-        dom::storage_set(STORE_KEY, &json);
+        let refused = store(STORE_KEY, &json).is_err();
+        self.unsaved.set((refused, self.unsaved.get().1));
     }
 
     /// Stores the first session.
@@ -144,7 +169,23 @@ impl Sessions {
             return;
         }
         if let Some(first) = self.first.borrow().as_ref() {
-            dom::storage_set(FIRST_KEY, &first.to_json(None));
+            let refused = store(FIRST_KEY, &first.to_json(None)).is_err();
+            self.unsaved.set((self.unsaved.get().0, refused));
         }
     }
+
+    /// Whether the browser refused to store a session (it lives only in this tab).
+    pub fn unsaved(&self) -> bool {
+        let (current, first) = self.unsaved.get();
+        current || first
+    }
+}
+
+/// Stores `value` under `key` in localStorage; `Err` when the browser refuses (a
+/// `QuotaExceededError`, storage turned off).
+fn store(key: &str, value: &str) -> Result<(), JsValue> {
+    let storage = dom::window()?
+        .local_storage()?
+        .ok_or_else(|| JsValue::from_str("no localStorage"))?;
+    storage.set_item(key, value)
 }
