@@ -21,7 +21,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { openApp, browser, readouts, screenshots } from './harness.mjs';
+import { openApp, browser, readouts, screenshots, OUT } from './harness.mjs';
 import { serveAppWithCli, BSV, download } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
@@ -119,14 +119,22 @@ test('an injected gamepad moves the arm and is named', async () => {
     assert.equal(await page.locator('[data-field="rot_sensitivity"]').inputValue(), '1.6');
     const r0 = await shownReadouts(page);
     // Left stick up (negative in the standard mapping): +x.
+    // Each stick is held until the readout moves (a loaded machine may give the page few
+    // frames in a fixed time), then let go.
+    const moved = (key, from) => page.waitForFunction(([k, v]) => {
+      const el = document.querySelector(`[data-readout="${k}"]`);
+      return el && Number(el.textContent) > Number(v) + 0.01;
+    }, [key, from], { timeout: 10000 });
     await page.evaluate(() => { window.__testPad.axes[1] = -1; });
     await page.waitForTimeout(250);
+    await moved('x', r0.x);
     await page.evaluate(() => { window.__testPad.axes[1] = 0; });
     const r1 = await shownReadouts(page);
     assert.ok(Number(r1.x) > Number(r0.x) + 0.01, `x ${r0.x} → ${r1.x}`);
     // Right stick up: +z.
     await page.evaluate(() => { window.__testPad.axes[3] = -1; });
     await page.waitForTimeout(250);
+    await moved('z', r1.z);
     await page.evaluate(() => { window.__testPad.axes[3] = 0; });
     const r2 = await shownReadouts(page);
     assert.ok(Number(r2.z) > Number(r1.z) + 0.01, `z ${r1.z} → ${r2.z}`);
@@ -855,13 +863,13 @@ test('a success counts at once, its outcome over the arm view; the session line 
   try {
     // The keys work without a click on the arm view, and the hint says so.
     assert.doesNotMatch(await page.locator('[data-tele="device-status"]').innerText(), /click/i);
-    const x0 = Number((await readouts(page)).x);
+    const x0 = Number((await shownReadouts(page)).x);
     await hold(page, 'w', 250);
-    const x1 = Number((await readouts(page)).x);
+    const x1 = Number((await shownReadouts(page)).x);
     assert.ok(x1 > x0 + 0.01, `W moves the tip with the page focused: ${x0} → ${x1}`);
     await page.locator('[data-device="keyboard"]').click();
     await hold(page, 'w', 250);
-    const x2 = Number((await readouts(page)).x);
+    const x2 = Number((await shownReadouts(page)).x);
     assert.ok(x2 > x1 + 0.01, `W moves the tip with a button focused: ${x1} → ${x2}`);
     await padPreflightThenRecord(page);
     const text = await padReachToSuccess(page);
