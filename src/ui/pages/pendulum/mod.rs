@@ -140,7 +140,8 @@ struct Inner {
     stepper_slot: Element,
     stepper: RefCell<Option<StepperWidget<Sim>>>,
     /// Whether the run plays again from the start at its end: on an opening that plays by
-    /// itself, until the visitor acts (a key, a pointer in the page, an edit).
+    /// itself, until the visitor acts (a key, a click in the page, an edit; a touch that
+    /// scrolls the page is no act).
     looping: Cell<bool>,
     /// Waits out the pause before a looping run starts again.
     loop_timer: Rc<Timer>,
@@ -280,7 +281,7 @@ impl Inner {
     fn install(&self) -> Result<(), JsValue> {
         let mut scope = self.scope.borrow_mut();
         let me = &self.me;
-        for kind in ["pointerdown", "keydown"] {
+        for kind in ["click", "keydown"] {
             scope.listen_for(&self.root, kind, me, |p, _| p.stop_looping())?;
         }
         let form = self.params.borrow().element.clone();
