@@ -28,6 +28,7 @@ pendulum-ro-drift = Drift
 pendulum-ro-period = Period (from zero crossings)
 pendulum-ro-drift-euler = Drift, Euler
 pendulum-ro-drift-rk4 = Drift, RK4
+pendulum-energy-note = Why the two energies differ: the recipe's ke, pe and total treat the capsule as a point mass at its end (distance L); the true energy uses the capsule's inertia I about the hinge and its centre at L/2.
 pendulum-unit-s = s
 pendulum-unit-rad = rad
 pendulum-unit-rad-s = rad/s

@@ -28,6 +28,7 @@ pendulum-ro-drift = ずれ
 pendulum-ro-period = 周期（ゼロ交差から）
 pendulum-ro-drift-euler = ずれ（オイラー法）
 pendulum-ro-drift-rk4 = ずれ（RK4）
+pendulum-energy-note = 2 つのエネルギーが違う理由：レシピの ke・pe・合計はカプセルを先端（距離 L）にある質点として計算し、真のエネルギーはヒンジまわりのカプセルの慣性モーメント I と L/2 にある重心を使います。
 pendulum-unit-s = 秒
 pendulum-unit-rad = ラジアン
 pendulum-unit-rad-s = ラジアン/秒

@@ -4,8 +4,9 @@
 // drifts with RK4's smaller; Japanese leaves no English UI text; a bad timestep shows its
 // message and the run keeps the last valid timestep; the Python line only when just the duration
 // differs; the PNG holds both plots; the timestep slider sets h (field, URL, run); a damped run
-// that has come to rest offers Replay and damping 0. Screenshots (EN/JA 1920×1080, projector,
-// phone 390 px) go to tests/e2e/out/. The frame work while playing is a figure of
+// that has come to rest offers Replay and damping 0; the opening run loops until a key; a line
+// beside the readouts says why the two energies differ (EN, JA). Screenshots (EN/JA
+// 1920×1080, projector, phone 390 px) go to tests/e2e/out/. The frame work while playing is a figure of
 // tests/bench/pendulum.bench.mjs.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -302,4 +303,52 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
       }
     },
   });
+});
+
+test('the opening run loops until a key; then it stops at its end', async () => {
+  // A 1 s run (no t= in the URL): it plays by itself, pauses at its end, plays again from 0.
+  const { page, errors, close } = await open('#/pendulum-energy?duration_s=1');
+  try {
+    const t = async () => (await pageValues(page)).t;
+    await page.waitForFunction(() => Number(document.querySelector('[data-readout="t"]').dataset.value) >= 0.99, null, { timeout: 5000 });
+    const run = page.locator('[data-action="run"]');
+    // At the end it pauses (not playing) before it starts again.
+    await page.waitForFunction(() => document.querySelector('[data-action="run"]').getAttribute('aria-pressed') === 'false', null, { timeout: 2000 });
+    assert.ok((await t()) >= 0.99);
+    await page.waitForFunction(() => Number(document.querySelector('[data-readout="t"]').dataset.value) < 0.5, null, { timeout: 4000 });
+    const t0 = await t();
+    await page.waitForFunction((t0) => Number(document.querySelector('[data-readout="t"]').dataset.value) > t0 + 0.1, t0, { timeout: 3000 });
+    assert.equal(await run.getAttribute('aria-pressed'), 'true');
+    // A key (space pauses, space plays on): from now on the run stops at its end.
+    await page.locator('[data-testid="pendulum-energy-canvas"]').focus();
+    await page.keyboard.press(' ');
+    assert.equal(await run.getAttribute('aria-pressed'), 'false');
+    await page.keyboard.press(' ');
+    await page.waitForFunction(() => Number(document.querySelector('[data-readout="t"]').dataset.value) >= 0.99, null, { timeout: 5000 });
+    await page.waitForTimeout(2500);
+    assert.ok((await t()) >= 0.99, `t ${await t()} after the end and the pause`);
+    assert.equal(await run.getAttribute('aria-pressed'), 'false');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a line beside the readouts says why the two energies differ, EN and JA', async () => {
+  for (const [lang, pattern] of [['en', /point mass/], ['ja', /質点/]]) {
+    const { page, errors, close } = await open(`#/pendulum-energy?damping=0&lang=${lang}`);
+    try {
+      const note = page.locator('[data-pend="energy-note"]');
+      assert.equal(await note.isVisible(), true, lang);
+      assert.match(await note.innerText(), pattern);
+      assert.match(await note.innerText(), /I/);
+      // In the same card as the two readouts it explains.
+      const card = note.locator('xpath=ancestor::section[1]');
+      assert.equal(await card.locator('[data-readout="total"]').count(), 1);
+      assert.equal(await card.locator('[data-readout="true-energy"]').count(), 1);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
 });

@@ -29,7 +29,8 @@ pub fn page() -> String {
          <label class=\"pend-switch\"><input type=\"checkbox\" data-field=\"compare\">\
          <span data-i18n=\"pendulum-compare\"></span></label>\
          <p class=\"pend-note\" data-i18n=\"pendulum-compare-note\"></p></section>\
-         <section class=\"pend-card\"><h2 data-i18n=\"pendulum-readouts-title\"></h2>{readouts}</section>\
+         <section class=\"pend-card\"><h2 data-i18n=\"pendulum-readouts-title\"></h2>{readouts}\
+         <p class=\"pend-note\" data-pend=\"energy-note\" data-i18n=\"pendulum-energy-note\"></p></section>\
          </div>\
          <section class=\"pend-card\"><h2 data-i18n=\"pendulum-plots-title\"></h2>\
          <div class=\"pend-plots\">\

@@ -34,7 +34,7 @@ use crate::ui::kit::scope::Scope;
 use crate::ui::kit::stepper::{Command, Length, Speed, StepModel, StepperOptions, StepperWidget};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{MountCtx, Page, Shortcut};
-use crate::ui::schedule::now_ms;
+use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::pendulum::{cli_args, other, PageQuery, Track};
 
@@ -50,6 +50,8 @@ const DEFAULT_SPEED: usize = 3;
 const TIMESTEPS: [f64; 10] = [0.0005, 0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3];
 /// At the end of a damped run, below this fraction of E(0) left the pendulum counts as at rest.
 const AT_REST: f64 = 0.02;
+/// The pause at the end of a looping run before it plays again from the start, ms.
+const LOOP_PAUSE_MS: i32 = 1200;
 
 /// The run: one track per integrator shown (the page's first), stepped to the index asked.
 pub struct Sim {
@@ -137,6 +139,12 @@ struct Inner {
     end_shown: RefCell<Option<(EndNotice, FluentTexts)>>,
     stepper_slot: Element,
     stepper: RefCell<Option<StepperWidget<Sim>>>,
+    /// Whether the run plays again from the start at its end: on an opening that plays by
+    /// itself, until the visitor acts (a key, a click in the page, an edit; a touch that
+    /// scrolls the page is no act).
+    looping: Cell<bool>,
+    /// Waits out the pause before a looping run starts again.
+    loop_timer: Rc<Timer>,
     view: RefCell<view::PendulumView>,
     plots: RefCell<plots::Plots>,
     params: RefCell<params::Params>,
@@ -179,6 +187,7 @@ impl Page for PendulumPage {
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| {
             let mut scope = Scope::new();
             let url = Some(UrlWriter::new(&mut scope, me, Inner::query));
+            let loop_timer = scope.timer(me, Inner::loop_again);
             Inner {
                 me: me.clone(),
                 sim,
@@ -193,6 +202,8 @@ impl Page for PendulumPage {
                 end_shown: RefCell::new(None),
                 stepper_slot,
                 stepper: RefCell::new(None),
+                looping: Cell::new(false),
+                loop_timer,
                 view: RefCell::new(view),
                 plots: RefCell::new(plots),
                 params: RefCell::new(form),
@@ -217,7 +228,10 @@ impl Page for PendulumPage {
         let h = inner.sim.borrow().params.timestep_s;
         match query.t {
             Some(t) => inner.command(Command::Seek((t / h).round() as u64)),
-            None if !reduced_motion() => inner.command(Command::Play),
+            None if !reduced_motion() => {
+                inner.looping.set(true);
+                inner.command(Command::Play);
+            }
             None => {}
         }
         Ok(PendulumPage(inner))
@@ -236,6 +250,7 @@ impl Page for PendulumPage {
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
+        self.0.stop_looping();
         self.0
             .stepper
             .borrow()
@@ -266,6 +281,9 @@ impl Inner {
     fn install(&self) -> Result<(), JsValue> {
         let mut scope = self.scope.borrow_mut();
         let me = &self.me;
+        for kind in ["click", "keydown"] {
+            scope.listen_for(&self.root, kind, me, |p, _| p.stop_looping())?;
+        }
         let form = self.params.borrow().element.clone();
         let note_edit = |p: &Inner, e: &web_sys::Event| {
             if let Some(el) = e.target().and_then(|t| t.dyn_into::<Element>().ok()) {
@@ -336,8 +354,36 @@ impl Inner {
         }
     }
 
+    /// The visitor acted: the run stops at its end from now on.
+    fn stop_looping(&self) {
+        self.looping.set(false);
+        self.loop_timer.cancel();
+    }
+
+    /// A looping run at its end: from the start again once it has stopped (the timer waits
+    /// out [`LOOP_PAUSE_MS`] first).
+    fn loop_again(&self) {
+        if !self.looping.get() {
+            return;
+        }
+        let at_end = self
+            .sim
+            .try_borrow()
+            .is_ok_and(|sim| sim.index >= sim.steps);
+        if !at_end {
+            return;
+        }
+        if self.stepper.borrow().as_ref().is_some_and(|s| s.playing()) {
+            self.loop_timer.schedule(LOOP_PAUSE_MS);
+            return;
+        }
+        self.command(Command::Start);
+        self.command(Command::Play);
+    }
+
     /// A field changed: a valid set restarts the run, a refused one keeps the last run.
     fn edited(&self) {
+        self.stop_looping();
         let texts = self.params.borrow().texts();
         let checked = self.params.borrow_mut().check();
         self.exports.kit.clear_status();
@@ -443,6 +489,7 @@ impl Inner {
     /// the run is over), and its duration, ms.
     #[cfg(feature = "bench")]
     fn bench_frame(&self, steps: u64) -> f64 {
+        self.stop_looping();
         let over = self
             .sim
             .try_borrow()
@@ -613,6 +660,9 @@ impl Inner {
                 readouts.announce(&v);
             }
             self.show_end(&sim, track, playing, v.t);
+            if self.looping.get() && sim.index >= sim.steps {
+                self.loop_timer.schedule(LOOP_PAUSE_MS);
+            }
         }
         let work = now_ms() - started;
         drop(sim);
