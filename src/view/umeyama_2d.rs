@@ -458,6 +458,27 @@ pub fn new_point_spot(points: &[[f64; 2]]) -> [f64; 2] {
     [radius * angle.cos(), radius * angle.sin()]
 }
 
+// ---------- Labels ----------
+
+/// Where a label box of `size` (CSS px) beside a mark at `p` goes: its top-left corner, `gap`
+/// px from `p` up-right, else up-left, down-right, down-left, the first whose box keeps
+/// `clear` px from every circle of `avoid` (centre, radius); up-right when none does. A circle
+/// centred on `p` (the labelled mark itself) is not avoided.
+pub fn label_corner(p: DVec2, size: DVec2, gap: f64, avoid: &[(DVec2, f64)], clear: f64) -> DVec2 {
+    let corners = [
+        p + DVec2::new(gap, -gap - size.y),
+        p + DVec2::new(-gap - size.x, -gap - size.y),
+        p + DVec2::new(gap, gap),
+        p + DVec2::new(-gap - size.x, gap),
+    ];
+    let free = |c: &DVec2| {
+        avoid
+            .iter()
+            .all(|(q, r)| q.distance(p) < 0.5 || q.clamp(*c, *c + size).distance(*q) > r + clear)
+    };
+    corners.iter().copied().find(free).unwrap_or(corners[0])
+}
+
 // ---------- The true similarity's handles ----------
 
 /// The rotation handle: `t + s (cos θ, sin θ)`, the image of `(1, 0)` under the truth.
@@ -912,6 +933,27 @@ mod tests {
         );
         let out = crate::recipes::run(INFO.id, &run.raw()).unwrap();
         assert!(out.file(POINTS_CSV).is_some());
+    }
+
+    #[test]
+    fn labels_keep_clear_of_other_handles() {
+        let p = DVec2::new(100.0, 100.0);
+        let size = DVec2::new(20.0, 12.0);
+        // Nothing near: up-right.
+        assert_eq!(
+            label_corner(p, size, 6.0, &[(p, 8.0)], 3.0),
+            DVec2::new(106.0, 82.0)
+        );
+        // A handle up-right: up-left.
+        let handle = (DVec2::new(115.0, 88.0), 6.0);
+        let c = label_corner(p, size, 6.0, &[handle], 3.0);
+        assert_eq!(c, DVec2::new(74.0, 82.0));
+        // Handles above on both sides: down-right.
+        let left = (DVec2::new(85.0, 88.0), 6.0);
+        assert_eq!(
+            label_corner(p, size, 6.0, &[handle, left], 3.0),
+            DVec2::new(106.0, 106.0)
+        );
     }
 
     #[test]

@@ -689,3 +689,41 @@ test('screenshots: English and Japanese at 1920×1080, projector mode', async ()
     await close();
   }
 });
+
+test('projector at 1280x800: each readout value is one line of a fixed width; x labels stay inside the canvas', async () => {
+  const { page, errors, close } = await openIk('#/ik-2r?lang=ja', {
+    viewport: { width: 1280, height: 800 }, storage: { 'bsv.projector': '1' },
+  });
+  try {
+    assert.ok(await page.evaluate(() => document.documentElement.classList.contains('projector')));
+    // Each value's box, and whether the values of a row share a line.
+    const boxes = () => page.evaluate(() => [...document.querySelectorAll('.ik2r-readouts [data-readout]')].map((e) => {
+      const r = e.getBoundingClientRect();
+      const lh = parseFloat(getComputedStyle(e).lineHeight) || 1.2 * parseFloat(getComputedStyle(e).fontSize);
+      const row = [...(e.closest('dd, .ik2r-matrix-row')?.querySelectorAll('[data-readout]') ?? [])];
+      const oneRow = row.every((o) => Math.abs(o.getBoundingClientRect().top - r.top) < 2);
+      return { name: e.dataset.readout, w: r.width, h: r.height, lh, oneRow };
+    }));
+    const g = await armGeometry(page);
+    await dragTipTo(page, clientAt(g, 0.05, 0.19));
+    const a = await boxes();
+    await dragTipTo(page, clientAt(g, -0.17, -0.03));
+    const b = await boxes();
+    assert.equal(a.length, 14);
+    for (const [i, box] of a.entries()) {
+      assert.ok(box.h <= 1.5 * box.lh, `${box.name}: ${box.h} px tall, line ${box.lh} px`);
+      assert.ok(box.oneRow, `${box.name}: its row's values share a line`);
+      assert.ok(Math.abs(box.w - b[i].w) < 0.5, `${box.name}: width ${box.w} then ${b[i].w}`);
+    }
+    // The arm view's x labels are whole inside the canvas, and there are some.
+    const labels = await page.evaluate(() => document.querySelector('[data-testid="ik-2r-canvas"]').dataset.xLabels
+      .split(';').filter(Boolean).map((l) => l.split('@')[1].split(',').map(Number)));
+    assert.ok(labels.length >= 2, `x labels: ${labels.length}`);
+    for (const [left, right] of labels) {
+      assert.ok(left >= 0 && right <= g.width, `x label [${left}, ${right}] inside 0..${g.width}`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

@@ -470,3 +470,32 @@ test('a huge sigma (1e308: targets near ±1e308 and infinite) leaves the page wo
     await close();
   }
 });
+
+test('the axes carry tick labels of round values, placed on the grid and inside the canvas', async () => {
+  const { page, errors, close } = await open('#/umeyama-2d', { viewport: { width: 1366, height: 768 } });
+  try {
+    await page.waitForSelector('[data-testid="umeyama-2d-canvas"][data-ticks-x]');
+    const { ticks, w, h } = await canvas(page).evaluate((c) => ({
+      ticks: [c.dataset.ticksX, c.dataset.ticksY].map((t) => t.split(';').filter(Boolean).map((v) => v.split('@').map(Number))),
+      w: c.clientWidth,
+      h: c.clientHeight,
+    }));
+    for (const [axis, list, size] of [['x', ticks[0], w], ['y', ticks[1], h]]) {
+      assert.ok(list.length >= 3, `${axis} ticks: ${JSON.stringify(list)}`);
+      const step = list[1][0] - list[0][0];
+      const px = list[1][1] - list[0][1];
+      for (const [i, [v, at]] of list.entries()) {
+        assert.ok(Number.isFinite(v) && at > 0 && at < size, `${axis} tick ${v} at ${at}`);
+        // Evenly spaced values and pixels: the labels sit on the grid.
+        assert.ok(Math.abs(v - list[0][0] - i * step) < 1e-9 * Math.max(1, Math.abs(v)), `${axis} tick ${v}`);
+        assert.ok(Math.abs(at - list[0][1] - i * px) < 1, `${axis} tick ${v} at ${at}`);
+      }
+      // Round values: 1, 2 or 5 times a power of ten apart.
+      const mant = Math.abs(step) / 10 ** Math.floor(Math.log10(Math.abs(step)));
+      assert.ok([1, 2, 5, 10].some((m) => Math.abs(mant - m) < 1e-6), `${axis} step ${step}`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

@@ -445,15 +445,30 @@ impl ArmView {
         ctx.set_font(&ink.font(11.0, false));
         let label_w = ink.text_px(11.0) * 3.6;
         let label_every = (label_w / step_px).ceil().max(1.0) as i64;
+        // Only labels whole inside the canvas (a cut "-400" would read "00").
+        const EDGE: f64 = 3.0;
+        let text_h = ink.text_px(11.0);
+        let mut boxes = String::new();
         ctx.set_text_align("center");
         ctx.set_text_baseline("top");
         for i in -n_x..=n_x {
             if i == 0 || i % label_every != 0 {
                 continue;
             }
+            let text = format_mm(i as f64 * step_mm);
             let x = o.x + i as f64 * step_px;
-            let _ = ctx.fill_text(&format_mm(i as f64 * step_mm), x, o.y + 4.0);
+            let half = ctx.measure_text(&text).map(|m| m.width()).unwrap_or(0.0) / 2.0;
+            if x - half < EDGE || x + half > w - EDGE {
+                continue;
+            }
+            let _ = ctx.fill_text(&text, x, o.y + 4.0);
+            if !boxes.is_empty() {
+                boxes.push(';');
+            }
+            boxes.push_str(&format!("{text}@{:.1},{:.1}", x - half, x + half));
         }
+        // Where the x labels are (`text@left,right`, CSS px), for tests.
+        let _ = self.top.set_attribute("data-x-labels", &boxes);
         ctx.set_text_align("right");
         ctx.set_text_baseline("middle");
         for j in -n_y..=n_y {
@@ -461,6 +476,9 @@ impl ArmView {
                 continue;
             }
             let y = o.y - j as f64 * step_px;
+            if y - text_h / 2.0 < EDGE || y + text_h / 2.0 > h - EDGE {
+                continue;
+            }
             let _ = ctx.fill_text(&format_mm(j as f64 * step_mm), o.x - 5.0, y);
         }
         let unit = ctx::t("ik2r-unit-mm");

@@ -8,7 +8,8 @@
 //! and the labels are small images drawn once per font (canvas text makes Chromium bring the
 //! page's style up to date first, after the form's and the slider's changes), drawn from
 //! `ImageBitmap`s once made: a drag's frame makes a few dozen canvas calls and draws no text.
-//! Where the points and handles are (CSS px) is written on the top canvas for tests.
+//! Where the points, the handles and the tick labels are (CSS px) is written on the top canvas
+//! for tests.
 
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
@@ -20,11 +21,13 @@ use web_sys::{CanvasRenderingContext2d, Element, HtmlCanvasElement, ImageBitmap}
 
 use crate::ui::kit::canvas::{dash, ring, solid, Ink, LayeredCanvas};
 use crate::view::drag::HandleShape;
-use crate::view::umeyama_2d::{rotation_handle, svd, Frame, Grab, Scene, Step};
+use crate::view::umeyama_2d::{label_corner, rotation_handle, svd, Frame, Grab, Scene, Step};
 
 const BG: &str = "#fbfcfe";
 const GRID: &str = "#e6eaf0";
 const AXIS: &str = "#9aa4b2";
+/// Tick labels: 4.5:1 and more on the ground.
+const TICK: &str = "#4a5360";
 const X_COL: &str = "#1a4d8f";
 const Y_COL: &str = "#c2410c";
 const ALIGNED: &str = "#15803d";
@@ -36,6 +39,10 @@ const SELECT_EDGE: &str = "#1f2937";
 
 /// Margin around what is shown, CSS px.
 const MARGIN: f64 = 34.0;
+/// A label's box lies this far (CSS px) right or left of and above or below its mark...
+const LABEL_GAP: f64 = 5.0;
+/// ...and at least this far from any other mark (a handle, a point).
+const LABEL_CLEAR: f64 = 4.0;
 
 /// What is highlighted.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -69,6 +76,8 @@ const PX_ATTRS: [&str; 3] = ["data-points-px", "data-handle-t", "data-handle-r"]
 #[derive(Default)]
 struct Labels {
     font: String,
+    /// The font's size, CSS px.
+    font_px: f64,
     dpr: f64,
     drawn: Vec<Label>,
 }
@@ -81,7 +90,7 @@ struct Label {
     image: Option<LabelImage>,
 }
 
-/// A label's image: its canvas, CSS size, and where its text's origin lies in it.
+/// A label's image: its canvas and CSS size.
 ///
 /// Once the browser has made it, the image is drawn from an `ImageBitmap` of the canvas: a
 /// canvas drawn into another one is copied ("snapshot") on every draw, now and then for
@@ -91,7 +100,6 @@ struct LabelImage {
     bitmap: Rc<RefCell<Option<ImageBitmap>>>,
     w: f64,
     h: f64,
-    origin: DVec2,
 }
 
 impl LabelImage {
@@ -133,10 +141,17 @@ impl LabelImage {
             bitmap,
             w: f64::from(canvas.width()) / dpr,
             h: f64::from(canvas.height()) / dpr,
-            origin: DVec2::new(left, ascent),
             canvas,
         })
     }
+}
+
+/// Appends `value@px` to a tick list (`;` between).
+fn push_tick(list: &mut String, value: &str, px: f64) {
+    if !list.is_empty() {
+        list.push(';');
+    }
+    list.push_str(&format!("{value}@{px:.1}"));
 }
 
 fn line(c: &CanvasRenderingContext2d, a: DVec2, b: DVec2, stroke: &str, width: f64) {
@@ -356,7 +371,8 @@ impl SceneView {
             .collect()
     }
 
-    fn grid(&self, c: &CanvasRenderingContext2d, ink: Ink) {
+    /// The grid, the axes and the tick labels; the ticks' texts ([`Self::tick_labels`]).
+    fn grid(&self, c: &CanvasRenderingContext2d, ink: Ink) -> Option<[String; 2]> {
         let (w, h) = self.canvas.size();
         let f = &self.frame;
         let lo = f.world(DVec2::new(0.0, h));
@@ -364,7 +380,7 @@ impl SceneView {
         let span = (hi[0] - lo[0]).max(hi[1] - lo[1]);
         let step = crate::view::plot::nice_step(0.0, span, 8);
         if !(step.is_finite() && step > 0.0) {
-            return;
+            return None;
         }
         // Whole multiples of the step, counted: with points near ±1e308 (a huge sigma) the
         // span is not finite and `x += step` would never reach the end.
@@ -372,17 +388,17 @@ impl SceneView {
             crate::view::umeyama_2d::grid_multiples(lo[0], hi[0], step),
             crate::view::umeyama_2d::grid_multiples(lo[1], hi[1], step),
         ) else {
-            return;
+            return None;
         };
         c.set_stroke_style_str(GRID);
         c.set_line_width(ink.line);
         c.begin_path();
-        for k in xs {
+        for k in xs.clone() {
             let p = f.px([k as f64 * step, 0.0]);
             c.move_to(p.x, 0.0);
             c.line_to(p.x, h);
         }
-        for k in ys {
+        for k in ys.clone() {
             let p = f.px([0.0, k as f64 * step]);
             c.move_to(0.0, p.y);
             c.line_to(w, p.y);
@@ -391,17 +407,68 @@ impl SceneView {
         let o = f.px([0.0, 0.0]);
         line(c, DVec2::new(0.0, o.y), DVec2::new(w, o.y), AXIS, ink.line);
         line(c, DVec2::new(o.x, 0.0), DVec2::new(o.x, h), AXIS, ink.line);
-        // The grid step, as a scale bar's label.
-        c.set_font(&ink.font(12.0, false));
-        c.set_fill_style_str(AXIS);
-        let _ = c.fill_text(
-            &crate::pyfmt::human(step),
-            o.x + 4.0,
-            o.y + ink.text_px(12.0) + 2.0,
-        );
+        Some(self.tick_labels(c, ink, step, (xs, ys)))
     }
 
-    /// The grid layer: background, grid, axes and the grid step, when they changed.
+    /// The tick labels of the grid lines `k·step` of `xs` (along the bottom edge) and `ys`
+    /// (along the left edge): every line's, or every n-th's where they would crowd, the
+    /// ones that fit inside the canvas. Returns what they say and where (`value@px`, CSS px,
+    /// `;` between), x then y.
+    fn tick_labels(
+        &self,
+        c: &CanvasRenderingContext2d,
+        ink: Ink,
+        step: f64,
+        (xs, ys): (std::ops::RangeInclusive<i64>, std::ops::RangeInclusive<i64>),
+    ) -> [String; 2] {
+        let (w, h) = self.canvas.size();
+        let f = &self.frame;
+        let text_px = ink.text_px(11.0);
+        let pad = 4.0;
+        let text = |k: i64| crate::view::plot::tick_label(k as f64 * step, step);
+        let width = |t: &str| c.measure_text(t).map(|m| m.width()).unwrap_or(0.0);
+        c.set_font(&ink.font(11.0, false));
+        c.set_fill_style_str(TICK);
+        let step_px = step * f.scale;
+        let widest = [*xs.start(), *xs.end()]
+            .into_iter()
+            .map(|k| width(&text(k)))
+            .fold(0.0, f64::max);
+        let every = |room: f64| ((room + 8.0) / step_px).ceil().max(1.0) as i64;
+        let mut written = [String::new(), String::new()];
+        // x: centred under their lines, above the bottom edge.
+        let x_every = every(widest);
+        c.set_text_align("center");
+        c.set_text_baseline("bottom");
+        for k in xs.filter(|k| k % x_every == 0) {
+            let t = text(k);
+            let x = f.px([k as f64 * step, 0.0]).x;
+            let half = width(&t) / 2.0;
+            if x - half < pad || x + half > w - pad {
+                continue;
+            }
+            let _ = c.fill_text(&t, x, h - pad);
+            push_tick(&mut written[0], &t, x);
+        }
+        // y: beside the left edge, centred on their lines, above the x labels' band.
+        let y_every = every(text_px);
+        c.set_text_align("left");
+        c.set_text_baseline("middle");
+        for k in ys.filter(|k| k % y_every == 0) {
+            let t = text(k);
+            let y = f.px([0.0, k as f64 * step]).y;
+            if y - text_px / 2.0 < pad || y + text_px / 2.0 > h - 2.0 * pad - text_px {
+                continue;
+            }
+            let _ = c.fill_text(&t, pad, y);
+            push_tick(&mut written[1], &t, y);
+        }
+        c.set_text_align("start");
+        c.set_text_baseline("alphabetic");
+        written
+    }
+
+    /// The grid layer: background, grid, axes and tick labels, when they changed.
     fn draw_grid(&self, ink: Ink) {
         let key = (self.frame, self.canvas.size(), ink);
         if self.grid_drawn.get() == Some(key) {
@@ -413,7 +480,12 @@ impl SceneView {
         let (w, h) = self.canvas.size();
         c.set_fill_style_str(BG);
         c.fill_rect(0.0, 0.0, w, h);
-        self.grid(c, ink);
+        let ticks = self.grid(c, ink).unwrap_or_default();
+        // What the tick labels say and where, for tests and assistive tools.
+        let top = &self.canvas.top().canvas;
+        for (name, text) in ["data-ticks-x", "data-ticks-y"].into_iter().zip(ticks) {
+            let _ = top.set_attribute(name, &text);
+        }
         self.grid_drawn.set(Some(key));
     }
 
@@ -425,22 +497,22 @@ impl SceneView {
         if labels.font != font || labels.dpr != dpr {
             *labels = Labels {
                 font,
+                font_px: ink.text_px(13.0),
                 dpr,
                 drawn: Vec::new(),
             };
         }
     }
 
-    /// `text` in `fill` beside `p` (its origin 8 px right of and above `p`): its image, on
-    /// whole device pixels.
+    /// `text` in `fill` beside `p`, clear of the marks of `avoid`
+    /// ([`crate::view::umeyama_2d::label_corner`]): its image, on whole device pixels.
     fn label(
         &self,
         c: &CanvasRenderingContext2d,
         p: DVec2,
-        text: &'static str,
-        fill: &'static str,
+        (text, fill): (&'static str, &'static str),
+        avoid: &[(DVec2, f64)],
     ) {
-        let at = p + DVec2::new(8.0, -8.0);
         let mut labels = self.labels.borrow_mut();
         let index = match labels
             .drawn
@@ -455,10 +527,15 @@ impl SceneView {
             }
         };
         let dpr = labels.dpr;
+        let font_px = labels.font_px;
+        let size = match &labels.drawn[index].image {
+            Some(image) => DVec2::new(image.w, image.h),
+            None => DVec2::new(0.6 * font_px * text.chars().count() as f64, 1.3 * font_px),
+        };
+        let corner = label_corner(p, size, LABEL_GAP, avoid, LABEL_CLEAR);
         match &labels.drawn[index].image {
             Some(image) => {
                 let snap = |v: f64| (v * dpr).round() / dpr;
-                let corner = at - image.origin;
                 let (x, y) = (snap(corner.x), snap(corner.y));
                 let _ = match image.bitmap.borrow().as_ref() {
                     Some(bitmap) => {
@@ -476,7 +553,7 @@ impl SceneView {
             None => {
                 c.set_font(&labels.font);
                 c.set_fill_style_str(fill);
-                let _ = c.fill_text(text, at.x, at.y);
+                let _ = c.fill_text(text, corner.x, corner.y + font_px);
             }
         }
     }
@@ -555,12 +632,24 @@ impl SceneView {
             selection_ring(c, at, (size + 5.0) * lw, lw);
         }
         self.label_font(ink);
-        self.label(c, t, "t", TRUTH);
-        self.label(c, rh, "s·R", TRUTH);
-        self.draw_step(c, scene, step, ink);
+        // What a label keeps clear of: the handles and the points.
+        let avoid: Vec<(DVec2, f64)> = [(t, 8.0 * lw), (rh, 6.0 * lw)]
+            .into_iter()
+            .chain(scene.x.iter().chain(&scene.y).map(|p| (f.px(*p), 1.3 * r)))
+            .collect();
+        self.label(c, t, ("t", TRUTH), &avoid);
+        self.label(c, rh, ("s·R", TRUTH), &avoid);
+        self.draw_step(c, scene, step, ink, &avoid);
     }
 
-    fn draw_step(&self, c: &CanvasRenderingContext2d, scene: &Scene, step: Step, ink: Ink) {
+    fn draw_step(
+        &self,
+        c: &CanvasRenderingContext2d,
+        scene: &Scene,
+        step: Step,
+        ink: Ink,
+        avoid: &[(DVec2, f64)],
+    ) {
         let f = &self.frame;
         let s = &scene.steps;
         let lw = ink.line;
@@ -575,8 +664,8 @@ impl SceneView {
                     ring(c, at, 9.0 * lw, col, 2.5 * lw);
                     cross(c, at, 13.0 * lw, col, 2.0 * lw);
                 }
-                self.label(c, f.px(s.mu_x), "μx", X_COL);
-                self.label(c, f.px(s.mu_y), "μy", Y_COL);
+                self.label(c, f.px(s.mu_x), ("μx", X_COL), avoid);
+                self.label(c, f.px(s.mu_y), ("μy", Y_COL), avoid);
                 let (mx, my) = (f.px(s.mu_x), f.px(s.mu_y));
                 let to_mx = scene.x.iter().map(|p| (f.px(*p), mx));
                 segments(c, to_mx, "rgba(26, 77, 143, 0.25)", lw);
@@ -607,8 +696,8 @@ impl SceneView {
                     let col = |j: usize| [s.cov[0][j], s.cov[1][j]];
                     arrow(c, o, at_origin(col(0)), "#0f766e", 3.0 * lw);
                     arrow(c, o, at_origin(col(1)), "#0f766e", 3.0 * lw);
-                    self.label(c, at_origin(col(0)), "C e₁", "#0f766e");
-                    self.label(c, at_origin(col(1)), "C e₂", "#0f766e");
+                    self.label(c, at_origin(col(0)), ("C e₁", "#0f766e"), avoid);
+                    self.label(c, at_origin(col(1)), ("C e₂", "#0f766e"), avoid);
                 }
                 if step == Step::Svd || step == Step::Reflection {
                     let d = svd(s);
@@ -625,8 +714,8 @@ impl SceneView {
                         let uk = [u[0][k] * d.s[k], u[1][k] * d.s[k]];
                         arrow(c, o, at_origin(v), X_COL, 2.5 * lw);
                         arrow(c, o, at_origin(uk), Y_COL, 2.5 * lw);
-                        self.label(c, at_origin(v), v_name, X_COL);
-                        self.label(c, at_origin(uk), u_name, Y_COL);
+                        self.label(c, at_origin(v), (v_name, X_COL), avoid);
+                        self.label(c, at_origin(uk), (u_name, Y_COL), avoid);
                     }
                     if step == Step::Reflection && s.reflection_fixed() {
                         // The column the fix negated, as it was.
@@ -645,14 +734,14 @@ impl SceneView {
                 self.label(
                     c,
                     f.px(s.mu_x) + DVec2::new(rx * 0.7, -rx * 0.7),
-                    "√var_x",
-                    X_COL,
+                    ("√var_x", X_COL),
+                    avoid,
                 );
                 self.label(
                     c,
                     f.px(s.mu_y) + DVec2::new(ry * 0.7, -ry * 0.7),
-                    "s·√var_x",
-                    Y_COL,
+                    ("s·√var_x", Y_COL),
+                    avoid,
                 );
             }
             Step::Translation => {
@@ -669,7 +758,7 @@ impl SceneView {
                 let from = srx(&s.mu_x);
                 arrow(c, f.px(from), f.px(s.mu_y), ALIGNED, 3.0 * lw);
                 arrow(c, o, f.px(s.t), ALIGNED, 2.0 * lw);
-                self.label(c, f.px(s.t), "t̂", ALIGNED);
+                self.label(c, f.px(s.t), ("t̂", ALIGNED), avoid);
             }
             Step::Rmse => {}
         }
