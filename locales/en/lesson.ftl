@@ -34,6 +34,7 @@ lesson-builtin-planning-4-note = Real logs are not evenly timed. Resample onto a
 lesson-edit-heading = This lesson
 lesson-name-label = Lesson title
 lesson-empty = No steps yet. Open any page, set it up and press “+ Lesson” in the header, or load a built-in lesson above.
+lesson-builtin-shown = This is a built-in lesson, ready to present: you have no lesson of your own yet. Editing it, loading another or adding a view with “+ Lesson” makes it yours.
 lesson-present = Present
 lesson-export = Export .json
 lesson-import = Import .json…

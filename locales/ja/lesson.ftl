@@ -34,6 +34,7 @@ lesson-builtin-planning-4-note = 実際のログは等間隔ではありませ�
 lesson-edit-heading = このレッスン
 lesson-name-label = レッスンのタイトル
 lesson-empty = まだステップがありません。どれかのページを開いて表示を整え、ヘッダーの「+ レッスン」を押すか、上の組み込みレッスンを読み込んでください。
+lesson-builtin-shown = これは組み込みのレッスンで、そのまま発表できます（自分のレッスンはまだありません）。編集する、別のものを読み込む、「+ レッスン」で表示を加えると自分のレッスンになります。
 lesson-present = 発表する
 lesson-export = .json を書き出す
 lesson-import = .json を読み込む…
