@@ -29,6 +29,7 @@ rrt-refused-too-many = There are already { $index } boxes, the most this page ho
 rrt-refused-no-room = There is no room for a new box clear of the start and the goal.
 rrt-sub-title = This iteration, step by step
 rrt-sub-none = Iteration 0: the tree holds only the start. Step forward to run the first iteration.
+rrt-sub-help = ▶ plays: the tree grows by itself, one iteration after another, until you press ❚❚ (or Space). ▶| takes one iteration and writes its sub-steps out here; ◀ steps back one, exactly.
 rrt-sub-iteration = Iteration { $n }:
 rrt-sub-sample = sample q = ({ $x }, { $y }).
 rrt-sub-sample-goal = sample q = the goal ({ $x }, { $y }) — the goal-biased draw.

@@ -29,6 +29,7 @@ rrt-refused-too-many = 箱はすでに { $index } 個あり、このページで
 rrt-refused-no-room = スタートとゴールに重ならずに新しい箱を置ける場所がありません。
 rrt-sub-title = この反復の手順
 rrt-sub-none = 反復 0：木にはスタートしかありません。1 反復進めると最初の反復が実行されます。
+rrt-sub-help = ▶ は再生：❚❚（またはスペース）を押すまで木が 1 反復ずつ自動で育ちます。▶| は 1 反復だけ進め、その手順をここに書き出します。◀ は正確に 1 反復戻します。
 rrt-sub-iteration = 反復 { $n }：
 rrt-sub-sample = サンプル q = ({ $x }, { $y })。
 rrt-sub-sample-goal = サンプル q = ゴール ({ $x }, { $y })（ゴールバイアスによる抽選）。

@@ -9,7 +9,7 @@ import { serveApp, OUT, openApp, readouts } from './harness.mjs';
 
 const server = serveApp();
 
-const ROUTES = ['#/pid-step?Kp=2&Ki=0.1', '#/rrt-2d?seed=11', '#/ik-2r?q1=0.3&q2=1.1'];
+const ROUTES = ['#/pid-step?Kp=2&Ki=0.1', '#/rrt-2d?seed=11&it=0', '#/ik-2r?q1=0.3&q2=1.1'];
 
 /** The page's readouts as it stands (the lesson bar's left out). */
 const pageReadouts = (page) => readouts(page, { text: 'fallback', root: '#app-main', except: '.lesson' });
@@ -110,5 +110,49 @@ test('a lesson built from three pages is exported, imported and presented with P
     void context;
   } finally {
     await close();
+  }
+});
+
+test('with no lesson of its own the page opens on a built-in lesson, ready to present; an own lesson is shown after a reload', async () => {
+  for (const [lang, viewport, title, note] of [
+    ['en', { width: 1366, height: 768 }, 'IK, the Jacobian and singularities', /built-in lesson, ready to present/],
+    ['ja', { width: 390, height: 844 }, 'IK、ヤコビアン、特異点', /組み込みのレッスン/],
+  ]) {
+    const { page, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`, { viewport });
+    try {
+      await page.waitForSelector('.lesson-step');
+      assert.equal(await page.locator('.lesson-step').count(), 4);
+      assert.equal(await page.inputValue('[data-field="lesson-title"]'), title);
+      assert.ok(await page.locator('[data-action="lesson-present"]').isEnabled());
+      const line = page.locator('[data-testid="lesson-builtin-note"]');
+      assert.ok(await line.isVisible());
+      assert.match(await line.innerText(), note);
+      assert.equal(await page.locator('[data-testid="lesson-empty"]').isVisible(), false);
+      // Nothing stored: the user's storage is untouched.
+      assert.equal(await page.evaluate(() => localStorage.getItem('bsv.lesson')), null);
+      await page.screenshot({ path: join(OUT, `lesson-open-${lang}-${viewport.width}.png`) });
+      if (lang === 'en') {
+        // Present works at once.
+        await page.click('[data-action="lesson-present"]');
+        await page.locator('[data-testid="lesson-bar"]').waitFor({ state: 'visible' });
+        await page.waitForFunction(() => location.hash.startsWith('#/ik-2r'));
+        await page.keyboard.press('Escape');
+        await page.locator('[data-testid="lesson-bar"]').waitFor({ state: 'hidden' });
+        // An own lesson: one view added, then the lesson page after a reload shows it alone.
+        await goto(page, '#/pid-step?Kp=2');
+        await page.click('[data-testid="lesson-add"]');
+        await goto(page, '#/lesson');
+        await page.reload();
+        await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+        await page.waitForSelector('.lesson-step');
+        assert.equal(await page.locator('.lesson-step').count(), 1);
+        assert.match(await page.locator('.lesson-step-route').innerText(), /^#\/pid-step\?/);
+        assert.equal(await page.locator('[data-testid="lesson-builtin-note"]').isVisible(), false);
+        assert.ok(await page.locator('[data-action="lesson-present"]').isEnabled());
+      }
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
   }
 });

@@ -57,7 +57,7 @@ async function dragWorld(page, from, to, steps = 8) {
 const query = async (page) => new URLSearchParams(await page.evaluate(() => location.hash.split('?')[1] ?? ''));
 
 test('step, back and the keys move the counters to the CLI tree; End shows 91 / 33 / 1.604', async () => {
-  const { page, errors, close } = await open();
+  const { page, errors, close } = await open('#/rrt-2d?it=0');
   try {
     let c = await counters(page);
     assert.deepEqual([c.iteration, c.nodes, c.path_points, c.length], [0, 1, 0, '—']);
@@ -319,7 +319,7 @@ test('a bad field shows its message and keeps the last run', async () => {
 
 test('Japanese leaves no English UI text', async () => {
   const english = englishStrings();
-  const { page, errors, close } = await open('#/rrt-2d?lang=ja&obstacle=0.35,0.25,0.65,0.75&obstacle=0.1,0.6,0.3,0.7');
+  const { page, errors, close } = await open('#/rrt-2d?lang=ja&obstacle=0.35,0.25,0.65,0.75&obstacle=0.1,0.6,0.3,0.7&it=0');
   try {
     for (let k = 0; k < 6; k++) await page.locator('[data-action="step"]').click();
     await dragWorld(page, [0.9, 0.9], [0.5, 0.5], 1);
@@ -357,18 +357,19 @@ test('opening the page (the default, and 20,000 iterations with the goal walled 
     await page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20_000 });
   };
   /** The run grown to its end (in slices after the first frame), the stepper at its start. */
-  const settled = async (label) => {
+  const settled = async (label, nodes) => {
     await page.waitForSelector('[data-testid="rrt-2d-finishing"][data-state="done"]', { state: 'attached', timeout: 60_000 });
     const c = await counters(page);
-    assert.deepEqual([c.iteration, c.nodes, c.path_points], [0, 1, 0], `${label}: ready to step`);
+    assert.deepEqual([c.iteration, c.nodes, c.path_points], [5, nodes, 0], `${label}: ready to step, five iterations in`);
   };
   try {
-    for (const hash of cases) {
+    const nodesAt5 = [cliNodes(['7', '5']), cliNodes(['7', '5', ...walls.flatMap((w) => ['--obstacle', w]), '--goal', '0.8,0.8'])];
+    for (const [k, hash] of cases.entries()) {
       await load(`${server.url}/#/ik-2r`);
       await page.evaluate((h) => { location.hash = h; }, hash);
-      await settled(`opened from the IK page: ${hash}`);
+      await settled(`opened from the IK page: ${hash}`, nodesAt5[k]);
       await load(`${server.url}/${hash}`);
-      await settled(`a fresh load: ${hash}`);
+      await settled(`a fresh load: ${hash}`, nodesAt5[k]);
     }
     assert.deepEqual(errors, []);
   } finally {
@@ -381,7 +382,7 @@ test('a 1,000,000-iteration walled-goal run grows in slices while the stepper st
   const args = ['7', '1000000', ...walls.flatMap((w) => ['--obstacle', w]), '--goal', '0.8,0.8'];
   const want = cli(['rrt-2d', ...args]).files;
   const wantNodes = want.get('rrt_nodes.csv').toString('utf8').trim().split('\n').length - 1;
-  const { page, errors, close } = await open(`#/rrt-2d?max_iter=1000000&${walls.map((w) => `obstacle=${w}`).join('&')}&goal=0.8,0.8`);
+  const { page, errors, close } = await open(`#/rrt-2d?max_iter=1000000&${walls.map((w) => `obstacle=${w}`).join('&')}&goal=0.8,0.8&it=0`);
   try {
     const finishing = page.locator('[data-testid="rrt-2d-finishing"]');
     await page.waitForSelector('[data-testid="rrt-2d-finishing"][data-state="running"]', { timeout: 20_000 });
@@ -410,4 +411,43 @@ test('a 1,000,000-iteration walled-goal run grows in slices while the stepper st
   } finally {
     await close();
   }
+});
+
+test('without `it` the page opens five iterations in, the panel saying what ▶ and ▶| do (EN, JA); it=0 opens at 0', async () => {
+  for (const [hash, help] of [['#/rrt-2d', /▶ plays.*▶\| takes one iteration/s], ['#/rrt-2d?lang=ja', /▶ は再生.*▶\| は 1 反復だけ進め/s]]) {
+    const { page, errors, close } = await open(hash, { viewport: { width: 1366, height: 768 } });
+    try {
+      await page.waitForFunction(() => document.querySelector('[data-readout="iteration"]')?.textContent.trim() === '5', null, { timeout: 5000 });
+      const c = await counters(page);
+      assert.deepEqual([c.iteration, c.nodes], [5, cliNodes(['7', '5'])]);
+      assert.match(await page.locator('[data-testid="rrt-2d-substeps"]').innerText(), /5/);
+      const line = page.locator('[data-testid="rrt-2d-sub-help"]');
+      assert.ok(await line.isVisible());
+      assert.match(await line.innerText(), help);
+      await page.waitForFunction(() => /(\?|&)it=5(&|$)/.test(location.hash), null, { timeout: 3000 });
+      // The CSVs are the whole run, whatever the iteration shown.
+      if (!hash.includes('ja')) {
+        const want = cli(['rrt-2d', '7', '800']).files;
+        assertSameBytes(await download(page, 'rrt_nodes.csv'), want.get('rrt_nodes.csv'), 'opened at 5: rrt_nodes.csv');
+      }
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+  const { page, errors, close } = await open('#/rrt-2d?it=0');
+  try {
+    await page.waitForSelector('[data-testid="rrt-2d-finishing"][data-state="done"]', { state: 'attached', timeout: 20_000 });
+    await page.waitForTimeout(300);
+    assert.equal((await counters(page)).iteration, 0);
+    assert.ok(await page.locator('[data-rrt="sub-none"]').isVisible());
+    assert.ok(await page.locator('[data-testid="rrt-2d-sub-help"]').isVisible());
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+  await screenshots(server.url, [
+    ['rrt-open-en-1366.png', '#/rrt-2d', { viewport: { width: 1366, height: 768 } }],
+    ['rrt-open-ja-390.png', '#/rrt-2d?lang=ja', { viewport: { width: 390, height: 844 } }],
+  ], { prepare: (page) => page.waitForTimeout(500) });
 });

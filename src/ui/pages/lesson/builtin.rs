@@ -27,13 +27,16 @@ pub const BUILTIN: [(&str, &[(&str, u32)]); 3] = [
     (
         "planning",
         &[
-            ("#/rrt-2d", 5),
+            ("#/rrt-2d?it=0", 5),
             ("#/cubic-path", 0),
             ("#/trapezoid-profile", 0),
             ("#/traj-resample", 0),
         ],
     ),
 ];
+
+/// The built-in lesson shown, ready to present, while the user has none of their own.
+pub const FIRST: &str = "ik";
 
 /// Built-in lesson `key` in the current language, keeping only steps whose page exists.
 pub fn lesson(key: &str, is_page: impl Fn(&str) -> bool) -> Option<Lesson> {

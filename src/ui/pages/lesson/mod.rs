@@ -1,7 +1,8 @@
 //! The lesson page (`#/lesson`): the lesson being built (steps added from any page with the
 //! header's "Add this view"), edited here (title, each step's title, note and page steps,
 //! reorder, delete), presented, exported and imported as `.json`, and shared as a link (the
-//! page's own URL is the lesson). The three built-in lessons load from here.
+//! page's own URL is the lesson). The three built-in lessons load from here; while the user
+//! has no lesson of their own, the first one is shown ready to present (not stored until edited).
 //!
 //! Components: `builtin` (the built-in lessons); this file holds the page, its markup and the
 //! editor's actions. The lesson model is [`crate::view::lesson`]; storage and presenting are the
@@ -9,7 +10,7 @@
 
 mod builtin;
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 
 use wasm_bindgen::prelude::*;
@@ -32,6 +33,8 @@ struct Editor {
     /// The page table (a step must name a page) and the shell's requests.
     shell: ShellLink,
     lesson: RefCell<Lesson>,
+    /// The lesson shown is the built-in one opened for a user without a lesson (not stored).
+    builtin_shown: Cell<bool>,
     listeners: RefCell<Vec<Listener>>,
     steps_listeners: RefCell<Vec<Listener>>,
 }
@@ -42,6 +45,9 @@ impl Page for LessonPage {
     }
 
     fn relocalize(&self) {
+        if self.0.builtin_shown.get() {
+            let _ = self.0.show_first_builtin();
+        }
         let _ = self.0.render_steps();
     }
 }
@@ -55,6 +61,7 @@ fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
         root,
         shell: ctx.shell,
         lesson: RefCell::new(lesson_bar::stored(is_page)),
+        builtin_shown: Cell::new(false),
         listeners: RefCell::new(Vec::new()),
         steps_listeners: RefCell::new(Vec::new()),
     });
@@ -66,6 +73,9 @@ fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
         }
         Ok(None) => {}
         Err(error) => page.show_error(&error)?,
+    }
+    if page.lesson.borrow().steps.is_empty() {
+        page.show_first_builtin()?;
     }
     page.wire()?;
     page.render_steps()?;
@@ -85,6 +95,7 @@ const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>
 <h2 id=\"lesson-edit-heading\" data-i18n=\"lesson-edit-heading\"></h2>\
 <label class=\"lesson-field\"><span data-i18n=\"lesson-name-label\"></span>\
 <input type=\"text\" data-field=\"lesson-title\" maxlength=\"120\"></label>\
+<p class=\"lesson-builtin-note\" data-testid=\"lesson-builtin-note\" data-i18n=\"lesson-builtin-shown\" hidden></p>\
 <p class=\"lesson-empty\" data-testid=\"lesson-empty\" data-i18n=\"lesson-empty\"></p>\
 <ol class=\"lesson-steps\" data-testid=\"lesson-steps\"></ol>\
 <div class=\"lesson-actions\">\
@@ -102,6 +113,19 @@ const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>
 impl Editor {
     fn is_page(&self, id: &str) -> bool {
         self.shell.is_page(id)
+    }
+
+    /// The first built-in lesson in the editor, in the current language, without storing it
+    /// (the user's storage is untouched until they edit it).
+    fn show_first_builtin(&self) -> Result<(), JsValue> {
+        let Some(lesson) = builtin::lesson(builtin::FIRST, |id| self.is_page(id)) else {
+            return Ok(());
+        };
+        *self.lesson.borrow_mut() = lesson;
+        self.builtin_shown.set(true);
+        let title: HtmlInputElement = self.find("[data-field=\"lesson-title\"]")?;
+        title.set_value(&self.lesson.borrow().title);
+        Ok(())
     }
 
     /// Presents the lesson from step `index`, with what that asks of the shell.
@@ -133,6 +157,9 @@ impl Editor {
 
     /// The lesson changed: store it, write the URL and the link, redraw the list when asked.
     fn changed(self: &Rc<Self>, redraw: bool) -> Result<(), JsValue> {
+        self.builtin_shown.set(false);
+        let note: Element = self.find("[data-testid=\"lesson-builtin-note\"]")?;
+        dom::show(&note, false);
         let lesson = self.lesson.borrow().clone();
         lesson_bar::store(&lesson);
         router::replace_query(&lesson.to_query());
@@ -225,6 +252,7 @@ impl Editor {
     fn on_click(self: &Rc<Self>, target: &Element) -> Result<(), JsValue> {
         if let Some(key) = target.get_attribute("data-builtin") {
             let replace = self.lesson.borrow().steps.is_empty()
+                || self.builtin_shown.get()
                 || dom::window()?.confirm_with_message(&ctx::t("lesson-replace-confirm"))?;
             if replace {
                 if let Some(lesson) = builtin::lesson(&key, |id| self.is_page(id)) {
@@ -290,6 +318,8 @@ impl Editor {
         let lesson = self.lesson.borrow().clone();
         let empty: Element = self.find("[data-testid=\"lesson-empty\"]")?;
         dom::show(&empty, lesson.steps.is_empty());
+        let note: Element = self.find("[data-testid=\"lesson-builtin-note\"]")?;
+        dom::show(&note, self.builtin_shown.get());
         let present: Element = self.find("[data-action=\"lesson-present\"]")?;
         if lesson.steps.is_empty() {
             present.set_attribute("disabled", "")?;

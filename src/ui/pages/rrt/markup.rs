@@ -59,6 +59,7 @@ pub fn page() -> String {
          <section class=\"rrt-card\"><h2 data-i18n=\"rrt-sub-title\"></h2>\
          <ol class=\"rrt-subs\" data-rrt=\"subs\" data-testid=\"rrt-2d-substeps\"></ol>\
          <p class=\"rrt-note\" data-rrt=\"sub-none\" data-i18n=\"rrt-sub-none\"></p>\
+         <p class=\"rrt-note\" data-testid=\"rrt-2d-sub-help\" data-i18n=\"rrt-sub-help\"></p>\
          <h3 data-i18n=\"rrt-code-title\"></h3>{code}</section>\
          <section class=\"rrt-card\"><h2 data-i18n=\"rrt-counters-title\"></h2>{readouts}{live}</section>\
          </div></div>\

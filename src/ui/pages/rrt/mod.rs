@@ -42,7 +42,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::rrt::{
-    add_box, delete_box, drag, hit_test, phases, Grab, PageState, Phase, Refusal,
+    add_box, delete_box, drag, hit_test, phases, Grab, PageState, Phase, Refusal, IT_KEY,
 };
 use run::Run;
 
@@ -53,6 +53,9 @@ const KEYS: [Shortcut; 4] = [
     keymap::key("Shift + ← ↑ → ↓", "rrt-key-move"),
     keymap::key("Delete", "rrt-key-delete"),
 ];
+/// The iteration a URL without `it` opens at: a small tree and one iteration written out in
+/// the sub-step panel, rather than a lone start.
+const OPENING_IT: u64 = 5;
 /// Shortest time between two URL writes while playing, ms.
 const URL_EVERY_MS: f64 = 500.0;
 /// Runs up to this budget restart on every move of a drag; bigger ones when it ends.
@@ -140,7 +143,11 @@ impl Page for RrtPage {
         let substeps = substeps::SubSteps::find(&root)?;
         let counters = counters::Counters::find(&root)?;
         let exports = exports::Exports::find(&root)?;
-        let start_it = state.it;
+        let start_it = if ctx.query.iter().any(|(k, _)| k == IT_KEY) {
+            state.it
+        } else {
+            OPENING_IT
+        };
         let stepper_slot: Element = root.role("stepper")?;
         let refusal = MessageLine::new(root.role("world-message")?, refusal_text);
         let key_target = MessageLine::new(root.role("key-target")?, key_target::text);
