@@ -137,5 +137,5 @@ trap-explain-steps-title = Steps
 trap-explain-steps = 1. Save the script. 2. Run: python trapezoid_velocity_profile.py 3. Confirm s ends near the distance.
 trap-explain-expected-title = Expected result
 trap-explain-expected = The CSV covers accelerate, an optional cruise, and brake.
-pid-short = The output stops short of the setpoint (error { $error } at the end): proportional action alone leaves a steady-state error, and the integral term (Ki = { $ki }) is too weak to remove it within this run. More integral action closes the gap.
+pid-short = Stops short of r (error { $error }): P action alone leaves a steady-state error, and Ki = { $ki } is too weak to remove it in this run. Add integral action.
 pid-tuned = Try tuned gains

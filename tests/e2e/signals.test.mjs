@@ -354,7 +354,7 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
 });
 
 test('pid-step opens saying why it stops short; "Try tuned gains" reaches the setpoint', async () => {
-  for (const [hash, why] of [['#/pid-step', /stops short of the setpoint/], ['#/pid-step?lang=ja', /目標値に届いていません/]]) {
+  for (const [hash, why] of [['#/pid-step', /Stops short of r/], ['#/pid-step?lang=ja', /目標値 r に届きません/]]) {
     const { page, errors, close } = await open(hash, { viewport: { width: 1366, height: 768 } });
     try {
       const short = page.locator('[data-testid="pid-step-short"]');

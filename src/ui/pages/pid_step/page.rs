@@ -86,7 +86,7 @@ impl SignalPage for PidPage {
         under_plot: "<p class=\"sig-warning\" data-pid=\"warning\" \
                      data-testid=\"pid-step-warning\" role=\"alert\" hidden></p>\
                      <p class=\"sig-note\" data-i18n=\"pid-ghost-note\"></p>",
-        under_readouts: "<div class=\"sig-warning\" data-pid=\"short\" \
+        under_readouts: "<div class=\"sig-note\" data-pid=\"short\" \
                          data-testid=\"pid-step-short\" hidden><p data-pid=\"short-text\"></p>\
                          <button type=\"button\" class=\"tool-button\" data-action=\"pid-tuned\" \
                          data-i18n=\"pid-tuned\"></button></div>\
