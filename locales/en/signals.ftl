@@ -137,3 +137,5 @@ trap-explain-steps-title = Steps
 trap-explain-steps = 1. Save the script. 2. Run: python trapezoid_velocity_profile.py 3. Confirm s ends near the distance.
 trap-explain-expected-title = Expected result
 trap-explain-expected = The CSV covers accelerate, an optional cruise, and brake.
+pid-short = Stops short of r (error { $error }): P action alone leaves a steady-state error, and Ki = { $ki } is too weak to remove it in this run. Add integral action.
+pid-tuned = Try tuned gains

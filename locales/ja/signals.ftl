@@ -137,3 +137,5 @@ trap-explain-steps-title = 手順
 trap-explain-steps = 1. スクリプトを保存します。2. 実行: python trapezoid_velocity_profile.py 3. s が距離の近くで終わることを確かめます。
 trap-explain-expected-title = 期待される結果
 trap-explain-expected = CSV は加速、（あれば）等速、減速の区間をふくみます。
+pid-short = 目標値 r に届きません（誤差 { $error }）。比例動作だけでは定常偏差が残り、Ki = { $ki } ではこの実行内に消せません。積分動作を強めましょう。
+pid-tuned = 調整済みのゲインを試す

@@ -103,6 +103,19 @@ pub fn figures(samples: &[PidSample]) -> StepFigures {
     out
 }
 
+/// Gains that reach the recipe's setpoint on its plant (τ = 0.8 s) within its 80 steps:
+/// rise time 0.75 s, overshoot 1.5 %, settled (2 % band) at 1.1 s.
+pub const TUNED_GAINS: [(&str, &str); 3] = [("Kp", "2"), ("Ki", "3"), ("Kd", "0.05")];
+
+/// Whether the run of gains `p` (figures `f`) stops short of the setpoint: finite, never
+/// above r, and still outside the settling band at the end, with an integral gain that is not
+/// negative: the proportional action alone leaves that error, the integral term too weak to
+/// remove it within the run.
+pub fn stops_short(p: &PidParams, f: &StepFigures) -> bool {
+    let band = SETTLE_BAND * pid_step::SETPOINT.abs();
+    p.ki >= 0.0 && f.overshoot_pct == Some(0.0) && f.steady_state_error.is_some_and(|e| e > band)
+}
+
 /// The (lo, hi) of the finite values of a thinned series, clamped to ±1e12 (an overflowed
 /// run plots up to where it broke); an empty range (`lo > hi`) when there is none.
 pub fn plot_extent(points: &[(f64, f64)]) -> (f64, f64) {
@@ -249,6 +262,35 @@ mod tests {
         );
         assert!(f.peak_u.unwrap().1.is_finite());
         assert_eq!(figures(&[]), StepFigures::default());
+    }
+
+    #[test]
+    fn the_default_run_stops_short_and_the_tuned_gains_settle() {
+        let default = PidParams::default();
+        assert!(stops_short(
+            &default,
+            &figures(&simulate(&default).unwrap())
+        ));
+        let [kp, ki, kd] = TUNED_GAINS.map(|(_, v)| v.parse::<f64>().unwrap());
+        let tuned = PidParams {
+            kp,
+            ki,
+            kd,
+            ..default
+        };
+        let f = figures(&simulate(&tuned).unwrap());
+        assert!(!stops_short(&tuned, &f));
+        assert!(f.rise_time.is_some(), "{f:?}");
+        assert!(f.overshoot_pct.unwrap() < 2.0, "{f:?}");
+        assert!(f.settling_time.unwrap() < 1.5, "{f:?}");
+        assert!(f.steady_state_error.unwrap().abs() < 0.01, "{f:?}");
+        // A loop that overshoots or diverges does not stop short.
+        let wild = PidParams {
+            kp: 100.0,
+            ki: 0.0,
+            ..default
+        };
+        assert!(!stops_short(&wild, &figures(&simulate(&wild).unwrap())));
     }
 
     #[test]

@@ -352,3 +352,32 @@ test('screenshots: EN and JA 1920×1080, projector, phone 390 px', async () => {
     });
   }
 });
+
+test('pid-step opens saying why it stops short; "Try tuned gains" reaches the setpoint', async () => {
+  for (const [hash, why] of [['#/pid-step', /Stops short of r/], ['#/pid-step?lang=ja', /目標値 r に届きません/]]) {
+    const { page, errors, close } = await open(hash, { viewport: { width: 1366, height: 768 } });
+    try {
+      const short = page.locator('[data-testid="pid-step-short"]');
+      assert.ok(await short.isVisible());
+      assert.match(await short.textContent(), why);
+      if (hash === '#/pid-step') {
+        await page.screenshot({ path: 'target/pid-step-short-1366.png' });
+      }
+      await page.locator('[data-action="pid-tuned"]').click();
+      await page.waitForFunction(() => location.hash.includes('Kp='), null, { timeout: 5000 });
+      const url = new URL(page.url());
+      const q = new URLSearchParams(url.hash.split('?')[1]);
+      // Kd 0.05 is the recipe's default: the URL leaves it out.
+      assert.deepEqual([q.get('Kp'), q.get('Ki'), q.get('Kd')], ['2', '3', null]);
+      for (const [field, value] of [['Kp', '2'], ['Ki', '3'], ['Kd', '0.05']]) {
+        assert.equal(await page.locator(`[data-field="${field}"]`).inputValue(), value);
+      }
+      const r = await pageValues(page);
+      assert.ok(Number.isFinite(r['rise-time']) && r['rise-time'] > 0, `${r['rise-time']}`);
+      assert.ok(await short.isHidden());
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});

@@ -80,6 +80,11 @@ pub trait SignalPage: Sized + 'static {
     /// A change ended: a field or slider committed (`change`), a key, or a run computed in
     /// slices that came after its input.
     fn change_ended(&self, _kit: &Kit<Self>) {}
+    /// A click on a `[data-action]` button of the page's markup: the new arguments, if any
+    /// (shown, written to the URL and committed as an edit's are).
+    fn action(&self, _kit: &Kit<Self>, _action: &str) -> Option<Self::Params> {
+        None
+    }
     /// Where the cursor stands before any hover: mid-run.
     fn cursor_start(_params: &Self::Params, rows: &[Self::Row]) -> f64 {
         rows.last().map_or(0.0, |r| r.t() / 2.0)
@@ -367,6 +372,15 @@ impl<S: SignalPage> Live<S> {
                     let t0 = now_ms();
                     l.show(Fit::Refit, false, None);
                     record_frame_ms(now_ms() - t0);
+                }
+            })?;
+        }
+        for button in dom::matching(&kit.root, "[data-action]")? {
+            let action = button.get_attribute("data-action").unwrap_or_default();
+            scope.listen_for(&button, "click", me, move |l: &Live<S>, _| {
+                if let Some(p) = l.page.action(&l.kit, &action) {
+                    l.timed_change(p);
+                    l.page.change_ended(&l.kit);
                 }
             })?;
         }

@@ -13,7 +13,7 @@ use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample,
 use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, RunFrom, SignalPage, SignalSpec};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
-use crate::view::pid_step::{figures, rows, StepFigures};
+use crate::view::pid_step::{figures, rows, stops_short, StepFigures, TUNED_GAINS};
 use crate::view::signal::{sig, Slider};
 
 /// The figures and warnings of the run shown, the run the ghost is drawn from (a new ghost, a
@@ -43,6 +43,9 @@ impl Runs {
 pub struct PidPage {
     plots: RefCell<Plots>,
     warning: Element,
+    /// Why the run stops short of the setpoint, and the button to tuned gains.
+    short: Element,
+    short_text: Element,
     runs: RefCell<Runs>,
     changing: Cell<bool>,
 }
@@ -83,13 +86,19 @@ impl SignalPage for PidPage {
         under_plot: "<p class=\"sig-warning\" data-pid=\"warning\" \
                      data-testid=\"pid-step-warning\" role=\"alert\" hidden></p>\
                      <p class=\"sig-note\" data-i18n=\"pid-ghost-note\"></p>",
-        under_readouts: "<p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>",
+        under_readouts: "<div class=\"sig-note\" data-pid=\"short\" \
+                         data-testid=\"pid-step-short\" hidden><p data-pid=\"short-text\"></p>\
+                         <button type=\"button\" class=\"tool-button\" data-action=\"pid-tuned\" \
+                         data-i18n=\"pid-tuned\"></button></div>\
+                         <p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>",
     };
 
     fn build(kit: &Kit<PidPage>) -> Result<PidPage, JsValue> {
         Ok(PidPage {
             plots: RefCell::new(Plots::default()),
             warning: kit.role("warning")?,
+            short: kit.role("short")?,
+            short_text: kit.role("short-text")?,
             runs: RefCell::new(Runs::first(&kit.run().rows)),
             changing: Cell::new(false),
         })
@@ -130,6 +139,15 @@ impl SignalPage for PidPage {
             .collect();
         self.warning.set_text_content(Some(&text.join(" ")));
         dom::show(&self.warning, !text.is_empty());
+        let short = stops_short(&run.params, &f);
+        if short {
+            let error = f.steady_state_error.map_or_else(String::new, |e| sig(e, 3));
+            self.short_text.set_text_content(Some(&ctx::t_strings(
+                "pid-short",
+                &[("error", error), ("ki", sig(run.params.ki, 3))],
+            )));
+        }
+        dom::show(&self.short, short);
         let ghost = runs
             .ghost
             .as_deref()
@@ -157,6 +175,11 @@ impl SignalPage for PidPage {
                 ],
             ));
         }
+    }
+
+    /// "Try tuned gains": the tuned Kp, Ki and Kd in the fields, as if typed.
+    fn action(&self, kit: &Kit<PidPage>, action: &str) -> Option<PidParams> {
+        (action == "pid-tuned").then(|| kit.controls.set_texts(&TUNED_GAINS, None))?
     }
 
     /// The run shown is the one the next change leaves as the ghost.
