@@ -98,14 +98,19 @@ test('a pointer drag on the arm view pulls the tip only while held (clutch)', as
   }
 });
 
-test('an injected gamepad moves the arm and is named', async () => {
-  const context = await (await browser()).newContext({ viewport: { width: 1280, height: 800 }, locale: 'en-US' });
-  await context.addInitScript(() => {
+/** Injects a standard gamepad at rest (window.__testPad) into every page of `context`. */
+function injectPad(context) {
+  return context.addInitScript(() => {
     const buttons = Array.from({ length: 17 }, () => ({ pressed: false, touched: false, value: 0 }));
     const pad = { id: 'Test Pad (STANDARD GAMEPAD)', index: 0, connected: true, mapping: 'standard', timestamp: 0, axes: [0, 0, 0, 0], buttons };
     window.__testPad = pad;
     Object.defineProperty(Navigator.prototype, 'getGamepads', { configurable: true, value: () => [pad, null, null, null] });
   });
+}
+
+test('an injected gamepad moves the arm and is named', async () => {
+  const context = await (await browser()).newContext({ viewport: { width: 1280, height: 800 }, locale: 'en-US' });
+  await injectPad(context);
   const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
@@ -689,12 +694,7 @@ test('a second session after an exported first: the comparison keeps the first, 
 /** A fresh page at `hash` with an injected standard gamepad (window.__testPad, at rest). */
 async function openWithPad(hash, viewport = { width: 1366, height: 768 }) {
   const context = await (await browser()).newContext({ viewport, locale: 'en-US', acceptDownloads: true, deviceScaleFactor: 1 });
-  await context.addInitScript(() => {
-    const buttons = Array.from({ length: 17 }, () => ({ pressed: false, touched: false, value: 0 }));
-    const pad = { id: 'Test Pad (STANDARD GAMEPAD)', index: 0, connected: true, mapping: 'standard', timestamp: 0, axes: [0, 0, 0, 0], buttons };
-    window.__testPad = pad;
-    Object.defineProperty(Navigator.prototype, 'getGamepads', { configurable: true, value: () => [pad, null, null, null] });
-  });
+  await injectPad(context);
   const page = await context.newPage();
   const errors = [];
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
