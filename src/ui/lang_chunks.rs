@@ -1,0 +1,33 @@
+//! Each language's strings as a wasm chunk of its own: the app loads the visitor's language
+//! before its first frame and the other one when the visitor switches (or in the background
+//! once the first page is shown), so a first visit carries one language's text, not both.
+
+use wasm_split_helpers::{wasm_split, SplitLoaderError};
+
+use crate::i18n::{self, Lang};
+use crate::ui::ctx;
+
+/// The Fluent files of English (file name, text): what the `strings_en` chunk holds.
+#[wasm_split(strings_en, fallible)]
+fn strings_en() -> Result<&'static [(&'static str, &'static str)], SplitLoaderError> {
+    Ok(i18n::EN_FILES)
+}
+
+/// The Fluent files of Japanese: what the `strings_ja` chunk holds.
+#[wasm_split(strings_ja, fallible)]
+fn strings_ja() -> Result<&'static [(&'static str, &'static str)], SplitLoaderError> {
+    Ok(i18n::JA_FILES)
+}
+
+/// Loads `lang`'s strings into the app's bundles (at once if they are in).
+pub async fn load(lang: Lang) -> Result<(), SplitLoaderError> {
+    if ctx::has_lang(lang) {
+        return Ok(());
+    }
+    let files = match lang {
+        Lang::En => strings_en().await?,
+        Lang::Ja => strings_ja().await?,
+    };
+    ctx::add_lang(lang, files);
+    Ok(())
+}
