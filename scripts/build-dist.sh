@@ -1,8 +1,16 @@
 #!/usr/bin/env bash
 # Builds the wasm (release by default, `--dev` for a fast unoptimised build) and assembles
 # the static app in dist/: index.html, sw.js (the offline service worker), www/ (css, boot and
-# bootstrap js, the worker, favicon, the web app manifest),
-# pkg/ (wasm + its JS glue). dist/ runs from any static host or folder served over http.
+# bootstrap js, the route table, the worker, favicon, the web app manifest), pkg/ (the main
+# wasm + its JS glue, the packs of the split points and their loader). dist/ runs from any
+# static host or folder served over http.
+#
+# The wasm is split by route: cargo builds it with its relocations kept (`--emit-relocs`),
+# wasm-split-cli cuts it at the split points (`page!` lines of the page table, each language's
+# strings, the worker's kernels) into the main module (the shell) and chunks, wasm-bindgen
+# makes the glue of the main module, and scripts/split-link.mjs packs each split point's
+# chunks into one file (`pkg/pack_<split>.bin`) and writes `pkg/routes.json` and
+# `www/routes.js` (which pack each route and language needs first).
 # dist/www/app.css is one stylesheet: www/app.css, then every stylesheet that sits beside the
 # Rust of a page or widget (src/ui/**/*.css, in path order); nothing injects <style> at run time,
 # so the app runs under the strict Content-Security-Policy of index.html.
@@ -13,7 +21,26 @@ export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
 profile=--release
 [[ "${1:-}" == "--dev" ]] && profile=--dev
 
-wasm-pack build --target web "$profile" --out-dir pkg --out-name bsv_playground --mode no-install --no-pack
+if [[ "$profile" == --release ]]; then
+  cargo_profile=(--release); built=release
+else
+  cargo_profile=(); built=debug
+fi
+# Its own target dir: the relocation flag would otherwise rebuild the checks' artifacts.
+CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-Clink-args=--emit-relocs" \
+  cargo build --lib --target wasm32-unknown-unknown --no-default-features --locked \
+  --target-dir target/app "${cargo_profile[@]}"
+rm -rf target/app/split pkg
+wasm-split-cli "target/app/wasm32-unknown-unknown/$built/bsv_playground.wasm" target/app/split \
+  --out-name bsv_playground
+mkdir -p pkg
+wasm-bindgen --target web --keep-lld-exports --no-demangle --out-dir pkg --out-name bsv_playground \
+  target/app/split/bsv_playground.wasm
+if [[ "$profile" == --release ]]; then
+  wasm-opt -Os --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+    --enable-mutable-globals --enable-reference-types --enable-multivalue \
+    pkg/bsv_playground_bg.wasm -o pkg/bsv_playground_bg.wasm
+fi
 
 rm -rf dist
 mkdir -p dist/pkg
@@ -27,6 +54,7 @@ cp -r www dist/www
   done
 } > dist/www/app.css
 cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm dist/pkg/
+node scripts/split-link.mjs target/app/split dist/pkg dist/www
 # wasm-bindgen `inline_js` / `module` snippets, if any crate uses them.
 [[ -d pkg/snippets ]] && cp -r pkg/snippets dist/pkg/
 # A release build is minified (the glue and the stylesheet; scripts/minify.mjs).

@@ -104,7 +104,19 @@ pub(crate) fn start(lang: Lang) -> Result<(), JsValue> {
     if let Some(html) = document.document_element() {
         html.set_attribute("data-app-ready", "1")?;
     }
+    crate::ui::schedule::after_paint(|| wasm_bindgen_futures::spawn_local(load_the_rest()))?;
     Ok(())
+}
+
+/// After the first page is shown, the rest of the app in the background, one part after the
+/// other: the other language (so a switch is immediate) and every page's chunk (so going to a
+/// page shows it at once, and the app works offline after one visit even where no service
+/// worker runs). A part that fails to load is loaded again when it is needed.
+async fn load_the_rest() {
+    let _ = lang_chunks::load(ctx::lang().other()).await;
+    for def in PAGES {
+        let _ = (def.load)().await;
+    }
 }
 
 /// `?lang=`, else the saved choice, else the browser's languages, else English.
