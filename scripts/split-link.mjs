@@ -47,14 +47,29 @@ export function parseLoader(js) {
   return { header, chunks, splits };
 }
 
+/** What rustc's wasm32 target emits (and browsers run without flags); binaryen writes newer
+ * encodings, such as compact imports, only when they are enabled. */
+const FEATURES =
+  binaryen.Features.MutableGlobals |
+  binaryen.Features.NontrappingFPToInt |
+  binaryen.Features.BulkMemory |
+  binaryen.Features.BulkMemoryOpt |
+  binaryen.Features.SignExt |
+  binaryen.Features.ReferenceTypes |
+  binaryen.Features.Multivalue |
+  binaryen.Features.CallIndirectOverlong;
+
 /** Module `bytes` as the browser gets it: without custom sections (names), and written again
  * by binaryen (no optimisation pass, which could drop what only the table reaches), which keeps
  * only the types the module uses: the splitter gives every chunk the whole program's. */
 export function slim(bytes) {
   const module = binaryen.readBinary(stripCustomSections(bytes));
   try {
-    module.setFeatures(binaryen.Features.All);
-    return stripCustomSections(Buffer.from(module.emitBinary()));
+    module.setFeatures(FEATURES);
+    const out = stripCustomSections(Buffer.from(module.emitBinary()));
+    // Fails the build, not a visitor's page, if the module does not compile.
+    new WebAssembly.Module(out);
+    return out;
   } finally {
     module.dispose();
   }
