@@ -71,6 +71,10 @@ test('the shell renders in English with the home page, navigation and disclaimer
     // Twelve recipe cards, each with both command lines and a link to its drill; the IK ones
     // also link to the IK page.
     assert.equal(await page.locator('.recipe-card').count(), 12);
+    // Each card's inputs, files and command lines are behind one disclosure, closed at first.
+    const more = page.locator('.recipe-more');
+    assert.deepEqual(await more.evaluateAll((ds) => ds.map((d) => d.open)), Array(12).fill(false));
+    for (const summary of await page.locator('.recipe-more > summary').all()) await summary.click();
     const ik = page.locator('[data-testid="recipe-card-ik-workspace"]');
     assert.match(await ik.locator('[data-command="cli"] code').innerText(), /^bsv ik-workspace 0\.12 0\.10 200 10$/);
     assert.match(await ik.locator('[data-command="python"] code').innerText(), /^python planar_ik_workspace\.py 0\.12 0\.10 200 10$/);

@@ -1,0 +1,291 @@
+//! The live arm at the top of the home page: the recipes' default 2R arm (0.12 m, 0.10 m) in a
+//! small view. Dragging the tip moves it by inverse kinematics on the current elbow branch
+//! (pinned to the reach `|L1 − L2| ≤ r ≤ L1 + L2`), dragging a link turns one joint, a tap or
+//! a mouse press on empty space sends the tip there; the joint angles read out under it and a
+//! link opens the same pose on the IK page. Pointer input is the kit's drag: a finger on the
+//! arm drags it, a finger anywhere else scrolls the page.
+
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+
+use glam::DVec2;
+use wasm_bindgen::prelude::*;
+use web_sys::Element;
+
+use crate::planar2r::{wrap_angle, Arm, Elbow};
+use crate::ui::dom;
+use crate::ui::kit::canvas::{disc, ring, Ink, LayeredCanvas};
+use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
+use crate::ui::kit::frame::FrameLoop;
+use crate::ui::kit::scope::Scope;
+use crate::ui::router;
+use crate::view::ik2r::{
+    elbow_of, extent_m, fmt_fixed, handles, hit_test, joints_on_screen, num, part_at, Grab, ViewXf,
+};
+
+/// The pose it opens with: the IK page's (q1 0.3 rad, q2 0.8 rad, elbow down).
+const START: (f64, f64) = (0.3, 0.8);
+
+/// Colours of the view (those of the IK page's arm view).
+mod colour {
+    pub const ANNULUS: &str = "rgba(46, 125, 209, 0.10)";
+    pub const ANNULUS_EDGE: &str = "rgba(46, 125, 209, 0.55)";
+    pub const BG: &str = "#fbfcfe";
+    pub const AXIS: &str = "#c9d1dc";
+    pub const LINK1: &str = "#1f4e8c";
+    pub const LINK2: &str = "#2e7dd1";
+    pub const JOINT_FILL: &str = "#ffffff";
+    pub const JOINT_EDGE: &str = "#1d2633";
+    pub const TIP: &str = "#d9480f";
+}
+
+/// The view, its readouts and its link; listeners and the frame loop go away on drop.
+pub(crate) struct HomeArm {
+    canvas: RefCell<LayeredCanvas>,
+    /// Joint angles (q1, q2), radians.
+    pose: Cell<(f64, f64)>,
+    q1_out: Element,
+    q2_out: Element,
+    open: Element,
+    drag: RefCell<Option<Drag<Grab>>>,
+    frame: RefCell<Option<FrameLoop>>,
+    scope: RefCell<Scope>,
+}
+
+/// Builds the figure (stage, readouts, link) at the end of `parent`.
+pub(crate) fn mount(parent: &Element) -> Result<Rc<HomeArm>, JsValue> {
+    let figure = dom::el_class("figure", "home-arm")?;
+    figure.set_attribute("data-testid", "home-arm")?;
+    let stage = dom::el_class("div", "home-arm-stage")?;
+    let canvas = dom::el_class("canvas", "home-arm-layer")?;
+    canvas.set_attribute("data-testid", "home-arm-canvas")?;
+    canvas.set_attribute("role", "img")?;
+    dom::set_i18n_attrs(&canvas, &[("aria-label", "home-arm-label")])?;
+    dom::append(&stage, &canvas)?;
+    dom::append(&figure, &stage)?;
+
+    let caption = dom::el("figcaption")?;
+    dom::append(
+        &caption,
+        &dom::el_i18n("p", "home-arm-hint", "home-arm-hint")?,
+    )?;
+    let values = dom::el_class("p", "home-arm-values")?;
+    let mut out = Vec::new();
+    for key in ["q1", "q2"] {
+        let label = dom::el_text("span", "home-arm-name", key)?;
+        dom::append(&values, &label)?;
+        let value = dom::el_class("output", "home-arm-value")?;
+        value.set_attribute("data-testid", &format!("home-arm-{key}"))?;
+        dom::append(&values, &value)?;
+        out.push(value);
+    }
+    dom::append(&caption, &values)?;
+    let open = dom::el_class("a", "home-arm-open")?;
+    open.set_attribute("data-testid", "home-arm-open")?;
+    dom::append(&open, &dom::el_i18n("span", "", "home-arm-open")?)?;
+    let arrow = dom::el_text("span", "arrow", "\u{a0}→")?;
+    arrow.set_attribute("aria-hidden", "true")?;
+    dom::append(&open, &arrow)?;
+    dom::append(&caption, &open)?;
+    dom::append(&figure, &caption)?;
+    dom::append(parent, &figure)?;
+
+    let mut out = out.into_iter();
+    let (Some(q1_out), Some(q2_out)) = (out.next(), out.next()) else {
+        return Err(JsValue::from_str("home arm: no readouts"));
+    };
+    let arm = Rc::new(HomeArm {
+        canvas: RefCell::new(LayeredCanvas::from_stage(&stage)?),
+        pose: Cell::new(START),
+        q1_out,
+        q2_out,
+        open,
+        drag: RefCell::new(None),
+        frame: RefCell::new(None),
+        scope: RefCell::new(Scope::new()),
+    });
+    let weak = Rc::downgrade(&arm);
+    {
+        let mut scope = arm.scope.borrow_mut();
+        *arm.frame.borrow_mut() = Some(scope.frame_loop(&weak, |a, _| a.draw()));
+        scope.observe_resize(&[&stage], &weak, |a| a.relayout())?;
+    }
+    let (w_hit, w_on) = (weak.clone(), weak.clone());
+    let drag = Drag::attach(
+        &stage,
+        &canvas,
+        move |at, kind| w_hit.upgrade()?.grab_at(at, kind),
+        move |ev| {
+            if let Some(a) = w_on.upgrade() {
+                a.on_drag(ev);
+            }
+        },
+    )?;
+    *arm.drag.borrow_mut() = Some(drag);
+    arm.show_values();
+    arm.relayout();
+    Ok(arm)
+}
+
+impl HomeArm {
+    /// Redraws in the next frame (projector mode changed).
+    pub(crate) fn request(&self) {
+        if let Some(frame) = self.frame.borrow().as_ref() {
+            frame.request();
+        }
+    }
+
+    fn xf(&self) -> ViewXf {
+        let (w, h) = self.canvas.borrow().size();
+        ViewXf::fit(w, h, extent_m(&Arm::DEFAULT, None))
+    }
+
+    /// A finger takes only the arm itself; a mouse or pen press anywhere takes the tip.
+    fn grab_at(&self, at: DVec2, kind: PointerKind) -> Option<Grab> {
+        let (q1, q2) = self.pose.get();
+        let xf = self.xf();
+        if kind == PointerKind::Touch {
+            part_at(&xf, &Arm::DEFAULT, q1, q2, at, true)
+        } else {
+            Some(hit_test(&xf, &Arm::DEFAULT, q1, q2, at, false))
+        }
+    }
+
+    fn on_drag(&self, ev: DragEvent<Grab>) {
+        match ev {
+            DragEvent::Start { handle, at, .. } | DragEvent::Move { handle, at } => {
+                self.move_part(handle, at)
+            }
+            DragEvent::Tap { at } => self.move_part(Grab::Tip, at),
+            DragEvent::Hover(at) => {
+                let (q1, q2) = self.pose.get();
+                let over = part_at(&self.xf(), &Arm::DEFAULT, q1, q2, at, false).is_some();
+                if let Some(d) = self.drag.borrow().as_ref() {
+                    d.set_hover_cursor(if over { "grab" } else { "" });
+                }
+            }
+            DragEvent::Leave | DragEvent::End { .. } => {}
+        }
+    }
+
+    /// The pointer at `at` holds `part`: the tip by IK (pinned to the reach), a link by its
+    /// joint angle.
+    fn move_part(&self, part: Grab, at: DVec2) {
+        let arm = Arm::DEFAULT;
+        let (q1, q2) = self.pose.get();
+        let p = self.xf().world(at);
+        let next = match part {
+            Grab::Tip => {
+                let (x, y, _) = arm.clamp_to_reach(p.x, p.y);
+                arm.ik(x, y, elbow_of(q2)).unwrap_or((q1, q2))
+            }
+            Grab::Q1 => (p.y.atan2(p.x), q2),
+            Grab::Q2 => {
+                let (ex, ey) = arm.elbow(q1);
+                (q1, wrap_angle((p.y - ey).atan2(p.x - ex) - q1))
+            }
+        };
+        if next.0.is_finite() && next.1.is_finite() && next != (q1, q2) {
+            self.pose.set(next);
+            self.show_values();
+            self.request();
+        }
+    }
+
+    /// The angles in degrees and the link that opens this pose on the IK page.
+    fn show_values(&self) {
+        let (q1, q2) = self.pose.get();
+        for (out, q) in [(&self.q1_out, q1), (&self.q2_out, q2)] {
+            out.set_text_content(Some(&format!("{}°", fmt_fixed(q.to_degrees(), 1))));
+            let _ = out.set_attribute("data-value", &num(q));
+        }
+        let elbow = if elbow_of(q2) == Elbow::Down {
+            "down"
+        } else {
+            "up"
+        };
+        let href = router::build_hash(
+            "ik-2r",
+            &[
+                ("q1".to_string(), fmt_fixed(q1, 6)),
+                ("q2".to_string(), fmt_fixed(q2, 6)),
+                ("elbow".to_string(), elbow.to_string()),
+            ],
+        );
+        let _ = self.open.set_attribute("href", &href);
+    }
+
+    fn relayout(&self) {
+        if let Ok(mut canvas) = self.canvas.try_borrow_mut() {
+            canvas.fit();
+        }
+        if let Some(d) = self.drag.borrow().as_ref() {
+            d.relayout();
+        }
+        // Resizing a canvas clears it: draw at once, not a frame later.
+        self.draw();
+    }
+
+    fn draw(&self) {
+        let Ok(canvas) = self.canvas.try_borrow() else {
+            return;
+        };
+        let layer = canvas.top();
+        layer.begin();
+        let c = &layer.ctx;
+        let ink = Ink::current();
+        let arm = Arm::DEFAULT;
+        let (q1, q2) = self.pose.get();
+        let xf = self.xf();
+        let (w, h) = canvas.size();
+        let o = xf.origin();
+        let (inner, outer) = arm.reach();
+        c.set_fill_style_str(colour::BG);
+        c.fill_rect(0.0, 0.0, w, h);
+        // The reachable annulus, then the axes through the base.
+        disc(c, o, outer * xf.px_per_m, colour::ANNULUS);
+        disc(c, o, inner * xf.px_per_m, colour::BG);
+        for r in [inner, outer] {
+            ring(c, o, r * xf.px_per_m, colour::ANNULUS_EDGE, ink.line);
+        }
+        c.set_stroke_style_str(colour::AXIS);
+        c.set_line_width(ink.line);
+        c.begin_path();
+        c.move_to(0.0, o.y);
+        c.line_to(w, o.y);
+        c.move_to(o.x, 0.0);
+        c.line_to(o.x, h);
+        c.stroke();
+        // Links, joints and the tip.
+        let [base, elbow, tip] = joints_on_screen(&xf, &arm, q1, q2);
+        c.set_line_cap("round");
+        for (a, b, colour) in [(base, elbow, colour::LINK1), (elbow, tip, colour::LINK2)] {
+            c.set_stroke_style_str(colour);
+            c.set_line_width(7.0 * ink.line);
+            c.begin_path();
+            c.move_to(a.x, a.y);
+            c.line_to(b.x, b.y);
+            c.stroke();
+        }
+        for p in [base, elbow] {
+            disc(c, p, 6.0 * ink.line, colour::JOINT_FILL);
+            ring(c, p, 6.0 * ink.line, colour::JOINT_EDGE, 2.0 * ink.line);
+        }
+        disc(c, tip, 10.0 * ink.line, colour::TIP);
+        ring(c, tip, 10.0 * ink.line, colour::JOINT_FILL, 2.0 * ink.line);
+        ring(c, tip, 15.0 * ink.line, colour::TIP, ink.line);
+        // Where the tip is, in CSS px of the canvas (for tests, as on the IK page).
+        let top = &layer.canvas;
+        let _ = top.set_attribute("data-tip-x", &format!("{:.2}", tip.x));
+        let _ = top.set_attribute("data-tip-y", &format!("{:.2}", tip.y));
+        drop(canvas);
+        // The touch handles: the tip, the elbow and both links.
+        if let Some(d) = self.drag.borrow().as_ref() {
+            let shapes: Vec<_> = handles(&xf, &arm, q1, q2, true)
+                .into_iter()
+                .map(|(_, shape)| shape)
+                .collect();
+            d.set_handles(&shapes);
+        }
+    }
+}
