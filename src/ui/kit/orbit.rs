@@ -141,9 +141,9 @@ struct Inner<H: Copy + PartialEq + 'static> {
     gesture: Cell<Gesture<H>>,
     /// The top canvas's client rect at the press (left, top), for positions during a drag.
     origin: Cell<DVec2>,
-    /// The camera when a touch began to orbit: restored if the browser takes the finger to
-    /// scroll the page (`pointercancel`).
-    touch_orbit_from: Cell<Option<Camera>>,
+    /// The camera and preset when a touch began to orbit: restored if the browser takes the
+    /// finger to scroll the page (`pointercancel`).
+    touch_orbit_from: Cell<Option<(Camera, Option<Preset>)>>,
     draw: RefCell<Option<Draw>>,
     claim: Option<Claim<H>>,
     on_handle: Option<Box<dyn Fn(DragEvent<H>)>>,
@@ -523,8 +523,10 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
                         }
                     }
                     None => {
-                        self.touch_orbit_from
-                            .set((kind == PointerKind::Touch).then(|| self.camera.get()));
+                        self.touch_orbit_from.set(
+                            (kind == PointerKind::Touch)
+                                .then(|| (self.camera.get(), self.preset.get())),
+                        );
                         self.gesture.set(Gesture::Orbit { id, last: at });
                     }
                 }
@@ -615,8 +617,10 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
                 self.gesture.set(Gesture::Idle);
                 match self.touch_orbit_from.take() {
                     // The browser took the finger to scroll the page: no orbit happened.
-                    Some(camera) if cancelled => {
+                    Some((camera, preset)) if cancelled => {
                         self.camera.set(camera);
+                        self.preset.set(preset);
+                        self.show_preset();
                         self.request();
                     }
                     _ => self.view_changed(),
