@@ -7,24 +7,15 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { serveApp, browser, readouts, OUT } from './harness.mjs';
+import { serveApp, openApp, readouts, OUT } from './harness.mjs';
 
 const server = serveApp();
 const PHONE = { width: 390, height: 844 };
 
 /** Opens `hash` on a touch phone; `{ page, cdp, errors, close }`. */
-async function openPhone(hash, lang = 'en-US') {
-  const context = await (await browser()).newContext({
-    viewport: PHONE, locale: lang, deviceScaleFactor: 1, hasTouch: true, isMobile: true, serviceWorkers: 'block',
-  });
-  const page = await context.newPage();
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(`${server.url}/${hash}`);
-  await page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
-  const cdp = await context.newCDPSession(page);
-  return { page, cdp, errors, close: () => context.close() };
+async function openPhone(hash, locale = 'en-US') {
+  const app = await openApp(server.url, hash, { viewport: PHONE, locale, touch: true });
+  return { ...app, cdp: await app.context.newCDPSession(app.page) };
 }
 
 /** One finger from `from` to `to` (client px) in `steps` moves, then lifted. */

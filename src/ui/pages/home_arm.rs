@@ -18,6 +18,7 @@ use crate::ui::kit::canvas::{disc, ring, Ink, LayeredCanvas};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::frame::FrameLoop;
 use crate::ui::kit::scope::Scope;
+use crate::ui::pages::ik2r::arm_colour as colour;
 use crate::ui::router;
 use crate::view::ik2r::{
     elbow_of, extent_m, fmt_fixed, handles, hit_test, joints_on_screen, num, part_at, Grab, ViewXf,
@@ -25,19 +26,6 @@ use crate::view::ik2r::{
 
 /// The pose it opens with: the IK page's (q1 0.3 rad, q2 0.8 rad, elbow down).
 const START: (f64, f64) = (0.3, 0.8);
-
-/// Colours of the view (those of the IK page's arm view).
-mod colour {
-    pub const ANNULUS: &str = "rgba(46, 125, 209, 0.10)";
-    pub const ANNULUS_EDGE: &str = "rgba(46, 125, 209, 0.55)";
-    pub const BG: &str = "#fbfcfe";
-    pub const AXIS: &str = "#c9d1dc";
-    pub const LINK1: &str = "#1f4e8c";
-    pub const LINK2: &str = "#2e7dd1";
-    pub const JOINT_FILL: &str = "#ffffff";
-    pub const JOINT_EDGE: &str = "#1d2633";
-    pub const TIP: &str = "#d9480f";
-}
 
 /// The view, its readouts and its link; listeners and the frame loop go away on drop.
 pub(crate) struct HomeArm {
@@ -52,54 +40,34 @@ pub(crate) struct HomeArm {
     scope: RefCell<Scope>,
 }
 
+/// The figure's markup: the stage with its canvas, the hint, the two angles and the link.
+const MARKUP: &str = "<div class=\"home-arm-stage\" data-home-arm=\"stage\">\
+    <canvas class=\"home-arm-layer\" data-testid=\"home-arm-canvas\" role=\"img\" \
+    data-i18n-attr=\"aria-label=home-arm-label\"></canvas></div>\
+    <figcaption><p class=\"home-arm-hint\" data-i18n=\"home-arm-hint\"></p>\
+    <p class=\"home-arm-values\"><span class=\"home-arm-name\">q1</span>\
+    <output class=\"home-arm-value\" data-testid=\"home-arm-q1\"></output>\
+    <span class=\"home-arm-name\">q2</span>\
+    <output class=\"home-arm-value\" data-testid=\"home-arm-q2\"></output></p>\
+    <a class=\"home-arm-open\" data-testid=\"home-arm-open\"><span data-i18n=\"home-arm-open\"></span>\
+    <span class=\"arrow\" aria-hidden=\"true\">\u{a0}→</span></a></figcaption>";
+
 /// Builds the figure (stage, readouts, link) at the end of `parent`.
 pub(crate) fn mount(parent: &Element) -> Result<Rc<HomeArm>, JsValue> {
     let figure = dom::el_class("figure", "home-arm")?;
     figure.set_attribute("data-testid", "home-arm")?;
-    let stage = dom::el_class("div", "home-arm-stage")?;
-    let canvas = dom::el_class("canvas", "home-arm-layer")?;
-    canvas.set_attribute("data-testid", "home-arm-canvas")?;
-    canvas.set_attribute("role", "img")?;
-    dom::set_i18n_attrs(&canvas, &[("aria-label", "home-arm-label")])?;
-    dom::append(&stage, &canvas)?;
-    dom::append(&figure, &stage)?;
-
-    let caption = dom::el("figcaption")?;
-    dom::append(
-        &caption,
-        &dom::el_i18n("p", "home-arm-hint", "home-arm-hint")?,
-    )?;
-    let values = dom::el_class("p", "home-arm-values")?;
-    let mut out = Vec::new();
-    for key in ["q1", "q2"] {
-        let label = dom::el_text("span", "home-arm-name", key)?;
-        dom::append(&values, &label)?;
-        let value = dom::el_class("output", "home-arm-value")?;
-        value.set_attribute("data-testid", &format!("home-arm-{key}"))?;
-        dom::append(&values, &value)?;
-        out.push(value);
-    }
-    dom::append(&caption, &values)?;
-    let open = dom::el_class("a", "home-arm-open")?;
-    open.set_attribute("data-testid", "home-arm-open")?;
-    dom::append(&open, &dom::el_i18n("span", "", "home-arm-open")?)?;
-    let arrow = dom::el_text("span", "arrow", "\u{a0}→")?;
-    arrow.set_attribute("aria-hidden", "true")?;
-    dom::append(&open, &arrow)?;
-    dom::append(&caption, &open)?;
-    dom::append(&figure, &caption)?;
+    figure.set_inner_html(MARKUP);
+    dom::relocalize(&figure)?;
     dom::append(parent, &figure)?;
-
-    let mut out = out.into_iter();
-    let (Some(q1_out), Some(q2_out)) = (out.next(), out.next()) else {
-        return Err(JsValue::from_str("home arm: no readouts"));
-    };
+    let find = |selector: &str| dom::find::<Element>(&figure, selector, "home arm");
+    let stage = find("[data-home-arm=\"stage\"]")?;
+    let canvas = find("canvas")?;
     let arm = Rc::new(HomeArm {
         canvas: RefCell::new(LayeredCanvas::from_stage(&stage)?),
         pose: Cell::new(START),
-        q1_out,
-        q2_out,
-        open,
+        q1_out: find("[data-testid=\"home-arm-q1\"]")?,
+        q2_out: find("[data-testid=\"home-arm-q2\"]")?,
+        open: find("[data-testid=\"home-arm-open\"]")?,
         drag: RefCell::new(None),
         frame: RefCell::new(None),
         scope: RefCell::new(Scope::new()),
@@ -248,7 +216,7 @@ impl HomeArm {
         for r in [inner, outer] {
             ring(c, o, r * xf.px_per_m, colour::ANNULUS_EDGE, ink.line);
         }
-        c.set_stroke_style_str(colour::AXIS);
+        c.set_stroke_style_str(colour::GRID);
         c.set_line_width(ink.line);
         c.begin_path();
         c.move_to(0.0, o.y);
