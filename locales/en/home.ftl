@@ -9,6 +9,7 @@ home-intro = Short, honest robotics drills that run in your browser: MuJoCo ener
 home-tiles-label = Drills that run in your browser
 home-arm-label = A two-link arm (L1 0.12 m, L2 0.10 m) inside the ring it can reach
 home-arm-hint = Drag the orange tip: both joints follow by inverse kinematics. Drag a link to turn one joint.
+home-arm-key-nudge = Move the home arm's tip 5 mm (Shift: 1 mm), with the arm focused
 home-arm-open = Open this pose in the IK playground
 home-card-more = Inputs, files and command lines
 home-featured-label-ik-2r = Kinematics · drag an arm, watch |det J| change

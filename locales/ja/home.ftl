@@ -9,6 +9,7 @@ home-intro = ブラウザで動く、短く、ごまかしのないロボティ�
 home-tiles-label = ブラウザで動くドリル
 home-arm-label = 届く範囲の輪の中にある 2 リンクのアーム（L1 0.12 m、L2 0.10 m）
 home-arm-hint = オレンジの先端をドラッグすると、逆運動学で両方の関節がついてきます。リンクをドラッグすると 1 つの関節だけが回ります。
+home-arm-key-nudge = ホームのアームにフォーカスがあるとき、先端を 5 mm 動かす（Shift：1 mm）
 home-arm-open = この姿勢を IK プレイグラウンドで開く
 home-card-more = 入力・出力ファイル・コマンドライン
 home-featured-label-ik-2r = 運動学・アームを動かして |det J| の変化を見る

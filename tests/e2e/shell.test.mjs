@@ -755,6 +755,11 @@ test('home opens on a live arm and tiles that each say what their page shows; th
       await page.mouse.move(tip[0] - 60, tip[1] + 50, { steps: 5 });
       await page.mouse.up();
       assert.notDeepEqual(await q(), start, `${lang}: the arm moved`);
+      // The drag focused the view: an arrow key moves the tip 5 mm.
+      const dragged = await q();
+      assert.equal(await page.evaluate(() => document.activeElement?.dataset.testid), 'home-arm-canvas');
+      await page.keyboard.press('ArrowUp');
+      assert.notDeepEqual(await q(), dragged, `${lang}: the key moved the arm`);
       // One tile per page but home, each with its own label; the labels are all different.
       const labels = await page.locator('.tile-grid .featured-label').allTextContents();
       const tiles = await page.locator('.tile-grid .featured-card').count();

@@ -12,7 +12,7 @@
 use std::rc::Rc;
 
 use wasm_bindgen::prelude::*;
-use web_sys::Element;
+use web_sys::{Element, KeyboardEvent};
 
 use super::home_arm::{self, HomeArm};
 use super::home_picture;
@@ -21,7 +21,7 @@ use crate::recipes::{RecipeInfo, RECIPES};
 use crate::ui::command_line::shell_word;
 use crate::ui::ctx;
 use crate::ui::dom::{append, el, el_class, el_i18n, el_text};
-use crate::ui::page::{MountCtx, Page, PageDef, ShellLink};
+use crate::ui::page::{MountCtx, Page, PageDef, ShellLink, Shortcut};
 use crate::ui::router::{self, HOME_ID};
 
 /// The home page (`#/`): markup, every text a `data-i18n` message, and the live arm.
@@ -37,6 +37,14 @@ impl Page for HomePage {
 
     fn set_projector(&self, _on: bool) {
         self.arm.request();
+    }
+
+    fn shortcuts(&self) -> Vec<Shortcut> {
+        home_arm::KEYS.to_vec()
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        self.arm.on_key(event)
     }
 }
 

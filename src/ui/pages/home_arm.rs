@@ -1,23 +1,25 @@
 //! The live arm at the top of the home page: the recipes' default 2R arm (0.12 m, 0.10 m) in a
 //! small view. Dragging the tip moves it by inverse kinematics on the current elbow branch
 //! (pinned to the reach `|L1 − L2| ≤ r ≤ L1 + L2`), dragging a link turns one joint, a tap or
-//! a mouse press on empty space sends the tip there; the joint angles read out under it and a
-//! link opens the same pose on the IK page. Pointer input is the kit's drag: a finger on the
-//! arm drags it, a finger anywhere else scrolls the page.
+//! a mouse press on empty space sends the tip there, and with the view focused the arrow keys
+//! move the tip; the joint angles read out under it and a link opens the same pose on the IK
+//! page. Pointer input is the kit's drag: a finger on the arm drags it, a finger anywhere else
+//! scrolls the page.
 
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 
 use glam::DVec2;
 use wasm_bindgen::prelude::*;
-use web_sys::Element;
+use web_sys::{Element, KeyboardEvent};
 
 use crate::planar2r::{wrap_angle, Arm, Elbow};
 use crate::ui::dom;
-use crate::ui::kit::canvas::{disc, ring, Ink, LayeredCanvas};
+use crate::ui::kit::canvas::{disc, focus_without_scroll, ring, Ink, LayeredCanvas};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::frame::FrameLoop;
 use crate::ui::kit::scope::Scope;
+use crate::ui::page::Shortcut;
 use crate::ui::pages::ik2r::arm_colour as colour;
 use crate::ui::router;
 use crate::view::ik2r::{
@@ -27,9 +29,21 @@ use crate::view::ik2r::{
 /// The pose it opens with: the IK page's (q1 0.3 rad, q2 0.8 rad, elbow down).
 const START: (f64, f64) = (0.3, 0.8);
 
+/// How far an arrow key moves the tip, metres (with Shift: [`NUDGE_FINE_M`]).
+const NUDGE_M: f64 = 0.005;
+const NUDGE_FINE_M: f64 = 0.001;
+
+/// The keys of the focused arm, for the page's `?` list.
+pub(crate) const KEYS: &[Shortcut] = &[Shortcut {
+    keys: "← ↑ → ↓",
+    message_id: "home-arm-key-nudge",
+}];
+
 /// The view, its readouts and its link; listeners and the frame loop go away on drop.
 pub(crate) struct HomeArm {
     canvas: RefCell<LayeredCanvas>,
+    /// The top canvas (it takes focus and the arrow keys).
+    canvas_el: Element,
     /// Joint angles (q1, q2), radians.
     pose: Cell<(f64, f64)>,
     q1_out: Element,
@@ -42,10 +56,11 @@ pub(crate) struct HomeArm {
 
 /// The figure's markup: the stage with its canvas, the hint, the two angles and the link.
 const MARKUP: &str = "<div class=\"home-arm-stage\" data-home-arm=\"stage\">\
-    <canvas class=\"home-arm-layer\" data-testid=\"home-arm-canvas\" role=\"img\" \
-    data-i18n-attr=\"aria-label=home-arm-label\"></canvas></div>\
-    <figcaption><p class=\"home-arm-hint\" data-i18n=\"home-arm-hint\"></p>\
-    <p class=\"home-arm-values\"><span class=\"home-arm-name\">q1</span>\
+    <canvas class=\"home-arm-layer\" data-testid=\"home-arm-canvas\" role=\"img\" tabindex=\"0\" \
+    data-i18n-attr=\"aria-label=home-arm-label\" aria-describedby=\"home-arm-hint home-arm-values\">\
+    </canvas></div>\
+    <figcaption><p class=\"home-arm-hint\" id=\"home-arm-hint\" data-i18n=\"home-arm-hint\"></p>\
+    <p class=\"home-arm-values\" id=\"home-arm-values\"><span class=\"home-arm-name\">q1</span>\
     <output class=\"home-arm-value\" data-testid=\"home-arm-q1\"></output>\
     <span class=\"home-arm-name\">q2</span>\
     <output class=\"home-arm-value\" data-testid=\"home-arm-q2\"></output></p>\
@@ -64,6 +79,7 @@ pub(crate) fn mount(parent: &Element) -> Result<Rc<HomeArm>, JsValue> {
     let canvas = find("canvas")?;
     let arm = Rc::new(HomeArm {
         canvas: RefCell::new(LayeredCanvas::from_stage(&stage)?),
+        canvas_el: canvas.clone(),
         pose: Cell::new(START),
         q1_out: find("[data-testid=\"home-arm-q1\"]")?,
         q2_out: find("[data-testid=\"home-arm-q2\"]")?,
@@ -108,6 +124,33 @@ impl HomeArm {
         ViewXf::fit(w, h, extent_m(&Arm::DEFAULT, None))
     }
 
+    /// An arrow key with the arm focused moves the tip 5 mm (Shift: 1 mm); whether it did.
+    pub(crate) fn on_key(&self, event: &KeyboardEvent) -> bool {
+        let focused = dom::document()
+            .ok()
+            .and_then(|d| d.active_element())
+            .is_some_and(|active| active == self.canvas_el);
+        if !focused {
+            return false;
+        }
+        let step = if event.shift_key() {
+            NUDGE_FINE_M
+        } else {
+            NUDGE_M
+        };
+        let direction = match event.key().as_str() {
+            "ArrowLeft" => DVec2::new(-1.0, 0.0),
+            "ArrowRight" => DVec2::new(1.0, 0.0),
+            "ArrowUp" => DVec2::new(0.0, 1.0),
+            "ArrowDown" => DVec2::new(0.0, -1.0),
+            _ => return false,
+        };
+        let (q1, q2) = self.pose.get();
+        let (x, y) = Arm::DEFAULT.fk(q1, q2);
+        self.move_tip(DVec2::new(x, y) + direction * step);
+        true
+    }
+
     /// A finger takes only the arm itself; a mouse or pen press anywhere takes the tip.
     fn grab_at(&self, at: DVec2, kind: PointerKind) -> Option<Grab> {
         let (q1, q2) = self.pose.get();
@@ -121,9 +164,11 @@ impl HomeArm {
 
     fn on_drag(&self, ev: DragEvent<Grab>) {
         match ev {
-            DragEvent::Start { handle, at, .. } | DragEvent::Move { handle, at } => {
+            DragEvent::Start { handle, at, .. } => {
+                focus_without_scroll(&self.canvas_el);
                 self.move_part(handle, at)
             }
+            DragEvent::Move { handle, at } => self.move_part(handle, at),
             DragEvent::Tap { at } => self.move_part(Grab::Tip, at),
             DragEvent::Hover(at) => {
                 let (q1, q2) = self.pose.get();
@@ -143,17 +188,26 @@ impl HomeArm {
         let (q1, q2) = self.pose.get();
         let p = self.xf().world(at);
         let next = match part {
-            Grab::Tip => {
-                let (x, y, _) = arm.clamp_to_reach(p.x, p.y);
-                arm.ik(x, y, elbow_of(q2)).unwrap_or((q1, q2))
-            }
+            Grab::Tip => return self.move_tip(p),
             Grab::Q1 => (p.y.atan2(p.x), q2),
             Grab::Q2 => {
                 let (ex, ey) = arm.elbow(q1);
                 (q1, wrap_angle((p.y - ey).atan2(p.x - ex) - q1))
             }
         };
-        if next.0.is_finite() && next.1.is_finite() && next != (q1, q2) {
+        self.set_pose(next);
+    }
+
+    /// The tip to world point `p` (m) by IK on the current branch, pinned to the reach.
+    fn move_tip(&self, p: DVec2) {
+        let arm = Arm::DEFAULT;
+        let (q1, q2) = self.pose.get();
+        let (x, y, _) = arm.clamp_to_reach(p.x, p.y);
+        self.set_pose(arm.ik(x, y, elbow_of(q2)).unwrap_or((q1, q2)));
+    }
+
+    fn set_pose(&self, next: (f64, f64)) {
+        if next.0.is_finite() && next.1.is_finite() && next != self.pose.get() {
             self.pose.set(next);
             self.show_values();
             self.request();
