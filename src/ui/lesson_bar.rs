@@ -40,12 +40,9 @@ pub fn store(lesson: &Lesson) {
 /// The header button and its live status line.
 pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
     let wrap = dom::el_class("span", "lesson-add-wrap")?;
-    // Phones show "+" alone; its name is still the full text (visually hidden there).
+    // "+ Lesson" at every width: a bare "+" would not say what it adds to.
     let button = dom::el_class("button", "tool-button lesson-add")?;
     dom::append(&button, &dom::el_i18n("span", "tool-full", "lesson-add")?)?;
-    let short = dom::el_text("span", "tool-short", "+")?;
-    short.set_attribute("aria-hidden", "true")?;
-    dom::append(&button, &short)?;
     button.set_attribute("type", "button")?;
     button.set_attribute("data-testid", "lesson-add")?;
     dom::set_i18n_attrs(&button, &[("title", "lesson-add-title")])?;

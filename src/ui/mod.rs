@@ -20,6 +20,7 @@ pub mod download;
 pub mod drill_chain;
 pub mod kit;
 pub mod lesson_bar;
+pub mod nav_cue;
 pub mod nav_menu;
 pub mod overlay;
 pub mod page;

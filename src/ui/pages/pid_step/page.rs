@@ -83,14 +83,15 @@ impl SignalPage for PidPage {
         ],
         nudges: &[Arrows::UpDown.nudge("pid-key-kp", "Kp", |p| p.kp, 0.05, f64::NEG_INFINITY)],
         overlays: &[],
+        // Why the run stops short, and the button to tuned gains, right under the curves.
         under_plot: "<p class=\"sig-warning\" data-pid=\"warning\" \
                      data-testid=\"pid-step-warning\" role=\"alert\" hidden></p>\
+                     <div class=\"sig-note pid-short\" data-pid=\"short\" \
+                     data-testid=\"pid-step-short\" hidden><p data-pid=\"short-text\"></p>\
+                     <button type=\"button\" class=\"tool-button\" data-action=\"pid-tuned\" \
+                     data-i18n=\"pid-tuned\"></button></div>\
                      <p class=\"sig-note\" data-i18n=\"pid-ghost-note\"></p>",
-        under_readouts: "<div class=\"sig-note\" data-pid=\"short\" \
-                         data-testid=\"pid-step-short\" hidden><p data-pid=\"short-text\"></p>\
-                         <button type=\"button\" class=\"tool-button\" data-action=\"pid-tuned\" \
-                         data-i18n=\"pid-tuned\"></button></div>\
-                         <p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>",
+        under_readouts: "<p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>",
     };
 
     fn build(kit: &Kit<PidPage>) -> Result<PidPage, JsValue> {
