@@ -11,118 +11,39 @@
 //! [`Presenter`] walks a lesson: `next` first steps the page as often as the step says, then
 //! goes to the next step; `back` goes to the previous step.
 
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 use crate::view::url;
 
-/// The `format` field of a lesson file.
-pub const FORMAT: &str = "bsv-lesson";
-/// The lesson file version this build reads and writes.
-pub const VERSION: u32 = 1;
+mod file;
+
+pub use file::{Expected, LessonError, FORMAT, MAX_DEPTH, MAX_FILE_BYTES, VERSION};
+
 /// Limits that keep a lesson (and its URL) reasonable.
 pub const MAX_STEPS: usize = 60;
 pub const MAX_TITLE_CHARS: usize = 120;
 pub const MAX_NOTE_CHARS: usize = 1000;
 pub const MAX_PAGE_STEPS: u32 = 1000;
-/// A lesson file larger than this is refused before parsing.
-pub const MAX_FILE_BYTES: usize = 512 * 1024;
 
 /// One step: a page state, its title and note, and page steps before moving on.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "camelCase", deny_unknown_fields)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
 pub struct LessonStep {
     /// The permalink of the page state, `#/<page>?...` (no `lang`: the presenter's language
     /// applies).
     pub route: String,
     pub title: String,
-    #[serde(default)]
     pub note: String,
     /// How many times the page's stepper steps (PageDown) on this step before "next" moves to
     /// the following step.
-    #[serde(default)]
     pub page_steps: u32,
 }
 
 /// A lesson: a title and its steps.
-#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Lesson {
     pub title: String,
     pub steps: Vec<LessonStep>,
-}
-
-/// The file form: the lesson with its format and version.
-#[derive(Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct LessonFile {
-    format: String,
-    version: u32,
-    title: String,
-    steps: Vec<LessonStep>,
-}
-
-/// What is wrong with a lesson file or URL, for a localized message (`lesson-error-<id>` with
-/// the details as arguments).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum LessonError {
-    /// Not JSON at all, or not the shape of a lesson; `detail` is the parser's words.
-    NotALesson { detail: String },
-    /// `format` is not `bsv-lesson`.
-    WrongFormat { found: String },
-    /// A newer (or unknown) version.
-    WrongVersion { found: u32 },
-    /// Bigger than [`MAX_FILE_BYTES`].
-    TooBig { bytes: usize },
-    /// More than [`MAX_STEPS`] steps.
-    TooManySteps { count: usize },
-    /// Step `step` (from 1): its route names no page of the app.
-    UnknownPage { step: usize, page: String },
-    /// Step `step` (from 1): a text longer than its limit (`field`: `title` or `note`).
-    TooLong { step: usize, field: &'static str },
-    /// Step `step` (from 1): more page steps than [`MAX_PAGE_STEPS`].
-    TooManyPageSteps { step: usize },
-    /// The lesson's own title is longer than [`MAX_TITLE_CHARS`].
-    TitleTooLong,
-}
-
-impl LessonError {
-    /// The Fluent id of the message.
-    pub fn message_id(&self) -> &'static str {
-        match self {
-            LessonError::NotALesson { .. } => "lesson-error-not-a-lesson",
-            LessonError::WrongFormat { .. } => "lesson-error-format",
-            LessonError::WrongVersion { .. } => "lesson-error-version",
-            LessonError::TooBig { .. } => "lesson-error-too-big",
-            LessonError::TooManySteps { .. } => "lesson-error-too-many-steps",
-            LessonError::UnknownPage { .. } => "lesson-error-unknown-page",
-            LessonError::TooLong { .. } => "lesson-error-too-long",
-            LessonError::TooManyPageSteps { .. } => "lesson-error-page-steps",
-            LessonError::TitleTooLong => "lesson-error-title-too-long",
-        }
-    }
-
-    /// The message's arguments (name, value).
-    pub fn args(&self) -> Vec<(&'static str, String)> {
-        match self {
-            LessonError::NotALesson { detail } => vec![("detail", detail.clone())],
-            LessonError::WrongFormat { found } => vec![("found", found.clone())],
-            LessonError::WrongVersion { found } => vec![("found", found.to_string())],
-            LessonError::TooBig { bytes } => vec![("bytes", bytes.to_string())],
-            LessonError::TooManySteps { count } => {
-                vec![("count", count.to_string()), ("max", MAX_STEPS.to_string())]
-            }
-            LessonError::UnknownPage { step, page } => {
-                vec![("step", step.to_string()), ("page", page.clone())]
-            }
-            LessonError::TooLong { step, field } => {
-                vec![("step", step.to_string()), ("field", (*field).to_owned())]
-            }
-            LessonError::TooManyPageSteps { step } => vec![
-                ("step", step.to_string()),
-                ("max", MAX_PAGE_STEPS.to_string()),
-            ],
-            LessonError::TitleTooLong => vec![("max", MAX_TITLE_CHARS.to_string())],
-        }
-    }
 }
 
 impl LessonStep {
@@ -186,54 +107,19 @@ impl Lesson {
 
     /// The `.json` file text (pretty, stable key order).
     pub fn to_json(&self) -> String {
-        let file = LessonFile {
-            format: FORMAT.to_owned(),
-            version: VERSION,
-            title: self.title.clone(),
-            steps: self.steps.clone(),
-        };
-        // Serializing plain strings and numbers cannot fail.
-        serde_json::to_string_pretty(&file).unwrap_or_default() + "\n"
+        file::to_json(self)
     }
 
-    /// Reads a lesson file, checking its format, version and limits.
+    /// Reads a lesson file: its size, text, nesting, JSON, format, version, every field by
+    /// name, and the limits (the checks of [`file`]).
     pub fn from_json(text: &str, is_page: impl Fn(&str) -> bool) -> Result<Lesson, LessonError> {
-        if text.len() > MAX_FILE_BYTES {
-            return Err(LessonError::TooBig { bytes: text.len() });
-        }
-        let value: serde_json::Value = serde_json::from_str(text.trim_start_matches('\u{feff}'))
-            .map_err(|e| LessonError::NotALesson {
-                detail: e.to_string(),
-            })?;
-        let format = value.get("format").and_then(|f| f.as_str()).unwrap_or("");
-        if format != FORMAT {
-            return Err(LessonError::WrongFormat {
-                found: format.to_owned(),
-            });
-        }
-        let version = value.get("version").and_then(|v| v.as_u64()).unwrap_or(0);
-        if version != u64::from(VERSION) {
-            return Err(LessonError::WrongVersion {
-                found: u32::try_from(version).unwrap_or(u32::MAX),
-            });
-        }
-        let file: LessonFile =
-            serde_json::from_value(value).map_err(|e| LessonError::NotALesson {
-                detail: e.to_string(),
-            })?;
-        let lesson = Lesson {
-            title: file.title,
-            steps: file
-                .steps
-                .into_iter()
-                .map(|s| LessonStep {
-                    route: without_lang(&s.route),
-                    ..s
-                })
-                .collect(),
-        };
-        lesson.validate(is_page)?;
-        Ok(lesson)
+        file::from_json(text, is_page, false)
+    }
+
+    /// Reads the lesson kept in the browser's storage: [`Lesson::from_json`], except that a
+    /// lesson without steps (the user removed them all) is fine.
+    pub fn from_stored(text: &str, is_page: impl Fn(&str) -> bool) -> Result<Lesson, LessonError> {
+        file::from_json(text, is_page, true)
     }
 
     /// The lesson as the query of `#/lesson` (indexed keys, see the module docs).
@@ -406,21 +292,6 @@ mod tests {
     #[test]
     fn bad_files_name_what_is_wrong() {
         let bad = |text: &str| Lesson::from_json(text, is_page).unwrap_err();
-        assert!(matches!(bad("not json"), LessonError::NotALesson { .. }));
-        assert_eq!(
-            bad(r#"{"format":"other","version":1}"#),
-            LessonError::WrongFormat {
-                found: "other".into()
-            }
-        );
-        assert_eq!(
-            bad(r#"{"format":"bsv-lesson","version":2,"title":"","steps":[]}"#),
-            LessonError::WrongVersion { found: 2 }
-        );
-        assert!(matches!(
-            bad(r##"{"format":"bsv-lesson","version":1,"title":"","steps":[{"route":"#/x"}]}"##),
-            LessonError::NotALesson { .. }
-        ));
         assert_eq!(
             bad(
                 r##"{"format":"bsv-lesson","version":1,"title":"","steps":[{"route":"#/nope","title":"a"}]}"##
@@ -448,10 +319,6 @@ mod tests {
                 field: "note"
             }
         );
-        assert!(matches!(
-            bad(&" ".repeat(MAX_FILE_BYTES + 1)),
-            LessonError::TooBig { .. }
-        ));
         for e in [
             LessonError::TitleTooLong,
             LessonError::TooManyPageSteps { step: 2 },
