@@ -16,6 +16,7 @@ use serde::Serialize;
 use serde_json::{Map, Value};
 
 use super::{without_lang, Lesson, LessonStep, MAX_PAGE_STEPS, MAX_STEPS, MAX_TITLE_CHARS};
+use crate::error::RecipeError;
 use crate::pyfmt::{group_u64, size_text};
 
 /// The `format` field of a lesson file.
@@ -54,10 +55,12 @@ impl Expected {
 
 /// What is wrong with a lesson file or URL, for a localized message (`lesson-error-<id>` with
 /// the details as arguments). `step` counts from 1; `None` is the lesson itself.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum LessonError {
-    /// The browser could not read the file, or it is not UTF-8 text (the reason, localized).
+    /// The browser could not read the file (its reason).
     NotText { detail: String },
+    /// Not UTF-8 text ([`crate::recipes::decode_input`]'s error; a page says it localized).
+    Decode(RecipeError),
     /// Bigger than [`MAX_FILE_BYTES`].
     TooBig { bytes: u64 },
     /// Nothing in it (or only spaces).
@@ -109,7 +112,7 @@ impl LessonError {
         use LessonError::*;
         let at_step = |step: &Option<usize>| step.is_some();
         match self {
-            NotText { .. } => "lesson-error-not-text",
+            NotText { .. } | Decode(_) => "lesson-error-not-text",
             TooBig { .. } => "lesson-error-too-big",
             EmptyFile => "lesson-error-empty-file",
             TooDeep { .. } => "lesson-error-too-deep",
@@ -140,6 +143,7 @@ impl LessonError {
         let step_arg = |step: &Option<usize>| step.map(|n| ("step", n.to_string()));
         match self {
             NotText { detail } => vec![("detail", detail.clone())],
+            Decode(error) => vec![("detail", error.to_string())],
             TooBig { bytes } => vec![
                 ("size", size_text(*bytes)),
                 ("bytes", group_u64(*bytes)),
@@ -640,6 +644,7 @@ mod tests {
         let i18n = I18n::new();
         let errors = [
             LessonError::NotText { detail: "x".into() },
+            LessonError::Decode(RecipeError::InputUtf16 { name: "x".into() }),
             LessonError::TooBig { bytes: 1 },
             LessonError::EmptyFile,
             LessonError::TooDeep {

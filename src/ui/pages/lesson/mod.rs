@@ -56,7 +56,8 @@ impl Page for LessonPage {
         }
         let _ = self.0.render_steps();
         let _ = self.0.render_store_notes();
-        if let Some(error) = self.0.error.borrow().clone() {
+        let error = self.0.error.borrow().clone();
+        if let Some(error) = error {
             let _ = self.0.show_error(&error);
         }
     }
@@ -163,7 +164,10 @@ impl Editor {
     fn show_error(&self, error: &LessonError) -> Result<(), JsValue> {
         *self.error.borrow_mut() = Some(error.clone());
         let slot: Element = self.find("[data-field-error=\"lesson-file\"]")?;
-        let args: Vec<(&str, String)> = error.args();
+        let args: Vec<(&str, String)> = match error {
+            LessonError::Decode(decode) => vec![("detail", ctx::error_text(decode))],
+            _ => error.args(),
+        };
         slot.set_text_content(Some(&ctx::t_strings(error.message_id(), &args)));
         dom::show(&slot, true);
         Ok(())
@@ -247,13 +251,13 @@ impl Editor {
                     let weak = Rc::downgrade(&page);
                     input_file::read_text(&picked.name, &picked.blob, move |result| {
                         if let Some(page) = weak.upgrade() {
-                            let _ = page.imported(result.map_err(|p| LessonError::NotText {
-                                detail: match p {
-                                    input_file::ReadProblem::Browser(reason) => reason,
-                                    input_file::ReadProblem::Decode(error) => {
-                                        ctx::error_text(&error)
-                                    }
-                                },
+                            let _ = page.imported(result.map_err(|p| match p {
+                                input_file::ReadProblem::Browser(detail) => {
+                                    LessonError::NotText { detail }
+                                }
+                                input_file::ReadProblem::Decode(error) => {
+                                    LessonError::Decode(error)
+                                }
                             }));
                         }
                     });
