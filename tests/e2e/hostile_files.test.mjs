@@ -268,3 +268,105 @@ test('storage full while saving a lesson: the page says it is not saved and noth
     }
   }
 });
+
+// ---------- Trajectory CSVs ----------
+
+const PNG = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52]);
+const utf16 = (text) => Buffer.concat([Buffer.from([0xff, 0xfe]), Buffer.from(text, 'utf16le')]);
+const WIDE = Buffer.from(['t_s', ...Array.from({ length: 999_999 }, (_, j) => `q${j + 1}`)].join(',') + '\n0' + ',0'.repeat(999_999) + '\n1' + ',1'.repeat(999_999) + '\n');
+
+/** [file name, bytes, the English message, the Japanese one]: every bad CSV, refused beside the picker. */
+const BAD_CSVS = [
+  ['photo.png', PNG, '“photo.png” holds a NUL byte (line 3, byte 1 of the line): it is a binary file, not CSV text.', /「photo\.png」に NUL バイトがあります（3 行目、その行の 1 バイト目）/],
+  ['nul.csv', Buffer.from('t_s,q1\n0,1\n0.1,2\u0000\n'), '“nul.csv” holds a NUL byte (line 3, byte 6 of the line): it is a binary file, not CSV text.', /3 行目、その行の 6 バイト目/],
+  ['excel.csv', utf16('t_s,q1\r\n0,1\r\n1,2\r\n'), '“excel.csv” is UTF-16 text (it starts with a UTF-16 byte-order mark); this app reads UTF-8. Save the file as UTF-8 (in a spreadsheet: “CSV UTF-8”) and open it again.', /「excel\.csv」は UTF-16 のテキストです/],
+  ['wide.csv', WIDE, 'The CSV header has 1,000,000 columns; at most 1,000 are read.', /CSV のヘッダーに列が 1,000,000 個あります。読める列は 1,000 個までです。/],
+  ['header.csv', Buffer.from('t_s,q1,q2\n'), /^The CSV has 0 data rows?; .*at least 2/, /データ行が 0 行しかありません/],
+];
+
+/** The page's file input, readouts and error line: #/traj-resample's or #/drills'. */
+const PAGES = {
+  traj: { hash: '#/traj-resample', file: '[data-testid="traj-file"]', ready: async (page) => page.waitForFunction(() => document.querySelector('[data-readout="rows_in"]')?.textContent === '5', null, { timeout: 20000 }) },
+  drills: { hash: '#/drills?recipe=traj-resample', file: '[data-testid="drills-file"]', ready: async (page) => page.waitForFunction(() => Number(document.querySelector('[data-testid="drills-output"]')?.dataset.run) > 0, null, { timeout: 20000 }) },
+};
+
+/** What the last result shows: the traj page's counts, the drills page's summary (the CLI's words). */
+const lastResult = (page, which) => (which === 'traj'
+  ? page.evaluate(() => Object.fromEntries(['rows_in', 'rows_out', 'joints'].map((k) => [k, document.querySelector(`[data-readout="${k}"]`).textContent])))
+  : page.locator('[data-testid="drills-summary"]').innerText());
+
+for (const which of ['traj', 'drills']) {
+  test(`${which}: a binary file, NUL bytes, UTF-16, a million columns, a header only: named, the last result kept`, { timeout: 120_000 }, async () => {
+    const { hash, file, ready } = PAGES[which];
+    const { page, errors, close } = await openApp(server.url, hash, { viewport: DESKTOP });
+    try {
+      await ready(page);
+      const shown = await lastResult(page, which);
+      const message = page.locator('[data-field-error="csv_path"]');
+      for (const [name, buffer, en] of BAD_CSVS) {
+        await page.locator(file).setInputFiles({ name, mimeType: 'text/csv', buffer });
+        await page.waitForFunction(
+          ([n, text]) => {
+            const el = document.querySelector('[data-field-error="csv_path"]');
+            return el && el.offsetParent !== null && (text ? el.textContent === text : el.textContent.includes(n) || /CSV/.test(el.textContent));
+          },
+          [name, typeof en === 'string' ? en : null],
+          { timeout: 60000 },
+        );
+        if (typeof en === 'string') assert.equal(await message.innerText(), en, name);
+        else assert.match(await message.innerText(), en, name);
+        assert.deepEqual(await lastResult(page, which), shown, `${which} ${name}: the last result stays`);
+        if (name === 'excel.csv' || name === 'wide.csv') {
+          await message.scrollIntoViewIfNeeded();
+          await page.screenshot({ path: join(OUT, `hostile-${which}-${name.replace('.csv', '')}-en.png`) });
+        }
+      }
+      // Said again in Japanese on a switch (the last one: the header only).
+      await page.click('[data-testid="lang-switch"]');
+      await page.waitForFunction(() => document.documentElement.lang === 'ja');
+      assert.match(await message.innerText(), BAD_CSVS[4][3]);
+      for (const [name, buffer, , ja] of BAD_CSVS.slice(0, 3)) {
+        await page.locator(file).setInputFiles({ name, mimeType: 'text/csv', buffer });
+        await page.waitForFunction((source) => new RegExp(source).test(document.querySelector('[data-field-error="csv_path"]')?.textContent ?? ''), ja.source, { timeout: 20000 });
+      }
+      await message.scrollIntoViewIfNeeded();
+      await page.screenshot({ path: join(OUT, `hostile-${which}-utf16-ja.png`) });
+      assert.deepEqual(await lastResult(page, which), shown);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  });
+
+  test(`${which}: CR-only line ends read as line ends; a UTF-8 byte-order mark is accepted; at phone width`, async () => {
+    const { hash, file, ready } = PAGES[which];
+    const { page, errors, close } = await openApp(server.url, hash, { viewport: PHONE, locale: 'ja-JP' });
+    try {
+      await ready(page);
+      const text = 't_s,q1,q2\r0,0,0\r0.1,0.2,0.1\r0.25,0.5,0.4\r0.4,0.7,0.6\r';
+      await page.locator(file).setInputFiles({ name: 'mac.csv', mimeType: 'text/csv', buffer: Buffer.from(`\ufeff${text}`) });
+      if (which === 'traj') {
+        await page.waitForFunction(() => document.querySelector('[data-readout="rows_in"]')?.textContent === '4', null, { timeout: 20000 });
+        assert.equal((await page.locator('[data-readout="joints"]').innerText()).trim(), '2');
+        assert.equal((await page.locator('[data-readout="rows_out"]').innerText()).trim(), '21');
+      } else {
+        await page.waitForFunction(() => /4 -> 21 rows/.test(document.querySelector('[data-testid="drills-summary"]')?.textContent ?? ''), null, { timeout: 20000 });
+      }
+      // A NUL byte at phone width: the message wraps inside the page.
+      await page.locator(file).setInputFiles({ name: 'nul.csv', mimeType: 'text/csv', buffer: BAD_CSVS[1][1] });
+      const message = page.locator('[data-field-error="csv_path"]');
+      await message.waitFor({ state: 'visible' });
+      assert.match(await message.innerText(), /NUL バイト/);
+      await message.scrollIntoViewIfNeeded();
+      const width = await page.evaluate(() => document.documentElement.scrollWidth);
+      assert.ok(width <= PHONE.width, `page ${width} px wide`);
+      await page.screenshot({ path: join(OUT, `hostile-${which}-nul-ja-390.png`) });
+      await page.click('[data-testid="lang-switch"]');
+      await page.waitForFunction(() => document.documentElement.lang === 'en');
+      await page.screenshot({ path: join(OUT, `hostile-${which}-nul-en-390.png`) });
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  });
+}
