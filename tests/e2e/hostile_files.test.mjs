@@ -15,6 +15,9 @@ import { serveApp, openApp, OUT } from './harness.mjs';
 const server = serveApp();
 
 const PHONE = { width: 390, height: 844 };
+
+/** Scrolls `locator` to the middle of the view (clear of a page's sticky bars) for a screenshot. */
+const centre = (locator) => locator.evaluate((el) => el.scrollIntoView({ block: 'center' }));
 const DESKTOP = { width: 1366, height: 768 };
 
 // ---------- Lessons ----------
@@ -89,7 +92,7 @@ test('every bad lesson file is named (what and where) and the current lesson is 
       assert.equal(await page.evaluate(() => localStorage.getItem('bsv.lesson')), stored, `${name}: storage kept`);
       assert.match(await lessonError(page).innerText(), /The current lesson is kept\.$/, name);
       if (name === 'big.json' || name === 'route.json') {
-        await lessonError(page).scrollIntoViewIfNeeded();
+        await centre(lessonError(page));
         await page.screenshot({ path: join(OUT, `hostile-lesson-${name.replace('.json', '')}-en.png`) });
       }
     }
@@ -99,7 +102,7 @@ test('every bad lesson file is named (what and where) and the current lesson is 
     assert.match(await lessonError(page).innerText(), /「utf16\.json」は UTF-16 のテキストです/);
     await importBad(page, 'route.json', BAD_LESSONS[6][1], /^ステップ 2、フィールド「route」：このアプリに「warp-drive」というページはありません。/);
     await importBad(page, 'big.json', BAD_LESSONS[4][1], /50 MiB（52,428,800 バイト）/);
-    await lessonError(page).scrollIntoViewIfNeeded();
+    await centre(lessonError(page));
     await page.screenshot({ path: join(OUT, 'hostile-lesson-big-ja.png') });
     // A good file still imports after all that.
     await page.setInputFiles('input[data-action="lesson-import"]', { name: 'good.json', mimeType: 'application/json', buffer: Buffer.from(lessonFile([{ route: '#/pid-step?Kp=2&warp=9', title: 'PID' }])) });
@@ -118,7 +121,7 @@ test('a bad lesson file at phone width, in Japanese', async () => {
   try {
     await importBad(page, 'deep.json', Buffer.from(DEEP), /入れ子が 16 段を超えています（1 行目、17 文字目）/);
     assert.equal(await page.locator('.lesson-step').count(), 4, 'the built-in lesson is kept');
-    await lessonError(page).scrollIntoViewIfNeeded();
+    await centre(lessonError(page));
     const width = await page.evaluate(() => document.documentElement.scrollWidth);
     assert.ok(width <= PHONE.width, `page ${width} px wide`);
     await page.screenshot({ path: join(OUT, 'hostile-lesson-deep-ja-390.png') });
@@ -317,7 +320,7 @@ for (const which of ['traj', 'drills']) {
         else assert.match(await message.innerText(), en, name);
         assert.deepEqual(await lastResult(page, which), shown, `${which} ${name}: the last result stays`);
         if (name === 'excel.csv' || name === 'wide.csv') {
-          await message.scrollIntoViewIfNeeded();
+          await centre(message);
           await page.screenshot({ path: join(OUT, `hostile-${which}-${name.replace('.csv', '')}-en.png`) });
         }
       }
@@ -329,7 +332,7 @@ for (const which of ['traj', 'drills']) {
         await page.locator(file).setInputFiles({ name, mimeType: 'text/csv', buffer });
         await page.waitForFunction((source) => new RegExp(source).test(document.querySelector('[data-field-error="csv_path"]')?.textContent ?? ''), ja.source, { timeout: 20000 });
       }
-      await message.scrollIntoViewIfNeeded();
+      await centre(message);
       await page.screenshot({ path: join(OUT, `hostile-${which}-utf16-ja.png`) });
       assert.deepEqual(await lastResult(page, which), shown);
       assert.deepEqual(errors, []);
@@ -357,7 +360,7 @@ for (const which of ['traj', 'drills']) {
       const message = page.locator('[data-field-error="csv_path"]');
       await message.waitFor({ state: 'visible' });
       assert.match(await message.innerText(), /NUL バイト/);
-      await message.scrollIntoViewIfNeeded();
+      await centre(message);
       const width = await page.evaluate(() => document.documentElement.scrollWidth);
       assert.ok(width <= PHONE.width, `page ${width} px wide`);
       await page.screenshot({ path: join(OUT, `hostile-${which}-nul-ja-390.png`) });
