@@ -341,6 +341,32 @@ fn side_text(cells: u64) -> String {
     human(side)
 }
 
+impl RecipeError {
+    /// The English line of an input file that is not UTF-8 text.
+    fn fmt_not_text(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use RecipeError::*;
+        let c = |v: u64| human(v as f64);
+        match self {
+            InputNotUtf8 { name, offset } => write!(
+                f,
+                "'{name}' is not UTF-8 text: byte {} (counted from 0) is not valid UTF-8; save it as UTF-8",
+                c(*offset)
+            ),
+            InputUtf16 { name } => write!(
+                f,
+                "'{name}' is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as UTF-8"
+            ),
+            InputBinary { name, line, column } => write!(
+                f,
+                "'{name}' holds a NUL byte (line {}, byte {} of the line): a binary file, not CSV text",
+                c(*line),
+                c(*column)
+            ),
+            _ => Ok(()),
+        }
+    }
+}
+
 impl fmt::Display for RecipeError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         use RecipeError::*;
@@ -461,21 +487,7 @@ impl fmt::Display for RecipeError {
             InputMissing { name } => {
                 write!(f, "input file '{name}' not found (open it first)")
             }
-            InputNotUtf8 { name, offset } => write!(
-                f,
-                "'{name}' is not UTF-8 text: byte {} (counted from 0) is not valid UTF-8; save it as UTF-8",
-                c(*offset)
-            ),
-            InputUtf16 { name } => write!(
-                f,
-                "'{name}' is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as UTF-8"
-            ),
-            InputBinary { name, line, column } => write!(
-                f,
-                "'{name}' holds a NUL byte (line {}, byte {} of the line): a binary file, not CSV text",
-                c(*line),
-                c(*column)
-            ),
+            InputNotUtf8 { .. } | InputUtf16 { .. } | InputBinary { .. } => self.fmt_not_text(f),
             CsvTooManyColumns { count, limit } => write!(
                 f,
                 "CSV header has {} columns; the limit is {}",

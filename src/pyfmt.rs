@@ -75,8 +75,15 @@ pub fn group_u64(n: u64) -> String {
     group_digits(&n.to_string())
 }
 
-/// A size in bytes for reading: `512 bytes`-style counts stay exact below 1 KiB, then one
-/// decimal in KiB / MiB / GiB (`1.5 KiB`, `128 MiB`).
+/// A size in bytes for reading: counts stay exact below 1 KiB, then one decimal in KiB / MiB /
+/// GiB, a trailing `.0` dropped.
+///
+/// ```
+/// use bsv_playground::pyfmt::size_text;
+/// assert_eq!(size_text(100), "100 B");
+/// assert_eq!(size_text(1536), "1.5 KiB");
+/// assert_eq!(size_text(50 << 20), "50 MiB");
+/// ```
 pub fn size_text(bytes: u64) -> String {
     const UNITS: [&str; 3] = ["KiB", "MiB", "GiB"];
     if bytes < 1024 {

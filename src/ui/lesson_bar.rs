@@ -16,6 +16,7 @@ use crate::ui::kit::store::{self, Refused, Stored};
 use crate::ui::page::{ShellLink, ShellRequest};
 use crate::ui::{ctx, dom, router};
 use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
+use crate::view::lesson_file;
 
 /// localStorage key of the current lesson (its `.json` text).
 pub const LESSON_STORAGE_KEY: &str = "bsv.lesson";
@@ -35,7 +36,7 @@ pub fn stored(is_page: impl Fn(&str) -> bool) -> Lesson {
         return lesson;
     }
     match store::read(LESSON_STORAGE_KEY, |text| {
-        Lesson::from_stored(text, is_page)
+        lesson_file::from_stored(text, is_page)
     }) {
         Stored::Read(lesson) => lesson,
         Stored::Nothing | Stored::SetAside => Lesson::default(),
@@ -45,7 +46,7 @@ pub fn stored(is_page: impl Fn(&str) -> bool) -> Lesson {
 /// Saves `lesson` as the current one; `Err` when the browser refused (it is then kept in
 /// this tab's memory, and [`unsaved`] says so, until a save succeeds).
 pub fn store(lesson: &Lesson) -> Result<(), Refused> {
-    let saved = store::save(LESSON_STORAGE_KEY, &lesson.to_json());
+    let saved = store::save(LESSON_STORAGE_KEY, &lesson_file::to_json(lesson));
     UNSAVED.with_borrow_mut(|l| *l = saved.is_err().then(|| lesson.clone()));
     saved
 }

@@ -24,6 +24,7 @@ use crate::ui::lesson_bar::{self, LESSON_STORAGE_KEY};
 use crate::ui::page::{MountCtx, Page, ShellLink};
 use crate::ui::{ctx, download, router};
 use crate::view::lesson::{Lesson, LessonError, MAX_FILE_BYTES, MAX_PAGE_STEPS};
+use crate::view::lesson_file;
 
 /// The download of the stored text that could not be read.
 const UNREADABLE_FILE: &str = "lesson-unreadable.json";
@@ -280,7 +281,7 @@ impl Editor {
     /// A file's text (or why there is none): the lesson it holds replaces the current one,
     /// else the problem is named and the current lesson kept.
     fn imported(self: &Rc<Self>, text: Result<String, LessonError>) -> Result<(), JsValue> {
-        let parsed = text.and_then(|t| Lesson::from_json(&t, |id| self.is_page(id)));
+        let parsed = text.and_then(|t| lesson_file::from_json(&t, |id| self.is_page(id)));
         match parsed {
             Ok(lesson) => self.replace(lesson),
             Err(error) => self.show_error(&error),
@@ -306,7 +307,7 @@ impl Editor {
         if target.get_attribute("data-download").as_deref() == Some("lesson.json") {
             return download::download_text(
                 "lesson.json",
-                &self.lesson.borrow().to_json(),
+                &lesson_file::to_json(&self.lesson.borrow()),
                 "application/json",
             );
         }

@@ -1,235 +1,27 @@
-//! The lesson `.json` file (format `bsv-lesson`, version 1), written and read, and what can be
-//! wrong with a file or a link ([`LessonError`]), each with a Fluent message naming the place
-//! (step n, field f).
+//! The lesson `.json` file (format `bsv-lesson`, version 1), written and read; what can be
+//! wrong with one is a [`LessonError`] naming the place (step n, field f).
 //!
 //! Reading checks, in order: the size ([`MAX_FILE_BYTES`]; the page refuses a bigger file
 //! from its size alone, before reading it), text at all, nesting (at most [`MAX_DEPTH`] levels,
 //! checked before parsing: a lesson nests 3 deep, and serde_json's own limit of 128 would make
 //! a plain "syntax error"), JSON, an object, its `format` and `version`, then every field of
 //! the lesson and of each step by name (an unknown field, a missing one, a wrong type), at least
-//! one step, and the limits of [`Lesson::validate`]. Text fields are kept as text: the pages
-//! put them in inputs and text nodes only, so `<script>` or `javascript:` in a title or a
-//! note is shown, never run; a route must name a page of the app and is rebuilt by the URL
-//! codec, so a link is always `#/<page>?...`.
+//! one step (a file; the stored lesson may have none), and the limits of [`Lesson::validate`].
+//! Text fields are kept as text: the pages put them in inputs and text nodes only, so
+//! `<script>` or `javascript:` in a title or a note is shown, never run; a route must name a
+//! page of the app and is rebuilt by the URL codec, so a link is always `#/<page>?...`.
 
 use serde::Serialize;
 use serde_json::{Map, Value};
 
-use super::{without_lang, Lesson, LessonStep, MAX_PAGE_STEPS, MAX_STEPS, MAX_TITLE_CHARS};
-use crate::error::RecipeError;
-use crate::pyfmt::{group_u64, size_text};
-
-/// The `format` field of a lesson file.
-pub const FORMAT: &str = "bsv-lesson";
-/// The lesson file version this build reads and writes.
-pub const VERSION: u32 = 1;
-/// A lesson file larger than this is refused unread (60 steps with notes of 1,000 Japanese
-/// characters are about 200 KiB).
-pub const MAX_FILE_BYTES: u64 = 512 * 1024;
-/// Deepest nesting of arrays and objects read (a lesson has 3: file, steps, step).
-pub const MAX_DEPTH: usize = 16;
-/// Longest text from a file quoted in a message (a field name, a format, a page).
-const MAX_QUOTED_CHARS: usize = 40;
+use crate::view::lesson::{
+    without_lang, Expected, Lesson, LessonError, LessonStep, FORMAT, MAX_DEPTH, MAX_FILE_BYTES,
+    MAX_PAGE_STEPS, MAX_STEPS, VERSION,
+};
 
 /// The fields of the file, then of a step.
 const FILE_FIELDS: [&str; 4] = ["format", "version", "title", "steps"];
 const STEP_FIELDS: [&str; 4] = ["route", "title", "note", "pageSteps"];
-
-/// What a field should hold (the `expected` argument of a message).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Expected {
-    Text,
-    WholeNumber,
-    List,
-}
-
-impl Expected {
-    fn word(self) -> &'static str {
-        match self {
-            Expected::Text => "text",
-            Expected::WholeNumber => "number",
-            Expected::List => "list",
-        }
-    }
-}
-
-/// What is wrong with a lesson file or URL, for a localized message (`lesson-error-<id>` with
-/// the details as arguments). `step` counts from 1; `None` is the lesson itself.
-#[derive(Debug, Clone, PartialEq)]
-pub enum LessonError {
-    /// The browser could not read the file (its reason).
-    NotText { detail: String },
-    /// Not UTF-8 text ([`crate::recipes::decode_input`]'s error; a page says it localized).
-    Decode(RecipeError),
-    /// Bigger than [`MAX_FILE_BYTES`].
-    TooBig { bytes: u64 },
-    /// Nothing in it (or only spaces).
-    EmptyFile,
-    /// Arrays or objects nested deeper than [`MAX_DEPTH`]; where the limit is passed.
-    TooDeep { line: usize, column: usize },
-    /// Not JSON: where the parser stopped.
-    NotJson { line: usize, column: usize },
-    /// JSON, but not an object (`kind`: array, text, number, true/false, null).
-    NotAnObject { kind: &'static str },
-    /// Step `step` is not an object.
-    StepNotAnObject { step: usize },
-    /// An object without `format` (another program's JSON).
-    NoFormat,
-    /// `format` is not `bsv-lesson`.
-    WrongFormat { found: String },
-    /// A newer (or unknown) version.
-    WrongVersion { found: u64 },
-    /// A field this version does not know.
-    UnknownField { step: Option<usize>, field: String },
-    /// A required field is absent.
-    MissingField {
-        step: Option<usize>,
-        field: &'static str,
-    },
-    /// A field holds the wrong kind of value.
-    WrongType {
-        step: Option<usize>,
-        field: &'static str,
-        expected: Expected,
-    },
-    /// No steps: nothing to present.
-    NoSteps,
-    /// More than [`MAX_STEPS`] steps.
-    TooManySteps { count: usize },
-    /// Step `step`: its route names no page of the app.
-    UnknownPage { step: usize, page: String },
-    /// Step `step`: a text longer than its limit (`field`: `title` or `note`).
-    TooLong { step: usize, field: &'static str },
-    /// Step `step`: more page steps than [`MAX_PAGE_STEPS`].
-    TooManyPageSteps { step: usize },
-    /// The lesson's own title is longer than [`MAX_TITLE_CHARS`].
-    TitleTooLong,
-}
-
-impl LessonError {
-    /// The Fluent id of the message.
-    pub fn message_id(&self) -> &'static str {
-        use LessonError::*;
-        let at_step = |step: &Option<usize>| step.is_some();
-        match self {
-            NotText { .. } | Decode(_) => "lesson-error-not-text",
-            TooBig { .. } => "lesson-error-too-big",
-            EmptyFile => "lesson-error-empty-file",
-            TooDeep { .. } => "lesson-error-too-deep",
-            NotJson { .. } => "lesson-error-not-json",
-            NotAnObject { .. } => "lesson-error-not-an-object",
-            StepNotAnObject { .. } => "lesson-error-step-not-an-object",
-            NoFormat => "lesson-error-no-format",
-            WrongFormat { .. } => "lesson-error-format",
-            WrongVersion { .. } => "lesson-error-version",
-            UnknownField { step, .. } if at_step(step) => "lesson-error-step-unknown-field",
-            UnknownField { .. } => "lesson-error-unknown-field",
-            MissingField { step, .. } if at_step(step) => "lesson-error-step-missing-field",
-            MissingField { .. } => "lesson-error-missing-field",
-            WrongType { step, .. } if at_step(step) => "lesson-error-step-wrong-type",
-            WrongType { .. } => "lesson-error-wrong-type",
-            NoSteps => "lesson-error-no-steps",
-            TooManySteps { .. } => "lesson-error-too-many-steps",
-            UnknownPage { .. } => "lesson-error-unknown-page",
-            TooLong { .. } => "lesson-error-too-long",
-            TooManyPageSteps { .. } => "lesson-error-page-steps",
-            TitleTooLong => "lesson-error-title-too-long",
-        }
-    }
-
-    /// The message's arguments (name, value).
-    pub fn args(&self) -> Vec<(&'static str, String)> {
-        use LessonError::*;
-        let step_arg = |step: &Option<usize>| step.map(|n| ("step", n.to_string()));
-        match self {
-            NotText { detail } => vec![("detail", detail.clone())],
-            Decode(error) => vec![("detail", error.to_string())],
-            TooBig { bytes } => vec![
-                ("size", size_text(*bytes)),
-                ("bytes", group_u64(*bytes)),
-                ("limit", size_text(MAX_FILE_BYTES)),
-            ],
-            EmptyFile | NoFormat | NoSteps => vec![],
-            TooDeep { line, column } => vec![
-                ("line", line.to_string()),
-                ("column", column.to_string()),
-                ("max", MAX_DEPTH.to_string()),
-            ],
-            NotJson { line, column } => {
-                vec![("line", line.to_string()), ("column", column.to_string())]
-            }
-            NotAnObject { kind } => vec![("kind", (*kind).to_owned())],
-            StepNotAnObject { step } => vec![("step", step.to_string())],
-            WrongFormat { found } => vec![("found", quoted(found))],
-            WrongVersion { found } => {
-                vec![
-                    ("found", found.to_string()),
-                    ("version", VERSION.to_string()),
-                ]
-            }
-            UnknownField { step, field } => {
-                let mut args = vec![("field", quoted(field))];
-                args.extend(step_arg(step));
-                args
-            }
-            MissingField { step, field } => {
-                let mut args = vec![("field", (*field).to_owned())];
-                args.extend(step_arg(step));
-                args
-            }
-            WrongType {
-                step,
-                field,
-                expected,
-            } => {
-                let mut args = vec![
-                    ("field", (*field).to_owned()),
-                    ("expected", expected.word().to_owned()),
-                ];
-                args.extend(step_arg(step));
-                args
-            }
-            TooManySteps { count } => {
-                vec![("count", count.to_string()), ("max", MAX_STEPS.to_string())]
-            }
-            UnknownPage { step, page } => {
-                vec![("step", step.to_string()), ("page", quoted(page))]
-            }
-            TooLong { step, field } => vec![
-                ("step", step.to_string()),
-                ("field", (*field).to_owned()),
-                (
-                    "max",
-                    if *field == "note" {
-                        super::MAX_NOTE_CHARS
-                    } else {
-                        MAX_TITLE_CHARS
-                    }
-                    .to_string(),
-                ),
-            ],
-            TooManyPageSteps { step } => vec![
-                ("step", step.to_string()),
-                ("max", MAX_PAGE_STEPS.to_string()),
-            ],
-            TitleTooLong => vec![("max", MAX_TITLE_CHARS.to_string())],
-        }
-    }
-}
-
-/// Text from a file for a message: at most [`MAX_QUOTED_CHARS`] characters, control
-/// characters shown as `�`.
-fn quoted(text: &str) -> String {
-    let mut out: String = text
-        .chars()
-        .take(MAX_QUOTED_CHARS)
-        .map(|c| if c.is_control() { '\u{fffd}' } else { c })
-        .collect();
-    if text.chars().nth(MAX_QUOTED_CHARS).is_some() {
-        out.push('…');
-    }
-    out
-}
 
 /// The file form: the lesson with its format and version (field order as written).
 #[derive(Serialize)]
@@ -252,9 +44,19 @@ pub fn to_json(lesson: &Lesson) -> String {
     serde_json::to_string_pretty(&file).unwrap_or_default() + "\n"
 }
 
-/// Reads a lesson file (see the module docs for the checks, in order); `allow_empty`: a
-/// lesson without steps is fine (the stored one), else refused (a file to import).
-pub fn from_json(
+/// Reads a lesson file to import (see the module docs for the checks, in order); a lesson
+/// without steps is refused.
+pub fn from_json(text: &str, is_page: impl Fn(&str) -> bool) -> Result<Lesson, LessonError> {
+    read(text, is_page, false)
+}
+
+/// Reads the lesson kept in the browser's storage: [`from_json`], except that a lesson
+/// without steps (the user removed them all) is fine.
+pub fn from_stored(text: &str, is_page: impl Fn(&str) -> bool) -> Result<Lesson, LessonError> {
+    read(text, is_page, true)
+}
+
+fn read(
     text: &str,
     is_page: impl Fn(&str) -> bool,
     allow_empty: bool,
@@ -435,14 +237,16 @@ fn check_depth(text: &str) -> Result<(), LessonError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::RecipeError;
     use crate::i18n::{I18n, Lang};
+    use crate::view::lesson::{MAX_NOTE_CHARS, MAX_QUOTED_CHARS};
 
     fn is_page(p: &str) -> bool {
-        matches!(p, "ik-2r" | "pid-step")
+        matches!(p, "rrt-2d" | "ik-2r" | "pid-step" | "lesson")
     }
 
-    fn read(text: &str) -> Result<Lesson, LessonError> {
-        from_json(text, is_page, false)
+    fn import(text: &str) -> Result<Lesson, LessonError> {
+        from_json(text, is_page)
     }
 
     /// A lesson file with `steps` (JSON text of the array).
@@ -451,16 +255,73 @@ mod tests {
     }
 
     #[test]
+    fn json_round_trips_and_states_its_format() {
+        let lesson = Lesson {
+            title: "Planning & trajectories".into(),
+            steps: vec![
+                LessonStep {
+                    route: "#/rrt-2d?seed=7&it=0".into(),
+                    title: "Step the RRT".into(),
+                    note: "Watch the goal bias.".into(),
+                    page_steps: 5,
+                },
+                LessonStep::of_route("#/pid-step?Kp=2&lang=ja", "PID, hotter gains"),
+            ],
+        };
+        let text = to_json(&lesson);
+        assert!(text.contains("\"format\": \"bsv-lesson\"") && text.contains("\"pageSteps\": 5"));
+        assert_eq!(from_json(&text, is_page), Ok(lesson));
+    }
+
+    #[test]
+    fn bad_files_name_what_is_wrong() {
+        let bad = |text: &str| from_json(text, is_page).unwrap_err();
+        assert_eq!(
+            bad(
+                r##"{"format":"bsv-lesson","version":1,"title":"","steps":[{"route":"#/nope","title":"a"}]}"##
+            ),
+            LessonError::UnknownPage {
+                step: 1,
+                page: "nope".into()
+            }
+        );
+        // A lesson cannot contain the lesson page itself.
+        assert!(matches!(
+            bad(
+                r##"{"format":"bsv-lesson","version":1,"title":"","steps":[{"route":"#/lesson","title":"a"}]}"##
+            ),
+            LessonError::UnknownPage { .. }
+        ));
+        let long = "x".repeat(MAX_NOTE_CHARS + 1);
+        let text = format!(
+            r##"{{"format":"bsv-lesson","version":1,"title":"","steps":[{{"route":"#/ik-2r","title":"a","note":"{long}"}}]}}"##
+        );
+        assert_eq!(
+            bad(&text),
+            LessonError::TooLong {
+                step: 1,
+                field: "note"
+            }
+        );
+        for e in [
+            LessonError::TitleTooLong,
+            LessonError::TooManyPageSteps { step: 2 },
+        ] {
+            assert!(e.message_id().starts_with("lesson-error-") && !e.args().is_empty());
+        }
+    }
+
+    #[test]
     fn not_json_names_the_line_and_column() {
         assert_eq!(
-            read("{\n  \"format\": bsv\n}"),
+            import("{\n  \"format\": bsv\n}"),
             Err(LessonError::NotJson {
                 line: 2,
                 column: 13
             })
         );
-        assert_eq!(read(""), Err(LessonError::EmptyFile));
-        assert_eq!(read("\u{feff} \n\t"), Err(LessonError::EmptyFile));
+        assert_eq!(import(""), Err(LessonError::EmptyFile));
+        assert_eq!(import("\u{feff} \n\t"), Err(LessonError::EmptyFile));
     }
 
     #[test]
@@ -472,23 +333,27 @@ mod tests {
             ("true", "boolean"),
             ("null", "null"),
         ] {
-            assert_eq!(read(text), Err(LessonError::NotAnObject { kind }), "{text}");
+            assert_eq!(
+                import(text),
+                Err(LessonError::NotAnObject { kind }),
+                "{text}"
+            );
         }
         // A teleop evidence file: an object without "format".
         let evidence = r#"{"schemaVersion":"0.1","sessionId":"s","dataArtifacts":[]}"#;
-        assert_eq!(read(evidence), Err(LessonError::NoFormat));
+        assert_eq!(import(evidence), Err(LessonError::NoFormat));
         assert_eq!(
-            read(r#"{"format":"slides","version":1}"#),
+            import(r#"{"format":"slides","version":1}"#),
             Err(LessonError::WrongFormat {
                 found: "slides".into()
             })
         );
         assert_eq!(
-            read(r#"{"format":"bsv-lesson","version":2,"title":"","steps":[]}"#),
+            import(r#"{"format":"bsv-lesson","version":2,"title":"","steps":[]}"#),
             Err(LessonError::WrongVersion { found: 2 })
         );
         assert_eq!(
-            read(r#"{"format":"bsv-lesson","version":"1"}"#),
+            import(r#"{"format":"bsv-lesson","version":"1"}"#),
             Err(wrong_type(None, "version", Expected::WholeNumber))
         );
     }
@@ -497,26 +362,26 @@ mod tests {
     fn deep_nesting_is_refused_before_parsing() {
         let deep = "[".repeat(10_000) + &"]".repeat(10_000);
         assert_eq!(
-            read(&deep),
+            import(&deep),
             Err(LessonError::TooDeep {
                 line: 1,
                 column: MAX_DEPTH + 1
             })
         );
         let objects = "{\"a\":".repeat(10_000) + "1" + &"}".repeat(10_000);
-        assert!(matches!(read(&objects), Err(LessonError::TooDeep { .. })));
+        assert!(matches!(import(&objects), Err(LessonError::TooDeep { .. })));
         // Brackets inside text do not count.
         let title = "[{".repeat(40) + "\\\"";
         let text = format!(
             r##"{{"format":"bsv-lesson","version":1,"title":"{title}","steps":[{{"route":"#/ik-2r","title":"a"}}]}}"##
         );
-        assert_eq!(read(&text).map(|l| l.title), Ok("[{".repeat(40) + "\""));
+        assert_eq!(import(&text).map(|l| l.title), Ok("[{".repeat(40) + "\""));
     }
 
     #[test]
     fn a_file_over_the_limit_is_refused_with_its_size() {
         let big = " ".repeat(MAX_FILE_BYTES as usize + 1);
-        let error = read(&big).unwrap_err();
+        let error = import(&big).unwrap_err();
         assert_eq!(
             error,
             LessonError::TooBig {
@@ -539,7 +404,7 @@ mod tests {
     fn fields_are_checked_by_name_with_their_step() {
         let step = r##"{"route":"#/ik-2r","title":"a"}"##;
         assert_eq!(
-            read(&with_steps(&format!(
+            import(&with_steps(&format!(
                 r##"[{step},{{"route":"#/ik-2r","title":"b","evil":1}}]"##
             ))),
             Err(LessonError::UnknownField {
@@ -548,42 +413,42 @@ mod tests {
             })
         );
         assert_eq!(
-            read(&with_steps(r##"[{"route":"#/ik-2r"}]"##)),
+            import(&with_steps(r##"[{"route":"#/ik-2r"}]"##)),
             Err(missing(Some(1), "title"))
         );
         assert_eq!(
-            read(&with_steps(
+            import(&with_steps(
                 r##"[{"route":"#/ik-2r","title":"a","pageSteps":"3"}]"##
             )),
             Err(wrong_type(Some(1), "pageSteps", Expected::WholeNumber))
         );
         assert_eq!(
-            read(&with_steps(
+            import(&with_steps(
                 r##"[{"route":"#/ik-2r","title":"a","pageSteps":5000}]"##
             )),
             Err(LessonError::TooManyPageSteps { step: 1 })
         );
         assert_eq!(
-            read(&with_steps(r#"[{"route":7,"title":"a"}]"#)),
+            import(&with_steps(r#"[{"route":7,"title":"a"}]"#)),
             Err(wrong_type(Some(1), "route", Expected::Text))
         );
         assert_eq!(
-            read(&with_steps(r##"["#/ik-2r"]"##)),
+            import(&with_steps(r##"["#/ik-2r"]"##)),
             Err(LessonError::StepNotAnObject { step: 1 })
         );
         assert_eq!(
-            read(&with_steps("{}")),
+            import(&with_steps("{}")),
             Err(wrong_type(None, "steps", Expected::List))
         );
         assert_eq!(
-            read(r#"{"format":"bsv-lesson","version":1,"steps":[],"extra":0}"#),
+            import(r#"{"format":"bsv-lesson","version":1,"steps":[],"extra":0}"#),
             Err(LessonError::UnknownField {
                 step: None,
                 field: "extra".into()
             })
         );
         assert_eq!(
-            read(r#"{"format":"bsv-lesson","version":1,"steps":[]}"#),
+            import(r#"{"format":"bsv-lesson","version":1,"steps":[]}"#),
             Err(missing(None, "title"))
         );
     }
@@ -591,9 +456,9 @@ mod tests {
     #[test]
     fn an_empty_lesson_is_refused_as_a_file_but_read_from_storage() {
         let empty = with_steps("[]");
-        assert_eq!(read(&empty), Err(LessonError::NoSteps));
+        assert_eq!(import(&empty), Err(LessonError::NoSteps));
         assert_eq!(
-            from_json(&empty, is_page, true),
+            from_stored(&empty, is_page),
             Ok(Lesson {
                 title: "T".into(),
                 steps: vec![]
@@ -606,7 +471,7 @@ mod tests {
         let text = with_steps(
             r##"[{"route":"#/ik-2r?q1=0.3","title":"<script>alert(1)</script>","note":"javascript:alert(1) <img src=x onerror=alert(1)>"}]"##,
         );
-        let lesson = read(&text).unwrap_or_default();
+        let lesson = import(&text).unwrap_or_default();
         assert_eq!(lesson.steps[0].title, "<script>alert(1)</script>");
         assert!(lesson.steps[0].note.starts_with("javascript:alert(1) <img"));
         for route in [
@@ -616,14 +481,14 @@ mod tests {
         ] {
             let text = with_steps(&format!(r#"[{{"route":"{route}","title":"a"}}]"#));
             assert!(
-                matches!(read(&text), Err(LessonError::UnknownPage { step: 1, .. })),
+                matches!(import(&text), Err(LessonError::UnknownPage { step: 1, .. })),
                 "{route}"
             );
         }
         // A route is rebuilt by the URL codec: a link on the page is always `#/<page>?...`.
         let text = with_steps(r##"[{"route":"#/ik%2D2r?q1=<b>","title":"a"}]"##);
         assert_eq!(
-            read(&text).map(|l| l.steps[0].route.clone()),
+            import(&text).map(|l| l.steps[0].route.clone()),
             Ok("#/ik-2r?q1=%3Cb%3E".into())
         );
     }
