@@ -15,7 +15,7 @@ use serde::Serialize;
 
 use crate::error::RecipeError;
 use crate::pyfmt::{group_u64, size_text};
-use crate::view::url;
+use crate::view::url::{self, IgnoredKey};
 
 /// The `format` field of a lesson file.
 pub const FORMAT: &str = "bsv-lesson";
@@ -369,6 +369,23 @@ impl Lesson {
         Ok(Some(lesson))
     }
 
+    /// The keys of a `#/lesson` query that hold no part of the lesson (not `title`, nor `r`,
+    /// `t`, `n` or `k` of a step whose route `r<n>` is there), for the page's notice.
+    pub fn ignored_keys(query: &[(String, String)]) -> Vec<IgnoredKey> {
+        let has_route = |n: &str| query.iter().any(|(k, _)| *k == format!("r{n}"));
+        let mut ignored: Vec<IgnoredKey> = Vec::new();
+        for (key, _) in query {
+            let step_key = key
+                .strip_prefix(['r', 't', 'n', 'k'])
+                .filter(|n| n.parse::<usize>().is_ok_and(|n| n >= 1) && !n.starts_with('0'))
+                .is_some_and(has_route);
+            if key != "title" && !step_key && !ignored.iter().any(|k| &k.key == key) {
+                ignored.push(IgnoredKey::unknown(key.clone()));
+            }
+        }
+        ignored
+    }
+
     /// Moves step `from` to position `to` (both clamped).
     pub fn move_step(&mut self, from: usize, to: usize) {
         if from < self.steps.len() {
@@ -485,6 +502,35 @@ mod tests {
             Lesson::from_query(&bad, is_page),
             Err(LessonError::TooManyPageSteps { step: 1 })
         );
+    }
+
+    #[test]
+    fn keys_that_hold_no_part_of_the_lesson_are_named() {
+        let q = |pairs: &[(&str, &str)]| -> Vec<(String, String)> {
+            pairs
+                .iter()
+                .map(|(k, v)| ((*k).to_owned(), (*v).to_owned()))
+                .collect()
+        };
+        let query = q(&[
+            ("title", "T"),
+            ("r1", "#/ik-2r"),
+            ("t1", "a"),
+            ("k1", "2"),
+            ("zz", "1"),
+            ("t9", "x"),
+            ("r01", "#/ik-2r"),
+            ("zz", "2"),
+        ]);
+        assert_eq!(
+            Lesson::ignored_keys(&query),
+            vec![
+                IgnoredKey::unknown("zz"),
+                IgnoredKey::unknown("t9"),
+                IgnoredKey::unknown("r01")
+            ]
+        );
+        assert!(Lesson::ignored_keys(&sample().to_query()).is_empty());
     }
 
     #[test]

@@ -116,6 +116,25 @@ test('every bad lesson file is named (what and where) and the current lesson is 
   }
 });
 
+test('a lesson link with keys that hold no part of the lesson opens the lesson and names them (EN and JA)', async () => {
+  const hash = `#/lesson?title=Linked&r1=${encodeURIComponent('#/ik-2r?q1=0.3')}&t1=IK&zz=1&t9=x`;
+  const { page, errors, close } = await openApp(server.url, hash, { viewport: DESKTOP });
+  try {
+    await page.waitForSelector('.lesson-step');
+    assert.deepEqual(await stepTitles(page), ['IK']);
+    const notice = page.locator('[data-testid="lesson-url-notice"]');
+    assert.match(await notice.innerText(), /ignored: zz, t9/);
+    await page.click('[data-testid="lang-switch"]');
+    await page.waitForFunction(() => document.documentElement.lang === 'ja');
+    assert.match(await notice.innerText(), /zz, t9/);
+    assert.doesNotMatch(await notice.innerText(), /ignored/);
+    await page.screenshot({ path: join(OUT, 'hostile-lesson-url-keys-ja.png') });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('a bad lesson file at phone width, in Japanese', async () => {
   const { page, errors, close } = await openLesson({ viewport: PHONE, locale: 'ja-JP' });
   try {

@@ -20,6 +20,7 @@ use web_sys::{Element, Event, HtmlInputElement, HtmlTextAreaElement};
 use crate::ui::dom::{self, Listener};
 use crate::ui::kit::input_file;
 use crate::ui::kit::store;
+use crate::ui::kit::url_state::UrlNotice;
 use crate::ui::lesson_bar::{self, LESSON_STORAGE_KEY};
 use crate::ui::page::{MountCtx, Page, ShellLink};
 use crate::ui::{ctx, download, router};
@@ -40,6 +41,8 @@ struct Editor {
     lesson: RefCell<Lesson>,
     /// The lesson shown is the built-in one opened for a user without a lesson (not stored).
     builtin_shown: Cell<bool>,
+    /// The keys of the opened link that hold no part of the lesson.
+    url_notice: UrlNotice,
     /// The problem of the last file or link refused (said again on a language switch).
     error: RefCell<Option<LessonError>>,
     listeners: RefCell<Vec<Listener>>,
@@ -57,6 +60,7 @@ impl Page for LessonPage {
         }
         let _ = self.0.render_steps();
         let _ = self.0.render_store_notes();
+        self.0.url_notice.relocalize();
         let error = self.0.error.borrow().clone();
         if let Some(error) = error {
             let _ = self.0.show_error(&error);
@@ -69,7 +73,12 @@ fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
     root.set_inner_html(MARKUP);
     dom::relocalize(&root)?;
     let is_page = |id: &str| ctx.shell.is_page(id);
+    let url_notice = UrlNotice::new(
+        dom::find(&root, "[data-testid=\"lesson-url-notice\"]", "lesson")?,
+        Lesson::ignored_keys(&ctx.query),
+    )?;
     let page = Rc::new(Editor {
+        url_notice,
         root,
         shell: ctx.shell,
         lesson: RefCell::new(lesson_bar::stored(is_page)),
@@ -99,6 +108,7 @@ fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
 
 const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>\
 <p class=\"lesson-intro\" data-i18n=\"lesson-intro\"></p>\
+<p class=\"lesson-store-note lesson-url-notice\" data-testid=\"lesson-url-notice\" hidden></p>\
 <p class=\"lesson-store-note\" role=\"status\" data-testid=\"lesson-unsaved\" data-i18n=\"lesson-unsaved\" hidden></p>\
 <div class=\"lesson-store-note\" role=\"status\" data-testid=\"lesson-unreadable\" hidden>\
 <p data-testid=\"lesson-unreadable-text\"></p>\
