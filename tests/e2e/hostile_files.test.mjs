@@ -85,17 +85,30 @@ test('every bad lesson file is named (what and where) and the current lesson is 
     await page.waitForFunction(() => localStorage.getItem('bsv.lesson') !== null);
     const titles = await stepTitles(page);
     const stored = await page.evaluate(() => localStorage.getItem('bsv.lesson'));
+    // Reads of a file's bytes, by name: a file over the limit must not be read at all.
+    await page.evaluate(() => {
+      window.__read = [];
+      for (const name of ['arrayBuffer', 'text', 'stream']) {
+        const real = Blob.prototype[name];
+        Blob.prototype[name] = function read(...args) {
+          window.__read.push(this.name);
+          return real.apply(this, args);
+        };
+      }
+    });
     assert.equal(titles.length, 4);
     for (const [name, buffer, pattern] of BAD_LESSONS) {
       await importBad(page, name, buffer, pattern);
       assert.deepEqual(await stepTitles(page), titles, `${name}: the lesson is kept`);
       assert.equal(await page.evaluate(() => localStorage.getItem('bsv.lesson')), stored, `${name}: storage kept`);
       assert.match(await lessonError(page).innerText(), /The current lesson is kept\.$/, name);
+      assert.equal((await page.evaluate(() => window.__read)).includes('big.json'), false, 'the big file is not read');
       if (name === 'big.json' || name === 'route.json') {
         await centre(lessonError(page));
         await page.screenshot({ path: join(OUT, `hostile-lesson-${name.replace('.json', '')}-en.png`) });
       }
     }
+    assert.ok((await page.evaluate(() => window.__read)).includes('notes.json'), 'the read watch sees the small files');
     // The same message in Japanese (the last one shown, said again on the switch).
     await page.click('[data-testid="lang-switch"]');
     await page.waitForFunction(() => document.documentElement.lang === 'ja');
