@@ -304,6 +304,26 @@ test('storage full while saving a lesson: the page says it is not saved and noth
   }
 });
 
+test('screenshots: every lesson message at phone width, EN and JA (the message and its card)', { timeout: 120_000 }, async () => {
+  for (const lang of ['en', 'ja']) {
+    const { page, errors, close } = await openLesson({ viewport: PHONE, locale: lang === 'ja' ? 'ja-JP' : 'en-US' });
+    try {
+      for (const [name, buffer] of BAD_LESSONS) {
+        await page.evaluate(() => { document.querySelector('[data-field-error="lesson-file"]').hidden = true; });
+        await importBad(page, name, buffer, /./);
+        await centre(lessonError(page));
+        const box = await lessonError(page).boundingBox();
+        assert.ok(box.x >= 0 && box.x + box.width <= PHONE.width, `${name}: inside the page`);
+        await lessonError(page).screenshot({ path: join(OUT, `hostile-msg-${name.replace('.json', '')}-${lang}-390.png`) });
+      }
+      assert.equal(await page.locator('.lesson-step').count(), 4);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
 // ---------- Trajectory CSVs ----------
 
 const PNG = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48, 0x44, 0x52]);
@@ -351,6 +371,7 @@ for (const which of ['traj', 'drills']) {
         if (typeof en === 'string') assert.equal(await message.innerText(), en, name);
         else assert.match(await message.innerText(), en, name);
         assert.deepEqual(await lastResult(page, which), shown, `${which} ${name}: the last result stays`);
+        await message.screenshot({ path: join(OUT, `hostile-csv-${which}-${name.replace('.', '_')}-en-1366.png`) });
         if (name === 'excel.csv' || name === 'wide.csv') {
           await centre(message);
           await page.screenshot({ path: join(OUT, `hostile-${which}-${name.replace('.csv', '')}-en.png`) });
@@ -360,9 +381,11 @@ for (const which of ['traj', 'drills']) {
       await page.click('[data-testid="lang-switch"]');
       await page.waitForFunction(() => document.documentElement.lang === 'ja');
       assert.match(await message.innerText(), BAD_CSVS[4][3]);
+      await message.screenshot({ path: join(OUT, `hostile-csv-${which}-header_csv-ja-1366.png`) });
       for (const [name, buffer, , ja] of BAD_CSVS.slice(0, 3)) {
         await page.locator(file).setInputFiles({ name, mimeType: 'text/csv', buffer });
         await page.waitForFunction((source) => new RegExp(source).test(document.querySelector('[data-field-error="csv_path"]')?.textContent ?? ''), ja.source, { timeout: 20000 });
+        await message.screenshot({ path: join(OUT, `hostile-csv-${which}-${name.replace('.', '_')}-ja-1366.png`) });
       }
       await centre(message);
       await page.screenshot({ path: join(OUT, `hostile-${which}-utf16-ja.png`) });
@@ -398,6 +421,7 @@ for (const which of ['traj', 'drills']) {
       await page.screenshot({ path: join(OUT, `hostile-${which}-nul-ja-390.png`) });
       await page.click('[data-testid="lang-switch"]');
       await page.waitForFunction(() => document.documentElement.lang === 'en');
+      await centre(message);
       await page.screenshot({ path: join(OUT, `hostile-${which}-nul-en-390.png`) });
       assert.deepEqual(errors, []);
     } finally {
