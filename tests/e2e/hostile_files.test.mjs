@@ -429,3 +429,45 @@ for (const which of ['traj', 'drills']) {
     }
   });
 }
+
+test('drills: a file over 128 MiB is refused from its size, unread, with the size (EN and JA); the last result stays', async () => {
+  const { hash, file, ready } = PAGES.drills;
+  const { page, errors, close } = await openApp(server.url, hash, { viewport: PHONE });
+  try {
+    await ready(page);
+    const shown = await lastResult(page, 'drills');
+    // A small file the page sees as 200 MiB (its `size` is what the page reads first), and a
+    // watch on every read of a file's bytes.
+    await page.evaluate(() => {
+      const real = Object.getOwnPropertyDescriptor(Blob.prototype, 'size');
+      Object.defineProperty(Blob.prototype, 'size', {
+        configurable: true,
+        get() { return this.name === 'huge.csv' ? 200 * 1024 * 1024 : real.get.call(this); },
+      });
+      window.__read = [];
+      for (const name of ['arrayBuffer', 'text', 'stream']) {
+        const read = Blob.prototype[name];
+        Blob.prototype[name] = function watched(...args) {
+          window.__read.push(this.name);
+          return read.apply(this, args);
+        };
+      }
+    });
+    await page.locator(file).setInputFiles({ name: 'huge.csv', mimeType: 'text/csv', buffer: Buffer.from('t_s,q1\n0,0\n1,1\n') });
+    const message = page.locator('[data-field-error="csv_path"]');
+    await message.waitFor({ state: 'visible' });
+    assert.equal(await message.innerText(), '“huge.csv” is 200 MiB: larger than the 128 MiB this drill can read. It was not opened.');
+    assert.deepEqual(await page.evaluate(() => window.__read), [], 'nothing read');
+    assert.equal(await lastResult(page, 'drills'), shown);
+    await centre(message);
+    await page.screenshot({ path: join(OUT, 'hostile-drills-huge-en-390.png') });
+    await page.click('[data-testid="lang-switch"]');
+    await page.waitForFunction(() => document.documentElement.lang === 'ja');
+    assert.match(await message.innerText(), /「huge\.csv」.*200 MiB/);
+    await centre(message);
+    await page.screenshot({ path: join(OUT, 'hostile-drills-huge-ja-390.png') });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

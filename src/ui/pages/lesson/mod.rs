@@ -4,9 +4,15 @@
 //! page's own URL is the lesson). The three built-in lessons load from here; while the user
 //! has no lesson of their own, the first one is shown ready to present (not stored until edited).
 //!
+//! A file is refused from its size above [`MAX_FILE_BYTES`] (unread), else read and checked
+//! by [`crate::view::lesson_file`]; a refusal names what and where, and the current lesson is
+//! kept. The lines under the intro say what the browser's storage did: the lesson is not saved
+//! (storage full: it stays in memory), or the stored text could not be read and is kept aside
+//! (download, discard); a notice names the keys of the link that hold no part of the lesson.
+//!
 //! Components: `builtin` (the built-in lessons); this file holds the page, its markup and the
 //! editor's actions. The lesson model is [`crate::view::lesson`]; storage and presenting are the
-//! shell's [`crate::ui::lesson_bar`].
+//! shell's [`crate::ui::lesson_bar`], on the kit's [`crate::ui::kit::store`].
 
 mod builtin;
 
