@@ -57,6 +57,30 @@ async function importBad(page, name, buffer, pattern) {
   );
 }
 
+/**
+ * Records in `window.__read` the name of every file whose bytes the page reads; with `huge`,
+ * the file of that name says it is 200 MiB (its `size`, what a page checks first).
+ */
+function watchReads(page, huge = null) {
+  return page.evaluate((huge) => {
+    if (huge) {
+      const real = Object.getOwnPropertyDescriptor(Blob.prototype, 'size');
+      Object.defineProperty(Blob.prototype, 'size', {
+        configurable: true,
+        get() { return this.name === huge ? 200 * 1024 * 1024 : real.get.call(this); },
+      });
+    }
+    window.__read = [];
+    for (const name of ['arrayBuffer', 'text', 'stream']) {
+      const read = Blob.prototype[name];
+      Blob.prototype[name] = function watched(...args) {
+        window.__read.push(this.name);
+        return read.apply(this, args);
+      };
+    }
+  }, huge);
+}
+
 const DEEP = '['.repeat(10_000) + ']'.repeat(10_000);
 const EVIDENCE = JSON.stringify({ schemaVersion: '0.1', sessionId: 'pilot-1', pilotId: 'pilot', dataArtifacts: [{ type: 'csv', uriOrRef: 'teleop_episodes.csv' }] });
 
@@ -86,16 +110,7 @@ test('every bad lesson file is named (what and where) and the current lesson is 
     const titles = await stepTitles(page);
     const stored = await page.evaluate(() => localStorage.getItem('bsv.lesson'));
     // Reads of a file's bytes, by name: a file over the limit must not be read at all.
-    await page.evaluate(() => {
-      window.__read = [];
-      for (const name of ['arrayBuffer', 'text', 'stream']) {
-        const real = Blob.prototype[name];
-        Blob.prototype[name] = function read(...args) {
-          window.__read.push(this.name);
-          return real.apply(this, args);
-        };
-      }
-    });
+    await watchReads(page);
     assert.equal(titles.length, 4);
     for (const [name, buffer, pattern] of BAD_LESSONS) {
       await importBad(page, name, buffer, pattern);
@@ -436,23 +451,8 @@ test('drills: a file over 128 MiB is refused from its size, unread, with the siz
   try {
     await ready(page);
     const shown = await lastResult(page, 'drills');
-    // A small file the page sees as 200 MiB (its `size` is what the page reads first), and a
-    // watch on every read of a file's bytes.
-    await page.evaluate(() => {
-      const real = Object.getOwnPropertyDescriptor(Blob.prototype, 'size');
-      Object.defineProperty(Blob.prototype, 'size', {
-        configurable: true,
-        get() { return this.name === 'huge.csv' ? 200 * 1024 * 1024 : real.get.call(this); },
-      });
-      window.__read = [];
-      for (const name of ['arrayBuffer', 'text', 'stream']) {
-        const read = Blob.prototype[name];
-        Blob.prototype[name] = function watched(...args) {
-          window.__read.push(this.name);
-          return read.apply(this, args);
-        };
-      }
-    });
+    // A small file the page sees as 200 MiB (its `size` is what the page reads first).
+    await watchReads(page, 'huge.csv');
     await page.locator(file).setInputFiles({ name: 'huge.csv', mimeType: 'text/csv', buffer: Buffer.from('t_s,q1\n0,0\n1,1\n') });
     const message = page.locator('[data-field-error="csv_path"]');
     await message.waitFor({ state: 'visible' });
