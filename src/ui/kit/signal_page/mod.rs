@@ -12,6 +12,7 @@
 mod plot;
 mod sliced;
 mod spec;
+mod thinned;
 
 use std::cell::{Ref, RefCell};
 use std::rc::{Rc, Weak};
@@ -24,11 +25,14 @@ pub use self::plot::{axis, draw_handle, series, time_axis, Fit, SignalPlot};
 use self::sliced::Sliced;
 pub use self::sliced::{boxed, Rows, RunFrom, LIVE_ROWS};
 pub use self::spec::{Arrows, Nudge, SignalSpec};
+pub use self::thinned::ThinRow;
+use self::thinned::{Columns, ThinCache, ThinKey};
 use crate::pyfmt::py_float;
 use crate::ui::dom;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::frame::FrameLoop;
+use crate::ui::kit::plot::Plot;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::recipe_controls::{record_frame_ms, RecipeControls};
 use crate::ui::kit::scope::Scope;
@@ -36,7 +40,12 @@ use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::view::signal::sig;
+pub use crate::view::signal::ColumnsThin;
 pub use crate::view::signal::SignalRow;
+
+/// A run computed in slices is shown in the slice that finds it complete if that slice has
+/// worked less than this, ms; else in the next frame's.
+const SHOW_AFTER_MS: f64 = 1.0;
 
 /// Why a page shows its run again.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -70,8 +79,13 @@ pub trait SignalPage: Sized + 'static {
     /// The page's own parts, once the kit is mounted (markup, controls, plot, first run).
     fn build(kit: &Kit<Self>) -> Result<Self, JsValue>;
     /// Shows the kit's run ([`Kit::run`]): readouts, notes and plot (with
-    /// [`Kit::draw_plot`]); a change's run is also announced.
+    /// [`Kit::draw_plot`]; the rows plotted thinned with [`Run::thinned`]); a change's run is
+    /// also announced.
     fn show(&self, kit: &Kit<Self>, draw: Draw);
+    /// The time axis the run of `params` is plotted over when `draw` shows it: a run computed
+    /// in slices is thinned to it (and to the refitted one) as its rows come, so that showing
+    /// it thins nothing.
+    fn time_axis(&self, kit: &Kit<Self>, params: &Self::Params, draw: Draw) -> (f64, f64);
 
     /// Handle `handle` dragged to CSS px `at`: the new arguments, if any.
     fn drag(&self, _kit: &Kit<Self>, _handle: Self::Handle, _at: DVec2) -> Option<Self::Params> {
@@ -91,10 +105,40 @@ pub trait SignalPage: Sized + 'static {
     }
 }
 
-/// A run shown: its arguments and rows (shared, never copied: a million rows are 40 MB).
+/// A run shown: its arguments, rows and their thinnings (shared, never copied: a million rows
+/// are 40 MB).
 pub struct Run<P, R> {
     pub params: P,
     pub rows: Rc<Vec<R>>,
+    thinned: Rc<ThinCache<R>>,
+}
+
+impl<P: Clone, R> Clone for Run<P, R> {
+    fn clone(&self) -> Run<P, R> {
+        Run {
+            params: self.params.clone(),
+            rows: self.rows.clone(),
+            thinned: self.thinned.clone(),
+        }
+    }
+}
+
+impl<P, R> Run<P, R> {
+    fn new(params: P, rows: Vec<R>, thin: ThinRow<R>, kept: Vec<(ThinKey, Columns)>) -> Run<P, R> {
+        Run {
+            params,
+            rows: Rc::new(rows),
+            thinned: Rc::new(ThinCache::new(thin, kept)),
+        }
+    }
+
+    /// The plotted columns of the rows ([`SignalSpec::thin`]) thinned to time axis `x` on
+    /// `plot` (each pixel column keeps its first, lowest, highest and last point; every point
+    /// before the plot has a plotting area); a column the rows lack is empty.
+    pub fn thinned<const N: usize>(&self, plot: &Plot, x: (f64, f64)) -> [Vec<(f64, f64)>; N] {
+        let columns = self.thinned.columns(plot, x, &self.rows);
+        std::array::from_fn(|k| columns.get(k).cloned().unwrap_or_default())
+    }
 }
 
 /// What the kit gives a page: its elements, controls, plot and run.
@@ -218,7 +262,7 @@ impl<S: SignalPage> Live<S> {
     fn run(&self, params: S::Params, rows: Rows<S::Row>, from: RunFrom) {
         if rows.1 <= LIVE_ROWS {
             self.stop_slices();
-            self.show_run(params, rows.0.collect(), from);
+            self.show_run(params, rows.0.collect(), Vec::new(), from);
             return;
         }
         // A big run under way: it goes on and is shown, then the latest change is computed (a
@@ -227,7 +271,14 @@ impl<S: SignalPage> Live<S> {
             job.next = Some(params);
             return;
         }
-        let job = Sliced::new(params, rows, from);
+        let mut job = Sliced::new(params, rows, from, S::SPEC.thin);
+        // Thinned to the axes it is shown on and to those it is refitted to when the slider or
+        // the handle is let go.
+        for fit in [self.fit_now(), Fit::Refit] {
+            if let Some(key) = self.thin_key(&job.params, job.from, fit) {
+                job.thin_to(key);
+            }
+        }
         self.show_progress(&job);
         self.pending.replace(Some(job));
         self.slices.request();
@@ -242,7 +293,14 @@ impl<S: SignalPage> Live<S> {
             let Some(job) = pending.as_mut() else {
                 return;
             };
-            if job.pull(t0) {
+            // Complete and thinned to the axes of this moment (else thinned to them over the
+            // next slices: the plot was sized or refitted meanwhile): shown in a task of its
+            // own, not after a slice's work.
+            let complete = job.pull(t0) && {
+                let key = self.thin_key(&job.params, job.from, self.fit_now());
+                !key.is_some_and(|key| job.thin_to(key))
+            };
+            if complete && now_ms() - t0 < SHOW_AFTER_MS {
                 pending.take()
             } else {
                 self.show_progress(job);
@@ -250,10 +308,12 @@ impl<S: SignalPage> Live<S> {
             }
         };
         match finished {
-            Some(job) => {
+            Some(mut job) => {
                 dom::show(&self.computing, false);
-                self.show_run(job.params, job.rows, job.from);
-                if let Some(next) = job.next {
+                let (next, from) = (job.next.take(), job.from);
+                let (params, rows, kept) = job.finish();
+                self.show_run(params, rows, kept, from);
+                if let Some(next) = next {
                     self.start(next, RunFrom::Input);
                 }
             }
@@ -262,20 +322,39 @@ impl<S: SignalPage> Live<S> {
         record_frame_ms(now_ms() - t0);
     }
 
+    /// How the axes fit a new run at this moment ([`Fit::for_change`]).
+    fn fit_now(&self) -> Fit {
+        let dragging = self.kit.plot.borrow().dragging;
+        Fit::for_change(dragging, self.kit.controls.sliding())
+    }
+
+    /// What the run of `params` from `from` is thinned to when shown with `fit` now.
+    fn thin_key(&self, params: &S::Params, from: RunFrom, fit: Fit) -> Option<ThinKey> {
+        let draw = Draw {
+            fit,
+            resized: false,
+            run: Some(from),
+        };
+        let x = self.page.time_axis(&self.kit, params, draw);
+        ThinKey::of(&self.kit.plot.borrow().plot, x)
+    }
+
     fn show_progress(&self, job: &Sliced<S::Params, S::Row>) {
         self.computing.set_text_content(Some(&job.progress()));
         dom::show(&self.computing, true);
     }
 
-    /// Shows a finished run; one computed in slices after its input ended ends the change.
-    fn show_run(&self, params: S::Params, rows: Vec<S::Row>, from: RunFrom) {
-        *self.kit.run.borrow_mut() = Run {
-            params,
-            rows: Rc::new(rows),
-        };
-        let dragging = self.kit.plot.borrow().dragging;
-        let fit = Fit::for_change(dragging, self.kit.controls.sliding());
-        self.show(fit, false, Some(from));
+    /// Shows a finished run (`kept`: its rows already thinned); one computed in slices after
+    /// its input ended ends the change.
+    fn show_run(
+        &self,
+        params: S::Params,
+        rows: Vec<S::Row>,
+        kept: Vec<(ThinKey, Columns)>,
+        from: RunFrom,
+    ) {
+        *self.kit.run.borrow_mut() = Run::new(params, rows, S::SPEC.thin, kept);
+        self.show(self.fit_now(), false, Some(from));
         if from == RunFrom::Slices && !self.kit.controls.sliding() {
             self.page.change_ended(&self.kit);
         }
@@ -453,10 +532,7 @@ impl<S: SignalPage> Page for Signal<S> {
         let kit = Kit {
             readouts: Readouts::find(&root)?,
             plot: RefCell::new(SignalPlot::new(&stage)?),
-            run: RefCell::new(Run {
-                params: params.clone(),
-                rows: Rc::new(first),
-            }),
+            run: RefCell::new(Run::new(params.clone(), first, spec.thin, Vec::new())),
             overlays: RefCell::new(overlays),
             root,
             controls,

@@ -24,6 +24,7 @@ impl SignalPage for CubicPage {
         info: &INFO,
         parse: params_from_args,
         kernel: |p| rows(p).map(boxed),
+        thin: |to, s| to.push(s.t, &[s.q, s.qd, s.qdd]),
         png: "cubic_path_plots.png",
         layers: 4,
         sliders: &[
@@ -88,6 +89,10 @@ impl SignalPage for CubicPage {
                 ],
             ));
         }
+    }
+
+    fn time_axis(&self, kit: &Kit<CubicPage>, params: &CubicParams, draw: Draw) -> (f64, f64) {
+        plots::time_axis(&kit.plot.borrow(), params, draw.fit)
     }
 
     /// The end point dragged: q1 and T.

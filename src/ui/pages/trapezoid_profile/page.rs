@@ -30,6 +30,7 @@ impl SignalPage for TrapPage {
         parse: params_from_args,
         // The CSV's rows, times unrounded.
         kernel: |p| rows(p).map(boxed),
+        thin: |to, s| to.push(s.t, &[s.s, s.v, s.a]),
         png: "trap_profile_plots.png",
         layers: 4,
         sliders: &[
@@ -90,7 +91,7 @@ impl SignalPage for TrapPage {
         if draw.resized {
             plots.relocalize();
         }
-        plots::set_data(&mut kit.plot.borrow_mut(), &run.rows, &ph, draw);
+        plots::set_data(&mut kit.plot.borrow_mut(), &run, &ph, draw);
         drop(run);
         kit.draw_plot();
         plots.draw_marks(&mut kit.plot.borrow_mut(), &ph);
@@ -107,6 +108,10 @@ impl SignalPage for TrapPage {
                 )
             });
         }
+    }
+
+    fn time_axis(&self, kit: &Kit<TrapPage>, params: &TrapParams, draw: Draw) -> (f64, f64) {
+        plots::time_axis(&kit.plot.borrow(), &phases(params), draw.fit)
     }
 
     fn drag(&self, kit: &Kit<TrapPage>, handle: Grab, at: DVec2) -> Option<TrapParams> {
