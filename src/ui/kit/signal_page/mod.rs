@@ -5,7 +5,8 @@
 //!
 //! The kit does the rest: the markup, the controls ([`RecipeControls`]: form, sliders, URL,
 //! exports), the plot ([`SignalPlot`]: drags, hover cursor, PNG), the first run, every change
-//! (a run over [`LIVE_ROWS`] rows computed a slice per frame), the URL, the arrow keys and `r`,
+//! (a run over [`LIVE_ROWS`] rows computed a slice per frame, thinned to the plot as its rows
+//! come, summarized and shown each in a frame of its own), the URL, the arrow keys and `r`,
 //! a slider let go, a drag ended, an overlay toggled, and a language, projector or size change
 //! (everything shown again).
 
@@ -26,7 +27,7 @@ use self::sliced::Sliced;
 pub use self::sliced::{boxed, Rows, RunFrom, LIVE_ROWS};
 pub use self::spec::{Arrows, Nudge, SignalSpec};
 pub use self::thinned::ThinRow;
-use self::thinned::{Columns, ThinCache, ThinKey};
+use self::thinned::{Kept, ThinCache, ThinKey};
 use crate::pyfmt::py_float;
 use crate::ui::dom;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
@@ -72,9 +73,16 @@ pub trait SignalPage: Sized + 'static {
     type Params: Clone + 'static;
     /// One row of the kernel's table.
     type Row: SignalRow;
+    /// What the page reads off every row of a run (its readouts).
+    type Summary: 'static;
     /// What a press on the plot can grab (`()`: nothing).
     type Handle: Copy + PartialEq + 'static;
     const SPEC: SignalSpec<Self::Params, Self::Row>;
+
+    /// The summary of the run of `params`, once a run: for a run computed in slices in a frame
+    /// of its own before the one that shows it (showing a run then passes over none of its
+    /// rows).
+    fn summarize(params: &Self::Params, rows: &[Self::Row]) -> Self::Summary;
 
     /// The page's own parts, once the kit is mounted (markup, controls, plot, first run).
     fn build(kit: &Kit<Self>) -> Result<Self, JsValue>;
@@ -105,29 +113,32 @@ pub trait SignalPage: Sized + 'static {
     }
 }
 
-/// A run shown: its arguments, rows and their thinnings (shared, never copied: a million rows
-/// are 40 MB).
-pub struct Run<P, R> {
+/// A run shown: its arguments, rows, summary ([`SignalPage::summarize`]) and the rows'
+/// thinnings (shared, never copied: a million rows are 40 MB).
+pub struct Run<P, R, M> {
     pub params: P,
     pub rows: Rc<Vec<R>>,
+    pub summary: Rc<M>,
     thinned: Rc<ThinCache<R>>,
 }
 
-impl<P: Clone, R> Clone for Run<P, R> {
-    fn clone(&self) -> Run<P, R> {
+impl<P: Clone, R, M> Clone for Run<P, R, M> {
+    fn clone(&self) -> Run<P, R, M> {
         Run {
             params: self.params.clone(),
             rows: self.rows.clone(),
+            summary: self.summary.clone(),
             thinned: self.thinned.clone(),
         }
     }
 }
 
-impl<P, R> Run<P, R> {
-    fn new(params: P, rows: Vec<R>, thin: ThinRow<R>, kept: Vec<(ThinKey, Columns)>) -> Run<P, R> {
+impl<P, R, M> Run<P, R, M> {
+    fn new((params, rows, summary): (P, Vec<R>, M), thin: ThinRow<R>, kept: Kept) -> Run<P, R, M> {
         Run {
             params,
             rows: Rc::new(rows),
+            summary: Rc::new(summary),
             thinned: Rc::new(ThinCache::new(thin, kept)),
         }
     }
@@ -149,14 +160,14 @@ pub struct Kit<S: SignalPage> {
     pub stage: Element,
     pub readouts: Readouts,
     pub plot: RefCell<SignalPlot<S::Handle>>,
-    run: RefCell<Run<S::Params, S::Row>>,
+    run: RefCell<Run<S::Params, S::Row, S::Summary>>,
     /// Which [`SignalSpec::overlays`] are on.
     overlays: RefCell<Vec<bool>>,
 }
 
 impl<S: SignalPage> Kit<S> {
     /// The run shown.
-    pub fn run(&self) -> Ref<'_, Run<S::Params, S::Row>> {
+    pub fn run(&self) -> Ref<'_, Run<S::Params, S::Row, S::Summary>> {
         self.run.borrow()
     }
 
@@ -204,6 +215,9 @@ impl<S: SignalPage> Kit<S> {
     }
 }
 
+/// A run of page `S` being computed in slices.
+type Job<S> = Sliced<<S as SignalPage>::Params, <S as SignalPage>::Row, <S as SignalPage>::Summary>;
+
 /// A mounted signal page: the page, its kit, and what computes and writes its runs.
 struct Live<S: SignalPage> {
     kit: Kit<S>,
@@ -212,7 +226,7 @@ struct Live<S: SignalPage> {
     scope: RefCell<Scope>,
     /// A run over [`LIVE_ROWS`] being computed a slice per frame, the loop that computes it,
     /// and the line that says so.
-    pending: RefCell<Option<Sliced<S::Params, S::Row>>>,
+    pending: RefCell<Option<Job<S>>>,
     slices: FrameLoop,
     computing: Element,
 }
@@ -262,7 +276,9 @@ impl<S: SignalPage> Live<S> {
     fn run(&self, params: S::Params, rows: Rows<S::Row>, from: RunFrom) {
         if rows.1 <= LIVE_ROWS {
             self.stop_slices();
-            self.show_run(params, rows.0.collect(), Vec::new(), from);
+            let rows: Vec<S::Row> = rows.0.collect();
+            let summary = S::summarize(&params, &rows);
+            self.show_run((params, rows, summary), Vec::new(), from);
             return;
         }
         // A big run under way: it goes on and is shown, then the latest change is computed (a
@@ -294,13 +310,17 @@ impl<S: SignalPage> Live<S> {
                 return;
             };
             // Complete and thinned to the axes of this moment (else thinned to them over the
-            // next slices: the plot was sized or refitted meanwhile): shown in a task of its
-            // own, not after a slice's work.
+            // next slices: the plot was sized or refitted meanwhile): summarized, then shown,
+            // each in a task of its own, not after a slice's work.
             let complete = job.pull(t0) && {
                 let key = self.thin_key(&job.params, job.from, self.fit_now());
                 !key.is_some_and(|key| job.thin_to(key))
             };
-            if complete && now_ms() - t0 < SHOW_AFTER_MS {
+            let idle = now_ms() - t0 < SHOW_AFTER_MS;
+            if complete && idle && job.summary.is_none() {
+                job.summary = Some(S::summarize(&job.params, &job.rows));
+                None
+            } else if complete && idle {
                 pending.take()
             } else {
                 self.show_progress(job);
@@ -311,8 +331,9 @@ impl<S: SignalPage> Live<S> {
             Some(mut job) => {
                 dom::show(&self.computing, false);
                 let (next, from) = (job.next.take(), job.from);
-                let (params, rows, kept) = job.finish();
-                self.show_run(params, rows, kept, from);
+                let (params, rows, summary, kept) = job.finish();
+                let summary = summary.unwrap_or_else(|| S::summarize(&params, &rows));
+                self.show_run((params, rows, summary), kept, from);
                 if let Some(next) = next {
                     self.start(next, RunFrom::Input);
                 }
@@ -339,21 +360,15 @@ impl<S: SignalPage> Live<S> {
         ThinKey::of(&self.kit.plot.borrow().plot, x)
     }
 
-    fn show_progress(&self, job: &Sliced<S::Params, S::Row>) {
+    fn show_progress(&self, job: &Job<S>) {
         self.computing.set_text_content(Some(&job.progress()));
         dom::show(&self.computing, true);
     }
 
     /// Shows a finished run (`kept`: its rows already thinned); one computed in slices after
     /// its input ended ends the change.
-    fn show_run(
-        &self,
-        params: S::Params,
-        rows: Vec<S::Row>,
-        kept: Vec<(ThinKey, Columns)>,
-        from: RunFrom,
-    ) {
-        *self.kit.run.borrow_mut() = Run::new(params, rows, S::SPEC.thin, kept);
+    fn show_run(&self, run: (S::Params, Vec<S::Row>, S::Summary), kept: Kept, from: RunFrom) {
+        *self.kit.run.borrow_mut() = Run::new(run, S::SPEC.thin, kept);
         self.show(self.fit_now(), false, Some(from));
         if from == RunFrom::Slices && !self.kit.controls.sliding() {
             self.page.change_ended(&self.kit);
@@ -529,10 +544,15 @@ impl<S: SignalPage> Page for Signal<S> {
             Some((source, total)) if total <= LIVE_ROWS => (source.collect(), None),
             big => (Vec::new(), big),
         };
+        let summary = S::summarize(&params, &first);
         let kit = Kit {
             readouts: Readouts::find(&root)?,
             plot: RefCell::new(SignalPlot::new(&stage)?),
-            run: RefCell::new(Run::new(params.clone(), first, spec.thin, Vec::new())),
+            run: RefCell::new(Run::new(
+                (params.clone(), first, summary),
+                spec.thin,
+                Vec::new(),
+            )),
             overlays: RefCell::new(overlays),
             root,
             controls,

@@ -2,7 +2,7 @@
 //! [`SLICE_MS`] each) and thinned to the plot as they come, the last run staying on the plot
 //! and in the readouts meanwhile, and the line under the plot that says how far it is.
 
-use super::thinned::{Columns, ThinKey, ThinRow};
+use super::thinned::{Kept, ThinKey, ThinRow};
 use crate::ui::ctx;
 use crate::ui::schedule::now_ms;
 use crate::view::progress::group_digits;
@@ -41,8 +41,8 @@ pub enum RunFrom {
 /// Thinnings a run being computed makes at most (a key asked for at its end is added).
 const MOST_THINNINGS: usize = 4;
 
-/// A run being computed in slices.
-pub struct Sliced<P, R> {
+/// A run being computed in slices, and its summary `M` once computed.
+pub struct Sliced<P, R, M> {
     pub params: P,
     source: Box<dyn Iterator<Item = R>>,
     /// Whether `source` has yielded its last row.
@@ -55,9 +55,11 @@ pub struct Sliced<P, R> {
     /// The page's thinning hook, and the rows thinned to each key the run may be shown on.
     thin: ThinRow<R>,
     thinning: Vec<(ThinKey, ColumnsThin)>,
+    /// The run's summary, computed once it is complete.
+    pub summary: Option<M>,
 }
 
-impl<P, R> Sliced<P, R> {
+impl<P, R, M> Sliced<P, R, M> {
     /// The run of `params` whose rows `source` yields (`total` of them), thinned by `thin` to
     /// the keys [`Sliced::thin_to`] adds; a change's run is [`RunFrom::Slices`].
     pub fn new(
@@ -65,7 +67,7 @@ impl<P, R> Sliced<P, R> {
         (source, total): Rows<R>,
         from: RunFrom,
         thin: ThinRow<R>,
-    ) -> Sliced<P, R> {
+    ) -> Sliced<P, R, M> {
         Sliced {
             params,
             source,
@@ -80,6 +82,7 @@ impl<P, R> Sliced<P, R> {
             next: None,
             thin,
             thinning: Vec::new(),
+            summary: None,
         }
     }
 
@@ -128,12 +131,12 @@ impl<P, R> Sliced<P, R> {
         false
     }
 
-    /// The arguments, the rows and their thinnings.
-    pub fn finish(self) -> (P, Vec<R>, Vec<(ThinKey, Columns)>) {
+    /// The arguments, the rows, the summary if computed, and the rows' thinnings.
+    pub fn finish(self) -> (P, Vec<R>, Option<M>, Kept) {
         let kept = (self.thinning.into_iter())
             .map(|(key, to)| (key, to.finish().into()))
             .collect();
-        (self.params, self.rows, kept)
+        (self.params, self.rows, self.summary, kept)
     }
 
     /// The line under the plot: how many rows, how far.

@@ -18,6 +18,9 @@ pub type ThinRow<R> = fn(&mut ColumnsThin, &R);
 /// Thinned columns, one a plotted value of the rows.
 pub type Columns = Rc<[Vec<(f64, f64)>]>;
 
+/// A run's thinnings, each with its key.
+pub type Kept = Vec<(ThinKey, Columns)>;
+
 /// What thinned columns were thinned to: the time axis and the plotting area's left and right
 /// edges, CSS px.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -51,7 +54,7 @@ pub struct ThinCache<R> {
 
 impl<R> ThinCache<R> {
     /// The cache of a run thinned by `thin`, holding the thinnings `kept` already made.
-    pub fn new(thin: ThinRow<R>, kept: Vec<(ThinKey, Columns)>) -> ThinCache<R> {
+    pub fn new(thin: ThinRow<R>, kept: Kept) -> ThinCache<R> {
         ThinCache {
             thin,
             kept: RefCell::new(kept),

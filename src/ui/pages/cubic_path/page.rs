@@ -9,7 +9,7 @@ use crate::pyfmt::py_float;
 use crate::recipes::cubic_path::{params_from_args, CubicParams, CubicSample, INFO};
 use crate::ui::ctx;
 use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, SignalPage, SignalSpec};
-use crate::view::cubic_path::{readouts as numbers, rows};
+use crate::view::cubic_path::{readouts as numbers, rows, Readouts};
 use crate::view::signal::{sig, Slider};
 
 /// The page: its state is the kit's (the run, the overlays, the plot).
@@ -18,6 +18,7 @@ pub struct CubicPage;
 impl SignalPage for CubicPage {
     type Params = CubicParams;
     type Row = CubicSample;
+    type Summary = Readouts;
     type Handle = ();
     const SPEC: SignalSpec<CubicParams, CubicSample> = SignalSpec {
         prefix: "cubic",
@@ -54,6 +55,11 @@ impl SignalPage for CubicPage {
         under_readouts: "",
     };
 
+    /// The peaks, coefficients and row count.
+    fn summarize(params: &CubicParams, rows: &[CubicSample]) -> Readouts {
+        numbers(params, rows)
+    }
+
     fn build(_kit: &Kit<CubicPage>) -> Result<CubicPage, JsValue> {
         Ok(CubicPage)
     }
@@ -62,7 +68,7 @@ impl SignalPage for CubicPage {
     fn show(&self, kit: &Kit<CubicPage>, draw: Draw) {
         let run = kit.run();
         let params = run.params;
-        let r = numbers(&params, &run.rows);
+        let r = *run.summary;
         if let Some(v) = r.peak_velocity {
             kit.show_numbers(&[("peak-velocity", v.value), ("peak-velocity-t", v.t)]);
         }

@@ -11,7 +11,7 @@ use crate::recipes::cubic_path::{CubicParams, CubicSample};
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::plot::{Mark, SeriesSpec};
 use crate::ui::kit::signal_page::{draw_handle, series, Draw, Fit, Run, SignalPlot};
-use crate::view::cubic_path::{panel_range, quintic, time_range, trapezoid};
+use crate::view::cubic_path::{panel_range, quintic, time_range, trapezoid, Readouts};
 use crate::view::palette;
 use crate::view::signal::{nice_range, snap};
 
@@ -26,7 +26,7 @@ const C_OVERLAY: [(u8, u8, u8); 2] = [palette::REDDISH_PURPLE.rgb, palette::BLUI
 const C_CURSOR: (u8, u8, u8) = (194, 65, 12);
 
 /// A run of the recipe: its arguments and samples.
-type Path = Run<CubicParams, CubicSample>;
+type Path = Run<CubicParams, CubicSample, Readouts>;
 
 /// The end point's place, CSS px.
 fn end_px(sp: &SignalPlot<()>, p: &CubicParams) -> Option<DVec2> {

@@ -6,20 +6,27 @@ use std::cell::{Cell, RefCell};
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use super::plots::{self, Plots, Response};
+use super::plots::{self, Plots};
 use crate::error::RecipeWarning;
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
-use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, RunFrom, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, Run, RunFrom, SignalPage, SignalSpec};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
 use crate::view::pid_step::{figures, rows, stops_short, StepFigures, TUNED_GAINS};
 use crate::view::signal::{sig, Slider};
 
-/// The figures and warnings of the run shown, the run the ghost is drawn from (a new ghost, a
-/// new generation), and the last committed run (runs are shared, never copied).
-struct Runs {
+/// What the page reads off every row of a run: its figures and warnings.
+pub struct Summary {
     figures: StepFigures,
     warnings: Vec<RecipeWarning>,
+}
+
+/// A run of the recipe: its gains, samples and summary.
+type Response = Run<PidParams, PidSample, Summary>;
+
+/// The run the ghost is drawn from (a new ghost, a new generation) and the last committed run
+/// (runs are shared, never copied).
+struct Runs {
     committed: Response,
     ghost: Option<Response>,
     ghost_generation: u64,
@@ -29,8 +36,6 @@ impl Runs {
     /// The run `run` with no ghost, committed.
     fn first(run: &Response) -> Runs {
         Runs {
-            figures: figures(&run.rows),
-            warnings: warnings(&run.rows),
             committed: run.clone(),
             ghost: None,
             ghost_generation: 0,
@@ -52,6 +57,7 @@ pub struct PidPage {
 impl SignalPage for PidPage {
     type Params = PidParams;
     type Row = PidSample;
+    type Summary = Summary;
     type Handle = ();
     const SPEC: SignalSpec<PidParams, PidSample> = SignalSpec {
         prefix: "pid",
@@ -93,6 +99,13 @@ impl SignalPage for PidPage {
                          <p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>",
     };
 
+    fn summarize(_: &PidParams, rows: &[PidSample]) -> Summary {
+        Summary {
+            figures: figures(rows),
+            warnings: warnings(rows),
+        }
+    }
+
     fn build(kit: &Kit<PidPage>) -> Result<PidPage, JsValue> {
         Ok(PidPage {
             plots: RefCell::new(Plots::default()),
@@ -111,16 +124,13 @@ impl SignalPage for PidPage {
         let mut runs = self.runs.borrow_mut();
         if draw.run == Some(RunFrom::Mount) {
             *runs = Runs::first(&run);
-        } else if draw.run.is_some() {
-            if !self.changing.replace(true) {
-                // The committed run becomes the ghost; the next commit replaces it.
-                runs.ghost = Some(runs.committed.clone());
-                runs.ghost_generation += 1;
-            }
-            runs.figures = figures(&run.rows);
-            runs.warnings = warnings(&run.rows);
+        } else if draw.run.is_some() && !self.changing.replace(true) {
+            // A change's first run: the committed run becomes the ghost; the next commit
+            // replaces it.
+            runs.ghost = Some(runs.committed.clone());
+            runs.ghost_generation += 1;
         }
-        let f = runs.figures;
+        let f = run.summary.figures;
         let show = |key: &str, x: Option<f64>, digits: usize| match x {
             Some(x) => kit.show_number(key, x, digits),
             None => kit.readouts.set_with_value(key, &ctx::t("pid-ro-none"), ""),
@@ -132,8 +142,7 @@ impl SignalPage for PidPage {
         show("peak-u", f.peak_u.map(|p| p.1), 4);
         show("peak-u-t", f.peak_u.map(|p| p.0), 4);
         show("final-y", f.final_y, 4);
-        let text: Vec<String> = runs
-            .warnings
+        let text: Vec<String> = (run.summary.warnings)
             .iter()
             .map(|w| ctx::t_args(w.message_id(), &fluent_args(w.message_args())))
             .collect();

@@ -32,9 +32,6 @@ struct GhostCache {
     u: Vec<(f64, f64)>,
 }
 
-/// A run of the recipe: its gains and samples.
-pub type Response = Run<PidParams, PidSample>;
-
 /// The time of the last sample of the run of `p` (the kernel's step k is at k·dt), if any.
 pub fn last_t(p: &PidParams) -> Option<f64> {
     (p.steps >= 1).then(|| (p.steps - 1) as f64 * DT_S)
@@ -55,14 +52,14 @@ pub fn time_axis_of(now_end: Option<f64>, ghost_end: Option<f64>) -> (f64, f64) 
 impl Plots {
     /// Sets the axes and series of the run `now` over the `ghost` (`generation` names it: a
     /// new ghost, a new number); `resized` refits the canvases.
-    pub fn set_data(
+    pub fn set_data<M>(
         &mut self,
         sp: &mut SignalPlot<()>,
-        now: &Response,
-        ghost: Option<(u64, &Response)>,
+        now: &Run<PidParams, PidSample, M>,
+        ghost: Option<(u64, &Run<PidParams, PidSample, M>)>,
         resized: bool,
     ) {
-        let end = |r: &Response| r.rows.last().map(|s| s.t);
+        let end = |r: &Run<PidParams, PidSample, M>| r.rows.last().map(|s| s.t);
         let x = time_axis_of(end(now), ghost.and_then(|g| end(g.1)));
         // The ghost's series (first, under the others) only while there is one.
         let g = usize::from(ghost.is_some());

@@ -23,6 +23,8 @@ pub struct TrapPage {
 impl SignalPage for TrapPage {
     type Params = TrapParams;
     type Row = TrapSample;
+    /// Nothing: the readouts come from the arguments and the last row.
+    type Summary = ();
     type Handle = Grab;
     const SPEC: SignalSpec<TrapParams, TrapSample> = SignalSpec {
         prefix: "trap",
@@ -60,6 +62,8 @@ impl SignalPage for TrapPage {
                      <p class=\"sig-note\" data-i18n=\"trap-drag-hint\"></p>",
         under_readouts: "",
     };
+
+    fn summarize(_: &TrapParams, _: &[TrapSample]) {}
 
     fn build(kit: &Kit<TrapPage>) -> Result<TrapPage, JsValue> {
         Ok(TrapPage {

@@ -57,7 +57,7 @@ pub fn time_axis(sp: &SignalPlot<Grab>, ph: &Phases, fit: Fit) -> (f64, f64) {
 /// Sets the axes and the thinned samples of `run`, the profile of phases `ph`.
 pub fn set_data(
     sp: &mut SignalPlot<Grab>,
-    run: &Run<TrapParams, TrapSample>,
+    run: &Run<TrapParams, TrapSample, ()>,
     ph: &Phases,
     draw: Draw,
 ) {
