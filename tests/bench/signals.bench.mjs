@@ -105,6 +105,16 @@ async function bigRuns(url) {
   }
 }
 
+/** [page, query, slider, budget p95 ms] */
+const DRAGS = [
+  ['cubic-path', '', 'q1', 4],
+  ['cubic-path', '?T=2&dt=0.00002', 'q1', 16],
+  ['pid-step', '', 'Kp', 4],
+  ['pid-step', '?steps=100000', 'Kp', 16],
+  ['trapezoid-profile', '', 'vmax', 4],
+  ['trapezoid-profile', '?dt=0.000025', 'vmax', 16],
+];
+
 await runBench({ table, strict: 'SIGNALS_BENCH_STRICT' }, async (url) => {
   if (process.env.SIGNALS_BENCH_ONLY === 'big') {
     await bigRuns(url);
