@@ -10,6 +10,7 @@
 use web_sys::KeyboardEvent;
 
 use super::sliced::Rows;
+use super::thinned::ThinRow;
 use crate::recipes::RecipeInfo;
 use crate::ui::kit::readouts;
 use crate::ui::kit::recipe_controls::{self, Parse};
@@ -25,6 +26,9 @@ pub struct SignalSpec<P: 'static, R: 'static> {
     pub info: &'static RecipeInfo,
     pub parse: Parse<P>,
     pub kernel: fn(&P) -> Option<Rows<R>>,
+    /// The page's thinning hook: a row's time and plotted values pushed into the thinner
+    /// (one column a value, [`crate::ui::kit::signal_page::Run::thinned`] gives them back).
+    pub thin: ThinRow<R>,
     /// The file the PNG button saves.
     pub png: &'static str,
     /// Canvases in the stage: 3 (axes, data, cursor) or 4 (axes, data, marks, cursor).
