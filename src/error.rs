@@ -89,6 +89,17 @@ pub enum RecipeError {
     /// from 0 at the file's start (a byte-order mark included). The CLI and the pages decode
     /// input files the same way ([`crate::recipes::decode_input`]).
     InputNotUtf8 { name: String, offset: u64 },
+    /// An input file that starts with a UTF-16 byte-order mark (`FF FE` or `FE FF`).
+    InputUtf16 { name: String },
+    /// An input file holding a NUL byte (a binary file): its line (from 1) and its byte in
+    /// that line (from 1).
+    InputBinary {
+        name: String,
+        line: u64,
+        column: u64,
+    },
+    /// A CSV header with more columns than the limit.
+    CsvTooManyColumns { count: u64, limit: u64 },
     /// A point (rrt-2d's `start` or `goal`) inside obstacle box `index` (1-based, edges
     /// included).
     PointInObstacle {
@@ -142,6 +153,9 @@ impl RecipeError {
             CsvUnterminatedQuote { .. } => "err-csv-unterminated-quote",
             InputMissing { .. } => "err-input-missing",
             InputNotUtf8 { .. } => "err-input-not-utf8",
+            InputUtf16 { .. } => "err-input-utf16",
+            InputBinary { .. } => "err-input-binary",
+            CsvTooManyColumns { .. } => "err-csv-too-many-columns",
             PointInObstacle { .. } => "err-point-in-obstacle",
             BoxInverted { .. } => "err-box-inverted",
             TooManyValues { .. } => "err-too-many-values",
@@ -245,6 +259,13 @@ impl RecipeError {
             }
             InputMissing { name } => vec![("name", name.clone())],
             InputNotUtf8 { name, offset } => vec![("name", name.clone()), ("offset", c(offset))],
+            InputUtf16 { name } => vec![("name", name.clone())],
+            InputBinary { name, line, column } => vec![
+                ("name", name.clone()),
+                ("line", c(line)),
+                ("column", c(column)),
+            ],
+            CsvTooManyColumns { count, limit } => vec![("count", c(count)), ("limit", c(limit))],
             PointInObstacle { param, x, y, index } => vec![
                 l(param),
                 ("x", n(x)),
@@ -318,6 +339,32 @@ fn side_text(cells: u64) -> String {
     }
     let side = (cells as f64).sqrt().round();
     human(side)
+}
+
+impl RecipeError {
+    /// The English line of an input file that is not UTF-8 text.
+    fn fmt_not_text(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use RecipeError::*;
+        let c = |v: u64| human(v as f64);
+        match self {
+            InputNotUtf8 { name, offset } => write!(
+                f,
+                "'{name}' is not UTF-8 text: byte {} (counted from 0) is not valid UTF-8; save it as UTF-8",
+                c(*offset)
+            ),
+            InputUtf16 { name } => write!(
+                f,
+                "'{name}' is UTF-16 text (it starts with a UTF-16 byte-order mark); save it as UTF-8"
+            ),
+            InputBinary { name, line, column } => write!(
+                f,
+                "'{name}' holds a NUL byte (line {}, byte {} of the line): a binary file, not CSV text",
+                c(*line),
+                c(*column)
+            ),
+            _ => Ok(()),
+        }
+    }
 }
 
 impl fmt::Display for RecipeError {
@@ -440,10 +487,12 @@ impl fmt::Display for RecipeError {
             InputMissing { name } => {
                 write!(f, "input file '{name}' not found (open it first)")
             }
-            InputNotUtf8 { name, offset } => write!(
+            InputNotUtf8 { .. } | InputUtf16 { .. } | InputBinary { .. } => self.fmt_not_text(f),
+            CsvTooManyColumns { count, limit } => write!(
                 f,
-                "'{name}' is not UTF-8 text: byte {} (counted from 0) is not valid UTF-8; save it as UTF-8",
-                c(*offset)
+                "CSV header has {} columns; the limit is {}",
+                c(*count),
+                c(*limit)
             ),
             PointInObstacle { param, x, y, index } => write!(
                 f,

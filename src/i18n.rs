@@ -605,6 +605,9 @@ mod tests {
             | CsvUnterminatedQuote { .. }
             | InputMissing { .. }
             | InputNotUtf8 { .. }
+            | InputUtf16 { .. }
+            | InputBinary { .. }
+            | CsvTooManyColumns { .. }
             | PointInObstacle { .. }
             | BoxInverted { .. }
             | TooManyValues { .. } => {}
@@ -680,6 +683,18 @@ mod tests {
             },
             CsvTimeNotIncreasing { row: 4 },
             CsvUnterminatedQuote { row: 2 },
+            CsvTooManyColumns {
+                count: 1_000_000,
+                limit: 1000,
+            },
+            InputUtf16 {
+                name: "walk.csv".into(),
+            },
+            InputBinary {
+                name: "walk.png".into(),
+                line: 3,
+                column: 2,
+            },
             InputMissing {
                 name: "my_traj.csv".into(),
             },

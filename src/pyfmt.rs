@@ -75,6 +75,31 @@ pub fn group_u64(n: u64) -> String {
     group_digits(&n.to_string())
 }
 
+/// A size in bytes for reading: counts stay exact below 1 KiB, then one decimal in KiB / MiB /
+/// GiB, a trailing `.0` dropped.
+///
+/// ```
+/// use bsv_playground::pyfmt::size_text;
+/// assert_eq!(size_text(100), "100 B");
+/// assert_eq!(size_text(1536), "1.5 KiB");
+/// assert_eq!(size_text(50 << 20), "50 MiB");
+/// ```
+pub fn size_text(bytes: u64) -> String {
+    const UNITS: [&str; 3] = ["KiB", "MiB", "GiB"];
+    if bytes < 1024 {
+        return format!("{bytes} B");
+    }
+    let mut value = bytes as f64 / 1024.0;
+    let mut unit = 0;
+    while value >= 1024.0 && unit + 1 < UNITS.len() {
+        value /= 1024.0;
+        unit += 1;
+    }
+    let text = format!("{value:.1}");
+    let text = text.strip_suffix(".0").unwrap_or(&text);
+    format!("{text} {}", UNITS[unit])
+}
+
 fn group_digits(digits: &str) -> String {
     let mut out = String::with_capacity(digits.len() + digits.len() / 3);
     for (i, c) in digits.chars().enumerate() {

@@ -113,6 +113,35 @@ fn bad_input_exits_2_names_the_argument_and_writes_nothing() {
 }
 
 #[test]
+fn utf16_and_binary_inputs_are_refused_by_name_as_the_pages_refuse_them() {
+    let dir = temp_dir("hostile");
+    let out_dir = dir.join("out");
+    std::fs::create_dir_all(&out_dir).unwrap();
+    // Big-endian UTF-16 (the mark FE FF), as some editors save "Unicode" text.
+    let utf16 = b"\xfe\xff\x00t\x00_\x00s\x00,\x00q\x001\x00\n\x000\x00,\x001\x00\n".to_vec();
+    for (name, bytes, says) in [
+        ("excel.csv", utf16, "excel.csv' is UTF-16 text"),
+        (
+            "nul.csv",
+            b"t_s,q1\n0,1\n0.1,2\x00\n".to_vec(),
+            "nul.csv' holds a NUL byte (line 3, byte 6 of the line)",
+        ),
+    ] {
+        std::fs::write(dir.join(name), bytes).unwrap();
+        let out = bsv(&[
+            "traj-resample",
+            dir.join(name).to_str().unwrap(),
+            "--out",
+            out_dir.to_str().unwrap(),
+        ]);
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(says), "{err}");
+        assert_eq!(std::fs::read_dir(&out_dir).unwrap().count(), 0);
+    }
+}
+
+#[test]
 fn an_input_that_is_not_utf8_is_refused_naming_the_byte_offset() {
     let dir = temp_dir("latin1");
     let input = dir.join("latin1.csv");

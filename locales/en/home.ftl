@@ -3,8 +3,29 @@
 
 home-page-title = Home
 home-headline = Robotics: simulate, sample, log — then practice teleop
-home-intro = Build short, honest simulation drills: MuJoCo energy, planar IK, trajectory resample, DH FK, Jacobian/manipulability, cubic paths, SE(3) relatives and a toy 2D RRT. For Isaac Teleop practice, use Robot Pilot Academy — BSV does not redistribute NVIDIA code.
-home-featured-label = Interactive tool, runs in your browser (English / Japanese)
+home-intro = Short, honest robotics drills that run in your browser: MuJoCo energy, planar IK, trajectory resampling, DH FK, Jacobian and manipulability, cubic paths, SE(3) relative poses and a toy 2D RRT. Practise teleoperation here, on this app's Robot Pilot page; for Isaac Teleop itself, follow Robot Pilot Academy on the BSV site. BSV does not redistribute NVIDIA code.
+
+# The live arm at the top, and what each page's tile shows.
+home-tiles-label = Drills that run in your browser
+home-arm-label = A two-link arm (L1 0.12 m, L2 0.10 m) inside the ring it can reach
+home-arm-hint = Drag the orange tip: both joints follow by inverse kinematics. Drag a link to turn one joint.
+home-arm-key-nudge = Move the home arm's tip 5 mm (Shift: 1 mm), with the arm focused
+home-arm-open = Open this pose in the IK playground
+home-card-more = Inputs, files and command lines
+home-featured-label-ik-2r = Kinematics · drag an arm, watch |det J| change
+home-featured-label-dh-fk = Kinematics · a DH chain in 3D, row by row
+home-featured-label-se3-relative = Kinematics · one frame seen from another
+home-featured-label-umeyama-2d = Kinematics · fit rotation, scale and shift to points
+home-featured-label-pendulum-energy = Dynamics · energy drift, Euler against RK4
+home-featured-label-pid-step = Control · tune Kp, Ki and Kd on a step
+home-featured-label-cubic-path = Trajectories · a cubic move, its speed and acceleration
+home-featured-label-trapezoid-profile = Trajectories · when a trapezoid becomes a triangle
+home-featured-label-traj-resample = Trajectories · resample a joint log to a new rate
+home-featured-label-rrt-2d = Planning · a random tree grows toward the goal
+home-featured-label-teleop = Teleop practice · drive an arm, record ten demos
+home-featured-label-drills = Every recipe · your own values, the same CSV files
+home-featured-label-lesson = Teaching · chain views into a lesson and present it
+
 home-featured-open = Open the playground
 home-recipes-heading = Build recipes
 home-recipes-intro = Twelve short drills, each a BSV Python recipe rebuilt in Rust. On the command line, “bsv <recipe id>” takes the same values and writes the same CSV files as the Python script.

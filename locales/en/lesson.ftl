@@ -54,15 +54,42 @@ lesson-step-title-label = Title
 lesson-step-note-label = Note for the presenter
 lesson-step-page-steps-label = Page steps before moving on
 lesson-page-steps-invalid = A whole number from 0 to { $max }.
-lesson-error-not-a-lesson = This file is not a lesson: { $detail }. The current lesson is kept.
+lesson-error-not-text = This file could not be read as a lesson: { $detail } The current lesson is kept.
+lesson-error-too-big = This file is { $size } ({ $bytes } bytes); a lesson file may be at most { $limit }. It was not read. The current lesson is kept.
+lesson-error-empty-file = This file is empty. The current lesson is kept.
+lesson-error-too-deep = This file nests lists or objects more than { $max } deep (line { $line }, column { $column }); a lesson nests 3 deep. The current lesson is kept.
+lesson-error-not-json = This file is not JSON: the text stops making sense at line { $line }, column { $column }. The current lesson is kept.
+lesson-error-not-an-object = This JSON file holds { $kind ->
+    [array] a list
+    [text] a piece of text
+    [number] a number
+    [boolean] true or false
+    *[other] null
+}, not a lesson. The current lesson is kept.
+lesson-error-step-not-an-object = Step { $step } is not an object with a route and a title. The current lesson is kept.
+lesson-error-no-format = This JSON file is not a BSV lesson: it has no “format” field (a lesson file says "format": "bsv-lesson"). The current lesson is kept.
 lesson-error-format = This file is not a BSV lesson (format “{ $found }”, expected “bsv-lesson”). The current lesson is kept.
-lesson-error-version = This lesson was written by a newer version (version { $found }). The current lesson is kept.
-lesson-error-too-big = This file is too big for a lesson ({ $bytes } bytes; at most 512 KiB). The current lesson is kept.
+lesson-error-version = This lesson was written by another version (version { $found }; this app reads version { $version }). The current lesson is kept.
+lesson-error-unknown-field = The lesson has a field this app does not know: “{ $field }”. The current lesson is kept.
+lesson-error-step-unknown-field = Step { $step } has a field this app does not know: “{ $field }”. The current lesson is kept.
+lesson-error-missing-field = The lesson has no “{ $field }” field. The current lesson is kept.
+lesson-error-step-missing-field = Step { $step } has no “{ $field }” field. The current lesson is kept.
+lesson-error-wrong-type = The lesson's field “{ $field }” must be { $expected ->
+    [text] text
+    [number] a whole number
+    *[list] a list of steps
+}. The current lesson is kept.
+lesson-error-step-wrong-type = Step { $step }, field “{ $field }”: must be { $expected ->
+    [text] text
+    [number] a whole number
+    *[list] a list
+}. The current lesson is kept.
+lesson-error-no-steps = This lesson has no steps: there is nothing to present. The current lesson is kept.
 lesson-error-too-many-steps = A lesson holds at most { $max } steps; this one has { $count }. The current lesson is kept.
-lesson-error-unknown-page = Step { $step } names a page this app does not have (“{ $page }”). The current lesson is kept.
-lesson-error-too-long = Step { $step }: the { $field } is too long. The current lesson is kept.
-lesson-error-page-steps = Step { $step }: page steps must be a whole number from 0 to { $max }. The current lesson is kept.
-lesson-error-title-too-long = The lesson's title is longer than { $max } characters. The current lesson is kept.
+lesson-error-unknown-page = Step { $step }, field “route”: this app has no page “{ $page }”. The current lesson is kept.
+lesson-error-too-long = Step { $step }, field “{ $field }”: longer than { $max } characters. The current lesson is kept.
+lesson-error-page-steps = Step { $step }, field “pageSteps”: must be a whole number from 0 to { $max }. The current lesson is kept.
+lesson-error-title-too-long = The lesson's field “title” is longer than { $max } characters. The current lesson is kept.
 lesson-add = + Lesson
 lesson-add-title = Add this view to the lesson (edit it on the Lesson page)
 lesson-added = Added as step { $count } of the lesson.
@@ -73,3 +100,8 @@ lesson-page-steps-left = { $count } page steps before the next lesson step
 lesson-prev = ← Back
 lesson-next = Next →
 lesson-end = End lesson
+lesson-added-unsaved = Added as step { $count } of the lesson, but this browser's storage is full: the lesson is not saved and lives in this tab only.
+lesson-unsaved = This lesson is not saved: this browser's storage is full (or turned off). It stays on this page while the tab is open; export it as .json to keep it.
+lesson-unreadable = The lesson stored in this browser could not be read (edited by hand or cut short), so this page started clean. Its text is kept in this browser's storage under { $key }.
+lesson-unreadable-download = Download the kept text
+lesson-unreadable-forget = Discard it

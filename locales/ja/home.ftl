@@ -3,8 +3,29 @@
 
 home-page-title = ホーム
 home-headline = ロボティクス：シミュレーションし、サンプリングし、記録する。そして遠隔操作の練習へ
-home-intro = 短く、ごまかしのないシミュレーション演習を組み立てましょう。題材は MuJoCo のエネルギー、平面 IK、軌道のリサンプリング、DH 順運動学、ヤコビアンと可操作度、3 次の関節経路、SE(3) の相対姿勢、そして簡易版の 2D RRT です。Isaac Teleop による遠隔操作の練習には Robot Pilot Academy を使ってください。BSV は NVIDIA のコードを再配布していません。
-home-featured-label = ブラウザで動くインタラクティブなツール（英語／日本語）
+home-intro = ブラウザで動く、短く、ごまかしのないロボティクス演習です。題材は MuJoCo のエネルギー、平面 IK、軌道のリサンプリング、DH 順運動学、ヤコビアンと可操作度、3 次の関節経路、SE(3) の相対姿勢、そして簡易版の 2D RRT です。遠隔操作の練習は、このアプリの「ロボットパイロット」ページでできます。Isaac Teleop そのものは、BSV サイトの Robot Pilot Academy で学んでください。BSV は NVIDIA のコードを再配布していません。
+
+# 冒頭で動かせるアームと、各ページのタイルが示すもの。
+home-tiles-label = ブラウザで動くドリル
+home-arm-label = 届く範囲の輪の中にある 2 リンクのアーム（L1 0.12 m、L2 0.10 m）
+home-arm-hint = オレンジの先端をドラッグすると、逆運動学で両方の関節がついてきます。リンクをドラッグすると 1 つの関節だけが回ります。
+home-arm-key-nudge = ホームのアームにフォーカスがあるとき、先端を 5 mm 動かす（Shift：1 mm）
+home-arm-open = この姿勢を IK プレイグラウンドで開く
+home-card-more = 入力・出力ファイル・コマンドライン
+home-featured-label-ik-2r = 運動学・アームを動かして |det J| の変化を見る
+home-featured-label-dh-fk = 運動学・DH チェーンを 3D で 1 行ずつ
+home-featured-label-se3-relative = 運動学・ある座標系から見た別の座標系
+home-featured-label-umeyama-2d = 運動学・点群に回転・スケール・並進を合わせる
+home-featured-label-pendulum-energy = 動力学・エネルギーのずれ（Euler と RK4）
+home-featured-label-pid-step = 制御・ステップ応答で Kp・Ki・Kd を調整
+home-featured-label-cubic-path = 軌道・3 次の動きとその速度・加速度
+home-featured-label-trapezoid-profile = 軌道・台形が三角形になるとき
+home-featured-label-traj-resample = 軌道・関節ログを新しい周期でリサンプリング
+home-featured-label-rrt-2d = 経路計画・ランダムな木がゴールへ伸びる
+home-featured-label-teleop = 遠隔操作の練習・アームを操作して 10 回記録する
+home-featured-label-drills = 全レシピ・自分の値で、同じ CSV ファイルを
+home-featured-label-lesson = 授業・画面をつないでレッスンにし、発表する
+
 home-featured-open = プレイグラウンドを開く
 home-recipes-heading = 演習レシピ
 home-recipes-intro = BSV の Python レシピを Rust で作り直した、12 の短い演習です。コマンドラインの「bsv <レシピ ID>」は、Python スクリプトと同じ値を受け取り、同じ CSV ファイルを書き出します。

@@ -54,15 +54,42 @@ lesson-step-title-label = タイトル
 lesson-step-note-label = 発表者用のメモ
 lesson-step-page-steps-label = 次へ進む前にページを進める回数
 lesson-page-steps-invalid = 0 から { $max } までの整数を入力してください。
-lesson-error-not-a-lesson = このファイルはレッスンではありません：{ $detail }。今のレッスンはそのまま残ります。
+lesson-error-not-text = このファイルはレッスンとして読めませんでした：{ $detail } 今のレッスンはそのまま残ります。
+lesson-error-too-big = このファイルは { $size }（{ $bytes } バイト）あります。レッスンのファイルは { $limit } までです。ファイルは読み込んでいません。今のレッスンはそのまま残ります。
+lesson-error-empty-file = このファイルは空です。今のレッスンはそのまま残ります。
+lesson-error-too-deep = このファイルはリストやオブジェクトの入れ子が { $max } 段を超えています（{ $line } 行目、{ $column } 文字目）。レッスンの入れ子は 3 段です。今のレッスンはそのまま残ります。
+lesson-error-not-json = このファイルは JSON ではありません：{ $line } 行目、{ $column } 文字目で読めなくなります。今のレッスンはそのまま残ります。
+lesson-error-not-an-object = この JSON ファイルの中身は{ $kind ->
+    [array] リスト
+    [text] 文字列
+    [number] 数値
+    [boolean] true か false
+    *[other] null
+}で、レッスンではありません。今のレッスンはそのまま残ります。
+lesson-error-step-not-an-object = ステップ { $step } が、route と title を持つオブジェクトではありません。今のレッスンはそのまま残ります。
+lesson-error-no-format = この JSON ファイルは BSV のレッスンではありません：「format」フィールドがありません（レッスンのファイルには "format": "bsv-lesson" があります）。今のレッスンはそのまま残ります。
 lesson-error-format = このファイルは BSV のレッスンではありません（形式「{ $found }」、期待される形式は「bsv-lesson」）。今のレッスンはそのまま残ります。
-lesson-error-version = このレッスンは新しいバージョン（バージョン { $found }）で作られています。今のレッスンはそのまま残ります。
-lesson-error-too-big = レッスンとしては大きすぎるファイルです（{ $bytes } バイト、上限 512 KiB）。今のレッスンはそのまま残ります。
+lesson-error-version = このレッスンは別のバージョン（バージョン { $found }）で作られています。このアプリが読めるのはバージョン { $version } です。今のレッスンはそのまま残ります。
+lesson-error-unknown-field = レッスンに、このアプリが知らないフィールド「{ $field }」があります。今のレッスンはそのまま残ります。
+lesson-error-step-unknown-field = ステップ { $step } に、このアプリが知らないフィールド「{ $field }」があります。今のレッスンはそのまま残ります。
+lesson-error-missing-field = レッスンに「{ $field }」フィールドがありません。今のレッスンはそのまま残ります。
+lesson-error-step-missing-field = ステップ { $step } に「{ $field }」フィールドがありません。今のレッスンはそのまま残ります。
+lesson-error-wrong-type = レッスンのフィールド「{ $field }」は{ $expected ->
+    [text] 文字列
+    [number] 整数
+    *[list] ステップのリスト
+}でなければなりません。今のレッスンはそのまま残ります。
+lesson-error-step-wrong-type = ステップ { $step }、フィールド「{ $field }」：{ $expected ->
+    [text] 文字列
+    [number] 整数
+    *[list] リスト
+}でなければなりません。今のレッスンはそのまま残ります。
+lesson-error-no-steps = このレッスンにはステップがなく、発表するものがありません。今のレッスンはそのまま残ります。
 lesson-error-too-many-steps = レッスンのステップは { $max } 個までです。このレッスンには { $count } 個あります。今のレッスンはそのまま残ります。
-lesson-error-unknown-page = ステップ { $step } が、このアプリにないページ（「{ $page }」）を指しています。今のレッスンはそのまま残ります。
-lesson-error-too-long = ステップ { $step }：{ $field } が長すぎます。今のレッスンはそのまま残ります。
-lesson-error-page-steps = ステップ { $step }：ページを進める回数は 0 から { $max } までの整数です。今のレッスンはそのまま残ります。
-lesson-error-title-too-long = レッスンのタイトルが { $max } 文字を超えています。今のレッスンはそのまま残ります。
+lesson-error-unknown-page = ステップ { $step }、フィールド「route」：このアプリに「{ $page }」というページはありません。今のレッスンはそのまま残ります。
+lesson-error-too-long = ステップ { $step }、フィールド「{ $field }」：{ $max } 文字を超えています。今のレッスンはそのまま残ります。
+lesson-error-page-steps = ステップ { $step }、フィールド「pageSteps」：0 から { $max } までの整数でなければなりません。今のレッスンはそのまま残ります。
+lesson-error-title-too-long = レッスンのフィールド「title」が { $max } 文字を超えています。今のレッスンはそのまま残ります。
 lesson-add = + レッスン
 lesson-add-title = この画面をレッスンに追加します（レッスンのページで編集できます）
 lesson-added = レッスンのステップ { $count } として追加しました。
@@ -73,3 +100,8 @@ lesson-page-steps-left = 次のレッスンステップまで、ページをあ�
 lesson-prev = ← 前へ
 lesson-next = 次へ →
 lesson-end = レッスンを終える
+lesson-added-unsaved = レッスンのステップ { $count } として追加しましたが、このブラウザーの保存領域がいっぱいのため保存されていません。このタブの中だけにあります。
+lesson-unsaved = このレッスンは保存されていません：このブラウザーの保存領域がいっぱいです（または保存が無効です）。タブを開いている間はこのページに残ります。残すには .json に書き出してください。
+lesson-unreadable = このブラウザーに保存されていたレッスンが読めなかったため（手で編集された、または途中で切れている）、このページは空の状態から始めました。そのテキストはこのブラウザーの保存領域に { $key } として残してあります。
+lesson-unreadable-download = 残したテキストをダウンロード
+lesson-unreadable-forget = 破棄する

@@ -127,9 +127,11 @@ pub fn plan(id: &str, raw: &[String], inputs: Vec<(String, String)>) -> Result<P
 }
 
 /// The text of input file `name` from its bytes: the one decoding policy of the CLI and the
-/// pages. The bytes must be UTF-8 (a byte-order mark is allowed; the CSV reader drops it);
-/// anything else is refused with the offset of the first byte that is not valid UTF-8, never
-/// guessed or replaced, so a page and `bsv` always read the same numbers from the same file.
+/// pages. The bytes must be UTF-8 text (a byte-order mark is allowed; the CSV reader drops it);
+/// anything else is refused, never guessed or replaced, so a page and `bsv` always read the
+/// same numbers from the same file: a UTF-16 byte-order mark is named as such, a NUL byte as
+/// a binary file (with its line and its byte in the line), else the offset of the first byte
+/// that is not valid UTF-8.
 ///
 /// ```
 /// use bsv_playground::error::RecipeError;
@@ -139,8 +141,25 @@ pub fn plan(id: &str, raw: &[String], inputs: Vec<(String, String)>) -> Result<P
 ///     decode_input("a.csv", b"t_s,q\xe9\n"),
 ///     Err(RecipeError::InputNotUtf8 { name: "a.csv".into(), offset: 5 })
 /// );
+/// assert_eq!(
+///     decode_input("a.csv", b"t_s,q1\r\n0,\x001\n"),
+///     Err(RecipeError::InputBinary { name: "a.csv".into(), line: 2, column: 3 })
+/// );
 /// ```
 pub fn decode_input(name: &str, bytes: &[u8]) -> Result<String, RecipeError> {
+    if bytes.starts_with(&[0xFF, 0xFE]) || bytes.starts_with(&[0xFE, 0xFF]) {
+        return Err(RecipeError::InputUtf16 {
+            name: name.to_string(),
+        });
+    }
+    if let Some(at) = bytes.iter().position(|&b| b == 0) {
+        let (line, column) = line_and_column(bytes, at);
+        return Err(RecipeError::InputBinary {
+            name: name.to_string(),
+            line,
+            column,
+        });
+    }
     match std::str::from_utf8(bytes) {
         Ok(text) => Ok(text.to_string()),
         Err(e) => Err(RecipeError::InputNotUtf8 {
@@ -148,6 +167,22 @@ pub fn decode_input(name: &str, bytes: &[u8]) -> Result<String, RecipeError> {
             offset: e.valid_up_to() as u64,
         }),
     }
+}
+
+/// The line (from 1; `\r\n`, `\n` and `\r` end a line) and the byte in that line (from 1)
+/// of byte `at`.
+fn line_and_column(bytes: &[u8], at: usize) -> (u64, u64) {
+    let before = bytes.get(..at).unwrap_or_default();
+    let mut line = 1u64;
+    let mut line_start = 0usize;
+    for (i, &b) in before.iter().enumerate() {
+        let ends = b == b'\n' || (b == b'\r' && before.get(i + 1) != Some(&b'\n'));
+        if ends {
+            line += 1;
+            line_start = i + 1;
+        }
+    }
+    (line, (at - line_start) as u64 + 1)
 }
 
 #[cfg(test)]

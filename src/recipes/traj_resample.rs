@@ -18,8 +18,10 @@
 //! `\n` or `\r` line ends, blank lines skipped), plus: a UTF-8 byte-order mark is dropped, blank
 //! lines before the header are skipped too, and the checks the reference leaves to Python
 //! tracebacks are errors naming the row and column: ragged rows, cells that are not finite
-//! numbers, fewer than 2 rows, no joint columns, and time that is not strictly increasing (the
-//! reference does not check that; np.interp silently gives nonsense). The `note` column is
+//! numbers, fewer than 2 rows, no joint columns, a header of more than [`MAX_COLUMNS`] columns,
+//! and time that is not strictly increasing (the reference does not check that; np.interp
+//! silently gives nonsense). What is not text (UTF-16, NUL bytes, bytes that are not UTF-8) is
+//! refused before this reader by [`crate::recipes::decode_input`]. The `note` column is
 //! dropped, as in the recipe. Rows are the 1-based line of the file a record starts on (the
 //! header is row 1).
 
@@ -50,6 +52,11 @@ pub const MAX_OUTPUT_CELLS: u64 = 20_000_000;
 /// Keeps a 128 MiB file of tiny cells from exhausting a browser tab's memory; a million rows of
 /// six joints is 7 million.
 pub const MAX_INPUT_CELLS: u64 = 20_000_000;
+
+/// Most columns a header may have (time, joints, `note`): a thousand joints is far beyond any
+/// arm; a file with a million columns is refused after reading its header line, before any
+/// plot or table of that width is made.
+pub const MAX_COLUMNS: usize = 1000;
 
 /// The output CSV.
 pub const RESAMPLED_NAME: &str = "traj_resampled.csv";
@@ -490,6 +497,12 @@ fn open_csv(
             min: MIN_ROWS,
         });
     };
+    if fields.len() > MAX_COLUMNS {
+        return Err(RecipeError::CsvTooManyColumns {
+            count: fields.len() as u64,
+            limit: MAX_COLUMNS as u64,
+        });
+    }
     let header: Vec<String> = fields.iter().map(|f| f.to_string()).collect();
     let layout = ColumnLayout::new(&header)?;
     Ok((reader, header, layout))

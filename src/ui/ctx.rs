@@ -77,6 +77,12 @@ pub fn t_strings(id: &str, args: &[(&str, String)]) -> String {
     t_args(id, &args)
 }
 
+/// Whether message `id` exists (in English, where every id is defined).
+pub fn has_message(id: &str) -> bool {
+    I18N.try_with(|i18n| i18n.has_message(Lang::En, id))
+        .unwrap_or(false)
+}
+
 /// Message `id` in a given language.
 pub fn t_in(lang: Lang, id: &str) -> String {
     with_i18n(|i18n| i18n.t(lang, id)).unwrap_or_else(|| id.to_string())

@@ -12,40 +12,56 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event, KeyboardEvent};
 
+use crate::ui::kit::store::{self, Refused, Stored};
 use crate::ui::page::{ShellLink, ShellRequest};
 use crate::ui::{ctx, dom, router};
 use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
+use crate::view::lesson_file;
 
 /// localStorage key of the current lesson (its `.json` text).
 pub const LESSON_STORAGE_KEY: &str = "bsv.lesson";
 const BAR_ID: &str = "lesson-bar";
 
 thread_local! {
+    /// The current lesson when the browser refused to store it.
+    static UNSAVED: RefCell<Option<Lesson>> = const { RefCell::new(None) };
     static PRESENTING: RefCell<Option<(Lesson, Presenter)>> = const { RefCell::new(None) };
 }
 
-/// The stored lesson (empty when none or unreadable); `is_page` says which page ids exist (a
-/// lesson step must name one).
+/// The current lesson (empty when none, or when the stored text could not be read: that text
+/// is then kept under [`store::aside_key`]); `is_page` says which page ids exist (a lesson step
+/// must name one). A lesson the browser refused to store is the one in this tab's memory.
 pub fn stored(is_page: impl Fn(&str) -> bool) -> Lesson {
-    dom::storage_get(LESSON_STORAGE_KEY)
-        .and_then(|text| Lesson::from_json(&text, is_page).ok())
-        .unwrap_or_default()
+    if let Some(lesson) = UNSAVED.with_borrow(|l| l.clone()) {
+        return lesson;
+    }
+    match store::read(LESSON_STORAGE_KEY, |text| {
+        lesson_file::from_stored(text, is_page)
+    }) {
+        Stored::Read(lesson) => lesson,
+        Stored::Nothing | Stored::SetAside => Lesson::default(),
+    }
 }
 
-/// Saves `lesson` as the current one.
-pub fn store(lesson: &Lesson) {
-    dom::storage_set(LESSON_STORAGE_KEY, &lesson.to_json());
+/// Saves `lesson` as the current one; `Err` when the browser refused (it is then kept in
+/// this tab's memory, and [`unsaved`] says so, until a save succeeds).
+pub fn store(lesson: &Lesson) -> Result<(), Refused> {
+    let saved = store::save(LESSON_STORAGE_KEY, &lesson_file::to_json(lesson));
+    UNSAVED.with_borrow_mut(|l| *l = saved.is_err().then(|| lesson.clone()));
+    saved
+}
+
+/// Whether the current lesson lives only in this tab (the browser refused to store it).
+pub fn unsaved() -> bool {
+    UNSAVED.with_borrow(Option::is_some)
 }
 
 /// The header button and its live status line.
 pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
     let wrap = dom::el_class("span", "lesson-add-wrap")?;
-    // Phones show "+" alone; its name is still the full text (visually hidden there).
+    // "+ Lesson" at every width: a bare "+" would not say what it adds to.
     let button = dom::el_class("button", "tool-button lesson-add")?;
     dom::append(&button, &dom::el_i18n("span", "tool-full", "lesson-add")?)?;
-    let short = dom::el_text("span", "tool-short", "+")?;
-    short.set_attribute("aria-hidden", "true")?;
-    dom::append(&button, &short)?;
     button.set_attribute("type", "button")?;
     button.set_attribute("data-testid", "lesson-add")?;
     dom::set_i18n_attrs(&button, &[("title", "lesson-add-title")])?;
@@ -54,11 +70,13 @@ pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
     status.set_attribute("data-testid", "lesson-add-status")?;
     let shown = status.clone();
     dom::Listener::new(&button, "click", move |_| {
-        if let Some(count) = add_current_view(shell) {
-            shown.set_text_content(Some(&ctx::t_strings(
-                "lesson-added",
-                &[("count", count.to_string())],
-            )));
+        if let Some((count, saved)) = add_current_view(shell) {
+            let id = if saved {
+                "lesson-added"
+            } else {
+                "lesson-added-unsaved"
+            };
+            shown.set_text_content(Some(&ctx::t_strings(id, &[("count", count.to_string())])));
         }
     })?
     .forever();
@@ -67,8 +85,9 @@ pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
     Ok(wrap)
 }
 
-/// Appends the page shown now to the stored lesson; the number of steps after it.
-fn add_current_view(shell: ShellLink) -> Option<usize> {
+/// Appends the page shown now to the current lesson; the number of steps after it, and
+/// whether the browser stored it.
+fn add_current_view(shell: ShellLink) -> Option<(usize, bool)> {
     let route = router::current_route();
     let def = shell.find(&route.page)?;
     if def.id == "lesson" {
@@ -84,8 +103,8 @@ fn add_current_view(shell: ShellLink) -> Option<usize> {
         .steps
         .push(LessonStep::of_route(&hash, &ctx::t(def.title_id)));
     lesson.validate(is_page).ok()?;
-    store(&lesson);
-    Some(lesson.steps.len())
+    let saved = store(&lesson).is_ok();
+    Some((lesson.steps.len(), saved))
 }
 
 /// The (hidden) presenter bar the shell places in `#app`.

@@ -21,6 +21,7 @@ pub mod drill_chain;
 pub mod kit;
 pub mod lang_chunks;
 pub mod lesson_bar;
+pub mod nav_cue;
 pub mod nav_menu;
 pub mod overlay;
 pub mod page;

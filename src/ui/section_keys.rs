@@ -56,11 +56,20 @@ pub(crate) fn on_key(
             .as_ref()
             .is_some_and(|a| a == e.as_ref() as &web_sys::Element)
     });
-    let target = match (here, forward) {
-        (Some(i), true) => sections.into_iter().nth(i + 1),
-        (Some(i), false) => i.checked_sub(1).and_then(|j| sections.into_iter().nth(j)),
-        (None, true) => sections.into_iter().find(|(top, _)| *top > SLACK_PX),
-        (None, false) => sections.into_iter().rev().find(|(top, _)| *top < -SLACK_PX),
+    // Sections side by side (the home page's tiles) are one row: a press goes to the first
+    // section of the next or previous row.
+    let from = here.map_or(0.0, |i| sections[i].0);
+    let target = if forward {
+        sections.into_iter().find(|(top, _)| *top > from + SLACK_PX)
+    } else {
+        let row = sections
+            .iter()
+            .map(|(top, _)| *top)
+            .filter(|top| *top < from - SLACK_PX)
+            .fold(f64::NEG_INFINITY, f64::max);
+        sections
+            .into_iter()
+            .find(|(top, _)| (*top - row).abs() <= SLACK_PX)
     };
     if let Some((_, element)) = target {
         if element.get_attribute("tabindex").is_none() && element.tab_index() < 0 {

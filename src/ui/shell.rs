@@ -27,6 +27,7 @@ use crate::ui::drill_chain;
 use crate::ui::kit::keymap::{self, ShellKey};
 use crate::ui::lang_chunks;
 use crate::ui::lesson_bar;
+use crate::ui::nav_cue;
 use crate::ui::nav_menu::{self, NavMenu};
 use crate::ui::page::{self, MountCtx, Nav, Page, PageDef, ShellLink, ShellRequest};
 use crate::ui::pages::PAGES;
@@ -194,6 +195,7 @@ fn build_header() -> Result<Element, JsValue> {
     NAV_MENU.with(|slot| *slot.borrow_mut() = Some(menu));
     dom::append(&nav, &list)?;
     dom::append(&header, &nav)?;
+    nav_cue::install(&nav, &list)?;
 
     let tools = dom::el_class("div", "header-tools")?;
     dom::append(&tools, &lesson_bar::build_add_button(SHELL)?)?;

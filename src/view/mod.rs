@@ -22,6 +22,7 @@ pub mod form;
 pub mod heatmap;
 pub mod ik2r;
 pub mod lesson;
+pub mod lesson_file;
 pub mod palette;
 pub mod pendulum;
 pub mod pid_step;

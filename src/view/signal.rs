@@ -138,17 +138,65 @@ pub fn thin_columns<const N: usize>(
     rows: impl IntoIterator<Item = (f64, [f64; N])>,
     x: &LinearScale,
 ) -> [Vec<(f64, f64)>; N] {
-    let mut columns: [ColumnThin; N] = std::array::from_fn(|_| ColumnThin::default());
-    for (i, (t, ys)) in rows.into_iter().enumerate() {
+    let mut thin = ColumnsThin::new(Some(*x));
+    for (t, ys) in rows {
+        thin.push(t, &ys);
+    }
+    let mut columns = thin.finish().into_iter();
+    std::array::from_fn(|_| columns.next().unwrap_or_default())
+}
+
+/// [`thin_columns`] fed one row at a time (a run computed a slice per frame is thinned as
+/// its rows come): columns sharing their x, as many as the first row has values. Without a
+/// scale (no plotting area yet) every point is kept.
+pub struct ColumnsThin {
+    x: Option<LinearScale>,
+    columns: Vec<ColumnThin>,
+    /// Rows pushed so far.
+    rows: usize,
+}
+
+impl ColumnsThin {
+    /// Thins to the pixel columns of `x` (`None`: keeps every point).
+    pub fn new(x: Option<LinearScale>) -> ColumnsThin {
+        ColumnsThin {
+            x,
+            columns: Vec::new(),
+            rows: 0,
+        }
+    }
+
+    /// The next row: its x and its values, one a column.
+    pub fn push(&mut self, t: f64, ys: &[f64]) {
+        if self.columns.len() < ys.len() {
+            self.columns.resize_with(ys.len(), ColumnThin::default);
+        }
+        let i = self.rows;
+        self.rows += 1;
+        let Some(x) = &self.x else {
+            for (column, y) in self.columns.iter_mut().zip(ys) {
+                column.out.push((t, *y));
+            }
+            return;
+        };
         let px = t.is_finite().then(|| x.map(t).floor());
-        for (column, y) in columns.iter_mut().zip(ys) {
+        for (column, &y) in self.columns.iter_mut().zip(ys) {
             match px {
                 Some(px) if y.is_finite() => column.push(i, (t, y), px),
                 _ => column.gap((t, y)),
             }
         }
     }
-    columns.map(ColumnThin::finish)
+
+    /// The rows pushed so far.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// The thinned points of each column.
+    pub fn finish(self) -> Vec<Vec<(f64, f64)>> {
+        self.columns.into_iter().map(ColumnThin::finish).collect()
+    }
 }
 
 /// The (lo, hi) of the finite values of each of `N` columns, in one pass over `rows`;
@@ -344,6 +392,42 @@ mod tests {
             assert_eq!(bits(got), bits(&want), "column {k}");
             assert!(got.len() < 4 * 242 + 4, "column {k}: {}", got.len());
         }
+    }
+
+    #[test]
+    fn thinning_row_by_row_equals_thinning_at_once() {
+        let x = LinearScale::new((0.0, 2.0), (10.0, 250.0));
+        let rows: Vec<(f64, [f64; 2])> = (0..20_000)
+            .map(|i| {
+                let t = i as f64 * 1e-4;
+                let y = if i == 700 { f64::NAN } else { (t * 50.0).sin() };
+                (t, [y, (t * 900.0).cos() * t])
+            })
+            .collect();
+        let mut streamed = ColumnsThin::new(Some(x));
+        for (t, ys) in &rows {
+            streamed.push(*t, ys);
+        }
+        assert_eq!(streamed.rows(), 20_000);
+        let streamed = streamed.finish();
+        let at_once = thin_columns(rows.iter().copied(), &x);
+        let bits = |v: &[(f64, f64)]| -> Vec<(u64, u64)> {
+            v.iter().map(|p| (p.0.to_bits(), p.1.to_bits())).collect()
+        };
+        assert_eq!(streamed.len(), 2);
+        for (got, want) in streamed.iter().zip(&at_once) {
+            assert_eq!(bits(got), bits(want));
+            assert!(got.len() < 4 * 242 + 4, "{}", got.len());
+        }
+        // Without a scale every point is kept.
+        let mut all = ColumnsThin::new(None);
+        for (t, ys) in &rows[..10] {
+            all.push(*t, ys);
+        }
+        let all = all.finish();
+        assert_eq!(all[1].len(), 10);
+        assert_eq!(all[1][3], (rows[3].0, rows[3].1[1]));
+        assert!(ColumnsThin::new(Some(x)).finish().is_empty());
     }
 
     #[test]

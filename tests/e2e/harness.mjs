@@ -148,10 +148,11 @@ export async function closeBrowser() {
  * mounted (html[data-app-ready="1"]). `errors` collects console errors and page errors.
  * `serviceWorkers: 'allow'` lets the app install its offline service worker.
  */
-export async function openApp(url, hash = '#/', { viewport = { width: 1280, height: 800 }, locale = 'en-US', storage = {}, serviceWorkers = 'block' } = {}) {
+export async function openApp(url, hash = '#/', { viewport = { width: 1280, height: 800 }, locale = 'en-US', storage = {}, serviceWorkers = 'block', touch = false } = {}) {
   // The offline service worker is blocked unless a test asks for it (offline.test.mjs), so
-  // every other test sees the files of dist/ exactly as served.
-  const context = await (await browser()).newContext({ viewport, locale, acceptDownloads: true, deviceScaleFactor: 1, serviceWorkers });
+  // every other test sees the files of dist/ exactly as served. `touch`: a phone's touch
+  // screen (hasTouch, isMobile).
+  const context = await (await browser()).newContext({ viewport, locale, acceptDownloads: true, deviceScaleFactor: 1, serviceWorkers, hasTouch: touch, isMobile: touch });
   if (Object.keys(storage).length) {
     await context.addInitScript((entries) => {
       for (const [k, v] of Object.entries(entries)) localStorage.setItem(k, v);

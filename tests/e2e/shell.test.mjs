@@ -71,6 +71,10 @@ test('the shell renders in English with the home page, navigation and disclaimer
     // Twelve recipe cards, each with both command lines and a link to its drill; the IK ones
     // also link to the IK page.
     assert.equal(await page.locator('.recipe-card').count(), 12);
+    // Each card's inputs, files and command lines are behind one disclosure, closed at first.
+    const more = page.locator('.recipe-more');
+    assert.deepEqual(await more.evaluateAll((ds) => ds.map((d) => d.open)), Array(12).fill(false));
+    for (const summary of await page.locator('.recipe-more > summary').all()) await summary.click();
     const ik = page.locator('[data-testid="recipe-card-ik-workspace"]');
     assert.match(await ik.locator('[data-command="cli"] code').innerText(), /^bsv ik-workspace 0\.12 0\.10 200 10$/);
     assert.match(await ik.locator('[data-command="python"] code').innerText(), /^python planar_ik_workspace\.py 0\.12 0\.10 200 10$/);
@@ -722,6 +726,99 @@ test('page keys do nothing while a button has focus and act on the page body', a
     await page.keyboard.press('ArrowRight');
     await frames();
     assert.ok(Math.abs((await x()) - (x0 + 1)) < 1e-3, `x ${x0} -> ${await x()}`);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('home opens on a live arm and tiles that each say what their page shows; the page is short', async () => {
+  for (const lang of ['en', 'ja']) {
+    const { page, errors, close } = await openApp(server.url, `#/?lang=${lang}`, { viewport: { width: 1366, height: 768 } });
+    try {
+      await page.waitForSelector('[data-testid="home-arm-canvas"][data-tip-x]');
+      // The first screen: the arm, and the first row of tiles with their kernel-drawn pictures.
+      const arm = await page.locator('[data-testid="home-arm-canvas"]').boundingBox();
+      assert.ok(arm.y + arm.height <= 768 && arm.height > 200, `${lang}: the arm ${JSON.stringify(arm)}`);
+      await page.waitForFunction(() => document.querySelector('[data-testid="tile-picture-ik-2r"]')?.dataset.drawn === '1');
+      const picture = await page.locator('[data-testid="tile-picture-ik-2r"]').boundingBox();
+      assert.ok(picture.y + picture.height <= 768, `${lang}: the first tile picture ${JSON.stringify(picture)}`);
+      // Dragging the tip with a mouse turns the joints.
+      const q = () => page.locator('.home-arm-value').allTextContents();
+      const start = await q();
+      const tip = await page.locator('[data-testid="home-arm-canvas"]').evaluate((c) => {
+        const r = c.getBoundingClientRect();
+        return [r.left + Number(c.dataset.tipX), r.top + Number(c.dataset.tipY)];
+      });
+      await page.mouse.move(tip[0], tip[1]);
+      await page.mouse.down();
+      await page.mouse.move(tip[0] - 60, tip[1] + 50, { steps: 5 });
+      await page.mouse.up();
+      assert.notDeepEqual(await q(), start, `${lang}: the arm moved`);
+      // The drag focused the view: an arrow key moves the tip 5 mm.
+      const dragged = await q();
+      assert.equal(await page.evaluate(() => document.activeElement?.dataset.testid), 'home-arm-canvas');
+      await page.keyboard.press('ArrowUp');
+      assert.notDeepEqual(await q(), dragged, `${lang}: the key moved the arm`);
+      // One tile per page but home, each with its own label; the labels are all different.
+      const labels = await page.locator('.tile-grid .featured-label').allTextContents();
+      const tiles = await page.locator('.tile-grid .featured-card').count();
+      assert.equal(labels.length, tiles);
+      assert.equal(new Set(labels).size, labels.length, `${lang}: ${labels.join(' | ')}`);
+      assert.ok(labels.every((l) => l.length > 12), labels.join(' | '));
+      // The intro names both: this app's Robot Pilot and the Academy.
+      const intro = await page.locator('.hero .intro').textContent();
+      assert.match(intro, lang === 'en' ? /Robot Pilot page.*Robot Pilot Academy/ : /ロボットパイロット.*Robot Pilot Academy/);
+      const height = await page.evaluate(() => document.documentElement.scrollHeight);
+      assert.ok(height < 4500, `${lang}: the page is ${height} px tall at 1366×768`);
+      await page.screenshot({ path: join(OUT, `home-first-screen-1366-${lang}.png`) });
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+  const { page, close } = await openApp(server.url, '#/', { viewport: { width: 390, height: 844 } });
+  try {
+    const arm = await page.locator('[data-testid="home-arm-canvas"]').boundingBox();
+    assert.ok(arm.y < 844 - 150, `the arm starts on a phone's first screen: ${JSON.stringify(arm)}`);
+    const height = await page.evaluate(() => document.documentElement.scrollHeight);
+    assert.ok(height < 9000, `the page is ${height} px tall at 390×844`);
+  } finally {
+    await close();
+  }
+});
+
+test('at phone width the nav strip shows that it scrolls, and "+ Lesson" keeps its word', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/', { viewport: { width: 390, height: 844 } });
+  try {
+    for (const lang of ['en', 'ja']) {
+      const nav = page.locator('[data-testid="site-nav"]');
+      const list = page.locator('[data-testid="site-nav"] > ul');
+      await list.evaluate((ul) => { ul.scrollLeft = 0; });
+      await page.waitForFunction(() => document.querySelector('[data-testid="site-nav"]').hasAttribute('data-more-after'));
+      // The cue: the strip's right edge shows an arrow while links are hidden past it.
+      assert.equal(await nav.evaluate((n) => getComputedStyle(n, '::after').content), '"›"');
+      assert.equal(await nav.getAttribute('data-more-before'), null);
+      const strip = await list.boundingBox();
+      const lesson = await page.locator('[data-testid="nav-lesson"]').boundingBox();
+      assert.ok(lesson.x + lesson.width > strip.x + strip.width, `${lang}: "Lesson" is past the strip's edge`);
+      // Scrolled to the end: the cue moves to the start and "Lesson" is in view.
+      await list.evaluate((ul) => { ul.scrollLeft = ul.scrollWidth; });
+      await page.waitForFunction(() => {
+        const n = document.querySelector('[data-testid="site-nav"]');
+        return n.hasAttribute('data-more-before') && !n.hasAttribute('data-more-after');
+      });
+      const shown = await page.locator('[data-testid="nav-lesson"]').boundingBox();
+      assert.ok(shown.x + shown.width <= strip.x + strip.width + 1, `${lang}: "Lesson" scrolled into view`);
+      await page.screenshot({ path: join(OUT, `nav-cue-390-${lang}.png`), clip: { x: 0, y: 0, width: 390, height: 120 } });
+      await list.evaluate((ul) => { ul.scrollLeft = 0; });
+      // The lesson button shows its word, whole, on the first row.
+      const add = page.locator('[data-testid="lesson-add"]');
+      assert.equal((await add.innerText()).trim(), lang === 'en' ? '+ Lesson' : '+ レッスン');
+      const box = await add.boundingBox();
+      assert.ok(box.x + box.width <= 390 && box.width > 60, `${lang}: ${JSON.stringify(box)}`);
+      if (lang === 'en') await page.click('[data-testid="lang-switch"]');
+    }
     assert.deepEqual(errors, []);
   } finally {
     await close();

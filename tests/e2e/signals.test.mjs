@@ -7,7 +7,8 @@
 // tests/bench/signals.bench.mjs.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { openApp, readouts, query, screenshots } from './harness.mjs';
+import { join } from 'node:path';
+import { openApp, readouts, query, screenshots, OUT } from './harness.mjs';
 import { serveAppWithCli, cli, cliCsv, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
@@ -375,6 +376,35 @@ test('pid-step opens saying why it stops short; "Try tuned gains" reaches the se
       const r = await pageValues(page);
       assert.ok(Number.isFinite(r['rise-time']) && r['rise-time'] > 0, `${r['rise-time']}`);
       assert.ok(await short.isHidden());
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
+test('at 1366×768 the plot and the sliders share the first screen; the plot stays in view beside the side column', async () => {
+  for (const [hash, first] of [['#/pid-step', 'Kp'], ['#/pid-step?lang=ja', 'Kp'], ['#/cubic-path', 'q0'], ['#/trapezoid-profile', 'distance']]) {
+    const { page, errors, close } = await open(hash, { viewport: { width: 1366, height: 768 } });
+    try {
+      const box = (selector) => page.locator(selector).first().evaluate((e) => e.getBoundingClientRect().toJSON());
+      const stage = await box('.sig-stage');
+      const slider = await box(`[data-slider="${first}"]`);
+      assert.ok(stage.top >= 0 && stage.bottom <= 768, `${hash}: the plot ${JSON.stringify(stage)} in the first 768 px`);
+      assert.ok(slider.top >= 0 && slider.bottom <= 768, `${hash}: the ${first} slider ${JSON.stringify(slider)} in the first 768 px`);
+      assert.ok(slider.left > stage.right, `${hash}: the slider beside the plot`);
+      if (hash.startsWith('#/pid-step')) {
+        // Why the defaults stop short, and the tuned gains, are on the first screen too.
+        const short = await box('[data-testid="pid-step-short"] button');
+        assert.ok(short.bottom <= 768, `${hash}: "Try tuned gains" ${JSON.stringify(short)} in the first 768 px`);
+        // Scrolled down to the readouts, the curves are still on screen.
+        await page.locator('[data-readout="final-y"]').scrollIntoViewIfNeeded();
+        await page.waitForTimeout(100);
+        const stuck = await box('.sig-stage');
+        assert.ok(stuck.top >= 0 && stuck.bottom <= 768, `${hash}: the plot ${JSON.stringify(stuck)} still in view`);
+        await page.evaluate(() => window.scrollTo(0, 0));
+        await page.screenshot({ path: join(OUT, `pid-step-sliders-1366${hash.includes('ja') ? '-ja' : ''}.png`) });
+      }
       assert.deepEqual(errors, []);
     } finally {
       await close();

@@ -7,7 +7,8 @@
 // Screenshots (EN/JA 1920×1080, projector, phone 390 px) go to tests/e2e/out/.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { openApp, readouts, query, screenshots } from './harness.mjs';
+import { join } from 'node:path';
+import { openApp, readouts, query, screenshots, OUT } from './harness.mjs';
 import { serveAppWithCli, cliCsv, download, assertSameBytes } from './cli.mjs';
 import { englishStrings } from './locales.mjs';
 
@@ -497,5 +498,28 @@ test('the axes carry tick labels of round values, placed on the grid and inside 
     assert.deepEqual(errors, []);
   } finally {
     await close();
+  }
+});
+
+test('projector mode at 1280×800: the estimate table fits its card, the Truth column whole', async () => {
+  for (const lang of ['en', 'ja']) {
+    const { page, errors, close } = await open(`#/umeyama-2d?lang=${lang}`, { viewport: { width: 1280, height: 800 }, storage: { 'bsv.projector': '1' } });
+    try {
+      assert.equal(await page.evaluate(() => document.documentElement.classList.contains('projector')), true);
+      const fit = await page.locator('[data-testid="umeyama-2d-readouts"]').evaluate((table) => {
+        const card = table.closest('.sig-card').getBoundingClientRect();
+        const cells = [...table.querySelectorAll('th, td')].map((c) => c.getBoundingClientRect().right);
+        return { card: card.right, table: table.getBoundingClientRect().right, cells: Math.max(...cells), page: document.documentElement.scrollWidth };
+      });
+      assert.ok(fit.table <= fit.card && fit.cells <= fit.card, `${lang}: ${JSON.stringify(fit)}`);
+      assert.ok(fit.page <= 1280, `${lang}: the page is ${fit.page} px wide`);
+      // Every cell is at least the projector's 24 px type.
+      const smallest = await page.locator('[data-testid="umeyama-2d-readouts"] td').evaluateAll((tds) => Math.min(...tds.map((td) => parseFloat(getComputedStyle(td).fontSize))));
+      assert.ok(smallest >= 24, `${lang}: ${smallest} px`);
+      await page.screenshot({ path: join(OUT, `umeyama-projector-1280-${lang}.png`) });
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
   }
 });

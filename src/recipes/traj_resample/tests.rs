@@ -272,3 +272,119 @@ fn hand_built_trajectory_is_checked() {
         Err(RecipeError::WrongCount { .. })
     ));
 }
+
+/// The bytes of a file as the CLI and the pages read them: decoded, then parsed.
+fn read_file(bytes: &[u8]) -> Result<Trajectory, RecipeError> {
+    parse_trajectory(&crate::recipes::decode_input("f.csv", bytes)?)
+}
+
+#[test]
+fn hostile_files_are_named_with_their_place() {
+    // A binary file (a PNG's first bytes): its NUL byte, with line and byte.
+    let png = b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR";
+    assert_eq!(
+        read_file(png),
+        Err(RecipeError::InputBinary {
+            name: "f.csv".into(),
+            line: 3,
+            column: 1
+        })
+    );
+    // A NUL inside a cell of an otherwise good CSV.
+    assert_eq!(
+        read_file(b"t_s,q1\n0,1\n0.1,2\x00\n"),
+        Err(RecipeError::InputBinary {
+            name: "f.csv".into(),
+            line: 3,
+            column: 6
+        })
+    );
+    // UTF-16 with a byte-order mark, either order.
+    let utf16: Vec<u8> = [0xFF, 0xFE]
+        .into_iter()
+        .chain(
+            "t_s,q1\n0,1\n1,2\n"
+                .encode_utf16()
+                .flat_map(u16::to_le_bytes),
+        )
+        .collect();
+    assert_eq!(
+        read_file(&utf16),
+        Err(RecipeError::InputUtf16 {
+            name: "f.csv".into()
+        })
+    );
+    assert!(matches!(
+        read_file(&[0xFE, 0xFF, 0, b't']),
+        Err(RecipeError::InputUtf16 { .. })
+    ));
+    // A UTF-8 byte-order mark is fine.
+    assert_eq!(
+        read_file(b"\xef\xbb\xbft_s,q1\n0,1\n1,2\n").map(|t| t.len()),
+        Ok(2)
+    );
+    // A header only.
+    assert_eq!(
+        read_file(b"t_s,q1,q2\n"),
+        Err(RecipeError::CsvTooFewRows { rows: 0, min: 2 })
+    );
+}
+
+#[test]
+fn a_million_columns_are_refused_from_the_header() {
+    let header: Vec<String> = std::iter::once("t_s".to_string())
+        .chain((1..1_000_000).map(|j| format!("q{j}")))
+        .collect();
+    let text = header.join(",") + "\n";
+    assert_eq!(
+        parse_err(&text),
+        RecipeError::CsvTooManyColumns {
+            count: 1_000_000,
+            limit: MAX_COLUMNS as u64
+        }
+    );
+    assert!(matches!(
+        shape_of(&text),
+        Err(RecipeError::CsvTooManyColumns { .. })
+    ));
+    // At the limit, a file still reads.
+    let header: Vec<String> = std::iter::once("t_s".to_string())
+        .chain((1..MAX_COLUMNS).map(|j| format!("q{j}")))
+        .collect();
+    let row = |t: &str| {
+        std::iter::once(t)
+            .chain(std::iter::repeat_n("0", MAX_COLUMNS - 1))
+            .collect::<Vec<_>>()
+            .join(",")
+    };
+    let text = format!("{}\n{}\n{}\n", header.join(","), row("0"), row("1"));
+    assert_eq!(
+        parse_trajectory(&text).map(|t| t.columns.len()),
+        Ok(MAX_COLUMNS - 1)
+    );
+}
+
+#[test]
+fn cr_only_line_ends_read_as_line_ends_and_resample_the_same() {
+    let lf = "t_s,q1,q2\n0,0,0\n0.1,0.2,0.1\n0.25,0.5,0.4\n";
+    let cr = lf.replace('\n', "\r");
+    assert_eq!(parse_trajectory(&cr), parse_trajectory(lf));
+    let params = ResampleParams {
+        csv_path: "cr.csv".into(),
+        dt: 0.05,
+    };
+    assert_eq!(
+        run_text(&params, &cr).map(|o| o.files[0].text.clone()),
+        run_text(&params, lf).map(|o| o.files[0].text.clone())
+    );
+    // A bad cell in a CR-only file names its row.
+    assert_eq!(
+        parse_err("t_s,q1\r0,1\r0.1,x\r"),
+        RecipeError::CsvBadCell {
+            row: 3,
+            column: "q1".into(),
+            value: "x".into()
+        }
+    );
+    assert_eq!(shape_of(&cr).map(|s| s.rows), Ok(3));
+}

@@ -20,6 +20,8 @@
 //! - [`recipe_controls`]: form + sliders + URL + exports of a page that runs one recipe live;
 //!   [`signal_page`]: the shell of such a page that plots the recipe's table (markup, mount,
 //!   language/projector/resize, the plot with its drags, cursor and PNG).
+//! - [`store`]: a page's work in localStorage: unreadable text moved aside, refused saves
+//!   reported.
 //! - [`input_file`]: a file the user opens or drops, decoded as the CLI decodes it.
 //! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
 //! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
@@ -46,5 +48,6 @@ pub mod recipe_controls;
 pub mod scope;
 pub mod signal_page;
 pub mod stepper;
+pub mod store;
 pub mod url_state;
 pub mod worker;

@@ -1,8 +1,11 @@
 //! A 3D view: layered HiDPI canvases on a stage, looked at through the shared orbit camera
 //! ([`crate::view::camera3d::Camera`]). Dragging the background orbits (mouse, pen and touch
-//! through Pointer Events with pointer capture; on touch the view takes the drag, the stage
-//! has `touch-action: none`, the rest of the page still scrolls), the wheel and a two-finger
-//! pinch zoom, preset buttons turn to the iso, top, front and side views
+//! through Pointer Events with pointer capture), the wheel and a two-finger pinch zoom. On a
+//! touch screen the stage has `touch-action: pan-y`: a finger that first moves up or down
+//! scrolls the page (the browser cancels the pointer; the few pixels it orbited are undone),
+//! one that first moves sideways orbits, and one that lands on a claimed handle drags it (its
+//! `touchstart` is default-prevented, so the page does not scroll under it). The
+//! preset buttons turn to the iso, top, front and side views
 //! (`data-action="view-iso"` …, `aria-pressed` on the current one), and with the canvas
 //! focused the arrow keys orbit and `+` / `-` zoom ([`KEYS`], for the page's `?` list; the
 //! page forwards its keys to [`OrbitView::on_key`]).
@@ -138,6 +141,9 @@ struct Inner<H: Copy + PartialEq + 'static> {
     gesture: Cell<Gesture<H>>,
     /// The top canvas's client rect at the press (left, top), for positions during a drag.
     origin: Cell<DVec2>,
+    /// The camera and preset when a touch began to orbit: restored if the browser takes the
+    /// finger to scroll the page (`pointercancel`).
+    touch_orbit_from: Cell<Option<(Camera, Option<Preset>)>>,
     draw: RefCell<Option<Draw>>,
     claim: Option<Claim<H>>,
     on_handle: Option<Box<dyn Fn(DragEvent<H>)>>,
@@ -230,6 +236,7 @@ impl<H: Copy + PartialEq + 'static> OrbitView<H> {
             pointers: RefCell::new(Vec::new()),
             gesture: Cell::new(Gesture::Idle),
             origin: Cell::new(DVec2::ZERO),
+            touch_orbit_from: Cell::new(None),
             draw: RefCell::new(Some(Box::new(draw))),
             claim: options.claim,
             on_handle: options.on_handle,
@@ -383,6 +390,7 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
                 }
             }
         })?;
+        scope.listen_for(&stage, "touchstart", weak, |inner, e| inner.touch_start(e))?;
         scope.listen_for(&stage, "wheel", weak, |inner, e| inner.wheel(e))?;
         scope.listen_for(&stage, "contextmenu", weak, |_, e| e.prevent_default())?;
         scope.observe_resize(&[&stage], weak, |inner| inner.relayout())?;
@@ -514,12 +522,19 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
                             });
                         }
                     }
-                    None => self.gesture.set(Gesture::Orbit { id, last: at }),
+                    None => {
+                        self.touch_orbit_from.set(
+                            (kind == PointerKind::Touch)
+                                .then(|| (self.camera.get(), self.preset.get())),
+                        );
+                        self.gesture.set(Gesture::Orbit { id, last: at });
+                    }
                 }
             }
             Gesture::Orbit { .. } => {
                 let pointers = self.pointers.borrow();
                 if let [(_, a), (_, b)] = pointers.as_slice() {
+                    self.touch_orbit_from.set(None);
                     self.gesture.set(Gesture::Pinch {
                         start_px: a.distance(*b).max(1.0),
                         start_distance: self.camera.get().distance,
@@ -600,7 +615,16 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
             }
             Gesture::Orbit { id: held, .. } if held == id => {
                 self.gesture.set(Gesture::Idle);
-                self.view_changed();
+                match self.touch_orbit_from.take() {
+                    // The browser took the finger to scroll the page: no orbit happened.
+                    Some((camera, preset)) if cancelled => {
+                        self.camera.set(camera);
+                        self.preset.set(preset);
+                        self.show_preset();
+                        self.request();
+                    }
+                    _ => self.view_changed(),
+                }
             }
             Gesture::Pinch { .. } => {
                 // One finger left: it orbits from where it is.
@@ -614,6 +638,37 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
         }
         if remaining.is_empty() && !matches!(self.gesture.get(), Gesture::Handle { .. }) {
             self.gesture.set(Gesture::Idle);
+        }
+    }
+
+    /// A finger that lands on a claimed handle, or a second finger (a pinch), keeps the
+    /// gesture: the page must not scroll under it.
+    fn touch_start(&self, e: &Event) {
+        let touches = js_sys::Reflect::get(e, &JsValue::from_str("touches")).unwrap_or_default();
+        let count = js_sys::Reflect::get(&touches, &JsValue::from_str("length"))
+            .ok()
+            .and_then(|v| v.as_f64())
+            .unwrap_or(0.0);
+        if count >= 2.0 {
+            e.prevent_default();
+            return;
+        }
+        let Some(claim) = self.claim.as_ref() else {
+            return;
+        };
+        let first = js_sys::Reflect::get(&touches, &JsValue::from_f64(0.0)).unwrap_or_default();
+        let coord = |name: &str| {
+            js_sys::Reflect::get(&first, &JsValue::from_str(name))
+                .ok()
+                .and_then(|v| v.as_f64())
+        };
+        let (Some(x), Some(y)) = (coord("clientX"), coord("clientY")) else {
+            return;
+        };
+        self.measure_origin();
+        let local = self.local(DVec2::new(x, y));
+        if claim(local, PointerKind::Touch, &self.camera.get()).is_some() {
+            e.prevent_default();
         }
     }
 

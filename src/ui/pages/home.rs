@@ -1,45 +1,73 @@
-//! The home page: the BSV page's headline and introduction, a featured card for each
-//! in-browser tool, and one card per recipe (title, a small picture its kernel draws at the
-//! defaults (`home_picture`), description, inputs with their defaults,
-//! the files it writes, the `bsv` and `python` command lines, and links to run it in the
-//! browser: its drill on the drills page, and its own page when it has one), then the seed's
-//! "Compare the tools" table with the official links (outbound only). Every text is a
-//! `data-i18n` message, so a language switch needs nothing from the page itself. Everything
-//! about a recipe (labels, defaults, limits, the live page that pairs with it) comes from its
-//! facts (`RecipeInfo`, `ArgSpec`).
+//! The home page: the headline and introduction beside a live 2R arm a visitor drags
+//! (`home_arm`), a tile for each in-browser page (a picture its recipe's kernel draws at the
+//! defaults (`home_picture`), a label saying what it shows, its title), one card per
+//! recipe (title, picture, description; behind one disclosure the live page that pairs with
+//! it, its inputs with their defaults, the files it writes and the `bsv` and `python` command
+//! lines; links to run it in the browser: its drill on the drills page, and its own page when
+//! it has one), then the seed's "Compare the tools" table with the official links
+//! (outbound only). Every text is a `data-i18n` message, so a language switch needs nothing
+//! from the page itself. Everything about a recipe (labels, defaults, limits, the live page
+//! that pairs with it) comes from its facts (`RecipeInfo`, `ArgSpec`).
+
+use std::rc::Rc;
 
 use wasm_bindgen::prelude::*;
-use web_sys::Element;
+use web_sys::{Element, KeyboardEvent};
 
+use super::home_arm::{self, HomeArm};
 use super::home_picture;
 use crate::args::ArgSpec;
 use crate::recipes::{RecipeInfo, RECIPES};
 use crate::ui::command_line::shell_word;
+use crate::ui::ctx;
 use crate::ui::dom::{append, el, el_class, el_i18n, el_text};
-use crate::ui::page::{MountCtx, Page, PageDef, ShellLink};
+use crate::ui::page::{MountCtx, Page, PageDef, ShellLink, Shortcut};
 use crate::ui::router::{self, HOME_ID};
 
-/// The home page (`#/`): markup only, every text a `data-i18n` message.
-pub struct HomePage;
+/// The home page (`#/`): markup, every text a `data-i18n` message, and the live arm.
+pub struct HomePage {
+    arm: Rc<HomeArm>,
+}
 
 impl Page for HomePage {
     fn mount(ctx: MountCtx) -> Result<HomePage, JsValue> {
-        build(&ctx.root, ctx.shell)?;
-        Ok(HomePage)
+        let arm = build(&ctx.root, ctx.shell)?;
+        Ok(HomePage { arm })
+    }
+
+    fn set_projector(&self, _on: bool) {
+        self.arm.request();
+    }
+
+    fn shortcuts(&self) -> Vec<Shortcut> {
+        home_arm::KEYS.to_vec()
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        self.arm.on_key(event)
     }
 }
 
-fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
+fn build(root: &Element, shell: ShellLink) -> Result<Rc<HomeArm>, JsValue> {
     let hero = el_class("section", "hero")?;
+    let text = el_class("div", "hero-text")?;
     let headline = el_i18n("h1", "headline", "home-headline")?;
     headline.set_attribute("data-testid", "home-headline")?;
-    append(&hero, &headline)?;
-    append(&hero, &el_i18n("p", "intro", "home-intro")?)?;
+    append(&text, &headline)?;
+    append(&text, &el_i18n("p", "intro", "home-intro")?)?;
+    append(&hero, &text)?;
+    let arm = home_arm::mount(&hero)?;
     append(root, &hero)?;
 
+    let tiles = el_class("ul", "tile-grid")?;
+    tiles.set_attribute("data-testid", "home-tiles")?;
+    crate::ui::dom::set_i18n_attrs(&tiles, &[("aria-label", "home-tiles-label")])?;
     for def in shell.pages.iter().filter(|d| d.id != HOME_ID) {
-        append(root, &featured_card(def)?)?;
+        let item = el("li")?;
+        append(&item, &featured_card(def)?)?;
+        append(&tiles, &item)?;
     }
+    append(root, &tiles)?;
 
     let recipes = el_class("section", "recipes")?;
     recipes.set_attribute("aria-labelledby", "recipes-heading")?;
@@ -57,7 +85,8 @@ fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
     append(&recipes, &grid)?;
     append(root, &recipes)?;
     append(root, &tools_section()?)?;
-    home_picture::draw_all(root)
+    home_picture::draw_all(root)?;
+    Ok(arm)
 }
 
 /// The seed's "Compare the tools" table: each tool's key (its Fluent ids are
@@ -122,22 +151,26 @@ fn tools_section() -> Result<Element, JsValue> {
     Ok(section)
 }
 
-/// The big link to an in-browser tool: "Interactive tool…", its title with an arrow, its blurb.
+/// The tile of an in-browser page: the picture its (first) recipe draws, a label saying what
+/// the page shows (`home-featured-label-<page id>`, where the page has one), its title with an
+/// arrow.
 fn featured_card(def: &PageDef) -> Result<Element, JsValue> {
     let card = el_class("a", "featured-card")?;
     card.set_attribute("href", &router::build_hash(def.id, &[]))?;
     card.set_attribute("data-testid", &format!("featured-{}", def.id))?;
-    append(
-        &card,
-        &el_i18n("span", "featured-label", "home-featured-label")?,
-    )?;
+    if let Some(recipe) = RECIPES.iter().find(|r| r.info.page == Some(def.id)) {
+        append(&card, &home_picture::tile_canvas(recipe.info.id, def.id)?)?;
+    }
+    let label_id = format!("home-featured-label-{}", def.id);
+    if ctx::has_message(&label_id) {
+        append(&card, &el_i18n("span", "featured-label", &label_id)?)?;
+    }
     let title = el_class("span", "featured-title")?;
     append(&title, &el_i18n("span", "", def.title_id)?)?;
     let arrow = el_text("span", "arrow", "\u{a0}→")?;
     arrow.set_attribute("aria-hidden", "true")?;
     append(&title, &arrow)?;
     append(&card, &title)?;
-    append(&card, &el_i18n("span", "featured-blurb", def.blurb_id)?)?;
     Ok(card)
 }
 
@@ -152,6 +185,11 @@ fn recipe_card(info: &RecipeInfo, shell: ShellLink) -> Result<Element, JsValue> 
     // The picture's text alternative (`aria-describedby` of its canvas).
     blurb.set_id(&home_picture::blurb_id(id));
     append(&item, &blurb)?;
+    // The rest (the live page it pairs with, inputs, options, files, command lines) behind
+    // one disclosure.
+    let more = el_class("details", "recipe-more")?;
+    more.set_attribute("data-testid", &format!("recipe-more-{id}"))?;
+    append(&more, &el_i18n("summary", "", "home-card-more")?)?;
     // The live page that runs it (from the recipe's facts): "Pairs with … →", linked.
     let live_page = info.page.and_then(|id| shell.find(id));
     if let Some(def) = live_page {
@@ -169,18 +207,18 @@ fn recipe_card(info: &RecipeInfo, shell: ShellLink) -> Result<Element, JsValue> 
                 &format!("recipe-pairs-{id}"),
             )?,
         )?;
-        append(&item, &pairs)?;
+        append(&more, &pairs)?;
     }
 
     if !info.args.is_empty() {
-        append(&item, &el_i18n("h4", "", "home-card-inputs")?)?;
-        append(&item, &arg_list(id, info.args, false)?)?;
+        append(&more, &el_i18n("h4", "", "home-card-inputs")?)?;
+        append(&more, &arg_list(id, info.args, false)?)?;
     }
     if !info.flags.is_empty() {
         let details = el_class("details", "recipe-options")?;
         append(&details, &el_i18n("summary", "", "home-card-options")?)?;
         append(&details, &arg_list(id, info.flags, true)?)?;
-        append(&item, &details)?;
+        append(&more, &details)?;
     }
     if !info.writes.is_empty() {
         let writes = el_class("p", "recipe-writes")?;
@@ -188,7 +226,7 @@ fn recipe_card(info: &RecipeInfo, shell: ShellLink) -> Result<Element, JsValue> 
         for file in info.writes {
             append(&writes, &el_text("code", "", file)?)?;
         }
-        append(&item, &writes)?;
+        append(&more, &writes)?;
     }
 
     let commands = el_class("div", "commands")?;
@@ -206,7 +244,8 @@ fn recipe_card(info: &RecipeInfo, shell: ShellLink) -> Result<Element, JsValue> 
             "python",
         )?,
     )?;
-    append(&item, &commands)?;
+    append(&more, &commands)?;
+    append(&item, &more)?;
 
     let links = el_class("p", "card-link")?;
     append(&links, &el_i18n("span", "label", "home-card-in-browser")?)?;

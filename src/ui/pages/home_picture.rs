@@ -1,4 +1,4 @@
-//! The small picture on each recipe card of the home page ([`crate::view::card_picture`]):
+//! The small picture on each recipe card and page tile of the home page ([`crate::view::card_picture`]):
 //! the kernels run at their defaults after the first paint, one card per task, so the page
 //! shows at once and no task is long.
 
@@ -39,10 +39,21 @@ pub(crate) fn canvas(id: &str) -> Result<Element, JsValue> {
     Ok(canvas)
 }
 
-/// Draws every card picture under `root`, one per task after the first paint.
+/// The picture of recipe `id` on the tile of page `page_id` (the tile's text names it: the
+/// canvas is hidden from screen readers).
+pub(crate) fn tile_canvas(id: &str, page_id: &str) -> Result<Element, JsValue> {
+    let canvas = dom::el_class("canvas", "tile-picture")?;
+    canvas.set_attribute("data-testid", &format!("tile-picture-{page_id}"))?;
+    canvas.set_attribute("data-recipe", id)?;
+    canvas.set_attribute("aria-hidden", "true")?;
+    Ok(canvas)
+}
+
+/// Draws every tile and card picture under `root` (in document order: the tiles of the first
+/// screen first), one per task after the first paint.
 pub(crate) fn draw_all(root: &Element) -> Result<(), JsValue> {
     let queue: Rc<Vec<HtmlCanvasElement>> = Rc::new(
-        dom::matching(root, "canvas.card-picture")?
+        dom::matching(root, "canvas.tile-picture, canvas.card-picture")?
             .into_iter()
             .filter_map(|e| e.dyn_into::<HtmlCanvasElement>().ok())
             .collect(),

@@ -12,6 +12,7 @@ mod cubic_path;
 mod dh_fk;
 mod drills;
 mod home;
+mod home_arm;
 mod home_picture;
 mod ik2r;
 mod lesson;

@@ -5,13 +5,15 @@
 //!
 //! The kit does the rest: the markup, the controls ([`RecipeControls`]: form, sliders, URL,
 //! exports), the plot ([`SignalPlot`]: drags, hover cursor, PNG), the first run, every change
-//! (a run over [`LIVE_ROWS`] rows computed a slice per frame), the URL, the arrow keys and `r`,
+//! (a run over [`LIVE_ROWS`] rows computed a slice per frame, thinned to the plot as its rows
+//! come, summarized and shown each in a frame of its own), the URL, the arrow keys and `r`,
 //! a slider let go, a drag ended, an overlay toggled, and a language, projector or size change
 //! (everything shown again).
 
 mod plot;
 mod sliced;
 mod spec;
+mod thinned;
 
 use std::cell::{Ref, RefCell};
 use std::rc::{Rc, Weak};
@@ -24,11 +26,14 @@ pub use self::plot::{axis, draw_handle, series, time_axis, Fit, SignalPlot};
 use self::sliced::Sliced;
 pub use self::sliced::{boxed, Rows, RunFrom, LIVE_ROWS};
 pub use self::spec::{Arrows, Nudge, SignalSpec};
+pub use self::thinned::ThinRow;
+use self::thinned::{Kept, ThinCache, ThinKey};
 use crate::pyfmt::py_float;
 use crate::ui::dom;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::frame::FrameLoop;
+use crate::ui::kit::plot::Plot;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::recipe_controls::{record_frame_ms, RecipeControls};
 use crate::ui::kit::scope::Scope;
@@ -36,7 +41,12 @@ use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::view::signal::sig;
+pub use crate::view::signal::ColumnsThin;
 pub use crate::view::signal::SignalRow;
+
+/// A run computed in slices is shown in the slice that finds it complete if that slice has
+/// worked less than this, ms; else in the next frame's.
+const SHOW_AFTER_MS: f64 = 1.0;
 
 /// Why a page shows its run again.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -63,15 +73,27 @@ pub trait SignalPage: Sized + 'static {
     type Params: Clone + 'static;
     /// One row of the kernel's table.
     type Row: SignalRow;
+    /// What the page reads off every row of a run (its readouts).
+    type Summary: 'static;
     /// What a press on the plot can grab (`()`: nothing).
     type Handle: Copy + PartialEq + 'static;
     const SPEC: SignalSpec<Self::Params, Self::Row>;
 
+    /// The summary of the run of `params`, once a run: for a run computed in slices in a frame
+    /// of its own before the one that shows it (showing a run then passes over none of its
+    /// rows).
+    fn summarize(params: &Self::Params, rows: &[Self::Row]) -> Self::Summary;
+
     /// The page's own parts, once the kit is mounted (markup, controls, plot, first run).
     fn build(kit: &Kit<Self>) -> Result<Self, JsValue>;
     /// Shows the kit's run ([`Kit::run`]): readouts, notes and plot (with
-    /// [`Kit::draw_plot`]); a change's run is also announced.
+    /// [`Kit::draw_plot`]; the rows plotted thinned with [`Run::thinned`]); a change's run is
+    /// also announced.
     fn show(&self, kit: &Kit<Self>, draw: Draw);
+    /// The time axis the run of `params` is plotted over when `draw` shows it: a run computed
+    /// in slices is thinned to it (and to the refitted one) as its rows come, so that showing
+    /// it thins nothing.
+    fn time_axis(&self, kit: &Kit<Self>, params: &Self::Params, draw: Draw) -> (f64, f64);
 
     /// Handle `handle` dragged to CSS px `at`: the new arguments, if any.
     fn drag(&self, _kit: &Kit<Self>, _handle: Self::Handle, _at: DVec2) -> Option<Self::Params> {
@@ -91,10 +113,43 @@ pub trait SignalPage: Sized + 'static {
     }
 }
 
-/// A run shown: its arguments and rows (shared, never copied: a million rows are 40 MB).
-pub struct Run<P, R> {
+/// A run shown: its arguments, rows, summary ([`SignalPage::summarize`]) and the rows'
+/// thinnings (shared, never copied: a million rows are 40 MB).
+pub struct Run<P, R, M> {
     pub params: P,
     pub rows: Rc<Vec<R>>,
+    pub summary: Rc<M>,
+    thinned: Rc<ThinCache<R>>,
+}
+
+impl<P: Clone, R, M> Clone for Run<P, R, M> {
+    fn clone(&self) -> Run<P, R, M> {
+        Run {
+            params: self.params.clone(),
+            rows: self.rows.clone(),
+            summary: self.summary.clone(),
+            thinned: self.thinned.clone(),
+        }
+    }
+}
+
+impl<P, R, M> Run<P, R, M> {
+    fn new((params, rows, summary): (P, Vec<R>, M), thin: ThinRow<R>, kept: Kept) -> Run<P, R, M> {
+        Run {
+            params,
+            rows: Rc::new(rows),
+            summary: Rc::new(summary),
+            thinned: Rc::new(ThinCache::new(thin, kept)),
+        }
+    }
+
+    /// The plotted columns of the rows ([`SignalSpec::thin`]) thinned to time axis `x` on
+    /// `plot` (each pixel column keeps its first, lowest, highest and last point; every point
+    /// before the plot has a plotting area); a column the rows lack is empty.
+    pub fn thinned<const N: usize>(&self, plot: &Plot, x: (f64, f64)) -> [Vec<(f64, f64)>; N] {
+        let columns = self.thinned.columns(plot, x, &self.rows);
+        std::array::from_fn(|k| columns.get(k).cloned().unwrap_or_default())
+    }
 }
 
 /// What the kit gives a page: its elements, controls, plot and run.
@@ -105,14 +160,14 @@ pub struct Kit<S: SignalPage> {
     pub stage: Element,
     pub readouts: Readouts,
     pub plot: RefCell<SignalPlot<S::Handle>>,
-    run: RefCell<Run<S::Params, S::Row>>,
+    run: RefCell<Run<S::Params, S::Row, S::Summary>>,
     /// Which [`SignalSpec::overlays`] are on.
     overlays: RefCell<Vec<bool>>,
 }
 
 impl<S: SignalPage> Kit<S> {
     /// The run shown.
-    pub fn run(&self) -> Ref<'_, Run<S::Params, S::Row>> {
+    pub fn run(&self) -> Ref<'_, Run<S::Params, S::Row, S::Summary>> {
         self.run.borrow()
     }
 
@@ -160,6 +215,9 @@ impl<S: SignalPage> Kit<S> {
     }
 }
 
+/// A run of page `S` being computed in slices.
+type Job<S> = Sliced<<S as SignalPage>::Params, <S as SignalPage>::Row, <S as SignalPage>::Summary>;
+
 /// A mounted signal page: the page, its kit, and what computes and writes its runs.
 struct Live<S: SignalPage> {
     kit: Kit<S>,
@@ -168,7 +226,7 @@ struct Live<S: SignalPage> {
     scope: RefCell<Scope>,
     /// A run over [`LIVE_ROWS`] being computed a slice per frame, the loop that computes it,
     /// and the line that says so.
-    pending: RefCell<Option<Sliced<S::Params, S::Row>>>,
+    pending: RefCell<Option<Job<S>>>,
     slices: FrameLoop,
     computing: Element,
 }
@@ -218,7 +276,9 @@ impl<S: SignalPage> Live<S> {
     fn run(&self, params: S::Params, rows: Rows<S::Row>, from: RunFrom) {
         if rows.1 <= LIVE_ROWS {
             self.stop_slices();
-            self.show_run(params, rows.0.collect(), from);
+            let rows: Vec<S::Row> = rows.0.collect();
+            let summary = S::summarize(&params, &rows);
+            self.show_run((params, rows, summary), Vec::new(), from);
             return;
         }
         // A big run under way: it goes on and is shown, then the latest change is computed (a
@@ -227,7 +287,14 @@ impl<S: SignalPage> Live<S> {
             job.next = Some(params);
             return;
         }
-        let job = Sliced::new(params, rows, from);
+        let mut job = Sliced::new(params, rows, from, S::SPEC.thin);
+        // Thinned to the axes it is shown on and to those it is refitted to when the slider or
+        // the handle is let go.
+        for fit in [self.fit_now(), Fit::Refit] {
+            if let Some(key) = self.thin_key(&job.params, job.from, fit) {
+                job.thin_to(key);
+            }
+        }
         self.show_progress(&job);
         self.pending.replace(Some(job));
         self.slices.request();
@@ -242,7 +309,18 @@ impl<S: SignalPage> Live<S> {
             let Some(job) = pending.as_mut() else {
                 return;
             };
-            if job.pull(t0) {
+            // Complete and thinned to the axes of this moment (else thinned to them over the
+            // next slices: the plot was sized or refitted meanwhile): summarized, then shown,
+            // each in a task of its own, not after a slice's work.
+            let complete = job.pull(t0) && {
+                let key = self.thin_key(&job.params, job.from, self.fit_now());
+                !key.is_some_and(|key| job.thin_to(key))
+            };
+            let idle = now_ms() - t0 < SHOW_AFTER_MS;
+            if complete && idle && job.summary.is_none() {
+                job.summary = Some(S::summarize(&job.params, &job.rows));
+                None
+            } else if complete && idle {
                 pending.take()
             } else {
                 self.show_progress(job);
@@ -250,10 +328,13 @@ impl<S: SignalPage> Live<S> {
             }
         };
         match finished {
-            Some(job) => {
+            Some(mut job) => {
                 dom::show(&self.computing, false);
-                self.show_run(job.params, job.rows, job.from);
-                if let Some(next) = job.next {
+                let (next, from) = (job.next.take(), job.from);
+                let (params, rows, summary, kept) = job.finish();
+                let summary = summary.unwrap_or_else(|| S::summarize(&params, &rows));
+                self.show_run((params, rows, summary), kept, from);
+                if let Some(next) = next {
                     self.start(next, RunFrom::Input);
                 }
             }
@@ -262,20 +343,33 @@ impl<S: SignalPage> Live<S> {
         record_frame_ms(now_ms() - t0);
     }
 
-    fn show_progress(&self, job: &Sliced<S::Params, S::Row>) {
+    /// How the axes fit a new run at this moment ([`Fit::for_change`]).
+    fn fit_now(&self) -> Fit {
+        let dragging = self.kit.plot.borrow().dragging;
+        Fit::for_change(dragging, self.kit.controls.sliding())
+    }
+
+    /// What the run of `params` from `from` is thinned to when shown with `fit` now.
+    fn thin_key(&self, params: &S::Params, from: RunFrom, fit: Fit) -> Option<ThinKey> {
+        let draw = Draw {
+            fit,
+            resized: false,
+            run: Some(from),
+        };
+        let x = self.page.time_axis(&self.kit, params, draw);
+        ThinKey::of(&self.kit.plot.borrow().plot, x)
+    }
+
+    fn show_progress(&self, job: &Job<S>) {
         self.computing.set_text_content(Some(&job.progress()));
         dom::show(&self.computing, true);
     }
 
-    /// Shows a finished run; one computed in slices after its input ended ends the change.
-    fn show_run(&self, params: S::Params, rows: Vec<S::Row>, from: RunFrom) {
-        *self.kit.run.borrow_mut() = Run {
-            params,
-            rows: Rc::new(rows),
-        };
-        let dragging = self.kit.plot.borrow().dragging;
-        let fit = Fit::for_change(dragging, self.kit.controls.sliding());
-        self.show(fit, false, Some(from));
+    /// Shows a finished run (`kept`: its rows already thinned); one computed in slices after
+    /// its input ended ends the change.
+    fn show_run(&self, run: (S::Params, Vec<S::Row>, S::Summary), kept: Kept, from: RunFrom) {
+        *self.kit.run.borrow_mut() = Run::new(run, S::SPEC.thin, kept);
+        self.show(self.fit_now(), false, Some(from));
         if from == RunFrom::Slices && !self.kit.controls.sliding() {
             self.page.change_ended(&self.kit);
         }
@@ -450,13 +544,15 @@ impl<S: SignalPage> Page for Signal<S> {
             Some((source, total)) if total <= LIVE_ROWS => (source.collect(), None),
             big => (Vec::new(), big),
         };
+        let summary = S::summarize(&params, &first);
         let kit = Kit {
             readouts: Readouts::find(&root)?,
             plot: RefCell::new(SignalPlot::new(&stage)?),
-            run: RefCell::new(Run {
-                params: params.clone(),
-                rows: Rc::new(first),
-            }),
+            run: RefCell::new(Run::new(
+                (params.clone(), first, summary),
+                spec.thin,
+                Vec::new(),
+            )),
             overlays: RefCell::new(overlays),
             root,
             controls,

@@ -1,10 +1,12 @@
 //! A run too big for one frame: the kernel's rows pulled a slice per animation frame (at most
-//! [`SLICE_MS`] each), the last run staying on the plot and in the readouts meanwhile, and the
-//! line under the plot that says how far it is.
+//! [`SLICE_MS`] each) and thinned to the plot as they come, the last run staying on the plot
+//! and in the readouts meanwhile, and the line under the plot that says how far it is.
 
+use super::thinned::{Kept, ThinKey, ThinRow};
 use crate::ui::ctx;
 use crate::ui::schedule::now_ms;
 use crate::view::progress::group_digits;
+use crate::view::signal::ColumnsThin;
 
 /// Runs of more rows than this are computed a slice per animation frame, a newer big change
 /// computed after the one under way (only the latest kept), a newer small one replacing it.
@@ -36,24 +38,40 @@ pub enum RunFrom {
     Slices,
 }
 
-/// A run being computed in slices.
-pub struct Sliced<P, R> {
+/// Thinnings a run being computed makes at most (a key asked for at its end is added).
+const MOST_THINNINGS: usize = 4;
+
+/// A run being computed in slices, and its summary `M` once computed.
+pub struct Sliced<P, R, M> {
     pub params: P,
     source: Box<dyn Iterator<Item = R>>,
+    /// Whether `source` has yielded its last row.
+    exhausted: bool,
     pub rows: Vec<R>,
     pub total: u64,
     pub from: RunFrom,
     /// The latest big change that came meanwhile: computed once this run is shown.
     pub next: Option<P>,
+    /// The page's thinning hook, and the rows thinned to each key the run may be shown on.
+    thin: ThinRow<R>,
+    thinning: Vec<(ThinKey, ColumnsThin)>,
+    /// The run's summary, computed once it is complete.
+    pub summary: Option<M>,
 }
 
-impl<P, R> Sliced<P, R> {
-    /// The run of `params` whose rows `source` yields (`total` of them); a change's run is
-    /// [`RunFrom::Slices`].
-    pub fn new(params: P, (source, total): Rows<R>, from: RunFrom) -> Sliced<P, R> {
+impl<P, R, M> Sliced<P, R, M> {
+    /// The run of `params` whose rows `source` yields (`total` of them), thinned by `thin` to
+    /// the keys [`Sliced::thin_to`] adds; a change's run is [`RunFrom::Slices`].
+    pub fn new(
+        params: P,
+        (source, total): Rows<R>,
+        from: RunFrom,
+        thin: ThinRow<R>,
+    ) -> Sliced<P, R, M> {
         Sliced {
             params,
             source,
+            exhausted: false,
             rows: Vec::with_capacity(total as usize),
             total,
             from: if from == RunFrom::Mount {
@@ -62,20 +80,63 @@ impl<P, R> Sliced<P, R> {
                 RunFrom::Slices
             },
             next: None,
+            thin,
+            thinning: Vec::new(),
+            summary: None,
         }
     }
 
-    /// Pulls rows until the slice begun at `t0` (ms) is spent; whether the run is complete.
+    /// Thins the run to `key` too (the rows already computed over the next slices); whether
+    /// it does (`false` when it already does or makes too many).
+    pub fn thin_to(&mut self, key: ThinKey) -> bool {
+        if self.thins_to(key) || self.thinning.len() >= MOST_THINNINGS {
+            return false;
+        }
+        self.thinning.push((key, key.thinner()));
+        true
+    }
+
+    /// Whether the run is thinned to `key`.
+    pub fn thins_to(&self, key: ThinKey) -> bool {
+        self.thinning.iter().any(|(k, _)| *k == key)
+    }
+
+    /// Pulls rows, each thinned as it comes, and brings a thinning added late up to them,
+    /// until the slice begun at `t0` (ms) is spent; whether the run is complete and thinned.
     pub fn pull(&mut self, t0: f64) -> bool {
+        let thin = self.thin;
         while now_ms() - t0 < SLICE_MS {
-            for _ in 0..CLOCK_EVERY {
-                match self.source.next() {
-                    Some(row) => self.rows.push(row),
-                    None => return true,
+            let done = self.rows.len();
+            if let Some((_, to)) = self.thinning.iter_mut().find(|(_, to)| to.rows() < done) {
+                let from = to.rows();
+                for row in &self.rows[from..done.min(from + CLOCK_EVERY)] {
+                    thin(to, row);
                 }
+                continue;
+            }
+            if self.exhausted {
+                return true;
+            }
+            for _ in 0..CLOCK_EVERY {
+                let Some(row) = self.source.next() else {
+                    self.exhausted = true;
+                    break;
+                };
+                for (_, to) in &mut self.thinning {
+                    thin(to, &row);
+                }
+                self.rows.push(row);
             }
         }
         false
+    }
+
+    /// The arguments, the rows, the summary if computed, and the rows' thinnings.
+    pub fn finish(self) -> (P, Vec<R>, Option<M>, Kept) {
+        let kept = (self.thinning.into_iter())
+            .map(|(key, to)| (key, to.finish().into()))
+            .collect();
+        (self.params, self.rows, self.summary, kept)
     }
 
     /// The line under the plot: how many rows, how far.

@@ -10,6 +10,7 @@
 use web_sys::KeyboardEvent;
 
 use super::sliced::Rows;
+use super::thinned::ThinRow;
 use crate::recipes::RecipeInfo;
 use crate::ui::kit::readouts;
 use crate::ui::kit::recipe_controls::{self, Parse};
@@ -25,6 +26,9 @@ pub struct SignalSpec<P: 'static, R: 'static> {
     pub info: &'static RecipeInfo,
     pub parse: Parse<P>,
     pub kernel: fn(&P) -> Option<Rows<R>>,
+    /// The page's thinning hook: a row's time and plotted values pushed into the thinner
+    /// (one column a value, [`crate::ui::kit::signal_page::Run::thinned`] gives them back).
+    pub thin: ThinRow<R>,
     /// The file the PNG button saves.
     pub png: &'static str,
     /// Canvases in the stage: 3 (axes, data, cursor) or 4 (axes, data, marks, cursor).
@@ -121,8 +125,8 @@ pub fn shortcuts<P, R>(spec: &SignalSpec<P, R>) -> Vec<Shortcut> {
 }
 
 /// The page's markup: head (title, blurb, URL notice), the plot card (stage, progress line,
-/// overlays, notes), readouts (the page's, then the `cursor` keys), parameters, exports and
-/// explanation.
+/// overlays, notes), beside it the parameters (their sliders next to the curves they change)
+/// and the readouts (the page's, then the `cursor` keys), then exports and explanation.
 pub fn markup<P, R>(spec: &SignalSpec<P, R>, cursor: [&str; 4]) -> String {
     let (p, id) = (spec.prefix, spec.info.id);
     let (form, notice, exports) = recipe_controls::markup(p, spec.info, spec.png, "signals-png");
@@ -158,14 +162,14 @@ pub fn markup<P, R>(spec: &SignalSpec<P, R>, cursor: [&str; 4]) -> String {
     format!(
         "<div class=\"sig\"><header class=\"sig-head\"><h1 data-i18n=\"{p}-title\"></h1>\
          <p class=\"sig-lede\" data-i18n=\"recipe-{id}-blurb\"></p>{notice}</header>\
-         <div class=\"sig-top\"><section class=\"sig-card\"><h2 data-i18n=\"{p}-plots-title\"></h2>\
+         <div class=\"sig-top\"><section class=\"sig-card sig-plot-card\"><h2 data-i18n=\"{p}-plots-title\"></h2>\
          <div class=\"sig-stage\" data-{p}=\"stage\">{under}<canvas class=\"sig-layer\" \
          data-testid=\"{id}-canvas\" role=\"img\" tabindex=\"0\" data-i18n-attr=\"aria-label={p}-canvas-label\" \
          aria-describedby=\"{p}-readouts\"></canvas></div>\
          <p class=\"sig-computing\" data-{p}=\"computing\" data-testid=\"{id}-computing\" hidden></p>\
          {overlays}{under_plot}</section>\
-         <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}{under_readouts}</section>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\
+         <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section>\
+         <section class=\"sig-card\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}{under_readouts}</section></div></div>\
          <section class=\"sig-card\"><h2 data-i18n=\"signals-exports-title\"></h2>{exports}</section>\
          <section class=\"sig-card sig-explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
          <h3 data-i18n=\"signals-quirks-title\"></h3><p data-i18n=\"{quirks}\"></p></section></div>",

@@ -9,7 +9,7 @@ use crate::pyfmt::py_float;
 use crate::recipes::cubic_path::{params_from_args, CubicParams, CubicSample, INFO};
 use crate::ui::ctx;
 use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, SignalPage, SignalSpec};
-use crate::view::cubic_path::{readouts as numbers, rows};
+use crate::view::cubic_path::{readouts as numbers, rows, Readouts};
 use crate::view::signal::{sig, Slider};
 
 /// The page: its state is the kit's (the run, the overlays, the plot).
@@ -18,12 +18,14 @@ pub struct CubicPage;
 impl SignalPage for CubicPage {
     type Params = CubicParams;
     type Row = CubicSample;
+    type Summary = Readouts;
     type Handle = ();
     const SPEC: SignalSpec<CubicParams, CubicSample> = SignalSpec {
         prefix: "cubic",
         info: &INFO,
         parse: params_from_args,
         kernel: |p| rows(p).map(boxed),
+        thin: |to, s| to.push(s.t, &[s.q, s.qd, s.qdd]),
         png: "cubic_path_plots.png",
         layers: 4,
         sliders: &[
@@ -53,6 +55,11 @@ impl SignalPage for CubicPage {
         under_readouts: "",
     };
 
+    /// The peaks, coefficients and row count.
+    fn summarize(params: &CubicParams, rows: &[CubicSample]) -> Readouts {
+        numbers(params, rows)
+    }
+
     fn build(_kit: &Kit<CubicPage>) -> Result<CubicPage, JsValue> {
         Ok(CubicPage)
     }
@@ -61,7 +68,7 @@ impl SignalPage for CubicPage {
     fn show(&self, kit: &Kit<CubicPage>, draw: Draw) {
         let run = kit.run();
         let params = run.params;
-        let r = numbers(&params, &run.rows);
+        let r = *run.summary;
         if let Some(v) = r.peak_velocity {
             kit.show_numbers(&[("peak-velocity", v.value), ("peak-velocity-t", v.t)]);
         }
@@ -88,6 +95,10 @@ impl SignalPage for CubicPage {
                 ],
             ));
         }
+    }
+
+    fn time_axis(&self, kit: &Kit<CubicPage>, params: &CubicParams, draw: Draw) -> (f64, f64) {
+        plots::time_axis(&kit.plot.borrow(), params, draw.fit)
     }
 
     /// The end point dragged: q1 and T.

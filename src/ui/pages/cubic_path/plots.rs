@@ -10,8 +10,8 @@ use glam::DVec2;
 use crate::recipes::cubic_path::{CubicParams, CubicSample};
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::plot::{Mark, SeriesSpec};
-use crate::ui::kit::signal_page::{draw_handle, series, Draw, Run, SignalPlot};
-use crate::view::cubic_path::{panel_range, quintic, time_range, trapezoid};
+use crate::ui::kit::signal_page::{draw_handle, series, Draw, Fit, Run, SignalPlot};
+use crate::view::cubic_path::{panel_range, quintic, time_range, trapezoid, Readouts};
 use crate::view::palette;
 use crate::view::signal::{nice_range, snap};
 
@@ -26,7 +26,7 @@ const C_OVERLAY: [(u8, u8, u8); 2] = [palette::REDDISH_PURPLE.rgb, palette::BLUI
 const C_CURSOR: (u8, u8, u8) = (194, 65, 12);
 
 /// A run of the recipe: its arguments and samples.
-type Path = Run<CubicParams, CubicSample>;
+type Path = Run<CubicParams, CubicSample, Readouts>;
 
 /// The end point's place, CSS px.
 fn end_px(sp: &SignalPlot<()>, p: &CubicParams) -> Option<DVec2> {
@@ -53,6 +53,11 @@ pub fn draw_end(sp: &mut SignalPlot<()>, p: &CubicParams) {
     draw_handle(&marks.ctx, end, Ink::current());
 }
 
+/// The time axis of the path of `p` with `fit`.
+pub fn time_axis(sp: &SignalPlot<()>, p: &CubicParams, fit: Fit) -> (f64, f64) {
+    sp.x_for(fit, time_range(p))
+}
+
 /// Sets the axes and the thinned samples of `run` (and of the overlays that are on).
 pub fn set_data(sp: &mut SignalPlot<()>, run: &Path, overlays: [bool; 2], draw: Draw) {
     let p = &run.params;
@@ -60,14 +65,14 @@ pub fn set_data(sp: &mut SignalPlot<()>, run: &Path, overlays: [bool; 2], draw: 
     let trap = overlays[1].then(|| trapezoid(p, 300)).flatten();
     let on = [quint.is_some(), trap.is_some()];
     let extra: Vec<Vec<CubicSample>> = [quint, trap].into_iter().flatten().collect();
-    // The time axis first, then every series thinned to it, then the value axes from the
-    // thinned points (no other pass over a million samples).
-    let x = sp.x_for(draw.fit, time_range(p));
+    // The time axis first, then every series thinned to it (the run's samples as they were
+    // computed), then the value axes from the thinned points (no other pass over a million
+    // samples).
+    let x = time_axis(sp, p, draw.fit);
     let thinned: Vec<[Vec<(f64, f64)>; 3]> = extra
         .iter()
-        .map(Vec::as_slice)
-        .chain([run.rows.as_slice()])
         .map(|v| sp.thin(x, v.iter().map(|s| (s.t, [s.q, s.qd, s.qdd]))))
+        .chain([run.thinned(&sp.plot, x)])
         .collect();
     let fitted: [(f64, f64); 3] = std::array::from_fn(|k| {
         nice_range(panel_range(

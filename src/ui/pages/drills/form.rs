@@ -90,6 +90,11 @@ impl Page {
             let named = |name: &str| args.positional.iter().any(|p| p == name);
             if let Some(file) = input.filter(|f| named(&f.name)) {
                 if file.bytes > PRECHECK_MAX_BYTES {
+                    // What its shape showed on opening (the header, the first and last
+                    // lines) is an error of the run already: said at once.
+                    if let Err(error) = &file.shape {
+                        return Err(error.clone());
+                    }
                     return match (info.plan)(&parsed) {
                         Err(RecipeError::InputMissing { name }) if name == file.name => {
                             Ok(Plan { rows: None })

@@ -11,23 +11,7 @@ pub fn group(n: u64) -> String {
     crate::pyfmt::group_u64(n)
 }
 
-/// A size in bytes for reading: `512 bytes`-style counts stay exact below 1 KiB, then one
-/// decimal in KiB / MiB / GiB (`1.5 KiB`, `128 MiB`).
-pub fn size_text(bytes: u64) -> String {
-    const UNITS: [&str; 3] = ["KiB", "MiB", "GiB"];
-    if bytes < 1024 {
-        return format!("{bytes} B");
-    }
-    let mut value = bytes as f64 / 1024.0;
-    let mut unit = 0;
-    while value >= 1024.0 && unit + 1 < UNITS.len() {
-        value /= 1024.0;
-        unit += 1;
-    }
-    let text = format!("{value:.1}");
-    let text = text.strip_suffix(".0").unwrap_or(&text);
-    format!("{text} {}", UNITS[unit])
-}
+pub use crate::pyfmt::size_text;
 
 #[cfg(test)]
 mod tests {

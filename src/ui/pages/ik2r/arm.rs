@@ -37,8 +37,8 @@ use crate::view::ik2r::{
     part_at, Grab, State, ViewXf, WsColor, ELLIPSE_SCALE,
 };
 
-/// Colours of the arm view.
-mod colour {
+/// Colours of the arm view (the home page's arm uses them too).
+pub(crate) mod colour {
     pub const BG: &str = "#fbfcfe";
     pub const GRID: &str = "#e4e8ef";
     pub const AXIS: &str = "#9aa5b5";

@@ -32,6 +32,7 @@ use std::rc::{Rc, Weak};
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
+pub(crate) use self::arm::colour as arm_colour;
 use self::arm::{ArmControl, ArmHost};
 #[cfg(feature = "bench")]
 use self::bench::BenchHost;

@@ -4,9 +4,15 @@
 //! page's own URL is the lesson). The three built-in lessons load from here; while the user
 //! has no lesson of their own, the first one is shown ready to present (not stored until edited).
 //!
+//! A file is refused from its size above [`MAX_FILE_BYTES`] (unread), else read and checked
+//! by [`crate::view::lesson_file`]; a refusal names what and where, and the current lesson is
+//! kept. The lines under the intro say what the browser's storage did: the lesson is not saved
+//! (storage full: it stays in memory), or the stored text could not be read and is kept aside
+//! (download, discard); a notice names the keys of the link that hold no part of the lesson.
+//!
 //! Components: `builtin` (the built-in lessons); this file holds the page, its markup and the
 //! editor's actions. The lesson model is [`crate::view::lesson`]; storage and presenting are the
-//! shell's [`crate::ui::lesson_bar`].
+//! shell's [`crate::ui::lesson_bar`], on the kit's [`crate::ui::kit::store`].
 
 mod builtin;
 
@@ -19,10 +25,16 @@ use web_sys::{Element, Event, HtmlInputElement, HtmlTextAreaElement};
 
 use crate::ui::dom::{self, Listener};
 use crate::ui::kit::input_file;
-use crate::ui::lesson_bar;
+use crate::ui::kit::store;
+use crate::ui::kit::url_state::UrlNotice;
+use crate::ui::lesson_bar::{self, LESSON_STORAGE_KEY};
 use crate::ui::page::{MountCtx, Page, ShellLink};
 use crate::ui::{ctx, download, router};
-use crate::view::lesson::{Lesson, LessonError, MAX_PAGE_STEPS};
+use crate::view::lesson::{Lesson, LessonError, MAX_FILE_BYTES, MAX_PAGE_STEPS};
+use crate::view::lesson_file;
+
+/// The download of the stored text that could not be read.
+const UNREADABLE_FILE: &str = "lesson-unreadable.json";
 
 /// The lesson page.
 pub struct LessonPage(Rc<Editor>);
@@ -35,6 +47,10 @@ struct Editor {
     lesson: RefCell<Lesson>,
     /// The lesson shown is the built-in one opened for a user without a lesson (not stored).
     builtin_shown: Cell<bool>,
+    /// The keys of the opened link that hold no part of the lesson.
+    url_notice: UrlNotice,
+    /// The problem of the last file or link refused (said again on a language switch).
+    error: RefCell<Option<LessonError>>,
     listeners: RefCell<Vec<Listener>>,
     steps_listeners: RefCell<Vec<Listener>>,
 }
@@ -49,6 +65,12 @@ impl Page for LessonPage {
             let _ = self.0.show_first_builtin();
         }
         let _ = self.0.render_steps();
+        let _ = self.0.render_store_notes();
+        self.0.url_notice.relocalize();
+        let error = self.0.error.borrow().clone();
+        if let Some(error) = error {
+            let _ = self.0.show_error(&error);
+        }
     }
 }
 
@@ -57,18 +79,25 @@ fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
     root.set_inner_html(MARKUP);
     dom::relocalize(&root)?;
     let is_page = |id: &str| ctx.shell.is_page(id);
+    let url_notice = UrlNotice::new(
+        dom::find(&root, "[data-testid=\"lesson-url-notice\"]", "lesson")?,
+        Lesson::ignored_keys(&ctx.query),
+    )?;
     let page = Rc::new(Editor {
+        url_notice,
         root,
         shell: ctx.shell,
         lesson: RefCell::new(lesson_bar::stored(is_page)),
         builtin_shown: Cell::new(false),
+        error: RefCell::new(None),
         listeners: RefCell::new(Vec::new()),
         steps_listeners: RefCell::new(Vec::new()),
     });
     // A lesson in the URL becomes the current one; a bad one is named, the current one kept.
     match Lesson::from_query(&ctx.query, is_page) {
         Ok(Some(lesson)) => {
-            lesson_bar::store(&lesson);
+            // Refused by the browser: said by the store notes, the lesson kept in memory.
+            let _ = lesson_bar::store(&lesson);
             *page.lesson.borrow_mut() = lesson;
         }
         Ok(None) => {}
@@ -79,11 +108,19 @@ fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
     }
     page.wire()?;
     page.render_steps()?;
+    page.render_store_notes()?;
     Ok(page)
 }
 
 const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>\
 <p class=\"lesson-intro\" data-i18n=\"lesson-intro\"></p>\
+<p class=\"lesson-store-note lesson-url-notice\" data-testid=\"lesson-url-notice\" hidden></p>\
+<p class=\"lesson-store-note\" role=\"status\" data-testid=\"lesson-unsaved\" data-i18n=\"lesson-unsaved\" hidden></p>\
+<div class=\"lesson-store-note\" role=\"status\" data-testid=\"lesson-unreadable\" hidden>\
+<p data-testid=\"lesson-unreadable-text\"></p>\
+<button type=\"button\" class=\"tool-button\" data-download=\"lesson-unreadable.json\" data-i18n=\"lesson-unreadable-download\"></button>\
+<button type=\"button\" class=\"tool-button\" data-action=\"lesson-forget-unreadable\" data-i18n=\"lesson-unreadable-forget\"></button>\
+</div>\
 <section class=\"lesson-card\" aria-labelledby=\"lesson-builtin-heading\">\
 <h2 id=\"lesson-builtin-heading\" data-i18n=\"lesson-builtin-heading\"></h2>\
 <div class=\"lesson-builtins\">\
@@ -142,14 +179,19 @@ impl Editor {
     }
 
     fn show_error(&self, error: &LessonError) -> Result<(), JsValue> {
+        *self.error.borrow_mut() = Some(error.clone());
         let slot: Element = self.find("[data-field-error=\"lesson-file\"]")?;
-        let args: Vec<(&str, String)> = error.args();
+        let args: Vec<(&str, String)> = match error {
+            LessonError::Decode(decode) => vec![("detail", ctx::error_text(decode))],
+            _ => error.args(),
+        };
         slot.set_text_content(Some(&ctx::t_strings(error.message_id(), &args)));
         dom::show(&slot, true);
         Ok(())
     }
 
     fn clear_error(&self) -> Result<(), JsValue> {
+        *self.error.borrow_mut() = None;
         let slot: Element = self.find("[data-field-error=\"lesson-file\"]")?;
         dom::show(&slot, false);
         Ok(())
@@ -161,7 +203,9 @@ impl Editor {
         let note: Element = self.find("[data-testid=\"lesson-builtin-note\"]")?;
         dom::show(&note, false);
         let lesson = self.lesson.borrow().clone();
-        lesson_bar::store(&lesson);
+        // Refused by the browser: the lesson stays in memory and the store notes say so.
+        let _ = lesson_bar::store(&lesson);
+        self.render_store_notes()?;
         router::replace_query(&lesson.to_query());
         if redraw {
             self.render_steps()?;
@@ -215,15 +259,26 @@ impl Editor {
         listeners.push(Listener::new(&import, "change", move |_| {
             let Some(page) = weak.upgrade() else { return };
             if let Some(picked) = input_file::chosen(&input) {
-                let weak = Rc::downgrade(&page);
-                input_file::read_text(&picked.name, &picked.blob, move |result| {
-                    if let Some(page) = weak.upgrade() {
-                        let _ = page.imported(result.map_err(|p| match p {
-                            input_file::ReadProblem::Browser(reason) => reason,
-                            input_file::ReadProblem::Decode(error) => ctx::error_text(&error),
-                        }));
-                    }
-                });
+                // A file over the limit is refused from its size, unread.
+                if picked.bytes > MAX_FILE_BYTES {
+                    let _ = page.imported(Err(LessonError::TooBig {
+                        bytes: picked.bytes,
+                    }));
+                } else {
+                    let weak = Rc::downgrade(&page);
+                    input_file::read_text(&picked.name, &picked.blob, move |result| {
+                        if let Some(page) = weak.upgrade() {
+                            let _ = page.imported(result.map_err(|p| match p {
+                                input_file::ReadProblem::Browser(detail) => {
+                                    LessonError::NotText { detail }
+                                }
+                                input_file::ReadProblem::Decode(error) => {
+                                    LessonError::Decode(error)
+                                }
+                            }));
+                        }
+                    });
+                }
             }
             input.set_value("");
         })?);
@@ -239,10 +294,10 @@ impl Editor {
         self.changed(true)
     }
 
-    fn imported(self: &Rc<Self>, text: Result<String, String>) -> Result<(), JsValue> {
-        let parsed = text
-            .map_err(|detail| LessonError::NotALesson { detail })
-            .and_then(|t| Lesson::from_json(&t, |id| self.is_page(id)));
+    /// A file's text (or why there is none): the lesson it holds replaces the current one,
+    /// else the problem is named and the current lesson kept.
+    fn imported(self: &Rc<Self>, text: Result<String, LessonError>) -> Result<(), JsValue> {
+        let parsed = text.and_then(|t| lesson_file::from_json(&t, |id| self.is_page(id)));
         match parsed {
             Ok(lesson) => self.replace(lesson),
             Err(error) => self.show_error(&error),
@@ -261,10 +316,14 @@ impl Editor {
             }
             return Ok(());
         }
+        if target.get_attribute("data-download").as_deref() == Some(UNREADABLE_FILE) {
+            let kept = store::aside(LESSON_STORAGE_KEY).unwrap_or_default();
+            return download::download_text(UNREADABLE_FILE, &kept, "application/json");
+        }
         if target.get_attribute("data-download").as_deref() == Some("lesson.json") {
             return download::download_text(
                 "lesson.json",
-                &self.lesson.borrow().to_json(),
+                &lesson_file::to_json(&self.lesson.borrow()),
                 "application/json",
             );
         }
@@ -274,6 +333,10 @@ impl Editor {
                     self.present(0)?;
                 }
                 return Ok(());
+            }
+            Some("lesson-forget-unreadable") => {
+                store::forget_aside(LESSON_STORAGE_KEY);
+                return self.render_store_notes();
             }
             Some("lesson-clear") => {
                 if dom::window()?.confirm_with_message(&ctx::t("lesson-clear-confirm"))? {
@@ -306,6 +369,22 @@ impl Editor {
             }
             self.changed(true)?;
         }
+        Ok(())
+    }
+
+    /// The lines about the browser's storage: the lesson is not saved (storage refused it);
+    /// the stored text could not be read and is kept aside (with its download and discard).
+    fn render_store_notes(&self) -> Result<(), JsValue> {
+        let unsaved: Element = self.find("[data-testid=\"lesson-unsaved\"]")?;
+        dom::show(&unsaved, lesson_bar::unsaved());
+        let unreadable: Element = self.find("[data-testid=\"lesson-unreadable\"]")?;
+        let kept = store::aside(LESSON_STORAGE_KEY).is_some();
+        if kept {
+            let text: Element = self.find("[data-testid=\"lesson-unreadable-text\"]")?;
+            let key = store::aside_key(LESSON_STORAGE_KEY);
+            text.set_text_content(Some(&ctx::t_strings("lesson-unreadable", &[("key", key)])));
+        }
+        dom::show(&unreadable, kept);
         Ok(())
     }
 

@@ -2,37 +2,41 @@
 //! committed, the ghost), their figures, warnings and announcement.
 
 use std::cell::{Cell, RefCell};
-use std::rc::Rc;
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use super::plots::Plots;
+use super::plots::{self, Plots};
 use crate::error::RecipeWarning;
 use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
-use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, RunFrom, SignalPage, SignalSpec};
+use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, Run, RunFrom, SignalPage, SignalSpec};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
 use crate::view::pid_step::{figures, rows, stops_short, StepFigures, TUNED_GAINS};
 use crate::view::signal::{sig, Slider};
 
-/// The figures and warnings of the run shown, the run the ghost is drawn from (a new ghost, a
-/// new generation), and the last committed run (runs are shared, never copied).
-struct Runs {
+/// What the page reads off every row of a run: its figures and warnings.
+pub struct Summary {
     figures: StepFigures,
     warnings: Vec<RecipeWarning>,
-    committed: Rc<Vec<PidSample>>,
-    ghost: Option<Rc<Vec<PidSample>>>,
+}
+
+/// A run of the recipe: its gains, samples and summary.
+type Response = Run<PidParams, PidSample, Summary>;
+
+/// The run the ghost is drawn from (a new ghost, a new generation) and the last committed run
+/// (runs are shared, never copied).
+struct Runs {
+    committed: Response,
+    ghost: Option<Response>,
     ghost_generation: u64,
 }
 
 impl Runs {
-    /// The run `rows` with no ghost, committed.
-    fn first(rows: &Rc<Vec<PidSample>>) -> Runs {
+    /// The run `run` with no ghost, committed.
+    fn first(run: &Response) -> Runs {
         Runs {
-            figures: figures(rows),
-            warnings: warnings(rows),
-            committed: rows.clone(),
+            committed: run.clone(),
             ghost: None,
             ghost_generation: 0,
         }
@@ -53,6 +57,7 @@ pub struct PidPage {
 impl SignalPage for PidPage {
     type Params = PidParams;
     type Row = PidSample;
+    type Summary = Summary;
     type Handle = ();
     const SPEC: SignalSpec<PidParams, PidSample> = SignalSpec {
         prefix: "pid",
@@ -60,6 +65,7 @@ impl SignalPage for PidPage {
         parse: params_from_args,
         // The kernel's loop: the CSV's rows, times unrounded.
         kernel: |p| rows(p).map(boxed),
+        thin: |to, s| to.push(s.t, &[s.y, s.u]),
         png: "pid_step_plots.png",
         layers: 3,
         sliders: &[
@@ -83,15 +89,23 @@ impl SignalPage for PidPage {
         ],
         nudges: &[Arrows::UpDown.nudge("pid-key-kp", "Kp", |p| p.kp, 0.05, f64::NEG_INFINITY)],
         overlays: &[],
+        // Why the run stops short, and the button to tuned gains, right under the curves.
         under_plot: "<p class=\"sig-warning\" data-pid=\"warning\" \
                      data-testid=\"pid-step-warning\" role=\"alert\" hidden></p>\
+                     <div class=\"sig-note pid-short\" data-pid=\"short\" \
+                     data-testid=\"pid-step-short\" hidden><p data-pid=\"short-text\"></p>\
+                     <button type=\"button\" class=\"tool-button\" data-action=\"pid-tuned\" \
+                     data-i18n=\"pid-tuned\"></button></div>\
                      <p class=\"sig-note\" data-i18n=\"pid-ghost-note\"></p>",
-        under_readouts: "<div class=\"sig-note\" data-pid=\"short\" \
-                         data-testid=\"pid-step-short\" hidden><p data-pid=\"short-text\"></p>\
-                         <button type=\"button\" class=\"tool-button\" data-action=\"pid-tuned\" \
-                         data-i18n=\"pid-tuned\"></button></div>\
-                         <p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>",
+        under_readouts: "<p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>",
     };
+
+    fn summarize(_: &PidParams, rows: &[PidSample]) -> Summary {
+        Summary {
+            figures: figures(rows),
+            warnings: warnings(rows),
+        }
+    }
 
     fn build(kit: &Kit<PidPage>) -> Result<PidPage, JsValue> {
         Ok(PidPage {
@@ -99,7 +113,7 @@ impl SignalPage for PidPage {
             warning: kit.role("warning")?,
             short: kit.role("short")?,
             short_text: kit.role("short-text")?,
-            runs: RefCell::new(Runs::first(&kit.run().rows)),
+            runs: RefCell::new(Runs::first(&kit.run())),
             changing: Cell::new(false),
         })
     }
@@ -110,17 +124,14 @@ impl SignalPage for PidPage {
         let run = kit.run();
         let mut runs = self.runs.borrow_mut();
         if draw.run == Some(RunFrom::Mount) {
-            *runs = Runs::first(&run.rows);
-        } else if draw.run.is_some() {
-            if !self.changing.replace(true) {
-                // The committed run becomes the ghost; the next commit replaces it.
-                runs.ghost = Some(std::mem::take(&mut runs.committed));
-                runs.ghost_generation += 1;
-            }
-            runs.figures = figures(&run.rows);
-            runs.warnings = warnings(&run.rows);
+            *runs = Runs::first(&run);
+        } else if draw.run.is_some() && !self.changing.replace(true) {
+            // A change's first run: the committed run becomes the ghost; the next commit
+            // replaces it.
+            runs.ghost = Some(runs.committed.clone());
+            runs.ghost_generation += 1;
         }
-        let f = runs.figures;
+        let f = run.summary.figures;
         let show = |key: &str, x: Option<f64>, digits: usize| match x {
             Some(x) => kit.show_number(key, x, digits),
             None => kit.readouts.set_with_value(key, &ctx::t("pid-ro-none"), ""),
@@ -132,8 +143,7 @@ impl SignalPage for PidPage {
         show("peak-u", f.peak_u.map(|p| p.1), 4);
         show("peak-u-t", f.peak_u.map(|p| p.0), 4);
         show("final-y", f.final_y, 4);
-        let text: Vec<String> = runs
-            .warnings
+        let text: Vec<String> = (run.summary.warnings)
             .iter()
             .map(|w| ctx::t_args(w.message_id(), &fluent_args(w.message_args())))
             .collect();
@@ -148,14 +158,11 @@ impl SignalPage for PidPage {
             )));
         }
         dom::show(&self.short, short);
-        let ghost = runs
-            .ghost
-            .as_deref()
-            .map(|g| (runs.ghost_generation, g.as_slice()));
+        let ghost = runs.ghost.as_ref().map(|g| (runs.ghost_generation, g));
         let mut sp = kit.plot.borrow_mut();
         self.plots
             .borrow_mut()
-            .set_data(&mut sp, &run.rows, ghost, draw.resized);
+            .set_data(&mut sp, &run, ghost, draw.resized);
         drop((sp, runs, run));
         kit.draw_plot();
         if draw.changed() {
@@ -177,6 +184,19 @@ impl SignalPage for PidPage {
         }
     }
 
+    /// From 0 to the end of the run or of the ghost it is shown over, whichever is later.
+    fn time_axis(&self, _: &Kit<PidPage>, params: &PidParams, draw: Draw) -> (f64, f64) {
+        let runs = self.runs.borrow();
+        let ghost = match draw.run {
+            Some(RunFrom::Mount) => None,
+            // A change's first run turns the committed run into the ghost.
+            Some(_) if !self.changing.get() => Some(&runs.committed),
+            _ => runs.ghost.as_ref(),
+        };
+        let ghost_end = ghost.and_then(|g| g.rows.last()).map(|s| s.t);
+        plots::time_axis_of(plots::last_t(params), ghost_end)
+    }
+
     /// "Try tuned gains": the tuned Kp, Ki and Kd in the fields, as if typed.
     fn action(&self, kit: &Kit<PidPage>, action: &str) -> Option<PidParams> {
         (action == "pid-tuned").then(|| kit.controls.set_texts(&TUNED_GAINS, None))?
@@ -185,7 +205,7 @@ impl SignalPage for PidPage {
     /// The run shown is the one the next change leaves as the ghost.
     fn change_ended(&self, kit: &Kit<PidPage>) {
         if self.changing.replace(false) {
-            self.runs.borrow_mut().committed = kit.run().rows.clone();
+            self.runs.borrow_mut().committed = kit.run().clone();
         }
     }
 }

@@ -3,9 +3,9 @@
 //! and u) pale underneath. Axes snap to 1-2-5 ranges, so a small change redraws only the
 //! series. Nothing on it is dragged: a hover or a tap moves the cursor.
 
-use crate::recipes::pid_step::{PidSample, DT_S};
+use crate::recipes::pid_step::{PidParams, PidSample, DT_S};
 use crate::ui::kit::plot::{Mark, PanelSpec, PlotSpec, SeriesSpec};
-use crate::ui::kit::signal_page::{axis, series, time_axis, SignalPlot};
+use crate::ui::kit::signal_page::{axis, series, time_axis, Run, SignalPlot};
 use crate::view::pid_step::{plot_extent, plot_range};
 
 const C_Y: (u8, u8, u8) = (26, 77, 143);
@@ -32,22 +32,35 @@ struct GhostCache {
     u: Vec<(f64, f64)>,
 }
 
+/// The time of the last sample of the run of `p` (the kernel's step k is at k·dt), if any.
+pub fn last_t(p: &PidParams) -> Option<f64> {
+    (p.steps >= 1).then(|| (p.steps - 1) as f64 * DT_S)
+}
+
+/// The time axis of a run ending at `now_end` over a ghost ending at `ghost_end`, s: from 0
+/// to the later end (at least one step).
+pub fn time_axis_of(now_end: Option<f64>, ghost_end: Option<f64>) -> (f64, f64) {
+    (
+        0.0,
+        [now_end, ghost_end]
+            .into_iter()
+            .flatten()
+            .fold(DT_S, f64::max),
+    )
+}
+
 impl Plots {
     /// Sets the axes and series of the run `now` over the `ghost` (`generation` names it: a
     /// new ghost, a new number); `resized` refits the canvases.
-    pub fn set_data(
+    pub fn set_data<M>(
         &mut self,
         sp: &mut SignalPlot<()>,
-        now: &[PidSample],
-        ghost: Option<(u64, &[PidSample])>,
+        now: &Run<PidParams, PidSample, M>,
+        ghost: Option<(u64, &Run<PidParams, PidSample, M>)>,
         resized: bool,
     ) {
-        let t_end = [now.last(), ghost.and_then(|g| g.1.last())]
-            .into_iter()
-            .flatten()
-            .map(|s| s.t)
-            .fold(DT_S, f64::max);
-        let x = (0.0, t_end);
+        let end = |r: &Run<PidParams, PidSample, M>| r.rows.last().map(|s| s.t);
+        let x = time_axis_of(end(now), ghost.and_then(|g| end(g.1)));
         // The ghost's series (first, under the others) only while there is one.
         let g = usize::from(ghost.is_some());
         let ghost_series = |id: &str| ghost.map(|_| series(id, C_GHOST, Mark::Line, 2.0, 0.55));
@@ -59,10 +72,10 @@ impl Plots {
         // The ghost thinned once (a new ghost, a new x range or a new size), its ranges from
         // its thinned points (each pixel column keeps its lowest and highest: the same extents
         // as the run's, without another pass over a million rows).
-        if let Some((generation, rows)) = ghost {
+        if let Some((generation, run)) = ghost {
             let key = (generation, x, sp.plot.panel_px(0));
             if self.ghost.as_ref().map(|c| c.key) != Some(key) {
-                let [y, u] = sp.thin(x, rows.iter().map(|s| (s.t, [s.y, s.u])));
+                let [y, u] = run.thinned(&sp.plot, x);
                 self.ghost = Some(GhostCache {
                     key,
                     y_range: plot_extent(&y),
@@ -75,7 +88,7 @@ impl Plots {
         let none = (f64::INFINITY, f64::NEG_INFINITY);
         let cache = self.ghost.as_ref().filter(|_| ghost.is_some());
         let (ghost_y, ghost_u) = cache.map_or((none, none), |c| (c.y_range, c.u_range));
-        let [y, u] = sp.thin(x, now.iter().map(|s| (s.t, [s.y, s.u])));
+        let [y, u] = now.thinned(&sp.plot, x);
         let (now_y, now_u) = (plot_extent(&y), plot_extent(&u));
         sp.plot.set_spec(PlotSpec {
             x: time_axis(x),
@@ -96,7 +109,7 @@ impl Plots {
             sp.plot.set_series(1, 0, cache.u.clone());
         }
         // r is the recipe's constant setpoint: its two ends draw it.
-        let r = match (now.first(), now.last()) {
+        let r = match (now.rows.first(), now.rows.last()) {
             (Some(a), Some(b)) => vec![(a.t, a.r), (b.t, b.r)],
             _ => Vec::new(),
         };

@@ -20,8 +20,9 @@ const SPEEDS: [Speed; 5] = [
 /// 10 iterations a second.
 const DEFAULT_SPEED: usize = 1;
 /// Work per frame (iterations + drawing) playing as fast as possible aims under, ms: the
-/// stepper halves its chunk above twice this, so frames stay under about 4 ms.
-pub const FRAME_BUDGET_MS: f64 = 1.5;
+/// stepper doubles its chunk below this and halves it above twice this, so frames stay under
+/// about 2 ms.
+pub const FRAME_BUDGET_MS: f64 = 0.8;
 
 /// The stepper over the run: its speeds, labelled in iterations per second.
 pub fn stepper_options() -> StepperOptions {

@@ -7,11 +7,9 @@
 
 use std::cell::{Cell, RefCell};
 
-use wasm_bindgen::JsValue;
-
 use crate::teleop::session::{InputDevice, Module, Session};
 use crate::teleop::{Episode, Label};
-use crate::ui::dom;
+use crate::ui::kit::store;
 use crate::ui::schedule::now_ms;
 
 /// localStorage key of the session in progress.
@@ -159,7 +157,7 @@ impl Sessions {
         self.last_save_ms.set(now_ms());
         let in_progress = in_progress();
         let json = self.current.borrow().to_json(in_progress.as_ref());
-        let refused = store(STORE_KEY, &json).is_err();
+        let refused = store::save(STORE_KEY, &json).is_err();
         self.unsaved.set((refused, self.unsaved.get().1));
     }
 
@@ -169,7 +167,7 @@ impl Sessions {
             return;
         }
         if let Some(first) = self.first.borrow().as_ref() {
-            let refused = store(FIRST_KEY, &first.to_json(None)).is_err();
+            let refused = store::save(FIRST_KEY, &first.to_json(None)).is_err();
             self.unsaved.set((self.unsaved.get().0, refused));
         }
     }
@@ -179,13 +177,4 @@ impl Sessions {
         let (current, first) = self.unsaved.get();
         current || first
     }
-}
-
-/// Stores `value` under `key` in localStorage; `Err` when the browser refuses (a
-/// `QuotaExceededError`, storage turned off).
-fn store(key: &str, value: &str) -> Result<(), JsValue> {
-    let storage = dom::window()?
-        .local_storage()?
-        .ok_or_else(|| JsValue::from_str("no localStorage"))?;
-    storage.set_item(key, value)
 }

@@ -23,6 +23,8 @@ pub struct TrapPage {
 impl SignalPage for TrapPage {
     type Params = TrapParams;
     type Row = TrapSample;
+    /// Nothing: the readouts come from the arguments and the last row.
+    type Summary = ();
     type Handle = Grab;
     const SPEC: SignalSpec<TrapParams, TrapSample> = SignalSpec {
         prefix: "trap",
@@ -30,6 +32,7 @@ impl SignalPage for TrapPage {
         parse: params_from_args,
         // The CSV's rows, times unrounded.
         kernel: |p| rows(p).map(boxed),
+        thin: |to, s| to.push(s.t, &[s.s, s.v, s.a]),
         png: "trap_profile_plots.png",
         layers: 4,
         sliders: &[
@@ -59,6 +62,8 @@ impl SignalPage for TrapPage {
                      <p class=\"sig-note\" data-i18n=\"trap-drag-hint\"></p>",
         under_readouts: "",
     };
+
+    fn summarize(_: &TrapParams, _: &[TrapSample]) {}
 
     fn build(kit: &Kit<TrapPage>) -> Result<TrapPage, JsValue> {
         Ok(TrapPage {
@@ -90,7 +95,7 @@ impl SignalPage for TrapPage {
         if draw.resized {
             plots.relocalize();
         }
-        plots::set_data(&mut kit.plot.borrow_mut(), &run.rows, &ph, draw);
+        plots::set_data(&mut kit.plot.borrow_mut(), &run, &ph, draw);
         drop(run);
         kit.draw_plot();
         plots.draw_marks(&mut kit.plot.borrow_mut(), &ph);
@@ -107,6 +112,10 @@ impl SignalPage for TrapPage {
                 )
             });
         }
+    }
+
+    fn time_axis(&self, kit: &Kit<TrapPage>, params: &TrapParams, draw: Draw) -> (f64, f64) {
+        plots::time_axis(&kit.plot.borrow(), &phases(params), draw.fit)
     }
 
     fn drag(&self, kit: &Kit<TrapPage>, handle: Grab, at: DVec2) -> Option<TrapParams> {

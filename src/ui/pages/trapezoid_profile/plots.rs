@@ -8,11 +8,11 @@
 
 use glam::DVec2;
 
-use crate::recipes::trapezoid_profile::TrapSample;
+use crate::recipes::trapezoid_profile::{TrapParams, TrapSample};
 use crate::ui::ctx;
 use crate::ui::kit::canvas::{dash, solid, Ink};
 use crate::ui::kit::plot::Mark;
-use crate::ui::kit::signal_page::{draw_handle, series, Draw, SignalPlot};
+use crate::ui::kit::signal_page::{draw_handle, series, Draw, Fit, Run, SignalPlot};
 use crate::view::plot::{auto_range, place_labels};
 use crate::view::signal::{nice_range, y_extent};
 use crate::view::trapezoid_profile::{amax_from_corner, bands, Phases};
@@ -49,13 +49,24 @@ pub fn dragged(sp: &SignalPlot<Grab>, handle: Grab, at: DVec2) -> Option<(&'stat
     }
 }
 
-/// Sets the axes and the thinned `samples` of the profile of phases `ph`.
-pub fn set_data(sp: &mut SignalPlot<Grab>, samples: &[TrapSample], ph: &Phases, draw: Draw) {
-    // The time axis first (it comes from the phases), then the rows thinned to it, then the
-    // value axes from the thinned points (each pixel column keeps its lowest and highest: the
-    // same extents as the rows', without another pass over a million).
-    let x = sp.x_for(draw.fit, nice_range((0.0, (ph.t_total * 1.1).max(1e-9))));
-    let columns = sp.thin(x, samples.iter().map(|s| (s.t, [s.s, s.v, s.a])));
+/// The time axis of the profile of phases `ph` with `fit`.
+pub fn time_axis(sp: &SignalPlot<Grab>, ph: &Phases, fit: Fit) -> (f64, f64) {
+    sp.x_for(fit, nice_range((0.0, (ph.t_total * 1.1).max(1e-9))))
+}
+
+/// Sets the axes and the thinned samples of `run`, the profile of phases `ph`.
+pub fn set_data(
+    sp: &mut SignalPlot<Grab>,
+    run: &Run<TrapParams, TrapSample, ()>,
+    ph: &Phases,
+    draw: Draw,
+) {
+    // The time axis first (it comes from the phases), then the rows thinned to it (as they
+    // were computed), then the value axes from the thinned points (each pixel column keeps its
+    // lowest and highest: the same extents as the rows', without another pass over a
+    // million).
+    let x = time_axis(sp, ph, draw.fit);
+    let columns: [_; 3] = run.thinned(&sp.plot, x);
     let [s, v, a] = std::array::from_fn(|k| y_extent(&columns[k]));
     let r = |(lo, hi): (f64, f64), with: f64| {
         nice_range(auto_range([lo, hi, 0.0, with], 0.08).unwrap_or((-1.0, 1.0)))

@@ -1,0 +1,557 @@
+//! The lesson `.json` file (format `bsv-lesson`, version 1), written and read; what can be
+//! wrong with one is a [`LessonError`] naming the place (step n, field f).
+//!
+//! Reading checks, in order: the size ([`MAX_FILE_BYTES`]; the page refuses a bigger file
+//! from its size alone, before reading it), text at all, nesting (at most [`MAX_DEPTH`] levels,
+//! checked before parsing: a lesson nests 3 deep, and serde_json's own limit of 128 would make
+//! a plain "syntax error"), JSON, an object, its `format` and `version`, then every field of
+//! the lesson and of each step by name (an unknown field, a missing one, a wrong type), at least
+//! one step (a file; the stored lesson may have none), and the limits of [`Lesson::validate`].
+//! Text fields are kept as text: the pages put them in inputs and text nodes only, so
+//! `<script>` or `javascript:` in a title or a note is shown, never run; a route must name a
+//! page of the app and is rebuilt by the URL codec, so a link is always `#/<page>?...`.
+
+use serde::Serialize;
+use serde_json::{Map, Value};
+
+use crate::view::lesson::{
+    without_lang, Expected, Lesson, LessonError, LessonStep, FORMAT, MAX_DEPTH, MAX_FILE_BYTES,
+    MAX_PAGE_STEPS, MAX_STEPS, VERSION,
+};
+
+/// The fields of the file, then of a step.
+const FILE_FIELDS: [&str; 4] = ["format", "version", "title", "steps"];
+const STEP_FIELDS: [&str; 4] = ["route", "title", "note", "pageSteps"];
+
+/// The file form: the lesson with its format and version (field order as written).
+#[derive(Serialize)]
+struct LessonFile<'a> {
+    format: &'a str,
+    version: u32,
+    title: &'a str,
+    steps: &'a [LessonStep],
+}
+
+/// The `.json` file text of `lesson` (pretty, stable key order).
+pub fn to_json(lesson: &Lesson) -> String {
+    let file = LessonFile {
+        format: FORMAT,
+        version: VERSION,
+        title: &lesson.title,
+        steps: &lesson.steps,
+    };
+    // Serializing plain strings and numbers cannot fail.
+    serde_json::to_string_pretty(&file).unwrap_or_default() + "\n"
+}
+
+/// Reads a lesson file to import (see the module docs for the checks, in order); a lesson
+/// without steps is refused.
+pub fn from_json(text: &str, is_page: impl Fn(&str) -> bool) -> Result<Lesson, LessonError> {
+    read(text, is_page, false)
+}
+
+/// Reads the lesson kept in the browser's storage: [`from_json`], except that a lesson
+/// without steps (the user removed them all) is fine.
+pub fn from_stored(text: &str, is_page: impl Fn(&str) -> bool) -> Result<Lesson, LessonError> {
+    read(text, is_page, true)
+}
+
+fn read(
+    text: &str,
+    is_page: impl Fn(&str) -> bool,
+    allow_empty: bool,
+) -> Result<Lesson, LessonError> {
+    let bytes = text.len() as u64;
+    if bytes > MAX_FILE_BYTES {
+        return Err(LessonError::TooBig { bytes });
+    }
+    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if body.trim().is_empty() {
+        return Err(LessonError::EmptyFile);
+    }
+    check_depth(body)?;
+    let value: Value = serde_json::from_str(body).map_err(|e| LessonError::NotJson {
+        line: e.line(),
+        column: e.column(),
+    })?;
+    let Value::Object(file) = &value else {
+        return Err(LessonError::NotAnObject {
+            kind: kind_of(&value),
+        });
+    };
+    match file.get("format") {
+        None => return Err(LessonError::NoFormat),
+        Some(Value::String(f)) if f == FORMAT => {}
+        Some(Value::String(f)) => return Err(LessonError::WrongFormat { found: f.clone() }),
+        Some(_) => return Err(wrong_type(None, "format", Expected::Text)),
+    }
+    match file.get("version") {
+        None => return Err(missing(None, "version")),
+        Some(Value::Number(n)) => match n.as_u64() {
+            Some(v) if v == u64::from(VERSION) => {}
+            Some(v) => return Err(LessonError::WrongVersion { found: v }),
+            None => return Err(wrong_type(None, "version", Expected::WholeNumber)),
+        },
+        Some(_) => return Err(wrong_type(None, "version", Expected::WholeNumber)),
+    }
+    known_fields(file, &FILE_FIELDS, None)?;
+    let title = text_field(file, "title", None)?.ok_or(missing(None, "title"))?;
+    let steps = match file.get("steps") {
+        None => return Err(missing(None, "steps")),
+        Some(Value::Array(steps)) => steps,
+        Some(_) => return Err(wrong_type(None, "steps", Expected::List)),
+    };
+    if steps.is_empty() && !allow_empty {
+        return Err(LessonError::NoSteps);
+    }
+    if steps.len() > MAX_STEPS {
+        return Err(LessonError::TooManySteps { count: steps.len() });
+    }
+    let steps = steps
+        .iter()
+        .enumerate()
+        .map(|(i, step)| read_step(step, i + 1))
+        .collect::<Result<Vec<_>, _>>()?;
+    let lesson = Lesson { title, steps };
+    lesson.validate(is_page)?;
+    Ok(lesson)
+}
+
+/// Step `n` of a file.
+fn read_step(value: &Value, n: usize) -> Result<LessonStep, LessonError> {
+    let Value::Object(step) = value else {
+        return Err(LessonError::StepNotAnObject { step: n });
+    };
+    let at = Some(n);
+    known_fields(step, &STEP_FIELDS, at)?;
+    let route = text_field(step, "route", at)?.ok_or(missing(at, "route"))?;
+    let title = text_field(step, "title", at)?.ok_or(missing(at, "title"))?;
+    let note = text_field(step, "note", at)?.unwrap_or_default();
+    let page_steps = match step.get("pageSteps") {
+        None => 0,
+        Some(Value::Number(k)) => match k.as_u64() {
+            Some(k) => u32::try_from(k)
+                .ok()
+                .filter(|k| *k <= MAX_PAGE_STEPS)
+                .ok_or(LessonError::TooManyPageSteps { step: n })?,
+            None => return Err(wrong_type(at, "pageSteps", Expected::WholeNumber)),
+        },
+        Some(_) => return Err(wrong_type(at, "pageSteps", Expected::WholeNumber)),
+    };
+    Ok(LessonStep {
+        route: without_lang(&route),
+        title,
+        note,
+        page_steps,
+    })
+}
+
+fn missing(step: Option<usize>, field: &'static str) -> LessonError {
+    LessonError::MissingField { step, field }
+}
+
+fn wrong_type(step: Option<usize>, field: &'static str, expected: Expected) -> LessonError {
+    LessonError::WrongType {
+        step,
+        field,
+        expected,
+    }
+}
+
+/// The first field of `object` not among `known`, as an error.
+fn known_fields(
+    object: &Map<String, Value>,
+    known: &[&str],
+    step: Option<usize>,
+) -> Result<(), LessonError> {
+    match object.keys().find(|k| !known.contains(&k.as_str())) {
+        Some(field) => Err(LessonError::UnknownField {
+            step,
+            field: field.clone(),
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Text field `field` of `object` (`None` when absent).
+fn text_field(
+    object: &Map<String, Value>,
+    field: &'static str,
+    step: Option<usize>,
+) -> Result<Option<String>, LessonError> {
+    match object.get(field) {
+        None => Ok(None),
+        Some(Value::String(s)) => Ok(Some(s.clone())),
+        Some(_) => Err(wrong_type(step, field, Expected::Text)),
+    }
+}
+
+/// What a JSON value is, for the message (`lesson-error-not-an-object`'s `kind`).
+fn kind_of(value: &Value) -> &'static str {
+    match value {
+        Value::Array(_) => "array",
+        Value::String(_) => "text",
+        Value::Number(_) => "number",
+        Value::Bool(_) => "boolean",
+        Value::Null => "null",
+        Value::Object(_) => "object",
+    }
+}
+
+/// Refuses arrays and objects nested deeper than [`MAX_DEPTH`] (strings skipped), naming the
+/// line and column (from 1) of the bracket that passes the limit.
+fn check_depth(text: &str) -> Result<(), LessonError> {
+    let (mut depth, mut line, mut column) = (0usize, 1usize, 0usize);
+    let (mut in_string, mut escaped) = (false, false);
+    for c in text.chars() {
+        if c == '\n' {
+            line += 1;
+            column = 0;
+        } else {
+            column += 1;
+        }
+        if in_string {
+            match c {
+                _ if escaped => escaped = false,
+                '\\' => escaped = true,
+                '"' => in_string = false,
+                _ => {}
+            }
+            continue;
+        }
+        match c {
+            '"' => in_string = true,
+            '[' | '{' => {
+                depth += 1;
+                if depth > MAX_DEPTH {
+                    return Err(LessonError::TooDeep { line, column });
+                }
+            }
+            ']' | '}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::RecipeError;
+    use crate::i18n::{I18n, Lang};
+    use crate::view::lesson::{MAX_NOTE_CHARS, MAX_QUOTED_CHARS};
+
+    fn is_page(p: &str) -> bool {
+        matches!(p, "rrt-2d" | "ik-2r" | "pid-step" | "lesson")
+    }
+
+    fn import(text: &str) -> Result<Lesson, LessonError> {
+        from_json(text, is_page)
+    }
+
+    /// A lesson file with `steps` (JSON text of the array).
+    fn with_steps(steps: &str) -> String {
+        format!(r#"{{"format":"bsv-lesson","version":1,"title":"T","steps":{steps}}}"#)
+    }
+
+    #[test]
+    fn json_round_trips_and_states_its_format() {
+        let lesson = Lesson {
+            title: "Planning & trajectories".into(),
+            steps: vec![
+                LessonStep {
+                    route: "#/rrt-2d?seed=7&it=0".into(),
+                    title: "Step the RRT".into(),
+                    note: "Watch the goal bias.".into(),
+                    page_steps: 5,
+                },
+                LessonStep::of_route("#/pid-step?Kp=2&lang=ja", "PID, hotter gains"),
+            ],
+        };
+        let text = to_json(&lesson);
+        assert!(text.contains("\"format\": \"bsv-lesson\"") && text.contains("\"pageSteps\": 5"));
+        assert_eq!(from_json(&text, is_page), Ok(lesson));
+    }
+
+    #[test]
+    fn bad_files_name_what_is_wrong() {
+        let bad = |text: &str| from_json(text, is_page).unwrap_err();
+        assert_eq!(
+            bad(
+                r##"{"format":"bsv-lesson","version":1,"title":"","steps":[{"route":"#/nope","title":"a"}]}"##
+            ),
+            LessonError::UnknownPage {
+                step: 1,
+                page: "nope".into()
+            }
+        );
+        // A lesson cannot contain the lesson page itself.
+        assert!(matches!(
+            bad(
+                r##"{"format":"bsv-lesson","version":1,"title":"","steps":[{"route":"#/lesson","title":"a"}]}"##
+            ),
+            LessonError::UnknownPage { .. }
+        ));
+        let long = "x".repeat(MAX_NOTE_CHARS + 1);
+        let text = format!(
+            r##"{{"format":"bsv-lesson","version":1,"title":"","steps":[{{"route":"#/ik-2r","title":"a","note":"{long}"}}]}}"##
+        );
+        assert_eq!(
+            bad(&text),
+            LessonError::TooLong {
+                step: 1,
+                field: "note"
+            }
+        );
+        for e in [
+            LessonError::TitleTooLong,
+            LessonError::TooManyPageSteps { step: 2 },
+        ] {
+            assert!(e.message_id().starts_with("lesson-error-") && !e.args().is_empty());
+        }
+    }
+
+    #[test]
+    fn not_json_names_the_line_and_column() {
+        assert_eq!(
+            import("{\n  \"format\": bsv\n}"),
+            Err(LessonError::NotJson {
+                line: 2,
+                column: 13
+            })
+        );
+        assert_eq!(import(""), Err(LessonError::EmptyFile));
+        assert_eq!(import("\u{feff} \n\t"), Err(LessonError::EmptyFile));
+    }
+
+    #[test]
+    fn other_json_is_named_for_what_it_is() {
+        for (text, kind) in [
+            ("[1, 2]", "array"),
+            ("42", "number"),
+            ("\"lesson\"", "text"),
+            ("true", "boolean"),
+            ("null", "null"),
+        ] {
+            assert_eq!(
+                import(text),
+                Err(LessonError::NotAnObject { kind }),
+                "{text}"
+            );
+        }
+        // A teleop evidence file: an object without "format".
+        let evidence = r#"{"schemaVersion":"0.1","sessionId":"s","dataArtifacts":[]}"#;
+        assert_eq!(import(evidence), Err(LessonError::NoFormat));
+        assert_eq!(
+            import(r#"{"format":"slides","version":1}"#),
+            Err(LessonError::WrongFormat {
+                found: "slides".into()
+            })
+        );
+        assert_eq!(
+            import(r#"{"format":"bsv-lesson","version":2,"title":"","steps":[]}"#),
+            Err(LessonError::WrongVersion { found: 2 })
+        );
+        assert_eq!(
+            import(r#"{"format":"bsv-lesson","version":"1"}"#),
+            Err(wrong_type(None, "version", Expected::WholeNumber))
+        );
+    }
+
+    #[test]
+    fn deep_nesting_is_refused_before_parsing() {
+        let deep = "[".repeat(10_000) + &"]".repeat(10_000);
+        assert_eq!(
+            import(&deep),
+            Err(LessonError::TooDeep {
+                line: 1,
+                column: MAX_DEPTH + 1
+            })
+        );
+        let objects = "{\"a\":".repeat(10_000) + "1" + &"}".repeat(10_000);
+        assert!(matches!(import(&objects), Err(LessonError::TooDeep { .. })));
+        // Brackets inside text do not count.
+        let title = "[{".repeat(40) + "\\\"";
+        let text = format!(
+            r##"{{"format":"bsv-lesson","version":1,"title":"{title}","steps":[{{"route":"#/ik-2r","title":"a"}}]}}"##
+        );
+        assert_eq!(import(&text).map(|l| l.title), Ok("[{".repeat(40) + "\""));
+    }
+
+    #[test]
+    fn a_file_over_the_limit_is_refused_with_its_size() {
+        let big = " ".repeat(MAX_FILE_BYTES as usize + 1);
+        let error = import(&big).unwrap_err();
+        assert_eq!(
+            error,
+            LessonError::TooBig {
+                bytes: MAX_FILE_BYTES + 1
+            }
+        );
+        assert_eq!(
+            error.args(),
+            vec![
+                ("size", "512 KiB".to_owned()),
+                ("bytes", "524,289".to_owned()),
+                ("limit", "512 KiB".to_owned())
+            ]
+        );
+        let fifty_mb = LessonError::TooBig { bytes: 50 << 20 };
+        assert_eq!(fifty_mb.args()[0], ("size", "50 MiB".to_owned()));
+    }
+
+    #[test]
+    fn fields_are_checked_by_name_with_their_step() {
+        let step = r##"{"route":"#/ik-2r","title":"a"}"##;
+        assert_eq!(
+            import(&with_steps(&format!(
+                r##"[{step},{{"route":"#/ik-2r","title":"b","evil":1}}]"##
+            ))),
+            Err(LessonError::UnknownField {
+                step: Some(2),
+                field: "evil".into()
+            })
+        );
+        assert_eq!(
+            import(&with_steps(r##"[{"route":"#/ik-2r"}]"##)),
+            Err(missing(Some(1), "title"))
+        );
+        assert_eq!(
+            import(&with_steps(
+                r##"[{"route":"#/ik-2r","title":"a","pageSteps":"3"}]"##
+            )),
+            Err(wrong_type(Some(1), "pageSteps", Expected::WholeNumber))
+        );
+        assert_eq!(
+            import(&with_steps(
+                r##"[{"route":"#/ik-2r","title":"a","pageSteps":5000}]"##
+            )),
+            Err(LessonError::TooManyPageSteps { step: 1 })
+        );
+        assert_eq!(
+            import(&with_steps(r#"[{"route":7,"title":"a"}]"#)),
+            Err(wrong_type(Some(1), "route", Expected::Text))
+        );
+        assert_eq!(
+            import(&with_steps(r##"["#/ik-2r"]"##)),
+            Err(LessonError::StepNotAnObject { step: 1 })
+        );
+        assert_eq!(
+            import(&with_steps("{}")),
+            Err(wrong_type(None, "steps", Expected::List))
+        );
+        assert_eq!(
+            import(r#"{"format":"bsv-lesson","version":1,"steps":[],"extra":0}"#),
+            Err(LessonError::UnknownField {
+                step: None,
+                field: "extra".into()
+            })
+        );
+        assert_eq!(
+            import(r#"{"format":"bsv-lesson","version":1,"steps":[]}"#),
+            Err(missing(None, "title"))
+        );
+    }
+
+    #[test]
+    fn an_empty_lesson_is_refused_as_a_file_but_read_from_storage() {
+        let empty = with_steps("[]");
+        assert_eq!(import(&empty), Err(LessonError::NoSteps));
+        assert_eq!(
+            from_stored(&empty, is_page),
+            Ok(Lesson {
+                title: "T".into(),
+                steps: vec![]
+            })
+        );
+    }
+
+    #[test]
+    fn script_like_text_stays_text_and_a_route_must_name_a_page() {
+        let text = with_steps(
+            r##"[{"route":"#/ik-2r?q1=0.3","title":"<script>alert(1)</script>","note":"javascript:alert(1) <img src=x onerror=alert(1)>"}]"##,
+        );
+        let lesson = import(&text).unwrap_or_default();
+        assert_eq!(lesson.steps[0].title, "<script>alert(1)</script>");
+        assert!(lesson.steps[0].note.starts_with("javascript:alert(1) <img"));
+        for route in [
+            "javascript:alert(1)",
+            "https://example.com/#/ik-2r",
+            "#/lesson",
+        ] {
+            let text = with_steps(&format!(r#"[{{"route":"{route}","title":"a"}}]"#));
+            assert!(
+                matches!(import(&text), Err(LessonError::UnknownPage { step: 1, .. })),
+                "{route}"
+            );
+        }
+        // A route is rebuilt by the URL codec: a link on the page is always `#/<page>?...`.
+        let text = with_steps(r##"[{"route":"#/ik%2D2r?q1=<b>","title":"a"}]"##);
+        assert_eq!(
+            import(&text).map(|l| l.steps[0].route.clone()),
+            Ok("#/ik-2r?q1=%3Cb%3E".into())
+        );
+    }
+
+    #[test]
+    fn quoted_file_text_is_short_and_printable() {
+        let e = LessonError::UnknownField {
+            step: None,
+            field: format!("a\u{0}{}", "x".repeat(100)),
+        };
+        let field = &e.args()[0].1;
+        assert!(field.starts_with("a\u{fffd}x") && field.ends_with('…'));
+        assert_eq!(field.chars().count(), MAX_QUOTED_CHARS + 1);
+    }
+
+    #[test]
+    fn every_error_has_a_message_in_both_languages() {
+        let i18n = I18n::new();
+        let errors = [
+            LessonError::NotText { detail: "x".into() },
+            LessonError::Decode(RecipeError::InputUtf16 { name: "x".into() }),
+            LessonError::TooBig { bytes: 1 },
+            LessonError::EmptyFile,
+            LessonError::TooDeep {
+                line: 1,
+                column: 17,
+            },
+            LessonError::NotJson { line: 1, column: 1 },
+            LessonError::NotAnObject { kind: "array" },
+            LessonError::StepNotAnObject { step: 1 },
+            LessonError::NoFormat,
+            LessonError::WrongFormat { found: "x".into() },
+            LessonError::WrongVersion { found: 2 },
+            LessonError::UnknownField {
+                step: None,
+                field: "x".into(),
+            },
+            LessonError::UnknownField {
+                step: Some(1),
+                field: "x".into(),
+            },
+            missing(None, "title"),
+            missing(Some(1), "title"),
+            wrong_type(None, "steps", Expected::List),
+            wrong_type(Some(1), "route", Expected::Text),
+            LessonError::NoSteps,
+            LessonError::TooManySteps { count: 61 },
+            LessonError::UnknownPage {
+                step: 1,
+                page: "x".into(),
+            },
+            LessonError::TooLong {
+                step: 1,
+                field: "note",
+            },
+            LessonError::TooManyPageSteps { step: 1 },
+            LessonError::TitleTooLong,
+        ];
+        for e in &errors {
+            for lang in Lang::ALL {
+                assert!(i18n.has_message(lang, e.message_id()), "{lang:?} {e:?}");
+            }
+            assert!(e.message_id().starts_with("lesson-error-"));
+        }
+    }
+}
