@@ -123,7 +123,6 @@ pub fn locale_files(lang: Lang) -> &'static [(&'static str, &'static str)] {
     }
 }
 
-
 /// One argument of a message: text, or a number (numbers select plural variants such as
 /// `[one]` in English and are printed without trailing zeros: `2`, `0.12`).
 #[derive(Debug, Clone, PartialEq)]

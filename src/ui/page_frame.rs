@@ -60,6 +60,9 @@ fn frame(def: &PageDef) -> Result<Element, JsValue> {
     section.set_attribute("data-testid", "page-frame")?;
     section.set_attribute("data-page", def.id)?;
     dom::append(&section, &dom::el_i18n("h1", "", def.title_id)?)?;
-    dom::append(&section, &dom::el_i18n("p", "page-frame-blurb", def.blurb_id)?)?;
+    dom::append(
+        &section,
+        &dom::el_i18n("p", "page-frame-blurb", def.blurb_id)?,
+    )?;
     Ok(section)
 }

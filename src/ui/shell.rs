@@ -621,14 +621,16 @@ fn loaded(
         Ok(mount) => {
             dom::clear(&main);
             mount_page(def, mount, &main, query)?;
-            let pending: Vec<ShellRequest> =
-                ROUTING.with(|routing| routing.pending.take());
+            let pending: Vec<ShellRequest> = ROUTING.with(|routing| routing.pending.take());
             perform_all(pending)
         }
         Err(_) => {
             web_sys::console::warn_1(
-                &format!("BSV Playground: the code of page '{}' could not be loaded", def.id)
-                    .into(),
+                &format!(
+                    "BSV Playground: the code of page '{}' could not be loaded",
+                    def.id
+                )
+                .into(),
             );
             let retry = page_frame::show_failed(&main, def)?;
             let query = RefCell::new(Some(query));

@@ -51,10 +51,7 @@ pub(super) struct Exports {
 impl Exports {
     pub fn find(root: &Element) -> Result<Exports, JsValue> {
         let files: Vec<&str> = EXPORTS.iter().map(|e| e.file).collect();
-        let fields = EXPORTS
-            .iter()
-            .map(|e| recipe_fields(e.recipe))
-            .collect();
+        let fields = EXPORTS.iter().map(|e| recipe_fields(e.recipe)).collect();
         Ok(Exports {
             root: root.clone(),
             panel: kit::Exports::find_runs(root, "ik2r", &files)?,
