@@ -20,6 +20,9 @@ export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
 
 profile=--release
 [[ "${1:-}" == "--dev" ]] && profile=--dev
+# BSV_FEATURES=bench builds the app with the bench hooks; DIST_DIR says where (default dist).
+features=split${BSV_FEATURES:+,$BSV_FEATURES}
+out=${DIST_DIR:-dist}
 
 if [[ "$profile" == --release ]]; then
   cargo_profile=(--release); built=release
@@ -29,7 +32,7 @@ fi
 # Its own target dir: the relocation flag would otherwise rebuild the checks' artifacts.
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-Clink-args=--emit-relocs" \
   cargo build --lib --target wasm32-unknown-unknown --no-default-features --locked \
-  --target-dir target/app "${cargo_profile[@]}"
+  --target-dir target/app "${cargo_profile[@]}" --features "$features"
 rm -rf target/app/split pkg
 wasm-split-cli "target/app/wasm32-unknown-unknown/$built/bsv_playground.wasm" target/app/split \
   --out-name bsv_playground
@@ -42,27 +45,27 @@ if [[ "$profile" == --release ]]; then
     pkg/bsv_playground_bg.wasm -o pkg/bsv_playground_bg.wasm
 fi
 
-rm -rf dist
-mkdir -p dist/pkg
-cp index.html dist/
-cp -r www dist/www
+rm -rf "$out"
+mkdir -p "$out"/pkg
+cp index.html "$out"/
+cp -r www "$out"/www
 {
   cat www/app.css
   find src/ui -name '*.css' -print0 | LC_ALL=C sort -z | while IFS= read -r -d '' css; do
     printf '\n/* ---- %s ---- */\n' "$css"
     cat "$css"
   done
-} > dist/www/app.css
-cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm dist/pkg/
-node scripts/split-link.mjs target/app/split dist/pkg dist/www
+} > "$out"/www/app.css
+cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm "$out"/pkg/
+node scripts/split-link.mjs target/app/split "$out"/pkg "$out"/www
 # wasm-bindgen `inline_js` / `module` snippets, if any crate uses them.
-[[ -d pkg/snippets ]] && cp -r pkg/snippets dist/pkg/
+[[ -d pkg/snippets ]] && cp -r pkg/snippets "$out"/pkg/
 # A release build is minified (the glue and the stylesheet; scripts/minify.mjs).
-[[ "$profile" == --release ]] && node scripts/minify.mjs dist
-# The offline service worker of exactly these files (dist/sw.js; see www/sw.js).
-node scripts/sw-build.mjs dist
+[[ "$profile" == --release ]] && node scripts/minify.mjs "$out"
+# The offline service worker of exactly these files (sw.js; see www/sw.js).
+node scripts/sw-build.mjs "$out"
 
 size() { gzip -9 -c "$@" | wc -c; }
-printf 'dist/ ready (%s): wasm %s B (gzip %s B); wasm+js+css+html gzip %s B\n' \
-  "${profile#--}" "$(wc -c < dist/pkg/bsv_playground_bg.wasm)" "$(size dist/pkg/bsv_playground_bg.wasm)" \
-  "$(cat dist/pkg/* dist/www/* dist/index.html | gzip -9 -c | wc -c)"
+printf '%s/ ready (%s): main wasm %s B (gzip %s B); node scripts/size.mjs %s for every file\n' \
+  "$out" "${profile#--}" "$(wc -c < "$out"/pkg/bsv_playground_bg.wasm)" \
+  "$(size "$out"/pkg/bsv_playground_bg.wasm)" "$out"

@@ -2,20 +2,37 @@
 //! before its first frame and the other one when the visitor switches (or in the background
 //! once the first page is shown), so a first visit carries one language's text, not both.
 
-use wasm_split_helpers::{wasm_split, SplitLoaderError};
+#[cfg(feature = "split")]
+use wasm_split_helpers::wasm_split;
+use wasm_split_helpers::SplitLoaderError;
 
 use crate::i18n::{self, Lang};
 use crate::ui::ctx;
 
+type Files = &'static [(&'static str, &'static str)];
+
 /// The Fluent files of English (file name, text): what the `strings_en` chunk holds.
+#[cfg(feature = "split")]
 #[wasm_split(strings_en, fallible)]
-fn strings_en() -> Result<&'static [(&'static str, &'static str)], SplitLoaderError> {
+fn strings_en() -> Result<Files, SplitLoaderError> {
     Ok(i18n::EN_FILES)
 }
 
 /// The Fluent files of Japanese: what the `strings_ja` chunk holds.
+#[cfg(feature = "split")]
 #[wasm_split(strings_ja, fallible)]
-fn strings_ja() -> Result<&'static [(&'static str, &'static str)], SplitLoaderError> {
+fn strings_ja() -> Result<Files, SplitLoaderError> {
+    Ok(i18n::JA_FILES)
+}
+
+/// Without the `split` feature both languages are in the one wasm.
+#[cfg(not(feature = "split"))]
+async fn strings_en() -> Result<Files, SplitLoaderError> {
+    Ok(i18n::EN_FILES)
+}
+
+#[cfg(not(feature = "split"))]
+async fn strings_ja() -> Result<Files, SplitLoaderError> {
     Ok(i18n::JA_FILES)
 }
 

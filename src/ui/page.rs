@@ -170,6 +170,7 @@ pub struct PageDef {
 /// One line of the page table: `page!(chunk, PageType, id, title_id, blurb_id, nav)` registers
 /// `PageType` under route `#/<id>` with its code split off into the wasm chunk `chunk`, fetched
 /// on the page's first visit (or in the background after the first page is shown).
+#[cfg(feature = "split")]
 macro_rules! page {
     ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $blurb_id:expr, $nav:expr) => {
         $crate::ui::page::PageDef {
@@ -184,6 +185,24 @@ macro_rules! page {
                     Ok($crate::ui::page::mount_boxed::<$page>)
                 }
                 || -> $crate::ui::page::PageLoad { Box::pin($chunk()) }
+            },
+        }
+    };
+}
+
+/// Without the `split` feature (tests, benches) every page is in the one wasm.
+#[cfg(not(feature = "split"))]
+macro_rules! page {
+    ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $blurb_id:expr, $nav:expr) => {
+        $crate::ui::page::PageDef {
+            id: $id,
+            title_id: $title_id,
+            blurb_id: $blurb_id,
+            nav: $nav,
+            load: || -> $crate::ui::page::PageLoad {
+                Box::pin(std::future::ready(Ok(
+                    $crate::ui::page::mount_boxed::<$page> as $crate::ui::page::MountFn,
+                )))
             },
         }
     };

@@ -101,10 +101,8 @@ pub(crate) fn start(lang: Lang) -> Result<(), JsValue> {
             window.scroll_to_with_x_and_y(0.0, 0.0);
         }
     })?;
+    install_load_progress()?;
     mount_route(&router::current_route())?;
-    if let Some(html) = document.document_element() {
-        html.set_attribute("data-app-ready", "1")?;
-    }
     crate::ui::schedule::after_paint(|| wasm_bindgen_futures::spawn_local(load_the_rest()))?;
     Ok(())
 }
@@ -553,7 +551,10 @@ fn mount_route(route: &Route) -> Result<(), JsValue> {
     ROUTING.with(|routing| routing.def.set(def));
     match def {
         Some(def) => load_page(def, generation, route.page_query())?,
-        None => render_not_found(&main)?,
+        None => {
+            render_not_found(&main)?;
+            mark_ready()?;
+        }
     }
     route_changed(def)?;
     if router::lang_in_url() && route.lang() != Some(ctx::lang()) {
@@ -609,6 +610,44 @@ fn load_page(
     Ok(())
 }
 
+/// The loader's `bsv-chunk-progress` events (bytes of a chunk arrived) move the loading line's
+/// progress bar, while it is shown.
+fn install_load_progress() -> Result<(), JsValue> {
+    let window = dom::window()?;
+    dom::Listener::new(&window, "bsv-chunk-progress", |event| {
+        let detail = event
+            .dyn_ref::<web_sys::CustomEvent>()
+            .map(|e| e.detail())
+            .unwrap_or(JsValue::UNDEFINED);
+        let number = |key: &str| {
+            js_sys::Reflect::get(&detail, &JsValue::from_str(key))
+                .ok()
+                .and_then(|v| v.as_f64())
+                .unwrap_or(0.0)
+        };
+        if let Ok(main) = main_element() {
+            report(page_frame::show_progress(
+                &main,
+                number("loaded"),
+                number("total"),
+            ));
+        }
+    })?
+    .forever();
+    Ok(())
+}
+
+/// `html[data-app-ready]`: the first route is settled (its page mounted, or the message that
+/// it could not be loaded, or "not found"); tests and the first-frame bench wait for it.
+fn mark_ready() -> Result<(), JsValue> {
+    if let Some(html) = dom::document()?.document_element() {
+        if !html.has_attribute("data-app-ready") {
+            html.set_attribute("data-app-ready", "1")?;
+        }
+    }
+    Ok(())
+}
+
 /// The chunk of page `def` landed (or failed to).
 fn loaded(
     def: &'static PageDef,
@@ -621,6 +660,7 @@ fn loaded(
         Ok(mount) => {
             dom::clear(&main);
             mount_page(def, mount, &main, query)?;
+            mark_ready()?;
             let pending: Vec<ShellRequest> = ROUTING.with(|routing| routing.pending.take());
             perform_all(pending)
         }
@@ -633,6 +673,7 @@ fn loaded(
                 .into(),
             );
             let retry = page_frame::show_failed(&main, def)?;
+            mark_ready()?;
             let query = RefCell::new(Some(query));
             dom::Listener::new(&retry, "click", move |_| {
                 if let Some(query) = query.borrow_mut().take() {

@@ -20,7 +20,9 @@ use std::rc::Rc;
 use js_sys::{Array, Reflect, Uint8Array};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
-use wasm_split_helpers::{wasm_split, SplitLoaderError};
+#[cfg(feature = "split")]
+use wasm_split_helpers::wasm_split;
+use wasm_split_helpers::SplitLoaderError;
 use web_sys::{Blob, ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
 
 use crate::error::RecipeError;
@@ -173,8 +175,22 @@ pub async fn worker_run_recipe(
 }
 
 /// The worker's chunk: every kernel, called by [`run_in_worker`].
+#[cfg(feature = "split")]
 #[wasm_split(worker, fallible)]
 fn worker_chunk(
+    id: String,
+    args: Vec<String>,
+    names: Vec<String>,
+    inputs: Array,
+    progress: js_sys::Function,
+    envelope: u32,
+) -> Result<Result<JsValue, JsValue>, SplitLoaderError> {
+    Ok(run_in_worker(&id, args, names, inputs, &progress, envelope))
+}
+
+/// Without the `split` feature the kernels are in the one wasm.
+#[cfg(not(feature = "split"))]
+async fn worker_chunk(
     id: String,
     args: Vec<String>,
     names: Vec<String>,
