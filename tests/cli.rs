@@ -580,3 +580,60 @@ fn umeyama_options_write_the_points_and_leave_the_recipe_alone() {
         "bsv: umeyama-2d: x: need 2 values, got 1"
     );
 }
+
+/// An SO-101 episode: 120 steps along x and down, then the gripper closed on nothing.
+fn so101_episode_csv() -> (String, bsv_playground::so101::Episode) {
+    use bsv_playground::so101::{episode_csv, Command, Episode, SceneConfig};
+    let commands: Vec<Command> = (0..150)
+        .map(|k| Command::with_axes([0.6, 0.2, -0.3, 0.0, 0.1, -0.2], k >= 120))
+        .collect();
+    let episode = Episode::record(SceneConfig::default_for(false), &commands).unwrap();
+    (episode_csv(&episode), episode)
+}
+
+#[test]
+fn teleop_replay_takes_so101_episodes_too() {
+    let dir = temp_dir("so101-ok");
+    let (text, episode) = so101_episode_csv();
+    let path = dir.join("so101_episode_1.csv");
+    std::fs::write(&path, &text).unwrap();
+    let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.starts_with(&format!(
+        "replayed {} steps of pick-place (dls): every recorded step reproduced exactly\n",
+        episode.records.len()
+    )));
+    assert!(stdout.contains("\ngrasp_misses: 1\n"), "{stdout}");
+    assert!(
+        stdout.contains("\nproposed_label: FAILURE (grasp-miss)\n"),
+        "{stdout}"
+    );
+    // One ulp off in step 40's q2: exit 1 naming it.
+    let header_row = text.lines().position(|l| l.starts_with("t_s,")).unwrap();
+    let q2 = episode.records[39].q[1];
+    let lines: Vec<String> = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            if i == header_row + 40 {
+                let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
+                cells[16] = bsv_playground::pyfmt::py_float(f64::from_bits(q2.to_bits() + 1));
+                cells.join(",")
+            } else {
+                l.to_string()
+            }
+        })
+        .collect();
+    let tampered = dir.join("tampered.csv");
+    std::fs::write(&tampered, lines.join("\n")).unwrap();
+    let out = bsv(&["teleop-replay", tampered.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("step 40: q2 differs"), "{err}");
+}

@@ -16,6 +16,7 @@ use crate::teleop::episode::{
     mismatch, propose, same_bool, same_f64, FailureCategory, Label, ReplayMismatch,
 };
 use crate::teleop::metrics::EpisodeMetrics;
+use crate::teleop::session::{run_length, PracticeEpisode};
 use crate::teleop::sim::{Event, Outcome};
 use crate::teleop::TeleopError;
 
@@ -473,4 +474,130 @@ fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismat
         return Err(mismatch(step, "event", text(&e.events), text(&g.events)));
     }
     Ok(())
+}
+
+/// An SO-101 episode as stored (localStorage): configuration, start state and the
+/// run-length coded commands.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StoredEpisode {
+    /// The config.
+    pub config: SceneConfig,
+    /// The start state.
+    pub start: State,
+    /// `(count, command)` runs.
+    pub runs: Vec<(u32, Command)>,
+}
+
+/// A stored SO-101 episode being simulated again.
+#[derive(Debug, Clone)]
+pub struct Loading {
+    recorder: EpisodeRecorder,
+    runs: Vec<(u32, Command)>,
+    /// Index of the current run and steps done of it.
+    at: (usize, u32),
+}
+
+impl PracticeEpisode for Episode {
+    type Stored = StoredEpisode;
+    type Loading = Loading;
+    const EMBODIMENT: &'static str = super::scene::EMBODIMENT;
+    const FILE_PREFIX: &'static str = "so101";
+
+    fn metrics(&self) -> EpisodeMetrics {
+        Episode::metrics(self)
+    }
+
+    fn task_id(&self) -> &'static str {
+        self.config.task_id()
+    }
+
+    fn csv(&self) -> String {
+        episode_csv(self)
+    }
+
+    fn parse_csv(text: &str) -> Result<Self, String> {
+        parse_episode_csv(text).map_err(|e| e.to_string())
+    }
+
+    fn replays(&self) -> bool {
+        replay(self).is_ok()
+    }
+
+    fn proposed_label(&self) -> (Label, Option<FailureCategory>) {
+        Episode::proposed_label(self)
+    }
+
+    fn for_each_event(&self, f: &mut dyn FnMut(usize, f64, &Event)) {
+        for (i, r) in self.records.iter().enumerate() {
+            for e in &r.events {
+                f(i + 1, r.t_s, e);
+            }
+        }
+    }
+
+    fn steps(&self) -> usize {
+        self.commands.len()
+    }
+
+    fn control_summary(&self) -> (&'static str, f64, u32, f64) {
+        let c = &self.config;
+        (
+            c.control.method.id(),
+            c.control.lambda,
+            c.latency_steps,
+            c.noise_sigma,
+        )
+    }
+
+    fn stored(&self) -> StoredEpisode {
+        StoredEpisode {
+            config: self.config.clone(),
+            start: self.start.clone(),
+            runs: run_length(&self.commands),
+        }
+    }
+
+    fn stored_steps(stored: &StoredEpisode) -> usize {
+        stored.runs.iter().map(|(n, _)| *n as usize).sum()
+    }
+
+    fn load(stored: StoredEpisode) -> Option<Loading> {
+        let recorder = EpisodeRecorder::new(stored.config).ok()?;
+        if *recorder.sim().start_state() != stored.start {
+            return None;
+        }
+        Some(Loading {
+            recorder,
+            runs: stored.runs,
+            at: (0, 0),
+        })
+    }
+
+    fn load_run(l: &mut Loading, max_steps: usize) -> usize {
+        let mut done = 0;
+        while done < max_steps {
+            let Some((n, c)) = l.runs.get(l.at.0).copied() else {
+                break;
+            };
+            if l.at.1 >= n {
+                l.at = (l.at.0 + 1, 0);
+                continue;
+            }
+            l.recorder.step(&c);
+            l.at.1 += 1;
+            done += 1;
+        }
+        done
+    }
+
+    fn load_done(l: &Loading) -> bool {
+        l.runs[l.at.0.min(l.runs.len())..]
+            .iter()
+            .enumerate()
+            .all(|(i, (n, _))| if i == 0 { l.at.1 >= *n } else { *n == 0 })
+    }
+
+    fn loaded(l: Loading) -> Self {
+        l.recorder.into_episode()
+    }
 }
