@@ -8,10 +8,11 @@
 //! manipulability), [`control`] (the four IK methods on the 6×5 Jacobian), [`scene`] (table,
 //! cube, goal, obstacle, [`SceneConfig`]), [`sim`] (one 10 ms [`Sim::step`] and its events, the
 //! planar arm's [`crate::teleop::Event`]s) and [`episode`] (recording, CSV, exact replay, the
-//! session's episode kind).
+//! session's episode kind), and [`input`] (Isaac Lab's keyboard and gamepad mapping).
 
 pub mod control;
 pub mod episode;
+pub mod input;
 pub mod kinematics;
 pub mod model;
 pub mod scene;
