@@ -9,7 +9,7 @@ use glam::{DMat3, DVec2, DVec3};
 use crate::camera3d::{hit_point, Camera};
 use crate::so101::kinematics::{Chain, Frame};
 use crate::so101::model::joint_limits;
-use crate::so101::scene::{base_box, link_boxes, obstacle_box, Obb, CUBE_HALF, GOAL_HALF, TABLE_Z};
+use crate::so101::scene::{base_box, link_boxes, obstacle_box, Obb, GOAL_HALF, TABLE_Z};
 use crate::view::scene3d::{AxisPalette, Layer, Scene, Shape3, Stroke};
 
 /// The point the world view looks at and the radius it frames, m.
