@@ -13,9 +13,9 @@ use crate::so101::scene::{base_box, link_boxes, obstacle_box, Obb, GOAL_HALF, TA
 use crate::view::scene3d::{AxisPalette, Layer, Scene, Shape3, Stroke};
 
 /// The point the world view looks at and the radius it frames, m.
-pub const VIEW_TARGET: [f64; 3] = [0.14, 0.0, 0.08];
+pub const VIEW_TARGET: [f64; 3] = [0.15, 0.02, 0.07];
 /// See [`VIEW_TARGET`].
-pub const VIEW_RADIUS: f64 = 0.3;
+pub const VIEW_RADIUS: f64 = 0.2;
 /// Gizmo arrow length, m.
 pub const GIZMO_M: f64 = 0.06;
 /// Yaw ring radius, m.
@@ -138,9 +138,10 @@ pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
     }
 }
 
-/// The wrist camera's scene (no grid, no gizmo).
+/// The wrist camera's scene (no gizmo).
 pub fn wrist(scene: &mut Scene, look: &Look) {
     scene.clear();
+    scene.grid(8, 0.05, TABLE);
     things(scene, look);
 }
 
