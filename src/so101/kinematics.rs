@@ -41,13 +41,32 @@ impl Frame {
 
     /// Roll, pitch, yaw (rad) with `R = Rz(yaw) Ry(pitch) Rx(roll)`.
     pub fn rpy(&self) -> [f64; 3] {
-        let r = &self.rot;
-        [
-            crate::math::atan2(r[2][1], r[2][2]),
-            crate::math::asin((-r[2][0]).clamp(-1.0, 1.0)),
-            crate::math::atan2(r[1][0], r[0][0]),
-        ]
+        rpy_of(&self.rot)
     }
+
+    /// Roll, pitch, yaw (rad) of the tool's turn from pointing straight down (its x axis along
+    /// −z, its z axis along +z of the world turned a quarter about y): `R Ry(π/2)ᵀ = Rz(yaw)
+    /// Ry(pitch) Rx(roll)`. The page's readouts and the episode CSV use these, zero with the
+    /// gripper straight down, far from the gimbal lock plain `rpy` has there.
+    pub fn rpy_from_down(&self) -> [f64; 3] {
+        let r = &self.rot;
+        // Ry(π/2)ᵀ = [[0, 0, −1], [0, 1, 0], [1, 0, 0]].
+        let m = [
+            [r[0][2], r[0][1], -r[0][0]],
+            [r[1][2], r[1][1], -r[1][0]],
+            [r[2][2], r[2][1], -r[2][0]],
+        ];
+        rpy_of(&m)
+    }
+}
+
+/// Roll, pitch, yaw (rad) of `r = Rz(yaw) Ry(pitch) Rx(roll)`.
+pub fn rpy_of(r: &Mat3) -> [f64; 3] {
+    [
+        crate::math::atan2(r[2][1], r[2][2]),
+        crate::math::asin((-r[2][0]).clamp(-1.0, 1.0)),
+        crate::math::atan2(r[1][0], r[0][0]),
+    ]
 }
 
 /// Every frame of the arm at one joint vector.

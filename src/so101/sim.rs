@@ -184,7 +184,8 @@ pub struct StepRecord {
     pub q: [f64; 5],
     /// Tool position, m.
     pub tool: [f64; 3],
-    /// Tool roll, pitch, yaw, rad.
+    /// Tool roll, pitch, yaw from pointing straight down
+    /// ([`super::kinematics::Frame::rpy_from_down`]), rad.
     pub rpy: [f64; 3],
     /// Gripper state.
     pub gripper_closed: bool,
@@ -310,7 +311,7 @@ impl Sim {
             applied,
             q: s.q,
             tool: c.tool.pos,
-            rpy: c.tool.rpy(),
+            rpy: c.tool.rpy_from_down(),
             gripper_closed: s.gripper_closed,
             held: s.cube.held,
             cube: s.cube.pos,

@@ -199,7 +199,7 @@ fn settings() -> String {
          <form data-so101=\"settings\" novalidate>\
          <label><span data-i18n=\"teleop-field-pilot\"></span><input type=\"text\" data-field=\"pilot\" maxlength=\"64\"></label>\
          <label><span data-i18n=\"teleop-field-ik\"></span><select data-field=\"method\">{methods}</select></label>\
-         <label><span data-i18n=\"teleop-field-latency\"></span><input type=\"number\" data-field=\"latency_ms\" min=\"0\" max=\"500\" step=\"10\" value=\"0\"></label>\
+         <label><span data-i18n=\"teleop-field-latency_ms\"></span><input type=\"number\" data-field=\"latency_ms\" min=\"0\" max=\"500\" step=\"10\" value=\"0\"></label>\
          <label><span data-i18n=\"teleop-field-noise\"></span><input type=\"number\" data-field=\"noise_sigma\" min=\"0\" max=\"1\" step=\"0.05\" value=\"0\"></label>\
          <label class=\"so101-check-label\"><input type=\"checkbox\" data-field=\"obstacle\"><span data-i18n=\"so101-field-obstacle\"></span></label>\
          <p class=\"so101-help\" data-i18n=\"so101-settings-note\"></p>\
