@@ -30,17 +30,20 @@ use crate::teleop::control::IkMethod;
 use crate::teleop::session::{
     category_from_id, clean_pilot_id, label_from_id, InputDevice, Module, Session,
 };
+use crate::ui::kit::drag::DragEvent;
 use crate::ui::kit::frame::FrameLoop;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::{ctx, dom};
+use crate::view::so101::{drag_axes, Handle};
 use crate::view::teleop_input::{Accumulator, GAMEPAD_DEAD_ZONE};
+use glam::DVec3;
 
 use devices::Devices;
 use practice::{Ended, Practice, STORE_KEY};
 use session_view::SessionView;
-use views::Views;
+use views::{Shared, Views};
 
 /// Save the session this often while recording, ms.
 const SAVE_EVERY_MS: f64 = 2000.0;
@@ -57,8 +60,8 @@ struct Live {
 struct Inner {
     me: Weak<Inner>,
     root: Element,
-    practice: RefCell<Practice>,
-    devices: RefCell<Devices>,
+    practice: Rc<RefCell<Practice>>,
+    devices: Rc<RefCell<Devices>>,
     views: RefCell<Option<Views>>,
     readouts: Readouts,
     session: SessionView,
@@ -69,6 +72,8 @@ struct Inner {
     offer_declined: Cell<bool>,
     frame: RefCell<Option<FrameLoop>>,
     scope: RefCell<Scope>,
+    /// The views' hold on the state (kept alive with the page).
+    shared: RefCell<Option<Rc<Shared>>>,
 }
 
 /// The SO-101 page.
@@ -107,11 +112,15 @@ impl Page for So101Page {
         };
         let readouts = Readouts::find(&root)?;
         let session = SessionView::find(&root)?;
+        let shared = Rc::new(Shared {
+            practice: Rc::new(RefCell::new(practice)),
+            devices: Rc::new(RefCell::new(Devices::default())),
+        });
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| Inner {
             me: me.clone(),
             root: root.clone(),
-            practice: RefCell::new(practice),
-            devices: RefCell::new(Devices::default()),
+            practice: shared.practice.clone(),
+            devices: shared.devices.clone(),
             views: RefCell::new(None),
             readouts,
             session,
@@ -122,9 +131,16 @@ impl Page for So101Page {
             offer_declined: Cell::new(false),
             frame: RefCell::new(None),
             scope: RefCell::new(Scope::new()),
+            shared: RefCell::new(None),
         });
-        let views = Views::new(&root, &inner.me)?;
+        let me = inner.me.clone();
+        let views = Views::new(&root, &shared, move |e, tool| {
+            if let Some(p) = me.upgrade() {
+                p.gizmo(e, tool);
+            }
+        })?;
         *inner.views.borrow_mut() = Some(views);
+        *inner.shared.borrow_mut() = Some(shared);
         inner.install()?;
         inner.write_settings();
         inner.show_all();
@@ -575,5 +591,48 @@ impl Inner {
         let p = self.practice.borrow();
         let record = views::shown_record(&p);
         views::write_readouts(&self.readouts, &p, &record);
+    }
+}
+
+impl Inner {
+    /// A drag on the gizmo: the clutch holds while the pointer does.
+    fn gizmo(&self, e: DragEvent<Handle>, tool: DVec3) {
+        let camera = self
+            .views
+            .try_borrow()
+            .ok()
+            .and_then(|v| v.as_ref().map(|v| v.orbit.camera()));
+        let Some(camera) = camera else {
+            return;
+        };
+        let Ok(mut d) = self.devices.try_borrow_mut() else {
+            return;
+        };
+        match e {
+            DragEvent::Start { handle, at, .. } => {
+                d.clutch = Some(devices::Clutch {
+                    handle,
+                    start: at,
+                    now: at,
+                });
+                d.clutch_axes = [0.0; 6];
+                d.fresh = true;
+            }
+            DragEvent::Move { at, .. } => {
+                if let Some(c) = d.clutch.as_mut() {
+                    c.now = at;
+                    let (h, s) = (c.handle, c.start);
+                    d.clutch_axes = drag_axes(&camera, h, tool, s, at);
+                    d.fresh = true;
+                }
+            }
+            DragEvent::End { .. } => {
+                d.clutch = None;
+                d.clutch_axes = [0.0; 6];
+            }
+            _ => {}
+        }
+        drop(d);
+        self.request_frame();
     }
 }

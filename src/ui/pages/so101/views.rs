@@ -9,8 +9,8 @@ use glam::{DVec2, DVec3};
 use wasm_bindgen::JsValue;
 use web_sys::{Element, KeyboardEvent};
 
+use super::devices::Devices;
 use super::practice::Practice;
-use super::Inner;
 use crate::so101::kinematics::chain;
 use crate::so101::scene::{Obb, CUBE_HALF, JAW_CLOSED, JAW_HOLDING, JAW_OPEN};
 use crate::so101::sim::StepRecord;
@@ -22,16 +22,23 @@ use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
 use crate::view::scene3d::{AxisPalette, Scene};
 use crate::view::so101::{
-    deg, drag_axes, handle_at, joint_text, mm, world, wrist, wrist_camera, Handle, Look,
-    VIEW_RADIUS, VIEW_TARGET,
+    deg, handle_at, joint_text, mm, world, wrist, wrist_camera, Handle, Look, VIEW_RADIUS,
+    VIEW_TARGET,
 };
+
+/// The state the views draw: the practice and the devices (the gizmo held).
+#[derive(Clone)]
+pub struct Shared {
+    pub practice: Rc<RefCell<Practice>>,
+    pub devices: Rc<RefCell<Devices>>,
+}
 
 /// The views.
 pub struct Views {
-    orbit: OrbitView<Handle>,
+    pub orbit: OrbitView<Handle>,
     wrist: RefCell<LayeredCanvas>,
     wrist_scene: RefCell<Scene>,
-    page: Weak<Inner>,
+    shared: Weak<Shared>,
 }
 
 /// The record the views and readouts show: the replayed step, else the live state.
@@ -66,21 +73,21 @@ fn look_parts(p: &Practice, record: &StepRecord) -> (crate::so101::Chain, Obb) {
 }
 
 fn draw_world(
-    page: &Weak<Inner>,
+    shared: &Weak<Shared>,
     canvas: &LayeredCanvas,
     camera: &Camera,
     ink: Ink,
     scene: &RefCell<Scene>,
 ) {
-    let Some(inner) = page.upgrade() else {
+    let Some(shared) = shared.upgrade() else {
         return;
     };
-    let Ok(p) = inner.practice.try_borrow() else {
+    let Ok(p) = shared.practice.try_borrow() else {
         return;
     };
     let record = shown_record(&p);
     let (c, cube) = look_parts(&p, &record);
-    let active = inner
+    let active = shared
         .devices
         .try_borrow()
         .ok()
@@ -104,8 +111,13 @@ fn draw_world(
 }
 
 impl Views {
-    /// Builds the world view in its slot and finds the wrist canvas.
-    pub fn new(root: &Element, page: &Weak<Inner>) -> Result<Views, JsValue> {
+    /// Builds the world view in its slot and finds the wrist canvas; `on_gizmo` hears the
+    /// drags of the gizmo's handles with the tool's position.
+    pub fn new(
+        root: &Element,
+        shared: &Rc<Shared>,
+        on_gizmo: impl Fn(DragEvent<Handle>, DVec3) + 'static,
+    ) -> Result<Views, JsValue> {
         let slot: Element = dom::find(root, "[data-so101=\"world\"]", "so101")?;
         let tool = Rc::new(Cell::new(DVec3::ZERO));
         let mut options: OrbitOptions<Handle> = OrbitOptions::new(
@@ -117,33 +129,28 @@ impl Views {
         options.preset = Preset::Iso;
         options.stage_class = "so101-stage";
         let t = tool.clone();
-        let claim_page = page.clone();
+        let weak = Rc::downgrade(shared);
         options.claim = Some(Box::new(move |at: DVec2, _kind, camera: &Camera| {
-            let live = claim_page
+            let live = weak
                 .upgrade()
-                .and_then(|p| p.practice.try_borrow().ok().map(|p| p.replay.is_none()));
+                .and_then(|s| s.practice.try_borrow().ok().map(|p| p.replay.is_none()));
             if live != Some(true) {
                 return None;
             }
             handle_at(camera, t.get(), at)
         }));
-        let drag_page = page.clone();
         let t = tool.clone();
-        options.on_handle = Some(Box::new(move |e: DragEvent<Handle>| {
-            if let Some(p) = drag_page.upgrade() {
-                p.gizmo(e, t.get());
-            }
-        }));
+        options.on_handle = Some(Box::new(move |e: DragEvent<Handle>| on_gizmo(e, t.get())));
         let scene = RefCell::new(Scene::new());
-        let draw_page = page.clone();
+        let weak = Rc::downgrade(shared);
         let t = tool;
         let orbit = OrbitView::new(&slot, options, move |canvas, camera, ink| {
-            if let Some(inner) = draw_page.upgrade() {
-                if let Ok(p) = inner.practice.try_borrow() {
+            if let Some(s) = weak.upgrade() {
+                if let Ok(p) = s.practice.try_borrow() {
                     t.set(DVec3::from_array(shown_record(&p).tool));
                 }
             }
-            draw_world(&draw_page, canvas, camera, ink, &scene);
+            draw_world(&weak, canvas, camera, ink, &scene);
         })?;
         orbit
             .canvas_element()
@@ -154,7 +161,7 @@ impl Views {
             orbit,
             wrist: RefCell::new(wrist),
             wrist_scene: RefCell::new(Scene::new()),
-            page: page.clone(),
+            shared: Rc::downgrade(shared),
         })
     }
 
@@ -184,10 +191,10 @@ impl Views {
     }
 
     fn draw_wrist(&self) {
-        let Some(inner) = self.page.upgrade() else {
+        let Some(shared) = self.shared.upgrade() else {
             return;
         };
-        let Ok(p) = inner.practice.try_borrow() else {
+        let Ok(p) = shared.practice.try_borrow() else {
             return;
         };
         let Ok(mut canvas) = self.wrist.try_borrow_mut() else {
@@ -214,49 +221,6 @@ impl Views {
         let layer = canvas.top();
         layer.begin();
         paint(&layer.ctx, &marks, Ink::current());
-    }
-}
-
-impl Inner {
-    /// A drag on the gizmo: the clutch holds while the pointer does.
-    fn gizmo(&self, e: DragEvent<Handle>, tool: DVec3) {
-        let camera = self
-            .views
-            .try_borrow()
-            .ok()
-            .and_then(|v| v.as_ref().map(|v| v.orbit.camera()));
-        let Some(camera) = camera else {
-            return;
-        };
-        let Ok(mut d) = self.devices.try_borrow_mut() else {
-            return;
-        };
-        match e {
-            DragEvent::Start { handle, at, .. } => {
-                d.clutch = Some(super::devices::Clutch {
-                    handle,
-                    start: at,
-                    now: at,
-                });
-                d.clutch_axes = [0.0; 6];
-                d.fresh = true;
-            }
-            DragEvent::Move { at, .. } => {
-                if let Some(c) = d.clutch.as_mut() {
-                    c.now = at;
-                    let (h, s) = (c.handle, c.start);
-                    d.clutch_axes = drag_axes(&camera, h, tool, s, at);
-                    d.fresh = true;
-                }
-            }
-            DragEvent::End { .. } => {
-                d.clutch = None;
-                d.clutch_axes = [0.0; 6];
-            }
-            _ => {}
-        }
-        drop(d);
-        self.request_frame();
     }
 }
 
