@@ -20,7 +20,10 @@ use super::scene::{
     PLACE_HEIGHT_M, TABLE_Z,
 };
 use crate::rng::NumpyRng;
-use crate::teleop::sim::{Event, Outcome, GRAVITY, LIMIT_REARM_RAD};
+use crate::teleop::rules::{
+    add_noise, clamp_to_limits, delayed, fall, goal_held, limit_speed, new_contacts, tick, time_box,
+};
+use crate::teleop::sim::{Event, Outcome};
 use crate::teleop::TeleopError;
 
 /// Below this smallest singular value of the Jacobian a commanded motion is near a
@@ -347,33 +350,23 @@ impl Sim {
             return self.record(cmd, Command::idle(self.state.gripper_closed), Vec::new());
         }
         let mut events = Vec::new();
-        let mut applied = if self.config.latency_steps == 0 {
-            cmd
-        } else {
-            self.state.pending.push_back(cmd);
-            self.state
-                .pending
-                .pop_front()
-                .unwrap_or(Command::idle(self.state.gripper_closed))
-        };
-        let sigma = self.config.noise_sigma;
-        if sigma > 0.0 {
-            let mut a = applied.axes();
-            for v in a.iter_mut() {
-                *v += sigma * self.rng.standard_normal();
-            }
-            applied = Command::with_axes(a, applied.gripper_closed);
-        }
+        let idle = Command::idle(self.state.gripper_closed);
+        let delayed = delayed(
+            &mut self.state.pending,
+            self.config.latency_steps,
+            cmd,
+            idle,
+        );
+        let mut axes = delayed.axes();
+        add_noise(&mut axes, self.config.noise_sigma, &mut self.rng);
+        let applied = Command::with_axes(axes, delayed.gripper_closed);
         self.move_arm(&applied, &mut events);
         self.operate_gripper(applied.gripper_closed, &mut events);
         self.move_cube();
-        self.state.step += 1;
-        self.state.t_s = self.state.step as f64 / f64::from(Sim::RATE_HZ);
+        tick(&mut self.state.step, &mut self.state.t_s, Sim::RATE_HZ);
         self.check_goal(&mut events);
-        if self.state.done.is_none() && self.state.t_s >= self.config.time_box_s {
-            self.state.done = Some(Outcome::Timeout);
-            events.push(Event::Timeout);
-        }
+        let s = &mut self.state;
+        time_box(s.t_s, self.config.time_box_s, &mut s.done, &mut events);
         self.record(cmd, applied, events)
     }
 
@@ -400,36 +393,19 @@ impl Sim {
         self.state.singular = singular_now;
         let mut dq = solved.unwrap_or([0.0; 5]);
 
-        let mut worst = (1.0, 0usize);
-        for (i, d) in dq.iter().enumerate() {
-            let ratio = d.abs() / (self.config.qd_max[i] * Sim::DT);
-            if ratio > worst.0 {
-                worst = (ratio, i);
-            }
-        }
-        let speed_limited = worst.0 > 1.0;
-        if speed_limited {
-            dq = dq.map(|d| d / worst.0);
-            if !self.state.speed_limited {
-                events.push(Event::SpeedLimit {
-                    joint: worst.1 as u8 + 1,
-                });
-            }
-        }
-        self.state.speed_limited = speed_limited;
-
+        let was = self.state.speed_limited;
+        let qd_max = self.config.qd_max;
+        self.state.speed_limited = limit_speed(&mut dq, &qd_max, Sim::DT, was, events);
         let mut q_new = q;
-        for (i, (lo, hi)) in joint_limits().iter().enumerate() {
-            let target = q[i] + dq[i];
-            let clamped = target.clamp(*lo, *hi);
-            let near = (clamped - lo).min(hi - clamped) < LIMIT_REARM_RAD;
-            let at_limit = clamped != target || (self.state.at_limit[i] && near);
-            if at_limit && !self.state.at_limit[i] {
-                events.push(Event::JointLimit { joint: i as u8 + 1 });
-            }
-            self.state.at_limit[i] = at_limit;
-            q_new[i] = clamped;
-        }
+        let limits = joint_limits();
+        clamp_to_limits(
+            &q,
+            &dq,
+            &limits,
+            &mut self.state.at_limit,
+            &mut q_new,
+            events,
+        );
 
         let mut contact = [false; 7];
         if q_new != q {
@@ -438,12 +414,7 @@ impl Sim {
                 contact[usize::from(link) - 1] = true;
             }
         }
-        for (i, now) in contact.iter().enumerate() {
-            if *now && !self.state.contact[i] {
-                events.push(Event::Collision { link: i as u8 + 1 });
-            }
-        }
-        self.state.contact = contact;
+        new_contacts(&contact, &mut self.state.contact, events);
         if !contact.iter().any(|c| *c) {
             self.state.q = q_new;
         }
@@ -545,11 +516,7 @@ impl Sim {
             return;
         }
         let support = support_below(&cube.pos, obstacle);
-        cube.vz -= GRAVITY * Sim::DT;
-        cube.pos[2] += cube.vz * Sim::DT;
-        if cube.pos[2] - CUBE_HALF <= support {
-            cube.pos[2] = support + CUBE_HALF;
-            cube.vz = 0.0;
+        if fall(&mut cube.pos[2], &mut cube.vz, CUBE_HALF, support, Sim::DT) {
             cube.resting = true;
         }
     }
@@ -558,8 +525,7 @@ impl Sim {
     fn check_goal(&mut self, events: &mut Vec<Event>) {
         let s = &mut self.state;
         let holds = s.cube.resting && !s.cube.held && in_goal(&s.cube.pos, &self.config.goal);
-        s.success_count = if holds { s.success_count + 1 } else { 0 };
-        if s.success_count >= self.config.success_steps {
+        if goal_held(&mut s.success_count, holds, self.config.success_steps) {
             s.done = Some(Outcome::Success);
             events.push(Event::Success);
         }

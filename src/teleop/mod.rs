@@ -20,6 +20,7 @@ pub mod control;
 pub mod episode;
 pub mod metrics;
 pub mod pilot;
+pub mod rules;
 pub mod scene;
 pub mod session;
 pub mod sim;
