@@ -16,7 +16,9 @@
 //! `JᵀJ` by cyclic Jacobi rotations. Arithmetic and `sqrt` only.
 
 use super::kinematics::{jt_j, Jacobian};
-use crate::teleop::control::{ControlParams, IkMethod};
+use crate::teleop::control::{
+    damping_sq_for_sigma, smallest_eigenvalue, solve, ControlParams, IkMethod,
+};
 
 /// The joint step for the task step `dx` (see the module docs), or `None` when the method's
 /// matrix is exactly singular or the step is not finite.
@@ -84,83 +86,13 @@ fn transpose_step(j: &Jacobian, dx: &[f64; 6]) -> [f64; 5] {
 
 /// `λ(σ)²` of `adaptive-dls` for Jacobian `j`.
 pub fn adaptive_damping_sq(params: &ControlParams, j: &Jacobian) -> f64 {
-    let sigma = sigma_min(j);
-    let base = params.lambda_min * params.lambda_min;
-    if sigma >= params.sigma_threshold || params.sigma_threshold <= 0.0 {
-        return base;
-    }
-    let ratio = sigma / params.sigma_threshold;
-    base + (1.0 - ratio * ratio) * params.lambda_max * params.lambda_max
-}
-
-/// `A x = b` by Gaussian elimination with partial pivoting; `None` at a zero pivot.
-#[allow(clippy::needless_range_loop)]
-pub fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> Option<[f64; N]> {
-    for k in 0..N {
-        let mut pivot = k;
-        for r in k + 1..N {
-            if a[r][k].abs() > a[pivot][k].abs() {
-                pivot = r;
-            }
-        }
-        if a[pivot][k] == 0.0 || !a[pivot][k].is_finite() {
-            return None;
-        }
-        a.swap(k, pivot);
-        b.swap(k, pivot);
-        for r in k + 1..N {
-            let m = a[r][k] / a[k][k];
-            for c in k..N {
-                a[r][c] -= m * a[k][c];
-            }
-            b[r] -= m * b[k];
-        }
-    }
-    let mut x = [0.0; N];
-    for k in (0..N).rev() {
-        let mut s = b[k];
-        for c in k + 1..N {
-            s -= a[k][c] * x[c];
-        }
-        x[k] = s / a[k][k];
-    }
-    Some(x)
+    damping_sq_for_sigma(params, sigma_min(j))
 }
 
 /// Cyclic Jacobi sweeps for the 5×5 eigenvalues (converged long before).
 const JACOBI_SWEEPS: usize = 16;
 
 /// The smallest singular value of `j` (cyclic Jacobi rotations of `JᵀJ`).
-#[allow(clippy::needless_range_loop)]
 pub fn sigma_min(j: &Jacobian) -> f64 {
-    let mut a = jt_j(j);
-    for _ in 0..JACOBI_SWEEPS {
-        for p in 0..5 {
-            for q in p + 1..5 {
-                if a[p][q] == 0.0 {
-                    continue;
-                }
-                let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
-                let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
-                let t = if theta.is_finite() { t } else { 0.0 };
-                let c = 1.0 / (t * t + 1.0).sqrt();
-                let s = t * c;
-                for k in 0..5 {
-                    let (akp, akq) = (a[k][p], a[k][q]);
-                    a[k][p] = c * akp - s * akq;
-                    a[k][q] = s * akp + c * akq;
-                }
-                for k in 0..5 {
-                    let (apk, aqk) = (a[p][k], a[q][k]);
-                    a[p][k] = c * apk - s * aqk;
-                    a[q][k] = s * apk + c * aqk;
-                }
-            }
-        }
-    }
-    (0..5)
-        .map(|i| a[i][i])
-        .fold(f64::INFINITY, f64::min)
-        .max(0.0)
-        .sqrt()
+    smallest_eigenvalue(jt_j(j), JACOBI_SWEEPS).max(0.0).sqrt()
 }

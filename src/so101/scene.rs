@@ -12,8 +12,8 @@ use super::kinematics::{mat_vec, Chain, Frame, Mat3};
 use super::model::{joint_limits, BODIES, JAW};
 use crate::teleop::control::ControlParams;
 use crate::teleop::scene::{
-    DEFAULT_POS_SENSITIVITY, DEFAULT_ROT_SENSITIVITY, MAX_LATENCY_STEPS, POS_SPEED_PER_SENSITIVITY,
-    ROT_SPEED_PER_SENSITIVITY,
+    check, check_control, check_run, RunFields, DEFAULT_POS_SENSITIVITY, DEFAULT_ROT_SENSITIVITY,
+    POS_SPEED_PER_SENSITIVITY, ROT_SPEED_PER_SENSITIVITY,
 };
 use crate::teleop::TeleopError;
 
@@ -229,48 +229,24 @@ impl SceneConfig {
 
     /// Checks every field (names the first bad one).
     pub fn validate(&self) -> Result<(), TeleopError> {
-        let range = |field: &str, value: f64, min: f64, max: f64| -> Result<(), TeleopError> {
-            if !value.is_finite() {
-                return Err(TeleopError::NotFinite {
-                    field: field.to_string(),
-                });
-            }
-            if value < min || value > max {
-                return Err(TeleopError::OutOfRange {
-                    field: field.to_string(),
-                    value,
-                    min,
-                    max,
-                });
-            }
-            Ok(())
-        };
-        let c = &self.control;
-        range("lambda", c.lambda, 0.0, 10.0)?;
-        range("pinv_gain", c.pinv_gain, 0.0, 10.0)?;
-        range("trans_gain", c.trans_gain, 0.0, 10.0)?;
-        range("lambda_min", c.lambda_min, 0.0, 10.0)?;
-        range("lambda_max", c.lambda_max, 0.0, 10.0)?;
-        range("sigma_threshold", c.sigma_threshold, 0.0, 10.0)?;
+        check_control(&self.control)?;
+        check_run(&RunFields {
+            latency_steps: self.latency_steps,
+            noise_sigma: self.noise_sigma,
+            noise_seed: self.noise_seed,
+            time_box_s: self.time_box_s,
+            success_steps: self.success_steps,
+            pos_sensitivity: self.pos_sensitivity,
+            rot_sensitivity: self.rot_sensitivity,
+        })?;
         for (q, (lo, hi)) in self.start_q.iter().zip(joint_limits()) {
-            range("start_q", *q, lo, hi)?;
+            check("start_q", *q, lo, hi)?;
         }
         for v in self.cube_start.iter().chain(&self.goal) {
-            range("cube_start", *v, -0.5, 0.5)?;
+            check("cube_start", *v, -0.5, 0.5)?;
         }
-        range(
-            "latency_steps",
-            f64::from(self.latency_steps),
-            0.0,
-            f64::from(MAX_LATENCY_STEPS),
-        )?;
-        range("noise_sigma", self.noise_sigma, 0.0, 1.0)?;
-        range("time_box_s", self.time_box_s, 1.0, 600.0)?;
-        range("success_steps", f64::from(self.success_steps), 1.0, 1000.0)?;
-        range("pos_sensitivity", self.pos_sensitivity, 0.01, 4.0)?;
-        range("rot_sensitivity", self.rot_sensitivity, 0.01, 8.0)?;
         for v in self.qd_max {
-            range("qd_max", v, 0.01, 20.0)?;
+            check("qd_max", v, 0.01, 20.0)?;
         }
         let chain = super::kinematics::chain(&self.start_q, JAW_OPEN);
         if let Some(link) = table_or_obstacle_contact(&link_boxes(&chain), self.obstacle) {
