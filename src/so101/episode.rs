@@ -109,42 +109,17 @@ impl Episode {
         let mut path = 0.0;
         let mut last = start_tool;
         let mut min_m = manipulability(&jacobian(&self.start.q));
-        let mut m = EpisodeMetrics {
-            duration_s: self.records.last().map_or(0.0, |r| r.t_s),
-            path_m: 0.0,
-            efficiency: 0.0,
-            collisions: 0,
-            joint_limit_stops: 0,
-            speed_limit_stops: 0,
-            singularity_stops: 0,
-            grasps: 0,
-            grasp_misses: 0,
-            drops: 0,
-            targets_reached: 0,
-            min_manipulability: 0.0,
-            fitts: None,
-            first_failure: None,
-            outcome: self.outcome(),
-        };
+        let mut m = EpisodeMetrics::empty(
+            self.records.last().map_or(0.0, |r| r.t_s),
+            0.0,
+            self.outcome(),
+        );
         for r in &self.records {
             path += norm(&sub(&r.tool, &last));
             last = r.tool;
             min_m = min_m.min(r.manipulability);
             for e in &r.events {
-                match e {
-                    Event::Collision { .. } => m.collisions += 1,
-                    Event::JointLimit { .. } => m.joint_limit_stops += 1,
-                    Event::SpeedLimit { .. } => m.speed_limit_stops += 1,
-                    Event::Singularity => m.singularity_stops += 1,
-                    Event::Grasp => m.grasps += 1,
-                    Event::GraspMiss => m.grasp_misses += 1,
-                    Event::Drop => m.drops += 1,
-                    Event::TargetReached { .. } => m.targets_reached += 1,
-                    _ => {}
-                }
-                if e.is_failure() && m.first_failure.is_none() {
-                    m.first_failure = Some((r.step, *e));
-                }
+                m.count(r.step, e);
             }
         }
         let cube0 = self.start.cube.pos;
