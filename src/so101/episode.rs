@@ -16,7 +16,7 @@ use crate::teleop::episode::{
     mismatch, propose, same_bool, same_f64, FailureCategory, Label, ReplayMismatch,
 };
 use crate::teleop::metrics::EpisodeMetrics;
-use crate::teleop::session::{run_length, PracticeEpisode};
+use crate::teleop::session::{control_summary, each_event, run_length, run_steps, PracticeEpisode};
 use crate::teleop::sim::{Event, Outcome};
 use crate::teleop::TeleopError;
 
@@ -503,11 +503,7 @@ impl PracticeEpisode for Episode {
     }
 
     fn for_each_event(&self, f: &mut dyn FnMut(usize, f64, &Event)) {
-        for (i, r) in self.records.iter().enumerate() {
-            for e in &r.events {
-                f(i + 1, r.t_s, e);
-            }
-        }
+        each_event(self.records.iter().map(|r| (r.t_s, &r.events[..])), f);
     }
 
     fn steps(&self) -> usize {
@@ -516,12 +512,7 @@ impl PracticeEpisode for Episode {
 
     fn control_summary(&self) -> (&'static str, f64, u32, f64) {
         let c = &self.config;
-        (
-            c.control.method.id(),
-            c.control.lambda,
-            c.latency_steps,
-            c.noise_sigma,
-        )
+        control_summary(&c.control, c.latency_steps, c.noise_sigma)
     }
 
     fn stored(&self) -> StoredEpisode {
@@ -533,7 +524,7 @@ impl PracticeEpisode for Episode {
     }
 
     fn stored_steps(stored: &StoredEpisode) -> usize {
-        stored.runs.iter().map(|(n, _)| *n as usize).sum()
+        run_steps(&stored.runs)
     }
 
     fn load(stored: StoredEpisode) -> Option<Loading> {

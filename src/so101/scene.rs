@@ -12,7 +12,7 @@ use super::kinematics::{mat_vec, Chain, Frame, Mat3};
 use super::model::{joint_limits, BODIES, JAW};
 use crate::teleop::control::ControlParams;
 use crate::teleop::scene::{
-    check, check_control, check_run, RunFields, DEFAULT_POS_SENSITIVITY, DEFAULT_ROT_SENSITIVITY,
+    check, check_control, check_run, DEFAULT_POS_SENSITIVITY, DEFAULT_ROT_SENSITIVITY,
     POS_SPEED_PER_SENSITIVITY, ROT_SPEED_PER_SENSITIVITY,
 };
 use crate::teleop::TeleopError;
@@ -230,15 +230,15 @@ impl SceneConfig {
     /// Checks every field (names the first bad one).
     pub fn validate(&self) -> Result<(), TeleopError> {
         check_control(&self.control)?;
-        check_run(&RunFields {
-            latency_steps: self.latency_steps,
-            noise_sigma: self.noise_sigma,
-            noise_seed: self.noise_seed,
-            time_box_s: self.time_box_s,
-            success_steps: self.success_steps,
-            pos_sensitivity: self.pos_sensitivity,
-            rot_sensitivity: self.rot_sensitivity,
-        })?;
+        check_run(
+            self.latency_steps,
+            self.noise_sigma,
+            self.noise_seed,
+            self.time_box_s,
+            self.success_steps,
+            self.pos_sensitivity,
+            self.rot_sensitivity,
+        )?;
         for (q, (lo, hi)) in self.start_q.iter().zip(joint_limits()) {
             check("start_q", *q, lo, hi)?;
         }

@@ -279,46 +279,36 @@ pub fn check_control(c: &ControlParams) -> Result<(), TeleopError> {
     check("sigma_threshold", c.sigma_threshold, 0.0, 1.0)
 }
 
-/// The fields of an episode's run that every arm's config has.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RunFields {
-    /// Steps a command waits.
-    pub latency_steps: u32,
-    /// Input noise σ.
-    pub noise_sigma: f64,
-    /// Its seed.
-    pub noise_seed: u64,
-    /// The time box, s.
-    pub time_box_s: f64,
-    /// Steps the goal must hold.
-    pub success_steps: u32,
-    /// Isaac Lab's position sensitivity.
-    pub pos_sensitivity: f64,
-    /// Isaac Lab's rotation sensitivity.
-    pub rot_sensitivity: f64,
-}
-
-/// Checks latency, noise, time box, success steps and sensitivities (any arm's).
-pub fn check_run(r: &RunFields) -> Result<(), TeleopError> {
+/// Checks latency, noise and its seed, time box, success steps and the position and rotation
+/// sensitivities (any arm's).
+pub fn check_run(
+    latency_steps: u32,
+    noise_sigma: f64,
+    noise_seed: u64,
+    time_box_s: f64,
+    success_steps: u32,
+    pos_sensitivity: f64,
+    rot_sensitivity: f64,
+) -> Result<(), TeleopError> {
     check(
         "latency_steps",
-        f64::from(r.latency_steps),
+        f64::from(latency_steps),
         0.0,
         f64::from(MAX_LATENCY_STEPS),
     )?;
-    check("noise_sigma", r.noise_sigma, 0.0, 1.0)?;
-    if r.noise_seed > crate::rng::SEED_MAX {
+    check("noise_sigma", noise_sigma, 0.0, 1.0)?;
+    if noise_seed > crate::rng::SEED_MAX {
         return Err(TeleopError::OutOfRange {
             field: "noise_seed".to_string(),
-            value: r.noise_seed as f64,
+            value: noise_seed as f64,
             min: 0.0,
             max: crate::rng::SEED_MAX as f64,
         });
     }
-    check("time_box_s", r.time_box_s, 1.0, 600.0)?;
-    check("success_steps", f64::from(r.success_steps), 1.0, 1000.0)?;
-    check("pos_sensitivity", r.pos_sensitivity, 0.01, 10.0)?;
-    check("rot_sensitivity", r.rot_sensitivity, 0.01, 10.0)
+    check("time_box_s", time_box_s, 1.0, 600.0)?;
+    check("success_steps", f64::from(success_steps), 1.0, 1000.0)?;
+    check("pos_sensitivity", pos_sensitivity, 0.01, 10.0)?;
+    check("rot_sensitivity", rot_sensitivity, 0.01, 10.0)
 }
 
 /// Checks `value` is finite and within `[min, max]`.
@@ -360,15 +350,15 @@ impl SceneConfig {
         }
         check("link_radius", arm.link_radius, 0.0005, 0.03)?;
         check_control(&self.control)?;
-        check_run(&RunFields {
-            latency_steps: self.latency_steps,
-            noise_sigma: self.noise_sigma,
-            noise_seed: self.noise_seed,
-            time_box_s: self.time_box_s,
-            success_steps: self.success_steps,
-            pos_sensitivity: self.pos_sensitivity,
-            rot_sensitivity: self.rot_sensitivity,
-        })?;
+        check_run(
+            self.latency_steps,
+            self.noise_sigma,
+            self.noise_seed,
+            self.time_box_s,
+            self.success_steps,
+            self.pos_sensitivity,
+            self.rot_sensitivity,
+        )?;
         if let Task::Reach { targets } = &self.task {
             if targets.is_empty() || targets.len() > MAX_TARGETS {
                 return Err(TeleopError::TargetCount {

@@ -63,3 +63,29 @@ pub trait PracticeEpisode: Clone + PartialEq + std::fmt::Debug + Sized {
         format!("{}_episode_{n}.csv", Self::FILE_PREFIX)
     }
 }
+
+/// [`PracticeEpisode::for_each_event`] over records given as `(t_s, events)`, steps from 1.
+pub fn each_event<'a>(
+    records: impl Iterator<Item = (f64, &'a [Event])>,
+    f: &mut dyn FnMut(usize, f64, &Event),
+) {
+    for (i, (t_s, events)) in records.enumerate() {
+        for e in events {
+            f(i + 1, t_s, e);
+        }
+    }
+}
+
+/// [`PracticeEpisode::control_summary`] of a controller, latency and noise.
+pub fn control_summary(
+    c: &crate::teleop::control::ControlParams,
+    latency_steps: u32,
+    noise_sigma: f64,
+) -> (&'static str, f64, u32, f64) {
+    (c.method.id(), c.lambda, latency_steps, noise_sigma)
+}
+
+/// Steps of a run-length coded command stream.
+pub fn run_steps<C>(runs: &[(u32, C)]) -> usize {
+    runs.iter().map(|(n, _)| *n as usize).sum()
+}

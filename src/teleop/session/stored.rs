@@ -6,7 +6,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::kind::PracticeEpisode;
+use super::kind::{control_summary, each_event, run_steps, PracticeEpisode};
 use super::practice::{
     category_from_id, label_from_id, label_id, InputDevice, Module, Preflight, Session,
 };
@@ -282,11 +282,7 @@ impl PracticeEpisode for Episode {
     }
 
     fn for_each_event(&self, f: &mut dyn FnMut(usize, f64, &crate::teleop::sim::Event)) {
-        for (i, r) in self.records.iter().enumerate() {
-            for e in &r.events {
-                f(i + 1, r.t_s, e);
-            }
-        }
+        each_event(self.records.iter().map(|r| (r.t_s, &r.events[..])), f);
     }
 
     fn steps(&self) -> usize {
@@ -295,12 +291,7 @@ impl PracticeEpisode for Episode {
 
     fn control_summary(&self) -> (&'static str, f64, u32, f64) {
         let c = &self.config;
-        (
-            c.control.method.id(),
-            c.control.lambda,
-            c.latency_steps,
-            c.noise_sigma,
-        )
+        control_summary(&c.control, c.latency_steps, c.noise_sigma)
     }
 
     fn stored(&self) -> StoredEpisode {
@@ -308,7 +299,7 @@ impl PracticeEpisode for Episode {
     }
 
     fn stored_steps(stored: &StoredEpisode) -> usize {
-        stored.runs.iter().map(|(n, _)| *n as usize).sum()
+        run_steps(&stored.runs)
     }
 
     fn load(stored: StoredEpisode) -> Option<PlanarLoading> {
