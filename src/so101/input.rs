@@ -11,8 +11,9 @@
 //! (`axes[2]`), D-pad down/up ±pitch and left/right ±roll at 0.8 (buttons 13/12, 14/15), X
 //! (button 2) toggles the gripper on its press; values under the dead zone (0.01) count as 0.
 
+pub use crate::view::teleop_input::HeldKeys;
 use crate::view::teleop_input::{
-    dead_zoned, PadSnapshot, DPAD_SCALE, PAD_BUTTON_X, PAD_DPAD_DOWN, PAD_DPAD_UP, PAD_PRESS,
+    self, dead_zoned, PadSnapshot, DPAD_SCALE, PAD_DPAD_DOWN, PAD_DPAD_UP, PAD_PRESS,
 };
 
 /// Standard-mapping indices besides the planar page's.
@@ -69,47 +70,12 @@ pub fn key_action(code: &str) -> Option<KeyAction> {
     }
 }
 
-/// The hold keys down, in press order.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct HeldKeys {
-    held: Vec<(String, usize, i8)>,
-}
-
-impl HeldKeys {
-    /// A key went down; `true` if it is a hold key not held yet.
-    pub fn press(&mut self, code: &str) -> bool {
-        let Some(KeyAction::Hold { axis, sign }) = key_action(code) else {
-            return false;
-        };
-        if self.held.iter().any(|(c, _, _)| c == code) {
-            return false;
-        }
-        self.held.push((code.to_string(), axis, sign));
-        true
-    }
-
-    /// A key went up.
-    pub fn release(&mut self, code: &str) {
-        self.held.retain(|(c, _, _)| c != code);
-    }
-
-    /// Nothing held (focus lost, reset).
-    pub fn clear(&mut self) {
-        self.held.clear();
-    }
-
-    /// Whether any hold key is down.
-    pub fn any(&self) -> bool {
-        !self.held.is_empty()
-    }
-
-    /// The six axes, each the sum of its keys clamped to [−1, 1].
-    pub fn axes(&self) -> [f64; 6] {
-        let mut out = [0.0; 6];
-        for (_, axis, sign) in &self.held {
-            out[*axis] += f64::from(*sign);
-        }
-        out.map(|v: f64| v.clamp(-1.0, 1.0))
+/// Key `code` went down: `true` if it is a hold key not held yet (auto-repeat gives
+/// `false`).
+pub fn press(keys: &mut HeldKeys, code: &str) -> bool {
+    match key_action(code) {
+        Some(KeyAction::Hold { axis, sign }) => keys.press_axis(code, axis, sign),
+        _ => false,
     }
 }
 
@@ -124,10 +90,11 @@ pub struct PadOutput {
     pub active: bool,
 }
 
-/// The gamepad mapper (remembers X between polls: the gripper toggles on its press).
+/// The gamepad mapper (the planar page's remembers X between polls: the gripper toggles on
+/// its press).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct PadMapper {
-    x_was_down: bool,
+    buttons: teleop_input::PadMapper,
 }
 
 impl PadMapper {
@@ -140,11 +107,7 @@ impl PadMapper {
             (false, true) => -DPAD_SCALE,
             _ => 0.0,
         };
-        let x_down = button(PAD_BUTTON_X);
-        let toggle_gripper = x_down && !self.x_was_down;
-        self.x_was_down = x_down;
-        let active = pad.axes.iter().any(|v| dead_zoned(*v, dead_zone) != 0.0)
-            || pad.buttons.iter().any(|b| *b > PAD_PRESS);
+        let (toggle_gripper, active) = self.buttons.buttons(pad, dead_zone);
         PadOutput {
             axes: [
                 -axis(PAD_LEFT_STICK_Y) + 0.0,
@@ -185,11 +148,11 @@ mod tests {
         ];
         for (code, axis, sign) in keys {
             let mut held = HeldKeys::default();
-            assert!(held.press(code));
-            assert!(!held.press(code), "auto-repeat is not a new press");
+            assert!(press(&mut held, code));
+            assert!(!press(&mut held, code), "auto-repeat is not a new press");
             let mut want = [0.0; 6];
             want[axis] = sign;
-            assert_eq!(held.axes(), want, "{code}");
+            assert_eq!(held.axes_of::<6>(), want, "{code}");
             held.release(code);
             assert!(!held.any());
         }

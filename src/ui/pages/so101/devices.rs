@@ -34,7 +34,7 @@ pub struct Devices {
 impl Devices {
     /// The six axes of all devices together, each clamped to [−1, 1].
     pub fn axes(&self) -> [f64; 6] {
-        let k = self.keys.axes();
+        let k = self.keys.axes_of::<6>();
         let p = self.pad_out.axes;
         let c = if self.clutch.is_some() {
             self.clutch_axes

@@ -23,7 +23,7 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event as DomEvent, HtmlInputElement, HtmlSelectElement, KeyboardEvent};
 
-use crate::so101::input::{key_action, KeyAction};
+use crate::so101::input::{key_action, press, KeyAction};
 use crate::so101::sim::Command;
 use crate::so101::{Episode, SceneConfig};
 use crate::teleop::control::IkMethod;
@@ -247,7 +247,7 @@ impl Inner {
         match action {
             KeyAction::Hold { .. } => {
                 let mut d = self.devices.borrow_mut();
-                d.fresh |= d.keys.press(&code);
+                d.fresh |= press(&mut d.keys, &code);
             }
             _ if repeat => {}
             KeyAction::ToggleGripper => self.toggle_gripper(),
