@@ -257,6 +257,17 @@ pub fn drag_axes(
     out
 }
 
+/// The world view's camera at its start (the iso preset), `width`×`height` CSS px.
+pub fn world_camera(width: f64, height: f64) -> Camera {
+    Camera::framing(
+        DVec3::from_array(VIEW_TARGET),
+        VIEW_RADIUS,
+        crate::camera3d::Preset::Iso,
+        width,
+        height,
+    )
+}
+
 /// The wrist camera: at the tool frame's origin looking along its x axis (the gripper's
 /// approach direction), `width`×`height` CSS px, 70° vertical field of view.
 pub fn wrist_camera(chain: &Chain, width: f64, height: f64) -> Camera {
@@ -311,7 +322,6 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
-    use crate::camera3d::Preset;
     use crate::so101::{SceneConfig, Sim};
 
     fn look_at(sim: &Sim) -> (Chain, Obb) {
@@ -335,13 +345,7 @@ mod tests {
         // Grid (2 × 9 lines), goal 4, wall/base/6 links/cube 9 boxes × 12, triad 3,
         // gizmo 3 arrows + 24 ring segments.
         assert_eq!(scene.len(), 18 + 4 + 9 * 12 + 3 + 3 + RING_POINTS);
-        let camera = Camera::framing(
-            DVec3::from_array(VIEW_TARGET),
-            VIEW_RADIUS,
-            Preset::Iso,
-            800.0,
-            500.0,
-        );
+        let camera = world_camera(800.0, 500.0);
         assert!(!scene.project(&camera).is_empty());
     }
 
@@ -349,13 +353,7 @@ mod tests {
     fn a_press_on_an_arrow_takes_it_and_dragging_it_commands_its_axis() {
         let sim = Sim::new(SceneConfig::default_for(false)).unwrap();
         let tool = DVec3::from_array(sim.chain().tool.pos);
-        let camera = Camera::framing(
-            DVec3::from_array(VIEW_TARGET),
-            VIEW_RADIUS,
-            Preset::Iso,
-            800.0,
-            500.0,
-        );
+        let camera = world_camera(800.0, 500.0);
         for k in 0..3 {
             let tip = camera.project(tool + axis(k) * GIZMO_M).unwrap().at;
             assert_eq!(handle_at(&camera, tool, tip), Some(Handle::Axis(k)));

@@ -7,6 +7,7 @@
 use crate::so101::episode::Episode;
 use crate::teleop::session::{InputDevice, Module, PracticeEpisode, CATEGORIES, EVIDENCE_NAME};
 use crate::teleop::Label;
+use crate::ui::kit::keymap::key;
 use crate::ui::kit::readouts;
 use crate::ui::page::Shortcut;
 use crate::view::teleop::IK_IDS;
@@ -16,42 +17,15 @@ pub const P: &str = "so101";
 
 /// The page's keys (Isaac Lab's Se3Keyboard).
 pub const KEYS: &[Shortcut] = &[
-    Shortcut {
-        keys: "W / S",
-        message_id: "so101-key-x",
-    },
-    Shortcut {
-        keys: "A / D",
-        message_id: "so101-key-y",
-    },
-    Shortcut {
-        keys: "Q / E",
-        message_id: "so101-key-z",
-    },
-    Shortcut {
-        keys: "Z / X",
-        message_id: "so101-key-roll",
-    },
-    Shortcut {
-        keys: "T / G",
-        message_id: "so101-key-pitch",
-    },
-    Shortcut {
-        keys: "C / V",
-        message_id: "so101-key-yaw",
-    },
-    Shortcut {
-        keys: "K",
-        message_id: "teleop-key-gripper",
-    },
-    Shortcut {
-        keys: "R",
-        message_id: "teleop-key-reset",
-    },
-    Shortcut {
-        keys: "Space",
-        message_id: "teleop-key-engage",
-    },
+    key("W / S", "so101-key-x"),
+    key("A / D", "so101-key-y"),
+    key("Q / E", "so101-key-z"),
+    key("Z / X", "so101-key-roll"),
+    key("T / G", "so101-key-pitch"),
+    key("C / V", "so101-key-yaw"),
+    key("K", "teleop-key-gripper"),
+    key("R", "teleop-key-reset"),
+    key("Space", "teleop-key-engage"),
 ];
 
 /// `(data-readout, label id)`.
@@ -82,31 +56,30 @@ fn button(action: &str, label: &str) -> String {
     )
 }
 
+/// A row of toggle buttons `data-<attr>="<id>"` labelled `<prefix><id>`.
+fn toggles(attr: &str, class: &str, prefix: &str, ids: &[&str]) -> String {
+    ids.iter()
+        .map(|id| {
+            format!(
+                "<button type=\"button\" class=\"tool-button {class}\" data-{attr}=\"{id}\" \
+                 aria-pressed=\"false\" data-i18n=\"{prefix}{id}\"></button>"
+            )
+        })
+        .collect()
+}
+
 fn modules() -> String {
-    let mut html = String::from(
-        "<div class=\"so101-modules\" role=\"group\" data-i18n-attr=\"aria-label=teleop-modules-label\">",
-    );
-    for m in Module::ALL {
-        html.push_str(&format!(
-            "<button type=\"button\" class=\"tool-button so101-module\" data-module=\"{id}\" \
-             aria-pressed=\"false\" data-i18n=\"teleop-module-{id}\"></button>",
-            id = m.id()
-        ));
-    }
-    html.push_str("</div><p class=\"so101-help\" data-so101=\"module-help\"></p>");
-    html.push_str(
-        "<div class=\"so101-devices\" role=\"group\" data-i18n-attr=\"aria-label=teleop-device-label\">\
-         <span data-i18n=\"teleop-device-label\"></span>",
-    );
-    for d in InputDevice::ALL {
-        html.push_str(&format!(
-            "<button type=\"button\" class=\"tool-button so101-device\" data-device=\"{id}\" \
-             aria-pressed=\"false\" data-i18n=\"teleop-device-{id}\"></button>",
-            id = d.id()
-        ));
-    }
-    html.push_str("<span class=\"so101-check\" data-so101=\"preflight\"></span></div>");
-    html
+    let modules: Vec<&str> = Module::ALL.iter().map(|m| m.id()).collect();
+    let devices: Vec<&str> = InputDevice::ALL.iter().map(|d| d.id()).collect();
+    format!(
+        "<div class=\"so101-modules\" role=\"group\" data-i18n-attr=\"aria-label=teleop-modules-label\">\
+         {modules}</div><p class=\"so101-help\" data-so101=\"module-help\"></p>\
+         <div class=\"so101-devices\" role=\"group\" data-i18n-attr=\"aria-label=teleop-device-label\">\
+         <span data-i18n=\"teleop-device-label\"></span>{devices}\
+         <span class=\"so101-check\" data-so101=\"preflight\"></span></div>",
+        modules = toggles("module", "so101-module", "teleop-module-", &modules),
+        devices = toggles("device", "so101-device", "teleop-device-", &devices),
+    )
 }
 
 fn views() -> String {
@@ -148,13 +121,8 @@ fn label_panel() -> String {
     html.push_str(
         "</div><p data-i18n=\"teleop-category-title\"></p><div role=\"group\" class=\"so101-label-row\">",
     );
-    for c in CATEGORIES {
-        html.push_str(&format!(
-            "<button type=\"button\" class=\"tool-button\" data-category=\"{id}\" aria-pressed=\"false\" \
-             data-i18n=\"teleop-cat-{id}\"></button>",
-            id = c.id()
-        ));
-    }
+    let categories: Vec<&str> = CATEGORIES.iter().map(|c| c.id()).collect();
+    html.push_str(&toggles("category", "", "teleop-cat-", &categories));
     html.push_str(&format!(
         "</div><label class=\"so101-note\"><span data-i18n=\"teleop-note-label\"></span>\
          <input type=\"text\" data-field=\"note\" maxlength=\"200\"></label>{}</section>",
