@@ -2,8 +2,9 @@
 // right way (W/S x, A/D y, Q/E z, C/V yaw; readouts' exact values); an injected gamepad moves
 // the arm and is offered at once; a scripted episode is recorded, labelled, exported (its CSV
 // reproduced by `bsv teleop-replay`, the evidence's artifacts hashed to the downloaded bytes,
-// `embodiment` the SO-101's), and a reload keeps the session; Japanese leaves no English UI
-// text; screenshots EN/JA, projector and phone go to tests/e2e/out/.
+// `embodiment` the SO-101's), and a reload keeps the session; the home card and #/teleop's next
+// step lead here; Japanese leaves no English UI text; screenshots EN/JA, projector and phone go
+// to tests/e2e/out/.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createHash } from 'node:crypto';
@@ -148,6 +149,21 @@ test('a scripted episode: recorded, labelled, exported, replayed by bsv; reload 
     assert.deepEqual(errors, []);
   } finally {
     rmSync(dir, { recursive: true, force: true });
+    await close();
+  }
+});
+
+test('the home card and #/teleop\'s next step lead here', async () => {
+  const { page, errors, close } = await open('#/');
+  try {
+    const card = page.locator('[data-testid="featured-so101"]');
+    assert.equal(await card.getAttribute('href'), '#/so101');
+    assert.match(await card.innerText(), /Robot Pilot: SO-101/);
+    await page.goto(`${server.url}/#/teleop`);
+    await page.locator('[data-testid="chain-next-link"]').waitFor({ state: 'visible' });
+    assert.equal(await page.locator('[data-testid="chain-next-link"]').getAttribute('href'), '#/so101');
+    assert.deepEqual(errors, []);
+  } finally {
     await close();
   }
 });

@@ -28,13 +28,15 @@ use crate::so101::sim::Command;
 use crate::so101::{Episode, SceneConfig};
 use crate::teleop::control::IkMethod;
 use crate::teleop::session::{
-    category_from_id, clean_pilot_id, label_from_id, InputDevice, Module, Session,
+    category_from_id, clean_pilot_id, label_from_id, InputDevice, Module, Session, SessionLoader,
 };
+use crate::ui::kit::bench_log::push_ms;
 use crate::ui::kit::drag::DragEvent;
 use crate::ui::kit::frame::FrameLoop;
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::page::{MountCtx, Page, Shortcut};
+use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::so101::{drag_axes, Handle};
 use crate::view::teleop_input::{Accumulator, GAMEPAD_DEAD_ZONE};
@@ -74,7 +76,14 @@ struct Inner {
     scope: RefCell<Scope>,
     /// The views' hold on the state (kept alive with the page).
     shared: RefCell<Option<Rc<Shared>>>,
+    /// The stored session being simulated again, while it is.
+    loader: RefCell<Option<SessionLoader<Episode>>>,
+    load_timer: RefCell<Option<Rc<crate::ui::schedule::Timer>>>,
+    restored: Element,
 }
+
+/// Steps simulated again per slice of the load (a few ms of work).
+const LOAD_SLICE_STEPS: usize = 1500;
 
 /// The SO-101 page.
 pub struct So101Page(Rc<Inner>);
@@ -95,14 +104,16 @@ impl Page for So101Page {
         let root = ctx.root.clone();
         root.set_inner_html(&markup::page());
         dom::relocalize(&root)?;
-        let stored = dom::storage_get(STORE_KEY).and_then(|t| Session::<Episode>::from_json(&t));
-        let restored = stored.is_some();
-        let session =
-            stored.unwrap_or_else(|| Session::new("pilot", InputDevice::Keyboard, &iso_now()));
+        // A stored session is simulated again in slices after the first paint (the page's
+        // session meanwhile is the stored one's pilot, device and module without episodes).
+        let loader = dom::storage_get(STORE_KEY).and_then(|t| SessionLoader::<Episode>::new(&t));
+        let session = loader.as_ref().map_or_else(
+            || Session::new("pilot", InputDevice::Keyboard, &iso_now()),
+            |l| l.session().clone(),
+        );
         let practice = Practice::new(session, SceneConfig::default_for(false))
             .ok_or_else(|| JsValue::from_str("so101: the default scene is refused"))?;
-        let restored_el: Element = find(&root, "[data-so101=\"restored\"]")?;
-        dom::show(&restored_el, restored);
+        let restored: Element = find(&root, "[data-so101=\"restored\"]")?;
         let live = Live {
             engage: find(&root, "[data-action=\"engage\"]")?,
             gripper: find(&root, "[data-action=\"gripper\"]")?,
@@ -132,6 +143,9 @@ impl Page for So101Page {
             frame: RefCell::new(None),
             scope: RefCell::new(Scope::new()),
             shared: RefCell::new(None),
+            loader: RefCell::new(loader),
+            load_timer: RefCell::new(None),
+            restored,
         });
         let me = inner.me.clone();
         let views = Views::new(&root, &shared, move |e, tool| {
@@ -144,6 +158,7 @@ impl Page for So101Page {
         inner.install()?;
         inner.write_settings();
         inner.show_all();
+        inner.load_slice();
         Ok(So101Page(inner))
     }
 
@@ -456,13 +471,55 @@ impl Inner {
     }
 
     fn save(&self) {
+        if self.loader.borrow().is_some() {
+            return;
+        }
         let json = self.practice.borrow().to_json();
         dom::storage_set(STORE_KEY, &json);
+    }
+
+    /// One slice of the stored session's load; the next in a task of its own.
+    fn load_slice(&self) {
+        let t0 = now_ms();
+        let mut slot = self.loader.borrow_mut();
+        let Some(loader) = slot.as_mut() else {
+            return;
+        };
+        let step = loader.run(LOAD_SLICE_STEPS);
+        push_ms("__so101LoadMs", now_ms() - t0, 5000);
+        if step == Some(false) {
+            drop(slot);
+            let mut timer = self.load_timer.borrow_mut();
+            let timer = timer.get_or_insert_with(|| {
+                self.scope
+                    .borrow_mut()
+                    .timer(&self.me, |p: &Inner| p.load_slice())
+            });
+            timer.schedule(0);
+            return;
+        }
+        let finished = slot
+            .take()
+            .filter(|_| step.is_some())
+            .and_then(|l| l.finish());
+        drop(slot);
+        if let Some(session) = finished {
+            self.practice.borrow_mut().session = session;
+            dom::show(&self.restored, true);
+        }
+        self.show_all();
     }
 
     // ---- The frame ----
 
     fn frame(&self, t: f64) {
+        let t0 = now_ms();
+        self.frame_work(t);
+        push_ms("__so101FrameMs", now_ms() - t0, 5000);
+    }
+
+    /// A frame: poll the devices, step the simulation, write the readouts, draw both views.
+    fn frame_work(&self, t: f64) {
         let elapsed = self.last_frame.get().map_or(0.0, |last| t - last);
         self.last_frame.set(Some(t));
         let pad_input = self.devices.borrow_mut().poll_pad(GAMEPAD_DEAD_ZONE);
@@ -471,7 +528,11 @@ impl Inner {
         }
         let fresh = std::mem::take(&mut self.devices.borrow_mut().fresh);
         let mut acc = self.acc.get();
-        let n = acc.steps(elapsed, fresh);
+        let n = if self.loader.borrow().is_some() {
+            0
+        } else {
+            acc.steps(elapsed, fresh)
+        };
         self.acc.set(acc);
         let preflight = self.practice.borrow().session.preflight;
         let ended = self.run_steps(n);

@@ -126,7 +126,8 @@ impl Practice {
     }
 
     /// R: the scene back to its start (an episode with steps in a recording module is kept
-    /// first); the preflight's reset check compares the state with the start bit for bit.
+    /// first), engaged for the next episode; the preflight's reset check compares the state
+    /// with the start bit for bit.
     pub fn reset(&mut self) {
         if !self.recorder.episode().commands.is_empty() && self.recorder.sim().done().is_none() {
             let n = self.keep(false);
@@ -140,7 +141,8 @@ impl Practice {
         if self.session.preflight.moved || self.session.module == Module::Preflight {
             self.session.preflight.reset_verified = Some(same);
         }
-        self.engaged = false;
+        // R starts the next episode: engaged, its clock waiting for the first input.
+        self.engaged = true;
         self.replay = None;
     }
 

@@ -184,9 +184,9 @@ impl Views {
         self.redraw();
     }
 
-    /// Both views again (the world on its next frame, the wrist now).
+    /// Both views again, now (the page's frame).
     pub fn redraw(&self) {
-        self.orbit.request_redraw();
+        self.orbit.redraw_now();
         self.draw_wrist();
     }
 
