@@ -441,29 +441,33 @@ fn teleop_replay_reproduces_an_episode_and_prints_its_metrics() {
     assert!(out.stderr.is_empty());
 }
 
+/// An episode CSV with cell `column` of step `step` (from 1) one ulp above `value`.
+fn nudged_step(text: &str, step: usize, column: usize, value: f64) -> String {
+    let header_row = text.lines().position(|l| l.starts_with("t_s,")).unwrap();
+    let nudged = bsv_playground::pyfmt::py_float(f64::from_bits(value.to_bits() + 1));
+    let lines: Vec<String> = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            if i != header_row + step {
+                return l.to_string();
+            }
+            let mut cells: Vec<&str> = l.split(',').collect();
+            cells[column] = &nudged;
+            cells.join(",")
+        })
+        .collect();
+    lines.join("\n")
+}
+
 #[test]
 fn teleop_replay_exits_1_naming_the_first_differing_step() {
     let dir = temp_dir("teleop-tampered");
     let (text, episode) = teleop_episode_csv();
     // Step 57's z, one ulp off.
     let z = episode.records[56].z;
-    let nudged = f64::from_bits(z.to_bits() + 1);
-    let header_row = text.lines().position(|l| l.starts_with("t_s,")).unwrap();
-    let lines: Vec<String> = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| {
-            if i == header_row + 57 {
-                let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
-                cells[13] = bsv_playground::pyfmt::py_float(nudged);
-                cells.join(",")
-            } else {
-                l.to_string()
-            }
-        })
-        .collect();
     let path = dir.join("tampered.csv");
-    std::fs::write(&path, lines.join("\n")).unwrap();
+    std::fs::write(&path, nudged_step(&text, 57, 13, z)).unwrap();
     let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(1));
     let err = String::from_utf8_lossy(&out.stderr);
@@ -615,23 +619,9 @@ fn teleop_replay_takes_so101_episodes_too() {
         "{stdout}"
     );
     // One ulp off in step 40's q2: exit 1 naming it.
-    let header_row = text.lines().position(|l| l.starts_with("t_s,")).unwrap();
-    let q2 = episode.records[39].q[1];
-    let lines: Vec<String> = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| {
-            if i == header_row + 40 {
-                let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
-                cells[16] = bsv_playground::pyfmt::py_float(f64::from_bits(q2.to_bits() + 1));
-                cells.join(",")
-            } else {
-                l.to_string()
-            }
-        })
-        .collect();
     let tampered = dir.join("tampered.csv");
-    std::fs::write(&tampered, lines.join("\n")).unwrap();
+    let q2 = episode.records[39].q[1];
+    std::fs::write(&tampered, nudged_step(&text, 40, 16, q2)).unwrap();
     let out = bsv(&["teleop-replay", tampered.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(1));
     let err = String::from_utf8_lossy(&out.stderr);

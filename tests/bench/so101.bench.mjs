@@ -5,7 +5,8 @@
 //
 // Cases: the pilot flying the arm with the wrist view on (x, then y and yaw, then z and pitch
 // held for 1.5 s each), with and without the wall; then a reload of a stored session of ten
-// 60 s episodes (60,000 steps) whose main-thread tasks are counted.
+// 60 s episodes (60,000 steps) whose main-thread tasks after the app is ready are counted (the
+// boot's, with the first slice, are listed without a budget).
 // Budgets: frame work p95 < 4 ms; load slices and main-thread tasks under 50 ms.
 // With SO101_BENCH_STRICT=1 the exit code is 1 when one is missed.
 import { BenchTable, openWatched, runBench, takeLongTasks } from './bench-table.mjs';
@@ -24,7 +25,7 @@ async function fly(page, groups, ms) {
 }
 
 await runBench({ table, strict: 'SO101_BENCH_STRICT' }, async (url) => {
-  const { page, close } = await openWatched(url, '#/so101', { viewport: VIEWPORT });
+  const { page, context, close } = await openWatched(url, '#/so101', { viewport: VIEWPORT });
   try {
     if (!(await page.evaluate(() => Array.isArray(window.__so101FrameMs)))) {
       throw new Error('no window.__so101FrameMs: serve a dist built with --features bench (make bench)');
@@ -34,6 +35,7 @@ await runBench({ table, strict: 'SO101_BENCH_STRICT' }, async (url) => {
       if (wall) {
         await page.locator('details.so101-settings summary').click();
         await page.locator('[data-field="obstacle"]').check();
+        await canvas.focus();
         await page.keyboard.press('r');
       }
       await canvas.focus();
@@ -55,15 +57,24 @@ await runBench({ table, strict: 'SO101_BENCH_STRICT' }, async (url) => {
     entry.episode.runs = [[1500, cmd(1, 0, 0, 0)], [1500, cmd(0, 1, 0.5, 0.5)], [1500, cmd(-1, -0.5, 0, 0)], [1500, cmd(0.3, -0.2, -1, -1)]];
     stored.episodes = Array.from({ length: 10 }, () => structuredClone(entry));
     stored.in_progress = null;
-    await page.evaluate(([k, text]) => localStorage.setItem(k, text), [KEY, JSON.stringify(stored)]);
-    await takeLongTasks(page);
+    // Written before the app starts (the leaving page saves its own session on pagehide).
+    await context.addInitScript(([k, text]) => {
+      if (sessionStorage.getItem('bench-session') === null) {
+        sessionStorage.setItem('bench-session', '1');
+        localStorage.setItem(k, text);
+      }
+    }, [KEY, JSON.stringify(stored)]);
     await page.reload();
     await page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 60_000 });
+    // The boot's own tasks (the wasm's compile) are the first-frame bench's; from here on,
+    // the load's slices.
+    const boot = await takeLongTasks(page);
     await page.locator('[data-so101="restored"]').waitFor({ state: 'visible', timeout: 120_000 });
     const rows = await page.locator('[data-so101="episodes"] tr').count();
     if (rows !== 10) throw new Error(`the reload gave ${rows} episodes, not 10`);
     table.report('load of ten stored 60 s episodes: slices', await page.evaluate(() => window.__so101LoadMs ?? []), { max: 50 });
     table.longTasks('load of ten stored 60 s episodes: main-thread tasks', await takeLongTasks(page), 50);
+    table.longTasks('the reload until the app is ready (boot, first slice)', boot);
   } finally {
     await close();
   }

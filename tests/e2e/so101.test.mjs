@@ -14,7 +14,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { openApp, browser, readouts, screenshots } from './harness.mjs';
 import { serveAppWithCli, BSV, download } from './cli.mjs';
-import { englishStrings } from './locales.mjs';
+import { englishOnPage } from './locales.mjs';
 
 const server = serveAppWithCli();
 const open = (hash = '#/so101', opts = {}) => openApp(server.url, hash, opts);
@@ -169,18 +169,11 @@ test('the home card and #/teleop\'s next step lead here', async () => {
 });
 
 test('Japanese leaves no English UI text', async () => {
-  const english = englishStrings();
   const { page, errors, close } = await open('#/so101?lang=ja');
   try {
     await canvas(page).focus();
     await hold(page, 'w', 200);
-    const text = await page.evaluate(() => {
-      let all = document.body.innerText;
-      for (const b of document.querySelectorAll('[data-download]')) all = all.replaceAll(b.dataset.download, '');
-      for (const k of document.querySelectorAll('kbd')) all = all.replaceAll(k.innerText, '');
-      return all;
-    });
-    const left = english.filter((s) => text.includes(s));
+    const { text, left } = await englishOnPage(page);
     assert.deepEqual(left, [], `English left on the Japanese page: ${left.join(' | ')}`);
     assert.match(text, /ロボットパイロット：SO-101/);
     assert.deepEqual(errors, []);
