@@ -413,21 +413,24 @@ fn teleop_episode_csv() -> (String, bsv_playground::teleop::Episode) {
     (episode_csv(&episode), episode)
 }
 
+/// `bsv teleop-replay` of `text` saved as `name` in a fresh folder `dir`, which must exit 0:
+/// its stdout and output.
+fn replayed(dir: &str, name: &str, text: &str) -> (String, std::process::Output) {
+    let dir = temp_dir(dir);
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    (stdout, out)
+}
+
 #[test]
 fn teleop_replay_reproduces_an_episode_and_prints_its_metrics() {
     use bsv_playground::pyfmt::py_float;
-    let dir = temp_dir("teleop-ok");
     let (text, episode) = teleop_episode_csv();
-    let path = dir.join("teleop_episode_1.csv");
-    std::fs::write(&path, &text).unwrap();
-    let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let (stdout, out) = replayed("teleop-ok", "teleop_episode_1.csv", &text);
     let m = bsv_playground::teleop::metrics(&episode);
     assert!(stdout.starts_with(&format!(
         "replayed {} steps of pick-place (dls): every recorded step reproduced exactly\n",
@@ -597,18 +600,9 @@ fn so101_episode_csv() -> (String, bsv_playground::so101::Episode) {
 
 #[test]
 fn teleop_replay_takes_so101_episodes_too() {
-    let dir = temp_dir("so101-ok");
     let (text, episode) = so101_episode_csv();
-    let path = dir.join("so101_episode_1.csv");
-    std::fs::write(&path, &text).unwrap();
-    let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let (stdout, _) = replayed("so101-ok", "so101_episode_1.csv", &text);
+    let dir = temp_dir("so101-tampered");
     assert!(stdout.starts_with(&format!(
         "replayed {} steps of pick-place (dls): every recorded step reproduced exactly\n",
         episode.records.len()
