@@ -41,3 +41,4 @@ so101-ended-success = Success! Kept as episode { $n }.
 so101-ended-timeout = Time is up. Kept as episode { $n }.
 so101-ended-pilot = Episode ended. Kept as episode { $n }.
 so101-ended-practice = Episode over (practice: not recorded). Go to Record ten to keep your attempts.
+so101-live-pose = Tool at x { $x } mm, y { $y } mm, z { $z } mm; gripper { $gripper }; orientation error { $error }°.

@@ -41,3 +41,4 @@ so101-ended-success = 成功！エピソード { $n } として保存しまし�
 so101-ended-timeout = 時間切れです。エピソード { $n } として保存しました。
 so101-ended-pilot = エピソードを終了しました。エピソード { $n } として保存しました。
 so101-ended-practice = エピソード終了（練習のため記録しません）。試行を残すには「10 回記録」へ進んでください。
+so101-live-pose = ツール位置 x { $x } mm、y { $y } mm、z { $z } mm。グリッパー { $gripper }。姿勢誤差 { $error }°。

@@ -536,6 +536,9 @@ impl Inner {
         self.acc.set(acc);
         let preflight = self.practice.borrow().session.preflight;
         let ended = self.run_steps(n);
+        if n > 0 {
+            self.announce_pose();
+        }
         if self.practice.borrow().session.preflight != preflight {
             self.show_all();
         }
@@ -591,6 +594,28 @@ impl Inner {
             }
         }
         None
+    }
+
+    /// The tool's pose for screen readers, once the arm has stopped moving for a moment.
+    fn announce_pose(&self) {
+        let record = self.practice.borrow().recorder.sim().snapshot();
+        self.readouts.announce_settled(800.0, move || {
+            let gripper = ctx::t(if record.gripper_closed {
+                "teleop-gripper-closed"
+            } else {
+                "teleop-gripper-open"
+            });
+            ctx::t_strings(
+                "so101-live-pose",
+                &[
+                    ("x", crate::view::so101::mm(record.tool[0])),
+                    ("y", crate::view::so101::mm(record.tool[1])),
+                    ("z", crate::view::so101::mm(record.tool[2])),
+                    ("gripper", gripper),
+                    ("error", crate::view::so101::deg(record.orientation_error)),
+                ],
+            )
+        });
     }
 
     fn offer_pad(&self) {

@@ -159,7 +159,8 @@ impl Practice {
         true
     }
 
-    /// A new config (settings changed): the episode in progress is kept first.
+    /// A new config (settings changed): the episode in progress is kept first (interrupted);
+    /// the next one is engaged, its clock waiting for the first input.
     pub fn set_config(&mut self, config: SceneConfig) -> bool {
         let Ok(recorder) = EpisodeRecorder::new(config.clone()) else {
             return false;
@@ -169,7 +170,7 @@ impl Practice {
         }
         self.config = config;
         self.recorder = recorder;
-        self.engaged = false;
+        self.engaged = true;
         true
     }
 
