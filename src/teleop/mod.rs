@@ -18,6 +18,7 @@
 pub mod arm;
 pub mod control;
 pub mod episode;
+pub mod events;
 pub mod metrics;
 pub mod pilot;
 pub mod rules;

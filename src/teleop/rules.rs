@@ -4,9 +4,11 @@
 //! for `success_steps` steps and the time box. Arithmetic only, in a fixed order, so that
 //! both simulations stay bit for bit the same natively and in wasm.
 
+#![warn(missing_docs)]
+
 use std::collections::VecDeque;
 
-use super::sim::{Event, Outcome, GRAVITY, LIMIT_REARM_RAD};
+use super::events::{Event, Outcome, GRAVITY, LIMIT_REARM_RAD};
 use crate::rng::NumpyRng;
 
 /// The command `latency_steps` old: `cmd` enters the queue (which starts full of `idle`
