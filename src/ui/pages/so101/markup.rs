@@ -91,7 +91,7 @@ fn views() -> String {
          <p class=\"so101-ended\" data-testid=\"episode-outcome\" data-so101=\"ended\" hidden></p>\
          </div>\
          <figure class=\"so101-wrist\"><div class=\"so101-wrist-stage\" data-so101=\"wrist-stage\">\
-         <canvas data-testid=\"so101-wrist\" role=\"img\" data-i18n-attr=\"aria-label=so101-wrist-label\"></canvas>\
+         <canvas data-testid=\"so101-wrist\" role=\"img\" aria-describedby=\"so101-readouts\" data-i18n-attr=\"aria-label=so101-wrist-label\"></canvas>\
          </div><figcaption data-i18n=\"so101-wrist-caption\"></figcaption></figure>\
          </div>\
          <div class=\"so101-buttons\" data-so101=\"live-buttons\">{engage}{gripper}{reset}{end}</div>",
