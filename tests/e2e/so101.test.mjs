@@ -158,7 +158,7 @@ test('the home card and #/teleop\'s next step lead here', async () => {
   try {
     const card = page.locator('[data-testid="featured-so101"]');
     assert.equal(await card.getAttribute('href'), '#/so101');
-    assert.match(await card.innerText(), /Robot Pilot: SO-101/);
+    assert.match(await card.innerText(), /SO-101/);
     await page.goto(`${server.url}/#/teleop`);
     await page.locator('[data-testid="chain-next-link"]').waitFor({ state: 'visible' });
     assert.equal(await page.locator('[data-testid="chain-next-link"]').getAttribute('href'), '#/so101');
