@@ -124,6 +124,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         include_str!("../locales/en/teleop.ftl"),
     ),
     (
+        Lang::En,
+        "so101.ftl",
+        include_str!("../locales/en/so101.ftl"),
+    ),
+    (
         Lang::Ja,
         "shell.ftl",
         include_str!("../locales/ja/shell.ftl"),
@@ -174,6 +179,11 @@ pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
         Lang::Ja,
         "teleop.ftl",
         include_str!("../locales/ja/teleop.ftl"),
+    ),
+    (
+        Lang::Ja,
+        "so101.ftl",
+        include_str!("../locales/ja/so101.ftl"),
     ),
 ];
 

@@ -20,6 +20,7 @@ mod pendulum;
 mod pid_step;
 mod rrt;
 mod se3;
+mod so101;
 mod teleop;
 mod traj_resample;
 mod trapezoid_profile;
@@ -40,6 +41,7 @@ pub const PAGES: &[PageDef] = &[
     PageDef::of::<traj_resample::TrajResample>("traj-resample", "traj-title", "traj-blurb", Nav::Trajectories),
     PageDef::of::<rrt::RrtPage>("rrt-2d", "rrt-title", "rrt-blurb", Nav::Planning),
     PageDef::of::<teleop::TeleopPage>("teleop", "teleop-nav", "teleop-blurb", Nav::Top),
+    PageDef::of::<so101::So101Page>("so101", "so101-nav", "so101-blurb", Nav::Top),
     PageDef::of::<drills::DrillsPage>(DRILLS_ID, "drills-title", "drills-blurb", Nav::Top),
     PageDef::of::<lesson::LessonPage>("lesson", "lesson-title", "lesson-blurb", Nav::Top),
 ];
