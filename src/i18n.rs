@@ -92,6 +92,7 @@ pub const EN_FILES: &[(&str, &str)] = &[
     ("dh.ftl", include_str!("../locales/en/dh.ftl")),
     ("umeyama.ftl", include_str!("../locales/en/umeyama.ftl")),
     ("teleop.ftl", include_str!("../locales/en/teleop.ftl")),
+    ("so101.ftl", include_str!("../locales/en/so101.ftl")),
 ];
 
 /// The Fluent files of Japanese: file name, text.
@@ -113,6 +114,7 @@ pub const JA_FILES: &[(&str, &str)] = &[
     ("dh.ftl", include_str!("../locales/ja/dh.ftl")),
     ("umeyama.ftl", include_str!("../locales/ja/umeyama.ftl")),
     ("teleop.ftl", include_str!("../locales/ja/teleop.ftl")),
+    ("so101.ftl", include_str!("../locales/ja/so101.ftl")),
 ];
 
 /// The Fluent files of `lang`: file name, text.

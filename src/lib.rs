@@ -6,6 +6,8 @@
 //! - [`camera3d`]: the orbit camera of the 3D views and the 3D card pictures.
 //! - [`teleop`]: the Robot Pilot practice simulation (planar 3R arm, gripper, block, differential
 //!   IK, latency, noise, episodes, exact replay); no web-sys.
+//! - [`so101`]: the SO-101 practice simulation (five-joint arm in 3D, MuJoCo-checked kinematics,
+//!   differential IK on the 6×5 Jacobian, table, cube, goal, episodes, exact replay); no web-sys.
 //! - [`rng`]: numpy-compatible `default_rng` (PCG64 + SeedSequence + ziggurat normal).
 //! - [`math`]: correctly rounded sin, cos, atan2 … : the same bits natively and in wasm.
 //! - [`numpy`]: `np.arange` and friends, operation for operation.
@@ -33,6 +35,7 @@ pub mod planar2r;
 pub mod pyfmt;
 pub mod recipes;
 pub mod rng;
+pub mod so101;
 pub mod teleop;
 pub mod view;
 

@@ -442,21 +442,24 @@ fn teleop_episode_csv() -> (String, bsv_playground::teleop::Episode) {
     (episode_csv(&episode), episode)
 }
 
+/// `bsv teleop-replay` of `text` saved as `name` in a fresh folder `dir`, which must exit 0:
+/// its stdout and output.
+fn replayed(dir: &str, name: &str, text: &str) -> (String, std::process::Output) {
+    let dir = temp_dir(dir);
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    (stdout, out)
+}
+
 #[test]
 fn teleop_replay_reproduces_an_episode_and_prints_its_metrics() {
     use bsv_playground::pyfmt::py_float;
-    let dir = temp_dir("teleop-ok");
     let (text, episode) = teleop_episode_csv();
-    let path = dir.join("teleop_episode_1.csv");
-    std::fs::write(&path, &text).unwrap();
-    let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let (stdout, out) = replayed("teleop-ok", "teleop_episode_1.csv", &text);
     let m = bsv_playground::teleop::metrics(&episode);
     assert!(stdout.starts_with(&format!(
         "replayed {} steps of pick-place (dls): every recorded step reproduced exactly\n",
@@ -470,29 +473,33 @@ fn teleop_replay_reproduces_an_episode_and_prints_its_metrics() {
     assert!(out.stderr.is_empty());
 }
 
+/// An episode CSV with cell `column` of step `step` (from 1) one ulp above `value`.
+fn nudged_step(text: &str, step: usize, column: usize, value: f64) -> String {
+    let header_row = text.lines().position(|l| l.starts_with("t_s,")).unwrap();
+    let nudged = bsv_playground::pyfmt::py_float(f64::from_bits(value.to_bits() + 1));
+    let lines: Vec<String> = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            if i != header_row + step {
+                return l.to_string();
+            }
+            let mut cells: Vec<&str> = l.split(',').collect();
+            cells[column] = &nudged;
+            cells.join(",")
+        })
+        .collect();
+    lines.join("\n")
+}
+
 #[test]
 fn teleop_replay_exits_1_naming_the_first_differing_step() {
     let dir = temp_dir("teleop-tampered");
     let (text, episode) = teleop_episode_csv();
     // Step 57's z, one ulp off.
     let z = episode.records[56].z;
-    let nudged = f64::from_bits(z.to_bits() + 1);
-    let header_row = text.lines().position(|l| l.starts_with("t_s,")).unwrap();
-    let lines: Vec<String> = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| {
-            if i == header_row + 57 {
-                let mut cells: Vec<String> = l.split(',').map(str::to_string).collect();
-                cells[13] = bsv_playground::pyfmt::py_float(nudged);
-                cells.join(",")
-            } else {
-                l.to_string()
-            }
-        })
-        .collect();
     let path = dir.join("tampered.csv");
-    std::fs::write(&path, lines.join("\n")).unwrap();
+    std::fs::write(&path, nudged_step(&text, 57, 13, z)).unwrap();
     let out = bsv(&["teleop-replay", path.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(1));
     let err = String::from_utf8_lossy(&out.stderr);
@@ -608,4 +615,38 @@ fn umeyama_options_write_the_points_and_leave_the_recipe_alone() {
         String::from_utf8_lossy(&bad.stderr).trim_end(),
         "bsv: umeyama-2d: x: need 2 values, got 1"
     );
+}
+
+/// An SO-101 episode: 120 steps along x and down, then the gripper closed on nothing.
+fn so101_episode_csv() -> (String, bsv_playground::so101::Episode) {
+    use bsv_playground::so101::{episode_csv, Command, Episode, SceneConfig};
+    let commands: Vec<Command> = (0..150)
+        .map(|k| Command::with_axes([0.6, 0.2, -0.3, 0.0, 0.1, -0.2], k >= 120))
+        .collect();
+    let episode = Episode::record(SceneConfig::default_for(false), &commands).unwrap();
+    (episode_csv(&episode), episode)
+}
+
+#[test]
+fn teleop_replay_takes_so101_episodes_too() {
+    let (text, episode) = so101_episode_csv();
+    let (stdout, _) = replayed("so101-ok", "so101_episode_1.csv", &text);
+    let dir = temp_dir("so101-tampered");
+    assert!(stdout.starts_with(&format!(
+        "replayed {} steps of pick-place (dls): every recorded step reproduced exactly\n",
+        episode.records.len()
+    )));
+    assert!(stdout.contains("\ngrasp_misses: 1\n"), "{stdout}");
+    assert!(
+        stdout.contains("\nproposed_label: FAILURE (grasp-miss)\n"),
+        "{stdout}"
+    );
+    // One ulp off in step 40's q2: exit 1 naming it.
+    let tampered = dir.join("tampered.csv");
+    let q2 = episode.records[39].q[1];
+    std::fs::write(&tampered, nudged_step(&text, 40, 16, q2)).unwrap();
+    let out = bsv(&["teleop-replay", tampered.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("step 40: q2 differs"), "{err}");
 }

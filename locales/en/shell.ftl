@@ -66,6 +66,7 @@ chain-step-manip-grid = Manipulability grid
 chain-step-trapezoid-profile = Trapezoidal profile
 chain-step-umeyama-2d = Umeyama alignment
 chain-step-teleop = Robot Pilot practice
+chain-step-so101 = Robot Pilot: SO-101
 chain-next-pendulum-energy = Sample a planar IK workspace next, or open Robot Pilot for teleop practice.
 chain-next-ik-workspace = Resample a joint trajectory, or practice teleop resets in Robot Pilot.
 chain-next-traj-resample = Run DH forward kinematics on a small angle set.
@@ -78,6 +79,7 @@ chain-next-pid-step = Map 2R manipulability next.
 chain-next-manip-grid = Build a trapezoidal velocity profile next.
 chain-next-trapezoid-profile = Align 2D point clouds with Umeyama next.
 chain-next-umeyama-2d = Open Robot Pilot Academy, or revisit planar IK.
+chain-next-teleop = Fly the Academy's own arm, the SO-101, in 3D next.
 
 # The offline install's update offer.
 update-ready = A new version of BSV Playground is ready. The page keeps running this one until you reload.

@@ -66,6 +66,7 @@ chain-step-manip-grid = 可操作度グリッド
 chain-step-trapezoid-profile = 台形速度プロファイル
 chain-step-umeyama-2d = Umeyama 位置合わせ
 chain-step-teleop = Robot Pilot 練習
+chain-step-so101 = ロボットパイロット：SO-101
 chain-next-pendulum-energy = 次は平面 IK のワークスペースをサンプリングするか、Robot Pilot で遠隔操作を練習しましょう。
 chain-next-ik-workspace = 関節軌道を再サンプリングするか、Robot Pilot で遠隔操作のリセットを練習しましょう。
 chain-next-traj-resample = 小さな角度の組で DH 順運動学を計算しましょう。
@@ -78,6 +79,7 @@ chain-next-pid-step = 次は 2R の可操作度をマップにしましょう。
 chain-next-manip-grid = 次は台形速度プロファイルを作りましょう。
 chain-next-trapezoid-profile = 次は Umeyama 法で 2D 点群を位置合わせしましょう。
 chain-next-umeyama-2d = Robot Pilot Academy を開くか、平面 IK をもう一度試しましょう。
+chain-next-teleop = 次はアカデミーのアーム SO-101 を 3D で操縦しましょう。
 
 # The offline install's update offer.
 update-ready = BSV Playground の新しいバージョンを利用できます。再読み込みするまでは、今のバージョンのまま動きます。

@@ -11,7 +11,8 @@
 //! names first and renamed only when every file is complete.
 //!
 //! `bsv teleop-replay` re-runs a Robot Pilot episode (`teleop_episode_<n>.csv`, see
-//! [`bsv_playground::teleop::episode`]) from its start state and commands: exit 0 and its
+//! [`bsv_playground::teleop::episode`], or the SO-101's `so101_episode_<n>.csv`, see
+//! [`bsv_playground::so101::episode`]) from its start state and commands: exit 0 and its
 //! metrics when every recorded step comes back bit for bit, exit 1 naming the first step and
 //! column that differ, exit 2 for a file that cannot be read as an episode.
 
@@ -206,7 +207,8 @@ const TELEOP_REPLAY: &str = "teleop-replay";
 fn teleop_replay_help() -> String {
     format!(
         "usage: bsv {TELEOP_REPLAY} <episode csv>\n\n\
-         Replays a Robot Pilot episode (teleop_episode_<n>.csv from the #/teleop page) from the\n\
+         Replays a Robot Pilot episode (teleop_episode_<n>.csv from the #/teleop page, or\n\
+         so101_episode_<n>.csv from the #/so101 page) from the\n\
          start state and the command stream in the file, checks that every recorded step is\n\
          reproduced bit for bit, and prints the episode's metrics.\n\n\
          exit 0  every step reproduced; the metrics on stdout\n\
@@ -241,27 +243,41 @@ fn teleop_replay(args: &[String]) -> Result<(), Failure> {
     let bytes = fs::read(path).map_err(fail)?;
     let text = recipes::decode_input(path, &bytes)
         .map_err(|e| Failure::Usage(format!("{TELEOP_REPLAY}: {e}")))?;
-    let episode = teleop::parse_episode_csv(&text)
-        .map_err(|e| Failure::Usage(format!("{TELEOP_REPLAY}: '{path}': {e}")))?;
-    let metrics = teleop::replay(&episode).map_err(|m| {
+    let unread = |e: teleop::TeleopError| Failure::Usage(format!("{TELEOP_REPLAY}: '{path}': {e}"));
+    let differs = |m: teleop::ReplayMismatch| {
         Failure::Mismatch(format!("{TELEOP_REPLAY}: '{path}': not reproduced: {m}"))
-    })?;
-    print!("{}", replay_report(&episode, &metrics));
+    };
+    if text.starts_with(bsv_playground::so101::episode::MARKER) {
+        use bsv_playground::so101;
+        let episode = so101::parse_episode_csv(&text).map_err(unread)?;
+        let metrics = so101::replay(&episode).map_err(differs)?;
+        let c = &episode.config;
+        let (label, category) = episode.proposed_label();
+        let head = (episode.records.len(), c.task_id(), c.control.method.id());
+        print!("{}", replay_report(head, &metrics, label, category));
+        return Ok(());
+    }
+    let episode = teleop::parse_episode_csv(&text).map_err(unread)?;
+    let metrics = teleop::replay(&episode).map_err(differs)?;
+    let c = &episode.config;
+    let (label, category) = teleop::proposed_label(&episode);
+    let head = (episode.records.len(), c.task.id(), c.control.method.id());
+    print!("{}", replay_report(head, &metrics, label, category));
     Ok(())
 }
 
 /// What `teleop-replay` prints for a reproduced episode: one `name: value` line per figure.
+/// `head` is the steps, the task id and the IK method id.
 fn replay_report(
-    episode: &bsv_playground::teleop::Episode,
+    head: (usize, &str, &str),
     m: &bsv_playground::teleop::EpisodeMetrics,
+    label: bsv_playground::teleop::Label,
+    category: Option<bsv_playground::teleop::FailureCategory>,
 ) -> String {
     use bsv_playground::pyfmt::py_float;
-    let config = &episode.config;
     let mut s = format!(
         "replayed {} steps of {} ({}): every recorded step reproduced exactly\n",
-        episode.records.len(),
-        config.task.id(),
-        config.control.method.id()
+        head.0, head.1, head.2
     );
     let mut line = |name: &str, value: String| s.push_str(&format!("{name}: {value}\n"));
     line(
@@ -295,7 +311,6 @@ fn replay_report(
             format!("{} at step {step}", e.text())
         }),
     );
-    let (label, category) = bsv_playground::teleop::proposed_label(episode);
     line(
         "proposed_label",
         match category {

@@ -155,7 +155,12 @@ fn transpose_step(j: &Mat3, dx: &[f64; 3]) -> [f64; 3] {
 
 /// `λ(σ)²` of `adaptive-dls` for Jacobian `j`.
 pub fn adaptive_damping_sq(params: &ControlParams, j: &Mat3) -> f64 {
-    let sigma = sigma_min(j);
+    damping_sq_for_sigma(params, sigma_min(j))
+}
+
+/// `λ(σ)²` of `adaptive-dls` for a Jacobian whose smallest singular value is `sigma` (any
+/// arm's).
+pub fn damping_sq_for_sigma(params: &ControlParams, sigma: f64) -> f64 {
     let base = params.lambda_min * params.lambda_min;
     if sigma >= params.sigma_threshold || params.sigma_threshold <= 0.0 {
         return base;
@@ -199,12 +204,18 @@ pub fn j_jt(j: &Mat3) -> Mat3 {
 }
 
 /// `A x = b` by Gaussian elimination with partial pivoting; `None` at a zero pivot.
+pub fn solve3(a: Mat3, b: [f64; 3]) -> Option<[f64; 3]> {
+    solve(a, b)
+}
+
+/// `A x = b` for any size N by Gaussian elimination with partial pivoting; `None` at a zero
+/// pivot.
 // Matrix code reads as the textbook writes it, with indices.
 #[allow(clippy::needless_range_loop)]
-pub fn solve3(mut a: Mat3, mut b: [f64; 3]) -> Option<[f64; 3]> {
-    for k in 0..3 {
+pub fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> Option<[f64; N]> {
+    for k in 0..N {
         let mut pivot = k;
-        for r in k + 1..3 {
+        for r in k + 1..N {
             if a[r][k].abs() > a[pivot][k].abs() {
                 pivot = r;
             }
@@ -214,18 +225,18 @@ pub fn solve3(mut a: Mat3, mut b: [f64; 3]) -> Option<[f64; 3]> {
         }
         a.swap(k, pivot);
         b.swap(k, pivot);
-        for r in k + 1..3 {
+        for r in k + 1..N {
             let m = a[r][k] / a[k][k];
-            for c in k..3 {
+            for c in k..N {
                 a[r][c] -= m * a[k][c];
             }
             b[r] -= m * b[k];
         }
     }
-    let mut x = [0.0; 3];
-    for k in (0..3).rev() {
+    let mut x = [0.0; N];
+    for k in (0..N).rev() {
         let mut s = b[k];
-        for c in k + 1..3 {
+        for c in k + 1..N {
             s -= a[k][c] * x[c];
         }
         x[k] = s / a[k][k];
@@ -238,36 +249,40 @@ const JACOBI_SWEEPS: usize = 12;
 
 /// The smallest singular value of `j`: the square root of the smallest eigenvalue of `J Jᵀ`
 /// (cyclic Jacobi rotations, arithmetic and `sqrt` only).
-#[allow(clippy::needless_range_loop)]
 pub fn sigma_min(j: &Mat3) -> f64 {
-    let mut a = j_jt(j);
-    for _ in 0..JACOBI_SWEEPS {
-        for (p, q) in [(0, 1), (0, 2), (1, 2)] {
-            if a[p][q] == 0.0 {
-                continue;
-            }
-            let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
-            let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
-            let t = if theta.is_finite() { t } else { 0.0 };
-            let c = 1.0 / (t * t + 1.0).sqrt();
-            let s = t * c;
-            // A' = Rᵀ A R with the rotation in the (p, q) plane.
-            for k in 0..3 {
-                let akp = a[k][p];
-                let akq = a[k][q];
-                a[k][p] = c * akp - s * akq;
-                a[k][q] = s * akp + c * akq;
-            }
-            for k in 0..3 {
-                let apk = a[p][k];
-                let aqk = a[q][k];
-                a[p][k] = c * apk - s * aqk;
-                a[q][k] = s * apk + c * aqk;
+    smallest_eigenvalue(j_jt(j), JACOBI_SWEEPS).max(0.0).sqrt()
+}
+
+/// The smallest eigenvalue of the symmetric matrix `a` after `sweeps` cyclic Jacobi sweeps
+/// (pairs (p, q), p < q, in order).
+#[allow(clippy::needless_range_loop)]
+pub fn smallest_eigenvalue<const N: usize>(mut a: [[f64; N]; N], sweeps: usize) -> f64 {
+    for _ in 0..sweeps {
+        for p in 0..N {
+            for q in p + 1..N {
+                if a[p][q] == 0.0 {
+                    continue;
+                }
+                let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+                let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+                let t = if theta.is_finite() { t } else { 0.0 };
+                let c = 1.0 / (t * t + 1.0).sqrt();
+                let s = t * c;
+                // A' = Rᵀ A R with the rotation in the (p, q) plane.
+                for k in 0..N {
+                    let (akp, akq) = (a[k][p], a[k][q]);
+                    a[k][p] = c * akp - s * akq;
+                    a[k][q] = s * akp + c * akq;
+                }
+                for k in 0..N {
+                    let (apk, aqk) = (a[p][k], a[q][k]);
+                    a[p][k] = c * apk - s * aqk;
+                    a[q][k] = s * apk + c * aqk;
+                }
             }
         }
     }
-    let smallest = a[0][0].min(a[1][1]).min(a[2][2]);
-    smallest.max(0.0).sqrt()
+    (1..N).fold(a[0][0], |m, i| m.min(a[i][i]))
 }
 
 #[cfg(test)]

@@ -574,7 +574,7 @@ impl std::fmt::Display for ReplayMismatch {
     }
 }
 
-fn mismatch(step: u64, field: &str, expected: String, got: String) -> ReplayMismatch {
+pub(crate) fn mismatch(step: u64, field: &str, expected: String, got: String) -> ReplayMismatch {
     ReplayMismatch {
         step,
         field: field.to_string(),
@@ -584,7 +584,12 @@ fn mismatch(step: u64, field: &str, expected: String, got: String) -> ReplayMism
 }
 
 /// Checks one number bit for bit.
-fn same_f64(step: u64, field: &str, expected: f64, got: f64) -> Result<(), ReplayMismatch> {
+pub(crate) fn same_f64(
+    step: u64,
+    field: &str,
+    expected: f64,
+    got: f64,
+) -> Result<(), ReplayMismatch> {
     if expected.to_bits() == got.to_bits() {
         Ok(())
     } else {
@@ -592,7 +597,12 @@ fn same_f64(step: u64, field: &str, expected: f64, got: f64) -> Result<(), Repla
     }
 }
 
-fn same_bool(step: u64, field: &str, expected: bool, got: bool) -> Result<(), ReplayMismatch> {
+pub(crate) fn same_bool(
+    step: u64,
+    field: &str,
+    expected: bool,
+    got: bool,
+) -> Result<(), ReplayMismatch> {
     if expected == got {
         Ok(())
     } else {
@@ -811,7 +821,25 @@ pub const INPUT_LAG_STEPS: u32 = 10;
 /// `reset-failure` and `sim-instability` are never proposed: the page's preflight detects the
 /// first, and the pilot names the second.
 pub fn proposed_label(episode: &Episode) -> (Label, Option<FailureCategory>) {
-    let m = metrics(episode);
+    let config = &episode.config;
+    let pick = matches!(config.task, Task::PickPlace | Task::PickPlaceObstacle);
+    let last_held = episode.records.last().is_some_and(|r| r.held);
+    propose(
+        &metrics(episode),
+        pick && !last_held,
+        config.noise_sigma,
+        config.latency_steps,
+    )
+}
+
+/// [`proposed_label`] from an episode's figures: `released` says the episode is a pick task
+/// whose object was not held at its end, `noise_sigma` and `latency_steps` are its config's.
+pub fn propose(
+    m: &EpisodeMetrics,
+    released: bool,
+    noise_sigma: f64,
+    latency_steps: u32,
+) -> (Label, Option<FailureCategory>) {
     let first = m
         .first_failure
         .and_then(|(_, e)| FailureCategory::of_event(&e))
@@ -827,15 +855,12 @@ pub fn proposed_label(episode: &Episode) -> (Label, Option<FailureCategory>) {
     } else {
         Label::Failure
     };
-    let config = &episode.config;
-    let set_down_outside = matches!(config.task, Task::PickPlace | Task::PickPlaceObstacle)
-        && m.grasps > 0
-        && episode.records.last().is_some_and(|r| !r.held);
+    let set_down_outside = released && m.grasps > 0;
     let category = first.unwrap_or(if set_down_outside {
         FailureCategory::GoalMiss
-    } else if config.noise_sigma > 0.0 {
+    } else if noise_sigma > 0.0 {
         FailureCategory::TrackingLoss
-    } else if config.latency_steps >= INPUT_LAG_STEPS {
+    } else if latency_steps >= INPUT_LAG_STEPS {
         FailureCategory::InputLag
     } else if m.outcome == Some(Outcome::Timeout) {
         FailureCategory::Timeout

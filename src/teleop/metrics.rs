@@ -76,13 +76,11 @@ fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
 }
 
 impl EpisodeMetrics {
-    /// The figures of an episode run with `config` from `start`, from its `records` (no
-    /// re-simulation).
-    pub fn of(config: &SceneConfig, start: &State, records: &[StepRecord]) -> EpisodeMetrics {
-        let arm = &config.arm;
-        let start_tip = fk(arm, &start.q);
-        let mut m = EpisodeMetrics {
-            duration_s: records.last().map_or(0.0, |r| r.t_s),
+    /// Figures with no event counted yet: the duration, the start's manipulability and the
+    /// outcome given, the path and efficiency 0.
+    pub fn empty(duration_s: f64, min_manipulability: f64, outcome: Option<Outcome>) -> Self {
+        EpisodeMetrics {
+            duration_s,
             path_m: 0.0,
             efficiency: 0.0,
             collisions: 0,
@@ -93,11 +91,41 @@ impl EpisodeMetrics {
             grasp_misses: 0,
             drops: 0,
             targets_reached: 0,
-            min_manipulability: manipulability(arm, &start.q),
+            min_manipulability,
             fitts: None,
             first_failure: None,
-            outcome: Outcome::of(records),
-        };
+            outcome,
+        }
+    }
+
+    /// Counts event `e` of step `step` (and keeps the first failure).
+    pub fn count(&mut self, step: u64, e: &Event) {
+        match e {
+            Event::Collision { .. } => self.collisions += 1,
+            Event::JointLimit { .. } => self.joint_limit_stops += 1,
+            Event::SpeedLimit { .. } => self.speed_limit_stops += 1,
+            Event::Singularity => self.singularity_stops += 1,
+            Event::Grasp => self.grasps += 1,
+            Event::GraspMiss => self.grasp_misses += 1,
+            Event::Drop => self.drops += 1,
+            Event::TargetReached { .. } => self.targets_reached += 1,
+            _ => {}
+        }
+        if self.first_failure.is_none() && e.is_failure() {
+            self.first_failure = Some((step, *e));
+        }
+    }
+
+    /// The figures of an episode run with `config` from `start`, from its `records` (no
+    /// re-simulation).
+    pub fn of(config: &SceneConfig, start: &State, records: &[StepRecord]) -> EpisodeMetrics {
+        let arm = &config.arm;
+        let start_tip = fk(arm, &start.q);
+        let mut m = EpisodeMetrics::empty(
+            records.last().map_or(0.0, |r| r.t_s),
+            manipulability(arm, &start.q),
+            Outcome::of(records),
+        );
         let mut prev = (start_tip.x, start_tip.z);
         let mut ideal = 0.0;
         // Reach: where and when the previous target was confirmed; Fitts per target.
@@ -110,32 +138,19 @@ impl EpisodeMetrics {
             prev = tip;
             m.min_manipulability = m.min_manipulability.min(r.manipulability);
             for e in &r.events {
-                match e {
-                    Event::Collision { .. } => m.collisions += 1,
-                    Event::JointLimit { .. } => m.joint_limit_stops += 1,
-                    Event::SpeedLimit { .. } => m.speed_limit_stops += 1,
-                    Event::Singularity => m.singularity_stops += 1,
-                    Event::Grasp => m.grasps += 1,
-                    Event::GraspMiss => m.grasp_misses += 1,
-                    Event::Drop => m.drops += 1,
-                    Event::TargetReached { index } => {
-                        m.targets_reached += 1;
-                        if let Some(t) = config.task.targets().get(*index) {
-                            let d = dist(leg_start.0, (t.x, t.z));
-                            ideal += (d - t.radius).max(0.0);
-                            let id = crate::math::log(d / (2.0 * t.radius) + 1.0)
-                                / std::f64::consts::LN_2;
-                            let movement_s = r.t_s - dwell_s - leg_start.1;
-                            if movement_s > 0.0 {
-                                fitts.push((id, id / movement_s));
-                            }
+                m.count(r.step, e);
+                if let Event::TargetReached { index } = e {
+                    if let Some(t) = config.task.targets().get(*index) {
+                        let d = dist(leg_start.0, (t.x, t.z));
+                        ideal += (d - t.radius).max(0.0);
+                        let id =
+                            crate::math::log(d / (2.0 * t.radius) + 1.0) / std::f64::consts::LN_2;
+                        let movement_s = r.t_s - dwell_s - leg_start.1;
+                        if movement_s > 0.0 {
+                            fitts.push((id, id / movement_s));
                         }
-                        leg_start = (tip, r.t_s);
                     }
-                    _ => {}
-                }
-                if m.first_failure.is_none() && e.is_failure() {
-                    m.first_failure = Some((r.step, *e));
+                    leg_start = (tip, r.t_s);
                 }
             }
         }

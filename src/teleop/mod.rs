@@ -18,8 +18,10 @@
 pub mod arm;
 pub mod control;
 pub mod episode;
+pub mod events;
 pub mod metrics;
 pub mod pilot;
+pub mod rules;
 pub mod scene;
 pub mod session;
 pub mod sim;

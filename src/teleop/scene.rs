@@ -269,8 +269,50 @@ impl Default for SceneConfig {
     }
 }
 
+/// Checks the IK controller's parameters (any arm's).
+pub fn check_control(c: &ControlParams) -> Result<(), TeleopError> {
+    check("lambda", c.lambda, 0.0, 1.0)?;
+    check("pinv_gain", c.pinv_gain, 0.0, 10.0)?;
+    check("trans_gain", c.trans_gain, 0.0, 1000.0)?;
+    check("lambda_min", c.lambda_min, 0.0, 1.0)?;
+    check("lambda_max", c.lambda_max, 0.0, 1.0)?;
+    check("sigma_threshold", c.sigma_threshold, 0.0, 1.0)
+}
+
+/// Checks latency, noise and its seed, time box, success steps and the position and rotation
+/// sensitivities (any arm's).
+pub fn check_run(
+    latency_steps: u32,
+    noise_sigma: f64,
+    noise_seed: u64,
+    time_box_s: f64,
+    success_steps: u32,
+    pos_sensitivity: f64,
+    rot_sensitivity: f64,
+) -> Result<(), TeleopError> {
+    check(
+        "latency_steps",
+        f64::from(latency_steps),
+        0.0,
+        f64::from(MAX_LATENCY_STEPS),
+    )?;
+    check("noise_sigma", noise_sigma, 0.0, 1.0)?;
+    if noise_seed > crate::rng::SEED_MAX {
+        return Err(TeleopError::OutOfRange {
+            field: "noise_seed".to_string(),
+            value: noise_seed as f64,
+            min: 0.0,
+            max: crate::rng::SEED_MAX as f64,
+        });
+    }
+    check("time_box_s", time_box_s, 1.0, 600.0)?;
+    check("success_steps", f64::from(success_steps), 1.0, 1000.0)?;
+    check("pos_sensitivity", pos_sensitivity, 0.01, 10.0)?;
+    check("rot_sensitivity", rot_sensitivity, 0.01, 10.0)
+}
+
 /// Checks `value` is finite and within `[min, max]`.
-fn check(field: &str, value: f64, min: f64, max: f64) -> Result<(), TeleopError> {
+pub fn check(field: &str, value: f64, min: f64, max: f64) -> Result<(), TeleopError> {
     if !value.is_finite() {
         return Err(TeleopError::NotFinite {
             field: field.to_string(),
@@ -307,32 +349,16 @@ impl SceneConfig {
             check("qd_max", v, 0.01, 50.0)?;
         }
         check("link_radius", arm.link_radius, 0.0005, 0.03)?;
-        let c = &self.control;
-        check("lambda", c.lambda, 0.0, 1.0)?;
-        check("pinv_gain", c.pinv_gain, 0.0, 10.0)?;
-        check("trans_gain", c.trans_gain, 0.0, 1000.0)?;
-        check("lambda_min", c.lambda_min, 0.0, 1.0)?;
-        check("lambda_max", c.lambda_max, 0.0, 1.0)?;
-        check("sigma_threshold", c.sigma_threshold, 0.0, 1.0)?;
-        check(
-            "latency_steps",
-            f64::from(self.latency_steps),
-            0.0,
-            f64::from(MAX_LATENCY_STEPS),
+        check_control(&self.control)?;
+        check_run(
+            self.latency_steps,
+            self.noise_sigma,
+            self.noise_seed,
+            self.time_box_s,
+            self.success_steps,
+            self.pos_sensitivity,
+            self.rot_sensitivity,
         )?;
-        check("noise_sigma", self.noise_sigma, 0.0, 1.0)?;
-        if self.noise_seed > crate::rng::SEED_MAX {
-            return Err(TeleopError::OutOfRange {
-                field: "noise_seed".to_string(),
-                value: self.noise_seed as f64,
-                min: 0.0,
-                max: crate::rng::SEED_MAX as f64,
-            });
-        }
-        check("time_box_s", self.time_box_s, 1.0, 600.0)?;
-        check("success_steps", f64::from(self.success_steps), 1.0, 1000.0)?;
-        check("pos_sensitivity", self.pos_sensitivity, 0.01, 10.0)?;
-        check("rot_sensitivity", self.rot_sensitivity, 0.01, 10.0)?;
         if let Task::Reach { targets } = &self.task {
             if targets.is_empty() || targets.len() > MAX_TARGETS {
                 return Err(TeleopError::TargetCount {

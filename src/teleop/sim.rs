@@ -12,6 +12,9 @@ use serde::{Deserialize, Serialize};
 use super::arm::{fk, jacobian, manipulability};
 use super::control::ik_step;
 use super::error::TeleopError;
+use super::rules::{
+    add_noise, clamp_to_limits, delayed, fall, goal_held, limit_speed, new_contacts, tick, time_box,
+};
 use super::scene::{
     arm_capsules, first_contact, point_box_distance, segment_box_distance, Box2, Capsule, Layout,
     SceneConfig, SceneGeometry, Segment, TargetStatus, TargetView, Task, BLOCK_HALF,
@@ -20,12 +23,7 @@ use super::scene::{
 };
 use crate::rng::NumpyRng;
 
-/// Gravity for a released block, m/s².
-pub const GRAVITY: f64 = 9.81;
-/// A joint that hit a position limit reports [`Event::JointLimit`] again only after it has
-/// moved this far from the limit, rad (so pressing against a limit is one stop, however the
-/// IK jitters along it).
-pub const LIMIT_REARM_RAD: f64 = 0.01;
+pub use super::events::{Event, Outcome, GRAVITY, LIMIT_REARM_RAD};
 /// A block let go with its bottom at most this high above the surface under it is set
 /// down, not dropped: outside the goal that is a goal miss (see
 /// [`super::episode::proposed_label`]), not [`Event::Drop`], m.
@@ -111,15 +109,6 @@ pub struct Block {
     pub grasp: Option<GraspFrame>,
 }
 
-/// How an episode ended.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Outcome {
-    /// The goal condition held long enough.
-    Success,
-    /// The time box ran out.
-    Timeout,
-}
-
 impl Outcome {
     /// How the steps of `records` ended: the last [`Event::Success`] or [`Event::Timeout`]
     /// among them (`None`: ended by the pilot or interrupted).
@@ -131,125 +120,6 @@ impl Outcome {
                 _ => None,
             })
         })
-    }
-
-    /// `success`, `timeout`.
-    pub fn id(self) -> &'static str {
-        match self {
-            Outcome::Success => "success",
-            Outcome::Timeout => "timeout",
-        }
-    }
-}
-
-/// Something the step detected. Links and joints count from 1; link 4 in a collision is the
-/// carried block; target indices count from 0 (as [`State::target_index`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Event {
-    /// The gripper closed on the block.
-    Grasp,
-    /// The gripper closed on nothing.
-    GraspMiss,
-    /// The gripper opened and let the block go.
-    Release,
-    /// The block fell from the gripper outside the goal.
-    Drop,
-    /// A motion was stopped by contact of this link (1–3; 4 = the carried block).
-    Collision {
-        /// 1–3 a link (the fingers are link 3), 4 the carried block.
-        link: u8,
-    },
-    /// This joint (1–3) hit a position limit.
-    JointLimit {
-        /// 1 shoulder, 2 elbow, 3 wrist.
-        joint: u8,
-    },
-    /// This joint's (1–3) speed limit cut the step.
-    SpeedLimit {
-        /// 1 shoulder, 2 elbow, 3 wrist.
-        joint: u8,
-    },
-    /// Motion was commanded near a singularity (or the IK could not solve).
-    Singularity,
-    /// Reach target `index` (from 0) was held long enough.
-    TargetReached {
-        /// Index into the task's targets, from 0.
-        index: usize,
-    },
-    /// The episode succeeded.
-    Success,
-    /// The time box ran out.
-    Timeout,
-}
-
-impl Event {
-    /// `grasp`, `grasp-miss`, `release`, `drop`, `collision`, `joint-limit`, `speed-limit`,
-    /// `singularity`, `target-reached`, `success`, `timeout`.
-    pub fn id(&self) -> &'static str {
-        match self {
-            Event::Grasp => "grasp",
-            Event::GraspMiss => "grasp-miss",
-            Event::Release => "release",
-            Event::Drop => "drop",
-            Event::Collision { .. } => "collision",
-            Event::JointLimit { .. } => "joint-limit",
-            Event::SpeedLimit { .. } => "speed-limit",
-            Event::Singularity => "singularity",
-            Event::TargetReached { .. } => "target-reached",
-            Event::Success => "success",
-            Event::Timeout => "timeout",
-        }
-    }
-
-    /// The link, joint or target index the event names, if any.
-    pub fn arg(&self) -> Option<usize> {
-        match self {
-            Event::Collision { link } => Some(usize::from(*link)),
-            Event::JointLimit { joint } | Event::SpeedLimit { joint } => Some(usize::from(*joint)),
-            Event::TargetReached { index } => Some(*index),
-            _ => None,
-        }
-    }
-
-    /// The event as the episode CSV writes it: the id, then `:` and the argument if any
-    /// (`collision:2`, `target-reached:0`).
-    pub fn text(&self) -> String {
-        match self.arg() {
-            Some(arg) => format!("{}:{arg}", self.id()),
-            None => self.id().to_string(),
-        }
-    }
-
-    /// Reads [`Self::text`] back.
-    pub fn from_text(text: &str) -> Option<Event> {
-        let (id, arg) = match text.split_once(':') {
-            Some((id, arg)) => (id, Some(arg.parse::<usize>().ok()?)),
-            None => (text, None),
-        };
-        let small = |a: usize| u8::try_from(a).ok();
-        Some(match (id, arg) {
-            ("grasp", None) => Event::Grasp,
-            ("grasp-miss", None) => Event::GraspMiss,
-            ("release", None) => Event::Release,
-            ("drop", None) => Event::Drop,
-            ("collision", Some(a)) => Event::Collision { link: small(a)? },
-            ("joint-limit", Some(a)) => Event::JointLimit { joint: small(a)? },
-            ("speed-limit", Some(a)) => Event::SpeedLimit { joint: small(a)? },
-            ("singularity", None) => Event::Singularity,
-            ("target-reached", Some(index)) => Event::TargetReached { index },
-            ("success", None) => Event::Success,
-            ("timeout", None) => Event::Timeout,
-            _ => return None,
-        })
-    }
-
-    /// Whether the event is a failure the pilot should review (grasp miss, drop, collision,
-    /// timeout).
-    pub fn is_failure(&self) -> bool {
-        matches!(
-            self,
-            Event::GraspMiss | Event::Drop | Event::Collision { .. } | Event::Timeout
-        )
     }
 }
 
@@ -454,34 +324,26 @@ impl Sim {
         let mut events = Vec::new();
 
         // 1. Latency.
-        let mut applied = if self.config.latency_steps == 0 {
-            cmd
-        } else {
-            self.state.pending.push_back(cmd);
-            self.state
-                .pending
-                .pop_front()
-                .unwrap_or(Command::idle(self.state.gripper_closed))
-        };
+        let idle = Command::idle(self.state.gripper_closed);
+        let mut applied = delayed(
+            &mut self.state.pending,
+            self.config.latency_steps,
+            cmd,
+            idle,
+        );
         // 2. Noise.
-        let sigma = self.config.noise_sigma;
-        if sigma > 0.0 {
-            applied.dx += sigma * self.rng.standard_normal();
-            applied.dz += sigma * self.rng.standard_normal();
-            applied.dphi += sigma * self.rng.standard_normal();
-        }
+        let mut axes = [applied.dx, applied.dz, applied.dphi];
+        add_noise(&mut axes, self.config.noise_sigma, &mut self.rng);
+        [applied.dx, applied.dz, applied.dphi] = axes;
 
         self.move_arm(&applied, &mut events);
         self.operate_gripper(applied.gripper_closed, &mut events);
         self.move_block();
 
-        self.state.step += 1;
-        self.state.t_s = self.state.step as f64 / f64::from(Sim::RATE_HZ);
+        tick(&mut self.state.step, &mut self.state.t_s, Sim::RATE_HZ);
         self.check_goal(&mut events);
-        if self.state.done.is_none() && self.state.t_s >= self.config.time_box_s {
-            self.state.done = Some(Outcome::Timeout);
-            events.push(Event::Timeout);
-        }
+        let s = &mut self.state;
+        time_box(s.t_s, self.config.time_box_s, &mut s.done, &mut events);
         self.record(cmd, applied, events)
     }
 
@@ -509,40 +371,21 @@ impl Sim {
         let mut dq = solved.unwrap_or([0.0; 3]);
 
         // Speed limits: scale the whole step.
-        let mut worst = (1.0, 0usize);
-        for (i, d) in dq.iter().enumerate() {
-            let ratio = d.abs() / (arm.qd_max[i] * Sim::DT);
-            if ratio > worst.0 {
-                worst = (ratio, i);
-            }
-        }
-        let speed_limited = worst.0 > 1.0;
-        if speed_limited {
-            for d in dq.iter_mut() {
-                *d /= worst.0;
-            }
-            if !self.state.speed_limited {
-                events.push(Event::SpeedLimit {
-                    joint: worst.1 as u8 + 1,
-                });
-            }
-        }
-        self.state.speed_limited = speed_limited;
+        let was = self.state.speed_limited;
+        self.state.speed_limited = limit_speed(&mut dq, &arm.qd_max, Sim::DT, was, events);
 
-        // Position limits: clamp each joint.
+        // Position limits: clamp each joint (a joint resting against its limit is one stop
+        // until it leaves the limit).
         let mut q_new = [0.0; 3];
-        for i in 0..3 {
-            let target = q[i] + dq[i];
-            let clamped = target.clamp(arm.q_min[i], arm.q_max[i]);
-            let near_limit = (clamped - arm.q_min[i]).min(arm.q_max[i] - clamped) < LIMIT_REARM_RAD;
-            // A joint resting against its limit is one stop until it leaves the limit.
-            let at_limit = clamped != target || (self.state.at_limit[i] && near_limit);
-            if at_limit && !self.state.at_limit[i] {
-                events.push(Event::JointLimit { joint: i as u8 + 1 });
-            }
-            self.state.at_limit[i] = at_limit;
-            q_new[i] = clamped;
-        }
+        let limits: [(f64, f64); 3] = std::array::from_fn(|i| (arm.q_min[i], arm.q_max[i]));
+        clamp_to_limits(
+            &q,
+            &dq,
+            &limits,
+            &mut self.state.at_limit,
+            &mut q_new,
+            events,
+        );
 
         // Contact: a move into the table or an obstacle does not happen.
         let mut contact = [false; 4];
@@ -556,12 +399,7 @@ impl Sim {
                 contact[3] = true;
             }
         }
-        for (i, now) in contact.iter().enumerate() {
-            if *now && !self.state.contact[i] {
-                events.push(Event::Collision { link: i as u8 + 1 });
-            }
-        }
-        self.state.contact = contact;
+        new_contacts(&contact, &mut self.state.contact, events);
         if !contact.iter().any(|c| *c) {
             self.state.q = q_new;
         }
@@ -682,11 +520,7 @@ impl Sim {
             return;
         }
         let support = support_below(block.x, block.z - BLOCK_HALF, &self.layout.obstacles);
-        block.vz -= GRAVITY * Sim::DT;
-        block.z += block.vz * Sim::DT;
-        if block.z - BLOCK_HALF <= support {
-            block.z = support + BLOCK_HALF;
-            block.vz = 0.0;
+        if fall(&mut block.z, &mut block.vz, BLOCK_HALF, support, Sim::DT) {
             block.resting = true;
         }
     }
@@ -709,11 +543,9 @@ impl Sim {
                     && self.layout.goal.is_some_and(|g| b.x >= g.x0 && b.x <= g.x1)
             }
         };
-        s.success_count = if holds { s.success_count + 1 } else { 0 };
-        if s.success_count < self.config.success_steps {
+        if !goal_held(&mut s.success_count, holds, self.config.success_steps) {
             return;
         }
-        s.success_count = 0;
         if let Task::Reach { targets } = &self.config.task {
             events.push(Event::TargetReached {
                 index: s.target_index,

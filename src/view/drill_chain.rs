@@ -1,10 +1,11 @@
 //! The seed's "next step" chain of drills, shown at the foot of every drill page: pendulum →
 //! IK workspace → resample → DH → Jacobian → cubic → SE(3) → RRT → PID → manipulability grid →
-//! trapezoid → Umeyama → Robot Pilot practice. Each step is a recipe (or the teleop practice
-//! page); its link goes to the recipe's own page when it has one, else to the drills page.
+//! trapezoid → Umeyama → Robot Pilot practice → Robot Pilot on the SO-101. Each step is a
+//! recipe (or one of the two Robot Pilot pages); its link goes to the recipe's own page when
+//! it has one, else to the drills page.
 
-/// A step of the chain: a recipe id, or [`TELEOP`].
-pub const CHAIN: [&str; 13] = [
+/// A step of the chain: a recipe id, or a page of [`PAGE_STEPS`].
+pub const CHAIN: [&str; 14] = [
     "pendulum-energy",
     "ik-workspace",
     "traj-resample",
@@ -18,10 +19,17 @@ pub const CHAIN: [&str; 13] = [
     "trapezoid-profile",
     "umeyama-2d",
     TELEOP,
+    SO101,
 ];
 
-/// The last step: Robot Pilot practice (the `teleop` page).
+/// Robot Pilot practice (the `teleop` page).
 pub const TELEOP: &str = "teleop";
+
+/// The last step: Robot Pilot on the SO-101 (the `so101` page).
+pub const SO101: &str = "so101";
+
+/// The steps that are pages, not recipes.
+pub const PAGE_STEPS: [&str; 2] = [TELEOP, SO101];
 
 /// Where a step's link goes: `(page id, query)`.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -31,16 +39,16 @@ pub struct StepLink {
 }
 
 /// The link of `step`, given which recipe runs on which page (`page_of`, i.e.
-/// `RecipeInfo::page`) and which pages exist (`exists`). `None` for the teleop step while its
-/// page does not exist.
+/// `RecipeInfo::page`) and which pages exist (`exists`). `None` for a page step while its page
+/// does not exist.
 pub fn link(
     step: &str,
     page_of: impl Fn(&str) -> Option<&'static str>,
     exists: impl Fn(&str) -> bool,
 ) -> Option<StepLink> {
-    if step == TELEOP {
-        return exists(TELEOP).then_some(StepLink {
-            page: TELEOP,
+    if let Some(page) = PAGE_STEPS.iter().find(|p| **p == step) {
+        return exists(page).then_some(StepLink {
+            page,
             query: Vec::new(),
         });
     }
@@ -63,8 +71,8 @@ pub fn positions_of_page(page: &str, page_of: impl Fn(&str) -> Option<&'static s
         .iter()
         .enumerate()
         .filter(|(_, step)| {
-            if **step == TELEOP {
-                page == TELEOP
+            if PAGE_STEPS.contains(step) {
+                page == **step
             } else {
                 page_of(step) == Some(page)
             }
@@ -106,13 +114,18 @@ mod tests {
 
     #[test]
     fn the_chain_is_the_seeds_and_covers_every_recipe_once() {
-        let mut ids: Vec<&str> = CHAIN.iter().copied().filter(|s| *s != TELEOP).collect();
+        let mut ids: Vec<&str> = CHAIN
+            .iter()
+            .copied()
+            .filter(|s| !PAGE_STEPS.contains(s))
+            .collect();
         ids.sort_unstable();
         let mut recipes: Vec<&str> = crate::recipes::RECIPES.iter().map(|r| r.info.id).collect();
         recipes.sort_unstable();
         assert_eq!(ids, recipes);
         assert_eq!(CHAIN[0], "pendulum-energy");
         assert_eq!(CHAIN[12], TELEOP);
+        assert_eq!(CHAIN[13], SO101);
     }
 
     #[test]
@@ -125,6 +138,7 @@ mod tests {
         assert_eq!(l.query, vec![("recipe".to_owned(), "dh-fk".to_owned())]);
         assert_eq!(link(TELEOP, page_of, exists), None);
         assert_eq!(link(TELEOP, page_of, |_| true).unwrap().page, TELEOP);
+        assert_eq!(link(SO101, page_of, |_| true).unwrap().page, SO101);
     }
 
     #[test]
@@ -133,6 +147,7 @@ mod tests {
         assert_eq!(primary_position("ik-2r", page_of), Some(1));
         assert_eq!(primary_position("rrt-2d", page_of), Some(7));
         assert_eq!(primary_position(TELEOP, page_of), Some(12));
+        assert_eq!(primary_position(SO101, page_of), Some(13));
         assert_eq!(primary_position("home", page_of), None);
         assert_eq!(label_id("dh-fk"), "chain-step-dh-fk");
         assert_eq!(next_sentence_id(TELEOP), "chain-next-teleop");

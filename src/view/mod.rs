@@ -32,6 +32,7 @@ pub mod rrt;
 pub mod scene3d;
 pub mod se3_relative;
 pub mod signal;
+pub mod so101;
 pub mod stepper;
 pub mod table;
 pub mod teleop;

@@ -106,10 +106,11 @@ pub fn key_action(code: &str) -> Option<KeyAction> {
     }
 }
 
-/// The keys held down (physical codes), in press order.
+/// The keys held down (physical codes), in press order, each with the axis (an index) and
+/// sign it holds: the planar page's three axes, or the SO-101's six (`crate::so101::input`).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct HeldKeys {
-    held: Vec<(String, Axis, i8)>,
+    held: Vec<(String, usize, i8)>,
 }
 
 impl HeldKeys {
@@ -119,6 +120,11 @@ impl HeldKeys {
         let Some(KeyAction::Hold { axis, sign }) = key_action(code) else {
             return false;
         };
+        self.press_axis(code, axis.index(), sign)
+    }
+
+    /// Key `code` went down holding `sign` on axis `axis`; `true` if it was not held yet.
+    pub fn press_axis(&mut self, code: &str, axis: usize, sign: i8) -> bool {
         if self.held.iter().any(|(c, _, _)| c == code) {
             return false;
         }
@@ -143,9 +149,16 @@ impl HeldKeys {
 
     /// The held keys' axes `[x, z, phi]`, each the sum of its keys clamped to [-1, 1].
     pub fn axes(&self) -> [f64; 3] {
-        let mut out = [0.0; 3];
+        self.axes_of()
+    }
+
+    /// The held keys' N axes, each the sum of its keys clamped to [-1, 1].
+    pub fn axes_of<const N: usize>(&self) -> [f64; N] {
+        let mut out = [0.0; N];
         for (_, axis, sign) in &self.held {
-            out[axis.index()] += f64::from(*sign);
+            if let Some(v) = out.get_mut(*axis) {
+                *v += f64::from(*sign);
+            }
         }
         out.map(|v: f64| v.clamp(-1.0, 1.0))
     }
@@ -189,6 +202,17 @@ pub fn dead_zoned(value: f64, dead_zone: f64) -> f64 {
 }
 
 impl PadMapper {
+    /// The gripper toggle (X pressed since the last poll) and whether the pad is in use (a
+    /// stick out of the dead zone or a button down), for any arm's mapping.
+    pub fn buttons(&mut self, pad: &PadSnapshot, dead_zone: f64) -> (bool, bool) {
+        let x_down = pad.buttons.get(PAD_BUTTON_X).copied().unwrap_or(0.0) > PAD_PRESS;
+        let toggle = x_down && !self.x_was_down;
+        self.x_was_down = x_down;
+        let active = pad.axes.iter().any(|v| dead_zoned(*v, dead_zone) != 0.0)
+            || pad.buttons.iter().any(|b| *b > PAD_PRESS);
+        (toggle, active)
+    }
+
     /// Maps one poll.
     pub fn map(&mut self, pad: &PadSnapshot, dead_zone: f64) -> PadOutput {
         let axis = |i: usize| dead_zoned(pad.axes.get(i).copied().unwrap_or(0.0), dead_zone);
@@ -200,11 +224,7 @@ impl PadMapper {
             (false, true) => -DPAD_SCALE,
             _ => 0.0,
         };
-        let x_down = button(PAD_BUTTON_X);
-        let toggle_gripper = x_down && !self.x_was_down;
-        self.x_was_down = x_down;
-        let active = pad.axes.iter().any(|v| dead_zoned(*v, dead_zone) != 0.0)
-            || pad.buttons.iter().any(|b| *b > PAD_PRESS);
+        let (toggle_gripper, active) = self.buttons(pad, dead_zone);
         PadOutput {
             axes: [x + 0.0, z + 0.0, phi],
             toggle_gripper,

@@ -64,3 +64,17 @@ export function englishStrings() {
   }
   return [...en];
 }
+
+/**
+ * The English UI strings ([`englishStrings`]) the page shows, leaving out file names (the
+ * `data-download` buttons) and key caps (`kbd`), which are the same in every language.
+ */
+export async function englishOnPage(page) {
+  const text = await page.evaluate(() => {
+    let all = document.body.innerText;
+    for (const b of document.querySelectorAll('[data-download]')) all = all.replaceAll(b.dataset.download, '');
+    for (const k of document.querySelectorAll('kbd')) all = all.replaceAll(k.innerText, '');
+    return all;
+  });
+  return { text, left: englishStrings().filter((s) => text.includes(s)) };
+}

@@ -15,8 +15,8 @@
 use serde_json::{json, Map, Value};
 use sha2::Digest;
 
+use super::kind::PracticeEpisode;
 use super::practice::Session;
-use super::table::{episode_file_name, EPISODES_NAME};
 use crate::teleop::sim::Event;
 
 /// The evidence file's name.
@@ -25,7 +25,8 @@ pub const EVIDENCE_NAME: &str = "teleop_session_evidence.json";
 /// `runtime` of the evidence.
 pub const RUNTIME: &str = "bsv-playground";
 
-/// `embodiment` of the evidence: our simulated arm, not an SO-101.
+/// `embodiment` of the planar arm's evidence: our simulated arm, not an SO-101 (the SO-101's
+/// is [`crate::so101::EMBODIMENT`]).
 pub const EMBODIMENT: &str = "bsv-planar-3r-gripper-sim";
 
 /// `type` of the per-episode summary table among the `dataArtifacts`.
@@ -56,7 +57,7 @@ impl Artifact {
     }
 }
 
-impl Session {
+impl<E: PracticeEpisode> Session<E> {
     /// `teleop_session_evidence.json` (pretty-printed, keys in the schema's order), with
     /// `ended_at` as the end time when the session has none yet.
     pub fn evidence(&self, ended_at: &str) -> String {
@@ -82,7 +83,7 @@ impl Session {
     fn episode_artifacts(&self) -> Vec<Artifact> {
         self.episodes
             .iter()
-            .map(|e| Artifact::of(&episode_file_name(e.number), &e.csv()))
+            .map(|e| Artifact::of(&E::episode_file_name(e.number), &e.csv()))
             .collect()
     }
 
@@ -91,7 +92,7 @@ impl Session {
     fn evidence_value_with(&self, ended_at: &str, episode_artifacts: &[Artifact]) -> Value {
         let s = self.summary();
         let episodes_csv = self.episodes_csv();
-        let table = Artifact::of(EPISODES_NAME, &episodes_csv);
+        let table = Artifact::of(&E::episodes_name(), &episodes_csv);
         let artifacts: Vec<Value> = std::iter::once((TABLE_TYPE, &table))
             .chain(episode_artifacts.iter().map(|a| (EPISODE_TYPE, a)))
             .map(|(kind, a)| {
@@ -106,19 +107,15 @@ impl Session {
             .collect();
         let mut safety = Vec::new();
         for e in &self.episodes {
-            for (step, r) in e.episode.records.iter().enumerate() {
-                for ev in &r.events {
-                    if let Event::Collision { link } = ev {
-                        safety.push(Value::String(format!(
-                            "{}: episode {}, step {}, t {:.2} s, link {link}",
-                            ev.id(),
-                            e.number,
-                            step + 1,
-                            r.t_s,
-                        )));
-                    }
+            e.episode.for_each_event(&mut |step, t_s, ev| {
+                if let Event::Collision { link } = ev {
+                    safety.push(Value::String(format!(
+                        "{}: episode {}, step {step}, t {t_s:.2} s, link {link}",
+                        ev.id(),
+                        e.number,
+                    )));
                 }
-            }
+            });
         }
         let mut metrics = Map::new();
         for (category, n) in &s.by_category {
@@ -147,11 +144,11 @@ impl Session {
                 .map_or(Value::Null, Value::Bool),
         );
         if let Some(first) = self.episodes.first() {
-            let c = &first.episode.config;
-            put("ikMethod", json!(c.control.method.id()));
-            put("lambda", num(Some(c.control.lambda)));
-            put("latencyMs", json!(u64::from(c.latency_steps) * 10));
-            put("noiseSigma", num(Some(c.noise_sigma)));
+            let (method, lambda, latency_steps, noise_sigma) = first.episode.control_summary();
+            put("ikMethod", json!(method));
+            put("lambda", num(Some(lambda)));
+            put("latencyMs", json!(u64::from(latency_steps) * 10));
+            put("noiseSigma", num(Some(noise_sigma)));
         }
         json!({
             "schemaVersion": "0.1",
@@ -161,7 +158,7 @@ impl Session {
             "environment": "SIMULATION",
             "runtime": RUNTIME,
             "runtimeVersion": env!("CARGO_PKG_VERSION"),
-            "embodiment": EMBODIMENT,
+            "embodiment": E::EMBODIMENT,
             "inputDevice": self.input_device.id(),
             "startedAt": self.started_at,
             "endedAt": self.ended_at.as_deref().unwrap_or(ended_at),

@@ -5,9 +5,9 @@
 use serde_json::Value;
 
 use super::evidence::{check_evidence, sha256_hex, EvidenceProblem, EVIDENCE_NAME};
+use super::kind::PracticeEpisode;
 use super::practice::{InputDevice, Module, Preflight, Session};
-use super::table::{episode_file_name, parse_episodes_table, EPISODES_NAME};
-use crate::teleop::episode::{parse_episode_csv, replay};
+use super::table::{parse_episodes_table, EPISODES_NAME};
 
 /// What is wrong with a saved session's files.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,16 +65,16 @@ impl std::fmt::Display for SessionError {
 
 impl std::error::Error for SessionError {}
 
-impl Session {
+impl<E: PracticeEpisode> Session<E> {
     /// Every file of the session, `(name, text)`: the evidence, the episodes table and each
     /// episode's time series.
     pub fn files(&self, ended_at: &str) -> Vec<(String, String)> {
         let mut out = vec![
             (EVIDENCE_NAME.to_string(), self.evidence(ended_at)),
-            (EPISODES_NAME.to_string(), self.episodes_csv()),
+            (E::episodes_name(), self.episodes_csv()),
         ];
         for e in &self.episodes {
-            out.push((episode_file_name(e.number), e.csv()));
+            out.push((E::episode_file_name(e.number), e.csv()));
         }
         out
     }
@@ -82,7 +82,7 @@ impl Session {
     /// A session from its saved files (the evidence, the episodes table and every episode's
     /// time series; other files are ignored). Every rule of the evidence is checked, every
     /// CSV's SHA-256 must be the one the evidence lists, and every episode is replayed.
-    pub fn from_files(files: &[(String, String)]) -> Result<Session, SessionError> {
+    pub fn from_files(files: &[(String, String)]) -> Result<Session<E>, SessionError> {
         let get = |name: &str| -> Result<&str, SessionError> {
             files
                 .iter()
@@ -119,8 +119,9 @@ impl Session {
                 }),
             }
         };
-        let table = get(EPISODES_NAME)?;
-        check_sha(EPISODES_NAME, table)?;
+        let table_name = E::episodes_name();
+        let table = get(&table_name)?;
+        check_sha(&table_name, table)?;
         let device = evidence["inputDevice"]
             .as_str()
             .and_then(InputDevice::from_id)
@@ -147,14 +148,14 @@ impl Session {
             column: cell.column,
         })?;
         for row in rows {
-            let name = episode_file_name(row.number);
+            let name = E::episode_file_name(row.number);
             let text = get(&name)?;
             check_sha(&name, text)?;
-            let episode = parse_episode_csv(text).map_err(|e| SessionError::Episode {
+            let episode = E::parse_csv(text).map_err(|detail| SessionError::Episode {
                 file: name.clone(),
-                detail: e.to_string(),
+                detail,
             })?;
-            if replay(&episode).is_err() {
+            if !episode.replays() {
                 return Err(SessionError::Replay { file: name });
             }
             let n = session.record(episode, row.interrupted);

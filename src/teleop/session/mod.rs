@@ -14,6 +14,7 @@
 
 mod evidence;
 mod files;
+mod kind;
 mod practice;
 mod stored;
 mod table;
@@ -23,13 +24,15 @@ pub use evidence::{
     EPISODE_TYPE, EVIDENCE_KEYS, EVIDENCE_NAME, RUNTIME, TABLE_TYPE,
 };
 pub use files::SessionError;
+pub use kind::{control_summary, each_event, run_steps, PracticeEpisode};
 pub use practice::{
     category_from_id, clean_pilot_id, compare, label_from_id, label_id, ComparisonRow,
     EpisodeEntry, InputDevice, Module, Preflight, Session, Summary, CATEGORIES, PILOT_ID_MAX,
     RECORD_TARGET,
 };
 pub use stored::{
-    run_length, SessionLoader, StoredEntry, StoredEpisode, StoredSession, STORED_VERSION,
+    run_length, PlanarLoading, SessionLoader, StoredEntry, StoredEpisode, StoredSession,
+    STORED_VERSION,
 };
 pub use table::{csv_text, episode_file_name, EPISODES_HEADER, EPISODES_NAME};
 

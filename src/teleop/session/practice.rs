@@ -10,9 +10,8 @@ use std::rc::Rc;
 
 use serde::{Deserialize, Serialize};
 
-use crate::teleop::episode::{
-    episode_csv, metrics, proposed_label, Episode, FailureCategory, Label,
-};
+use super::kind::PracticeEpisode;
+use crate::teleop::episode::{Episode, FailureCategory, Label};
 use crate::teleop::metrics::EpisodeMetrics;
 use crate::teleop::sim::Event;
 
@@ -141,11 +140,11 @@ impl Preflight {
 
 /// One recorded episode and what the pilot said about it.
 #[derive(Debug, Clone, PartialEq)]
-pub struct EpisodeEntry {
+pub struct EpisodeEntry<E = Episode> {
     /// 1, 2, ... in recording order.
     pub number: usize,
     /// The episode (shared: a copy of the session, as an export takes, copies no steps).
-    pub episode: Rc<Episode>,
+    pub episode: Rc<E>,
     pub metrics: EpisodeMetrics,
     /// `None` until the pilot labels it.
     pub label: Option<Label>,
@@ -155,10 +154,10 @@ pub struct EpisodeEntry {
     pub interrupted: bool,
 }
 
-impl EpisodeEntry {
+impl<E: PracticeEpisode> EpisodeEntry<E> {
     /// A just-ended episode, unlabelled.
-    pub fn new(number: usize, episode: Episode, interrupted: bool) -> EpisodeEntry {
-        let metrics = metrics(&episode);
+    pub fn new(number: usize, episode: E, interrupted: bool) -> EpisodeEntry<E> {
+        let metrics = episode.metrics();
         EpisodeEntry {
             number,
             episode: Rc::new(episode),
@@ -176,7 +175,7 @@ impl EpisodeEntry {
         if self.interrupted {
             return (Label::Failure, Some(FailureCategory::OperatorAbort));
         }
-        proposed_label(&self.episode)
+        self.episode.proposed_label()
     }
 
     /// Sets the pilot's label (a SUCCESS has no category).
@@ -192,23 +191,25 @@ impl EpisodeEntry {
 
     /// A SUCCESS with a failure event before it.
     pub fn is_recovery(&self) -> bool {
-        self.label == Some(Label::Success)
-            && self.episode.records.iter().any(|r| {
-                r.events
-                    .iter()
-                    .any(|e| matches!(e, Event::GraspMiss | Event::Drop | Event::Collision { .. }))
-            })
+        if self.label != Some(Label::Success) {
+            return false;
+        }
+        let mut failed = false;
+        self.episode.for_each_event(&mut |_, _, e| {
+            failed |= matches!(e, Event::GraspMiss | Event::Drop | Event::Collision { .. });
+        });
+        failed
     }
 
     /// The episode's time series file (the kernel's CSV).
     pub fn csv(&self) -> String {
-        episode_csv(&self.episode)
+        self.episode.csv()
     }
 }
 
 /// A practice session.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Session {
+pub struct Session<E = Episode> {
     pub pilot_id: String,
     pub input_device: InputDevice,
     pub module: Module,
@@ -216,12 +217,12 @@ pub struct Session {
     /// ISO 8601, from the page's clock.
     pub started_at: String,
     pub ended_at: Option<String>,
-    pub episodes: Vec<EpisodeEntry>,
+    pub episodes: Vec<EpisodeEntry<E>>,
 }
 
-impl Session {
+impl<E: PracticeEpisode> Session<E> {
     /// A new session started at `started_at`.
-    pub fn new(pilot_id: &str, input_device: InputDevice, started_at: &str) -> Session {
+    pub fn new(pilot_id: &str, input_device: InputDevice, started_at: &str) -> Session<E> {
         Session {
             pilot_id: clean_pilot_id(pilot_id),
             input_device,
@@ -235,11 +236,11 @@ impl Session {
 
     /// The task of the session (its first episode's, else `None`).
     pub fn task_id(&self) -> Option<&'static str> {
-        self.episodes.first().map(|e| e.episode.config.task.id())
+        self.episodes.first().map(|e| e.episode.task_id())
     }
 
     /// Adds a finished (or interrupted) episode; returns its number.
-    pub fn record(&mut self, episode: Episode, interrupted: bool) -> usize {
+    pub fn record(&mut self, episode: E, interrupted: bool) -> usize {
         let n = self.episodes.len() + 1;
         self.episodes
             .push(EpisodeEntry::new(n, episode, interrupted));
@@ -301,8 +302,8 @@ fn mean(values: impl Iterator<Item = f64>) -> Option<f64> {
 
 impl Summary {
     /// The figures of `episodes`.
-    pub fn of(episodes: &[EpisodeEntry]) -> Summary {
-        let count = |f: &dyn Fn(&EpisodeEntry) -> bool| episodes.iter().filter(|e| f(e)).count();
+    pub fn of<E: PracticeEpisode>(episodes: &[EpisodeEntry<E>]) -> Summary {
+        let count = |f: &dyn Fn(&EpisodeEntry<E>) -> bool| episodes.iter().filter(|e| f(e)).count();
         let attempted = episodes.len();
         let successful = count(&|e| e.label == Some(Label::Success));
         Summary {

@@ -2,6 +2,7 @@
 //! session, and read back (RFC 4180 quotes) when saved files are opened again; and the name
 //! of each episode's own time series file.
 
+use super::kind::PracticeEpisode;
 use super::practice::{category_from_id, label_from_id, label_id, Session};
 use crate::pyfmt::push_py_float;
 use crate::teleop::episode::{FailureCategory, Label};
@@ -19,8 +20,8 @@ pub fn episode_file_name(n: usize) -> String {
     format!("teleop_episode_{n}.csv")
 }
 
-impl Session {
-    /// `teleop_episodes.csv`: one row per episode.
+impl<E: PracticeEpisode> Session<E> {
+    /// `teleop_episodes.csv` (`so101_episodes.csv`): one row per episode.
     pub fn episodes_csv(&self) -> String {
         let mut out = String::from(EPISODES_HEADER);
         out.push('\n');
@@ -28,7 +29,7 @@ impl Session {
             let m = &e.metrics;
             let mut cells: Vec<String> = vec![
                 e.number.to_string(),
-                e.episode.config.task.id().to_string(),
+                e.episode.task_id().to_string(),
                 e.label.map(label_id).unwrap_or("").to_string(),
                 e.category.map(|c| c.id()).unwrap_or("").to_string(),
                 csv_text(&e.note),
@@ -62,7 +63,7 @@ impl Session {
                     cells.push(String::new());
                 }
             }
-            cells.push(e.episode.commands.len().to_string());
+            cells.push(e.episode.steps().to_string());
             out.push_str(&cells.join(","));
             out.push('\n');
         }

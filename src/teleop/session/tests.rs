@@ -363,7 +363,7 @@ fn stored_session_round_trips_and_keeps_an_interrupted_episode() {
     let s = session();
     let in_progress = episode(&push(25, 0.5, 0.5, false));
     let json = s.to_json(Some(&in_progress));
-    let back = Session::from_json(&json).expect("back");
+    let back = Session::<Episode>::from_json(&json).expect("back");
     assert_eq!(back.episodes.len(), 4, "the interrupted episode is kept");
     assert_eq!(back.episodes[..3], s.episodes[..]);
     let last = &back.episodes[3];
@@ -380,7 +380,7 @@ fn stored_session_round_trips_and_keeps_an_interrupted_episode() {
         "run-length coded: {} bytes",
         json.len()
     );
-    assert_eq!(Session::from_json("{}"), None);
+    assert_eq!(Session::<Episode>::from_json("{}"), None);
 }
 
 #[test]
@@ -388,9 +388,9 @@ fn a_session_loaded_in_slices_is_the_one_loaded_at_once() {
     let s = session();
     let in_progress = episode(&push(25, 0.5, 0.5, false));
     let json = s.to_json(Some(&in_progress));
-    let whole = Session::from_json(&json).expect("whole");
+    let whole = Session::<Episode>::from_json(&json).expect("whole");
     for slice in [0, 1, 7, 1000] {
-        let mut loader = SessionLoader::new(&json).expect("loader");
+        let mut loader = SessionLoader::<Episode>::new(&json).expect("loader");
         let (_, total) = loader.progress();
         let steps: usize = whole.episodes.iter().map(|e| e.episode.records.len()).sum();
         assert_eq!(total, steps);
@@ -408,28 +408,28 @@ fn a_session_loaded_in_slices_is_the_one_loaded_at_once() {
         assert_eq!(loader.finish(), Some(whole.clone()), "slice {slice}");
     }
     // Not finished: no session yet.
-    let mut loader = SessionLoader::new(&json).expect("loader");
+    let mut loader = SessionLoader::<Episode>::new(&json).expect("loader");
     assert_eq!(loader.run(3), Some(false));
     assert_eq!(loader.finish(), None);
     // A start state that is not the configuration's: refused, as at once.
     let mut stored: StoredSession = serde_json::from_str(&json).expect("stored");
     stored.episodes[1].episode.start.q[0] += 0.1;
     let bad = serde_json::to_string(&stored).expect("json");
-    assert_eq!(Session::from_json(&bad), None);
-    let mut loader = SessionLoader::new(&bad).expect("parses");
+    assert_eq!(Session::<Episode>::from_json(&bad), None);
+    let mut loader = SessionLoader::<Episode>::new(&bad).expect("parses");
     let mut result = Some(false);
     while result == Some(false) {
         result = loader.run(5);
     }
     assert_eq!(result, None);
-    assert!(SessionLoader::new("{}").is_none());
+    assert!(SessionLoader::<Episode>::new("{}").is_none());
 }
 
 #[test]
 fn saved_files_open_again_and_bad_ones_are_named() {
     let s = session();
     let files = s.files(END);
-    let back = Session::from_files(&files).expect("opens");
+    let back = Session::<Episode>::from_files(&files).expect("opens");
     assert_eq!(back.episodes, s.episodes);
     assert_eq!(back.pilot_id, s.pilot_id);
     assert_eq!(back.evidence(END), s.evidence(END));
@@ -438,7 +438,7 @@ fn saved_files_open_again_and_bad_ones_are_named() {
         files.iter().filter(|(n, _)| n != name).cloned().collect()
     };
     assert_eq!(
-        Session::from_files(&without("teleop_episode_2.csv")),
+        Session::<Episode>::from_files(&without("teleop_episode_2.csv")),
         Err(SessionError::MissingFile {
             name: "teleop_episode_2.csv".into()
         })
@@ -446,7 +446,7 @@ fn saved_files_open_again_and_bad_ones_are_named() {
     let mut tampered = files.clone();
     tampered[3].1 = tampered[3].1.replacen("0.0", "0.1", 1);
     assert_eq!(
-        Session::from_files(&tampered),
+        Session::<Episode>::from_files(&tampered),
         Err(SessionError::Sha256Mismatch {
             name: "teleop_episode_2.csv".into()
         })
@@ -454,13 +454,13 @@ fn saved_files_open_again_and_bad_ones_are_named() {
     let mut bad_json = files.clone();
     bad_json[0].1 = "{ \"schemaVersion\": ".into();
     assert!(matches!(
-        Session::from_files(&bad_json),
+        Session::<Episode>::from_files(&bad_json),
         Err(SessionError::NotJson { line: 1, .. })
     ));
     let mut extra_key = files.clone();
     extra_key[0].1 = extra_key[0].1.replacen('{', "{\"x\": 1,", 1);
     assert_eq!(
-        Session::from_files(&extra_key),
+        Session::<Episode>::from_files(&extra_key),
         Err(SessionError::Evidence {
             problem: EvidenceProblem::Unexpected { field: "x".into() }
         })
@@ -537,7 +537,7 @@ mod academy_schema {
             .expect("a valid schema")
     }
 
-    fn assert_valid(session: &Session) {
+    fn assert_valid<E: PracticeEpisode>(session: &Session<E>) {
         let doc: Value = serde_json::from_str(&session.evidence(END)).expect("json");
         let errors: Vec<String> = validator()
             .iter_errors(&doc)
@@ -549,7 +549,11 @@ mod academy_schema {
 
     #[test]
     fn a_fresh_session_is_valid() {
-        assert_valid(&Session::new("Pilot 7", InputDevice::Keyboard, START));
+        assert_valid(&Session::<Episode>::new(
+            "Pilot 7",
+            InputDevice::Keyboard,
+            START,
+        ));
     }
 
     #[test]
@@ -573,8 +577,33 @@ mod academy_schema {
     fn a_session_loaded_from_storage_is_valid() {
         let s = session();
         let in_progress = episode(&push(12, 0.0, 1.0, false));
-        let back = Session::from_json(&s.to_json(Some(&in_progress))).expect("loads");
+        let back = Session::<Episode>::from_json(&s.to_json(Some(&in_progress))).expect("loads");
         assert_valid(&back);
+    }
+
+    #[test]
+    fn an_so101_session_is_valid_and_names_the_so101() {
+        use crate::so101::{Command as Cmd, Episode as So101Episode, SceneConfig as So101Config};
+        let mut s: Session<So101Episode> = Session::new("Pilot 7", InputDevice::Gamepad, START);
+        for (i, obstacle) in [false, true].into_iter().enumerate() {
+            let cmds: Vec<Cmd> = (0..80 + i * 40)
+                .map(|k| Cmd::with_axes([0.5, 0.0, -0.2, 0.0, 0.0, 0.1], k > 60))
+                .collect();
+            let ep = So101Episode::record(So101Config::default_for(obstacle), &cmds).expect("ok");
+            s.record(ep, i == 1);
+        }
+        s.episodes[0].set_label(Label::Failure, Some(FailureCategory::GraspMiss), "");
+        assert_valid(&s);
+        let doc = s.evidence_value(END);
+        assert_eq!(doc["embodiment"], crate::so101::EMBODIMENT);
+        assert_eq!(doc["dataArtifacts"][0]["uriOrRef"], "so101_episodes.csv");
+        assert_eq!(doc["dataArtifacts"][2]["uriOrRef"], "so101_episode_2.csv");
+        let back = Session::<So101Episode>::from_files(&s.files(END)).expect("reads back");
+        assert_eq!(back.episodes.len(), 2);
+        assert_eq!(back.episodes[0].label, Some(Label::Failure));
+        let stored = Session::<So101Episode>::from_json(&s.to_json(None)).expect("loads");
+        assert_eq!(stored.episodes, s.episodes);
+        assert_valid(&stored);
     }
 
     #[test]

@@ -20,6 +20,7 @@ mod pendulum;
 mod pid_step;
 mod rrt;
 mod se3;
+mod so101;
 mod teleop;
 mod traj_resample;
 mod trapezoid_profile;
@@ -41,6 +42,7 @@ pub const PAGES: &[PageDef] = &[
     page!(traj_resample_page, traj_resample::TrajResample, "traj-resample", "traj-title", "traj-blurb", Nav::Trajectories),
     page!(rrt_page, rrt::RrtPage, "rrt-2d", "rrt-title", "rrt-blurb", Nav::Planning),
     page!(teleop_page, teleop::TeleopPage, "teleop", "teleop-nav", "teleop-blurb", Nav::Top),
+    page!(so101_page, so101::So101Page, "so101", "so101-nav", "so101-blurb", Nav::Top),
     page!(drills_page, drills::DrillsPage, DRILLS_ID, "drills-title", "drills-blurb", Nav::Top),
     page!(lesson_page, lesson::LessonPage, "lesson", "lesson-title", "lesson-blurb", Nav::Top),
 ];

@@ -150,7 +150,7 @@ fn numbers(list: &JsValue, each: impl Fn(&JsValue) -> f64) -> Vec<f64> {
 }
 
 /// The first connected pad of `navigator.getGamepads()`, if any.
-fn first_pad() -> Option<PadSnapshot> {
+pub(crate) fn first_pad() -> Option<PadSnapshot> {
     let navigator = web_sys::window()?.navigator();
     let f = get(&navigator, "getGamepads");
     let f: &js_sys::Function = wasm_bindgen::JsCast::dyn_ref(&f)?;

@@ -161,7 +161,7 @@ fn render_comparison(
     second: &Summary,
 ) -> Result<(), JsValue> {
     dom::clear(tbody);
-    let empty = Summary::of(&[]);
+    let empty = Summary::of::<crate::teleop::Episode>(&[]);
     let (a, b) = match first {
         Some(f) => (f, second),
         None => (second, &empty),

@@ -15,7 +15,7 @@
 
 mod bench;
 mod controls;
-mod devices;
+pub(super) mod devices;
 mod episode_table;
 mod exports;
 mod gamepad_offer;

@@ -1,0 +1,182 @@
+//! The SO-101 page's input mapping, as Isaac Lab's `Se3Keyboard` and `Se3Gamepad` map theirs
+//! (six axes: x, y, z, roll, pitch, yaw, each normalised to [−1, 1] before sensitivity; the
+//! simulation multiplies by the sensitivity and the step, see [`super::Command`]). Pure: the
+//! page feeds it key codes (`KeyboardEvent.code`, the physical key) and gamepad snapshots.
+//!
+//! **Keyboard**: W/S ±x, A/D ±y, Q/E ±z, Z/X ±roll, T/G ±pitch, C/V ±yaw (held keys add up and
+//! clamp), K toggles the gripper, R resets, Space engages or pauses.
+//!
+//! **Gamepad** (standard mapping): left stick up/down ±x (`axes[1]`, negative up), left stick
+//! right/left ±y (`axes[0]`), right stick up/down ±z (`axes[3]`), right stick right/left ±yaw
+//! (`axes[2]`), D-pad down/up ±pitch and left/right ±roll at 0.8 (buttons 13/12, 14/15), X
+//! (button 2) toggles the gripper on its press; values under the dead zone (0.01) count as 0.
+
+pub use crate::view::teleop_input::HeldKeys;
+use crate::view::teleop_input::{
+    self, dead_zoned, PadSnapshot, DPAD_SCALE, PAD_DPAD_DOWN, PAD_DPAD_UP, PAD_PRESS,
+};
+
+/// Standard-mapping indices besides the planar page's.
+pub const PAD_LEFT_STICK_X: usize = 0;
+/// Left stick vertical.
+pub const PAD_LEFT_STICK_Y: usize = 1;
+/// Right stick horizontal.
+pub const PAD_RIGHT_STICK_X: usize = 2;
+/// Right stick vertical.
+pub const PAD_RIGHT_STICK_Y: usize = 3;
+/// D-pad left.
+pub const PAD_DPAD_LEFT: usize = 14;
+/// D-pad right.
+pub const PAD_DPAD_RIGHT: usize = 15;
+
+/// What a key does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KeyAction {
+    /// Held: `sign` on axis `axis` (0 x … 5 yaw) while down.
+    Hold {
+        /// 0 x, 1 y, 2 z, 3 roll, 4 pitch, 5 yaw.
+        axis: usize,
+        /// ±1.
+        sign: i8,
+    },
+    /// K.
+    ToggleGripper,
+    /// R.
+    Reset,
+    /// Space.
+    Engage,
+}
+
+/// The action of the key at physical position `code`.
+pub fn key_action(code: &str) -> Option<KeyAction> {
+    let hold = |axis, sign| Some(KeyAction::Hold { axis, sign });
+    match code {
+        "KeyW" => hold(0, 1),
+        "KeyS" => hold(0, -1),
+        "KeyA" => hold(1, 1),
+        "KeyD" => hold(1, -1),
+        "KeyQ" => hold(2, 1),
+        "KeyE" => hold(2, -1),
+        "KeyZ" => hold(3, 1),
+        "KeyX" => hold(3, -1),
+        "KeyT" => hold(4, 1),
+        "KeyG" => hold(4, -1),
+        "KeyC" => hold(5, 1),
+        "KeyV" => hold(5, -1),
+        "KeyK" => Some(KeyAction::ToggleGripper),
+        "KeyR" => Some(KeyAction::Reset),
+        "Space" => Some(KeyAction::Engage),
+        _ => None,
+    }
+}
+
+/// Key `code` went down: `true` if it is a hold key not held yet (auto-repeat gives
+/// `false`).
+pub fn press(keys: &mut HeldKeys, code: &str) -> bool {
+    match key_action(code) {
+        Some(KeyAction::Hold { axis, sign }) => keys.press_axis(code, axis, sign),
+        _ => false,
+    }
+}
+
+/// What one gamepad poll gives.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct PadOutput {
+    /// The six axes in [−1, 1].
+    pub axes: [f64; 6],
+    /// X was pressed since the last poll.
+    pub toggle_gripper: bool,
+    /// A stick out of the dead zone or a button down.
+    pub active: bool,
+}
+
+/// The gamepad mapper (the planar page's remembers X between polls: the gripper toggles on
+/// its press).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct PadMapper {
+    buttons: teleop_input::PadMapper,
+}
+
+impl PadMapper {
+    /// Maps one poll with `dead_zone`.
+    pub fn map(&mut self, pad: &PadSnapshot, dead_zone: f64) -> PadOutput {
+        let axis = |i: usize| dead_zoned(pad.axes.get(i).copied().unwrap_or(0.0), dead_zone);
+        let button = |i: usize| pad.buttons.get(i).copied().unwrap_or(0.0) > PAD_PRESS;
+        let pair = |plus: usize, minus: usize| match (button(plus), button(minus)) {
+            (true, false) => DPAD_SCALE,
+            (false, true) => -DPAD_SCALE,
+            _ => 0.0,
+        };
+        let (toggle_gripper, active) = self.buttons.buttons(pad, dead_zone);
+        PadOutput {
+            axes: [
+                -axis(PAD_LEFT_STICK_Y) + 0.0,
+                axis(PAD_LEFT_STICK_X),
+                -axis(PAD_RIGHT_STICK_Y) + 0.0,
+                pair(PAD_DPAD_LEFT, PAD_DPAD_RIGHT),
+                pair(PAD_DPAD_DOWN, PAD_DPAD_UP),
+                axis(PAD_RIGHT_STICK_X),
+            ],
+            toggle_gripper,
+            active,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    use super::*;
+
+    #[test]
+    fn every_isaac_lab_key_holds_its_axis() {
+        let keys = [
+            ("KeyW", 0, 1.0),
+            ("KeyS", 0, -1.0),
+            ("KeyA", 1, 1.0),
+            ("KeyD", 1, -1.0),
+            ("KeyQ", 2, 1.0),
+            ("KeyE", 2, -1.0),
+            ("KeyZ", 3, 1.0),
+            ("KeyX", 3, -1.0),
+            ("KeyT", 4, 1.0),
+            ("KeyG", 4, -1.0),
+            ("KeyC", 5, 1.0),
+            ("KeyV", 5, -1.0),
+        ];
+        for (code, axis, sign) in keys {
+            let mut held = HeldKeys::default();
+            assert!(press(&mut held, code));
+            assert!(!press(&mut held, code), "auto-repeat is not a new press");
+            let mut want = [0.0; 6];
+            want[axis] = sign;
+            assert_eq!(held.axes_of::<6>(), want, "{code}");
+            held.release(code);
+            assert!(!held.any());
+        }
+        assert_eq!(key_action("KeyK"), Some(KeyAction::ToggleGripper));
+        assert_eq!(key_action("KeyR"), Some(KeyAction::Reset));
+        assert_eq!(key_action("Space"), Some(KeyAction::Engage));
+        assert_eq!(key_action("KeyL"), None);
+    }
+
+    #[test]
+    fn the_gamepad_maps_as_se3_gamepad() {
+        let mut m = PadMapper::default();
+        let mut pad = PadSnapshot {
+            id: "pad".into(),
+            mapping: "standard".into(),
+            axes: vec![0.5, -0.8, 0.005, 0.3],
+            buttons: vec![0.0; 17],
+        };
+        pad.buttons[13] = 1.0;
+        pad.buttons[15] = 1.0;
+        pad.buttons[2] = 1.0;
+        let out = m.map(&pad, 0.01);
+        assert_eq!(out.axes, [0.8, 0.5, -0.3, -0.8, 0.8, 0.0]);
+        assert!(out.toggle_gripper && out.active);
+        assert!(!m.map(&pad, 0.01).toggle_gripper, "held X toggles once");
+    }
+}

@@ -1,0 +1,724 @@
+//! Robot Pilot on the SO-101 (`#/so101`): TheRobotStudio's five-joint arm in 3D
+//! (`crate::so101`), flown with Isaac Lab's Se3Keyboard and Se3Gamepad mappings or the clutch
+//! gizmo on the tool, through the same practice session as `#/teleop` (modules, labelled
+//! episodes, replay, the repeatability summary, the Academy's evidence file). A practice
+//! simulator: not a safety-rated controller, and not NVIDIA software.
+//!
+//! Components, one file each: `markup`, `devices` (keys, gamepad, gizmo clutch), `practice`
+//! (the session and the episode being recorded), `session_view` (modules, label panel,
+//! episodes table, summary) and `views` (the kit's orbit view of the world and the wrist
+//! camera). This file wires them: mount, events, the frame loop (a fixed 100 Hz simulation
+//! whatever the display rate, `crate::view::teleop_input::Accumulator`), storage.
+
+mod devices;
+mod markup;
+mod practice;
+mod session_view;
+mod views;
+
+use std::cell::{Cell, RefCell};
+use std::rc::{Rc, Weak};
+
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{Element, Event as DomEvent, HtmlInputElement, HtmlSelectElement, KeyboardEvent};
+
+use crate::so101::input::{key_action, press, KeyAction};
+use crate::so101::sim::Command;
+use crate::so101::{Episode, SceneConfig};
+use crate::teleop::control::IkMethod;
+use crate::teleop::session::{
+    category_from_id, clean_pilot_id, label_from_id, InputDevice, Module, Session, SessionLoader,
+};
+use crate::ui::kit::bench_log::push_ms;
+use crate::ui::kit::drag::DragEvent;
+use crate::ui::kit::frame::FrameLoop;
+use crate::ui::kit::readouts::Readouts;
+use crate::ui::kit::scope::Scope;
+use crate::ui::page::{MountCtx, Page, Shortcut};
+use crate::ui::schedule::now_ms;
+use crate::ui::{ctx, dom};
+use crate::view::so101::{drag_axes, Handle};
+use crate::view::teleop_input::{Accumulator, GAMEPAD_DEAD_ZONE};
+use glam::DVec3;
+
+use devices::Devices;
+use practice::{Ended, Practice, STORE_KEY};
+use session_view::SessionView;
+use views::{Shared, Views};
+
+/// Save the session this often while recording, ms.
+const SAVE_EVERY_MS: f64 = 2000.0;
+
+/// The arm's buttons and notices.
+struct Live {
+    engage: Element,
+    gripper: Element,
+    offer: Element,
+    offer_text: Element,
+    ended: Element,
+}
+
+struct Inner {
+    me: Weak<Inner>,
+    root: Element,
+    practice: Rc<RefCell<Practice>>,
+    devices: Rc<RefCell<Devices>>,
+    views: RefCell<Option<Views>>,
+    readouts: Readouts,
+    session: SessionView,
+    live: Live,
+    acc: Cell<Accumulator>,
+    last_frame: Cell<Option<f64>>,
+    last_save: Cell<f64>,
+    offer_declined: Cell<bool>,
+    frame: RefCell<Option<FrameLoop>>,
+    scope: RefCell<Scope>,
+    /// The views' hold on the state (kept alive with the page).
+    shared: RefCell<Option<Rc<Shared>>>,
+    /// The stored session being simulated again, while it is.
+    loader: RefCell<Option<SessionLoader<Episode>>>,
+    load_timer: RefCell<Option<Rc<crate::ui::schedule::Timer>>>,
+    restored: Element,
+}
+
+/// Steps simulated again per slice of the load (a few ms of work).
+const LOAD_SLICE_STEPS: usize = 1500;
+
+/// The SO-101 page.
+pub struct So101Page(Rc<Inner>);
+
+fn iso_now() -> String {
+    js_sys::Date::new_0()
+        .to_iso_string()
+        .as_string()
+        .unwrap_or_default()
+}
+
+fn find<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
+    dom::find(root, selector, "so101")
+}
+
+impl Page for So101Page {
+    fn mount(ctx: MountCtx) -> Result<So101Page, JsValue> {
+        let root = ctx.root.clone();
+        root.set_inner_html(&markup::page());
+        dom::relocalize(&root)?;
+        // A stored session is simulated again in slices after the first paint (the page's
+        // session meanwhile is the stored one's pilot, device and module without episodes).
+        let loader = dom::storage_get(STORE_KEY).and_then(|t| SessionLoader::<Episode>::new(&t));
+        let session = loader.as_ref().map_or_else(
+            || Session::new("pilot", InputDevice::Keyboard, &iso_now()),
+            |l| l.session().clone(),
+        );
+        let practice = Practice::new(session, SceneConfig::default_for(false))
+            .ok_or_else(|| JsValue::from_str("so101: the default scene is refused"))?;
+        let restored: Element = find(&root, "[data-so101=\"restored\"]")?;
+        let live = Live {
+            engage: find(&root, "[data-action=\"engage\"]")?,
+            gripper: find(&root, "[data-action=\"gripper\"]")?,
+            offer: find(&root, "[data-testid=\"gamepad-offer\"]")?,
+            offer_text: find(&root, "[data-so101=\"offer-text\"]")?,
+            ended: find(&root, "[data-so101=\"ended\"]")?,
+        };
+        let readouts = Readouts::find(&root)?;
+        let session = SessionView::find(&root)?;
+        let shared = Rc::new(Shared {
+            practice: Rc::new(RefCell::new(practice)),
+            devices: Rc::new(RefCell::new(Devices::default())),
+        });
+        let inner = Rc::new_cyclic(|me: &Weak<Inner>| Inner {
+            me: me.clone(),
+            root: root.clone(),
+            practice: shared.practice.clone(),
+            devices: shared.devices.clone(),
+            views: RefCell::new(None),
+            readouts,
+            session,
+            live,
+            acc: Cell::new(Accumulator::default()),
+            last_frame: Cell::new(None),
+            last_save: Cell::new(0.0),
+            offer_declined: Cell::new(false),
+            frame: RefCell::new(None),
+            scope: RefCell::new(Scope::new()),
+            shared: RefCell::new(None),
+            loader: RefCell::new(loader),
+            load_timer: RefCell::new(None),
+            restored,
+        });
+        let me = inner.me.clone();
+        let views = Views::new(&root, &shared, move |e, tool| {
+            if let Some(p) = me.upgrade() {
+                p.gizmo(e, tool);
+            }
+        })?;
+        *inner.views.borrow_mut() = Some(views);
+        *inner.shared.borrow_mut() = Some(shared);
+        inner.install()?;
+        inner.write_settings();
+        inner.show_all();
+        inner.load_slice();
+        Ok(So101Page(inner))
+    }
+
+    fn relocalize(&self) {
+        self.0.show_all();
+        if let Some(v) = self.0.views.borrow().as_ref() {
+            v.relocalize();
+        }
+    }
+
+    fn set_projector(&self, _on: bool) {
+        if let Some(v) = self.0.views.borrow().as_ref() {
+            v.relayout();
+        }
+    }
+
+    fn shortcuts(&self) -> Vec<Shortcut> {
+        let mut keys = markup::KEYS.to_vec();
+        keys.extend_from_slice(crate::ui::kit::orbit::KEYS);
+        keys
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        if event.code() == "KeyL" {
+            return false;
+        }
+        self.0.key_down(event)
+    }
+}
+
+impl Drop for So101Page {
+    fn drop(&mut self) {
+        self.0.save();
+    }
+}
+
+impl Inner {
+    fn install(&self) -> Result<(), JsValue> {
+        let mut scope = self.scope.borrow_mut();
+        let me = &self.me;
+        let frame = scope.frame_loop(me, |p: &Inner, t| p.frame(t));
+        frame.request();
+        *self.frame.borrow_mut() = Some(frame);
+        scope.listen_for(&self.root, "click", me, |p, e| p.click(e))?;
+        let canvas = self
+            .views
+            .borrow()
+            .as_ref()
+            .map(|v| v.canvas())
+            .ok_or_else(|| JsValue::from_str("so101: no view"))?;
+        scope.listen_for(&canvas, "keydown", me, |p, e| {
+            if let Some(k) = e.dyn_ref::<KeyboardEvent>() {
+                if crate::ui::kit::keymap::has_command_modifier(k) || crate::ui::overlay::is_open()
+                {
+                    return;
+                }
+                if p.key_down(k) {
+                    e.prevent_default();
+                    e.stop_propagation();
+                }
+            }
+        })?;
+        let window = dom::window()?;
+        scope.listen_for(&window, "keyup", me, |p, e| {
+            if let Some(k) = e.dyn_ref::<KeyboardEvent>() {
+                p.devices.borrow_mut().keys.release(&k.code());
+            }
+        })?;
+        scope.listen_for(&window, "blur", me, |p, _| p.devices.borrow_mut().clear())?;
+        scope.listen_for(&window, "pagehide", me, |p, _| p.save())?;
+        scope.listen_for(&window, "gamepadconnected", me, |p, _| p.request_frame())?;
+        let form: Element = find(&self.root, "[data-so101=\"settings\"]")?;
+        scope.listen_for(&form, "change", me, |p, _| p.settings_changed())?;
+        scope.listen_for(&form, "submit", me, |_, e| e.prevent_default())?;
+        Ok(())
+    }
+
+    fn request_frame(&self) {
+        if let Some(f) = self.frame.borrow().as_ref() {
+            f.request();
+        }
+    }
+
+    // ---- Input ----
+
+    /// A key on the canvas or the page; `true` if taken.
+    fn key_down(&self, event: &KeyboardEvent) -> bool {
+        if dom::is_typing_target(event.target()) {
+            return false;
+        }
+        if let Some(v) = self.views.borrow().as_ref() {
+            if event.code().starts_with("Arrow") || matches!(event.key().as_str(), "+" | "-") {
+                return v.on_key(event);
+            }
+        }
+        let code = event.code();
+        let Some(action) = key_action(&code) else {
+            return false;
+        };
+        let repeat = event.repeat();
+        match action {
+            KeyAction::Hold { .. } => {
+                let mut d = self.devices.borrow_mut();
+                d.fresh |= press(&mut d.keys, &code);
+            }
+            _ if repeat => {}
+            KeyAction::ToggleGripper => self.toggle_gripper(),
+            KeyAction::Reset => self.reset(),
+            KeyAction::Engage => self.toggle_engage(),
+        }
+        self.request_frame();
+        true
+    }
+
+    /// Delegated clicks: the arm's buttons, modules, devices, labels, episodes, downloads.
+    fn click(&self, e: &DomEvent) {
+        let Some(target) = e.target().and_then(|t| t.dyn_into::<Element>().ok()) else {
+            return;
+        };
+        let Ok(Some(el)) = target.closest("button") else {
+            return;
+        };
+        let attr = |name: &str| el.get_attribute(name);
+        if let Some(action) = attr("data-action") {
+            let n = attr("data-episode").and_then(|n| n.parse::<usize>().ok());
+            self.action(&action, n);
+        } else if let Some(m) = attr("data-module").and_then(|m| Module::from_id(&m)) {
+            self.practice.borrow_mut().session.module = m;
+        } else if let Some(d) = attr("data-device").and_then(|d| InputDevice::from_id(&d)) {
+            self.practice.borrow_mut().set_device(d);
+        } else if let Some(l) = attr("data-label").and_then(|l| label_from_id(&l)) {
+            let mut p = self.practice.borrow_mut();
+            p.choice.0 = Some(l);
+            if l == crate::teleop::Label::Success {
+                p.choice.1 = None;
+            }
+        } else if let Some(c) = attr("data-category").and_then(|c| category_from_id(&c)) {
+            self.practice.borrow_mut().choice.1 = Some(c);
+        } else if let Some(file) = attr("data-download") {
+            self.download(&file);
+            return;
+        } else {
+            return;
+        }
+        self.save();
+        self.show_all();
+        self.request_frame();
+    }
+
+    fn action(&self, action: &str, episode: Option<usize>) {
+        match action {
+            "engage" => self.toggle_engage(),
+            "gripper" => self.toggle_gripper(),
+            "reset" => self.reset(),
+            "end-episode" => {
+                let ended = self.practice.borrow_mut().end_episode();
+                self.show_ended(ended);
+            }
+            "use-gamepad" => {
+                dom::show(&self.live.offer, false);
+                self.practice.borrow_mut().set_device(InputDevice::Gamepad);
+            }
+            "dismiss-gamepad" => {
+                dom::show(&self.live.offer, false);
+                self.offer_declined.set(true);
+            }
+            "confirm-label" => {
+                let note = self.session.note.value();
+                if self.practice.borrow_mut().confirm_label(&note) {
+                    self.session.note.set_value("");
+                }
+            }
+            "replay" => {
+                if let Some(n) = episode.filter(|n| *n >= 1) {
+                    let mut p = self.practice.borrow_mut();
+                    if n <= p.session.episodes.len() {
+                        p.engaged = false;
+                        p.replay = Some((n - 1, 0));
+                    }
+                }
+            }
+            "relabel" => {
+                if let Some(n) = episode {
+                    self.practice.borrow_mut().open_label(n);
+                }
+            }
+            _ => return,
+        }
+        self.save();
+        self.show_all();
+        self.request_frame();
+    }
+
+    fn toggle_engage(&self) {
+        let mut p = self.practice.borrow_mut();
+        p.replay = None;
+        if p.recorder.sim().done().is_some() {
+            p.recorder.reset();
+        }
+        p.engaged = !p.engaged;
+        if p.engaged {
+            p.ended = None;
+        }
+        drop(p);
+        self.acc.set(Accumulator::default());
+        self.show_all();
+        self.request_frame();
+    }
+
+    fn toggle_gripper(&self) {
+        let mut d = self.devices.borrow_mut();
+        d.gripper_closed = !d.gripper_closed;
+        d.fresh = true;
+        drop(d);
+        self.show_all();
+    }
+
+    fn reset(&self) {
+        self.devices.borrow_mut().clear();
+        self.devices.borrow_mut().gripper_closed = false;
+        let ended = {
+            let mut p = self.practice.borrow_mut();
+            p.reset();
+            p.ended
+        };
+        self.show_ended(ended);
+        self.save();
+        self.show_all();
+        self.request_frame();
+    }
+
+    fn settings_changed(&self) {
+        let get = |f: &str| -> Option<String> {
+            let el: Element = find(&self.root, &format!("[data-field=\"{f}\"]")).ok()?;
+            if let Some(i) = el.dyn_ref::<HtmlInputElement>() {
+                return Some(if i.type_() == "checkbox" {
+                    i.checked().to_string()
+                } else {
+                    i.value()
+                });
+            }
+            el.dyn_ref::<HtmlSelectElement>().map(|s| s.value())
+        };
+        let mut config = self.practice.borrow().config.clone();
+        if let Some(m) = get("method").and_then(|m| IkMethod::from_id(&m)) {
+            config.control.method = m;
+        }
+        if let Some(ms) = get("latency_ms").and_then(|v| v.trim().parse::<f64>().ok()) {
+            if ms.is_finite() {
+                config.latency_steps = (ms / 10.0).round().clamp(0.0, 50.0) as u32;
+            }
+        }
+        if let Some(s) = get("noise_sigma").and_then(|v| v.trim().parse::<f64>().ok()) {
+            if s.is_finite() {
+                config.noise_sigma = s.clamp(0.0, 1.0);
+            }
+        }
+        config.obstacle = get("obstacle").as_deref() == Some("true");
+        let mut p = self.practice.borrow_mut();
+        if let Some(pilot) = get("pilot") {
+            let clean = clean_pilot_id(&pilot);
+            if !clean.is_empty() {
+                p.session.pilot_id = clean;
+            }
+        }
+        p.set_config(config);
+        drop(p);
+        self.write_settings();
+        self.save();
+        self.show_all();
+        self.request_frame();
+    }
+
+    /// The form shows the config in use.
+    fn write_settings(&self) {
+        let p = self.practice.borrow();
+        let c = &p.config;
+        let set = |f: &str, v: &str| {
+            if let Ok(el) = find::<Element>(&self.root, &format!("[data-field=\"{f}\"]")) {
+                if let Some(i) = el.dyn_ref::<HtmlInputElement>() {
+                    if i.type_() == "checkbox" {
+                        i.set_checked(v == "true");
+                    } else {
+                        i.set_value(v);
+                    }
+                } else if let Some(s) = el.dyn_ref::<HtmlSelectElement>() {
+                    s.set_value(v);
+                }
+            }
+        };
+        set("method", c.control.method.id());
+        set("latency_ms", &(c.latency_steps * 10).to_string());
+        set("noise_sigma", &c.noise_sigma.to_string());
+        set("obstacle", if c.obstacle { "true" } else { "false" });
+        set("pilot", &p.session.pilot_id);
+    }
+
+    fn download(&self, file: &str) {
+        let files = self.practice.borrow().session.files(&iso_now());
+        if let Some((name, text)) = files.iter().find(|(n, _)| n == file) {
+            let mime = if name.ends_with(".json") {
+                "application/json"
+            } else {
+                "text/csv"
+            };
+            if let Err(e) = crate::ui::download::download_text(name, text, mime) {
+                web_sys::console::warn_1(&e);
+            }
+        }
+    }
+
+    fn save(&self) {
+        if self.loader.borrow().is_some() {
+            return;
+        }
+        let json = self.practice.borrow().to_json();
+        dom::storage_set(STORE_KEY, &json);
+    }
+
+    /// One slice of the stored session's load; the next in a task of its own.
+    fn load_slice(&self) {
+        let t0 = now_ms();
+        let mut slot = self.loader.borrow_mut();
+        let Some(loader) = slot.as_mut() else {
+            return;
+        };
+        let step = loader.run(LOAD_SLICE_STEPS);
+        push_ms("__so101LoadMs", now_ms() - t0, 5000);
+        if step == Some(false) {
+            drop(slot);
+            let mut timer = self.load_timer.borrow_mut();
+            let timer = timer.get_or_insert_with(|| {
+                self.scope
+                    .borrow_mut()
+                    .timer(&self.me, |p: &Inner| p.load_slice())
+            });
+            timer.schedule(0);
+            return;
+        }
+        let finished = slot
+            .take()
+            .filter(|_| step.is_some())
+            .and_then(|l| l.finish());
+        drop(slot);
+        if let Some(session) = finished {
+            self.practice.borrow_mut().session = session;
+            dom::show(&self.restored, true);
+        }
+        self.show_all();
+    }
+
+    // ---- The frame ----
+
+    fn frame(&self, t: f64) {
+        let t0 = now_ms();
+        self.frame_work(t);
+        push_ms("__so101FrameMs", now_ms() - t0, 5000);
+    }
+
+    /// A frame: poll the devices, step the simulation, write the readouts, draw both views.
+    fn frame_work(&self, t: f64) {
+        let elapsed = self.last_frame.get().map_or(0.0, |last| t - last);
+        self.last_frame.set(Some(t));
+        let pad_input = self.devices.borrow_mut().poll_pad(GAMEPAD_DEAD_ZONE);
+        if pad_input {
+            self.offer_pad();
+        }
+        let fresh = std::mem::take(&mut self.devices.borrow_mut().fresh);
+        let mut acc = self.acc.get();
+        let n = if self.loader.borrow().is_some() {
+            0
+        } else {
+            acc.steps(elapsed, fresh)
+        };
+        self.acc.set(acc);
+        let preflight = self.practice.borrow().session.preflight;
+        let ended = self.run_steps(n);
+        if n > 0 {
+            self.announce_pose();
+        }
+        if self.practice.borrow().session.preflight != preflight {
+            self.show_all();
+        }
+        if ended.is_some() {
+            self.show_ended(ended);
+            self.save();
+            self.show_all();
+        } else if self.practice.borrow().engaged && t - self.last_save.get() > SAVE_EVERY_MS {
+            self.last_save.set(t);
+            self.save();
+        }
+        self.show_readouts();
+        if let Some(v) = self.views.borrow().as_ref() {
+            v.redraw();
+        }
+        let keep = {
+            let p = self.practice.borrow();
+            let d = self.devices.borrow();
+            p.engaged
+                || p.replay.is_some()
+                || d.keys.any()
+                || d.clutch.is_some()
+                || d.pad_name.is_some()
+        };
+        if keep {
+            self.request_frame();
+        } else {
+            self.last_frame.set(None);
+            self.acc.set(Accumulator::default());
+        }
+    }
+
+    /// `n` steps of the simulation (or of a replay); how the episode ended, if it did.
+    fn run_steps(&self, n: u32) -> Option<Ended> {
+        let mut p = self.practice.borrow_mut();
+        if let Some((i, step)) = p.replay {
+            let len = p
+                .session
+                .episodes
+                .get(i)
+                .map_or(0, |e| e.episode.records.len());
+            let next = step + n as usize;
+            p.replay = (next < len).then_some((i, next));
+            return None;
+        }
+        let d = self.devices.borrow();
+        let cmd = Command::with_axes(d.axes(), d.gripper_closed);
+        drop(d);
+        for _ in 0..n {
+            p.step(&cmd);
+            if p.ended.is_some() && !p.engaged {
+                return p.ended;
+            }
+        }
+        None
+    }
+
+    /// The tool's pose for screen readers, once the arm has stopped moving for a moment.
+    fn announce_pose(&self) {
+        let record = self.practice.borrow().recorder.sim().snapshot();
+        self.readouts.announce_settled(800.0, move || {
+            let gripper = ctx::t(if record.gripper_closed {
+                "teleop-gripper-closed"
+            } else {
+                "teleop-gripper-open"
+            });
+            ctx::t_strings(
+                "so101-live-pose",
+                &[
+                    ("x", crate::view::so101::mm(record.tool[0])),
+                    ("y", crate::view::so101::mm(record.tool[1])),
+                    ("z", crate::view::so101::mm(record.tool[2])),
+                    ("gripper", gripper),
+                    ("error", crate::view::so101::deg(record.orientation_error)),
+                ],
+            )
+        });
+    }
+
+    fn offer_pad(&self) {
+        let p = self.practice.borrow();
+        if p.session.input_device == InputDevice::Gamepad || self.offer_declined.get() {
+            return;
+        }
+        let name = self.devices.borrow().pad_name.clone().unwrap_or_default();
+        self.live
+            .offer_text
+            .set_text_content(Some(&ctx::t_strings("teleop-pad-offer", &[("name", name)])));
+        dom::show(&self.live.offer, true);
+    }
+
+    fn show_ended(&self, ended: Option<Ended>) {
+        let text = match ended {
+            Some(Ended::Outcome(_, 0) | Ended::Pilot(0)) => ctx::t("so101-ended-practice"),
+            Some(Ended::Outcome(o, n)) => {
+                ctx::t_strings(&format!("so101-ended-{}", o.id()), &[("n", n.to_string())])
+            }
+            Some(Ended::Pilot(n)) => ctx::t_strings("so101-ended-pilot", &[("n", n.to_string())]),
+            None => String::new(),
+        };
+        self.live.ended.set_text_content(Some(&text));
+        dom::show(&self.live.ended, ended.is_some());
+        self.readouts.announce(&text);
+    }
+
+    fn show_all(&self) {
+        let p = self.practice.borrow();
+        self.session.show(&p);
+        let engaged = p.engaged;
+        let _ = self
+            .live
+            .engage
+            .set_attribute("aria-pressed", if engaged { "true" } else { "false" });
+        let _ = dom::set_i18n(
+            &self.live.engage,
+            if engaged {
+                "teleop-pause"
+            } else {
+                "teleop-engage"
+            },
+        );
+        let closed = self.devices.borrow().gripper_closed;
+        let _ = dom::set_i18n(
+            &self.live.gripper,
+            if closed {
+                "teleop-gripper-open-button"
+            } else {
+                "teleop-gripper-close-button"
+            },
+        );
+        drop(p);
+        self.show_readouts();
+    }
+
+    fn show_readouts(&self) {
+        let p = self.practice.borrow();
+        let record = views::shown_record(&p);
+        views::write_readouts(&self.readouts, &p, &record);
+    }
+}
+
+impl Inner {
+    /// A drag on the gizmo: the clutch holds while the pointer does.
+    fn gizmo(&self, e: DragEvent<Handle>, tool: DVec3) {
+        let camera = self
+            .views
+            .try_borrow()
+            .ok()
+            .and_then(|v| v.as_ref().map(|v| v.orbit.camera()));
+        let Some(camera) = camera else {
+            return;
+        };
+        let Ok(mut d) = self.devices.try_borrow_mut() else {
+            return;
+        };
+        match e {
+            DragEvent::Start { handle, at, .. } => {
+                d.clutch = Some(devices::Clutch {
+                    handle,
+                    start: at,
+                    now: at,
+                });
+                d.clutch_axes = [0.0; 6];
+                d.fresh = true;
+            }
+            DragEvent::Move { at, .. } => {
+                if let Some(c) = d.clutch.as_mut() {
+                    c.now = at;
+                    let (h, s) = (c.handle, c.start);
+                    d.clutch_axes = drag_axes(&camera, h, tool, s, at);
+                    d.fresh = true;
+                }
+            }
+            DragEvent::End { .. } => {
+                d.clutch = None;
+                d.clutch_axes = [0.0; 6];
+            }
+            _ => {}
+        }
+        drop(d);
+        self.request_frame();
+    }
+}

@@ -1,0 +1,208 @@
+//! The session's part of the page: the module bar and device buttons (`aria-pressed`), the
+//! preflight checks, the label panel, the episodes table (label, category, duration,
+//! collisions, a replay and a download button per episode), the repeatability summary and the
+//! session line.
+
+use wasm_bindgen::JsValue;
+use web_sys::Element;
+
+use super::practice::Practice;
+use crate::so101::episode::Episode;
+use crate::teleop::session::{Module, PracticeEpisode};
+use crate::ui::kit::form::escape;
+use crate::ui::{ctx, dom};
+
+/// The elements the session writes to.
+pub struct SessionView {
+    modules: Vec<(Module, Element)>,
+    devices: Vec<Element>,
+    help: Element,
+    preflight: Element,
+    pub label_panel: Element,
+    label_title: Element,
+    label_proposal: Element,
+    labels: Vec<Element>,
+    categories: Vec<Element>,
+    pub note: web_sys::HtmlInputElement,
+    episodes: Element,
+    summary: Element,
+    session_line: Element,
+}
+
+fn find<T: wasm_bindgen::JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
+    dom::find(root, selector, "so101")
+}
+
+impl SessionView {
+    /// Finds its parts under `root`.
+    pub fn find(root: &Element) -> Result<SessionView, JsValue> {
+        let mut modules = Vec::new();
+        for m in Module::ALL {
+            modules.push((m, find(root, &format!("[data-module=\"{}\"]", m.id()))?));
+        }
+        Ok(SessionView {
+            modules,
+            devices: dom::matching(root, "[data-device]")?,
+            help: find(root, "[data-so101=\"module-help\"]")?,
+            preflight: find(root, "[data-so101=\"preflight\"]")?,
+            label_panel: find(root, "[data-so101=\"label-panel\"]")?,
+            label_title: find(root, "[data-so101=\"label-title\"]")?,
+            label_proposal: find(root, "[data-so101=\"label-proposal\"]")?,
+            labels: dom::matching(root, "[data-label]")?,
+            categories: dom::matching(root, "[data-category]")?,
+            note: find(root, "[data-field=\"note\"]")?,
+            episodes: find(root, "[data-so101=\"episodes\"]")?,
+            summary: find(root, "[data-so101=\"summary\"]")?,
+            session_line: find(root, "[data-so101=\"session-line\"]")?,
+        })
+    }
+
+    /// Everything from the practice state.
+    pub fn show(&self, p: &Practice) {
+        let s = &p.session;
+        for (m, el) in &self.modules {
+            let _ = el.set_attribute(
+                "aria-pressed",
+                if *m == s.module { "true" } else { "false" },
+            );
+        }
+        for el in &self.devices {
+            let on = el.get_attribute("data-device").as_deref() == Some(s.input_device.id());
+            let _ = el.set_attribute("aria-pressed", if on { "true" } else { "false" });
+        }
+        let help = match s.module {
+            Module::RecordTen => {
+                ctx::t_strings("teleop-help-record-ten", &[("target", "10".into())])
+            }
+            m => ctx::t(&format!("teleop-help-{}", m.id())),
+        };
+        self.help.set_text_content(Some(&help));
+        let mark = |ok: bool| if ok { "✓" } else { "–" };
+        self.preflight.set_text_content(Some(&format!(
+            "{} {} · {} {}",
+            mark(s.preflight.moved),
+            ctx::t("teleop-check-moved"),
+            mark(s.preflight.reset_verified == Some(true)),
+            ctx::t("teleop-check-reset"),
+        )));
+        self.show_labels(p);
+        self.show_table(p);
+        self.show_summary(p);
+    }
+
+    fn show_labels(&self, p: &Practice) {
+        dom::show(&self.label_panel, p.labelling.is_some());
+        let Some(n) = p.labelling else {
+            return;
+        };
+        self.label_title.set_text_content(Some(&ctx::t_strings(
+            "so101-label-title",
+            &[("n", n.to_string())],
+        )));
+        if let Some(e) = p.session.episodes.get(n - 1) {
+            let (label, category) = e.proposal();
+            let cat = category.map_or(String::new(), |c| ctx::t(&format!("teleop-cat-{}", c.id())));
+            self.label_proposal.set_text_content(Some(&ctx::t_strings(
+                "so101-label-proposal",
+                &[
+                    (
+                        "label",
+                        ctx::t(&format!("teleop-label-{}", label.id().to_ascii_lowercase())),
+                    ),
+                    ("category", cat),
+                ],
+            )));
+        }
+        let (label, category) = p.choice;
+        for el in &self.labels {
+            let on =
+                label.is_some_and(|l| el.get_attribute("data-label").as_deref() == Some(l.id()));
+            let _ = el.set_attribute("aria-pressed", if on { "true" } else { "false" });
+        }
+        for el in &self.categories {
+            let on = category
+                .is_some_and(|c| el.get_attribute("data-category").as_deref() == Some(c.id()));
+            let _ = el.set_attribute("aria-pressed", if on { "true" } else { "false" });
+        }
+    }
+
+    fn show_table(&self, p: &Practice) {
+        let mut html = String::new();
+        for e in &p.session.episodes {
+            let label = e.label.map_or_else(
+                || ctx::t("teleop-unlabelled"),
+                |l| ctx::t(&format!("teleop-label-{}", l.id().to_ascii_lowercase())),
+            );
+            let category = e
+                .category
+                .map_or(String::new(), |c| ctx::t(&format!("teleop-cat-{}", c.id())));
+            let file = Episode::episode_file_name(e.number);
+            html.push_str(&format!(
+                "<tr data-episode=\"{n}\"><th scope=\"row\">{n}</th><td>{label}</td><td>{category}</td>\
+                 <td>{dur:.2}</td><td>{col}</td><td>\
+                 <button type=\"button\" class=\"tool-button\" data-action=\"replay\" data-episode=\"{n}\">{replay}</button> \
+                 <button type=\"button\" class=\"tool-button\" data-action=\"relabel\" data-episode=\"{n}\">{relabel}</button> \
+                 <button type=\"button\" class=\"tool-button\" data-download=\"{file}\">{file}</button></td></tr>",
+                n = e.number,
+                label = escape(&label),
+                category = escape(&category),
+                dur = e.metrics.duration_s,
+                col = e.metrics.collisions,
+                replay = escape(&ctx::t("teleop-replay")),
+                relabel = escape(&ctx::t("teleop-relabel")),
+            ));
+        }
+        self.episodes.set_inner_html(&html);
+        let s = p.session.summary();
+        self.session_line.set_text_content(Some(&ctx::t_strings(
+            "so101-session-line",
+            &[
+                ("pilot", p.session.pilot_id.clone()),
+                ("count", s.attempted.to_string()),
+                ("unlabelled", s.unlabelled.to_string()),
+            ],
+        )));
+    }
+
+    fn show_summary(&self, p: &Practice) {
+        let s = p.session.summary();
+        let pct = |x: Option<f64>| x.map_or("–".to_string(), |v| format!("{:.0} %", v * 100.0));
+        let secs = |x: Option<f64>| x.map_or("–".to_string(), |v| format!("{v:.2} s"));
+        let mut rows = vec![
+            ("teleop-cmp-attempted", s.attempted.to_string()),
+            ("teleop-cmp-success-rate", pct(s.success_rate)),
+            ("teleop-cmp-mean-time", secs(s.mean_duration_s)),
+            ("teleop-cmp-efficiency", pct(s.mean_efficiency)),
+            ("teleop-cmp-collisions", s.collisions.to_string()),
+        ];
+        let worst = p
+            .session
+            .episodes
+            .iter()
+            .map(|e| e.metrics.min_manipulability)
+            .fold(f64::INFINITY, f64::min);
+        if worst.is_finite() {
+            rows.push(("so101-ro-manipulability", format!("{:.2e}", worst)));
+        }
+        for (c, n) in s.by_category.iter().filter(|(_, n)| *n > 0) {
+            let id = format!("teleop-cat-{}", c.id());
+            rows.push(("", format!("{}: {n}", ctx::t(&id))));
+        }
+        let html: String = rows
+            .iter()
+            .map(|(id, v)| {
+                let label = if id.is_empty() {
+                    String::new()
+                } else {
+                    ctx::t(id)
+                };
+                format!(
+                    "<div><dt>{}</dt><dd>{}</dd></div>",
+                    escape(&label),
+                    escape(v)
+                )
+            })
+            .collect();
+        self.summary.set_inner_html(&html);
+    }
+}
