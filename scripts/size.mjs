@@ -10,7 +10,7 @@
 //   node scripts/size.mjs [dist]           prints the tables (make bench)
 //   node scripts/size.mjs [dist] --check   also exits 1 when a sum is over its ceiling (make test)
 //
-// BUDGET and ROUTE_BUDGET are the goals; CEILING and ROUTE_CEILING are what `make test`
+// BUDGET and routeBudget are the goals; CEILING and ROUTE_CEILINGS are what `make test`
 // enforces: the sizes now plus a little room, so that no change makes the app or a first load
 // bigger unnoticed. Lower a ceiling as the app shrinks; never raise it without saying why in
 // the commit.
@@ -20,14 +20,34 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1010 * KB;
+export const CEILING = 1245 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
   return (route === 'ik-2r' || route === 'home' ? 250 : 350) * KB;
 }
-/** What `make test` allows a route's first load. */
-export const ROUTE_CEILING = 995 * KB;
+/** What `make test` allows each route's first load: its size now plus about 10 KB. */
+export const ROUTE_CEILINGS = {
+  home: 455,
+  'ik-2r': 455,
+  'dh-fk': 375,
+  'se3-relative': 378,
+  'umeyama-2d': 400,
+  'pendulum-energy': 536,
+  'pid-step': 373,
+  'cubic-path': 412,
+  'trapezoid-profile': 408,
+  'traj-resample': 395,
+  'rrt-2d': 506,
+  teleop: 446,
+  so101: 427,
+  drills: 512,
+  lesson: 285,
+};
+/** The ceiling of a route (a route not in the table has the largest). */
+export function routeCeiling(route) {
+  return (ROUTE_CEILINGS[route] ?? Math.max(...Object.values(ROUTE_CEILINGS))) * KB;
+}
 
 /** The files every first load fetches before the route's own pack. */
 export const SHELL_FILES = [
@@ -95,13 +115,14 @@ const main = () => {
   console.log('\nfirst load of each route (gzip -9, English strings)');
   for (const { route, gzip: bytes } of firstLoads(dist)) {
     const budget = routeBudget(route);
-    const over = bytes > ROUTE_CEILING;
+    const ceiling = routeCeiling(route);
+    const over = bytes > ceiling;
     console.log(
       `${route.padEnd(20)} ${kb(bytes).padStart(10)}  budget ${kb(budget)}: ${bytes > budget ? `OVER by ${kb(bytes - budget)}` : 'ok'}` +
-        `; ceiling ${kb(ROUTE_CEILING)}: ${over ? 'OVER' : 'ok'}`,
+        `; ceiling ${kb(ceiling)}: ${over ? 'OVER' : 'ok'}`,
     );
     if (check && over) {
-      console.error(`route ${route}: first load ${kb(bytes)}, over the ceiling of ${kb(ROUTE_CEILING)}`);
+      console.error(`route ${route}: first load ${kb(bytes)}, over its ceiling of ${kb(ceiling)}`);
       failed = true;
     }
   }

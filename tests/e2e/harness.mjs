@@ -35,8 +35,8 @@ const CHROMIUM_ARGS = [
 export const DIST = resolve(ROOT, process.env.BSV_DIST || 'dist');
 
 /** Serves DIST (dist/ unless BSV_DIST names another) on 127.0.0.1 at a free port: { url, close }. */
-export function startServer() {
-  return startStaticServer(DIST, 0);
+export function startServer(options = {}) {
+  return startStaticServer(DIST, 0, '127.0.0.1', options);
 }
 
 /**
