@@ -9,6 +9,7 @@ use wasm_split_helpers::SplitLoaderError;
 use crate::i18n::{self, Lang};
 use crate::ui::ctx;
 
+#[cfg(feature = "split")]
 type Files = &'static [(&'static str, &'static str)];
 
 /// The Fluent files of English (file name, text): what the `strings_en` chunk holds.
@@ -25,26 +26,19 @@ fn strings_ja() -> Result<Files, SplitLoaderError> {
     Ok(i18n::JA_FILES)
 }
 
-/// Without the `split` feature both languages are in the one wasm.
-#[cfg(not(feature = "split"))]
-async fn strings_en() -> Result<Files, SplitLoaderError> {
-    Ok(i18n::EN_FILES)
-}
-
-#[cfg(not(feature = "split"))]
-async fn strings_ja() -> Result<Files, SplitLoaderError> {
-    Ok(i18n::JA_FILES)
-}
-
 /// Loads `lang`'s strings into the app's bundles (at once if they are in).
 pub async fn load(lang: Lang) -> Result<(), SplitLoaderError> {
     if ctx::has_lang(lang) {
         return Ok(());
     }
+    #[cfg(feature = "split")]
     let files = match lang {
         Lang::En => strings_en().await?,
         Lang::Ja => strings_ja().await?,
     };
+    // Without the `split` feature both languages are in the one wasm.
+    #[cfg(not(feature = "split"))]
+    let files = i18n::locale_files(lang);
     ctx::add_lang(lang, files);
     Ok(())
 }

@@ -170,7 +170,6 @@ pub struct PageDef {
 /// One line of the page table: `page!(chunk, PageType, id, title_id, blurb_id, nav)` registers
 /// `PageType` under route `#/<id>` with its code split off into the wasm chunk `chunk`, fetched
 /// on the page's first visit (or in the background after the first page is shown).
-#[cfg(feature = "split")]
 macro_rules! page {
     ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $blurb_id:expr, $nav:expr) => {
         $crate::ui::page::PageDef {
@@ -178,33 +177,33 @@ macro_rules! page {
             title_id: $title_id,
             blurb_id: $blurb_id,
             nav: $nav,
-            load: {
-                #[wasm_split_helpers::wasm_split($chunk, fallible)]
-                fn $chunk() -> Result<$crate::ui::page::MountFn, $crate::ui::page::SplitLoaderError>
-                {
-                    Ok($crate::ui::page::mount_boxed::<$page>)
-                }
-                || -> $crate::ui::page::PageLoad { Box::pin($chunk()) }
-            },
+            load: $crate::ui::page::page_load!($chunk, $page),
         }
     };
 }
 
+/// The `load` of a page: its code split off into the chunk `$chunk`.
+#[cfg(feature = "split")]
+macro_rules! page_load {
+    ($chunk:ident, $page:ty) => {{
+        #[wasm_split_helpers::wasm_split($chunk, fallible)]
+        fn $chunk() -> Result<$crate::ui::page::MountFn, $crate::ui::page::SplitLoaderError> {
+            Ok($crate::ui::page::mount_boxed::<$page>)
+        }
+        || -> $crate::ui::page::PageLoad { Box::pin($chunk()) }
+    }};
+}
+
 /// Without the `split` feature (tests, benches) every page is in the one wasm.
 #[cfg(not(feature = "split"))]
-macro_rules! page {
-    ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $blurb_id:expr, $nav:expr) => {
-        $crate::ui::page::PageDef {
-            id: $id,
-            title_id: $title_id,
-            blurb_id: $blurb_id,
-            nav: $nav,
-            load: || -> $crate::ui::page::PageLoad {
-                Box::pin(std::future::ready(Ok(
-                    $crate::ui::page::mount_boxed::<$page> as $crate::ui::page::MountFn,
-                )))
-            },
+macro_rules! page_load {
+    ($chunk:ident, $page:ty) => {
+        || -> $crate::ui::page::PageLoad {
+            Box::pin(std::future::ready(Ok(
+                $crate::ui::page::mount_boxed::<$page> as $crate::ui::page::MountFn,
+            )))
         }
     };
 }
 pub(crate) use page;
+pub(crate) use page_load;

@@ -9,7 +9,7 @@
 // installed (budget 1.0 s). With FIRSTLOAD_STRICT=1 the exit code is 1 when a budget is missed.
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { browser, closeBrowser, startServer, DIST } from '../e2e/harness.mjs';
+import { browser, closeBrowser, startServer, throttle, watchFirstFrame, DIST } from '../e2e/harness.mjs';
 import { stats } from './bench-table.mjs';
 
 const LOADS = Number(process.env.FIRSTLOAD_LOADS ?? 5);
@@ -20,42 +20,13 @@ const budget = (route) =>
   route === 'home' || route === 'ik-2r' ? { ms: 2000, bytes: 250 * KB } : { ms: 2500, bytes: 350 * KB };
 const hashOf = (route) => (route === 'home' ? '#/' : `#/${route}`);
 
-/** Marks the first frame after html[data-app-ready] as window.__firstFrameMs. */
-function watchReady() {
-  new MutationObserver((_, observer) => {
-    if (document.documentElement?.dataset.appReady === '1') {
-      observer.disconnect();
-      requestAnimationFrame(() => {
-        window.__firstFrameMs = performance.now();
-      });
-    }
-  }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-app-ready'] });
-}
-
-async function throttle(context, page) {
-  const cdp = await context.newCDPSession(page);
-  await cdp.send('Network.enable');
-  await cdp.send('Network.emulateNetworkConditions', {
-    offline: false,
-    latency: 150,
-    downloadThroughput: (1.6 * 1000 * 1000) / 8,
-    uploadThroughput: (750 * 1000) / 8,
-  });
-  await cdp.send('Emulation.setCPUThrottlingRate', { rate: 4 });
-  let bytes = 0;
-  cdp.on('Network.loadingFinished', (e) => {
-    bytes += e.encodedDataLength;
-  });
-  return { bytes: () => bytes, cdp };
-}
-
 /** One cold load of `url`: { ms, bytes } to the first interactive frame. */
 async function coldLoad(url) {
   const context = await (await browser()).newContext({ viewport: { width: 412, height: 823 }, serviceWorkers: 'block' });
   try {
-    await context.addInitScript(watchReady);
+    await context.addInitScript(watchFirstFrame);
     const page = await context.newPage();
-    const net = await throttle(context, page);
+    const net = await throttle(context, page, { cpu: true });
     await page.goto(url);
     await page.waitForFunction(() => typeof window.__firstFrameMs === 'number', null, { timeout: 60000 });
     const ms = await page.evaluate(() => window.__firstFrameMs);
@@ -73,8 +44,8 @@ async function secondVisit(url) {
     const page = await context.newPage();
     await page.goto(url);
     await page.waitForFunction(() => navigator.serviceWorker?.controller != null, null, { timeout: 60000 });
-    await context.addInitScript(watchReady);
-    await throttle(context, page);
+    await context.addInitScript(watchFirstFrame);
+    await throttle(context, page, { cpu: true });
     await page.reload();
     await page.waitForFunction(() => typeof window.__firstFrameMs === 'number', null, { timeout: 60000 });
     return await page.evaluate(() => window.__firstFrameMs);

@@ -7,7 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { serveApp, openApp, readouts, DIST, OUT } from './harness.mjs';
+import { serveApp, openApp, readouts, throttle, DIST, OUT } from './harness.mjs';
 
 const server = serveApp();
 const table = JSON.parse(readFileSync(join(DIST, 'pkg', 'routes.json'), 'utf8'));
@@ -83,14 +83,7 @@ for (const lang of ['en', 'ja']) {
 test('on a slow network, going ik-2r → teleop → pendulum shows each page\'s frame and loading line, then the page', async () => {
   const { page, context, errors, close } = await openApp(server.url, '#/ik-2r');
   try {
-    const cdp = await context.newCDPSession(page);
-    await cdp.send('Network.enable');
-    await cdp.send('Network.emulateNetworkConditions', {
-      offline: false,
-      latency: 150,
-      downloadThroughput: (1.6 * 1024 * 1024) / 8,
-      uploadThroughput: (750 * 1024) / 8,
-    });
+    await throttle(context, page);
     for (const [route, canvas] of [['teleop', 'teleop-canvas'], ['pendulum-energy', 'pendulum-energy-canvas']]) {
       await page.evaluate((r) => { location.hash = `#/${r}`; }, route);
       const loading = page.locator('[data-testid="page-loading"]');

@@ -21,8 +21,7 @@ use js_sys::{Array, Reflect, Uint8Array};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 #[cfg(feature = "split")]
-use wasm_split_helpers::wasm_split;
-use wasm_split_helpers::SplitLoaderError;
+use wasm_split_helpers::{wasm_split, SplitLoaderError};
 use web_sys::{Blob, ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
 
 use crate::error::RecipeError;
@@ -169,28 +168,18 @@ pub async fn worker_run_recipe(
     progress: js_sys::Function,
     envelope: u32,
 ) -> Result<JsValue, JsValue> {
-    worker_chunk(id, args, names, inputs, progress, envelope)
+    #[cfg(feature = "split")]
+    return worker_chunk(id, args, names, inputs, progress, envelope)
         .await
-        .map_err(|error| JsValue::from_str(&format!("the worker's code: {error}")))?
+        .map_err(|error| JsValue::from_str(&format!("the worker's code: {error}")))?;
+    #[cfg(not(feature = "split"))]
+    return run_in_worker(&id, args, names, inputs, &progress, envelope);
 }
 
 /// The worker's chunk: every kernel, called by [`run_in_worker`].
 #[cfg(feature = "split")]
 #[wasm_split(worker, fallible)]
 fn worker_chunk(
-    id: String,
-    args: Vec<String>,
-    names: Vec<String>,
-    inputs: Array,
-    progress: js_sys::Function,
-    envelope: u32,
-) -> Result<Result<JsValue, JsValue>, SplitLoaderError> {
-    Ok(run_in_worker(&id, args, names, inputs, &progress, envelope))
-}
-
-/// Without the `split` feature the kernels are in the one wasm.
-#[cfg(not(feature = "split"))]
-async fn worker_chunk(
     id: String,
     args: Vec<String>,
     names: Vec<String>,
