@@ -16,7 +16,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1010 * KB;
+export const CEILING = 1085 * KB;
 
 /** Every file under `dir`, sorted by path. */
 function files(dir) {
