@@ -102,7 +102,7 @@ impl Episode {
         })
     }
 
-    /// The episode's figures (see [`crate::teleop::metrics`]; `fitts` is `None`, the ideal
+    /// The episode's figures (see [`mod@crate::teleop::metrics`]; `fitts` is `None`, the ideal
     /// path is start tool → cube start, then cube start → where it rests, when done).
     pub fn metrics(&self) -> EpisodeMetrics {
         let start_tool = fk(&self.start.q).pos;

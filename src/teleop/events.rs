@@ -33,7 +33,7 @@ impl Outcome {
 }
 
 /// Something the step detected. Links and joints count from 1; link 4 in a collision is the
-/// carried block; target indices count from 0 (as [`State::target_index`]).
+/// carried block; target indices count from 0 (as [`crate::teleop::sim::State::target_index`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Event {
     /// The gripper closed on the block.
