@@ -23,6 +23,7 @@ home-featured-label-trapezoid-profile = Trajectories · when a trapezoid becomes
 home-featured-label-traj-resample = Trajectories · resample a joint log to a new rate
 home-featured-label-rrt-2d = Planning · a random tree grows toward the goal
 home-featured-label-teleop = Teleop practice · drive an arm, record ten demos
+home-featured-label-so101 = Teleop in 3D · fly the SO-101 as Isaac Lab does
 home-featured-label-drills = Every recipe · your own values, the same CSV files
 home-featured-label-lesson = Teaching · chain views into a lesson and present it
 

@@ -23,6 +23,7 @@ home-featured-label-trapezoid-profile = 軌道・台形が三角形になると�
 home-featured-label-traj-resample = 軌道・関節ログを新しい周期でリサンプリング
 home-featured-label-rrt-2d = 経路計画・ランダムな木がゴールへ伸びる
 home-featured-label-teleop = 遠隔操作の練習・アームを操作して 10 回記録する
+home-featured-label-so101 = 3D の遠隔操作・SO-101 を Isaac Lab と同じ操作で動かす
 home-featured-label-drills = 全レシピ・自分の値で、同じ CSV ファイルを
 home-featured-label-lesson = 授業・画面をつないでレッスンにし、発表する
 
