@@ -18,14 +18,10 @@ node scripts/bench-wasm.mjs
 
 echo
 echo "== release dist/ with the bench hooks (target/bench-dist)"
-# The app build has no timing hooks: assemble the release dist/, then a copy of it whose
-# wasm is built with `--features bench` (window.__ik2rBench, __pendulumBench, ...).
+# The app build has no timing hooks: the release dist/, then the same build with
+# `--features bench` (window.__ik2rBench, __pendulumBench, ...) in target/bench-dist.
 scripts/build-dist.sh >/dev/null
-wasm-pack build --quiet --target web --release --out-dir target/bench-web --out-name bsv_playground \
-  --mode no-install --no-pack -- --features bench
-rm -rf target/bench-dist
-cp -r dist target/bench-dist
-cp target/bench-web/bsv_playground.js target/bench-web/bsv_playground_bg.wasm target/bench-dist/pkg/
+BSV_FEATURES=bench DIST_DIR=target/bench-dist scripts/build-dist.sh >/dev/null
 
 echo
 echo "== size of the app (dist/, every file gzipped at level 9; the budget is 350 KB)"
@@ -35,11 +31,15 @@ echo
 echo "== first interactive frame: cold loads of the release dist/ from localhost in headless Chromium"
 node tests/bench/firstframe.bench.mjs
 
+echo
+echo "== a phone's first visit: each route under Lighthouse's mobile profile (throttled), gzipped"
+node tests/bench/firstload.bench.mjs
+
 # Every page bench (tests/bench/<page>.bench.mjs) on the dist with the bench hooks; each prints
 # its figures against their budgets.
 for bench in tests/bench/*.bench.mjs; do
   page=$(basename "$bench" .bench.mjs)
-  [[ $page == firstframe ]] && continue
+  [[ $page == firstframe || $page == firstload ]] && continue
   echo
   echo "== $page page in headless Chromium"
   BSV_DIST=target/bench-dist node "$bench"

@@ -1,8 +1,16 @@
 #!/usr/bin/env bash
 # Builds the wasm (release by default, `--dev` for a fast unoptimised build) and assembles
 # the static app in dist/: index.html, sw.js (the offline service worker), www/ (css, boot and
-# bootstrap js, the worker, favicon, the web app manifest),
-# pkg/ (wasm + its JS glue). dist/ runs from any static host or folder served over http.
+# bootstrap js, the route table, the worker, favicon, the web app manifest), pkg/ (the main
+# wasm + its JS glue, the packs of the split points and their loader). dist/ runs from any
+# static host or folder served over http.
+#
+# The wasm is split by route: cargo builds it with its relocations kept (`--emit-relocs`),
+# wasm-split-cli cuts it at the split points (`page!` lines of the page table, each language's
+# strings, the worker's kernels) into the main module (the shell) and chunks, wasm-bindgen
+# makes the glue of the main module, and scripts/split-link.mjs packs each split point's
+# chunks into one file (`pkg/pack_<split>.bin`) and writes `pkg/routes.json` and
+# `www/routes.js` (which pack each route and language needs first).
 # dist/www/app.css is one stylesheet: www/app.css, then every stylesheet that sits beside the
 # Rust of a page or widget (src/ui/**/*.css, in path order); nothing injects <style> at run time,
 # so the app runs under the strict Content-Security-Policy of index.html.
@@ -12,29 +20,52 @@ export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
 
 profile=--release
 [[ "${1:-}" == "--dev" ]] && profile=--dev
+# BSV_FEATURES=bench builds the app with the bench hooks; DIST_DIR says where (default dist).
+features=split${BSV_FEATURES:+,$BSV_FEATURES}
+out=${DIST_DIR:-dist}
 
-wasm-pack build --target web "$profile" --out-dir pkg --out-name bsv_playground --mode no-install --no-pack
+if [[ "$profile" == --release ]]; then
+  cargo_profile=(--release); built=release
+else
+  cargo_profile=(); built=debug
+fi
+# Its own target dir: the relocation flag would otherwise rebuild the checks' artifacts.
+CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-Clink-args=--emit-relocs" \
+  cargo build --lib --target wasm32-unknown-unknown --no-default-features --locked \
+  --target-dir target/app "${cargo_profile[@]}" --features "$features"
+rm -rf target/app/split pkg
+wasm-split-cli "target/app/wasm32-unknown-unknown/$built/bsv_playground.wasm" target/app/split \
+  --out-name bsv_playground
+mkdir -p pkg
+wasm-bindgen --target web --keep-lld-exports --no-demangle --out-dir pkg --out-name bsv_playground \
+  target/app/split/bsv_playground.wasm
+if [[ "$profile" == --release ]]; then
+  wasm-opt -Os --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+    --enable-mutable-globals --enable-reference-types --enable-multivalue \
+    pkg/bsv_playground_bg.wasm -o pkg/bsv_playground_bg.wasm
+fi
 
-rm -rf dist
-mkdir -p dist/pkg
-cp index.html dist/
-cp -r www dist/www
+rm -rf "$out"
+mkdir -p "$out"/pkg
+cp index.html "$out"/
+cp -r www "$out"/www
 {
   cat www/app.css
   find src/ui -name '*.css' -print0 | LC_ALL=C sort -z | while IFS= read -r -d '' css; do
     printf '\n/* ---- %s ---- */\n' "$css"
     cat "$css"
   done
-} > dist/www/app.css
-cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm dist/pkg/
+} > "$out"/www/app.css
+cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm "$out"/pkg/
+node scripts/split-link.mjs target/app/split "$out"/pkg "$out"/www
 # wasm-bindgen `inline_js` / `module` snippets, if any crate uses them.
-[[ -d pkg/snippets ]] && cp -r pkg/snippets dist/pkg/
+[[ -d pkg/snippets ]] && cp -r pkg/snippets "$out"/pkg/
 # A release build is minified (the glue and the stylesheet; scripts/minify.mjs).
-[[ "$profile" == --release ]] && node scripts/minify.mjs dist
-# The offline service worker of exactly these files (dist/sw.js; see www/sw.js).
-node scripts/sw-build.mjs dist
+[[ "$profile" == --release ]] && node scripts/minify.mjs "$out"
+# The offline service worker of exactly these files (sw.js; see www/sw.js).
+node scripts/sw-build.mjs "$out"
 
 size() { gzip -9 -c "$@" | wc -c; }
-printf 'dist/ ready (%s): wasm %s B (gzip %s B); wasm+js+css+html gzip %s B\n' \
-  "${profile#--}" "$(wc -c < dist/pkg/bsv_playground_bg.wasm)" "$(size dist/pkg/bsv_playground_bg.wasm)" \
-  "$(cat dist/pkg/* dist/www/* dist/index.html | gzip -9 -c | wc -c)"
+printf '%s/ ready (%s): main wasm %s B (gzip %s B); node scripts/size.mjs %s for every file\n' \
+  "$out" "${profile#--}" "$(wc -c < "$out"/pkg/bsv_playground_bg.wasm)" \
+  "$(size "$out"/pkg/bsv_playground_bg.wasm)" "$out"

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Installs what building (and, with --browser, testing) needs, and only what is missing:
-# the Rust wasm32 target, wasm-pack and wasm-bindgen-cli at pinned versions (cargo install),
+# the Rust wasm32 target, wasm-pack, wasm-bindgen-cli and the wasm splitter (wasm-split-cli of
+# wasm_split_cli_support) at pinned versions (cargo install),
 # wasm-opt, terser, playwright-core and axe-core from npm (package-lock.json pins them), and with --browser
 # Debian's chromium, chromium-driver and a Japanese font (apt-get).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 WASM_PACK_VERSION=0.15.1
+# The splitter that cuts the app's wasm into a chunk per page (scripts/build-dist.sh).
+WASM_SPLIT_VERSION=0.2.4
 # wasm-bindgen-cli must match the wasm-bindgen in Cargo.lock exactly.
 WASM_BINDGEN_VERSION=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -25,6 +28,11 @@ if [[ "$(wasm-bindgen --version 2>/dev/null)" != "wasm-bindgen $WASM_BINDGEN_VER
   say "installing wasm-bindgen-cli $WASM_BINDGEN_VERSION (about 3 minutes)"
   # Not --locked: the registry mirror lags one of the crates its lock file pins.
   cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION" --force
+fi
+if [[ "$(cat "$HOME/.cargo/wasm-split-cli.version" 2>/dev/null)" != "$WASM_SPLIT_VERSION" || ! -x "$HOME/.cargo/bin/wasm-split-cli" ]]; then
+  say "installing wasm-split-cli $WASM_SPLIT_VERSION (about 2 minutes)"
+  cargo install wasm_split_cli_support --version "$WASM_SPLIT_VERSION" --features build-binary --locked --force
+  echo "$WASM_SPLIT_VERSION" > "$HOME/.cargo/wasm-split-cli.version"
 fi
 if [[ ! -x node_modules/.bin/wasm-opt || ! -d node_modules/playwright-core || ! -d node_modules/axe-core || ! -d node_modules/terser ]] \
   || ! cmp -s package-lock.json node_modules/.package-lock.json.copy 2>/dev/null; then

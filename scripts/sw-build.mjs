@@ -1,7 +1,9 @@
 #!/usr/bin/env node
 // Writes DIR/sw.js (default dist/) from the template www/sw.js: the build id is the sha256 of
 // every file of the build (path and bytes, in path order) and the file list is every file in
-// DIR, so the service worker caches exactly one build. Prints the build id.
+// DIR but the first-visit packs (`pkg/pack_*.bin`: the same modules as `pkg/chunks/`, which the
+// loader reads once the worker is installed), so the service worker caches exactly one build
+// and each module once. Prints the build id.
 // `node scripts/sw-build.mjs [DIR]`; also imported by the offline e2e test.
 import { createHash } from 'node:crypto';
 import { readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
@@ -17,6 +19,11 @@ function walk(dir) {
   });
 }
 
+/** Whether `file` is a first-visit pack (see scripts/split-link.mjs). */
+export function isPack(file) {
+  return /^pkg\/pack_[^/]*\.bin$/.test(file);
+}
+
 /** Writes `dir`/sw.js and returns { build, files }. */
 export function writeServiceWorker(dir) {
   const root = resolve(dir);
@@ -30,7 +37,7 @@ export function writeServiceWorker(dir) {
     hash.update(file).update('\0').update(readFileSync(join(root, file))).update('\0');
   }
   const build = hash.digest('hex').slice(0, 16);
-  const list = ['./', ...files];
+  const list = ['./', ...files.filter((file) => !isPack(file))];
   const template = readFileSync(join(ROOT, 'www', 'sw.js'), 'utf8');
   writeFileSync(
     join(root, 'sw.js'),

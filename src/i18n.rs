@@ -1,7 +1,9 @@
 //! Fluent bundles embedded from `locales/`, language choice and per-message fallback ja → en.
 //!
 //! Every `.ftl` file of both languages is compiled in with `include_str!`, so the app needs no
-//! network. [`I18n::t`] formats a message from one language's bundle; a message missing in
+//! network; each language's files are one table ([`locale_files`]), which the browser app
+//! keeps in a wasm chunk of its own and adds ([`I18n::add_language`]) when the language is
+//! first shown. [`I18n::t`] formats a message from one language's bundle; a message missing in
 //! Japanese falls back to English, a message missing in both shows its id, and each such gap
 //! (and each formatting error) is noted once and handed out by [`I18n::take_warnings`], which
 //! the browser logs with `console.warn`. Bidi isolation marks are off
@@ -68,124 +70,60 @@ impl Lang {
     }
 }
 
-/// Every Fluent file of the app: language, file name, text. Both languages have the same
-/// files with the same message ids.
-pub const LOCALE_FILES: &[(Lang, &str, &str)] = &[
-    (
-        Lang::En,
-        "shell.ftl",
-        include_str!("../locales/en/shell.ftl"),
-    ),
-    (Lang::En, "home.ftl", include_str!("../locales/en/home.ftl")),
-    (
-        Lang::En,
-        "errors.ftl",
-        include_str!("../locales/en/errors.ftl"),
-    ),
-    (
-        Lang::En,
-        "recipes.ftl",
-        include_str!("../locales/en/recipes.ftl"),
-    ),
-    (Lang::En, "ik2r.ftl", include_str!("../locales/en/ik2r.ftl")),
-    (
-        Lang::En,
-        "drills.ftl",
-        include_str!("../locales/en/drills.ftl"),
-    ),
-    (Lang::En, "kit.ftl", include_str!("../locales/en/kit.ftl")),
-    (
-        Lang::En,
-        "lesson.ftl",
-        include_str!("../locales/en/lesson.ftl"),
-    ),
-    (
-        Lang::En,
-        "pendulum.ftl",
-        include_str!("../locales/en/pendulum.ftl"),
-    ),
-    (Lang::En, "rrt.ftl", include_str!("../locales/en/rrt.ftl")),
-    (Lang::En, "se3.ftl", include_str!("../locales/en/se3.ftl")),
-    (
-        Lang::En,
-        "signals.ftl",
-        include_str!("../locales/en/signals.ftl"),
-    ),
-    (Lang::En, "traj.ftl", include_str!("../locales/en/traj.ftl")),
-    (Lang::En, "dh.ftl", include_str!("../locales/en/dh.ftl")),
-    (
-        Lang::En,
-        "umeyama.ftl",
-        include_str!("../locales/en/umeyama.ftl"),
-    ),
-    (
-        Lang::En,
-        "teleop.ftl",
-        include_str!("../locales/en/teleop.ftl"),
-    ),
-    (
-        Lang::En,
-        "so101.ftl",
-        include_str!("../locales/en/so101.ftl"),
-    ),
-    (
-        Lang::Ja,
-        "shell.ftl",
-        include_str!("../locales/ja/shell.ftl"),
-    ),
-    (Lang::Ja, "home.ftl", include_str!("../locales/ja/home.ftl")),
-    (
-        Lang::Ja,
-        "errors.ftl",
-        include_str!("../locales/ja/errors.ftl"),
-    ),
-    (
-        Lang::Ja,
-        "recipes.ftl",
-        include_str!("../locales/ja/recipes.ftl"),
-    ),
-    (Lang::Ja, "ik2r.ftl", include_str!("../locales/ja/ik2r.ftl")),
-    (
-        Lang::Ja,
-        "drills.ftl",
-        include_str!("../locales/ja/drills.ftl"),
-    ),
-    (Lang::Ja, "kit.ftl", include_str!("../locales/ja/kit.ftl")),
-    (
-        Lang::Ja,
-        "lesson.ftl",
-        include_str!("../locales/ja/lesson.ftl"),
-    ),
-    (
-        Lang::Ja,
-        "pendulum.ftl",
-        include_str!("../locales/ja/pendulum.ftl"),
-    ),
-    (Lang::Ja, "rrt.ftl", include_str!("../locales/ja/rrt.ftl")),
-    (Lang::Ja, "se3.ftl", include_str!("../locales/ja/se3.ftl")),
-    (
-        Lang::Ja,
-        "signals.ftl",
-        include_str!("../locales/ja/signals.ftl"),
-    ),
-    (Lang::Ja, "traj.ftl", include_str!("../locales/ja/traj.ftl")),
-    (Lang::Ja, "dh.ftl", include_str!("../locales/ja/dh.ftl")),
-    (
-        Lang::Ja,
-        "umeyama.ftl",
-        include_str!("../locales/ja/umeyama.ftl"),
-    ),
-    (
-        Lang::Ja,
-        "teleop.ftl",
-        include_str!("../locales/ja/teleop.ftl"),
-    ),
-    (
-        Lang::Ja,
-        "so101.ftl",
-        include_str!("../locales/ja/so101.ftl"),
-    ),
+/// Both languages have the same files with the same message ids; [`locale_files`] names
+/// each language's. They are two tables, so that a build that loads one language on demand
+/// (the browser app) holds each language's text apart.
+/// The Fluent files of English: file name, text.
+#[rustfmt::skip]
+pub const EN_FILES: &[(&str, &str)] = &[
+    ("shell.ftl", include_str!("../locales/en/shell.ftl")),
+    ("home.ftl", include_str!("../locales/en/home.ftl")),
+    ("errors.ftl", include_str!("../locales/en/errors.ftl")),
+    ("recipes.ftl", include_str!("../locales/en/recipes.ftl")),
+    ("ik2r.ftl", include_str!("../locales/en/ik2r.ftl")),
+    ("drills.ftl", include_str!("../locales/en/drills.ftl")),
+    ("kit.ftl", include_str!("../locales/en/kit.ftl")),
+    ("lesson.ftl", include_str!("../locales/en/lesson.ftl")),
+    ("pendulum.ftl", include_str!("../locales/en/pendulum.ftl")),
+    ("rrt.ftl", include_str!("../locales/en/rrt.ftl")),
+    ("se3.ftl", include_str!("../locales/en/se3.ftl")),
+    ("signals.ftl", include_str!("../locales/en/signals.ftl")),
+    ("traj.ftl", include_str!("../locales/en/traj.ftl")),
+    ("dh.ftl", include_str!("../locales/en/dh.ftl")),
+    ("umeyama.ftl", include_str!("../locales/en/umeyama.ftl")),
+    ("teleop.ftl", include_str!("../locales/en/teleop.ftl")),
+    ("so101.ftl", include_str!("../locales/en/so101.ftl")),
 ];
+
+/// The Fluent files of Japanese: file name, text.
+#[rustfmt::skip]
+pub const JA_FILES: &[(&str, &str)] = &[
+    ("shell.ftl", include_str!("../locales/ja/shell.ftl")),
+    ("home.ftl", include_str!("../locales/ja/home.ftl")),
+    ("errors.ftl", include_str!("../locales/ja/errors.ftl")),
+    ("recipes.ftl", include_str!("../locales/ja/recipes.ftl")),
+    ("ik2r.ftl", include_str!("../locales/ja/ik2r.ftl")),
+    ("drills.ftl", include_str!("../locales/ja/drills.ftl")),
+    ("kit.ftl", include_str!("../locales/ja/kit.ftl")),
+    ("lesson.ftl", include_str!("../locales/ja/lesson.ftl")),
+    ("pendulum.ftl", include_str!("../locales/ja/pendulum.ftl")),
+    ("rrt.ftl", include_str!("../locales/ja/rrt.ftl")),
+    ("se3.ftl", include_str!("../locales/ja/se3.ftl")),
+    ("signals.ftl", include_str!("../locales/ja/signals.ftl")),
+    ("traj.ftl", include_str!("../locales/ja/traj.ftl")),
+    ("dh.ftl", include_str!("../locales/ja/dh.ftl")),
+    ("umeyama.ftl", include_str!("../locales/ja/umeyama.ftl")),
+    ("teleop.ftl", include_str!("../locales/ja/teleop.ftl")),
+    ("so101.ftl", include_str!("../locales/ja/so101.ftl")),
+];
+
+/// The Fluent files of `lang`: file name, text.
+pub fn locale_files(lang: Lang) -> &'static [(&'static str, &'static str)] {
+    match lang {
+        Lang::En => EN_FILES,
+        Lang::Ja => JA_FILES,
+    }
+}
 
 /// One argument of a message: text, or a number (numbers select plural variants such as
 /// `[one]` in English and are printed without trailing zeros: `2`, `0.12`).
@@ -233,15 +171,17 @@ impl FluentArg {
     }
 }
 
-/// The Fluent bundles of both languages, plus the notes about missing messages and
-/// formatting errors not yet handed out.
+/// The Fluent bundles of the languages added so far, plus the notes about missing messages
+/// and formatting errors not yet handed out.
 pub struct I18n {
     /// Each language's bundle, built from its files on the language's first use, so that a
     /// page in one language never parses the other's files (about half of the app's start).
     en: OnceCell<FluentBundle<FluentResource>>,
     ja: OnceCell<FluentBundle<FluentResource>>,
-    /// The files (language, name, text) of the languages not built yet.
+    /// The files (language, name, text) of the languages added and not built yet.
     sources: RefCell<Vec<(Lang, String, String)>>,
+    /// The languages whose files were added: a message is looked up only in these.
+    added: RefCell<BTreeSet<Lang>>,
     /// Every note ever made (so each is made once).
     noted: RefCell<BTreeSet<String>>,
     /// Notes not yet taken by [`I18n::take_warnings`].
@@ -255,26 +195,67 @@ impl Default for I18n {
 }
 
 impl I18n {
-    /// The bundles of [`LOCALE_FILES`] (each built on its language's first use).
+    /// The bundles of both languages' files ([`locale_files`]), each built on its language's
+    /// first use.
     pub fn new() -> I18n {
-        I18n::from_sources(LOCALE_FILES)
+        let i18n = I18n::empty();
+        for lang in Lang::ALL {
+            i18n.add_language(lang, locale_files(lang));
+        }
+        i18n
+    }
+
+    /// No language yet: every message shows its id until a language is added.
+    pub fn empty() -> I18n {
+        I18n {
+            en: OnceCell::new(),
+            ja: OnceCell::new(),
+            sources: RefCell::new(Vec::new()),
+            added: RefCell::new(BTreeSet::new()),
+            noted: RefCell::new(BTreeSet::new()),
+            pending: RefCell::new(Vec::new()),
+        }
     }
 
     /// Bundles of the given `(language, file name, text)` sources, each built on its
     /// language's first use.
     pub fn from_sources(sources: &[(Lang, &str, &str)]) -> I18n {
-        I18n {
-            en: OnceCell::new(),
-            ja: OnceCell::new(),
-            sources: RefCell::new(
-                sources
-                    .iter()
-                    .map(|(lang, file, text)| (*lang, file.to_string(), text.to_string()))
-                    .collect(),
-            ),
-            noted: RefCell::new(BTreeSet::new()),
-            pending: RefCell::new(Vec::new()),
+        let i18n = I18n::empty();
+        for lang in Lang::ALL {
+            let files: Vec<(&str, &str)> = sources
+                .iter()
+                .filter(|(l, _, _)| *l == lang)
+                .map(|(_, file, text)| (*file, *text))
+                .collect();
+            if !files.is_empty() {
+                i18n.add_language(lang, &files);
+            }
         }
+        i18n
+    }
+
+    /// Adds `lang`'s files (file name, text); its bundle is built on its first use. A language
+    /// added twice keeps its first files.
+    pub fn add_language(&self, lang: Lang, files: &[(&str, &str)]) {
+        let (Ok(mut added), Ok(mut sources)) =
+            (self.added.try_borrow_mut(), self.sources.try_borrow_mut())
+        else {
+            return;
+        };
+        if added.insert(lang) {
+            sources.extend(
+                files
+                    .iter()
+                    .map(|(file, text)| (lang, file.to_string(), text.to_string())),
+            );
+        }
+    }
+
+    /// Whether `lang`'s files were added.
+    pub fn has_language(&self, lang: Lang) -> bool {
+        self.added
+            .try_borrow()
+            .is_ok_and(|added| added.contains(&lang))
     }
 
     /// Builds `lang`'s bundle now if it is not built yet (its syntax errors and duplicate ids
@@ -283,12 +264,16 @@ impl I18n {
         self.bundle(lang);
     }
 
-    fn bundle(&self, lang: Lang) -> &FluentBundle<FluentResource> {
+    /// `lang`'s bundle, `None` while its files are not added.
+    fn bundle(&self, lang: Lang) -> Option<&FluentBundle<FluentResource>> {
+        if !self.has_language(lang) {
+            return None;
+        }
         let cell = match lang {
             Lang::En => &self.en,
             Lang::Ja => &self.ja,
         };
-        cell.get_or_init(|| self.build(lang))
+        Some(cell.get_or_init(|| self.build(lang)))
     }
 
     /// `lang`'s bundle from its files (taken out of `sources`). A syntax error or a duplicate
@@ -327,7 +312,7 @@ impl I18n {
     /// Whether `lang`'s own bundle has message `id` with a value (no fallback).
     pub fn has_message(&self, lang: Lang, id: &str) -> bool {
         self.bundle(lang)
-            .get_message(id)
+            .and_then(|bundle| bundle.get_message(id))
             .and_then(|m| m.value())
             .is_some()
     }
@@ -354,7 +339,9 @@ impl I18n {
             Lang::Ja => &[Lang::Ja, Lang::En],
         };
         for &source in chain {
-            let bundle = self.bundle(source);
+            let Some(bundle) = self.bundle(source) else {
+                continue;
+            };
             let Some(pattern) = bundle.get_message(id).and_then(|m| m.value()) else {
                 continue;
             };
@@ -487,11 +474,18 @@ mod tests {
         names
     }
 
+    fn all_files() -> Vec<(Lang, &'static str, &'static str)> {
+        Lang::ALL
+            .iter()
+            .flat_map(|&lang| locale_files(lang).iter().map(move |(f, t)| (lang, *f, *t)))
+            .collect()
+    }
+
     fn ids_by_lang() -> BTreeMap<Lang, BTreeMap<String, (String, String)>> {
         let mut map: BTreeMap<Lang, BTreeMap<String, (String, String)>> = BTreeMap::new();
-        for (lang, file, text) in LOCALE_FILES {
+        for (lang, file, text) in all_files() {
             for (id, block) in message_blocks(text) {
-                map.entry(*lang)
+                map.entry(lang)
                     .or_default()
                     .insert(id, (file.to_string(), block));
             }
@@ -541,7 +535,7 @@ mod tests {
                     assert!(!text.contains("{$"), "{lang:?} {id}: {text}");
                 }
                 // Attributes too.
-                let bundle = i18n.bundle(lang);
+                let bundle = i18n.bundle(lang).expect("both languages are added");
                 if let Some(message) = bundle.get_message(&id) {
                     let mut args = FluentArgs::new();
                     for v in &vars {
@@ -560,8 +554,8 @@ mod tests {
 
     #[test]
     fn japanese_uses_only_the_other_plural_category() {
-        for (lang, file, text) in LOCALE_FILES {
-            if *lang != Lang::Ja {
+        for (lang, file, text) in all_files() {
+            if lang != Lang::Ja {
                 continue;
             }
             for line in text.lines() {

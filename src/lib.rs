@@ -16,11 +16,13 @@
 //! - [`bench`](mod@bench): the cases of `make bench`.
 //! - [`error`]: the one error type every kernel returns.
 //! - [`i18n`]: Fluent bundles embedded from `locales/`.
-//! - [`api`]: the `#[wasm_bindgen]` surface for the kernels.
+//! - `api` (feature `api`, on by default, off in the app build): the `#[wasm_bindgen]` surface
+//!   for the kernels.
 //! - [`view`]: pure view models of the pages (URL codec, stepper, hit tests, scales), tested
 //!   natively.
 //! - `ui` (wasm32 only): the pages.
 
+#[cfg(feature = "api")]
 pub mod api;
 pub mod args;
 pub mod bench;

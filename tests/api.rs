@@ -1,7 +1,7 @@
 //! The wasm API as JavaScript sees it (runs under `wasm-pack test --node`): `runRecipe` errors
 //! are real JS `Error`s with the CLI's message, `listRecipes` describes every recipe, and the
 //! stepping handles reproduce the recipes' reference runs.
-#![cfg(target_arch = "wasm32")]
+#![cfg(all(target_arch = "wasm32", feature = "api"))]
 
 use bsv_playground::api::{
     list_recipes, plan_recipe, run_recipe, run_recipe_with_progress, PendulumHandle, RrtHandle,

@@ -64,4 +64,46 @@
     // A browser without module scripts never runs bootstrap.js (this replaces <script nomodule>).
     window.bsvBootError('old-browser');
   }
+
+  // Preloads the pack of the page the address names and the strings of the visitor's language
+  // (www/routes.js, written by the build), so that they arrive with the wasm instead of after
+  // it. The language is chosen as the app chooses it: `?lang=`, the saved choice, the
+  // browser's languages, English.
+  var table = window.bsvRoutes;
+  if (table && location.protocol !== 'file:') {
+    var hash = location.hash.replace(/^#\/?/, '');
+    var cut = hash.indexOf('?');
+    var route = (cut < 0 ? hash : hash.slice(0, cut)).replace(/\/+$/, '') || 'home';
+    var query = cut < 0 ? '' : hash.slice(cut + 1);
+    var pick = function (tag) {
+      var primary = String(tag || '').split(/[-_]/)[0].toLowerCase();
+      return primary === 'en' || primary === 'ja' ? primary : null;
+    };
+    var asked = /(?:^|&)lang=([^&]*)/.exec(query);
+    var lang = null;
+    try {
+      lang = asked ? pick(decodeURIComponent(asked[1])) : null;
+    } catch (e) {
+      lang = null;
+    }
+    if (!lang) {
+      try {
+        lang = pick(localStorage.getItem('bsv.lang'));
+      } catch (e) {
+        lang = null;
+      }
+    }
+    var preferred = navigator.languages || [navigator.language];
+    for (var i = 0; !lang && i < preferred.length; i++) lang = pick(preferred[i]);
+    var files = [table.strings[lang || 'en'], table.routes[route]];
+    for (var j = 0; j < files.length; j++) {
+      if (!files[j]) continue;
+      var link = document.createElement('link');
+      link.rel = 'preload';
+      link.as = 'fetch';
+      link.crossOrigin = 'anonymous';
+      link.href = 'pkg/' + files[j];
+      document.head.appendChild(link);
+    }
+  }
 })();

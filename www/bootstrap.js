@@ -1,5 +1,6 @@
 // Loads the wasm and starts the app. Nothing is fetched from the network beyond this site:
-// the module, the wasm and the translations (compiled into the wasm) all come from dist/.
+// the module, the main wasm, the visitor's language and page (packs of wasm chunks, fetched
+// by pkg/__wasm_split.js) all come from dist/.
 // If loading fails, a bilingual message replaces the "Loading…" line (see index.html).
 try {
   const { default: init, startApp } = await import('../pkg/bsv_playground.js');
@@ -7,7 +8,7 @@ try {
   // Marks that tests/bench/firstframe.bench.mjs reads (wasm compiled and instantiated; the
   // shell and the route mounted).
   performance.mark('bsv-wasm-ready');
-  startApp();
+  await startApp();
   performance.mark('bsv-app-ready');
   registerServiceWorker();
 } catch (error) {

@@ -1,8 +1,9 @@
 // The Web Worker of long recipe runs (src/ui/kit/worker.rs starts it as a module worker).
 // It loads the page's own wasm module (../pkg/bsv_playground.js + its .wasm: no second build)
 // and runs one recipe per message with `workerRunRecipe`, the same kernel code as a run on the
-// page. Progress goes back at most ~10 times a second; the files go back as Blobs built here,
-// so that the page never decodes or copies a large CSV on its main thread, with a text head
+// page (its first job fetches the kernels' chunk). Progress goes back at most ~10 times a
+// second; the files go back as Blobs built here, so that the page never decodes or copies a
+// large CSV on its main thread, with a text head
 // for previews. Nothing here touches a DOM (there is none).
 import init, { workerRunRecipe } from '../pkg/bsv_playground.js';
 
@@ -30,7 +31,7 @@ self.onmessage = async ({ data }) => {
   try {
     // Input files sent as Blobs are read here; the wasm decodes their bytes as the CLI does.
     const inputs = await Promise.all(data.texts.map(async (t) => (typeof t === 'string' ? t : new Uint8Array(await t.arrayBuffer()))));
-    out = workerRunRecipe(data.id, data.args, data.names, inputs, progress, data.envelope ?? 0);
+    out = await workerRunRecipe(data.id, data.args, data.names, inputs, progress, data.envelope ?? 0);
   } catch (error) {
     // A panic (or an exception) in the kernel: the instance may be unusable; the page starts
     // a fresh worker for its next run.

@@ -42,6 +42,9 @@ notfound-body = There is no page at this address. It may be an old or mistyped l
 notfound-home = Go to the home page
 
 page-mount-failed = This page could not be opened. Details are in the browser console.
+page-loading = Loading this drill…
+page-load-failed = This drill could not be loaded: the network is not reachable, or a file of the app is missing. Check the connection, then try again.
+page-load-retry = Retry
 
 crash-title = Something went wrong.
 crash-body = Your work is kept in the address (URL), so reloading picks up where you left off.

@@ -63,6 +63,7 @@ const ARGS: [ArgSpec; 4] = [
 
 /// `cubic-path`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "cubic-path",
     python: "cubic_joint_path.py",
     args: &ARGS,

@@ -100,6 +100,7 @@ const ARGS: [ArgSpec; 1] = [ArgSpec::number(
 
 /// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "dh-fk",
     python: "dh_fk_chain.py",
     args: &ARGS,

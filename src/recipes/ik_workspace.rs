@@ -77,6 +77,7 @@ const ARGS: [ArgSpec; 4] = [
 
 /// `ik-workspace`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "ik-workspace",
     python: "planar_ik_workspace.py",
     args: &ARGS,

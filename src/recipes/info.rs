@@ -31,6 +31,9 @@ pub struct RecipeInfo {
     /// The home card's picture of a run's output, for a canvas `aspect` (width / height)
     /// wide (`None` for an output without the expected columns).
     pub picture: fn(&RecipeOutput, f64) -> Option<Picture>,
+    /// Runs the recipe on parsed arguments (its kernel's `run_of`): a page reaches its own
+    /// kernel through its recipe's `INFO`, not through the registry of all twelve.
+    pub run: fn(&Args) -> Result<RecipeOutput, RecipeError>,
 }
 
 impl RecipeInfo {
@@ -46,6 +49,16 @@ impl RecipeInfo {
     /// The argument (positional or flag) called `name`, and whether it is a flag.
     pub fn arg(&self, name: &str) -> Option<(&'static ArgSpec, bool)> {
         self.all_args().find(|(a, _)| a.name == name)
+    }
+
+    /// Runs the recipe with command-line style arguments and the input files `(name, text)`
+    /// its path arguments name: what `bsv <id> <args>` writes.
+    pub fn run_raw(
+        &self,
+        raw: &[String],
+        inputs: Vec<(String, String)>,
+    ) -> Result<RecipeOutput, RecipeError> {
+        (self.run)(&Args::parse(raw, self.args, self.flags)?.with_inputs(inputs))
     }
 
     /// Fluent id of the recipe's title (recipes.ftl).

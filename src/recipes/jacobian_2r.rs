@@ -91,6 +91,7 @@ const ARGS: [ArgSpec; 6] = [
 
 /// `jacobian-2r`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "jacobian-2r",
     python: "jacobian_planar_2r.py",
     args: &ARGS,

@@ -46,6 +46,7 @@ const ARGS: [ArgSpec; 3] = [
 
 /// `manip-grid`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "manip-grid",
     python: "manip_ellipse_2r.py",
     args: &ARGS,

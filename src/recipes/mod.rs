@@ -53,6 +53,26 @@ pub const RECIPES: [Recipe; 12] = [
     Recipe::of::<umeyama_2d::Entry>(),
 ];
 
+/// Each recipe's id and the page it runs on (`RecipeInfo::page`): the registry's ids without
+/// its kernels, for code that must not hold every kernel (the app's shell).
+pub const RECIPE_PAGES: [(&str, Option<&str>); RECIPES.len()] = {
+    let mut pages = [("", None); RECIPES.len()];
+    let mut i = 0;
+    while i < RECIPES.len() {
+        pages[i] = (RECIPES[i].info.id, RECIPES[i].info.page);
+        i += 1;
+    }
+    pages
+};
+
+/// The page recipe `id` runs on, if it has one (see [`RECIPE_PAGES`]).
+pub fn page_of(id: &str) -> Option<&'static str> {
+    RECIPE_PAGES
+        .iter()
+        .find(|(recipe, _)| *recipe == id)
+        .and_then(|(_, page)| *page)
+}
+
 /// The recipe with this id.
 pub fn find(id: &str) -> Option<&'static Recipe> {
     RECIPES.iter().find(|r| r.info.id == id)

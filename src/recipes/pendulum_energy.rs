@@ -122,6 +122,7 @@ const FLAGS: [ArgSpec; 7] = [
 
 /// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "pendulum-energy",
     python: "mujoco_pendulum_energy.py",
     args: &ARGS,

@@ -70,6 +70,7 @@ pub const DIVERGED_ABS: f64 = 1e3;
 
 /// `pid-step`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "pid-step",
     python: "pid_step_response.py",
     args: &ARGS,

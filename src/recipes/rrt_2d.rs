@@ -95,6 +95,7 @@ pub const OPTIONS: [ArgSpec; 8] = [
 ];
 
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "rrt-2d",
     python: "rrt_2d_grid.py",
     args: &ARGS,

@@ -82,6 +82,7 @@ const ARGS: [ArgSpec; 12] = [
 
 /// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "se3-relative",
     python: "se3_relative_pose.py",
     args: &ARGS,

@@ -101,6 +101,7 @@ const ARGS: [ArgSpec; 2] = [
 
 /// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "traj-resample",
     python: "joint_traj_resample.py",
     args: &ARGS,

@@ -62,6 +62,7 @@ const ARGS: [ArgSpec; 4] = [
 
 /// `trapezoid-profile`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "trapezoid-profile",
     python: "trapezoid_velocity_profile.py",
     args: &ARGS,

@@ -118,6 +118,7 @@ pub const OPTIONS: [ArgSpec; 6] = [
 ];
 
 pub const INFO: RecipeInfo = RecipeInfo {
+    run: super::kernel::run_of::<Entry>,
     id: "umeyama-2d",
     python: "umeyama_align_2d.py",
     args: &ARGS,

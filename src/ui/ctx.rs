@@ -1,5 +1,5 @@
-//! The app context of this browser tab: the Fluent bundles, the current language and whether
-//! projector mode is on. One per thread (the wasm main thread), held in `thread_local!` cells
+//! The app context of this browser tab: the Fluent bundles (each language added when it is
+//! loaded, [`crate::ui::lang_chunks`]), the current language and whether projector mode is on. One per thread (the wasm main thread), held in `thread_local!` cells
 //! so that pages read it from anywhere without threading a handle through every call.
 //!
 //! Reading never panics: the language and projector flags are `Cell`s, the bundles are
@@ -11,9 +11,21 @@ use crate::error::RecipeError;
 use crate::i18n::{FluentArg, I18n, Lang};
 
 thread_local! {
-    static I18N: I18n = I18n::new();
+    /// The app starts with no language and loads its first before the shell is built; unit
+    /// tests have both at once.
+    static I18N: I18n = first_bundles();
     static LANG: Cell<Lang> = const { Cell::new(Lang::En) };
     static PROJECTOR: Cell<bool> = const { Cell::new(false) };
+}
+
+#[cfg(not(test))]
+fn first_bundles() -> I18n {
+    I18n::empty()
+}
+
+#[cfg(test)]
+fn first_bundles() -> I18n {
+    I18n::new()
 }
 
 /// The current UI language.
@@ -24,6 +36,17 @@ pub fn lang() -> Lang {
 /// Sets the current language. Only the shell calls this (it also re-renders the page).
 pub(crate) fn set_lang(lang: Lang) {
     LANG.with(|cell| cell.set(lang));
+}
+
+/// Whether `lang`'s strings are loaded.
+pub fn has_lang(lang: Lang) -> bool {
+    I18N.try_with(|i18n| i18n.has_language(lang))
+        .unwrap_or(false)
+}
+
+/// Adds `lang`'s Fluent files (file name, text) to the bundles.
+pub(crate) fn add_lang(lang: Lang, files: &[(&str, &str)]) {
+    let _ = I18N.try_with(|i18n| i18n.add_language(lang, files));
 }
 
 /// Whether projector mode (larger type, thicker lines, high contrast) is on.

@@ -14,7 +14,7 @@ use crate::view::drill_chain::{self, CHAIN};
 const CHAIN_ID: &str = "drill-chain";
 
 fn page_of(recipe: &str) -> Option<&'static str> {
-    recipes::find(recipe).and_then(|r| r.info.page)
+    recipes::page_of(recipe)
 }
 
 fn href(step: &str, exists: impl Fn(&str) -> bool) -> Option<String> {

@@ -19,11 +19,13 @@ pub mod dom;
 pub mod download;
 pub mod drill_chain;
 pub mod kit;
+pub mod lang_chunks;
 pub mod lesson_bar;
 pub mod nav_cue;
 pub mod nav_menu;
 pub mod overlay;
 pub mod page;
+pub mod page_frame;
 pub mod pages;
 pub mod router;
 pub mod schedule;
@@ -34,10 +36,16 @@ pub mod update_banner;
 /// Builds the app into `#app` and routes to the page the URL names. Installs a panic hook
 /// first: a panic is logged with `console.error` and a localized banner says that the work is
 /// kept in the URL and offers a reload.
+/// Resolves once the first page is mounted (or its chunk is on its way); rejects if the
+/// visitor's language could not be loaded.
 #[wasm_bindgen(js_name = startApp)]
-pub fn start_app() -> Result<(), JsValue> {
+pub async fn start_app() -> Result<(), JsValue> {
     install_panic_hook();
-    shell::start()
+    let lang = shell::initial_lang();
+    lang_chunks::load(lang)
+        .await
+        .map_err(|error| JsValue::from_str(&format!("{} strings: {error}", lang.code())))?;
+    shell::start(lang)
 }
 
 /// The page table, in navigation order: `[{ id, group }]`, `group` being the Drills menu's

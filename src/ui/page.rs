@@ -5,17 +5,25 @@
 //! line that also places it in the navigation:
 //!
 //! ```ignore
-//! PageDef::of::<ik2r::Ik2rPage>("ik-2r", "ik2r-title", "ik2r-blurb", Nav::Kinematics),
+//! page!(ik2r_page, ik2r::Ik2rPage, "ik-2r", "ik2r-title", "ik2r-blurb", Nav::Kinematics),
 //! ```
 //!
-//! On its route `#/<id>` the shell empties `<main>`, calls [`Page::mount`] and keeps the page
-//! until the route changes; then it drops it (the scope removes what the page installed).
+//! Each page's code is a wasm chunk of its own, fetched when the page is first opened (the
+//! [`page!`] line splits it off). On its route `#/<id>` the shell empties `<main>`, shows the
+//! page's frame while its chunk loads ([`PageDef::load`]), then calls [`Page::mount`] and keeps
+//! the page until the route changes; then it drops it (the scope removes what the page
+//! installed).
 //! Text in `data-i18n` / `data-i18n-attr` elements is the shell's; what a page formats itself
 //! is redrawn in [`Page::relocalize`]. Page state lives in the URL query after the route:
 //! [`MountCtx::query`] on mount, `crate::ui::router::replace_query` on every change.
 
+use std::future::Future;
+use std::pin::Pin;
+
 use wasm_bindgen::JsValue;
 use web_sys::{Element, KeyboardEvent};
+
+pub use wasm_split_helpers::SplitLoaderError;
 
 /// One key of a page, for the `?` overlay: the key as shown (`"e"`, `"← ↑ → ↓"`,
 /// `"Shift + ←"`) and the Fluent id of what it does.
@@ -107,7 +115,15 @@ pub trait Page: 'static {
     }
 }
 
-fn mount_boxed<P: Page>(ctx: MountCtx) -> Result<Box<dyn Page>, JsValue> {
+/// Builds page `P`: what a page's chunk hands the shell.
+pub type MountFn = fn(MountCtx) -> Result<Box<dyn Page>, JsValue>;
+
+/// Loading a page's chunk: its mount function once the chunk is in, or why it could not load
+/// (offline before the chunk was fetched, a missing file).
+pub type PageLoad = Pin<Box<dyn Future<Output = Result<MountFn, SplitLoaderError>>>>;
+
+/// The mount function of page `P`.
+pub fn mount_boxed<P: Page>(ctx: MountCtx) -> Result<Box<dyn Page>, JsValue> {
     Ok(Box::new(P::mount(ctx)?))
 }
 
@@ -147,24 +163,47 @@ pub struct PageDef {
     pub blurb_id: &'static str,
     /// Where its link sits in the navigation.
     pub nav: Nav,
-    /// Builds the page under `ctx.root`.
-    pub mount: fn(MountCtx) -> Result<Box<dyn Page>, JsValue>,
+    /// Loads the page's chunk (at once if it is in) and gives its mount function.
+    pub load: fn() -> PageLoad,
 }
 
-impl PageDef {
-    /// The registration of page `P` under route `#/<id>`.
-    pub const fn of<P: Page>(
-        id: &'static str,
-        title_id: &'static str,
-        blurb_id: &'static str,
-        nav: Nav,
-    ) -> PageDef {
-        PageDef {
-            id,
-            title_id,
-            blurb_id,
-            nav,
-            mount: mount_boxed::<P>,
+/// One line of the page table: `page!(chunk, PageType, id, title_id, blurb_id, nav)` registers
+/// `PageType` under route `#/<id>` with its code split off into the wasm chunk `chunk`, fetched
+/// on the page's first visit (or in the background after the first page is shown).
+macro_rules! page {
+    ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $blurb_id:expr, $nav:expr) => {
+        $crate::ui::page::PageDef {
+            id: $id,
+            title_id: $title_id,
+            blurb_id: $blurb_id,
+            nav: $nav,
+            load: $crate::ui::page::page_load!($chunk, $page),
         }
-    }
+    };
 }
+
+/// The `load` of a page: its code split off into the chunk `$chunk`.
+#[cfg(feature = "split")]
+macro_rules! page_load {
+    ($chunk:ident, $page:ty) => {{
+        #[wasm_split_helpers::wasm_split($chunk, fallible)]
+        fn $chunk() -> Result<$crate::ui::page::MountFn, $crate::ui::page::SplitLoaderError> {
+            Ok($crate::ui::page::mount_boxed::<$page>)
+        }
+        || -> $crate::ui::page::PageLoad { Box::pin($chunk()) }
+    }};
+}
+
+/// Without the `split` feature (tests, benches) every page is in the one wasm.
+#[cfg(not(feature = "split"))]
+macro_rules! page_load {
+    ($chunk:ident, $page:ty) => {
+        || -> $crate::ui::page::PageLoad {
+            Box::pin(std::future::ready(Ok(
+                $crate::ui::page::mount_boxed::<$page> as $crate::ui::page::MountFn,
+            )))
+        }
+    };
+}
+pub(crate) use page;
+pub(crate) use page_load;

@@ -14,8 +14,9 @@
 //!   only while the page body or a canvas has focus. Keys the page does not take keep their
 //!   default, so presenter remotes keep working.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::rc::Rc;
+use std::task::{Context, Poll, Waker};
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -24,6 +25,7 @@ use web_sys::{Element, KeyboardEvent};
 use crate::i18n::{self, Lang};
 use crate::ui::drill_chain;
 use crate::ui::kit::keymap::{self, ShellKey};
+use crate::ui::lang_chunks;
 use crate::ui::lesson_bar;
 use crate::ui::nav_cue;
 use crate::ui::nav_menu::{self, NavMenu};
@@ -32,7 +34,7 @@ use crate::ui::pages::PAGES;
 use crate::ui::router::{Route, HOME_ID};
 use crate::ui::section_keys;
 use crate::ui::update_banner;
-use crate::ui::{ctx, dom, overlay, router};
+use crate::ui::{ctx, dom, overlay, page_frame, router};
 
 /// localStorage key of the language the user chose.
 pub const LANG_STORAGE_KEY: &str = "bsv.lang";
@@ -50,12 +52,12 @@ const MAIN_ID: &str = "app-main";
 
 /// Builds the shell into `#app` (or `<body>`), applies the initial language and projector
 /// mode, installs the keys and starts the router. Calling it twice does nothing.
-pub(crate) fn start() -> Result<(), JsValue> {
+pub(crate) fn start(lang: Lang) -> Result<(), JsValue> {
     let document = dom::document()?;
     if document.get_element_by_id(MAIN_ID).is_some() {
         return Ok(());
     }
-    ctx::set_lang(initial_lang());
+    ctx::set_lang(lang);
     ctx::set_projector(dom::storage_get(PROJECTOR_STORAGE_KEY).as_deref() == Some("1"));
 
     let app = match document.get_element_by_id(APP_ID) {
@@ -99,15 +101,25 @@ pub(crate) fn start() -> Result<(), JsValue> {
             window.scroll_to_with_x_and_y(0.0, 0.0);
         }
     })?;
+    install_load_progress()?;
     mount_route(&router::current_route())?;
-    if let Some(html) = document.document_element() {
-        html.set_attribute("data-app-ready", "1")?;
-    }
+    crate::ui::schedule::after_paint(|| wasm_bindgen_futures::spawn_local(load_the_rest()))?;
     Ok(())
 }
 
+/// After the first page is shown, the rest of the app in the background, one part after the
+/// other: the other language (so a switch is immediate) and every page's chunk (so going to a
+/// page shows it at once, and the app works offline after one visit even where no service
+/// worker runs). A part that fails to load is loaded again when it is needed.
+async fn load_the_rest() {
+    let _ = lang_chunks::load(ctx::lang().other()).await;
+    for def in PAGES {
+        let _ = (def.load)().await;
+    }
+}
+
 /// `?lang=`, else the saved choice, else the browser's languages, else English.
-fn initial_lang() -> Lang {
+pub(crate) fn initial_lang() -> Lang {
     if let Some(lang) = router::current_route().lang() {
         return lang;
     }
@@ -270,14 +282,30 @@ pub(crate) fn switch_lang(lang: Lang) -> Result<(), JsValue> {
     Ok(())
 }
 
-/// Makes `lang` current and re-renders every visible string.
+/// Makes `lang` current and re-renders every visible string, once its strings are loaded.
 pub(crate) fn apply_lang(lang: Lang) -> Result<(), JsValue> {
+    if ctx::has_lang(lang) {
+        return show_lang(lang);
+    }
+    wasm_bindgen_futures::spawn_local(async move {
+        match lang_chunks::load(lang).await {
+            Ok(()) => report(show_lang(lang)),
+            Err(_) => report(Err(JsValue::from_str(&format!(
+                "the {} strings could not be loaded",
+                lang.code()
+            )))),
+        }
+    });
+    Ok(())
+}
+
+fn show_lang(lang: Lang) -> Result<(), JsValue> {
     ctx::set_lang(lang);
     apply_lang_chrome()?;
     if let Some(body) = dom::document()?.body() {
         dom::relocalize(&body)?;
     }
-    update_title(current_def())?;
+    update_title(routed_def())?;
     with_page(|page| page.relocalize());
     lesson_bar::render()?;
     Ok(())
@@ -319,8 +347,9 @@ fn apply_projector_class(on: bool) -> Result<(), JsValue> {
     Ok(())
 }
 
-fn current_def() -> Option<&'static PageDef> {
-    current_page_id().and_then(|id| page::find(PAGES, id))
+/// The page the route names (mounted, or its chunk on its way).
+fn routed_def() -> Option<&'static PageDef> {
+    ROUTING.with(|routing| routing.def.get())
 }
 
 /// After a route change: mark the current page in the navigation, set the document title.
@@ -467,6 +496,10 @@ fn with_page<R>(f: impl FnOnce(&dyn Page) -> R) -> Option<R> {
 /// Carries out what a page or the lesson presenter asked for.
 fn perform(request: ShellRequest) -> Result<(), JsValue> {
     match request {
+        ShellRequest::StepPage if current_page_id().is_none() && routed_def().is_some() => {
+            ROUTING.with(|routing| routing.pending.borrow_mut().push(request));
+            Ok(())
+        }
         ShellRequest::StepPage => step_page(),
         ShellRequest::Remount => mount_route(&router::current_route()),
         ShellRequest::Projector(on) if ctx::projector() != on => set_projector(on),
@@ -497,7 +530,8 @@ pub fn current_page_id() -> Option<&'static str> {
         .flatten()
 }
 
-/// Drops the current page and mounts the one `route` names.
+/// Drops the current page and mounts the one `route` names: at once if its chunk is in, else
+/// after showing the page's frame while the chunk loads.
 fn mount_route(route: &Route) -> Result<(), JsValue> {
     if let Some(lang) = route.lang() {
         router::set_lang_in_url(true);
@@ -509,10 +543,18 @@ fn mount_route(route: &Route) -> Result<(), JsValue> {
     drop(old);
     let main = main_element()?;
     dom::clear(&main);
+    let generation = ROUTING.with(|routing| {
+        routing.generation.set(routing.generation.get() + 1);
+        routing.generation.get()
+    });
     let def = page::find(PAGES, &route.page);
+    ROUTING.with(|routing| routing.def.set(def));
     match def {
-        Some(def) => mount_page(def, &main, route.page_query())?,
-        None => render_not_found(&main)?,
+        Some(def) => load_page(def, generation, route.page_query())?,
+        None => {
+            render_not_found(&main)?;
+            mark_ready()?;
+        }
     }
     route_changed(def)?;
     if router::lang_in_url() && route.lang() != Some(ctx::lang()) {
@@ -521,8 +563,134 @@ fn mount_route(route: &Route) -> Result<(), JsValue> {
     Ok(())
 }
 
+/// Which page the route names and how many routings there were: a chunk that lands after the
+/// route changed again is not mounted.
+struct Routing {
+    def: Cell<Option<&'static PageDef>>,
+    generation: Cell<u64>,
+    /// Requests for the page (a presenter's step) made while its chunk loads.
+    pending: RefCell<Vec<ShellRequest>>,
+}
+
+thread_local! {
+    static ROUTING: Routing = const {
+        Routing {
+            def: Cell::new(None),
+            generation: Cell::new(0),
+            pending: RefCell::new(Vec::new()),
+        }
+    };
+}
+
+fn is_current(generation: u64) -> bool {
+    ROUTING.with(|routing| routing.generation.get()) == generation
+}
+
+/// Mounts page `def` from its chunk: in this task if the chunk is in; else shows the page's
+/// frame and its loading line, and mounts when the chunk lands (if the route is still this
+/// one), or shows the failure with a Retry button.
+fn load_page(
+    def: &'static PageDef,
+    generation: u64,
+    query: Vec<(String, String)>,
+) -> Result<(), JsValue> {
+    let mut load = (def.load)();
+    let mut poll = Context::from_waker(Waker::noop());
+    if let Poll::Ready(result) = load.as_mut().poll(&mut poll) {
+        return loaded(def, generation, query, result);
+    }
+    let main = main_element()?;
+    page_frame::show_loading(&main, def)?;
+    wasm_bindgen_futures::spawn_local(async move {
+        let result = load.await;
+        if is_current(generation) {
+            report(loaded(def, generation, query, result));
+        }
+    });
+    Ok(())
+}
+
+/// The loader's `bsv-chunk-progress` events (bytes of a chunk arrived) move the loading line's
+/// progress bar, while it is shown.
+fn install_load_progress() -> Result<(), JsValue> {
+    let window = dom::window()?;
+    dom::Listener::new(&window, "bsv-chunk-progress", |event| {
+        let detail = event
+            .dyn_ref::<web_sys::CustomEvent>()
+            .map(|e| e.detail())
+            .unwrap_or(JsValue::UNDEFINED);
+        let number = |key: &str| {
+            js_sys::Reflect::get(&detail, &JsValue::from_str(key))
+                .ok()
+                .and_then(|v| v.as_f64())
+                .unwrap_or(0.0)
+        };
+        if let Ok(main) = main_element() {
+            report(page_frame::show_progress(
+                &main,
+                number("loaded"),
+                number("total"),
+            ));
+        }
+    })?
+    .forever();
+    Ok(())
+}
+
+/// `html[data-app-ready]`: the first route is settled (its page mounted, or the message that
+/// it could not be loaded, or "not found"); tests and the first-frame bench wait for it.
+fn mark_ready() -> Result<(), JsValue> {
+    if let Some(html) = dom::document()?.document_element() {
+        if !html.has_attribute("data-app-ready") {
+            html.set_attribute("data-app-ready", "1")?;
+        }
+    }
+    Ok(())
+}
+
+/// The chunk of page `def` landed (or failed to).
+fn loaded(
+    def: &'static PageDef,
+    generation: u64,
+    query: Vec<(String, String)>,
+    result: Result<page::MountFn, page::SplitLoaderError>,
+) -> Result<(), JsValue> {
+    let main = main_element()?;
+    match result {
+        Ok(mount) => {
+            dom::clear(&main);
+            mount_page(def, mount, &main, query)?;
+            mark_ready()?;
+            let pending: Vec<ShellRequest> = ROUTING.with(|routing| routing.pending.take());
+            perform_all(pending)
+        }
+        Err(_) => {
+            web_sys::console::warn_1(
+                &format!(
+                    "BSV Playground: the code of page '{}' could not be loaded",
+                    def.id
+                )
+                .into(),
+            );
+            let retry = page_frame::show_failed(&main, def)?;
+            mark_ready()?;
+            let query = RefCell::new(Some(query));
+            dom::Listener::new(&retry, "click", move |_| {
+                if let Some(query) = query.borrow_mut().take() {
+                    if is_current(generation) {
+                        report(load_page(def, generation, query));
+                    }
+                }
+            })?
+            .forever();
+            Ok(())
+        }
+    }
+}
+
 fn mount_page(
     def: &'static PageDef,
+    mount: page::MountFn,
     main: &Element,
     query: Vec<(String, String)>,
 ) -> Result<(), JsValue> {
@@ -531,7 +699,7 @@ fn mount_page(
         query,
         shell: SHELL,
     };
-    match (def.mount)(mount_ctx) {
+    match mount(mount_ctx) {
         Ok(page) => {
             if ctx::projector() {
                 page.set_projector(true);

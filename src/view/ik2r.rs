@@ -853,12 +853,12 @@ impl PoseSummary {
 // ---------- Exports: the recipes' arguments and command lines ----------
 
 /// One CSV the page offers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy)]
 pub struct Export {
     /// File name (also the button's `data-download`).
     pub file: &'static str,
-    /// Recipe id on the command line.
-    pub recipe: &'static str,
+    /// The recipe that writes it.
+    pub recipe: &'static crate::recipes::RecipeInfo,
     /// Fluent id of the button.
     pub label_id: &'static str,
     /// Its arguments include the pose's q2 (the jacobian-2r sweep), not only the parameters.
@@ -869,19 +869,19 @@ pub struct Export {
 pub const EXPORTS: [Export; 3] = [
     Export {
         file: "ik_workspace.csv",
-        recipe: "ik-workspace",
+        recipe: &crate::recipes::ik_workspace::INFO,
         label_id: "ik2r-dl-ik",
         follows_q2: false,
     },
     Export {
         file: "jacobian_2r.csv",
-        recipe: "jacobian-2r",
+        recipe: &crate::recipes::jacobian_2r::INFO,
         label_id: "ik2r-dl-jac",
         follows_q2: true,
     },
     Export {
         file: "manip_ellipse.csv",
-        recipe: "manip-grid",
+        recipe: &crate::recipes::manip_grid::INFO,
         label_id: "ik2r-dl-manip",
         follows_q2: false,
     },
@@ -893,7 +893,7 @@ pub const ARM_PNG: &str = "ik_2r_arm.png";
 /// The positional arguments of `export` for parameters `p` and the current `q2` (the
 /// Jacobian sweep is taken at the pose's q2).
 pub fn export_args(export: &Export, p: &Params, q2: f64) -> Vec<String> {
-    match export.recipe {
+    match export.recipe.id {
         "ik-workspace" => vec![num(p.l1), num(p.l2), num(p.half_mm), num(p.step_mm)],
         "jacobian-2r" => vec![
             num(p.l1),
@@ -909,16 +909,15 @@ pub fn export_args(export: &Export, p: &Params, q2: f64) -> Vec<String> {
 
 /// The run of `export` for parameters `p` at elbow angle `q2`, as the command lines spell it.
 pub fn export_run(export: &Export, p: &Params, q2: f64) -> RunArgs {
-    let fields = crate::recipes::find(export.recipe)
-        .map_or_else(Vec::new, |r| crate::view::form::recipe_fields(r.info));
+    let fields = crate::view::form::recipe_fields(export.recipe);
     let texts: Vec<Option<String>> = export_args(export, p, q2).into_iter().map(Some).collect();
-    RunArgs::new(export.recipe, &fields, &texts)
+    RunArgs::new(export.recipe.id, &fields, &texts)
 }
 
 /// The equivalent command lines: `python <script> <args>` and `bsv <recipe> <args>`.
 pub fn export_commands(export: &Export, p: &Params, q2: f64) -> (String, String) {
     let run = export_run(export, p, q2);
-    let script = crate::recipes::find(export.recipe).map_or("", |r| r.info.python);
+    let script = export.recipe.python;
     (run.python_command(script), run.bsv_command())
 }
 
@@ -936,12 +935,14 @@ pub enum ExportError {
 
 /// The CSV text, exactly as `bsv <recipe> <args>` writes it.
 pub fn export_csv(export: &Export, p: &Params, q2: f64) -> Result<String, ExportError> {
-    let out = crate::recipes::run(export.recipe, &export_args(export, p, q2))
+    let out = export
+        .recipe
+        .run_raw(&export_args(export, p, q2), Vec::new())
         .map_err(ExportError::Recipe)?;
     out.file(export.file)
         .map(str::to_string)
         .ok_or(ExportError::MissingFile {
-            recipe: export.recipe,
+            recipe: export.recipe.id,
             file: export.file,
         })
 }

@@ -6,7 +6,7 @@
 // max, against the budget of a 500 ms median. Also the sizes of the dist (scripts/size.mjs).
 // With FIRSTFRAME_STRICT=1 the exit code is 1 when the budget is missed; otherwise this only
 // reports.
-import { browser, closeBrowser, startServer, DIST } from '../e2e/harness.mjs';
+import { browser, closeBrowser, startServer, watchFirstFrame, DIST } from '../e2e/harness.mjs';
 import { stats } from './bench-table.mjs';
 import { measure, KB, BUDGET } from '../../scripts/size.mjs';
 
@@ -21,17 +21,7 @@ const BUDGET_MS = 500;
 async function coldLoad(url) {
   const context = await (await browser()).newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
   try {
-    await context.addInitScript(() => {
-      // The init script runs before <html> exists: watch the whole document.
-      new MutationObserver((_, observer) => {
-        if (document.documentElement?.dataset.appReady === '1') {
-          observer.disconnect();
-          requestAnimationFrame(() => {
-            window.__firstFrameMs = performance.now();
-          });
-        }
-      }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-app-ready'] });
-    });
+    await context.addInitScript(watchFirstFrame);
     const page = await context.newPage();
     await page.goto(url);
     await page.waitForFunction(() => typeof window.__firstFrameMs === 'number', null, { timeout: 20000 });

@@ -35,8 +35,8 @@ const CHROMIUM_ARGS = [
 export const DIST = resolve(ROOT, process.env.BSV_DIST || 'dist');
 
 /** Serves DIST (dist/ unless BSV_DIST names another) on 127.0.0.1 at a free port: { url, close }. */
-export function startServer() {
-  return startStaticServer(DIST, 0);
+export function startServer(options = {}) {
+  return startStaticServer(DIST, 0, '127.0.0.1', options);
 }
 
 /**
@@ -167,6 +167,45 @@ export async function openApp(url, hash = '#/', { viewport = { width: 1280, heig
   await page.goto(`${url}/${hash}`);
   await page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
   return { page, context, errors, close: () => context.close() };
+}
+
+/**
+ * An init script (`context.addInitScript(watchFirstFrame)`): the first animation frame after
+ * the shell sets html[data-app-ready] (the route settled, its page answering input) is
+ * recorded as `window.__firstFrameMs`.
+ */
+export function watchFirstFrame() {
+  // The init script runs before <html> exists: watch the whole document.
+  new MutationObserver((_, observer) => {
+    if (document.documentElement?.dataset.appReady === '1') {
+      observer.disconnect();
+      requestAnimationFrame(() => {
+        window.__firstFrameMs = performance.now();
+      });
+    }
+  }).observe(document, { subtree: true, attributes: true, attributeFilter: ['data-app-ready'] });
+}
+
+/**
+ * Lighthouse's mobile network (150 ms round trip, 1.6 Mbps down, 750 kbps up) on `page`,
+ * and with `cpu` its CPU slowed 4×, through the DevTools protocol. Returns `bytes()`: the
+ * bytes received on the wire so far.
+ */
+export async function throttle(context, page, { cpu = false } = {}) {
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Network.enable');
+  await cdp.send('Network.emulateNetworkConditions', {
+    offline: false,
+    latency: 150,
+    downloadThroughput: (1.6 * 1000 * 1000) / 8,
+    uploadThroughput: (750 * 1000) / 8,
+  });
+  if (cpu) await cdp.send('Emulation.setCPUThrottlingRate', { rate: 4 });
+  let bytes = 0;
+  cdp.on('Network.loadingFinished', (e) => {
+    bytes += e.encodedDataLength;
+  });
+  return { bytes: () => bytes };
 }
 
 /**

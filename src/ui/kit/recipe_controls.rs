@@ -511,7 +511,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
     /// Saves `file` of the recipe's run with the last valid arguments (the `bsv` bytes).
     pub fn download(&self, file: &str) {
         // The arguments passed the recipe's own check, so the run succeeds.
-        if let Ok(out) = crate::recipes::run(self.info.id, &self.raw_args()) {
+        if let Ok(out) = self.info.run_raw(&self.raw_args(), Vec::new()) {
             self.exports
                 .download(file, out.file(file).unwrap_or_default());
         }

@@ -20,6 +20,8 @@ use std::rc::Rc;
 use js_sys::{Array, Reflect, Uint8Array};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
+#[cfg(feature = "split")]
+use wasm_split_helpers::{wasm_split, SplitLoaderError};
 use web_sys::{Blob, ErrorEvent, MessageEvent, Worker, WorkerOptions, WorkerType};
 
 use crate::error::RecipeError;
@@ -156,8 +158,39 @@ fn refusal(error: &crate::error::RecipeError) -> Result<JsValue, JsValue> {
 /// true, summary, warnings, i18n, files: [{ name, data: Uint8Array, rows, head, envelope }],
 /// inputs: [{ name, envelope }] }` (envelopes of `envelope` buckets when it is not 0, else
 /// null) or `{ ok: false, error, param, en, ja, english, i18n }`.
+/// Its code (the kernels) is a wasm chunk of its own, loaded on the worker's first job.
 #[wasm_bindgen(js_name = workerRunRecipe)]
-pub fn worker_run_recipe(
+pub async fn worker_run_recipe(
+    id: String,
+    args: Vec<String>,
+    names: Vec<String>,
+    inputs: Array,
+    progress: js_sys::Function,
+    envelope: u32,
+) -> Result<JsValue, JsValue> {
+    #[cfg(feature = "split")]
+    return worker_chunk(id, args, names, inputs, progress, envelope)
+        .await
+        .map_err(|error| JsValue::from_str(&format!("the worker's code: {error}")))?;
+    #[cfg(not(feature = "split"))]
+    return run_in_worker(&id, args, names, inputs, &progress, envelope);
+}
+
+/// The worker's chunk: every kernel, called by [`run_in_worker`].
+#[cfg(feature = "split")]
+#[wasm_split(worker, fallible)]
+fn worker_chunk(
+    id: String,
+    args: Vec<String>,
+    names: Vec<String>,
+    inputs: Array,
+    progress: js_sys::Function,
+    envelope: u32,
+) -> Result<Result<JsValue, JsValue>, SplitLoaderError> {
+    Ok(run_in_worker(&id, args, names, inputs, &progress, envelope))
+}
+
+fn run_in_worker(
     id: &str,
     args: Vec<String>,
     names: Vec<String>,

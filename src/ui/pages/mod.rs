@@ -5,7 +5,7 @@
 //! (`#/drills?recipe=<id>`).
 
 use crate::ui::kit::signal_page::Signal;
-use crate::ui::page::{Nav, PageDef};
+use crate::ui::page::{page, Nav, PageDef};
 use crate::ui::router::{DRILLS_ID, HOME_ID};
 
 mod cubic_path;
@@ -26,22 +26,23 @@ mod traj_resample;
 mod trapezoid_profile;
 mod umeyama;
 
-/// All pages, in navigation order (the Drills menu lists its groups' pages in this order).
+/// All pages, in navigation order (the Drills menu lists its groups' pages in this order), each
+/// with the wasm chunk its code is split into.
 #[rustfmt::skip]
 pub const PAGES: &[PageDef] = &[
-    PageDef::of::<home::HomePage>(HOME_ID, "home-page-title", "home-intro", Nav::Top),
-    PageDef::of::<ik2r::Ik2rPage>("ik-2r", "ik2r-title", "ik2r-blurb", Nav::Kinematics),
-    PageDef::of::<dh_fk::DhPage>("dh-fk", "dh-title", "dh-blurb", Nav::Kinematics),
-    PageDef::of::<se3::Se3Page>("se3-relative", "se3-title", "se3-blurb", Nav::Kinematics),
-    PageDef::of::<umeyama::UmeyamaPage>("umeyama-2d", "umeyama-title", "umeyama-blurb", Nav::Kinematics),
-    PageDef::of::<pendulum::PendulumPage>("pendulum-energy", "pendulum-title", "pendulum-blurb", Nav::Dynamics),
-    PageDef::of::<Signal<pid_step::PidPage>>("pid-step", "pid-title", "pid-blurb", Nav::Dynamics),
-    PageDef::of::<Signal<cubic_path::CubicPage>>("cubic-path", "cubic-title", "cubic-blurb", Nav::Trajectories),
-    PageDef::of::<Signal<trapezoid_profile::TrapPage>>("trapezoid-profile", "trap-title", "trap-blurb", Nav::Trajectories),
-    PageDef::of::<traj_resample::TrajResample>("traj-resample", "traj-title", "traj-blurb", Nav::Trajectories),
-    PageDef::of::<rrt::RrtPage>("rrt-2d", "rrt-title", "rrt-blurb", Nav::Planning),
-    PageDef::of::<teleop::TeleopPage>("teleop", "teleop-nav", "teleop-blurb", Nav::Top),
-    PageDef::of::<so101::So101Page>("so101", "so101-nav", "so101-blurb", Nav::Top),
-    PageDef::of::<drills::DrillsPage>(DRILLS_ID, "drills-title", "drills-blurb", Nav::Top),
-    PageDef::of::<lesson::LessonPage>("lesson", "lesson-title", "lesson-blurb", Nav::Top),
+    page!(home_page, home::HomePage, HOME_ID, "home-page-title", "home-intro", Nav::Top),
+    page!(ik2r_page, ik2r::Ik2rPage, "ik-2r", "ik2r-title", "ik2r-blurb", Nav::Kinematics),
+    page!(dh_fk_page, dh_fk::DhPage, "dh-fk", "dh-title", "dh-blurb", Nav::Kinematics),
+    page!(se3_page, se3::Se3Page, "se3-relative", "se3-title", "se3-blurb", Nav::Kinematics),
+    page!(umeyama_page, umeyama::UmeyamaPage, "umeyama-2d", "umeyama-title", "umeyama-blurb", Nav::Kinematics),
+    page!(pendulum_page, pendulum::PendulumPage, "pendulum-energy", "pendulum-title", "pendulum-blurb", Nav::Dynamics),
+    page!(pid_step_page, Signal<pid_step::PidPage>, "pid-step", "pid-title", "pid-blurb", Nav::Dynamics),
+    page!(cubic_path_page, Signal<cubic_path::CubicPage>, "cubic-path", "cubic-title", "cubic-blurb", Nav::Trajectories),
+    page!(trapezoid_profile_page, Signal<trapezoid_profile::TrapPage>, "trapezoid-profile", "trap-title", "trap-blurb", Nav::Trajectories),
+    page!(traj_resample_page, traj_resample::TrajResample, "traj-resample", "traj-title", "traj-blurb", Nav::Trajectories),
+    page!(rrt_page, rrt::RrtPage, "rrt-2d", "rrt-title", "rrt-blurb", Nav::Planning),
+    page!(teleop_page, teleop::TeleopPage, "teleop", "teleop-nav", "teleop-blurb", Nav::Top),
+    page!(so101_page, so101::So101Page, "so101", "so101-nav", "so101-blurb", Nav::Top),
+    page!(drills_page, drills::DrillsPage, DRILLS_ID, "drills-title", "drills-blurb", Nav::Top),
+    page!(lesson_page, lesson::LessonPage, "lesson", "lesson-title", "lesson-blurb", Nav::Top),
 ];

@@ -51,12 +51,7 @@ pub(super) struct Exports {
 impl Exports {
     pub fn find(root: &Element) -> Result<Exports, JsValue> {
         let files: Vec<&str> = EXPORTS.iter().map(|e| e.file).collect();
-        let fields = EXPORTS
-            .iter()
-            .map(|e| {
-                crate::recipes::find(e.recipe).map_or_else(Vec::new, |r| recipe_fields(r.info))
-            })
-            .collect();
+        let fields = EXPORTS.iter().map(|e| recipe_fields(e.recipe)).collect();
         Ok(Exports {
             root: root.clone(),
             panel: kit::Exports::find_runs(root, "ik2r", &files)?,
@@ -126,11 +121,11 @@ impl Exports {
                 .into_iter()
                 .map(Some)
                 .collect();
-            let args = RunArgs::new(export.recipe, fields, &texts);
+            let args = RunArgs::new(export.recipe.id, fields, &texts);
             if self.panel.shows(export.file, &args) {
                 continue;
             }
-            let script = crate::recipes::find(export.recipe).map_or("", |r| r.info.python);
+            let script = export.recipe.python;
             self.panel.show_run_for(export.file, &args, script);
         }
     }

@@ -605,7 +605,7 @@ impl Inner {
     /// Saves the recipe's CSV of the last valid poses (the `bsv` bytes).
     fn download(&self) {
         let raw = self.poses.borrow().run_args().raw();
-        match crate::recipes::run(INFO.id, &raw) {
+        match INFO.run_raw(&raw, Vec::new()) {
             Ok(out) => self
                 .exports
                 .download(CSV_NAME, out.file(CSV_NAME).unwrap_or_default()),

@@ -26,7 +26,7 @@ use web_sys::{Blob, Element, Event, KeyboardEvent};
 use crate::args::Args;
 use crate::error::RecipeError;
 use crate::recipes::traj_resample::{self, RESAMPLED_NAME, SAMPLE, SAMPLE_NAME};
-use crate::recipes::{self, CsvFile, Plan};
+use crate::recipes::{CsvFile, Plan};
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
@@ -560,7 +560,7 @@ impl Inner {
             .iter()
             .map(|n| (n.clone(), text.as_str().to_string()))
             .collect();
-        match recipes::run_with_inputs(RECIPE, &args.raw(), inputs) {
+        match traj_resample::INFO.run_raw(&args.raw(), inputs) {
             Ok(out) => {
                 let output = out
                     .files

@@ -1,0 +1,276 @@
+// Packs the wasm chunks of the split build (scripts/build-dist.sh) for the browser, and says
+// what each route loads before its first frame.
+//
+// The splitter (wasm-split-cli) cuts the app's wasm into the main module (the shell), one
+// module per split point (`page!` lines, the two languages' strings, the worker's kernels) and
+// many small shared chunks, with a loader (`__wasm_split.js`) that fetches every chunk as a
+// file of its own: about a hundred requests for one page. Here every module is written once,
+// without its name section, as `chunks/<module>.wasm`; each split point's modules (its chunks,
+// then itself) are also written together as one pack, `pack_<split>.bin`; and the loader is
+// rewritten to instantiate each module once per tab and to fetch a split point's missing
+// modules in one request (its pack) when none of them is in yet and no service worker holds
+// the files, else each missing module from its file (from the service worker's cache once it
+// is installed), reporting progress (`bsv-chunk-progress` events: split, loaded, total).
+// The packs only serve first visits: the service worker caches the modules, not the packs
+// (scripts/sw-build.mjs), and the app's size counts them once (scripts/size.mjs).
+//
+// Writes into PKG: `chunks/`, the packs, `__wasm_split.js`, and `routes.json` (route id → its
+// split and pack); into WWW: `routes.js`, the table for `www/boot.js`, which preloads the
+// visitor's page and language before the wasm asks for them.
+//
+//   node scripts/split-link.mjs SPLIT_DIR PKG_DIR WWW_DIR
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import binaryen from 'binaryen';
+import { stripCustomSections } from './wasm-strip.mjs';
+
+const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..');
+
+/** The splitter's loader: its shared part (imports from the main module, the callback into
+ * wasm), each chunk's file and each split point's file and chunks. */
+export function parseLoader(js) {
+  const first = js.indexOf('/* ');
+  if (first < 0) throw new Error('__wasm_split.js: no chunk found');
+  const header = js.slice(0, first);
+  const chunkRe = /const (__chunk_\d+) = makeLoad\(\(\) => \{\n\s*const src = fetch\(new URL\("\.\/(chunk_\d+)\.wasm", import\.meta\.url\)\);[\s\S]*?\n, \[([^\]]*)\]\);/g;
+  const chunks = new Map();
+  for (const m of js.matchAll(chunkRe)) {
+    chunks.set(m[1], { file: m[2], deps: names(m[3]) });
+  }
+  const splitRe = /export const __wasm_split_load_(\w+) = wrapAsyncCb\(makeLoad\(\(\) => \{\n\s*const src = fetch\(new URL\("\.\/(split_\w+)\.wasm", import\.meta\.url\)\);[\s\S]*?\n, \[([^\]]*)\]\)\);/g;
+  const splits = new Map();
+  for (const m of js.matchAll(splitRe)) {
+    splits.set(m[1], { file: m[2], deps: names(m[3]) });
+  }
+  if (splits.size === 0) throw new Error('__wasm_split.js: no split point found');
+  return { header, chunks, splits };
+}
+
+/** What rustc's wasm32 target emits (and browsers run without flags); binaryen writes newer
+ * encodings, such as compact imports, only when they are enabled. */
+const FEATURES =
+  binaryen.Features.MutableGlobals |
+  binaryen.Features.NontrappingFPToInt |
+  binaryen.Features.BulkMemory |
+  binaryen.Features.BulkMemoryOpt |
+  binaryen.Features.SignExt |
+  binaryen.Features.ReferenceTypes |
+  binaryen.Features.Multivalue |
+  binaryen.Features.CallIndirectOverlong;
+
+/** Module `bytes` as the browser gets it: without custom sections (names), and written again
+ * by binaryen (no optimisation pass, which could drop what only the table reaches), which keeps
+ * only the types the module uses: the splitter gives every chunk the whole program's. */
+export function slim(bytes) {
+  const module = binaryen.readBinary(stripCustomSections(bytes));
+  try {
+    module.setFeatures(FEATURES);
+    const out = stripCustomSections(Buffer.from(module.emitBinary()));
+    // Fails the build, not a visitor's page, if the module does not compile.
+    new WebAssembly.Module(out);
+    return out;
+  } finally {
+    module.dispose();
+  }
+}
+
+function names(list) {
+  return list.split(',').map((s) => s.trim()).filter(Boolean);
+}
+
+/** The module files of split `name`, its chunks (with theirs) first, itself last. */
+export function modulesOf(loader, name) {
+  const out = [];
+  const seen = new Set();
+  const visit = (chunk) => {
+    if (seen.has(chunk)) return;
+    seen.add(chunk);
+    const entry = loader.chunks.get(chunk);
+    if (!entry) throw new Error(`__wasm_split.js: unknown chunk ${chunk}`);
+    entry.deps.forEach(visit);
+    out.push(entry.file);
+  };
+  const split = loader.splits.get(name);
+  split.deps.forEach(visit);
+  out.push(split.file);
+  return out;
+}
+
+/** A pack: `BSVP`, the module count (u32 LE), then per module its name's length, its name
+ * (UTF-8), its length and its bytes (lengths u32 LE). */
+export function pack(modules) {
+  const parts = [Buffer.from('BSVP'), u32(modules.length)];
+  for (const { name, bytes } of modules) {
+    const id = Buffer.from(name);
+    parts.push(u32(id.length), id, u32(bytes.length), bytes);
+  }
+  return Buffer.concat(parts);
+}
+
+function u32(n) {
+  const b = Buffer.alloc(4);
+  b.writeUInt32LE(n);
+  return b;
+}
+
+/** Route id → split point, from the page table's `page!(split, Type, id, ...)` lines. */
+export function routesOfPageTable() {
+  const table = readFileSync(join(ROOT, 'src/ui/pages/mod.rs'), 'utf8');
+  const router = ['src/ui/router.rs', 'src/view/url.rs']
+    .map((file) => readFileSync(join(ROOT, file), 'utf8'))
+    .join('\n');
+  const consts = Object.fromEntries(
+    [...router.matchAll(/pub const (\w+): &str = "([^"]*)";/g)].map((m) => [m[1], m[2]]),
+  );
+  const routes = {};
+  for (const m of table.matchAll(/^\s*page!\((\w+),\s*[^,]+?,\s*("([^"]*)"|(\w+)),/gm)) {
+    const id = m[3] ?? consts[m[4]];
+    if (id === undefined) throw new Error(`page table: cannot resolve ${m[2]}`);
+    routes[id] = m[1];
+  }
+  if (Object.keys(routes).length === 0) throw new Error('page table: no page! line found');
+  return routes;
+}
+
+const LOADER = `
+// Each module is instantiated once per tab; a split point's missing modules come in one
+// request (its pack) on a first visit, else each from its file (scripts/split-link.mjs).
+const SPLITS = __SPLITS__;
+const instantiated = new Map();
+function progress(split, loaded, total) {
+    if (typeof CustomEvent === 'function' && typeof globalThis.dispatchEvent === 'function') {
+        globalThis.dispatchEvent(new CustomEvent('bsv-chunk-progress', { detail: { split, loaded, total } }));
+    }
+}
+async function fetchBytes(file, count) {
+    const response = await fetch(new URL('./' + file, import.meta.url));
+    if (!response.ok) throw new Error(file + ': HTTP ' + response.status);
+    if (!response.body || typeof response.body.getReader !== 'function') {
+        const bytes = new Uint8Array(await response.arrayBuffer());
+        count(bytes.length);
+        return bytes;
+    }
+    const reader = response.body.getReader();
+    const parts = [];
+    let length = 0;
+    for (;;) {
+        const { done, value } = await reader.read();
+        if (done) break;
+        parts.push(value);
+        length += value.length;
+        count(value.length);
+    }
+    const bytes = new Uint8Array(length);
+    let at = 0;
+    for (const part of parts) { bytes.set(part, at); at += part.length; }
+    return bytes;
+}
+function unpack(bytes) {
+    const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    if (String.fromCharCode(...bytes.subarray(0, 4)) !== 'BSVP') throw new Error('not a pack');
+    const modules = new Map();
+    let at = 8;
+    for (let i = 0, n = view.getUint32(4, true); i < n; i++) {
+        const idLength = view.getUint32(at, true); at += 4;
+        const id = new TextDecoder().decode(bytes.subarray(at, at + idLength)); at += idLength;
+        const length = view.getUint32(at, true); at += 4;
+        modules.set(id, bytes.subarray(at, at + length)); at += length;
+    }
+    return modules;
+}
+async function fetchModules(split, missing) {
+    const { pack, packBytes, modules } = SPLITS[split];
+    const whole = missing.length === modules.length
+        && !(globalThis.navigator && navigator.serviceWorker && navigator.serviceWorker.controller);
+    const total = whole ? packBytes : missing.reduce((sum, id) => sum + modules.find(([m]) => m === id)[1], 0);
+    let loaded = 0;
+    const count = (n) => { loaded += n; progress(split, loaded, total); };
+    progress(split, 0, total);
+    if (whole) return unpack(await fetchBytes(pack, count));
+    const fetched = await Promise.all(missing.map((id) => fetchBytes('chunks/' + id + '.wasm', count)));
+    return new Map(missing.map((id, i) => [id, fetched[i]]));
+}
+function loadSplit(split) {
+    return makeLoad(() => {
+        const ids = SPLITS[split].modules.map(([id]) => id);
+        const bytes = fetchModules(split, ids.filter((id) => !instantiated.has(id)));
+        bytes.catch(() => {});
+        return async (imports) => {
+            const fetched = await bytes;
+            for (const [id, module] of fetched) {
+                if (!instantiated.has(id)) {
+                    const done = WebAssembly.instantiate(module, imports);
+                    instantiated.set(id, done);
+                    done.catch(() => instantiated.delete(id));
+                }
+            }
+            await Promise.all(ids.map((id) => instantiated.get(id)));
+        };
+    }, []);
+}
+`;
+
+function main() {
+  const [splitDir, pkgDir, wwwDir] = process.argv.slice(2);
+  if (!wwwDir) throw new Error('usage: node scripts/split-link.mjs SPLIT_DIR PKG_DIR WWW_DIR');
+  const js = readFileSync(join(splitDir, '__wasm_split.js'), 'utf8');
+  const loader = parseLoader(js);
+  mkdirSync(join(pkgDir, 'chunks'), { recursive: true });
+  const packs = {};
+  const splits = {};
+  const written = new Set();
+  const slims = new Map();
+  const slimmed = (file) => {
+    if (!slims.has(file)) slims.set(file, slim(readFileSync(join(splitDir, `${file}.wasm`))));
+    return slims.get(file);
+  };
+  for (const name of [...loader.splits.keys()].sort()) {
+    const modules = modulesOf(loader, name).map((file) => ({
+      name: file,
+      bytes: slimmed(file),
+    }));
+    for (const { name: file, bytes } of modules) {
+      if (!written.has(file)) writeFileSync(join(pkgDir, 'chunks', `${file}.wasm`), bytes);
+      written.add(file);
+    }
+    const bytes = pack(modules);
+    const file = `pack_${name}.bin`;
+    writeFileSync(join(pkgDir, file), bytes);
+    packs[name] = { file, bytes: bytes.length };
+    splits[name] = {
+      pack: file,
+      packBytes: bytes.length,
+      modules: modules.map((m) => [m.name, m.bytes.length]),
+    };
+  }
+  const header = loader.header.replace(
+    'console.error(e);',
+    "console.warn('BSV Playground: a part of the app could not be loaded:', e);",
+  );
+  const exports = Object.keys(packs)
+    .map((name) => `export const __wasm_split_load_${name} = wrapAsyncCb(loadSplit(${JSON.stringify(name)}));`)
+    .join('\n');
+  writeFileSync(
+    join(pkgDir, '__wasm_split.js'),
+    header + LOADER.replace('__SPLITS__', JSON.stringify(splits)) + exports + '\n',
+  );
+  const routes = routesOfPageTable();
+  for (const [route, split] of Object.entries(routes)) {
+    if (!packs[split]) throw new Error(`route ${route}: no pack for split ${split}`);
+  }
+  const table = {
+    routes: Object.fromEntries(Object.entries(routes).map(([r, s]) => [r, packs[s].file])),
+    strings: { en: packs.strings_en.file, ja: packs.strings_ja.file },
+  };
+  writeFileSync(join(pkgDir, 'routes.json'), JSON.stringify({ ...table, splits: routes }, null, 2) + '\n');
+  writeFileSync(
+    join(wwwDir, 'routes.js'),
+    '// Written by scripts/split-link.mjs: which pack each route and language needs first.\n' +
+      `self.bsvRoutes = ${JSON.stringify(table)};\n`,
+  );
+  const total = Object.values(packs).reduce((sum, p) => sum + p.bytes, 0);
+  console.log(`split-link: ${written.size} modules, ${Object.keys(packs).length} packs (${total} B)`);
+}
+
+if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) main();

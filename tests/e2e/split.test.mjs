@@ -1,0 +1,123 @@
+// The app split by route: each page's code arrives when the page is first opened (or in the
+// background after the first page). A page whose code cannot be fetched shows its frame, a
+// localized message and Retry, and recovers once the file is reachable; a slow network shows
+// the page's frame and its loading line, then the page; switching language fetches the other
+// language's strings without losing what the page holds.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { serveApp, openApp, readouts, throttle, DIST, OUT } from './harness.mjs';
+
+const server = serveApp();
+const table = JSON.parse(readFileSync(join(DIST, 'pkg', 'routes.json'), 'utf8'));
+
+/** Saves a screenshot of `page` at `viewport` into the e2e output folder. */
+async function shoot(page, file, viewport) {
+  await page.setViewportSize(viewport);
+  await page.waitForTimeout(200);
+  await page.screenshot({ path: join(OUT, `${file}.png`) });
+}
+
+/** Console errors that are the app's (the browser's own line for a refused file is not). */
+const appErrors = (errors) => errors.filter((e) => !/Failed to load resource/.test(e));
+
+/** Blocks (404) every file of the split point of `route`: its pack and its own module. */
+async function block(context, route) {
+  const split = table.splits[route];
+  const pattern = new RegExp(`/pkg/(pack_${split}\\.bin|chunks/split_${split}\\.wasm)$`);
+  await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+  return pattern;
+}
+
+test('every page of the page table has a pack, and the build lists what each route loads first', async () => {
+  const { page, close } = await openApp(server.url, '#/');
+  try {
+    const ids = await page.evaluate(async () =>
+      (await import(new URL('pkg/bsv_playground.js', document.baseURI).href)).pageTable().map((p) => p.id));
+    assert.deepEqual(Object.keys(table.routes).sort(), [...ids].sort());
+    assert.ok(table.strings.en && table.strings.ja);
+  } finally {
+    await close();
+  }
+});
+
+for (const lang of ['en', 'ja']) {
+  test(`a page whose code cannot be fetched says so with Retry, and Retry works once it can (${lang})`, async () => {
+    const { page, context, errors, close } = await openApp(server.url, `#/?lang=${lang}`);
+    try {
+      const pattern = await block(context, 'dh-fk');
+      // The background loading of the rest may have fetched it already: start a new tab's
+      // worth of state by reloading with the block in place.
+      await page.reload();
+      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+      await page.evaluate(() => { location.hash = '#/dh-fk'; });
+      const failed = page.locator('[data-testid="page-load-failed"]');
+      await failed.waitFor({ state: 'visible', timeout: 15000 });
+      const text = await failed.innerText();
+      assert.match(text, lang === 'en' ? /could not be loaded/ : /読み込めませんでした/);
+      // The page's frame stays: its title, in the page's language.
+      assert.equal(
+        await page.locator('[data-testid="page-frame"] h1').innerText(),
+        lang === 'en' ? 'DH forward kinematics in 3D' : 'DH 順運動学を 3D で',
+      );
+      const retry = page.locator('[data-action="retry"]');
+      assert.equal(await retry.innerText(), lang === 'en' ? 'Retry' : '再試行');
+      await shoot(page, `split-load-failed-${lang}-390`, { width: 390, height: 844 });
+      // Still unreachable: Retry fails again, visibly.
+      await retry.click();
+      await failed.waitFor({ state: 'visible' });
+      // Reachable again: Retry shows the page.
+      await context.unroute(pattern);
+      await page.locator('[data-action="retry"]').click();
+      await page.locator('[data-testid="page-load-failed"]').waitFor({ state: 'detached', timeout: 15000 });
+      await page.locator('[data-readout]').first().waitFor({ timeout: 15000 });
+      assert.ok(Object.keys(await readouts(page)).length > 0, 'the DH page is mounted');
+      assert.deepEqual(appErrors(errors), []);
+    } finally {
+      await close();
+    }
+  });
+}
+
+test('on a slow network, going ik-2r → teleop → pendulum shows each page\'s frame and loading line, then the page', async () => {
+  const { page, context, errors, close } = await openApp(server.url, '#/ik-2r');
+  try {
+    await throttle(context, page);
+    for (const [route, canvas] of [['teleop', 'teleop-canvas'], ['pendulum-energy', 'pendulum-energy-canvas']]) {
+      await page.evaluate((r) => { location.hash = `#/${r}`; }, route);
+      const loading = page.locator('[data-testid="page-loading"]');
+      await loading.waitFor({ state: 'visible', timeout: 5000 });
+      assert.equal(await page.locator('[data-testid="page-frame"]').getAttribute('data-page'), route);
+      if (route === 'teleop') await shoot(page, 'split-loading-en-390', { width: 390, height: 844 });
+      await page.locator(`[data-testid="${canvas}"]`).waitFor({ timeout: 60000 });
+      assert.equal(await loading.count(), 0, 'the loading line is gone once the page is in');
+    }
+    assert.deepEqual(appErrors(errors), []);
+  } finally {
+    await close();
+  }
+});
+
+test('switching to Japanese on #/teleop mid-session keeps the session', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/teleop');
+  try {
+    const canvas = page.locator('[data-testid="teleop-canvas"]');
+    await canvas.focus();
+    await page.keyboard.down('w');
+    await page.waitForTimeout(300);
+    await page.keyboard.up('w');
+    await page.keyboard.press('k');
+    const before = await readouts(page);
+    await page.click('[data-testid="lang-switch"]');
+    await page.waitForFunction(() => document.documentElement.lang === 'ja');
+    await page.locator('[data-testid="lang-switch"][lang="en"]').waitFor();
+    const after = await readouts(page);
+    assert.deepEqual(after, before, 'the arm, the gripper and the session counters are the same');
+    assert.equal(await page.locator('[data-readout="gripper"]').getAttribute('data-value'), 'closed');
+    await shoot(page, 'split-teleop-ja-1366', { width: 1366, height: 768 });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
