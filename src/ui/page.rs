@@ -9,7 +9,7 @@
 //! ```
 //!
 //! Each page's code is a wasm chunk of its own, fetched when the page is first opened (the
-//! [`page!`] line splits it off). On its route `#/<id>` the shell empties `<main>`, shows the
+//! `page!` line splits it off). On its route `#/<id>` the shell empties `<main>`, shows the
 //! page's frame while its chunk loads ([`PageDef::load`]), then calls [`Page::mount`] and keeps
 //! the page until the route changes; then it drops it (the scope removes what the page
 //! installed).
