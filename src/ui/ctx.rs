@@ -77,9 +77,11 @@ pub fn t_strings(id: &str, args: &[(&str, String)]) -> String {
     t_args(id, &args)
 }
 
-/// Whether message `id` exists (in English, where every id is defined).
+/// Whether message `id` exists in the current language (both languages have the same ids;
+/// the other language may not be loaded yet).
 pub fn has_message(id: &str) -> bool {
-    I18N.try_with(|i18n| i18n.has_message(Lang::En, id))
+    let lang = lang();
+    I18N.try_with(|i18n| i18n.has_message(lang, id))
         .unwrap_or(false)
 }
 
