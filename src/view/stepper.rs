@@ -10,8 +10,10 @@
 //!   frame at 60 Hz. Frames further apart than [`MAX_FRAME_MS`] (a background tab) count as
 //!   that long: coming back never jumps thousands of steps.
 //! - [`Speed::Max`] ("as fast as possible") sizes its chunk to the time the model took: the
-//!   chunk doubles while a frame's work stays under [`FRAME_BUDGET_MS`] and halves above twice
-//!   that, so a 50,000-iteration RRT plays out in seconds and the tab stays responsive.
+//!   chunk is scaled by the frame budget ([`FRAME_BUDGET_MS`] unless the page sets its own)
+//!   over the last frame's work, at most doubled or halved a frame, so a frame's work settles
+//!   at the budget rather than swinging up to twice it; a 50,000-iteration RRT plays out in
+//!   seconds and the tab stays responsive.
 //! - Playing stops by itself at the end (a bounded model); an unbounded one (a simulation) runs
 //!   until paused.
 //!
@@ -259,11 +261,14 @@ impl Stepper {
                 whole as u64
             }
             Speed::Max => {
-                if work_ms < self.budget_ms {
-                    self.chunk = (self.chunk * 2).min(MAX_CHUNK);
-                } else if work_ms > 2.0 * self.budget_ms {
-                    self.chunk = (self.chunk / 2).max(1);
-                }
+                let low = (self.chunk / 2).max(1);
+                let high = (self.chunk * 2).min(MAX_CHUNK);
+                self.chunk = if work_ms > 0.0 && work_ms.is_finite() {
+                    let aimed = self.chunk as f64 * self.budget_ms / work_ms;
+                    (aimed.floor() as u64).clamp(low, high)
+                } else {
+                    high
+                };
                 self.chunk
             }
         };
@@ -502,6 +507,25 @@ mod tests {
             assert!(s.chunk <= 4096, "chunk {}", s.chunk);
         }
         assert!(s.chunk >= 1024, "chunk {}", s.chunk);
+    }
+
+    #[test]
+    fn as_fast_as_possible_settles_at_the_budget() {
+        let mut m = model(Length::Finite(10_000_000));
+        let mut s = Stepper::new(Speed::Max);
+        s.set_frame_budget(0.8);
+        s.apply(Command::Play, &mut m);
+        let mut works = Vec::new();
+        for _ in 0..60 {
+            // 0.2 ms of drawing a frame, then 1 ms per 1,000 steps.
+            let work = 0.2 + s.chunk as f64 / 1000.0;
+            works.push(work);
+            s.tick(16.0, work, &mut m);
+        }
+        // Past the first frames, no frame's work swings above the budget.
+        let settled = &works[20..];
+        assert!(settled.iter().all(|w| *w <= 0.8 + 1e-9), "{settled:?}");
+        assert!(settled.iter().all(|w| *w >= 0.6), "{settled:?}");
     }
 
     #[test]

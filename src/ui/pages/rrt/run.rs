@@ -19,10 +19,9 @@ const SPEEDS: [Speed; 5] = [
 ];
 /// 10 iterations a second.
 const DEFAULT_SPEED: usize = 1;
-/// Work per frame (iterations + drawing) playing as fast as possible aims under, ms: the
-/// stepper doubles its chunk below this and halves it above twice this, so frames stay under
-/// about 2 ms.
-pub const FRAME_BUDGET_MS: f64 = 0.8;
+/// Work per frame (iterations + drawing) playing as fast as possible aims at, ms: the stepper
+/// scales its chunk by this over the last frame's work, so frames stay well under 2 ms.
+pub const FRAME_BUDGET_MS: f64 = 1.0;
 
 /// The stepper over the run: its speeds, labelled in iterations per second.
 pub fn stepper_options() -> StepperOptions {
