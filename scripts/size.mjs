@@ -26,19 +26,20 @@ export const CEILING = 1245 * KB;
 export function routeBudget(route) {
   return (route === 'ik-2r' || route === 'home' ? 250 : 350) * KB;
 }
-/** What `make test` allows each route's first load: its size now plus about 10 KB. */
+/** What `make test` allows each route's first load: its size now plus about 10 KB, and never
+ * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
   home: 455,
   'ik-2r': 455,
   'dh-fk': 375,
   'se3-relative': 378,
   'umeyama-2d': 400,
-  'pendulum-energy': 536,
+  'pendulum-energy': 385,
   'pid-step': 373,
   'cubic-path': 412,
   'trapezoid-profile': 408,
   'traj-resample': 395,
-  'rrt-2d': 506,
+  'rrt-2d': 350,
   teleop: 446,
   so101: 427,
   drills: 512,

@@ -51,6 +51,12 @@ impl RecipeInfo {
         self.all_args().find(|(a, _)| a.name == name)
     }
 
+    /// Parses command-line style arguments as `bsv <id>` does (this recipe's arguments and
+    /// flags only: a page parsing its own recipe's words reaches no other kernel).
+    pub fn parse(&self, raw: &[String]) -> Result<Args, RecipeError> {
+        Args::parse(raw, self.args, self.flags)
+    }
+
     /// Runs the recipe with command-line style arguments and the input files `(name, text)`
     /// its path arguments name: what `bsv <id> <args>` writes.
     pub fn run_raw(
@@ -58,7 +64,7 @@ impl RecipeInfo {
         raw: &[String],
         inputs: Vec<(String, String)>,
     ) -> Result<RecipeOutput, RecipeError> {
-        (self.run)(&Args::parse(raw, self.args, self.flags)?.with_inputs(inputs))
+        (self.run)(&self.parse(raw)?.with_inputs(inputs))
     }
 
     /// Fluent id of the recipe's title (recipes.ftl).

@@ -166,7 +166,7 @@ impl PageState {
 
     /// The run's setup, parsed from [`Self::cli_args`] exactly as the CLI parses them.
     pub fn setup(&self) -> Result<RrtSetup, RecipeError> {
-        let args = crate::recipes::parse_args(INFO.id, &self.cli_args())?;
+        let args = INFO.parse(&self.cli_args())?;
         rrt_2d::setup_from_args(&args)
     }
 

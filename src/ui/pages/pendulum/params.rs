@@ -8,7 +8,6 @@ use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use crate::error::RecipeError;
-use crate::recipes::parse_args;
 use crate::recipes::pendulum_energy::{PendulumParams, INFO};
 use crate::ui::kit::form::{Form, RECIPE_GROUPS};
 use crate::view::command_line::RunArgs;
@@ -28,7 +27,7 @@ pub struct Params {
 /// The recipe's parse + validate of one set of texts (blank = default).
 fn check_texts(form: &Form, texts: &[Option<String>]) -> Result<PendulumParams, RecipeError> {
     let args = RunArgs::new(INFO.id, &form.fields, texts);
-    let params = PendulumParams::from_args(&parse_args(INFO.id, &args.raw())?)?;
+    let params = PendulumParams::from_args(&INFO.parse(&args.raw())?)?;
     params.validate()?;
     Ok(params)
 }
