@@ -49,6 +49,7 @@ rm -rf "$out"
 mkdir -p "$out"/pkg
 cp index.html "$out"/
 cp -r www "$out"/www
+cp -r locales "$out"/locales
 {
   cat www/app.css
   find src/ui -name '*.css' -print0 | LC_ALL=C sort -z | while IFS= read -r -d '' css; do

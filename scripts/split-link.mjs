@@ -2,8 +2,7 @@
 // what each route loads before its first frame.
 //
 // The splitter (wasm-split-cli) cuts the app's wasm into the main module (the shell), one
-// module per split point (`page!` lines, the two languages' strings, the worker's kernels) and
-// many small shared chunks, with a loader (`__wasm_split.js`) that fetches every chunk as a
+// module per split point (`page!` lines, the worker's kernels) and many small shared chunks, with a loader (`__wasm_split.js`) that fetches every chunk as a
 // file of its own: about a hundred requests for one page. Here every module is written once,
 // without its name section, as `chunks/<module>.wasm`; each split point's modules (its chunks,
 // then itself) are also written together as one pack, `pack_<split>.bin`; and the loader is
@@ -15,8 +14,9 @@
 // (scripts/sw-build.mjs), and the app's size counts them once (scripts/size.mjs).
 //
 // Writes into PKG: `chunks/`, the packs, `__wasm_split.js`, and `routes.json` (route id → its
-// split and pack); into WWW: `routes.js`, the table for `www/boot.js`, which preloads the
-// visitor's page and language before the wasm asks for them.
+// split, its pack and the Fluent files it needs); into WWW: `routes.js`, the table for
+// `www/boot.js`, which preloads the visitor's page and its strings in the visitor's language
+// before the wasm asks for them.
 //
 //   node scripts/split-link.mjs SPLIT_DIR PKG_DIR WWW_DIR
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -114,7 +114,9 @@ function u32(n) {
   return b;
 }
 
-/** Route id → split point, from the page table's `page!(split, Type, id, ...)` lines. */
+/** Route id → `{ split, strings }` (its split point and the Fluent files it needs beyond the
+ * first ones), from the page table's `page!(split, Type, id, title, blurb, nav, [files])`
+ * lines. */
 export function routesOfPageTable() {
   const table = readFileSync(join(ROOT, 'src/ui/pages/mod.rs'), 'utf8');
   const router = ['src/ui/router.rs', 'src/view/url.rs']
@@ -124,13 +126,21 @@ export function routesOfPageTable() {
     [...router.matchAll(/pub const (\w+): &str = "([^"]*)";/g)].map((m) => [m[1], m[2]]),
   );
   const routes = {};
-  for (const m of table.matchAll(/^\s*page!\((\w+),\s*[^,]+?,\s*("([^"]*)"|(\w+)),/gm)) {
+  for (const m of table.matchAll(/^\s*page!\((\w+),\s*[^,]+?,\s*("([^"]*)"|(\w+)),.*\[([^\]]*)\]\),\s*$/gm)) {
     const id = m[3] ?? consts[m[4]];
     if (id === undefined) throw new Error(`page table: cannot resolve ${m[2]}`);
-    routes[id] = m[1];
+    routes[id] = { split: m[1], strings: [...m[5].matchAll(/"([^"]+)"/g)].map((f) => f[1]) };
   }
   if (Object.keys(routes).length === 0) throw new Error('page table: no page! line found');
   return routes;
+}
+
+/** The Fluent files every page needs first (`FIRST_FILES` of src/i18n.rs). */
+export function firstStrings() {
+  const source = readFileSync(join(ROOT, 'src/i18n.rs'), 'utf8');
+  const list = /pub const FIRST_FILES: &\[&str\] = &\[([^\]]*)\]/.exec(source);
+  if (!list) throw new Error('src/i18n.rs: no FIRST_FILES');
+  return [...list[1].matchAll(/"([^"]+)"/g)].map((f) => f[1]);
 }
 
 const LOADER = `
@@ -256,17 +266,21 @@ function main() {
     header + LOADER.replace('__SPLITS__', JSON.stringify(splits)) + exports + '\n',
   );
   const routes = routesOfPageTable();
-  for (const [route, split] of Object.entries(routes)) {
+  for (const [route, { split }] of Object.entries(routes)) {
     if (!packs[split]) throw new Error(`route ${route}: no pack for split ${split}`);
   }
   const table = {
-    routes: Object.fromEntries(Object.entries(routes).map(([r, s]) => [r, packs[s].file])),
-    strings: { en: packs.strings_en.file, ja: packs.strings_ja.file },
+    routes: Object.fromEntries(Object.entries(routes).map(([r, { split }]) => [r, packs[split].file])),
+    strings: {
+      first: firstStrings(),
+      routes: Object.fromEntries(Object.entries(routes).map(([r, { strings }]) => [r, strings])),
+    },
   };
-  writeFileSync(join(pkgDir, 'routes.json'), JSON.stringify({ ...table, splits: routes }, null, 2) + '\n');
+  const splitsOf = Object.fromEntries(Object.entries(routes).map(([r, { split }]) => [r, split]));
+  writeFileSync(join(pkgDir, 'routes.json'), JSON.stringify({ ...table, splits: splitsOf }, null, 2) + '\n');
   writeFileSync(
     join(wwwDir, 'routes.js'),
-    '// Written by scripts/split-link.mjs: which pack each route and language needs first.\n' +
+    '// Written by scripts/split-link.mjs: which pack and which strings each route needs first.\n' +
       `self.bsvRoutes = ${JSON.stringify(table)};\n`,
   );
   const total = Object.values(packs).reduce((sum, p) => sum + p.bytes, 0);

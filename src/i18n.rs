@@ -1,9 +1,9 @@
 //! Fluent bundles embedded from `locales/`, language choice and per-message fallback ja → en.
 //!
-//! Every `.ftl` file of both languages is compiled in with `include_str!`, so the app needs no
-//! network; each language's files are one table ([`locale_files`]), which the browser app
-//! keeps in a wasm chunk of its own and adds ([`I18n::add_language`]) when the language is
-//! first shown. [`I18n::t`] formats a message from one language's bundle; a message missing in
+//! Every `.ftl` file of both languages is compiled in with `include_str!` for the tests, the
+//! CLI and Node; each language's files are one table ([`locale_files`]). The browser app
+//! fetches the files it needs instead and adds them one by one ([`I18n::add_files`]): the
+//! ones every page needs ([`FIRST_FILES`]) and each page's own when it is first shown. [`I18n::t`] formats a message from one language's bundle; a message missing in
 //! Japanese falls back to English, a message missing in both shows its id, and each such gap
 //! (and each formatting error) is noted once and handed out by [`I18n::take_warnings`], which
 //! the browser logs with `console.warn`. Bidi isolation marks are off
@@ -13,7 +13,7 @@
 //!
 //! No web-sys: this module compiles and is tested natively.
 
-use std::cell::{OnceCell, RefCell};
+use std::cell::{Ref, RefCell};
 use std::collections::BTreeSet;
 
 use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
@@ -77,6 +77,7 @@ impl Lang {
 #[rustfmt::skip]
 pub const EN_FILES: &[(&str, &str)] = &[
     ("shell.ftl", include_str!("../locales/en/shell.ftl")),
+    ("pages.ftl", include_str!("../locales/en/pages.ftl")),
     ("home.ftl", include_str!("../locales/en/home.ftl")),
     ("errors.ftl", include_str!("../locales/en/errors.ftl")),
     ("recipes.ftl", include_str!("../locales/en/recipes.ftl")),
@@ -99,6 +100,7 @@ pub const EN_FILES: &[(&str, &str)] = &[
 #[rustfmt::skip]
 pub const JA_FILES: &[(&str, &str)] = &[
     ("shell.ftl", include_str!("../locales/ja/shell.ftl")),
+    ("pages.ftl", include_str!("../locales/ja/pages.ftl")),
     ("home.ftl", include_str!("../locales/ja/home.ftl")),
     ("errors.ftl", include_str!("../locales/ja/errors.ftl")),
     ("recipes.ftl", include_str!("../locales/ja/recipes.ftl")),
@@ -115,6 +117,54 @@ pub const JA_FILES: &[(&str, &str)] = &[
     ("umeyama.ftl", include_str!("../locales/ja/umeyama.ftl")),
     ("teleop.ftl", include_str!("../locales/ja/teleop.ftl")),
     ("so101.ftl", include_str!("../locales/ja/so101.ftl")),
+];
+
+/// The name of every Fluent file (each language has the same files).
+pub const FILE_NAMES: &[&str] = &[
+    "shell.ftl",
+    "pages.ftl",
+    "home.ftl",
+    "errors.ftl",
+    "recipes.ftl",
+    "ik2r.ftl",
+    "drills.ftl",
+    "kit.ftl",
+    "lesson.ftl",
+    "pendulum.ftl",
+    "rrt.ftl",
+    "se3.ftl",
+    "signals.ftl",
+    "traj.ftl",
+    "dh.ftl",
+    "umeyama.ftl",
+    "teleop.ftl",
+    "so101.ftl",
+];
+
+/// The kernels' errors and warnings in both languages (what the Web Worker formats).
+pub const ERROR_SOURCES: &[(Lang, &str, &str)] = &[
+    (
+        Lang::En,
+        "errors.ftl",
+        include_str!("../locales/en/errors.ftl"),
+    ),
+    (
+        Lang::Ja,
+        "errors.ftl",
+        include_str!("../locales/ja/errors.ftl"),
+    ),
+];
+
+/// The files every page needs before its first frame: the shell, the page table's titles and
+/// descriptions, the kit, the kernels' errors, the lesson bar and the recipes' texts. A page
+/// names the rest it needs in its `page!` line (its own file, the signal pages' shared one).
+pub const FIRST_FILES: &[&str] = &[
+    "shell.ftl",
+    "pages.ftl",
+    "kit.ftl",
+    "errors.ftl",
+    "lesson.ftl",
+    "recipes.ftl",
 ];
 
 /// The Fluent files of `lang`: file name, text.
@@ -174,14 +224,15 @@ impl FluentArg {
 /// The Fluent bundles of the languages added so far, plus the notes about missing messages
 /// and formatting errors not yet handed out.
 pub struct I18n {
-    /// Each language's bundle, built from its files on the language's first use, so that a
-    /// page in one language never parses the other's files (about half of the app's start).
-    en: OnceCell<FluentBundle<FluentResource>>,
-    ja: OnceCell<FluentBundle<FluentResource>>,
-    /// The files (language, name, text) of the languages added and not built yet.
+    /// Each language's bundle, built from its files on the language's first use (and grown
+    /// by the files added after), so that a page in one language never parses the other's
+    /// files (about half of the app's start).
+    en: RefCell<Option<FluentBundle<FluentResource>>>,
+    ja: RefCell<Option<FluentBundle<FluentResource>>>,
+    /// The files (language, name, text) added and not in their bundle yet.
     sources: RefCell<Vec<(Lang, String, String)>>,
-    /// The languages whose files were added: a message is looked up only in these.
-    added: RefCell<BTreeSet<Lang>>,
+    /// The files (language, name) added: a message is looked up only in languages with one.
+    added: RefCell<BTreeSet<(Lang, String)>>,
     /// Every note ever made (so each is made once).
     noted: RefCell<BTreeSet<String>>,
     /// Notes not yet taken by [`I18n::take_warnings`].
@@ -200,7 +251,7 @@ impl I18n {
     pub fn new() -> I18n {
         let i18n = I18n::empty();
         for lang in Lang::ALL {
-            i18n.add_language(lang, locale_files(lang));
+            i18n.add_files(lang, locale_files(lang));
         }
         i18n
     }
@@ -208,8 +259,8 @@ impl I18n {
     /// No language yet: every message shows its id until a language is added.
     pub fn empty() -> I18n {
         I18n {
-            en: OnceCell::new(),
-            ja: OnceCell::new(),
+            en: RefCell::new(None),
+            ja: RefCell::new(None),
             sources: RefCell::new(Vec::new()),
             added: RefCell::new(BTreeSet::new()),
             noted: RefCell::new(BTreeSet::new()),
@@ -227,35 +278,38 @@ impl I18n {
                 .filter(|(l, _, _)| *l == lang)
                 .map(|(_, file, text)| (*file, *text))
                 .collect();
-            if !files.is_empty() {
-                i18n.add_language(lang, &files);
-            }
+            i18n.add_files(lang, &files);
         }
         i18n
     }
 
-    /// Adds `lang`'s files (file name, text); its bundle is built on its first use. A language
-    /// added twice keeps its first files.
-    pub fn add_language(&self, lang: Lang, files: &[(&str, &str)]) {
+    /// Adds `lang`'s files (file name, text) to its bundle, on the bundle's next use. A file
+    /// added twice keeps its first text.
+    pub fn add_files(&self, lang: Lang, files: &[(&str, &str)]) {
         let (Ok(mut added), Ok(mut sources)) =
             (self.added.try_borrow_mut(), self.sources.try_borrow_mut())
         else {
             return;
         };
-        if added.insert(lang) {
-            sources.extend(
-                files
-                    .iter()
-                    .map(|(file, text)| (lang, file.to_string(), text.to_string())),
-            );
+        for (file, text) in files {
+            if added.insert((lang, file.to_string())) {
+                sources.push((lang, file.to_string(), text.to_string()));
+            }
         }
     }
 
-    /// Whether `lang`'s files were added.
+    /// Whether any of `lang`'s files was added.
     pub fn has_language(&self, lang: Lang) -> bool {
         self.added
             .try_borrow()
-            .is_ok_and(|added| added.contains(&lang))
+            .is_ok_and(|added| added.iter().any(|(l, _)| *l == lang))
+    }
+
+    /// Whether `lang`'s file `name` was added.
+    pub fn has_file(&self, lang: Lang, name: &str) -> bool {
+        self.added
+            .try_borrow()
+            .is_ok_and(|added| added.contains(&(lang, name.to_string())))
     }
 
     /// Builds `lang`'s bundle now if it is not built yet (its syntax errors and duplicate ids
@@ -264,8 +318,8 @@ impl I18n {
         self.bundle(lang);
     }
 
-    /// `lang`'s bundle, `None` while its files are not added.
-    fn bundle(&self, lang: Lang) -> Option<&FluentBundle<FluentResource>> {
+    /// `lang`'s bundle with every file added so far, `None` while none is.
+    fn bundle(&self, lang: Lang) -> Option<Ref<'_, FluentBundle<FluentResource>>> {
         if !self.has_language(lang) {
             return None;
         }
@@ -273,14 +327,21 @@ impl I18n {
             Lang::En => &self.en,
             Lang::Ja => &self.ja,
         };
-        Some(cell.get_or_init(|| self.build(lang)))
+        if let Ok(mut bundle) = cell.try_borrow_mut() {
+            self.build(lang, bundle.get_or_insert_with(|| new_bundle(lang)));
+        }
+        Ref::filter_map(cell.try_borrow().ok()?, Option::as_ref).ok()
     }
 
-    /// `lang`'s bundle from its files (taken out of `sources`). A syntax error or a duplicate
-    /// id does not stop the app: the rest of the file loads and the problem becomes a warning.
-    fn build(&self, lang: Lang) -> FluentBundle<FluentResource> {
+    /// Adds `lang`'s files not in its bundle yet (taken out of `sources`). A syntax error or a
+    /// duplicate id does not stop the app: the rest of the file loads and the problem becomes
+    /// a warning.
+    fn build(&self, lang: Lang, bundle: &mut FluentBundle<FluentResource>) {
         let files: Vec<(Lang, String, String)> = match self.sources.try_borrow_mut() {
             Ok(mut sources) => {
+                if !sources.iter().any(|(l, _, _)| *l == lang) {
+                    return;
+                }
                 let (mine, rest) = std::mem::take(&mut *sources)
                     .into_iter()
                     .partition(|(l, _, _)| *l == lang);
@@ -289,7 +350,6 @@ impl I18n {
             }
             Err(_) => Vec::new(),
         };
-        let mut bundle = new_bundle(lang);
         for (_, file, text) in files {
             let resource = match FluentResource::try_new(text) {
                 Ok(resource) => resource,
@@ -306,15 +366,12 @@ impl I18n {
                 }
             }
         }
-        bundle
     }
 
     /// Whether `lang`'s own bundle has message `id` with a value (no fallback).
     pub fn has_message(&self, lang: Lang, id: &str) -> bool {
         self.bundle(lang)
-            .and_then(|bundle| bundle.get_message(id))
-            .and_then(|m| m.value())
-            .is_some()
+            .is_some_and(|bundle| bundle.get_message(id).and_then(|m| m.value()).is_some())
     }
 
     /// Message `id` in `lang`, without arguments.
@@ -427,6 +484,33 @@ mod tests {
     use std::collections::BTreeMap;
     #[cfg(target_family = "wasm")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    #[test]
+    fn the_file_lists_name_every_file_of_both_languages() {
+        for lang in Lang::ALL {
+            let names: Vec<&str> = locale_files(lang).iter().map(|(name, _)| *name).collect();
+            assert_eq!(names, FILE_NAMES, "{}", lang.code());
+        }
+        assert!(FIRST_FILES.iter().all(|f| FILE_NAMES.contains(f)));
+        for (lang, name, text) in ERROR_SOURCES {
+            assert!(locale_files(*lang).contains(&(*name, *text)));
+        }
+    }
+
+    #[test]
+    fn files_added_one_by_one_grow_the_bundle() {
+        let i18n = I18n::empty();
+        let files = locale_files(Lang::Ja);
+        let shell = files.iter().find(|(n, _)| *n == "shell.ftl").unwrap();
+        let rrt = files.iter().find(|(n, _)| *n == "rrt.ftl").unwrap();
+        i18n.add_files(Lang::Ja, &[*shell]);
+        assert!(i18n.has_file(Lang::Ja, "shell.ftl") && !i18n.has_file(Lang::Ja, "rrt.ftl"));
+        assert!(!i18n.has_message(Lang::Ja, "rrt-lede"));
+        i18n.add_files(Lang::Ja, &[*rrt, *shell]);
+        assert!(i18n.has_message(Lang::Ja, "rrt-lede"));
+        // A file added twice is added once: no duplicate-id warning.
+        assert!(i18n.take_warnings().is_empty());
+    }
 
     /// Message id → its whole text block (id line plus indented continuation lines), read
     /// straight from the `.ftl` source: terms (`-x`) and comments are skipped.

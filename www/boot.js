@@ -65,9 +65,9 @@
     window.bsvBootError('old-browser');
   }
 
-  // Preloads the pack of the page the address names and the strings of the visitor's language
-  // (www/routes.js, written by the build), so that they arrive with the wasm instead of after
-  // it. The language is chosen as the app chooses it: `?lang=`, the saved choice, the
+  // Preloads the pack of the page the address names and the Fluent files it needs in the
+  // visitor's language (www/routes.js, written by the build), so that they arrive with the
+  // wasm instead of after it. The language is chosen as the app chooses it: `?lang=`, the saved choice, the
   // browser's languages, English.
   var table = window.bsvRoutes;
   if (table && location.protocol !== 'file:') {
@@ -95,14 +95,15 @@
     }
     var preferred = navigator.languages || [navigator.language];
     for (var i = 0; !lang && i < preferred.length; i++) lang = pick(preferred[i]);
-    var files = [table.strings[lang || 'en'], table.routes[route]];
+    var files = table.routes[route] ? ['pkg/' + table.routes[route]] : [];
+    var strings = table.strings.first.concat(table.strings.routes[route] || []);
+    for (var k = 0; k < strings.length; k++) files.push('locales/' + (lang || 'en') + '/' + strings[k]);
     for (var j = 0; j < files.length; j++) {
-      if (!files[j]) continue;
       var link = document.createElement('link');
       link.rel = 'preload';
       link.as = 'fetch';
       link.crossOrigin = 'anonymous';
-      link.href = 'pkg/' + files[j];
+      link.href = files[j];
       document.head.appendChild(link);
     }
   }

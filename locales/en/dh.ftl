@@ -1,6 +1,4 @@
 ## The DH forward-kinematics page (#/dh-fk)
-dh-title = DH forward kinematics in 3D
-dh-blurb = The recipe's 3R chain in 3D: turn the joints, orbit the view, and walk one modified-DH row through its four elementary transforms.
 dh-canvas-label = 3D view of the three-joint chain: links, joint axes and every frame's x, y and z axes
 dh-view-title = The chain in 3D
 dh-legend-x = x axis

@@ -1,8 +1,6 @@
 # The drills page (#/drills): src/ui/pages/drills/. Every visible string of the page except the
 # recipe titles, blurbs and argument labels (recipes.ftl) and the kernels' errors (errors.ftl).
 
-drills-title = All drills
-drills-blurb = Run any of the twelve drills with your own values and download the same CSV files as the Python recipe.
 drills-lede = Pick a drill, set its values and run it. Each file you download has the same name, columns and numbers as the Python recipe run with the same arguments, and the command lines under the result reproduce it. Nothing leaves this page.
 
 ## Form

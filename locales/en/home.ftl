@@ -1,9 +1,7 @@
 # The home page: the BSV page's headline and introduction, the featured in-browser tool and
 # one card per recipe (the recipe texts themselves are in recipes.ftl).
 
-home-page-title = Home
 home-headline = Robotics: simulate, sample, log — then practice teleop
-home-intro = Short, honest robotics drills that run in your browser: MuJoCo energy, planar IK, trajectory resampling, DH FK, Jacobian and manipulability, cubic paths, SE(3) relative poses and a toy 2D RRT. Practise teleoperation here, on this app's Robot Pilot page; for Isaac Teleop itself, follow Robot Pilot Academy on the BSV site. BSV does not redistribute NVIDIA code.
 
 # The live arm at the top, and what each page's tile shows.
 home-tiles-label = Drills that run in your browser

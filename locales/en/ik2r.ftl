@@ -1,7 +1,5 @@
 # The Planar 2R IK page (#/ik-2r): src/ui/pages/ik2r/. Every visible string of the page.
 
-ik2r-title = Planar 2R IK playground
-ik2r-blurb = Solve elbow-down IK, inspect manipulability, export a CSV.
 ik2r-lede = Drag the orange tip and both joints follow by inverse kinematics; drag a link to turn one joint. Every number on this page moves with the arm.
 
 ## Arm view

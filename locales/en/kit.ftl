@@ -71,3 +71,9 @@ kit-orbit-view-side = Side
 kit-orbit-hint = Drag the view to orbit; wheel or pinch to zoom. On a touch screen, drag sideways to orbit; a swipe up or down scrolls the page. With the view focused, the arrow keys orbit and + / − zoom.
 kit-orbit-key-orbit = Orbit the 3D view (when it has focus; Shift for bigger steps)
 kit-orbit-key-zoom = Zoom the 3D view in / out (when it has focus)
+
+# Section headings of the pages built on the kit's layout (the signal pages, Umeyama).
+signals-params-title = Parameters
+signals-explain-title = What you are looking at
+signals-quirks-title = Where this port decides for the recipe
+signals-exports-title = Downloads and command lines

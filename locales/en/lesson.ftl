@@ -1,7 +1,5 @@
 # Lessons: the #/lesson page, the header's "add this view" button and the presenter bar.
 
-lesson-title = Lesson
-lesson-blurb = Build a lesson from page states and present it with a presenter remote.
 lesson-intro = A lesson is a list of page states, each with a title and a note for you. On any page, set things up and press “+ Lesson” in the header to add what you see. Present it full screen: Page Down / → goes on (first stepping the page when a step asks for it), Page Up / ← goes back, Esc ends. The lesson is kept in this browser, and its link or .json file carries it to another.
 lesson-builtin-heading = Built-in lessons (about 10 minutes each)
 lesson-builtin-ik-title = IK, the Jacobian and singularities

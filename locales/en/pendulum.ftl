@@ -1,6 +1,4 @@
 ## The pendulum page (#/pendulum-energy)
-pendulum-title = Pendulum energy
-pendulum-blurb = Swing the recipe's capsule pendulum live, watch its energy drift, run Euler against RK4.
 pendulum-lede = The recipe's damped capsule pendulum, stepped exactly as MuJoCo steps it, one timestep at a time: what you see is the CSV's rows. Turn on the comparison to run Euler and RK4 from the same state.
 pendulum-view-title = Pendulum
 pendulum-canvas-label = The pendulum drawn to scale, with the trail of its tip and its angle from hanging down. Keys: right arrow steps, left arrow steps back, space plays or pauses.

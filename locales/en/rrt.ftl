@@ -1,6 +1,4 @@
 ## The RRT stepper (#/rrt-2d)
-rrt-title = RRT stepper
-rrt-blurb = Grow the recipe’s random tree one iteration at a time, backwards too, in a world you draw; see each iteration’s sub-steps.
 rrt-lede = The rrt-2d recipe’s tree, grown one iteration at a time with the recipe’s own random numbers: step forwards and backwards exactly, watch each iteration sample, find the nearest node, steer, check the segment and decide. Drag the boxes, their corners, the start and the goal to change the world.
 rrt-world-title = World and tree
 rrt-canvas-label = The unit square with the obstacle boxes, the start S, the goal G with its tolerance circle, the tree, and the current iteration’s sub-steps. Keys: right arrow one iteration forward, left arrow one back, space play or pause.

@@ -1,6 +1,4 @@
 # The relative SE(3) pose page: #/se3-relative (src/ui/pages/se3).
-se3-title = Relative SE(3) pose
-se3-blurb = Frames A and B in 3D and T_A⁻¹ T_B drawn from A to B; type or drag the poses, switch between radians and degrees, read the 4×4 matrices.
 se3-lede = Where is frame B, and how is it turned, as seen from frame A? The recipe forms T_A and T_B from x, y, z, roll, pitch, yaw and writes T_A⁻¹ T_B. Drag an origin in the view or type the poses; the result, its matrices and the CSV follow.
 se3-view-title = World, frame A, frame B
 se3-canvas-label = 3D view of the world frame, frame A and frame B (x red, y green, z blue) with an arrow from A to B. Drag the origin of A or B to move it in the plane facing you, or its ring to change its yaw; drag elsewhere to turn the view.

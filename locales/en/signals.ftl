@@ -2,10 +2,6 @@
 
 ## Shared
 signals-readouts-title = Readouts
-signals-params-title = Parameters
-signals-exports-title = Downloads and command lines
-signals-explain-title = What you are looking at
-signals-quirks-title = Where this port decides for the recipe
 signals-png = Download the plots (PNG)
 signals-key-reset = Back to the recipe's defaults
 signals-ax-t = time t
@@ -13,8 +9,6 @@ signals-unit-s = s
 signals-computing = Computing { $rows } rows… { $percent } %. The plot and the readouts show the last run until it is done.
 
 ## Cubic path
-cubic-title = Cubic path
-cubic-blurb = Position, velocity and acceleration of the cubic joint path; drag the end point or the sliders and compare with a quintic or a trapezoid.
 cubic-plots-title = q, qd and qdd over time
 cubic-canvas-label = Plots of the cubic path: position, velocity and acceleration over time. Drag the end point on the position plot.
 cubic-drag-hint = Drag the end point (T, q1) on the position plot; hover a plot to read the sample under the cursor. The dots are the samples at dt, the rows of the CSV.
@@ -55,8 +49,6 @@ cubic-explain-expected-title = Expected result
 cubic-explain-expected = About T/dt + 1 rows; a smooth q from q0 to q1.
 
 ## PID step response
-pid-title = PID step response
-pid-blurb = Tune Kp, Ki, Kd live on the recipe's toy loop: rise time, overshoot, settling and a ghost of the previous gains.
 pid-plots-title = Output y, setpoint r and controller output u
 pid-canvas-label = Plots of the PID step response: the setpoint r and the output y above, the controller output u below, over time.
 pid-ghost-note = The grey curves are the previous gains: they stay until the next change, so two tunings can be compared.
@@ -100,8 +92,6 @@ pid-explain-expected-title = Expected result
 pid-explain-expected = y rises toward 1.0, with the standard library only.
 
 ## Trapezoidal profile
-trap-title = Trapezoidal profile
-trap-blurb = Accelerate, cruise, brake: drag vmax and amax on the velocity plot and watch the phases, and when the move becomes a triangle.
 trap-plots-title = Position s, velocity v and acceleration a over time
 trap-canvas-label = Plots of the trapezoidal profile: position, velocity and acceleration over time, the three phases shaded. Drag vmax and the corner of the ramp on the velocity plot.
 trap-drag-hint = On the velocity plot, drag the handle on the dashed line to change vmax, and the corner of the ramp to change amax (its slope).

@@ -1,6 +1,4 @@
 # Robot Pilot on the SO-101 (#/so101).
-so101-nav = SO-101
-so101-blurb = Fly the SO-101 arm in 3D with Isaac Lab's keyboard and gamepad mapping, through the same practice session: record, label, replay, export the evidence.
 so101-title = Robot Pilot: SO-101
 so101-lede = The Academy's own arm: TheRobotStudio's SO-101, five joints and a gripper, its kinematics taken from the public SO-ARM100 description and checked against MuJoCo. Each 10 ms step turns your six-axis command into joint motion as Isaac Lab's differential IK controller does in relative pose mode. Press Space to engage, then fly the tool to the blue cube, close the gripper with K, carry the cube into the green square and let go.
 so101-canvas-label = The SO-101 over the table, with the cube, the goal square and, when set, the wall. W/S move the tool along x, A/D along y, Q/E along z; Z/X, T/G, C/V turn it about x, y, z; K opens or closes the gripper, R resets, Space engages or pauses. Drag an arrow or the ring on the tool to move it while you hold it; drag elsewhere to orbit.

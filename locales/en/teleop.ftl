@@ -1,6 +1,4 @@
 # The Robot Pilot practice page (#/teleop).
-teleop-nav = Robot Pilot
-teleop-blurb = Teleoperate a simulated arm through a whole practice session: record, label, replay, compare, export the evidence.
 teleop-title = Robot Pilot practice
 teleop-lede = Drive a simulated three-joint arm with a gripper with the keys and gamepad mapping of Isaac Lab's teleop devices, through the Academy's five modules: preflight, basic control, ten recorded demonstrations, failure review and repeatability. Every attempt is kept, labelled and replayable; the session's evidence file is yours to download.
 teleop-disclaimer = A practice simulator for learning, running only in your browser: not a safety-rated controller, not connected to any robot, and not NVIDIA software (no Isaac code is used or redistributed).

@@ -1,6 +1,4 @@
 # The trajectory-resampling page (#/traj-resample). Ids start with `traj-`.
-traj-title = Trajectory resampling
-traj-blurb = Open a joint trajectory CSV (or use the labeled sample), pick dt, see every joint resampled and download the CSV.
 traj-lede = A joint trajectory sampled at irregular times, linearly interpolated onto a uniform time grid t0, t0 + dt, … as the recipe does it. Open your CSV with the button or drop it anywhere on this page; it never leaves your computer.
 
 traj-plot-title = Joints over time

@@ -1,6 +1,4 @@
 ## The Umeyama alignment page (#/umeyama-2d)
-umeyama-title = Umeyama alignment
-umeyama-blurb = Drag the source points, set the true similarity and the noise, and step through how Umeyama’s method recovers scale, rotation and translation.
 umeyama-lede = The umeyama-2d recipe’s points X, the noisy targets Y = s R X + t + noise, and the similarity Umeyama’s closed form recovers from them. Drag a point, click empty space to add one, or drag the violet handles to change the true translation and rotation; then step through the fit.
 umeyama-edited = Edited: these points or this true similarity are not the Python recipe’s, so this run no longer matches it. The command line below carries the options that reproduce it with bsv, and umeyama_points.csv holds X, Y and the aligned points.
 umeyama-view-title = Points and fit

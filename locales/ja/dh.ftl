@@ -1,6 +1,4 @@
 ## DH 順運動学のページ（#/dh-fk）
-dh-title = DH 順運動学を 3D で
-dh-blurb = レシピの 3R チェーンを 3D で表示します。関節を回し、視点を回し、修正 DH の 1 行を 4 つの基本変換に分けてたどれます。
 dh-canvas-label = 3 関節チェーンの 3D ビュー：リンク、関節軸、各フレームの x・y・z 軸
 dh-view-title = 3D で見るチェーン
 dh-legend-x = x 軸

@@ -73,3 +73,9 @@ kit-orbit-view-side = 側面
 kit-orbit-hint = ビューをドラッグすると視点が回ります。ホイールやピンチで拡大・縮小。タッチ画面では横にドラッグすると視点が回り、上下にスワイプするとページがスクロールします。ビューにフォーカスがあるときは矢印キーで回転、+ / − で拡大・縮小します。
 kit-orbit-key-orbit = 3D ビューの視点を回す（ビューにフォーカスがあるとき。Shift で大きく）
 kit-orbit-key-zoom = 3D ビューの拡大・縮小（ビューにフォーカスがあるとき）
+
+# キットのレイアウトで作るページ（信号のページ、Umeyama）の節の見出し。
+signals-params-title = パラメータ
+signals-explain-title = このページで見ているもの
+signals-quirks-title = この移植版がレシピの代わりに決めていること
+signals-exports-title = ダウンロードとコマンドライン

@@ -2,10 +2,6 @@
 
 ## 共通
 signals-readouts-title = 読み取り値
-signals-params-title = パラメータ
-signals-exports-title = ダウンロードとコマンドライン
-signals-explain-title = このページで見ているもの
-signals-quirks-title = この移植版がレシピの代わりに決めていること
 signals-png = グラフを保存（PNG）
 signals-key-reset = レシピの既定値に戻す
 signals-ax-t = 時刻 t
@@ -13,8 +9,6 @@ signals-unit-s = 秒
 signals-computing = { $rows } 行を計算中… { $percent } %。終わるまで、グラフと読み取り値は前の結果のままです。
 
 ## 3 次経路
-cubic-title = 3 次経路
-cubic-blurb = 3 次の関節経路の位置・速度・加速度。終点やスライダーをドラッグし、5 次や台形と比べられます。
 cubic-plots-title = 時間に対する q・qd・qdd
 cubic-canvas-label = 3 次経路のグラフ：時間に対する位置・速度・加速度。位置のグラフで終点をドラッグできます。
 cubic-drag-hint = 位置のグラフで終点（T, q1）をドラッグできます。グラフにポインタを重ねると、カーソル位置のサンプルを読み取れます。点は dt ごとのサンプルで、CSV の各行です。
@@ -55,8 +49,6 @@ cubic-explain-expected-title = 期待される結果
 cubic-explain-expected = およそ T/dt + 1 行。q0 から q1 へなめらかに動く q。
 
 ## PID ステップ応答
-pid-title = PID ステップ応答
-pid-blurb = レシピの簡易ループで Kp・Ki・Kd をその場で調整。立ち上がり時間、オーバーシュート、整定と、直前のゲインの残像。
 pid-plots-title = 出力 y・目標値 r・操作量 u
 pid-canvas-label = PID ステップ応答のグラフ：上は目標値 r と出力 y、下は操作量 u（横軸は時間）。
 pid-ghost-note = 灰色の曲線は直前のゲインです。次に値を変えるまで残るので、2 つの調整を見比べられます。
@@ -100,8 +92,6 @@ pid-explain-expected-title = 期待される結果
 pid-explain-expected = 標準ライブラリだけで、y が 1.0 に向かって上がります。
 
 ## 台形プロファイル
-trap-title = 台形プロファイル
-trap-blurb = 加速・等速・減速。速度のグラフで vmax と amax をドラッグし、各区間と、動作が三角形になる条件を確かめます。
 trap-plots-title = 時間に対する位置 s・速度 v・加速度 a
 trap-canvas-label = 台形プロファイルのグラフ：時間に対する位置・速度・加速度。3 つの区間は色分けしています。速度のグラフで vmax と加速の角をドラッグできます。
 trap-drag-hint = 速度のグラフで、破線上のハンドルをドラッグすると vmax が、加速の角をドラッグすると amax（その傾き）が変わります。

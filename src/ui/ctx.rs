@@ -1,9 +1,10 @@
-//! The app context of this browser tab: the Fluent bundles (each language added when it is
-//! loaded, [`crate::ui::lang_chunks`]), the current language and whether projector mode is on. One per thread (the wasm main thread), held in `thread_local!` cells
-//! so that pages read it from anywhere without threading a handle through every call.
+//! The app context of this browser tab: the Fluent bundles (each file added when it is
+//! loaded, [`crate::ui::lang_files`]), the current language and whether projector mode is on.
+//! One per thread (the wasm main thread), held in `thread_local!` cells so that pages read it
+//! from anywhere without threading a handle through every call.
 //!
-//! Reading never panics: the language and projector flags are `Cell`s, the bundles are
-//! immutable, and missing messages are logged with `console.warn` (once each).
+//! Reading never panics: the language and projector flags are `Cell`s, the bundles only grow,
+//! and missing messages are logged with `console.warn` (once each).
 
 use std::cell::Cell;
 
@@ -38,15 +39,15 @@ pub(crate) fn set_lang(lang: Lang) {
     LANG.with(|cell| cell.set(lang));
 }
 
-/// Whether `lang`'s strings are loaded.
-pub fn has_lang(lang: Lang) -> bool {
-    I18N.try_with(|i18n| i18n.has_language(lang))
+/// Whether `lang`'s Fluent file `name` is loaded.
+pub fn has_file(lang: Lang, name: &str) -> bool {
+    I18N.try_with(|i18n| i18n.has_file(lang, name))
         .unwrap_or(false)
 }
 
 /// Adds `lang`'s Fluent files (file name, text) to the bundles.
-pub(crate) fn add_lang(lang: Lang, files: &[(&str, &str)]) {
-    let _ = I18N.try_with(|i18n| i18n.add_language(lang, files));
+pub(crate) fn add_files(lang: Lang, files: &[(&str, &str)]) {
+    let _ = I18N.try_with(|i18n| i18n.add_files(lang, files));
 }
 
 /// Whether projector mode (larger type, thicker lines, high contrast) is on.

@@ -19,7 +19,7 @@ pub mod dom;
 pub mod download;
 pub mod drill_chain;
 pub mod kit;
-pub mod lang_chunks;
+pub mod lang_files;
 pub mod lesson_bar;
 pub mod nav_cue;
 pub mod nav_menu;
@@ -37,14 +37,17 @@ pub mod update_banner;
 /// first: a panic is logged with `console.error` and a localized banner says that the work is
 /// kept in the URL and offers a reload.
 /// Resolves once the first page is mounted (or its chunk is on its way); rejects if the
-/// visitor's language could not be loaded.
+/// strings of the visitor's language that the page needs could not be loaded.
 #[wasm_bindgen(js_name = startApp)]
 pub async fn start_app() -> Result<(), JsValue> {
     install_panic_hook();
     let lang = shell::initial_lang();
-    lang_chunks::load(lang)
+    lang_files::load(lang, shell::first_page_strings())
         .await
-        .map_err(|error| JsValue::from_str(&format!("{} strings: {error}", lang.code())))?;
+        .map_err(|error| {
+            let reason = error.as_string().unwrap_or_default();
+            JsValue::from_str(&format!("{} strings: {reason}", lang.code()))
+        })?;
     shell::start(lang)
 }
 

@@ -5,7 +5,7 @@
 //! line that also places it in the navigation:
 //!
 //! ```ignore
-//! page!(ik2r_page, ik2r::Ik2rPage, "ik-2r", "ik2r-title", "ik2r-blurb", Nav::Kinematics),
+//! page!(ik2r_page, ik2r::Ik2rPage, "ik-2r", "ik2r-title", "ik2r-blurb", Nav::Kinematics, ["ik2r.ftl"]),
 //! ```
 //!
 //! Each page's code is a wasm chunk of its own, fetched when the page is first opened (the
@@ -163,20 +163,24 @@ pub struct PageDef {
     pub blurb_id: &'static str,
     /// Where its link sits in the navigation.
     pub nav: Nav,
+    /// The Fluent files it needs beyond [`crate::i18n::FIRST_FILES`] (fetched with its code).
+    pub strings: &'static [&'static str],
     /// Loads the page's chunk (at once if it is in) and gives its mount function.
     pub load: fn() -> PageLoad,
 }
 
-/// One line of the page table: `page!(chunk, PageType, id, title_id, blurb_id, nav)` registers
-/// `PageType` under route `#/<id>` with its code split off into the wasm chunk `chunk`, fetched
-/// on the page's first visit (or in the background after the first page is shown).
+/// One line of the page table: `page!(chunk, PageType, id, title_id, blurb_id, nav, [files])`
+/// registers `PageType` under route `#/<id>` with its code split off into the wasm chunk
+/// `chunk` and the Fluent files it needs beyond the first ones, both fetched on the page's
+/// first visit (or in the background after the first page is shown).
 macro_rules! page {
-    ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $blurb_id:expr, $nav:expr) => {
+    ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $blurb_id:expr, $nav:expr, [$($file:expr),* $(,)?]) => {
         $crate::ui::page::PageDef {
             id: $id,
             title_id: $title_id,
             blurb_id: $blurb_id,
             nav: $nav,
+            strings: &[$($file),*],
             load: $crate::ui::page::page_load!($chunk, $page),
         }
     };

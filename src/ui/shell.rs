@@ -25,7 +25,7 @@ use web_sys::{Element, KeyboardEvent};
 use crate::i18n::{self, Lang};
 use crate::ui::drill_chain;
 use crate::ui::kit::keymap::{self, ShellKey};
-use crate::ui::lang_chunks;
+use crate::ui::lang_files;
 use crate::ui::lesson_bar;
 use crate::ui::nav_cue;
 use crate::ui::nav_menu::{self, NavMenu};
@@ -108,11 +108,15 @@ pub(crate) fn start(lang: Lang) -> Result<(), JsValue> {
 }
 
 /// After the first page is shown, the rest of the app in the background, one part after the
-/// other: the other language (so a switch is immediate) and every page's chunk (so going to a
-/// page shows it at once, and the app works offline after one visit even where no service
-/// worker runs). A part that fails to load is loaded again when it is needed.
+/// other: the other language's strings of this page (so a switch is immediate), every string
+/// of both languages and every page's chunk (so going to a page shows it at once, and the app
+/// works offline after one visit even where no service worker runs). A part that fails to
+/// load is loaded again when it is needed.
 async fn load_the_rest() {
-    let _ = lang_chunks::load(ctx::lang().other()).await;
+    let lang = ctx::lang();
+    let _ = lang_files::load(lang.other(), page_strings(routed_def())).await;
+    let _ = lang_files::load_all(lang).await;
+    let _ = lang_files::load_all(lang.other()).await;
     for def in PAGES {
         let _ = (def.load)().await;
     }
@@ -284,11 +288,11 @@ pub(crate) fn switch_lang(lang: Lang) -> Result<(), JsValue> {
 
 /// Makes `lang` current and re-renders every visible string, once its strings are loaded.
 pub(crate) fn apply_lang(lang: Lang) -> Result<(), JsValue> {
-    if ctx::has_lang(lang) {
+    if has_strings(lang, routed_def()) {
         return show_lang(lang);
     }
     wasm_bindgen_futures::spawn_local(async move {
-        match lang_chunks::load(lang).await {
+        match lang_files::load(lang, page_strings(routed_def())).await {
             Ok(()) => report(show_lang(lang)),
             Err(_) => report(Err(JsValue::from_str(&format!(
                 "the {} strings could not be loaded",
@@ -350,6 +354,25 @@ fn apply_projector_class(on: bool) -> Result<(), JsValue> {
 /// The page the route names (mounted, or its chunk on its way).
 fn routed_def() -> Option<&'static PageDef> {
     ROUTING.with(|routing| routing.def.get())
+}
+
+/// The Fluent files page `def` needs beyond the ones every page needs.
+fn page_strings(def: Option<&'static PageDef>) -> &'static [&'static str] {
+    def.map_or(&[], |def| def.strings)
+}
+
+/// The Fluent files the page the address names needs beyond the ones every page needs (what
+/// the app loads before its first page).
+pub(crate) fn first_page_strings() -> &'static [&'static str] {
+    page_strings(page::find(PAGES, &router::current_route().page))
+}
+
+/// Whether every string `def` shows in `lang` is loaded.
+fn has_strings(lang: Lang, def: Option<&'static PageDef>) -> bool {
+    i18n::FIRST_FILES
+        .iter()
+        .chain(page_strings(def))
+        .all(|file| ctx::has_file(lang, file))
 }
 
 /// After a route change: mark the current page in the navigation, set the document title.
@@ -596,13 +619,24 @@ fn load_page(
 ) -> Result<(), JsValue> {
     let mut load = (def.load)();
     let mut poll = Context::from_waker(Waker::noop());
-    if let Poll::Ready(result) = load.as_mut().poll(&mut poll) {
-        return loaded(def, generation, query, result);
+    let lang = ctx::lang();
+    let strings_in = has_strings(lang, Some(def));
+    if strings_in {
+        if let Poll::Ready(result) = load.as_mut().poll(&mut poll) {
+            return loaded(def, generation, query, result.map_err(|e| e.to_string()));
+        }
     }
     let main = main_element()?;
     page_frame::show_loading(&main, def)?;
     wasm_bindgen_futures::spawn_local(async move {
-        let result = load.await;
+        // The page's strings and its chunk come together (the chunk's request is made on the
+        // loader's first poll, the strings' on theirs).
+        let strings = lang_files::load(lang, def.strings);
+        let result = match (load.await, strings.await) {
+            (Ok(mount), Ok(())) => Ok(mount),
+            (Err(error), _) => Err(error.to_string()),
+            (_, Err(error)) => Err(error.as_string().unwrap_or_default()),
+        };
         if is_current(generation) {
             report(loaded(def, generation, query, result));
         }
@@ -653,7 +687,7 @@ fn loaded(
     def: &'static PageDef,
     generation: u64,
     query: Vec<(String, String)>,
-    result: Result<page::MountFn, page::SplitLoaderError>,
+    result: Result<page::MountFn, String>,
 ) -> Result<(), JsValue> {
     let main = main_element()?;
     match result {
@@ -664,10 +698,10 @@ fn loaded(
             let pending: Vec<ShellRequest> = ROUTING.with(|routing| routing.pending.take());
             perform_all(pending)
         }
-        Err(_) => {
+        Err(error) => {
             web_sys::console::warn_1(
                 &format!(
-                    "BSV Playground: the code of page '{}' could not be loaded",
+                    "BSV Playground: the code or strings of page '{}' could not be loaded: {error}",
                     def.id
                 )
                 .into(),

@@ -410,6 +410,7 @@ test('invalid values are flagged beside their field in English and Japanese; the
     const message = grid.page.locator('[data-field-error="n"]');
     assert.equal(await message.innerText(), '格子の大きさ n（n × n 通りの関節角） は 1 以上 1,024 以下にしてください（現在の値: 5,000）。');
     await grid.page.locator('[data-testid="lang-switch"]').click();
+    await grid.page.waitForFunction(() => document.documentElement.lang === 'en');
     assert.equal(await message.innerText(), 'Grid size n (n × n joint configurations) must be between 1 and 1,024 (it is 5,000).');
     assert.match(await grid.page.locator('[data-field-wrap="n"] .drills-hint').innerText(), /from 1 to 1,024: n × n rows, so at most 1,048,576/);
     assert.deepEqual(grid.errors, []);

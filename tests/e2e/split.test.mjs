@@ -36,7 +36,28 @@ test('every page of the page table has a pack, and the build lists what each rou
     const ids = await page.evaluate(async () =>
       (await import(new URL('pkg/bsv_playground.js', document.baseURI).href)).pageTable().map((p) => p.id));
     assert.deepEqual(Object.keys(table.routes).sort(), [...ids].sort());
-    assert.ok(table.strings.en && table.strings.ja);
+    assert.deepEqual(Object.keys(table.strings.routes).sort(), [...ids].sort());
+    assert.ok(table.strings.first.includes('shell.ftl') && table.strings.first.includes('pages.ftl'));
+    assert.deepEqual(table.strings.routes['ik-2r'], ['ik2r.ftl']);
+    // The strings are the files of locales/, byte for byte, in both languages.
+    for (const lang of ['en', 'ja']) {
+      for (const file of new Set([...table.strings.first, ...Object.values(table.strings.routes).flat()])) {
+        assert.deepEqual(readFileSync(join(DIST, 'locales', lang, file)), readFileSync(join(DIST, '..', 'locales', lang, file)), `${lang}/${file}`);
+      }
+    }
+  } finally {
+    await close();
+  }
+});
+
+test('a first visit fetches the strings its page needs in its language only', async () => {
+  const { page, close } = await openApp(server.url, '#/ik-2r?lang=ja');
+  try {
+    const fetched = await page.evaluate(() =>
+      performance.getEntriesByType('resource').map((e) => new URL(e.name).pathname).filter((p) => p.includes('/locales/')));
+    const first = fetched.slice(0, table.strings.first.length + 1).sort();
+    assert.deepEqual(first, [...table.strings.first, 'ik2r.ftl'].map((f) => `/locales/ja/${f}`).sort());
+    assert.match(await page.locator('h1').first().textContent(), /IK/);
   } finally {
     await close();
   }

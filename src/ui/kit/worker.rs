@@ -41,8 +41,9 @@ pub const HEAD_LINES: usize = 200;
 // In the worker.
 
 thread_local! {
-    /// The worker's own Fluent bundles (built on its first message that needs them).
-    static WORKER_I18N: I18n = I18n::new();
+    /// The worker's own Fluent bundles: the kernels' errors and warnings, in both languages
+    /// (built on its first message that needs them).
+    static WORKER_I18N: I18n = I18n::from_sources(crate::i18n::ERROR_SOURCES);
 }
 
 fn set(target: &JsValue, key: &str, value: &JsValue) -> Result<(), JsValue> {
