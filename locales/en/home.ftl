@@ -105,3 +105,7 @@ home-tool-robot-web-tools-job = Browser bridges to ROS (separate from BSV recipe
 home-tool-robot-web-tools-licence = BSD-3-Clause
 home-tool-robot-web-tools-difficulty = Intermediate
 home-tool-robot-web-tools-where = Cloud / web API
+
+# The line in place of the tiles and cards while their code loads, and if it cannot.
+home-more-loading = Loading the drill tiles and the recipe cards…
+home-more-failed = The drill tiles and the recipe cards could not be loaded: the network is not reachable. Check the connection, then try again.

@@ -105,3 +105,7 @@ home-tool-robot-web-tools-job = ブラウザーと ROS をつなぐブリッジ�
 home-tool-robot-web-tools-licence = BSD-3-Clause
 home-tool-robot-web-tools-difficulty = 中級
 home-tool-robot-web-tools-where = クラウド / Web API
+
+# タイルとカードのコードを読み込む間、その場所に出す行と、読み込めなかったときの行。
+home-more-loading = ドリルのタイルとレシピのカードを読み込んでいます…
+home-more-failed = ドリルのタイルとレシピのカードを読み込めませんでした。ネットワークにつながっていません。接続を確かめてから、もう一度お試しください。

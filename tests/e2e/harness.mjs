@@ -166,6 +166,8 @@ export async function openApp(url, hash = '#/', { viewport = { width: 1280, heig
   page.on('pageerror', (e) => errors.push(String(e)));
   await page.goto(`${url}/${hash}`);
   await page.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
+  // The home page's tiles and cards come in a chunk of their own once the arm is live.
+  await page.waitForFunction(() => !document.querySelector('[data-testid="home-more"][data-state="loading"]'), null, { timeout: 20000 });
   return { page, context, errors, close: () => context.close() };
 }
 

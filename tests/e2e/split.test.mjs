@@ -101,6 +101,39 @@ for (const lang of ['en', 'ja']) {
   });
 }
 
+for (const lang of ['en', 'ja']) {
+  test(`the home page's arm is live before its tiles and cards; if their code cannot be fetched, a line says so with Retry (${lang})`, async () => {
+    const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`);
+    try {
+      const pattern = /\/pkg\/(pack_home_cards\.bin|chunks\/split_home_cards\.wasm)$/;
+      await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+      await page.evaluate((l) => { location.hash = `#/?lang=${l}`; }, lang);
+      await page.reload();
+      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+      const line = page.locator('[data-testid="home-more"]');
+      await line.and(page.locator('[data-state="failed"]')).waitFor({ timeout: 15000 });
+      assert.match(await line.innerText(), lang === 'en' ? /could not be loaded/ : /読み込めませんでした/);
+      assert.equal(await line.getAttribute('role'), 'alert');
+      // The arm is live meanwhile: an arrow key moves it.
+      const q1 = await page.locator('[data-testid="home-arm-q1"]').innerText();
+      await page.locator('[data-testid="home-arm-canvas"]').focus();
+      await page.keyboard.press('ArrowUp');
+      await page.waitForFunction((before) => document.querySelector('[data-testid="home-arm-q1"]').textContent !== before, q1);
+      await page.setViewportSize({ width: 390, height: 844 });
+      await line.scrollIntoViewIfNeeded();
+      await shoot(page, `home-more-failed-${lang}-390`, { width: 390, height: 844 });
+      await context.unroute(pattern);
+      await line.locator('[data-action="retry"]').click();
+      await line.waitFor({ state: 'detached', timeout: 15000 });
+      assert.equal(await page.locator('.recipe-card').count(), 12);
+      assert.ok(await page.locator('[data-testid="featured-ik-2r"]').isVisible());
+      assert.deepEqual(appErrors(errors), []);
+    } finally {
+      await close();
+    }
+  });
+}
+
 test('on a slow network, going ik-2r → teleop → pendulum shows each page\'s frame and loading line, then the page', async () => {
   const { page, context, errors, close } = await openApp(server.url, '#/ik-2r');
   try {

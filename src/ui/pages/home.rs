@@ -1,13 +1,9 @@
 //! The home page: the headline and introduction beside a live 2R arm a visitor drags
-//! (`home_arm`), a tile for each in-browser page (a picture its recipe's kernel draws at the
-//! defaults (`home_picture`), a label saying what it shows, its title), one card per
-//! recipe (title, picture, description; behind one disclosure the live page that pairs with
-//! it, its inputs with their defaults, the files it writes and the `bsv` and `python` command
-//! lines; links to run it in the browser: its drill on the drills page, and its own page when
-//! it has one), then the seed's "Compare the tools" table with the official links
-//! (outbound only). Every text is a `data-i18n` message, so a language switch needs nothing
-//! from the page itself. Everything about a recipe (labels, defaults, limits, the live page
-//! that pairs with it) comes from its facts (`RecipeInfo`, `ArgSpec`).
+//! (`home_arm`), then the tiles, recipe cards and tools table (`home_cards`), a wasm chunk of
+//! their own fetched once the arm is live (their pictures run every recipe's kernel); a line
+//! stands in their place while they load, and says so with Retry if they cannot be fetched.
+//! Every text is a `data-i18n` message, so a language switch needs nothing from the page
+//! itself.
 
 use std::rc::Rc;
 
@@ -15,14 +11,10 @@ use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
 use super::home_arm::{self, HomeArm};
-use super::home_picture;
-use crate::args::ArgSpec;
-use crate::recipes::{RecipeInfo, RECIPES};
-use crate::ui::command_line::shell_word;
+use super::home_cards;
 use crate::ui::ctx;
-use crate::ui::dom::{append, el, el_class, el_i18n, el_text};
-use crate::ui::page::{MountCtx, Page, PageDef, ShellLink, Shortcut};
-use crate::ui::router::{self, HOME_ID};
+use crate::ui::dom::{self, append, el_class, el_i18n, el_text};
+use crate::ui::page::{MountCtx, Page, ShellLink, Shortcut, SplitLoaderError};
 
 /// The home page (`#/`): markup, every text a `data-i18n` message, and the live arm.
 pub struct HomePage {
@@ -59,297 +51,72 @@ fn build(root: &Element, shell: ShellLink) -> Result<Rc<HomeArm>, JsValue> {
     let arm = home_arm::mount(&hero)?;
     append(root, &hero)?;
 
-    let tiles = el_class("ul", "tile-grid")?;
-    tiles.set_attribute("data-testid", "home-tiles")?;
-    crate::ui::dom::set_i18n_attrs(&tiles, &[("aria-label", "home-tiles-label")])?;
-    for def in shell.pages.iter().filter(|d| d.id != HOME_ID) {
-        let item = el("li")?;
-        append(&item, &featured_card(def)?)?;
-        append(&tiles, &item)?;
-    }
-    append(root, &tiles)?;
-
-    let recipes = el_class("section", "recipes")?;
-    recipes.set_attribute("aria-labelledby", "recipes-heading")?;
-    let heading = el_i18n("h2", "", "home-recipes-heading")?;
-    heading.set_id("recipes-heading");
-    append(&recipes, &heading)?;
-    append(
-        &recipes,
-        &el_i18n("p", "section-intro", "home-recipes-intro")?,
-    )?;
-    let grid = el_class("ol", "recipe-grid")?;
-    for recipe in RECIPES.iter() {
-        append(&grid, &recipe_card(recipe.info, shell)?)?;
-    }
-    append(&recipes, &grid)?;
-    append(root, &recipes)?;
-    append(root, &tools_section()?)?;
-    home_picture::draw_all(root)?;
+    let status = el_i18n("p", "home-more", "home-more-loading")?;
+    status.set_attribute("data-testid", "home-more")?;
+    status.set_attribute("data-state", "loading")?;
+    status.set_attribute("role", "status")?;
+    append(root, &status)?;
+    load_cards(root.clone(), status, shell);
     Ok(arm)
 }
 
-/// The seed's "Compare the tools" table: each tool's key (its Fluent ids are
-/// `home-tool-<key>-{name,job,licence,difficulty,where}`) and its official address. The links
-/// go out; the app fetches nothing from them.
-const TOOLS: [(&str, &str); 7] = [
-    ("mujoco", "https://mujoco.org/"),
-    ("mujoco-docs", "https://mujoco.readthedocs.io/"),
-    ("numpy", "https://numpy.org/"),
-    ("isaac-lab", "https://isaac-sim.github.io/IsaacLab/"),
-    ("isaac-teleop", "https://isaac-sim.github.io/IsaacLab/v2.3.0/source/overview/imitation-learning/teleop_imitation.html"),
-    ("ros2", "https://docs.ros.org/"),
-    ("robot-web-tools", "https://robotwebtools.github.io/"),
-];
+/// Builds the tiles, recipe cards and tools table (`home_cards`).
+type CardsFn = fn(&Element, ShellLink) -> Result<(), JsValue>;
 
-/// The tools table, with a caption and column headers for screen readers.
-fn tools_section() -> Result<Element, JsValue> {
-    let section = el_class("section", "tools")?;
-    section.set_attribute("aria-labelledby", "tools-heading")?;
-    section.set_attribute("data-testid", "tools")?;
-    let heading = el_i18n("h2", "", "home-tools-title")?;
-    heading.set_id("tools-heading");
-    append(&section, &heading)?;
-    append(
-        &section,
-        &el_i18n("p", "section-intro", "home-tools-intro")?,
-    )?;
-    let wrap = el_class("div", "tools-wrap")?;
-    let table = el_class("table", "tools-table")?;
-    append(&table, &el_i18n("caption", "", "home-tools-caption")?)?;
-    let head = el("thead")?;
-    let row = el("tr")?;
-    for col in ["tool", "job", "licence", "difficulty", "where"] {
-        let th = el_i18n("th", "", &format!("home-tools-col-{col}"))?;
-        th.set_attribute("scope", "col")?;
-        append(&row, &th)?;
-    }
-    append(&head, &row)?;
-    append(&table, &head)?;
-    let body = el("tbody")?;
-    for (key, href) in TOOLS {
-        let row = el("tr")?;
-        row.set_attribute("data-tool", key)?;
-        let th = el("th")?;
-        th.set_attribute("scope", "row")?;
-        let link = el_i18n("a", "", &format!("home-tool-{key}-name"))?;
-        link.set_attribute("href", href)?;
-        link.set_attribute("rel", "noopener noreferrer")?;
-        link.set_attribute("target", "_blank")?;
-        append(&th, &link)?;
-        let note = el_i18n("span", "visually-hidden", "home-tools-external")?;
-        append(&link, &note)?;
-        append(&row, &th)?;
-        for col in ["job", "licence", "difficulty", "where"] {
-            append(&row, &el_i18n("td", "", &format!("home-tool-{key}-{col}"))?)?;
-        }
-        append(&body, &row)?;
-    }
-    append(&table, &body)?;
-    append(&wrap, &table)?;
-    append(&section, &wrap)?;
-    Ok(section)
+/// The tiles, recipe cards and tools table: a wasm chunk of their own (drawing the pictures
+/// runs every recipe's kernel), fetched once the arm is live.
+#[cfg(feature = "split")]
+#[wasm_split_helpers::wasm_split(home_cards, fallible)]
+fn cards() -> Result<CardsFn, SplitLoaderError> {
+    Ok(home_cards::build)
 }
 
-/// The tile of an in-browser page: the picture its (first) recipe draws, a label saying what
-/// the page shows (`home-featured-label-<page id>`, where the page has one), its title with an
-/// arrow.
-fn featured_card(def: &PageDef) -> Result<Element, JsValue> {
-    let card = el_class("a", "featured-card")?;
-    card.set_attribute("href", &router::build_hash(def.id, &[]))?;
-    card.set_attribute("data-testid", &format!("featured-{}", def.id))?;
-    if let Some(recipe) = RECIPES.iter().find(|r| r.info.page == Some(def.id)) {
-        append(&card, &home_picture::tile_canvas(recipe.info.id, def.id)?)?;
-    }
-    let label_id = format!("home-featured-label-{}", def.id);
-    if ctx::has_message(&label_id) {
-        append(&card, &el_i18n("span", "featured-label", &label_id)?)?;
-    }
-    let title = el_class("span", "featured-title")?;
-    append(&title, &el_i18n("span", "", def.title_id)?)?;
-    let arrow = el_text("span", "arrow", "\u{a0}→")?;
-    arrow.set_attribute("aria-hidden", "true")?;
-    append(&title, &arrow)?;
-    append(&card, &title)?;
-    Ok(card)
+/// Without the `split` feature the cards are in the one wasm.
+#[cfg(not(feature = "split"))]
+async fn cards() -> Result<CardsFn, SplitLoaderError> {
+    Ok(home_cards::build)
 }
 
-fn recipe_card(info: &RecipeInfo, shell: ShellLink) -> Result<Element, JsValue> {
-    let id = info.id;
-    let item = el_class("li", "recipe-card")?;
-    item.set_attribute("data-testid", &format!("recipe-card-{id}"))?;
-    item.set_attribute("data-recipe", id)?;
-    append(&item, &el_i18n("h3", "", &info.title_id())?)?;
-    append(&item, &home_picture::canvas(id)?)?;
-    let blurb = el_i18n("p", "blurb", &info.blurb_id())?;
-    // The picture's text alternative (`aria-describedby` of its canvas).
-    blurb.set_id(&home_picture::blurb_id(id));
-    append(&item, &blurb)?;
-    // The rest (the live page it pairs with, inputs, options, files, command lines) behind
-    // one disclosure.
-    let more = el_class("details", "recipe-more")?;
-    more.set_attribute("data-testid", &format!("recipe-more-{id}"))?;
-    append(&more, &el_i18n("summary", "", "home-card-more")?)?;
-    // The live page that runs it (from the recipe's facts): "Pairs with … →", linked.
-    let live_page = info.page.and_then(|id| shell.find(id));
-    if let Some(def) = live_page {
-        let pairs = el_class("p", "recipe-pairs")?;
-        append(
-            &pairs,
-            &el_i18n("span", "label", &format!("home-card-pairs-{}", def.id))?,
-        )?;
-        append(&pairs, &el_text("span", "", " ")?)?;
-        append(
-            &pairs,
-            &card_link(
-                &router::build_hash(def.id, &[]),
-                def.title_id,
-                &format!("recipe-pairs-{id}"),
-            )?,
-        )?;
-        append(&more, &pairs)?;
-    }
-
-    if !info.args.is_empty() {
-        append(&more, &el_i18n("h4", "", "home-card-inputs")?)?;
-        append(&more, &arg_list(id, info.args, false)?)?;
-    }
-    if !info.flags.is_empty() {
-        let details = el_class("details", "recipe-options")?;
-        append(&details, &el_i18n("summary", "", "home-card-options")?)?;
-        append(&details, &arg_list(id, info.flags, true)?)?;
-        append(&more, &details)?;
-    }
-    if !info.writes.is_empty() {
-        let writes = el_class("p", "recipe-writes")?;
-        append(&writes, &el_i18n("span", "label", "home-card-writes")?)?;
-        for file in info.writes {
-            append(&writes, &el_text("code", "", file)?)?;
-        }
-        append(&more, &writes)?;
-    }
-
-    let commands = el_class("div", "commands")?;
-    let args = default_command_args(info.args);
-    append(
-        &commands,
-        &command_line("home-card-cli", &format!("bsv {id}"), &args, "cli")?,
-    )?;
-    append(
-        &commands,
-        &command_line(
-            "home-card-python",
-            &format!("python {}", info.python),
-            &args,
-            "python",
-        )?,
-    )?;
-    append(&more, &commands)?;
-    append(&item, &more)?;
-
-    let links = el_class("p", "card-link")?;
-    append(&links, &el_i18n("span", "label", "home-card-in-browser")?)?;
-    append(&links, &drill_link(id)?)?;
-    if let Some(def) = live_page {
-        append(&links, &el_text("span", "sep", " · ")?)?;
-        append(
-            &links,
-            &card_link(
-                &router::build_hash(def.id, &[]),
-                def.title_id,
-                &format!("recipe-link-{id}"),
-            )?,
-        )?;
-    }
-    append(&item, &links)?;
-    Ok(item)
-}
-
-/// "Run this drill", with the recipe's title for screen readers (whose list of links would
-/// otherwise hold twelve identical "Run this drill" entries).
-fn drill_link(id: &str) -> Result<Element, JsValue> {
-    let link = card_link(
-        &router::drill_hash(id),
-        "home-card-drill",
-        &format!("recipe-drill-{id}"),
-    )?;
-    let which = el_class("span", "visually-hidden")?;
-    append(&which, &el_text("span", "", ": ")?)?;
-    append(&which, &el_i18n("span", "", &format!("recipe-{id}-title"))?)?;
-    if let Some(arrow) = link.last_element_child() {
-        link.insert_before(&which, Some(&arrow))?;
-    }
-    Ok(link)
-}
-
-/// One link at the foot of a recipe card: its title and an arrow.
-fn card_link(href: &str, title_id: &str, test_id: &str) -> Result<Element, JsValue> {
-    let link = el("a")?;
-    link.set_attribute("href", href)?;
-    link.set_attribute("data-testid", test_id)?;
-    append(&link, &el_i18n("span", "title", title_id)?)?;
-    let arrow = el_text("span", "arrow", "\u{a0}→")?;
-    arrow.set_attribute("aria-hidden", "true")?;
-    append(&link, &arrow)?;
-    Ok(link)
-}
-
-/// `<dl>`: the localized label of each argument (or `--flag`), its default and, from the
-/// recipe's facts, the hint that states its limits.
-fn arg_list(recipe_id: &str, specs: &[ArgSpec], flags: bool) -> Result<Element, JsValue> {
-    let list = el_class("dl", "recipe-args")?;
-    for spec in specs {
-        let term = el("dt")?;
-        if flags {
-            append(&term, &el_text("code", "", &format!("--{} ", spec.name))?)?;
-        }
-        append(
-            &term,
-            &el_i18n("span", "", &spec.label_id(recipe_id, flags))?,
-        )?;
-        append(&list, &term)?;
-        let value = el("dd")?;
-        let shown = if spec.default.is_empty() {
-            "—"
-        } else {
-            spec.default
+/// Loads the cards' chunk and builds them into `root` in place of `status`; if the chunk
+/// cannot be fetched, `status` says so with a Retry button.
+fn load_cards(root: Element, status: Element, shell: ShellLink) {
+    wasm_bindgen_futures::spawn_local(async move {
+        let built = match cards().await {
+            Ok(build) => {
+                // The page may have been left meanwhile.
+                if !root.contains(Some(&status)) {
+                    return;
+                }
+                build(&root, shell).map(|()| status.remove())
+            }
+            Err(_) => show_failed(&root, &status, shell),
         };
-        append(&value, &el_text("code", "", shown)?)?;
-        if !spec.hint_id.is_empty() {
-            append(&value, &el_text("span", "", " ")?)?;
-            append(&value, &el_i18n("small", "arg-hint", spec.hint_id)?)?;
+        if let Err(error) = built {
+            web_sys::console::error_1(&error);
         }
-        append(&list, &value)?;
-    }
-    Ok(list)
+    });
 }
 
-/// The defaults as command-line words, up to the first argument without a default (it cannot
-/// be skipped positionally).
-fn default_command_args(specs: &[ArgSpec]) -> Vec<String> {
-    specs
-        .iter()
-        .take_while(|spec| !spec.default.is_empty())
-        .map(|spec| shell_word(spec.default))
-        .collect()
-}
-
-/// A labelled command line: "Command line  `bsv ik-workspace 0.12 0.10 200 10`".
-fn command_line(
-    label_id: &str,
-    program: &str,
-    args: &[String],
-    kind: &str,
-) -> Result<Element, JsValue> {
-    let row = el_class("div", "command")?;
-    row.set_attribute("data-command", kind)?;
-    append(&row, &el_i18n("span", "label", label_id)?)?;
-    let mut text = program.to_string();
-    for arg in args {
-        text.push(' ');
-        text.push_str(arg);
-    }
-    let code = el_text("code", "", &text)?;
-    append(&row, &code)?;
-    Ok(row)
+fn show_failed(root: &Element, status: &Element, shell: ShellLink) -> Result<(), JsValue> {
+    dom::clear(status);
+    status.remove_attribute("data-i18n")?;
+    status.set_attribute("data-state", "failed")?;
+    status.set_attribute("role", "alert")?;
+    append(status, &el_i18n("span", "", "home-more-failed")?)?;
+    append(status, &el_text("span", "", " ")?)?;
+    let retry = el_i18n("button", "tool-button", "page-load-retry")?;
+    retry.set_attribute("type", "button")?;
+    retry.set_attribute("data-action", "retry")?;
+    append(status, &retry)?;
+    let (root, again) = (root.clone(), status.clone());
+    dom::Listener::new(&retry, "click", move |_| {
+        dom::clear(&again);
+        let _ = again.set_attribute("data-state", "loading");
+        let _ = again.set_attribute("role", "status");
+        let _ = again.set_attribute("data-i18n", "home-more-loading");
+        again.set_text_content(Some(&ctx::t("home-more-loading")));
+        load_cards(root.clone(), again.clone(), shell);
+    })?
+    .forever();
+    Ok(())
 }

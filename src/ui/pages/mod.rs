@@ -13,6 +13,7 @@ mod dh_fk;
 mod drills;
 mod home;
 mod home_arm;
+mod home_cards;
 mod home_picture;
 mod ik2r;
 mod lesson;
