@@ -17,6 +17,109 @@
 //! pivoting and `exp(log|det|)`, OpenBLAS's fused product, LAPACK's Householder + `dlas2`), so
 //! that recipe CSVs agree with `np.linalg.det` / `np.linalg.svd` to the last digits.
 
+/// The elementary functions of the arm's geometry: [`Exact`] for everything a recipe, a
+/// readout or an export computes; [`Fast`] for a drawing that needs no parity.
+pub trait Trig {
+    fn sin(x: f64) -> f64;
+    fn cos(x: f64) -> f64;
+    fn sincos(x: f64) -> (f64, f64);
+    fn atan2(y: f64, x: f64) -> f64;
+    fn acos(x: f64) -> f64;
+    fn hypot(x: f64, y: f64) -> f64;
+}
+
+/// Correctly rounded ([`crate::math`]): the numbers of the recipes and numpy.
+pub enum Exact {}
+
+/// The platform's `f64` functions, within an ulp or two of [`Exact`] and much smaller in the
+/// wasm: for the home page's arm, whose angles are shown to a tenth of a degree and exported
+/// nowhere.
+pub enum Fast {}
+
+impl Trig for Exact {
+    fn sin(x: f64) -> f64 {
+        crate::math::sin(x)
+    }
+    fn cos(x: f64) -> f64 {
+        crate::math::cos(x)
+    }
+    fn sincos(x: f64) -> (f64, f64) {
+        crate::math::sincos(x)
+    }
+    fn atan2(y: f64, x: f64) -> f64 {
+        crate::math::atan2(y, x)
+    }
+    fn acos(x: f64) -> f64 {
+        crate::math::acos(x)
+    }
+    fn hypot(x: f64, y: f64) -> f64 {
+        crate::math::hypot(x, y)
+    }
+}
+
+impl Trig for Fast {
+    fn sin(x: f64) -> f64 {
+        x.sin()
+    }
+    fn cos(x: f64) -> f64 {
+        x.cos()
+    }
+    fn sincos(x: f64) -> (f64, f64) {
+        x.sin_cos()
+    }
+    fn atan2(y: f64, x: f64) -> f64 {
+        y.atan2(x)
+    }
+    fn acos(x: f64) -> f64 {
+        x.acos()
+    }
+    fn hypot(x: f64, y: f64) -> f64 {
+        x.hypot(y)
+    }
+}
+
+/// Where the joints of an arm are: what drawing and hit-testing the arm need.
+pub trait ArmShape {
+    /// Elbow (joint 2) position.
+    fn elbow(&self, q1: f64) -> (f64, f64);
+    /// Tip position.
+    fn fk(&self, q1: f64, q2: f64) -> (f64, f64);
+}
+
+impl ArmShape for Arm {
+    fn elbow(&self, q1: f64) -> (f64, f64) {
+        Arm::elbow(self, q1)
+    }
+    fn fk(&self, q1: f64, q2: f64) -> (f64, f64) {
+        Arm::fk(self, q1, q2)
+    }
+}
+
+/// An arm computed with [`Fast`] functions (the home page's drawing).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sketch(pub Arm);
+
+impl ArmShape for Sketch {
+    fn elbow(&self, q1: f64) -> (f64, f64) {
+        self.0.elbow_in::<Fast>(q1)
+    }
+    fn fk(&self, q1: f64, q2: f64) -> (f64, f64) {
+        self.0.fk_in::<Fast>(q1, q2)
+    }
+}
+
+impl Sketch {
+    /// [`Arm::ik`] with [`Fast`] functions.
+    pub fn ik(&self, x: f64, y: f64, elbow: Elbow) -> Option<(f64, f64)> {
+        self.0.ik_in::<Fast>(x, y, elbow)
+    }
+
+    /// [`Arm::clamp_to_reach`] with [`Fast`] functions.
+    pub fn clamp_to_reach(&self, x: f64, y: f64) -> (f64, f64, bool) {
+        self.0.clamp_to_reach_in::<Fast>(x, y)
+    }
+}
+
 /// Which of the two IK solutions to take.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Elbow {
@@ -76,8 +179,13 @@ impl Arm {
 
     /// Tip position.
     pub fn fk(&self, q1: f64, q2: f64) -> (f64, f64) {
-        let (s1, c1) = crate::math::sincos(q1);
-        let (s12, c12) = crate::math::sincos(q1 + q2);
+        self.fk_in::<Exact>(q1, q2)
+    }
+
+    /// [`Arm::fk`] with the functions of `T`.
+    pub fn fk_in<T: Trig>(&self, q1: f64, q2: f64) -> (f64, f64) {
+        let (s1, c1) = T::sincos(q1);
+        let (s12, c12) = T::sincos(q1 + q2);
         let x = self.l1 * c1 + self.l2 * c12;
         let y = self.l1 * s1 + self.l2 * s12;
         (x, y)
@@ -85,10 +193,12 @@ impl Arm {
 
     /// Elbow (joint 2) position.
     pub fn elbow(&self, q1: f64) -> (f64, f64) {
-        (
-            self.l1 * crate::math::cos(q1),
-            self.l1 * crate::math::sin(q1),
-        )
+        self.elbow_in::<Exact>(q1)
+    }
+
+    /// [`Arm::elbow`] with the functions of `T`.
+    pub fn elbow_in<T: Trig>(&self, q1: f64) -> (f64, f64) {
+        (self.l1 * T::cos(q1), self.l1 * T::sin(q1))
     }
 
     /// Inner and outer radius of the reachable annulus.
@@ -99,31 +209,44 @@ impl Arm {
     /// IK for one branch, exactly as the recipe computes it; `None` outside the annulus
     /// (`|c2| > 1`).
     pub fn ik(&self, x: f64, y: f64, elbow: Elbow) -> Option<(f64, f64)> {
-        let (q2, beta) = self.ik_radial(x * x + y * y, elbow)?;
-        Some((crate::math::atan2(y, x) - beta, q2))
+        self.ik_in::<Exact>(x, y, elbow)
+    }
+
+    /// [`Arm::ik`] with the functions of `T`.
+    pub fn ik_in<T: Trig>(&self, x: f64, y: f64, elbow: Elbow) -> Option<(f64, f64)> {
+        let (q2, beta) = self.ik_radial_in::<T>(x * x + y * y, elbow)?;
+        Some((T::atan2(y, x) - beta, q2))
     }
 
     /// The part of [`Arm::ik`] that depends only on `r2 = x² + y²`: `(q2, beta)` with
     /// `q1 = atan2(y, x) - beta`, bit for bit as `ik` computes them (grids reuse it for cells
     /// with the same `r2`).
     pub fn ik_radial(&self, r2: f64, elbow: Elbow) -> Option<(f64, f64)> {
+        self.ik_radial_in::<Exact>(r2, elbow)
+    }
+
+    fn ik_radial_in<T: Trig>(&self, r2: f64, elbow: Elbow) -> Option<(f64, f64)> {
         let (l1, l2) = (self.l1, self.l2);
         let c2 = (r2 - l1 * l1 - l2 * l2) / (2.0 * l1 * l2);
         if c2.abs() > 1.0 || c2.is_nan() {
             return None;
         }
-        let mut q2 = crate::math::acos(c2.clamp(-1.0, 1.0));
+        let mut q2 = T::acos(c2.clamp(-1.0, 1.0));
         if elbow == Elbow::Up {
             q2 = -q2;
         }
-        let (sin_q2, cos_q2) = crate::math::sincos(q2);
-        Some((q2, crate::math::atan2(l2 * sin_q2, l1 + l2 * cos_q2)))
+        let (sin_q2, cos_q2) = T::sincos(q2);
+        Some((q2, T::atan2(l2 * sin_q2, l1 + l2 * cos_q2)))
     }
 
     /// The reachable point nearest to `(x, y)` and whether it had to move.
     pub fn clamp_to_reach(&self, x: f64, y: f64) -> (f64, f64, bool) {
+        self.clamp_to_reach_in::<Exact>(x, y)
+    }
+
+    fn clamp_to_reach_in<T: Trig>(&self, x: f64, y: f64) -> (f64, f64, bool) {
         let (inner, outer) = self.reach();
-        let r = crate::math::hypot(x, y);
+        let r = T::hypot(x, y);
         // A hair inside the boundary, so that IK of the pinned point succeeds.
         let eps = 1e-12 * outer.max(1e-300);
         let target = if r > outer - eps {
@@ -354,6 +477,42 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
+
+    #[test]
+    fn the_sketch_follows_the_exact_arm_to_within_a_few_ulps() {
+        let sketch = Sketch(Arm::DEFAULT);
+        for i in 0..400 {
+            let q1 = -3.1 + 0.0157 * i as f64;
+            let q2 = 2.9 - 0.0141 * i as f64;
+            let (x, y) = Arm::DEFAULT.fk(q1, q2);
+            let (sx, sy) = sketch.fk(q1, q2);
+            assert!(
+                (x - sx).abs() < 1e-15 && (y - sy).abs() < 1e-15,
+                "fk at {q1}, {q2}"
+            );
+            let (ex, ey) = ArmShape::elbow(&sketch, q1);
+            assert!((ex - Arm::DEFAULT.elbow(q1).0).abs() < 1e-15);
+            assert!((ey - Arm::DEFAULT.elbow(q1).1).abs() < 1e-15);
+            for elbow in [Elbow::Down, Elbow::Up] {
+                let exact = Arm::DEFAULT.ik(x, y, elbow);
+                let fast = sketch.ik(x, y, elbow);
+                match (exact, fast) {
+                    (Some((a1, a2)), Some((b1, b2))) => {
+                        assert!(
+                            (a1 - b1).abs() < 1e-12 && (a2 - b2).abs() < 1e-12,
+                            "ik at {x}, {y}"
+                        );
+                    }
+                    (a, b) => assert_eq!(a.is_some(), b.is_some(), "ik at {x}, {y}"),
+                }
+            }
+            let far = (3.0 * x, 3.0 * y);
+            let (cx, cy, moved) = sketch.clamp_to_reach(far.0, far.1);
+            let (ex2, ey2, exact_moved) = Arm::DEFAULT.clamp_to_reach(far.0, far.1);
+            assert_eq!(moved, exact_moved);
+            assert!((cx - ex2).abs() < 1e-15 && (cy - ey2).abs() < 1e-15);
+        }
+    }
 
     fn close(a: f64, b: f64) -> bool {
         (a - b).abs() <= 1e-12 + 1e-9 * b.abs()

@@ -17,7 +17,7 @@ use glam::{DAffine2, DVec2};
 
 use crate::args::{parse_f64, ArgSpec};
 use crate::error::RecipeError;
-use crate::planar2r::{wrap_angle, Arm, Elbow, PoseReport};
+use crate::planar2r::{wrap_angle, Arm, ArmShape, Elbow, PoseReport};
 use crate::recipes::ik_workspace::{self, WorkspaceParams};
 use crate::recipes::jacobian_2r::{self, SweepParams};
 use crate::recipes::manip_grid::{self, GridParams};
@@ -552,7 +552,7 @@ pub enum Grab {
 }
 
 /// Screen positions of base, elbow and tip.
-pub fn joints_on_screen(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64) -> [DVec2; 3] {
+pub fn joints_on_screen(xf: &ViewXf, arm: &impl ArmShape, q1: f64, q2: f64) -> [DVec2; 3] {
     let (ex, ey) = arm.elbow(q1);
     let (tx, ty) = arm.fk(q1, q2);
     [xf.origin(), xf.screen(ex, ey), xf.screen(tx, ty)]
@@ -565,7 +565,13 @@ pub const HIT_TOUCH_PX: f64 = 26.0;
 
 /// The draggable parts of the arm as hit shapes, in the order they are tested (the tip
 /// first: it wins where parts overlap).
-pub fn handles(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64, touch: bool) -> [(Grab, HandleShape); 4] {
+pub fn handles(
+    xf: &ViewXf,
+    arm: &impl ArmShape,
+    q1: f64,
+    q2: f64,
+    touch: bool,
+) -> [(Grab, HandleShape); 4] {
     let [base, elbow, tip] = joints_on_screen(xf, arm, q1, q2);
     let r = if touch { HIT_TOUCH_PX } else { HIT_MOUSE_PX };
     [
@@ -603,7 +609,14 @@ pub fn handles(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64, touch: bool) -> [(Grab,
 }
 
 /// The part of the arm under `p`, if any.
-pub fn part_at(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64, p: DVec2, touch: bool) -> Option<Grab> {
+pub fn part_at(
+    xf: &ViewXf,
+    arm: &impl ArmShape,
+    q1: f64,
+    q2: f64,
+    p: DVec2,
+    touch: bool,
+) -> Option<Grab> {
     handles(xf, arm, q1, q2, touch)
         .into_iter()
         .find(|(_, shape)| shape.contains(p))
@@ -612,7 +625,7 @@ pub fn part_at(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64, p: DVec2, touch: bool) 
 
 /// Which part of the arm a mouse or pen press at `p` grabs: empty space grabs the tip (the
 /// tip jumps there by IK), so a click anywhere moves the arm.
-pub fn hit_test(xf: &ViewXf, arm: &Arm, q1: f64, q2: f64, p: DVec2, touch: bool) -> Grab {
+pub fn hit_test(xf: &ViewXf, arm: &impl ArmShape, q1: f64, q2: f64, p: DVec2, touch: bool) -> Grab {
     part_at(xf, arm, q1, q2, p, touch).unwrap_or(Grab::Tip)
 }
 

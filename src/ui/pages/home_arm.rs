@@ -13,7 +13,7 @@ use glam::DVec2;
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, KeyboardEvent};
 
-use crate::planar2r::{wrap_angle, Arm, Elbow};
+use crate::planar2r::{wrap_angle, Arm, ArmShape, Elbow, Sketch};
 use crate::ui::dom;
 use crate::ui::kit::canvas::{disc, focus_without_scroll, ring, Ink, LayeredCanvas};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
@@ -25,6 +25,11 @@ use crate::ui::router;
 use crate::view::ik2r::{
     elbow_of, extent_m, fmt_fixed, handles, hit_test, joints_on_screen, num, part_at, Grab, ViewXf,
 };
+
+/// The recipes' default arm, drawn with the platform's `f64` functions: its angles are shown
+/// to a tenth of a degree and passed on to the IK page to six decimals, so the correctly
+/// rounded ones (and their 28 KB of wasm) are not needed before the home page's first frame.
+const ARM: Sketch = Sketch(Arm::DEFAULT);
 
 /// The pose it opens with: the IK page's (q1 0.3 rad, q2 0.8 rad, elbow down).
 const START: (f64, f64) = (0.3, 0.8);
@@ -146,7 +151,7 @@ impl HomeArm {
             _ => return false,
         };
         let (q1, q2) = self.pose.get();
-        let (x, y) = Arm::DEFAULT.fk(q1, q2);
+        let (x, y) = ARM.fk(q1, q2);
         self.move_tip(DVec2::new(x, y) + direction * step);
         true
     }
@@ -156,9 +161,9 @@ impl HomeArm {
         let (q1, q2) = self.pose.get();
         let xf = self.xf();
         if kind == PointerKind::Touch {
-            part_at(&xf, &Arm::DEFAULT, q1, q2, at, true)
+            part_at(&xf, &ARM, q1, q2, at, true)
         } else {
-            Some(hit_test(&xf, &Arm::DEFAULT, q1, q2, at, false))
+            Some(hit_test(&xf, &ARM, q1, q2, at, false))
         }
     }
 
@@ -172,7 +177,7 @@ impl HomeArm {
             DragEvent::Tap { at } => self.move_part(Grab::Tip, at),
             DragEvent::Hover(at) => {
                 let (q1, q2) = self.pose.get();
-                let over = part_at(&self.xf(), &Arm::DEFAULT, q1, q2, at, false).is_some();
+                let over = part_at(&self.xf(), &ARM, q1, q2, at, false).is_some();
                 if let Some(d) = self.drag.borrow().as_ref() {
                     d.set_hover_cursor(if over { "grab" } else { "" });
                 }
@@ -184,14 +189,13 @@ impl HomeArm {
     /// The pointer at `at` holds `part`: the tip by IK (pinned to the reach), a link by its
     /// joint angle.
     fn move_part(&self, part: Grab, at: DVec2) {
-        let arm = Arm::DEFAULT;
         let (q1, q2) = self.pose.get();
         let p = self.xf().world(at);
         let next = match part {
             Grab::Tip => return self.move_tip(p),
             Grab::Q1 => (p.y.atan2(p.x), q2),
             Grab::Q2 => {
-                let (ex, ey) = arm.elbow(q1);
+                let (ex, ey) = ARM.elbow(q1);
                 (q1, wrap_angle((p.y - ey).atan2(p.x - ex) - q1))
             }
         };
@@ -200,10 +204,9 @@ impl HomeArm {
 
     /// The tip to world point `p` (m) by IK on the current branch, pinned to the reach.
     fn move_tip(&self, p: DVec2) {
-        let arm = Arm::DEFAULT;
         let (q1, q2) = self.pose.get();
-        let (x, y, _) = arm.clamp_to_reach(p.x, p.y);
-        self.set_pose(arm.ik(x, y, elbow_of(q2)).unwrap_or((q1, q2)));
+        let (x, y, _) = ARM.clamp_to_reach(p.x, p.y);
+        self.set_pose(ARM.ik(x, y, elbow_of(q2)).unwrap_or((q1, q2)));
     }
 
     fn set_pose(&self, next: (f64, f64)) {
@@ -256,12 +259,11 @@ impl HomeArm {
         layer.begin();
         let c = &layer.ctx;
         let ink = Ink::current();
-        let arm = Arm::DEFAULT;
         let (q1, q2) = self.pose.get();
         let xf = self.xf();
         let (w, h) = canvas.size();
         let o = xf.origin();
-        let (inner, outer) = arm.reach();
+        let (inner, outer) = Arm::DEFAULT.reach();
         c.set_fill_style_str(colour::BG);
         c.fill_rect(0.0, 0.0, w, h);
         // The reachable annulus, then the axes through the base.
@@ -279,7 +281,7 @@ impl HomeArm {
         c.line_to(o.x, h);
         c.stroke();
         // Links, joints and the tip.
-        let [base, elbow, tip] = joints_on_screen(&xf, &arm, q1, q2);
+        let [base, elbow, tip] = joints_on_screen(&xf, &ARM, q1, q2);
         c.set_line_cap("round");
         for (a, b, colour) in [(base, elbow, colour::LINK1), (elbow, tip, colour::LINK2)] {
             c.set_stroke_style_str(colour);
@@ -303,7 +305,7 @@ impl HomeArm {
         drop(canvas);
         // The touch handles: the tip, the elbow and both links.
         if let Some(d) = self.drag.borrow().as_ref() {
-            let shapes: Vec<_> = handles(&xf, &arm, q1, q2, true)
+            let shapes: Vec<_> = handles(&xf, &ARM, q1, q2, true)
                 .into_iter()
                 .map(|(_, shape)| shape)
                 .collect();
