@@ -155,15 +155,14 @@ pub const ERROR_SOURCES: &[(Lang, &str, &str)] = &[
     ),
 ];
 
-/// The files every page needs before its first frame: the shell, the page table's titles and
-/// descriptions, the kit, the kernels' errors, the lesson bar and the recipes' texts. A page
+/// The files every page needs before its first frame: the shell (with the lesson bar), the
+/// page table's titles and descriptions, the kit, the kernels' errors and the recipes' texts. A page
 /// names the rest it needs in its `page!` line (its own file, the signal pages' shared one).
 pub const FIRST_FILES: &[&str] = &[
     "shell.ftl",
     "pages.ftl",
     "kit.ftl",
     "errors.ftl",
-    "lesson.ftl",
     "recipes.ftl",
 ];
 

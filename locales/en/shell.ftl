@@ -84,3 +84,16 @@ chain-next-teleop = Fly the Academy's own arm, the SO-101, in 3D next.
 # The offline install's update offer.
 update-ready = A new version of BSV Playground is ready. The page keeps running this one until you reload.
 update-reload = Reload to update
+
+## The lesson bar: "+ Lesson" on every page, and the presenter's bar
+lesson-add = + Lesson
+lesson-add-title = Add this view to the lesson (edit it on the Lesson page)
+lesson-added = Added as step { $count } of the lesson.
+lesson-added-unsaved = Added as step { $count } of the lesson, but this browser's storage is full: the lesson is not saved and lives in this tab only.
+lesson-bar-label = Lesson
+lesson-end = End lesson
+lesson-next = Next →
+lesson-page-steps-left = { $count } page steps before the next lesson step
+lesson-prev = ← Back
+lesson-step = Step
+lesson-untitled = My lesson

@@ -84,3 +84,16 @@ chain-next-teleop = 次はアカデミーのアーム SO-101 を 3D で操縦し
 # The offline install's update offer.
 update-ready = BSV Playground の新しいバージョンを利用できます。再読み込みするまでは、今のバージョンのまま動きます。
 update-reload = 再読み込みして更新
+
+## レッスンバー：すべてのページの「+ レッスン」と、発表中のバー
+lesson-add = + レッスン
+lesson-add-title = この画面をレッスンに追加します（レッスンのページで編集できます）
+lesson-added = レッスンのステップ { $count } として追加しました。
+lesson-added-unsaved = レッスンのステップ { $count } として追加しましたが、このブラウザーの保存領域がいっぱいのため保存されていません。このタブの中だけにあります。
+lesson-bar-label = レッスン
+lesson-end = レッスンを終える
+lesson-next = 次へ →
+lesson-page-steps-left = 次のレッスンステップまで、ページをあと { $count } 回進めます
+lesson-prev = ← 前へ
+lesson-step = ステップ
+lesson-untitled = 私のレッスン

@@ -550,7 +550,7 @@ impl Plot {
             .y_label_area_size(y_label)
             .build_cartesian_2d(spec.x.range.0..spec.x.range.1, y.0..y.1)
             .map_err(err)?;
-        let tick = ("sans-serif", font)
+        let tick = (FontFamily::SansSerif, font)
             .into_font()
             .color(&RGBColor(58, 66, 80));
         let x_fmt = |v: &f64| tick_label(*v, x_step);

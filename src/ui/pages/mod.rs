@@ -45,5 +45,5 @@ pub const PAGES: &[PageDef] = &[
     page!(teleop_page, teleop::TeleopPage, "teleop", "teleop-nav", "teleop-blurb", Nav::Top, ["teleop.ftl"]),
     page!(so101_page, so101::So101Page, "so101", "so101-nav", "so101-blurb", Nav::Top, ["so101.ftl", "teleop.ftl"]),
     page!(drills_page, drills::DrillsPage, DRILLS_ID, "drills-title", "drills-blurb", Nav::Top, ["drills.ftl", "traj.ftl"]),
-    page!(lesson_page, lesson::LessonPage, "lesson", "lesson-title", "lesson-blurb", Nav::Top, []),
+    page!(lesson_page, lesson::LessonPage, "lesson", "lesson-title", "lesson-blurb", Nav::Top, ["lesson.ftl"]),
 ];
