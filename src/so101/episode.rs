@@ -16,7 +16,9 @@ use crate::teleop::episode::{
     mismatch, propose, same_bool, same_f64, FailureCategory, Label, ReplayMismatch,
 };
 use crate::teleop::metrics::EpisodeMetrics;
-use crate::teleop::session::{control_summary, each_event, run_length, run_steps, PracticeEpisode};
+use crate::teleop::session::{
+    control_summary, each_event, run_length, run_steps, PracticeEpisode, Replayable,
+};
 use crate::teleop::sim::{Event, Outcome};
 use crate::teleop::TeleopError;
 
@@ -565,5 +567,29 @@ impl PracticeEpisode for Episode {
 
     fn loaded(l: Loading) -> Self {
         l.recorder.into_episode()
+    }
+}
+
+impl Replayable for Episode {
+    type Sim = Sim;
+
+    fn start_sim(&self) -> Option<Sim> {
+        Sim::new(self.config.clone()).ok()
+    }
+
+    fn reset_sim(sim: &mut Sim) {
+        sim.reset();
+    }
+
+    fn step_sim(&self, sim: &mut Sim, i: usize) -> bool {
+        let Some(c) = self.commands.get(i) else {
+            return false;
+        };
+        sim.step(c);
+        true
+    }
+
+    fn step_events(&self, i: usize) -> &[Event] {
+        self.records.get(i).map_or(&[], |r| r.events.as_slice())
     }
 }

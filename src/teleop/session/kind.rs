@@ -64,6 +64,22 @@ pub trait PracticeEpisode: Clone + PartialEq + std::fmt::Debug + Sized {
     }
 }
 
+/// An episode that can be simulated again step by step (the failure review's replay,
+/// [`crate::view::replay::Replay`]): the arm's simulation at the episode's start state,
+/// stepped with the episode's own commands.
+pub trait Replayable: PracticeEpisode {
+    /// The arm's simulation.
+    type Sim;
+    /// The simulation at the episode's start (`None`: its configuration is refused).
+    fn start_sim(&self) -> Option<Self::Sim>;
+    /// Back to the start state.
+    fn reset_sim(sim: &mut Self::Sim);
+    /// Steps `sim` with command `i` (from 0); `false` when there is no such command.
+    fn step_sim(&self, sim: &mut Self::Sim, i: usize) -> bool;
+    /// The events of step `i` (from 0; none past the end).
+    fn step_events(&self, i: usize) -> &[Event];
+}
+
 /// [`PracticeEpisode::for_each_event`] over records given as `(t_s, events)`, steps from 1.
 pub fn each_event<'a>(
     records: impl Iterator<Item = (f64, &'a [Event])>,
