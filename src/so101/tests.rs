@@ -235,19 +235,19 @@ fn fly(sim: &mut Sim, target: [f64; 3], close: bool, steps: usize, out: &mut Vec
     }
 }
 
+/// Flies the open gripper above the cube, then down around it.
+fn over_the_cube(sim: &mut Sim, out: &mut Vec<Command>) {
+    let cube = sim.state().cube.pos;
+    fly(sim, [cube[0], cube[1], cube[2] + 0.06], false, 200, out);
+    fly(sim, cube, false, 200, out);
+}
+
 fn pick_and_place(config: &SceneConfig) -> Vec<Command> {
     let mut sim = Sim::new(config.clone()).unwrap();
     let mut out = Vec::new();
     let cube = sim.state().cube.pos;
     let goal = config.goal;
-    fly(
-        &mut sim,
-        [cube[0], cube[1], cube[2] + 0.06],
-        false,
-        200,
-        &mut out,
-    );
-    fly(&mut sim, cube, false, 200, &mut out);
+    over_the_cube(&mut sim, &mut out);
     fly(&mut sim, cube, true, 5, &mut out);
     fly(&mut sim, [cube[0], cube[1], 0.1], true, 200, &mut out);
     fly(&mut sim, [goal[0], goal[1], 0.1], true, 250, &mut out);
@@ -413,14 +413,7 @@ fn a_grasp_needs_the_jaws_across_the_cube() {
         let mut sim = Sim::new(config.clone()).unwrap();
         let mut out = Vec::new();
         let cube = sim.state().cube.pos;
-        fly(
-            &mut sim,
-            [cube[0], cube[1], cube[2] + 0.06],
-            false,
-            200,
-            &mut out,
-        );
-        fly(&mut sim, cube, false, 200, &mut out);
+        over_the_cube(&mut sim, &mut out);
         for _ in 0..yaw_steps {
             sim.step(&Command::with_axes([0.0, 0.0, 0.0, 0.0, 0.0, 1.0], false));
         }

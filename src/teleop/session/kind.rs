@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use crate::teleop::episode::{FailureCategory, Label};
 use crate::teleop::metrics::EpisodeMetrics;
+use crate::teleop::recording::{ArmSim, EpisodeOf};
 use crate::teleop::sim::Event;
 
 /// An arm's episode, as a practice session records, stores, exports and reads it back.
@@ -78,6 +79,34 @@ pub trait Replayable: PracticeEpisode {
     fn step_sim(&self, sim: &mut Self::Sim, i: usize) -> bool;
     /// The events of step `i` (from 0; none past the end).
     fn step_events(&self, i: usize) -> &[Event];
+}
+
+/// Every arm's episode replays through its own simulation.
+impl<S: ArmSim> Replayable for EpisodeOf<S>
+where
+    EpisodeOf<S>: PracticeEpisode,
+{
+    type Sim = S;
+
+    fn start_sim(&self) -> Option<S> {
+        S::start(self.config.clone()).ok()
+    }
+
+    fn reset_sim(sim: &mut S) {
+        sim.restart();
+    }
+
+    fn step_sim(&self, sim: &mut S, i: usize) -> bool {
+        let Some(c) = self.commands.get(i) else {
+            return false;
+        };
+        sim.advance(c);
+        true
+    }
+
+    fn step_events(&self, i: usize) -> &[Event] {
+        self.records.get(i).map_or(&[], |r| S::events(r))
+    }
 }
 
 /// [`PracticeEpisode::for_each_event`] over records given as `(t_s, events)`, steps from 1.

@@ -6,7 +6,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::kind::{control_summary, each_event, run_steps, PracticeEpisode, Replayable};
+use super::kind::{control_summary, each_event, run_steps, PracticeEpisode};
 use super::practice::{
     category_from_id, label_from_id, label_id, InputDevice, Module, Preflight, Session,
 };
@@ -337,29 +337,5 @@ impl PracticeEpisode for Episode {
             commands: l.commands,
             records: l.records,
         }
-    }
-}
-
-impl Replayable for Episode {
-    type Sim = Sim;
-
-    fn start_sim(&self) -> Option<Sim> {
-        Sim::new(self.config.clone()).ok()
-    }
-
-    fn reset_sim(sim: &mut Sim) {
-        sim.reset();
-    }
-
-    fn step_sim(&self, sim: &mut Sim, i: usize) -> bool {
-        let Some(c) = self.commands.get(i) else {
-            return false;
-        };
-        sim.step(c);
-        true
-    }
-
-    fn step_events(&self, i: usize) -> &[crate::teleop::sim::Event] {
-        self.records.get(i).map_or(&[], |r| r.events.as_slice())
     }
 }

@@ -14,12 +14,13 @@ use std::rc::Rc;
 use wasm_bindgen::JsValue;
 use web_sys::{Element, HtmlCanvasElement, KeyboardEvent};
 
+use crate::teleop::session::{EpisodeEntry, Replayable};
 use crate::teleop::sim::Event;
 use crate::ui::kit::canvas::{Ink, Layer};
 use crate::ui::kit::stepper::{Speed, StepperOptions, StepperWidget};
 use crate::ui::{ctx, dom};
 use crate::view::palette;
-use crate::view::replay::{AnyReplay, ReplaySteps};
+use crate::view::replay::{AnyReplay, Replay, ReplaySteps};
 
 /// Releases on the timeline (neutral: neither a failure nor a success).
 const GREY: &str = "#4a5360";
@@ -166,7 +167,7 @@ impl Timeline {
 }
 
 /// A replay shared between the review and its page (which draws the replayed state).
-pub type SharedReplay<E> = Rc<RefCell<crate::view::replay::Replay<E>>>;
+pub type SharedReplay<E> = Rc<RefCell<Replay<E>>>;
 
 /// The failure review.
 pub struct Review {
@@ -241,6 +242,20 @@ impl Review {
         }
         self.render_title(n);
         self.timeline.borrow_mut().fit();
+    }
+
+    /// Replays `entry` (episode `n`) from its start state under a new stepper (see
+    /// [`Review::start`]); the replay, shared with the page.
+    pub fn start_entry<E: Replayable + 'static>(
+        &self,
+        n: usize,
+        entry: &EpisodeEntry<E>,
+        on_step: impl Fn() + 'static,
+    ) -> SharedReplay<E> {
+        let first = entry.metrics.first_failure;
+        let replay = Rc::new(RefCell::new(Replay::new(n, entry.episode.clone(), first)));
+        self.start(Box::new(replay.clone()), on_step);
+        replay
     }
 
     /// Drops the replay and its stepper.

@@ -46,7 +46,6 @@ use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
-use crate::view::replay::Replay;
 use crate::view::teleop_input::{key_action, KeyAction};
 
 use controls::{Controls, Ended};
@@ -752,17 +751,12 @@ impl Inner {
             return;
         };
         let me = self.me.clone();
-        let replay = Rc::new(RefCell::new(Replay::new(
-            n,
-            entry.episode.clone(),
-            entry.metrics.first_failure,
-        )));
-        *self.replay.borrow_mut() = Some(replay.clone());
-        self.review.start(Box::new(replay), move || {
+        let replay = self.review.start_entry(n, &entry, move || {
             if let Some(p) = me.upgrade() {
                 p.draw_replay();
             }
         });
+        *self.replay.borrow_mut() = Some(replay);
         self.draw_replay();
     }
 
