@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1245 * KB;
+export const CEILING = 1258 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -40,7 +40,7 @@ export const ROUTE_CEILINGS = {
   'traj-resample': 395,
   'rrt-2d': 506,
   teleop: 446,
-  so101: 427,
+  so101: 467,
   drills: 512,
   lesson: 285,
 };

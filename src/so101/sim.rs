@@ -340,9 +340,9 @@ impl Sim {
     ///    ([`Event::Collision`]);
     /// 6. the gripper: closing with the cube's centre within [`GRASP_TOLERANCE_M`] of the
     ///    tool and the jaws across two of its faces ([`jaw_aligned`]: within
-    ///    [`super::scene::GRASP_ALIGN_DEG`]) grasps it, any other close is a miss; opening lets go ([`Event::Drop`] when
-    ///    the cube is not over the goal and not set down); a released cube falls and rests
-    ///    flat;
+    ///    [`super::scene::GRASP_ALIGN_DEG`]) grasps it, any other close is a miss; opening
+    ///    lets go ([`Event::Drop`] when the cube is not over the goal and not set down); a
+    ///    released cube falls and rests flat;
     /// 7. the cube resting in the goal square for `success_steps` steps is
     ///    [`Event::Success`]; then the time box ([`Event::Timeout`]).
     pub fn step(&mut self, cmd: &Command) -> StepRecord {
