@@ -335,22 +335,26 @@ pub fn ring_grips(camera: &Camera, tool: DVec3) -> [Option<(DVec2, DVec2)>; 3] {
             .iter()
             .map(|p| camera.project(*p))
             .collect();
-        let mut best: Option<(DVec2, DVec2, f64)> = None;
-        for i in 0..RING_POINTS {
-            let (Some(a), Some(b)) = (&ring[i], &ring[(i + 1) % RING_POINTS]) else {
-                continue;
-            };
-            let step = b.at - a.at;
-            let len = step.length();
-            let mid = a.at + step / 2.0;
-            if len < 1.0 || handle_at(camera, tool, mid) != Some(Handle::Turn(k)) {
-                continue;
-            }
-            if best.is_none_or(|(_, _, l)| len > l) {
-                best = Some((mid, step / len, len));
+        // The ring's segments, longest on screen first; the first one only it takes.
+        let mut segments: Vec<(f64, DVec2, DVec2)> = (0..RING_POINTS)
+            .filter_map(|i| {
+                let (Some(a), Some(b)) = (&ring[i], &ring[(i + 1) % RING_POINTS]) else {
+                    return None;
+                };
+                let step = b.at - a.at;
+                let len = step.length();
+                (len >= 1.0).then(|| (len, a.at + step / 2.0, step / len))
+            })
+            .collect();
+        while let Some(i) =
+            (0..segments.len()).reduce(|a, b| if segments[b].0 > segments[a].0 { b } else { a })
+        {
+            let (_, mid, dir) = segments.swap_remove(i);
+            if handle_at(camera, tool, mid) == Some(Handle::Turn(k)) {
+                return Some((mid, dir));
             }
         }
-        best.map(|(at, dir, _)| (at, dir))
+        None
     })
 }
 

@@ -628,13 +628,22 @@ impl Inner {
 
     /// Module `m`: the failure review, or the live arm.
     fn enter_module(&self, m: Module) {
-        self.practice.borrow_mut().session.module = m;
+        let was_review = self.in_review();
+        {
+            let mut p = self.practice.borrow_mut();
+            p.session.module = m;
+            // Back from the review, ready to move.
+            if was_review && m != Module::FailureReview {
+                p.engaged = true;
+            }
+        }
         self.show_module();
+        self.request_frame();
     }
 
     /// The module's part of the page: in the failure review the review (the first episode
-    /// with a failure, else the first, unless one is shown) and no live buttons; elsewhere
-    /// the live arm.
+    /// with a failure, else the first, unless one is shown), no live buttons and the live arm
+    /// paused; elsewhere the live arm (`enter_module` engages it on the way back).
     fn show_module(&self) {
         let review = self.in_review();
         dom::show(&self.live.buttons, !review);
@@ -648,6 +657,8 @@ impl Inner {
             }
             return;
         }
+        // The live arm rests while its episodes are reviewed (no frames, nothing announced).
+        self.practice.borrow_mut().engaged = false;
         if self.practice.borrow().replay.is_some() {
             return;
         }
