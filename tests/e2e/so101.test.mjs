@@ -205,6 +205,27 @@ test('the gizmo: dragging a ring turns the tool about its axis while held (mouse
   }
 });
 
+test('the wrist camera turns with the wrist: its image rolls as wrist_roll does', async () => {
+  const { page, errors, close } = await open();
+  try {
+    const wrist = page.locator('[data-testid="so101-wrist"]');
+    const turned = async () => Number(await wrist.getAttribute('data-roll'));
+    const q5 = async () => (await values(page)).q5;
+    const [roll0, q50] = [await turned(), await q5()];
+    // C turns the tool about z; pointing down, the wrist roll does most of it.
+    await canvas(page).focus();
+    await hold(page, 'c', 400);
+    const [roll1, q51] = [await turned(), await q5()];
+    assert.ok(Math.abs(q51 - q50) > 0.1, `q5 ${q50} → ${q51}`);
+    const wrapped = (a) => Math.atan2(Math.sin(a), Math.cos(a));
+    assert.ok(Math.abs(Math.abs(wrapped(roll1 - roll0)) - Math.abs(q51 - q50)) < 0.1,
+      `image ${roll0} → ${roll1}, q5 ${q50} → ${q51}`);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 /** Records one episode in Record ten (keys held on the canvas, the gripper closed on
  * nothing: a missed grasp) and confirms its proposed label. */
 async function recordEpisode(page, key = 'w', ms = 300) {

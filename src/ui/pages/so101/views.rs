@@ -237,6 +237,11 @@ impl Views {
         let _ = ctx.translate(-camera.width / 2.0, -camera.height / 2.0);
         paint(ctx, &marks, Ink::current());
         ctx.restore();
+        // How far the image is turned, rad (for the page's tests).
+        let turned = format!("{roll:.4}");
+        if layer.canvas.get_attribute("data-roll").as_deref() != Some(turned.as_str()) {
+            let _ = layer.canvas.set_attribute("data-roll", &turned);
+        }
     }
 }
 
