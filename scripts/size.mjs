@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1275 * KB;
+export const CEILING = 1290 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -41,7 +41,7 @@ export const ROUTE_CEILINGS = {
   'traj-resample': 350,
   'rrt-2d': 330,
   teleop: 426,
-  so101: 410,
+  so101: 454,
   drills: 492,
   lesson: 262,
 };

@@ -1,7 +1,7 @@
 # Robot Pilot on the SO-101 (#/so101).
 so101-title = Robot Pilot: SO-101
 so101-lede = The Academy's own arm: TheRobotStudio's SO-101, five joints and a gripper, its kinematics taken from the public SO-ARM100 description and checked against MuJoCo. Each 10 ms step turns your six-axis command into joint motion as Isaac Lab's differential IK controller does in relative pose mode. Press Space to engage, then fly the tool to the blue cube, close the gripper with K, carry the cube into the green square and let go.
-so101-canvas-label = The SO-101 over the table, with the cube, the goal square and, when set, the wall. W/S move the tool along x, A/D along y, Q/E along z; Z/X, T/G, C/V turn it about x, y, z; K opens or closes the gripper, R resets, Space engages or pauses. Drag an arrow or the ring on the tool to move it while you hold it; drag elsewhere to orbit.
+so101-canvas-label = The SO-101 over the table, with the cube, the goal square and, when set, the wall. W/S move the tool along x, A/D along y, Q/E along z; Z/X, T/G, C/V turn it about x, y, z; K opens or closes the gripper, R resets, Space engages or pauses. Drag an arrow or a ring on the tool to move or turn it while you hold it; drag elsewhere to orbit.
 so101-wrist-label = The wrist camera: the scene seen from the gripper, looking along it.
 so101-wrist-caption = Wrist camera: the view from the gripper, as pilots use it to line up a grasp.
 so101-key-x = move the tool along x (forward / back)
@@ -31,7 +31,7 @@ so101-summary-title = Repeatability summary
 so101-field-obstacle = Wall between the cube and the goal
 so101-settings-note = Changing a setting starts a new episode; the one in progress is kept, marked interrupted.
 so101-pad-map = Gamepad (Isaac Lab's Se3Gamepad): left stick x and y, right stick up/down z and left/right yaw, D-pad up/down pitch and left/right roll, X toggles the gripper; dead zone 0.01.
-so101-pointer-map = Touch or mouse: drag a coloured arrow on the tool to move along it, or the purple ring to turn about z; it moves only while you hold it. The buttons engage, open or close the gripper and reset.
+so101-pointer-map = Touch or mouse: drag a coloured arrow on the tool to move along it, or the ring of the same colour to turn about that axis (red x: roll, green y: pitch, blue z: yaw); it moves only while you hold it. The buttons engage, open or close the gripper and reset.
 so101-source = Kinematics: TheRobotStudio SO-ARM100 (Apache-2.0), Simulation/SO101/so101_new_calib.xml at commit fda892c; links drawn as the boxes around their collision meshes.
 so101-state-replay = replaying
 so101-state-ended = ended
@@ -40,3 +40,6 @@ so101-ended-timeout = Time is up. Kept as episode { $n }.
 so101-ended-pilot = Episode ended. Kept as episode { $n }.
 so101-ended-practice = Episode over (practice: not recorded). Go to Record ten to keep your attempts.
 so101-live-pose = Tool at x { $x } mm, y { $y } mm, z { $z } mm; gripper { $gripper }; orientation error { $error }°.
+so101-review-empty = No episode to replay yet: record one in Record ten (or open a saved session), then review it here step by step.
+so101-open-note = To continue or review a saved session, choose its files together: teleop_session_evidence.json, so101_episodes.csv and every so101_episode_<n>.csv.
+so101-grasp-rule = Grasp rule: closing the gripper holds the cube only when the tool frame is within 2 cm of the cube's centre and the jaws close square to it (within 25° of a face); any other close is a missed grasp. Turn the tool with C/V (yaw) to line the jaws up with the cube's sides; the wrist camera turns with the wrist.

@@ -16,6 +16,7 @@ use crate::teleop::episode::{
     mismatch, propose, same_bool, same_f64, FailureCategory, Label, ReplayMismatch,
 };
 use crate::teleop::metrics::EpisodeMetrics;
+use crate::teleop::recording::{arm_sim, EpisodeOf, Recorder};
 use crate::teleop::session::{control_summary, each_event, run_length, run_steps, PracticeEpisode};
 use crate::teleop::sim::{Event, Outcome};
 use crate::teleop::TeleopError;
@@ -65,32 +66,16 @@ pub const COLUMNS: [&str; 35] = [
 /// The largest episode file read, bytes.
 pub const MAX_EPISODE_BYTES: u64 = 96 * 1024 * 1024;
 
-/// One attempt: everything needed to replay it and what it produced.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Episode {
-    /// The config.
-    pub config: SceneConfig,
-    /// The start state.
-    pub start: State,
-    /// The operator's commands, one per step.
-    pub commands: Vec<Command>,
-    /// What each step did.
-    pub records: Vec<StepRecord>,
-}
+/// One SO-101 attempt: its configuration, start state, commands and records
+/// ([`EpisodeOf`] the arm's [`Sim`]).
+pub type Episode = EpisodeOf<Sim>;
 
-impl Episode {
-    /// Runs `commands` from the config's start state (stopping when the episode ends).
-    pub fn record(config: SceneConfig, commands: &[Command]) -> Result<Episode, TeleopError> {
-        let mut r = EpisodeRecorder::new(config)?;
-        for c in commands {
-            if r.sim().done().is_some() {
-                break;
-            }
-            r.step(c);
-        }
-        Ok(r.into_episode())
-    }
+/// Records an episode step by step (the page's live run).
+pub type EpisodeRecorder = Recorder<Sim>;
 
+arm_sim!(Sim, SceneConfig, State, Command, StepRecord, true);
+
+impl EpisodeOf<Sim> {
     /// How the episode ended (`None`: ended by the pilot or interrupted).
     pub fn outcome(&self) -> Option<Outcome> {
         self.records.iter().rev().find_map(|r| {
@@ -152,57 +137,6 @@ impl Episode {
             self.config.noise_sigma,
             self.config.latency_steps,
         )
-    }
-}
-
-/// Records an episode step by step (the page's live run).
-#[derive(Debug, Clone)]
-pub struct EpisodeRecorder {
-    sim: Sim,
-    episode: Episode,
-}
-
-impl EpisodeRecorder {
-    /// A recorder at the config's start state.
-    pub fn new(config: SceneConfig) -> Result<EpisodeRecorder, TeleopError> {
-        let sim = Sim::new(config.clone())?;
-        let episode = Episode {
-            config,
-            start: sim.start_state().clone(),
-            commands: Vec::new(),
-            records: Vec::new(),
-        };
-        Ok(EpisodeRecorder { sim, episode })
-    }
-
-    /// Steps once and keeps the command and the record.
-    pub fn step(&mut self, cmd: &Command) -> StepRecord {
-        let r = self.sim.step(cmd);
-        self.episode.commands.push(cmd.sanitized());
-        self.episode.records.push(r.clone());
-        r
-    }
-
-    /// The simulation.
-    pub fn sim(&self) -> &Sim {
-        &self.sim
-    }
-
-    /// The episode so far.
-    pub fn episode(&self) -> &Episode {
-        &self.episode
-    }
-
-    /// The episode.
-    pub fn into_episode(self) -> Episode {
-        self.episode
-    }
-
-    /// Back to the start, the episode emptied.
-    pub fn reset(&mut self) {
-        self.sim.reset();
-        self.episode.commands.clear();
-        self.episode.records.clear();
     }
 }
 

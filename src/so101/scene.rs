@@ -8,7 +8,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::kinematics::{mat_vec, Chain, Frame, Mat3};
+use super::kinematics::{cross, mat_vec, norm, Chain, Frame, Mat3};
 use super::model::{joint_limits, BODIES, JAW};
 use crate::teleop::control::ControlParams;
 use crate::teleop::scene::{
@@ -28,6 +28,9 @@ pub const GOAL_HALF: f64 = 0.04;
 /// Closing the gripper grasps the cube when its centre is this close to the tool frame's
 /// origin (between the jaws), m.
 pub const GRASP_TOLERANCE_M: f64 = 0.02;
+/// Closing the gripper grasps the cube only when the jaws close across two opposite faces:
+/// the closing direction within this angle of one of the cube's face normals, degrees.
+pub const GRASP_ALIGN_DEG: f64 = 25.0;
 /// A released cube whose bottom is at most this high above what is under it is set down,
 /// not dropped, m.
 pub const PLACE_HEIGHT_M: f64 = 0.005;
@@ -264,4 +267,30 @@ pub fn table_or_obstacle_contact(boxes: &[Obb; 6], obstacle: bool) -> Option<u8>
             || (obstacle && b.overlaps(&wall, CONTACT_SLOP_M));
         hit.then_some(i as u8 + 1)
     })
+}
+
+/// The direction the jaws close along at `chain` (unit): across the gripper's approach (the
+/// tool frame's x axis) and the jaw's hinge axis (its body's z axis).
+pub fn jaw_closing(chain: &Chain) -> [f64; 3] {
+    let col = |m: &Mat3, k: usize| [m[0][k], m[1][k], m[2][k]];
+    let c = cross(&col(&chain.tool.rot, 0), &col(&chain.jaw.rot, 2));
+    let n = norm(&c);
+    if n > 0.0 {
+        [c[0] / n, c[1] / n, c[2] / n]
+    } else {
+        c
+    }
+}
+
+/// Whether the jaws at `chain` close across two opposite faces of a cube of orientation
+/// `cube_rot`: [`jaw_closing`] within [`GRASP_ALIGN_DEG`] of one of its face normals.
+pub fn jaw_aligned(chain: &Chain, cube_rot: &Mat3) -> bool {
+    let close = jaw_closing(chain);
+    let best = (0..3)
+        .map(|k| {
+            (close[0] * cube_rot[0][k] + close[1] * cube_rot[1][k] + close[2] * cube_rot[2][k])
+                .abs()
+        })
+        .fold(0.0, f64::max);
+    best >= GRASP_ALIGN_DEG.to_radians().cos()
 }

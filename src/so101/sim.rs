@@ -15,9 +15,9 @@ use super::kinematics::{
 };
 use super::model::joint_limits;
 use super::scene::{
-    link_boxes, obstacle_box, table_or_obstacle_contact, Obb, SceneConfig, CONTACT_SLOP_M,
-    CUBE_HALF, GOAL_HALF, GRASP_TOLERANCE_M, JAW_CLOSED, JAW_HOLDING, JAW_OPEN, OBSTACLE,
-    PLACE_HEIGHT_M, TABLE_Z,
+    jaw_aligned, link_boxes, obstacle_box, table_or_obstacle_contact, Obb, SceneConfig,
+    CONTACT_SLOP_M, CUBE_HALF, GOAL_HALF, GRASP_TOLERANCE_M, JAW_CLOSED, JAW_HOLDING, JAW_OPEN,
+    OBSTACLE, PLACE_HEIGHT_M, TABLE_Z,
 };
 use crate::rng::NumpyRng;
 use crate::teleop::rules::{
@@ -339,9 +339,10 @@ impl Sim {
     ///    cube at rest, or the carried cube into the table or the obstacle, does not happen
     ///    ([`Event::Collision`]);
     /// 6. the gripper: closing with the cube's centre within [`GRASP_TOLERANCE_M`] of the
-    ///    tool grasps it, closing on nothing is a miss; opening lets go ([`Event::Drop`] when
-    ///    the cube is not over the goal and not set down); a released cube falls and rests
-    ///    flat;
+    ///    tool and the jaws across two of its faces ([`jaw_aligned`]: within
+    ///    [`super::scene::GRASP_ALIGN_DEG`]) grasps it, any other close is a miss; opening
+    ///    lets go ([`Event::Drop`] when the cube is not over the goal and not set down); a
+    ///    released cube falls and rests flat;
     /// 7. the cube resting in the goal square for `success_steps` steps is
     ///    [`Event::Success`]; then the time box ([`Event::Timeout`]).
     pub fn step(&mut self, cmd: &Command) -> StepRecord {
@@ -465,13 +466,15 @@ impl Sim {
             return;
         }
         self.state.gripper_closed = close;
-        let tool = chain(&self.state.q, 0.0).tool;
+        let arm = chain(&self.state.q, 0.0);
+        let tool = arm.tool;
         let obstacle = self.config.obstacle;
         let goal = self.config.goal;
         let cube = &mut self.state.cube;
         if close {
             let d = super::kinematics::sub(&cube.pos, &tool.pos);
-            if super::kinematics::norm(&d) <= GRASP_TOLERANCE_M && !cube.held {
+            let near = super::kinematics::norm(&d) <= GRASP_TOLERANCE_M;
+            if near && jaw_aligned(&arm, &cube.rot) && !cube.held {
                 let rt = transpose(&tool.rot);
                 cube.grasp = Some(Grasp {
                     offset: mat_vec(&rt, &d),

@@ -235,19 +235,19 @@ fn fly(sim: &mut Sim, target: [f64; 3], close: bool, steps: usize, out: &mut Vec
     }
 }
 
+/// Flies the open gripper above the cube, then down around it.
+fn over_the_cube(sim: &mut Sim, out: &mut Vec<Command>) {
+    let cube = sim.state().cube.pos;
+    fly(sim, [cube[0], cube[1], cube[2] + 0.06], false, 200, out);
+    fly(sim, cube, false, 200, out);
+}
+
 fn pick_and_place(config: &SceneConfig) -> Vec<Command> {
     let mut sim = Sim::new(config.clone()).unwrap();
     let mut out = Vec::new();
     let cube = sim.state().cube.pos;
     let goal = config.goal;
-    fly(
-        &mut sim,
-        [cube[0], cube[1], cube[2] + 0.06],
-        false,
-        200,
-        &mut out,
-    );
-    fly(&mut sim, cube, false, 200, &mut out);
+    over_the_cube(&mut sim, &mut out);
     fly(&mut sim, cube, true, 5, &mut out);
     fly(&mut sim, [cube[0], cube[1], 0.1], true, 200, &mut out);
     fly(&mut sim, [goal[0], goal[1], 0.1], true, 250, &mut out);
@@ -402,4 +402,39 @@ fn bad_files_give_errors_not_panics() {
     let cut = &text[..text.len() - 10];
     assert!(parse_episode_csv(cut).is_err());
     assert!(parse_episode_csv(&text.replace("\n0.01,", "\nx,")).is_err());
+}
+
+#[test]
+fn a_grasp_needs_the_jaws_across_the_cube() {
+    // Flown over the cube, then turned about z (yaw) before closing: square to the cube it
+    // grasps; at 45° the jaws would close on its edges, a miss.
+    for (yaw_steps, grasped) in [(0, true), (20, true), (110, false)] {
+        let config = SceneConfig::default_for(false);
+        let mut sim = Sim::new(config.clone()).unwrap();
+        let mut out = Vec::new();
+        let cube = sim.state().cube.pos;
+        over_the_cube(&mut sim, &mut out);
+        for _ in 0..yaw_steps {
+            sim.step(&Command::with_axes([0.0, 0.0, 0.0, 0.0, 0.0, 1.0], false));
+        }
+        let turned = crate::so101::scene::jaw_closing(&sim.chain());
+        let tool = sim.snapshot().tool;
+        let d = crate::so101::kinematics::norm(&crate::so101::kinematics::sub(&cube, &tool));
+        assert!(
+            d <= crate::so101::scene::GRASP_TOLERANCE_M,
+            "yaw steps {yaw_steps}: {d}"
+        );
+        let r = sim.step(&Command::idle(true));
+        let expected = if grasped {
+            Event::Grasp
+        } else {
+            Event::GraspMiss
+        };
+        assert_eq!(
+            r.events,
+            vec![expected],
+            "yaw steps {yaw_steps}: {turned:?}"
+        );
+        assert_eq!(sim.state().cube.held, grasped);
+    }
 }

@@ -21,6 +21,7 @@ use super::arm::ArmParams;
 use super::control::{ControlParams, IkMethod};
 use super::error::TeleopError;
 use super::metrics::EpisodeMetrics;
+use super::recording::{arm_sim, EpisodeOf, Recorder};
 use super::scene::{SceneConfig, Target, Task};
 use super::sim::{Command, Event, Outcome, Sim, State, StepRecord};
 use crate::pyfmt::{push_py_float, py_float};
@@ -57,33 +58,16 @@ pub const COLUMNS: [&str; 21] = [
 /// 15 MB).
 pub const MAX_EPISODE_BYTES: u64 = 64 * 1024 * 1024;
 
-/// One attempt: everything needed to replay it and what it produced.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Episode {
-    /// The scene and controller it ran with.
-    pub config: SceneConfig,
-    /// The state the episode started from.
-    pub start: State,
-    /// The operator's commands, one per step.
-    pub commands: Vec<Command>,
-    /// What each step produced (same length as `commands`).
-    pub records: Vec<StepRecord>,
-}
+/// One attempt of the planar arm: its scene and controller, start state, commands and
+/// records ([`EpisodeOf`] the arm's [`Sim`]).
+pub type Episode = EpisodeOf<Sim>;
 
-impl Episode {
-    /// Runs `commands` from the start of `config` and records the episode; stops early when
-    /// the episode ends (success or timeout).
-    pub fn record(config: SceneConfig, commands: &[Command]) -> Result<Episode, TeleopError> {
-        let mut recorder = EpisodeRecorder::new(config)?;
-        for cmd in commands {
-            if recorder.sim().done().is_some() {
-                break;
-            }
-            recorder.step(cmd);
-        }
-        Ok(recorder.into_episode())
-    }
+/// A [`Sim`] that records every step into an [`Episode`] (nothing once the episode ended).
+pub type EpisodeRecorder = Recorder<Sim>;
 
+arm_sim!(Sim, SceneConfig, State, Command, StepRecord, false);
+
+impl EpisodeOf<Sim> {
     /// How the episode ended (`None`: ended by the pilot or interrupted).
     pub fn outcome(&self) -> Option<Outcome> {
         Outcome::of(&self.records)
@@ -93,62 +77,6 @@ impl Episode {
 /// The figures of `episode`, from its records (no re-simulation; see [`EpisodeMetrics`]).
 pub fn metrics(episode: &Episode) -> EpisodeMetrics {
     EpisodeMetrics::of(&episode.config, &episode.start, &episode.records)
-}
-
-/// A [`Sim`] that records every step into an [`Episode`].
-#[derive(Debug, Clone)]
-pub struct EpisodeRecorder {
-    sim: Sim,
-    episode: Episode,
-}
-
-impl EpisodeRecorder {
-    /// A recorder at the start state of `config`.
-    pub fn new(config: SceneConfig) -> Result<EpisodeRecorder, TeleopError> {
-        let sim = Sim::new(config.clone())?;
-        let episode = Episode {
-            config,
-            start: sim.start_state().clone(),
-            commands: Vec::new(),
-            records: Vec::new(),
-        };
-        Ok(EpisodeRecorder { sim, episode })
-    }
-
-    /// Steps the simulation with `cmd` and records the step (nothing is recorded once the
-    /// episode has ended; the returned record then has no events).
-    pub fn step(&mut self, cmd: &Command) -> StepRecord {
-        let done = self.sim.done().is_some();
-        let record = self.sim.step(cmd);
-        if !done {
-            self.episode.commands.push(cmd.sanitized());
-            self.episode.records.push(record.clone());
-        }
-        record
-    }
-
-    /// The simulation (for drawing and readouts).
-    pub fn sim(&self) -> &Sim {
-        &self.sim
-    }
-
-    /// The episode so far.
-    pub fn episode(&self) -> &Episode {
-        &self.episode
-    }
-
-    /// The recorded episode.
-    pub fn into_episode(self) -> Episode {
-        self.episode
-    }
-
-    /// Starts a new episode from the start state (the recording so far is dropped: take it
-    /// with [`Self::episode`] first).
-    pub fn reset(&mut self) {
-        self.sim.reset();
-        self.episode.commands.clear();
-        self.episode.records.clear();
-    }
 }
 
 /// The episode as `teleop_episode_<n>.csv` (see the module docs): [`episode_csv_head`] then

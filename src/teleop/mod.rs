@@ -21,6 +21,7 @@ pub mod episode;
 pub mod events;
 pub mod metrics;
 pub mod pilot;
+pub mod recording;
 pub mod rules;
 pub mod scene;
 pub mod session;

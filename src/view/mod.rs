@@ -28,6 +28,7 @@ pub mod pendulum;
 pub mod pid_step;
 pub mod plot;
 pub mod progress;
+pub mod replay;
 pub mod rrt;
 pub mod scene3d;
 pub mod se3_relative;

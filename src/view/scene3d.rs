@@ -1,4 +1,5 @@
-//! What a 3D view draws, as plain data: lines, arrows, dots and labels in world coordinates
+//! What a 3D view draws, as plain data: lines, arrows, dots, labels and filled quads (a
+//! box's faces) in world coordinates
 //! (metres, z up), grouped in layers (the ground first, the scene, overlays last), projected
 //! through a [`Camera`] into canvas marks sorted for the painter's algorithm (within a layer,
 //! the farthest mark first). Segments that cross the camera's near plane are clipped there;
@@ -72,6 +73,15 @@ pub enum Shape3 {
         at: DVec3,
         text: String,
     },
+    /// A flat face of a solid, filled with the stroke's colour and outlined with `edge`: its
+    /// corners counter-clockwise seen from outside (a face turned away from the camera is
+    /// left out), sorted by the depth of `sort` (the solid's centre, so that a solid's faces
+    /// are painted together).
+    Quad {
+        corners: [DVec3; 4],
+        edge: &'static str,
+        sort: DVec3,
+    },
 }
 
 /// A shape on the canvas (CSS px).
@@ -94,6 +104,10 @@ pub enum Shape2 {
     Label {
         at: DVec2,
         text: String,
+    },
+    Quad {
+        corners: [DVec2; 4],
+        edge: &'static str,
     },
 }
 
@@ -310,6 +324,30 @@ impl Scene {
                                 to: pb.at,
                             },
                             d,
+                        ));
+                    }
+                }
+                Shape3::Quad {
+                    corners,
+                    edge,
+                    sort,
+                } => {
+                    // A face turned away, or reaching behind the near plane (its solid is
+                    // at the eye), is left out.
+                    let outward = (corners[1] - corners[0]).cross(corners[3] - corners[0]);
+                    if outward.dot(eye - corners[0]) <= 0.0
+                        || corners.iter().any(|c| depth(*c) <= near)
+                    {
+                        continue;
+                    }
+                    let p = corners.map(|c| camera.project(c));
+                    if let [Some(a), Some(b), Some(c), Some(d)] = p {
+                        marks.push(mark(
+                            Shape2::Quad {
+                                corners: [a.at, b.at, c.at, d.at],
+                                edge,
+                            },
+                            depth(*sort),
                         ));
                     }
                 }

@@ -1,15 +1,19 @@
 //! The SO-101 page's pure view model (`#/so101`): the 3D scene of the arm (each link's box
-//! from [`crate::so101::scene`], the table, the cube, the goal square, the obstacle, the tool
-//! frame), the wrist camera (a camera at the tool frame looking along the gripper), the
-//! clutch gizmo on the tool (three translation arrows and a yaw ring: a press on one is a
-//! handle, dragging it commands motion along that axis only while held) and the readout texts.
+//! from [`crate::so101::scene`] drawn as a shaded solid, the table, the cube, the goal
+//! square, the obstacle, the tool frame), the wrist camera (a camera at the tool frame looking along the gripper), the
+//! clutch gizmo on the tool (three translation arrows and three rotation rings, roll about
+//! x, pitch about y, yaw about z: a press on one is a handle, dragging it commands motion
+//! along or about that axis only while held) and the readout texts.
 
 use glam::{DMat3, DVec2, DVec3};
 
 use crate::camera3d::{hit_point, Camera};
 use crate::so101::kinematics::{Chain, Frame};
 use crate::so101::model::joint_limits;
-use crate::so101::scene::{base_box, link_boxes, obstacle_box, Obb, GOAL_HALF, TABLE_Z};
+use crate::so101::scene::{
+    base_box, link_boxes, obstacle_box, Obb, SceneConfig, GOAL_HALF, TABLE_Z,
+};
+use crate::teleop::control::IkMethod;
 use crate::view::scene3d::{AxisPalette, Layer, Scene, Shape3, Stroke};
 
 /// The point the world view looks at and the radius it frames, m.
@@ -18,31 +22,57 @@ pub const VIEW_TARGET: [f64; 3] = [0.15, 0.02, 0.07];
 pub const VIEW_RADIUS: f64 = 0.2;
 /// Gizmo arrow length, m.
 pub const GIZMO_M: f64 = 0.06;
-/// Yaw ring radius, m.
+/// Rotation ring radius, m.
 pub const RING_M: f64 = 0.045;
-/// Points on the yaw ring.
+/// Points on each rotation ring.
 pub const RING_POINTS: usize = 24;
 /// Hit radius of a gizmo handle, CSS px (a 44 px target).
 pub const HIT_PX: f64 = 22.0;
 /// Screen distance of a drag that commands full speed, px.
 pub const FULL_DRAG_PX: f64 = 60.0;
 
-const LINK: Stroke = Stroke::solid("#b7791f", 2.5);
-const BASE: Stroke = Stroke::solid("#6b7280", 2.0);
-const JAW: Stroke = Stroke::solid("#92400e", 2.5);
-const CUBE: Stroke = Stroke::solid("#0072b2", 2.5);
+/// A solid's three shades (lit, side, shadow) by how squarely a face meets the light. The
+/// arm, its base and the wall let a little of what is behind them through (the cube stays
+/// in sight behind the gripper); the cube is opaque.
+type Shades = [&'static str; 3];
+const LINK: Shades = [
+    "rgba(227, 172, 92, 0.82)",
+    "rgba(183, 121, 31, 0.82)",
+    "rgba(122, 79, 18, 0.82)",
+];
+const BASE: Shades = [
+    "rgba(176, 182, 192, 0.82)",
+    "rgba(107, 114, 128, 0.82)",
+    "rgba(71, 76, 86, 0.82)",
+];
+const JAW: Shades = [
+    "rgba(200, 105, 58, 0.82)",
+    "rgba(146, 64, 14, 0.82)",
+    "rgba(95, 42, 9, 0.82)",
+];
+const CUBE: Shades = ["#56a8dc", "#0072b2", "#004d78"];
+const WALL: Shades = [
+    "rgba(243, 148, 73, 0.82)",
+    "rgba(213, 94, 0, 0.82)",
+    "rgba(154, 67, 0, 0.82)",
+];
+/// The cube's outline seen through what stands in front of it.
+const CUBE_SEEN: Stroke = Stroke::dashed("#0072b2", 1.5);
+/// The solids' edges.
+const EDGE: &str = "rgba(15, 23, 42, 0.55)";
+/// Where the light comes from (unit: above, in front and to the side of the arm).
+const LIGHT: [f64; 3] = [0.408, -0.302, 0.862];
 const GOAL: Stroke = Stroke::solid("#009e73", 3.0);
-const WALL: Stroke = Stroke::solid("#d55e00", 2.5);
 const TABLE: Stroke = Stroke::solid("#cbd5e1", 1.0);
-const RING: Stroke = Stroke::solid("#7c3aed", 2.0);
 
-/// A gizmo handle: a translation arrow (0 x, 1 y, 2 z) or the yaw ring.
+/// A gizmo handle: a translation arrow or a rotation ring, about world axis 0 (x, roll),
+/// 1 (y, pitch) or 2 (z, yaw).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Handle {
     /// Along world axis 0, 1 or 2.
     Axis(usize),
-    /// About world z.
-    Yaw,
+    /// About world axis 0, 1 or 2.
+    Turn(usize),
 }
 
 /// What the world view shows.
@@ -74,24 +104,40 @@ fn rot(f: &Frame) -> DMat3 {
     )
 }
 
-/// The twelve edges of a box.
-pub fn box_edges(scene: &mut Scene, b: &Obb, stroke: Stroke) {
+/// A box as six shaded faces (each face's shade from its outward normal against
+/// `LIGHT`; the view leaves out the faces turned away and paints the farther boxes first).
+pub fn box_faces(scene: &mut Scene, b: &Obb, shades: Shades) {
     let c = b.corners();
-    for (i, j) in [
-        (0, 1),
-        (2, 3),
-        (4, 5),
-        (6, 7),
-        (0, 2),
-        (1, 3),
-        (4, 6),
-        (5, 7),
-        (0, 4),
-        (1, 5),
-        (2, 6),
-        (3, 7),
-    ] {
-        scene.line(v(&c[i]), v(&c[j]), stroke);
+    // Corner k has bit 0, 1, 2 set on the + side of the box's x, y, z axis; each face's
+    // corners go counter-clockwise seen from outside.
+    for (axis, bit, others) in [(0, 1, [2, 4]), (1, 2, [4, 1]), (2, 4, [1, 2])] {
+        for side in [0, bit] {
+            let [u, w] = if side == 0 {
+                [others[1], others[0]]
+            } else {
+                others
+            };
+            let idx = [side, side | u, side | u | w, side | w];
+            let sign = if side == 0 { -1.0 } else { 1.0 };
+            let normal = DVec3::new(b.rot[0][axis], b.rot[1][axis], b.rot[2][axis]) * sign;
+            let lit = normal.dot(DVec3::from(LIGHT));
+            let shade = if lit > 0.6 {
+                shades[0]
+            } else if lit > 0.0 {
+                shades[1]
+            } else {
+                shades[2]
+            };
+            scene.push(
+                Layer::Scene,
+                Shape3::Quad {
+                    corners: idx.map(|i| v(&c[i])),
+                    edge: EDGE,
+                    sort: v(&b.centre),
+                },
+                Stroke::solid(shade, 1.0),
+            );
+        }
     }
 }
 
@@ -112,25 +158,61 @@ fn square(scene: &mut Scene, centre: [f64; 2], half: f64, stroke: Stroke) {
     }
 }
 
-/// The arm, the cube, the goal and the wall (what both views show).
-fn things(scene: &mut Scene, look: &Look) {
+/// The twelve edges of a box, in `layer`.
+fn box_edges(scene: &mut Scene, b: &Obb, stroke: Stroke, layer: Layer) {
+    let c = b.corners();
+    for (i, j) in [
+        (0, 1),
+        (2, 3),
+        (4, 5),
+        (6, 7),
+        (0, 2),
+        (1, 3),
+        (4, 6),
+        (5, 7),
+        (0, 4),
+        (1, 5),
+        (2, 6),
+        (3, 7),
+    ] {
+        scene.push(
+            layer,
+            Shape3::Line {
+                a: v(&c[i]),
+                b: v(&c[j]),
+            },
+            stroke,
+        );
+    }
+}
+
+/// The arm, the cube, the goal and the wall (what both views show; the wrist camera, inside
+/// the gripper, sees the gripper and the jaw as outlines).
+fn things(scene: &mut Scene, look: &Look, wrist: bool) {
     square(scene, look.goal, GOAL_HALF, GOAL);
     if look.obstacle {
-        box_edges(scene, &obstacle_box(), WALL);
+        box_faces(scene, &obstacle_box(), WALL);
     }
-    box_edges(scene, &base_box(look.chain), BASE);
+    box_faces(scene, &base_box(look.chain), BASE);
     let boxes = link_boxes(look.chain);
     for (i, b) in boxes.iter().enumerate() {
-        box_edges(scene, b, if i == 5 { JAW } else { LINK });
+        let shades = if i == 5 { JAW } else { LINK };
+        if wrist && i >= 4 {
+            box_edges(scene, b, Stroke::solid(shades[1], 2.0), Layer::Scene);
+        } else {
+            box_faces(scene, b, shades);
+        }
     }
-    box_edges(scene, &look.cube, CUBE);
+    box_faces(scene, &look.cube, CUBE);
+    // The cube's outline over everything: it stays in sight behind the gripper.
+    box_edges(scene, &look.cube, CUBE_SEEN, Layer::Overlay);
 }
 
 /// The world view's scene.
 pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
     scene.clear();
     scene.grid(8, 0.05, TABLE);
-    things(scene, look);
+    things(scene, look, false);
     let tool = &look.chain.tool;
     scene.triad(v(&tool.pos), rot(tool), 0.035, palette, 2.0, None);
     if look.gizmo {
@@ -142,7 +224,7 @@ pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
 pub fn wrist(scene: &mut Scene, look: &Look) {
     scene.clear();
     scene.grid(8, 0.05, TABLE);
-    things(scene, look);
+    things(scene, look, true);
 }
 
 fn gizmo(scene: &mut Scene, at: DVec3, active: Option<Handle>, palette: AxisPalette) {
@@ -162,21 +244,23 @@ fn gizmo(scene: &mut Scene, at: DVec3, active: Option<Handle>, palette: AxisPale
             Stroke::solid(color, width),
         );
     }
-    let ring = ring_points(at);
-    let stroke = if active == Some(Handle::Yaw) {
-        Stroke::solid(RING.color, 4.0)
-    } else {
-        RING
-    };
-    for k in 0..RING_POINTS {
-        scene.push(
-            Layer::Overlay,
-            Shape3::Line {
-                a: ring[k],
-                b: ring[(k + 1) % RING_POINTS],
-            },
-            stroke,
-        );
+    for (k, color) in colors.iter().enumerate() {
+        let width = if active == Some(Handle::Turn(k)) {
+            4.5
+        } else {
+            2.0
+        };
+        let ring = ring_points(at, k);
+        for i in 0..RING_POINTS {
+            scene.push(
+                Layer::Overlay,
+                Shape3::Line {
+                    a: ring[i],
+                    b: ring[(i + 1) % RING_POINTS],
+                },
+                Stroke::solid(color, width),
+            );
+        }
     }
 }
 
@@ -188,17 +272,31 @@ fn axis(k: usize) -> DVec3 {
     }
 }
 
-/// The yaw ring's points about `at`.
-pub fn ring_points(at: DVec3) -> Vec<DVec3> {
+/// The points of the ring about world axis `k` (0 x, 1 y, 2 z) centred on `at`, counter-
+/// clockwise seen from the axis's + side.
+pub fn ring_points(at: DVec3, k: usize) -> Vec<DVec3> {
+    let (u, v) = (axis((k + 1) % 3), axis((k + 2) % 3));
     (0..RING_POINTS)
-        .map(|k| {
-            let a = std::f64::consts::TAU * k as f64 / RING_POINTS as f64;
-            at + DVec3::new(a.cos(), a.sin(), 0.0) * RING_M
+        .map(|i| {
+            let a = std::f64::consts::TAU * i as f64 / RING_POINTS as f64;
+            at + (u * a.cos() + v * a.sin()) * RING_M
         })
         .collect()
 }
 
-/// The handle under `cursor` (CSS px): an arrow's tip or middle first, then the ring.
+/// Distance from `p` to the segment `a`–`b`, px.
+fn segment_distance(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+    let ab = b - a;
+    let t = if ab.length_squared() > 0.0 {
+        ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    p.distance(a + ab * t)
+}
+
+/// The handle under `cursor` (CSS px): an arrow's tip or middle first, then the nearest ring
+/// (each within [`HIT_PX`] of its drawn line: a 44 px target).
 pub fn handle_at(camera: &Camera, tool: DVec3, cursor: DVec2) -> Option<Handle> {
     let mut points = Vec::new();
     for k in 0..3 {
@@ -208,16 +306,62 @@ pub fn handle_at(camera: &Camera, tool: DVec3, cursor: DVec2) -> Option<Handle> 
     if let Some(i) = hit_point(&points, cursor, HIT_PX) {
         return Some(Handle::Axis(i / 2));
     }
-    let ring: Vec<_> = ring_points(tool)
-        .iter()
-        .map(|p| camera.project(*p))
-        .collect();
-    hit_point(&ring, cursor, HIT_PX / 2.0).map(|_| Handle::Yaw)
+    let mut best: Option<(usize, f64)> = None;
+    for k in 0..3 {
+        let ring: Vec<_> = ring_points(tool, k)
+            .iter()
+            .map(|p| camera.project(*p))
+            .collect();
+        for i in 0..RING_POINTS {
+            let (Some(a), Some(b)) = (&ring[i], &ring[(i + 1) % RING_POINTS]) else {
+                continue;
+            };
+            let d = segment_distance(cursor, a.at, b.at);
+            if d <= HIT_PX && best.is_none_or(|(_, bd)| d < bd) {
+                best = Some((k, d));
+            }
+        }
+    }
+    best.map(|(k, _)| Handle::Turn(k))
+}
+
+/// For each ring (about x, y, z): a point of it on screen that only that ring takes (where it
+/// runs longest on screen) and the unit screen direction of a positive turn there; `None`
+/// where no such point is in view. The page writes them on the canvas
+/// (`data-ring-grips`) for its tests.
+pub fn ring_grips(camera: &Camera, tool: DVec3) -> [Option<(DVec2, DVec2)>; 3] {
+    std::array::from_fn(|k| {
+        let ring: Vec<_> = ring_points(tool, k)
+            .iter()
+            .map(|p| camera.project(*p))
+            .collect();
+        // The ring's segments, longest on screen first; the first one only it takes.
+        let mut segments: Vec<(f64, DVec2, DVec2)> = (0..RING_POINTS)
+            .filter_map(|i| {
+                let (Some(a), Some(b)) = (&ring[i], &ring[(i + 1) % RING_POINTS]) else {
+                    return None;
+                };
+                let step = b.at - a.at;
+                let len = step.length();
+                (len >= 1.0).then(|| (len, a.at + step / 2.0, step / len))
+            })
+            .collect();
+        while let Some(i) =
+            (0..segments.len()).reduce(|a, b| if segments[b].0 > segments[a].0 { b } else { a })
+        {
+            let (_, mid, dir) = segments.swap_remove(i);
+            if handle_at(camera, tool, mid) == Some(Handle::Turn(k)) {
+                return Some((mid, dir));
+            }
+        }
+        None
+    })
 }
 
 /// The command axes of a drag of `handle` from `start` to `now` (CSS px) with the tool at
 /// `tool`: along the arrow's screen direction (full speed at [`FULL_DRAG_PX`]), or around the
-/// ring's centre for yaw (counter-clockwise on screen is +yaw when looking from above).
+/// ring's centre for a turn (counter-clockwise on screen is a positive turn when the camera
+/// looks at the ring from its axis's + side; full speed at half a radian).
 pub fn drag_axes(
     camera: &Camera,
     handle: Handle,
@@ -242,16 +386,16 @@ pub fn drag_axes(
             let along = (now - start).dot(dir / len);
             out[k] = (along / FULL_DRAG_PX).clamp(-1.0, 1.0);
         }
-        Handle::Yaw => {
+        Handle::Turn(k) => {
             let (a, b) = (start - c.at, now - c.at);
             if a.length() < 1.0 || b.length() < 1.0 {
                 return out;
             }
             // Screen y points down: a clockwise turn on screen is a positive angle here.
             let turn = (a.x * b.y - a.y * b.x).atan2(a.dot(b));
-            let above = camera.elevation >= 0.0;
-            let sign = if above { -1.0 } else { 1.0 };
-            out[5] = (sign * turn / 0.5).clamp(-1.0, 1.0);
+            let from_plus = (camera.eye() - tool).dot(axis(k)) >= 0.0;
+            let sign = if from_plus { -1.0 } else { 1.0 };
+            out[3 + k.min(2)] = (sign * turn / 0.5).clamp(-1.0, 1.0);
         }
     }
     out
@@ -272,7 +416,7 @@ pub fn world_camera(width: f64, height: f64) -> Camera {
 /// approach direction), `width`×`height` CSS px, 70° vertical field of view.
 pub fn wrist_camera(chain: &Chain, width: f64, height: f64) -> Camera {
     let t = &chain.tool;
-    let ahead = DVec3::new(t.rot[0][0], t.rot[1][0], t.rot[2][0]);
+    let ahead = DVec3::from(wrist_ahead(chain));
     // Back off 1 cm behind the tool frame, between the jaws, so the jaw tips show.
     let eye = v(&t.pos) - ahead * 0.01;
     let distance = 0.1;
@@ -292,6 +436,109 @@ pub fn wrist_camera(chain: &Chain, width: f64, height: f64) -> Camera {
         width,
         height,
     }
+}
+
+/// The settings' keys, in the URL and as the form's `data-field`s.
+pub const SETTING_KEYS: [&str; 6] = [
+    "ik",
+    "latency_ms",
+    "noise",
+    "pos_sensitivity",
+    "rot_sensitivity",
+    "obstacle",
+];
+
+/// `config` with each setting of `pairs` (by [`SETTING_KEYS`]) that reads and keeps the
+/// configuration valid; the others (other keys, unreadable or refused values) leave it as it
+/// was. The latency is in ms, rounded to whole 10 ms steps.
+pub fn apply_settings(config: &SceneConfig, pairs: &[(String, String)]) -> SceneConfig {
+    let mut out = config.clone();
+    for (key, value) in pairs {
+        let value = value.trim();
+        let number = value.parse::<f64>().ok().filter(|v| v.is_finite());
+        let mut next = out.clone();
+        let read = match (key.as_str(), number) {
+            ("ik", _) => match IkMethod::from_id(value) {
+                Some(m) => {
+                    next.control.method = m;
+                    true
+                }
+                None => false,
+            },
+            ("latency_ms", Some(ms)) if (0.0..=10_000.0).contains(&ms) => {
+                next.latency_steps = (ms / 10.0).round() as u32;
+                true
+            }
+            ("noise", Some(v)) => {
+                next.noise_sigma = v;
+                true
+            }
+            ("pos_sensitivity", Some(v)) => {
+                next.pos_sensitivity = v;
+                true
+            }
+            ("rot_sensitivity", Some(v)) => {
+                next.rot_sensitivity = v;
+                true
+            }
+            ("obstacle", _) => match value {
+                "true" | "1" | "yes" => {
+                    next.obstacle = true;
+                    true
+                }
+                "false" | "0" | "no" => {
+                    next.obstacle = false;
+                    true
+                }
+                _ => false,
+            },
+            _ => false,
+        };
+        if read && next.validate().is_ok() {
+            out = next;
+        }
+    }
+    out
+}
+
+/// The settings of `config` as texts, by [`SETTING_KEYS`] (what [`apply_settings`] reads).
+pub fn settings_texts(config: &SceneConfig) -> Vec<(&'static str, String)> {
+    vec![
+        ("ik", config.control.method.id().to_string()),
+        ("latency_ms", (config.latency_steps * 10).to_string()),
+        ("noise", config.noise_sigma.to_string()),
+        ("pos_sensitivity", config.pos_sensitivity.to_string()),
+        ("rot_sensitivity", config.rot_sensitivity.to_string()),
+        ("obstacle", config.obstacle.to_string()),
+    ]
+}
+
+/// The wrist camera's image as drawn: a square camera of the `width`×`height` image's
+/// diagonal at the same scale (so that turning it leaves no corner empty), and the angle
+/// (rad, counter-clockwise on screen) to turn it by about the image's centre so that the
+/// tool's z axis (ahead of the gripper, away from the base at the start pose) points up: the
+/// image rolls with the tool, wrist_roll included, as a camera on the wrist does.
+pub fn wrist_view(chain: &Chain, width: f64, height: f64) -> (Camera, f64) {
+    let base = wrist_camera(chain, width, height);
+    let side = width.hypot(height);
+    let fov_y = 2.0 * ((base.fov_y / 2.0).tan() * side / height.max(1.0)).atan();
+    let camera = Camera {
+        fov_y,
+        width: side,
+        height: side,
+        ..base
+    };
+    let t = &chain.tool;
+    let ahead_up = DVec3::new(t.rot[0][2], t.rot[1][2], t.rot[2][2]);
+    let (right, up, _) = camera.basis();
+    let roll = ahead_up.dot(right).atan2(ahead_up.dot(up));
+    (camera, roll)
+}
+
+/// The gripper's approach direction (the tool frame's x axis), world.
+fn wrist_ahead(chain: &Chain) -> [f64; 3] {
+    let t = &chain.tool;
+    [t.rot[0][0], t.rot[1][0], t.rot[2][0]]
 }
 
 /// A joint's readout: its angle in degrees and its limits, `"12.3° (−110.0…110.0)"`.
@@ -342,9 +589,9 @@ mod tests {
         };
         let mut scene = Scene::new();
         world(&mut scene, &look, AxisPalette::Classic);
-        // Grid (2 × 9 lines), goal 4, wall/base/6 links/cube 9 boxes × 12, triad 3,
-        // gizmo 3 arrows + 24 ring segments.
-        assert_eq!(scene.len(), 18 + 4 + 9 * 12 + 3 + 3 + RING_POINTS);
+        // Grid (2 × 9 lines), goal 4, wall/base/6 links/cube 9 boxes × 6 faces, the cube's
+        // outline 12, triad 3, gizmo 3 arrows + 3 rings of 24 segments.
+        assert_eq!(scene.len(), 18 + 4 + 9 * 6 + 12 + 3 + 3 + 3 * RING_POINTS);
         let camera = world_camera(800.0, 500.0);
         assert!(!scene.project(&camera).is_empty());
     }
@@ -367,6 +614,54 @@ mod tests {
     }
 
     #[test]
+    fn each_ring_is_a_handle_and_turning_it_commands_its_axis_only() {
+        let sim = Sim::new(SceneConfig::default_for(false)).unwrap();
+        let tool = DVec3::from_array(sim.chain().tool.pos);
+        let camera = world_camera(800.0, 500.0);
+        let c = camera.project(tool).unwrap().at;
+        for k in 0..3 {
+            let (u, v) = (axis((k + 1) % 3), axis((k + 2) % 3));
+            let point = |a: f64| tool + (u * a.cos() + v * a.sin()) * RING_M;
+            // Where the rings cross on screen the nearest takes the press: most of each ring
+            // is its own.
+            let own: Vec<f64> = (0..48)
+                .map(|i| std::f64::consts::TAU * i as f64 / 48.0)
+                .filter(|a| {
+                    let at = camera.project(point(*a)).unwrap().at;
+                    handle_at(&camera, tool, at) == Some(Handle::Turn(k))
+                })
+                .collect();
+            assert!(own.len() >= 20, "ring {k}: {} of 48", own.len());
+            let a = own[own.len() / 2];
+            let at = camera.project(point(a)).unwrap().at;
+            // 20 px off the line still takes it (a 44 px target).
+            let off = at + (at - c).normalize() * 20.0;
+            assert!(handle_at(&camera, tool, off).is_some(), "ring {k} +20 px");
+            // Dragging along the ring, in the direction of a positive turn, commands +turn.
+            let ahead = tool + (u * (a + 0.3).cos() + v * (a + 0.3).sin()) * RING_M;
+            let to = camera.project(ahead).unwrap().at;
+            let out = drag_axes(&camera, Handle::Turn(k), tool, at, to);
+            assert!(out[3 + k] > 0.0, "ring {k}: {out:?}");
+            assert_eq!(out.iter().filter(|x| **x != 0.0).count(), 1, "{out:?}");
+            let back = drag_axes(&camera, Handle::Turn(k), tool, to, at);
+            assert!(back[3 + k] < 0.0, "ring {k}: {back:?}");
+        }
+    }
+
+    #[test]
+    fn each_ring_has_a_grip_that_turns_it_the_positive_way() {
+        let sim = Sim::new(SceneConfig::default_for(false)).unwrap();
+        let tool = DVec3::from_array(sim.chain().tool.pos);
+        let camera = world_camera(800.0, 500.0);
+        for (k, grip) in ring_grips(&camera, tool).iter().enumerate() {
+            let (at, dir) = grip.expect("in view");
+            assert_eq!(handle_at(&camera, tool, at), Some(Handle::Turn(k)));
+            let out = drag_axes(&camera, Handle::Turn(k), tool, at, at + dir * 20.0);
+            assert!(out[3 + k] > 0.0, "ring {k}: {out:?}");
+        }
+    }
+
+    #[test]
     fn the_wrist_camera_sees_the_cube_below_the_start_pose() {
         let sim = Sim::new(SceneConfig::default_for(false)).unwrap();
         let chain = sim.chain();
@@ -381,6 +676,126 @@ mod tests {
         assert!(cam
             .project(DVec3::new(chain.tool.pos[0], chain.tool.pos[1], 1.0))
             .is_none());
+    }
+
+    #[test]
+    fn settings_read_back_and_bad_ones_are_left_out() {
+        let base = SceneConfig::default_for(false);
+        let pairs = |p: &[(&str, &str)]| -> Vec<(String, String)> {
+            p.iter()
+                .map(|(k, v)| (k.to_string(), v.to_string()))
+                .collect()
+        };
+        let c = apply_settings(
+            &base,
+            &pairs(&[
+                ("ik", "pinv"),
+                ("latency_ms", "123"),
+                ("noise", "0.25"),
+                ("pos_sensitivity", "1"),
+                ("rot_sensitivity", "1.6"),
+                ("obstacle", "true"),
+            ]),
+        );
+        assert_eq!(c.control.method, IkMethod::Pinv);
+        assert_eq!(c.latency_steps, 12);
+        assert_eq!(
+            (c.noise_sigma, c.pos_sensitivity, c.rot_sensitivity),
+            (0.25, 1.0, 1.6)
+        );
+        assert!(c.obstacle);
+        let texts: Vec<(String, String)> = settings_texts(&c)
+            .into_iter()
+            .map(|(k, v)| (k.to_string(), v))
+            .collect();
+        assert_eq!(apply_settings(&base, &texts), c);
+        let bad = apply_settings(
+            &c,
+            &pairs(&[
+                ("ik", "magic"),
+                ("latency_ms", "NaN"),
+                ("noise", "-1"),
+                ("pos_sensitivity", "1e300"),
+                ("obstacle", "maybe"),
+                ("lang", "ja"),
+            ]),
+        );
+        assert_eq!(bad, c);
+    }
+
+    #[test]
+    fn the_wrist_image_rolls_with_wrist_roll() {
+        let sim = Sim::new(SceneConfig::default_for(false)).unwrap();
+        let mut q = sim.state().q;
+        let roll_at = |q5: f64, q: &mut [f64; 5]| {
+            q[4] = q5;
+            let chain = crate::so101::chain(q, 0.0);
+            let (camera, roll) = wrist_view(&chain, 320.0, 240.0);
+            // Turned by `roll`, the tool's z axis points straight up in the image.
+            let t = &chain.tool;
+            let z = DVec3::new(t.rot[0][2], t.rot[1][2], t.rot[2][2]);
+            let eye = v(&t.pos);
+            let (a, b) = (
+                camera.project(eye + z * 0.0 + DVec3::from(wrist_ahead(&chain)) * 0.05),
+                camera.project(eye + z * 0.02 + DVec3::from(wrist_ahead(&chain)) * 0.05),
+            );
+            let d = b.unwrap().at - a.unwrap().at;
+            let (sin, cos) = roll.sin_cos();
+            // Screen y points down; a counter-clockwise turn by `roll`.
+            let turned = DVec2::new(d.x * cos + d.y * sin, -d.x * sin + d.y * cos);
+            assert!(
+                turned.x.abs() < 1e-6 * d.length().max(1.0) + 1e-6,
+                "{q5}: {turned:?}"
+            );
+            assert!(turned.y < 0.0, "{q5}: {turned:?}");
+            roll
+        };
+        let r0 = roll_at(0.0, &mut q);
+        let r1 = roll_at(0.5, &mut q);
+        assert!(((r1 - r0).abs() - 0.5).abs() < 0.05, "{r0} {r1}");
+        // The square camera keeps the image's scale.
+        let chain = sim.chain();
+        let (square, _) = wrist_view(&chain, 320.0, 240.0);
+        let plain = wrist_camera(&chain, 320.0, 240.0);
+        let p = DVec3::new(chain.tool.pos[0] + 0.01, chain.tool.pos[1] + 0.02, 0.0);
+        let side = 320f64.hypot(240.0);
+        let (a, b) = (square.project(p).unwrap().at, plain.project(p).unwrap().at);
+        let centred = a - DVec2::splat(side / 2.0) + DVec2::new(160.0, 120.0);
+        assert!(centred.distance(b) < 1e-6, "{centred:?} {b:?}");
+    }
+
+    #[test]
+    fn a_box_is_six_faces_facing_out_lit_from_above() {
+        let mut scene = Scene::new();
+        let b = Obb::aligned([0.1, 0.0, 0.05], [0.02, 0.01, 0.03]);
+        box_faces(&mut scene, &b, CUBE);
+        assert_eq!(scene.len(), 6);
+        let camera = world_camera(800.0, 500.0);
+        let marks = scene.project(&camera);
+        // Seen from a corner above, three faces turn towards the camera.
+        assert_eq!(marks.len(), 3);
+        let mut top = None;
+        for m in &marks {
+            let crate::view::scene3d::Shape2::Quad { corners, .. } = &m.shape else {
+                panic!("{m:?}");
+            };
+            // Every face is a real quadrilateral on screen (or edge-on).
+            let area: f64 = (0..4)
+                .map(|i| corners[i].perp_dot(corners[(i + 1) % 4]))
+                .sum::<f64>()
+                / 2.0;
+            assert!(area.is_finite());
+            if area.abs() > 1.0 && m.stroke.color == CUBE[0] {
+                top = Some(m.depth);
+            }
+        }
+        // The top face is the lit one, and the nearer of the two z faces seen from above.
+        assert!(top.is_some());
+        assert_eq!(
+            marks.iter().filter(|m| m.stroke.color == CUBE[0]).count(),
+            1,
+            "{marks:?}"
+        );
     }
 
     #[test]

@@ -9,10 +9,10 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createHash } from 'node:crypto';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { openApp, browser, readouts, screenshots } from './harness.mjs';
+import { openApp, browser, readouts, screenshots, query } from './harness.mjs';
 import { serveAppWithCli, BSV, download } from './cli.mjs';
 import { englishOnPage } from './locales.mjs';
 
@@ -134,7 +134,7 @@ test('a scripted episode: recorded, labelled, exported, replayed by bsv; reload 
     assert.deepEqual(listed, { 'so101_episodes.csv': sha(table), 'so101_episode_1.csv': sha(csv) });
     assert.equal(doc.metrics['failures.operator-abort'], 1);
 
-    // Replay: the view plays the episode back.
+    // Replay: the failure review plays the episode back.
     await page.locator('[data-action="replay"][data-episode="1"]').click();
     assert.equal((await values(page)).state, 'replay');
 
@@ -143,12 +143,319 @@ test('a scripted episode: recorded, labelled, exported, replayed by bsv; reload 
     assert.ok(await page.locator('[data-so101="restored"]').isVisible());
     assert.equal(await page.locator('[data-so101="episodes"] tr').count(), 1);
     assert.match(await page.locator('[data-so101="episodes"] tr').innerText(), /FAILURE/);
-    assert.equal(await page.locator('[data-module="record-ten"]').getAttribute('aria-pressed'), 'true');
+    assert.equal(await page.locator('[data-module="failure-review"]').getAttribute('aria-pressed'), 'true');
+    await page.locator('[data-testid="so101-stepper"]').waitFor({ state: 'visible' });
     const again = await download(page, 'so101_episode_1.csv');
     assert.ok(again.equals(csv), 'the reloaded episode is the same bytes');
     assert.deepEqual(errors, []);
   } finally {
     rmSync(dir, { recursive: true, force: true });
+    await close();
+  }
+});
+
+test('the gizmo: dragging a ring turns the tool about its axis while held (mouse and touch)', async () => {
+  for (const touch of [false, true]) {
+    const { page, errors, close } = await open('#/so101', touch ? { touch: true, viewport: { width: 1024, height: 768 } } : {});
+    try {
+      const grips = async () => (await canvas(page).getAttribute('data-ring-grips')).split('|')
+        .map((g) => (g === '-' ? null : g.split(',').map(Number)));
+      await canvas(page).evaluate((c) => c.scrollIntoView({ block: 'center' }));
+      const box = await canvas(page).boundingBox();
+      // Yaw ring (about z): a drag along it the positive way turns the tool's yaw up; pitch
+      // and roll rings: the tool's orientation changes (or, where five joints cannot follow,
+      // the orientation error shows it).
+      for (const [k, key] of [[2, 'yaw'], [1, 'pitch'], [0, 'roll']]) {
+        const grip = (await grips())[k];
+        assert.ok(grip, `ring ${k} in view`);
+        const [x, y, dx, dy] = grip;
+        const at = { x: box.x + x, y: box.y + y };
+        const before = await values(page);
+        if (touch) {
+          const cdp = await page.context().newCDPSession(page);
+          const touchAt = (p) => [{ x: p.x, y: p.y, id: 1 }];
+          await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: touchAt(at) });
+          for (let i = 1; i <= 6; i++) {
+            await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: touchAt({ x: at.x + dx * 5 * i, y: at.y + dy * 5 * i }) });
+          }
+          await page.waitForTimeout(300);
+          await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+        } else {
+          await page.mouse.move(at.x, at.y);
+          await page.mouse.down();
+          await page.mouse.move(at.x + dx * 30, at.y + dy * 30, { steps: 6 });
+          await page.waitForTimeout(300);
+          await page.mouse.up();
+        }
+        await page.waitForTimeout(100);
+        const after = await values(page);
+        const turned = ['roll', 'pitch', 'yaw'].some((a) => Math.abs(after[a] - before[a]) > 0.01)
+          || after['orientation-error'] > 0.01;
+        assert.ok(turned, `ring ${k} (${touch ? 'touch' : 'mouse'}): ${JSON.stringify({ before, after })}`);
+        if (key === 'yaw') assert.ok(after.yaw > before.yaw + 0.01, `yaw ${before.yaw} → ${after.yaw}`);
+        // Let go: it stops.
+        const held = await values(page);
+        await page.waitForTimeout(200);
+        assert.equal((await values(page))[key], held[key], 'the tool stops when the ring is let go');
+      }
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
+test('the wrist camera turns with the wrist: its image rolls as wrist_roll does', async () => {
+  const { page, errors, close } = await open();
+  try {
+    const wrist = page.locator('[data-testid="so101-wrist"]');
+    const turned = async () => Number(await wrist.getAttribute('data-roll'));
+    const q5 = async () => (await values(page)).q5;
+    const [roll0, q50] = [await turned(), await q5()];
+    // C turns the tool about z; pointing down, the wrist roll does most of it.
+    await canvas(page).focus();
+    await hold(page, 'c', 400);
+    const [roll1, q51] = [await turned(), await q5()];
+    assert.ok(Math.abs(q51 - q50) > 0.1, `q5 ${q50} → ${q51}`);
+    const wrapped = (a) => Math.atan2(Math.sin(a), Math.cos(a));
+    assert.ok(Math.abs(Math.abs(wrapped(roll1 - roll0)) - Math.abs(q51 - q50)) < 0.1,
+      `image ${roll0} → ${roll1}, q5 ${q50} → ${q51}`);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+/** Records one episode in Record ten (keys held on the canvas, the gripper closed on
+ * nothing: a missed grasp) and confirms its proposed label. */
+async function recordEpisode(page, key = 'w', ms = 300) {
+  await canvas(page).focus();
+  await hold(page, key, ms);
+  await page.keyboard.press('k');
+  await page.waitForTimeout(100);
+  await page.locator('[data-action="end-episode"]').click();
+  const panel = page.locator('[data-so101="label-panel"]');
+  await panel.waitFor({ state: 'visible' });
+  await page.locator('[data-action="confirm-label"]').click();
+  await panel.waitFor({ state: 'hidden' });
+  // R starts the next episode.
+  await canvas(page).focus();
+  await page.keyboard.press('r');
+}
+
+const stepper = (page) => page.locator('[data-testid="so101-stepper"]');
+const position = (page) => stepper(page).locator('[data-stepper="position"]').innerText();
+
+test('failure review: a stepper walks the replayed episode, its first failure marked', async () => {
+  const { page, errors, close } = await open();
+  try {
+    // With no episode the review says what it waits for.
+    await page.locator('[data-module="failure-review"]').click();
+    assert.match(await page.locator('[data-so101="review-event"]').innerText(), /No episode to replay yet/);
+    assert.ok(!(await page.locator('[data-action="engage"]').isVisible()), 'the live buttons hide in the review');
+    await page.locator('[data-module="record-ten"]').click();
+    await recordEpisode(page, 'w', 300);
+    const csv = (await download(page, 'so101_episode_1.csv')).toString('utf8').trim().split('\n');
+    const rows = csv.slice(4);
+    const header = csv[3].split(',');
+    const col = (row, name) => Number(row.split(',')[header.indexOf(name)]);
+
+    await page.locator('[data-module="failure-review"]').click();
+    await stepper(page).waitFor({ state: 'visible' });
+    assert.equal((await values(page)).state, 'replay');
+    assert.equal(await position(page), `Step 0 of ${rows.length}`);
+    // The first failure (the missed grasp) is marked on the timeline, at its step.
+    const timeline = page.locator('[data-testid="so101-timeline"]');
+    const first = Number(await timeline.getAttribute('data-first-failure'));
+    const missed = rows.findIndex((r) => r.split(',')[header.indexOf('event')].includes('grasp-miss')) + 1;
+    assert.equal(first, missed);
+    assert.match(await page.locator('[data-so101="review-event"]').innerText(), new RegExp(`step ${missed}`));
+    // End: the readouts are the CSV's last row.
+    await stepper(page).locator('[data-action="end"]').click();
+    const end = await values(page);
+    assert.equal(end.x, col(rows.at(-1), 'x'));
+    assert.equal(end.q1, col(rows.at(-1), 'q1'));
+    // Step back one, then scrub to step 10: the readouts follow the CSV's rows.
+    await stepper(page).locator('[data-action="back"]').click();
+    assert.equal((await values(page)).x, col(rows.at(-2), 'x'));
+    await stepper(page).locator('[data-stepper="scrub"]').fill('10');
+    assert.equal(await position(page), `Step 10 of ${rows.length}`);
+    assert.equal((await values(page)).z, col(rows[9], 'z'));
+    // Keys step it too (the page's stepper keys): Home goes back to the start.
+    await page.locator('h1').click();
+    await page.keyboard.press('Home');
+    assert.equal(await position(page), `Step 0 of ${rows.length}`);
+    await page.keyboard.press('ArrowRight');
+    assert.equal(await position(page), `Step 1 of ${rows.length}`);
+    // Play runs it (then pause).
+    await stepper(page).locator('[data-action="run"]').click();
+    await page.waitForFunction(() => {
+      const el = document.querySelector('[data-testid="so101-stepper"] [data-stepper="position"]');
+      return el && !el.textContent.startsWith('Step 1 of');
+    });
+    await stepper(page).locator('[data-action="run"]').click();
+    // The table's Replay button opens the review of that episode.
+    await page.locator('[data-module="record-ten"]').click();
+    assert.ok(!(await stepper(page).isVisible()));
+    await page.locator('[data-action="replay"][data-episode="1"]').click();
+    assert.equal(await page.locator('[data-module="failure-review"]').getAttribute('aria-pressed'), 'true');
+    assert.match(await page.locator('[data-so101="review-title"]').innerText(), /episode 1/);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('repeatability: a second session beside the first; a reload keeps both', async () => {
+  const { page, errors, close } = await open();
+  try {
+    await page.locator('[data-module="record-ten"]').click();
+    await recordEpisode(page, 'w', 250);
+    await recordEpisode(page, 'q', 250);
+    const cells = async (id) => page.locator(`[data-so101="compare"] tr[data-compare="${id}"] td`).allInnerTexts();
+    assert.deepEqual((await cells('attempted')).slice(1), ['2', '—']);
+    await page.locator('[data-action="second-session"]').click();
+    assert.match(await page.locator('[data-so101="status"]').innerText(), /second session started/i);
+    assert.equal(await page.locator('[data-so101="episodes"] tr').count(), 0);
+    assert.equal(await page.locator('[data-module="record-ten"]').getAttribute('aria-pressed'), 'true');
+    await recordEpisode(page, 'e', 250);
+    assert.deepEqual((await cells('attempted')).slice(1), ['2', '1']);
+    assert.deepEqual((await cells('grasp-miss')).slice(1), ['2', '1']);
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    await page.waitForFunction(() => {
+      const row = document.querySelector('[data-so101="compare"] tr[data-compare="attempted"]');
+      return row && row.children[1].textContent === '2';
+    });
+    assert.deepEqual((await cells('attempted')).slice(1), ['2', '1']);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('saved files open again as a session in the review; a bad set is named and changes nothing', async () => {
+  const first = await open();
+  let files;
+  try {
+    await first.page.locator('[data-module="record-ten"]').click();
+    await recordEpisode(first.page, 'w', 250);
+    files = [
+      { name: 'teleop_session_evidence.json', mimeType: 'application/json', buffer: await download(first.page, 'teleop_session_evidence.json') },
+      { name: 'so101_episodes.csv', mimeType: 'text/csv', buffer: await download(first.page, 'so101_episodes.csv') },
+      { name: 'so101_episode_1.csv', mimeType: 'text/csv', buffer: await download(first.page, 'so101_episode_1.csv') },
+    ];
+  } finally {
+    await first.close();
+  }
+  const { page, errors, close } = await open();
+  try {
+    assert.equal(await page.locator('[data-so101="episodes"] tr').count(), 0);
+    // A bad set: the evidence with a key the format does not allow.
+    const bad = JSON.parse(files[0].buffer.toString('utf8'));
+    bad.operatorMood = 'fine';
+    await page.locator('[data-so101="open"]').setInputFiles([{ ...files[0], buffer: Buffer.from(JSON.stringify(bad)) }, files[1], files[2]]);
+    await page.locator('[data-so101="open-error"]').waitFor({ state: 'visible' });
+    assert.match(await page.locator('[data-so101="open-error"]').innerText(), /operatorMood/);
+    assert.equal(await page.locator('[data-so101="episodes"] tr').count(), 0);
+    // A missing episode file is named.
+    await page.locator('[data-so101="open"]').setInputFiles(files.slice(0, 2));
+    await page.waitForFunction(() => /so101_episode_1\.csv is missing/.test(document.querySelector('[data-so101="open-error"]').textContent));
+    // The good set: the session, in the failure review.
+    await page.locator('[data-so101="open"]').setInputFiles(files);
+    await page.locator('[data-so101="open-error"]').waitFor({ state: 'hidden' });
+    assert.equal(await page.locator('[data-so101="episodes"] tr').count(), 1);
+    assert.match(await page.locator('[data-so101="status"]').innerText(), /saved session is open/);
+    assert.equal(await page.locator('[data-module="failure-review"]').getAttribute('aria-pressed'), 'true');
+    await stepper(page).waitFor({ state: 'visible' });
+    const again = await download(page, 'so101_episode_1.csv');
+    assert.ok(again.equals(files[2].buffer), 'the opened episode is the same bytes');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('storage full while recording: the recording goes on, a warning offers the files (EN/JA)', async () => {
+  const { page, errors, close } = await open();
+  try {
+    await page.locator('[data-module="record-ten"]').click();
+    await page.evaluate(() => {
+      window.__realSetItem = Storage.prototype.setItem;
+      Storage.prototype.setItem = function setItem() {
+        throw new DOMException('The quota has been exceeded.', 'QuotaExceededError');
+      };
+    });
+    const warning = page.locator('[data-testid="storage-warning"]');
+    await recordEpisode(page, 'w', 250);
+    await warning.waitFor({ state: 'visible' });
+    assert.equal(await warning.getAttribute('role'), 'alert');
+    assert.match(await warning.innerText(), /^Not saved: this browser refused to store the session/);
+    await recordEpisode(page, 'q', 250);
+    assert.equal(await page.locator('[data-so101="episodes"] tr').count(), 2);
+    assert.equal(await page.locator('[data-testid="storage-download-table"]').innerText(), 'Download so101_episodes.csv');
+    const saved = async (testid, count) => {
+      const names = [];
+      const arrived = new Promise((resolve) => {
+        const on = (d) => {
+          names.push(d.suggestedFilename());
+          if (names.length === count) {
+            page.off('download', on);
+            resolve();
+          }
+        };
+        page.on('download', on);
+      });
+      await page.locator(`[data-testid="${testid}"]`).click();
+      await arrived;
+      return names.sort();
+    };
+    assert.deepEqual(await saved('storage-download-evidence', 1), ['teleop_session_evidence.json']);
+    assert.deepEqual(await saved('storage-download-table', 1), ['so101_episodes.csv']);
+    assert.deepEqual(await saved('storage-download-episodes', 2), ['so101_episode_1.csv', 'so101_episode_2.csv']);
+    await page.click('[data-testid="lang-switch"]');
+    assert.match(await warning.innerText(), /^保存されていません/);
+    assert.equal(await page.locator('[data-testid="storage-download-episodes"]').innerText(), 'エピソードの CSV（2 件）をダウンロード');
+    await page.click('[data-testid="lang-switch"]');
+    // Storage back: the next save stores everything and the warning goes.
+    await page.evaluate(() => { Storage.prototype.setItem = window.__realSetItem; });
+    await canvas(page).focus();
+    await page.keyboard.press('r');
+    await warning.waitFor({ state: 'hidden' });
+    const back = JSON.parse(await page.evaluate(() => localStorage.getItem('bsv.so101.session')));
+    assert.equal(back.episodes.length, 2);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('the settings are the URL: a link opens them, an edit writes them, bad values are left out', async () => {
+  const { page, errors, close } = await open('#/so101?ik=pinv&latency_ms=50&noise=0.1&pos_sensitivity=1&rot_sensitivity=1.6&obstacle=true');
+  try {
+    const field = (name) => page.locator(`[data-field="${name}"]`);
+    assert.equal(await field('ik').inputValue(), 'pinv');
+    assert.equal(await field('latency_ms').inputValue(), '50');
+    assert.equal(await field('noise').inputValue(), '0.1');
+    assert.equal(await field('pos_sensitivity').inputValue(), '1');
+    assert.equal(await field('rot_sensitivity').inputValue(), '1.6');
+    assert.ok(await field('obstacle').isChecked());
+    await page.locator('.so101-settings summary').click();
+    await field('latency_ms').fill('120');
+    await field('latency_ms').dispatchEvent('change');
+    await page.waitForFunction(() => location.hash.includes('latency_ms=120'));
+    assert.deepEqual(await query(page), {
+      ik: 'pinv', latency_ms: '120', noise: '0.1', pos_sensitivity: '1', rot_sensitivity: '1.6', obstacle: 'true',
+    });
+    // A value the simulation refuses is not taken: the field shows the one in force.
+    await field('noise').fill('7');
+    await field('noise').dispatchEvent('change');
+    assert.equal(await field('noise').inputValue(), '0.1');
+    await page.goto(`${server.url}/#/so101?ik=magic&latency_ms=-5&noise=x`);
+    await page.waitForFunction(() => document.querySelector('[data-field="ik"]')?.value === 'dls');
+    assert.equal(await field('latency_ms').inputValue(), '0');
+    assert.deepEqual(errors, []);
+  } finally {
     await close();
   }
 });

@@ -7,7 +7,7 @@ use serde_json::Value;
 use super::evidence::{check_evidence, sha256_hex, EvidenceProblem, EVIDENCE_NAME};
 use super::kind::PracticeEpisode;
 use super::practice::{InputDevice, Module, Preflight, Session};
-use super::table::{parse_episodes_table, EPISODES_NAME};
+use super::table::{parse_episodes_table, TableRow, EPISODES_NAME};
 
 /// What is wrong with a saved session's files.
 #[derive(Debug, Clone, PartialEq)]
@@ -83,74 +83,12 @@ impl<E: PracticeEpisode> Session<E> {
     /// time series; other files are ignored). Every rule of the evidence is checked, every
     /// CSV's SHA-256 must be the one the evidence lists, and every episode is replayed.
     pub fn from_files(files: &[(String, String)]) -> Result<Session<E>, SessionError> {
-        let get = |name: &str| -> Result<&str, SessionError> {
-            files
-                .iter()
-                .find(|(n, _)| n == name)
-                .map(|(_, t)| t.as_str())
-                .ok_or_else(|| SessionError::MissingFile {
-                    name: name.to_string(),
-                })
-        };
-        let evidence_text = get(EVIDENCE_NAME)?;
-        let evidence: Value =
-            serde_json::from_str(evidence_text).map_err(|e| SessionError::NotJson {
-                file: EVIDENCE_NAME.to_string(),
-                line: e.line(),
-                column: e.column(),
-            })?;
-        check_evidence(&evidence).map_err(|problem| SessionError::Evidence { problem })?;
-        let listed = |name: &str| -> Option<String> {
-            evidence["dataArtifacts"].as_array().and_then(|a| {
-                a.iter()
-                    .find(|x| x["uriOrRef"].as_str() == Some(name))
-                    .and_then(|x| x["sha256"].as_str())
-                    .map(str::to_string)
-            })
-        };
-        let check_sha = |name: &str, text: &str| -> Result<(), SessionError> {
-            match listed(name) {
-                Some(sha) if sha == sha256_hex(text.as_bytes()) => Ok(()),
-                Some(_) => Err(SessionError::Sha256Mismatch {
-                    name: name.to_string(),
-                }),
-                None => Err(SessionError::NotListed {
-                    name: name.to_string(),
-                }),
-            }
-        };
-        let table_name = E::episodes_name();
-        let table = get(&table_name)?;
-        check_sha(&table_name, table)?;
-        let device = evidence["inputDevice"]
-            .as_str()
-            .and_then(InputDevice::from_id)
-            .ok_or(SessionError::Evidence {
-                problem: EvidenceProblem::Value {
-                    field: "inputDevice".into(),
-                },
-            })?;
-        let mut session = Session::new(
-            evidence["pilotId"].as_str().unwrap_or(""),
-            device,
-            evidence["startedAt"].as_str().unwrap_or(""),
-        );
+        let opened = open_checked(files, &E::episodes_name(), &E::episode_file_name)?;
+        let mut session = Session::new(&opened.pilot_id, opened.device, &opened.started_at);
         session.module = Module::FailureReview;
-        session.preflight = Preflight {
-            moved: evidence["metrics"]["preflightDeviceMoved"]
-                .as_bool()
-                .unwrap_or(false),
-            reset_verified: evidence["metrics"]["preflightResetVerified"].as_bool(),
-        };
-        session.ended_at = evidence["endedAt"].as_str().map(str::to_string);
-        let rows = parse_episodes_table(table).map_err(|cell| SessionError::Table {
-            row: cell.row,
-            column: cell.column,
-        })?;
-        for row in rows {
-            let name = E::episode_file_name(row.number);
-            let text = get(&name)?;
-            check_sha(&name, text)?;
+        session.preflight = opened.preflight;
+        session.ended_at = opened.ended_at;
+        for (row, (name, text)) in opened.rows.into_iter().zip(opened.episodes) {
             let episode = E::parse_csv(text).map_err(|detail| SessionError::Episode {
                 file: name.clone(),
                 detail,
@@ -167,4 +105,97 @@ impl<E: PracticeEpisode> Session<E> {
         }
         Ok(session)
     }
+}
+
+/// What a session's files say once checked, whatever the arm (one copy of this code): the
+/// session's fields from the evidence, the episodes table's rows and each row's episode file
+/// (name and text), its SHA-256 the one the evidence lists.
+struct Opened<'a> {
+    pilot_id: String,
+    device: InputDevice,
+    started_at: String,
+    ended_at: Option<String>,
+    preflight: Preflight,
+    rows: Vec<TableRow>,
+    episodes: Vec<(String, &'a str)>,
+}
+
+/// Checks the evidence, the table `table_name` and the presence and SHA-256 of every episode
+/// file (named by `episode_name`).
+fn open_checked<'a>(
+    files: &'a [(String, String)],
+    table_name: &str,
+    episode_name: &dyn Fn(usize) -> String,
+) -> Result<Opened<'a>, SessionError> {
+    let get = |name: &str| -> Result<&'a str, SessionError> {
+        files
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, t)| t.as_str())
+            .ok_or_else(|| SessionError::MissingFile {
+                name: name.to_string(),
+            })
+    };
+    let evidence_text = get(EVIDENCE_NAME)?;
+    let evidence: Value =
+        serde_json::from_str(evidence_text).map_err(|e| SessionError::NotJson {
+            file: EVIDENCE_NAME.to_string(),
+            line: e.line(),
+            column: e.column(),
+        })?;
+    check_evidence(&evidence).map_err(|problem| SessionError::Evidence { problem })?;
+    let listed = |name: &str| -> Option<String> {
+        evidence["dataArtifacts"].as_array().and_then(|a| {
+            a.iter()
+                .find(|x| x["uriOrRef"].as_str() == Some(name))
+                .and_then(|x| x["sha256"].as_str())
+                .map(str::to_string)
+        })
+    };
+    let check_sha = |name: &str, text: &str| -> Result<(), SessionError> {
+        match listed(name) {
+            Some(sha) if sha == sha256_hex(text.as_bytes()) => Ok(()),
+            Some(_) => Err(SessionError::Sha256Mismatch {
+                name: name.to_string(),
+            }),
+            None => Err(SessionError::NotListed {
+                name: name.to_string(),
+            }),
+        }
+    };
+    let table = get(table_name)?;
+    check_sha(table_name, table)?;
+    let device = evidence["inputDevice"]
+        .as_str()
+        .and_then(InputDevice::from_id)
+        .ok_or(SessionError::Evidence {
+            problem: EvidenceProblem::Value {
+                field: "inputDevice".into(),
+            },
+        })?;
+    let rows = parse_episodes_table(table).map_err(|cell| SessionError::Table {
+        row: cell.row,
+        column: cell.column,
+    })?;
+    let mut episodes = Vec::with_capacity(rows.len());
+    for row in &rows {
+        let name = episode_name(row.number);
+        let text = get(&name)?;
+        check_sha(&name, text)?;
+        episodes.push((name, text));
+    }
+    Ok(Opened {
+        pilot_id: evidence["pilotId"].as_str().unwrap_or("").to_string(),
+        device,
+        started_at: evidence["startedAt"].as_str().unwrap_or("").to_string(),
+        ended_at: evidence["endedAt"].as_str().map(str::to_string),
+        preflight: Preflight {
+            moved: evidence["metrics"]["preflightDeviceMoved"]
+                .as_bool()
+                .unwrap_or(false),
+            reset_verified: evidence["metrics"]["preflightResetVerified"].as_bool(),
+        },
+        rows,
+        episodes,
+    })
 }

@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use crate::teleop::episode::{FailureCategory, Label};
 use crate::teleop::metrics::EpisodeMetrics;
+use crate::teleop::recording::{ArmSim, EpisodeOf};
 use crate::teleop::sim::Event;
 
 /// An arm's episode, as a practice session records, stores, exports and reads it back.
@@ -61,6 +62,50 @@ pub trait PracticeEpisode: Clone + PartialEq + std::fmt::Debug + Sized {
     /// `<prefix>_episode_<n>.csv`.
     fn episode_file_name(n: usize) -> String {
         format!("{}_episode_{n}.csv", Self::FILE_PREFIX)
+    }
+}
+
+/// An episode that can be simulated again step by step (the failure review's replay,
+/// [`crate::view::replay::Replay`]): the arm's simulation at the episode's start state,
+/// stepped with the episode's own commands.
+pub trait Replayable: PracticeEpisode {
+    /// The arm's simulation.
+    type Sim;
+    /// The simulation at the episode's start (`None`: its configuration is refused).
+    fn start_sim(&self) -> Option<Self::Sim>;
+    /// Back to the start state.
+    fn reset_sim(sim: &mut Self::Sim);
+    /// Steps `sim` with command `i` (from 0); `false` when there is no such command.
+    fn step_sim(&self, sim: &mut Self::Sim, i: usize) -> bool;
+    /// The events of step `i` (from 0; none past the end).
+    fn step_events(&self, i: usize) -> &[Event];
+}
+
+/// Every arm's episode replays through its own simulation.
+impl<S: ArmSim> Replayable for EpisodeOf<S>
+where
+    EpisodeOf<S>: PracticeEpisode,
+{
+    type Sim = S;
+
+    fn start_sim(&self) -> Option<S> {
+        S::start(self.config.clone()).ok()
+    }
+
+    fn reset_sim(sim: &mut S) {
+        sim.restart();
+    }
+
+    fn step_sim(&self, sim: &mut S, i: usize) -> bool {
+        let Some(c) = self.commands.get(i) else {
+            return false;
+        };
+        sim.advance(c);
+        true
+    }
+
+    fn step_events(&self, i: usize) -> &[Event] {
+        self.records.get(i).map_or(&[], |r| S::events(r))
     }
 }
 

@@ -24,7 +24,7 @@ pub use evidence::{
     EPISODE_TYPE, EVIDENCE_KEYS, EVIDENCE_NAME, RUNTIME, TABLE_TYPE,
 };
 pub use files::SessionError;
-pub use kind::{control_summary, each_event, run_steps, PracticeEpisode};
+pub use kind::{control_summary, each_event, run_steps, PracticeEpisode, Replayable};
 pub use practice::{
     category_from_id, clean_pilot_id, compare, label_from_id, label_id, ComparisonRow,
     EpisodeEntry, InputDevice, Module, Preflight, Session, Summary, CATEGORIES, PILOT_ID_MAX,

@@ -247,6 +247,21 @@ impl<E: PracticeEpisode> Session<E> {
         n
     }
 
+    /// Repeatability: this session gives way to a second one for the same pilot and device,
+    /// started at `now` with the preflight carried over (its module is the page's to enter);
+    /// the first is returned, ended at `now` unless it had ended. `None` (nothing changes)
+    /// when it has no episodes.
+    pub fn start_second(&mut self, now: &str) -> Option<Session<E>> {
+        if self.episodes.is_empty() {
+            return None;
+        }
+        let mut second = Session::new(&self.pilot_id, self.input_device, now);
+        second.preflight = self.preflight;
+        let mut first = std::mem::replace(self, second);
+        first.ended_at.get_or_insert_with(|| now.to_string());
+        Some(first)
+    }
+
     /// The first episode the pilot has not labelled yet.
     pub fn unlabelled(&self) -> Option<usize> {
         self.episodes
@@ -301,6 +316,14 @@ fn mean(values: impl Iterator<Item = f64>) -> Option<f64> {
 }
 
 impl Summary {
+    /// The figures of no episode (every category counted 0).
+    pub fn empty() -> Summary {
+        Summary {
+            by_category: CATEGORIES.iter().map(|c| (*c, 0)).collect(),
+            ..Summary::default()
+        }
+    }
+
     /// The figures of `episodes`.
     pub fn of<E: PracticeEpisode>(episodes: &[EpisodeEntry<E>]) -> Summary {
         let count = |f: &dyn Fn(&EpisodeEntry<E>) -> bool| episodes.iter().filter(|e| f(e)).count();

@@ -613,3 +613,9 @@ mod academy_schema {
         assert!(!validator().is_valid(&doc));
     }
 }
+
+#[test]
+fn the_empty_summary_is_the_summary_of_no_episode() {
+    assert_eq!(Summary::empty(), Summary::of::<crate::teleop::Episode>(&[]));
+    assert_eq!(Summary::empty(), Summary::of::<crate::so101::Episode>(&[]));
+}

@@ -6,7 +6,8 @@
 //! - [`scope`]: listeners, timers, the frame loop and observers of a page, removed on drop.
 //! - [`url_state`]: a page's state in the URL (read, debounced write, notice of ignored keys).
 //! - [`keymap`]: the app's one keymap and the focus rule for page keys.
-//! - [`stepper`]: step / back / play / scrub toolbar over a page's model.
+//! - [`stepper`]: step / back / play / scrub toolbar over a page's model; [`review`]: the
+//!   Robot Pilot pages' failure review (a replayed episode under the stepper, its timeline).
 //! - [`png`]: PNG export of any canvas.
 //! - [`canvas`]: HiDPI layered canvases, resize watch, projector ink (line/type scale).
 //! - [`frame`]: the one animation-frame loop (dirty flags, requests, animation), made by the
@@ -20,6 +21,8 @@
 //! - [`recipe_controls`]: form + sliders + URL + exports of a page that runs one recipe live;
 //!   [`signal_page`]: the shell of such a page that plots the recipe's table (markup, mount,
 //!   language/projector/resize, the plot with its drags, cursor and PNG).
+//! - [`pilot_session`]: the Robot Pilot pages' repeatability table, storage-full warning and
+//!   saved-files opener.
 //! - [`store`]: a page's work in localStorage: unreadable text moved aside, refused saves
 //!   reported.
 //! - [`input_file`]: a file the user opens or drops, decoded as the CLI decodes it.
@@ -40,11 +43,13 @@ pub mod keymap;
 pub mod message_line;
 pub mod orbit;
 pub mod page_root;
+pub mod pilot_session;
 pub mod plot;
 pub mod png;
 pub mod progress;
 pub mod readouts;
 pub mod recipe_controls;
+pub mod review;
 pub mod scope;
 pub mod signal_page;
 pub mod stepper;

@@ -750,6 +750,19 @@ pub fn paint(ctx: &CanvasRenderingContext2d, marks: &[Mark], ink: Ink) {
                 let _ = ctx.arc(at.x, at.y, radius_px * ink.line, 0.0, std::f64::consts::TAU);
                 ctx.fill();
             }
+            Shape2::Quad { corners, edge } => {
+                ctx.begin_path();
+                ctx.move_to(corners[0].x, corners[0].y);
+                for c in &corners[1..] {
+                    ctx.line_to(c.x, c.y);
+                }
+                ctx.close_path();
+                ctx.fill();
+                ctx.set_stroke_style_str(edge);
+                ctx.stroke();
+                // The edge changed the stroke: set it again for the next mark.
+                color = "";
+            }
             Shape2::Label { at, text } => {
                 ctx.set_font(&label_font);
                 // A white halo keeps the label readable over lines.

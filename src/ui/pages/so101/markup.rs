@@ -1,19 +1,28 @@
-//! The page's markup: heading, introduction and disclaimer, the module bar and the device
-//! choice, the world view's slot (the gamepad offer and the episode's outcome over it) beside
-//! the wrist camera, the arm's buttons, the readouts and the orientation sentence, the label
-//! panel, the episodes with their downloads and the repeatability summary, the settings and
-//! the key map. Every text is a Fluent id (`data-i18n`), filled by the shell.
+//! The page's markup: heading, introduction and disclaimer, the storage warning, the module
+//! bar and the device choice, the world view's slot (the gamepad offer and the episode's
+//! outcome over it) beside the wrist camera, the arm's buttons, the failure review, the
+//! readouts and the orientation sentence, the label panel, the episodes with their downloads,
+//! the file opener and the summary, the repeatability table, the settings and the key map.
+//! Every text is a Fluent id (`data-i18n`), filled by the shell.
 
 use crate::so101::episode::Episode;
 use crate::teleop::session::{InputDevice, Module, PracticeEpisode, CATEGORIES, EVIDENCE_NAME};
 use crate::teleop::Label;
 use crate::ui::kit::keymap::key;
 use crate::ui::kit::readouts;
+use crate::ui::kit::review::ReviewIds;
 use crate::ui::page::Shortcut;
 use crate::view::teleop::IK_IDS;
 
 /// Class and `data-` prefix of the page.
 pub const P: &str = "so101";
+
+/// Where the failure review lives.
+pub const REVIEW: ReviewIds = ReviewIds {
+    attr: "so101",
+    stepper: "so101-stepper",
+    timeline: "so101-timeline",
+};
 
 /// The page's keys (Isaac Lab's Se3Keyboard).
 pub const KEYS: &[Shortcut] = &[
@@ -94,13 +103,14 @@ fn views() -> String {
          <canvas data-testid=\"so101-wrist\" role=\"img\" aria-describedby=\"so101-readouts\" data-i18n-attr=\"aria-label=so101-wrist-label\"></canvas>\
          </div><figcaption data-i18n=\"so101-wrist-caption\"></figcaption></figure>\
          </div>\
-         <div class=\"so101-buttons\" data-so101=\"live-buttons\">{engage}{gripper}{reset}{end}</div>",
+         <div class=\"so101-buttons\" data-so101=\"live-buttons\">{engage}{gripper}{reset}{end}</div>{review}",
         use_pad = button("use-gamepad", "teleop-pad-offer-use"),
         dismiss = button("dismiss-gamepad", "teleop-pad-offer-dismiss"),
         engage = button("engage", "teleop-engage"),
         gripper = button("gripper", "teleop-gripper-close-button"),
         reset = button("reset", "teleop-reset"),
         end = button("end-episode", "teleop-end-episode"),
+        review = crate::ui::kit::review::markup(REVIEW),
     )
 }
 
@@ -152,8 +162,20 @@ fn episodes() -> String {
          <p class=\"so101-downloads\">\
          <button type=\"button\" class=\"tool-button\" data-download=\"{table}\">{table}</button>\
          <button type=\"button\" class=\"tool-button\" data-download=\"{EVIDENCE_NAME}\">{EVIDENCE_NAME}</button>\
-         </p><h3 data-i18n=\"so101-summary-title\"></h3>\
-         <dl class=\"so101-summary\" data-so101=\"summary\"></dl></section>"
+         <label class=\"tool-button so101-open\"><span data-i18n=\"teleop-open\"></span>\
+         <input type=\"file\" multiple accept=\".json,.csv,application/json,text/csv\" data-so101=\"open\" class=\"kit-visually-hidden\"></label>\
+         </p><p class=\"so101-help\" data-i18n=\"so101-open-note\"></p>\
+         <p class=\"so101-error\" data-so101=\"open-error\" role=\"alert\" hidden></p>\
+         <p class=\"so101-help\" data-so101=\"status\" role=\"status\"></p>\
+         <h3 data-i18n=\"so101-summary-title\"></h3>\
+         <dl class=\"so101-summary\" data-so101=\"summary\"></dl></section>\
+         <section class=\"so101-repeat\" data-so101=\"repeat\"><h2 data-i18n=\"teleop-repeat-title\"></h2>\
+         <p class=\"so101-help\" data-i18n=\"teleop-repeat-note\"></p>\
+         <p class=\"so101-downloads\">{second}</p>\
+         <div class=\"so101-scroll\"><table class=\"so101-table\" data-so101=\"compare\"><thead><tr>\
+         <th scope=\"col\" data-i18n=\"teleop-col-figure\"></th><th scope=\"col\" data-i18n=\"teleop-col-first-session\"></th>\
+         <th scope=\"col\" data-i18n=\"teleop-col-second-session\"></th></tr></thead><tbody></tbody></table></div></section>",
+        second = button("second-session", "teleop-second-session"),
     )
 }
 
@@ -166,9 +188,11 @@ fn settings() -> String {
         "<details class=\"so101-settings\"><summary data-i18n=\"teleop-settings-title\"></summary>\
          <form data-so101=\"settings\" novalidate>\
          <label><span data-i18n=\"teleop-field-pilot\"></span><input type=\"text\" data-field=\"pilot\" maxlength=\"64\"></label>\
-         <label><span data-i18n=\"teleop-field-ik\"></span><select data-field=\"method\">{methods}</select></label>\
+         <label><span data-i18n=\"teleop-field-ik\"></span><select data-field=\"ik\">{methods}</select></label>\
          <label><span data-i18n=\"teleop-field-latency_ms\"></span><input type=\"number\" data-field=\"latency_ms\" min=\"0\" max=\"500\" step=\"10\" value=\"0\"></label>\
-         <label><span data-i18n=\"teleop-field-noise\"></span><input type=\"number\" data-field=\"noise_sigma\" min=\"0\" max=\"1\" step=\"0.05\" value=\"0\"></label>\
+         <label><span data-i18n=\"teleop-field-noise\"></span><input type=\"number\" data-field=\"noise\" min=\"0\" max=\"1\" step=\"0.05\" value=\"0\"></label>\
+         <label><span data-i18n=\"teleop-field-pos_sensitivity\"></span><input type=\"number\" data-field=\"pos_sensitivity\" min=\"0.05\" max=\"4\" step=\"0.05\"></label>\
+         <label><span data-i18n=\"teleop-field-rot_sensitivity\"></span><input type=\"number\" data-field=\"rot_sensitivity\" min=\"0.05\" max=\"4\" step=\"0.05\"></label>\
          <label class=\"so101-check-label\"><input type=\"checkbox\" data-field=\"obstacle\"><span data-i18n=\"so101-field-obstacle\"></span></label>\
          <p class=\"so101-help\" data-i18n=\"so101-settings-note\"></p>\
          </form></details>"
@@ -199,10 +223,17 @@ pub fn page() -> String {
          <p class=\"so101-lede\" data-i18n=\"so101-lede\"></p>\
          <p class=\"so101-disclaimer\" data-i18n=\"teleop-disclaimer\"></p>\
          <p class=\"so101-notice\" data-so101=\"restored\" data-i18n=\"teleop-restored\" hidden></p>\
-         {modules}{views}\
+         {storage}{modules}{views}\
          <section class=\"so101-readouts\"><h2 data-i18n=\"teleop-readouts-title\"></h2>{ro}\
-         <p class=\"so101-why\" data-so101=\"orientation-why\" data-i18n=\"so101-orientation-why\"></p></section>\
+         <p class=\"so101-why\" data-so101=\"orientation-why\" data-i18n=\"so101-orientation-why\"></p>\
+         <p class=\"so101-why\" data-so101=\"grasp-rule\" data-i18n=\"so101-grasp-rule\"></p></section>\
          {labels}{episodes}{settings}{keys}{live}</div>",
+        storage = crate::ui::kit::pilot_session::storage_warning_markup(
+            &Episode::episodes_name(),
+            "so101-notice so101-warning",
+            "so101-downloads",
+            "tool-button",
+        ),
         modules = modules(),
         views = views(),
         ro = readouts::markup(P, &READOUTS),

@@ -5,10 +5,13 @@
 //! simulator: not a safety-rated controller, and not NVIDIA software.
 //!
 //! Components, one file each: `markup`, `devices` (keys, gamepad, gizmo clutch), `practice`
-//! (the session and the episode being recorded), `session_view` (modules, label panel,
-//! episodes table, summary) and `views` (the kit's orbit view of the world and the wrist
-//! camera). This file wires them: mount, events, the frame loop (a fixed 100 Hz simulation
-//! whatever the display rate, `crate::view::teleop_input::Accumulator`), storage.
+//! (the session, the first session and the episode being recorded), `session_view` (modules,
+//! label panel, episodes table, summary, repeatability table, storage warning) and `views`
+//! (the kit's orbit view of the world and the wrist camera), with the kit's failure review
+//! (`crate::ui::kit::review`). This file wires them: mount, events, the frame loop (a fixed
+//! 100 Hz simulation whatever the display rate, `crate::view::teleop_input::Accumulator`),
+//! the settings in the URL, the saved-files opener, storage (a refused save leaves the
+//! session in memory, said by the storage warning).
 
 mod devices;
 mod markup;
@@ -26,25 +29,28 @@ use web_sys::{Element, Event as DomEvent, HtmlInputElement, HtmlSelectElement, K
 use crate::so101::input::{key_action, press, KeyAction};
 use crate::so101::sim::Command;
 use crate::so101::{Episode, SceneConfig};
-use crate::teleop::control::IkMethod;
+use crate::teleop::session::PracticeEpisode;
 use crate::teleop::session::{
     category_from_id, clean_pilot_id, label_from_id, InputDevice, Module, Session, SessionLoader,
 };
 use crate::ui::kit::bench_log::push_ms;
 use crate::ui::kit::drag::DragEvent;
 use crate::ui::kit::frame::FrameLoop;
+use crate::ui::kit::pilot_session::{clear_files, read_files, EPISODE_CSVS};
 use crate::ui::kit::readouts::Readouts;
+use crate::ui::kit::review::Review;
 use crate::ui::kit::scope::Scope;
+use crate::ui::kit::store;
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
-use crate::view::so101::{drag_axes, Handle};
+use crate::view::so101::{apply_settings, drag_axes, settings_texts, Handle, SETTING_KEYS};
 use crate::view::teleop_input::{Accumulator, GAMEPAD_DEAD_ZONE};
 use glam::DVec3;
 
 use devices::Devices;
-use practice::{Ended, Practice, STORE_KEY};
-use session_view::SessionView;
+use practice::{Ended, Practice, FIRST_KEY, STORE_KEY};
+use session_view::{OpenProblem, SessionView};
 use views::{Shared, Views};
 
 /// Save the session this often while recording, ms.
@@ -57,6 +63,7 @@ struct Live {
     offer: Element,
     offer_text: Element,
     ended: Element,
+    buttons: Element,
 }
 
 struct Inner {
@@ -76,14 +83,42 @@ struct Inner {
     scope: RefCell<Scope>,
     /// The views' hold on the state (kept alive with the page).
     shared: RefCell<Option<Rc<Shared>>>,
-    /// The stored session being simulated again, while it is.
+    review: Review,
+    /// The stored session being simulated again, while it is; then the first session.
     loader: RefCell<Option<SessionLoader<Episode>>>,
+    first_loader: RefCell<Option<SessionLoader<Episode>>>,
     load_timer: RefCell<Option<Rc<crate::ui::schedule::Timer>>>,
     restored: Element,
 }
 
 /// Steps simulated again per slice of the load (a few ms of work).
 const LOAD_SLICE_STEPS: usize = 1500;
+
+/// What a slice of a stored session's load did.
+enum LoadStep {
+    /// No session being loaded.
+    Idle,
+    /// More slices to go.
+    More,
+    /// Finished: the session (`None`: it did not simulate again).
+    Done(Option<Session<Episode>>),
+}
+
+/// One slice of the load in `slot`.
+fn run_loader(slot: &RefCell<Option<SessionLoader<Episode>>>) -> LoadStep {
+    let mut slot = slot.borrow_mut();
+    let Some(loader) = slot.as_mut() else {
+        return LoadStep::Idle;
+    };
+    match loader.run(LOAD_SLICE_STEPS) {
+        Some(false) => LoadStep::More,
+        step => LoadStep::Done(
+            slot.take()
+                .filter(|_| step.is_some())
+                .and_then(|l| l.finish()),
+        ),
+    }
+}
 
 /// The SO-101 page.
 pub struct So101Page(Rc<Inner>);
@@ -111,7 +146,10 @@ impl Page for So101Page {
             || Session::new("pilot", InputDevice::Keyboard, &iso_now()),
             |l| l.session().clone(),
         );
-        let practice = Practice::new(session, SceneConfig::default_for(false))
+        let first_loader =
+            dom::storage_get(FIRST_KEY).and_then(|t| SessionLoader::<Episode>::new(&t));
+        let config = apply_settings(&SceneConfig::default_for(false), &ctx.query);
+        let practice = Practice::new(session, config)
             .ok_or_else(|| JsValue::from_str("so101: the default scene is refused"))?;
         let restored: Element = find(&root, "[data-so101=\"restored\"]")?;
         let live = Live {
@@ -120,7 +158,9 @@ impl Page for So101Page {
             offer: find(&root, "[data-testid=\"gamepad-offer\"]")?,
             offer_text: find(&root, "[data-so101=\"offer-text\"]")?,
             ended: find(&root, "[data-so101=\"ended\"]")?,
+            buttons: find(&root, "[data-so101=\"live-buttons\"]")?,
         };
+        let review = Review::find(&root, markup::REVIEW)?;
         let readouts = Readouts::find(&root)?;
         let session = SessionView::find(&root)?;
         let shared = Rc::new(Shared {
@@ -143,7 +183,9 @@ impl Page for So101Page {
             frame: RefCell::new(None),
             scope: RefCell::new(Scope::new()),
             shared: RefCell::new(None),
+            review,
             loader: RefCell::new(loader),
+            first_loader: RefCell::new(first_loader),
             load_timer: RefCell::new(None),
             restored,
         });
@@ -159,6 +201,9 @@ impl Page for So101Page {
         inner.write_settings();
         inner.show_all();
         inner.load_slice();
+        if inner.loader.borrow().is_none() {
+            inner.show_module();
+        }
         Ok(So101Page(inner))
     }
 
@@ -173,11 +218,14 @@ impl Page for So101Page {
         if let Some(v) = self.0.views.borrow().as_ref() {
             v.relayout();
         }
+        self.0.review.fit();
+        self.0.draw_replay();
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
         let mut keys = markup::KEYS.to_vec();
         keys.extend_from_slice(crate::ui::kit::orbit::KEYS);
+        keys.extend_from_slice(crate::ui::kit::keymap::STEPPER);
         keys
     }
 
@@ -185,7 +233,7 @@ impl Page for So101Page {
         if event.code() == "KeyL" {
             return false;
         }
-        self.0.key_down(event)
+        self.0.key_down(event, false)
     }
 }
 
@@ -215,7 +263,7 @@ impl Inner {
                 {
                     return;
                 }
-                if p.key_down(k) {
+                if p.key_down(k, true) {
                     e.prevent_default();
                     e.stop_propagation();
                 }
@@ -233,6 +281,13 @@ impl Inner {
         let form: Element = find(&self.root, "[data-so101=\"settings\"]")?;
         scope.listen_for(&form, "change", me, |p, _| p.settings_changed())?;
         scope.listen_for(&form, "submit", me, |_, e| e.prevent_default())?;
+        let open = self.session.open.clone();
+        scope.listen_for(&open, "change", me, |p, _| p.open_files())?;
+        let review = self.review.root.clone();
+        scope.observe_resize(&[&review], me, |p| {
+            p.review.fit();
+            p.draw_replay();
+        })?;
         Ok(())
     }
 
@@ -244,15 +299,26 @@ impl Inner {
 
     // ---- Input ----
 
-    /// A key on the canvas or the page; `true` if taken.
-    fn key_down(&self, event: &KeyboardEvent) -> bool {
+    fn in_review(&self) -> bool {
+        self.practice.borrow().session.module == Module::FailureReview
+    }
+
+    /// A key on the canvas (`on_canvas`) or the page; `true` if taken. Arrows and + / −
+    /// orbit the view, but on the page in the failure review, where every key steps it.
+    fn key_down(&self, event: &KeyboardEvent, on_canvas: bool) -> bool {
         if dom::is_typing_target(event.target()) {
             return false;
         }
+        let review = self.in_review();
         if let Some(v) = self.views.borrow().as_ref() {
-            if event.code().starts_with("Arrow") || matches!(event.key().as_str(), "+" | "-") {
+            let view_key =
+                event.code().starts_with("Arrow") || matches!(event.key().as_str(), "+" | "-");
+            if view_key && (on_canvas || !review) {
                 return v.on_key(event);
             }
+        }
+        if review {
+            return self.review.on_key(event);
         }
         let code = event.code();
         let Some(action) = key_action(&code) else {
@@ -286,7 +352,7 @@ impl Inner {
             let n = attr("data-episode").and_then(|n| n.parse::<usize>().ok());
             self.action(&action, n);
         } else if let Some(m) = attr("data-module").and_then(|m| Module::from_id(&m)) {
-            self.practice.borrow_mut().session.module = m;
+            self.enter_module(m);
         } else if let Some(d) = attr("data-device").and_then(|d| InputDevice::from_id(&d)) {
             self.practice.borrow_mut().set_device(d);
         } else if let Some(l) = attr("data-label").and_then(|l| label_from_id(&l)) {
@@ -297,7 +363,7 @@ impl Inner {
             }
         } else if let Some(c) = attr("data-category").and_then(|c| category_from_id(&c)) {
             self.practice.borrow_mut().choice.1 = Some(c);
-        } else if let Some(file) = attr("data-download") {
+        } else if let Some(file) = attr("data-download").or_else(|| attr("data-save-now")) {
             self.download(&file);
             return;
         } else {
@@ -332,12 +398,21 @@ impl Inner {
                 }
             }
             "replay" => {
-                if let Some(n) = episode.filter(|n| *n >= 1) {
-                    let mut p = self.practice.borrow_mut();
-                    if n <= p.session.episodes.len() {
-                        p.engaged = false;
-                        p.replay = Some((n - 1, 0));
-                    }
+                if let Some(n) = episode {
+                    self.enter_module(Module::FailureReview);
+                    self.start_replay(n);
+                }
+            }
+            "second-session" => {
+                let started = self.practice.borrow_mut().start_second(&iso_now());
+                self.session.status_id.set(Some(if started {
+                    "teleop-second-started"
+                } else {
+                    "teleop-second-nothing"
+                }));
+                if started {
+                    self.save_first();
+                    self.show_module();
                 }
             }
             "relabel" => {
@@ -354,7 +429,6 @@ impl Inner {
 
     fn toggle_engage(&self) {
         let mut p = self.practice.borrow_mut();
-        p.replay = None;
         if p.recorder.sim().done().is_some() {
             p.recorder.reset();
         }
@@ -390,41 +464,39 @@ impl Inner {
         self.request_frame();
     }
 
-    fn settings_changed(&self) {
-        let get = |f: &str| -> Option<String> {
-            let el: Element = find(&self.root, &format!("[data-field=\"{f}\"]")).ok()?;
-            if let Some(i) = el.dyn_ref::<HtmlInputElement>() {
-                return Some(if i.type_() == "checkbox" {
-                    i.checked().to_string()
+    /// The form's fields, by [`SETTING_KEYS`] (the check box as `true` / `false`).
+    fn form_texts(&self) -> Vec<(String, String)> {
+        SETTING_KEYS
+            .iter()
+            .filter_map(|k| {
+                let el: Element = find(&self.root, &format!("[data-field=\"{k}\"]")).ok()?;
+                let v = if let Some(i) = el.dyn_ref::<HtmlInputElement>() {
+                    if i.type_() == "checkbox" {
+                        i.checked().to_string()
+                    } else {
+                        i.value()
+                    }
                 } else {
-                    i.value()
-                });
-            }
-            el.dyn_ref::<HtmlSelectElement>().map(|s| s.value())
-        };
-        let mut config = self.practice.borrow().config.clone();
-        if let Some(m) = get("method").and_then(|m| IkMethod::from_id(&m)) {
-            config.control.method = m;
-        }
-        if let Some(ms) = get("latency_ms").and_then(|v| v.trim().parse::<f64>().ok()) {
-            if ms.is_finite() {
-                config.latency_steps = (ms / 10.0).round().clamp(0.0, 50.0) as u32;
-            }
-        }
-        if let Some(s) = get("noise_sigma").and_then(|v| v.trim().parse::<f64>().ok()) {
-            if s.is_finite() {
-                config.noise_sigma = s.clamp(0.0, 1.0);
-            }
-        }
-        config.obstacle = get("obstacle").as_deref() == Some("true");
+                    el.dyn_ref::<HtmlSelectElement>()?.value()
+                };
+                Some((k.to_string(), v))
+            })
+            .collect()
+    }
+
+    fn settings_changed(&self) {
+        let config = apply_settings(&self.practice.borrow().config, &self.form_texts());
+        let pilot: Option<HtmlInputElement> = find(&self.root, "[data-field=\"pilot\"]").ok();
         let mut p = self.practice.borrow_mut();
-        if let Some(pilot) = get("pilot") {
-            let clean = clean_pilot_id(&pilot);
+        if let Some(pilot) = pilot {
+            let clean = clean_pilot_id(&pilot.value());
             if !clean.is_empty() {
                 p.session.pilot_id = clean;
             }
         }
-        p.set_config(config);
+        if config != p.config {
+            p.set_config(config);
+        }
         drop(p);
         self.write_settings();
         self.save();
@@ -432,33 +504,45 @@ impl Inner {
         self.request_frame();
     }
 
-    /// The form shows the config in use.
+    /// The form shows the config in use, and the URL holds it.
     fn write_settings(&self) {
         let p = self.practice.borrow();
-        let c = &p.config;
-        let set = |f: &str, v: &str| {
-            if let Ok(el) = find::<Element>(&self.root, &format!("[data-field=\"{f}\"]")) {
-                if let Some(i) = el.dyn_ref::<HtmlInputElement>() {
-                    if i.type_() == "checkbox" {
-                        i.set_checked(v == "true");
-                    } else {
-                        i.set_value(v);
-                    }
-                } else if let Some(s) = el.dyn_ref::<HtmlSelectElement>() {
-                    s.set_value(v);
+        let texts = settings_texts(&p.config);
+        for (k, v) in &texts {
+            let Ok(el) = find::<Element>(&self.root, &format!("[data-field=\"{k}\"]")) else {
+                continue;
+            };
+            if let Some(i) = el.dyn_ref::<HtmlInputElement>() {
+                if i.type_() == "checkbox" {
+                    i.set_checked(v == "true");
+                } else {
+                    i.set_value(v);
                 }
+            } else if let Some(s) = el.dyn_ref::<HtmlSelectElement>() {
+                s.set_value(v);
             }
-        };
-        set("method", c.control.method.id());
-        set("latency_ms", &(c.latency_steps * 10).to_string());
-        set("noise_sigma", &c.noise_sigma.to_string());
-        set("obstacle", if c.obstacle { "true" } else { "false" });
-        set("pilot", &p.session.pilot_id);
+        }
+        if let Ok(i) = find::<HtmlInputElement>(&self.root, "[data-field=\"pilot\"]") {
+            i.set_value(&p.session.pilot_id);
+        }
+        crate::ui::router::replace_query(&texts);
     }
 
+    /// Downloads `file` of the session (or, for [`EPISODE_CSVS`], every episode's CSV).
     fn download(&self, file: &str) {
         let files = self.practice.borrow().session.files(&iso_now());
-        if let Some((name, text)) = files.iter().find(|(n, _)| n == file) {
+        let every = file == EPISODE_CSVS;
+        let episodes: Vec<String> = if every {
+            let p = self.practice.borrow();
+            p.session
+                .episodes
+                .iter()
+                .map(|e| Episode::episode_file_name(e.number))
+                .collect()
+        } else {
+            vec![file.to_string()]
+        };
+        for (name, text) in files.iter().filter(|(n, _)| episodes.contains(n)) {
             let mime = if name.ends_with(".json") {
                 "application/json"
             } else {
@@ -470,25 +554,190 @@ impl Inner {
         }
     }
 
+    /// Stores the session (not while a stored one is still being loaded); a refusal is said
+    /// by the storage warning, the session going on in memory.
     fn save(&self) {
         if self.loader.borrow().is_some() {
             return;
         }
         let json = self.practice.borrow().to_json();
-        dom::storage_set(STORE_KEY, &json);
+        let refused = store::save(STORE_KEY, &json).is_err();
+        let (_, first) = self.session.unsaved.get();
+        self.session.unsaved.set((refused, first));
+        self.show_storage();
     }
 
-    /// One slice of the stored session's load; the next in a task of its own.
-    fn load_slice(&self) {
-        let t0 = now_ms();
-        let mut slot = self.loader.borrow_mut();
-        let Some(loader) = slot.as_mut() else {
+    /// Stores the first session.
+    fn save_first(&self) {
+        if self.first_loader.borrow().is_some() {
+            return;
+        }
+        let Some(json) = self.practice.borrow().first_json() else {
             return;
         };
-        let step = loader.run(LOAD_SLICE_STEPS);
+        let refused = store::save(FIRST_KEY, &json).is_err();
+        let (current, _) = self.session.unsaved.get();
+        self.session.unsaved.set((current, refused));
+        self.show_storage();
+    }
+
+    fn show_storage(&self) {
+        if let Ok(p) = self.practice.try_borrow() {
+            self.session.show(&p);
+        }
+    }
+
+    /// Opens saved files (the evidence, the episodes table and the episodes' CSVs).
+    fn open_files(&self) {
+        let me = self.me.clone();
+        read_files(&self.session.open, move |files, unreadable| {
+            if let Some(p) = me.upgrade() {
+                p.files_read(files, unreadable);
+            }
+        });
+    }
+
+    /// A good set of saved files becomes the session (the one it replaces kept as the first
+    /// session when there is none), shown in the failure review; a bad one leaves everything
+    /// as it was and says what is wrong.
+    fn files_read(&self, files: &[(String, String)], unreadable: Option<String>) {
+        clear_files(&self.session.open);
+        let problem = match unreadable {
+            Some(name) => Some(OpenProblem::Unreadable(name)),
+            None => match Session::<Episode>::from_files(files) {
+                Ok(session) => {
+                    self.review.stop();
+                    let mut p = self.practice.borrow_mut();
+                    p.replay = None;
+                    p.replace(session);
+                    drop(p);
+                    self.save_first();
+                    self.session.status_id.set(Some("teleop-opened"));
+                    self.enter_module(Module::FailureReview);
+                    self.save();
+                    None
+                }
+                Err(e) => Some(OpenProblem::Session(e)),
+            },
+        };
+        *self.session.open_problem.borrow_mut() = problem;
+        self.show_all();
+    }
+
+    // ---- Modules and the failure review ----
+
+    /// Module `m`: the failure review, or the live arm.
+    fn enter_module(&self, m: Module) {
+        let was_review = self.in_review();
+        {
+            let mut p = self.practice.borrow_mut();
+            p.session.module = m;
+            // Back from the review, ready to move.
+            if was_review && m != Module::FailureReview {
+                p.engaged = true;
+            }
+        }
+        self.show_module();
+        self.request_frame();
+    }
+
+    /// The module's part of the page: in the failure review the review (the first episode
+    /// with a failure, else the first, unless one is shown), no live buttons and the live arm
+    /// paused; elsewhere the live arm (`enter_module` engages it on the way back).
+    fn show_module(&self) {
+        let review = self.in_review();
+        dom::show(&self.live.buttons, !review);
+        if review {
+            dom::show(&self.live.ended, false);
+        }
+        self.review.show(review);
+        if !review {
+            if self.practice.borrow_mut().replay.take().is_some() {
+                self.review.stop();
+            }
+            return;
+        }
+        // The live arm rests while its episodes are reviewed (no frames, nothing announced).
+        self.practice.borrow_mut().engaged = false;
+        if self.practice.borrow().replay.is_some() {
+            return;
+        }
+        self.devices.borrow_mut().clear();
+        let pick = {
+            let p = self.practice.borrow();
+            let e = &p.session.episodes;
+            e.iter()
+                .find(|e| e.metrics.first_failure.is_some())
+                .or(e.first())
+                .map(|e| e.number)
+        };
+        match pick {
+            Some(n) => self.start_replay(n),
+            None => {
+                self.review.stop();
+                self.review.show_note(&ctx::t("so101-review-empty"));
+            }
+        }
+    }
+
+    /// Replays episode `n` under the review's stepper.
+    fn start_replay(&self, n: usize) {
+        let entry = self
+            .practice
+            .borrow()
+            .session
+            .episodes
+            .get(n.wrapping_sub(1))
+            .cloned();
+        let Some(entry) = entry else {
+            return;
+        };
+        let me = self.me.clone();
+        let replay = self.review.start_entry(n, &entry, move || {
+            if let Some(p) = me.upgrade() {
+                p.draw_replay();
+            }
+        });
+        self.practice.borrow_mut().replay = Some(replay);
+        self.draw_replay();
+    }
+
+    /// The replayed step: the timeline, the readouts and both views.
+    fn draw_replay(&self) {
+        if !self.review.draw_marks() {
+            return;
+        }
+        self.show_readouts();
+        if let Ok(v) = self.views.try_borrow() {
+            if let Some(v) = v.as_ref() {
+                v.redraw();
+            }
+        }
+    }
+
+    /// One slice of the stored sessions' load (the session, then the first session); the
+    /// next in a task of its own.
+    fn load_slice(&self) {
+        let t0 = now_ms();
+        let mut more = false;
+        match run_loader(&self.loader) {
+            LoadStep::More => more = true,
+            LoadStep::Done(session) => {
+                if let Some(session) = session {
+                    self.practice.borrow_mut().session = session;
+                    dom::show(&self.restored, true);
+                }
+                self.show_module();
+                more = self.first_loader.borrow().is_some();
+            }
+            LoadStep::Idle => match run_loader(&self.first_loader) {
+                LoadStep::More => more = true,
+                LoadStep::Done(first) => self.practice.borrow_mut().first = first,
+                LoadStep::Idle => {}
+            },
+        }
         push_ms("__so101LoadMs", now_ms() - t0, 5000);
-        if step == Some(false) {
-            drop(slot);
+        if more {
             let mut timer = self.load_timer.borrow_mut();
             let timer = timer.get_or_insert_with(|| {
                 self.scope
@@ -496,16 +745,6 @@ impl Inner {
                     .timer(&self.me, |p: &Inner| p.load_slice())
             });
             timer.schedule(0);
-            return;
-        }
-        let finished = slot
-            .take()
-            .filter(|_| step.is_some())
-            .and_then(|l| l.finish());
-        drop(slot);
-        if let Some(session) = finished {
-            self.practice.borrow_mut().session = session;
-            dom::show(&self.restored, true);
         }
         self.show_all();
     }
@@ -557,11 +796,7 @@ impl Inner {
         let keep = {
             let p = self.practice.borrow();
             let d = self.devices.borrow();
-            p.engaged
-                || p.replay.is_some()
-                || d.keys.any()
-                || d.clutch.is_some()
-                || d.pad_name.is_some()
+            p.engaged || d.keys.any() || d.clutch.is_some() || d.pad_name.is_some()
         };
         if keep {
             self.request_frame();
@@ -574,16 +809,6 @@ impl Inner {
     /// `n` steps of the simulation (or of a replay); how the episode ended, if it did.
     fn run_steps(&self, n: u32) -> Option<Ended> {
         let mut p = self.practice.borrow_mut();
-        if let Some((i, step)) = p.replay {
-            let len = p
-                .session
-                .episodes
-                .get(i)
-                .map_or(0, |e| e.episode.records.len());
-            let next = step + n as usize;
-            p.replay = (next < len).then_some((i, next));
-            return None;
-        }
         let d = self.devices.borrow();
         let cmd = Command::with_axes(d.axes(), d.gripper_closed);
         drop(d);

@@ -1,6 +1,7 @@
 //! The page's practice state: the session of SO-101 episodes (`crate::teleop::session`), the
 //! episode being recorded, engaged or paused, the episode waiting for its label, and the
-//! episode being replayed. Episodes are recorded in the record-ten module and after (the
+//! episode being replayed in the failure review, and the first session of the repeatability
+//! comparison. Episodes are recorded in the record-ten module and after (the
 //! earlier modules are practice: an attempt there is not kept); every recorded attempt stays
 //! in the session, failures too.
 
@@ -10,9 +11,12 @@ use crate::so101::SceneConfig;
 use crate::teleop::session::{InputDevice, Module, Session};
 use crate::teleop::sim::Outcome;
 use crate::teleop::{FailureCategory, Label};
+use crate::ui::kit::review::SharedReplay;
 
 /// localStorage key of the session.
 pub const STORE_KEY: &str = "bsv.so101.session";
+/// localStorage key of the first session (the repeatability comparison's other side).
+pub const FIRST_KEY: &str = "bsv.so101.first";
 
 /// How the last episode ended, for the notice over the view.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -26,6 +30,9 @@ pub enum Ended {
 /// The practice state (engaged from the start: the view opens ready to move).
 pub struct Practice {
     pub session: Session<Episode>,
+    /// The first session, once a second one started (or a session was opened over one with
+    /// episodes).
+    pub first: Option<Session<Episode>>,
     pub config: SceneConfig,
     pub recorder: EpisodeRecorder,
     pub engaged: bool,
@@ -33,8 +40,8 @@ pub struct Practice {
     /// The episode (number) whose label panel is open, and the pilot's choice so far.
     pub labelling: Option<usize>,
     pub choice: (Option<Label>, Option<FailureCategory>),
-    /// The episode replayed (index) and its step.
-    pub replay: Option<(usize, usize)>,
+    /// The episode replayed in the failure review (the views draw its state).
+    pub replay: Option<SharedReplay<Episode>>,
 }
 
 impl Practice {
@@ -51,6 +58,7 @@ impl Practice {
         };
         Some(Practice {
             session,
+            first: None,
             config,
             recorder,
             engaged: true,
@@ -143,7 +151,40 @@ impl Practice {
         }
         // R starts the next episode: engaged, its clock waiting for the first input.
         self.engaged = true;
-        self.replay = None;
+    }
+
+    /// Repeatability: the episode under way is kept, the session becomes the first and a
+    /// second one starts at Record ten (same pilot and device, preflight carried over).
+    /// `false` (nothing changes) when the session has no episodes.
+    pub fn start_second(&mut self, now: &str) -> bool {
+        if self.records() && !self.recorder.episode().commands.is_empty() {
+            self.keep(true);
+        }
+        let Some(first) = self.session.start_second(now) else {
+            return false;
+        };
+        self.first = Some(first);
+        self.session.module = Module::RecordTen;
+        self.labelling = None;
+        self.recorder.reset();
+        self.engaged = true;
+        self.ended = None;
+        true
+    }
+
+    /// An opened session becomes the current one (the episode under way kept first); the one
+    /// it replaces becomes the first session when it has episodes and there is none yet.
+    pub fn replace(&mut self, session: Session<Episode>) {
+        if self.records() && !self.recorder.episode().commands.is_empty() {
+            self.keep(true);
+        }
+        let old = std::mem::replace(&mut self.session, session);
+        if self.first.is_none() && !old.episodes.is_empty() {
+            self.first = Some(old);
+        }
+        self.labelling = None;
+        self.recorder.reset();
+        self.ended = None;
     }
 
     /// Confirms the label panel's choice (with `note`).
@@ -177,6 +218,11 @@ impl Practice {
     /// Chooses the input device.
     pub fn set_device(&mut self, d: InputDevice) {
         self.session.input_device = d;
+    }
+
+    /// The first session's stored form.
+    pub fn first_json(&self) -> Option<String> {
+        self.first.as_ref().map(|f| f.to_json(None))
     }
 
     /// The stored form (with the episode in progress, which comes back interrupted).

@@ -1,15 +1,20 @@
 //! The session's part of the page: the module bar and device buttons (`aria-pressed`), the
 //! preflight checks, the label panel, the episodes table (label, category, duration,
-//! collisions, a replay and a download button per episode), the repeatability summary and the
-//! session line.
+//! collisions, a replay and a download button per episode), the session's summary, the
+//! repeatability table (the first session beside this one), the session line, the file
+//! opener's problem, the status line and the storage warning (the kit's
+//! `pilot_session`).
+
+use std::cell::{Cell, RefCell};
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use super::practice::Practice;
 use crate::so101::episode::Episode;
-use crate::teleop::session::{Module, PracticeEpisode};
+use crate::teleop::session::{Module, PracticeEpisode, SessionError};
 use crate::ui::kit::form::escape;
+use crate::ui::kit::pilot_session::{open_error_text, render_comparison, StorageWarning};
 use crate::ui::{ctx, dom};
 
 /// The elements the session writes to.
@@ -26,7 +31,28 @@ pub struct SessionView {
     pub note: web_sys::HtmlInputElement,
     episodes: Element,
     summary: Element,
+    compare: Element,
     session_line: Element,
+    /// The file opener (`data-so101="open"`).
+    pub open: Element,
+    open_error: Element,
+    status: Element,
+    storage: StorageWarning,
+    /// What the opener last refused (shown until a good set of files is opened).
+    pub open_problem: RefCell<Option<OpenProblem>>,
+    /// The status line's message.
+    pub status_id: Cell<Option<&'static str>>,
+    /// The browser refused to store the session, the first session.
+    pub unsaved: Cell<(bool, bool)>,
+}
+
+/// Why opened files did not become the session.
+#[derive(Debug, Clone, PartialEq)]
+pub enum OpenProblem {
+    /// The browser could not read this file as text.
+    Unreadable(String),
+    /// The files do not make a session.
+    Session(SessionError),
 }
 
 fn find<T: wasm_bindgen::JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
@@ -53,7 +79,15 @@ impl SessionView {
             note: find(root, "[data-field=\"note\"]")?,
             episodes: find(root, "[data-so101=\"episodes\"]")?,
             summary: find(root, "[data-so101=\"summary\"]")?,
+            compare: find(root, "[data-so101=\"compare\"] tbody")?,
             session_line: find(root, "[data-so101=\"session-line\"]")?,
+            open: find(root, "[data-so101=\"open\"]")?,
+            open_error: find(root, "[data-so101=\"open-error\"]")?,
+            status: find(root, "[data-so101=\"status\"]")?,
+            storage: StorageWarning::find(root, &Episode::episodes_name())?,
+            open_problem: RefCell::new(None),
+            status_id: Cell::new(None),
+            unsaved: Cell::new((false, false)),
         })
     }
 
@@ -88,6 +122,30 @@ impl SessionView {
         self.show_labels(p);
         self.show_table(p);
         self.show_summary(p);
+        let first = p.first.as_ref().map(|f| f.summary());
+        let current = p.session.summary();
+        if let Err(e) = render_comparison(&self.compare, first.as_ref(), &current) {
+            web_sys::console::warn_1(&e);
+        }
+        self.show_notes();
+        let (a, b) = self.unsaved.get();
+        self.storage.render(a || b, s.episodes.len());
+    }
+
+    /// The opener's problem and the status line in the current language.
+    fn show_notes(&self) {
+        let problem = self.open_problem.borrow();
+        let text = problem.as_ref().map(|p| match p {
+            OpenProblem::Unreadable(name) => {
+                ctx::t_strings("teleop-open-unreadable", &[("name", name.clone())])
+            }
+            OpenProblem::Session(e) => open_error_text(e, &Episode::episodes_name()),
+        });
+        self.open_error
+            .set_text_content(Some(text.as_deref().unwrap_or("")));
+        dom::show(&self.open_error, text.is_some());
+        let status = self.status_id.get().map(ctx::t).unwrap_or_default();
+        self.status.set_text_content(Some(&status));
     }
 
     fn show_labels(&self, p: &Practice) {

@@ -12,7 +12,7 @@ use web_sys::{Element, KeyboardEvent};
 use super::devices::Devices;
 use super::practice::Practice;
 use crate::so101::kinematics::chain;
-use crate::so101::scene::{Obb, CUBE_HALF, JAW_CLOSED, JAW_HOLDING, JAW_OPEN};
+use crate::so101::scene::{Obb, JAW_CLOSED, JAW_HOLDING, JAW_OPEN};
 use crate::so101::sim::StepRecord;
 use crate::ui::kit::canvas::{Ink, LayeredCanvas};
 use crate::ui::kit::drag::DragEvent;
@@ -22,8 +22,8 @@ use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
 use crate::view::scene3d::{AxisPalette, Scene};
 use crate::view::so101::{
-    deg, handle_at, joint_text, mm, world, wrist, wrist_camera, Handle, Look, VIEW_RADIUS,
-    VIEW_TARGET,
+    deg, handle_at, joint_text, mm, ring_grips, world, wrist, wrist_view, Handle, Look,
+    VIEW_RADIUS, VIEW_TARGET,
 };
 
 /// The state the views draw: the practice and the devices (the gizmo held).
@@ -41,35 +41,31 @@ pub struct Views {
     shared: Weak<Shared>,
 }
 
-/// The record the views and readouts show: the replayed step, else the live state.
-pub fn shown_record(p: &Practice) -> StepRecord {
-    if let Some((i, step)) = p.replay {
-        if let Some(r) = p
-            .session
-            .episodes
-            .get(i)
-            .and_then(|e| e.episode.records.get(step).cloned())
-        {
-            return r;
+/// The record the views and readouts show and the cube's box: the replayed step, else the
+/// live state.
+pub fn shown(p: &Practice) -> (StepRecord, Obb) {
+    if let Some(replay) = p.replay.as_ref().and_then(|r| r.try_borrow().ok()) {
+        if let Some(sim) = replay.sim() {
+            return (sim.snapshot(), sim.state().cube.obb());
         }
     }
-    p.recorder.sim().snapshot()
+    let sim = p.recorder.sim();
+    (sim.snapshot(), sim.state().cube.obb())
 }
 
-/// What to draw for `record` (the live cube's orientation when live).
-fn look_parts(p: &Practice, record: &StepRecord) -> (crate::so101::Chain, Obb) {
+/// The record the views and readouts show.
+pub fn shown_record(p: &Practice) -> StepRecord {
+    shown(p).0
+}
+
+/// The arm's frames for `record`.
+fn chain_of(record: &StepRecord) -> crate::so101::Chain {
     let jaw = match (record.gripper_closed, record.held) {
         (false, _) => JAW_OPEN,
         (true, true) => JAW_HOLDING,
         (true, false) => JAW_CLOSED,
     };
-    let c = chain(&record.q, jaw);
-    let cube = if p.replay.is_none() {
-        p.recorder.sim().state().cube.obb()
-    } else {
-        Obb::aligned(record.cube, [CUBE_HALF; 3])
-    };
-    (c, cube)
+    chain(&record.q, jaw)
 }
 
 fn draw_world(
@@ -85,8 +81,8 @@ fn draw_world(
     let Ok(p) = shared.practice.try_borrow() else {
         return;
     };
-    let record = shown_record(&p);
-    let (c, cube) = look_parts(&p, &record);
+    let (record, cube) = shown(&p);
+    let c = chain_of(&record);
     let active = shared
         .devices
         .try_borrow()
@@ -108,6 +104,19 @@ fn draw_world(
     let layer = canvas.top();
     layer.begin();
     paint(&layer.ctx, &marks, ink);
+    // Where each ring can be taken, for the page's tests.
+    let grips: Vec<String> = ring_grips(camera, DVec3::from_array(record.tool))
+        .iter()
+        .map(|g| {
+            g.filter(|_| look.gizmo).map_or("-".into(), |(at, d)| {
+                format!("{:.1},{:.1},{:.3},{:.3}", at.x, at.y, d.x, d.y)
+            })
+        })
+        .collect();
+    let grips = grips.join("|");
+    if layer.canvas.get_attribute("data-ring-grips").as_deref() != Some(grips.as_str()) {
+        let _ = layer.canvas.set_attribute("data-ring-grips", &grips);
+    }
 }
 
 impl Views {
@@ -202,8 +211,8 @@ impl Views {
         };
         canvas.fit();
         let (w, h) = canvas.size();
-        let record = shown_record(&p);
-        let (c, cube) = look_parts(&p, &record);
+        let (record, cube) = shown(&p);
+        let c = chain_of(&record);
         let look = Look {
             chain: &c,
             cube,
@@ -216,11 +225,23 @@ impl Views {
             return;
         };
         wrist(&mut scene, &look);
-        let camera = wrist_camera(&c, w, h);
+        // The image turns with the wrist (its square camera covers the turned corners).
+        let (camera, roll) = wrist_view(&c, w, h);
         let marks = scene.project(&camera);
         let layer = canvas.top();
         layer.begin();
-        paint(&layer.ctx, &marks, Ink::current());
+        let ctx = &layer.ctx;
+        ctx.save();
+        let _ = ctx.translate(w / 2.0, h / 2.0);
+        let _ = ctx.rotate(-roll);
+        let _ = ctx.translate(-camera.width / 2.0, -camera.height / 2.0);
+        paint(ctx, &marks, Ink::current());
+        ctx.restore();
+        // How far the image is turned, rad (for the page's tests).
+        let turned = format!("{roll:.4}");
+        if layer.canvas.get_attribute("data-roll").as_deref() != Some(turned.as_str()) {
+            let _ = layer.canvas.set_attribute("data-roll", &turned);
+        }
     }
 }
 

@@ -8,10 +8,10 @@ use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
 use crate::teleop::session::{
-    compare, episode_file_name, Session, Summary, EPISODES_NAME, EVIDENCE_NAME, RECORD_TARGET,
+    episode_file_name, Session, EPISODES_NAME, EVIDENCE_NAME, RECORD_TARGET,
 };
 use crate::ui::{ctx, dom};
-use crate::view::teleop::{comparison_cell, fixed_clean};
+use crate::view::teleop::fixed_clean;
 
 use super::label_panel::label_message;
 use super::markup::{find, role};
@@ -49,7 +49,11 @@ impl EpisodeTables {
         }
         let sum = session.summary();
         let first = first.map(Session::summary);
-        if let Err(e) = render_comparison(&self.compare_body, first.as_ref(), &sum) {
+        if let Err(e) = crate::ui::kit::pilot_session::render_comparison(
+            &self.compare_body,
+            first.as_ref(),
+            &sum,
+        ) {
             web_sys::console::warn_1(&e);
         }
         let line = ctx::t_args(
@@ -149,35 +153,6 @@ fn render_episodes(tbody: &Element, session: &Session) -> Result<(), JsValue> {
             false,
         )?;
         dom::append(&tr, &actions)?;
-        dom::append(tbody, &tr)?;
-    }
-    Ok(())
-}
-
-/// Rebuilds the comparison table's body: `first` (if any) beside `second`.
-fn render_comparison(
-    tbody: &Element,
-    first: Option<&Summary>,
-    second: &Summary,
-) -> Result<(), JsValue> {
-    dom::clear(tbody);
-    let empty = Summary::of::<crate::teleop::Episode>(&[]);
-    let (a, b) = match first {
-        Some(f) => (f, second),
-        None => (second, &empty),
-    };
-    for row in compare(a, b) {
-        let tr = dom::el("tr")?;
-        tr.set_attribute("data-compare", &row.id)?;
-        let name = if crate::teleop::session::category_from_id(&row.id).is_some() {
-            format!("teleop-cat-{}", row.id)
-        } else {
-            format!("teleop-cmp-{}", row.id)
-        };
-        cell_i18n(&tr, &name)?;
-        cell(&tr, &comparison_cell(&row.id, row.first))?;
-        let second = if first.is_some() { row.second } else { None };
-        cell(&tr, &comparison_cell(&row.id, second))?;
         dom::append(tbody, &tr)?;
     }
     Ok(())

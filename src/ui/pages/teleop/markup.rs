@@ -13,6 +13,7 @@ use crate::teleop::session::{label_id, Module, CATEGORIES, EPISODES_NAME, EVIDEN
 use crate::teleop::Label;
 use crate::ui::dom;
 use crate::ui::kit::readouts::{self, ReadoutRow};
+use crate::ui::kit::review::ReviewIds;
 use crate::ui::page::Shortcut;
 use crate::view::teleop::IK_IDS;
 
@@ -51,6 +52,13 @@ pub const KEYS: &[Shortcut] = &[
         message_id: "teleop-key-engage",
     },
 ];
+
+/// Where the failure review lives.
+pub const REVIEW: ReviewIds = ReviewIds {
+    attr: "tele",
+    stepper: "teleop-stepper",
+    timeline: "teleop-timeline",
+};
 
 /// An ARIA state's text (`aria-pressed`, `aria-disabled`, ...).
 pub fn bool_text(b: bool) -> &'static str {
@@ -229,18 +237,13 @@ fn keymap() -> String {
     html
 }
 
-/// The warning that the session is not saved, with its downloads (`data-save-now`: a file
-/// name, or `episode-csvs` for every episode's CSV).
+/// The warning that the session is not saved, with its downloads.
 fn storage_warning() -> String {
-    format!(
-        "<div class=\"tele-notice tele-warning\" data-testid=\"storage-warning\" role=\"alert\" hidden>\
-         <p data-i18n=\"teleop-storage-full\"></p><div class=\"tele-buttons\">\
-         <button type=\"button\" class=\"button primary\" data-save-now=\"{EVIDENCE_NAME}\" \
-         data-testid=\"storage-download-evidence\"></button>\
-         <button type=\"button\" class=\"button\" data-save-now=\"{EPISODES_NAME}\" \
-         data-testid=\"storage-download-table\"></button>\
-         <button type=\"button\" class=\"button\" data-save-now=\"episode-csvs\" \
-         data-testid=\"storage-download-episodes\"></button></div></div>"
+    crate::ui::kit::pilot_session::storage_warning_markup(
+        EPISODES_NAME,
+        "tele-notice tele-warning",
+        "tele-buttons",
+        "button",
     )
 }
 
@@ -282,19 +285,7 @@ pub fn page() -> String {
          <button type=\"button\" class=\"button\" data-action=\"end-episode\" data-i18n=\"teleop-end-episode\"></button>\
          <button type=\"button\" class=\"button\" data-action=\"next-module\" data-i18n=\"teleop-next-module\"></button></div>\
          <p class=\"tele-device\" data-tele=\"device-status\" role=\"status\"></p>\
-         <div class=\"tele-review\" data-tele=\"review\" hidden>\
-         <p class=\"tele-sub\" data-tele=\"review-title\"></p>\
-         <div data-tele=\"stepper\"></div>\
-         <canvas class=\"tele-timeline\" data-testid=\"teleop-timeline\" role=\"img\" \
-         data-i18n-attr=\"aria-label=teleop-timeline-label\"></canvas>\
-         <ul class=\"tele-legend\" data-tele=\"timeline-legend\">\
-         <li><span class=\"tele-key tele-key-fail\" aria-hidden=\"true\">✕</span><span data-i18n=\"teleop-legend-failure\"></span></li>\
-         <li><span class=\"tele-key tele-key-success\" aria-hidden=\"true\">○</span><span data-i18n=\"teleop-legend-success\"></span></li>\
-         <li><span class=\"tele-key tele-key-warn\" aria-hidden=\"true\">■</span><span data-i18n=\"teleop-legend-warning\"></span></li>\
-         <li><span class=\"tele-key tele-key-release\" aria-hidden=\"true\">|</span><span data-i18n=\"teleop-legend-release\"></span></li>\
-         <li><span class=\"tele-key tele-key-fail\" aria-hidden=\"true\">▼</span><span data-i18n=\"teleop-legend-first-failure\"></span></li>\
-         <li><span class=\"tele-key tele-key-now\" aria-hidden=\"true\">┃</span><span data-i18n=\"teleop-legend-now\"></span></li></ul>\
-         <p class=\"tele-note\" data-tele=\"review-event\"></p></div>\
+         {review}\
          </section>\
          <section class=\"tele-card\"><h2 data-i18n=\"teleop-readouts-title\"></h2>{readouts}{live}\
          <section class=\"tele-preflight\" data-tele=\"preflight\"><h3 data-i18n=\"teleop-preflight-title\"></h3>\
@@ -347,5 +338,6 @@ pub fn page() -> String {
         keys = keymap(),
         labels = labels(),
         settings = settings(),
+        review = crate::ui::kit::review::markup(REVIEW),
     )
 }

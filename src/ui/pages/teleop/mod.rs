@@ -5,9 +5,10 @@
 //!
 //! The page is a struct of components, one file each: `live` (the simulation at 100 Hz),
 //! `devices`, `scene_view`, `readouts`, `controls` (the live arm's buttons), `session_panel`
-//! (`module_bar` with the preflight, `episode_table`, the file opener), `label_panel`,
-//! `review`, `settings`, `exports` and `loading` (both in slices), `gamepad_offer` and
-//! `storage_warning`, over `sessions` (the two sessions and their storage).
+//! (`module_bar` with the preflight, `episode_table`, the file opener), `label_panel`, the
+//! kit's failure review (`crate::ui::kit::review`),
+//! `settings`, `exports` and `loading` (both in slices), `gamepad_offer` and
+//! the kit's `pilot_session::StorageWarning`, over `sessions` (the two sessions and their storage).
 //! This file wires them: mount, events to components, the frame loop. The loop asks for
 //! frames only while something can change (`crate::view::teleop_input::FrameDemand`). The
 //! session is saved after every episode and label, every two seconds while recording and on
@@ -25,12 +26,10 @@ mod loading;
 mod markup;
 mod module_bar;
 mod readouts;
-mod review;
 mod scene_view;
 mod session_panel;
 mod sessions;
 mod settings;
-mod storage_warning;
 
 use std::cell::RefCell;
 use std::rc::{Rc, Weak};
@@ -41,6 +40,8 @@ use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, Poin
 
 use crate::teleop::session::{episode_file_name, InputDevice, Module, Session};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
+use crate::ui::kit::pilot_session::{open_error_text, StorageWarning};
+use crate::ui::kit::review::{Review, SharedReplay};
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
@@ -54,14 +55,12 @@ use gamepad_offer::GamepadOffer;
 use label_panel::LabelPanel;
 use live::{Live, SettingsEdit};
 use loading::{Loaded, Loader, Stored};
-use markup::{find, role};
+use markup::{find, role, REVIEW};
 use readouts::{EpisodeLine, Readouts};
-use review::Review;
 use scene_view::SceneView;
-use session_panel::{open_error_text, PanelAction, SessionPanel};
+use session_panel::{PanelAction, SessionPanel};
 use sessions::Sessions;
 use settings::SettingsForm;
-use storage_warning::StorageWarning;
 
 /// The page's components.
 struct Inner {
@@ -81,6 +80,8 @@ struct Inner {
     settings: RefCell<SettingsForm>,
     labels: RefCell<LabelPanel>,
     review: Review,
+    /// The episode replayed in the failure review.
+    replay: RefCell<Option<SharedReplay<crate::teleop::Episode>>>,
     exports: Rc<Exports>,
     loader: Rc<Loader>,
     frame: RefCell<Option<FrameLoop>>,
@@ -112,10 +113,10 @@ impl Page for TeleopPage {
         let readouts = Readouts::find(&root)?;
         let controls = Controls::find(&root)?;
         let offer = GamepadOffer::find(&root)?;
-        let storage = StorageWarning::find(&root)?;
+        let storage = StorageWarning::find(&root, crate::teleop::session::EPISODES_NAME)?;
         let panel = SessionPanel::find(&root)?;
         let labels = LabelPanel::find(&root)?;
-        let review = Review::find(&root)?;
+        let review = Review::find(&root, REVIEW)?;
         let exports = Exports::find(&root)?;
         let inner = Rc::new_cyclic(|me: &Weak<Inner>| Inner {
             me: me.clone(),
@@ -134,6 +135,7 @@ impl Page for TeleopPage {
             settings: RefCell::new(form),
             labels: RefCell::new(labels),
             review,
+            replay: RefCell::new(None),
             exports,
             loader,
             frame: RefCell::new(None),
@@ -591,6 +593,7 @@ impl Inner {
             }
         } else {
             self.review.stop();
+            self.replay.borrow_mut().take();
             self.review.show(false);
             if was != m {
                 self.reset();
@@ -706,7 +709,10 @@ impl Inner {
                 self.enter_module(Module::FailureReview);
                 self.panel.show_status("teleop-opened");
             }
-            Err(e) => self.panel.show_open_error(Some(open_error_text(&e))),
+            Err(e) => self.panel.show_open_error(Some(open_error_text(
+                &e,
+                crate::teleop::session::EPISODES_NAME,
+            ))),
         }
     }
 
@@ -745,17 +751,41 @@ impl Inner {
             return;
         };
         let me = self.me.clone();
-        self.review.start(n, &entry, move || {
+        let replay = self.review.start_entry(n, &entry, move || {
             if let Some(p) = me.upgrade() {
                 p.draw_replay();
             }
         });
+        *self.replay.borrow_mut() = Some(replay);
         self.draw_replay();
     }
 
+    /// The replayed step: the timeline, the scene and its trail, the step's numbers.
     fn draw_replay(&self) {
-        self.review
-            .draw(&mut self.view.borrow_mut(), &self.readouts);
+        if !self.review.draw_marks() {
+            return;
+        }
+        let Some(model) = self.replay.borrow().clone() else {
+            return;
+        };
+        let Ok(replay) = model.try_borrow() else {
+            return;
+        };
+        let steps = replay.index() as usize;
+        if let Some(sim) = replay.sim() {
+            let mut view = self.view.borrow_mut();
+            view.trail = replay.episode.records[..steps.min(replay.episode.records.len())]
+                .iter()
+                .map(|r| (r.x, r.z))
+                .collect();
+            view.draw(&sim.geometry(), None, Ink::current());
+        }
+        if let Some(r) = steps
+            .checked_sub(1)
+            .and_then(|k| replay.episode.records.get(k))
+        {
+            self.readouts.show_record(r);
+        }
     }
 
     // ---- Settings ----

@@ -96,23 +96,11 @@ impl Sessions {
     /// none), a second one starts (same pilot and device, preflight carried over) at Record
     /// ten. `false` when the current one has no episodes (nothing changes).
     pub fn start_second(&self) -> bool {
-        let (pilot, device, preflight, has) = {
-            let s = self.current.borrow();
-            (
-                s.pilot_id.clone(),
-                s.input_device,
-                s.preflight,
-                !s.episodes.is_empty(),
-            )
-        };
-        if !has {
+        let first = self.current.borrow_mut().start_second(&iso_now());
+        let Some(first) = first else {
             return false;
-        }
-        let mut second = Session::new(&pilot, device, &iso_now());
-        second.preflight = preflight;
-        let mut old = std::mem::replace(&mut *self.current.borrow_mut(), second);
-        old.ended_at.get_or_insert_with(iso_now);
-        *self.first.borrow_mut() = Some(old);
+        };
+        *self.first.borrow_mut() = Some(first);
         self.save_first();
         true
     }
