@@ -14,6 +14,7 @@ use super::home_arm::{self, HomeArm};
 use super::home_cards;
 use crate::ui::ctx;
 use crate::ui::dom::{self, append, el_class, el_i18n, el_text};
+use crate::ui::lang_files;
 use crate::ui::page::{MountCtx, Page, ShellLink, Shortcut, SplitLoaderError};
 
 /// The home page (`#/`): markup, every text a `data-i18n` message, and the live arm.
@@ -81,15 +82,17 @@ async fn cards() -> Result<CardsFn, SplitLoaderError> {
 /// cannot be fetched, `status` says so with a Retry button.
 fn load_cards(root: Element, status: Element, shell: ShellLink) {
     wasm_bindgen_futures::spawn_local(async move {
-        let built = match cards().await {
-            Ok(build) => {
+        // The cards name every recipe: their strings come with their code.
+        let strings = lang_files::load(ctx::lang(), &["recipes.ftl"]);
+        let built = match (cards().await, strings.await) {
+            (Ok(build), Ok(())) => {
                 // The page may have been left meanwhile.
                 if !root.contains(Some(&status)) {
                     return;
                 }
                 build(&root, shell).map(|()| status.remove())
             }
-            Err(_) => show_failed(&root, &status, shell),
+            _ => show_failed(&root, &status, shell),
         };
         if let Err(error) = built {
             web_sys::console::error_1(&error);
