@@ -29,7 +29,7 @@ export function routeBudget(route) {
 /** What `make test` allows each route's first load: its size now plus about 10 KB, and never
  * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
-  home: 234,
+  home: 238,
   'ik-2r': 420,
   'dh-fk': 350,
   'se3-relative': 350,
@@ -43,7 +43,7 @@ export const ROUTE_CEILINGS = {
   teleop: 426,
   so101: 454,
   drills: 492,
-  lesson: 257,
+  lesson: 262,
 };
 /** The ceiling of a route (a route not in the table has the largest). */
 export function routeCeiling(route) {

@@ -156,9 +156,15 @@ pub const ERROR_SOURCES: &[(Lang, &str, &str)] = &[
 ];
 
 /// The files every page needs before its first frame: the shell (with the lesson bar), the
-/// page table's titles and descriptions, the kit and the kernels' errors. A page
+/// page table's titles and descriptions, the kit, the kernels' errors and the recipes' texts. A page
 /// names the rest it needs in its `page!` line (its own file, the signal pages' shared one).
-pub const FIRST_FILES: &[&str] = &["shell.ftl", "pages.ftl", "kit.ftl", "errors.ftl"];
+pub const FIRST_FILES: &[&str] = &[
+    "shell.ftl",
+    "pages.ftl",
+    "kit.ftl",
+    "errors.ftl",
+    "recipes.ftl",
+];
 
 /// The Fluent files of `lang`: file name, text.
 pub fn locale_files(lang: Lang) -> &'static [(&'static str, &'static str)] {
@@ -296,20 +302,6 @@ impl I18n {
         self.added
             .try_borrow()
             .is_ok_and(|added| added.iter().any(|(l, _)| *l == lang))
-    }
-
-    /// The names of `lang`'s files added so far.
-    pub fn files(&self, lang: Lang) -> Vec<String> {
-        self.added.try_borrow().map_or_else(
-            |_| Vec::new(),
-            |added| {
-                added
-                    .iter()
-                    .filter(|(l, _)| *l == lang)
-                    .map(|(_, name)| name.clone())
-                    .collect()
-            },
-        )
     }
 
     /// Whether `lang`'s file `name` was added.

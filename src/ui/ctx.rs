@@ -45,11 +45,6 @@ pub fn has_file(lang: Lang, name: &str) -> bool {
         .unwrap_or(false)
 }
 
-/// The names of `lang`'s Fluent files loaded so far.
-pub fn files(lang: Lang) -> Vec<String> {
-    I18N.try_with(|i18n| i18n.files(lang)).unwrap_or_default()
-}
-
 /// Adds `lang`'s Fluent files (file name, text) to the bundles.
 pub(crate) fn add_files(lang: Lang, files: &[(&str, &str)]) {
     let _ = I18N.try_with(|i18n| i18n.add_files(lang, files));

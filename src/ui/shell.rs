@@ -287,18 +287,12 @@ pub(crate) fn switch_lang(lang: Lang) -> Result<(), JsValue> {
 }
 
 /// Makes `lang` current and re-renders every visible string, once its strings are loaded.
-///
-/// The strings needed are the page's and every file loaded in the language shown (a part of
-/// the page that came later, such as the home page's recipe cards, has its own).
 pub(crate) fn apply_lang(lang: Lang) -> Result<(), JsValue> {
-    let shown = ctx::files(ctx::lang());
-    if has_strings(lang, routed_def()) && shown.iter().all(|file| ctx::has_file(lang, file)) {
+    if has_strings(lang, routed_def()) {
         return show_lang(lang);
     }
     wasm_bindgen_futures::spawn_local(async move {
-        let mut files: Vec<&str> = page_strings(routed_def()).to_vec();
-        files.extend(shown.iter().map(String::as_str));
-        match lang_files::load(lang, &files).await {
+        match lang_files::load(lang, page_strings(routed_def())).await {
             Ok(()) => report(show_lang(lang)),
             Err(_) => report(Err(JsValue::from_str(&format!(
                 "the {} strings could not be loaded",

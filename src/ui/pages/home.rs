@@ -14,7 +14,6 @@ use super::home_arm::{self, HomeArm};
 use super::home_cards;
 use crate::ui::ctx;
 use crate::ui::dom::{self, append, el_class, el_i18n, el_text};
-use crate::ui::lang_files;
 use crate::ui::page::{MountCtx, Page, ShellLink, Shortcut, SplitLoaderError};
 
 /// The home page (`#/`): markup, every text a `data-i18n` message, and the live arm.
@@ -82,17 +81,15 @@ async fn cards() -> Result<CardsFn, SplitLoaderError> {
 /// cannot be fetched, `status` says so with a Retry button.
 fn load_cards(root: Element, status: Element, shell: ShellLink) {
     wasm_bindgen_futures::spawn_local(async move {
-        // The cards name every recipe: their strings come with their code.
-        let strings = lang_files::load(ctx::lang(), &["recipes.ftl"]);
-        let built = match (cards().await, strings.await) {
-            (Ok(build), Ok(())) => {
+        let built = match cards().await {
+            Ok(build) => {
                 // The page may have been left meanwhile.
                 if !root.contains(Some(&status)) {
                     return;
                 }
                 build(&root, shell).map(|()| status.remove())
             }
-            _ => show_failed(&root, &status, shell),
+            Err(_) => show_failed(&root, &status, shell),
         };
         if let Err(error) = built {
             web_sys::console::error_1(&error);
