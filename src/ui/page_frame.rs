@@ -46,12 +46,18 @@ pub fn show_failed(main: &Element, def: &PageDef) -> Result<Element, JsValue> {
     alert.set_attribute("role", "alert")?;
     alert.set_attribute("data-testid", "page-load-failed")?;
     dom::append(&alert, &dom::el_i18n("p", "", "page-load-failed")?)?;
-    let retry = dom::el_i18n("button", "tool-button", "page-load-retry")?;
-    retry.set_attribute("type", "button")?;
-    retry.set_attribute("data-action", "retry")?;
+    let retry = retry_button()?;
     dom::append(&alert, &retry)?;
     dom::append(&section, &alert)?;
     dom::append(main, &section)?;
+    Ok(retry)
+}
+
+/// The Retry button of a part that could not be fetched (`data-action="retry"`).
+pub fn retry_button() -> Result<Element, JsValue> {
+    let retry = dom::el_i18n("button", "tool-button", "page-load-retry")?;
+    retry.set_attribute("type", "button")?;
+    retry.set_attribute("data-action", "retry")?;
     Ok(retry)
 }
 

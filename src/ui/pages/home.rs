@@ -12,9 +12,9 @@ use web_sys::{Element, KeyboardEvent};
 
 use super::home_arm::{self, HomeArm};
 use super::home_cards;
-use crate::ui::ctx;
 use crate::ui::dom::{self, append, el_class, el_i18n, el_text};
 use crate::ui::page::{MountCtx, Page, ShellLink, Shortcut, SplitLoaderError};
+use crate::ui::page_frame;
 
 /// The home page (`#/`): markup, every text a `data-i18n` message, and the live arm.
 pub struct HomePage {
@@ -51,10 +51,9 @@ fn build(root: &Element, shell: ShellLink) -> Result<Rc<HomeArm>, JsValue> {
     let arm = home_arm::mount(&hero)?;
     append(root, &hero)?;
 
-    let status = el_i18n("p", "home-more", "home-more-loading")?;
+    let status = el_class("p", "home-more")?;
     status.set_attribute("data-testid", "home-more")?;
-    status.set_attribute("data-state", "loading")?;
-    status.set_attribute("role", "status")?;
+    show_loading(&status)?;
     append(root, &status)?;
     load_cards(root.clone(), status, shell);
     Ok(arm)
@@ -104,19 +103,22 @@ fn show_failed(root: &Element, status: &Element, shell: ShellLink) -> Result<(),
     status.set_attribute("role", "alert")?;
     append(status, &el_i18n("span", "", "home-more-failed")?)?;
     append(status, &el_text("span", "", " ")?)?;
-    let retry = el_i18n("button", "tool-button", "page-load-retry")?;
-    retry.set_attribute("type", "button")?;
-    retry.set_attribute("data-action", "retry")?;
+    let retry = page_frame::retry_button()?;
     append(status, &retry)?;
     let (root, again) = (root.clone(), status.clone());
     dom::Listener::new(&retry, "click", move |_| {
-        dom::clear(&again);
-        let _ = again.set_attribute("data-state", "loading");
-        let _ = again.set_attribute("role", "status");
-        let _ = again.set_attribute("data-i18n", "home-more-loading");
-        again.set_text_content(Some(&ctx::t("home-more-loading")));
-        load_cards(root.clone(), again.clone(), shell);
+        if show_loading(&again).is_ok() {
+            load_cards(root.clone(), again.clone(), shell);
+        }
     })?
     .forever();
     Ok(())
+}
+
+/// `status` as the line that stands in for the cards while their chunk loads.
+fn show_loading(status: &Element) -> Result<(), JsValue> {
+    dom::clear(status);
+    status.set_attribute("data-state", "loading")?;
+    status.set_attribute("role", "status")?;
+    dom::set_i18n(status, "home-more-loading")
 }
