@@ -504,6 +504,7 @@ mod tests {
         let rrt = files.iter().find(|(n, _)| *n == "rrt.ftl").unwrap();
         i18n.add_files(Lang::Ja, &[*shell]);
         assert!(i18n.has_file(Lang::Ja, "shell.ftl") && !i18n.has_file(Lang::Ja, "rrt.ftl"));
+        assert!(i18n.has_language(Lang::Ja) && !i18n.has_language(Lang::En));
         assert!(!i18n.has_message(Lang::Ja, "rrt-lede"));
         i18n.add_files(Lang::Ja, &[*rrt, *shell]);
         assert!(i18n.has_message(Lang::Ja, "rrt-lede"));
