@@ -36,13 +36,13 @@ export const ROUTE_CEILINGS = {
   'umeyama-2d': 379,
   'pendulum-energy': 350,
   'pid-step': 340,
-  'cubic-path': 378,
-  'trapezoid-profile': 375,
+  'cubic-path': 346,
+  'trapezoid-profile': 343,
   'traj-resample': 350,
   'rrt-2d': 330,
   teleop: 426,
   so101: 454,
-  drills: 492,
+  drills: 464,
   lesson: 262,
 };
 /** The ceiling of a route (a route not in the table has the largest). */

@@ -150,7 +150,8 @@ impl TrapParams {
         finite("dt", self.dt)?;
         positive("dt", self.dt)?;
         let mut t_acc = vmax / amax;
-        let d_acc = 0.5 * amax * crate::math::pow(t_acc, 2.0);
+        // `t_acc ** 2`: pow(x, 2) is the correctly rounded square, one product (`math::pow`).
+        let d_acc = 0.5 * amax * (t_acc * t_acc);
         let t_flat;
         let triangle = 2.0 * d_acc >= distance;
         if triangle {

@@ -37,7 +37,8 @@ pub struct Phases {
 pub fn phases(p: &TrapParams) -> Phases {
     let (distance, vmax, amax) = (p.distance.abs(), p.vmax.abs(), p.amax.abs());
     let mut t_acc = vmax / amax;
-    let d_acc = 0.5 * amax * crate::math::pow(t_acc, 2.0);
+    // `t_acc ** 2`: pow(x, 2) is the correctly rounded square, one product (`math::pow`).
+    let d_acc = 0.5 * amax * (t_acc * t_acc);
     let triangle = 2.0 * d_acc >= distance;
     let (t_flat, v_peak) = if triangle {
         t_acc = (distance / amax).sqrt();
