@@ -90,6 +90,7 @@ lesson-add = + Lesson
 lesson-add-title = Add this view to the lesson (edit it on the Lesson page)
 lesson-added = Added as step { $count } of the lesson.
 lesson-added-unsaved = Added as step { $count } of the lesson, but this browser's storage is full: the lesson is not saved and lives in this tab only.
+lesson-add-failed = Could not load what adds a view to the lesson. Check the connection and press “+ Lesson” again.
 lesson-bar-label = Lesson
 lesson-end = End lesson
 lesson-next = Next →

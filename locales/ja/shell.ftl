@@ -90,6 +90,7 @@ lesson-add = + レッスン
 lesson-add-title = この画面をレッスンに追加します（レッスンのページで編集できます）
 lesson-added = レッスンのステップ { $count } として追加しました。
 lesson-added-unsaved = レッスンのステップ { $count } として追加しましたが、このブラウザーの保存領域がいっぱいのため保存されていません。このタブの中だけにあります。
+lesson-add-failed = レッスンに画面を追加する機能を読み込めませんでした。接続を確認して、もう一度「+ レッスン」を押してください。
 lesson-bar-label = レッスン
 lesson-end = レッスンを終える
 lesson-next = 次へ →

@@ -13,10 +13,12 @@ use wasm_bindgen::JsCast;
 use web_sys::{Element, Event, KeyboardEvent};
 
 use crate::ui::kit::store::{self, Refused, Stored};
+use crate::ui::page::SplitLoaderError;
 use crate::ui::page::{ShellLink, ShellRequest};
 use crate::ui::{ctx, dom, router};
 use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
 use crate::view::lesson_file;
+use crate::view::url::Route;
 
 /// localStorage key of the current lesson (its `.json` text).
 pub const LESSON_STORAGE_KEY: &str = "bsv.lesson";
@@ -70,14 +72,30 @@ pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
     status.set_attribute("data-testid", "lesson-add-status")?;
     let shown = status.clone();
     dom::Listener::new(&button, "click", move |_| {
-        if let Some((count, saved)) = add_current_view(shell) {
-            let id = if saved {
-                "lesson-added"
-            } else {
-                "lesson-added-unsaved"
+        // The view of the click, whenever the chunk arrives.
+        let (shown, route) = (shown.clone(), router::current_route());
+        wasm_bindgen_futures::spawn_local(async move {
+            let (text, failed) = match adder().await {
+                Ok(add) => match add(shell, &route) {
+                    Some((count, true)) => (
+                        ctx::t_strings("lesson-added", &[("count", count.to_string())]),
+                        false,
+                    ),
+                    Some((count, false)) => (
+                        ctx::t_strings("lesson-added-unsaved", &[("count", count.to_string())]),
+                        false,
+                    ),
+                    None => return,
+                },
+                Err(_) => (ctx::t("lesson-add-failed"), true),
             };
-            shown.set_text_content(Some(&ctx::t_strings(id, &[("count", count.to_string())])));
-        }
+            // A failure is shown under the button (an alert); an added step is announced.
+            let classes = shown.class_list();
+            let _ = classes.toggle_with_force("visually-hidden", !failed);
+            let _ = classes.toggle_with_force("lesson-add-failed", failed);
+            let _ = shown.set_attribute("role", if failed { "alert" } else { "status" });
+            shown.set_text_content(Some(&text));
+        });
     })?
     .forever();
     dom::append(&wrap, &button)?;
@@ -85,10 +103,31 @@ pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
     Ok(wrap)
 }
 
-/// Appends the page shown now to the current lesson; the number of steps after it, and
+/// What "+ Lesson" does ([`add_current_view`]).
+type AddFn = fn(ShellLink, &Route) -> Option<(usize, bool)>;
+
+/// "+ Lesson": a wasm chunk of its own (it reads and writes the lesson file's JSON, which no
+/// page needs before its first frame), fetched on the first click or by the background load.
+#[cfg(feature = "split")]
+#[wasm_split_helpers::wasm_split(lesson_add, fallible)]
+fn adder() -> Result<AddFn, SplitLoaderError> {
+    Ok(add_current_view)
+}
+
+/// Without the `split` feature "+ Lesson" is in the one wasm.
+#[cfg(not(feature = "split"))]
+async fn adder() -> Result<AddFn, SplitLoaderError> {
+    Ok(add_current_view)
+}
+
+/// Loads the chunk of "+ Lesson" (the shell's background load, so the first click is quick).
+pub(crate) async fn preload() {
+    let _ = adder().await;
+}
+
+/// Appends the view of `route` to the current lesson; the number of steps after it, and
 /// whether the browser stored it.
-fn add_current_view(shell: ShellLink) -> Option<(usize, bool)> {
-    let route = router::current_route();
+fn add_current_view(shell: ShellLink, route: &Route) -> Option<(usize, bool)> {
     let def = shell.find(&route.page)?;
     if def.id == "lesson" {
         return None;

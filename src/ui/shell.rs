@@ -117,6 +117,7 @@ async fn load_the_rest() {
     let _ = lang_files::load(lang.other(), page_strings(routed_def())).await;
     let _ = lang_files::load_all(lang).await;
     let _ = lang_files::load_all(lang.other()).await;
+    lesson_bar::preload().await;
     for def in PAGES {
         let _ = (def.load)().await;
     }

@@ -299,6 +299,7 @@ test('storage full while saving a lesson: the page says it is not saved and noth
         await page.evaluate(() => { location.hash = '#/rrt-2d'; });
         await page.waitForSelector('[data-testid="rrt-page"], canvas');
         await page.click('[data-testid="lesson-add"]');
+        await page.waitForFunction(() => /step 3/.test(document.querySelector('[data-testid="lesson-add-status"]').textContent));
         assert.match(await page.locator('[data-testid="lesson-add-status"]').textContent(), /Added as step 3 of the lesson, but this browser's storage is full/);
         await page.evaluate(() => { location.hash = '#/lesson'; });
         await page.waitForFunction(() => document.querySelectorAll('.lesson-step').length === 3);

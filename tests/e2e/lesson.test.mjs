@@ -14,6 +14,14 @@ const ROUTES = ['#/pid-step?Kp=2&Ki=0.1', '#/rrt-2d?seed=11&it=0', '#/ik-2r?q1=0
 /** The page's readouts as it stands (the lesson bar's left out). */
 const pageReadouts = (page) => readouts(page, { text: 'fallback', root: '#app-main', except: '.lesson' });
 
+/** Waits until "+ Lesson" says the view was added as step `n` (its chunk may still be loading). */
+async function addedStep(page, n) {
+  await page.waitForFunction(
+    (n) => document.querySelector('[data-testid="lesson-add-status"]').textContent.includes(`step ${n} `),
+    n,
+  );
+}
+
 async function goto(page, hash) {
   await page.goto(`${server.url}/${hash}`);
   await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
@@ -31,7 +39,7 @@ test('a lesson built from three pages is exported, imported and presented with P
       expected.push(await pageReadouts(page));
       await page.click('[data-testid="lesson-add"]');
     }
-    assert.match(await page.locator('[data-testid="lesson-add-status"]').textContent(), /step 3/);
+    await addedStep(page, 3);
 
     await goto(page, '#/lesson');
     assert.equal(await page.locator('.lesson-step').count(), 3);
@@ -141,6 +149,7 @@ test('with no lesson of its own the page opens on a built-in lesson, ready to pr
         // An own lesson: one view added, then the lesson page after a reload shows it alone.
         await goto(page, '#/pid-step?Kp=2');
         await page.click('[data-testid="lesson-add"]');
+        await addedStep(page, 1);
         await goto(page, '#/lesson');
         await page.reload();
         await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');

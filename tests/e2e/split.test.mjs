@@ -134,6 +134,36 @@ for (const lang of ['en', 'ja']) {
   });
 }
 
+for (const lang of ['en', 'ja']) {
+  test(`"+ Lesson" says so when its code cannot be fetched, and adds the view once it can (${lang})`, async () => {
+    const { page, context, errors, close } = await openApp(server.url, `#/pid-step?Kp=2&lang=${lang}`);
+    try {
+      const pattern = /\/pkg\/(pack_lesson_add\.bin|chunks\/split_lesson_add\.wasm)$/;
+      await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+      await page.reload();
+      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+      const status = page.locator('[data-testid="lesson-add-status"]');
+      await page.click('[data-testid="lesson-add"]');
+      await page.waitForFunction(() => document.querySelector('[data-testid="lesson-add-status"]').textContent !== '');
+      assert.match(await status.innerText(), lang === 'en' ? /Could not load what adds a view to the lesson/ : /読み込めませんでした/);
+      assert.equal(await status.getAttribute('role'), 'alert');
+      assert.ok(await status.isVisible());
+      assert.equal(await page.evaluate(() => localStorage.getItem('bsv.lesson')), null);
+      await shoot(page, `lesson-add-failed-${lang}-390`, { width: 390, height: 844 });
+      await shoot(page, `lesson-add-failed-${lang}-1366`, { width: 1366, height: 800 });
+      await context.unroute(pattern);
+      await page.click('[data-testid="lesson-add"]');
+      await page.waitForFunction(() => document.querySelector('[data-testid="lesson-add-status"]').getAttribute('role') === 'status');
+      assert.match(await status.textContent(), lang === 'en' ? /step 1 / : /ステップ 1 /);
+      const stored = JSON.parse(await page.evaluate(() => localStorage.getItem('bsv.lesson')));
+      assert.match(stored.steps[0].route, /^#\/pid-step\?/);
+      assert.deepEqual(appErrors(errors), []);
+    } finally {
+      await close();
+    }
+  });
+}
+
 test('on a slow network, going ik-2r → teleop → pendulum shows each page\'s frame and loading line, then the page', async () => {
   const { page, context, errors, close } = await openApp(server.url, '#/ik-2r');
   try {
