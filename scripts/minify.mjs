@@ -1,6 +1,7 @@
 // Minifies a release dist/ in place (scripts/build-dist.sh; a --dev build is left readable):
-// - pkg/bsv_playground.js, wasm-bindgen's glue, with terser (an ES module: its exports and
-//   every property name kept, local names shortened, whitespace and comments gone);
+// - the scripts (SCRIPTS: wasm-bindgen's glue, the splitter's loader, the boot scripts and
+//   the worker's) with terser (exports, top-level names of classic scripts and every property
+//   name kept, local names shortened, whitespace and comments gone);
 // - www/app.css: comments dropped and whitespace collapsed outside quoted strings (no rule,
 //   selector or value is rewritten, so what the page looks like cannot change).
 // About 9 KB gzipped off the app (scripts/size.mjs), the same behaviour: the e2e suite runs on
@@ -48,16 +49,29 @@ const main = async () => {
   const dist = process.argv[2] ?? 'dist';
   const css = join(dist, 'www', 'app.css');
   writeFileSync(css, minifyCss(readFileSync(css, 'utf8')));
-  const glue = join(dist, 'pkg', 'bsv_playground.js');
-  const result = await minify(readFileSync(glue, 'utf8'), {
-    module: true,
-    ecma: 2020,
-    compress: { passes: 2 },
-    mangle: true,
-    format: { comments: false },
-  });
-  if (!result.code) throw new Error(`${glue}: terser returned nothing`);
-  writeFileSync(glue, result.code);
+  for (const [file, module] of SCRIPTS) {
+    const path = join(dist, file);
+    const result = await minify(readFileSync(path, 'utf8'), {
+      module,
+      ecma: 2020,
+      compress: { passes: 2 },
+      mangle: true,
+      format: { comments: false },
+    });
+    if (!result.code) throw new Error(`${path}: terser returned nothing`);
+    writeFileSync(path, result.code);
+  }
 };
+
+/** The scripts of dist/ and whether each is an ES module (its exports kept) or a classic
+ * script (its top-level names kept: `routes.js` defines what `boot.js` reads). */
+const SCRIPTS = [
+  ['pkg/bsv_playground.js', true],
+  ['pkg/__wasm_split.js', true],
+  ['www/bootstrap.js', true],
+  ['www/worker.js', true],
+  ['www/boot.js', false],
+  ['www/routes.js', false],
+];
 
 if (import.meta.url === `file://${process.argv[1]}`) await main();

@@ -146,8 +146,25 @@ export function firstStrings() {
 const LOADER = `
 // Each module is instantiated once per tab; a split point's missing modules come in one
 // request (its pack) on a first visit, else each from its file (scripts/split-link.mjs).
+// SIZES[n]: the bytes of chunks/chunk_<n>.wasm; SPLITS[s].chunks: the chunks of split point
+// s as ranges ("19-27,29"), before its own module split_<s> (SPLITS[s].own bytes).
+const SIZES = __SIZES__;
 const SPLITS = __SPLITS__;
 const instantiated = new Map();
+const listed = new Map();
+function modulesOf(split) {
+    if (!listed.has(split)) {
+        const { chunks, own } = SPLITS[split];
+        const out = [];
+        for (const range of chunks ? chunks.split(',') : []) {
+            const [first, last = first] = range.split('-').map(Number);
+            for (let n = first; n <= last; n++) out.push(['chunk_' + n, SIZES[n]]);
+        }
+        out.push(['split_' + split, own]);
+        listed.set(split, out);
+    }
+    return listed.get(split);
+}
 function progress(split, loaded, total) {
     if (typeof CustomEvent === 'function' && typeof globalThis.dispatchEvent === 'function') {
         globalThis.dispatchEvent(new CustomEvent('bsv-chunk-progress', { detail: { split, loaded, total } }));
@@ -190,7 +207,8 @@ function unpack(bytes) {
     return modules;
 }
 async function fetchModules(split, missing) {
-    const { pack, packBytes, modules } = SPLITS[split];
+    const { pack, packBytes } = SPLITS[split];
+    const modules = modulesOf(split);
     const whole = missing.length === modules.length
         && !(globalThis.navigator && navigator.serviceWorker && navigator.serviceWorker.controller);
     const total = whole ? packBytes : missing.reduce((sum, id) => sum + modules.find(([m]) => m === id)[1], 0);
@@ -203,7 +221,7 @@ async function fetchModules(split, missing) {
 }
 function loadSplit(split) {
     return makeLoad(() => {
-        const ids = SPLITS[split].modules.map(([id]) => id);
+        const ids = modulesOf(split).map(([id]) => id);
         const bytes = fetchModules(split, ids.filter((id) => !instantiated.has(id)));
         bytes.catch(() => {});
         return async (imports) => {
@@ -221,6 +239,30 @@ function loadSplit(split) {
 }
 `;
 
+/** Split point `name`'s modules as the loader lists them: its chunks as ranges of their
+ * numbers (`"19-27,29"`, each chunk's size once in `sizes`) and the size of its own module
+ * (`split_<name>`, last). */
+export function listOf(name, modules, sizes) {
+  const own = modules.at(-1);
+  if (own.name !== `split_${name}`) throw new Error(`split ${name}: its own module is ${own.name}`);
+  const numbers = modules.slice(0, -1).map(({ name: file, bytes }) => {
+    const m = /^chunk_(\d+)$/.exec(file);
+    if (!m) throw new Error(`split ${name}: module ${file} is not a chunk`);
+    const n = Number(m[1]);
+    sizes[n] = bytes.length;
+    return n;
+  });
+  const sorted = [...numbers].sort((a, b) => a - b);
+  const ranges = [];
+  for (const n of sorted) {
+    const last = ranges.at(-1);
+    if (last && n === last[1] + 1) last[1] = n;
+    else ranges.push([n, n]);
+  }
+  const chunks = ranges.map(([a, b]) => (a === b ? `${a}` : `${a}-${b}`)).join(',');
+  return { chunks, own: own.bytes.length };
+}
+
 function main() {
   const [splitDir, pkgDir, wwwDir] = process.argv.slice(2);
   if (!wwwDir) throw new Error('usage: node scripts/split-link.mjs SPLIT_DIR PKG_DIR WWW_DIR');
@@ -229,6 +271,7 @@ function main() {
   mkdirSync(join(pkgDir, 'chunks'), { recursive: true });
   const packs = {};
   const splits = {};
+  const sizes = [];
   const written = new Set();
   const slims = new Map();
   const slimmed = (file) => {
@@ -248,11 +291,7 @@ function main() {
     const file = `pack_${name}.bin`;
     writeFileSync(join(pkgDir, file), bytes);
     packs[name] = { file, bytes: bytes.length };
-    splits[name] = {
-      pack: file,
-      packBytes: bytes.length,
-      modules: modules.map((m) => [m.name, m.bytes.length]),
-    };
+    splits[name] = { pack: file, packBytes: bytes.length, ...listOf(name, modules, sizes) };
   }
   const header = loader.header.replace(
     'console.error(e);',
@@ -263,7 +302,13 @@ function main() {
     .join('\n');
   writeFileSync(
     join(pkgDir, '__wasm_split.js'),
-    header + LOADER.replace('__SPLITS__', JSON.stringify(splits)) + exports + '\n',
+    header +
+      LOADER.replace('__SIZES__', JSON.stringify(Array.from(sizes, (n) => n ?? 0))).replace(
+        '__SPLITS__',
+        JSON.stringify(splits),
+      ) +
+      exports +
+      '\n',
   );
   const routes = routesOfPageTable();
   for (const [route, { split }] of Object.entries(routes)) {

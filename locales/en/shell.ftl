@@ -20,6 +20,7 @@ lang-switch-title = Show this page in Japanese (key: L)
 projector-toggle = Projector
 projector-toggle-title = Projector mode: larger type, thicker lines, high contrast (key: P)
 help-button-label = Keyboard shortcuts (key: ?)
+help-failed = Could not load the list of keyboard shortcuts. Check the connection and press “?” again.
 
 footer-disclaimer = Research, education and simulation only. Nothing here is a safety-rated controller, a real-hardware authority, or a claim that BSV ran your robot. Real hardware stays with the owner or partner.
 footer-offline = Works offline; no data leaves this page.

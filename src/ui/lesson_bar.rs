@@ -60,14 +60,14 @@ pub fn unsaved() -> bool {
 
 /// The header button and its live status line.
 pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
-    let wrap = dom::el_class("span", "lesson-add-wrap")?;
+    let wrap = dom::el_class("span", "lesson-add-wrap tool-wrap")?;
     // "+ Lesson" at every width: a bare "+" would not say what it adds to.
     let button = dom::el_class("button", "tool-button lesson-add")?;
     dom::append(&button, &dom::el_i18n("span", "tool-full", "lesson-add")?)?;
     button.set_attribute("type", "button")?;
     button.set_attribute("data-testid", "lesson-add")?;
     dom::set_i18n_attrs(&button, &[("title", "lesson-add-title")])?;
-    let status = dom::el_class("span", "lesson-add-status visually-hidden")?;
+    let status = dom::el_class("span", "lesson-add-status tool-status visually-hidden")?;
     status.set_attribute("role", "status")?;
     status.set_attribute("data-testid", "lesson-add-status")?;
     let shown = status.clone();
@@ -92,7 +92,7 @@ pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
             // A failure is shown under the button (an alert); an added step is announced.
             let classes = shown.class_list();
             let _ = classes.toggle_with_force("visually-hidden", !failed);
-            let _ = classes.toggle_with_force("lesson-add-failed", failed);
+            let _ = classes.toggle_with_force("tool-failed", failed);
             let _ = shown.set_attribute("role", if failed { "alert" } else { "status" });
             shown.set_text_content(Some(&text));
         });

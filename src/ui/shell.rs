@@ -49,6 +49,8 @@ const SHELL: ShellLink = ShellLink {
 
 const APP_ID: &str = "app";
 const MAIN_ID: &str = "app-main";
+/// The status line under "?" (the shortcuts overlay could not be loaded).
+const HELP_STATUS_ID: &str = "help-status";
 
 /// Builds the shell into `#app` (or `<body>`), applies the initial language and projector
 /// mode, installs the keys and starts the router. Calling it twice does nothing.
@@ -118,6 +120,7 @@ async fn load_the_rest() {
     let _ = lang_files::load_all(lang).await;
     let _ = lang_files::load_all(lang.other()).await;
     lesson_bar::preload().await;
+    let _ = overlay_opener().await;
     for def in PAGES {
         let _ = (def.load)().await;
     }
@@ -229,7 +232,15 @@ fn build_header() -> Result<Element, JsValue> {
         ],
     )?;
     on_click(&help, toggle_overlay)?;
-    dom::append(&tools, &help)?;
+    // Says so under "?" when the overlay's code cannot be fetched.
+    let help_wrap = dom::el_class("span", "tool-wrap")?;
+    let help_status = dom::el_class("span", "tool-status visually-hidden")?;
+    help_status.set_id(HELP_STATUS_ID);
+    help_status.set_attribute("role", "status")?;
+    help_status.set_attribute("data-testid", "help-status")?;
+    dom::append(&help_wrap, &help)?;
+    dom::append(&help_wrap, &help_status)?;
+    dom::append(&tools, &help_wrap)?;
     dom::append(&header, &tools)?;
     Ok(header)
 }
@@ -480,9 +491,50 @@ fn on_keydown(event: &KeyboardEvent) -> Result<(), JsValue> {
 }
 
 /// The overlay with the shell's keys and the mounted page's.
+/// What "?" opens ([`overlay::open`]).
+type OpenOverlay = fn(&[page::Shortcut], &[page::Shortcut]) -> Result<(), JsValue>;
+
+/// The shortcuts overlay: a wasm chunk of its own, fetched on the first "?" or by the
+/// background load.
+#[cfg(feature = "split")]
+#[wasm_split_helpers::wasm_split(shortcuts_overlay, fallible)]
+fn overlay_opener() -> Result<OpenOverlay, page::SplitLoaderError> {
+    Ok(overlay::open)
+}
+
+/// Without the `split` feature the overlay is in the one wasm.
+#[cfg(not(feature = "split"))]
+async fn overlay_opener() -> Result<OpenOverlay, page::SplitLoaderError> {
+    Ok(overlay::open)
+}
+
+/// Opens the shortcuts overlay once its code is here (at once after the background load); if
+/// it cannot be fetched, says so under "?" (the next press tries again).
 fn open_overlay() -> Result<(), JsValue> {
-    let page_keys = with_page(|page| page.shortcuts()).unwrap_or_default();
-    overlay::open(keymap::SHELL, &page_keys)
+    wasm_bindgen_futures::spawn_local(async {
+        let loaded = overlay_opener().await;
+        let status = dom::document()
+            .ok()
+            .and_then(|d| d.get_element_by_id(HELP_STATUS_ID));
+        if let Some(status) = &status {
+            dom::clear(status);
+            let failed = loaded.is_err();
+            let classes = status.class_list();
+            let _ = classes.toggle_with_force("visually-hidden", !failed);
+            let _ = classes.toggle_with_force("tool-failed", failed);
+            let _ = status.set_attribute("role", if failed { "alert" } else { "status" });
+            if failed {
+                status.set_text_content(Some(&ctx::t("help-failed")));
+            }
+        }
+        if let Ok(open) = loaded {
+            if !overlay::is_open() {
+                let page_keys = with_page(|page| page.shortcuts()).unwrap_or_default();
+                report(open(keymap::SHELL, &page_keys));
+            }
+        }
+    });
+    Ok(())
 }
 
 fn toggle_overlay() -> Result<(), JsValue> {

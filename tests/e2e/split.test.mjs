@@ -164,6 +164,33 @@ for (const lang of ['en', 'ja']) {
   });
 }
 
+for (const lang of ['en', 'ja']) {
+  test(`"?" says so when the shortcuts' code cannot be fetched, and opens them once it can (${lang})`, async () => {
+    const { page, context, errors, close } = await openApp(server.url, `#/rrt-2d?lang=${lang}`);
+    try {
+      const pattern = /\/pkg\/(pack_shortcuts_overlay\.bin|chunks\/split_shortcuts_overlay\.wasm)$/;
+      await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+      await page.reload();
+      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+      const status = page.locator('[data-testid="help-status"]');
+      await page.click('[data-testid="help-button"]');
+      await page.waitForFunction(() => document.querySelector('[data-testid="help-status"]').textContent !== '');
+      assert.match(await status.innerText(), lang === 'en' ? /Could not load the list of keyboard shortcuts/ : /読み込めませんでした/);
+      assert.equal(await status.getAttribute('role'), 'alert');
+      assert.ok(await status.isVisible());
+      await shoot(page, `help-failed-${lang}-390`, { width: 390, height: 844 });
+      await context.unroute(pattern);
+      await page.keyboard.press('?');
+      await page.locator('[data-testid="shortcut-overlay"]').waitFor({ state: 'visible' });
+      assert.equal(await status.textContent(), '');
+      assert.equal(await status.getAttribute('role'), 'status');
+      assert.deepEqual(appErrors(errors), []);
+    } finally {
+      await close();
+    }
+  });
+}
+
 test('on a slow network, going ik-2r → teleop → pendulum shows each page\'s frame and loading line, then the page', async () => {
   const { page, context, errors, close } = await openApp(server.url, '#/ik-2r');
   try {
