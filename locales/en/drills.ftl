@@ -21,6 +21,7 @@ drills-large = A large run: press Run (or Enter) to compute it. The page is busy
 drills-invalid = Fix the value marked in red, then run again.
 drills-done = Done in { $ms } ms.
 drills-failed = The drill stopped with an error; the message says why.
+drills-code-failed = The code that runs the drills could not be loaded. Check the connection and press Run again.
 
 ## Notices about the link the page was opened with
 drills-url-unknown-recipe = This link names a drill that does not exist (“{ $id }”); showing “{ $title }” instead.

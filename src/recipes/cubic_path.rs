@@ -63,7 +63,6 @@ const ARGS: [ArgSpec; 4] = [
 
 /// `cubic-path`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "cubic-path",
     python: "cubic_joint_path.py",
     args: &ARGS,
@@ -72,7 +71,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-cubic-path-quirks",
     plan: plan_of::<Entry>,
     page: Some("cubic-path"),
-    picture,
 };
 
 /// Parameters of the path (the recipe's defaults: 0.0 → 1.2 rad in 1.0 s, dt 0.02 s).

@@ -100,7 +100,6 @@ const ARGS: [ArgSpec; 1] = [ArgSpec::number(
 
 /// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "dh-fk",
     python: "dh_fk_chain.py",
     args: &ARGS,
@@ -109,7 +108,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-dh-fk-quirks",
     plan: plan_of::<Entry>,
     page: Some("dh-fk"),
-    picture,
 };
 
 /// The link transform `T_mdh(α, a, d, θ)`, entry for entry as the recipe builds it.

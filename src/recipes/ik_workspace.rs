@@ -77,7 +77,6 @@ const ARGS: [ArgSpec; 4] = [
 
 /// `ik-workspace`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "ik-workspace",
     python: "planar_ik_workspace.py",
     args: &ARGS,
@@ -86,7 +85,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-ik-workspace-quirks",
     plan: plan_of::<Entry>,
     page: Some("ik-2r"),
-    picture,
 };
 
 /// Parameters of the workspace grid (the recipe's defaults: 0.12 m, 0.10 m, 200 mm, 10 mm).

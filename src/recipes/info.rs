@@ -1,9 +1,8 @@
 //! What a recipe is, stated once in its module's `INFO`: its id and Python script, its
-//! arguments with their defaults and limits, the files it writes, its quirks, its cost and its
-//! home-card picture. The CLI's help, the pages and the home cards read it from there.
+//! arguments with their defaults and limits, the files it writes, its quirks and its cost. The
+//! CLI's help, the pages and the home cards read it from there; its kernel and its home-card
+//! picture are its [`Recipe`](super::Recipe)'s.
 
-use super::output::RecipeOutput;
-use super::picture::Picture;
 use crate::args::{ArgSpec, Args, Plan};
 use crate::error::RecipeError;
 
@@ -28,12 +27,6 @@ pub struct RecipeInfo {
     pub plan: fn(&Args) -> Result<Plan, RecipeError>,
     /// Route id of the live page that runs this recipe interactively (`ik-2r`), if any.
     pub page: Option<&'static str>,
-    /// The home card's picture of a run's output, for a canvas `aspect` (width / height)
-    /// wide (`None` for an output without the expected columns).
-    pub picture: fn(&RecipeOutput, f64) -> Option<Picture>,
-    /// Runs the recipe on parsed arguments (its kernel's `run_of`): a page reaches its own
-    /// kernel through its recipe's `INFO`, not through the registry of all twelve.
-    pub run: fn(&Args) -> Result<RecipeOutput, RecipeError>,
 }
 
 impl RecipeInfo {
@@ -55,16 +48,6 @@ impl RecipeInfo {
     /// flags only: a page parsing its own recipe's words reaches no other kernel).
     pub fn parse(&self, raw: &[String]) -> Result<Args, RecipeError> {
         Args::parse(raw, self.args, self.flags)
-    }
-
-    /// Runs the recipe with command-line style arguments and the input files `(name, text)`
-    /// its path arguments name: what `bsv <id> <args>` writes.
-    pub fn run_raw(
-        &self,
-        raw: &[String],
-        inputs: Vec<(String, String)>,
-    ) -> Result<RecipeOutput, RecipeError> {
-        (self.run)(&self.parse(raw)?.with_inputs(inputs))
     }
 
     /// Fluent id of the recipe's title (recipes.ftl).

@@ -91,7 +91,6 @@ const ARGS: [ArgSpec; 6] = [
 
 /// `jacobian-2r`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "jacobian-2r",
     python: "jacobian_planar_2r.py",
     args: &ARGS,
@@ -100,7 +99,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-jacobian-2r-quirks",
     plan: plan_of::<Entry>,
     page: Some("ik-2r"),
-    picture,
 };
 
 /// Parameters of the sweep (the recipe's defaults: 0.12 m, 0.10 m, 0 to 1.57 by 0.1, q2 0.8).

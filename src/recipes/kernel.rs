@@ -3,6 +3,7 @@
 
 use super::info::RecipeInfo;
 use super::output::RecipeOutput;
+use super::picture::Picture;
 use crate::args::{Args, Plan};
 use crate::error::RecipeError;
 use crate::pyfmt::CsvText;
@@ -121,22 +122,39 @@ pub fn run_progress_of<K: Kernel>(
 pub type RunWithProgress = fn(&Args, &mut dyn FnMut(u64, u64)) -> Result<RecipeOutput, RecipeError>;
 
 /// A recipe: its facts and its entry points (instances of [`run_of`] / [`run_progress_of`]).
-#[derive(Clone, Copy)]
+#[derive(Debug, Clone, Copy)]
 pub struct Recipe {
     pub info: &'static RecipeInfo,
     pub run: fn(&Args) -> Result<RecipeOutput, RecipeError>,
     pub run_progress: RunWithProgress,
+    /// The home card's picture of a run's output, for a canvas `aspect` (width / height)
+    /// wide (`None` for an output without the expected columns).
+    pub picture: fn(&RecipeOutput, f64) -> Option<Picture>,
 }
 
 impl Recipe {
-    /// The recipe of kernel `K`.
-    pub const fn of<K: Kernel>() -> Recipe {
+    /// The recipe of kernel `K`, with its home card's `picture`.
+    pub const fn of<K: Kernel>(picture: fn(&RecipeOutput, f64) -> Option<Picture>) -> Recipe {
         Recipe {
             info: K::INFO,
             run: run_of::<K>,
             run_progress: run_progress_of::<K>,
+            picture,
         }
     }
+}
+
+/// A run from command-line style arguments and the input files `(name, text)` its path
+/// arguments name: what `bsv <id> <args>` writes (an instance of [`run_raw_of`]).
+pub type RunRaw = fn(&[String], Vec<(String, String)>) -> Result<RecipeOutput, RecipeError>;
+
+/// Runs kernel `K` on command-line style arguments and input files: how a page reaches its
+/// own kernel, and no other.
+pub fn run_raw_of<K: Kernel>(
+    raw: &[String],
+    inputs: Vec<(String, String)>,
+) -> Result<RecipeOutput, RecipeError> {
+    run_of::<K>(&K::INFO.parse(raw)?.with_inputs(inputs))
 }
 
 /// A CSV of `header` and one row of floats (as Python prints them) per item of `rows`,

@@ -46,7 +46,6 @@ const ARGS: [ArgSpec; 3] = [
 
 /// `manip-grid`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "manip-grid",
     python: "manip_ellipse_2r.py",
     args: &ARGS,
@@ -55,7 +54,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-manip-grid-quirks",
     plan: plan_of::<Entry>,
     page: Some("ik-2r"),
-    picture,
 };
 
 /// Parameters of the grid (the recipe's defaults: 0.12 m, 0.10 m, n = 24).

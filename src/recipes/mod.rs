@@ -31,7 +31,9 @@ pub(crate) mod testkit;
 
 pub use crate::args::Plan;
 pub use info::RecipeInfo;
-pub use kernel::{plan_of, run_of, run_progress_of, Kernel, Progress, Recipe, RunWithProgress};
+pub use kernel::{
+    plan_of, run_of, run_progress_of, run_raw_of, Kernel, Progress, Recipe, RunRaw, RunWithProgress,
+};
 pub use output::{CsvFile, RecipeOutput};
 
 use crate::args::Args;
@@ -39,18 +41,18 @@ use crate::error::RecipeError;
 
 /// All recipes, in the order of the BSV page.
 pub const RECIPES: [Recipe; 12] = [
-    Recipe::of::<pendulum_energy::Entry>(),
-    Recipe::of::<ik_workspace::Entry>(),
-    Recipe::of::<traj_resample::Entry>(),
-    Recipe::of::<dh_fk::Entry>(),
-    Recipe::of::<jacobian_2r::Entry>(),
-    Recipe::of::<cubic_path::Entry>(),
-    Recipe::of::<se3_relative::Entry>(),
-    Recipe::of::<rrt_2d::Entry>(),
-    Recipe::of::<pid_step::Entry>(),
-    Recipe::of::<manip_grid::Entry>(),
-    Recipe::of::<trapezoid_profile::Entry>(),
-    Recipe::of::<umeyama_2d::Entry>(),
+    Recipe::of::<pendulum_energy::Entry>(pendulum_energy::picture),
+    Recipe::of::<ik_workspace::Entry>(ik_workspace::picture),
+    Recipe::of::<traj_resample::Entry>(traj_resample::picture),
+    Recipe::of::<dh_fk::Entry>(dh_fk::picture),
+    Recipe::of::<jacobian_2r::Entry>(jacobian_2r::picture),
+    Recipe::of::<cubic_path::Entry>(cubic_path::picture),
+    Recipe::of::<se3_relative::Entry>(se3_relative::picture),
+    Recipe::of::<rrt_2d::Entry>(rrt_2d::picture),
+    Recipe::of::<pid_step::Entry>(pid_step::picture),
+    Recipe::of::<manip_grid::Entry>(manip_grid::picture),
+    Recipe::of::<trapezoid_profile::Entry>(trapezoid_profile::picture),
+    Recipe::of::<umeyama_2d::Entry>(umeyama_2d::picture),
 ];
 
 /// Each recipe's id and the page it runs on (`RecipeInfo::page`): the registry's ids without
@@ -64,6 +66,24 @@ pub const RECIPE_PAGES: [(&str, Option<&str>); RECIPES.len()] = {
     }
     pages
 };
+
+/// Every recipe's facts in the registry's order, without its kernels: for code that lists,
+/// parses and plans recipes but runs them through [`run_with_inputs`] elsewhere (the drills
+/// page, whose runs are a chunk of their own).
+pub const INFOS: [&RecipeInfo; RECIPES.len()] = {
+    let mut infos = [RECIPES[0].info; RECIPES.len()];
+    let mut i = 0;
+    while i < RECIPES.len() {
+        infos[i] = RECIPES[i].info;
+        i += 1;
+    }
+    infos
+};
+
+/// The facts of recipe `id` (see [`INFOS`]).
+pub fn find_info(id: &str) -> Option<&'static RecipeInfo> {
+    INFOS.into_iter().find(|info| info.id == id)
+}
 
 /// The page recipe `id` runs on, if it has one (see [`RECIPE_PAGES`]).
 pub fn page_of(id: &str) -> Option<&'static str> {

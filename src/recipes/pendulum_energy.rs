@@ -122,7 +122,6 @@ const FLAGS: [ArgSpec; 7] = [
 
 /// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "pendulum-energy",
     python: "mujoco_pendulum_energy.py",
     args: &ARGS,
@@ -131,7 +130,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-pendulum-energy-quirks",
     plan: plan_of::<Entry>,
     page: Some("pendulum-energy"),
-    picture,
 };
 
 /// MuJoCo's integrator choice.

@@ -70,7 +70,6 @@ pub const DIVERGED_ABS: f64 = 1e3;
 
 /// `pid-step`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "pid-step",
     python: "pid_step_response.py",
     args: &ARGS,
@@ -79,7 +78,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-pid-step-quirks",
     plan: plan_of::<Entry>,
     page: Some("pid-step"),
-    picture,
 };
 
 /// Controller gains, plant time constant and run length (the recipe's defaults: 1.2, 0.4, 0.05,

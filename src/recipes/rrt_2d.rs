@@ -95,7 +95,6 @@ pub const OPTIONS: [ArgSpec; 8] = [
 ];
 
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "rrt-2d",
     python: "rrt_2d_grid.py",
     args: &ARGS,
@@ -104,7 +103,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-rrt-2d-quirks",
     plan: plan_of::<Entry>,
     page: Some("rrt-2d"),
-    picture,
 };
 
 const PATH_CSV: &str = "rrt_path.csv";

@@ -82,7 +82,6 @@ const ARGS: [ArgSpec; 12] = [
 
 /// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "se3-relative",
     python: "se3_relative_pose.py",
     args: &ARGS,
@@ -91,7 +90,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-se3-relative-quirks",
     plan: plan_of::<Entry>,
     page: Some("se3-relative"),
-    picture,
 };
 
 /// A pose as the recipe takes it: position in metres, roll/pitch/yaw in radians (Z·Y·X).

@@ -101,7 +101,6 @@ const ARGS: [ArgSpec; 2] = [
 
 /// What the recipe is, takes and writes.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "traj-resample",
     python: "joint_traj_resample.py",
     args: &ARGS,
@@ -110,7 +109,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-traj-resample-quirks",
     plan: plan_of::<Entry>,
     page: Some("traj-resample"),
-    picture,
 };
 
 /// The recipe's arguments; `Default` is the recipe's (the sample, 0.02 s).

@@ -62,7 +62,6 @@ const ARGS: [ArgSpec; 4] = [
 
 /// `trapezoid-profile`: id, Python file, arguments with the recipe's defaults, output file.
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "trapezoid-profile",
     python: "trapezoid_velocity_profile.py",
     args: &ARGS,
@@ -71,7 +70,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-trapezoid-profile-quirks",
     plan: plan_of::<Entry>,
     page: Some("trapezoid-profile"),
-    picture,
 };
 
 /// Move and sampling parameters (the recipe's defaults: 1.0, 0.5, 1.0, dt 0.01 s).

@@ -118,7 +118,6 @@ pub const OPTIONS: [ArgSpec; 6] = [
 ];
 
 pub const INFO: RecipeInfo = RecipeInfo {
-    run: super::kernel::run_of::<Entry>,
     id: "umeyama-2d",
     python: "umeyama_align_2d.py",
     args: &ARGS,
@@ -127,7 +126,6 @@ pub const INFO: RecipeInfo = RecipeInfo {
     quirks_id: "recipe-umeyama-2d-quirks",
     plan: plan_of::<Entry>,
     page: Some("umeyama-2d"),
-    picture,
 };
 
 const CSV: &str = "umeyama_2d.csv";

@@ -8,7 +8,7 @@ use crate::recipes::{self, RecipeOutput};
 /// The picture of recipe `id` from its output at the defaults (`None` for an unknown id or an
 /// output without the expected columns).
 pub fn picture(id: &str, output: &RecipeOutput, aspect: f64) -> Option<Picture> {
-    (recipes::find(id)?.info.picture)(output, aspect)
+    (recipes::find(id)?.picture)(output, aspect)
 }
 
 /// The picture of a recipe at its defaults, running its kernel, for a canvas `aspect` (width

@@ -9,7 +9,7 @@
 //! they are, where validation flags the bad ones (the page reports those as
 //! [`IgnoredKey::flagged`]).
 
-use crate::recipes::{self, Recipe, RECIPES};
+use crate::recipes::{self, RecipeInfo, INFOS};
 use crate::view::form::FieldDef;
 use crate::view::url::{IgnoredKey, UrlState};
 
@@ -19,7 +19,7 @@ pub const RECIPE_KEY: &str = "recipe";
 /// What a drills URL holds.
 #[derive(Clone)]
 pub struct DrillsQuery {
-    pub recipe: &'static Recipe,
+    pub recipe: &'static RecipeInfo,
     /// `(name, value)` for the recipe's fields, in URL order.
     pub values: Vec<(String, String)>,
     /// The recipe id of the URL when no recipe has it.
@@ -30,7 +30,7 @@ impl DrillsQuery {
     /// The query of a recipe and the texts of its fields: every field whose text is not blank
     /// and differs from its default.
     pub fn from_form(
-        recipe: &'static Recipe,
+        recipe: &'static RecipeInfo,
         fields: &[FieldDef],
         texts: &[Option<String>],
     ) -> DrillsQuery {
@@ -71,13 +71,13 @@ impl UrlState for DrillsQuery {
             .iter()
             .find(|(k, _)| k == RECIPE_KEY)
             .map(|(_, v)| v.trim());
-        let found = asked.and_then(recipes::find);
-        let recipe = found.unwrap_or(&RECIPES[0]);
+        let found = asked.and_then(recipes::find_info);
+        let recipe = found.unwrap_or(INFOS[0]);
         let unknown_recipe = match (asked, found) {
             (Some(id), None) => Some(id.to_string()),
             _ => None,
         };
-        let info = recipe.info;
+        let info = recipe;
         let mut values: Vec<(String, String)> = Vec::new();
         let mut ignored: Vec<IgnoredKey> = Vec::new();
         for (key, value) in query {
@@ -105,7 +105,7 @@ impl UrlState for DrillsQuery {
         let id = self
             .unknown_recipe
             .clone()
-            .unwrap_or_else(|| self.recipe.info.id.to_string());
+            .unwrap_or_else(|| self.recipe.id.to_string());
         std::iter::once((RECIPE_KEY.to_string(), id))
             .chain(self.values.iter().cloned())
             .collect()
@@ -126,9 +126,9 @@ mod tests {
     #[test]
     fn a_url_round_trips_through_the_fields() {
         let (url, ignored) = DrillsQuery::read(&q("recipe=pid-step&Kp=2&steps=120"));
-        assert_eq!(url.recipe.info.id, "pid-step");
+        assert_eq!(url.recipe.id, "pid-step");
         assert!(url.unknown_recipe.is_none() && ignored.is_empty());
-        let fields = fields(url.recipe.info);
+        let fields = fields(url.recipe);
         let texts = url.texts(&fields);
         assert_eq!(texts[0].as_deref(), Some("2"));
         assert_eq!(texts[1], None);
@@ -162,12 +162,12 @@ mod tests {
         );
         assert_eq!(ignored, vec![IgnoredKey::unknown("Kp")]);
         let (url, ignored) = DrillsQuery::read(&q("recipe=nope&Kp=3"));
-        assert_eq!(url.recipe.info.id, RECIPES[0].info.id);
+        assert_eq!(url.recipe.id, INFOS[0].id);
         assert_eq!(url.unknown_recipe.as_deref(), Some("nope"));
         assert!(url.values.is_empty());
         assert_eq!(ignored, vec![IgnoredKey::unknown("Kp")]);
         let (url, ignored) = DrillsQuery::read(&[]);
-        assert_eq!(url.recipe.info.id, RECIPES[0].info.id);
+        assert_eq!(url.recipe.id, INFOS[0].id);
         assert!(url.unknown_recipe.is_none() && ignored.is_empty());
     }
 }

@@ -872,6 +872,8 @@ pub struct Export {
     pub file: &'static str,
     /// The recipe that writes it.
     pub recipe: &'static crate::recipes::RecipeInfo,
+    /// Its kernel's run.
+    pub run: crate::recipes::RunRaw,
     /// Fluent id of the button.
     pub label_id: &'static str,
     /// Its arguments include the pose's q2 (the jacobian-2r sweep), not only the parameters.
@@ -883,18 +885,21 @@ pub const EXPORTS: [Export; 3] = [
     Export {
         file: "ik_workspace.csv",
         recipe: &crate::recipes::ik_workspace::INFO,
+        run: crate::recipes::run_raw_of::<crate::recipes::ik_workspace::Entry>,
         label_id: "ik2r-dl-ik",
         follows_q2: false,
     },
     Export {
         file: "jacobian_2r.csv",
         recipe: &crate::recipes::jacobian_2r::INFO,
+        run: crate::recipes::run_raw_of::<crate::recipes::jacobian_2r::Entry>,
         label_id: "ik2r-dl-jac",
         follows_q2: true,
     },
     Export {
         file: "manip_ellipse.csv",
         recipe: &crate::recipes::manip_grid::INFO,
+        run: crate::recipes::run_raw_of::<crate::recipes::manip_grid::Entry>,
         label_id: "ik2r-dl-manip",
         follows_q2: false,
     },
@@ -948,10 +953,7 @@ pub enum ExportError {
 
 /// The CSV text, exactly as `bsv <recipe> <args>` writes it.
 pub fn export_csv(export: &Export, p: &Params, q2: f64) -> Result<String, ExportError> {
-    let out = export
-        .recipe
-        .run_raw(&export_args(export, p, q2), Vec::new())
-        .map_err(ExportError::Recipe)?;
+    let out = (export.run)(&export_args(export, p, q2), Vec::new()).map_err(ExportError::Recipe)?;
     out.file(export.file)
         .map(str::to_string)
         .ok_or(ExportError::MissingFile {

@@ -191,6 +191,32 @@ for (const lang of ['en', 'ja']) {
   });
 }
 
+for (const lang of ['en', 'ja']) {
+  test(`the drills page says so when its kernels cannot be fetched, and Run works once they can (${lang})`, async () => {
+    const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`);
+    try {
+      const pattern = /\/pkg\/(pack_worker\.bin|chunks\/split_worker\.wasm)$/;
+      await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+      await page.evaluate(() => { location.hash = '#/drills?recipe=pid-step'; });
+      const error = page.locator('[data-testid="drills-error"]');
+      await error.waitFor({ state: 'visible', timeout: 15000 });
+      assert.match(await error.innerText(), lang === 'en' ? /The code that runs the drills could not be loaded/ : /ドリルを実行するコードを読み込めませんでした/);
+      assert.equal(await page.evaluate(() => Number(document.querySelector('[data-testid="drills-output"]').dataset.run ?? 0)), 0);
+      await page.setViewportSize({ width: 390, height: 844 });
+      await error.scrollIntoViewIfNeeded();
+      await shoot(page, `drills-code-failed-${lang}-390`, { width: 390, height: 844 });
+      await context.unroute(pattern);
+      await page.locator('[data-testid="drills-run"]').click();
+      await page.waitForFunction(() => Number(document.querySelector('[data-testid="drills-output"]').dataset.run) > 0, null, { timeout: 20000 });
+      assert.match(await page.locator('[data-testid="drills-summary"]').innerText(), /PID samples/);
+      assert.equal(await error.isVisible(), false);
+      assert.deepEqual(appErrors(errors), []);
+    } finally {
+      await close();
+    }
+  });
+}
+
 test('on a slow network, going ik-2r → teleop → pendulum shows each page\'s frame and loading line, then the page', async () => {
   const { page, context, errors, close } = await openApp(server.url, '#/ik-2r');
   try {

@@ -22,7 +22,7 @@ use super::scope::Scope;
 use super::url_state::UrlNotice;
 use crate::args::Args;
 use crate::error::RecipeError;
-use crate::recipes::RecipeInfo;
+use crate::recipes::{RecipeInfo, RunRaw};
 use crate::ui::dom;
 use crate::view::command_line::RunArgs;
 use crate::view::form::{recipe_fields, validate, validate_changed, FieldDef};
@@ -62,6 +62,8 @@ type Shown = (Vec<(usize, Message)>, Vec<usize>);
 /// The form, sliders, URL notice and exports of one recipe.
 pub struct RecipeControls<T> {
     pub info: &'static RecipeInfo,
+    /// The recipe's kernel (the downloads run it).
+    run: RunRaw,
     /// The page root (the exports' buttons) and the `<form>`.
     root: Element,
     container: Element,
@@ -116,6 +118,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
         root: &Element,
         prefix: &str,
         info: &'static RecipeInfo,
+        run: RunRaw,
         sliders: &[Slider],
         query: &[(String, String)],
         own_keys: &[&str],
@@ -165,6 +168,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
         let exports = Exports::find(root, prefix)?;
         let controls = RecipeControls {
             info,
+            run,
             root: root.clone(),
             container,
             form: RefCell::new(form),
@@ -511,7 +515,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
     /// Saves `file` of the recipe's run with the last valid arguments (the `bsv` bytes).
     pub fn download(&self, file: &str) {
         // The arguments passed the recipe's own check, so the run succeeds.
-        if let Ok(out) = self.info.run_raw(&self.raw_args(), Vec::new()) {
+        if let Ok(out) = (self.run)(&self.raw_args(), Vec::new()) {
             self.exports
                 .download(file, out.file(file).unwrap_or_default());
         }

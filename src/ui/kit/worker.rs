@@ -169,26 +169,45 @@ pub async fn worker_run_recipe(
     progress: js_sys::Function,
     envelope: u32,
 ) -> Result<JsValue, JsValue> {
-    #[cfg(feature = "split")]
-    return worker_chunk(id, args, names, inputs, progress, envelope)
+    let kernels = kernels()
         .await
         .map_err(|error| JsValue::from_str(&format!("the worker's code: {error}")))?;
-    #[cfg(not(feature = "split"))]
-    return run_in_worker(&id, args, names, inputs, &progress, envelope);
+    (kernels.in_worker)(&id, args, names, inputs, &progress, envelope)
 }
 
-/// The worker's chunk: every kernel, called by [`run_in_worker`].
+/// A worker job ([`run_in_worker`]).
+type InWorker =
+    fn(&str, Vec<String>, Vec<String>, Array, &js_sys::Function, u32) -> Result<JsValue, JsValue>;
+
+/// A run on the page ([`recipes::run_with_inputs`]).
+pub type OnPage =
+    fn(&str, &[String], Vec<(String, String)>) -> Result<recipes::RecipeOutput, RecipeError>;
+
+/// Every kernel, as the worker's jobs and the drills page's small runs reach them.
+#[derive(Clone, Copy)]
+pub struct Kernels {
+    in_worker: InWorker,
+    /// Runs a recipe on the page and returns its output.
+    pub on_page: OnPage,
+}
+
+const KERNELS: Kernels = Kernels {
+    in_worker: run_in_worker,
+    on_page: recipes::run_with_inputs,
+};
+
+/// The kernels: a wasm chunk of their own (the worker's), loaded by the worker's first job,
+/// or on the page by the first run of the drills page.
 #[cfg(feature = "split")]
 #[wasm_split(worker, fallible)]
-fn worker_chunk(
-    id: String,
-    args: Vec<String>,
-    names: Vec<String>,
-    inputs: Array,
-    progress: js_sys::Function,
-    envelope: u32,
-) -> Result<Result<JsValue, JsValue>, SplitLoaderError> {
-    Ok(run_in_worker(&id, args, names, inputs, &progress, envelope))
+pub fn kernels() -> Result<Kernels, SplitLoaderError> {
+    Ok(KERNELS)
+}
+
+/// Without the `split` feature the kernels are in the one wasm.
+#[cfg(not(feature = "split"))]
+pub async fn kernels() -> Result<Kernels, wasm_split_helpers::SplitLoaderError> {
+    Ok(KERNELS)
 }
 
 fn run_in_worker(

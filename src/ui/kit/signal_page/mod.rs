@@ -520,6 +520,7 @@ impl<S: SignalPage> Page for Signal<S> {
             &root,
             p,
             spec.info,
+            spec.run,
             spec.sliders,
             &ctx.query,
             spec.overlays,

@@ -11,7 +11,7 @@ use web_sys::KeyboardEvent;
 
 use super::sliced::Rows;
 use super::thinned::ThinRow;
-use crate::recipes::RecipeInfo;
+use crate::recipes::{RecipeInfo, RunRaw};
 use crate::ui::kit::readouts;
 use crate::ui::kit::recipe_controls::{self, Parse};
 use crate::ui::page::Shortcut;
@@ -24,6 +24,8 @@ pub struct SignalSpec<P: 'static, R: 'static> {
     /// The recipe it runs, its parse + validate, and its kernel's rows of valid arguments
     /// (`None` when the kernel refuses them).
     pub info: &'static RecipeInfo,
+    /// Its kernel's run from command-line words (the CSV downloads).
+    pub run: RunRaw,
     pub parse: Parse<P>,
     pub kernel: fn(&P) -> Option<Rows<R>>,
     /// The page's thinning hook: a row's time and plotted values pushed into the thinner

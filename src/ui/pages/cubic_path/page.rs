@@ -6,7 +6,8 @@ use wasm_bindgen::JsValue;
 
 use super::plots;
 use crate::pyfmt::py_float;
-use crate::recipes::cubic_path::{params_from_args, CubicParams, CubicSample, INFO};
+use crate::recipes::cubic_path::{self, params_from_args, CubicParams, CubicSample};
+use crate::recipes::run_raw_of;
 use crate::ui::ctx;
 use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, SignalPage, SignalSpec};
 use crate::view::cubic_path::{readouts as numbers, rows, Readouts};
@@ -22,7 +23,8 @@ impl SignalPage for CubicPage {
     type Handle = ();
     const SPEC: SignalSpec<CubicParams, CubicSample> = SignalSpec {
         prefix: "cubic",
-        info: &INFO,
+        info: &cubic_path::INFO,
+        run: run_raw_of::<cubic_path::Entry>,
         parse: params_from_args,
         kernel: |p| rows(p).map(boxed),
         thin: |to, s| to.push(s.t, &[s.q, s.qd, s.qdd]),

@@ -21,7 +21,8 @@ use std::rc::{Rc, Weak};
 use wasm_bindgen::prelude::*;
 use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 
-use crate::recipes::dh_fk::{params_from_args, run, DhParams, CSV_NAME, INFO, JOINTS};
+use crate::recipes::dh_fk::{self, params_from_args, run, DhParams, CSV_NAME, JOINTS};
+use crate::recipes::run_raw_of;
 use crate::ui::kit::canvas::{Ink, LayeredCanvas};
 use crate::ui::kit::frame;
 use crate::ui::kit::keymap;
@@ -105,7 +106,8 @@ impl Page for DhPage {
         let controls = RecipeControls::mount(
             &root,
             P,
-            &INFO,
+            &dh_fk::INFO,
+            run_raw_of::<dh_fk::Entry>,
             &[],
             &ctx.query,
             &OWN_KEYS,

@@ -61,7 +61,7 @@ impl Page {
     pub(super) fn current_args(&self) -> RunArgs {
         let texts = self.current_texts();
         let form = self.form.borrow();
-        RunArgs::new(self.st.borrow().recipe.info.id, &form.fields, &texts)
+        RunArgs::new(self.st.borrow().recipe.id, &form.fields, &texts)
     }
 
     /// Where a run's error goes: beside the field it names first, an error about no argument
@@ -80,7 +80,7 @@ impl Page {
         let texts = self.current_texts();
         let form = self.form.borrow();
         let st = self.st.borrow();
-        let info = st.recipe.info;
+        let info = st.recipe;
         // The opened file is attached to the check when it is small enough to look at on every
         // keystroke; a bigger one is sized by the run.
         let input = st.input.as_ref();

@@ -4,7 +4,7 @@
 //! the code drives carry `data-drills="<role>"`, and the ones tests drive carry `data-testid`,
 //! `data-field`, `data-download`, `data-cmd` and `data-copy`.
 
-use crate::recipes::RECIPES;
+use crate::recipes::INFOS;
 use crate::ui::kit::form::escape;
 use crate::ui::kit::{exports, readouts};
 
@@ -13,8 +13,8 @@ pub(super) const PREFIX: &str = "drills";
 
 fn recipe_options() -> String {
     let mut html = String::new();
-    for recipe in RECIPES {
-        let id = escape(recipe.info.id);
+    for recipe in INFOS {
+        let id = escape(recipe.id);
         html.push_str(&format!(
             "<option value=\"{id}\" data-i18n=\"recipe-{id}-title\"></option>"
         ));

@@ -67,7 +67,7 @@ impl Page {
 
         let (url, ignored) = DrillsQuery::read(&mount.query);
         let recipe = url.recipe;
-        let field_list = recipe_fields(recipe.info);
+        let field_list = recipe_fields(recipe);
         let mut texts = url.texts(&field_list);
         let mut missing_file = None;
         for (field, text) in field_list.iter().zip(texts.iter_mut()) {
@@ -75,7 +75,7 @@ impl Page {
                 missing_file = text.take().filter(|t| !t.trim().is_empty());
             }
         }
-        let form = form::build(&els.form, recipe.info, &texts)?;
+        let form = form::build(&els.form, recipe, &texts)?;
         let state = State {
             recipe,
             texts,
@@ -128,7 +128,7 @@ impl Page {
             .after_with_node_1(background.panel.element())?;
         *page.background.borrow_mut() = Some(Rc::new(background));
         page.install()?;
-        page.els.recipe.set_value(recipe.info.id);
+        page.els.recipe.set_value(recipe.id);
         page.render_recipe_texts()?;
         page.validate();
         {
@@ -167,7 +167,7 @@ impl Page {
         *self.listeners.borrow_mut() = vec![
             Listener::for_page(&self.els.recipe, "change", &weak, |p, _| {
                 let id = p.els.recipe.value();
-                if let Some(recipe) = recipes::find(&id) {
+                if let Some(recipe) = recipes::find_info(&id) {
                     p.switch_recipe(recipe);
                 }
             })?,

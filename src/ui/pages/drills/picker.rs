@@ -7,14 +7,14 @@ use wasm_bindgen::prelude::*;
 
 use super::state::{Page, Status, UrlNotes};
 use super::{form, texts};
-use crate::recipes::{Recipe, RECIPES};
+use crate::recipes::{RecipeInfo, INFOS};
 use crate::ui::dom;
 
 impl Page {
     /// Title, blurb, explanation and quirks of the current recipe (kept localized by the
     /// shell through `data-i18n`).
     pub(super) fn render_recipe_texts(&self) -> Result<(), JsValue> {
-        let info = self.st.borrow().recipe.info;
+        let info = self.st.borrow().recipe;
         dom::set_i18n(&self.els.recipe_title, &info.title_id())?;
         dom::set_i18n(&self.els.recipe_blurb, &info.blurb_id())?;
         dom::set_i18n(&self.els.about, &texts::about_id(info.id))?;
@@ -23,14 +23,14 @@ impl Page {
     }
 
     /// Another drill: remember this one's values, restore the other's (or its defaults).
-    pub(super) fn switch_recipe(&self, recipe: &'static Recipe) {
-        if self.st.borrow().recipe.info.id == recipe.info.id {
+    pub(super) fn switch_recipe(&self, recipe: &'static RecipeInfo) {
+        if self.st.borrow().recipe.id == recipe.id {
             return;
         }
         self.auto_timer.cancel();
         let texts = {
             let mut st = self.st.borrow_mut();
-            let current = (st.recipe.info.id, st.texts.clone());
+            let current = (st.recipe.id, st.texts.clone());
             st.remembered.retain(|(id, _)| *id != current.0);
             st.remembered.push(current);
             st.recipe = recipe;
@@ -40,16 +40,16 @@ impl Page {
             st.url = UrlNotes::default();
             st.remembered
                 .iter()
-                .find(|(id, _)| *id == recipe.info.id)
+                .find(|(id, _)| *id == recipe.id)
                 .map(|(_, t)| t.clone())
                 .unwrap_or_default()
         };
-        match form::build(&self.els.form, recipe.info, &texts) {
+        match form::build(&self.els.form, recipe, &texts) {
             Ok(built) => *self.form.borrow_mut() = built,
             Err(e) => web_sys::console::error_2(&"drills: form".into(), &e),
         }
         self.exports.clear_status();
-        self.els.recipe.set_value(recipe.info.id);
+        self.els.recipe.set_value(recipe.id);
         if let Err(e) = self.render_recipe_texts() {
             web_sys::console::error_2(&"drills: texts".into(), &e);
         }
@@ -66,11 +66,11 @@ impl Page {
 
     /// `[` / `]`: the previous / next drill.
     pub(super) fn switch_by(&self, delta: i32) {
-        let id = self.st.borrow().recipe.info.id;
-        let n = RECIPES.len() as i32;
-        let index = RECIPES.iter().position(|r| r.info.id == id).unwrap_or(0) as i32;
+        let id = self.st.borrow().recipe.id;
+        let n = INFOS.len() as i32;
+        let index = INFOS.iter().position(|r| r.id == id).unwrap_or(0) as i32;
         let next = (index + delta).rem_euclid(n) as usize;
-        if let Some(recipe) = RECIPES.get(next) {
+        if let Some(recipe) = INFOS.get(next) {
             self.switch_recipe(recipe);
         }
     }

@@ -155,7 +155,7 @@ impl Page {
             ));
         }
         els.files.set_inner_html(&html);
-        let script = recipes::find(shown.args.recipe).map_or("", |r| r.info.python);
+        let script = recipes::find_info(shown.args.recipe).map_or("", |r| r.python);
         self.exports
             .show_run(&shown.args, script, shown.input_name.as_deref());
         els.output.set_attribute("data-run", &st.runs.to_string())?;

@@ -6,7 +6,6 @@
 
 use super::shown::Shown;
 use super::state::{Page, Slot, Status};
-use crate::recipes;
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::kit::form::{reveal, Message, Reveal};
 use crate::ui::kit::worker::{self, WorkerError};
@@ -128,9 +127,39 @@ impl Page {
         }
     }
 
-    /// Runs the form's arguments now and shows the result (or the error); `asked`: the user
-    /// asked for it (Run, Enter, `r`), so the outcome is brought into view.
+    /// Runs the form's arguments as soon as the kernels are here (at once after the first
+    /// run) and shows the result (or the error); `asked`: the user asked for it (Run, Enter,
+    /// `r`), so the outcome is brought into view.
     fn run_now(&self, asked: bool) {
+        let weak = self.weak.borrow().clone();
+        wasm_bindgen_futures::spawn_local(async move {
+            let loaded = worker::kernels().await;
+            if let Some(page) = weak.upgrade() {
+                match loaded {
+                    Ok(kernels) => page.run_with(kernels.on_page, asked),
+                    Err(_) => page.runner_failed(asked),
+                }
+            }
+        });
+    }
+
+    /// The kernels could not be fetched: says so under the form, where a worker's failure
+    /// shows (Run tries again; the arguments are not at fault, so they stay valid).
+    fn runner_failed(&self, asked: bool) {
+        self.st.borrow_mut().status = Status::Failed;
+        self.validate();
+        self.render_status();
+        self.els
+            .error
+            .set_text_content(Some(&ctx::t("drills-code-failed")));
+        crate::ui::dom::show(&self.els.error, true);
+        if asked {
+            reveal(&self.els.error, Reveal::Nearest);
+        }
+    }
+
+    /// Runs the form's arguments with `run` and shows the result (or the error).
+    fn run_with(&self, run: worker::OnPage, asked: bool) {
         let args = self.current_args();
         let t0 = now_ms();
         let (result, input_name) = {
@@ -143,7 +172,7 @@ impl Page {
                 .map(|f| vec![(f.name.clone(), f.text.clone())])
                 .unwrap_or_default();
             (
-                recipes::run_with_inputs(args.recipe, &args.raw(), inputs),
+                run(args.recipe, &args.raw(), inputs),
                 file.map(|f| f.name.clone()),
             )
         };
@@ -224,7 +253,7 @@ impl Page {
             (Some(shown), Ok(form)) => {
                 shown.args
                     != crate::view::command_line::RunArgs::new(
-                        st.recipe.info.id,
+                        st.recipe.id,
                         &form.fields,
                         &st.texts,
                     )

@@ -10,7 +10,7 @@ use web_sys::{Element, HtmlSelectElement};
 use super::background::Background;
 use super::file::InputFile;
 use super::shown::Shown;
-use crate::recipes::Recipe;
+use crate::recipes::RecipeInfo;
 use crate::ui::dom::Listener;
 use crate::ui::kit::exports::Exports;
 use crate::ui::kit::form::{Form, Message};
@@ -87,7 +87,7 @@ impl UrlNotes {
 
 /// The page's state.
 pub(super) struct State {
-    pub(super) recipe: &'static Recipe,
+    pub(super) recipe: &'static RecipeInfo,
     /// The text of each field of the recipe (`None` for the file picker).
     pub(super) texts: Vec<Option<String>>,
     /// Texts of drills visited before in this visit, restored when the user comes back.

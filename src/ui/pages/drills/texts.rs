@@ -17,7 +17,7 @@ pub use crate::pyfmt::size_text;
 mod tests {
     use super::*;
     use crate::i18n::{I18n, Lang};
-    use crate::recipes::RECIPES;
+    use crate::recipes::INFOS;
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     #[test]
@@ -34,9 +34,9 @@ mod tests {
     #[test]
     fn every_recipe_has_an_explanation_in_both_languages() {
         let i18n = I18n::new();
-        for recipe in RECIPES {
-            let id = recipe.info.id;
-            for msg in [about_id(id), recipe.info.quirks_id.to_string()] {
+        for recipe in INFOS {
+            let id = recipe.id;
+            for msg in [about_id(id), recipe.quirks_id.to_string()] {
                 for lang in Lang::ALL {
                     assert!(i18n.has_message(lang, &msg), "{lang:?}: {msg}");
                 }

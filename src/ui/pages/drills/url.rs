@@ -26,7 +26,7 @@ impl Page {
     pub(super) fn render_notice(&self) {
         let st = self.st.borrow();
         let lead = st.url.unknown_recipe.clone().map(|id| {
-            let title_id = st.recipe.info.title_id();
+            let title_id = st.recipe.title_id();
             let lead: NoticeLead = Box::new(move || {
                 t_strings(
                     "drills-url-unknown-recipe",

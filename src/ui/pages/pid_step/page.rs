@@ -8,7 +8,8 @@ use web_sys::Element;
 
 use super::plots::{self, Plots};
 use crate::error::RecipeWarning;
-use crate::recipes::pid_step::{params_from_args, warnings, PidParams, PidSample, INFO};
+use crate::recipes::pid_step::{self, params_from_args, warnings, PidParams, PidSample};
+use crate::recipes::run_raw_of;
 use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, Run, RunFrom, SignalPage, SignalSpec};
 use crate::ui::{ctx, dom};
 use crate::view::form::fluent_args;
@@ -61,7 +62,8 @@ impl SignalPage for PidPage {
     type Handle = ();
     const SPEC: SignalSpec<PidParams, PidSample> = SignalSpec {
         prefix: "pid",
-        info: &INFO,
+        info: &pid_step::INFO,
+        run: run_raw_of::<pid_step::Entry>,
         parse: params_from_args,
         // The kernel's loop: the CSV's rows, times unrounded.
         kernel: |p| rows(p).map(boxed),

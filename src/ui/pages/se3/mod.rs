@@ -28,7 +28,8 @@ use wasm_bindgen::prelude::*;
 use web_sys::{Element, HtmlInputElement, HtmlSelectElement, KeyboardEvent};
 
 use crate::pyfmt::py_float;
-use crate::recipes::se3_relative::{Se3Params, CSV_NAME, INFO};
+use crate::recipes::run_raw_of;
+use crate::recipes::se3_relative::{self, Se3Params, CSV_NAME, INFO};
 use crate::ui::kit::canvas::{Ink, LayeredCanvas};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::exports::Exports;
@@ -605,7 +606,7 @@ impl Inner {
     /// Saves the recipe's CSV of the last valid poses (the `bsv` bytes).
     fn download(&self) {
         let raw = self.poses.borrow().run_args().raw();
-        match INFO.run_raw(&raw, Vec::new()) {
+        match run_raw_of::<se3_relative::Entry>(&raw, Vec::new()) {
             Ok(out) => self
                 .exports
                 .download(CSV_NAME, out.file(CSV_NAME).unwrap_or_default()),

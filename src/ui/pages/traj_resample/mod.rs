@@ -25,6 +25,7 @@ use web_sys::{Blob, Element, Event, KeyboardEvent};
 
 use crate::args::Args;
 use crate::error::RecipeError;
+use crate::recipes::run_raw_of;
 use crate::recipes::traj_resample::{self, RESAMPLED_NAME, SAMPLE, SAMPLE_NAME};
 use crate::recipes::{CsvFile, Plan};
 use crate::ui::ctx::{self, t_strings};
@@ -560,7 +561,7 @@ impl Inner {
             .iter()
             .map(|n| (n.clone(), text.as_str().to_string()))
             .collect();
-        match traj_resample::INFO.run_raw(&args.raw(), inputs) {
+        match run_raw_of::<traj_resample::Entry>(&args.raw(), inputs) {
             Ok(out) => {
                 let output = out
                     .files

@@ -8,7 +8,8 @@ use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use super::plots::{self, Grab, Plots};
-use crate::recipes::trapezoid_profile::{params_from_args, TrapParams, TrapSample, INFO};
+use crate::recipes::run_raw_of;
+use crate::recipes::trapezoid_profile::{self, params_from_args, TrapParams, TrapSample};
 use crate::ui::kit::signal_page::{boxed, Arrows, Draw, Kit, SignalPage, SignalSpec};
 use crate::ui::{ctx, dom};
 use crate::view::signal::{sig, snap, Slider};
@@ -28,7 +29,8 @@ impl SignalPage for TrapPage {
     type Handle = Grab;
     const SPEC: SignalSpec<TrapParams, TrapSample> = SignalSpec {
         prefix: "trap",
-        info: &INFO,
+        info: &trapezoid_profile::INFO,
+        run: run_raw_of::<trapezoid_profile::Entry>,
         parse: params_from_args,
         // The CSV's rows, times unrounded.
         kernel: |p| rows(p).map(boxed),
