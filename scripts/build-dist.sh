@@ -61,8 +61,12 @@ cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm "$out"/pkg/
 node scripts/split-link.mjs target/app/split "$out"/pkg "$out"/www
 # wasm-bindgen `inline_js` / `module` snippets, if any crate uses them.
 [[ -d pkg/snippets ]] && cp -r pkg/snippets "$out"/pkg/
-# A release build is minified (the glue and the stylesheet; scripts/minify.mjs).
-[[ "$profile" == --release ]] && node scripts/minify.mjs "$out"
+# A release build is minified (the scripts and the stylesheet; scripts/minify.mjs), and the
+# main wasm's imports get short names in the wasm and its glue (scripts/short-imports.mjs).
+if [[ "$profile" == --release ]]; then
+  node scripts/minify.mjs "$out"
+  node scripts/short-imports.mjs "$out"/pkg/bsv_playground_bg.wasm "$out"/pkg/bsv_playground.js
+fi
 # The offline service worker of exactly these files (sw.js; see www/sw.js).
 node scripts/sw-build.mjs "$out"
 

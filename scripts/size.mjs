@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1266 * KB;
+export const CEILING = 1260 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -29,21 +29,21 @@ export function routeBudget(route) {
 /** What `make test` allows each route's first load: its size now plus about 10 KB, and never
  * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
-  home: 220,
-  'ik-2r': 401,
-  'dh-fk': 333,
-  'se3-relative': 335,
+  home: 211,
+  'ik-2r': 387,
+  'dh-fk': 321,
+  'se3-relative': 324,
   'umeyama-2d': 350,
-  'pendulum-energy': 331,
-  'pid-step': 321,
-  'cubic-path': 327,
-  'trapezoid-profile': 324,
-  'traj-resample': 340,
-  'rrt-2d': 312,
-  teleop: 422,
-  so101: 447,
-  drills: 446,
-  lesson: 259,
+  'pendulum-energy': 320,
+  'pid-step': 310,
+  'cubic-path': 316,
+  'trapezoid-profile': 312,
+  'traj-resample': 328,
+  'rrt-2d': 303,
+  teleop: 414,
+  so101: 439,
+  drills: 322,
+  lesson: 251,
 };
 /** The ceiling of a route (a route not in the table has the largest). */
 export function routeCeiling(route) {
