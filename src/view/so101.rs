@@ -1,25 +1,25 @@
-//! The SO-101 page's pure view model (`#/so101`): the 3D scene of the arm (each link's box
-//! from [`crate::so101::scene`] drawn as a shaded solid, the table, the cube, the goal
-//! square, the obstacle, the tool frame), the wrist camera (a camera at the tool frame looking along the gripper), the
-//! clutch gizmo on the tool (three translation arrows and three rotation rings, roll about
-//! x, pitch about y, yaw about z: a press on one is a handle, dragging it commands motion
-//! along or about that axis only while held) and the readout texts.
+//! The SO-101 page's pure view model (`#/so101`): the 3D scene (the arm as its
+//! [`PARTS`], boxes around the collision meshes of each body drawn as shaded solids; the
+//! table's grid, the cube, the goal square, the obstacle, the tool frame), the wrist camera
+//! (on the gripper behind the fingers, looking along the approach: the fixed finger below, the
+//! table and the cube ahead), the clutch gizmo on the tool (three translation arrows and three
+//! rotation rings, roll about x, pitch about y, yaw about z: a press on one is a handle,
+//! dragging it commands motion along or about that axis only while held) and the readout
+//! texts.
 
 use glam::{DMat3, DVec2, DVec3};
 
 use crate::camera3d::{hit_point, Camera};
 use crate::so101::kinematics::{Chain, Frame};
-use crate::so101::model::joint_limits;
-use crate::so101::scene::{
-    base_box, link_boxes, obstacle_box, Obb, SceneConfig, GOAL_HALF, TABLE_Z,
-};
+use crate::so101::model::{joint_limits, FIXED_FINGER, PARTS};
+use crate::so101::scene::{obstacle_box, Obb, SceneConfig, GOAL_HALF, TABLE_Z};
 use crate::teleop::control::IkMethod;
 use crate::view::scene3d::{AxisPalette, Layer, Scene, Shape3, Stroke};
 
 /// The point the world view looks at and the radius it frames, m.
-pub const VIEW_TARGET: [f64; 3] = [0.15, 0.02, 0.07];
+pub const VIEW_TARGET: [f64; 3] = [0.13, 0.02, 0.085];
 /// See [`VIEW_TARGET`].
-pub const VIEW_RADIUS: f64 = 0.2;
+pub const VIEW_RADIUS: f64 = 0.215;
 /// Gizmo arrow length, m.
 pub const GIZMO_M: f64 = 0.06;
 /// Rotation ring radius, m.
@@ -62,6 +62,13 @@ const CUBE_SEEN: Stroke = Stroke::dashed("#0072b2", 1.5);
 const EDGE: &str = "rgba(15, 23, 42, 0.55)";
 /// Where the light comes from (unit: above, in front and to the side of the arm).
 const LIGHT: [f64; 3] = [0.408, -0.302, 0.862];
+/// The fingers as the wrist camera sees them, close in front of it: light enough to show
+/// the table through.
+const FINGER_SEEN: Shades = [
+    "rgba(200, 105, 58, 0.4)",
+    "rgba(146, 64, 14, 0.4)",
+    "rgba(95, 42, 9, 0.4)",
+];
 const GOAL: Stroke = Stroke::solid("#009e73", 3.0);
 const TABLE: Stroke = Stroke::solid("#cbd5e1", 1.0);
 
@@ -158,6 +165,30 @@ fn square(scene: &mut Scene, centre: [f64; 2], half: f64, stroke: Stroke) {
     }
 }
 
+/// The table's grid cell, m.
+pub const TABLE_CELL_M: f64 = 0.05;
+/// The gridded part of the table (x from, x to, y from, y to), m: the base, the arm's reach
+/// over the table, the cube and the goal.
+pub const TABLE_AREA: [f64; 4] = [-0.1, 0.35, -0.25, 0.25];
+
+/// The table's grid over [`TABLE_AREA`], on the ground layer.
+fn table(scene: &mut Scene) {
+    let [x0, x1, y0, y1] = TABLE_AREA;
+    let z = TABLE_Z;
+    let lines = |from: f64, to: f64| {
+        let n = ((to - from) / TABLE_CELL_M).round() as usize;
+        (0..=n).map(move |i| from + i as f64 * TABLE_CELL_M)
+    };
+    for x in lines(x0, x1) {
+        let (a, b) = (DVec3::new(x, y0, z), DVec3::new(x, y1, z));
+        scene.push(Layer::Ground, Shape3::Line { a, b }, TABLE);
+    }
+    for y in lines(y0, y1) {
+        let (a, b) = (DVec3::new(x0, y, z), DVec3::new(x1, y, z));
+        scene.push(Layer::Ground, Shape3::Line { a, b }, TABLE);
+    }
+}
+
 /// The twelve edges of a box, in `layer`.
 fn box_edges(scene: &mut Scene, b: &Obb, stroke: Stroke, layer: Layer) {
     let c = b.corners();
@@ -186,22 +217,37 @@ fn box_edges(scene: &mut Scene, b: &Obb, stroke: Stroke, layer: Layer) {
     }
 }
 
-/// The arm, the cube, the goal and the wall (what both views show; the wrist camera, inside
-/// the gripper, sees the gripper and the jaw as outlines).
+/// The boxes of the drawn parts ([`PARTS`]) at `chain`, each with its body (0 the base, 6
+/// the moving jaw).
+pub fn part_boxes(chain: &Chain) -> impl Iterator<Item = (usize, Obb)> + '_ {
+    PARTS.iter().map(|p| {
+        let frame = if p.body == 6 {
+            &chain.jaw
+        } else {
+            &chain.bodies[p.body]
+        };
+        (p.body, Obb::of(frame, &p.centre, &p.half))
+    })
+}
+
+/// The arm, the cube, the goal and the wall (what both views show; the wrist camera, mounted
+/// on the gripper, sees of the arm only the fingers).
 fn things(scene: &mut Scene, look: &Look, wrist: bool) {
     square(scene, look.goal, GOAL_HALF, GOAL);
     if look.obstacle {
         box_faces(scene, &obstacle_box(), WALL);
     }
-    box_faces(scene, &base_box(look.chain), BASE);
-    let boxes = link_boxes(look.chain);
-    for (i, b) in boxes.iter().enumerate() {
-        let shades = if i == 5 { JAW } else { LINK };
-        if wrist && i >= 4 {
-            box_edges(scene, b, Stroke::solid(shades[1], 2.0), Layer::Scene);
-        } else {
-            box_faces(scene, b, shades);
+    for (i, (body, b)) in part_boxes(look.chain).enumerate() {
+        if wrist && body != 6 && i != FIXED_FINGER {
+            continue;
         }
+        let shades = match body {
+            0 => BASE,
+            _ if wrist => FINGER_SEEN,
+            5 | 6 => JAW,
+            _ => LINK,
+        };
+        box_faces(scene, &b, shades);
     }
     box_faces(scene, &look.cube, CUBE);
     // The cube's outline over everything: it stays in sight behind the gripper.
@@ -211,7 +257,7 @@ fn things(scene: &mut Scene, look: &Look, wrist: bool) {
 /// The world view's scene.
 pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
     scene.clear();
-    scene.grid(8, 0.05, TABLE);
+    table(scene);
     things(scene, look, false);
     let tool = &look.chain.tool;
     scene.triad(v(&tool.pos), rot(tool), 0.035, palette, 2.0, None);
@@ -223,7 +269,7 @@ pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
 /// The wrist camera's scene (no gizmo).
 pub fn wrist(scene: &mut Scene, look: &Look) {
     scene.clear();
-    scene.grid(8, 0.05, TABLE);
+    table(scene);
     things(scene, look, true);
 }
 
@@ -412,15 +458,24 @@ pub fn world_camera(width: f64, height: f64) -> Camera {
     )
 }
 
-/// The wrist camera: at the tool frame's origin looking along its x axis (the gripper's
-/// approach direction), `width`×`height` CSS px, 70° vertical field of view.
+/// The wrist camera's eye in the tool frame, m: on the approach axis (x), behind the fingers,
+/// so the fixed finger shows in the lower part of the image and the table and the cube ahead.
+pub const WRIST_EYE: [f64; 3] = [-0.09, 0.0, 0.0];
+/// The point the wrist camera looks at, in the tool frame, m: just past the finger tips.
+pub const WRIST_AIM: [f64; 3] = [0.04, 0.0, 0.0];
+/// The wrist camera's vertical field of view, degrees.
+pub const WRIST_FOV_DEG: f64 = 70.0;
+
+/// The wrist camera: from [`WRIST_EYE`] towards [`WRIST_AIM`] on the tool,
+/// `width`×`height` CSS px, [`WRIST_FOV_DEG`] vertical field of view.
 pub fn wrist_camera(chain: &Chain, width: f64, height: f64) -> Camera {
     let t = &chain.tool;
-    let ahead = DVec3::from(wrist_ahead(chain));
-    // Back off 1 cm behind the tool frame, between the jaws, so the jaw tips show.
-    let eye = v(&t.pos) - ahead * 0.01;
-    let distance = 0.1;
-    let back = -ahead;
+    let r = rot(t);
+    let eye = v(&t.pos) + r * DVec3::from(WRIST_EYE);
+    let target = v(&t.pos) + r * DVec3::from(WRIST_AIM);
+    let back = eye - target;
+    let distance = back.length();
+    let back = back / distance;
     let elevation = back
         .z
         .clamp(-1.0, 1.0)
@@ -428,11 +483,11 @@ pub fn wrist_camera(chain: &Chain, width: f64, height: f64) -> Camera {
         .clamp(-Camera::MAX_ELEVATION, Camera::MAX_ELEVATION);
     let azimuth = back.y.atan2(back.x);
     Camera {
-        target: eye + ahead * distance,
+        target,
         azimuth,
         elevation,
         distance,
-        fov_y: 70f64.to_radians(),
+        fov_y: WRIST_FOV_DEG.to_radians(),
         width,
         height,
     }
@@ -535,12 +590,6 @@ pub fn wrist_view(chain: &Chain, width: f64, height: f64) -> (Camera, f64) {
     (camera, roll)
 }
 
-/// The gripper's approach direction (the tool frame's x axis), world.
-fn wrist_ahead(chain: &Chain) -> [f64; 3] {
-    let t = &chain.tool;
-    [t.rot[0][0], t.rot[1][0], t.rot[2][0]]
-}
-
 /// A joint's readout: its angle in degrees and its limits, `"12.3° (−110.0…110.0)"`.
 pub fn joint_text(i: usize, q: f64) -> String {
     let (lo, hi) = joint_limits()[i.min(4)];
@@ -589,9 +638,13 @@ mod tests {
         };
         let mut scene = Scene::new();
         world(&mut scene, &look, AxisPalette::Classic);
-        // Grid (2 × 9 lines), goal 4, wall/base/6 links/cube 9 boxes × 6 faces, the cube's
-        // outline 12, triad 3, gizmo 3 arrows + 3 rings of 24 segments.
-        assert_eq!(scene.len(), 18 + 4 + 9 * 6 + 12 + 3 + 3 + 3 * RING_POINTS);
+        // Table grid (10 + 11 lines), goal 4, the wall, the arm's parts and the cube as boxes of 6
+        // faces, the cube's outline 12, triad 3, gizmo 3 arrows + 3 rings of 24 segments.
+        let boxes = 1 + PARTS.len() + 1;
+        assert_eq!(
+            scene.len(),
+            21 + 4 + boxes * 6 + 12 + 3 + 3 + 3 * RING_POINTS
+        );
         let camera = world_camera(800.0, 500.0);
         assert!(!scene.project(&camera).is_empty());
     }
@@ -662,18 +715,27 @@ mod tests {
     }
 
     #[test]
-    fn the_wrist_camera_sees_the_cube_below_the_start_pose() {
+    fn the_wrist_camera_sees_the_fingers_and_the_cube_at_the_start_pose() {
         let sim = Sim::new(SceneConfig::default_for(false)).unwrap();
         let chain = sim.chain();
-        let cam = wrist_camera(&chain, 320.0, 240.0);
-        // The tool points down at the start: the table under it projects, the sky does not.
-        let under = DVec3::new(chain.tool.pos[0], chain.tool.pos[1], 0.0);
-        let p = cam.project(under).unwrap();
-        assert!(
-            (p.at.x - 160.0).abs() < 40.0 && (p.at.y - 120.0).abs() < 40.0,
-            "{p:?}"
-        );
-        assert!(cam
+        let (camera, roll) = wrist_view(&chain, 320.0, 240.0);
+        // A point as shown: turned by `roll` about the image's centre, in the 320×240 image.
+        let shown = |p: DVec3| {
+            let at = camera.project(p)?.at - DVec2::splat(camera.width / 2.0);
+            let (sin, cos) = roll.sin_cos();
+            let turned = DVec2::new(at.x * cos + at.y * sin, -at.x * sin + at.y * cos);
+            Some(turned + DVec2::new(160.0, 120.0))
+        };
+        let inside = |at: DVec2| (0.0..320.0).contains(&at.x) && (0.0..240.0).contains(&at.y);
+        // The cube on the table ahead.
+        let cube = shown(DVec3::from_array(sim.state().cube.pos)).unwrap();
+        assert!(inside(cube), "{cube:?}");
+        // The fixed finger, in the lower half.
+        let (_, finger) = part_boxes(&chain).nth(FIXED_FINGER).unwrap();
+        let finger = shown(v(&finger.centre)).unwrap();
+        assert!(inside(finger) && finger.y > 120.0, "{finger:?}");
+        // The sky does not project.
+        assert!(camera
             .project(DVec3::new(chain.tool.pos[0], chain.tool.pos[1], 1.0))
             .is_none());
     }
@@ -736,8 +798,8 @@ mod tests {
             let z = DVec3::new(t.rot[0][2], t.rot[1][2], t.rot[2][2]);
             let eye = v(&t.pos);
             let (a, b) = (
-                camera.project(eye + z * 0.0 + DVec3::from(wrist_ahead(&chain)) * 0.05),
-                camera.project(eye + z * 0.02 + DVec3::from(wrist_ahead(&chain)) * 0.05),
+                camera.project(eye + z * 0.0 + rot(t).col(0) * 0.05),
+                camera.project(eye + z * 0.02 + rot(t).col(0) * 0.05),
             );
             let d = b.unwrap().at - a.unwrap().at;
             let (sin, cos) = roll.sin_cos();
@@ -752,7 +814,8 @@ mod tests {
         };
         let r0 = roll_at(0.0, &mut q);
         let r1 = roll_at(0.5, &mut q);
-        assert!(((r1 - r0).abs() - 0.5).abs() < 0.05, "{r0} {r1}");
+        let turned = (r1 - r0).sin().atan2((r1 - r0).cos());
+        assert!((turned.abs() - 0.5).abs() < 0.05, "{r0} {r1}");
         // The square camera keeps the image's scale.
         let chain = sim.chain();
         let (square, _) = wrist_view(&chain, 320.0, 240.0);
