@@ -230,10 +230,9 @@ pub fn part_boxes(chain: &Chain) -> impl Iterator<Item = (usize, Obb)> + '_ {
     })
 }
 
-/// The arm, the cube, the goal and the wall (what both views show; the wrist camera, mounted
-/// on the gripper, sees of the arm only the fingers).
+/// The arm, the cube and the wall (what both views show over the ground; the wrist camera,
+/// mounted on the gripper, sees of the arm only the fingers).
 fn things(scene: &mut Scene, look: &Look, wrist: bool) {
-    square(scene, look.goal, GOAL_HALF, GOAL);
     if look.obstacle {
         box_faces(scene, &obstacle_box(), WALL);
     }
@@ -254,10 +253,17 @@ fn things(scene: &mut Scene, look: &Look, wrist: bool) {
     box_edges(scene, &look.cube, CUBE_SEEN, Layer::Overlay);
 }
 
-/// The world view's scene.
-pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
+/// The ground: the table's grid and the goal square (in the world view, what stays while
+/// the arm moves: the page draws it under the rest, again only when the view turns).
+pub fn ground(scene: &mut Scene, goal: [f64; 2]) {
     scene.clear();
     table(scene);
+    square(scene, goal, GOAL_HALF, GOAL);
+}
+
+/// The world view's scene over the [`ground`].
+pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
+    scene.clear();
     things(scene, look, false);
     let tool = &look.chain.tool;
     scene.triad(v(&tool.pos), rot(tool), 0.035, palette, 2.0, None);
@@ -266,10 +272,9 @@ pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
     }
 }
 
-/// The wrist camera's scene (no gizmo).
+/// The wrist camera's scene: the ground and what stands on it (no gizmo).
 pub fn wrist(scene: &mut Scene, look: &Look) {
-    scene.clear();
-    table(scene);
+    ground(scene, look.goal);
     things(scene, look, true);
 }
 
@@ -637,14 +642,14 @@ mod tests {
             active: None,
         };
         let mut scene = Scene::new();
+        // The ground: the table's grid (10 + 11 lines), the goal 4.
+        ground(&mut scene, look.goal);
+        assert_eq!(scene.len(), 21 + 4);
         world(&mut scene, &look, AxisPalette::Classic);
-        // Table grid (10 + 11 lines), goal 4, the wall, the arm's parts and the cube as boxes of 6
-        // faces, the cube's outline 12, triad 3, gizmo 3 arrows + 3 rings of 24 segments.
+        // The wall, the arm's parts and the cube as boxes of 6 faces, the cube's outline 12,
+        // triad 3, gizmo 3 arrows + 3 rings of 24 segments.
         let boxes = 1 + PARTS.len() + 1;
-        assert_eq!(
-            scene.len(),
-            21 + 4 + boxes * 6 + 12 + 3 + 3 + 3 * RING_POINTS
-        );
+        assert_eq!(scene.len(), boxes * 6 + 12 + 3 + 3 + 3 * RING_POINTS);
         let camera = world_camera(800.0, 500.0);
         assert!(!scene.project(&camera).is_empty());
     }
