@@ -13,7 +13,7 @@ use super::scene::SceneConfig;
 use super::sim::{Command, Sim, State, StepRecord};
 use crate::pyfmt::push_py_float;
 use crate::teleop::episode::{
-    mismatch, propose, same_bool, same_f64, FailureCategory, Label, ReplayMismatch,
+    mismatch, propose, replay_steps, same_bool, same_f64, FailureCategory, Label, ReplayMismatch,
 };
 use crate::teleop::metrics::EpisodeMetrics;
 use crate::teleop::recording::{arm_sim, EpisodeOf, Recorder};
@@ -76,17 +76,6 @@ pub type EpisodeRecorder = Recorder<Sim>;
 arm_sim!(Sim, SceneConfig, State, Command, StepRecord, true);
 
 impl EpisodeOf<Sim> {
-    /// How the episode ended (`None`: ended by the pilot or interrupted).
-    pub fn outcome(&self) -> Option<Outcome> {
-        self.records.iter().rev().find_map(|r| {
-            r.events.iter().find_map(|e| match e {
-                Event::Success => Some(Outcome::Success),
-                Event::Timeout => Some(Outcome::Timeout),
-                _ => None,
-            })
-        })
-    }
-
     /// The episode's figures (see [`mod@crate::teleop::metrics`]; `fitts` is `None`, the ideal
     /// path is start tool → cube start, then cube start → where it rests, when done).
     pub fn metrics(&self) -> EpisodeMetrics {
@@ -328,19 +317,7 @@ pub fn replay(episode: &Episode) -> Result<EpisodeMetrics, ReplayMismatch> {
             episode.commands.len().to_string(),
         ));
     }
-    for (cmd, e) in episode.commands.iter().zip(&episode.records) {
-        let step = sim.state().step + 1;
-        if sim.done().is_some() {
-            return Err(mismatch(
-                step,
-                "rows",
-                "a step".to_string(),
-                "the episode had already ended".to_string(),
-            ));
-        }
-        let g = sim.step(cmd);
-        compare(step, e, &g)?;
-    }
+    replay_steps(&mut sim, &episode.commands, &episode.records, compare)?;
     Ok(episode.metrics())
 }
 

@@ -21,7 +21,7 @@ use super::arm::ArmParams;
 use super::control::{ControlParams, IkMethod};
 use super::error::TeleopError;
 use super::metrics::EpisodeMetrics;
-use super::recording::{arm_sim, EpisodeOf, Recorder};
+use super::recording::{arm_sim, ArmSim, EpisodeOf, Recorder};
 use super::scene::{SceneConfig, Target, Task};
 use super::sim::{Command, Event, Outcome, Sim, State, StepRecord};
 use crate::pyfmt::{push_py_float, py_float};
@@ -66,13 +66,6 @@ pub type Episode = EpisodeOf<Sim>;
 pub type EpisodeRecorder = Recorder<Sim>;
 
 arm_sim!(Sim, SceneConfig, State, Command, StepRecord, false);
-
-impl EpisodeOf<Sim> {
-    /// How the episode ended (`None`: ended by the pilot or interrupted).
-    pub fn outcome(&self) -> Option<Outcome> {
-        Outcome::of(&self.records)
-    }
-}
 
 /// The figures of `episode`, from its records (no re-simulation; see [`EpisodeMetrics`]).
 pub fn metrics(episode: &Episode) -> EpisodeMetrics {
@@ -572,8 +565,21 @@ pub fn replay(episode: &Episode) -> Result<EpisodeMetrics, ReplayMismatch> {
             episode.commands.len().to_string(),
         ));
     }
-    for (cmd, rec) in episode.commands.iter().zip(&episode.records) {
-        let step = sim.state().step + 1;
+    replay_steps(&mut sim, &episode.commands, &episode.records, compare)?;
+    Ok(metrics(episode))
+}
+
+/// Steps `sim` with each of `commands` and checks what each step made against the one of
+/// `records` beside it with `compare` (the step's number, recorded, made); a command left
+/// after the episode ended is a mismatch of the `rows`.
+pub fn replay_steps<S: ArmSim>(
+    sim: &mut S,
+    commands: &[S::Command],
+    records: &[S::Record],
+    compare: impl Fn(u64, &S::Record, &S::Record) -> Result<(), ReplayMismatch>,
+) -> Result<(), ReplayMismatch> {
+    for (cmd, rec) in commands.iter().zip(records) {
+        let step = sim.steps_taken() + 1;
         if sim.done().is_some() {
             return Err(mismatch(
                 step,
@@ -582,10 +588,10 @@ pub fn replay(episode: &Episode) -> Result<EpisodeMetrics, ReplayMismatch> {
                 "the episode had already ended".to_string(),
             ));
         }
-        let got = sim.step(cmd);
+        let got = sim.advance(cmd);
         compare(step, rec, &got)?;
     }
-    Ok(metrics(episode))
+    Ok(())
 }
 
 fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismatch> {
