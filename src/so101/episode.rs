@@ -13,7 +13,8 @@ use super::scene::SceneConfig;
 use super::sim::{Command, Sim, State, StepRecord};
 use crate::pyfmt::push_py_float;
 use crate::teleop::episode::{
-    mismatch, propose, replay_steps, same_bool, same_f64, FailureCategory, Label, ReplayMismatch,
+    bad, check_size, mismatch, propose, replay_steps, row_cells, same_bool, same_events, same_f64,
+    FailureCategory, Label, ReplayMismatch,
 };
 use crate::teleop::metrics::EpisodeMetrics;
 use crate::teleop::recording::{arm_sim, EpisodeOf, Recorder};
@@ -173,22 +174,9 @@ pub fn episode_csv(episode: &Episode) -> String {
     out
 }
 
-fn bad(row: usize, column: &str, value: &str) -> TeleopError {
-    TeleopError::BadCell {
-        row,
-        column: column.to_string(),
-        value: value.to_string(),
-    }
-}
-
 /// Reads an episode CSV back; errors name the row (1-based) and column.
 pub fn parse_episode_csv(text: &str) -> Result<Episode, TeleopError> {
-    if text.len() as u64 > MAX_EPISODE_BYTES {
-        return Err(TeleopError::TooLarge {
-            bytes: text.len() as u64,
-            limit: MAX_EPISODE_BYTES,
-        });
-    }
+    check_size(text, MAX_EPISODE_BYTES)?;
     let mut lines = text.lines();
     if lines.next().map(str::trim_end) != Some(MARKER) {
         return Err(TeleopError::NotAnEpisode);
@@ -227,14 +215,7 @@ pub fn parse_episode_csv(text: &str) -> Result<Episode, TeleopError> {
         if line.trim().is_empty() {
             continue;
         }
-        let cells: Vec<&str> = line.split(',').collect();
-        if cells.len() != COLUMNS.len() {
-            return Err(TeleopError::Ragged {
-                row,
-                expected: COLUMNS.len(),
-                got: cells.len(),
-            });
-        }
+        let cells = row_cells(row, line, COLUMNS.len())?;
         let (cmd, r) = parse_row(row, &cells)?;
         commands.push(cmd);
         records.push(r);
@@ -355,11 +336,7 @@ fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismat
         e.orientation_error,
         g.orientation_error,
     )?;
-    if e.events != g.events {
-        let text = |events: &[Event]| events.iter().map(Event::text).collect::<Vec<_>>().join(";");
-        return Err(mismatch(step, "event", text(&e.events), text(&g.events)));
-    }
-    Ok(())
+    same_events(step, &e.events, &g.events)
 }
 
 /// An SO-101 episode as stored (localStorage): configuration, start state and the

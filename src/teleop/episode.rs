@@ -207,12 +207,37 @@ fn header<'a, 'b>(rows: &'b [HeaderRow<'a>], key: &str) -> Result<&'b HeaderRow<
         })
 }
 
-fn bad(row: usize, column: &str, value: &str) -> TeleopError {
+/// A cell that does not read: its row (1-based), column and text.
+pub fn bad(row: usize, column: &str, value: &str) -> TeleopError {
     TeleopError::BadCell {
         row,
         column: column.to_string(),
         value: value.to_string(),
     }
+}
+
+/// Refuses an episode file longer than `limit` bytes.
+pub fn check_size(text: &str, limit: u64) -> Result<(), TeleopError> {
+    if text.len() as u64 > limit {
+        return Err(TeleopError::TooLarge {
+            bytes: text.len() as u64,
+            limit,
+        });
+    }
+    Ok(())
+}
+
+/// The cells of step row `row`, which must have `columns` of them.
+pub fn row_cells(row: usize, line: &str, columns: usize) -> Result<Vec<&str>, TeleopError> {
+    let cells: Vec<&str> = line.split(',').collect();
+    if cells.len() != columns {
+        return Err(TeleopError::Ragged {
+            row,
+            expected: columns,
+            got: cells.len(),
+        });
+    }
+    Ok(cells)
 }
 
 fn parse_f64(row: usize, column: &str, text: &str) -> Result<f64, TeleopError> {
@@ -266,12 +291,7 @@ fn one_int<T: std::str::FromStr>(rows: &[HeaderRow], key: &str) -> Result<T, Tel
 /// Reads an episode CSV back (see the module docs). The config is validated; errors name the
 /// row (1-based, the marker row is 1) and the column or header key.
 pub fn parse_episode_csv(text: &str) -> Result<Episode, TeleopError> {
-    if text.len() as u64 > MAX_EPISODE_BYTES {
-        return Err(TeleopError::TooLarge {
-            bytes: text.len() as u64,
-            limit: MAX_EPISODE_BYTES,
-        });
-    }
+    check_size(text, MAX_EPISODE_BYTES)?;
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text
         .lines()
@@ -334,14 +354,7 @@ pub fn parse_episode_csv(text: &str) -> Result<Episode, TeleopError> {
         if line.trim().is_empty() {
             continue;
         }
-        let cells: Vec<&str> = line.split(',').collect();
-        if cells.len() != COLUMNS.len() {
-            return Err(TeleopError::Ragged {
-                row,
-                expected: COLUMNS.len(),
-                got: cells.len(),
-            });
-        }
+        let cells = row_cells(row, line, COLUMNS.len())?;
         let f = |i: usize| parse_f64(row, COLUMNS[i], cells[i]);
         let b = |i: usize| parse_bool(row, COLUMNS[i], cells[i]);
         let cmd = Command {
@@ -625,9 +638,14 @@ fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismat
     same_f64(step, "block_x", e.block_x, g.block_x)?;
     same_f64(step, "block_z", e.block_z, g.block_z)?;
     same_f64(step, "manipulability", e.manipulability, g.manipulability)?;
-    if e.events != g.events {
+    same_events(step, &e.events, &g.events)
+}
+
+/// Checks that step `step` made the recorded events, in order.
+pub fn same_events(step: u64, expected: &[Event], got: &[Event]) -> Result<(), ReplayMismatch> {
+    if expected != got {
         let text = |events: &[Event]| events.iter().map(Event::text).collect::<Vec<_>>().join(";");
-        return Err(mismatch(step, "event", text(&e.events), text(&g.events)));
+        return Err(mismatch(step, "event", text(expected), text(got)));
     }
     Ok(())
 }
