@@ -147,17 +147,17 @@ pub fn joint_limits() -> [(f64, f64); 5] {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Part {
     /// The body: 0 the base, 1–5 the chain's bodies of [`BODIES`], 6 the moving jaw ([`JAW`]).
-    pub body: usize,
-    /// Centre in the body's frame, m.
-    pub centre: [f64; 3],
+    pub body: u8,
+    /// Centre in the body's frame, m (single precision: drawn only).
+    pub centre: [f32; 3],
     /// Half sizes along the body's axes, m.
-    pub half: [f64; 3],
+    pub half: [f32; 3],
 }
 
 /// The fixed jaw's finger: its index in [`PARTS`].
 pub const FIXED_FINGER: usize = 16;
 
-const fn part(body: usize, centre: [f64; 3], half: [f64; 3]) -> Part {
+const fn part(body: u8, centre: [f32; 3], half: [f32; 3]) -> Part {
     Part { body, centre, half }
 }
 

@@ -165,29 +165,10 @@ fn square(scene: &mut Scene, centre: [f64; 2], half: f64, stroke: Stroke) {
     }
 }
 
-/// The table's grid cell, m.
+/// The table's grid: cells (a side), m.
 pub const TABLE_CELL_M: f64 = 0.05;
-/// The gridded part of the table (x from, x to, y from, y to), m: the base, the arm's reach
-/// over the table, the cube and the goal.
-pub const TABLE_AREA: [f64; 4] = [-0.1, 0.35, -0.25, 0.25];
-
-/// The table's grid over [`TABLE_AREA`], on the ground layer.
-fn table(scene: &mut Scene) {
-    let [x0, x1, y0, y1] = TABLE_AREA;
-    let z = TABLE_Z;
-    let lines = |from: f64, to: f64| {
-        let n = ((to - from) / TABLE_CELL_M).round() as usize;
-        (0..=n).map(move |i| from + i as f64 * TABLE_CELL_M)
-    };
-    for x in lines(x0, x1) {
-        let (a, b) = (DVec3::new(x, y0, z), DVec3::new(x, y1, z));
-        scene.push(Layer::Ground, Shape3::Line { a, b }, TABLE);
-    }
-    for y in lines(y0, y1) {
-        let (a, b) = (DVec3::new(x0, y, z), DVec3::new(x1, y, z));
-        scene.push(Layer::Ground, Shape3::Line { a, b }, TABLE);
-    }
-}
+/// The table's grid: cells on a side, about the base (the arm's reach, the cube and the goal).
+pub const TABLE_CELLS: usize = 14;
 
 /// The twelve edges of a box, in `layer`.
 fn box_edges(scene: &mut Scene, b: &Obb, stroke: Stroke, layer: Layer) {
@@ -224,9 +205,10 @@ pub fn part_boxes(chain: &Chain) -> impl Iterator<Item = (usize, Obb)> + '_ {
         let frame = if p.body == 6 {
             &chain.jaw
         } else {
-            &chain.bodies[p.body]
+            &chain.bodies[usize::from(p.body)]
         };
-        (p.body, Obb::of(frame, &p.centre, &p.half))
+        let (centre, half) = (p.centre.map(f64::from), p.half.map(f64::from));
+        (usize::from(p.body), Obb::of(frame, &centre, &half))
     })
 }
 
@@ -257,7 +239,7 @@ fn things(scene: &mut Scene, look: &Look, wrist: bool) {
 /// the arm moves: the page draws it under the rest, again only when the view turns).
 pub fn ground(scene: &mut Scene, goal: [f64; 2]) {
     scene.clear();
-    table(scene);
+    scene.grid(TABLE_CELLS, TABLE_CELL_M, TABLE);
     square(scene, goal, GOAL_HALF, GOAL);
 }
 
@@ -642,9 +624,9 @@ mod tests {
             active: None,
         };
         let mut scene = Scene::new();
-        // The ground: the table's grid (10 + 11 lines), the goal 4.
+        // The ground: the table's grid (2 × 15 lines), the goal 4.
         ground(&mut scene, look.goal);
-        assert_eq!(scene.len(), 21 + 4);
+        assert_eq!(scene.len(), 2 * (TABLE_CELLS + 1) + 4);
         world(&mut scene, &look, AxisPalette::Classic);
         // The wall, the arm's parts and the cube as boxes of 6 faces, the cube's outline 12,
         // triad 3, gizmo 3 arrows + 3 rings of 24 segments.

@@ -183,8 +183,8 @@ def print_parts(assets):
         ]
         for lo, hi in kept:
             c, h = (lo + hi) / 2, (hi - lo) / 2
-            print(f"    Part {{ body: {names.index(name)}, centre: [{c[0]:.4f}, {c[1]:.4f}, {c[2]:.4f}], "
-                  f"half: [{h[0]:.4f}, {h[1]:.4f}, {h[2]:.4f}] }}, // {name}")
+            print(f"    part({names.index(name)}, [{c[0]:.4f}, {c[1]:.4f}, {c[2]:.4f}], "
+                  f"[{h[0]:.4f}, {h[1]:.4f}, {h[2]:.4f}]),")
 
 
 if __name__ == "__main__":

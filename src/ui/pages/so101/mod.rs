@@ -283,16 +283,13 @@ impl Inner {
         scope.listen_for(&form, "submit", me, |_, e| e.prevent_default())?;
         let open = self.session.open.clone();
         scope.listen_for(&open, "change", me, |p, _| p.open_files())?;
-        let wrist = self.views.borrow().as_ref().and_then(|v| v.wrist_stage());
-        if let Some(wrist) = wrist {
-            scope.observe_resize(&[&wrist], me, |p| {
-                if let Some(v) = p.views.borrow().as_ref() {
-                    v.fit_wrist();
-                }
-            })?;
-        }
         let review = self.review.root.clone();
-        scope.observe_resize(&[&review], me, |p| {
+        let mut watched = vec![review];
+        watched.extend(self.views.borrow().as_ref().and_then(|v| v.wrist_stage()));
+        scope.observe_resize(&watched.iter().collect::<Vec<_>>(), me, |p| {
+            if let Some(v) = p.views.borrow().as_ref() {
+                v.fit_wrist();
+            }
             p.review.fit();
             p.draw_replay();
         })?;
