@@ -377,11 +377,13 @@ impl Sim {
     }
 }
 
+// Each part has one caller, `step`: inlined there, the step is one function.
 impl Steps for Sim {
     type Command = Command;
 
     run_parts!(Command);
 
+    #[inline(always)]
     fn noisy(cmd: Command, noise: impl FnOnce(&mut [f64])) -> Command {
         let mut axes = cmd.axes();
         noise(&mut axes);
@@ -389,6 +391,7 @@ impl Steps for Sim {
     }
 
     /// Steps 3–5, and the orientation error.
+    #[inline(always)]
     fn move_arm(&mut self, applied: &Command, events: &mut Vec<Event>) {
         let q = self.state.q;
         let before = chain(&q, jaw_of(&self.state));
@@ -452,6 +455,7 @@ impl Steps for Sim {
     }
 
     /// Step 6.
+    #[inline(always)]
     fn operate_gripper(&mut self, close: bool, events: &mut Vec<Event>) {
         if close == self.state.gripper_closed {
             return;
@@ -496,6 +500,7 @@ impl Steps for Sim {
     }
 
     /// Step 6's cube: follows the gripper, falls, or rests.
+    #[inline(always)]
     fn move_object(&mut self) {
         let obstacle = self.config.obstacle;
         let c = chain(&self.state.q, 0.0);
@@ -516,6 +521,7 @@ impl Steps for Sim {
     }
 
     /// Step 7's goal.
+    #[inline(always)]
     fn check_goal(&mut self, events: &mut Vec<Event>) {
         let s = &mut self.state;
         let holds = s.cube.resting && !s.cube.held && in_goal(&s.cube.pos, &self.config.goal);

@@ -375,11 +375,13 @@ impl Sim {
     }
 }
 
+// Each part has one caller, `step`: inlined there, the step is one function.
 impl Steps for Sim {
     type Command = Command;
 
     run_parts!(Command);
 
+    #[inline(always)]
     fn noisy(mut cmd: Command, noise: impl FnOnce(&mut [f64])) -> Command {
         let mut axes = [cmd.dx, cmd.dz, cmd.dphi];
         noise(&mut axes);
@@ -388,6 +390,7 @@ impl Steps for Sim {
     }
 
     /// Steps 3–5: IK, speed and position limits, contact.
+    #[inline(always)]
     fn move_arm(&mut self, applied: &Command, events: &mut Vec<Event>) {
         let arm = self.config.arm;
         let q = self.state.q;
@@ -446,6 +449,7 @@ impl Steps for Sim {
     }
 
     /// Step 6: grasp, miss, release, drop.
+    #[inline(always)]
     fn operate_gripper(&mut self, close: bool, events: &mut Vec<Event>) {
         if close == self.state.gripper_closed {
             return;
@@ -492,6 +496,7 @@ impl Steps for Sim {
     }
 
     /// The block follows the gripper, falls, or rests.
+    #[inline(always)]
     fn move_object(&mut self) {
         let tip = fk(&self.config.arm, &self.state.q);
         let block = &mut self.state.block;
@@ -512,6 +517,7 @@ impl Steps for Sim {
     }
 
     /// Step 7: goal condition, targets, success.
+    #[inline(always)]
     fn check_goal(&mut self, events: &mut Vec<Event>) {
         let tip = fk(&self.config.arm, &self.state.q);
         let s = &mut self.state;

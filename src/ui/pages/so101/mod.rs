@@ -284,9 +284,9 @@ impl Inner {
         let open = self.session.open.clone();
         scope.listen_for(&open, "change", me, |p, _| p.open_files())?;
         let review = self.review.root.clone();
-        let mut watched = vec![review];
-        watched.extend(self.views.borrow().as_ref().and_then(|v| v.wrist_stage()));
-        scope.observe_resize(&watched.iter().collect::<Vec<_>>(), me, |p| {
+        let wrist = self.views.borrow().as_ref().and_then(|v| v.wrist_stage());
+        let wrist = wrist.unwrap_or_else(|| review.clone());
+        scope.observe_resize(&[&review, &wrist], me, |p| {
             if let Some(v) = p.views.borrow().as_ref() {
                 v.fit_wrist();
             }

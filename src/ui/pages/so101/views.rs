@@ -48,28 +48,69 @@ pub struct Views {
     shared: Weak<Shared>,
 }
 
-/// What a view shows: the arm and the cube, the goal and the wall, the gizmo and its held
-/// handle, the camera and the ink.
-#[derive(Debug, Clone, PartialEq)]
-struct Shown {
-    q: [f64; 5],
-    gripper_closed: bool,
-    held: bool,
-    cube: Obb,
-    goal: [f64; 2],
-    obstacle: bool,
-    gizmo: bool,
-    active: Option<Handle>,
-    camera: Camera,
-    ink: Ink,
+/// What a view shows, as numbers (a view is drawn again only when one of them changed): the
+/// gripper closed, the cube held, the wall, the gizmo and its held handle, the ink's line
+/// scale, the goal; the joints; the cube's centre and axes; the camera.
+type Shown = [f64; 34];
+
+/// The camera as numbers.
+fn camera_key(c: &Camera) -> [f64; 9] {
+    let t = c.target;
+    [
+        t.x,
+        t.y,
+        t.z,
+        c.azimuth,
+        c.elevation,
+        c.distance,
+        c.fov_y,
+        c.width,
+        c.height,
+    ]
 }
 
-/// The world view's drawing state: its scenes, what its two canvases show, the tool's
-/// position (for the gizmo's hit test).
+/// [`Shown`] of `record` and `cube`, with the wall, the gizmo and its held handle, seen
+/// through `camera` with `ink`.
+fn shown_key(
+    record: &StepRecord,
+    cube: &Obb,
+    p: &Practice,
+    active: Option<Handle>,
+    camera: &Camera,
+    ink: Ink,
+) -> Shown {
+    let flag = |b: bool| if b { 1.0 } else { 0.0 };
+    let active = match active {
+        None => -1.0,
+        Some(Handle::Axis(k)) => k as f64,
+        Some(Handle::Turn(k)) => 3.0 + k as f64,
+    };
+    let mut k = [0.0; 34];
+    k[..8].copy_from_slice(&[
+        flag(record.gripper_closed),
+        flag(record.held),
+        flag(p.config.obstacle),
+        flag(p.replay.is_none()),
+        active,
+        ink.line,
+        p.config.goal[0],
+        p.config.goal[1],
+    ]);
+    k[8..13].copy_from_slice(&record.q);
+    k[13..16].copy_from_slice(&cube.centre);
+    for (i, row) in cube.rot.iter().enumerate() {
+        k[16 + 3 * i..19 + 3 * i].copy_from_slice(row);
+    }
+    k[25..].copy_from_slice(&camera_key(camera));
+    k
+}
+
+/// The world view's drawing state: its scene and what its two canvases show (the ground:
+/// the camera, the ink's line scale and the goal).
 struct WorldState {
     scene: Scene,
     shown: Option<Shown>,
-    ground: Option<(Camera, Ink, [f64; 2])>,
+    ground: Option<[f64; 12]>,
 }
 
 /// The record the views and readouts show and the cube's box: the replayed step, else the
@@ -123,19 +164,10 @@ fn draw_world(
         .try_borrow()
         .ok()
         .and_then(|d| d.clutch.map(|c| c.handle));
-    let now = Shown {
-        q: record.q,
-        gripper_closed: record.gripper_closed,
-        held: record.held,
-        cube,
-        goal: p.config.goal,
-        obstacle: p.config.obstacle,
-        gizmo: p.replay.is_none(),
-        active,
-        camera: *camera,
-        ink,
-    };
-    let ground_now = (*camera, ink, p.config.goal);
+    let now = shown_key(&record, &cube, &p, active, camera, ink);
+    let mut ground_now = [0.0; 12];
+    ground_now[..9].copy_from_slice(&camera_key(camera));
+    ground_now[9..].copy_from_slice(&[ink.line, p.config.goal[0], p.config.goal[1]]);
     if state.ground != Some(ground_now) {
         let state = &mut *state;
         ground(&mut state.scene, p.config.goal);
@@ -152,9 +184,9 @@ fn draw_world(
     let look = Look {
         chain: &c,
         cube,
-        goal: now.goal,
-        obstacle: now.obstacle,
-        gizmo: now.gizmo,
+        goal: p.config.goal,
+        obstacle: p.config.obstacle,
+        gizmo: p.replay.is_none(),
         active,
     };
     world(&mut state.scene, &look, AxisPalette::Classic);
@@ -252,7 +284,6 @@ impl Views {
     pub fn relayout(&self) {
         self.orbit.relayout();
         self.fit_wrist();
-        self.redraw();
     }
 
     /// The wrist camera's stage (its size is watched).
@@ -260,14 +291,14 @@ impl Views {
         self.wrist.try_borrow().ok().map(|w| w.stage.clone())
     }
 
-    /// Sizes the wrist canvas to its stage again and draws it.
+    /// Sizes the wrist canvas to its stage again and draws both views.
     pub fn fit_wrist(&self) {
         if let Ok(mut canvas) = self.wrist.try_borrow_mut() {
             if canvas.fit() {
                 self.wrist_shown.replace(None);
             }
         }
-        self.draw_wrist();
+        self.redraw();
     }
 
     /// Both views again, now (the page's frame).
@@ -292,18 +323,7 @@ impl Views {
         // The image turns with the wrist (its square camera covers the turned corners).
         let (camera, roll) = wrist_view(&c, w, h);
         let ink = Ink::current();
-        let now = Shown {
-            q: record.q,
-            gripper_closed: record.gripper_closed,
-            held: record.held,
-            cube,
-            goal: p.config.goal,
-            obstacle: p.config.obstacle,
-            gizmo: false,
-            active: None,
-            camera,
-            ink,
-        };
+        let now = shown_key(&record, &cube, &p, None, &camera, ink);
         let Ok(mut shown_now) = self.wrist_shown.try_borrow_mut() else {
             return;
         };
@@ -313,8 +333,8 @@ impl Views {
         let look = Look {
             chain: &c,
             cube,
-            goal: now.goal,
-            obstacle: now.obstacle,
+            goal: p.config.goal,
+            obstacle: p.config.obstacle,
             gizmo: false,
             active: None,
         };
