@@ -585,7 +585,7 @@ pub fn replay(episode: &Episode) -> Result<EpisodeMetrics, ReplayMismatch> {
 /// Steps `sim` with each of `commands` and checks what each step made against the one of
 /// `records` beside it with `compare` (the step's number, recorded, made); a command left
 /// after the episode ended is a mismatch of the `rows`.
-// Each arm's `replay` is its one caller: inlined there, it is as large as the loop it was.
+// Each arm's `replay` is its one caller: inlined there.
 #[inline(always)]
 pub fn replay_steps<S: ArmSim>(
     sim: &mut S,

@@ -48,9 +48,9 @@ pub trait ArmSim: Clone + Debug + Sized {
 }
 
 /// Implements [`ArmSim`] for an arm's `Sim` whose inherent `new`, `start_state`, `done`,
-/// `step` and `reset` do what the trait asks (and whose `state()` counts its `step`s), with the `Command`'s `sanitized` and the
-/// `StepRecord`'s `events`: `arm_sim!(Sim, SceneConfig, State, Command, StepRecord,
-/// records_after_end)`.
+/// `step` and `reset` do what the trait asks and whose `state()` counts its `step`s, with the
+/// `Command`'s `sanitized` and the `StepRecord`'s `events`: `arm_sim!(Sim, SceneConfig, State,
+/// Command, StepRecord, records_after_end)`.
 macro_rules! arm_sim {
     ($sim:ty, $config:ty, $state:ty, $command:ty, $record:ty, $after_end:expr) => {
         impl $crate::teleop::recording::ArmSim for $sim {

@@ -165,7 +165,7 @@ fn square(scene: &mut Scene, centre: [f64; 2], half: f64, stroke: Stroke) {
     }
 }
 
-/// The table's grid: cells (a side), m.
+/// The table's grid: a cell's side, m.
 pub const TABLE_CELL_M: f64 = 0.05;
 /// The table's grid: cells on a side, about the base (the arm's reach, the cube and the goal).
 pub const TABLE_CELLS: usize = 14;
