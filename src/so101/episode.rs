@@ -13,7 +13,8 @@ use super::scene::SceneConfig;
 use super::sim::{Command, Sim, State, StepRecord};
 use crate::pyfmt::push_py_float;
 use crate::teleop::episode::{
-    mismatch, propose, same_bool, same_f64, FailureCategory, Label, ReplayMismatch,
+    bad, check_size, mismatch, propose, replay_steps, row_cells, same_bool, same_events, same_f64,
+    FailureCategory, Label, ReplayMismatch,
 };
 use crate::teleop::metrics::EpisodeMetrics;
 use crate::teleop::recording::{arm_sim, EpisodeOf, Recorder};
@@ -76,17 +77,6 @@ pub type EpisodeRecorder = Recorder<Sim>;
 arm_sim!(Sim, SceneConfig, State, Command, StepRecord, true);
 
 impl EpisodeOf<Sim> {
-    /// How the episode ended (`None`: ended by the pilot or interrupted).
-    pub fn outcome(&self) -> Option<Outcome> {
-        self.records.iter().rev().find_map(|r| {
-            r.events.iter().find_map(|e| match e {
-                Event::Success => Some(Outcome::Success),
-                Event::Timeout => Some(Outcome::Timeout),
-                _ => None,
-            })
-        })
-    }
-
     /// The episode's figures (see [`mod@crate::teleop::metrics`]; `fitts` is `None`, the ideal
     /// path is start tool → cube start, then cube start → where it rests, when done).
     pub fn metrics(&self) -> EpisodeMetrics {
@@ -184,22 +174,9 @@ pub fn episode_csv(episode: &Episode) -> String {
     out
 }
 
-fn bad(row: usize, column: &str, value: &str) -> TeleopError {
-    TeleopError::BadCell {
-        row,
-        column: column.to_string(),
-        value: value.to_string(),
-    }
-}
-
 /// Reads an episode CSV back; errors name the row (1-based) and column.
 pub fn parse_episode_csv(text: &str) -> Result<Episode, TeleopError> {
-    if text.len() as u64 > MAX_EPISODE_BYTES {
-        return Err(TeleopError::TooLarge {
-            bytes: text.len() as u64,
-            limit: MAX_EPISODE_BYTES,
-        });
-    }
+    check_size(text, MAX_EPISODE_BYTES)?;
     let mut lines = text.lines();
     if lines.next().map(str::trim_end) != Some(MARKER) {
         return Err(TeleopError::NotAnEpisode);
@@ -238,14 +215,7 @@ pub fn parse_episode_csv(text: &str) -> Result<Episode, TeleopError> {
         if line.trim().is_empty() {
             continue;
         }
-        let cells: Vec<&str> = line.split(',').collect();
-        if cells.len() != COLUMNS.len() {
-            return Err(TeleopError::Ragged {
-                row,
-                expected: COLUMNS.len(),
-                got: cells.len(),
-            });
-        }
+        let cells = row_cells(row, line, COLUMNS.len())?;
         let (cmd, r) = parse_row(row, &cells)?;
         commands.push(cmd);
         records.push(r);
@@ -328,19 +298,7 @@ pub fn replay(episode: &Episode) -> Result<EpisodeMetrics, ReplayMismatch> {
             episode.commands.len().to_string(),
         ));
     }
-    for (cmd, e) in episode.commands.iter().zip(&episode.records) {
-        let step = sim.state().step + 1;
-        if sim.done().is_some() {
-            return Err(mismatch(
-                step,
-                "rows",
-                "a step".to_string(),
-                "the episode had already ended".to_string(),
-            ));
-        }
-        let g = sim.step(cmd);
-        compare(step, e, &g)?;
-    }
+    replay_steps(&mut sim, &episode.commands, &episode.records, compare)?;
     Ok(episode.metrics())
 }
 
@@ -378,11 +336,7 @@ fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismat
         e.orientation_error,
         g.orientation_error,
     )?;
-    if e.events != g.events {
-        let text = |events: &[Event]| events.iter().map(Event::text).collect::<Vec<_>>().join(";");
-        return Err(mismatch(step, "event", text(&e.events), text(&g.events)));
-    }
-    Ok(())
+    same_events(step, &e.events, &g.events)
 }
 
 /// An SO-101 episode as stored (localStorage): configuration, start state and the

@@ -12,7 +12,9 @@
 //! The collision shapes of the model are meshes; for drawing and contact each body has the
 //! axis-aligned box (in its own frame) around the vertices of its collision meshes, as
 //! `tests/so101/golden_fk.py --boxes` computes them from the repository's `assets/` STL files
-//! (the base from its visual meshes: it has no collision geom).
+//! (the base from its visual meshes: it has no collision geom). Drawn, each body is its
+//! [`PARTS`]: a box around each of its collision meshes, which follow the links' shapes more
+//! closely than the one box around them all.
 
 // The numbers are the file's, as written (0.707107 is not 1/√2).
 #![allow(clippy::approx_constant)]
@@ -136,3 +138,48 @@ pub fn joint_limits() -> [(f64, f64); 5] {
     }
     out
 }
+
+/// A drawn part of a body: a box, axis-aligned in the body's frame, around one collision mesh
+/// (the base: one visual mesh), or one of the two pieces of the fixed jaw (its mount and its
+/// finger), the moving jaw (its hinge and its finger) or the base's housing (its foot and its
+/// raised back). Boxes inside another of the same body are left out. As
+/// `tests/so101/golden_fk.py --parts` computes them from the repository's `assets/` STL files.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Part {
+    /// The body: 0 the base, 1–5 the chain's bodies of [`BODIES`], 6 the moving jaw ([`JAW`]).
+    pub body: u8,
+    /// Centre in the body's frame, m (single precision: drawn only).
+    pub centre: [f32; 3],
+    /// Half sizes along the body's axes, m.
+    pub half: [f32; 3],
+}
+
+/// The fixed jaw's finger: its index in [`PARTS`].
+pub const FIXED_FINGER: usize = 16;
+
+const fn part(body: u8, centre: [f32; 3], half: [f32; 3]) -> Part {
+    Part { body, centre, half }
+}
+
+/// The drawn parts, body by body.
+pub const PARTS: [Part; 19] = [
+    part(0, [0.0129, 0.0014, 0.0514], [0.0401, 0.0238, 0.0157]),
+    part(0, [0.0066, -0.0000, 0.0336], [0.0290, 0.0555, 0.0360]),
+    part(0, [0.0501, -0.0000, 0.0064], [0.0145, 0.0487, 0.0088]),
+    part(0, [0.0263, -0.0000, 0.0441], [0.0227, 0.0124, 0.0198]),
+    part(0, [-0.0272, -0.0002, 0.0474], [0.0038, 0.0255, 0.0210]),
+    part(1, [-0.0304, 0.0000, -0.0417], [0.0124, 0.0198, 0.0227]),
+    part(1, [-0.0316, 0.0012, -0.0240], [0.0190, 0.0275, 0.0140]),
+    part(1, [-0.0177, 0.0000, 0.0041], [0.0299, 0.0230, 0.0421]),
+    part(2, [-0.1126, -0.0155, 0.0183], [0.0124, 0.0227, 0.0198]),
+    part(2, [-0.0591, -0.0002, 0.0201], [0.0711, 0.0122, 0.0336]),
+    part(3, [-0.0533, -0.0000, 0.0202], [0.0653, 0.0120, 0.0322]),
+    part(3, [-0.1047, 0.0035, 0.0200], [0.0140, 0.0184, 0.0282]),
+    part(3, [-0.1224, 0.0052, 0.0183], [0.0227, 0.0124, 0.0198]),
+    part(4, [-0.0022, -0.0269, 0.0221], [0.0178, 0.0389, 0.0312]),
+    part(5, [0.0077, 0.0005, -0.0234], [0.0227, 0.0198, 0.0124]),
+    part(5, [-0.0026, -0.0020, -0.0254], [0.0326, 0.0260, 0.0264]),
+    part(5, [-0.0200, -0.0002, -0.0781], [0.0121, 0.0102, 0.0263]),
+    part(6, [-0.0030, -0.0590, 0.0189], [0.0093, 0.0230, 0.0091]),
+    part(6, [-0.0000, -0.0130, 0.0189], [0.0100, 0.0230, 0.0240]),
+];

@@ -149,11 +149,6 @@ pub fn link_boxes(chain: &Chain) -> [Obb; 6] {
     out
 }
 
-/// The base's box (drawn; it never moves).
-pub fn base_box(chain: &Chain) -> Obb {
-    Obb::of(&chain.bodies[0], &BODIES[0].box_centre, &BODIES[0].box_half)
-}
-
 /// The obstacle wall's box.
 pub fn obstacle_box() -> Obb {
     Obb::aligned(OBSTACLE.0, OBSTACLE.1)

@@ -21,7 +21,7 @@ use super::scene::{
 };
 use crate::rng::NumpyRng;
 use crate::teleop::rules::{
-    add_noise, clamp_to_limits, delayed, fall, goal_held, limit_speed, new_contacts, tick, time_box,
+    clamp_to_limits, fall, goal_held, limit_speed, new_contacts, run_parts, step, Steps,
 };
 use crate::teleop::sim::{Event, Outcome};
 use crate::teleop::TeleopError;
@@ -346,32 +346,52 @@ impl Sim {
     /// 7. the cube resting in the goal square for `success_steps` steps is
     ///    [`Event::Success`]; then the time box ([`Event::Timeout`]).
     pub fn step(&mut self, cmd: &Command) -> StepRecord {
-        let cmd = cmd.sanitized();
-        if self.state.done.is_some() {
-            return self.record(cmd, Command::idle(self.state.gripper_closed), Vec::new());
-        }
-        let mut events = Vec::new();
-        let idle = Command::idle(self.state.gripper_closed);
-        let delayed = delayed(
-            &mut self.state.pending,
-            self.config.latency_steps,
-            cmd,
-            idle,
-        );
-        let mut axes = delayed.axes();
-        add_noise(&mut axes, self.config.noise_sigma, &mut self.rng);
-        let applied = Command::with_axes(axes, delayed.gripper_closed);
-        self.move_arm(&applied, &mut events);
-        self.operate_gripper(applied.gripper_closed, &mut events);
-        self.move_cube();
-        tick(&mut self.state.step, &mut self.state.t_s, Sim::RATE_HZ);
-        self.check_goal(&mut events);
-        let s = &mut self.state;
-        time_box(s.t_s, self.config.time_box_s, &mut s.done, &mut events);
+        let (cmd, applied, events) = step(self, cmd);
         self.record(cmd, applied, events)
     }
 
+    /// The link (1–7) the move from `before` to `moved` brings into contact, if any.
+    fn contact(&self, before: &Chain, moved: &Chain) -> Option<u8> {
+        let boxes = link_boxes(moved);
+        if let Some(link) = table_or_obstacle_contact(&boxes, self.config.obstacle) {
+            return Some(link);
+        }
+        let cube = &self.state.cube;
+        if cube.resting && !cube.held {
+            let c = cube.obb();
+            let was = link_boxes(before);
+            for i in 0..4 {
+                if boxes[i].overlaps(&c, CONTACT_SLOP_M) && !was[i].overlaps(&c, CONTACT_SLOP_M) {
+                    return Some(i as u8 + 1);
+                }
+            }
+        }
+        if let Some(g) = cube.grasp.filter(|_| cube.held) {
+            let carried = carried(moved, &g);
+            let wall = self.config.obstacle && carried.overlaps(&obstacle_box(), CONTACT_SLOP_M);
+            if carried.bottom() < TABLE_Z - CONTACT_SLOP_M || wall {
+                return Some(7);
+            }
+        }
+        None
+    }
+}
+
+// Each part has one caller, `step`: inlined there, the step is one function.
+impl Steps for Sim {
+    type Command = Command;
+
+    run_parts!(Command);
+
+    #[inline(always)]
+    fn noisy(cmd: Command, noise: impl FnOnce(&mut [f64])) -> Command {
+        let mut axes = cmd.axes();
+        noise(&mut axes);
+        Command::with_axes(axes, cmd.gripper_closed)
+    }
+
     /// Steps 3–5, and the orientation error.
+    #[inline(always)]
     fn move_arm(&mut self, applied: &Command, events: &mut Vec<Event>) {
         let q = self.state.q;
         let before = chain(&q, jaw_of(&self.state));
@@ -434,33 +454,8 @@ impl Sim {
         }
     }
 
-    /// The link (1–7) the move from `before` to `moved` brings into contact, if any.
-    fn contact(&self, before: &Chain, moved: &Chain) -> Option<u8> {
-        let boxes = link_boxes(moved);
-        if let Some(link) = table_or_obstacle_contact(&boxes, self.config.obstacle) {
-            return Some(link);
-        }
-        let cube = &self.state.cube;
-        if cube.resting && !cube.held {
-            let c = cube.obb();
-            let was = link_boxes(before);
-            for i in 0..4 {
-                if boxes[i].overlaps(&c, CONTACT_SLOP_M) && !was[i].overlaps(&c, CONTACT_SLOP_M) {
-                    return Some(i as u8 + 1);
-                }
-            }
-        }
-        if let Some(g) = cube.grasp.filter(|_| cube.held) {
-            let carried = carried(moved, &g);
-            let wall = self.config.obstacle && carried.overlaps(&obstacle_box(), CONTACT_SLOP_M);
-            if carried.bottom() < TABLE_Z - CONTACT_SLOP_M || wall {
-                return Some(7);
-            }
-        }
-        None
-    }
-
     /// Step 6.
+    #[inline(always)]
     fn operate_gripper(&mut self, close: bool, events: &mut Vec<Event>) {
         if close == self.state.gripper_closed {
             return;
@@ -505,7 +500,8 @@ impl Sim {
     }
 
     /// Step 6's cube: follows the gripper, falls, or rests.
-    fn move_cube(&mut self) {
+    #[inline(always)]
+    fn move_object(&mut self) {
         let obstacle = self.config.obstacle;
         let c = chain(&self.state.q, 0.0);
         let cube = &mut self.state.cube;
@@ -525,6 +521,7 @@ impl Sim {
     }
 
     /// Step 7's goal.
+    #[inline(always)]
     fn check_goal(&mut self, events: &mut Vec<Event>) {
         let s = &mut self.state;
         let holds = s.cube.resting && !s.cube.held && in_goal(&s.cube.pos, &self.config.goal);

@@ -21,7 +21,7 @@ use super::arm::ArmParams;
 use super::control::{ControlParams, IkMethod};
 use super::error::TeleopError;
 use super::metrics::EpisodeMetrics;
-use super::recording::{arm_sim, EpisodeOf, Recorder};
+use super::recording::{arm_sim, ArmSim, EpisodeOf, Recorder};
 use super::scene::{SceneConfig, Target, Task};
 use super::sim::{Command, Event, Outcome, Sim, State, StepRecord};
 use crate::pyfmt::{push_py_float, py_float};
@@ -66,13 +66,6 @@ pub type Episode = EpisodeOf<Sim>;
 pub type EpisodeRecorder = Recorder<Sim>;
 
 arm_sim!(Sim, SceneConfig, State, Command, StepRecord, false);
-
-impl EpisodeOf<Sim> {
-    /// How the episode ended (`None`: ended by the pilot or interrupted).
-    pub fn outcome(&self) -> Option<Outcome> {
-        Outcome::of(&self.records)
-    }
-}
 
 /// The figures of `episode`, from its records (no re-simulation; see [`EpisodeMetrics`]).
 pub fn metrics(episode: &Episode) -> EpisodeMetrics {
@@ -214,12 +207,37 @@ fn header<'a, 'b>(rows: &'b [HeaderRow<'a>], key: &str) -> Result<&'b HeaderRow<
         })
 }
 
-fn bad(row: usize, column: &str, value: &str) -> TeleopError {
+/// A cell that does not read: its row (1-based), column and text.
+pub fn bad(row: usize, column: &str, value: &str) -> TeleopError {
     TeleopError::BadCell {
         row,
         column: column.to_string(),
         value: value.to_string(),
     }
+}
+
+/// Refuses an episode file longer than `limit` bytes.
+pub fn check_size(text: &str, limit: u64) -> Result<(), TeleopError> {
+    if text.len() as u64 > limit {
+        return Err(TeleopError::TooLarge {
+            bytes: text.len() as u64,
+            limit,
+        });
+    }
+    Ok(())
+}
+
+/// The cells of step row `row`, which must have `columns` of them.
+pub fn row_cells(row: usize, line: &str, columns: usize) -> Result<Vec<&str>, TeleopError> {
+    let cells: Vec<&str> = line.split(',').collect();
+    if cells.len() != columns {
+        return Err(TeleopError::Ragged {
+            row,
+            expected: columns,
+            got: cells.len(),
+        });
+    }
+    Ok(cells)
 }
 
 fn parse_f64(row: usize, column: &str, text: &str) -> Result<f64, TeleopError> {
@@ -273,12 +291,7 @@ fn one_int<T: std::str::FromStr>(rows: &[HeaderRow], key: &str) -> Result<T, Tel
 /// Reads an episode CSV back (see the module docs). The config is validated; errors name the
 /// row (1-based, the marker row is 1) and the column or header key.
 pub fn parse_episode_csv(text: &str) -> Result<Episode, TeleopError> {
-    if text.len() as u64 > MAX_EPISODE_BYTES {
-        return Err(TeleopError::TooLarge {
-            bytes: text.len() as u64,
-            limit: MAX_EPISODE_BYTES,
-        });
-    }
+    check_size(text, MAX_EPISODE_BYTES)?;
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text
         .lines()
@@ -341,14 +354,7 @@ pub fn parse_episode_csv(text: &str) -> Result<Episode, TeleopError> {
         if line.trim().is_empty() {
             continue;
         }
-        let cells: Vec<&str> = line.split(',').collect();
-        if cells.len() != COLUMNS.len() {
-            return Err(TeleopError::Ragged {
-                row,
-                expected: COLUMNS.len(),
-                got: cells.len(),
-            });
-        }
+        let cells = row_cells(row, line, COLUMNS.len())?;
         let f = |i: usize| parse_f64(row, COLUMNS[i], cells[i]);
         let b = |i: usize| parse_bool(row, COLUMNS[i], cells[i]);
         let cmd = Command {
@@ -572,8 +578,23 @@ pub fn replay(episode: &Episode) -> Result<EpisodeMetrics, ReplayMismatch> {
             episode.commands.len().to_string(),
         ));
     }
-    for (cmd, rec) in episode.commands.iter().zip(&episode.records) {
-        let step = sim.state().step + 1;
+    replay_steps(&mut sim, &episode.commands, &episode.records, compare)?;
+    Ok(metrics(episode))
+}
+
+/// Steps `sim` with each of `commands` and checks what each step made against the one of
+/// `records` beside it with `compare` (the step's number, recorded, made); a command left
+/// after the episode ended is a mismatch of the `rows`.
+// Each arm's `replay` is its one caller: inlined there.
+#[inline(always)]
+pub fn replay_steps<S: ArmSim>(
+    sim: &mut S,
+    commands: &[S::Command],
+    records: &[S::Record],
+    compare: impl Fn(u64, &S::Record, &S::Record) -> Result<(), ReplayMismatch>,
+) -> Result<(), ReplayMismatch> {
+    for (cmd, rec) in commands.iter().zip(records) {
+        let step = sim.steps_taken() + 1;
         if sim.done().is_some() {
             return Err(mismatch(
                 step,
@@ -582,10 +603,10 @@ pub fn replay(episode: &Episode) -> Result<EpisodeMetrics, ReplayMismatch> {
                 "the episode had already ended".to_string(),
             ));
         }
-        let got = sim.step(cmd);
+        let got = sim.advance(cmd);
         compare(step, rec, &got)?;
     }
-    Ok(metrics(episode))
+    Ok(())
 }
 
 fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismatch> {
@@ -619,9 +640,14 @@ fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismat
     same_f64(step, "block_x", e.block_x, g.block_x)?;
     same_f64(step, "block_z", e.block_z, g.block_z)?;
     same_f64(step, "manipulability", e.manipulability, g.manipulability)?;
-    if e.events != g.events {
+    same_events(step, &e.events, &g.events)
+}
+
+/// Checks that step `step` made the recorded events, in order.
+pub fn same_events(step: u64, expected: &[Event], got: &[Event]) -> Result<(), ReplayMismatch> {
+    if expected != got {
         let text = |events: &[Event]| events.iter().map(Event::text).collect::<Vec<_>>().join(";");
-        return Err(mismatch(step, "event", text(&e.events), text(&g.events)));
+        return Err(mismatch(step, "event", text(expected), text(got)));
     }
     Ok(())
 }

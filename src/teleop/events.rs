@@ -23,6 +23,18 @@ pub enum Outcome {
 }
 
 impl Outcome {
+    /// How steps with these events ended: the last [`Event::Success`] or [`Event::Timeout`]
+    /// among them (`None`: ended by the pilot or interrupted).
+    pub fn of_events<'a>(steps: impl DoubleEndedIterator<Item = &'a [Event]>) -> Option<Outcome> {
+        steps.rev().find_map(|events| {
+            events.iter().find_map(|e| match e {
+                Event::Success => Some(Outcome::Success),
+                Event::Timeout => Some(Outcome::Timeout),
+                _ => None,
+            })
+        })
+    }
+
     /// `success`, `timeout`.
     pub fn id(self) -> &'static str {
         match self {

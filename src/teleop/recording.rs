@@ -37,6 +37,8 @@ pub trait ArmSim: Clone + Debug + Sized {
     fn done(&self) -> Option<Outcome>;
     /// One step with `cmd`.
     fn advance(&mut self, cmd: &Self::Command) -> Self::Record;
+    /// Steps taken since the start.
+    fn steps_taken(&self) -> u64;
     /// Back to the start state.
     fn restart(&mut self);
     /// `cmd` as it is recorded (axes clamped, NaN as 0).
@@ -46,9 +48,9 @@ pub trait ArmSim: Clone + Debug + Sized {
 }
 
 /// Implements [`ArmSim`] for an arm's `Sim` whose inherent `new`, `start_state`, `done`,
-/// `step` and `reset` do what the trait asks, with the `Command`'s `sanitized` and the
-/// `StepRecord`'s `events`: `arm_sim!(Sim, SceneConfig, State, Command, StepRecord,
-/// records_after_end)`.
+/// `step` and `reset` do what the trait asks and whose `state()` counts its `step`s, with the
+/// `Command`'s `sanitized` and the `StepRecord`'s `events`: `arm_sim!(Sim, SceneConfig, State,
+/// Command, StepRecord, records_after_end)`.
 macro_rules! arm_sim {
     ($sim:ty, $config:ty, $state:ty, $command:ty, $record:ty, $after_end:expr) => {
         impl $crate::teleop::recording::ArmSim for $sim {
@@ -72,6 +74,10 @@ macro_rules! arm_sim {
 
             fn advance(&mut self, cmd: &$command) -> $record {
                 self.step(cmd)
+            }
+
+            fn steps_taken(&self) -> u64 {
+                self.state().step
             }
 
             fn restart(&mut self) {
@@ -136,6 +142,11 @@ impl<S: ArmSim> Debug for EpisodeOf<S> {
 }
 
 impl<S: ArmSim> EpisodeOf<S> {
+    /// How the episode ended (`None`: ended by the pilot or interrupted).
+    pub fn outcome(&self) -> Option<Outcome> {
+        Outcome::of_events(self.records.iter().map(S::events))
+    }
+
     /// Runs `commands` from the start of `config` and records the episode; stops early when
     /// the episode ends (success or timeout).
     pub fn record(config: S::Config, commands: &[S::Command]) -> Result<Self, TeleopError> {

@@ -13,7 +13,7 @@ use super::arm::{fk, jacobian, manipulability};
 use super::control::ik_step;
 use super::error::TeleopError;
 use super::rules::{
-    add_noise, clamp_to_limits, delayed, fall, goal_held, limit_speed, new_contacts, tick, time_box,
+    clamp_to_limits, fall, goal_held, limit_speed, new_contacts, run_parts, step, Steps,
 };
 use super::scene::{
     arm_capsules, first_contact, point_box_distance, segment_box_distance, Box2, Capsule, Layout,
@@ -113,13 +113,7 @@ impl Outcome {
     /// How the steps of `records` ended: the last [`Event::Success`] or [`Event::Timeout`]
     /// among them (`None`: ended by the pilot or interrupted).
     pub fn of(records: &[StepRecord]) -> Option<Outcome> {
-        records.iter().rev().find_map(|r| {
-            r.events.iter().find_map(|e| match e {
-                Event::Success => Some(Outcome::Success),
-                Event::Timeout => Some(Outcome::Timeout),
-                _ => None,
-            })
-        })
+        Outcome::of_events(records.iter().map(|r| &r.events[..]))
     }
 }
 
@@ -317,37 +311,86 @@ impl Sim {
     /// 7. the task's goal condition is counted ([`SceneConfig::success_steps`] consecutive steps →
     ///    [`Event::TargetReached`] / [`Event::Success`]), then the time box ([`Event::Timeout`]).
     pub fn step(&mut self, cmd: &Command) -> StepRecord {
-        let cmd = cmd.sanitized();
-        if self.state.done.is_some() {
-            return self.record(cmd, Command::idle(self.state.gripper_closed), Vec::new());
-        }
-        let mut events = Vec::new();
-
-        // 1. Latency.
-        let idle = Command::idle(self.state.gripper_closed);
-        let mut applied = delayed(
-            &mut self.state.pending,
-            self.config.latency_steps,
-            cmd,
-            idle,
-        );
-        // 2. Noise.
-        let mut axes = [applied.dx, applied.dz, applied.dphi];
-        add_noise(&mut axes, self.config.noise_sigma, &mut self.rng);
-        [applied.dx, applied.dz, applied.dphi] = axes;
-
-        self.move_arm(&applied, &mut events);
-        self.operate_gripper(applied.gripper_closed, &mut events);
-        self.move_block();
-
-        tick(&mut self.state.step, &mut self.state.t_s, Sim::RATE_HZ);
-        self.check_goal(&mut events);
-        let s = &mut self.state;
-        time_box(s.t_s, self.config.time_box_s, &mut s.done, &mut events);
+        let (cmd, applied, events) = step(self, cmd);
         self.record(cmd, applied, events)
     }
 
+    /// The first link (1–3; the fingers are left to the gripper rules) that the move from `q`
+    /// to the pose of `moved` (its capsules) brings into the block lying at rest: closer to it
+    /// than the link's radius, and closer than at `q` (a link the block came to rest against
+    /// may move away). `None` while the block is held or falling.
+    fn resting_block_contact(&self, q: &[f64; 3], moved: &[Capsule; 5]) -> Option<u8> {
+        let b = &self.state.block;
+        if b.held || !b.resting {
+            return None;
+        }
+        // At rest the block lies face down (angle 0): an axis-aligned square.
+        let block = Box2 {
+            x0: b.x - BLOCK_HALF,
+            z0: b.z - BLOCK_HALF,
+            x1: b.x + BLOCK_HALF,
+            z1: b.z + BLOCK_HALF,
+        };
+        let gap = |cap: &Capsule| segment_box_distance(&cap.segment, &block) - cap.radius;
+        let mut before: Option<[Capsule; 5]> = None;
+        (0..3).find_map(|i| {
+            let now = gap(&moved[i]);
+            if now >= 0.0 {
+                return None;
+            }
+            let was = before
+                .get_or_insert_with(|| arm_capsules(&self.config.arm, q, self.finger_half_width()));
+            (now < gap(&was[i])).then_some(i as u8 + 1)
+        })
+    }
+
+    /// Whether the block, carried at pose `q`, would press into the table or an obstacle
+    /// (the block counts as the circle inside it).
+    fn held_block_contact(&self, q: &[f64; 3]) -> bool {
+        let Some(grasp) = self.state.block.grasp else {
+            return false;
+        };
+        let (x, z, _) = carried(&fk(&self.config.arm, q), &grasp);
+        z - BLOCK_HALF < TABLE_Z - CONTACT_SLOP_M
+            || self
+                .layout
+                .obstacles
+                .iter()
+                .any(|b| point_box_distance(x, z, b) < BLOCK_HALF - CONTACT_SLOP_M)
+    }
+
+    fn finger_half_width(&self) -> f64 {
+        if !self.state.gripper_closed {
+            OPEN_HALF_WIDTH
+        } else if self.state.block.held {
+            BLOCK_HALF
+        } else {
+            CLOSED_HALF_WIDTH
+        }
+    }
+
+    /// What the page draws for the current state.
+    pub fn geometry(&self) -> SceneGeometry {
+        geometry(&self.config, &self.layout, &self.state)
+    }
+}
+
+// Each part has one caller, `step`: inlined there, the step is one function.
+impl Steps for Sim {
+    type Command = Command;
+
+    run_parts!(Command);
+
+    #[inline(always)]
+    fn noisy(mut cmd: Command, noise: impl FnOnce(&mut [f64])) -> Command {
+        let mut axes = [cmd.dx, cmd.dz, cmd.dphi];
+        noise(&mut axes);
+        [cmd.dx, cmd.dz, cmd.dphi] = axes;
+        cmd
+    }
+
     /// Steps 3–5: IK, speed and position limits, contact.
+    #[inline(always)]
     fn move_arm(&mut self, applied: &Command, events: &mut Vec<Event>) {
         let arm = self.config.arm;
         let q = self.state.q;
@@ -405,61 +448,8 @@ impl Sim {
         }
     }
 
-    /// The first link (1–3; the fingers are left to the gripper rules) that the move from `q`
-    /// to the pose of `moved` (its capsules) brings into the block lying at rest: closer to it
-    /// than the link's radius, and closer than at `q` (a link the block came to rest against
-    /// may move away). `None` while the block is held or falling.
-    fn resting_block_contact(&self, q: &[f64; 3], moved: &[Capsule; 5]) -> Option<u8> {
-        let b = &self.state.block;
-        if b.held || !b.resting {
-            return None;
-        }
-        // At rest the block lies face down (angle 0): an axis-aligned square.
-        let block = Box2 {
-            x0: b.x - BLOCK_HALF,
-            z0: b.z - BLOCK_HALF,
-            x1: b.x + BLOCK_HALF,
-            z1: b.z + BLOCK_HALF,
-        };
-        let gap = |cap: &Capsule| segment_box_distance(&cap.segment, &block) - cap.radius;
-        let mut before: Option<[Capsule; 5]> = None;
-        (0..3).find_map(|i| {
-            let now = gap(&moved[i]);
-            if now >= 0.0 {
-                return None;
-            }
-            let was = before
-                .get_or_insert_with(|| arm_capsules(&self.config.arm, q, self.finger_half_width()));
-            (now < gap(&was[i])).then_some(i as u8 + 1)
-        })
-    }
-
-    /// Whether the block, carried at pose `q`, would press into the table or an obstacle
-    /// (the block counts as the circle inside it).
-    fn held_block_contact(&self, q: &[f64; 3]) -> bool {
-        let Some(grasp) = self.state.block.grasp else {
-            return false;
-        };
-        let (x, z, _) = carried(&fk(&self.config.arm, q), &grasp);
-        z - BLOCK_HALF < TABLE_Z - CONTACT_SLOP_M
-            || self
-                .layout
-                .obstacles
-                .iter()
-                .any(|b| point_box_distance(x, z, b) < BLOCK_HALF - CONTACT_SLOP_M)
-    }
-
-    fn finger_half_width(&self) -> f64 {
-        if !self.state.gripper_closed {
-            OPEN_HALF_WIDTH
-        } else if self.state.block.held {
-            BLOCK_HALF
-        } else {
-            CLOSED_HALF_WIDTH
-        }
-    }
-
     /// Step 6: grasp, miss, release, drop.
+    #[inline(always)]
     fn operate_gripper(&mut self, close: bool, events: &mut Vec<Event>) {
         if close == self.state.gripper_closed {
             return;
@@ -506,7 +496,8 @@ impl Sim {
     }
 
     /// The block follows the gripper, falls, or rests.
-    fn move_block(&mut self) {
+    #[inline(always)]
+    fn move_object(&mut self) {
         let tip = fk(&self.config.arm, &self.state.q);
         let block = &mut self.state.block;
         if let Some(grasp) = block.grasp.filter(|_| block.held) {
@@ -526,6 +517,7 @@ impl Sim {
     }
 
     /// Step 7: goal condition, targets, success.
+    #[inline(always)]
     fn check_goal(&mut self, events: &mut Vec<Event>) {
         let tip = fk(&self.config.arm, &self.state.q);
         let s = &mut self.state;
@@ -557,11 +549,6 @@ impl Sim {
         }
         s.done = Some(Outcome::Success);
         events.push(Event::Success);
-    }
-
-    /// What the page draws for the current state.
-    pub fn geometry(&self) -> SceneGeometry {
-        geometry(&self.config, &self.layout, &self.state)
     }
 }
 

@@ -1,25 +1,25 @@
-//! The SO-101 page's pure view model (`#/so101`): the 3D scene of the arm (each link's box
-//! from [`crate::so101::scene`] drawn as a shaded solid, the table, the cube, the goal
-//! square, the obstacle, the tool frame), the wrist camera (a camera at the tool frame looking along the gripper), the
-//! clutch gizmo on the tool (three translation arrows and three rotation rings, roll about
-//! x, pitch about y, yaw about z: a press on one is a handle, dragging it commands motion
-//! along or about that axis only while held) and the readout texts.
+//! The SO-101 page's pure view model (`#/so101`): the 3D scene (the arm as its
+//! [`PARTS`], boxes around the collision meshes of each body drawn as shaded solids; the
+//! table's grid, the cube, the goal square, the obstacle, the tool frame), the wrist camera
+//! (on the gripper behind the fingers, looking along the approach: the fixed finger below, the
+//! table and the cube ahead), the clutch gizmo on the tool (three translation arrows and three
+//! rotation rings, roll about x, pitch about y, yaw about z: a press on one is a handle,
+//! dragging it commands motion along or about that axis only while held) and the readout
+//! texts.
 
 use glam::{DMat3, DVec2, DVec3};
 
 use crate::camera3d::{hit_point, Camera};
 use crate::so101::kinematics::{Chain, Frame};
-use crate::so101::model::joint_limits;
-use crate::so101::scene::{
-    base_box, link_boxes, obstacle_box, Obb, SceneConfig, GOAL_HALF, TABLE_Z,
-};
+use crate::so101::model::{joint_limits, FIXED_FINGER, PARTS};
+use crate::so101::scene::{obstacle_box, Obb, SceneConfig, GOAL_HALF, TABLE_Z};
 use crate::teleop::control::IkMethod;
 use crate::view::scene3d::{AxisPalette, Layer, Scene, Shape3, Stroke};
 
 /// The point the world view looks at and the radius it frames, m.
-pub const VIEW_TARGET: [f64; 3] = [0.15, 0.02, 0.07];
+pub const VIEW_TARGET: [f64; 3] = [0.13, 0.02, 0.085];
 /// See [`VIEW_TARGET`].
-pub const VIEW_RADIUS: f64 = 0.2;
+pub const VIEW_RADIUS: f64 = 0.215;
 /// Gizmo arrow length, m.
 pub const GIZMO_M: f64 = 0.06;
 /// Rotation ring radius, m.
@@ -62,6 +62,13 @@ const CUBE_SEEN: Stroke = Stroke::dashed("#0072b2", 1.5);
 const EDGE: &str = "rgba(15, 23, 42, 0.55)";
 /// Where the light comes from (unit: above, in front and to the side of the arm).
 const LIGHT: [f64; 3] = [0.408, -0.302, 0.862];
+/// The fingers as the wrist camera sees them, close in front of it: light enough to show
+/// the table through.
+const FINGER_SEEN: Shades = [
+    "rgba(200, 105, 58, 0.4)",
+    "rgba(146, 64, 14, 0.4)",
+    "rgba(95, 42, 9, 0.4)",
+];
 const GOAL: Stroke = Stroke::solid("#009e73", 3.0);
 const TABLE: Stroke = Stroke::solid("#cbd5e1", 1.0);
 
@@ -158,6 +165,11 @@ fn square(scene: &mut Scene, centre: [f64; 2], half: f64, stroke: Stroke) {
     }
 }
 
+/// The table's grid: a cell's side, m.
+pub const TABLE_CELL_M: f64 = 0.05;
+/// The table's grid: cells on a side, about the base (the arm's reach, the cube and the goal).
+pub const TABLE_CELLS: usize = 14;
+
 /// The twelve edges of a box, in `layer`.
 fn box_edges(scene: &mut Scene, b: &Obb, stroke: Stroke, layer: Layer) {
     let c = b.corners();
@@ -186,32 +198,54 @@ fn box_edges(scene: &mut Scene, b: &Obb, stroke: Stroke, layer: Layer) {
     }
 }
 
-/// The arm, the cube, the goal and the wall (what both views show; the wrist camera, inside
-/// the gripper, sees the gripper and the jaw as outlines).
+/// The boxes of the drawn parts ([`PARTS`]) at `chain`, each with its body (0 the base, 6
+/// the moving jaw).
+pub fn part_boxes(chain: &Chain) -> impl Iterator<Item = (usize, Obb)> + '_ {
+    PARTS.iter().map(|p| {
+        let frame = if p.body == 6 {
+            &chain.jaw
+        } else {
+            &chain.bodies[usize::from(p.body)]
+        };
+        let (centre, half) = (p.centre.map(f64::from), p.half.map(f64::from));
+        (usize::from(p.body), Obb::of(frame, &centre, &half))
+    })
+}
+
+/// The arm, the cube and the wall (what both views show over the ground; the wrist camera,
+/// mounted on the gripper, sees of the arm only the fingers).
 fn things(scene: &mut Scene, look: &Look, wrist: bool) {
-    square(scene, look.goal, GOAL_HALF, GOAL);
     if look.obstacle {
         box_faces(scene, &obstacle_box(), WALL);
     }
-    box_faces(scene, &base_box(look.chain), BASE);
-    let boxes = link_boxes(look.chain);
-    for (i, b) in boxes.iter().enumerate() {
-        let shades = if i == 5 { JAW } else { LINK };
-        if wrist && i >= 4 {
-            box_edges(scene, b, Stroke::solid(shades[1], 2.0), Layer::Scene);
-        } else {
-            box_faces(scene, b, shades);
+    for (i, (body, b)) in part_boxes(look.chain).enumerate() {
+        if wrist && body != 6 && i != FIXED_FINGER {
+            continue;
         }
+        let shades = match body {
+            0 => BASE,
+            _ if wrist => FINGER_SEEN,
+            5 | 6 => JAW,
+            _ => LINK,
+        };
+        box_faces(scene, &b, shades);
     }
     box_faces(scene, &look.cube, CUBE);
     // The cube's outline over everything: it stays in sight behind the gripper.
     box_edges(scene, &look.cube, CUBE_SEEN, Layer::Overlay);
 }
 
-/// The world view's scene.
+/// The ground: the table's grid and the goal square (in the world view, what stays while
+/// the arm moves: the page draws it under the rest, again only when the view turns).
+pub fn ground(scene: &mut Scene, goal: [f64; 2]) {
+    scene.clear();
+    scene.grid(TABLE_CELLS, TABLE_CELL_M, TABLE);
+    square(scene, goal, GOAL_HALF, GOAL);
+}
+
+/// The world view's scene over the [`ground`].
 pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
     scene.clear();
-    scene.grid(8, 0.05, TABLE);
     things(scene, look, false);
     let tool = &look.chain.tool;
     scene.triad(v(&tool.pos), rot(tool), 0.035, palette, 2.0, None);
@@ -220,10 +254,9 @@ pub fn world(scene: &mut Scene, look: &Look, palette: AxisPalette) {
     }
 }
 
-/// The wrist camera's scene (no gizmo).
+/// The wrist camera's scene: the ground and what stands on it (no gizmo).
 pub fn wrist(scene: &mut Scene, look: &Look) {
-    scene.clear();
-    scene.grid(8, 0.05, TABLE);
+    ground(scene, look.goal);
     things(scene, look, true);
 }
 
@@ -412,15 +445,24 @@ pub fn world_camera(width: f64, height: f64) -> Camera {
     )
 }
 
-/// The wrist camera: at the tool frame's origin looking along its x axis (the gripper's
-/// approach direction), `width`×`height` CSS px, 70° vertical field of view.
+/// The wrist camera's eye in the tool frame, m: on the approach axis (x), behind the fingers,
+/// so the fixed finger shows in the lower part of the image and the table and the cube ahead.
+pub const WRIST_EYE: [f64; 3] = [-0.09, 0.0, 0.0];
+/// The point the wrist camera looks at, in the tool frame, m: just past the finger tips.
+pub const WRIST_AIM: [f64; 3] = [0.04, 0.0, 0.0];
+/// The wrist camera's vertical field of view, degrees.
+pub const WRIST_FOV_DEG: f64 = 70.0;
+
+/// The wrist camera: from [`WRIST_EYE`] towards [`WRIST_AIM`] on the tool,
+/// `width`×`height` CSS px, [`WRIST_FOV_DEG`] vertical field of view.
 pub fn wrist_camera(chain: &Chain, width: f64, height: f64) -> Camera {
     let t = &chain.tool;
-    let ahead = DVec3::from(wrist_ahead(chain));
-    // Back off 1 cm behind the tool frame, between the jaws, so the jaw tips show.
-    let eye = v(&t.pos) - ahead * 0.01;
-    let distance = 0.1;
-    let back = -ahead;
+    let r = rot(t);
+    let eye = v(&t.pos) + r * DVec3::from(WRIST_EYE);
+    let target = v(&t.pos) + r * DVec3::from(WRIST_AIM);
+    let back = eye - target;
+    let distance = back.length();
+    let back = back / distance;
     let elevation = back
         .z
         .clamp(-1.0, 1.0)
@@ -428,11 +470,11 @@ pub fn wrist_camera(chain: &Chain, width: f64, height: f64) -> Camera {
         .clamp(-Camera::MAX_ELEVATION, Camera::MAX_ELEVATION);
     let azimuth = back.y.atan2(back.x);
     Camera {
-        target: eye + ahead * distance,
+        target,
         azimuth,
         elevation,
         distance,
-        fov_y: 70f64.to_radians(),
+        fov_y: WRIST_FOV_DEG.to_radians(),
         width,
         height,
     }
@@ -535,12 +577,6 @@ pub fn wrist_view(chain: &Chain, width: f64, height: f64) -> (Camera, f64) {
     (camera, roll)
 }
 
-/// The gripper's approach direction (the tool frame's x axis), world.
-fn wrist_ahead(chain: &Chain) -> [f64; 3] {
-    let t = &chain.tool;
-    [t.rot[0][0], t.rot[1][0], t.rot[2][0]]
-}
-
 /// A joint's readout: its angle in degrees and its limits, `"12.3° (−110.0…110.0)"`.
 pub fn joint_text(i: usize, q: f64) -> String {
     let (lo, hi) = joint_limits()[i.min(4)];
@@ -588,10 +624,14 @@ mod tests {
             active: None,
         };
         let mut scene = Scene::new();
+        // The ground: the table's grid (2 × 15 lines), the goal 4.
+        ground(&mut scene, look.goal);
+        assert_eq!(scene.len(), 2 * (TABLE_CELLS + 1) + 4);
         world(&mut scene, &look, AxisPalette::Classic);
-        // Grid (2 × 9 lines), goal 4, wall/base/6 links/cube 9 boxes × 6 faces, the cube's
-        // outline 12, triad 3, gizmo 3 arrows + 3 rings of 24 segments.
-        assert_eq!(scene.len(), 18 + 4 + 9 * 6 + 12 + 3 + 3 + 3 * RING_POINTS);
+        // The wall, the arm's parts and the cube as boxes of 6 faces, the cube's outline 12,
+        // triad 3, gizmo 3 arrows + 3 rings of 24 segments.
+        let boxes = 1 + PARTS.len() + 1;
+        assert_eq!(scene.len(), boxes * 6 + 12 + 3 + 3 + 3 * RING_POINTS);
         let camera = world_camera(800.0, 500.0);
         assert!(!scene.project(&camera).is_empty());
     }
@@ -662,18 +702,27 @@ mod tests {
     }
 
     #[test]
-    fn the_wrist_camera_sees_the_cube_below_the_start_pose() {
+    fn the_wrist_camera_sees_the_fingers_and_the_cube_at_the_start_pose() {
         let sim = Sim::new(SceneConfig::default_for(false)).unwrap();
         let chain = sim.chain();
-        let cam = wrist_camera(&chain, 320.0, 240.0);
-        // The tool points down at the start: the table under it projects, the sky does not.
-        let under = DVec3::new(chain.tool.pos[0], chain.tool.pos[1], 0.0);
-        let p = cam.project(under).unwrap();
-        assert!(
-            (p.at.x - 160.0).abs() < 40.0 && (p.at.y - 120.0).abs() < 40.0,
-            "{p:?}"
-        );
-        assert!(cam
+        let (camera, roll) = wrist_view(&chain, 320.0, 240.0);
+        // A point as shown: turned by `roll` about the image's centre, in the 320×240 image.
+        let shown = |p: DVec3| {
+            let at = camera.project(p)?.at - DVec2::splat(camera.width / 2.0);
+            let (sin, cos) = roll.sin_cos();
+            let turned = DVec2::new(at.x * cos + at.y * sin, -at.x * sin + at.y * cos);
+            Some(turned + DVec2::new(160.0, 120.0))
+        };
+        let inside = |at: DVec2| (0.0..320.0).contains(&at.x) && (0.0..240.0).contains(&at.y);
+        // The cube on the table ahead.
+        let cube = shown(DVec3::from_array(sim.state().cube.pos)).unwrap();
+        assert!(inside(cube), "{cube:?}");
+        // The fixed finger, in the lower half.
+        let (_, finger) = part_boxes(&chain).nth(FIXED_FINGER).unwrap();
+        let finger = shown(v(&finger.centre)).unwrap();
+        assert!(inside(finger) && finger.y > 120.0, "{finger:?}");
+        // The sky does not project.
+        assert!(camera
             .project(DVec3::new(chain.tool.pos[0], chain.tool.pos[1], 1.0))
             .is_none());
     }
@@ -736,8 +785,8 @@ mod tests {
             let z = DVec3::new(t.rot[0][2], t.rot[1][2], t.rot[2][2]);
             let eye = v(&t.pos);
             let (a, b) = (
-                camera.project(eye + z * 0.0 + DVec3::from(wrist_ahead(&chain)) * 0.05),
-                camera.project(eye + z * 0.02 + DVec3::from(wrist_ahead(&chain)) * 0.05),
+                camera.project(eye + z * 0.0 + rot(t).col(0) * 0.05),
+                camera.project(eye + z * 0.02 + rot(t).col(0) * 0.05),
             );
             let d = b.unwrap().at - a.unwrap().at;
             let (sin, cos) = roll.sin_cos();
@@ -752,7 +801,8 @@ mod tests {
         };
         let r0 = roll_at(0.0, &mut q);
         let r1 = roll_at(0.5, &mut q);
-        assert!(((r1 - r0).abs() - 0.5).abs() < 0.05, "{r0} {r1}");
+        let turned = (r1 - r0).sin().atan2((r1 - r0).cos());
+        assert!((turned.abs() - 0.5).abs() < 0.05, "{r0} {r1}");
         // The square camera keeps the image's scale.
         let chain = sim.chain();
         let (square, _) = wrist_view(&chain, 320.0, 240.0);

@@ -14,7 +14,10 @@ numpy's default_rng(101) until there are 256 rows.
 
 With --boxes ASSETS_DIR (the repository's Simulation/SO101/assets), also prints for each body
 the axis-aligned box (in the body's frame) around the vertices of its collision meshes, as
-the Rust data of src/so101/model.rs.
+the Rust data of src/so101/model.rs; with --parts ASSETS_DIR, the drawn parts of
+src/so101/model.rs: a box (in the body's frame) around each collision mesh (the base: each
+visual mesh), the meshes of SPLIT cut in two across one of their axes, boxes inside another
+of the same body left out.
 
     python3 -m pip install mujoco   # 3.x or later
     python3 tests/so101/golden_fk.py
@@ -85,6 +88,8 @@ def main():
     print(f"wrote {OUT}: {len(qs)} rows, mujoco {mujoco.__version__}")
     if len(sys.argv) == 3 and sys.argv[1] == "--boxes":
         print_boxes(sys.argv[2])
+    if len(sys.argv) == 3 and sys.argv[1] == "--parts":
+        print_parts(sys.argv[2])
 
 
 def stl_vertices(path):
@@ -126,6 +131,60 @@ def print_boxes(assets):
         c, h = (lo + hi) / 2, (hi - lo) / 2
         print(f'    ("{body.get("name")}", [{c[0]:.4f}, {c[1]:.4f}, {c[2]:.4f}], '
               f"[{h[0]:.4f}, {h[1]:.4f}, {h[2]:.4f}]),")
+
+
+# Meshes drawn as two boxes: the mesh's axis and where (in the mesh's frame, m) to cut it.
+# The fixed jaw's mount and finger; the moving jaw's hinge and finger; the base's housing and
+# its raised back.
+SPLIT = {
+    "wrist_roll_follower_so101_v1": (2, 0.0527),
+    "moving_jaw_so101_v1": (1, -0.036),
+    "base_so101_v2": (2, 0.042),
+}
+
+
+def surface_points(path, n=6):
+    """Points on every triangle of the STL (a barycentric grid of n per edge)."""
+    tri = stl_vertices(path).reshape(-1, 3, 3)
+    pts = []
+    for i in range(n + 1):
+        for j in range(n + 1 - i):
+            a, b = i / n, j / n
+            pts.append(tri[:, 0] * (1 - a - b) + tri[:, 1] * a + tri[:, 2] * b)
+    return np.vstack(pts)
+
+
+def print_parts(assets):
+    root = ET.parse(MJCF).getroot()
+    names = [b.get("name") for b in root.iter("body")]
+    for body in root.iter("body"):
+        name = body.get("name")
+        want = "visual" if name == "base" else "collision"
+        boxes = []
+        for g in body.findall("geom"):
+            if g.get("class") != want:
+                continue
+            p = surface_points(os.path.join(assets, g.get("mesh") + ".stl"))
+            pieces = [p]
+            if g.get("mesh") in SPLIT:
+                axis, cut = SPLIT[g.get("mesh")]
+                pieces = [p[p[:, axis] <= cut], p[p[:, axis] >= cut]]
+            pos = np.array([float(x) for x in g.get("pos").split()])
+            rot = quat_mat([float(x) for x in g.get("quat").split()])
+            for piece in pieces:
+                w = piece @ rot.T + pos
+                boxes.append((w.min(axis=0), w.max(axis=0)))
+        kept = [
+            (lo, hi) for k, (lo, hi) in enumerate(boxes)
+            if not any(
+                j != k and np.all(lo >= lo2 - 1e-4) and np.all(hi <= hi2 + 1e-4)
+                for j, (lo2, hi2) in enumerate(boxes)
+            )
+        ]
+        for lo, hi in kept:
+            c, h = (lo + hi) / 2, (hi - lo) / 2
+            print(f"    part({names.index(name)}, [{c[0]:.4f}, {c[1]:.4f}, {c[2]:.4f}], "
+                  f"[{h[0]:.4f}, {h[1]:.4f}, {h[2]:.4f}]),")
 
 
 if __name__ == "__main__":

@@ -284,7 +284,12 @@ impl Inner {
         let open = self.session.open.clone();
         scope.listen_for(&open, "change", me, |p, _| p.open_files())?;
         let review = self.review.root.clone();
-        scope.observe_resize(&[&review], me, |p| {
+        let wrist = self.views.borrow().as_ref().and_then(|v| v.wrist_stage());
+        let wrist = wrist.unwrap_or_else(|| review.clone());
+        scope.observe_resize(&[&review, &wrist], me, |p| {
+            if let Some(v) = p.views.borrow().as_ref() {
+                v.fit_wrist();
+            }
             p.review.fit();
             p.draw_replay();
         })?;

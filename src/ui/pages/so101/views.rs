@@ -1,6 +1,11 @@
 //! The two views: the world (the kit's orbit view, `data-testid="so101-canvas"`, with the
 //! clutch gizmo on the tool) and the wrist camera (`data-testid="so101-wrist"`); both draw
 //! `crate::view::so101`'s scene of the live state or of the replayed step. And the readouts.
+//!
+//! A view is drawn again only when what it shows changed (the arm, the cube, the camera, the
+//! held handle, the ink); the world's table and goal sit on a canvas of their own under the
+//! rest, drawn again only when the camera, the ink or the goal change. The wrist canvas is
+//! sized when it is built and when its stage is resized, not in every frame.
 
 use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
@@ -22,7 +27,7 @@ use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
 use crate::view::scene3d::{AxisPalette, Scene};
 use crate::view::so101::{
-    deg, handle_at, joint_text, mm, ring_grips, world, wrist, wrist_view, Handle, Look,
+    deg, ground, handle_at, joint_text, mm, ring_grips, world, wrist, wrist_view, Handle, Look,
     VIEW_RADIUS, VIEW_TARGET,
 };
 
@@ -38,7 +43,74 @@ pub struct Views {
     pub orbit: OrbitView<Handle>,
     wrist: RefCell<LayeredCanvas>,
     wrist_scene: RefCell<Scene>,
+    /// What the wrist canvas shows (`None`: nothing yet, or cleared by a resize).
+    wrist_shown: RefCell<Option<Shown>>,
     shared: Weak<Shared>,
+}
+
+/// What a view shows, as numbers (a view is drawn again only when one of them changed): the
+/// gripper closed, the cube held, the wall, the gizmo and its held handle, the ink's line
+/// scale, the goal; the joints; the cube's centre and axes; the camera.
+type Shown = [f64; 34];
+
+/// The camera as numbers.
+fn camera_key(c: &Camera) -> [f64; 9] {
+    let t = c.target;
+    [
+        t.x,
+        t.y,
+        t.z,
+        c.azimuth,
+        c.elevation,
+        c.distance,
+        c.fov_y,
+        c.width,
+        c.height,
+    ]
+}
+
+/// [`Shown`] of `record` and `cube`, with the wall, the gizmo and its held handle, seen
+/// through `camera` with `ink`.
+fn shown_key(
+    record: &StepRecord,
+    cube: &Obb,
+    p: &Practice,
+    active: Option<Handle>,
+    camera: &Camera,
+    ink: Ink,
+) -> Shown {
+    let flag = |b: bool| if b { 1.0 } else { 0.0 };
+    let active = match active {
+        None => -1.0,
+        Some(Handle::Axis(k)) => k as f64,
+        Some(Handle::Turn(k)) => 3.0 + k as f64,
+    };
+    let mut k = [0.0; 34];
+    k[..8].copy_from_slice(&[
+        flag(record.gripper_closed),
+        flag(record.held),
+        flag(p.config.obstacle),
+        flag(p.replay.is_none()),
+        active,
+        ink.line,
+        p.config.goal[0],
+        p.config.goal[1],
+    ]);
+    k[8..13].copy_from_slice(&record.q);
+    k[13..16].copy_from_slice(&cube.centre);
+    for (i, row) in cube.rot.iter().enumerate() {
+        k[16 + 3 * i..19 + 3 * i].copy_from_slice(row);
+    }
+    k[25..].copy_from_slice(&camera_key(camera));
+    k
+}
+
+/// The world view's drawing state: its scene and what its two canvases show (the ground:
+/// the camera, the ink's line scale and the goal).
+struct WorldState {
+    scene: Scene,
+    shown: Option<Shown>,
+    ground: Option<[f64; 12]>,
 }
 
 /// The record the views and readouts show and the cube's box: the replayed step, else the
@@ -73,7 +145,8 @@ fn draw_world(
     canvas: &LayeredCanvas,
     camera: &Camera,
     ink: Ink,
-    scene: &RefCell<Scene>,
+    state: &RefCell<WorldState>,
+    tool: &Cell<DVec3>,
 ) {
     let Some(shared) = shared.upgrade() else {
         return;
@@ -81,13 +154,33 @@ fn draw_world(
     let Ok(p) = shared.practice.try_borrow() else {
         return;
     };
+    let Ok(mut state) = state.try_borrow_mut() else {
+        return;
+    };
     let (record, cube) = shown(&p);
-    let c = chain_of(&record);
+    tool.set(DVec3::from_array(record.tool));
     let active = shared
         .devices
         .try_borrow()
         .ok()
         .and_then(|d| d.clutch.map(|c| c.handle));
+    let now = shown_key(&record, &cube, &p, active, camera, ink);
+    let mut ground_now = [0.0; 12];
+    ground_now[..9].copy_from_slice(&camera_key(camera));
+    ground_now[9..].copy_from_slice(&[ink.line, p.config.goal[0], p.config.goal[1]]);
+    if state.ground != Some(ground_now) {
+        let state = &mut *state;
+        ground(&mut state.scene, p.config.goal);
+        let marks = state.scene.project(camera);
+        let layer = canvas.layer(0);
+        layer.begin();
+        paint(&layer.ctx, &marks, ink);
+        state.ground = Some(ground_now);
+    }
+    if state.shown.as_ref() == Some(&now) {
+        return;
+    }
+    let c = chain_of(&record);
     let look = Look {
         chain: &c,
         cube,
@@ -96,14 +189,12 @@ fn draw_world(
         gizmo: p.replay.is_none(),
         active,
     };
-    let Ok(mut scene) = scene.try_borrow_mut() else {
-        return;
-    };
-    world(&mut scene, &look, AxisPalette::Classic);
-    let marks = scene.project(camera);
+    world(&mut state.scene, &look, AxisPalette::Classic);
+    let marks = state.scene.project(camera);
     let layer = canvas.top();
     layer.begin();
     paint(&layer.ctx, &marks, ink);
+    state.shown = Some(now);
     // Where each ring can be taken, for the page's tests.
     let grips: Vec<String> = ring_grips(camera, DVec3::from_array(record.tool))
         .iter()
@@ -137,6 +228,8 @@ impl Views {
         );
         options.preset = Preset::Iso;
         options.stage_class = "so101-stage";
+        // The table and the goal below, the rest above.
+        options.layers = 2;
         let t = tool.clone();
         let weak = Rc::downgrade(shared);
         options.claim = Some(Box::new(move |at: DVec2, _kind, camera: &Camera| {
@@ -150,26 +243,26 @@ impl Views {
         }));
         let t = tool.clone();
         options.on_handle = Some(Box::new(move |e: DragEvent<Handle>| on_gizmo(e, t.get())));
-        let scene = RefCell::new(Scene::new());
+        let state = RefCell::new(WorldState {
+            scene: Scene::new(),
+            shown: None,
+            ground: None,
+        });
         let weak = Rc::downgrade(shared);
-        let t = tool;
         let orbit = OrbitView::new(&slot, options, move |canvas, camera, ink| {
-            if let Some(s) = weak.upgrade() {
-                if let Ok(p) = s.practice.try_borrow() {
-                    t.set(DVec3::from_array(shown_record(&p).tool));
-                }
-            }
-            draw_world(&weak, canvas, camera, ink, &scene);
+            draw_world(&weak, canvas, camera, ink, &state, &tool);
         })?;
         orbit
             .canvas_element()
             .set_attribute("aria-describedby", "so101-readouts")?;
         let stage: Element = dom::find(root, "[data-so101=\"wrist-stage\"]", "so101")?;
-        let wrist = LayeredCanvas::from_stage(&stage)?;
+        let mut wrist = LayeredCanvas::from_stage(&stage)?;
+        wrist.fit();
         Ok(Views {
             orbit,
             wrist: RefCell::new(wrist),
             wrist_scene: RefCell::new(Scene::new()),
+            wrist_shown: RefCell::new(None),
             shared: Rc::downgrade(shared),
         })
     }
@@ -190,6 +283,21 @@ impl Views {
 
     pub fn relayout(&self) {
         self.orbit.relayout();
+        self.fit_wrist();
+    }
+
+    /// The wrist camera's stage (its size is watched).
+    pub fn wrist_stage(&self) -> Option<Element> {
+        self.wrist.try_borrow().ok().map(|w| w.stage.clone())
+    }
+
+    /// Sizes the wrist canvas to its stage again and draws both views.
+    pub fn fit_wrist(&self) {
+        if let Ok(mut canvas) = self.wrist.try_borrow_mut() {
+            if canvas.fit() {
+                self.wrist_shown.replace(None);
+            }
+        }
         self.redraw();
     }
 
@@ -206,13 +314,22 @@ impl Views {
         let Ok(p) = shared.practice.try_borrow() else {
             return;
         };
-        let Ok(mut canvas) = self.wrist.try_borrow_mut() else {
+        let Ok(canvas) = self.wrist.try_borrow() else {
             return;
         };
-        canvas.fit();
         let (w, h) = canvas.size();
         let (record, cube) = shown(&p);
         let c = chain_of(&record);
+        // The image turns with the wrist (its square camera covers the turned corners).
+        let (camera, roll) = wrist_view(&c, w, h);
+        let ink = Ink::current();
+        let now = shown_key(&record, &cube, &p, None, &camera, ink);
+        let Ok(mut shown_now) = self.wrist_shown.try_borrow_mut() else {
+            return;
+        };
+        if shown_now.as_ref() == Some(&now) {
+            return;
+        }
         let look = Look {
             chain: &c,
             cube,
@@ -225,8 +342,6 @@ impl Views {
             return;
         };
         wrist(&mut scene, &look);
-        // The image turns with the wrist (its square camera covers the turned corners).
-        let (camera, roll) = wrist_view(&c, w, h);
         let marks = scene.project(&camera);
         let layer = canvas.top();
         layer.begin();
@@ -235,8 +350,9 @@ impl Views {
         let _ = ctx.translate(w / 2.0, h / 2.0);
         let _ = ctx.rotate(-roll);
         let _ = ctx.translate(-camera.width / 2.0, -camera.height / 2.0);
-        paint(ctx, &marks, Ink::current());
+        paint(ctx, &marks, ink);
         ctx.restore();
+        *shown_now = Some(now);
         // How far the image is turned, rad (for the page's tests).
         let turned = format!("{roll:.4}");
         if layer.canvas.get_attribute("data-roll").as_deref() != Some(turned.as_str()) {
