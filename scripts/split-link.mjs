@@ -144,8 +144,9 @@ export function firstStrings() {
 }
 
 const LOADER = `
-// Each module is instantiated once per tab; a split point's missing modules come in one
-// request (its pack) on a first visit, else each from its file (scripts/split-link.mjs).
+// Each module is instantiated once per tab; a split point's modules come in one request (its
+// pack) when none of them is here yet, else the missing ones each from its file
+// (scripts/split-link.mjs).
 // SIZES[n]: the bytes of chunks/chunk_<n>.wasm; SPLITS[s].chunks: the chunks of split point
 // s as ranges ("19-27,29"), before its own module split_<s> (SPLITS[s].own bytes).
 const SIZES = __SIZES__;
@@ -209,8 +210,8 @@ function unpack(bytes) {
 async function fetchModules(split, missing) {
     const { pack, packBytes } = SPLITS[split];
     const modules = modulesOf(split);
-    const whole = missing.length === modules.length
-        && !(globalThis.navigator && navigator.serviceWorker && navigator.serviceWorker.controller);
+    // The pack when none of them is here (the service worker makes it from its cached modules).
+    const whole = missing.length === modules.length;
     const total = whole ? packBytes : missing.reduce((sum, id) => sum + modules.find(([m]) => m === id)[1], 0);
     let loaded = 0;
     const count = (n) => { loaded += n; progress(split, loaded, total); };

@@ -1,9 +1,10 @@
 #!/usr/bin/env node
 // Writes DIR/sw.js (default dist/) from the template www/sw.js: the build id is the sha256 of
 // every file of the build (path and bytes, in path order) and the file list is every file in
-// DIR but the first-visit packs (`pkg/pack_*.bin`: the same modules as `pkg/chunks/`, which the
-// loader reads once the worker is installed), so the service worker caches exactly one build
-// and each module once. Prints the build id.
+// DIR but the first-visit packs (`pkg/pack_*.bin`: the same modules as `pkg/chunks/`), so the
+// service worker caches exactly one build and each module once; it makes a pack from its
+// modules when one is asked for (each pack's module names are written into sw.js). Prints the
+// build id.
 // `node scripts/sw-build.mjs [DIR]`; also imported by the offline e2e test.
 import { createHash } from 'node:crypto';
 import { readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
@@ -24,6 +25,20 @@ export function isPack(file) {
   return /^pkg\/pack_[^/]*\.bin$/.test(file);
 }
 
+/** The module names a pack holds, in order (its format: scripts/split-link.mjs). */
+export function packModules(bytes) {
+  if (bytes.subarray(0, 4).toString() !== 'BSVP') throw new Error('not a pack');
+  const names = [];
+  let at = 8;
+  for (let i = 0, n = bytes.readUInt32LE(4); i < n; i++) {
+    const idLength = bytes.readUInt32LE(at);
+    names.push(bytes.subarray(at + 4, at + 4 + idLength).toString());
+    at += 4 + idLength;
+    at += 4 + bytes.readUInt32LE(at);
+  }
+  return names;
+}
+
 /** Writes `dir`/sw.js and returns { build, files }. */
 export function writeServiceWorker(dir) {
   const root = resolve(dir);
@@ -38,10 +53,16 @@ export function writeServiceWorker(dir) {
   }
   const build = hash.digest('hex').slice(0, 16);
   const list = ['./', ...files.filter((file) => !isPack(file))];
+  const packs = Object.fromEntries(
+    files.filter(isPack).map((file) => [file.slice(file.lastIndexOf('/') + 1), packModules(readFileSync(join(root, file)))]),
+  );
   const template = readFileSync(join(ROOT, 'www', 'sw.js'), 'utf8');
   writeFileSync(
     join(root, 'sw.js'),
-    template.replace("'__BSV_BUILD__'", JSON.stringify(build)).replace('__BSV_FILES__', JSON.stringify(list)),
+    template
+      .replace("'__BSV_BUILD__'", JSON.stringify(build))
+      .replace('__BSV_FILES__', JSON.stringify(list))
+      .replace('__BSV_PACKS__', JSON.stringify(packs)),
   );
   return { build, files: list };
 }

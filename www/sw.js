@@ -9,11 +9,15 @@
 // - activate: the caches of other builds are deleted, so the cache holds exactly the files
 //   of one build.
 // - fetch: same-origin GETs come from the cache (navigations get index.html), else the
-//   network.
+//   network. A first-visit pack (`pkg/pack_<split>.bin`, not cached: its modules are) is
+//   made from the cached modules it holds (PACKS), so a second visit fetches a page's code in
+//   one request, as a first visit does, instead of one per module.
 'use strict';
 
 const BUILD = '__BSV_BUILD__';
 const FILES = __BSV_FILES__;
+// Each pack's modules, in order (the names of pkg/chunks/<name>.wasm).
+const PACKS = __BSV_PACKS__;
 const CACHE = `bsv-${BUILD}`;
 const PREFIX = 'bsv-';
 
@@ -44,7 +48,32 @@ self.addEventListener('fetch', (event) => {
   event.respondWith((async () => {
     const cache = await caches.open(CACHE);
     const hit = (await cache.match(request, { ignoreSearch: true }))
-      ?? (request.mode === 'navigate' ? await cache.match(new URL('index.html', self.registration.scope)) : undefined);
+      ?? (request.mode === 'navigate' ? await cache.match(new URL('index.html', self.registration.scope)) : undefined)
+      ?? (await packOf(cache, new URL(request.url)));
     return hit ?? fetch(request);
   })());
 });
+
+/** The pack `url` names, made from the cached modules (its format: scripts/split-link.mjs),
+ * or undefined (not a pack, or a module is not cached). */
+async function packOf(cache, url) {
+  const names = PACKS[url.pathname.slice(url.pathname.lastIndexOf('/') + 1)];
+  if (!names || !url.pathname.includes('/pkg/')) return undefined;
+  const scope = self.registration.scope;
+  const found = await Promise.all(names.map((name) => cache.match(new URL(`pkg/chunks/${name}.wasm`, scope))));
+  if (found.some((response) => !response)) return undefined;
+  const modules = await Promise.all(found.map((response) => response.arrayBuffer()));
+  const text = new TextEncoder();
+  const parts = [text.encode('BSVP'), u32(names.length)];
+  names.forEach((name, i) => {
+    const id = text.encode(name);
+    parts.push(u32(id.length), id, u32(modules[i].byteLength), new Uint8Array(modules[i]));
+  });
+  return new Response(new Blob(parts), { headers: { 'Content-Type': 'application/octet-stream' } });
+}
+
+function u32(n) {
+  const bytes = new Uint8Array(4);
+  new DataView(bytes.buffer).setUint32(0, n, true);
+  return bytes;
+}

@@ -1,6 +1,7 @@
 // Offline install: the app's service worker caches exactly the files of one build, the app
-// then opens every route with the server stopped, and a new build is offered ("reload to
-// update") and applied only when accepted.
+// then opens every route with the server stopped (each page's code in one request, a pack the
+// worker makes from its cached modules), and a new build is offered ("reload to update") and
+// applied only when accepted.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { cpSync, appendFileSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -75,6 +76,11 @@ test('after one visit the app opens every route with the server stopped, from a 
       assert.equal(await tab.locator('[data-testid="boot-error"]').count(), 0, route);
       assert.equal(await tab.locator('.page-error, [data-testid="notfound"]').count(), 0, route);
       assert.ok((await tab.locator('#app-main').innerText()).length > 40, `${route}: the page has content`);
+      // The page's code came in one request, its pack, which the worker made from its cached
+      // modules (packs are not cached, and the server is gone).
+      const packs = await tab.evaluate(() => performance.getEntriesByType('resource')
+        .filter((e) => /\/pkg\/pack_\w+\.bin$/.test(e.name) && e.responseStatus === 200).length);
+      assert.ok(packs >= 1, `${route}: its pack`);
       if (route === 'rrt-2d') await tab.screenshot({ path: join(OUT, 'offline-rrt.png') });
       await tab.close();
     }
