@@ -105,15 +105,14 @@ pub(crate) fn start(lang: Lang) -> Result<(), JsValue> {
     })?;
     install_load_progress()?;
     mount_route(&router::current_route())?;
-    crate::ui::schedule::after_paint(|| wasm_bindgen_futures::spawn_local(load_the_rest()))?;
     Ok(())
 }
 
-/// After the first page is shown, the rest of the app in the background, one part after the
-/// other: the other language's strings of this page (so a switch is immediate), every string
-/// of both languages and every page's chunk (so going to a page shows it at once, and the app
-/// works offline after one visit even where no service worker runs). A part that fails to
-/// load is loaded again when it is needed.
+/// Once the first page is shown and painted ([`mark_ready`]), the rest of the app in the
+/// background, one part after the other: the other language's strings of this page (so a
+/// switch is immediate), every string of both languages and every page's chunk (so going to a
+/// page shows it at once, and the app works offline after one visit even where no service
+/// worker runs). A part that fails to load is loaded again when it is needed.
 async fn load_the_rest() {
     let lang = ctx::lang();
     let _ = lang_files::load(lang.other(), page_strings(routed_def())).await;
@@ -726,10 +725,16 @@ fn install_load_progress() -> Result<(), JsValue> {
 
 /// `html[data-app-ready]`: the first route is settled (its page mounted, or the message that
 /// it could not be loaded, or "not found"); tests and the first-frame bench wait for it.
+/// The first time, the rest of the app starts loading once that frame is painted
+/// ([`load_the_rest`]), so that it does not compete with the first page for the network and
+/// the main thread.
 fn mark_ready() -> Result<(), JsValue> {
     if let Some(html) = dom::document()?.document_element() {
         if !html.has_attribute("data-app-ready") {
             html.set_attribute("data-app-ready", "1")?;
+            crate::ui::schedule::after_paint(
+                || wasm_bindgen_futures::spawn_local(load_the_rest()),
+            )?;
         }
     }
     Ok(())
