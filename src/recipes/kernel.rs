@@ -148,6 +148,23 @@ impl Recipe {
 /// arguments name: what `bsv <id> <args>` writes (an instance of [`run_raw_of`]).
 pub type RunRaw = fn(&[String], Vec<(String, String)>) -> Result<RecipeOutput, RecipeError>;
 
+/// A page's own recipe: its facts and its kernel's run (and no other kernel).
+#[derive(Debug, Clone, Copy)]
+pub struct PageRecipe {
+    pub info: &'static RecipeInfo,
+    pub run: RunRaw,
+}
+
+impl PageRecipe {
+    /// The recipe of kernel `K`.
+    pub const fn of<K: Kernel>() -> PageRecipe {
+        PageRecipe {
+            info: K::INFO,
+            run: run_raw_of::<K>,
+        }
+    }
+}
+
 /// Runs kernel `K` on command-line style arguments and input files: how a page reaches its
 /// own kernel, and no other.
 pub fn run_raw_of<K: Kernel>(

@@ -32,7 +32,8 @@ pub(crate) mod testkit;
 pub use crate::args::Plan;
 pub use info::RecipeInfo;
 pub use kernel::{
-    plan_of, run_of, run_progress_of, run_raw_of, Kernel, Progress, Recipe, RunRaw, RunWithProgress,
+    plan_of, run_of, run_progress_of, run_raw_of, Kernel, PageRecipe, Progress, Recipe, RunRaw,
+    RunWithProgress,
 };
 pub use output::{CsvFile, RecipeOutput};
 

@@ -22,7 +22,7 @@ use super::scope::Scope;
 use super::url_state::UrlNotice;
 use crate::args::Args;
 use crate::error::RecipeError;
-use crate::recipes::{RecipeInfo, RunRaw};
+use crate::recipes::{PageRecipe, RecipeInfo, RunRaw};
 use crate::ui::dom;
 use crate::view::command_line::RunArgs;
 use crate::view::form::{recipe_fields, validate, validate_changed, FieldDef};
@@ -117,13 +117,13 @@ impl<T: Clone + 'static> RecipeControls<T> {
     pub fn mount(
         root: &Element,
         prefix: &str,
-        info: &'static RecipeInfo,
-        run: RunRaw,
+        recipe: PageRecipe,
         sliders: &[Slider],
         query: &[(String, String)],
         own_keys: &[&str],
         parse: Parse<T>,
     ) -> Result<RecipeControls<T>, JsValue> {
+        let PageRecipe { info, run } = recipe;
         let fields = recipe_fields(info);
         let (texts, ignored) = read_texts(info, query, own_keys);
         let values: Vec<String> = texts

@@ -29,6 +29,7 @@ pub use self::spec::{Arrows, Nudge, SignalSpec};
 pub use self::thinned::ThinRow;
 use self::thinned::{Kept, ThinCache, ThinKey};
 use crate::pyfmt::py_float;
+use crate::recipes::PageRecipe;
 use crate::ui::dom;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
@@ -519,8 +520,10 @@ impl<S: SignalPage> Page for Signal<S> {
         let controls = RecipeControls::mount(
             &root,
             p,
-            spec.info,
-            spec.run,
+            PageRecipe {
+                info: spec.info,
+                run: spec.run,
+            },
             spec.sliders,
             &ctx.query,
             spec.overlays,

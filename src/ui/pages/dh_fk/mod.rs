@@ -22,7 +22,7 @@ use wasm_bindgen::prelude::*;
 use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 
 use crate::recipes::dh_fk::{self, params_from_args, run, DhParams, CSV_NAME, JOINTS};
-use crate::recipes::run_raw_of;
+use crate::recipes::PageRecipe;
 use crate::ui::kit::canvas::{Ink, LayeredCanvas};
 use crate::ui::kit::frame;
 use crate::ui::kit::keymap;
@@ -106,8 +106,7 @@ impl Page for DhPage {
         let controls = RecipeControls::mount(
             &root,
             P,
-            &dh_fk::INFO,
-            run_raw_of::<dh_fk::Entry>,
+            PageRecipe::of::<dh_fk::Entry>(),
             &[],
             &ctx.query,
             &OWN_KEYS,

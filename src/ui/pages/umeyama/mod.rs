@@ -27,8 +27,8 @@ use web_sys::{Element, KeyboardEvent, MouseEvent};
 
 use crate::i18n::FluentArg;
 use crate::pyfmt::py_float;
-use crate::recipes::run_raw_of;
 use crate::recipes::umeyama_2d::{self, setup_from_args, UmeyamaSetup, INFO, POINTS_CSV};
+use crate::recipes::PageRecipe;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
@@ -165,8 +165,7 @@ impl Page for UmeyamaPage {
         let controls = RecipeControls::mount(
             &root,
             P,
-            &INFO,
-            run_raw_of::<umeyama_2d::Entry>,
+            PageRecipe::of::<umeyama_2d::Entry>(),
             &SLIDERS,
             &ctx.query,
             &[STEP_KEY],
