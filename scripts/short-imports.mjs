@@ -6,20 +6,10 @@
 //
 //   node scripts/short-imports.mjs dist/pkg/bsv_playground_bg.wasm dist/pkg/bsv_playground.js
 import { readFileSync, writeFileSync } from 'node:fs';
+import { leb } from './wasm-strip.mjs';
 
 /** The glue's module name in the wasm's imports (`wasm-bindgen --out-name bsv_playground`). */
 const GLUE = './bsv_playground_bg.js';
-
-function readU32(bytes, at) {
-  let value = 0;
-  let shift = 0;
-  for (;;) {
-    const byte = bytes[at++];
-    value += (byte & 0x7f) * 2 ** shift;
-    shift += 7;
-    if (!(byte & 0x80)) return [value, at];
-  }
-}
 
 function u32(value) {
   const out = [];
@@ -40,8 +30,8 @@ function name(text) {
 /** Skips a limits entry (table, memory) at `at`. */
 function skipLimits(bytes, at) {
   const flags = bytes[at++];
-  [, at] = readU32(bytes, at);
-  if (flags & 1) [, at] = readU32(bytes, at);
+  [, at] = leb(bytes, at);
+  if (flags & 1) [, at] = leb(bytes, at);
   return at;
 }
 
@@ -52,26 +42,26 @@ export function renameImports(wasm, rename) {
   let at = 8;
   while (at < wasm.length) {
     const id = wasm[at];
-    const [size, body] = readU32(wasm, at + 1);
+    const [size, body] = leb(wasm, at + 1);
     const end = body + size;
     if (id !== 2) {
       at = end;
       continue;
     }
-    let [count, p] = readU32(wasm, body);
+    let [count, p] = leb(wasm, body);
     const parts = [u32(count)];
     for (let i = 0; i < count; i++) {
-      const [moduleLength, m] = readU32(wasm, p);
+      const [moduleLength, m] = leb(wasm, p);
       const module = wasm.subarray(m, m + moduleLength).toString('utf8');
-      const [fieldLength, f] = readU32(wasm, m + moduleLength);
+      const [fieldLength, f] = leb(wasm, m + moduleLength);
       const field = wasm.subarray(f, f + fieldLength).toString('utf8');
       let q = f + fieldLength;
       const kind = wasm[q++];
-      if (kind === 0) [, q] = readU32(wasm, q);
+      if (kind === 0) [, q] = leb(wasm, q);
       else if (kind === 1) q = skipLimits(wasm, q + 1);
       else if (kind === 2) q = skipLimits(wasm, q);
       else if (kind === 3) q += 2;
-      else if (kind === 4) [, q] = readU32(wasm, q + 1);
+      else if (kind === 4) [, q] = leb(wasm, q + 1);
       else throw new Error(`import ${module}.${field}: unknown kind ${kind}`);
       const short = rename(module, field);
       if (short !== undefined) renamed.set(field, short);

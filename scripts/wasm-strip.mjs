@@ -5,7 +5,7 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 
 /** Reads an unsigned LEB128 at `pos`: [value, next position]. */
-function leb(bytes, pos) {
+export function leb(bytes, pos) {
   let value = 0;
   let shift = 0;
   for (;;) {
