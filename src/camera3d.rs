@@ -41,7 +41,7 @@ impl Preset {
     fn angles(self) -> (f64, f64) {
         use std::f64::consts::FRAC_PI_2;
         match self {
-            Preset::Iso => (45f64.to_radians(), 35f64.to_radians()),
+            Preset::Iso => (Camera::ISO_AZIMUTH, 35f64.to_radians()),
             // Straight down would make the up vector degenerate: stop just short of it.
             Preset::Top => (-FRAC_PI_2, Camera::MAX_ELEVATION),
             Preset::Front => (-FRAC_PI_2, 0.0),
@@ -73,6 +73,8 @@ pub struct Camera {
 }
 
 impl Camera {
+    /// The azimuth the iso preset looks from (45°), rad.
+    pub const ISO_AZIMUTH: f64 = std::f64::consts::FRAC_PI_4;
     /// Elevation is kept inside ±89.9° so the view never flips over the pole.
     pub const MAX_ELEVATION: f64 = 89.9 * std::f64::consts::PI / 180.0;
     /// Radians of orbit per CSS pixel dragged.

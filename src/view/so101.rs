@@ -20,6 +20,10 @@ use crate::view::scene3d::{AxisPalette, Layer, Scene, Shape3, Stroke};
 pub const VIEW_TARGET: [f64; 3] = [0.13, 0.02, 0.085];
 /// See [`VIEW_TARGET`].
 pub const VIEW_RADIUS: f64 = 0.215;
+/// The azimuth the world view's iso preset looks from, rad: from the front right (−30°,
+/// the cube's side), so that at the start the cube stands in front of the gripper and the
+/// goal beyond it, both clear of the gizmo.
+pub const VIEW_AZIMUTH: f64 = -std::f64::consts::FRAC_PI_6;
 /// Gizmo arrow length, m.
 pub const GIZMO_M: f64 = 0.06;
 /// Rotation ring radius, m.
@@ -434,24 +438,31 @@ pub fn drag_axes(
     out
 }
 
-/// The world view's camera at its start (the iso preset), `width`×`height` CSS px.
+/// The world view's camera at its start (the iso preset from [`VIEW_AZIMUTH`]),
+/// `width`×`height` CSS px.
 pub fn world_camera(width: f64, height: f64) -> Camera {
-    Camera::framing(
-        DVec3::from_array(VIEW_TARGET),
-        VIEW_RADIUS,
-        crate::camera3d::Preset::Iso,
-        width,
-        height,
-    )
+    Camera {
+        azimuth: VIEW_AZIMUTH,
+        ..Camera::framing(
+            DVec3::from_array(VIEW_TARGET),
+            VIEW_RADIUS,
+            crate::camera3d::Preset::Iso,
+            width,
+            height,
+        )
+    }
 }
 
-/// The wrist camera's eye in the tool frame, m: on the approach axis (x), behind the fingers,
-/// so the fixed finger shows in the lower part of the image and the table and the cube ahead.
-pub const WRIST_EYE: [f64; 3] = [-0.09, 0.0, 0.0];
-/// The point the wrist camera looks at, in the tool frame, m: just past the finger tips.
-pub const WRIST_AIM: [f64; 3] = [0.04, 0.0, 0.0];
+/// The wrist camera's eye in the tool frame, m: behind the fingers, looking along the
+/// approach axis (x) from 3 cm towards the side the jaw opens to (z), so the fixed finger
+/// shows in the lower part of the image, the moving jaw above it, open or closed, and the
+/// table and the cube ahead. Looking along the axis wrist_roll turns about, the image turns
+/// with the wrist.
+pub const WRIST_EYE: [f64; 3] = [-0.14, 0.0, 0.03];
+/// The point the wrist camera looks at, in the tool frame, m: past the finger tips.
+pub const WRIST_AIM: [f64; 3] = [0.04, 0.0, 0.03];
 /// The wrist camera's vertical field of view, degrees.
-pub const WRIST_FOV_DEG: f64 = 70.0;
+pub const WRIST_FOV_DEG: f64 = 80.0;
 
 /// The wrist camera: from [`WRIST_EYE`] towards [`WRIST_AIM`] on the tool,
 /// `width`×`height` CSS px, [`WRIST_FOV_DEG`] vertical field of view.
@@ -605,7 +616,11 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     use super::*;
+    use crate::so101::scene::{JAW_CLOSED, JAW_HOLDING, JAW_OPEN};
     use crate::so101::{SceneConfig, Sim};
+
+    /// The moving jaw's finger among [`PARTS`].
+    const MOVING_FINGER: usize = 17;
 
     fn look_at(sim: &Sim) -> (Chain, Obb) {
         (sim.chain(), sim.state().cube.obb())
@@ -634,6 +649,39 @@ mod tests {
         assert_eq!(scene.len(), boxes * 6 + 12 + 3 + 3 + 3 * RING_POINTS);
         let camera = world_camera(800.0, 500.0);
         assert!(!scene.project(&camera).is_empty());
+    }
+
+    #[test]
+    fn the_start_view_shows_the_cube_and_the_goal_clear_of_the_gizmo() {
+        let config = SceneConfig::default_for(false);
+        let sim = Sim::new(config.clone()).unwrap();
+        let tool = DVec3::from_array(sim.chain().tool.pos);
+        let camera = world_camera(760.0, 460.0);
+        let at = |p: DVec3| camera.project(p).unwrap().at;
+        let centre = at(tool);
+        // The farthest any handle reaches on screen.
+        let reach = (0..3)
+            .flat_map(|k| {
+                let ring = ring_points(tool, k);
+                ring.into_iter()
+                    .chain([tool + axis(k) * GIZMO_M])
+                    .collect::<Vec<_>>()
+            })
+            .map(|p| at(p).distance(centre))
+            .fold(0.0, f64::max);
+        let cube = at(DVec3::from_array(sim.state().cube.pos));
+        let [gx, gy] = config.goal;
+        let goal = at(DVec3::new(gx, gy, TABLE_Z));
+        // The cube's and the goal's centres beyond the gizmo's handles (the cube by more than
+        // a handle's hit radius: a press on it orbits the view).
+        assert!(
+            cube.distance(centre) > reach + HIT_PX,
+            "{cube:?} {centre:?} {reach}"
+        );
+        assert!(
+            goal.distance(centre) > reach + 10.0,
+            "{goal:?} {centre:?} {reach}"
+        );
     }
 
     #[test]
@@ -721,6 +769,26 @@ mod tests {
         let (_, finger) = part_boxes(&chain).nth(FIXED_FINGER).unwrap();
         let finger = shown(v(&finger.centre)).unwrap();
         assert!(inside(finger) && finger.y > 120.0, "{finger:?}");
+        // Both fingers whole in the image, the jaw open, holding or closed.
+        for jaw in [JAW_OPEN, JAW_HOLDING, JAW_CLOSED] {
+            let chain = crate::so101::chain(&sim.state().q, jaw);
+            let (camera, roll) = wrist_view(&chain, 320.0, 240.0);
+            let shown = |p: DVec3| {
+                let at = camera.project(p)?.at - DVec2::splat(camera.width / 2.0);
+                let (sin, cos) = roll.sin_cos();
+                let turned = DVec2::new(at.x * cos + at.y * sin, -at.x * sin + at.y * cos);
+                Some(turned + DVec2::new(160.0, 120.0))
+            };
+            for (i, (body, b)) in part_boxes(&chain).enumerate() {
+                if i == FIXED_FINGER || i == MOVING_FINGER {
+                    assert_eq!(body == 6, i == MOVING_FINGER);
+                    for corner in b.corners() {
+                        let at = shown(v(&corner)).unwrap();
+                        assert!(inside(at), "jaw {jaw}, part {i}: {at:?}");
+                    }
+                }
+            }
+        }
         // The sky does not project.
         assert!(camera
             .project(DVec3::new(chain.tool.pos[0], chain.tool.pos[1], 1.0))

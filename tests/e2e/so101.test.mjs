@@ -489,6 +489,35 @@ test('Japanese leaves no English UI text', async () => {
   }
 });
 
+test('the page opens on the arm: the 3D view and its buttons in the first screen, phone to projector', async () => {
+  const sizes = [
+    [{ width: 390, height: 844 }, 'ja'],
+    [{ width: 390, height: 844 }, 'en'],
+    [{ width: 1366, height: 768 }, 'en'],
+    [{ width: 1366, height: 800 }, 'ja'],
+  ];
+  for (const [viewport, lang] of sizes) {
+    const { page, errors, close } = await open(`#/so101?lang=${lang}`, { viewport });
+    try {
+      await canvas(page).waitFor();
+      const scrolled = await page.evaluate(() => window.scrollY);
+      assert.equal(scrolled, 0, `${lang} ${viewport.width}: opened scrolled`);
+      const view = await canvas(page).boundingBox();
+      // Most of the world view shows without scrolling.
+      const seen = Math.min(view.y + view.height, viewport.height) - Math.max(view.y, 0);
+      assert.ok(seen >= 0.75 * Math.min(view.height, viewport.height * 0.5), `${lang} ${viewport.width}: ${seen} px of the view seen`);
+      if (viewport.width < 720) {
+        // On a phone the engage button follows the view at once.
+        const engage = await page.locator('[data-action="engage"]').boundingBox();
+        assert.ok(engage.y > view.y + view.height && engage.y < viewport.height + 60, `${lang}: engage at ${engage.y}`);
+      }
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
+});
+
 test('screenshots: EN and JA 1366×768, projector, phone 390 px', async () => {
   const shots = [
     ['so101-en-1366.png', '#/so101', { viewport: { width: 1366, height: 768 } }],

@@ -69,6 +69,9 @@ pub struct OrbitOptions<H> {
     pub layers: usize,
     /// The view at start.
     pub preset: Preset,
+    /// The azimuth the iso view looks from, rad (about world z, from +x): a page turns it so
+    /// that what matters in its scene stands clear at the start.
+    pub iso_azimuth: f64,
     /// The point looked at and the radius of the scene (framing and zoom limits), metres.
     pub target: DVec3,
     pub radius: f64,
@@ -95,6 +98,7 @@ impl<H> OrbitOptions<H> {
             stage_class: "",
             layers: 1,
             preset: Preset::Iso,
+            iso_azimuth: Camera::ISO_AZIMUTH,
             target,
             radius,
             claim: None,
@@ -128,6 +132,13 @@ enum Gesture<H> {
     },
 }
 
+/// `camera` at `preset`, the iso view looking from `iso_azimuth`.
+fn turn_iso(camera: &mut Camera, preset: Preset, iso_azimuth: f64) {
+    if preset == Preset::Iso {
+        camera.azimuth = iso_azimuth;
+    }
+}
+
 struct Inner<H: Copy + PartialEq + 'static> {
     canvas: RefCell<LayeredCanvas>,
     stage: Element,
@@ -135,6 +146,8 @@ struct Inner<H: Copy + PartialEq + 'static> {
     camera: Cell<Camera>,
     /// The preset the camera still shows (cleared by an orbit).
     preset: Cell<Option<Preset>>,
+    /// See [`OrbitOptions::iso_azimuth`].
+    iso_azimuth: f64,
     radius: Cell<f64>,
     /// Pointers down: id and client position.
     pointers: RefCell<Vec<(i32, DVec2)>>,
@@ -216,7 +229,8 @@ impl<H: Copy + PartialEq + 'static> OrbitView<H> {
         let mut canvas = LayeredCanvas::from_stage(&stage)?;
         canvas.fit();
         let (w, h) = canvas.size();
-        let camera = Camera::framing(options.target, options.radius, options.preset, w, h);
+        let mut camera = Camera::framing(options.target, options.radius, options.preset, w, h);
+        turn_iso(&mut camera, options.preset, options.iso_azimuth);
         let mut presets = Vec::new();
         for p in Preset::ALL {
             let button: Element = dom::find(
@@ -232,6 +246,7 @@ impl<H: Copy + PartialEq + 'static> OrbitView<H> {
             presets,
             camera: Cell::new(camera),
             preset: Cell::new(Some(options.preset)),
+            iso_azimuth: options.iso_azimuth,
             radius: Cell::new(options.radius),
             pointers: RefCell::new(Vec::new()),
             gesture: Cell::new(Gesture::Idle),
@@ -286,9 +301,9 @@ impl<H: Copy + PartialEq + 'static> OrbitView<H> {
         self.inner.radius.set(radius);
         let (w, h) = self.inner.canvas.borrow().size();
         let preset = self.inner.preset.get().unwrap_or(Preset::Iso);
-        self.inner
-            .camera
-            .set(Camera::framing(target, radius, preset, w, h));
+        let mut camera = Camera::framing(target, radius, preset, w, h);
+        turn_iso(&mut camera, preset, self.inner.iso_azimuth);
+        self.inner.camera.set(camera);
         self.inner.preset.set(Some(preset));
         self.inner.show_preset();
         self.request_redraw();
@@ -433,6 +448,7 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
     fn turn_to(&self, preset: Preset) {
         let mut camera = self.camera.get();
         camera.set_preset(preset);
+        turn_iso(&mut camera, preset, self.iso_azimuth);
         self.camera.set(camera);
         self.preset.set(Some(preset));
         self.show_preset();

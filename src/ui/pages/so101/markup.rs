@@ -1,6 +1,6 @@
-//! The page's markup: heading, introduction and disclaimer, the storage warning, the module
-//! bar and the device choice, the world view's slot (the gamepad offer and the episode's
-//! outcome over it) beside the wrist camera, the arm's buttons, the failure review, the
+//! The page's markup: heading and introduction, the storage warning, the world view's slot
+//! (the gamepad offer and the episode's outcome over it) beside the wrist camera, the arm's
+//! buttons, the failure review, the disclaimer, the module bar and the device choice, the
 //! readouts and the orientation sentence, the label panel, the episodes with their downloads,
 //! the file opener and the summary, the repeatability table, the settings and the key map.
 //! Every text is a Fluent id (`data-i18n`), filled by the shell.
@@ -221,9 +221,9 @@ pub fn page() -> String {
     format!(
         "<div class=\"so101-page\"><h1 data-i18n=\"so101-title\"></h1>\
          <p class=\"so101-lede\" data-i18n=\"so101-lede\"></p>\
-         <p class=\"so101-disclaimer\" data-i18n=\"teleop-disclaimer\"></p>\
          <p class=\"so101-notice\" data-so101=\"restored\" data-i18n=\"teleop-restored\" hidden></p>\
-         {storage}{modules}{views}\
+         {storage}{views}\
+         <p class=\"so101-disclaimer\" data-i18n=\"teleop-disclaimer\"></p>{modules}\
          <section class=\"so101-readouts\"><h2 data-i18n=\"teleop-readouts-title\"></h2>{ro}\
          <p class=\"so101-why\" data-so101=\"orientation-why\" data-i18n=\"so101-orientation-why\"></p>\
          <p class=\"so101-why\" data-so101=\"grasp-rule\" data-i18n=\"so101-grasp-rule\"></p></section>\

@@ -28,7 +28,7 @@ use crate::view::camera3d::{Camera, Preset};
 use crate::view::scene3d::{AxisPalette, Scene};
 use crate::view::so101::{
     deg, ground, handle_at, joint_text, mm, ring_grips, world, wrist, wrist_view, Handle, Look,
-    VIEW_RADIUS, VIEW_TARGET,
+    VIEW_AZIMUTH, VIEW_RADIUS, VIEW_TARGET,
 };
 
 /// The state the views draw: the practice and the devices (the gizmo held).
@@ -227,6 +227,7 @@ impl Views {
             VIEW_RADIUS,
         );
         options.preset = Preset::Iso;
+        options.iso_azimuth = VIEW_AZIMUTH;
         options.stage_class = "so101-stage";
         // The table and the goal below, the rest above.
         options.layers = 2;
