@@ -480,11 +480,12 @@ test('the drills menu groups the drill pages, closes on Escape, outside and navi
       assert.equal(await page.evaluate(() => document.activeElement?.dataset.testid), 'nav-menu-button');
       await button.click();
       await page.mouse.click(5, viewport.height - 5);
-      assert.equal(await menu.isVisible(), false);
+      await menu.waitFor({ state: 'hidden', timeout: 2000 });
       await button.click();
       await page.click('[data-testid="nav-rrt-2d"]');
       await page.waitForFunction(() => location.hash.startsWith('#/rrt-2d'));
-      assert.equal(await menu.isVisible(), false);
+      // The menu closes with the navigation (the route change may land a task later).
+      await menu.waitFor({ state: 'hidden', timeout: 2000 });
       assert.match(await button.getAttribute('class'), /has-current/);
       assert.equal(await page.locator('[data-testid="nav-rrt-2d"]').getAttribute('aria-current'), 'page');
       await page.click('[data-testid="nav-home"]');
