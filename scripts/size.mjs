@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1260 * KB;
+export const CEILING = 1270 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -30,7 +30,7 @@ export function routeBudget(route) {
  * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
   home: 211,
-  'ik-2r': 387,
+  'ik-2r': 294,
   'dh-fk': 321,
   'se3-relative': 324,
   'umeyama-2d': 350,

@@ -42,6 +42,10 @@ ik2r-strip-y = y
 ik2r-strip-w = w
 ik2r-live-summary = Arm at q1 { $q1 }°, q2 { $q2 }°; tip at x { $x } mm, y { $y } mm; manipulability { $w } m².
 
+## The second stage (heatmap, sweep plot, parameters, downloads)
+ik2r-more-loading = Loading the heatmap, the sweep plot, the parameters and the downloads… The arm already works.
+ik2r-more-failed = The heatmap, the sweep plot, the parameters and the downloads could not be loaded: the network is not reachable. The arm and its numbers still work. Check the connection, then try again.
+
 ## Heatmap
 ik2r-heatmap-title = Manipulability over joint space
 ik2r-heatmap-label = Heatmap of |det J| over q1 and q2 from −π to π, with the current pose marked. Arrow keys move the marker.

@@ -22,6 +22,7 @@ await runBench({ table, strict: 'IK2R_BENCH_STRICT' }, async (url) => {
   const app = await openApp(url, '#/ik-2r', { viewport: VIEWPORT });
   const { page } = app;
   await page.waitForSelector('[data-testid="ik-2r-canvas"][data-tip-x]');
+  await page.waitForSelector('[data-testid="ik-2r-heatmap"][data-marker-q1]');
   await nextFrame(page);
   if (!(await page.evaluate(() => typeof window.__ik2rBench === 'object'))) {
     throw new Error('no window.__ik2rBench: serve a dist built with --features bench (make bench)');

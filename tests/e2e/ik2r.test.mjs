@@ -147,6 +147,8 @@ async function marker(page) {
 async function openIk(hash = '#/ik-2r', opts = {}) {
   const app = await openApp(server.url, hash, { viewport: { width: 1920, height: 1080 }, ...opts });
   await app.page.waitForSelector('[data-testid="ik-2r-canvas"][data-tip-x]');
+  // The heatmap, plot, form and downloads (the page's second stage) are in.
+  await app.page.waitForSelector('[data-testid="ik-2r-heatmap"][data-marker-q1]');
   await settle(app.page);
   return app;
 }

@@ -216,6 +216,7 @@ test('the IK heatmap takes the keys a click there stands for: arrows turn q1 and
   const { page, errors, close } = await openApp(server.url, '#/ik-2r?q1=0.3&q2=0.8', { viewport: { width: 1920, height: 1080 } });
   try {
     await page.waitForSelector('[data-testid="ik-2r-canvas"][data-tip-x]');
+    await page.waitForSelector('[data-testid="ik-2r-heatmap"][data-marker-q1]');
     const q = () => page.evaluate(() => ['q1', 'q2'].map((k) => Number(document.querySelector(`[data-readout="${k}"]`).textContent)));
     await page.locator('[data-testid="ik-2r-heatmap"]').focus();
     await page.keyboard.press('ArrowUp');
@@ -283,6 +284,10 @@ test('live summaries are paced while dragging (≤ 8 changes in 2 s) and end on 
         name: 'IK tip drag',
         hash: '#/ik-2r',
         live: 'ik-2r-live',
+        async ready() {
+          // The page's second stage (its form's error lines are live regions) is in.
+          await page.waitForSelector('[data-testid="ik-2r-heatmap"][data-marker-q1]');
+        },
         async drag() {
           await page.waitForSelector('[data-testid="ik-2r-canvas"][data-tip-x]');
           const g = await page.locator('[data-testid="ik-2r-canvas"]').evaluate((c) => {
@@ -338,6 +343,7 @@ test('live summaries are paced while dragging (≤ 8 changes in 2 s) and end on 
     for (const c of cases) {
       await page.goto(`${server.url}/${c.hash}`);
       await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+      await c.ready?.();
       await page.waitForTimeout(300);
       await page.evaluate(watchLive);
       const moves = await c.drag();

@@ -135,6 +135,67 @@ for (const lang of ['en', 'ja']) {
 }
 
 for (const lang of ['en', 'ja']) {
+  test(`the IK page's arm is live before its heatmap, plot and downloads; if their code cannot be fetched, a line says so with Retry (${lang})`, async () => {
+    const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`, { viewport: { width: 1280, height: 900 } });
+    try {
+      const pattern = /\/pkg\/(pack_ik2r_more\.bin|chunks\/split_ik2r_more\.wasm)$/;
+      await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+      await page.evaluate((l) => { location.hash = `#/ik-2r?lang=${l}`; }, lang);
+      await page.reload();
+      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+      const line = page.locator('[data-testid="ik-2r-more"]');
+      await line.and(page.locator('[data-state="failed"]')).waitFor({ timeout: 15000 });
+      assert.match(await line.innerText(), lang === 'en' ? /could not be loaded/ : /読み込めませんでした/);
+      assert.equal(await line.getAttribute('role'), 'alert');
+      assert.equal(await page.locator('[data-testid="ik-2r-heatmap"]').isVisible(), false);
+      assert.equal(await page.locator('[data-testid="ik-2r-plot"]').isVisible(), false);
+      assert.equal(await page.locator('[data-download="ik_workspace.csv"]').count(), 0);
+      // The arm is live meanwhile: dragging the tip moves the readouts.
+      const canvas = page.locator('[data-testid="ik-2r-canvas"][data-tip-x]');
+      await canvas.waitFor();
+      const q1 = await page.locator('[data-readout="q1"]').innerText();
+      const g = await canvas.evaluate((c) => {
+        const r = c.getBoundingClientRect();
+        return { x: r.left + +c.dataset.tipX, y: r.top + +c.dataset.tipY };
+      });
+      await page.mouse.move(g.x, g.y);
+      await page.mouse.down();
+      await page.mouse.move(g.x - 40, g.y + 30, { steps: 5 });
+      await page.mouse.up();
+      await page.waitForFunction((before) => document.querySelector('[data-readout="q1"]').textContent !== before, q1);
+      // Keys too.
+      const q2 = await page.locator('[data-readout="q2"]').innerText();
+      await page.locator('[data-testid="ik-2r-canvas"]').focus();
+      await page.keyboard.press('=');
+      await page.waitForFunction((before) => document.querySelector('[data-readout="q2"]').textContent !== before, q2);
+      await page.setViewportSize({ width: 390, height: 844 });
+      await line.scrollIntoViewIfNeeded();
+      await shoot(page, `ik2r-more-failed-${lang}-390`, { width: 390, height: 844 });
+      // Still unreachable: Retry fails again, visibly.
+      await line.locator('[data-action="retry"]').click();
+      await line.and(page.locator('[data-state="failed"]')).waitFor({ timeout: 15000 });
+      // Reachable again: Retry brings the heatmap, the plot, the form and the downloads,
+      // drawn from the pose as it is now.
+      await context.unroute(pattern);
+      await line.locator('[data-action="retry"]').click();
+      await line.waitFor({ state: 'detached', timeout: 15000 });
+      const heatmap = page.locator('[data-testid="ik-2r-heatmap"][data-marker-q1]');
+      await heatmap.waitFor({ timeout: 15000 });
+      const shown = Number(await page.locator('[data-readout="q1"]').innerText());
+      assert.ok(Math.abs(Number(await heatmap.getAttribute('data-marker-q1')) - shown) < 1e-5, 'the marker is at the pose');
+      assert.ok(await page.locator('[data-testid="ik-2r-plot"]').isVisible());
+      assert.ok(await page.locator('[data-ik2r="form"] input').first().isVisible());
+      for (const file of ['ik_workspace.csv', 'jacobian_2r.csv', 'manip_ellipse.csv']) {
+        assert.ok(await page.locator(`[data-download="${file}"]`).isVisible(), file);
+      }
+      assert.deepEqual(appErrors(errors), []);
+    } finally {
+      await close();
+    }
+  });
+}
+
+for (const lang of ['en', 'ja']) {
   test(`"+ Lesson" says so when its code cannot be fetched, and adds the view once it can (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/pid-step?Kp=2&lang=${lang}`);
     try {

@@ -23,7 +23,8 @@ use web_sys::{
 };
 
 use super::markup::role;
-use super::workspace::{self, WorkspaceImage};
+use super::panels::Panels;
+use super::workspace::WorkspaceImage;
 use crate::planar2r::{Arm, Elbow, PoseReport};
 use crate::recipes::ik_workspace::{Workspace, WorkspaceParams};
 use crate::ui::ctx::{self, t_strings};
@@ -147,10 +148,6 @@ impl ArmView {
             ws_color: role(root, "ws-color")?,
             reset: role(root, "reset")?,
         })
-    }
-
-    pub fn stage(&self) -> Element {
-        self.stage.clone()
     }
 
     /// The drag and the toolbar's listeners, reporting to `host`.
@@ -319,15 +316,16 @@ impl ArmView {
         self.ws = None;
     }
 
-    /// Recomputes the workspace grid if its parameters changed, then the overlay; returns
-    /// how long the grid's computation (`ik_workspace::compute`) took, ms, if it ran.
-    pub fn recompute_workspace(&mut self, st: &State) -> Option<f64> {
+    /// Recomputes the workspace grid (with the second stage's kernel, `panels`) if its
+    /// parameters changed, then the overlay; returns how long the grid's computation
+    /// (`ik_workspace::compute`) took, ms, if it ran.
+    pub fn recompute_workspace(&mut self, st: &State, panels: &dyn Panels) -> Option<f64> {
         let wp = st.params.workspace();
         let stale = self.ws.as_ref().is_none_or(|(p, _)| *p != wp);
         let mut compute_ms = None;
         if stale {
             let t0 = now_ms();
-            match crate::recipes::ik_workspace::compute(&wp) {
+            match panels.workspace_grid(&wp) {
                 Ok(ws) => {
                     compute_ms = Some(now_ms() - t0);
                     self.ws = Some((wp, ws));
@@ -339,19 +337,20 @@ impl ArmView {
                 }
             }
         }
-        self.refresh_workspace_image(st);
+        self.refresh_workspace_image(st, panels);
         compute_ms
     }
 
     /// Re-renders the overlay from the cached grid (a colour change needs no recompute).
-    pub fn refresh_workspace_image(&mut self, st: &State) {
+    pub fn refresh_workspace_image(&mut self, st: &State, panels: &dyn Panels) {
         let Some((wp, ws)) = self.ws.as_ref() else {
             return;
         };
         if self.ws_img_colour == Some(st.ws_color) && self.ws_img.is_some() {
             return;
         }
-        match workspace::render(ws, st.ws_color, wp.l1, wp.l2, &self.lut, self.ws_img.take()) {
+        let previous = self.ws_img.take();
+        match panels.workspace_image(ws, st.ws_color, wp.l1, wp.l2, &self.lut, previous) {
             Ok(img) => {
                 self.ws_img = Some(img);
                 self.ws_img_colour = Some(st.ws_color);

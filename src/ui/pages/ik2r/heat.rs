@@ -63,10 +63,6 @@ impl HeatPanel {
         })
     }
 
-    pub fn stage(&self) -> Element {
-        self.stage.clone()
-    }
-
     /// Whether `target` (a key's) is the heatmap's focusable canvas.
     pub fn is_canvas(&self, target: Option<web_sys::EventTarget>) -> bool {
         let canvas: &web_sys::EventTarget = self.top.as_ref();

@@ -11,14 +11,20 @@ use super::explain;
 use crate::ui::dom;
 use crate::ui::kit::readouts::live_markup;
 
+/// The parts of the page the second stage (`super::panels`) fills: hidden until it has.
+pub const LATER_SELECTOR: &str = ".ik2r-later";
+
 /// The element `[data-ik2r="name"]` of the page.
 pub fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
     dom::find(root, &format!("[data-ik2r=\"{name}\"]"), "ik-2r")
 }
 
 /// The whole page, with the components' own markup: the readouts card and the phone strip
-/// (`readouts`, `strip`) and the downloads panel (`downloads`).
-pub fn page(readouts: &str, strip: &str, downloads: &str) -> String {
+/// (`readouts`, `strip`). The heatmap, the sweep plot and the form are hidden
+/// ([`LATER_SELECTOR`]) until the second stage fills them, and the downloads panel is its
+/// (`[data-ik2r="downloads"]` is where it goes: its markup names the recipes' kernels); the
+/// line `[data-ik2r="more"]` stands in for them meanwhile.
+pub fn page(readouts: &str, strip: &str) -> String {
     format!(
         "<div class=\"ik2r\" data-testid=\"ik-2r-page\">\
 <header class=\"ik2r-head\"><h1 data-i18n=\"ik2r-title\"></h1><p class=\"ik2r-lede\" data-i18n=\"ik2r-lede\"></p>\
@@ -50,15 +56,16 @@ data-i18n-attr=\"aria-label=ik2r-canvas-label\" aria-describedby=\"ik2r-readouts
 <p class=\"ik2r-hint\" data-ik2r=\"ws-summary\" hidden></p>\
 </section>\
 <div class=\"ik2r-side\">{readouts}\
-<section class=\"ik2r-card ik2r-heat\"><h2 data-i18n=\"ik2r-heatmap-title\"></h2>\
+<section class=\"ik2r-card ik2r-heat ik2r-later\" hidden><h2 data-i18n=\"ik2r-heatmap-title\"></h2>\
 <div class=\"ik2r-stage ik2r-stage-heat\" data-ik2r=\"heat-stage\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"heat-bg\" aria-hidden=\"true\"></canvas>\
 <canvas class=\"ik2r-layer ik2r-interactive\" data-ik2r=\"heat-fg\" data-testid=\"ik-2r-heatmap\" role=\"img\" tabindex=\"0\" \
 data-i18n-attr=\"aria-label=ik2r-heatmap-label\" aria-describedby=\"ik2r-heat-hint ik2r-readouts-list\"></canvas></div>\
 <p class=\"ik2r-hover\" data-ik2r=\"heat-hover\" data-testid=\"ik-2r-heatmap-hover\"></p>\
 <p class=\"ik2r-hint\" id=\"ik2r-heat-hint\" data-i18n=\"ik2r-heatmap-hint\"></p></section>\
+<p class=\"ik2r-more\" data-ik2r=\"more\" data-testid=\"ik-2r-more\"></p>\
 </div></div>\
-<div class=\"ik2r-mid\">\
+<div class=\"ik2r-mid ik2r-later\" hidden>\
 <section class=\"ik2r-card ik2r-plots\"><h2 data-i18n=\"ik2r-plot-title\"></h2>\
 <p class=\"ik2r-hint\" id=\"ik2r-plot-hint\" data-i18n=\"ik2r-plot-hint\"></p>\
 <div class=\"ik2r-stage ik2r-stage-plot\" data-ik2r=\"plot-stage\">\
@@ -70,7 +77,7 @@ data-i18n-attr=\"aria-label=ik2r-plot-label\" aria-describedby=\"ik2r-plot-hint 
 <p class=\"ik2r-hint\" data-i18n=\"ik2r-params-hint\"></p>\
 <form class=\"ik2r-form\" data-ik2r=\"form\" novalidate></form></section>\
 </div>\
-{downloads}\
+<div class=\"ik2r-later\" data-ik2r=\"downloads\" hidden></div>\
 {explain}\
 </div>",
         live = live_markup("ik-2r"),

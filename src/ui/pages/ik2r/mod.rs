@@ -13,6 +13,13 @@
 //! `bench`), own their elements, drawing and `relocalize`, and report input to the page through
 //! their host traits or callbacks; this file holds the state ([`State`]) and redraws what each
 //! change made dirty, once per animation frame.
+//!
+//! The page comes in two stages. The first (the page's chunk) is what makes it live: the
+//! markup, the arm view, the readouts, the keys, the state and its URL, the frame loop. The
+//! second (`panels`, a chunk of its own fetched as soon as the first is mounted: the heatmap,
+//! the sweep plot, the form, the downloads, the workspace grid's kernel) is reached only
+//! through [`panels::Panels`]; until it is in, a line stands in for it (`panels_status`) and
+//! everything else works without it. Once in, it draws from the state as it is then.
 
 mod arm;
 mod bench;
@@ -21,6 +28,8 @@ mod exports;
 mod heat;
 mod keys;
 mod markup;
+mod panels;
+mod panels_status;
 mod params;
 mod readouts;
 mod sweep;
@@ -36,8 +45,8 @@ pub(crate) use self::arm::colour as arm_colour;
 use self::arm::{ArmControl, ArmHost};
 #[cfg(feature = "bench")]
 use self::bench::BenchHost;
-use self::heat::HeatHost;
 use self::keys::KeyAction;
+use self::panels::Panels;
 use crate::planar2r::{wrap_angle, Elbow};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
@@ -72,11 +81,9 @@ pub(crate) struct Page {
     url_notice: UrlNotice,
     url: UrlWriter,
     arm: RefCell<arm::ArmView>,
-    heat: RefCell<heat::HeatPanel>,
-    sweep: RefCell<sweep::SweepPlot>,
-    params: RefCell<params::ParamsForm>,
     readouts: RefCell<readouts::Readouts>,
-    exports: RefCell<exports::Exports>,
+    /// The second stage (heatmap, sweep plot, form, downloads), once its chunk is in.
+    panels: RefCell<Option<Rc<dyn Panels>>>,
     /// The page's frame loop (its scope's).
     frames: FrameLoop,
     /// Listeners, timers, the frame loop and the resize observer; dropped on unmount.
@@ -93,20 +100,11 @@ fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
     root.set_inner_html(&markup::page(
         &readouts::markup(),
         &readouts::strip_markup(),
-        &exports::markup(),
     ));
     let (state, ignored) = State::read(&ctx.query);
     let url_notice = UrlNotice::new(markup::role(&root, "url-notice")?, ignored)?;
-    let (arm, heat, sweep) = (
-        arm::ArmView::find(&root)?,
-        heat::HeatPanel::find(&root)?,
-        sweep::SweepPlot::find(&root)?,
-    );
-    let (params, readouts, exports) = (
-        params::ParamsForm::build(&root, &state.params)?,
-        readouts::Readouts::find(&root)?,
-        exports::Exports::find(&root)?,
-    );
+    let (arm, readouts) = (arm::ArmView::find(&root)?, readouts::Readouts::find(&root)?);
+    let more: Element = markup::role(&root, "more")?;
     let page = Rc::new_cyclic(|weak: &Weak<Page>| {
         let mut scope = Scope::new();
         Page {
@@ -118,11 +116,8 @@ fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
             scope: RefCell::new(scope),
             url_notice,
             arm: RefCell::new(arm),
-            heat: RefCell::new(heat),
-            sweep: RefCell::new(sweep),
-            params: RefCell::new(params),
             readouts: RefCell::new(readouts),
-            exports: RefCell::new(exports),
+            panels: RefCell::new(None),
             root,
             state: RefCell::new(state),
             ghost: RefCell::new(None),
@@ -133,48 +128,26 @@ fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
     page.install(&Rc::downgrade(&page))?;
     page.arm.borrow().sync_controls(&state);
     page.relocalize_texts();
-    page.recompute_heatmap();
-    if state.show_ws {
-        page.recompute_workspace();
-    }
-    page.exports.borrow().update_commands(&state);
     page.invalidate(dirty::ALL);
+    panels_status::show_loading(&more)?;
+    panels_status::load(Rc::downgrade(&page), more);
     Ok(page)
 }
 
 impl Page {
-    /// Wires the resize observer, the components' listeners and bench hooks.
+    /// Wires the resize observer (the arm's stage and those the second stage fills), the
+    /// arm's listeners and bench hooks.
     fn install(&self, weak: &Weak<Page>) -> Result<(), JsValue> {
-        let stages = [
-            self.arm.borrow().stage(),
-            self.heat.borrow().stage(),
-            self.sweep.borrow().stage(),
-        ];
+        let stages: Vec<Element> = ["arm-stage", "heat-stage", "plot-stage"]
+            .into_iter()
+            .map(|name| markup::role(&self.root, name))
+            .collect::<Result<_, _>>()?;
         let mut scope = self.scope.borrow_mut();
         scope.observe_resize(&stages.iter().collect::<Vec<_>>(), weak, |p: &Page| {
             p.invalidate(dirty::ALL)
         })?;
         let mut listeners = Vec::new();
         self.arm.borrow_mut().attach(weak, &mut listeners)?;
-        self.heat.borrow_mut().attach(weak)?;
-        self.params
-            .borrow()
-            .attach(weak, &mut scope, |p: &Page, target| {
-                let old = p.state.borrow().params;
-                let next = p.params.borrow_mut().on_input(target, old);
-                p.apply_params(old, next);
-            })?;
-        self.exports.borrow().attach(
-            weak,
-            &mut scope,
-            |p: &Page, file| {
-                let st = *p.state.borrow();
-                p.exports
-                    .borrow()
-                    .download(file, &st, || p.arm.borrow().flatten());
-            },
-            |p: &Page, key| p.exports.borrow().copy(key),
-        )?;
         for l in listeners {
             scope.keep(l);
         }
@@ -185,8 +158,28 @@ impl Page {
     fn unmount(&self) {
         drop(std::mem::take(&mut *self.scope.borrow_mut()));
         self.arm.borrow_mut().detach();
-        self.heat.borrow_mut().detach();
+        if let Some(panels) = self.panels() {
+            panels.detach();
+        }
         bench::remove_hooks();
+    }
+
+    /// The second stage, if it is in.
+    fn panels(&self) -> Option<Rc<dyn Panels>> {
+        self.panels.borrow().clone()
+    }
+
+    /// The second stage is in (built into the page's markup): it draws from the state now.
+    fn panels_arrived(&self, panels: Rc<dyn Panels>) {
+        *self.panels.borrow_mut() = Some(panels.clone());
+        let st = *self.state.borrow();
+        panels.relocalize(&st, *self.ghost.borrow());
+        panels.update_commands(&st);
+        self.recompute_heatmap();
+        if st.show_ws {
+            self.recompute_workspace();
+        }
+        self.invalidate(dirty::ALL);
     }
 
     /// Marks parts dirty for the next animation frame.
@@ -198,29 +191,32 @@ impl Page {
     fn frame(&self, bits: u32) {
         let st = *self.state.borrow();
         let ink = Ink::current();
+        let panels = self.panels();
         if bits & dirty::LAYOUT != 0 {
             self.readouts.borrow_mut().layout();
             self.arm.borrow_mut().layout(&st);
-            self.heat.borrow_mut().layout(ink);
-            self.sweep.borrow_mut().resized();
+            if let Some(panels) = &panels {
+                panels.layout(ink);
+            }
         }
         if bits & dirty::ARM_BG != 0 {
             self.arm.borrow().draw_background(&st, ink);
         }
-        if bits & dirty::HEAT_BG != 0 {
-            self.heat.borrow().draw_background(ink);
+        if let (true, Some(panels)) = (bits & dirty::HEAT_BG != 0, &panels) {
+            panels.draw_heat_background(ink);
         }
-        if bits & dirty::PLOT_AXES != 0 {
-            self.sweep.borrow_mut().set_axes(&st.params);
+        if let (true, Some(panels)) = (bits & dirty::PLOT_AXES != 0, &panels) {
+            panels.set_plot_axes(&st.params);
         }
         if bits & dirty::FRAME != 0 {
             let t0 = now_ms();
             self.draw_frame();
             self.timings.push("frame", now_ms() - t0);
         }
-        if bits & (dirty::PLOT_DATA | dirty::PLOT_AXES | dirty::LAYOUT) != 0 {
+        let plot = dirty::PLOT_DATA | dirty::PLOT_AXES | dirty::LAYOUT;
+        if let (true, Some(panels)) = (bits & plot != 0, &panels) {
             let t0 = now_ms();
-            self.sweep.borrow_mut().draw(&st, ink);
+            panels.draw_plot(&st, ink);
             self.timings.push("plot", now_ms() - t0);
         }
     }
@@ -240,15 +236,17 @@ impl Page {
             arm.clamp_shown()
         };
         self.readouts.borrow_mut().update(&report, pinned);
-        self.heat.borrow().draw_marker(&st, ghost, ink, !dragging);
-        if !dragging {
-            self.exports.borrow().update_commands(&st);
+        if let Some(panels) = self.panels() {
+            panels.draw_marker(&st, ghost, ink, !dragging);
+            if !dragging {
+                panels.update_commands(&st);
+            }
         }
     }
 
     /// Whether a pointer drags the arm or the heatmap marker.
     fn dragging(&self) -> bool {
-        self.arm.borrow().dragging() || self.heat.borrow().dragging()
+        self.arm.borrow().dragging() || self.panels().is_some_and(|p| p.dragging())
     }
 
     /// Texts the page formats itself, in the current language.
@@ -256,15 +254,12 @@ impl Page {
         self.url_notice.relocalize();
         let st = *self.state.borrow();
         self.arm.borrow().relocalize(&st);
-        self.heat
-            .borrow()
-            .relocalize(&st.params, *self.ghost.borrow());
-        self.params.borrow().relocalize();
         let report = st.params.arm().report(st.q1, st.q2);
         let pinned = self.arm.borrow().clamp_shown();
         self.readouts.borrow().relocalize(&report, pinned);
-        self.exports.borrow().relocalize();
-        self.sweep.borrow_mut().relocalize(&st.params);
+        if let Some(panels) = self.panels() {
+            panels.relocalize(&st, *self.ghost.borrow());
+        }
     }
 
     fn relocalize(&self) {
@@ -336,7 +331,7 @@ impl Page {
 
     /// Whether a key's `target` is the heatmap (its arrows turn the joints).
     fn is_heatmap(&self, target: Option<web_sys::EventTarget>) -> bool {
-        self.heat.try_borrow().is_ok_and(|h| h.is_canvas(target))
+        self.panels().is_some_and(|p| p.is_heatmap(target))
     }
 
     /// One key; `true` when it was the page's.
@@ -403,7 +398,11 @@ impl Page {
     fn set_ws_colour(&self, colour: WsColor) {
         self.state.borrow_mut().ws_color = colour;
         let st = *self.state.borrow();
-        self.arm.borrow_mut().refresh_workspace_image(&st);
+        if let Some(panels) = self.panels() {
+            self.arm
+                .borrow_mut()
+                .refresh_workspace_image(&st, panels.as_ref());
+        }
         self.invalidate(dirty::ARM_BG);
         self.schedule_url();
     }
@@ -437,7 +436,9 @@ impl Page {
         }
         let st = *self.state.borrow();
         self.arm.borrow().relocalize(&st);
-        self.exports.borrow().update_commands(&st);
+        if let Some(panels) = self.panels() {
+            panels.update_commands(&st);
+        }
         self.invalidate(bits);
         self.schedule_url();
     }
@@ -455,30 +456,43 @@ impl Page {
             arm.forget_workspace();
             arm.sync_controls(&st);
         }
-        self.params.borrow_mut().fill(&st.params);
+        if let Some(panels) = self.panels() {
+            panels.fill_params(&st.params);
+            panels.update_commands(&st);
+        }
         if old != st.params {
             self.heat_timer.schedule(0);
         }
         self.relocalize_texts();
-        self.exports.borrow().update_commands(&st);
         self.invalidate(dirty::ALL);
         self.write_url();
     }
 
     /// Recomputes and paints the heatmap for the current L1, L2 and resolution.
     fn recompute_heatmap(&self) {
+        let Some(panels) = self.panels() else {
+            return;
+        };
         let p = self.state.borrow().params;
         let t0 = now_ms();
-        if self.heat.borrow_mut().recompute(&p.arm(), p.heatmap_n) {
+        if panels.recompute_heatmap(&p.arm(), p.heatmap_n) {
             self.timings.push("heatmap", now_ms() - t0);
         }
         self.invalidate(dirty::HEAT_BG | dirty::FRAME);
     }
 
-    /// Recomputes the workspace grid when its parameters changed, then its overlay.
+    /// Recomputes the workspace grid when its parameters changed, then its overlay (its
+    /// kernel is the second stage's: without it the grid waits).
     fn recompute_workspace(&self) {
+        let Some(panels) = self.panels() else {
+            return;
+        };
         let st = *self.state.borrow();
-        if let Some(ms) = self.arm.borrow_mut().recompute_workspace(&st) {
+        let computed = self
+            .arm
+            .borrow_mut()
+            .recompute_workspace(&st, panels.as_ref());
+        if let Some(ms) = computed {
             self.timings.push("workspace", ms);
         }
         self.arm.borrow().relocalize(&st);
@@ -538,42 +552,14 @@ impl Page {
         }
     }
 
-    /// A drag, tap or hover on the heatmap.
-    fn on_heat(&self, ev: DragEvent<()>) {
-        let at = match ev {
-            DragEvent::Start { at, .. } | DragEvent::Move { at, .. } | DragEvent::Tap { at } => at,
-            DragEvent::End { .. } => {
-                self.invalidate(dirty::FRAME);
-                self.write_url();
-                return;
-            }
-            DragEvent::Hover(at) => {
-                let ghost = self.heat.borrow().pose_at(at);
-                self.set_ghost(ghost);
-                return;
-            }
-            DragEvent::Leave => {
-                self.set_ghost(None);
-                return;
-            }
-        };
-        self.set_ghost(None);
-        let cell = self.heat.borrow().pose_at(at);
-        if let Some((q1, q2)) = cell {
-            self.set_pose(q1, q2);
-        }
-        if matches!(ev, DragEvent::Tap { .. }) {
-            self.write_url();
-        }
+    /// A drag on the heatmap ended.
+    fn end_heat_drag(&self) {
+        self.invalidate(dirty::FRAME);
+        self.write_url();
     }
 
-    fn set_ghost(&self, ghost: Option<(f64, f64)>) {
-        if *self.ghost.borrow() == ghost {
-            return;
-        }
-        *self.ghost.borrow_mut() = ghost;
-        let p = self.state.borrow().params;
-        self.heat.borrow().relocalize(&p, ghost);
+    /// Something the drag frame shows changed (the heatmap's ghost pose).
+    fn frame_changed(&self) {
         self.invalidate(dirty::FRAME);
     }
 }
@@ -624,17 +610,6 @@ impl ArmHost for Page {
     }
 }
 
-impl HeatHost for Page {
-    fn heat_grab(&self, at: glam::DVec2, kind: PointerKind) -> Option<()> {
-        let st = *self.state.borrow();
-        self.heat.borrow().grabs(&st, at, kind)
-    }
-
-    fn on_heat(&self, ev: DragEvent<()>) {
-        Page::on_heat(self, ev);
-    }
-}
-
 #[cfg(feature = "bench")]
 impl BenchHost for Page {
     fn bench_frame(&self, x: f64, y: f64) {
@@ -644,15 +619,20 @@ impl BenchHost for Page {
 
     fn bench_plot(&self) {
         let st = *self.state.borrow();
-        self.sweep.borrow_mut().draw(&st, Ink::current());
+        if let Some(panels) = self.panels() {
+            panels.draw_plot(&st, Ink::current());
+        }
     }
 
     fn bench_heatmap(&self, n: usize) -> bool {
         let arm = self.state.borrow().params.arm();
-        if !self.heat.borrow_mut().recompute(&arm, n) {
+        let Some(panels) = self.panels() else {
+            return false;
+        };
+        if !panels.recompute_heatmap(&arm, n) {
             return false;
         }
-        self.heat.borrow().draw_background(Ink::current());
+        panels.draw_heat_background(Ink::current());
         // Back to the page's own resolution afterwards.
         self.heat_timer.schedule(50);
         self.invalidate(dirty::FRAME);

@@ -26,7 +26,6 @@ const C_NOW: (u8, u8, u8) = palette::VERMILION.rgb;
 /// The sweep plot component.
 pub(super) struct SweepPlot {
     plot: Plot,
-    stage: Element,
     /// The (params, q2) the plotted series were computed for.
     key: Option<(Params, f64)>,
 }
@@ -48,13 +47,8 @@ impl SweepPlot {
         let stage: Element = role(root, "plot-stage")?;
         Ok(SweepPlot {
             plot: Plot::new(&stage)?,
-            stage,
             key: None,
         })
-    }
-
-    pub fn stage(&self) -> Element {
-        self.stage.clone()
     }
 
     /// The canvases changed size.
