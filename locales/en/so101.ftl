@@ -43,3 +43,4 @@ so101-live-pose = Tool at x { $x } mm, y { $y } mm, z { $z } mm; gripper { $grip
 so101-review-empty = No episode to replay yet: record one in Record ten (or open a saved session), then review it here step by step.
 so101-open-note = To continue or review a saved session, choose its files together: teleop_session_evidence.json, so101_episodes.csv and every so101_episode_<n>.csv.
 so101-grasp-rule = Grasp rule: closing the gripper holds the cube only when the tool frame is within 2 cm of the cube's centre and the jaws close square to it (within 25° of a face); any other close is a missed grasp. Turn the tool with C/V (yaw) to line the jaws up with the cube's sides; the wrist camera turns with the wrist.
+so101-files-unloaded = The part of this page that writes and reads session files could not be loaded (offline, or the server did not answer). Your session is kept; check the connection, then download or open again.

@@ -196,6 +196,44 @@ for (const lang of ['en', 'ja']) {
 }
 
 for (const lang of ['en', 'ja']) {
+  test(`the SO-101 arm flies before the session files' code is here; a download says so if it cannot be fetched, and works once it can (${lang})`, async () => {
+    const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`, { viewport: { width: 1280, height: 900 } });
+    try {
+      const pattern = /\/pkg\/(pack_so101_files\.bin|chunks\/split_so101_files\.wasm)$/;
+      await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+      await page.evaluate((l) => { location.hash = `#/so101?lang=${l}`; }, lang);
+      await page.reload();
+      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+      const canvas = page.locator('[data-testid="so101-canvas"]');
+      await canvas.waitFor();
+      const error = page.locator('[data-so101="open-error"]');
+      // Nothing is said before the pilot asks for a file.
+      await page.waitForTimeout(500);
+      assert.equal(await error.isVisible(), false);
+      // The arm flies meanwhile.
+      const x = await page.locator('[data-readout="x"]').getAttribute('data-value');
+      await canvas.focus();
+      await page.keyboard.down('w');
+      await page.waitForFunction((before) => document.querySelector('[data-readout="x"]').dataset.value !== before, x);
+      await page.keyboard.up('w');
+      const button = page.locator('[data-download="so101_episodes.csv"]');
+      await button.click();
+      await error.waitFor({ state: 'visible', timeout: 15000 });
+      assert.match(await error.innerText(), lang === 'en' ? /could not be loaded/ : /読み込めませんでした/);
+      assert.equal(await error.getAttribute('role'), 'alert');
+      // Reachable again: the same button downloads the file and the line goes.
+      await context.unroute(pattern);
+      const [file] = await Promise.all([page.waitForEvent('download'), button.click()]);
+      assert.equal(file.suggestedFilename(), 'so101_episodes.csv');
+      await error.waitFor({ state: 'hidden', timeout: 15000 });
+      assert.deepEqual(appErrors(errors), []);
+    } finally {
+      await close();
+    }
+  });
+}
+
+for (const lang of ['en', 'ja']) {
   test(`"+ Lesson" says so when its code cannot be fetched, and adds the view once it can (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/pid-step?Kp=2&lang=${lang}`);
     try {

@@ -4,7 +4,8 @@
 //! episodes, replay, the repeatability summary, the Academy's evidence file). A practice
 //! simulator: not a safety-rated controller, and not NVIDIA software.
 //!
-//! Components, one file each: `markup`, `devices` (keys, gamepad, gizmo clutch), `practice`
+//! Components, one file each: `markup`, `devices` (keys, gamepad, gizmo clutch), `files` (the
+//! session's files, written and read back: a wasm chunk of their own), `practice`
 //! (the session, the first session and the episode being recorded), `session_view` (modules,
 //! label panel, episodes table, summary, repeatability table, storage warning) and `views`
 //! (the kit's orbit view of the world and the wrist camera), with the kit's failure review
@@ -14,6 +15,7 @@
 //! session in memory, said by the storage warning).
 
 mod devices;
+mod files;
 mod markup;
 mod practice;
 mod session_view;
@@ -89,6 +91,8 @@ struct Inner {
     first_loader: RefCell<Option<SessionLoader<Episode>>>,
     load_timer: RefCell<Option<Rc<crate::ui::schedule::Timer>>>,
     restored: Element,
+    /// Writing and reading the session's files, once their chunk is here.
+    files: Cell<Option<files::Files>>,
 }
 
 /// Steps simulated again per slice of the load (a few ms of work).
@@ -188,6 +192,7 @@ impl Page for So101Page {
             first_loader: RefCell::new(first_loader),
             load_timer: RefCell::new(None),
             restored,
+            files: Cell::new(None),
         });
         let me = inner.me.clone();
         let views = Views::new(&root, &shared, move |e, tool| {
@@ -204,6 +209,9 @@ impl Page for So101Page {
         if inner.loader.borrow().is_none() {
             inner.show_module();
         }
+        // Fetched now, so that a download need not wait; a failure is said only when the
+        // pilot asks for a file.
+        inner.with_files(false, |_, _| {});
         Ok(So101Page(inner))
     }
 
@@ -533,9 +541,49 @@ impl Inner {
         crate::ui::router::replace_query(&texts);
     }
 
+    /// Runs `then` with the files' functions: at once if their chunk is here, else once it
+    /// has come (if the page is still open); if it cannot be fetched and `say` is set, the
+    /// opener's error line says so. A later download or open tries again.
+    fn with_files(&self, say: bool, then: impl FnOnce(&Inner, files::Files) + 'static) {
+        if let Some(f) = self.files.get() {
+            then(self, f);
+            return;
+        }
+        let me = self.me.clone();
+        wasm_bindgen_futures::spawn_local(async move {
+            let loaded = files::load().await;
+            let Some(p) = me.upgrade() else {
+                return;
+            };
+            match loaded {
+                Ok(f) => {
+                    p.files.set(Some(f));
+                    if matches!(
+                        *p.session.open_problem.borrow(),
+                        Some(OpenProblem::Unloaded)
+                    ) {
+                        *p.session.open_problem.borrow_mut() = None;
+                        p.show_all();
+                    }
+                    then(&p, f);
+                }
+                Err(_) if say => {
+                    *p.session.open_problem.borrow_mut() = Some(OpenProblem::Unloaded);
+                    p.show_all();
+                }
+                Err(_) => {}
+            }
+        });
+    }
+
     /// Downloads `file` of the session (or, for [`EPISODE_CSVS`], every episode's CSV).
     fn download(&self, file: &str) {
-        let files = self.practice.borrow().session.files(&iso_now());
+        let file = file.to_string();
+        self.with_files(true, move |p, f| p.download_with(f, &file));
+    }
+
+    fn download_with(&self, f: files::Files, file: &str) {
+        let files = (f.write)(&self.practice.borrow().session, &iso_now());
         let every = file == EPISODE_CSVS;
         let episodes: Vec<String> = if every {
             let p = self.practice.borrow();
@@ -607,23 +655,30 @@ impl Inner {
     /// as it was and says what is wrong.
     fn files_read(&self, files: &[(String, String)], unreadable: Option<String>) {
         clear_files(&self.session.open);
-        let problem = match unreadable {
-            Some(name) => Some(OpenProblem::Unreadable(name)),
-            None => match Session::<Episode>::from_files(files) {
-                Ok(session) => {
-                    self.review.stop();
-                    let mut p = self.practice.borrow_mut();
-                    p.replay = None;
-                    p.replace(session);
-                    drop(p);
-                    self.save_first();
-                    self.session.status_id.set(Some("teleop-opened"));
-                    self.enter_module(Module::FailureReview);
-                    self.save();
-                    None
-                }
-                Err(e) => Some(OpenProblem::Session(e)),
-            },
+        if let Some(name) = unreadable {
+            *self.session.open_problem.borrow_mut() = Some(OpenProblem::Unreadable(name));
+            self.show_all();
+            return;
+        }
+        let files = files.to_vec();
+        self.with_files(true, move |p, f| p.session_read(f, &files));
+    }
+
+    fn session_read(&self, f: files::Files, files: &[(String, String)]) {
+        let problem = match (f.read)(files) {
+            Ok(session) => {
+                self.review.stop();
+                let mut p = self.practice.borrow_mut();
+                p.replay = None;
+                p.replace(session);
+                drop(p);
+                self.save_first();
+                self.session.status_id.set(Some("teleop-opened"));
+                self.enter_module(Module::FailureReview);
+                self.save();
+                None
+            }
+            Err(e) => Some(OpenProblem::Session(e)),
         };
         *self.session.open_problem.borrow_mut() = problem;
         self.show_all();

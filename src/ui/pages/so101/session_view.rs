@@ -53,6 +53,8 @@ pub enum OpenProblem {
     Unreadable(String),
     /// The files do not make a session.
     Session(SessionError),
+    /// The part of the page that writes and reads the files could not be fetched.
+    Unloaded,
 }
 
 fn find<T: wasm_bindgen::JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
@@ -140,6 +142,7 @@ impl SessionView {
                 ctx::t_strings("teleop-open-unreadable", &[("name", name.clone())])
             }
             OpenProblem::Session(e) => open_error_text(e, &Episode::episodes_name()),
+            OpenProblem::Unloaded => ctx::t("so101-files-unloaded"),
         });
         self.open_error
             .set_text_content(Some(text.as_deref().unwrap_or("")));

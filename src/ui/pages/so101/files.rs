@@ -1,0 +1,38 @@
+//! The session's files, written (the Academy's evidence hashes every episode's CSV) and read
+//! back from what the pilot opens: a wasm chunk of their own, so that the page is live before
+//! they arrive. The page fetches them once its first frame is drawn; a download or an open
+//! waits for them if they are still on their way.
+
+use crate::so101::Episode;
+use crate::teleop::session::{Session, SessionError};
+use crate::ui::page::SplitLoaderError;
+
+/// The session's files as `(name, text)`, the evidence's end time given.
+pub type Write = fn(&Session<Episode>, &str) -> Vec<(String, String)>;
+/// The session that saved files make, or what is wrong with them.
+pub type Read = fn(&[(String, String)]) -> Result<Session<Episode>, SessionError>;
+
+/// Writing and reading the session's files.
+#[derive(Clone, Copy)]
+pub struct Files {
+    pub write: Write,
+    pub read: Read,
+}
+
+const FILES: Files = Files {
+    write: Session::<Episode>::files,
+    read: Session::<Episode>::from_files,
+};
+
+/// The files' chunk.
+#[cfg(feature = "split")]
+#[wasm_split_helpers::wasm_split(so101_files, fallible)]
+pub fn load() -> Result<Files, SplitLoaderError> {
+    Ok(FILES)
+}
+
+/// Without the `split` feature the files are in the one wasm.
+#[cfg(not(feature = "split"))]
+pub async fn load() -> Result<Files, SplitLoaderError> {
+    Ok(FILES)
+}
