@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1283 * KB;
+export const CEILING = 1289 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -40,7 +40,7 @@ export const ROUTE_CEILINGS = {
   'trapezoid-profile': 312,
   'traj-resample': 328,
   'rrt-2d': 303,
-  teleop: 414,
+  teleop: 371,
   so101: 387,
   drills: 322,
   lesson: 251,

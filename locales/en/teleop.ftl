@@ -219,3 +219,4 @@ teleop-legend-warning = joint limit, singularity, speed limit
 teleop-legend-release = release
 teleop-legend-first-failure = first failure
 teleop-legend-now = step shown
+teleop-files-unloaded = The part of this page that writes and reads session files could not be loaded (offline, or the server did not answer). Your session is kept; check the connection, then download or open again.

@@ -213,3 +213,4 @@ teleop-legend-warning = 関節リミット・特異点・速度制限
 teleop-legend-release = 解放
 teleop-legend-first-failure = 最初の失敗
 teleop-legend-now = 表示中のステップ
+teleop-files-unloaded = このページのセッションファイルを書き出し・読み込みする部分を読み込めませんでした（オフラインか、サーバーが応答しません）。セッションはそのまま残っています。接続を確かめてから、もう一度ダウンロードまたは読み込みをしてください。

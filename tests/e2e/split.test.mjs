@@ -233,6 +233,30 @@ for (const lang of ['en', 'ja']) {
   });
 }
 
+test('#/teleop: a download says so if the session files\' code cannot be fetched, and works once it can', async () => {
+  const { page, context, errors, close } = await openApp(server.url, '#/lesson?lang=ja', { viewport: { width: 1280, height: 900 } });
+  try {
+    const pattern = /\/pkg\/(pack_teleop_files\.bin|chunks\/split_teleop_files\.wasm)$/;
+    await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+    await page.evaluate(() => { location.hash = '#/teleop?lang=ja'; });
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    await page.locator('[data-testid="teleop-canvas"]').waitFor();
+    const button = page.locator('[data-download="teleop_episodes.csv"]').first();
+    await button.click();
+    const error = page.locator('[data-tele="open-error"]');
+    await error.waitFor({ state: 'visible', timeout: 15000 });
+    assert.match(await error.innerText(), /読み込めませんでした/);
+    await context.unroute(pattern);
+    const [file] = await Promise.all([page.waitForEvent('download'), button.click()]);
+    assert.equal(file.suggestedFilename(), 'teleop_episodes.csv');
+    await error.waitFor({ state: 'hidden', timeout: 15000 });
+    assert.deepEqual(appErrors(errors), []);
+  } finally {
+    await close();
+  }
+});
+
 for (const lang of ['en', 'ja']) {
   test(`"+ Lesson" says so when its code cannot be fetched, and adds the view once it can (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/pid-step?Kp=2&lang=${lang}`);

@@ -1,6 +1,6 @@
 //! The session's downloads: `teleop_episodes.csv` at once (one short row per episode), and
 //! `teleop_episode_<n>.csv` and `teleop_session_evidence.json` written in slices between
-//! tasks ([`crate::view::teleop_export::ExportJob`]: a 60 s episode is 6,000 rows, and the
+//! tasks (the files' chunk's jobs, `super::files`: a 60 s episode is 6,000 rows, and the
 //! evidence hashes every episode's CSV), each slice's bytes a `Blob` and the file a `Blob` of
 //! them (no copy), with a progress line (`data-tele="export-progress"`, `data-state`
 //! `writing|idle`). A click on another file while one is written queues it; each file is the
@@ -13,12 +13,12 @@ use std::rc::{Rc, Weak};
 use wasm_bindgen::JsValue;
 use web_sys::{Blob, BlobPropertyBag, Element};
 
-use crate::teleop::session::{episode_file_name, Session, EPISODES_NAME, EVIDENCE_NAME};
+use crate::teleop::session::{Session, EPISODES_NAME};
 use crate::ui::kit::scope::Scope;
 use crate::ui::schedule::{now_ms, Timer};
-use crate::view::teleop_export::ExportJob;
 
 use super::bench;
+use super::files::{FileJob, Files};
 use super::markup::role;
 use super::sessions::iso_now;
 
@@ -30,7 +30,7 @@ const MS_PER_TASK: f64 = 16.0;
 
 /// A file being written: the job and the `Blob` of each slice so far.
 struct Writing {
-    job: ExportJob,
+    job: Box<dyn FileJob>,
     slices: js_sys::Array,
 }
 
@@ -39,7 +39,7 @@ pub struct Exports {
     progress: Element,
     writing: RefCell<Option<Writing>>,
     /// Files asked for while another was written.
-    queue: RefCell<VecDeque<ExportJob>>,
+    queue: RefCell<VecDeque<Box<dyn FileJob>>>,
     /// The next slice.
     timer: Rc<Timer>,
     _scope: Scope,
@@ -62,11 +62,11 @@ impl Exports {
         }))
     }
 
-    /// Downloads `file` of `session` (ended now if it has no end time): the episodes table
-    /// at once, an episode's CSV or the evidence in slices, in the next tasks.
-    pub fn download(&self, file: &str, session: &Session) {
+    /// Downloads `file` of `session` (ended now if it has no end time) with `files`: the
+    /// episodes table at once, an episode's CSV or the evidence in slices, in the next tasks.
+    pub fn download(&self, files: Files, file: &str, session: &Session) {
         let started_ms = now_ms();
-        let more = self.start_download(file, session, &iso_now());
+        let more = self.start_download(files, file, session, &iso_now());
         bench::record_export(now_ms() - started_ms);
         if more {
             self.timer.schedule(0);
@@ -85,11 +85,10 @@ impl Exports {
 
     /// Starts `file` (`ended_at`: the session's end time if it has none); `true` when more
     /// slices are due.
-    fn start_download(&self, file: &str, session: &Session, ended_at: &str) -> bool {
+    fn start_download(&self, files: Files, file: &str, session: &Session, ended_at: &str) -> bool {
         if file == EPISODES_NAME {
-            if let Err(e) =
-                crate::ui::download::download_text(file, &session.episodes_csv(), "text/csv")
-            {
+            let text = (files.episodes_csv)(session);
+            if let Err(e) = crate::ui::download::download_text(file, &text, "text/csv") {
                 web_sys::console::warn_1(&e);
             }
             return self.is_writing();
@@ -102,20 +101,20 @@ impl Exports {
         if let Some(current) = busy {
             let queued = self.queue.borrow().iter().any(|j| j.file() == file);
             if current != file && !queued {
-                if let Some(job) = job_of(file, session, ended_at) {
+                if let Some(job) = (files.job)(file, session, ended_at) {
                     self.queue.borrow_mut().push_back(job);
                 }
             }
             return true;
         }
-        let Some(job) = job_of(file, session, ended_at) else {
+        let Some(job) = (files.job)(file, session, ended_at) else {
             return false;
         };
         self.start(job);
         self.write_slice()
     }
 
-    fn start(&self, job: ExportJob) {
+    fn start(&self, job: Box<dyn FileJob>) {
         *self.writing.borrow_mut() = Some(Writing {
             job,
             slices: js_sys::Array::new(),
@@ -212,18 +211,6 @@ impl Exports {
     fn show_progress(&self, shown: Option<(&str, (usize, usize))>) {
         crate::ui::kit::progress::show_writing_line(&self.progress, "teleop-export-writing", shown);
     }
-}
-
-/// The job writing `file` of `session` (`None`: no such file).
-fn job_of(file: &str, session: &Session, ended_at: &str) -> Option<ExportJob> {
-    if file == EVIDENCE_NAME {
-        return Some(ExportJob::evidence(session, ended_at));
-    }
-    session
-        .episodes
-        .iter()
-        .find(|e| episode_file_name(e.number) == file)
-        .and_then(|e| ExportJob::episode(session, e.number))
 }
 
 /// A `Blob` of `parts` (bytes, or blobs when `of_blobs`) of type `mime`.

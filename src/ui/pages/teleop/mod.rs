@@ -7,7 +7,8 @@
 //! `devices`, `scene_view`, `readouts`, `controls` (the live arm's buttons), `session_panel`
 //! (`module_bar` with the preflight, `episode_table`, the file opener), `label_panel`, the
 //! kit's failure review (`crate::ui::kit::review`),
-//! `settings`, `exports` and `loading` (both in slices), `gamepad_offer` and
+//! `settings`, `exports` and `loading` (both in slices), `files` (writing and reading the
+//! session's files: a wasm chunk of their own), `gamepad_offer` and
 //! the kit's `pilot_session::StorageWarning`, over `sessions` (the two sessions and their storage).
 //! This file wires them: mount, events to components, the frame loop. The loop asks for
 //! frames only while something can change (`crate::view::teleop_input::FrameDemand`). The
@@ -19,6 +20,7 @@ mod controls;
 pub(super) mod devices;
 mod episode_table;
 mod exports;
+mod files;
 mod gamepad_offer;
 mod label_panel;
 mod live;
@@ -31,14 +33,14 @@ mod session_panel;
 mod sessions;
 mod settings;
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, PointerEvent};
 
-use crate::teleop::session::{episode_file_name, InputDevice, Module, Session};
+use crate::teleop::session::{episode_file_name, InputDevice, Module};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::pilot_session::{open_error_text, StorageWarning};
 use crate::ui::kit::review::{Review, SharedReplay};
@@ -83,6 +85,10 @@ struct Inner {
     /// The episode replayed in the failure review.
     replay: RefCell<Option<SharedReplay<crate::teleop::Episode>>>,
     exports: Rc<Exports>,
+    /// Writing and reading the session's files, once their chunk is here.
+    files: Cell<Option<files::Files>>,
+    /// Whether the opener's error line says that the files' chunk could not be fetched.
+    files_failed: Cell<bool>,
     loader: Rc<Loader>,
     frame: RefCell<Option<FrameLoop>>,
     scope: RefCell<Scope>,
@@ -137,6 +143,8 @@ impl Page for TeleopPage {
             review,
             replay: RefCell::new(None),
             exports,
+            files: Cell::new(None),
+            files_failed: Cell::new(false),
             loader,
             frame: RefCell::new(None),
             scope: RefCell::new(Scope::new()),
@@ -152,6 +160,9 @@ impl Page for TeleopPage {
         });
         inner.show_session(loaded.stored);
         inner.settings.borrow().write_url();
+        // Fetched now, so that a download need not wait; a failure is said only when the
+        // pilot asks for a file.
+        inner.with_files(false, |_, _| {});
         Ok(TeleopPage(inner))
     }
 
@@ -664,16 +675,15 @@ impl Inner {
                 self.start_replay(n);
             }
             Some(PanelAction::Relabel(n)) => self.open_label(n),
-            Some(PanelAction::Download(file)) => {
-                self.exports
-                    .download(&file, &self.sessions.current.borrow());
-            }
-            Some(PanelAction::DownloadEpisodeCsvs) => {
-                let s = self.sessions.current.borrow();
+            Some(PanelAction::Download(file)) => self.with_files(true, move |p, f| {
+                p.exports.download(f, &file, &p.sessions.current.borrow());
+            }),
+            Some(PanelAction::DownloadEpisodeCsvs) => self.with_files(true, |p, f| {
+                let s = p.sessions.current.borrow();
                 for e in &s.episodes {
-                    self.exports.download(&episode_file_name(e.number), &s);
+                    p.exports.download(f, &episode_file_name(e.number), &s);
                 }
-            }
+            }),
             Some(PanelAction::SecondSession) => self.second_session(),
             Some(PanelAction::NewSession) => self.new_session(),
             None => {}
@@ -700,7 +710,45 @@ impl Inner {
             self.panel.show_open_error(Some(text));
             return;
         }
-        match Session::from_files(files) {
+        let files = files.to_vec();
+        self.with_files(true, move |p, f| p.session_read(f, &files));
+    }
+
+    /// Runs `then` with the files' functions: at once if their chunk is here, else once it
+    /// has come (if the page is still open); if it cannot be fetched and `say` is set, the
+    /// opener's error line says so. A later download or open tries again.
+    fn with_files(&self, say: bool, then: impl FnOnce(&Inner, files::Files) + 'static) {
+        if let Some(f) = self.files.get() {
+            then(self, f);
+            return;
+        }
+        let me = self.me.clone();
+        wasm_bindgen_futures::spawn_local(async move {
+            let loaded = files::load().await;
+            let Some(p) = me.upgrade() else {
+                return;
+            };
+            match loaded {
+                Ok(f) => {
+                    p.files.set(Some(f));
+                    if p.files_failed.replace(false) {
+                        p.panel.show_open_error(None);
+                    }
+                    then(&p, f);
+                }
+                Err(_) if say => {
+                    p.files_failed.set(true);
+                    p.panel
+                        .show_open_error(Some(ctx::t("teleop-files-unloaded")));
+                }
+                Err(_) => {}
+            }
+        });
+    }
+
+    /// The session read from saved files, or what is wrong with them.
+    fn session_read(&self, f: files::Files, files: &[(String, String)]) {
+        match (f.read)(files) {
             Ok(session) => {
                 self.settle_episode();
                 self.panel.show_open_error(None);
