@@ -749,18 +749,21 @@ mod tests {
         }
     }
 
+    /// `p` as the 320×240 wrist image shows it: projected by `camera`, turned by `roll` about
+    /// the image's centre.
+    fn wrist_image_point(camera: &Camera, roll: f64, p: DVec3) -> Option<DVec2> {
+        let at = camera.project(p)?.at - DVec2::splat(camera.width / 2.0);
+        let (sin, cos) = roll.sin_cos();
+        let turned = DVec2::new(at.x * cos + at.y * sin, -at.x * sin + at.y * cos);
+        Some(turned + DVec2::new(160.0, 120.0))
+    }
+
     #[test]
     fn the_wrist_camera_sees_the_fingers_and_the_cube_at_the_start_pose() {
         let sim = Sim::new(SceneConfig::default_for(false)).unwrap();
         let chain = sim.chain();
         let (camera, roll) = wrist_view(&chain, 320.0, 240.0);
-        // A point as shown: turned by `roll` about the image's centre, in the 320×240 image.
-        let shown = |p: DVec3| {
-            let at = camera.project(p)?.at - DVec2::splat(camera.width / 2.0);
-            let (sin, cos) = roll.sin_cos();
-            let turned = DVec2::new(at.x * cos + at.y * sin, -at.x * sin + at.y * cos);
-            Some(turned + DVec2::new(160.0, 120.0))
-        };
+        let shown = |p: DVec3| wrist_image_point(&camera, roll, p);
         let inside = |at: DVec2| (0.0..320.0).contains(&at.x) && (0.0..240.0).contains(&at.y);
         // The cube on the table ahead.
         let cube = shown(DVec3::from_array(sim.state().cube.pos)).unwrap();
@@ -773,17 +776,11 @@ mod tests {
         for jaw in [JAW_OPEN, JAW_HOLDING, JAW_CLOSED] {
             let chain = crate::so101::chain(&sim.state().q, jaw);
             let (camera, roll) = wrist_view(&chain, 320.0, 240.0);
-            let shown = |p: DVec3| {
-                let at = camera.project(p)?.at - DVec2::splat(camera.width / 2.0);
-                let (sin, cos) = roll.sin_cos();
-                let turned = DVec2::new(at.x * cos + at.y * sin, -at.x * sin + at.y * cos);
-                Some(turned + DVec2::new(160.0, 120.0))
-            };
             for (i, (body, b)) in part_boxes(&chain).enumerate() {
                 if i == FIXED_FINGER || i == MOVING_FINGER {
                     assert_eq!(body == 6, i == MOVING_FINGER);
                     for corner in b.corners() {
-                        let at = shown(v(&corner)).unwrap();
+                        let at = wrist_image_point(&camera, roll, v(&corner)).unwrap();
                         assert!(inside(at), "jaw {jaw}, part {i}: {at:?}");
                     }
                 }

@@ -22,7 +22,8 @@
 //!   [`signal_page`]: the shell of such a page that plots the recipe's table (markup, mount,
 //!   language/projector/resize, the plot with its drags, cursor and PNG).
 //! - [`pilot_session`]: the Robot Pilot pages' repeatability table, storage-full warning and
-//!   saved-files opener.
+//!   saved-files opener; [`chunk_fns`]: functions of a wasm chunk a page fetches once mounted
+//!   and uses on demand (their session files).
 //! - [`store`]: a page's work in localStorage: unreadable text moved aside, refused saves
 //!   reported.
 //! - [`input_file`]: a file the user opens or drops, decoded as the CLI decodes it.
@@ -33,6 +34,7 @@
 
 pub mod bench_log;
 pub mod canvas;
+pub mod chunk_fns;
 pub mod drag;
 pub mod exports;
 pub mod form;

@@ -46,7 +46,7 @@ use self::arm::{ArmControl, ArmHost};
 #[cfg(feature = "bench")]
 use self::bench::BenchHost;
 use self::keys::KeyAction;
-use self::panels::Panels;
+use self::panels::{Panels, PanelsHost};
 use crate::planar2r::{wrap_angle, Elbow};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
@@ -130,8 +130,59 @@ fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
     page.relocalize_texts();
     page.invalidate(dirty::ALL);
     panels_status::show_loading(&more)?;
-    panels_status::load(Rc::downgrade(&page), more);
+    let host: Rc<dyn PanelsHost> = page.clone();
+    panels_status::load(Rc::downgrade(&host), more);
     Ok(page)
+}
+
+impl PanelsHost for Page {
+    fn root(&self) -> Element {
+        self.root.clone()
+    }
+
+    fn state(&self) -> State {
+        *self.state.borrow()
+    }
+
+    fn scope(&self) -> std::cell::RefMut<'_, Scope> {
+        self.scope.borrow_mut()
+    }
+
+    fn apply_params(&self, old: Params, next: Params) {
+        Page::apply_params(self, old, next);
+    }
+
+    fn flatten_arm(&self) -> Result<web_sys::HtmlCanvasElement, JsValue> {
+        self.arm.borrow().flatten()
+    }
+
+    fn end_heat_drag(&self) {
+        Page::end_heat_drag(self);
+    }
+
+    fn set_pose(&self, q1: f64, q2: f64) {
+        Page::set_pose(self, q1, q2);
+    }
+
+    fn write_url(&self) {
+        Page::write_url(self);
+    }
+
+    fn ghost(&self) -> Option<(f64, f64)> {
+        *self.ghost.borrow()
+    }
+
+    fn set_ghost(&self, ghost: Option<(f64, f64)>) {
+        *self.ghost.borrow_mut() = ghost;
+    }
+
+    fn frame_changed(&self) {
+        Page::frame_changed(self);
+    }
+
+    fn panels_arrived(&self, panels: Rc<dyn Panels>) {
+        Page::panels_arrived(self, panels);
+    }
 }
 
 impl Page {

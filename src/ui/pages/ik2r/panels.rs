@@ -9,7 +9,7 @@ use std::rc::{Rc, Weak};
 
 use glam::DVec2;
 use wasm_bindgen::prelude::*;
-use web_sys::{Element, EventTarget};
+use web_sys::{Element, EventTarget, HtmlCanvasElement};
 
 use super::exports::{self, Exports};
 use super::heat::{HeatHost, HeatPanel};
@@ -17,12 +17,12 @@ use super::markup::{role, LATER_SELECTOR};
 use super::params::ParamsForm;
 use super::sweep::SweepPlot;
 use super::workspace::{self, WorkspaceImage};
-use super::Page;
 use crate::planar2r::Arm;
 use crate::recipes::ik_workspace::{Workspace, WorkspaceParams};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::{DragEvent, PointerKind};
+use crate::ui::kit::scope::Scope;
 use crate::view::heatmap::Rgb;
 use crate::view::ik2r::{Params, State, WsColor};
 
@@ -66,12 +66,39 @@ pub(super) trait Panels {
     fn detach(&self);
 }
 
+/// What the second stage asks of the page (the page implements it).
+pub(super) trait PanelsHost {
+    /// The page's root element.
+    fn root(&self) -> Element;
+    /// The page's state.
+    fn state(&self) -> State;
+    /// The page's scope (the panels' listeners go there).
+    fn scope(&self) -> std::cell::RefMut<'_, Scope>;
+    /// The form's parameters changed from `old` to `next`.
+    fn apply_params(&self, old: Params, next: Params);
+    /// The arm view as one canvas (its PNG).
+    fn flatten_arm(&self) -> Result<HtmlCanvasElement, JsValue>;
+    /// A drag of the heatmap marker ended.
+    fn end_heat_drag(&self);
+    /// The arm to the joint angles `q1`, `q2`.
+    fn set_pose(&self, q1: f64, q2: f64);
+    /// The state into the URL.
+    fn write_url(&self);
+    /// The pose of the heatmap cell under the pointer (a ghost arm in the arm view).
+    fn ghost(&self) -> Option<(f64, f64)>;
+    fn set_ghost(&self, ghost: Option<(f64, f64)>);
+    /// The drag frame needs drawing.
+    fn frame_changed(&self);
+    /// The second stage is built: the page draws it from now on.
+    fn panels_arrived(&self, panels: Rc<dyn Panels>);
+}
+
 /// Builds the second stage into the page's markup (what the `ik2r_more` chunk hands the page).
-pub(super) type BuildFn = fn(&Rc<Page>) -> Result<Rc<dyn Panels>, JsValue>;
+pub(super) type BuildFn = fn(&Rc<dyn PanelsHost>) -> Result<Rc<dyn Panels>, JsValue>;
 
 /// The panels of the second stage.
 struct LoadedPanels {
-    page: Weak<Page>,
+    page: Weak<dyn PanelsHost>,
     heat: RefCell<HeatPanel>,
     sweep: RefCell<SweepPlot>,
     params: RefCell<ParamsForm>,
@@ -80,11 +107,11 @@ struct LoadedPanels {
 
 /// Puts the downloads panel in its place, finds and fills the panels under the page's root,
 /// wires their listeners into the page's scope and shows them.
-pub(super) fn build(page: &Rc<Page>) -> Result<Rc<dyn Panels>, JsValue> {
-    let root = page.root.clone();
+pub(super) fn build(page: &Rc<dyn PanelsHost>) -> Result<Rc<dyn Panels>, JsValue> {
+    let root = page.root();
     let slot: Element = role(&root, "downloads")?;
     slot.set_outer_html(&exports::markup());
-    let params = page.state.borrow().params;
+    let params = page.state().params;
     let (heat, sweep) = (HeatPanel::find(&root)?, SweepPlot::find(&root)?);
     let (form, exports) = (ParamsForm::build(&root, &params)?, Exports::find(&root)?);
     let panels = Rc::new(LoadedPanels {
@@ -97,7 +124,7 @@ pub(super) fn build(page: &Rc<Page>) -> Result<Rc<dyn Panels>, JsValue> {
     let weak = Rc::downgrade(&panels);
     panels.heat.borrow_mut().attach(&weak)?;
     {
-        let mut scope = page.scope.borrow_mut();
+        let mut scope = page.scope();
         panels
             .params
             .borrow()
@@ -105,7 +132,7 @@ pub(super) fn build(page: &Rc<Page>) -> Result<Rc<dyn Panels>, JsValue> {
                 let Some(page) = p.page.upgrade() else {
                     return;
                 };
-                let old = page.state.borrow().params;
+                let old = page.state().params;
                 let next = p.params.borrow_mut().on_input(target, old);
                 page.apply_params(old, next);
             })?;
@@ -116,10 +143,10 @@ pub(super) fn build(page: &Rc<Page>) -> Result<Rc<dyn Panels>, JsValue> {
                 let Some(page) = p.page.upgrade() else {
                     return;
                 };
-                let st = *page.state.borrow();
+                let st = page.state();
                 p.exports
                     .borrow()
-                    .download(file, &st, || page.arm.borrow().flatten());
+                    .download(file, &st, || page.flatten_arm());
             },
             |p: &LoadedPanels, key| p.exports.borrow().copy(key),
         )?;
@@ -133,7 +160,7 @@ pub(super) fn build(page: &Rc<Page>) -> Result<Rc<dyn Panels>, JsValue> {
 
 impl LoadedPanels {
     /// A drag, tap or hover on the heatmap.
-    fn on_heat(&self, page: &Page, ev: DragEvent<()>) {
+    fn on_heat(&self, page: &dyn PanelsHost, ev: DragEvent<()>) {
         let at = match ev {
             DragEvent::Start { at, .. } | DragEvent::Move { at, .. } | DragEvent::Tap { at } => at,
             DragEvent::End { .. } => {
@@ -161,12 +188,12 @@ impl LoadedPanels {
     }
 
     /// The pose of the heatmap cell under the pointer (a ghost arm in the arm view).
-    fn set_ghost(&self, page: &Page, ghost: Option<(f64, f64)>) {
-        if *page.ghost.borrow() == ghost {
+    fn set_ghost(&self, page: &dyn PanelsHost, ghost: Option<(f64, f64)>) {
+        if page.ghost() == ghost {
             return;
         }
-        *page.ghost.borrow_mut() = ghost;
-        let p = page.state.borrow().params;
+        page.set_ghost(ghost);
+        let p = page.state().params;
         self.heat.borrow().relocalize(&p, ghost);
         page.frame_changed();
     }
@@ -175,13 +202,13 @@ impl LoadedPanels {
 impl HeatHost for LoadedPanels {
     fn heat_grab(&self, at: DVec2, kind: PointerKind) -> Option<()> {
         let page = self.page.upgrade()?;
-        let st = *page.state.borrow();
+        let st = page.state();
         self.heat.borrow().grabs(&st, at, kind)
     }
 
     fn on_heat(&self, ev: DragEvent<()>) {
         if let Some(page) = self.page.upgrade() {
-            LoadedPanels::on_heat(self, &page, ev);
+            LoadedPanels::on_heat(self, &*page, ev);
         }
     }
 }

@@ -8,8 +8,7 @@ use std::rc::Weak;
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use super::panels::{self, BuildFn};
-use super::Page;
+use super::panels::{self, BuildFn, PanelsHost};
 use crate::ui::dom::{self, append, el_i18n, el_text};
 use crate::ui::page::SplitLoaderError;
 use crate::ui::page_frame;
@@ -29,7 +28,7 @@ async fn second_stage() -> Result<BuildFn, SplitLoaderError> {
 
 /// Loads the second stage and hands it to the page, removing `status`; if the chunk cannot
 /// be fetched, `status` says so with a Retry button.
-pub(super) fn load(page: Weak<Page>, status: Element) {
+pub(super) fn load(page: Weak<dyn PanelsHost>, status: Element) {
     wasm_bindgen_futures::spawn_local(async move {
         let loaded = second_stage().await;
         // The page may have been left meanwhile.
@@ -57,7 +56,7 @@ pub(super) fn show_loading(status: &Element) -> Result<(), JsValue> {
     dom::set_i18n(status, "ik2r-more-loading")
 }
 
-fn show_failed(page: Weak<Page>, status: &Element) -> Result<(), JsValue> {
+fn show_failed(page: Weak<dyn PanelsHost>, status: &Element) -> Result<(), JsValue> {
     dom::clear(status);
     status.remove_attribute("data-i18n")?;
     status.set_attribute("data-state", "failed")?;

@@ -36,6 +36,7 @@ use crate::teleop::session::{
     category_from_id, clean_pilot_id, label_from_id, InputDevice, Module, Session, SessionLoader,
 };
 use crate::ui::kit::bench_log::push_ms;
+use crate::ui::kit::chunk_fns::ChunkFns;
 use crate::ui::kit::drag::DragEvent;
 use crate::ui::kit::frame::FrameLoop;
 use crate::ui::kit::pilot_session::{clear_files, read_files, EPISODE_CSVS};
@@ -92,7 +93,7 @@ struct Inner {
     load_timer: RefCell<Option<Rc<crate::ui::schedule::Timer>>>,
     restored: Element,
     /// Writing and reading the session's files, once their chunk is here.
-    files: Cell<Option<files::Files>>,
+    files: ChunkFns<files::Files>,
 }
 
 /// Steps simulated again per slice of the load (a few ms of work).
@@ -192,7 +193,7 @@ impl Page for So101Page {
             first_loader: RefCell::new(first_loader),
             load_timer: RefCell::new(None),
             restored,
-            files: Cell::new(None),
+            files: ChunkFns::default(),
         });
         let me = inner.me.clone();
         let views = Views::new(&root, &shared, move |e, tool| {
@@ -542,38 +543,30 @@ impl Inner {
     }
 
     /// Runs `then` with the files' functions: at once if their chunk is here, else once it
-    /// has come (if the page is still open); if it cannot be fetched and `say` is set, the
-    /// opener's error line says so. A later download or open tries again.
+    /// has come; if it cannot be fetched and `say` is set, the opener's error line says so. A
+    /// later download or open tries again.
     fn with_files(&self, say: bool, then: impl FnOnce(&Inner, files::Files) + 'static) {
-        if let Some(f) = self.files.get() {
-            then(self, f);
-            return;
+        ChunkFns::with(
+            self,
+            &self.me,
+            |p| &p.files,
+            files::load,
+            say,
+            Inner::show_files_failed,
+            then,
+        );
+    }
+
+    /// The opener's error line says that the files' chunk could not be fetched, or no longer.
+    fn show_files_failed(&self, failed: bool) {
+        let mut problem = self.session.open_problem.borrow_mut();
+        if failed {
+            *problem = Some(OpenProblem::Unloaded);
+        } else if matches!(*problem, Some(OpenProblem::Unloaded)) {
+            *problem = None;
         }
-        let me = self.me.clone();
-        wasm_bindgen_futures::spawn_local(async move {
-            let loaded = files::load().await;
-            let Some(p) = me.upgrade() else {
-                return;
-            };
-            match loaded {
-                Ok(f) => {
-                    p.files.set(Some(f));
-                    if matches!(
-                        *p.session.open_problem.borrow(),
-                        Some(OpenProblem::Unloaded)
-                    ) {
-                        *p.session.open_problem.borrow_mut() = None;
-                        p.show_all();
-                    }
-                    then(&p, f);
-                }
-                Err(_) if say => {
-                    *p.session.open_problem.borrow_mut() = Some(OpenProblem::Unloaded);
-                    p.show_all();
-                }
-                Err(_) => {}
-            }
-        });
+        drop(problem);
+        self.show_all();
     }
 
     /// Downloads `file` of the session (or, for [`EPISODE_CSVS`], every episode's CSV).

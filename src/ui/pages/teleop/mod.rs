@@ -33,7 +33,7 @@ mod session_panel;
 mod sessions;
 mod settings;
 
-use std::cell::{Cell, RefCell};
+use std::cell::RefCell;
 use std::rc::{Rc, Weak};
 
 use wasm_bindgen::prelude::*;
@@ -42,6 +42,7 @@ use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, Poin
 
 use crate::teleop::session::{episode_file_name, InputDevice, Module};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
+use crate::ui::kit::chunk_fns::ChunkFns;
 use crate::ui::kit::pilot_session::{open_error_text, StorageWarning};
 use crate::ui::kit::review::{Review, SharedReplay};
 use crate::ui::kit::scope::{FrameLoop, Scope};
@@ -86,9 +87,7 @@ struct Inner {
     replay: RefCell<Option<SharedReplay<crate::teleop::Episode>>>,
     exports: Rc<Exports>,
     /// Writing and reading the session's files, once their chunk is here.
-    files: Cell<Option<files::Files>>,
-    /// Whether the opener's error line says that the files' chunk could not be fetched.
-    files_failed: Cell<bool>,
+    files: ChunkFns<files::Files>,
     loader: Rc<Loader>,
     frame: RefCell<Option<FrameLoop>>,
     scope: RefCell<Scope>,
@@ -143,8 +142,7 @@ impl Page for TeleopPage {
             review,
             replay: RefCell::new(None),
             exports,
-            files: Cell::new(None),
-            files_failed: Cell::new(false),
+            files: ChunkFns::default(),
             loader,
             frame: RefCell::new(None),
             scope: RefCell::new(Scope::new()),
@@ -715,35 +713,24 @@ impl Inner {
     }
 
     /// Runs `then` with the files' functions: at once if their chunk is here, else once it
-    /// has come (if the page is still open); if it cannot be fetched and `say` is set, the
-    /// opener's error line says so. A later download or open tries again.
+    /// has come; if it cannot be fetched and `say` is set, the opener's error line says so. A
+    /// later download or open tries again.
     fn with_files(&self, say: bool, then: impl FnOnce(&Inner, files::Files) + 'static) {
-        if let Some(f) = self.files.get() {
-            then(self, f);
-            return;
-        }
-        let me = self.me.clone();
-        wasm_bindgen_futures::spawn_local(async move {
-            let loaded = files::load().await;
-            let Some(p) = me.upgrade() else {
-                return;
-            };
-            match loaded {
-                Ok(f) => {
-                    p.files.set(Some(f));
-                    if p.files_failed.replace(false) {
-                        p.panel.show_open_error(None);
-                    }
-                    then(&p, f);
-                }
-                Err(_) if say => {
-                    p.files_failed.set(true);
-                    p.panel
-                        .show_open_error(Some(ctx::t("teleop-files-unloaded")));
-                }
-                Err(_) => {}
-            }
-        });
+        ChunkFns::with(
+            self,
+            &self.me,
+            |p| &p.files,
+            files::load,
+            say,
+            Inner::show_files_failed,
+            then,
+        );
+    }
+
+    /// The opener's error line says that the files' chunk could not be fetched, or no longer.
+    fn show_files_failed(&self, failed: bool) {
+        self.panel
+            .show_open_error(failed.then(|| ctx::t("teleop-files-unloaded")));
     }
 
     /// The session read from saved files, or what is wrong with them.
