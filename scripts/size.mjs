@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1289 * KB;
+export const CEILING = 1297 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -33,7 +33,7 @@ export const ROUTE_CEILINGS = {
   'ik-2r': 294,
   'dh-fk': 321,
   'se3-relative': 324,
-  'umeyama-2d': 350,
+  'umeyama-2d': 333,
   'pendulum-energy': 320,
   'pid-step': 310,
   'cubic-path': 316,

@@ -1,6 +1,8 @@
 ## The Umeyama alignment page (#/umeyama-2d)
 umeyama-lede = The umeyama-2d recipe’s points X, the noisy targets Y = s R X + t + noise, and the similarity Umeyama’s closed form recovers from them. Drag a point, click empty space to add one, or drag the violet handles to change the true translation and rotation; then step through the fit.
 umeyama-edited = Edited: these points or this true similarity are not the Python recipe’s, so this run no longer matches it. The command line below carries the options that reproduce it with bsv, and umeyama_points.csv holds X, Y and the aligned points.
+umeyama-more-loading = Loading the downloads and the command lines… The points, the fit and the steps already work.
+umeyama-more-failed = The downloads and the command lines could not be loaded: the network is not reachable. The points, the fit, the steps and the parameters still work. Check the connection, then try again.
 umeyama-view-title = Points and fit
 umeyama-canvas-label = The plane with the source points X (blue discs, numbered by order), the noisy targets Y (orange squares), the aligned points s R X + t (green rings), the residuals (red dashes) and the true translation and rotation handles (violet). Keys: right arrow next step, left arrow previous step, n selects the next point (Shift + n the previous), Shift + arrows move the selected point, Delete removes it, a adds a point.
 umeyama-legend-x = X: source points (drag)

@@ -196,6 +196,77 @@ for (const lang of ['en', 'ja']) {
 }
 
 for (const lang of ['en', 'ja']) {
+  test(`the Umeyama page's points, fit and steps are live before its exports; if their code cannot be fetched, a line says so with Retry (${lang})`, async () => {
+    const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`, { viewport: { width: 1280, height: 900 } });
+    try {
+      const pattern = /\/pkg\/(pack_umeyama_more\.bin|chunks\/split_umeyama_more\.wasm)$/;
+      await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+      await page.evaluate((l) => { location.hash = `#/umeyama-2d?lang=${l}`; }, lang);
+      await page.reload();
+      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+      const line = page.locator('[data-testid="umeyama-2d-more"]');
+      await line.and(page.locator('[data-state="failed"]')).waitFor({ timeout: 15000 });
+      assert.match(await line.innerText(), lang === 'en' ? /could not be loaded/ : /読み込めませんでした/);
+      assert.equal(await line.getAttribute('role'), 'alert');
+      assert.equal(await page.locator('[data-download="umeyama_2d.csv"]').isVisible(), false);
+      assert.equal(await page.locator('[data-cmd="bsv"]').isVisible(), false);
+      // The page is live meanwhile: dragging a point moves the readouts and the URL.
+      const canvas = page.locator('[data-testid="umeyama-2d-canvas"][data-points-px]');
+      await canvas.waitFor();
+      await canvas.scrollIntoViewIfNeeded();
+      const rmse = await page.locator('[data-readout="rmse"]').innerText();
+      const g = await canvas.evaluate((c) => {
+        const r = c.getBoundingClientRect();
+        const [x, y] = c.dataset.pointsPx.split(';')[0].split(',').map(Number);
+        return { x: r.left + x, y: r.top + y };
+      });
+      await page.mouse.move(g.x, g.y);
+      await page.mouse.down();
+      await page.mouse.move(g.x + 40, g.y - 30, { steps: 5 });
+      await page.mouse.up();
+      await page.waitForFunction((before) => document.querySelector('[data-readout="rmse"]').textContent !== before, rmse);
+      await page.waitForFunction(() => /[?&]x=/.test(location.hash), null, { timeout: 3000 });
+      // Keys too: the truth's translation, selected with n, moved with Shift + an arrow.
+      const tx = await page.locator('[data-readout="tx-true"]').innerText();
+      await page.locator('[data-testid="umeyama-2d-canvas"]').focus();
+      for (let k = 0; k < 20; k++) {
+        if ((await canvas.getAttribute('data-selected')) === 't') break;
+        await page.keyboard.press('n');
+      }
+      assert.equal(await canvas.getAttribute('data-selected'), 't');
+      await page.keyboard.press('Shift+ArrowRight');
+      await page.waitForFunction((before) => document.querySelector('[data-readout="tx-true"]').textContent !== before, tx);
+      // And the stepper.
+      const title = await page.locator('[data-testid="umeyama-2d-step"] h3').innerText();
+      await page.keyboard.press('ArrowRight');
+      await page.waitForFunction((before) => document.querySelector('[data-testid="umeyama-2d-step"] h3').textContent !== before, title);
+      await page.setViewportSize({ width: 390, height: 844 });
+      await line.scrollIntoViewIfNeeded();
+      await shoot(page, `umeyama-more-failed-${lang}-390`, { width: 390, height: 844 });
+      // Still unreachable: Retry fails again, visibly.
+      await line.locator('[data-action="retry"]').click();
+      await line.and(page.locator('[data-state="failed"]')).waitFor({ timeout: 15000 });
+      // Reachable again: Retry brings the downloads and the command lines, of the run as it is now.
+      await context.unroute(pattern);
+      await line.locator('[data-action="retry"]').click();
+      await line.waitFor({ state: 'detached', timeout: 15000 });
+      await page.locator('[data-download="umeyama_2d.csv"]').waitFor({ timeout: 15000 });
+      for (const file of ['umeyama_2d.csv', 'umeyama_points.csv', 'umeyama_2d.png']) {
+        assert.ok(await page.locator(`[data-download="${file}"]`).isVisible(), file);
+      }
+      const bsv = await page.locator('[data-cmd="bsv"]').innerText();
+      assert.match(bsv, /^bsv umeyama-2d 0\.02 3 12 /);
+      assert.match(bsv, / --tx /);
+      assert.match(bsv, / --x '/);
+      assert.ok(await page.locator('[data-cmd="python"]').isVisible());
+      assert.deepEqual(appErrors(errors), []);
+    } finally {
+      await close();
+    }
+  });
+}
+
+for (const lang of ['en', 'ja']) {
   test(`the SO-101 arm flies before the session files' code is here; a download says so if it cannot be fetched, and works once it can (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`, { viewport: { width: 1280, height: 900 } });
     try {

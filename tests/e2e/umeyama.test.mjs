@@ -15,7 +15,12 @@ import { englishStrings } from './locales.mjs';
 // The CLI is built and dist/ served before the tests; all is closed after them.
 const server = serveAppWithCli();
 
-const open = (hash, opts = {}) => openApp(server.url, hash, opts);
+/** Opens `hash`; resolves once the exports (the page's second stage) are in. */
+async function open(hash, opts = {}) {
+  const app = await openApp(server.url, hash, opts);
+  await app.page.waitForSelector('[data-ume="later"]:not([hidden])', { state: 'attached', timeout: 15000 });
+  return app;
+}
 const CSV = 'umeyama_2d.csv';
 const POINTS = 'umeyama_points.csv';
 

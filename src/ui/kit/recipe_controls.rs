@@ -7,11 +7,17 @@
 //! The last valid arguments stay in use while a field holds a bad value: the page keeps its
 //! plot, the download and the command lines are those of the last valid run.
 //!
+//! The exports panel is reached through [`RecipeExports`], a trait object: a page that loads
+//! in two stages mounts the controls without it ([`RecipeControls::mount_later`]) and hands it
+//! over once its second stage is in ([`RecipeControls::set_exports`]), so the command lines,
+//! the downloads (the kernel's run, the CSV writing) and the clipboard are not in its first
+//! stage.
+//!
 //! Hooks: text fields `data-field="<name>"`, messages `data-field-error="<name>"` (the kit
 //! form's), sliders `data-slider="<name>"`, downloads `data-download="<file>"`.
 
 use std::cell::{Cell, RefCell};
-use std::rc::Weak;
+use std::rc::{Rc, Weak};
 
 use wasm_bindgen::{JsCast, JsValue};
 use web_sys::{Element, Event, HtmlInputElement};
@@ -59,17 +65,73 @@ pub fn markup(
 /// Messages shown beside fields (field index, message) and the fields marked invalid.
 type Shown = (Vec<(usize, Message)>, Vec<usize>);
 
+/// What the controls ask of their exports panel.
+pub trait RecipeExports {
+    /// Shows the command lines of `args` (recipe script `python`).
+    fn show_run(&self, args: &RunArgs, python: &'static str);
+    /// Clears the status line (the form changed).
+    fn clear_status(&self);
+    /// A copy button (`data-copy`): its command line to the clipboard.
+    fn copy(&self, kind: &str);
+    /// Saves `file` of the recipe's run on the arguments `raw` (the `bsv` bytes).
+    fn download(&self, file: &str, raw: &[String]);
+    /// The notes and the status line in the current language.
+    fn relocalize(&self);
+}
+
+/// The kit's exports panel of one recipe run: the [`Exports`] of [`markup`] and the recipe's
+/// kernel, which the downloads run.
+pub struct RunExports {
+    exports: Exports,
+    run: RunRaw,
+}
+
+impl RunExports {
+    /// Finds the panel of [`markup`] under `root`; `run` is the recipe's kernel.
+    pub fn find(root: &Element, prefix: &str, run: RunRaw) -> Result<RunExports, JsValue> {
+        Ok(RunExports {
+            exports: Exports::find(root, prefix)?,
+            run,
+        })
+    }
+}
+
+impl RecipeExports for RunExports {
+    fn show_run(&self, args: &RunArgs, python: &'static str) {
+        self.exports.show_run(args, python, None);
+    }
+
+    fn clear_status(&self) {
+        self.exports.clear_status();
+    }
+
+    fn copy(&self, kind: &str) {
+        self.exports.copy(kind);
+    }
+
+    fn download(&self, file: &str, raw: &[String]) {
+        // The arguments passed the recipe's own check, so the run succeeds.
+        if let Ok(out) = (self.run)(raw, Vec::new()) {
+            self.exports
+                .download(file, out.file(file).unwrap_or_default());
+        }
+    }
+
+    fn relocalize(&self) {
+        self.exports.relocalize();
+    }
+}
+
 /// The form, sliders, URL notice and exports of one recipe.
 pub struct RecipeControls<T> {
     pub info: &'static RecipeInfo,
-    /// The recipe's kernel (the downloads run it).
-    run: RunRaw,
     /// The page root (the exports' buttons) and the `<form>`.
     root: Element,
     container: Element,
     pub form: RefCell<Form>,
     sliders: Vec<(usize, HtmlInputElement)>,
-    pub exports: Exports,
+    /// The exports panel, once the page has it.
+    exports: RefCell<Option<Rc<dyn RecipeExports>>>,
     notice: UrlNotice,
     parse: Parse<T>,
     /// The texts and value of the last valid arguments.
@@ -124,6 +186,22 @@ impl<T: Clone + 'static> RecipeControls<T> {
         parse: Parse<T>,
     ) -> Result<RecipeControls<T>, JsValue> {
         let PageRecipe { info, run } = recipe;
+        let controls = Self::mount_later(root, prefix, info, sliders, query, own_keys, parse)?;
+        controls.set_exports(Rc::new(RunExports::find(root, prefix, run)?));
+        Ok(controls)
+    }
+
+    /// [`RecipeControls::mount`] without the exports panel: the command lines stay empty and
+    /// the download and copy buttons do nothing until [`RecipeControls::set_exports`].
+    pub fn mount_later(
+        root: &Element,
+        prefix: &str,
+        info: &'static RecipeInfo,
+        sliders: &[Slider],
+        query: &[(String, String)],
+        own_keys: &[&str],
+        parse: Parse<T>,
+    ) -> Result<RecipeControls<T>, JsValue> {
         let fields = recipe_fields(info);
         let (texts, ignored) = read_texts(info, query, own_keys);
         let values: Vec<String> = texts
@@ -159,21 +237,20 @@ impl<T: Clone + 'static> RecipeControls<T> {
         }
         dom::relocalize(&container)?;
         let defaults = vec![None; form.fields.len()];
+        // The recipe's defaults always pass its check: its message id is enough.
         let default_value = parse_texts(info, &form, &defaults, parse)
-            .map_err(|e| JsValue::from_str(&e.to_string()))?;
+            .map_err(|e| JsValue::from_str(e.message_id()))?;
         let notice = UrlNotice::new(
             dom::find(root, &format!("[data-{prefix}=\"url-notice\"]"), prefix)?,
             ignored,
         )?;
-        let exports = Exports::find(root, prefix)?;
         let controls = RecipeControls {
             info,
-            run,
             root: root.clone(),
             container,
             form: RefCell::new(form),
             sliders: slider_els,
-            exports,
+            exports: RefCell::new(None),
             notice,
             parse,
             valid: RefCell::new((defaults, default_value)),
@@ -183,9 +260,26 @@ impl<T: Clone + 'static> RecipeControls<T> {
             sliding: Cell::new(false),
         };
         controls.check(None);
-        controls.show_commands();
         controls.sync_sliders(None);
         Ok(controls)
+    }
+
+    /// The exports panel is in: it shows the command lines of the last valid arguments, in
+    /// the current language, and the download and copy buttons work.
+    pub fn set_exports(&self, exports: Rc<dyn RecipeExports>) {
+        *self.exports.borrow_mut() = Some(exports.clone());
+        self.show_commands();
+        exports.relocalize();
+    }
+
+    fn exports(&self) -> Option<Rc<dyn RecipeExports>> {
+        self.exports.borrow().clone()
+    }
+
+    fn clear_status(&self) {
+        if let Some(exports) = self.exports.borrow().as_ref() {
+            exports.clear_status();
+        }
     }
 
     /// Listens to the form (inputs, sliders, submit) and the exports' buttons: `changed` gets
@@ -234,7 +328,9 @@ impl<T: Clone + 'static> RecipeControls<T> {
         for button in dom::matching(&self.root, "[data-copy]")? {
             let kind = button.get_attribute("data-copy").unwrap_or_default();
             scope.listen_for(&button, "click", page, move |p, _| {
-                get(p).exports.copy(&kind)
+                if let Some(exports) = get(p).exports() {
+                    exports.copy(&kind);
+                }
             })?;
         }
         Ok(())
@@ -378,7 +474,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
         }
         if edited.is_empty() {
             drop(form);
-            self.exports.clear_status();
+            self.clear_status();
             return Some(None);
         }
         let (info, parse) = (self.info, self.parse);
@@ -399,7 +495,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
         let Some(value) = value else {
             drop(form);
             *self.clean.borrow_mut() = None;
-            self.exports.clear_status();
+            self.clear_status();
             return Some(None);
         };
         let canonical = canonical(&texts, &form.fields);
@@ -416,7 +512,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
         *self.clean.borrow_mut() = Some(texts);
         let new = self.valid.borrow().0 != canonical;
         *self.valid.borrow_mut() = (canonical, value);
-        self.exports.clear_status();
+        self.clear_status();
         if !new {
             return Some(None);
         }
@@ -427,7 +523,7 @@ impl<T: Clone + 'static> RecipeControls<T> {
     fn check_changed(&self, slider: Option<usize>) -> Option<T> {
         let before = self.valid.borrow().0.clone();
         let valid = self.check(slider);
-        self.exports.clear_status();
+        self.clear_status();
         if !valid || self.valid.borrow().0 == before {
             return None;
         }
@@ -493,8 +589,9 @@ impl<T: Clone + 'static> RecipeControls<T> {
     }
 
     fn show_commands(&self) {
-        self.exports
-            .show_run(&self.run_args(), self.info.python, None);
+        if let Some(exports) = self.exports() {
+            exports.show_run(&self.run_args(), self.info.python);
+        }
     }
 
     /// The value of the last valid arguments.
@@ -513,11 +610,10 @@ impl<T: Clone + 'static> RecipeControls<T> {
     }
 
     /// Saves `file` of the recipe's run with the last valid arguments (the `bsv` bytes).
+    /// Nothing before the exports panel is in.
     pub fn download(&self, file: &str) {
-        // The arguments passed the recipe's own check, so the run succeeds.
-        if let Ok(out) = (self.run)(&self.raw_args(), Vec::new()) {
-            self.exports
-                .download(file, out.file(file).unwrap_or_default());
+        if let Some(exports) = self.exports() {
+            exports.download(file, &self.raw_args());
         }
     }
 
@@ -537,7 +633,9 @@ impl<T: Clone + 'static> RecipeControls<T> {
         }
         let (messages, marked) = self.shown.borrow().clone();
         self.form.borrow_mut().show(&messages, &marked);
-        self.exports.relocalize();
+        if let Some(exports) = self.exports() {
+            exports.relocalize();
+        }
         self.notice.relocalize();
     }
 }

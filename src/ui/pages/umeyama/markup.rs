@@ -1,6 +1,8 @@
 //! The page's markup: heading, the view with its legend, point tools, stepper and step panel,
 //! the estimate-against-truth readouts, the kit's form and exports, and the explanation (the
 //! recipe's text and code). Every text is a Fluent id (`data-i18n`), filled by the shell.
+//! The exports (`data-ume="later"`) are hidden until the second stage (`super::more`) is in;
+//! the line `data-ume="more"` stands in for them meanwhile.
 
 use crate::recipes::umeyama_2d::INFO;
 use crate::ui::kit::{readouts, recipe_controls};
@@ -90,7 +92,9 @@ pub fn page() -> String {
          <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"umeyama-ro-title\"></h2>{table}{live}\
          <p class=\"sig-note\" data-i18n=\"umeyama-ro-note\"></p></section>\
          <section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-exports-title\"></h2>{exports}</section>\
+         <section class=\"sig-card\"><h2 data-i18n=\"signals-exports-title\"></h2>\
+         <p class=\"ume-more\" data-{P}=\"more\" data-testid=\"umeyama-2d-more\"></p>\
+         <div data-{P}=\"later\" hidden>{exports}</div></section>\
          <section class=\"sig-card sig-explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
          <pre class=\"ume-code\"><code data-i18n=\"umeyama-code\"></code></pre>\
          <h3 data-i18n=\"signals-quirks-title\"></h3><p data-i18n=\"recipe-umeyama-2d-quirks\"></p></section></div>",

@@ -11,8 +11,17 @@
 //! CLI's argument names) and the exports. Every edit goes through the form's texts, so the
 //! downloads and the command line are `bsv umeyama-2d` with the same words. A drag's or
 //! slider's frame (budget 4 ms) checks only the fields it changed and writes only what changed.
+//!
+//! The page comes in two stages. The first (the page's chunk) is what makes it live: the
+//! markup, the view with its drags and keys, the form and the URL, the readouts, the stepper
+//! and its step panel. The second (`more`, a chunk of its own fetched as soon as the first is
+//! mounted: the exports' command lines, downloads and copies, the PNG) is reached only through
+//! [`more::More`]; until it is in, a line stands in for the exports (`more_status`) and
+//! everything else works without it. Once in, it shows the run as it is then.
 
 mod markup;
+mod more;
+mod more_status;
 mod selection;
 mod steps;
 mod view;
@@ -27,8 +36,7 @@ use web_sys::{Element, KeyboardEvent, MouseEvent};
 
 use crate::i18n::FluentArg;
 use crate::pyfmt::py_float;
-use crate::recipes::umeyama_2d::{self, setup_from_args, UmeyamaSetup, INFO, POINTS_CSV};
-use crate::recipes::PageRecipe;
+use crate::recipes::umeyama_2d::{setup_from_args, UmeyamaSetup, INFO, POINTS_CSV};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
 use crate::ui::kit::keymap;
@@ -49,7 +57,7 @@ use crate::view::umeyama_2d::{
     points_text, remove_point, rotation_key_target, rotation_texts, selected_point,
     translation_texts, Grab, Refusal, Scene, Step, STEPS,
 };
-use markup::{P, PNG};
+use markup::P;
 
 /// A click this soon after a drag ended is the drag's own (ms).
 const CLICK_AFTER_DRAG_MS: f64 = 400.0;
@@ -148,6 +156,8 @@ struct Inner {
     /// Whether the edited notice shows now (`None`: not set yet).
     edited_shown: Cell<Option<bool>>,
     url: RefCell<Option<UrlWriter>>,
+    /// The second stage (exports, PNG), once its chunk is in.
+    more: RefCell<Option<Rc<dyn more::More>>>,
     scope: RefCell<Scope>,
 }
 
@@ -162,10 +172,10 @@ fn refusal_text(r: Refusal) -> String {
 impl Page for UmeyamaPage {
     fn mount(ctx: MountCtx) -> Result<UmeyamaPage, JsValue> {
         let root = PageRoot::fill(&ctx.root, &markup::page(), P, P)?;
-        let controls = RecipeControls::mount(
+        let controls = RecipeControls::mount_later(
             &root,
             P,
-            PageRecipe::of::<umeyama_2d::Entry>(),
+            &INFO,
             &SLIDERS,
             &ctx.query,
             &[STEP_KEY],
@@ -218,6 +228,7 @@ impl Page for UmeyamaPage {
                 key_moving: Cell::new(false),
                 edited_shown: Cell::new(None),
                 url: RefCell::new(Some(url)),
+                more: RefCell::new(None),
                 scope: RefCell::new(scope),
             }
         });
@@ -231,6 +242,9 @@ impl Page for UmeyamaPage {
         inner.show_run();
         inner.redraw();
         inner.show_selection();
+        let more: Element = inner.root.role("more")?;
+        more_status::show_loading(&more)?;
+        more_status::load(Rc::downgrade(&inner), more);
         Ok(UmeyamaPage(inner))
     }
 
@@ -450,9 +464,17 @@ impl Inner {
     }
 
     fn download_png(&self) {
-        let view = self.view.borrow();
-        if let Ok(canvas) = view.canvas.flatten("#ffffff") {
-            let _ = crate::ui::kit::png::download(&canvas, PNG);
+        if let Some(more) = self.more.borrow().as_ref() {
+            more.save_png(&self.view.borrow().canvas);
+        }
+    }
+
+    /// The second stage is in: the exports show the run as it is now.
+    fn more_arrived(&self, more: Rc<dyn more::More>) {
+        self.controls.set_exports(more.exports());
+        *self.more.borrow_mut() = Some(more);
+        if let Ok(later) = self.root.role::<Element>("later") {
+            dom::show(&later, true);
         }
     }
 

@@ -1,0 +1,77 @@
+//! Loading the second stage ([`super::more`]: the exports panel and the PNG), a wasm chunk of
+//! its own (`umeyama_more`) fetched as soon as the page is live, and the line that stands in
+//! for it: "loading" (`role="status"`) while the chunk comes, a message with Retry
+//! (`role="alert"`) if it cannot be fetched.
+
+use std::rc::Weak;
+
+use wasm_bindgen::JsValue;
+use web_sys::Element;
+
+use super::more::{self, BuildFn};
+use super::Inner;
+use crate::ui::dom::{self, append, el_i18n, el_text};
+use crate::ui::page::SplitLoaderError;
+use crate::ui::page_frame;
+
+/// The second stage's builder, once its chunk is in.
+#[cfg(feature = "split")]
+#[wasm_split_helpers::wasm_split(umeyama_more, fallible)]
+fn second_stage() -> Result<BuildFn, SplitLoaderError> {
+    Ok(more::build)
+}
+
+/// Without the `split` feature the second stage is in the one wasm.
+#[cfg(not(feature = "split"))]
+async fn second_stage() -> Result<BuildFn, SplitLoaderError> {
+    Ok(more::build)
+}
+
+/// Loads the second stage and hands it to the page, removing `status`; if the chunk cannot
+/// be fetched, `status` says so with a Retry button.
+pub(super) fn load(page: Weak<Inner>, status: Element) {
+    wasm_bindgen_futures::spawn_local(async move {
+        let loaded = second_stage().await;
+        // The page may have been left meanwhile.
+        let Some(live) = page.upgrade() else {
+            return;
+        };
+        let done = match loaded {
+            Ok(build) => build(&live.root).map(|more| {
+                status.remove();
+                live.more_arrived(more);
+            }),
+            Err(_) => show_failed(page, &status),
+        };
+        if let Err(error) = done {
+            web_sys::console::error_1(&error);
+        }
+    });
+}
+
+/// `status` as the line that stands in for the second stage while its chunk loads.
+pub(super) fn show_loading(status: &Element) -> Result<(), JsValue> {
+    dom::clear(status);
+    status.set_attribute("data-state", "loading")?;
+    status.set_attribute("role", "status")?;
+    dom::set_i18n(status, "umeyama-more-loading")
+}
+
+fn show_failed(page: Weak<Inner>, status: &Element) -> Result<(), JsValue> {
+    dom::clear(status);
+    status.remove_attribute("data-i18n")?;
+    status.set_attribute("data-state", "failed")?;
+    status.set_attribute("role", "alert")?;
+    append(status, &el_i18n("span", "", "umeyama-more-failed")?)?;
+    append(status, &el_text("span", "", " ")?)?;
+    let retry = page_frame::retry_button()?;
+    append(status, &retry)?;
+    let again = status.clone();
+    let listener = dom::Listener::new(&retry, "click", move |_| {
+        if show_loading(&again).is_ok() {
+            load(page.clone(), again.clone());
+        }
+    })?;
+    listener.forever();
+    Ok(())
+}
