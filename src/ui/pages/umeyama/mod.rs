@@ -244,7 +244,16 @@ impl Page for UmeyamaPage {
         inner.show_selection();
         let more: Element = inner.root.role("more")?;
         more_status::show_loading(&more)?;
-        more_status::load(Rc::downgrade(&inner), more);
+        let me = Rc::downgrade(&inner);
+        more_status::load(
+            (*inner.root).clone(),
+            more,
+            Rc::new(move |built| {
+                if let Some(page) = me.upgrade() {
+                    page.more_arrived(built);
+                }
+            }),
+        );
         Ok(UmeyamaPage(inner))
     }
 

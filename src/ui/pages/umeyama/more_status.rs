@@ -3,13 +3,12 @@
 //! for it: "loading" (`role="status"`) while the chunk comes, a message with Retry
 //! (`role="alert"`) if it cannot be fetched.
 
-use std::rc::Weak;
+use std::rc::Rc;
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use super::more::{self, BuildFn};
-use super::Inner;
+use super::more::{self, BuildFn, More};
 use crate::ui::dom::{self, append, el_i18n, el_text};
 use crate::ui::page::SplitLoaderError;
 use crate::ui::page_frame;
@@ -27,21 +26,24 @@ async fn second_stage() -> Result<BuildFn, SplitLoaderError> {
     Ok(more::build)
 }
 
-/// Loads the second stage and hands it to the page, removing `status`; if the chunk cannot
-/// be fetched, `status` says so with a Retry button.
-pub(super) fn load(page: Weak<Inner>, status: Element) {
+/// What the page does with the built second stage.
+pub(super) type Arrived = Rc<dyn Fn(Rc<dyn More>)>;
+
+/// Loads the second stage, builds it under `root` and hands it to `arrived`, removing
+/// `status`; if the chunk cannot be fetched, `status` says so with a Retry button.
+pub(super) fn load(root: Element, status: Element, arrived: Arrived) {
     wasm_bindgen_futures::spawn_local(async move {
         let loaded = second_stage().await;
         // The page may have been left meanwhile.
-        let Some(live) = page.upgrade() else {
+        if !root.contains(Some(&status)) {
             return;
-        };
+        }
         let done = match loaded {
-            Ok(build) => build(&live.root).map(|more| {
+            Ok(build) => build(&root).map(|more| {
                 status.remove();
-                live.more_arrived(more);
+                arrived(more);
             }),
-            Err(_) => show_failed(page, &status),
+            Err(_) => show_failed(root, &status, arrived),
         };
         if let Err(error) = done {
             web_sys::console::error_1(&error);
@@ -57,7 +59,7 @@ pub(super) fn show_loading(status: &Element) -> Result<(), JsValue> {
     dom::set_i18n(status, "umeyama-more-loading")
 }
 
-fn show_failed(page: Weak<Inner>, status: &Element) -> Result<(), JsValue> {
+fn show_failed(root: Element, status: &Element, arrived: Arrived) -> Result<(), JsValue> {
     dom::clear(status);
     status.remove_attribute("data-i18n")?;
     status.set_attribute("data-state", "failed")?;
@@ -69,7 +71,7 @@ fn show_failed(page: Weak<Inner>, status: &Element) -> Result<(), JsValue> {
     let again = status.clone();
     let listener = dom::Listener::new(&retry, "click", move |_| {
         if show_loading(&again).is_ok() {
-            load(page.clone(), again.clone());
+            load(root.clone(), again.clone(), arrived.clone());
         }
     })?;
     listener.forever();
