@@ -689,6 +689,8 @@ test('the focus ring is at least 3:1 against white in the header and inside page
     await page.locator('[data-ik2r="reset"]').waitFor();
     await page.keyboard.press('Tab'); // keyboard modality: programmatic focus shows the ring
     for (const selector of ['[data-testid="nav-home"]', '[data-testid="lang-switch"]', '[data-ik2r="reset"]', '#app-main [data-copy]', '#app-main select', '#app-main input']) {
+      // The copy buttons and the form come with the page's second stage.
+      await page.locator(selector).first().waitFor({ state: 'attached' });
       const ring = await page.evaluate((s) => {
         const el = document.querySelector(s);
         el.focus();
