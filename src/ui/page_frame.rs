@@ -61,6 +61,42 @@ pub fn retry_button() -> Result<Element, JsValue> {
     Ok(retry)
 }
 
+/// `status` as the line that stands in for a part of the page while its chunk loads
+/// (`role="status"`, `data-state="loading"`, the message `loading_id`).
+pub fn show_part_loading(status: &Element, loading_id: &str) -> Result<(), JsValue> {
+    dom::clear(status);
+    status.set_attribute("data-state", "loading")?;
+    status.set_attribute("role", "status")?;
+    dom::set_i18n(status, loading_id)
+}
+
+/// `status` says that the part could not be fetched (`role="alert"`, `data-state="failed"`,
+/// the message `failed_id`) with a Retry button, which shows the loading line
+/// (`loading_id`) again and calls `retry`.
+pub fn show_part_failed(
+    status: &Element,
+    failed_id: &str,
+    loading_id: &'static str,
+    retry: impl Fn() + 'static,
+) -> Result<(), JsValue> {
+    dom::clear(status);
+    status.remove_attribute("data-i18n")?;
+    status.set_attribute("data-state", "failed")?;
+    status.set_attribute("role", "alert")?;
+    dom::append(status, &dom::el_i18n("span", "", failed_id)?)?;
+    dom::append(status, &dom::el_text("span", "", " ")?)?;
+    let button = retry_button()?;
+    dom::append(status, &button)?;
+    let again = status.clone();
+    dom::Listener::new(&button, "click", move |_| {
+        if show_part_loading(&again, loading_id).is_ok() {
+            retry();
+        }
+    })?
+    .forever();
+    Ok(())
+}
+
 fn frame(def: &PageDef) -> Result<Element, JsValue> {
     let section = dom::el_class("section", "page-frame")?;
     section.set_attribute("data-testid", "page-frame")?;

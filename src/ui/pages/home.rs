@@ -12,7 +12,7 @@ use web_sys::{Element, KeyboardEvent};
 
 use super::home_arm::{self, HomeArm};
 use super::home_cards;
-use crate::ui::dom::{self, append, el_class, el_i18n, el_text};
+use crate::ui::dom::{append, el_class, el_i18n};
 use crate::ui::page::{MountCtx, Page, ShellLink, Shortcut, SplitLoaderError};
 use crate::ui::page_frame;
 
@@ -97,28 +97,13 @@ fn load_cards(root: Element, status: Element, shell: ShellLink) {
 }
 
 fn show_failed(root: &Element, status: &Element, shell: ShellLink) -> Result<(), JsValue> {
-    dom::clear(status);
-    status.remove_attribute("data-i18n")?;
-    status.set_attribute("data-state", "failed")?;
-    status.set_attribute("role", "alert")?;
-    append(status, &el_i18n("span", "", "home-more-failed")?)?;
-    append(status, &el_text("span", "", " ")?)?;
-    let retry = page_frame::retry_button()?;
-    append(status, &retry)?;
     let (root, again) = (root.clone(), status.clone());
-    dom::Listener::new(&retry, "click", move |_| {
-        if show_loading(&again).is_ok() {
-            load_cards(root.clone(), again.clone(), shell);
-        }
-    })?
-    .forever();
-    Ok(())
+    page_frame::show_part_failed(status, "home-more-failed", "home-more-loading", move || {
+        load_cards(root.clone(), again.clone(), shell)
+    })
 }
 
 /// `status` as the line that stands in for the cards while their chunk loads.
 fn show_loading(status: &Element) -> Result<(), JsValue> {
-    dom::clear(status);
-    status.set_attribute("data-state", "loading")?;
-    status.set_attribute("role", "status")?;
-    dom::set_i18n(status, "home-more-loading")
+    page_frame::show_part_loading(status, "home-more-loading")
 }

@@ -9,7 +9,6 @@ use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use super::panels::{self, BuildFn, PanelsHost};
-use crate::ui::dom::{self, append, el_i18n, el_text};
 use crate::ui::page::SplitLoaderError;
 use crate::ui::page_frame;
 
@@ -50,27 +49,12 @@ pub(super) fn load(page: Weak<dyn PanelsHost>, status: Element) {
 
 /// `status` as the line that stands in for the second stage while its chunk loads.
 pub(super) fn show_loading(status: &Element) -> Result<(), JsValue> {
-    dom::clear(status);
-    status.set_attribute("data-state", "loading")?;
-    status.set_attribute("role", "status")?;
-    dom::set_i18n(status, "ik2r-more-loading")
+    page_frame::show_part_loading(status, "ik2r-more-loading")
 }
 
 fn show_failed(page: Weak<dyn PanelsHost>, status: &Element) -> Result<(), JsValue> {
-    dom::clear(status);
-    status.remove_attribute("data-i18n")?;
-    status.set_attribute("data-state", "failed")?;
-    status.set_attribute("role", "alert")?;
-    append(status, &el_i18n("span", "", "ik2r-more-failed")?)?;
-    append(status, &el_text("span", "", " ")?)?;
-    let retry = page_frame::retry_button()?;
-    append(status, &retry)?;
     let again = status.clone();
-    let listener = dom::Listener::new(&retry, "click", move |_| {
-        if show_loading(&again).is_ok() {
-            load(page.clone(), again.clone());
-        }
-    })?;
-    listener.forever();
-    Ok(())
+    page_frame::show_part_failed(status, "ik2r-more-failed", "ik2r-more-loading", move || {
+        load(page.clone(), again.clone())
+    })
 }

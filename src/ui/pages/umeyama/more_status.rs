@@ -9,7 +9,6 @@ use wasm_bindgen::JsValue;
 use web_sys::Element;
 
 use super::more::{self, BuildFn, More};
-use crate::ui::dom::{self, append, el_i18n, el_text};
 use crate::ui::page::SplitLoaderError;
 use crate::ui::page_frame;
 
@@ -53,27 +52,15 @@ pub(super) fn load(root: Element, status: Element, arrived: Arrived) {
 
 /// `status` as the line that stands in for the second stage while its chunk loads.
 pub(super) fn show_loading(status: &Element) -> Result<(), JsValue> {
-    dom::clear(status);
-    status.set_attribute("data-state", "loading")?;
-    status.set_attribute("role", "status")?;
-    dom::set_i18n(status, "umeyama-more-loading")
+    page_frame::show_part_loading(status, "umeyama-more-loading")
 }
 
 fn show_failed(root: Element, status: &Element, arrived: Arrived) -> Result<(), JsValue> {
-    dom::clear(status);
-    status.remove_attribute("data-i18n")?;
-    status.set_attribute("data-state", "failed")?;
-    status.set_attribute("role", "alert")?;
-    append(status, &el_i18n("span", "", "umeyama-more-failed")?)?;
-    append(status, &el_text("span", "", " ")?)?;
-    let retry = page_frame::retry_button()?;
-    append(status, &retry)?;
     let again = status.clone();
-    let listener = dom::Listener::new(&retry, "click", move |_| {
-        if show_loading(&again).is_ok() {
-            load(root.clone(), again.clone(), arrived.clone());
-        }
-    })?;
-    listener.forever();
-    Ok(())
+    page_frame::show_part_failed(
+        status,
+        "umeyama-more-failed",
+        "umeyama-more-loading",
+        move || load(root.clone(), again.clone(), arrived.clone()),
+    )
 }
