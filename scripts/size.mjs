@@ -30,7 +30,7 @@ export function routeBudget(route) {
  * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
   home: 211,
-  'ik-2r': 294,
+  'ik-2r': 250,
   'dh-fk': 321,
   'se3-relative': 324,
   'umeyama-2d': 333,

@@ -26,6 +26,8 @@ pub trait Trig {
     fn atan2(y: f64, x: f64) -> f64;
     fn acos(x: f64) -> f64;
     fn hypot(x: f64, y: f64) -> f64;
+    fn ln(x: f64) -> f64;
+    fn exp(x: f64) -> f64;
 }
 
 /// Correctly rounded ([`crate::math`]): the numbers of the recipes and numpy.
@@ -55,6 +57,12 @@ impl Trig for Exact {
     fn hypot(x: f64, y: f64) -> f64 {
         crate::math::hypot(x, y)
     }
+    fn ln(x: f64) -> f64 {
+        crate::math::log(x)
+    }
+    fn exp(x: f64) -> f64 {
+        crate::math::exp(x)
+    }
 }
 
 impl Trig for Fast {
@@ -75,6 +83,12 @@ impl Trig for Fast {
     }
     fn hypot(x: f64, y: f64) -> f64 {
         x.hypot(y)
+    }
+    fn ln(x: f64) -> f64 {
+        x.ln()
+    }
+    fn exp(x: f64) -> f64 {
+        x.exp()
     }
 }
 
@@ -119,6 +133,53 @@ impl Sketch {
         self.0.clamp_to_reach_in::<Fast>(x, y)
     }
 }
+
+/// The numbers a page computes for one arm, with the functions of one [`Trig`], as a trait
+/// object: a page can start on [`FAST`] and switch to [`EXACT`] once the code of the correctly
+/// rounded functions is loaded, without holding that code itself.
+pub trait Kinematics {
+    /// [`Arm::fk`].
+    fn fk(&self, arm: &Arm, q1: f64, q2: f64) -> (f64, f64);
+    /// [`Arm::elbow`].
+    fn elbow(&self, arm: &Arm, q1: f64) -> (f64, f64);
+    /// [`Arm::ik`].
+    fn ik(&self, arm: &Arm, x: f64, y: f64, elbow: Elbow) -> Option<(f64, f64)>;
+    /// [`Arm::clamp_to_reach`].
+    fn clamp_to_reach(&self, arm: &Arm, x: f64, y: f64) -> (f64, f64, bool);
+    /// [`Arm::report`].
+    fn report(&self, arm: &Arm, q1: f64, q2: f64) -> PoseReport;
+    /// Whether these are the [`Exact`] functions.
+    fn exact(&self) -> bool;
+}
+
+/// [`Kinematics`] with the functions of `T`.
+pub struct KinematicsIn<T>(std::marker::PhantomData<T>);
+
+impl<T: Trig + 'static> Kinematics for KinematicsIn<T> {
+    fn fk(&self, arm: &Arm, q1: f64, q2: f64) -> (f64, f64) {
+        arm.fk_in::<T>(q1, q2)
+    }
+    fn elbow(&self, arm: &Arm, q1: f64) -> (f64, f64) {
+        arm.elbow_in::<T>(q1)
+    }
+    fn ik(&self, arm: &Arm, x: f64, y: f64, elbow: Elbow) -> Option<(f64, f64)> {
+        arm.ik_in::<T>(x, y, elbow)
+    }
+    fn clamp_to_reach(&self, arm: &Arm, x: f64, y: f64) -> (f64, f64, bool) {
+        arm.clamp_to_reach_in::<T>(x, y)
+    }
+    fn report(&self, arm: &Arm, q1: f64, q2: f64) -> PoseReport {
+        arm.report_in::<T>(q1, q2)
+    }
+    fn exact(&self) -> bool {
+        std::any::TypeId::of::<T>() == std::any::TypeId::of::<Exact>()
+    }
+}
+
+/// The platform's functions: within an ulp or two of [`EXACT`].
+pub const FAST: &dyn Kinematics = &KinematicsIn::<Fast>(std::marker::PhantomData);
+/// The correctly rounded functions: the numbers of the recipes and numpy.
+pub const EXACT: &dyn Kinematics = &KinematicsIn::<Exact>(std::marker::PhantomData);
 
 /// Which of the two IK solutions to take.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -265,8 +326,13 @@ impl Arm {
 
     /// Geometric Jacobian d(x, y)/d(q1, q2).
     pub fn jacobian(&self, q1: f64, q2: f64) -> Mat2 {
-        let (s1, c1) = crate::math::sincos(q1);
-        let (s12, c12) = crate::math::sincos(q1 + q2);
+        self.jacobian_in::<Exact>(q1, q2)
+    }
+
+    /// [`Arm::jacobian`] with the functions of `T`.
+    pub fn jacobian_in<T: Trig>(&self, q1: f64, q2: f64) -> Mat2 {
+        let (s1, c1) = T::sincos(q1);
+        let (s12, c12) = T::sincos(q1 + q2);
         [
             [-self.l1 * s1 - self.l2 * s12, -self.l2 * s12],
             [self.l1 * c1 + self.l2 * c12, self.l2 * c12],
@@ -275,17 +341,22 @@ impl Arm {
 
     /// All the numbers of one pose.
     pub fn report(&self, q1: f64, q2: f64) -> PoseReport {
-        let (x, y) = self.fk(q1, q2);
-        let j = self.jacobian(q1, q2);
+        self.report_in::<Exact>(q1, q2)
+    }
+
+    /// [`Arm::report`] with the functions of `T`.
+    pub fn report_in<T: Trig>(&self, q1: f64, q2: f64) -> PoseReport {
+        let (x, y) = self.fk_in::<T>(q1, q2);
+        let j = self.jacobian_in::<T>(q1, q2);
         PoseReport {
             q1,
             q2,
             x,
             y,
             jacobian: j,
-            det_j: det(&j),
-            manipulability: manipulability(&j),
-            ellipse: ellipse(&j),
+            det_j: det_in::<T>(&j),
+            manipulability: manipulability_in::<T>(&j),
+            ellipse: ellipse_in::<T>(&j),
         }
     }
 
@@ -303,6 +374,11 @@ impl Arm {
 /// numpy's `det = sign * exp(sum(log|u_ii|))` (numpy computes `det` from `slogdet`). A zero
 /// pivot (singular matrix) gives `0.0`, as numpy does.
 pub fn det(m: &Mat2) -> f64 {
+    det_in::<Exact>(m)
+}
+
+/// [`det`] with the functions of `T`.
+pub fn det_in<T: Trig>(m: &Mat2) -> f64 {
     let [[a, b], [c, d]] = *m;
     let (p, q, r, s, mut sign) = if c.abs() > a.abs() {
         (c, d, a, b, -1.0)
@@ -327,9 +403,9 @@ pub fn det(m: &Mat2) -> f64 {
         if u < 0.0 {
             sign = -sign;
         }
-        log_det += crate::math::log(u.abs());
+        log_det += T::ln(u.abs());
     }
-    sign * crate::math::exp(log_det)
+    sign * T::exp(log_det)
 }
 
 /// `J Jᵀ` as numpy's `J @ J.T` gets it (OpenBLAS `dgemm`: the first product, then the second
@@ -345,7 +421,12 @@ pub fn j_jt_numpy(j: &Mat2) -> Mat2 {
 /// Yoshikawa manipulability `sqrt(max(0, det(J Jᵀ)))`, as the jacobian-2r recipe computes it
 /// (numpy product and determinant; Python's `max(0.0, nan)` is `0.0`, as here).
 pub fn manipulability(j: &Mat2) -> f64 {
-    let d = det(&j_jt_numpy(j));
+    manipulability_in::<Exact>(j)
+}
+
+/// [`manipulability`] with the functions of `T`.
+pub fn manipulability_in<T: Trig>(j: &Mat2) -> f64 {
+    let d = det_in::<T>(&j_jt_numpy(j));
     if d > 0.0 {
         d.sqrt()
     } else {
@@ -448,10 +529,15 @@ fn dlas2(f: f64, g: f64, h: f64) -> (f64, f64) {
 /// The manipulability ellipse of `J`: singular values (as [`singular_values`]) and the major
 /// axis direction.
 pub fn ellipse(m: &Mat2) -> Ellipse {
+    ellipse_in::<Exact>(m)
+}
+
+/// [`ellipse`] with the functions of `T`.
+pub fn ellipse_in<T: Trig>(m: &Mat2) -> Ellipse {
     let (sigma_min, sigma_max) = singular_values(m);
     // Major axis: eigenvector of J Jᵀ for the larger eigenvalue.
     let [[p, pq], [_, s]] = j_jt_numpy(m);
-    let angle_rad = 0.5 * crate::math::atan2(2.0 * pq, p - s);
+    let angle_rad = 0.5 * T::atan2(2.0 * pq, p - s);
     Ellipse {
         sigma_max,
         sigma_min,
@@ -511,6 +597,41 @@ mod tests {
             let (ex2, ey2, exact_moved) = Arm::DEFAULT.clamp_to_reach(far.0, far.1);
             assert_eq!(moved, exact_moved);
             assert!((cx - ex2).abs() < 1e-15 && (cy - ey2).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn kinematics_objects_compute_the_arm_with_their_functions() {
+        assert!(EXACT.exact() && !FAST.exact());
+        let arm = Arm { l1: 0.3, l2: 0.17 };
+        for i in 0..300 {
+            let (q1, q2) = (-3.0 + 0.02 * i as f64, 2.8 - 0.019 * i as f64);
+            // The exact object is the arm's own functions, bit for bit.
+            assert_eq!(EXACT.report(&arm, q1, q2), arm.report(q1, q2));
+            assert_eq!(EXACT.fk(&arm, q1, q2), arm.fk(q1, q2));
+            assert_eq!(EXACT.elbow(&arm, q1), arm.elbow(q1));
+            let (x, y) = arm.fk(q1, q2);
+            for elbow in [Elbow::Down, Elbow::Up] {
+                assert_eq!(EXACT.ik(&arm, x, y, elbow), arm.ik(x, y, elbow));
+            }
+            assert_eq!(
+                EXACT.clamp_to_reach(&arm, 2.0 * x, 2.0 * y),
+                arm.clamp_to_reach(2.0 * x, 2.0 * y)
+            );
+            // The platform's agree to well below what the readouts show (six digits).
+            let (e, f) = (arm.report(q1, q2), FAST.report(&arm, q1, q2));
+            let near = |a: f64, b: f64| (a - b).abs() <= 1e-12 * (1.0 + a.abs());
+            assert!(near(e.x, f.x) && near(e.y, f.y), "fk at {q1}, {q2}");
+            assert!(near(e.det_j, f.det_j), "det at {q1}, {q2}");
+            assert!(near(e.manipulability, f.manipulability), "w at {q1}, {q2}");
+            assert!(near(e.ellipse.sigma_max, f.ellipse.sigma_max));
+            assert!(near(e.ellipse.sigma_min, f.ellipse.sigma_min));
+            assert!((e.ellipse.angle_rad - f.ellipse.angle_rad).abs() < 1e-9);
+            for r in 0..2 {
+                for c in 0..2 {
+                    assert!(near(e.jacobian[r][c], f.jacobian[r][c]));
+                }
+            }
         }
     }
 

@@ -174,6 +174,26 @@ for (const lang of ['en', 'ja']) {
       // Still unreachable: Retry fails again, visibly.
       await line.locator('[data-action="retry"]').click();
       await line.and(page.locator('[data-state="failed"]')).waitFor({ timeout: 15000 });
+      // A click by the tip moves it there by IK with the platform's functions meanwhile.
+      await page.setViewportSize({ width: 1280, height: 900 });
+      await canvas.scrollIntoViewIfNeeded();
+      const spot = await canvas.evaluate((c) => ({
+        x: +c.dataset.tipX + 6, y: +c.dataset.tipY + 4, origin: c.dataset.originX, ppm: c.dataset.pxPerM,
+      }));
+      const click = async () => {
+        const r = await canvas.evaluate((c) => { const b = c.getBoundingClientRect(); return { x: b.left, y: b.top }; });
+        await page.mouse.click(r.x + spot.x, r.y + spot.y);
+      };
+      const pose = () => page.evaluate(() => {
+        const q = new URLSearchParams(location.hash.split('?')[1]);
+        return `${q.get('q1')} ${q.get('q2')}`;
+      });
+      const before = await pose();
+      await click();
+      await page.waitForFunction((b) => {
+        const q = new URLSearchParams(location.hash.split('?')[1]);
+        return `${q.get('q1')} ${q.get('q2')}` !== b;
+      }, before);
       // Reachable again: Retry brings the heatmap, the plot, the form and the downloads,
       // drawn from the pose as it is now.
       await context.unroute(pattern);
@@ -181,6 +201,17 @@ for (const lang of ['en', 'ja']) {
       await line.waitFor({ state: 'detached', timeout: 15000 });
       const heatmap = page.locator('[data-testid="ik-2r-heatmap"][data-marker-q1]');
       await heatmap.waitFor({ timeout: 15000 });
+      // The pose is solved again with the correctly rounded functions: the same click now
+      // gives the same pose, to the last digit of the link.
+      await page.waitForTimeout(400);
+      const resolved = await pose();
+      assert.deepEqual(
+        await canvas.evaluate((c) => [c.dataset.originX, c.dataset.pxPerM]), [spot.origin, spot.ppm],
+        'the arm view kept its scale',
+      );
+      await click();
+      await page.waitForTimeout(400);
+      assert.equal(await pose(), resolved);
       const shown = Number(await page.locator('[data-readout="q1"]').innerText());
       assert.ok(Math.abs(Number(await heatmap.getAttribute('data-marker-q1')) - shown) < 1e-5, 'the marker is at the pose');
       assert.ok(await page.locator('[data-testid="ik-2r-plot"]').isVisible());

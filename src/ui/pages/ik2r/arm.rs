@@ -25,7 +25,7 @@ use web_sys::{
 use super::markup::role;
 use super::panels::Panels;
 use super::workspace::WorkspaceImage;
-use crate::planar2r::{Arm, Elbow, PoseReport};
+use crate::planar2r::{Elbow, PoseReport, Sketch};
 use crate::recipes::ik_workspace::{Workspace, WorkspaceParams};
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom::{show, Listener};
@@ -82,7 +82,7 @@ pub(super) enum ArmControl {
 /// The part of the arm a pointer of `kind` grabs at canvas point `at`: a finger grabs only
 /// the arm itself (elsewhere it scrolls); a mouse or pen grabs the nearest part.
 pub(super) fn grab_at(xf: &ViewXf, st: &State, at: DVec2, kind: PointerKind) -> Option<Grab> {
-    let arm = st.params.arm();
+    let arm = Sketch(st.params.arm());
     if kind == PointerKind::Touch {
         part_at(xf, &arm, st.q1, st.q2, at, true)
     } else {
@@ -241,7 +241,8 @@ impl ArmView {
 
     /// A mouse at `at` (or gone): the part under it; returns whether the highlight changed.
     pub fn hover(&mut self, st: &State, at: Option<DVec2>) -> bool {
-        let part = at.and_then(|p| part_at(&self.xf, &st.params.arm(), st.q1, st.q2, p, false));
+        let part =
+            at.and_then(|p| part_at(&self.xf, &Sketch(st.params.arm()), st.q1, st.q2, p, false));
         if part == self.hover {
             return false;
         }
@@ -502,7 +503,7 @@ impl ArmView {
     ) {
         let layer = self.canvas.top();
         let xf = &self.xf;
-        let arm = st.params.arm();
+        let arm = Sketch(st.params.arm());
         let s = ink.line;
         layer.begin();
         let ctx = &layer.ctx;
@@ -633,7 +634,7 @@ impl ArmView {
 fn draw_ghost(
     ctx: &CanvasRenderingContext2d,
     xf: &ViewXf,
-    arm: &Arm,
+    arm: &Sketch,
     (g1, g2): (f64, f64),
     s: f64,
 ) {

@@ -35,7 +35,7 @@ mod readouts;
 mod sweep;
 mod workspace;
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
 
 use wasm_bindgen::prelude::*;
@@ -47,7 +47,7 @@ use self::arm::{ArmControl, ArmHost};
 use self::bench::BenchHost;
 use self::keys::KeyAction;
 use self::panels::{Panels, PanelsHost};
-use crate::planar2r::{wrap_angle, Elbow};
+use crate::planar2r::{wrap_angle, Elbow, Kinematics};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::{DragEvent, PointerKind};
@@ -84,6 +84,10 @@ pub(crate) struct Page {
     readouts: RefCell<readouts::Readouts>,
     /// The second stage (heatmap, sweep plot, form, downloads), once its chunk is in.
     panels: RefCell<Option<Rc<dyn Panels>>>,
+    /// The tip target of the last IK, while the pose it gave came from the platform's
+    /// functions (before the second stage brings the correctly rounded ones): the pose is
+    /// solved again from it when they arrive.
+    fast_tip: Cell<Option<(f64, f64)>>,
     /// The page's frame loop (its scope's).
     frames: FrameLoop,
     /// Listeners, timers, the frame loop and the resize observer; dropped on unmount.
@@ -118,6 +122,7 @@ fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
             arm: RefCell::new(arm),
             readouts: RefCell::new(readouts),
             panels: RefCell::new(None),
+            fast_tip: Cell::new(None),
             root,
             state: RefCell::new(state),
             ghost: RefCell::new(None),
@@ -220,9 +225,33 @@ impl Page {
         self.panels.borrow().clone()
     }
 
-    /// The second stage is in (built into the page's markup): it draws from the state now.
+    /// The arm's numbers: the platform's functions until the second stage brings the
+    /// correctly rounded ones (what the recipes and the exports compute).
+    fn kin(&self) -> &'static dyn Kinematics {
+        self.panels
+            .borrow()
+            .as_ref()
+            .map_or(crate::planar2r::FAST, |p| p.kinematics())
+    }
+
+    /// The second stage is in (built into the page's markup): a pose the first stage solved
+    /// is solved again with the correctly rounded functions, and it draws from the state now.
     fn panels_arrived(&self, panels: Rc<dyn Panels>) {
         *self.panels.borrow_mut() = Some(panels.clone());
+        if let Some((x, y)) = self.fast_tip.take() {
+            let solved = {
+                let mut st = self.state.borrow_mut();
+                let solved = self.kin().ik(&st.params.arm(), x, y, st.elbow);
+                if let Some((q1, q2)) = solved {
+                    st.q1 = q1;
+                    st.q2 = q2;
+                }
+                solved.is_some()
+            };
+            if solved {
+                self.schedule_url();
+            }
+        }
         let st = *self.state.borrow();
         panels.relocalize(&st, *self.ghost.borrow());
         panels.update_commands(&st);
@@ -278,7 +307,7 @@ impl Page {
     fn draw_frame(&self) {
         let st = *self.state.borrow();
         let ink = Ink::current();
-        let report = st.params.arm().report(st.q1, st.q2);
+        let report = self.kin().report(&st.params.arm(), st.q1, st.q2);
         let ghost = *self.ghost.borrow();
         let dragging = self.dragging();
         let pinned = {
@@ -305,7 +334,7 @@ impl Page {
         self.url_notice.relocalize();
         let st = *self.state.borrow();
         self.arm.borrow().relocalize(&st);
-        let report = st.params.arm().report(st.q1, st.q2);
+        let report = self.kin().report(&st.params.arm(), st.q1, st.q2);
         let pinned = self.arm.borrow().clamp_shown();
         self.readouts.borrow().relocalize(&report, pinned);
         if let Some(panels) = self.panels() {
@@ -345,6 +374,7 @@ impl Page {
             st.q2 = q2;
             st.elbow = elbow_of(q2);
         }
+        self.fast_tip.set(None);
         self.arm.borrow().sync_controls(&self.state.borrow());
         self.pose_changed();
     }
@@ -356,11 +386,13 @@ impl Page {
             let st = self.state.borrow();
             (st.params.arm(), st.elbow)
         };
-        let (cx, cy, pinned) = arm.clamp_to_reach(x, y);
-        if let Some((q1, q2)) = arm.ik(cx, cy, elbow) {
+        let kin = self.kin();
+        let (cx, cy, pinned) = kin.clamp_to_reach(&arm, x, y);
+        if let Some((q1, q2)) = kin.ik(&arm, cx, cy, elbow) {
             let mut st = self.state.borrow_mut();
             st.q1 = q1;
             st.q2 = q2;
+            self.fast_tip.set((!kin.exact()).then_some((cx, cy)));
         }
         self.pose_changed();
         pinned
@@ -371,7 +403,7 @@ impl Page {
     fn nudge_tip(&self, dx: f64, dy: f64) {
         let (x, y) = {
             let st = self.state.borrow();
-            st.params.arm().fk(st.q1, st.q2)
+            self.kin().fk(&st.params.arm(), st.q1, st.q2)
         };
         let pinned = self.move_tip(x + dx, y + dy);
         self.arm.borrow_mut().set_clamp(pinned);
@@ -420,13 +452,14 @@ impl Page {
         {
             let mut st = self.state.borrow_mut();
             if elbow != st.elbow {
-                let arm = st.params.arm();
-                let (x, y) = arm.fk(st.q1, st.q2);
-                let (cx, cy, _) = arm.clamp_to_reach(x, y);
+                let (arm, kin) = (st.params.arm(), self.kin());
+                let (x, y) = kin.fk(&arm, st.q1, st.q2);
+                let (cx, cy, _) = kin.clamp_to_reach(&arm, x, y);
                 st.elbow = elbow;
-                if let Some((n1, n2)) = arm.ik(cx, cy, elbow) {
+                if let Some((n1, n2)) = kin.ik(&arm, cx, cy, elbow) {
                     st.q1 = n1;
                     st.q2 = n2;
+                    self.fast_tip.set((!kin.exact()).then_some((cx, cy)));
                 }
             }
         }
@@ -498,6 +531,7 @@ impl Page {
     fn reset(&self) {
         let old = self.state.borrow().params;
         *self.state.borrow_mut() = State::default();
+        self.fast_tip.set(None);
         self.url_notice.set(Vec::new());
         *self.ghost.borrow_mut() = None;
         let st = *self.state.borrow();
@@ -596,7 +630,7 @@ impl Page {
             }
             Grab::Q1 => self.set_pose(world.y.atan2(world.x), st.q2),
             Grab::Q2 => {
-                let (ex, ey) = arm.elbow(st.q1);
+                let (ex, ey) = self.kin().elbow(&arm, st.q1);
                 let q2 = wrap_angle((world.y - ey).atan2(world.x - ex) - st.q1);
                 self.set_pose(st.q1, q2);
             }

@@ -17,7 +17,7 @@ use super::markup::{role, LATER_SELECTOR};
 use super::params::ParamsForm;
 use super::sweep::SweepPlot;
 use super::workspace::{self, WorkspaceImage};
-use crate::planar2r::Arm;
+use crate::planar2r::{Arm, Kinematics};
 use crate::recipes::ik_workspace::{Workspace, WorkspaceParams};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
@@ -28,6 +28,8 @@ use crate::view::ik2r::{Params, State, WsColor};
 
 /// What the page asks of its second stage.
 pub(super) trait Panels {
+    /// The correctly rounded numbers of the arm (the first stage has the platform's).
+    fn kinematics(&self) -> &'static dyn Kinematics;
     /// The canvases changed size.
     fn layout(&self, ink: Ink);
     /// The heatmap's painted grid, axes and legend.
@@ -214,6 +216,10 @@ impl HeatHost for LoadedPanels {
 }
 
 impl Panels for LoadedPanels {
+    fn kinematics(&self) -> &'static dyn Kinematics {
+        crate::planar2r::EXACT
+    }
+
     fn layout(&self, ink: Ink) {
         self.heat.borrow_mut().layout(ink);
         self.sweep.borrow_mut().resized();
