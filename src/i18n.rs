@@ -156,14 +156,14 @@ pub const ERROR_SOURCES: &[(Lang, &str, &str)] = &[
 ];
 
 /// The files every page needs before its first frame: the shell (with the lesson bar), the
-/// page table's titles and descriptions, the kit, the kernels' errors and the recipes' texts. A page
-/// names the rest it needs in its `page!` line (its own file, the signal pages' shared one).
+/// page table's titles and descriptions, the kit and the kernels' errors. A page names the rest
+/// it needs in its `page!` line (its own file, the signal pages' shared one, and the recipes'
+/// texts on every page but the two pilot pages, which show none of them).
 pub const FIRST_FILES: &[&str] = &[
     "shell.ftl",
     "pages.ftl",
     "kit.ftl",
     "errors.ftl",
-    "recipes.ftl",
 ];
 
 /// The Fluent files of `lang`: file name, text.
