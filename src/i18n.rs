@@ -159,12 +159,7 @@ pub const ERROR_SOURCES: &[(Lang, &str, &str)] = &[
 /// page table's titles and descriptions, the kit and the kernels' errors. A page names the rest
 /// it needs in its `page!` line (its own file, the signal pages' shared one, and the recipes'
 /// texts on every page but the two pilot pages, which show none of them).
-pub const FIRST_FILES: &[&str] = &[
-    "shell.ftl",
-    "pages.ftl",
-    "kit.ftl",
-    "errors.ftl",
-];
+pub const FIRST_FILES: &[&str] = &["shell.ftl", "pages.ftl", "kit.ftl", "errors.ftl"];
 
 /// The Fluent files of `lang`: file name, text.
 pub fn locale_files(lang: Lang) -> &'static [(&'static str, &'static str)] {
