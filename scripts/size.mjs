@@ -40,8 +40,8 @@ export const ROUTE_CEILINGS = {
   'trapezoid-profile': 312,
   'traj-resample': 328,
   'rrt-2d': 303,
-  teleop: 366,
-  so101: 383,
+  teleop: 331,
+  so101: 361,
   drills: 322,
   lesson: 251,
 };

@@ -220,3 +220,5 @@ teleop-legend-release = release
 teleop-legend-first-failure = first failure
 teleop-legend-now = step shown
 teleop-files-unloaded = The part of this page that writes and reads session files could not be loaded (offline, or the server did not answer). Your session is kept; check the connection, then download or open again.
+pilot-restore-loading = Loading the part of this page that reads your stored session… The session is safe in this browser.
+pilot-restore-failed = The part of this page that reads your stored session could not be loaded: the network is not reachable. The session stays stored in this browser. Check the connection, then try again.

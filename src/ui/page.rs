@@ -43,6 +43,9 @@ pub enum ShellRequest {
     Remount,
     /// Projector mode on or off (a lesson being presented turns it on).
     Projector(bool),
+    /// The mounted page, which waited for a chunk before it was built, is built (or says that
+    /// the chunk could not be fetched): the route is settled.
+    Settled,
 }
 
 /// What the shell lends a page: the page table and a way to ask the shell for something.
@@ -112,6 +115,11 @@ pub trait Page: 'static {
     /// then calls `preventDefault`).
     fn on_key(&self, _event: &KeyboardEvent) -> bool {
         false
+    }
+    /// Whether the page is built and answering input (`false` while it waits for a chunk;
+    /// it then asks for [`ShellRequest::Settled`] once it is built).
+    fn settled(&self) -> bool {
+        true
     }
 }
 

@@ -579,6 +579,7 @@ fn perform(request: ShellRequest) -> Result<(), JsValue> {
         ShellRequest::Remount => mount_route(&router::current_route()),
         ShellRequest::Projector(on) if ctx::projector() != on => set_projector(on),
         ShellRequest::Projector(_) => Ok(()),
+        ShellRequest::Settled => mark_ready(),
     }
 }
 
@@ -752,7 +753,9 @@ fn loaded(
         Ok(mount) => {
             dom::clear(&main);
             mount_page(def, mount, &main, query)?;
-            mark_ready()?;
+            if with_page(|page| page.settled()).unwrap_or(true) {
+                mark_ready()?;
+            }
             let pending: Vec<ShellRequest> = ROUTING.with(|routing| routing.pending.take());
             perform_all(pending)
         }

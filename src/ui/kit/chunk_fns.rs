@@ -25,6 +25,14 @@ impl<F: Copy> Default for ChunkFns<F> {
 }
 
 impl<F: Copy + 'static> ChunkFns<F> {
+    /// Functions already here (the page was built once their chunk had come).
+    pub fn ready(fns: F) -> Self {
+        ChunkFns {
+            fns: Cell::new(Some(fns)),
+            said_failed: Cell::new(false),
+        }
+    }
+
     /// Runs `then` on `page` with the functions: at once if they are here, else once `load`
     /// has brought them, if the page (`me`) is still there. If the fetch fails and `say` is
     /// set, `show_failed(page, true)`; once functions come after such a failure,

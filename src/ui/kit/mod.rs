@@ -23,7 +23,8 @@
 //!   language/projector/resize, the plot with its drags, cursor and PNG).
 //! - [`pilot_session`]: the Robot Pilot pages' repeatability table, storage-full warning and
 //!   saved-files opener; [`chunk_fns`]: functions of a wasm chunk a page fetches once mounted
-//!   and uses on demand (their session files).
+//!   and uses on demand (their session files); [`late_page`]: a page built only once a chunk
+//!   it needs has come (a pilot page whose stored session needs the code that reads it).
 //! - [`store`]: a page's work in localStorage: unreadable text moved aside, refused saves
 //!   reported.
 //! - [`input_file`]: a file the user opens or drops, decoded as the CLI decodes it.
@@ -42,6 +43,7 @@ pub mod frame;
 pub mod heatmap;
 pub mod input_file;
 pub mod keymap;
+pub mod late_page;
 pub mod message_line;
 pub mod orbit;
 pub mod page_root;

@@ -39,6 +39,7 @@ use crate::ui::kit::bench_log::push_ms;
 use crate::ui::kit::chunk_fns::ChunkFns;
 use crate::ui::kit::drag::DragEvent;
 use crate::ui::kit::frame::FrameLoop;
+use crate::ui::kit::late_page::{LatePage, LateTexts};
 use crate::ui::kit::pilot_session::{clear_files, read_files, EPISODE_CSVS};
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::review::Review;
@@ -125,8 +126,15 @@ fn run_loader(slot: &RefCell<Option<SessionLoader<Episode>>>) -> LoadStep {
     }
 }
 
-/// The SO-101 page.
-pub struct So101Page(Rc<Inner>);
+/// The SO-101 page: built at once, or, when the browser holds a stored session, once the
+/// files' chunk (which reads it) is here.
+pub struct So101Page(LatePage<Rc<Inner>>);
+
+/// The line above the page while it waits for the code that reads the stored session.
+const RESTORE_TEXTS: LateTexts = LateTexts {
+    loading: "pilot-restore-loading",
+    failed: "pilot-restore-failed",
+};
 
 fn iso_now() -> String {
     js_sys::Date::new_0()
@@ -141,18 +149,80 @@ fn find<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
 
 impl Page for So101Page {
     fn mount(ctx: MountCtx) -> Result<So101Page, JsValue> {
+        let stored = dom::storage_get(STORE_KEY).is_some() || dom::storage_get(FIRST_KEY).is_some();
+        if !stored {
+            return Ok(So101Page(LatePage::built(Inner::mount(&ctx, None)?)));
+        }
+        let root = ctx.root.clone();
+        root.set_inner_html(&markup::page());
+        dom::relocalize(&root)?;
+        let late = LatePage::after(&root, ctx.shell, RESTORE_TEXTS, files::load, move |f| {
+            Inner::mount(&ctx, Some(f))
+        })?;
+        Ok(So101Page(late))
+    }
+
+    fn settled(&self) -> bool {
+        self.0.is_built()
+    }
+
+    fn relocalize(&self) {
+        self.0.relocalize(|p| {
+            p.show_all();
+            if let Some(v) = p.views.borrow().as_ref() {
+                v.relocalize();
+            }
+        });
+    }
+
+    fn set_projector(&self, _on: bool) {
+        self.0.with(|p| {
+            if let Some(v) = p.views.borrow().as_ref() {
+                v.relayout();
+            }
+            p.review.fit();
+            p.draw_replay();
+        });
+    }
+
+    fn shortcuts(&self) -> Vec<Shortcut> {
+        let mut keys = markup::KEYS.to_vec();
+        keys.extend_from_slice(crate::ui::kit::orbit::KEYS);
+        keys.extend_from_slice(crate::ui::kit::keymap::STEPPER);
+        keys
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        if event.code() == "KeyL" {
+            return false;
+        }
+        self.0.with(|p| p.key_down(event, false)).unwrap_or(false)
+    }
+}
+
+impl Drop for So101Page {
+    fn drop(&mut self) {
+        self.0.with(|p| p.save());
+    }
+}
+
+impl Inner {
+    /// Builds the page under `ctx.root`; `files` (the files' chunk) reads the stored sessions
+    /// (`None`: none is stored, and the chunk is fetched now).
+    fn mount(ctx: &MountCtx, files: Option<files::Files>) -> Result<Rc<Inner>, JsValue> {
         let root = ctx.root.clone();
         root.set_inner_html(&markup::page());
         dom::relocalize(&root)?;
         // A stored session is simulated again in slices after the first paint (the page's
         // session meanwhile is the stored one's pilot, device and module without episodes).
-        let loader = dom::storage_get(STORE_KEY).and_then(|t| SessionLoader::<Episode>::new(&t));
+        let restore = files.map(|f| f.restore);
+        let loader = restore.and_then(|read| dom::storage_get(STORE_KEY).and_then(|t| read(&t)));
         let session = loader.as_ref().map_or_else(
             || Session::new("pilot", InputDevice::Keyboard, &iso_now()),
             |l| l.session().clone(),
         );
         let first_loader =
-            dom::storage_get(FIRST_KEY).and_then(|t| SessionLoader::<Episode>::new(&t));
+            restore.and_then(|read| dom::storage_get(FIRST_KEY).and_then(|t| read(&t)));
         let config = apply_settings(&SceneConfig::default_for(false), &ctx.query);
         let practice = Practice::new(session, config)
             .ok_or_else(|| JsValue::from_str("so101: the default scene is refused"))?;
@@ -193,7 +263,7 @@ impl Page for So101Page {
             first_loader: RefCell::new(first_loader),
             load_timer: RefCell::new(None),
             restored,
-            files: ChunkFns::default(),
+            files: files.map_or_else(ChunkFns::default, ChunkFns::ready),
         });
         let me = inner.me.clone();
         let views = Views::new(&root, &shared, move |e, tool| {
@@ -213,46 +283,9 @@ impl Page for So101Page {
         // Fetched now, so that a download need not wait; a failure is said only when the
         // pilot asks for a file.
         inner.with_files(false, |_, _| {});
-        Ok(So101Page(inner))
+        Ok(inner)
     }
 
-    fn relocalize(&self) {
-        self.0.show_all();
-        if let Some(v) = self.0.views.borrow().as_ref() {
-            v.relocalize();
-        }
-    }
-
-    fn set_projector(&self, _on: bool) {
-        if let Some(v) = self.0.views.borrow().as_ref() {
-            v.relayout();
-        }
-        self.0.review.fit();
-        self.0.draw_replay();
-    }
-
-    fn shortcuts(&self) -> Vec<Shortcut> {
-        let mut keys = markup::KEYS.to_vec();
-        keys.extend_from_slice(crate::ui::kit::orbit::KEYS);
-        keys.extend_from_slice(crate::ui::kit::keymap::STEPPER);
-        keys
-    }
-
-    fn on_key(&self, event: &KeyboardEvent) -> bool {
-        if event.code() == "KeyL" {
-            return false;
-        }
-        self.0.key_down(event, false)
-    }
-}
-
-impl Drop for So101Page {
-    fn drop(&mut self) {
-        self.0.save();
-    }
-}
-
-impl Inner {
     fn install(&self) -> Result<(), JsValue> {
         let mut scope = self.scope.borrow_mut();
         let me = &self.me;

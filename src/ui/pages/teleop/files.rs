@@ -2,9 +2,12 @@
 //! every episode's CSV, in slices; the episodes table at once) and read back from what the
 //! pilot opens: a wasm chunk of their own, so that the page is live before they arrive. The
 //! page fetches them once it is mounted; a download or an open waits for them if they are
-//! still on their way.
+//! still on their way. The chunk also reads the session stored in the browser: a page with
+//! one stored is built once the chunk is here (`crate::ui::kit::late_page`).
 
-use crate::teleop::session::{episode_file_name, Session, SessionError, EVIDENCE_NAME};
+use crate::teleop::session::{
+    episode_file_name, Session, SessionError, SessionLoader, EVIDENCE_NAME,
+};
 use crate::ui::page::SplitLoaderError;
 use crate::view::teleop_export::ExportJob;
 
@@ -45,6 +48,8 @@ impl FileJob for ExportJob {
 pub type Job = fn(&str, &Session, &str) -> Option<Box<dyn FileJob>>;
 /// The session that saved files make, or what is wrong with them.
 pub type Read = fn(&[(String, String)]) -> Result<Session, SessionError>;
+/// The stored session's text read, ready to be simulated again (`None`: not a stored session).
+pub type Restore = fn(&str) -> Option<SessionLoader>;
 
 /// Writing and reading the session's files.
 #[derive(Clone, Copy)]
@@ -53,6 +58,7 @@ pub struct Files {
     /// `teleop_episodes.csv` of the session.
     pub episodes_csv: fn(&Session) -> String,
     pub read: Read,
+    pub restore: Restore,
 }
 
 /// The job writing `file` of `session` (`None`: no such file).
@@ -72,6 +78,7 @@ const FILES: Files = Files {
     job: job_of,
     episodes_csv: Session::episodes_csv,
     read: Session::from_files,
+    restore: SessionLoader::new,
 };
 
 /// The files' chunk.

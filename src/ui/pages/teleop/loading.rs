@@ -16,8 +16,14 @@ use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 
 use super::bench;
+use super::files::Restore;
 use super::markup::role;
 use super::sessions::{iso_now, new_session, FIRST_KEY, STORE_KEY, UNREADABLE_KEY};
+
+/// Whether the browser holds a stored session (the page then waits for the code reading it).
+pub fn any_stored() -> bool {
+    dom::storage_get(STORE_KEY).is_some() || dom::storage_get(FIRST_KEY).is_some()
+}
 
 /// Longest slice of work simulating stored sessions again, ms (then the tab paints and
 /// takes input before the next).
@@ -62,8 +68,8 @@ struct Loading {
 }
 
 impl Loading {
-    fn new(stored: Option<String>, first: Option<SessionLoader>) -> Loading {
-        let session = stored.as_deref().and_then(SessionLoader::new);
+    fn new(stored: Option<String>, first: Option<SessionLoader>, read: Restore) -> Loading {
+        let session = stored.as_deref().and_then(read);
         let interim = session.as_ref().map(|l| {
             let mut s = l.session().clone();
             s.episodes.clear();
@@ -172,15 +178,20 @@ pub struct Loader {
 }
 
 impl Loader {
-    /// Reads the stored sessions under `root` and simulates them for one slice: the sessions
-    /// to show at once (the stored ones when that was enough, else the stored session's
-    /// pilot, device and module without episodes while the rest is simulated in slices).
-    pub fn start(root: &Element) -> Result<(Rc<Loader>, Loaded), JsValue> {
+    /// Reads the stored sessions with `read` (`None`: none is stored) and simulates them for
+    /// one slice: the sessions to show at once (the stored ones when that was enough, else
+    /// the stored session's pilot, device and module without episodes while the rest is
+    /// simulated in slices). `root` holds the progress line.
+    pub fn start(root: &Element, read: Option<Restore>) -> Result<(Rc<Loader>, Loaded), JsValue> {
         let line = role(root, "loading")?;
-        let mut loading = Loading::new(
-            dom::storage_get(STORE_KEY),
-            dom::storage_get(FIRST_KEY).and_then(|t| SessionLoader::new(&t)),
-        );
+        let mut loading = match read {
+            Some(read) => Loading::new(
+                dom::storage_get(STORE_KEY),
+                dom::storage_get(FIRST_KEY).and_then(|t| read(&t)),
+                read,
+            ),
+            None => Loading::new(None, None, |_| None),
+        };
         let started_ms = now_ms();
         let loaded = loading.run_until(started_ms + LOAD_SLICE_MS);
         bench::record_load(now_ms() - started_ms);

@@ -43,6 +43,7 @@ use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, Poin
 use crate::teleop::session::{episode_file_name, InputDevice, Module};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::chunk_fns::ChunkFns;
+use crate::ui::kit::late_page::{LatePage, LateTexts};
 use crate::ui::kit::pilot_session::{open_error_text, StorageWarning};
 use crate::ui::kit::review::{Review, SharedReplay};
 use crate::ui::kit::scope::{FrameLoop, Scope};
@@ -93,18 +94,77 @@ struct Inner {
     scope: RefCell<Scope>,
 }
 
-/// The Robot Pilot page.
-pub struct TeleopPage(Rc<Inner>);
+/// The Robot Pilot page: built at once, or, when the browser holds a stored session, once
+/// the files' chunk (which reads it) is here.
+pub struct TeleopPage(LatePage<Rc<Inner>>);
+
+/// The line above the page while it waits for the code that reads the stored session.
+const RESTORE_TEXTS: LateTexts = LateTexts {
+    loading: "pilot-restore-loading",
+    failed: "pilot-restore-failed",
+};
 
 impl Page for TeleopPage {
     fn mount(ctx: MountCtx) -> Result<TeleopPage, JsValue> {
+        if !loading::any_stored() {
+            return Ok(TeleopPage(LatePage::built(Inner::mount(&ctx, None)?)));
+        }
+        let root = ctx.root.clone();
+        root.set_inner_html(&markup::page());
+        dom::relocalize(&root)?;
+        let late = LatePage::after(&root, ctx.shell, RESTORE_TEXTS, files::load, move |f| {
+            Inner::mount(&ctx, Some(f))
+        })?;
+        Ok(TeleopPage(late))
+    }
+
+    fn settled(&self) -> bool {
+        self.0.is_built()
+    }
+
+    fn relocalize(&self) {
+        self.0.relocalize(|p| p.relocalize());
+    }
+
+    fn set_projector(&self, _on: bool) {
+        self.0.with(|p| p.relayout());
+    }
+
+    fn shortcuts(&self) -> Vec<Shortcut> {
+        let mut keys = markup::KEYS.to_vec();
+        keys.extend_from_slice(crate::ui::kit::keymap::STEPPER);
+        keys
+    }
+
+    fn on_key(&self, event: &KeyboardEvent) -> bool {
+        // The page body has focus (the canvas's own listener takes keys first): L stays
+        // the shell's language key here.
+        if event.code() == "KeyL" {
+            return false;
+        }
+        self.0
+            .with(|p| !p.loader.is_loading() && p.key_down(event))
+            .unwrap_or(false)
+    }
+}
+
+impl Drop for TeleopPage {
+    fn drop(&mut self) {
+        self.0.with(|p| p.save());
+    }
+}
+
+impl Inner {
+    /// Builds the page under `ctx.root`; `files` (the files' chunk) reads the stored sessions
+    /// (`None`: none is stored, and the chunk is fetched now).
+    fn mount(ctx: &MountCtx, files: Option<files::Files>) -> Result<Rc<Inner>, JsValue> {
         let root = ctx.root.clone();
         root.set_inner_html(&markup::page());
         dom::relocalize(&root)?;
         // The stored sessions are simulated again: at once when that is short, else in
         // slices after the first paint (the page inert meanwhile, its session the stored
         // one's pilot, device and module without episodes).
-        let (loader, loaded) = Loader::start(&root)?;
+        let (loader, loaded) = Loader::start(&root, files.map(|f| f.restore))?;
         let (form, settings) = SettingsForm::mount(
             &root,
             &ctx.query,
@@ -142,7 +202,7 @@ impl Page for TeleopPage {
             review,
             replay: RefCell::new(None),
             exports,
-            files: ChunkFns::default(),
+            files: files.map_or_else(ChunkFns::default, ChunkFns::ready),
             loader,
             frame: RefCell::new(None),
             scope: RefCell::new(Scope::new()),
@@ -161,40 +221,9 @@ impl Page for TeleopPage {
         // Fetched now, so that a download need not wait; a failure is said only when the
         // pilot asks for a file.
         inner.with_files(false, |_, _| {});
-        Ok(TeleopPage(inner))
+        Ok(inner)
     }
 
-    fn relocalize(&self) {
-        self.0.relocalize();
-    }
-
-    fn set_projector(&self, _on: bool) {
-        self.0.relayout();
-    }
-
-    fn shortcuts(&self) -> Vec<Shortcut> {
-        let mut keys = markup::KEYS.to_vec();
-        keys.extend_from_slice(crate::ui::kit::keymap::STEPPER);
-        keys
-    }
-
-    fn on_key(&self, event: &KeyboardEvent) -> bool {
-        // The page body has focus (the canvas's own listener takes keys first): L stays
-        // the shell's language key here.
-        if event.code() == "KeyL" || self.0.loader.is_loading() {
-            return false;
-        }
-        self.0.key_down(event)
-    }
-}
-
-impl Drop for TeleopPage {
-    fn drop(&mut self) {
-        self.0.save();
-    }
-}
-
-impl Inner {
     /// Listeners: buttons, keys, pointer, form, files, storage on pagehide, resizes.
     fn install(&self) -> Result<(), JsValue> {
         let mut scope = self.scope.borrow_mut();
