@@ -55,7 +55,9 @@ fn build(root: &Element, shell: ShellLink) -> Result<Rc<HomeArm>, JsValue> {
     status.set_attribute("data-testid", "home-more")?;
     show_loading(&status)?;
     append(root, &status)?;
-    load_cards(root.clone(), status, shell);
+    // Fetched once the arm is painted, so that the first frame does not wait on its requests.
+    let root = root.clone();
+    crate::ui::schedule::after_paint(move || load_cards(root, status, shell))?;
     Ok(arm)
 }
 

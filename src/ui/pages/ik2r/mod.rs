@@ -135,8 +135,10 @@ fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
     page.relocalize_texts();
     page.invalidate(dirty::ALL);
     panels_status::show_loading(&more)?;
+    // Fetched once the arm is painted, so that the first frame does not wait on its requests.
     let host: Rc<dyn PanelsHost> = page.clone();
-    panels_status::load(Rc::downgrade(&host), more);
+    let host = Rc::downgrade(&host);
+    crate::ui::schedule::after_paint(move || panels_status::load(host, more))?;
     Ok(page)
 }
 

@@ -280,9 +280,15 @@ impl Inner {
         if inner.loader.borrow().is_none() {
             inner.show_module();
         }
-        // Fetched now, so that a download need not wait; a failure is said only when the
-        // pilot asks for a file.
-        inner.with_files(false, |_, _| {});
+        // Fetched once the page is painted, so that a download need not wait and the first
+        // frame does not wait on its requests; a failure is said only when the pilot asks for
+        // a file.
+        let me = inner.me.clone();
+        crate::ui::schedule::after_paint(move || {
+            if let Some(p) = me.upgrade() {
+                p.with_files(false, |_, _| {});
+            }
+        })?;
         Ok(inner)
     }
 

@@ -245,15 +245,20 @@ impl Page for UmeyamaPage {
         let more: Element = inner.root.role("more")?;
         more_status::show_loading(&more)?;
         let me = Rc::downgrade(&inner);
-        more_status::load(
-            (*inner.root).clone(),
-            more,
-            Rc::new(move |built| {
-                if let Some(page) = me.upgrade() {
-                    page.more_arrived(built);
-                }
-            }),
-        );
+        let root = (*inner.root).clone();
+        // Fetched once the page is painted, so that the first frame does not wait on its
+        // requests.
+        crate::ui::schedule::after_paint(move || {
+            more_status::load(
+                root,
+                more,
+                Rc::new(move |built| {
+                    if let Some(page) = me.upgrade() {
+                        page.more_arrived(built);
+                    }
+                }),
+            )
+        })?;
         Ok(UmeyamaPage(inner))
     }
 
