@@ -9,8 +9,8 @@
 # wasm-split-cli cuts it at the split points (`page!` lines of the page table, each language's
 # strings, the worker's kernels) into the main module (the shell) and chunks, wasm-bindgen
 # makes the glue of the main module, and scripts/split-link.mjs packs each split point's
-# chunks into one file (`pkg/pack_<split>.bin`) and writes `pkg/routes.json` and
-# `www/routes.js` (which pack each route and language needs first).
+# chunks into one file (`pkg/pack_<split>.bin`) and writes `pkg/routes.json` and, at the head
+# of `www/boot.js`, the table of which pack each route and language needs first.
 # dist/www/app.css is one stylesheet: www/app.css, then every stylesheet that sits beside the
 # Rust of a page or widget (src/ui/**/*.css, in path order); nothing injects <style> at run time,
 # so the app runs under the strict Content-Security-Policy of index.html.

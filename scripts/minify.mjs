@@ -64,14 +64,13 @@ const main = async () => {
 };
 
 /** The scripts of dist/ and whether each is an ES module (its exports kept) or a classic
- * script (its top-level names kept: `routes.js` defines what `boot.js` reads). */
+ * script (its top-level names kept). */
 const SCRIPTS = [
   ['pkg/bsv_playground.js', true],
   ['pkg/__wasm_split.js', true],
   ['www/bootstrap.js', true],
   ['www/worker.js', true],
   ['www/boot.js', false],
-  ['www/routes.js', false],
 ];
 
 if (import.meta.url === `file://${process.argv[1]}`) await main();

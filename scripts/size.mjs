@@ -54,7 +54,6 @@ export function routeCeiling(route) {
 export const SHELL_FILES = [
   'index.html',
   'www/app.css',
-  'www/routes.js',
   'www/boot.js',
   'www/bootstrap.js',
   'pkg/bsv_playground.js',

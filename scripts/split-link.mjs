@@ -14,8 +14,8 @@
 // (scripts/sw-build.mjs), and the app's size counts them once (scripts/size.mjs).
 //
 // Writes into PKG: `chunks/`, the packs, `__wasm_split.js`, and `routes.json` (route id → its
-// split, its pack and the Fluent files it needs); into WWW: `routes.js`, the table for
-// `www/boot.js`, which preloads the visitor's page and its strings in the visitor's language
+// split, its pack and the Fluent files it needs); into WWW's `boot.js`, at its head, the table
+// it reads: it preloads the visitor's page and its strings in the visitor's language
 // before the wasm asks for them.
 //
 //   node scripts/split-link.mjs SPLIT_DIR PKG_DIR WWW_DIR
@@ -324,10 +324,14 @@ function main() {
   };
   const splitsOf = Object.fromEntries(Object.entries(routes).map(([r, { split }]) => [r, split]));
   writeFileSync(join(pkgDir, 'routes.json'), JSON.stringify({ ...table, splits: splitsOf }, null, 2) + '\n');
+  // The table goes at the head of boot.js: one script, fetched with the wasm, instead of two
+  // run one after the other before the route's pack can be asked for.
+  const boot = join(wwwDir, 'boot.js');
   writeFileSync(
-    join(wwwDir, 'routes.js'),
+    boot,
     '// Written by scripts/split-link.mjs: which pack and which strings each route needs first.\n' +
-      `self.bsvRoutes = ${JSON.stringify(table)};\n`,
+      `self.bsvRoutes = ${JSON.stringify(table)};\n` +
+      readFileSync(boot, 'utf8'),
   );
   const total = Object.values(packs).reduce((sum, p) => sum + p.bytes, 0);
   console.log(`split-link: ${written.size} modules, ${Object.keys(packs).length} packs (${total} B)`);

@@ -66,9 +66,9 @@
   }
 
   // Preloads the pack of the page the address names and the Fluent files it needs in the
-  // visitor's language (www/routes.js, written by the build), so that they arrive with the
-  // wasm instead of after it. The language is chosen as the app chooses it: `?lang=`, the saved choice, the
-  // browser's languages, English.
+  // visitor's language (the route table at the head of this file in dist/, written by the
+  // build), so that they arrive with the wasm instead of after it. The language is chosen as
+  // the app chooses it: `?lang=`, the saved choice, the browser's languages, English.
   var table = window.bsvRoutes;
   if (table && location.protocol !== 'file:') {
     var hash = location.hash.replace(/^#\/?/, '');
