@@ -1004,3 +1004,60 @@ test('storage full while recording: the recording goes on, the page says it is n
     await close();
   }
 });
+
+for (const lang of ['en', 'ja']) {
+  test(`a stored session waits for the code that reads it; if it cannot be fetched a line says so with Retry, the session kept (${lang})`, async () => {
+    const { page, context, errors, close } = await open(`#/teleop?lang=${lang}`);
+    try {
+      await preflightThenRecord(page);
+      await recordEpisode(page, 'w', 200);
+      const stored = await page.evaluate(() => localStorage.getItem('bsv.teleop.session'));
+      assert.ok(stored, 'the episode is stored');
+      // The code that reads the stored session (the files' chunk) cannot be fetched.
+      const pattern = /\/pkg\/(pack_teleop_files\.bin|chunks\/split_teleop_files\.wasm)$/;
+      await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
+      await page.reload();
+      await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+      const line = page.locator('[data-testid="late-page"]');
+      await line.and(page.locator('[data-state="failed"]')).waitFor({ timeout: 15000 });
+      assert.equal(await line.getAttribute('role'), 'alert');
+      assert.match(await line.innerText(), lang === 'en' ? /reads your stored session could not be loaded/ : /読み込めませんでした/);
+      // The page waits, inert, and nothing is lost or overwritten.
+      assert.ok(await canvas(page).evaluate((c) => c.closest('[inert]') !== null), 'the page is inert while it waits');
+      assert.equal(await page.locator('#app-main').getAttribute('aria-busy'), 'true');
+      await page.keyboard.press('w');
+      assert.equal(await page.evaluate(() => localStorage.getItem('bsv.teleop.session')), stored);
+      await page.setViewportSize({ width: 390, height: 844 });
+      await page.screenshot({ path: join(OUT, `teleop-restore-failed-${lang}-390.png`) });
+      // Still unreachable: Retry fails again, visibly; then reachable: the session comes back.
+      await line.locator('[data-action="retry"]').click();
+      await line.and(page.locator('[data-state="failed"]')).waitFor({ timeout: 15000 });
+      await context.unroute(pattern);
+      await line.locator('[data-action="retry"]').click();
+      await page.locator('[data-tele="restored"]').waitFor({ state: 'visible', timeout: 15000 });
+      assert.equal(await line.count(), 0, 'the line goes with the waiting page');
+      assert.equal(await page.locator('#app-main').getAttribute('aria-busy'), null);
+      assert.equal(await page.locator('[data-tele="episodes"] tbody tr').count(), 1);
+      assert.equal(await canvas(page).evaluate((c) => c.closest('[inert]') === null), true);
+      assert.deepEqual(errors.filter((e) => !/Failed to load resource/.test(e)), []);
+    } finally {
+      await close();
+    }
+  });
+}
+
+test('a stored session is read before the page is live: the restored episodes are shown once it is', async () => {
+  const { page, close, errors } = await open();
+  try {
+    await preflightThenRecord(page);
+    await recordEpisode(page, 'w', 200);
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    // Settled means built: the stored session is already on screen.
+    assert.ok(await page.locator('[data-tele="restored"]').isVisible());
+    assert.equal(await page.locator('[data-testid="late-page"]').count(), 0);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
