@@ -265,6 +265,14 @@ impl Inner {
             restored,
             files: files.map_or_else(ChunkFns::default, ChunkFns::ready),
         });
+        inner.write_settings();
+        // The first slice of a stored session's load, then everything shown (`show_all`).
+        inner.load_slice();
+        if inner.loader.borrow().is_none() {
+            inner.show_module();
+        }
+        // The views last: sizing their canvases lays the page out, once, with all of the
+        // above in it (the first frame then lays out only what it changes).
         let me = inner.me.clone();
         let views = Views::new(&root, &shared, move |e, tool| {
             if let Some(p) = me.upgrade() {
@@ -274,12 +282,6 @@ impl Inner {
         *inner.views.borrow_mut() = Some(views);
         *inner.shared.borrow_mut() = Some(shared);
         inner.install()?;
-        inner.write_settings();
-        inner.show_all();
-        inner.load_slice();
-        if inner.loader.borrow().is_none() {
-            inner.show_module();
-        }
         // Fetched once the page is painted, so that a download need not wait and the first
         // frame does not wait on its requests; a failure is said only when the pilot asks for
         // a file.
