@@ -131,6 +131,16 @@ pub fn after_paint(f: impl FnOnce() + 'static) -> Result<(), JsValue> {
     Ok(())
 }
 
+/// Runs `f` on the page `me` once the browser has painted, if the page is still there.
+pub fn after_paint_for<P: 'static>(me: &std::rc::Weak<P>, f: fn(&P)) -> Result<(), JsValue> {
+    let me = me.clone();
+    after_paint(move || {
+        if let Some(page) = me.upgrade() {
+            f(&page);
+        }
+    })
+}
+
 thread_local! {
     /// The window's `performance`, looked up once: pages read the clock several times a
     /// frame, and each lookup would be two calls into JS.

@@ -12,7 +12,7 @@ use std::rc::{Rc, Weak};
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
-use crate::ui::page::{ShellLink, ShellRequest, SplitLoaderError};
+use crate::ui::page::{MountCtx, ShellLink, ShellRequest, SplitLoaderError};
 use crate::ui::{dom, page_frame};
 
 /// The line's messages: while the chunk loads, and when it could not be fetched.
@@ -47,6 +47,33 @@ impl<P: 'static> LatePage<P> {
             built: Rc::new(RefCell::new(Some(page))),
             waiting: None,
         }
+    }
+
+    /// Mounts a page under `ctx.root`: built at once by `build(ctx, None)` when the chunk is
+    /// not `needed` (fetching it is then the page's business), else with what `load` brings,
+    /// `markup` standing inert meanwhile ([`LatePage::after`]).
+    pub fn mount<F, L, Fut>(
+        ctx: MountCtx,
+        needed: bool,
+        markup: &str,
+        texts: LateTexts,
+        load: L,
+        build: fn(&MountCtx, Option<F>) -> Result<P, JsValue>,
+    ) -> Result<LatePage<P>, JsValue>
+    where
+        F: 'static,
+        L: Fn() -> Fut + 'static,
+        Fut: Future<Output = Result<F, SplitLoaderError>> + 'static,
+    {
+        if !needed {
+            return Ok(LatePage::built(build(&ctx, None)?));
+        }
+        let root = ctx.root.clone();
+        root.set_inner_html(markup);
+        dom::relocalize(&root)?;
+        LatePage::after(&root, ctx.shell, texts, load, move |fns| {
+            build(&ctx, Some(fns))
+        })
     }
 
     /// `root`'s markup shown inert under the loading line while `load` fetches the chunk;

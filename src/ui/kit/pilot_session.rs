@@ -4,7 +4,8 @@
 //! `data-testid="storage-warning"`, `role=alert`: the browser refused to store it, its storage
 //! full or turned off; the recording goes on in memory and the warning offers the evidence, the
 //! episodes table and every episode's CSV at once, `data-save-now`), and the saved-files opener
-//! ([`read_files`], [`open_error_text`]).
+//! ([`read_files`], [`open_error_text`]), and the line of a page that waits for the code
+//! reading its stored session ([`RESTORE_TEXTS`]).
 
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
@@ -14,8 +15,16 @@ use wasm_bindgen::JsCast;
 use web_sys::Element;
 
 use crate::teleop::session::{category_from_id, compare, SessionError, Summary, EVIDENCE_NAME};
+use crate::ui::kit::late_page::LateTexts;
 use crate::ui::{ctx, dom};
 use crate::view::teleop::comparison_cell;
+
+/// The line above a pilot page while it waits for the code that reads its stored session
+/// (`crate::ui::kit::late_page`).
+pub const RESTORE_TEXTS: LateTexts = LateTexts {
+    loading: "pilot-restore-loading",
+    failed: "pilot-restore-failed",
+};
 
 /// `data-save-now` of the button that downloads every episode's CSV.
 pub const EPISODE_CSVS: &str = "episode-csvs";

@@ -39,8 +39,8 @@ use crate::ui::kit::bench_log::push_ms;
 use crate::ui::kit::chunk_fns::ChunkFns;
 use crate::ui::kit::drag::DragEvent;
 use crate::ui::kit::frame::FrameLoop;
-use crate::ui::kit::late_page::{LatePage, LateTexts};
-use crate::ui::kit::pilot_session::{clear_files, read_files, EPISODE_CSVS};
+use crate::ui::kit::late_page::LatePage;
+use crate::ui::kit::pilot_session::{clear_files, read_files, EPISODE_CSVS, RESTORE_TEXTS};
 use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::review::Review;
 use crate::ui::kit::scope::Scope;
@@ -130,12 +130,6 @@ fn run_loader(slot: &RefCell<Option<SessionLoader<Episode>>>) -> LoadStep {
 /// files' chunk (which reads it) is here.
 pub struct So101Page(LatePage<Rc<Inner>>);
 
-/// The line above the page while it waits for the code that reads the stored session.
-const RESTORE_TEXTS: LateTexts = LateTexts {
-    loading: "pilot-restore-loading",
-    failed: "pilot-restore-failed",
-};
-
 fn iso_now() -> String {
     js_sys::Date::new_0()
         .to_iso_string()
@@ -150,16 +144,8 @@ fn find<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
 impl Page for So101Page {
     fn mount(ctx: MountCtx) -> Result<So101Page, JsValue> {
         let stored = dom::storage_get(STORE_KEY).is_some() || dom::storage_get(FIRST_KEY).is_some();
-        if !stored {
-            return Ok(So101Page(LatePage::built(Inner::mount(&ctx, None)?)));
-        }
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
-        let late = LatePage::after(&root, ctx.shell, RESTORE_TEXTS, files::load, move |f| {
-            Inner::mount(&ctx, Some(f))
-        })?;
-        Ok(So101Page(late))
+        let page = markup::page();
+        LatePage::mount(ctx, stored, &page, RESTORE_TEXTS, files::load, Inner::mount).map(So101Page)
     }
 
     fn settled(&self) -> bool {
@@ -285,12 +271,7 @@ impl Inner {
         // Fetched once the page is painted, so that a download need not wait and the first
         // frame does not wait on its requests; a failure is said only when the pilot asks for
         // a file.
-        let me = inner.me.clone();
-        crate::ui::schedule::after_paint(move || {
-            if let Some(p) = me.upgrade() {
-                p.with_files(false, |_, _| {});
-            }
-        })?;
+        crate::ui::schedule::after_paint_for(&inner.me, |p| p.with_files(false, |_, _| {}))?;
         Ok(inner)
     }
 

@@ -43,8 +43,8 @@ use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, Poin
 use crate::teleop::session::{episode_file_name, InputDevice, Module};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::chunk_fns::ChunkFns;
-use crate::ui::kit::late_page::{LatePage, LateTexts};
-use crate::ui::kit::pilot_session::{open_error_text, StorageWarning};
+use crate::ui::kit::late_page::LatePage;
+use crate::ui::kit::pilot_session::{open_error_text, StorageWarning, RESTORE_TEXTS};
 use crate::ui::kit::review::{Review, SharedReplay};
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::page::{MountCtx, Page, Shortcut};
@@ -98,24 +98,12 @@ struct Inner {
 /// the files' chunk (which reads it) is here.
 pub struct TeleopPage(LatePage<Rc<Inner>>);
 
-/// The line above the page while it waits for the code that reads the stored session.
-const RESTORE_TEXTS: LateTexts = LateTexts {
-    loading: "pilot-restore-loading",
-    failed: "pilot-restore-failed",
-};
-
 impl Page for TeleopPage {
     fn mount(ctx: MountCtx) -> Result<TeleopPage, JsValue> {
-        if !loading::any_stored() {
-            return Ok(TeleopPage(LatePage::built(Inner::mount(&ctx, None)?)));
-        }
-        let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
-        dom::relocalize(&root)?;
-        let late = LatePage::after(&root, ctx.shell, RESTORE_TEXTS, files::load, move |f| {
-            Inner::mount(&ctx, Some(f))
-        })?;
-        Ok(TeleopPage(late))
+        let stored = loading::any_stored();
+        let page = markup::page();
+        LatePage::mount(ctx, stored, &page, RESTORE_TEXTS, files::load, Inner::mount)
+            .map(TeleopPage)
     }
 
     fn settled(&self) -> bool {
@@ -221,12 +209,7 @@ impl Inner {
         // Fetched once the page is painted, so that a download need not wait and the first
         // frame does not wait on its requests; a failure is said only when the pilot asks for
         // a file.
-        let me = inner.me.clone();
-        crate::ui::schedule::after_paint(move || {
-            if let Some(p) = me.upgrade() {
-                p.with_files(false, |_, _| {});
-            }
-        })?;
+        crate::ui::schedule::after_paint_for(&inner.me, |p| p.with_files(false, |_, _| {}))?;
         Ok(inner)
     }
 
