@@ -147,6 +147,9 @@ struct Inner {
     loop_timer: Rc<Timer>,
     view: RefCell<view::PendulumView>,
     plots: RefCell<plots::Plots>,
+    /// Set while the page opens: the plots are first drawn once the pendulum is painted
+    /// (their axes and grids cost more than the pendulum and its readouts).
+    plots_after_paint: Cell<bool>,
     params: RefCell<params::Params>,
     readouts: RefCell<readouts::Readouts>,
     exports: exports::Exports,
@@ -206,6 +209,7 @@ impl Page for PendulumPage {
                 loop_timer,
                 view: RefCell::new(view),
                 plots: RefCell::new(plots),
+                plots_after_paint: Cell::new(true),
                 params: RefCell::new(form),
                 readouts: RefCell::new(readouts),
                 exports,
@@ -225,6 +229,10 @@ impl Page for PendulumPage {
         }
         inner.view.borrow_mut().canvas.fit();
         inner.rebuild(DEFAULT_SPEED)?;
+        crate::ui::schedule::after_paint_for(&inner.me, |p| {
+            p.plots_after_paint.set(false);
+            p.update();
+        })?;
         let h = inner.sim.borrow().params.timestep_s;
         match query.t {
             Some(t) => inner.command(Command::Seek((t / h).round() as u64)),
@@ -612,7 +620,7 @@ impl Inner {
             // Sized on mount and on resizes only (a layout read per frame costs milliseconds).
             self.view.borrow_mut().draw(&sim.tracks, index, ink);
         }
-        {
+        if !self.plots_after_paint.get() {
             let mut plots = self.plots.borrow_mut();
             plots.update(&sim.tracks, index);
             plots.draw(ink);
