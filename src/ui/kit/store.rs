@@ -67,6 +67,15 @@ pub fn set_aside(key: &str, text: &str) {
     }
 }
 
+/// Whether anything is stored under one of `keys` (asked of the storage without copying the
+/// stored text into the wasm).
+pub fn holds_any(keys: &[&str]) -> bool {
+    storage().is_some_and(|s| {
+        keys.iter()
+            .any(|k| Reflect::has(&s, &JsValue::from_str(k)).unwrap_or(false))
+    })
+}
+
 /// The text kept aside for `key`, if any.
 pub fn aside(key: &str) -> Option<String> {
     dom::storage_get(&aside_key(key))

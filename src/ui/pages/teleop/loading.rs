@@ -20,11 +20,6 @@ use super::files::Restore;
 use super::markup::role;
 use super::sessions::{iso_now, new_session, FIRST_KEY, STORE_KEY, UNREADABLE_KEY};
 
-/// Whether the browser holds a stored session (the page then waits for the code reading it).
-pub fn any_stored() -> bool {
-    dom::storage_get(STORE_KEY).is_some() || dom::storage_get(FIRST_KEY).is_some()
-}
-
 /// Longest slice of work simulating stored sessions again, ms (then the tab paints and
 /// takes input before the next).
 const LOAD_SLICE_MS: f64 = 12.0;

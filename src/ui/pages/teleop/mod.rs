@@ -47,6 +47,7 @@ use crate::ui::kit::late_page::LatePage;
 use crate::ui::kit::pilot_session::{open_error_text, StorageWarning, RESTORE_TEXTS};
 use crate::ui::kit::review::{Review, SharedReplay};
 use crate::ui::kit::scope::{FrameLoop, Scope};
+use crate::ui::kit::store;
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
@@ -100,7 +101,7 @@ pub struct TeleopPage(LatePage<Rc<Inner>>);
 
 impl Page for TeleopPage {
     fn mount(ctx: MountCtx) -> Result<TeleopPage, JsValue> {
-        let stored = loading::any_stored();
+        let stored = store::holds_any(&[sessions::STORE_KEY, sessions::FIRST_KEY]);
         let page = markup::page();
         LatePage::mount(ctx, stored, &page, RESTORE_TEXTS, files::load, Inner::mount)
             .map(TeleopPage)
