@@ -9,8 +9,9 @@
 # wasm-split-cli cuts it at the split points (`page!` lines of the page table, each language's
 # strings, the worker's kernels) into the main module (the shell) and chunks, wasm-bindgen
 # makes the glue of the main module, and scripts/split-link.mjs packs each split point's
-# chunks into one file (`pkg/pack_<split>.bin`) and writes `pkg/routes.json` and, at the head
-# of `www/boot.js`, the table of which pack each route and language needs first.
+# chunks into one file (`pkg/pack_<split>.bin`) and writes `pkg/routes.json`; at the head of
+# `www/boot.js` scripts/boot-table.mjs writes the table of which pack each route and language
+# needs first, and the main wasm's size.
 # dist/www/app.css is one stylesheet: www/app.css, then every stylesheet that sits beside the
 # Rust of a page or widget (src/ui/**/*.css, in path order); nothing injects <style> at run time,
 # so the app runs under the strict Content-Security-Policy of index.html.
@@ -20,7 +21,8 @@ export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
 
 profile=--release
 [[ "${1:-}" == "--dev" ]] && profile=--dev
-# BSV_FEATURES=bench builds the app with the bench hooks; DIST_DIR says where (default dist).
+# BSV_FEATURES=bench builds the app with the bench hooks; DIST_DIR says where (default dist);
+# BSV_NAMES=1 keeps the wasm functions' names (for a profiler; larger files).
 features=split${BSV_FEATURES:+,$BSV_FEATURES}
 out=${DIST_DIR:-dist}
 
@@ -37,10 +39,12 @@ rm -rf target/app/split pkg
 wasm-split-cli "target/app/wasm32-unknown-unknown/$built/bsv_playground.wasm" target/app/split \
   --out-name bsv_playground
 mkdir -p pkg
-wasm-bindgen --target web --keep-lld-exports --no-demangle --out-dir pkg --out-name bsv_playground \
+keep=() opt_keep=()
+[[ "${BSV_NAMES:-}" == 1 ]] && keep=(--keep-debug) opt_keep=(-g)
+wasm-bindgen --target web --keep-lld-exports --no-demangle "${keep[@]}" --out-dir pkg --out-name bsv_playground \
   target/app/split/bsv_playground.wasm
 if [[ "$profile" == --release ]]; then
-  wasm-opt -Os --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+  wasm-opt -Os "${opt_keep[@]}" --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
     --enable-mutable-globals --enable-reference-types --enable-multivalue \
     pkg/bsv_playground_bg.wasm -o pkg/bsv_playground_bg.wasm
 fi
@@ -58,7 +62,7 @@ cp -r locales "$out"/locales
   done
 } > "$out"/www/app.css
 cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm "$out"/pkg/
-node scripts/split-link.mjs target/app/split "$out"/pkg "$out"/www
+node scripts/split-link.mjs target/app/split "$out"/pkg
 # wasm-bindgen `inline_js` / `module` snippets, if any crate uses them.
 [[ -d pkg/snippets ]] && cp -r pkg/snippets "$out"/pkg/
 # A release build is minified (the scripts and the stylesheet; scripts/minify.mjs), and the
@@ -67,6 +71,8 @@ if [[ "$profile" == --release ]]; then
   node scripts/minify.mjs "$out"
   node scripts/short-imports.mjs "$out"/pkg/bsv_playground_bg.wasm "$out"/pkg/bsv_playground.js
 fi
+# The route table, and the main wasm's final size, at the head of www/boot.js.
+node scripts/boot-table.mjs "$out"
 # The offline service worker of exactly these files (sw.js; see www/sw.js).
 node scripts/sw-build.mjs "$out"
 

@@ -14,11 +14,10 @@
 // (scripts/sw-build.mjs), and the app's size counts them once (scripts/size.mjs).
 //
 // Writes into PKG: `chunks/`, the packs, `__wasm_split.js`, and `routes.json` (route id → its
-// split, its pack and the Fluent files it needs); into WWW's `boot.js`, at its head, the table
-// it reads: it preloads the visitor's page and its strings in the visitor's language
-// before the wasm asks for them.
+// split, its pack and the Fluent files it needs; scripts/boot-table.mjs puts it at the head of
+// boot.js).
 //
-//   node scripts/split-link.mjs SPLIT_DIR PKG_DIR WWW_DIR
+//   node scripts/split-link.mjs SPLIT_DIR PKG_DIR
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -63,10 +62,14 @@ const FEATURES =
  * by binaryen (no optimisation pass, which could drop what only the table reaches), which keeps
  * only the types the module uses: the splitter gives every chunk the whole program's. */
 export function slim(bytes) {
-  const module = binaryen.readBinary(stripCustomSections(bytes));
+  // BSV_NAMES=1 (a build for profiling; scripts/build-dist.sh) keeps the functions' names.
+  const names = process.env.BSV_NAMES === '1';
+  binaryen.setDebugInfo(names);
+  const module = binaryen.readBinary(names ? bytes : stripCustomSections(bytes));
   try {
     module.setFeatures(FEATURES);
-    const out = stripCustomSections(Buffer.from(module.emitBinary()));
+    const emitted = Buffer.from(module.emitBinary());
+    const out = names ? emitted : stripCustomSections(emitted);
     // Fails the build, not a visitor's page, if the module does not compile.
     new WebAssembly.Module(out);
     return out;
@@ -174,37 +177,69 @@ function progress(split, loaded, total) {
 async function fetchBytes(file, count) {
     const response = await fetch(new URL('./' + file, import.meta.url));
     if (!response.ok) throw new Error(file + ': HTTP ' + response.status);
-    if (!response.body || typeof response.body.getReader !== 'function') {
-        const bytes = new Uint8Array(await response.arrayBuffer());
-        count(bytes.length);
-        return bytes;
-    }
-    const reader = response.body.getReader();
-    const parts = [];
-    let length = 0;
-    for (;;) {
-        const { done, value } = await reader.read();
-        if (done) break;
-        parts.push(value);
-        length += value.length;
-        count(value.length);
-    }
-    const bytes = new Uint8Array(length);
-    let at = 0;
-    for (const part of parts) { bytes.set(part, at); at += part.length; }
+    const bytes = new Uint8Array(await response.arrayBuffer());
+    count(bytes.length);
     return bytes;
 }
-function unpack(bytes) {
-    const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-    if (String.fromCharCode(...bytes.subarray(0, 4)) !== 'BSVP') throw new Error('not a pack');
+// A pack ("BSVP", its module count, then per module its id's length, id, length, bytes; little
+// endian u32s) read as it arrives: each module is compiled as soon as its bytes are in, so that
+// compiling overlaps the download. id → the module's compile (a promise).
+async function fetchPack(file, count) {
+    const response = await fetch(new URL('./' + file, import.meta.url));
+    if (!response.ok) throw new Error(file + ': HTTP ' + response.status);
     const modules = new Map();
-    let at = 8;
-    for (let i = 0, n = view.getUint32(4, true); i < n; i++) {
-        const idLength = view.getUint32(at, true); at += 4;
-        const id = new TextDecoder().decode(bytes.subarray(at, at + idLength)); at += idLength;
-        const length = view.getUint32(at, true); at += 4;
-        modules.set(id, bytes.subarray(at, at + length)); at += length;
+    let buffer = new Uint8Array(0);
+    let at = 0;
+    let left = -1;
+    const take = (n) => {
+        if (buffer.length - at < n) return null;
+        const out = buffer.subarray(at, at + n);
+        at += n;
+        return out;
+    };
+    const u32 = (bytes) => new DataView(bytes.buffer, bytes.byteOffset, 4).getUint32(0, true);
+    // Takes every whole entry from the buffer.
+    const parse = () => {
+        if (left < 0) {
+            const head = take(8);
+            if (!head) return;
+            if (String.fromCharCode(...head.subarray(0, 4)) !== 'BSVP') throw new Error(file + ': not a pack');
+            left = u32(head.subarray(4));
+        }
+        while (left > 0) {
+            const start = at;
+            const idLength = take(4);
+            const id = idLength && take(u32(idLength));
+            const length = id && take(4);
+            const bytes = length && take(u32(length));
+            if (!bytes) { at = start; return; }
+            // compile() copies the bytes before it returns.
+            const compiled = WebAssembly.compile(bytes);
+            compiled.catch(() => {});
+            modules.set(new TextDecoder().decode(id), compiled);
+            left--;
+        }
+    };
+    const add = (chunk) => {
+        count(chunk.length);
+        const rest = buffer.subarray(at);
+        buffer = new Uint8Array(rest.length + chunk.length);
+        buffer.set(rest);
+        buffer.set(chunk, rest.length);
+        at = 0;
+        parse();
+    };
+    if (response.body && typeof response.body.getReader === 'function') {
+        const reader = response.body.getReader();
+        for (;;) {
+            const { done, value } = await reader.read();
+            if (done) break;
+            add(value);
+        }
+    } else {
+        add(new Uint8Array(await response.arrayBuffer()));
     }
+    if (left !== 0 || at !== buffer.length) throw new Error(file + ': the pack is cut short');
     return modules;
 }
 async function fetchModules(split, missing) {
@@ -216,20 +251,21 @@ async function fetchModules(split, missing) {
     let loaded = 0;
     const count = (n) => { loaded += n; progress(split, loaded, total); };
     progress(split, 0, total);
-    if (whole) return unpack(await fetchBytes(pack, count));
-    const fetched = await Promise.all(missing.map((id) => fetchBytes('chunks/' + id + '.wasm', count)));
-    return new Map(missing.map((id, i) => [id, fetched[i]]));
+    if (whole) return fetchPack(pack, count);
+    const compiled = missing.map((id) => fetchBytes('chunks/' + id + '.wasm', count).then((bytes) => WebAssembly.compile(bytes)));
+    await Promise.all(compiled);
+    return new Map(missing.map((id, i) => [id, compiled[i]]));
 }
 function loadSplit(split) {
     return makeLoad(() => {
         const ids = modulesOf(split).map(([id]) => id);
-        const bytes = fetchModules(split, ids.filter((id) => !instantiated.has(id)));
-        bytes.catch(() => {});
+        const compiled = fetchModules(split, ids.filter((id) => !instantiated.has(id)));
+        compiled.catch(() => {});
         return async (imports) => {
-            const fetched = await bytes;
+            const fetched = await compiled;
             for (const [id, module] of fetched) {
                 if (!instantiated.has(id)) {
-                    const done = WebAssembly.instantiate(module, imports);
+                    const done = module.then((m) => WebAssembly.instantiate(m, imports));
                     instantiated.set(id, done);
                     done.catch(() => instantiated.delete(id));
                 }
@@ -265,8 +301,8 @@ export function listOf(name, modules, sizes) {
 }
 
 function main() {
-  const [splitDir, pkgDir, wwwDir] = process.argv.slice(2);
-  if (!wwwDir) throw new Error('usage: node scripts/split-link.mjs SPLIT_DIR PKG_DIR WWW_DIR');
+  const [splitDir, pkgDir] = process.argv.slice(2);
+  if (!pkgDir) throw new Error('usage: node scripts/split-link.mjs SPLIT_DIR PKG_DIR');
   const js = readFileSync(join(splitDir, '__wasm_split.js'), 'utf8');
   const loader = parseLoader(js);
   mkdirSync(join(pkgDir, 'chunks'), { recursive: true });
@@ -324,15 +360,6 @@ function main() {
   };
   const splitsOf = Object.fromEntries(Object.entries(routes).map(([r, { split }]) => [r, split]));
   writeFileSync(join(pkgDir, 'routes.json'), JSON.stringify({ ...table, splits: splitsOf }, null, 2) + '\n');
-  // The table goes at the head of boot.js: one script, fetched with the wasm, instead of two
-  // run one after the other before the route's pack can be asked for.
-  const boot = join(wwwDir, 'boot.js');
-  writeFileSync(
-    boot,
-    '// Written by scripts/split-link.mjs: which pack and which strings each route needs first.\n' +
-      `self.bsvRoutes = ${JSON.stringify(table)};\n` +
-      readFileSync(boot, 'utf8'),
-  );
   const total = Object.values(packs).reduce((sum, p) => sum + p.bytes, 0);
   console.log(`split-link: ${written.size} modules, ${Object.keys(packs).length} packs (${total} B)`);
 }

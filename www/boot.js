@@ -65,10 +65,15 @@
     window.bsvBootError('old-browser');
   }
 
-  // Preloads the pack of the page the address names and the Fluent files it needs in the
-  // visitor's language (the route table at the head of this file in dist/, written by the
-  // build), so that they arrive with the wasm instead of after it. The language is chosen as
-  // the app chooses it: `?lang=`, the saved choice, the browser's languages, English.
+  // Fetches the main wasm (the HTML's preload of it) and preloads the Fluent files the route
+  // needs in the visitor's language at once, and the route's pack once most of the main wasm
+  // is in (the route table at the head of this file in dist/, written by the build). On a slow
+  // network every file in flight shares the bandwidth: asked for together, the main wasm ends
+  // last and the shell is built only after every byte is in. Asked for in this order, the
+  // shell is built while the pack arrives; the pack is asked for one round trip or so before
+  // the main wasm ends (a quarter of it left), so the network never idles. bootstrap.js hands
+  // `bsvMainWasm` (the response's promise) to the glue's init(). The language is chosen as the
+  // app chooses it: `?lang=`, the saved choice, the browser's languages, English.
   var table = window.bsvRoutes;
   if (table && location.protocol !== 'file:') {
     var hash = location.hash.replace(/^#\/?/, '');
@@ -95,16 +100,43 @@
     }
     var preferred = navigator.languages || [navigator.language];
     for (var i = 0; !lang && i < preferred.length; i++) lang = pick(preferred[i]);
-    var files = table.routes[route] ? ['pkg/' + table.routes[route]] : [];
-    var strings = table.strings.first.concat(table.strings.routes[route] || []);
-    for (var k = 0; k < strings.length; k++) files.push('locales/' + (lang || 'en') + '/' + strings[k]);
-    for (var j = 0; j < files.length; j++) {
+    var preload = function (file) {
       var link = document.createElement('link');
       link.rel = 'preload';
       link.as = 'fetch';
       link.crossOrigin = 'anonymous';
-      link.href = files[j];
+      link.href = file;
       document.head.appendChild(link);
+    };
+    var strings = table.strings.first.concat(table.strings.routes[route] || []);
+    for (var k = 0; k < strings.length; k++) preload('locales/' + (lang || 'en') + '/' + strings[k]);
+    var packAsked = false;
+    var askPack = function () {
+      if (!packAsked && table.routes[route]) preload('pkg/' + table.routes[route]);
+      packAsked = true;
+    };
+    if (typeof fetch === 'function' && typeof ReadableStream === 'function') {
+      var wasm = fetch(table.main.file);
+      window.bsvMainWasm = wasm;
+      wasm
+        .then(function (response) {
+          if (!response.ok || !response.body) return askPack();
+          var reader = response.clone().body.getReader();
+          var got = 0;
+          var read = function () {
+            return reader.read().then(function (chunk) {
+              if (chunk.done) return askPack();
+              got += chunk.value.length;
+              if (got < table.main.bytes * 0.75) return read();
+              askPack();
+              return reader.cancel();
+            });
+          };
+          return read();
+        })
+        .then(null, askPack);
+    } else {
+      askPack();
     }
   }
 })();

@@ -4,7 +4,8 @@
 // If loading fails, a bilingual message replaces the "Loading…" line (see index.html).
 try {
   const { default: init, startApp } = await import('../pkg/bsv_playground.js');
-  await init();
+  // www/boot.js has asked for the main wasm already (it watches its progress).
+  await init(window.bsvMainWasm ? { module_or_path: window.bsvMainWasm } : undefined);
   // Marks that tests/bench/firstframe.bench.mjs reads (wasm compiled and instantiated; the
   // shell and the route mounted).
   performance.mark('bsv-wasm-ready');
