@@ -13,7 +13,8 @@
 // The packs only serve first visits: the service worker caches the modules, not the packs
 // (scripts/sw-build.mjs), and the app's size counts them once (scripts/size.mjs).
 //
-// Writes into PKG: `chunks/`, the packs, `__wasm_split.js`, and `routes.json` (route id → its
+// Writes into PKG: `chunks/`, the packs, `__wasm_split.js`, `splits.json` (the modules of each
+// split point, which the loader fetches once a tab's first split point is in), and `routes.json` (route id → its
 // split, its pack and the Fluent files it needs; scripts/boot-table.mjs puts it at the head of
 // boot.js).
 //
@@ -150,24 +151,34 @@ const LOADER = `
 // Each module is instantiated once per tab; a split point's modules come in one request (its
 // pack) when none of them is here yet, else the missing ones each from its file
 // (scripts/split-link.mjs).
-// SIZES[n]: the bytes of chunks/chunk_<n>.wasm; SPLITS[s].chunks: the chunks of split point
-// s as ranges ("19-27,29"), before its own module split_<s> (SPLITS[s].own bytes).
-const SIZES = __SIZES__;
-const SPLITS = __SPLITS__;
+// PACKS[s]: the bytes of split point s's pack (pack_<s>.bin). Which modules each split point
+// needs is in splits.json (SIZES[n]: the bytes of chunks/chunk_<n>.wasm; SPLITS[s].chunks: the
+// chunks of split point s as ranges ("19-27,29"), before its own module split_<s>, SPLITS[s].own
+// bytes): the first split point of a tab needs none of it (every module is missing, and the pack
+// names its modules), so the table is fetched once that first split point is in, not before.
+const PACKS = __PACKS__;
 const instantiated = new Map();
-const listed = new Map();
-function modulesOf(split) {
-    if (!listed.has(split)) {
-        const { chunks, own } = SPLITS[split];
-        const out = [];
-        for (const range of chunks ? chunks.split(',') : []) {
-            const [first, last = first] = range.split('-').map(Number);
-            for (let n = first; n <= last; n++) out.push(['chunk_' + n, SIZES[n]]);
-        }
-        out.push(['split_' + split, own]);
-        listed.set(split, out);
+let table;
+function splitTable() {
+    if (table === undefined) {
+        table = fetch(new URL('./splits.json', import.meta.url)).then((response) => {
+            if (!response.ok) throw new Error('splits.json: HTTP ' + response.status);
+            return response.json();
+        });
+        table.catch(() => { table = undefined; });
     }
-    return listed.get(split);
+    return table;
+}
+async function modulesOf(split) {
+    const { sizes, splits } = await splitTable();
+    const { chunks, own } = splits[split];
+    const out = [];
+    for (const range of chunks ? chunks.split(',') : []) {
+        const [first, last = first] = range.split('-').map(Number);
+        for (let n = first; n <= last; n++) out.push(['chunk_' + n, sizes[n]]);
+    }
+    out.push(['split_' + split, own]);
+    return out;
 }
 function progress(split, loaded, total) {
     if (typeof CustomEvent === 'function' && typeof globalThis.dispatchEvent === 'function') {
@@ -242,27 +253,37 @@ async function fetchPack(file, count) {
     if (left !== 0 || at !== buffer.length) throw new Error(file + ': the pack is cut short');
     return modules;
 }
-async function fetchModules(split, missing) {
-    const { pack, packBytes } = SPLITS[split];
-    const modules = modulesOf(split);
-    // The pack when none of them is here (the service worker makes it from its cached modules).
-    const whole = missing.length === modules.length;
-    const total = whole ? packBytes : missing.reduce((sum, id) => sum + modules.find(([m]) => m === id)[1], 0);
+// The modules of split point \`split\` that are not here yet: { ids: all of its modules,
+// fetched: id → the module's compile }.
+async function fetchModules(split) {
     let loaded = 0;
-    const count = (n) => { loaded += n; progress(split, loaded, total); };
+    const counter = (total) => (n) => { loaded += n; progress(split, loaded, total); };
+    if (instantiated.size === 0) {
+        progress(split, 0, PACKS[split]);
+        const fetched = await fetchPack('pack_' + split + '.bin', counter(PACKS[split]));
+        return { ids: [...fetched.keys()], fetched, first: true };
+    }
+    const modules = await modulesOf(split);
+    const ids = modules.map(([id]) => id);
+    const missing = modules.filter(([id]) => !instantiated.has(id));
+    // The pack when none of them is here (the service worker makes it from its cached modules).
+    if (missing.length === modules.length) {
+        progress(split, 0, PACKS[split]);
+        return { ids, fetched: await fetchPack('pack_' + split + '.bin', counter(PACKS[split])) };
+    }
+    const total = missing.reduce((sum, [, bytes]) => sum + bytes, 0);
+    const count = counter(total);
     progress(split, 0, total);
-    if (whole) return fetchPack(pack, count);
-    const compiled = missing.map((id) => fetchBytes('chunks/' + id + '.wasm', count).then((bytes) => WebAssembly.compile(bytes)));
+    const compiled = missing.map(([id]) => fetchBytes('chunks/' + id + '.wasm', count).then((bytes) => WebAssembly.compile(bytes)));
     await Promise.all(compiled);
-    return new Map(missing.map((id, i) => [id, compiled[i]]));
+    return { ids, fetched: new Map(missing.map(([id], i) => [id, compiled[i]])) };
 }
 function loadSplit(split) {
     return makeLoad(() => {
-        const ids = modulesOf(split).map(([id]) => id);
-        const compiled = fetchModules(split, ids.filter((id) => !instantiated.has(id)));
+        const compiled = fetchModules(split);
         compiled.catch(() => {});
         return async (imports) => {
-            const fetched = await compiled;
+            const { ids, fetched, first } = await compiled;
             for (const [id, module] of fetched) {
                 if (!instantiated.has(id)) {
                     const done = module.then((m) => WebAssembly.instantiate(m, imports));
@@ -271,6 +292,13 @@ function loadSplit(split) {
                 }
             }
             await Promise.all(ids.map((id) => instantiated.get(id)));
+            // The table, for the next split point: asked for once the first one's frame is
+            // painted (in a worker, at once), so that it does not compete with that frame.
+            if (first && typeof requestAnimationFrame === 'function') {
+                requestAnimationFrame(() => setTimeout(() => splitTable().catch(() => {}), 0));
+            } else if (first) {
+                splitTable().catch(() => {});
+            }
         };
     }, []);
 }
@@ -328,7 +356,7 @@ function main() {
     const file = `pack_${name}.bin`;
     writeFileSync(join(pkgDir, file), bytes);
     packs[name] = { file, bytes: bytes.length };
-    splits[name] = { pack: file, packBytes: bytes.length, ...listOf(name, modules, sizes) };
+    splits[name] = listOf(name, modules, sizes);
   }
   const header = loader.header.replace(
     'console.error(e);',
@@ -340,12 +368,13 @@ function main() {
   writeFileSync(
     join(pkgDir, '__wasm_split.js'),
     header +
-      LOADER.replace('__SIZES__', JSON.stringify(Array.from(sizes, (n) => n ?? 0))).replace(
-        '__SPLITS__',
-        JSON.stringify(splits),
-      ) +
+      LOADER.replace('__PACKS__', JSON.stringify(Object.fromEntries(Object.entries(packs).map(([n, p]) => [n, p.bytes])))) +
       exports +
       '\n',
+  );
+  writeFileSync(
+    join(pkgDir, 'splits.json'),
+    JSON.stringify({ sizes: Array.from(sizes, (n) => n ?? 0), splits }) + '\n',
   );
   const routes = routesOfPageTable();
   for (const [route, { split }] of Object.entries(routes)) {
