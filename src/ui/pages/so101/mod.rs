@@ -81,6 +81,8 @@ struct Inner {
     live: Live,
     acc: Cell<Accumulator>,
     last_frame: Cell<Option<f64>>,
+    /// When the session was last stored while flying (from the mount: an untouched page's
+    /// first frame stores nothing; leaving the page stores it).
     last_save: Cell<f64>,
     offer_declined: Cell<bool>,
     frame: RefCell<Option<FrameLoop>>,
@@ -239,7 +241,7 @@ impl Inner {
             live,
             acc: Cell::new(Accumulator::default()),
             last_frame: Cell::new(None),
-            last_save: Cell::new(0.0),
+            last_save: Cell::new(now_ms()),
             offer_declined: Cell::new(false),
             frame: RefCell::new(None),
             scope: RefCell::new(Scope::new()),
