@@ -17,6 +17,7 @@ use std::cell::{Ref, RefCell};
 use std::collections::BTreeSet;
 
 use fluent_bundle::{FluentArgs, FluentBundle, FluentResource, FluentValue};
+use unic_langid::subtags::Language;
 use unic_langid::LanguageIdentifier;
 
 use crate::error::RecipeError;
@@ -442,7 +443,10 @@ impl I18n {
 }
 
 fn new_bundle(lang: Lang) -> FluentBundle<FluentResource> {
-    let langid: LanguageIdentifier = lang.code().parse().unwrap_or_default();
+    // Built from its language subtag, not parsed: the tag parser (and its sorting of variants)
+    // would be in every first load for two fixed tags.
+    let language = Language::from_bytes(lang.code().as_bytes()).unwrap_or_default();
+    let langid = LanguageIdentifier::from_raw_parts_unchecked(language, None, None, None);
     let mut bundle = FluentBundle::new(vec![langid]);
     bundle.set_use_isolating(false);
     bundle
@@ -864,6 +868,19 @@ mod tests {
         );
         assert_eq!(text, "0.12 and 200 m");
         assert!(!text.contains('\u{2068}') && !text.contains('\u{2069}'));
+    }
+
+    #[test]
+    fn plural_categories_follow_each_language() {
+        let source = "n = { $n ->\n    [one] one\n    [few] few\n   *[other] other\n}\n";
+        let i18n = I18n::from_sources(&[(Lang::En, "t.ftl", source), (Lang::Ja, "t.ftl", source)]);
+        let said = |lang, n: usize| i18n.t_args(lang, "n", &[("n", FluentArg::from(n))]);
+        assert_eq!(said(Lang::En, 1), "one");
+        assert_eq!(said(Lang::En, 2), "other");
+        assert_eq!(said(Lang::En, 0), "other");
+        // Japanese has one category: every number is "other".
+        assert_eq!(said(Lang::Ja, 1), "other");
+        assert_eq!(said(Lang::Ja, 3), "other");
     }
 
     #[test]
