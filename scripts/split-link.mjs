@@ -5,11 +5,13 @@
 // module per split point (`page!` lines, the worker's kernels) and many small shared chunks, with a loader (`__wasm_split.js`) that fetches every chunk as a
 // file of its own: about a hundred requests for one page. Here every module is written once,
 // without its name section, as `chunks/<module>.wasm`; each split point's modules (its chunks,
-// then itself) are also written together as one pack, `pack_<split>.bin`; and the loader is
+// then itself; in the pack, itself first) are also written together as one pack,
+// `pack_<split>.bin`; and the loader is
 // rewritten to instantiate each module once per tab and to fetch a split point's missing
-// modules in one request (its pack) when none of them is in yet and no service worker holds
-// the files, else each missing module from its file (from the service worker's cache once it
-// is installed), reporting progress (`bsv-chunk-progress` events: split, loaded, total).
+// modules in one request (its pack) when none of them is in yet, else, with a service worker,
+// in one request for the missing ones (`?only=`, made by the worker from its cached modules),
+// and without one each missing module from its file, reporting progress
+// (`bsv-chunk-progress` events: split, loaded, total).
 // The packs only serve first visits: the service worker caches the modules, not the packs
 // (scripts/sw-build.mjs), and the app's size counts them once (scripts/size.mjs).
 //
@@ -197,7 +199,7 @@ async function fetchBytes(file, count) {
     return bytes;
 }
 // A pack ("BSVP", its module count, then per module its id's length, id, length, bytes; little
-// endian u32s) read as it arrives: \`add(id, compile)\` is told of each module as soon as its bytes
+// endian u32s) read as it arrives: \`add(id, bytes)\` is given each module as soon as its bytes
 // are in, so that compiling (and instantiating) overlaps the download. Returns the pack's ids.
 async function fetchPack(file, count, add) {
     const response = await fetch(new URL('./' + file, import.meta.url));
@@ -230,8 +232,7 @@ async function fetchPack(file, count, add) {
             if (!bytes) { at = start; return; }
             const name = new TextDecoder().decode(id);
             ids.push(name);
-            // compile() copies the bytes before it returns.
-            add(name, WebAssembly.compile(bytes));
+            add(name, bytes);
             left--;
         }
     };
@@ -257,9 +258,11 @@ async function fetchPack(file, count, add) {
     if (left !== 0 || at !== buffer.length) throw new Error(file + ': the pack is cut short');
     return ids;
 }
-// Fetches the modules of split point \`split\` that are not here yet, telling \`add\` of each
-// (its id, its compile); { ids: all of the split point's modules, first: whether it is the
-// tab's first }.
+// Fetches the modules of split point \`split\` that are not here yet, giving \`add\` each one (its
+// id, its bytes or their promise); { ids: all of the split point's modules, first: whether it
+// is the tab's first }. Some of them here already: with a service worker, one request still
+// (\`pack_<split>.bin?only=...\`, which the worker makes from its cached modules; the network's
+// answer, the whole pack, would do too), else one per module.
 async function fetchModules(split, add) {
     let loaded = 0;
     const counter = (total) => (n) => { loaded += n; progress(split, loaded, total); };
@@ -280,25 +283,29 @@ async function fetchModules(split, add) {
     const total = missing.reduce((sum, [, bytes]) => sum + bytes, 0);
     const count = counter(total);
     progress(split, 0, total);
-    const compiled = missing.map(([id]) => {
-        const module = fetchBytes('chunks/' + id + '.wasm', count).then((bytes) => WebAssembly.compile(bytes));
-        add(id, module);
-        return module;
-    });
-    await Promise.all(compiled);
+    if (missing.length > 1 && globalThis.navigator?.serviceWorker?.controller) {
+        await fetchPack('pack_' + split + '.bin?only=' + missing.map(([id]) => id).join(','), count, add);
+        return { ids, first: false };
+    }
+    await Promise.all(missing.map(([id]) => {
+        const bytes = fetchBytes('chunks/' + id + '.wasm', count);
+        add(id, bytes);
+        return bytes;
+    }));
     return { ids, first: false };
 }
-// Each module is instantiated as soon as it is compiled (with the imports the splitter's
-// makeLoad gives at once: the main module's memory, table and shared functions); the split
-// point is in when all of its modules are.
+// Each module is compiled and instantiated as soon as its bytes are in (with the imports the
+// splitter's makeLoad gives at once: the main module's memory, table and shared functions),
+// unless it is here already; the split point is in when all of its modules are.
 function loadSplit(split) {
     return makeLoad(() => {
         let give;
         const imports = new Promise((resolve) => { give = resolve; });
         const mine = new Map();
-        const add = (id, module) => {
-            module.catch(() => {});
+        const add = (id, bytes) => {
             if (instantiated.has(id)) return;
+            // compile() copies the bytes before it returns.
+            const module = Promise.resolve(bytes).then((b) => WebAssembly.compile(b));
             const done = Promise.all([module, imports]).then(([m, i]) => WebAssembly.instantiate(m, i));
             instantiated.set(id, done);
             mine.set(id, done);

@@ -11,7 +11,8 @@
 // - fetch: same-origin GETs come from the cache (navigations get index.html), else the
 //   network. A first-visit pack (`pkg/pack_<split>.bin`, not cached: its modules are) is
 //   made from the cached modules it holds (PACKS), so a second visit fetches a page's code in
-//   one request, as a first visit does, instead of one per module.
+//   one request, as a first visit does, instead of one per module; `?only=` asks for some of
+//   its modules (those a page does not hold yet).
 'use strict';
 
 const BUILD = '__BSV_BUILD__';
@@ -55,10 +56,14 @@ self.addEventListener('fetch', (event) => {
 });
 
 /** The pack `url` names, made from the cached modules (its format: scripts/split-link.mjs),
- * or undefined (not a pack, or a module is not cached). */
+ * or undefined (not a pack, or a module is not cached). With `?only=a,b` (the loader's ask
+ * when some of a split point's modules are in already), of those of its modules only. */
 async function packOf(cache, url) {
-  const names = PACKS[url.pathname.slice(url.pathname.lastIndexOf('/') + 1)];
-  if (!names || !url.pathname.includes('/pkg/')) return undefined;
+  const all = PACKS[url.pathname.slice(url.pathname.lastIndexOf('/') + 1)];
+  if (!all || !url.pathname.includes('/pkg/')) return undefined;
+  const only = url.searchParams.get('only');
+  const wanted = only === null ? null : new Set(only.split(','));
+  const names = wanted ? all.filter((name) => wanted.has(name)) : all;
   const scope = self.registration.scope;
   const found = await Promise.all(names.map((name) => cache.match(new URL(`pkg/chunks/${name}.wasm`, scope))));
   if (found.some((response) => !response)) return undefined;
