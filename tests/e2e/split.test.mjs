@@ -443,24 +443,27 @@ for (const lang of ['en', 'ja']) {
   });
 }
 
-test('on a slow network, going ik-2r → teleop → pendulum shows each page\'s frame and loading line, then the page', async () => {
-  const { page, context, errors, close } = await openApp(server.url, '#/ik-2r');
-  try {
-    await throttle(context, page);
-    for (const [route, canvas] of [['teleop', 'teleop-canvas'], ['pendulum-energy', 'pendulum-energy-canvas']]) {
-      await page.evaluate((r) => { location.hash = `#/${r}`; }, route);
-      const loading = page.locator('[data-testid="page-loading"]');
-      await loading.waitFor({ state: 'visible', timeout: 5000 });
-      assert.equal(await page.locator('[data-testid="page-frame"]').getAttribute('data-page'), route);
-      if (route === 'teleop') await shoot(page, 'split-loading-en-390', { width: 390, height: 844 });
-      await page.locator(`[data-testid="${canvas}"]`).waitFor({ timeout: 60000 });
-      assert.equal(await loading.count(), 0, 'the loading line is gone once the page is in');
+for (const lang of ['en', 'ja']) {
+  test(`on a slow network, going ik-2r → teleop → pendulum shows each page's frame and loading line, then the page (${lang})`, async () => {
+    const { page, context, errors, close } = await openApp(server.url, `#/ik-2r?lang=${lang}`);
+    try {
+      await throttle(context, page);
+      for (const [route, canvas] of [['teleop', 'teleop-canvas'], ['pendulum-energy', 'pendulum-energy-canvas']]) {
+        await page.evaluate((r) => { location.hash = `#/${r}`; }, route);
+        const loading = page.locator('[data-testid="page-loading"]');
+        await loading.waitFor({ state: 'visible', timeout: 5000 });
+        assert.equal(await page.locator('[data-testid="page-frame"]').getAttribute('data-page'), route);
+        assert.match(await loading.innerText(), lang === 'ja' ? /読み込んで/ : /Loading this drill/);
+        if (route === 'teleop') await shoot(page, `split-loading-${lang}-390`, { width: 390, height: 844 });
+        await page.locator(`[data-testid="${canvas}"]`).waitFor({ timeout: 60000 });
+        assert.equal(await loading.count(), 0, 'the loading line is gone once the page is in');
+      }
+      assert.deepEqual(appErrors(errors), []);
+    } finally {
+      await close();
     }
-    assert.deepEqual(appErrors(errors), []);
-  } finally {
-    await close();
-  }
-});
+  });
+}
 
 test('switching to Japanese on #/teleop mid-session keeps the session', async () => {
   const { page, errors, close } = await openApp(server.url, '#/teleop');
