@@ -203,6 +203,10 @@ test('a scripted session: preflight, an episode recorded, labelled, exported; bs
     assert.equal(await page.locator('[data-check="moved"]').getAttribute('data-state'), 'done');
     await page.keyboard.press('r');
     assert.equal(await page.locator('[data-check="reset"]').getAttribute('data-state'), 'done');
+    // The readouts show the reset pose on the next frame.
+    await page
+      .waitForFunction(() => [...document.querySelectorAll('[data-readout="x"]')].every((el) => el.textContent.trim() === '0.1000'), null, { timeout: 3000 })
+      .catch(() => {});
     assert.equal((await shownReadouts(page)).x, '0.1000');
     // Record ten.
     await page.locator('[data-module="record-ten"]').click();
