@@ -2,11 +2,11 @@
 // what each route loads before its first frame.
 //
 // The splitter (wasm-split-cli) cuts the app's wasm into the main module (the shell), one
-// module per split point (`page!` lines, the worker's kernels) and many small shared chunks, with a loader (`__wasm_split.js`) that fetches every chunk as a
-// file of its own: about a hundred requests for one page. Here every module is written once,
-// without its name section, as `chunks/<module>.wasm`; each split point's modules (its chunks,
-// then itself; in the pack, itself first) are also written together as one pack,
-// `pack_<split>.bin`; and the loader is
+// module per split point (`page!` lines, the worker's kernels) and many small shared chunks,
+// with a loader (`__wasm_split.js`) that fetches every chunk as a file of its own: about a
+// hundred requests for one page. Here every module is written once, without its name section,
+// as `chunks/<module>.wasm`; each split point's modules (its chunks, then itself; in the pack,
+// itself first) are also written together as one pack, `pack_<split>.bin`; and the loader is
 // rewritten to instantiate each module once per tab and to fetch a split point's missing
 // modules in one request (its pack) when none of them is in yet, else, with a service worker,
 // in one request for the missing ones (`?only=`, made by the worker from its cached modules),
@@ -16,9 +16,9 @@
 // (scripts/sw-build.mjs), and the app's size counts them once (scripts/size.mjs).
 //
 // Writes into PKG: `chunks/`, the packs, `__wasm_split.js`, `splits.json` (the modules of each
-// split point, which the loader fetches once a tab's first split point is in), and `routes.json` (route id → its
-// split, its pack and the Fluent files it needs; scripts/boot-table.mjs puts it at the head of
-// boot.js).
+// split point, which the loader fetches once a tab's first split point is in), and
+// `routes.json` (route id → its split, its pack and the Fluent files it needs;
+// scripts/boot-table.mjs puts it at the head of boot.js).
 //
 //   node scripts/split-link.mjs SPLIT_DIR PKG_DIR
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -155,8 +155,8 @@ export function firstStrings() {
 
 const LOADER = `
 // Each module is instantiated once per tab; a split point's modules come in one request (its
-// pack) when none of them is here yet, else the missing ones each from its file
-// (scripts/split-link.mjs).
+// pack) when none of them is here yet, else the missing ones in one request made by the
+// service worker (\`?only=\`) or, without one, each from its file (scripts/split-link.mjs).
 // PACKS[s]: the bytes of split point s's pack (pack_<s>.bin). Which modules each split point
 // needs is in splits.json (SIZES[n]: the bytes of chunks/chunk_<n>.wasm; SPLITS[s].chunks: the
 // chunks of split point s as ranges ("19-27,29"), before its own module split_<s>, SPLITS[s].own

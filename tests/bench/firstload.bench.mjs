@@ -6,7 +6,8 @@
 // route is settled (html[data-app-ready]: its page mounted) and the bytes on the wire until
 // then, against the first-load budgets: `#/` and `#/ik-2r` 2.0 s and 250 KB, every other
 // route 2.5 s and 350 KB. Then the second visit: the same route with the service worker
-// installed, the median of as many loads (budget 1.0 s). With FIRSTLOAD_STRICT=1 the exit code is 1 when a budget is missed.
+// installed, the median of as many loads (budget 1.0 s). With FIRSTLOAD_STRICT=1 the exit
+// code is 1 when a budget is missed.
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { browser, closeBrowser, startServer, throttle, watchFirstFrame, DIST } from '../e2e/harness.mjs';

@@ -51,11 +51,11 @@ impl<P: 'static> LatePage<P> {
 
     /// Mounts a page under `ctx.root`: built at once by `build(ctx, None)` when the chunk is
     /// not `needed` (fetching it is then the page's business), else with what `load` brings,
-    /// `markup` standing inert meanwhile ([`LatePage::after`]).
+    /// the page's `markup()` standing inert meanwhile ([`LatePage::after`]).
     pub fn mount<F, L, Fut>(
         ctx: MountCtx,
         needed: bool,
-        markup: &str,
+        markup: fn() -> String,
         texts: LateTexts,
         load: L,
         build: fn(&MountCtx, Option<F>) -> Result<P, JsValue>,
@@ -69,7 +69,7 @@ impl<P: 'static> LatePage<P> {
             return Ok(LatePage::built(build(&ctx, None)?));
         }
         let root = ctx.root.clone();
-        root.set_inner_html(markup);
+        root.set_inner_html(&markup());
         dom::relocalize(&root)?;
         LatePage::after(&root, ctx.shell, texts, load, move |fns| {
             build(&ctx, Some(fns))

@@ -146,8 +146,15 @@ fn find<T: JsCast>(root: &Element, selector: &str) -> Result<T, JsValue> {
 impl Page for So101Page {
     fn mount(ctx: MountCtx) -> Result<So101Page, JsValue> {
         let stored = store::holds_any(&[STORE_KEY, FIRST_KEY]);
-        let page = markup::page();
-        LatePage::mount(ctx, stored, &page, RESTORE_TEXTS, files::load, Inner::mount).map(So101Page)
+        LatePage::mount(
+            ctx,
+            stored,
+            markup::page,
+            RESTORE_TEXTS,
+            files::load,
+            Inner::mount,
+        )
+        .map(So101Page)
     }
 
     fn settled(&self) -> bool {

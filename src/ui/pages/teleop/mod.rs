@@ -102,9 +102,15 @@ pub struct TeleopPage(LatePage<Rc<Inner>>);
 impl Page for TeleopPage {
     fn mount(ctx: MountCtx) -> Result<TeleopPage, JsValue> {
         let stored = store::holds_any(&[sessions::STORE_KEY, sessions::FIRST_KEY]);
-        let page = markup::page();
-        LatePage::mount(ctx, stored, &page, RESTORE_TEXTS, files::load, Inner::mount)
-            .map(TeleopPage)
+        LatePage::mount(
+            ctx,
+            stored,
+            markup::page,
+            RESTORE_TEXTS,
+            files::load,
+            Inner::mount,
+        )
+        .map(TeleopPage)
     }
 
     fn settled(&self) -> bool {
