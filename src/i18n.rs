@@ -313,33 +313,60 @@ impl I18n {
         self.bundle(lang);
     }
 
+    /// Parses one of `lang`'s added files that is not in its bundle yet, if there is one, and
+    /// says whether there are more: a caller that parses files ahead of their use (in the
+    /// browser's idle time) takes them one at a time.
+    pub fn build_next(&self, lang: Lang) -> bool {
+        if !self.has_language(lang) {
+            return false;
+        }
+        let cell = self.cell(lang);
+        if let Ok(mut bundle) = cell.try_borrow_mut() {
+            self.build(lang, bundle.get_or_insert_with(|| new_bundle(lang)), 1);
+        }
+        self.sources
+            .try_borrow()
+            .is_ok_and(|sources| sources.iter().any(|(l, _, _)| *l == lang))
+    }
+
+    fn cell(&self, lang: Lang) -> &RefCell<Option<FluentBundle<FluentResource>>> {
+        match lang {
+            Lang::En => &self.en,
+            Lang::Ja => &self.ja,
+        }
+    }
+
     /// `lang`'s bundle with every file added so far, `None` while none is.
     fn bundle(&self, lang: Lang) -> Option<Ref<'_, FluentBundle<FluentResource>>> {
         if !self.has_language(lang) {
             return None;
         }
-        let cell = match lang {
-            Lang::En => &self.en,
-            Lang::Ja => &self.ja,
-        };
+        let cell = self.cell(lang);
         if let Ok(mut bundle) = cell.try_borrow_mut() {
-            self.build(lang, bundle.get_or_insert_with(|| new_bundle(lang)));
+            self.build(
+                lang,
+                bundle.get_or_insert_with(|| new_bundle(lang)),
+                usize::MAX,
+            );
         }
         Ref::filter_map(cell.try_borrow().ok()?, Option::as_ref).ok()
     }
 
-    /// Adds `lang`'s files not in its bundle yet (taken out of `sources`). A syntax error or a
-    /// duplicate id does not stop the app: the rest of the file loads and the problem becomes
-    /// a warning.
-    fn build(&self, lang: Lang, bundle: &mut FluentBundle<FluentResource>) {
+    /// Adds up to `most` of `lang`'s files not in its bundle yet (taken out of `sources`, in
+    /// the order they were added). A syntax error or a duplicate id does not stop the app: the
+    /// rest of the file loads and the problem becomes a warning.
+    fn build(&self, lang: Lang, bundle: &mut FluentBundle<FluentResource>, most: usize) {
         let files: Vec<(Lang, String, String)> = match self.sources.try_borrow_mut() {
             Ok(mut sources) => {
-                if !sources.iter().any(|(l, _, _)| *l == lang) {
-                    return;
-                }
-                let (mine, rest) = std::mem::take(&mut *sources)
-                    .into_iter()
-                    .partition(|(l, _, _)| *l == lang);
+                let mut taken = 0;
+                let (mine, rest) =
+                    std::mem::take(&mut *sources)
+                        .into_iter()
+                        .partition(|(l, _, _)| {
+                            let take = *l == lang && taken < most;
+                            taken += usize::from(take);
+                            take
+                        });
                 *sources = rest;
                 mine
             }
@@ -508,6 +535,45 @@ mod tests {
         i18n.add_files(Lang::Ja, &[*rrt, *shell]);
         assert!(i18n.has_message(Lang::Ja, "rrt-lede"));
         // A file added twice is added once: no duplicate-id warning.
+        assert!(i18n.take_warnings().is_empty());
+    }
+
+    #[test]
+    fn added_files_are_parsed_one_at_a_time_ahead_of_their_use() {
+        let i18n = I18n::empty();
+        assert!(
+            !i18n.build_next(Lang::Ja),
+            "nothing added: nothing to parse"
+        );
+        let files = locale_files(Lang::Ja);
+        let pick = |name: &str| *files.iter().find(|(n, _)| *n == name).unwrap();
+        i18n.add_files(Lang::En, &[*locale_files(Lang::En).first().unwrap()]);
+        i18n.add_files(
+            Lang::Ja,
+            &[pick("shell.ftl"), pick("rrt.ftl"), pick("pages.ftl")],
+        );
+        let waiting = |lang: Lang| {
+            i18n.sources
+                .borrow()
+                .iter()
+                .filter(|(l, _, _)| *l == lang)
+                .count()
+        };
+        assert!(i18n.build_next(Lang::Ja));
+        assert_eq!(waiting(Lang::Ja), 2);
+        assert!(i18n.build_next(Lang::Ja));
+        assert_eq!(waiting(Lang::Ja), 1);
+        assert!(
+            !i18n.build_next(Lang::Ja),
+            "the last file parsed: none waits"
+        );
+        assert_eq!(waiting(Lang::Ja), 0);
+        assert_eq!(
+            waiting(Lang::En),
+            1,
+            "the other language's file is left to its own use"
+        );
+        assert!(i18n.has_message(Lang::Ja, "rrt-lede"));
         assert!(i18n.take_warnings().is_empty());
     }
 

@@ -1,6 +1,6 @@
 //! The Fluent files of a language, loaded as they are needed: the files every page needs
 //! ([`i18n::FIRST_FILES`]) and the page's own (its `page!` line) before the page is shown,
-//! the rest in the background once it is. The app fetches them beside itself,
+//! and, once it is, the page's files in the other language (parsed in idle time). The app fetches them beside itself,
 //! `locales/<lang>/<file>`: the files of `locales/`, byte for byte (`scripts/build-dist.sh`
 //! copies them; `www/boot.js` preloads the visitor's). A build without the `split` feature
 //! (tests, Node) has every file of both languages in its wasm.
@@ -23,12 +23,6 @@ pub async fn load(lang: Lang, page_files: &[&str]) -> Result<(), JsValue> {
         return Ok(());
     }
     add(lang, &wanted).await
-}
-
-/// Every file of `lang` (the background loading after the first page, so that every page
-/// and a switch of language work offline).
-pub async fn load_all(lang: Lang) -> Result<(), JsValue> {
-    load(lang, i18n::FILE_NAMES).await
 }
 
 /// Without the `split` feature every file is in the wasm.

@@ -107,7 +107,7 @@ pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
 type AddFn = fn(ShellLink, &Route) -> Option<(usize, bool)>;
 
 /// "+ Lesson": a wasm chunk of its own (it reads and writes the lesson file's JSON, which no
-/// page needs before its first frame), fetched on the first click or by the background load.
+/// page needs before its first frame), fetched on the first click.
 #[cfg(feature = "split")]
 #[wasm_split_helpers::wasm_split(lesson_add, fallible)]
 fn adder() -> Result<AddFn, SplitLoaderError> {
@@ -118,11 +118,6 @@ fn adder() -> Result<AddFn, SplitLoaderError> {
 #[cfg(not(feature = "split"))]
 async fn adder() -> Result<AddFn, SplitLoaderError> {
     Ok(add_current_view)
-}
-
-/// Loads the chunk of "+ Lesson" (the shell's background load, so the first click is quick).
-pub(crate) async fn preload() {
-    let _ = adder().await;
 }
 
 /// Appends the view of `route` to the current lesson; the number of steps after it, and

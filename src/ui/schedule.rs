@@ -1,8 +1,8 @@
 //! Deferred work and its clock: a debounced `setTimeout` ([`Timer`]) for recomputes, runs and
 //! URL writes (cheap to restart every frame); [`after_paint`], which runs a callback after the browser has painted the current
 //! DOM (a `requestAnimationFrame` whose callback sets a zero `setTimeout`), so that a
-//! "Running…" state is on screen before a long computation blocks the tab; and [`now_ms`],
-//! the clock pages time their work with.
+//! "Running…" state is on screen before a long computation blocks the tab; [`idle`], which
+//! waits for the browser's idle time; and [`now_ms`], the clock pages time their work with.
 
 use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
@@ -130,6 +130,57 @@ pub fn after_paint(f: impl FnOnce() + 'static) -> Result<(), JsValue> {
     window.request_animation_frame(frame.unchecked_ref())?;
     Ok(())
 }
+
+/// Resolves once the browser has painted what is on the page now ([`after_paint`]).
+pub async fn painted() {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        if after_paint(move || {
+            let _ = resolve.call0(&JsValue::UNDEFINED);
+        })
+        .is_err()
+        {
+            // No window: nothing is painted, nothing waits.
+        }
+    });
+    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+}
+
+/// Resolves in the browser's next idle period (`requestIdleCallback`, at the latest
+/// `IDLE_TIMEOUT_MS` later), or after a short `setTimeout` where there is no such call: work the
+/// visitor did not ask for runs there, a slice at a time, never in a frame's way.
+pub async fn idle() {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        let Some(window) = web_sys::window() else {
+            let _ = resolve.call0(&JsValue::UNDEFINED);
+            return;
+        };
+        let request = js_sys::Reflect::get(&window, &JsValue::from_str("requestIdleCallback"))
+            .ok()
+            .and_then(|f| f.dyn_into::<js_sys::Function>().ok());
+        let asked = match request {
+            Some(request) => {
+                let options = js_sys::Object::new();
+                let _ = js_sys::Reflect::set(
+                    &options,
+                    &JsValue::from_str("timeout"),
+                    &JsValue::from_f64(IDLE_TIMEOUT_MS),
+                );
+                request.call2(&window, &resolve, &options).is_ok()
+            }
+            None => window
+                .set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, 50)
+                .is_ok(),
+        };
+        if !asked {
+            let _ = resolve.call0(&JsValue::UNDEFINED);
+        }
+    });
+    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+}
+
+/// How long idle work waits for an idle period at most (ms): a page that animates every frame
+/// leaves few.
+const IDLE_TIMEOUT_MS: f64 = 3000.0;
 
 /// Runs `f` on the page `me` once the browser has painted, if the page is still there.
 pub fn after_paint_for<P: 'static>(me: &std::rc::Weak<P>, f: fn(&P)) -> Result<(), JsValue> {
