@@ -78,7 +78,11 @@ pub fn append(parent: &Element, child: &Element) -> Result<(), JsValue> {
 pub fn relocalize(root: &Element) -> Result<(), JsValue> {
     for element in matching(root, "[data-i18n]")? {
         if let Some(id) = element.get_attribute("data-i18n") {
-            element.set_text_content(Some(&ctx::t(&id)));
+            let text = ctx::t(&id);
+            // Text that is already shown stays as it is (its node is not replaced).
+            if element.text_content().as_deref() != Some(text.as_str()) {
+                element.set_text_content(Some(&text));
+            }
         }
     }
     for element in matching(root, "[data-i18n-attr]")? {

@@ -167,8 +167,11 @@ pub struct PageDef {
     pub id: &'static str,
     /// Fluent id of its name in the navigation and on its home-page card.
     pub title_id: &'static str,
-    /// Fluent id of its one-line description on the home-page card.
-    pub blurb_id: &'static str,
+    /// The page's head as its markup opens it: its outer element, the elements down to its
+    /// `<h1>` and the paragraph after it (the lede), in the page's own classes and with their
+    /// `data-i18n` ids, closed. The frame shows it while the page's code loads, laid out as the
+    /// page will be; the page keeps those nodes ([`crate::ui::page_frame::fill`]).
+    pub head: &'static str,
     /// Where its link sits in the navigation.
     pub nav: Nav,
     /// The Fluent files it needs beyond [`crate::i18n::FIRST_FILES`] (fetched with its code).
@@ -177,16 +180,16 @@ pub struct PageDef {
     pub load: fn() -> PageLoad,
 }
 
-/// One line of the page table: `page!(chunk, PageType, id, title_id, blurb_id, nav, [files])`
+/// One line of the page table: `page!(chunk, PageType, id, title_id, head, nav, [files])`
 /// registers `PageType` under route `#/<id>` with its code split off into the wasm chunk
-/// `chunk` and the Fluent files it needs beyond the first ones, both fetched on the page's
-/// first visit (or in the background after the first page is shown).
+/// `chunk` and the Fluent files it needs beyond the first ones, both fetched when the page is
+/// first opened.
 macro_rules! page {
-    ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $blurb_id:expr, $nav:expr, [$($file:expr),* $(,)?]) => {
+    ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $head:expr, $nav:expr, [$($file:expr),* $(,)?]) => {
         $crate::ui::page::PageDef {
             id: $id,
             title_id: $title_id,
-            blurb_id: $blurb_id,
+            head: $head,
             nav: $nav,
             strings: &[$($file),*],
             load: $crate::ui::page::page_load!($chunk, $page),

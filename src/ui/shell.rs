@@ -32,6 +32,7 @@ use crate::ui::nav_menu::{self, NavMenu};
 use crate::ui::page::{self, MountCtx, Nav, Page, PageDef, ShellLink, ShellRequest};
 use crate::ui::pages::PAGES;
 use crate::ui::router::{Route, HOME_ID};
+use crate::ui::schedule;
 use crate::ui::section_keys;
 use crate::ui::update_banner;
 use crate::ui::{ctx, dom, overlay, page_frame, router};
@@ -108,21 +109,29 @@ pub(crate) fn start(lang: Lang) -> Result<(), JsValue> {
     Ok(())
 }
 
-/// Once the first page is shown and painted ([`mark_ready`]), the rest of the app in the
-/// background, one part after the other: the other language's strings of this page (so a
-/// switch is immediate), every string of both languages and every page's chunk (so going to a
-/// page shows it at once, and the app works offline after one visit even where no service
-/// worker runs). A part that fails to load is loaded again when it is needed.
-async fn load_the_rest() {
-    let lang = ctx::lang();
-    let _ = lang_files::load(lang.other(), page_strings(routed_def())).await;
-    let _ = lang_files::load_all(lang).await;
-    let _ = lang_files::load_all(lang.other()).await;
-    lesson_bar::preload().await;
-    let _ = overlay_opener().await;
-    for def in PAGES {
-        let _ = (def.load)().await;
+/// Once a page is shown and painted: its strings in the other language, fetched and then
+/// parsed one file per idle slice, so that a switch of language is immediate. Nothing else is
+/// loaded ahead: a page's code and strings come when it is opened (its chunk compiled as its
+/// bytes land), and the service worker caches the rest of the build on its own thread, so the
+/// main thread does no work the visitor did not ask for. A part that fails to load is loaded
+/// again when it is needed.
+async fn warm_other_lang(def: Option<&'static PageDef>) {
+    let other = ctx::lang().other();
+    schedule::idle().await;
+    if lang_files::load(other, page_strings(def)).await.is_err() {
+        return;
     }
+    loop {
+        schedule::idle().await;
+        if !ctx::build_next_file(other) {
+            break;
+        }
+    }
+}
+
+/// [`warm_other_lang`] once what is on the page now is painted.
+fn warm_after_paint(def: Option<&'static PageDef>) -> Result<(), JsValue> {
+    schedule::after_paint(move || wasm_bindgen_futures::spawn_local(warm_other_lang(def)))
 }
 
 /// `?lang=`, else the saved choice, else the browser's languages, else English.
@@ -397,7 +406,7 @@ pub(crate) fn route_changed(def: Option<&'static PageDef>) -> Result<(), JsValue
                 // Measured after the page's first paint: measuring now would force the whole
                 // new page's first layout inside the task that mounts it.
                 let link = link.clone();
-                crate::ui::schedule::after_paint(move || reveal_in_nav(&link))?;
+                schedule::after_paint(move || reveal_in_nav(&link))?;
             } else {
                 link.remove_attribute("aria-current")?;
             }
@@ -493,8 +502,7 @@ fn on_keydown(event: &KeyboardEvent) -> Result<(), JsValue> {
 /// What "?" opens ([`overlay::open`]).
 type OpenOverlay = fn(&[page::Shortcut], &[page::Shortcut]) -> Result<(), JsValue>;
 
-/// The shortcuts overlay: a wasm chunk of its own, fetched on the first "?" or by the
-/// background load.
+/// The shortcuts overlay: a wasm chunk of its own, fetched on the first "?".
 #[cfg(feature = "split")]
 #[wasm_split_helpers::wasm_split(shortcuts_overlay, fallible)]
 fn overlay_opener() -> Result<OpenOverlay, page::SplitLoaderError> {
@@ -507,8 +515,8 @@ async fn overlay_opener() -> Result<OpenOverlay, page::SplitLoaderError> {
     Ok(overlay::open)
 }
 
-/// Opens the shortcuts overlay once its code is here (at once after the background load); if
-/// it cannot be fetched, says so under "?" (the next press tries again).
+/// Opens the shortcuts overlay once its code is here (at once after the first time); if it
+/// cannot be fetched, says so under "?" (the next press tries again).
 fn open_overlay() -> Result<(), JsValue> {
     wasm_bindgen_futures::spawn_local(async {
         let loaded = overlay_opener().await;
@@ -628,7 +636,9 @@ fn mount_route(route: &Route) -> Result<(), JsValue> {
     match def {
         Some(def) => load_page(def, generation, route.page_query())?,
         None => {
+            set_pending(false)?;
             render_not_found(&main)?;
+            warm_after_paint(None)?;
             mark_ready()?;
         }
     }
@@ -662,30 +672,52 @@ fn is_current(generation: u64) -> bool {
     ROUTING.with(|routing| routing.generation.get()) == generation
 }
 
-/// Mounts page `def` from its chunk: in this task if the chunk is in; else shows the page's
-/// frame and its loading line, and mounts when the chunk lands (if the route is still this
-/// one), or shows the failure with a Retry button.
+/// Mounts page `def` from its chunk: in this task if the chunk and its strings are in; else
+/// shows the page's frame and its loading line (once the page's strings are in, so that the
+/// frame's heading and lede are the page's own), and mounts when the chunk lands (if the route
+/// is still this one), or shows the failure with a Retry button.
 fn load_page(
     def: &'static PageDef,
     generation: u64,
     query: Vec<(String, String)>,
 ) -> Result<(), JsValue> {
     let mut load = (def.load)();
+    // The chunk's request is made on the loader's first poll.
     let mut poll = Context::from_waker(Waker::noop());
+    let landed = match load.as_mut().poll(&mut poll) {
+        Poll::Ready(result) => Some(result),
+        Poll::Pending => None,
+    };
     let lang = ctx::lang();
-    let strings_in = has_strings(lang, Some(def));
-    if strings_in {
-        if let Poll::Ready(result) = load.as_mut().poll(&mut poll) {
-            return loaded(def, generation, query, result.map_err(|e| e.to_string()));
+    let framed = has_strings(lang, Some(def));
+    // The tab's first page is shown as its frame first, even when its code is in: the frame (the
+    // page's head) is painted in the task that builds the shell, and the page is built in a
+    // task of its own after that paint.
+    let first = generation == 1;
+    if framed {
+        if let (Some(result), false) = (landed.as_ref(), first) {
+            let result = result
+                .as_ref()
+                .map(|mount| *mount)
+                .map_err(|e| e.to_string());
+            return loaded(def, generation, query, result);
         }
+        page_frame::show_loading(&main_element()?, def)?;
     }
-    let main = main_element()?;
-    page_frame::show_loading(&main, def)?;
+    set_pending(true)?;
     wasm_bindgen_futures::spawn_local(async move {
-        // The page's strings and its chunk come together (the chunk's request is made on the
-        // loader's first poll, the strings' on theirs).
-        let strings = lang_files::load(lang, def.strings);
-        let result = match (load.await, strings.await) {
+        let strings = lang_files::load(lang, def.strings).await;
+        if !framed && strings.is_ok() && is_current(generation) {
+            report(main_element().and_then(|main| page_frame::show_loading(&main, def)));
+        }
+        let chunk = match landed {
+            Some(result) => result,
+            None => load.await,
+        };
+        // The frame is on screen before the page replaces it (a phone sees the page's head at
+        // once, and its largest paint is the frame's).
+        schedule::painted().await;
+        let result = match (chunk, strings) {
             (Ok(mount), Ok(())) => Ok(mount),
             (Err(error), _) => Err(error.to_string()),
             (_, Err(error)) => Err(error.as_string().unwrap_or_default()),
@@ -726,16 +758,24 @@ fn install_load_progress() -> Result<(), JsValue> {
 
 /// `html[data-app-ready]`: the first route is settled (its page mounted, or the message that
 /// it could not be loaded, or "not found"); tests and the first-frame bench wait for it.
-/// The first time, the rest of the app starts loading once that frame is painted
-/// ([`load_the_rest`]), so that it does not compete with the first page for the network and
-/// the main thread.
 fn mark_ready() -> Result<(), JsValue> {
     if let Some(html) = dom::document()?.document_element() {
         if !html.has_attribute("data-app-ready") {
             html.set_attribute("data-app-ready", "1")?;
-            crate::ui::schedule::after_paint(
-                || wasm_bindgen_futures::spawn_local(load_the_rest()),
-            )?;
+        }
+    }
+    Ok(())
+}
+
+/// While a page's frame stands in for it (`#app[data-page-pending]`), what stands below the
+/// page (the drill chain, the footer) is not shown: shown under the short frame, it would jump
+/// down when the page comes.
+fn set_pending(pending: bool) -> Result<(), JsValue> {
+    if let Some(app) = dom::document()?.get_element_by_id(APP_ID) {
+        if pending {
+            app.set_attribute("data-page-pending", "")?;
+        } else {
+            app.remove_attribute("data-page-pending")?;
         }
     }
     Ok(())
@@ -749,10 +789,16 @@ fn loaded(
     result: Result<page::MountFn, String>,
 ) -> Result<(), JsValue> {
     let main = main_element()?;
+    set_pending(false)?;
     match result {
         Ok(mount) => {
-            dom::clear(&main);
+            // The page fills `<main>` around its frame's heading (`page_frame::fill`); a frame
+            // left over from a page that builds otherwise goes.
             mount_page(def, mount, &main, query)?;
+            if let Some(frame) = main.query_selector(":scope > [data-testid=\"page-frame\"]")? {
+                frame.remove();
+            }
+            warm_after_paint(Some(def))?;
             if with_page(|page| page.settled()).unwrap_or(true) {
                 mark_ready()?;
             }
@@ -767,7 +813,7 @@ fn loaded(
                 )
                 .into(),
             );
-            let retry = page_frame::show_failed(&main, def)?;
+            let retry = page_frame::show_failed(&main, def, has_strings(ctx::lang(), Some(def)))?;
             mark_ready()?;
             let query = RefCell::new(Some(query));
             dom::Listener::new(&retry, "click", move |_| {

@@ -69,7 +69,7 @@ impl<P: 'static> LatePage<P> {
             return Ok(LatePage::built(build(&ctx, None)?));
         }
         let root = ctx.root.clone();
-        root.set_inner_html(&markup());
+        page_frame::fill(&root, &markup())?;
         dom::relocalize(&root)?;
         LatePage::after(&root, ctx.shell, texts, load, move |fns| {
             build(&ctx, Some(fns))

@@ -7,6 +7,7 @@ use wasm_bindgen::{JsCast, JsValue};
 use web_sys::Element;
 
 use crate::ui::dom;
+use crate::ui::page_frame;
 
 /// The page's root (`<main>`), derefs to the element.
 #[derive(Clone)]
@@ -26,7 +27,7 @@ impl PageRoot {
         prefix: &'static str,
         owner: &'static str,
     ) -> Result<PageRoot, JsValue> {
-        root.set_inner_html(html);
+        page_frame::fill(root, html)?;
         dom::relocalize(root)?;
         Ok(PageRoot {
             element: root.clone(),

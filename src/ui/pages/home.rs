@@ -49,7 +49,9 @@ fn build(root: &Element, shell: ShellLink) -> Result<Rc<HomeArm>, JsValue> {
     append(&text, &el_i18n("p", "intro", "home-intro")?)?;
     append(&hero, &text)?;
     let arm = home_arm::mount(&hero)?;
-    append(root, &hero)?;
+    let content = crate::ui::dom::document()?.create_document_fragment();
+    content.append_child(&hero)?;
+    page_frame::fill_with(root, &content)?;
 
     let status = el_class("p", "home-more")?;
     status.set_attribute("data-testid", "home-more")?;

@@ -40,6 +40,7 @@ use crate::ui::kit::recipe_controls::{record_frame_ms, RecipeControls};
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, Shortcut};
+use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
 use crate::view::signal::sig;
 pub use crate::view::signal::ColumnsThin;
@@ -515,7 +516,7 @@ impl<S: SignalPage> Page for Signal<S> {
         let spec = &S::SPEC;
         let p = spec.prefix;
         let root = ctx.root.clone();
-        root.set_inner_html(&spec::markup(spec, <S::Row as SignalRow>::CURSOR));
+        page_frame::fill(&root, &spec::markup(spec, <S::Row as SignalRow>::CURSOR))?;
         dom::relocalize(&root)?;
         let controls = RecipeControls::mount(
             &root,

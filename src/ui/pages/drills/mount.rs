@@ -20,6 +20,7 @@ use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::{IgnoredKey, UrlNotice, UrlState, UrlWriter};
 use crate::ui::page::MountCtx;
+use crate::ui::page_frame;
 use crate::ui::schedule::Timer;
 use crate::view::drills::DrillsQuery;
 use crate::view::form::recipe_fields;
@@ -40,7 +41,7 @@ fn role<T: JsCast>(root: &Element, name: &str) -> Result<T, JsValue> {
 impl Page {
     fn build(mount: MountCtx) -> Result<Rc<Page>, JsValue> {
         let root = mount.root.clone();
-        root.set_inner_html(&markup::page());
+        page_frame::fill(&root, &markup::page())?;
         let els = Els {
             page: find(&root, ".drills")?,
             recipe: role(&root, "recipe")?,

@@ -54,6 +54,7 @@ use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{self, MountCtx, Shortcut};
+use crate::ui::page_frame;
 use crate::ui::schedule::{now_ms, Timer};
 use crate::view::ik2r::{elbow_of, Grab, Params, State, WsColor};
 use crate::view::url::UrlState;
@@ -101,10 +102,10 @@ pub(crate) struct Page {
 
 fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
     let root = ctx.root.clone();
-    root.set_inner_html(&markup::page(
-        &readouts::markup(),
-        &readouts::strip_markup(),
-    ));
+    page_frame::fill(
+        &root,
+        &markup::page(&readouts::markup(), &readouts::strip_markup()),
+    )?;
     let (state, ignored) = State::read(&ctx.query);
     let url_notice = UrlNotice::new(markup::role(&root, "url-notice")?, ignored)?;
     let (arm, readouts) = (arm::ArmView::find(&root)?, readouts::Readouts::find(&root)?);

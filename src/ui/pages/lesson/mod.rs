@@ -29,6 +29,7 @@ use crate::ui::kit::store;
 use crate::ui::kit::url_state::UrlNotice;
 use crate::ui::lesson_bar::{self, LESSON_STORAGE_KEY};
 use crate::ui::page::{MountCtx, Page, ShellLink};
+use crate::ui::page_frame;
 use crate::ui::{ctx, download, router};
 use crate::view::lesson::{Lesson, LessonError, MAX_FILE_BYTES, MAX_PAGE_STEPS};
 use crate::view::lesson_file;
@@ -76,7 +77,7 @@ impl Page for LessonPage {
 
 fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
     let root = ctx.root.clone();
-    root.set_inner_html(MARKUP);
+    page_frame::fill(&root, MARKUP)?;
     dom::relocalize(&root)?;
     let is_page = |id: &str| ctx.shell.is_page(id);
     let url_notice = UrlNotice::new(

@@ -46,6 +46,7 @@ use crate::ui::kit::review::Review;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::store;
 use crate::ui::page::{MountCtx, Page, Shortcut};
+use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::so101::{apply_settings, drag_axes, settings_texts, Handle, SETTING_KEYS};
@@ -206,7 +207,7 @@ impl Inner {
     /// (`None`: none is stored, and the chunk is fetched now).
     fn mount(ctx: &MountCtx, files: Option<files::Files>) -> Result<Rc<Inner>, JsValue> {
         let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
+        page_frame::fill(&root, &markup::page())?;
         dom::relocalize(&root)?;
         // A stored session is simulated again in slices after the first paint (the page's
         // session meanwhile is the stored one's pilot, device and module without episodes).

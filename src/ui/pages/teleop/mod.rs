@@ -49,6 +49,7 @@ use crate::ui::kit::review::{Review, SharedReplay};
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::kit::store;
 use crate::ui::page::{MountCtx, Page, Shortcut};
+use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::teleop_input::{key_action, KeyAction};
@@ -154,7 +155,7 @@ impl Inner {
     /// (`None`: none is stored, and the chunk is fetched now).
     fn mount(ctx: &MountCtx, files: Option<files::Files>) -> Result<Rc<Inner>, JsValue> {
         let root = ctx.root.clone();
-        root.set_inner_html(&markup::page());
+        page_frame::fill(&root, &markup::page())?;
         dom::relocalize(&root)?;
         // The stored sessions are simulated again: at once when that is short, else in
         // slices after the first paint (the page inert meanwhile, its session the stored
