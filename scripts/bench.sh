@@ -35,11 +35,22 @@ echo
 echo "== a phone's first visit: each route under Lighthouse's mobile profile (throttled), gzipped"
 node tests/bench/firstload.bench.mjs
 
+echo
+echo "== Lighthouse 12.2.3, mobile preset: every route in English and Japanese (median of 3 runs)"
+# Not a dependency of the app or of `make test`: pinned, in a folder of its own (13.x needs
+# Node 22), run against Debian's chromium.
+if [[ "$(node -p "require('./target/lighthouse/node_modules/lighthouse/package.json').version" 2>/dev/null)" != 12.2.3 ]]; then
+  mkdir -p target/lighthouse
+  [[ -f target/lighthouse/package.json ]] || echo '{ "private": true }' > target/lighthouse/package.json
+  (cd target/lighthouse && npm i -E --no-audit --no-fund --loglevel=error lighthouse@12.2.3)
+fi
+CHROME_PATH=${CHROME_PATH:-/usr/bin/chromium} node tests/bench/lighthouse.bench.mjs
+
 # Every page bench (tests/bench/<page>.bench.mjs) on the dist with the bench hooks; each prints
 # its figures against their budgets.
 for bench in tests/bench/*.bench.mjs; do
   page=$(basename "$bench" .bench.mjs)
-  [[ $page == firstframe || $page == firstload ]] && continue
+  [[ $page == firstframe || $page == firstload || $page == lighthouse ]] && continue
   echo
   echo "== $page page in headless Chromium"
   BSV_DIST=target/bench-dist node "$bench"
