@@ -518,6 +518,8 @@ test('keys nudge the tip and the joints, toggle the grid and reset; a heatmap cl
     assert.ok(Math.abs(m.q1 - q(64)) < 1e-12 && Math.abs(m.q2 - q(200)) < 1e-12);
     // The ? overlay lists the page's keys.
     await page.keyboard.press('?');
+    // Its code comes on the first press.
+    await page.locator('[data-testid="shortcut-overlay"]').waitFor();
     const overlay = await page.evaluate(() => document.body.innerText);
     assert.match(overlay, /Flip the elbow/);
     assert.deepEqual(errors, []);

@@ -16,6 +16,10 @@ async function routes(page) {
 async function open(page, route, lang = 'en') {
   await page.goto(`${server.url}/#/${route}?lang=${lang}`);
   await page.waitForFunction((l) => document.documentElement.lang === l && document.documentElement.dataset.appReady === '1', lang);
+  // A page's later parts (the IK page's second stage, the home cards) come once it is painted.
+  await page.waitForFunction(() => !document.querySelector('[data-state="loading"]'), null, { timeout: 20000 });
+  // The IK page's heatmap is drawn (its marker placed) once its second stage is in.
+  if (route.startsWith('ik-2r')) await page.waitForSelector('[data-testid="ik-2r-heatmap"][data-marker-q1]', { timeout: 20000 });
   await page.waitForTimeout(200);
 }
 
@@ -153,6 +157,7 @@ test('Tab alone reaches every visible control of every route, each with a visibl
       if (controls.some((c) => c.what.startsWith('canvas'))) {
         await page.evaluate(() => document.activeElement?.blur());
         await page.keyboard.press('?');
+        await page.locator('[data-testid="shortcut-overlay"]').waitFor();
         const keys = await page.locator('[data-testid="page-keys"] dt').count();
         if (!keys) problems.push(`${route}: a focusable canvas but no page keys in the ? overlay`);
         await page.keyboard.press('Escape');
