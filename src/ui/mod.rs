@@ -48,7 +48,12 @@ pub async fn start_app() -> Result<(), JsValue> {
             let reason = error.as_string().unwrap_or_default();
             JsValue::from_str(&format!("{} strings: {reason}", lang.code()))
         })?;
-    shell::start(lang)
+    // The shell and the first route's frame in two tasks, each short on a slow phone.
+    if shell::start(lang)? {
+        schedule::next_task().await;
+        shell::mount_first_route()?;
+    }
+    Ok(())
 }
 
 /// The page table, in navigation order: `[{ id, group }]`, `group` being the Drills menu's

@@ -131,6 +131,22 @@ pub fn after_paint(f: impl FnOnce() + 'static) -> Result<(), JsValue> {
     Ok(())
 }
 
+/// Resolves in a later task (a zero `setTimeout`): what follows runs after the browser has
+/// handled what waits, input first.
+pub async fn next_task() {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        let asked = web_sys::window().is_some_and(|window| {
+            window
+                .set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, 0)
+                .is_ok()
+        });
+        if !asked {
+            let _ = resolve.call0(&JsValue::UNDEFINED);
+        }
+    });
+    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+}
+
 /// Resolves once the browser has painted what is on the page now ([`after_paint`]).
 pub async fn painted() {
     let promise = js_sys::Promise::new(&mut |resolve, _| {

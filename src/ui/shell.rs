@@ -54,11 +54,13 @@ const MAIN_ID: &str = "app-main";
 const HELP_STATUS_ID: &str = "help-status";
 
 /// Builds the shell into `#app` (or `<body>`), applies the initial language and projector
-/// mode, installs the keys and starts the router. Calling it twice does nothing.
-pub(crate) fn start(lang: Lang) -> Result<(), JsValue> {
+/// mode, installs the keys and starts the router; the first route is mounted by
+/// [`mount_first_route`], in a task of its own. Calling it twice does nothing: whether it built
+/// the shell.
+pub(crate) fn start(lang: Lang) -> Result<bool, JsValue> {
     let document = dom::document()?;
     if document.get_element_by_id(MAIN_ID).is_some() {
-        return Ok(());
+        return Ok(false);
     }
     ctx::set_lang(lang);
     ctx::set_projector(dom::storage_get(PROJECTOR_STORAGE_KEY).as_deref() == Some("1"));
@@ -105,7 +107,15 @@ pub(crate) fn start(lang: Lang) -> Result<(), JsValue> {
         }
     })?;
     install_load_progress()?;
-    mount_route(&router::current_route())?;
+    Ok(true)
+}
+
+/// Mounts the route of the address, unless a route was mounted already (a `hashchange` since
+/// [`start`]).
+pub(crate) fn mount_first_route() -> Result<(), JsValue> {
+    if ROUTING.with(|routing| routing.generation.get()) == 0 {
+        mount_route(&router::current_route())?;
+    }
     Ok(())
 }
 
