@@ -712,21 +712,36 @@ fn load_page(
                 .map_err(|e| e.to_string());
             return loaded(def, generation, query, result);
         }
-        page_frame::show_loading(&main_element()?, def)?;
+    }
+    // Whether the frame has been painted (set once it is).
+    let painted = Rc::new(Cell::new(false));
+    let show_frame = {
+        let painted = Rc::clone(&painted);
+        move || -> Result<(), JsValue> {
+            page_frame::show_loading(&main_element()?, def)?;
+            let painted = Rc::clone(&painted);
+            schedule::after_paint(move || painted.set(true))
+        }
+    };
+    if framed {
+        show_frame()?;
     }
     set_pending(true)?;
     wasm_bindgen_futures::spawn_local(async move {
         let strings = lang_files::load(lang, def.strings).await;
         if !framed && strings.is_ok() && is_current(generation) {
-            report(main_element().and_then(|main| page_frame::show_loading(&main, def)));
+            report(show_frame());
         }
         let chunk = match landed {
             Some(result) => result,
             None => load.await,
         };
         // The frame is on screen before the page replaces it (a phone sees the page's head at
-        // once, and its largest paint is the frame's).
-        schedule::painted().await;
+        // once, and its largest paint is the frame's): if its code came first, the page waits
+        // for that paint.
+        if !painted.get() {
+            schedule::painted().await;
+        }
         let result = match (chunk, strings) {
             (Ok(mount), Ok(())) => Ok(mount),
             (Err(error), _) => Err(error.to_string()),
