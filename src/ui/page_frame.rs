@@ -17,6 +17,19 @@ use crate::ui::page::PageDef;
 /// `data-testid` of the frame's outer element.
 const FRAME_TESTID: &str = "page-frame";
 
+/// The frame in `main`, if one stands there.
+fn frame_in(main: &Element) -> Result<Option<Element>, JsValue> {
+    main.query_selector(&format!(":scope > [data-testid=\"{FRAME_TESTID}\"]"))
+}
+
+/// Removes a frame left in `main` by a page that did not fill it through [`fill`].
+pub fn remove_leftover(main: &Element) -> Result<(), JsValue> {
+    if let Some(frame) = frame_in(main)? {
+        frame.remove();
+    }
+    Ok(())
+}
+
 /// The frame of page `def` with its loading line, built into `main` (emptied first).
 pub fn show_loading(main: &Element, def: &PageDef) -> Result<(), JsValue> {
     let frame = frame(main, def)?;
@@ -139,8 +152,7 @@ pub fn fill(root: &Element, html: &str) -> Result<(), JsValue> {
 /// the heading) stay in the document: they take the page's attributes and text, and the page's
 /// other nodes go around them. Otherwise `root` is emptied and `content` appended.
 pub fn fill_with(root: &Element, content: &DocumentFragment) -> Result<(), JsValue> {
-    let frame = root.query_selector(&format!(":scope > [data-testid=\"{FRAME_TESTID}\"]"))?;
-    if let Some(frame) = frame {
+    if let Some(frame) = frame_in(root)? {
         if adopt(root, &frame, content)? {
             return Ok(());
         }

@@ -131,15 +131,12 @@ pub fn after_paint(f: impl FnOnce() + 'static) -> Result<(), JsValue> {
     Ok(())
 }
 
-/// Resolves in a later task (a zero `setTimeout`): what follows runs after the browser has
-/// handled what waits, input first.
-pub async fn next_task() {
+/// Resolves once `ask` has had the browser call the resolver it is given; at once if `ask`
+/// could not ask (it returns `false`: no window, a call that threw).
+async fn resolved_by(ask: impl FnOnce(&js_sys::Function) -> bool) {
+    let mut ask = Some(ask);
     let promise = js_sys::Promise::new(&mut |resolve, _| {
-        let asked = web_sys::window().is_some_and(|window| {
-            window
-                .set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, 0)
-                .is_ok()
-        });
+        let asked = ask.take().is_some_and(|ask| ask(&resolve));
         if !asked {
             let _ = resolve.call0(&JsValue::UNDEFINED);
         }
@@ -147,33 +144,45 @@ pub async fn next_task() {
     let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
 }
 
+/// A zero-or-more `setTimeout` that calls `f`; whether it was set.
+fn timeout(f: &js_sys::Function, ms: i32) -> bool {
+    web_sys::window().is_some_and(|window| {
+        window
+            .set_timeout_with_callback_and_timeout_and_arguments_0(f, ms)
+            .is_ok()
+    })
+}
+
+/// Resolves in a later task (a zero `setTimeout`): what follows runs after the browser has
+/// handled what waits, input first.
+pub async fn next_task() {
+    resolved_by(|resolve| timeout(resolve, 0)).await;
+}
+
 /// Resolves once the browser has painted what is on the page now ([`after_paint`]).
 pub async fn painted() {
-    let promise = js_sys::Promise::new(&mut |resolve, _| {
-        if after_paint(move || {
+    resolved_by(|resolve| {
+        let resolve = resolve.clone();
+        after_paint(move || {
             let _ = resolve.call0(&JsValue::UNDEFINED);
         })
-        .is_err()
-        {
-            // No window: nothing is painted, nothing waits.
-        }
-    });
-    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+        .is_ok()
+    })
+    .await;
 }
 
 /// Resolves in the browser's next idle period (`requestIdleCallback`, at the latest
 /// `IDLE_TIMEOUT_MS` later), or after a short `setTimeout` where there is no such call: work the
 /// visitor did not ask for runs there, a slice at a time, never in a frame's way.
 pub async fn idle() {
-    let promise = js_sys::Promise::new(&mut |resolve, _| {
+    resolved_by(|resolve| {
         let Some(window) = web_sys::window() else {
-            let _ = resolve.call0(&JsValue::UNDEFINED);
-            return;
+            return false;
         };
         let request = js_sys::Reflect::get(&window, &JsValue::from_str("requestIdleCallback"))
             .ok()
             .and_then(|f| f.dyn_into::<js_sys::Function>().ok());
-        let asked = match request {
+        match request {
             Some(request) => {
                 let options = js_sys::Object::new();
                 let _ = js_sys::Reflect::set(
@@ -181,17 +190,12 @@ pub async fn idle() {
                     &JsValue::from_str("timeout"),
                     &JsValue::from_f64(IDLE_TIMEOUT_MS),
                 );
-                request.call2(&window, &resolve, &options).is_ok()
+                request.call2(&window, resolve, &options).is_ok()
             }
-            None => window
-                .set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, 50)
-                .is_ok(),
-        };
-        if !asked {
-            let _ = resolve.call0(&JsValue::UNDEFINED);
+            None => timeout(resolve, 50),
         }
-    });
-    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+    })
+    .await;
 }
 
 /// How long idle work waits for an idle period at most (ms): a page that animates every frame

@@ -704,15 +704,12 @@ fn load_page(
     // page's head) is painted in the task that builds the shell, and the page is built in a
     // task of its own after that paint.
     let first = generation == 1;
-    if framed {
-        if let (Some(result), false) = (landed.as_ref(), first) {
-            let result = result
-                .as_ref()
-                .map(|mount| *mount)
-                .map_err(|e| e.to_string());
-            return loaded(def, generation, query, result);
+    let landed = match landed {
+        Some(result) if framed && !first => {
+            return loaded(def, generation, query, result.map_err(|e| e.to_string()));
         }
-    }
+        other => other,
+    };
     // Whether the frame has been painted (set once it is).
     let painted = Rc::new(Cell::new(false));
     let show_frame = {
@@ -820,9 +817,7 @@ fn loaded(
             // The page fills `<main>` around its frame's heading (`page_frame::fill`); a frame
             // left over from a page that builds otherwise goes.
             mount_page(def, mount, &main, query)?;
-            if let Some(frame) = main.query_selector(":scope > [data-testid=\"page-frame\"]")? {
-                frame.remove();
-            }
+            page_frame::remove_leftover(&main)?;
             warm_after_paint(Some(def))?;
             if with_page(|page| page.settled()).unwrap_or(true) {
                 mark_ready()?;

@@ -16,20 +16,12 @@ import { mkdirSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { startStaticServer } from '../../scripts/serve.mjs';
+import { CHROMIUM_ARGS } from './chromium-args.mjs';
 
 export const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
 export const OUT = join(ROOT, 'tests', 'e2e', 'out');
 mkdirSync(OUT, { recursive: true });
 
-const CHROMIUM_ARGS = [
-  '--no-sandbox',
-  '--disable-gpu',
-  '--disable-background-networking',
-  '--disable-component-update',
-  '--disable-sync',
-  '--no-first-run',
-  '--disable-quic',
-];
 
 /** The folder the tests serve: BSV_DIST (relative to the repo, or absolute), default dist/. */
 export const DIST = resolve(ROOT, process.env.BSV_DIST || 'dist');
