@@ -1,6 +1,6 @@
 # Robot Pilot on the SO-101 (#/so101).
 so101-title = Robot Pilot: SO-101
-so101-lede = The Academy's own arm: TheRobotStudio's SO-101, five joints and a gripper, its kinematics taken from the public SO-ARM100 description and checked against MuJoCo. Each 10 ms step turns your six-axis command into joint motion as Isaac Lab's differential IK controller does in relative pose mode. Press Space to engage, then fly the tool to the blue cube, close the gripper with K, carry the cube into the green square and let go.
+so101-lede = The Academy's own arm: TheRobotStudio's SO-101, five joints and a gripper, its kinematics taken from the public SO-ARM100 description and checked against MuJoCo. Each 10 ms step turns your six-axis command into joint motion as Isaac Lab's differential IK controller does in relative pose mode. The arm is live as the page opens: fly the tool to the blue cube with W/S, A/D and Q/E, close the gripper with K, carry the cube into the green square and let go. Space pauses and resumes.
 so101-canvas-label = The SO-101 over the table, with the cube, the goal square and, when set, the wall. W/S move the tool along x, A/D along y, Q/E along z; Z/X, T/G, C/V turn it about x, y, z; K opens or closes the gripper, R resets, Space engages or pauses. Drag an arrow or a ring on the tool to move or turn it while you hold it; drag elsewhere to orbit.
 so101-wrist-label = The wrist camera: the scene seen from the gripper, looking along it.
 so101-wrist-caption = Wrist camera: the view from the gripper, as pilots use it to line up a grasp.
@@ -16,17 +16,27 @@ so101-ro-z = Tool z
 so101-ro-roll = Roll
 so101-ro-pitch = Pitch
 so101-ro-yaw = Yaw
-so101-ro-q1 = Shoulder pan (limits)
-so101-ro-q2 = Shoulder lift (limits)
-so101-ro-q3 = Elbow flex (limits)
-so101-ro-q4 = Wrist flex (limits)
-so101-ro-q5 = Wrist roll (limits)
+so101-ro-q1 = Shoulder pan
+so101-ro-q2 = Shoulder lift
+so101-ro-q3 = Elbow flex
+so101-ro-q4 = Wrist flex
+so101-ro-q5 = Wrist roll
 so101-ro-manipulability = Manipulability
 so101-ro-orientation-error = Orientation error
+so101-ro-tool-caption = Control and tool
+so101-ro-joints-caption = Joints
+so101-col-readout = Readout
+so101-col-value = Value
+so101-col-unit = Unit
+so101-col-limit = Limits
 so101-orientation-why = Orientation error is the turn you asked for that the arm did not make: with five joints the SO-101 can point its gripper but has no joint to tilt it sideways, so a roll or yaw it cannot reach is left out and shows here.
 so101-label-title = Label episode { $n }
 so101-label-proposal = Proposed: { $label } { $category }
-so101-session-line = Pilot { $pilot }: { $count } episodes, { $unlabelled } unlabelled.
+so101-session-line = { $count ->
+    [0] Pilot id “{ $pilot }”: no episodes yet.
+    [one] Pilot id “{ $pilot }”: 1 episode, { $unlabelled } not labelled.
+   *[other] Pilot id “{ $pilot }”: { $count } episodes, { $unlabelled } not labelled.
+}
 so101-summary-title = Repeatability summary
 so101-field-obstacle = Wall between the cube and the goal
 so101-settings-note = Changing a setting starts a new episode; the one in progress is kept, marked interrupted.

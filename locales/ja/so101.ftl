@@ -1,6 +1,6 @@
 # ロボットパイロット：SO-101（#/so101）
 so101-title = ロボットパイロット：SO-101
-so101-lede = アカデミーで使うアームそのもの：TheRobotStudio の SO-101（5 関節＋グリッパー）。運動学は公開されている SO-ARM100 の記述から取り、MuJoCo で照合済みです。10 ms ごとに 6 軸の指令を、Isaac Lab の差分 IK コントローラの相対姿勢モードと同じ方法で関節の動きに変えます。Space で操作を開始し、ツールを青いキューブへ運び、K でグリッパーを閉じ、キューブを緑の四角へ運んで離してください。
+so101-lede = アカデミーで使うアームそのもの：TheRobotStudio の SO-101（5 関節＋グリッパー）。運動学は公開されている SO-ARM100 の記述から取り、MuJoCo で照合済みです。10 ms ごとに 6 軸の指令を、Isaac Lab の差分 IK コントローラの相対姿勢モードと同じ方法で関節の動きに変えます。ページを開いた時点でアームは操作できます：W/S・A/D・Q/E でツールを青いキューブへ運び、K でグリッパーを閉じ、キューブを緑の四角へ運んで離してください。スペースで一時停止と再開を切り替えます。
 so101-canvas-label = テーブル上の SO-101、キューブ、ゴールの四角、設定時は壁。W/S でツールを x 方向、A/D で y 方向、Q/E で z 方向に動かし、Z/X・T/G・C/V で x・y・z 軸まわりに回します。K でグリッパーの開閉、R でリセット、Space で開始・一時停止。ツール上の矢印やリングをドラッグしている間だけツールが動いたり回ったりし、それ以外のドラッグで視点を回します。
 so101-wrist-label = 手首カメラ：グリッパーから、その向きに見た場面。
 so101-wrist-caption = 手首カメラ：グリッパーからの眺め。パイロットはこれで把持の位置を合わせます。
@@ -16,17 +16,26 @@ so101-ro-z = ツール z
 so101-ro-roll = ロール
 so101-ro-pitch = ピッチ
 so101-ro-yaw = ヨー
-so101-ro-q1 = 肩の旋回（可動範囲）
-so101-ro-q2 = 肩の上下（可動範囲）
-so101-ro-q3 = 肘（可動範囲）
-so101-ro-q4 = 手首の曲げ（可動範囲）
-so101-ro-q5 = 手首の回転（可動範囲）
+so101-ro-q1 = 肩の旋回
+so101-ro-q2 = 肩の上下
+so101-ro-q3 = 肘
+so101-ro-q4 = 手首の曲げ
+so101-ro-q5 = 手首の回転
 so101-ro-manipulability = 可操作度
 so101-ro-orientation-error = 姿勢誤差
+so101-ro-tool-caption = 操作とツール
+so101-ro-joints-caption = 関節
+so101-col-readout = 項目
+so101-col-value = 値
+so101-col-unit = 単位
+so101-col-limit = 可動範囲
 so101-orientation-why = 姿勢誤差は、指令したのにアームが実現できなかった回転です。SO-101 は 5 関節なのでグリッパーの向きは変えられても横に傾ける関節がなく、届かないロールやヨーはここに残ります。
 so101-label-title = エピソード { $n } のラベル
 so101-label-proposal = 提案：{ $label } { $category }
-so101-session-line = パイロット { $pilot }：エピソード { $count } 件、未ラベル { $unlabelled } 件。
+so101-session-line = { $count ->
+    [0] パイロット ID「{ $pilot }」：エピソードはまだありません。
+   *[other] パイロット ID「{ $pilot }」：エピソード { $count } 件、未ラベル { $unlabelled } 件。
+}
 so101-summary-title = 再現性のまとめ
 so101-field-obstacle = キューブとゴールの間に壁を置く
 so101-settings-note = 設定を変えると新しいエピソードになります。進行中のものは中断として残ります。

@@ -116,6 +116,13 @@ pub trait Page: 'static {
     fn on_key(&self, _event: &KeyboardEvent) -> bool {
         false
     }
+    /// A key pressed while a control that is not a text entry has focus (a button, tab, check
+    /// box, slider or select, anywhere in the document), no dialog is open and no
+    /// Ctrl/Alt/Meta is held: a page whose held keys drive something (the pilot pages) takes
+    /// its driving keys here, so a click on a control never stops them; `true` if taken.
+    fn on_key_over_control(&self, _event: &KeyboardEvent) -> bool {
+        false
+    }
     /// Whether the page is built and answering input (`false` while it waits for a chunk;
     /// it then asks for [`ShellRequest::Settled`] once it is built).
     fn settled(&self) -> bool {

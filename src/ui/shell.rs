@@ -501,6 +501,12 @@ fn on_keydown(event: &KeyboardEvent) -> Result<(), JsValue> {
         event.prevent_default();
         return Ok(());
     }
+    if keymap::page_may_take_over_control(event)
+        && with_page(|page| page.on_key_over_control(event)) == Some(true)
+    {
+        event.prevent_default();
+        return Ok(());
+    }
     let exists = |id: &str| SHELL.is_page(id);
     if section_keys::on_key(event, current_page_id(), exists)? {
         event.prevent_default();

@@ -313,6 +313,8 @@ test('repeatability: a second session beside the first; a reload keeps both', as
     await recordEpisode(page, 'w', 250);
     await recordEpisode(page, 'q', 250);
     const cells = async (id) => page.locator(`[data-so101="compare"] tr[data-compare="${id}"] td`).allInnerTexts();
+    // The second session is the repeatability module's.
+    await page.locator('[data-module="repeatability"]').click();
     assert.deepEqual((await cells('attempted')).slice(1), ['2', '—']);
     await page.locator('[data-action="second-session"]').click();
     assert.match(await page.locator('[data-so101="status"]').innerText(), /second session started/i);

@@ -60,7 +60,10 @@ test('holding W moves x up, Q moves z up; the arm starts engaged', async () => {
     await hold(page, 'w', 200);
     const r3 = await shownReadouts(page);
     assert.equal(r3.x, r2.x);
-    // K closes the gripper (readout and button).
+    // Paused, K does nothing; engaged again, K closes the gripper (readout and button).
+    await page.keyboard.press('k');
+    assert.equal(await page.locator('[data-readout="gripper"]').getAttribute('data-value'), 'open');
+    await page.keyboard.press('Space');
     await page.keyboard.press('k');
     assert.equal(await page.locator('[data-readout="gripper"]').getAttribute('data-value'), 'closed');
     assert.equal(await page.locator('[data-action="gripper"]').getAttribute('aria-pressed'), 'true');

@@ -114,6 +114,69 @@ pub fn page_may_take(event: &KeyboardEvent) -> bool {
     !has_command_modifier(event) && !event.default_prevented() && !is_control(event.target())
 }
 
+/// Whether a page that drives something with held keys may take `event` although a control
+/// has focus ([`crate::ui::page::Page::on_key_over_control`]): no Ctrl/Alt/Meta, not handled
+/// yet, a control that is not a text entry (a button, tab, check box, slider, select), and no
+/// dialog open.
+pub fn page_may_take_over_control(event: &KeyboardEvent) -> bool {
+    !has_command_modifier(event)
+        && !event.default_prevented()
+        && is_control(event.target())
+        && !is_text_entry(event.target())
+        && !crate::ui::overlay::is_open()
+        && !dialog_open()
+}
+
+/// Whether a modal `<dialog>` or an element with `aria-modal="true"` is open.
+fn dialog_open() -> bool {
+    web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| {
+            d.query_selector("dialog[open], [aria-modal=\"true\"]:not([hidden])")
+                .ok()
+                .flatten()
+        })
+        .is_some()
+}
+
+/// Input types whose keys edit a value as text.
+const TEXT_INPUT_TYPES: &[&str] = &[
+    "text",
+    "number",
+    "search",
+    "email",
+    "url",
+    "tel",
+    "password",
+    "date",
+    "time",
+    "datetime-local",
+    "month",
+    "week",
+];
+
+/// Whether `target` is a field being edited as text: a text-like `<input>` (text, number,
+/// search, ...), a `<textarea>` or contenteditable. Check boxes, sliders, selects and
+/// buttons are not.
+pub fn is_text_entry(target: Option<EventTarget>) -> bool {
+    let Some(element) = target.and_then(|t| t.dyn_into::<Element>().ok()) else {
+        return false;
+    };
+    match element.tag_name().to_ascii_lowercase().as_str() {
+        "textarea" => true,
+        "input" => {
+            let kind = element
+                .get_attribute("type")
+                .unwrap_or_default()
+                .to_ascii_lowercase();
+            kind.is_empty() || TEXT_INPUT_TYPES.contains(&kind.as_str())
+        }
+        _ => element
+            .dyn_ref::<HtmlElement>()
+            .is_some_and(|h| h.is_content_editable()),
+    }
+}
+
 /// Whether a key event comes from a place where the user types text (input, textarea,
 /// select, contenteditable).
 pub fn is_typing(target: Option<EventTarget>) -> bool {

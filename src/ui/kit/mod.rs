@@ -47,6 +47,7 @@ pub mod late_page;
 pub mod message_line;
 pub mod orbit;
 pub mod page_root;
+pub mod pilot_control;
 pub mod pilot_session;
 pub mod plot;
 pub mod png;

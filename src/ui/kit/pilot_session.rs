@@ -245,3 +245,19 @@ pub fn render_comparison(
     }
     Ok(())
 }
+
+/// The input device a new session starts with: the pointer (touch) on a device whose only
+/// pointers are coarse (a phone, a tablet without a mouse), else the keyboard.
+pub fn default_device() -> crate::teleop::session::InputDevice {
+    use crate::teleop::session::InputDevice;
+    let matches = |query: &str| {
+        web_sys::window()
+            .and_then(|w| w.match_media(query).ok().flatten())
+            .is_some_and(|m| m.matches())
+    };
+    if matches("(any-pointer: coarse)") && !matches("(any-pointer: fine)") {
+        InputDevice::Pointer
+    } else {
+        InputDevice::Keyboard
+    }
+}

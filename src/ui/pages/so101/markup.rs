@@ -37,26 +37,72 @@ pub const KEYS: &[Shortcut] = &[
     key("Space", "teleop-key-engage"),
 ];
 
-/// `(data-readout, label id)`.
-pub const READOUTS: [(&str, &str); 17] = [
-    ("state", "teleop-ro-state"),
-    ("episode", "teleop-ro-episode"),
-    ("gripper", "teleop-ro-gripper"),
-    ("x", "so101-ro-x"),
-    ("y", "so101-ro-y"),
-    ("z", "so101-ro-z"),
-    ("roll", "so101-ro-roll"),
-    ("pitch", "so101-ro-pitch"),
-    ("yaw", "so101-ro-yaw"),
-    ("q1", "so101-ro-q1"),
-    ("q2", "so101-ro-q2"),
-    ("q3", "so101-ro-q3"),
-    ("q4", "so101-ro-q4"),
-    ("q5", "so101-ro-q5"),
-    ("manipulability", "so101-ro-manipulability"),
-    ("orientation-error", "so101-ro-orientation-error"),
-    ("time", "teleop-ro-time"),
+/// A row of the readout tables: `data-readout` key, label id, unit.
+struct Row(&'static str, &'static str, &'static str);
+
+/// The control, the episode and the tool's pose.
+const TOOL_ROWS: [Row; 10] = [
+    Row("state", "teleop-ro-state", ""),
+    Row("episode", "teleop-ro-episode", ""),
+    Row("gripper", "teleop-ro-gripper", ""),
+    Row("x", "so101-ro-x", "mm"),
+    Row("y", "so101-ro-y", "mm"),
+    Row("z", "so101-ro-z", "mm"),
+    Row("roll", "so101-ro-roll", "°"),
+    Row("pitch", "so101-ro-pitch", "°"),
+    Row("yaw", "so101-ro-yaw", "°"),
+    Row("time", "teleop-ro-time", "s"),
 ];
+
+/// The joints (their limits beside them), the manipulability and the orientation error.
+const JOINT_ROWS: [Row; 7] = [
+    Row("q1", "so101-ro-q1", "°"),
+    Row("q2", "so101-ro-q2", "°"),
+    Row("q3", "so101-ro-q3", "°"),
+    Row("q4", "so101-ro-q4", "°"),
+    Row("q5", "so101-ro-q5", "°"),
+    Row("manipulability", "so101-ro-manipulability", "m³"),
+    Row("orientation-error", "so101-ro-orientation-error", "°"),
+];
+
+/// The readouts as two tables (name, value, unit, limit; the value alone in its cell, in
+/// tabular digits), `id="so101-readouts"`: the views' text alternative.
+fn readout_tables() -> String {
+    let limits = crate::so101::model::joint_limits();
+    let table = |caption: &str, rows: &[Row]| -> String {
+        let mut html = format!(
+            "<table class=\"so101-ro\"><caption data-i18n=\"{caption}\"></caption><thead><tr>\
+             <th scope=\"col\" data-i18n=\"so101-col-readout\"></th><th scope=\"col\" data-i18n=\"so101-col-value\"></th>\
+             <th scope=\"col\" data-i18n=\"so101-col-unit\"></th><th scope=\"col\" data-i18n=\"so101-col-limit\"></th>\
+             </tr></thead><tbody>"
+        );
+        for Row(key, label, unit) in rows {
+            let limit = key
+                .strip_prefix('q')
+                .and_then(|n| n.parse::<usize>().ok())
+                .and_then(|n| limits.get(n.wrapping_sub(1)))
+                .map_or(String::new(), |(lo, hi)| {
+                    format!(
+                        "{} … {}",
+                        crate::view::so101::deg(*lo),
+                        crate::view::so101::deg(*hi)
+                    )
+                });
+            html.push_str(&format!(
+                "<tr><th scope=\"row\" data-i18n=\"{label}\"></th>\
+                 <td class=\"so101-ro-value\" data-readout=\"{key}\"></td>\
+                 <td class=\"so101-ro-unit\">{unit}</td><td class=\"so101-ro-limit\">{limit}</td></tr>"
+            ));
+        }
+        html.push_str("</tbody></table>");
+        html
+    };
+    format!(
+        "<div class=\"so101-ro-tables\" id=\"so101-readouts\">{}{}</div>",
+        table("so101-ro-tool-caption", &TOOL_ROWS),
+        table("so101-ro-joints-caption", &JOINT_ROWS)
+    )
+}
 
 fn button(action: &str, label: &str) -> String {
     format!(
@@ -83,9 +129,11 @@ fn modules() -> String {
     format!(
         "<div class=\"so101-modules\" role=\"group\" data-i18n-attr=\"aria-label=teleop-modules-label\">\
          {modules}</div><p class=\"so101-help\" data-so101=\"module-help\"></p>\
-         <div class=\"so101-devices\" role=\"group\" data-i18n-attr=\"aria-label=teleop-device-label\">\
-         <span data-i18n=\"teleop-device-label\"></span>{devices}\
-         <span class=\"so101-check\" data-so101=\"preflight\"></span></div>",
+         <div class=\"so101-devices\" role=\"group\" data-so101=\"devices\" data-i18n-attr=\"aria-label=teleop-device-label\">\
+         <span data-i18n=\"teleop-device-label\"></span>{devices}</div>\
+         <ul class=\"so101-checks\" data-so101=\"preflight\">\
+         <li data-check=\"moved\" data-state=\"todo\"><span data-i18n=\"teleop-check-moved\"></span></li>\
+         <li data-check=\"reset\" data-state=\"todo\"><span data-i18n=\"teleop-check-reset\"></span></li></ul>",
         modules = toggles("module", "so101-module", "teleop-module-", &modules),
         devices = toggles("device", "so101-device", "teleop-device-", &devices),
     )
@@ -94,16 +142,18 @@ fn modules() -> String {
 fn views() -> String {
     format!(
         "<div class=\"so101-views\">\
-         <div class=\"so101-world\" data-so101=\"world\">\
+         <div class=\"so101-world\" data-so101=\"world\">{control}\
          <div class=\"so101-offer\" data-testid=\"gamepad-offer\" hidden>\
          <p data-so101=\"offer-text\"></p>{use_pad}{dismiss}</div>\
          <p class=\"so101-ended\" data-testid=\"episode-outcome\" data-so101=\"ended\" hidden></p>\
          </div>\
-         <figure class=\"so101-wrist\"><div class=\"so101-wrist-stage\" data-so101=\"wrist-stage\">\
+         <div class=\"so101-side\"><figure class=\"so101-wrist\"><div class=\"so101-wrist-stage\" data-so101=\"wrist-stage\">\
          <canvas data-testid=\"so101-wrist\" role=\"img\" aria-describedby=\"so101-readouts\" data-i18n-attr=\"aria-label=so101-wrist-label\"></canvas>\
          </div><figcaption data-i18n=\"so101-wrist-caption\"></figcaption></figure>\
+         <p class=\"so101-lede\" data-i18n=\"so101-lede\"></p></div>\
          </div>\
          <div class=\"so101-buttons\" data-so101=\"live-buttons\">{engage}{gripper}{reset}{end}</div>{review}",
+        control = crate::ui::kit::pilot_control::markup(P),
         use_pad = button("use-gamepad", "teleop-pad-offer-use"),
         dismiss = button("dismiss-gamepad", "teleop-pad-offer-dismiss"),
         engage = button("engage", "teleop-engage"),
@@ -167,8 +217,8 @@ fn episodes() -> String {
          </p><p class=\"so101-help\" data-i18n=\"so101-open-note\"></p>\
          <p class=\"so101-error\" data-so101=\"open-error\" role=\"alert\" hidden></p>\
          <p class=\"so101-help\" data-so101=\"status\" role=\"status\"></p>\
-         <h3 data-i18n=\"so101-summary-title\"></h3>\
-         <dl class=\"so101-summary\" data-so101=\"summary\"></dl></section>\
+         <div data-so101=\"summary-block\"><h3 data-i18n=\"so101-summary-title\"></h3>\
+         <dl class=\"so101-summary\" data-so101=\"summary\"></dl></div></section>\
          <section class=\"so101-repeat\" data-so101=\"repeat\"><h2 data-i18n=\"teleop-repeat-title\"></h2>\
          <p class=\"so101-help\" data-i18n=\"teleop-repeat-note\"></p>\
          <p class=\"so101-downloads\">{second}</p>\
@@ -220,7 +270,6 @@ fn keys() -> String {
 pub fn page() -> String {
     format!(
         "<div class=\"so101-page\"><h1 data-i18n=\"so101-title\"></h1>\
-         <p class=\"so101-lede\" data-i18n=\"so101-lede\"></p>\
          <p class=\"so101-notice\" data-so101=\"restored\" data-i18n=\"teleop-restored\" hidden></p>\
          {storage}{views}\
          <p class=\"so101-disclaimer\" data-i18n=\"teleop-disclaimer\"></p>{modules}\
@@ -236,7 +285,7 @@ pub fn page() -> String {
         ),
         modules = modules(),
         views = views(),
-        ro = readouts::markup(P, &READOUTS),
+        ro = readout_tables(),
         labels = label_panel(),
         episodes = episodes(),
         settings = settings(),

@@ -45,6 +45,7 @@ use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::review::Review;
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::store;
+use crate::ui::kit::{pilot_control, pilot_session};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
@@ -64,6 +65,7 @@ const SAVE_EVERY_MS: f64 = 2000.0;
 /// The arm's buttons and notices.
 struct Live {
     engage: Element,
+    control: Element,
     gripper: Element,
     offer: Element,
     offer_text: Element,
@@ -194,6 +196,16 @@ impl Page for So101Page {
         }
         self.0.with(|p| p.key_down(event, false)).unwrap_or(false)
     }
+
+    /// The arm's hold keys, K and R while a control has focus (the focus stays on a tab,
+    /// button, check box or slider after a click); Space and Enter stay the control's.
+    fn on_key_over_control(&self, event: &KeyboardEvent) -> bool {
+        let driving = matches!(
+            key_action(&event.code()),
+            Some(KeyAction::Hold { .. } | KeyAction::ToggleGripper | KeyAction::Reset)
+        );
+        driving && self.0.with(|p| p.key_down(event, false)).unwrap_or(false)
+    }
 }
 
 impl Drop for So101Page {
@@ -214,7 +226,7 @@ impl Inner {
         let restore = files.map(|f| f.restore);
         let loader = restore.and_then(|read| dom::storage_get(STORE_KEY).and_then(|t| read(&t)));
         let session = loader.as_ref().map_or_else(
-            || Session::new("pilot", InputDevice::Keyboard, &iso_now()),
+            || Session::new("pilot", pilot_session::default_device(), &iso_now()),
             |l| l.session().clone(),
         );
         let first_loader =
@@ -225,6 +237,7 @@ impl Inner {
         let restored: Element = find(&root, "[data-so101=\"restored\"]")?;
         let live = Live {
             engage: find(&root, "[data-action=\"engage\"]")?,
+            control: find(&root, "[data-so101=\"control\"]")?,
             gripper: find(&root, "[data-action=\"gripper\"]")?,
             offer: find(&root, "[data-testid=\"gamepad-offer\"]")?,
             offer_text: find(&root, "[data-so101=\"offer-text\"]")?,
@@ -275,6 +288,10 @@ impl Inner {
                 p.gizmo(e, tool);
             }
         })?;
+        // The control state sits over the 3D view itself, below its camera buttons.
+        if let Ok(Some(stage)) = root.query_selector(".so101-stage") {
+            stage.append_child(&inner.live.control)?;
+        }
         *inner.views.borrow_mut() = Some(views);
         *inner.shared.borrow_mut() = Some(shared);
         inner.install()?;
@@ -352,7 +369,7 @@ impl Inner {
     /// A key on the canvas (`on_canvas`) or the page; `true` if taken. Arrows and + / −
     /// orbit the view, but on the page in the failure review, where every key steps it.
     fn key_down(&self, event: &KeyboardEvent, on_canvas: bool) -> bool {
-        if dom::is_typing_target(event.target()) {
+        if crate::ui::kit::keymap::is_text_entry(event.target()) {
             return false;
         }
         let review = self.in_review();
@@ -488,7 +505,12 @@ impl Inner {
         self.request_frame();
     }
 
+    /// K or the gripper button: toggles the commanded gripper while engaged; paused, the arm
+    /// takes no command, so neither does the gripper.
     fn toggle_gripper(&self) {
+        if !self.practice.borrow().engaged {
+            return;
+        }
         let mut d = self.devices.borrow_mut();
         d.gripper_closed = !d.gripper_closed;
         d.fresh = true;
@@ -958,6 +980,7 @@ impl Inner {
         let p = self.practice.borrow();
         self.session.show(&p);
         let engaged = p.engaged;
+        let _ = pilot_control::show(&self.live.control, engaged, p.session.input_device);
         let _ = self
             .live
             .engage
@@ -971,6 +994,10 @@ impl Inner {
             },
         );
         let closed = self.devices.borrow().gripper_closed;
+        let _ = self
+            .live
+            .gripper
+            .set_attribute("aria-disabled", if engaged { "false" } else { "true" });
         let _ = dom::set_i18n(
             &self.live.gripper,
             if closed {

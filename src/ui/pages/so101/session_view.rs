@@ -22,7 +22,12 @@ pub struct SessionView {
     modules: Vec<(Module, Element)>,
     devices: Vec<Element>,
     help: Element,
+    /// The preflight's checklist (`li[data-check]`), shown in the preflight only.
     preflight: Element,
+    checks: Vec<Element>,
+    device_row: Element,
+    summary_block: Element,
+    repeat: Element,
     pub label_panel: Element,
     label_title: Element,
     label_proposal: Element,
@@ -73,6 +78,10 @@ impl SessionView {
             devices: dom::matching(root, "[data-device]")?,
             help: find(root, "[data-so101=\"module-help\"]")?,
             preflight: find(root, "[data-so101=\"preflight\"]")?,
+            checks: dom::matching(root, "[data-so101=\"preflight\"] li[data-check]")?,
+            device_row: find(root, "[data-so101=\"devices\"]")?,
+            summary_block: find(root, "[data-so101=\"summary-block\"]")?,
+            repeat: find(root, "[data-so101=\"repeat\"]")?,
             label_panel: find(root, "[data-so101=\"label-panel\"]")?,
             label_title: find(root, "[data-so101=\"label-title\"]")?,
             label_proposal: find(root, "[data-so101=\"label-proposal\"]")?,
@@ -113,14 +122,23 @@ impl SessionView {
             m => ctx::t(&format!("teleop-help-{}", m.id())),
         };
         self.help.set_text_content(Some(&help));
-        let mark = |ok: bool| if ok { "✓" } else { "–" };
-        self.preflight.set_text_content(Some(&format!(
-            "{} {} · {} {}",
-            mark(s.preflight.moved),
-            ctx::t("teleop-check-moved"),
-            mark(s.preflight.reset_verified == Some(true)),
-            ctx::t("teleop-check-reset"),
-        )));
+        // Each module's panels under its own tab only: the checklist in the preflight, the
+        // device choice wherever the arm is live, the summary and the second session in
+        // repeatability.
+        dom::show(&self.preflight, s.module == Module::Preflight);
+        dom::show(&self.device_row, s.module != Module::FailureReview);
+        dom::show(&self.summary_block, s.module == Module::Repeatability);
+        dom::show(&self.repeat, s.module == Module::Repeatability);
+        for li in &self.checks {
+            let done = match li.get_attribute("data-check").as_deref() {
+                Some("moved") => s.preflight.moved,
+                _ => s.preflight.reset_verified == Some(true),
+            };
+            let state = if done { "done" } else { "todo" };
+            if li.get_attribute("data-state").as_deref() != Some(state) {
+                let _ = li.set_attribute("data-state", state);
+            }
+        }
         self.show_labels(p);
         self.show_table(p);
         self.show_summary(p);
@@ -215,12 +233,12 @@ impl SessionView {
         }
         self.episodes.set_inner_html(&html);
         let s = p.session.summary();
-        self.session_line.set_text_content(Some(&ctx::t_strings(
+        self.session_line.set_text_content(Some(&ctx::t_args(
             "so101-session-line",
             &[
-                ("pilot", p.session.pilot_id.clone()),
-                ("count", s.attempted.to_string()),
-                ("unlabelled", s.unlabelled.to_string()),
+                ("pilot", p.session.pilot_id.clone().into()),
+                ("count", s.attempted.into()),
+                ("unlabelled", s.unlabelled.into()),
             ],
         )));
     }

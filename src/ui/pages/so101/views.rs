@@ -27,8 +27,8 @@ use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
 use crate::view::scene3d::{AxisPalette, Scene};
 use crate::view::so101::{
-    deg, ground, handle_at, joint_text, mm, ring_grips, world, wrist, wrist_view, Handle, Look,
-    VIEW_AZIMUTH, VIEW_RADIUS, VIEW_TARGET,
+    deg, ground, handle_at, mm, ring_grips, world, wrist, wrist_view, Handle, Look, VIEW_AZIMUTH,
+    VIEW_RADIUS, VIEW_TARGET,
 };
 
 /// The state the views draw: the practice and the devices (the gizmo held).
@@ -388,23 +388,23 @@ pub fn write_readouts(r: &Readouts, p: &Practice, record: &StepRecord) {
     r.set_with_value("gripper", &ctx::t(id), gripper);
     let keys = ["x", "y", "z"];
     for (k, v) in keys.iter().zip(record.tool) {
-        r.set_with_value(k, &format!("{} mm", mm(v)), &v.to_string());
+        r.set_with_value(k, &mm(v), &v.to_string());
     }
     for (k, v) in ["roll", "pitch", "yaw"].iter().zip(record.rpy) {
-        r.set_with_value(k, &format!("{}°", deg(v)), &v.to_string());
+        r.set_with_value(k, &deg(v), &v.to_string());
     }
     for (i, q) in record.q.iter().enumerate() {
-        r.set_with_value(&format!("q{}", i + 1), &joint_text(i, *q), &q.to_string());
+        r.set_with_value(&format!("q{}", i + 1), &deg(*q), &q.to_string());
     }
     r.set_with_value(
         "manipulability",
-        &format!("{:.2e} m³", record.manipulability),
+        &format!("{:.2e}", record.manipulability),
         &record.manipulability.to_string(),
     );
     r.set_with_value(
         "orientation-error",
-        &format!("{}°", deg(record.orientation_error)),
+        &deg(record.orientation_error),
         &record.orientation_error.to_string(),
     );
-    r.set("time", &format!("{:.2} s", record.t_s));
+    r.set("time", &format!("{:.2}", record.t_s));
 }

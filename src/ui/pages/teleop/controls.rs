@@ -8,6 +8,7 @@ use std::cell::RefCell;
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
+use crate::teleop::session::InputDevice;
 use crate::teleop::Outcome;
 use crate::ui::{ctx, dom};
 
@@ -16,6 +17,8 @@ use super::markup::{bool_text, find, role};
 /// The buttons.
 pub struct Controls {
     pub engage: Element,
+    /// The control state shown over the view ([`crate::ui::kit::pilot_control`]).
+    control: Element,
     pub gripper: Element,
     pub reset: Element,
     pub end: Element,
@@ -42,6 +45,7 @@ impl Controls {
     pub fn find(root: &Element) -> Result<Controls, JsValue> {
         Ok(Controls {
             engage: find(root, "[data-action=\"engage\"]")?,
+            control: role(root, "control")?,
             gripper: find(root, "[data-action=\"gripper\"]")?,
             reset: find(root, "[data-action=\"reset\"]")?,
             end: find(root, "[data-action=\"end-episode\"]")?,
@@ -50,8 +54,9 @@ impl Controls {
         })
     }
 
-    /// The engage and gripper buttons' texts and pressed states.
-    pub fn render(&self, engaged: bool, gripper_closed: bool) {
+    /// The engage and gripper buttons' texts and pressed states, and the control state shown
+    /// over the view (in the words of `device`).
+    pub fn render(&self, engaged: bool, gripper_closed: bool, device: InputDevice) {
         self.engage.set_text_content(Some(&ctx::t(if engaged {
             "teleop-pause"
         } else {
@@ -60,6 +65,10 @@ impl Controls {
         let _ = self
             .engage
             .set_attribute("aria-pressed", bool_text(engaged));
+        let _ = crate::ui::kit::pilot_control::show(&self.control, engaged, device);
+        let _ = self
+            .gripper
+            .set_attribute("aria-disabled", bool_text(!engaged));
         self.gripper
             .set_text_content(Some(&ctx::t(if gripper_closed {
                 "teleop-gripper-open-button"

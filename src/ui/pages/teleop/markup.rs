@@ -265,8 +265,6 @@ pub fn page() -> String {
          <header class=\"tele-head\"><h1 data-i18n=\"teleop-title\"></h1>\
          <p class=\"tele-notice\" data-tele=\"loading\" role=\"status\" hidden></p>\
          <p class=\"tele-notice\" data-tele=\"restored\" role=\"status\" hidden></p>{storage}</header>\
-         <div class=\"tele-intro\"><p class=\"tele-lede\" data-i18n=\"teleop-lede\"></p>\
-         <p class=\"tele-disclaimer\" data-testid=\"teleop-disclaimer\" data-i18n=\"teleop-disclaimer\"></p></div>\
          {modules}\
          <p class=\"tele-module-help\" data-tele=\"module-help\"></p>\
          <div class=\"tele-top\">\
@@ -274,7 +272,7 @@ pub fn page() -> String {
          <div class=\"tele-stage\" data-tele=\"stage\">\
          <canvas class=\"tele-canvas\" data-testid=\"teleop-canvas\" tabindex=\"0\" role=\"img\" aria-describedby=\"tele-readouts-list tele-readouts\" \
          data-i18n-attr=\"aria-label=teleop-canvas-label\"></canvas>\
-         <div class=\"tele-overlay\">\
+         <div class=\"tele-overlay\">{control}\
          <p class=\"tele-ended\" data-tele=\"ended\" data-testid=\"episode-outcome\" role=\"status\" hidden></p>\
          {offer}</div></div>\
          <p class=\"tele-stop\" data-tele=\"stop\" role=\"status\"></p>\
@@ -300,6 +298,8 @@ pub fn page() -> String {
          <p class=\"tele-note\" data-i18n=\"teleop-pointer-map\"></p>\
          <p class=\"tele-note\" data-i18n=\"teleop-limits\"></p></section>\
          </div>\
+         <div class=\"tele-intro\"><p class=\"tele-lede\" data-i18n=\"teleop-lede\"></p>\
+         <p class=\"tele-disclaimer\" data-testid=\"teleop-disclaimer\" data-i18n=\"teleop-disclaimer\"></p></div>\
          {labels}\
          <section class=\"tele-card\"><h2 data-i18n=\"teleop-episodes-title\"></h2>\
          <p class=\"tele-note\" data-tele=\"session-line\"></p>\
@@ -332,6 +332,7 @@ pub fn page() -> String {
          </div>",
         modules = modules(),
         storage = storage_warning(),
+        control = crate::ui::kit::pilot_control::markup("tele"),
         offer = gamepad_offer(),
         readouts = readouts_markup(),
         live = readouts::live_markup("tele"),

@@ -142,6 +142,10 @@ impl Page for TeleopPage {
             .with(|p| !p.loader.is_loading() && p.key_down(event))
             .unwrap_or(false)
     }
+
+    fn on_key_over_control(&self, event: &KeyboardEvent) -> bool {
+        self.0.with(|p| p.key_over_control(event)).unwrap_or(false)
+    }
 }
 
 impl Drop for TeleopPage {
@@ -273,7 +277,6 @@ impl Inner {
                 }
             }
         })?;
-        scope.listen_for(&self.root, "keydown", me, |p, e| p.key_on_button(e))?;
         let window = dom::window()?;
         scope.listen_for(&window, "keyup", me, |p, e| {
             if let Some(k) = e.dyn_ref::<KeyboardEvent>() {
@@ -329,33 +332,18 @@ impl Inner {
         true
     }
 
-    /// A key on one of the page's buttons (the focus stays on a button after a click): the
-    /// arm's hold keys, K and R still drive it; Space and Enter stay the button's, L the
-    /// shell's language key.
-    fn key_on_button(&self, e: &DomEvent) {
-        let Some(k) = e.dyn_ref::<KeyboardEvent>() else {
-            return;
-        };
-        let on_button = e
-            .target()
-            .and_then(|t| t.dyn_into::<Element>().ok())
-            .is_some_and(|el| el.tag_name().eq_ignore_ascii_case("button"));
-        if !on_button
-            || crate::ui::kit::keymap::has_command_modifier(k)
-            || crate::ui::overlay::is_open()
-            || self.loader.is_loading()
-            || self.in_review()
-        {
-            return;
+    /// A key while a control has focus (the focus stays on a tab, button, check box or slider
+    /// after a click): the arm's hold keys, K and R still drive it; Space and Enter stay the
+    /// control's, L the shell's language key.
+    fn key_over_control(&self, k: &KeyboardEvent) -> bool {
+        if self.loader.is_loading() || self.in_review() {
+            return false;
         }
         let driving = matches!(
             key_action(&k.code()),
             Some(KeyAction::Hold { .. } | KeyAction::ToggleGripper | KeyAction::Reset)
         );
-        if driving && self.key_down(k) {
-            e.prevent_default();
-            e.stop_propagation();
-        }
+        driving && self.key_down(k)
     }
 
     fn pointer_world(&self, e: &PointerEvent) -> (f64, f64) {
@@ -403,7 +391,12 @@ impl Inner {
         self.request_frame();
     }
 
+    /// K or the gripper button: toggles the commanded gripper while engaged; paused, the arm
+    /// takes no command, so neither does the gripper.
     fn toggle_gripper(&self) {
+        if !self.live.borrow().engaged {
+            return;
+        }
         self.devices.borrow_mut().toggle_gripper();
         self.render_buttons();
         self.request_frame();
@@ -518,7 +511,8 @@ impl Inner {
     fn render_buttons(&self) {
         let engaged = self.live.borrow().engaged;
         let closed = self.devices.borrow().gripper_closed;
-        self.controls.render(engaged, closed);
+        let device = self.sessions.current.borrow().input_device;
+        self.controls.render(engaged, closed, device);
         self.render_state_readouts();
     }
 
@@ -662,6 +656,7 @@ impl Inner {
             self.settings_edited();
         }
         self.render_device_status(true);
+        self.render_buttons();
         self.panel.bar.render_checks(&self.sessions);
         self.save();
     }

@@ -7,7 +7,7 @@
 
 use std::cell::{Cell, RefCell};
 
-use crate::teleop::session::{InputDevice, Module, Session};
+use crate::teleop::session::{Module, Session};
 use crate::teleop::{Episode, Label};
 use crate::ui::kit::store;
 use crate::ui::schedule::now_ms;
@@ -32,7 +32,11 @@ pub fn iso_now() -> String {
 
 /// A new session with the default pilot id and the keyboard.
 pub fn new_session() -> Session {
-    Session::new("pilot", InputDevice::Keyboard, &iso_now())
+    Session::new(
+        "pilot",
+        crate::ui::kit::pilot_session::default_device(),
+        &iso_now(),
+    )
 }
 
 /// The two sessions.
