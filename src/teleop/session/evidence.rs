@@ -35,6 +35,10 @@ pub const TABLE_TYPE: &str = "episode-table";
 /// `type` of an episode's time series among the `dataArtifacts`.
 pub const EPISODE_TYPE: &str = "episode-timeseries";
 
+/// `type` of a dataset written from the labelled episodes among the `dataArtifacts` (the
+/// SO-101's LeRobot dataset v3.0, `so101_lerobot_v3.zip`).
+pub const DATASET_TYPE: &str = "lerobot-dataset";
+
 /// One file of the evidence's `dataArtifacts`: its name, size and SHA-256.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Artifact {
@@ -49,12 +53,29 @@ pub struct Artifact {
 impl Artifact {
     /// The artifact of the file `path` holding `text`.
     pub fn of(path: &str, text: &str) -> Artifact {
+        Artifact::of_bytes(path, text.as_bytes())
+    }
+
+    /// The artifact of the file `path` holding `bytes`.
+    pub fn of_bytes(path: &str, bytes: &[u8]) -> Artifact {
         Artifact {
             path: path.to_string(),
-            bytes: text.len() as u64,
-            sha256: sha256_hex(text.as_bytes()),
+            bytes: bytes.len() as u64,
+            sha256: sha256_hex(bytes),
         }
     }
+}
+
+/// A file listed among the `dataArtifacts` after the episodes' (a dataset written from them):
+/// its `type`, `mediaType` and artifact.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExtraArtifact {
+    /// `type`, e.g. [`DATASET_TYPE`].
+    pub kind: &'static str,
+    /// `mediaType`, e.g. `application/zip`.
+    pub media_type: &'static str,
+    /// The file.
+    pub artifact: Artifact,
 }
 
 impl<E: PracticeEpisode> Session<E> {
@@ -68,7 +89,18 @@ impl<E: PracticeEpisode> Session<E> {
     /// hashed beforehand (a page hashes long episodes in slices): the same text as
     /// [`Session::evidence`] when they are the episodes' [`Artifact::of`].
     pub fn evidence_with(&self, ended_at: &str, episode_artifacts: &[Artifact]) -> String {
-        let value = self.evidence_value_with(ended_at, episode_artifacts);
+        self.evidence_with_extra(ended_at, episode_artifacts, &[])
+    }
+
+    /// The evidence with `extra` listed after the episodes among the `dataArtifacts` (a
+    /// dataset written from them, its SHA-256 that of the bytes downloaded).
+    pub fn evidence_with_extra(
+        &self,
+        ended_at: &str,
+        episode_artifacts: &[Artifact],
+        extra: &[ExtraArtifact],
+    ) -> String {
+        let value = self.evidence_value_with(ended_at, episode_artifacts, extra);
         let mut text = serde_json::to_string_pretty(&value).unwrap_or_default();
         text.push('\n');
         text
@@ -76,11 +108,11 @@ impl<E: PracticeEpisode> Session<E> {
 
     /// The evidence as a JSON value.
     pub fn evidence_value(&self, ended_at: &str) -> Value {
-        self.evidence_value_with(ended_at, &self.episode_artifacts())
+        self.evidence_value_with(ended_at, &self.episode_artifacts(), &[])
     }
 
     /// The artifacts of the episodes' time series, in order.
-    fn episode_artifacts(&self) -> Vec<Artifact> {
+    pub fn episode_artifacts(&self) -> Vec<Artifact> {
         self.episodes
             .iter()
             .map(|e| Artifact::of(&E::episode_file_name(e.number), &e.csv()))
@@ -89,18 +121,25 @@ impl<E: PracticeEpisode> Session<E> {
 
     /// The evidence as a JSON value, given the episodes' artifacts (see
     /// [`Session::evidence_with`]).
-    fn evidence_value_with(&self, ended_at: &str, episode_artifacts: &[Artifact]) -> Value {
+    fn evidence_value_with(
+        &self,
+        ended_at: &str,
+        episode_artifacts: &[Artifact],
+        extra: &[ExtraArtifact],
+    ) -> Value {
         let s = self.summary();
         let episodes_csv = self.episodes_csv();
         let table = Artifact::of(&E::episodes_name(), &episodes_csv);
-        let artifacts: Vec<Value> = std::iter::once((TABLE_TYPE, &table))
-            .chain(episode_artifacts.iter().map(|a| (EPISODE_TYPE, a)))
-            .map(|(kind, a)| {
+        let csv = "text/csv";
+        let artifacts: Vec<Value> = std::iter::once((TABLE_TYPE, csv, &table))
+            .chain(episode_artifacts.iter().map(|a| (EPISODE_TYPE, csv, a)))
+            .chain(extra.iter().map(|x| (x.kind, x.media_type, &x.artifact)))
+            .map(|(kind, media_type, a)| {
                 json!({
                     "type": kind,
                     "uriOrRef": a.path,
                     "sha256": a.sha256,
-                    "mediaType": "text/csv",
+                    "mediaType": media_type,
                     "bytes": a.bytes,
                 })
             })

@@ -20,8 +20,8 @@ mod stored;
 mod table;
 
 pub use evidence::{
-    check_evidence, is_iso8601, sha256_hex, Artifact, EvidenceProblem, Sha256, EMBODIMENT,
-    EPISODE_TYPE, EVIDENCE_KEYS, EVIDENCE_NAME, RUNTIME, TABLE_TYPE,
+    check_evidence, is_iso8601, sha256_hex, Artifact, EvidenceProblem, ExtraArtifact, Sha256,
+    DATASET_TYPE, EMBODIMENT, EPISODE_TYPE, EVIDENCE_KEYS, EVIDENCE_NAME, RUNTIME, TABLE_TYPE,
 };
 pub use files::SessionError;
 pub use kind::{control_summary, each_event, run_steps, PracticeEpisode, Replayable};

@@ -607,6 +607,38 @@ mod academy_schema {
     }
 
     #[test]
+    fn a_dataset_zip_is_listed_after_the_episodes_and_the_files_still_read_back() {
+        use crate::teleop::session::{ExtraArtifact, DATASET_TYPE};
+        let s = session();
+        let zip = Artifact::of_bytes("so101_lerobot_v3.zip", b"PK\x03\x04 not really a zip");
+        let extra = [ExtraArtifact {
+            kind: DATASET_TYPE,
+            media_type: "application/zip",
+            artifact: zip.clone(),
+        }];
+        let text = s.evidence_with_extra(END, &s.episode_artifacts(), &extra);
+        let doc: Value = serde_json::from_str(&text).expect("json");
+        let errors: Vec<String> = validator()
+            .iter_errors(&doc)
+            .map(|e| format!("{} at {}", e, e.instance_path()))
+            .collect();
+        assert!(errors.is_empty(), "{}", errors.join("\n"));
+        assert_eq!(check_evidence(&doc), Ok(()));
+        let listed = doc["dataArtifacts"].as_array().expect("array");
+        let last = listed.last().expect("listed");
+        assert_eq!(last["type"], DATASET_TYPE);
+        assert_eq!(last["uriOrRef"], "so101_lerobot_v3.zip");
+        assert_eq!(last["sha256"], zip.sha256.as_str());
+        assert_eq!(last["mediaType"], "application/zip");
+        assert_eq!(listed.len(), s.episodes.len() + 2);
+        // The session's files with this evidence still open as the session.
+        let mut files = s.files(END);
+        files[0].1 = text;
+        let back = Session::<Episode>::from_files(&files).expect("reads back");
+        assert_eq!(back.episodes.len(), s.episodes.len());
+    }
+
+    #[test]
     fn the_validator_refuses_the_old_artifact_shape() {
         let mut doc = session().evidence_value(END);
         doc["dataArtifacts"][0] = json!({"path": "teleop_episodes.csv", "sha256": null});
