@@ -12,6 +12,7 @@
 //! - [`math`]: correctly rounded sin, cos, atan2 … : the same bits natively and in wasm.
 //! - [`numpy`]: `np.arange` and friends, operation for operation.
 //! - [`pyfmt`]: numbers printed exactly as Python prints them.
+//! - [`numtext`]: numbers as the app shows them (no negative zero).
 //! - [`args`]: command-line style argument parsing shared by the CLI and `runRecipe`.
 //! - [`bench`](mod@bench): the cases of `make bench`.
 //! - [`error`]: the one error type every kernel returns.
@@ -31,6 +32,7 @@ pub mod error;
 pub mod i18n;
 pub mod math;
 pub mod numpy;
+pub mod numtext;
 pub mod planar2r;
 pub mod pyfmt;
 pub mod recipes;

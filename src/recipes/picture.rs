@@ -1,7 +1,7 @@
-//! The drawing model of the home page's recipe-card pictures: marks in unit coordinates (x
-//! right, y up, both in [0, 1]) so the page only scales them to its canvas, series as slots of
-//! the page's palette; and the helpers each recipe's `picture` draws with (CSV columns by
-//! header, a frame that fits data onto the unit square).
+//! The drawing model of the home page's recipe-card and tile pictures: marks in unit
+//! coordinates (x right, y up, both in [0, 1]) so the page only scales them to its canvas,
+//! series as slots of the page's palette; and the helpers each recipe's `picture` draws with
+//! (CSV columns by header, a frame that fits data onto the unit square).
 
 use glam::DVec2;
 
@@ -17,6 +17,10 @@ pub enum Mark {
         series: u8,
         pairs: Vec<(DVec2, DVec2)>,
     },
+    /// A solid polygon (a link, a block), closed.
+    Fill { series: u8, points: Vec<DVec2> },
+    /// A region (a goal): a closed polygon lightly filled, its outline drawn.
+    Region { series: u8, points: Vec<DVec2> },
     /// A grid of cells, row-major from the bottom-left, values in [0, 1].
     Cells {
         cols: usize,

@@ -28,7 +28,10 @@ mod tests {
         p.marks
             .iter()
             .flat_map(|m| match m {
-                Mark::Line { points, .. } | Mark::Dots { points, .. } => points.clone(),
+                Mark::Line { points, .. }
+                | Mark::Dots { points, .. }
+                | Mark::Fill { points, .. }
+                | Mark::Region { points, .. } => points.clone(),
                 Mark::Segments { pairs, .. } => pairs.iter().flat_map(|(a, b)| [*a, *b]).collect(),
                 Mark::Cells { .. } => Vec::new(),
             })

@@ -295,12 +295,7 @@ impl PageQuery {
 
 /// A number as the tables show it: 4 decimals, no negative zero.
 pub fn cell(x: f64) -> String {
-    let text = format!("{x:.4}");
-    if text.starts_with('-') && text[1..].bytes().all(|b| b == b'0' || b == b'.') {
-        text[1..].to_string()
-    } else {
-        text.replace('-', "−")
-    }
+    crate::numtext::fixed_minus(x, 4)
 }
 
 /// The rows of the CSV text (header left out), each split into its cells, exactly as written.
@@ -462,6 +457,7 @@ mod tests {
     fn cells_and_csv_rows() {
         assert_eq!(cell(-1.23456), "−1.2346");
         assert_eq!(cell(-0.00001), "0.0000");
+        assert_eq!(cell(-0.0), "0.0000");
         assert_eq!(cell(0.25), "0.2500");
         let rows = csv_rows("frame,x_m\n0,0.0\n1,-0.0\n");
         assert_eq!(rows, vec![vec!["0", "0.0"], vec!["1", "-0.0"]]);

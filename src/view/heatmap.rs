@@ -200,7 +200,7 @@ pub fn legend_value(v: f64) -> String {
         "0".to_string()
     } else if v.abs() >= 1e-4 && v.abs() < 1e4 {
         let digits = (2 - v.abs().log10().floor() as i32).clamp(0, 8) as usize;
-        format!("{v:.digits$}")
+        crate::numtext::fixed(v, digits)
     } else {
         format!("{v:.2e}")
     }

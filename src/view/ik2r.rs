@@ -17,6 +17,7 @@ use glam::{DAffine2, DVec2};
 
 use crate::args::{parse_f64, ArgSpec};
 use crate::error::RecipeError;
+use crate::numtext;
 use crate::planar2r::{wrap_angle, Arm, ArmShape, Elbow, PoseReport};
 use crate::recipes::ik_workspace::{self, WorkspaceParams};
 use crate::recipes::jacobian_2r::{self, SweepParams};
@@ -773,7 +774,7 @@ pub fn fmt_rad(x: f64) -> String {
     } else {
         6
     };
-    clean_zero(format!("{x:.decimals$}"))
+    numtext::unsigned_zero(format!("{x:.decimals$}"))
 }
 
 /// `x` with `sig` significant digits; scientific notation below 1e-4 and from 1e6.
@@ -790,20 +791,12 @@ pub fn fmt_sig(x: f64, sig: usize) -> String {
         return format!("{x:.d$e}");
     }
     let decimals = (sig as i32 - 1 - a.log10().floor() as i32).max(0) as usize;
-    clean_zero(format!("{x:.decimals$}"))
+    numtext::unsigned_zero(format!("{x:.decimals$}"))
 }
 
-/// `x` with a fixed number of decimals.
+/// `x` with a fixed number of decimals ([`numtext::fixed`]: never `-0.000`).
 pub fn fmt_fixed(x: f64, decimals: usize) -> String {
-    clean_zero(format!("{x:.decimals$}"))
-}
-
-/// `-0.000` → `0.000`.
-fn clean_zero(s: String) -> String {
-    match s.strip_prefix('-') {
-        Some(rest) if rest.bytes().all(|b| b == b'0' || b == b'.') => rest.to_string(),
-        _ => s,
-    }
+    numtext::fixed(x, decimals)
 }
 
 /// The readout texts of a pose, in [`READOUTS`] order.

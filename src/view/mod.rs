@@ -26,6 +26,7 @@ pub mod lesson_file;
 pub mod palette;
 pub mod pendulum;
 pub mod pid_step;
+pub mod pilot_picture;
 pub mod plot;
 pub mod progress;
 pub mod replay;

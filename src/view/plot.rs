@@ -90,12 +90,7 @@ pub fn tick_label(v: f64, step: f64) -> String {
     } else {
         0
     };
-    let s = format!("{v:.decimals$}");
-    if s.starts_with('-') && s[1..].bytes().all(|b| b == b'0' || b == b'.') {
-        s[1..].to_string()
-    } else {
-        s
-    }
+    crate::numtext::fixed(v, decimals)
 }
 
 /// 0.25, 0.025 … need one decimal more than their magnitude.

@@ -616,7 +616,7 @@ pub struct SubText {
 }
 
 fn f4(v: f64) -> String {
-    format!("{v:.4}")
+    crate::numtext::fixed(v, 4)
 }
 
 /// The text of `phase` of iteration `r`.

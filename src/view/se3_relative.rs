@@ -90,10 +90,7 @@ pub fn deg_text(deg: f64) -> String {
             text.pop();
         }
     }
-    if text == "-0" {
-        text = "0".into();
-    }
-    text
+    crate::numtext::unsigned_zero(text)
 }
 
 fn finite_number(text: &str) -> Option<f64> {
@@ -218,12 +215,7 @@ impl PoseFields {
 
 /// A matrix entry as the page prints it: `digits` decimals, no `-0.0000`.
 pub fn entry_text(x: f64, digits: usize) -> String {
-    let text = format!("{x:.digits$}");
-    if text.starts_with('-') && text[1..].bytes().all(|b| b == b'0' || b == b'.') {
-        text[1..].to_string()
-    } else {
-        text
-    }
+    crate::numtext::fixed(x, digits)
 }
 
 /// The rows of a 4×4 matrix as text.

@@ -79,12 +79,7 @@ pub fn snap(value: f64, step: f64) -> String {
     }
     let decimals = (-step.log10().floor()).max(0.0) as usize;
     let snapped = (value / step).round() * step;
-    let text = format!("{snapped:.decimals$}");
-    if text.starts_with('-') && text[1..].bytes().all(|b| b == b'0' || b == b'.') {
-        text[1..].to_string()
-    } else {
-        text
-    }
+    crate::numtext::fixed(snapped, decimals)
 }
 
 /// The axis range to show while a slider is held: `shown` as long as it holds `fitted`, else
@@ -290,7 +285,7 @@ pub fn sig(x: f64, digits: usize) -> String {
         return format!("{:.*e}", digits.saturating_sub(1), x);
     }
     let decimals = (digits as i32 - 1 - mag).max(0) as usize;
-    format!("{x:.decimals$}")
+    crate::numtext::fixed(x, decimals)
 }
 
 /// The row of `rows` (times ascending, `t_of`) whose time is nearest `t`: what a cursor at

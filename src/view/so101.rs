@@ -10,6 +10,7 @@
 use glam::{DMat3, DVec2, DVec3};
 
 use crate::camera3d::{hit_point, Camera};
+use crate::numtext::fixed_minus;
 use crate::so101::kinematics::{Chain, Frame};
 use crate::so101::model::{joint_limits, FIXED_FINGER, PARTS};
 use crate::so101::scene::{obstacle_box, Obb, SceneConfig, GOAL_HALF, TABLE_Z};
@@ -591,23 +592,17 @@ pub fn wrist_view(chain: &Chain, width: f64, height: f64) -> (Camera, f64) {
 /// A joint's readout: its angle in degrees and its limits, `"12.3° (−110.0…110.0)"`.
 pub fn joint_text(i: usize, q: f64) -> String {
     let (lo, hi) = joint_limits()[i.min(4)];
-    format!(
-        "{:.1}° ({:.1}…{:.1})",
-        q.to_degrees(),
-        lo.to_degrees(),
-        hi.to_degrees()
-    )
-    .replace('-', "−")
+    format!("{}° ({}…{})", deg(q), deg(lo), deg(hi))
 }
 
 /// Millimetres with one decimal, `"123.4"` (minus sign as typeset).
 pub fn mm(m: f64) -> String {
-    format!("{:.1}", m * 1000.0).replace('-', "−")
+    fixed_minus(m * 1000.0, 1)
 }
 
-/// Degrees with one decimal.
+/// Degrees with one decimal (minus sign as typeset).
 pub fn deg(rad: f64) -> String {
-    format!("{:.1}", rad.to_degrees()).replace('-', "−")
+    fixed_minus(rad.to_degrees(), 1)
 }
 
 #[cfg(test)]
@@ -918,5 +913,15 @@ mod tests {
         assert_eq!(mm(-0.0123), "−12.3");
         assert_eq!(deg(std::f64::consts::PI), "180.0");
         assert_eq!(joint_text(0, 0.0), "0.0° (−110.0…110.0)");
+    }
+
+    #[test]
+    fn a_readout_that_rounds_to_zero_has_no_minus() {
+        // The start pose's tool y and pitch: a few µm and µrad below zero.
+        assert_eq!(mm(-0.000_004), "0.0");
+        assert_eq!(deg(-0.000_1), "0.0");
+        assert_eq!(mm(-0.0), "0.0");
+        assert_eq!(joint_text(2, -0.000_1), "0.0° (−96.8…96.8)");
+        assert_eq!(mm(-0.000_06), "−0.1");
     }
 }

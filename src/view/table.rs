@@ -89,14 +89,15 @@ pub const ROUNDED_DIGITS: usize = 6;
 /// significant digits rounded to that many (trailing zeros dropped, the CSV's own notation
 /// kept otherwise: `0.018000000000000002` → `0.018`, `1.0` stays `1.0`, `-3.1415926535` →
 /// `-3.14159`, `1.23456789e-10` → `1.23457e-10`); anything else (words, `nan`, whole
-/// numbers, short decimals) as it is.
+/// numbers, short decimals) as it is, but a negative zero (`-0.0`, as Python writes it)
+/// shown as `0.0`.
 pub fn rounded(cell: &str) -> String {
     let text = cell.trim();
     let Ok(value) = text.parse::<f64>() else {
         return cell.to_string();
     };
     if !value.is_finite() || significant_digits(text) <= ROUNDED_DIGITS {
-        return cell.to_string();
+        return crate::numtext::unsigned_zero(cell.to_string());
     }
     let exponent = if value == 0.0 {
         0
@@ -192,6 +193,8 @@ mod tests {
         assert_eq!(rounded("0.30000000000000004"), "0.3");
         assert_eq!(rounded("-3.141592653589793"), "-3.14159");
         assert_eq!(rounded("1.0"), "1.0");
+        assert_eq!(rounded("-0.0"), "0.0");
+        assert_eq!(rounded("-0.05"), "-0.05");
         assert_eq!(rounded("0.05"), "0.05");
         assert_eq!(rounded("800"), "800");
         assert_eq!(rounded("123456789012"), "123456789012");

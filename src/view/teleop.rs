@@ -270,14 +270,9 @@ pub fn radians(v: f64) -> String {
     fixed_clean(v, 3)
 }
 
-/// `v` with `digits` decimals, never `-0.000`.
+/// `v` with `digits` decimals, never `-0.000` ([`crate::numtext::fixed`]).
 pub fn fixed_clean(v: f64, digits: usize) -> String {
-    let s = format!("{v:.digits$}");
-    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
-        s[1..].to_string()
-    } else {
-        s
-    }
+    crate::numtext::fixed(v, digits)
 }
 
 /// The arm view's transform: world `(x, z)` in m ↔ CSS px, `z` up, the scene's bounds fitted
@@ -330,10 +325,10 @@ pub fn comparison_cell(id: &str, v: Option<f64>) -> String {
     match v {
         None => "—".to_string(),
         Some(v) => match id {
-            "success-rate" => format!("{:.0} %", 100.0 * v),
-            "mean-time" => format!("{v:.2} s"),
-            "efficiency" => format!("{v:.3}"),
-            _ => format!("{v:.0}"),
+            "success-rate" => format!("{} %", fixed_clean(100.0 * v, 0)),
+            "mean-time" => format!("{} s", fixed_clean(v, 2)),
+            "efficiency" => fixed_clean(v, 3),
+            _ => fixed_clean(v, 0),
         },
     }
 }

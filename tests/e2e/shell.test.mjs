@@ -587,6 +587,41 @@ test('every recipe card shows a picture its kernel drew at the defaults, after t
   }
 });
 
+test('the Robot Pilot tiles show their scenes at the start, drawn like the other tiles\' pictures', async () => {
+  const { page, errors, close } = await openApp(server.url, '#/');
+  try {
+    const ids = ['teleop', 'so101'];
+    await page.waitForFunction((ids) => ids.every((id) => document.querySelector(`[data-testid="tile-picture-${id}"]`)?.dataset.drawn === '1'), ids, { timeout: 20000 });
+    const size = (id) => page.locator(`[data-testid="tile-picture-${id}"]`).boundingBox();
+    const reference = await size('ik-2r');
+    for (const id of ids) {
+      const canvas = page.locator(`[data-testid="featured-${id}"] canvas.tile-picture`);
+      assert.equal(await canvas.getAttribute('data-scene'), id);
+      assert.equal(await canvas.getAttribute('aria-hidden'), 'true');
+      const box = await size(id);
+      assert.ok(Math.abs(box.width - reference.width) < 1 && Math.abs(box.height - reference.height) < 1, `${id}: ${JSON.stringify(box)}`);
+      // Inked, in more than one colour: the arm, the block or cube and the goal.
+      const { share, colours } = await canvas.evaluate((c) => {
+        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        let n = 0;
+        const seen = new Set();
+        for (let i = 0; i < d.length; i += 4) {
+          if (d[i + 3] === 255) {
+            n += 1;
+            seen.add(`${d[i] >> 4},${d[i + 1] >> 4},${d[i + 2] >> 4}`);
+          }
+        }
+        return { share: n / (c.width * c.height), colours: seen.size };
+      });
+      assert.ok(share > 0.02, `${id}: ${share} of the canvas inked`);
+      assert.ok(colours >= 3, `${id}: ${colours} colours`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
 test('the home page ends with the seed\'s "Compare the tools" table, localized, with plain outbound links', async () => {
   const { page, errors, close } = await openApp(server.url, '#/');
   try {

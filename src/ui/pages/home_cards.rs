@@ -113,15 +113,17 @@ fn tools_section() -> Result<Element, JsValue> {
     Ok(section)
 }
 
-/// The tile of an in-browser page: the picture its (first) recipe draws, a label saying what
-/// the page shows (`home-featured-label-<page id>`, where the page has one), its title with an
-/// arrow.
+/// The tile of an in-browser page: the picture its (first) recipe draws (the Robot Pilot
+/// pages: their scenes at the start), a label saying what the page shows
+/// (`home-featured-label-<page id>`, where the page has one), its title with an arrow.
 fn featured_card(def: &PageDef) -> Result<Element, JsValue> {
     let card = el_class("a", "featured-card")?;
     card.set_attribute("href", &router::build_hash(def.id, &[]))?;
     card.set_attribute("data-testid", &format!("featured-{}", def.id))?;
-    if let Some(recipe) = RECIPES.iter().find(|r| r.info.page == Some(def.id)) {
-        append(&card, &home_picture::tile_canvas(recipe.info.id, def.id)?)?;
+    let recipe = RECIPES.iter().find(|r| r.info.page == Some(def.id));
+    if recipe.is_some() || home_picture::has_scene(def.id) {
+        let recipe_id = recipe.map(|r| r.info.id);
+        append(&card, &home_picture::tile_canvas(def.id, recipe_id)?)?;
     }
     let label_id = format!("home-featured-label-{}", def.id);
     if ctx::has_message(&label_id) {

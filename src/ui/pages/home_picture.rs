@@ -1,6 +1,7 @@
 //! The small picture on each recipe card and page tile of the home page ([`crate::view::card_picture`]):
 //! the kernels run at their defaults after the first paint, one card per task, so the page
-//! shows at once and no task is long.
+//! shows at once and no task is long. The tiles of the Robot Pilot pages, which have no
+//! recipe, show their scenes at the start ([`crate::view::pilot_picture`]).
 
 use std::rc::Rc;
 
@@ -12,6 +13,7 @@ use crate::ui::{dom, schedule};
 use crate::view::card_picture::{self, Mark, Picture};
 use crate::view::heatmap;
 use crate::view::palette;
+use crate::view::pilot_picture;
 
 /// Okabe–Ito colours of the palette slots (`card_picture::series`; slot 3 is a neutral grey).
 const PALETTE: [&str; 5] = [
@@ -39,14 +41,23 @@ pub(crate) fn canvas(id: &str) -> Result<Element, JsValue> {
     Ok(canvas)
 }
 
-/// The picture of recipe `id` on the tile of page `page_id` (the tile's text names it: the
-/// canvas is hidden from screen readers).
-pub(crate) fn tile_canvas(id: &str, page_id: &str) -> Result<Element, JsValue> {
+/// The picture on the tile of page `page_id`: recipe `recipe`'s, or else the page's scene at
+/// its start ([`pilot_picture`]). The tile's text names it: the canvas is hidden from screen
+/// readers.
+pub(crate) fn tile_canvas(page_id: &str, recipe: Option<&str>) -> Result<Element, JsValue> {
     let canvas = dom::el_class("canvas", "tile-picture")?;
     canvas.set_attribute("data-testid", &format!("tile-picture-{page_id}"))?;
-    canvas.set_attribute("data-recipe", id)?;
+    match recipe {
+        Some(id) => canvas.set_attribute("data-recipe", id)?,
+        None => canvas.set_attribute("data-scene", page_id)?,
+    }
     canvas.set_attribute("aria-hidden", "true")?;
     Ok(canvas)
+}
+
+/// Whether page `page_id` (one without a recipe) has a picture of its scene for its tile.
+pub(crate) fn has_scene(page_id: &str) -> bool {
+    pilot_picture::PAGES.contains(&page_id)
 }
 
 /// Draws every tile and card picture under `root` (in document order: the tiles of the first
@@ -69,17 +80,48 @@ fn next(queue: Rc<Vec<HtmlCanvasElement>>, i: usize) {
     if !canvas.is_connected() {
         return;
     }
-    if let Some(id) = canvas.get_attribute("data-recipe") {
-        let aspect =
-            f64::from(canvas.client_width().max(1)) / f64::from(canvas.client_height().max(1));
-        if let Some(picture) = card_picture::default_picture(&id, aspect) {
-            if draw(canvas, &picture).is_ok() {
-                let _ = canvas.set_attribute("data-drawn", "1");
-            }
+    let aspect = f64::from(canvas.client_width().max(1)) / f64::from(canvas.client_height().max(1));
+    let picture = match canvas.get_attribute("data-recipe") {
+        Some(id) => card_picture::default_picture(&id, aspect),
+        None => canvas
+            .get_attribute("data-scene")
+            .and_then(|page| pilot_picture::picture(&page, aspect)),
+    };
+    if let Some(picture) = picture {
+        if draw(canvas, &picture).is_ok() {
+            let _ = canvas.set_attribute("data-drawn", "1");
         }
     }
     let rest = Rc::clone(&queue);
     let _ = schedule::after_paint(move || next(rest, i + 1));
+}
+
+/// The edge of a solid: the tile's background, a little see-through.
+const EDGE: &str = "rgba(255,255,255,0.75)";
+
+/// How opaque a region's fill is (its outline is drawn in full).
+const REGION_ALPHA: f64 = 0.3;
+
+fn colour(series: u8) -> &'static str {
+    PALETTE[usize::from(series) % PALETTE.len()]
+}
+
+/// A closed path through `points` (unit square, mapped by `at`).
+fn polygon(
+    ctx: &CanvasRenderingContext2d,
+    points: &[glam::DVec2],
+    at: &impl Fn(glam::DVec2) -> (f64, f64),
+) {
+    ctx.begin_path();
+    for (k, p) in points.iter().enumerate() {
+        let (x, y) = at(*p);
+        if k == 0 {
+            ctx.move_to(x, y);
+        } else {
+            ctx.line_to(x, y);
+        }
+    }
+    ctx.close_path();
 }
 
 fn draw(canvas: &HtmlCanvasElement, picture: &Picture) -> Result<(), JsValue> {
@@ -99,7 +141,7 @@ fn draw(canvas: &HtmlCanvasElement, picture: &Picture) -> Result<(), JsValue> {
     for mark in &picture.marks {
         match mark {
             Mark::Line { series, points } => {
-                ctx.set_stroke_style_str(PALETTE[usize::from(*series) % PALETTE.len()]);
+                ctx.set_stroke_style_str(colour(*series));
                 ctx.set_line_width(1.75);
                 ctx.begin_path();
                 for (k, p) in points.iter().enumerate() {
@@ -113,7 +155,7 @@ fn draw(canvas: &HtmlCanvasElement, picture: &Picture) -> Result<(), JsValue> {
                 ctx.stroke();
             }
             Mark::Dots { series, points } => {
-                ctx.set_fill_style_str(PALETTE[usize::from(*series) % PALETTE.len()]);
+                ctx.set_fill_style_str(colour(*series));
                 let r = if points.len() > 400 { 1.1 } else { 2.2 };
                 for p in points {
                     let (x, y) = at(*p);
@@ -121,7 +163,7 @@ fn draw(canvas: &HtmlCanvasElement, picture: &Picture) -> Result<(), JsValue> {
                 }
             }
             Mark::Segments { series, pairs } => {
-                ctx.set_stroke_style_str(PALETTE[usize::from(*series) % PALETTE.len()]);
+                ctx.set_stroke_style_str(colour(*series));
                 ctx.set_line_width(1.25);
                 ctx.begin_path();
                 for (a, b) in pairs {
@@ -130,6 +172,25 @@ fn draw(canvas: &HtmlCanvasElement, picture: &Picture) -> Result<(), JsValue> {
                     ctx.move_to(ax, ay);
                     ctx.line_to(bx, by);
                 }
+                ctx.stroke();
+            }
+            Mark::Fill { series, points } => {
+                polygon(&ctx, points, &at);
+                ctx.set_fill_style_str(colour(*series));
+                ctx.fill();
+                // A hairline in the tile's colour parts solids that touch.
+                ctx.set_stroke_style_str(EDGE);
+                ctx.set_line_width(0.75);
+                ctx.stroke();
+            }
+            Mark::Region { series, points } => {
+                polygon(&ctx, points, &at);
+                ctx.set_fill_style_str(colour(*series));
+                ctx.set_global_alpha(REGION_ALPHA);
+                ctx.fill();
+                ctx.set_global_alpha(1.0);
+                ctx.set_stroke_style_str(colour(*series));
+                ctx.set_line_width(1.5);
                 ctx.stroke();
             }
             Mark::Cells { cols, rows, values } => {

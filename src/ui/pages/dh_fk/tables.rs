@@ -1,10 +1,11 @@
 //! The two tables: the modified-DH parameters of the chain with the current joint angles
-//! (θ_i = q_i + offset), the walked row marked, and the pose of every frame exactly as the
-//! CSV's rows write it (the same cells, `-0.0` included).
+//! (θ_i = q_i + offset), the walked row marked, and the pose of every frame as the CSV's rows
+//! write it (the same cells, but a negative zero shown as `0.0`: [`numtext::unsigned_zero`]).
 
 use wasm_bindgen::JsValue;
 use web_sys::Element;
 
+use crate::numtext;
 use crate::recipes::dh_fk::{DEMO_CHAIN, JOINTS};
 use crate::ui::dom;
 use crate::view::dh_fk::cell;
@@ -75,8 +76,9 @@ impl PoseTable {
     pub fn show(&self, rows: &[Vec<String>]) {
         for (tds, row) in self.cells.iter().zip(rows) {
             for (td, text) in tds.iter().zip(row) {
+                let text = numtext::unsigned_zero(text.clone());
                 if td.text_content().as_deref() != Some(text.as_str()) {
-                    td.set_text_content(Some(text));
+                    td.set_text_content(Some(&text));
                 }
             }
         }

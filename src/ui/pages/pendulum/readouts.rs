@@ -99,7 +99,7 @@ pub fn sig(x: f64, digits: usize) -> String {
         return format!("{:.*e}", digits.saturating_sub(1), x);
     }
     let decimals = (digits as i32 - 1 - mag).max(0) as usize;
-    format!("{x:.decimals$}")
+    crate::numtext::fixed(x, decimals)
 }
 
 fn units() -> Vec<String> {

@@ -595,7 +595,7 @@ impl Inner {
             ink,
         );
         self.readouts
-            .set_with_value("rot-diff", &format!("{diff:.4}"), &py_float(diff));
+            .set_with_value("rot-diff", &crate::numtext::fixed(diff, 4), &py_float(diff));
     }
 
     fn show_commands(&self) {
