@@ -589,10 +589,15 @@ pub fn wrist_view(chain: &Chain, width: f64, height: f64) -> (Camera, f64) {
     (camera, roll)
 }
 
-/// A joint's readout: its angle in degrees and its limits, `"12.3° (−110.0…110.0)"`.
-pub fn joint_text(i: usize, q: f64) -> String {
+/// A joint's limits as the readouts show them, `"−110.0 … 110.0"` (degrees).
+pub fn joint_limits_text(i: usize) -> String {
     let (lo, hi) = joint_limits()[i.min(4)];
-    format!("{}° ({}…{})", deg(q), deg(lo), deg(hi))
+    format!("{} … {}", deg(lo), deg(hi))
+}
+
+/// The manipulability as the readouts show it, `"7.03e-3"` (never a negative zero).
+pub fn manipulability_text(m: f64) -> String {
+    crate::numtext::unsigned_zero(format!("{m:.2e}"))
 }
 
 /// Millimetres with one decimal, `"123.4"` (minus sign as typeset).
@@ -912,7 +917,9 @@ mod tests {
     fn readout_texts() {
         assert_eq!(mm(-0.0123), "−12.3");
         assert_eq!(deg(std::f64::consts::PI), "180.0");
-        assert_eq!(joint_text(0, 0.0), "0.0° (−110.0…110.0)");
+        assert_eq!(joint_limits_text(0), "−110.0 … 110.0");
+        assert_eq!(manipulability_text(0.00703), "7.03e-3");
+        assert_eq!(manipulability_text(-0.0), "0.00e0");
     }
 
     #[test]
@@ -921,7 +928,7 @@ mod tests {
         assert_eq!(mm(-0.000_004), "0.0");
         assert_eq!(deg(-0.000_1), "0.0");
         assert_eq!(mm(-0.0), "0.0");
-        assert_eq!(joint_text(2, -0.000_1), "0.0° (−96.8…96.8)");
+        assert_eq!(deg(-0.000_1), "0.0");
         assert_eq!(mm(-0.000_06), "−0.1");
     }
 }

@@ -68,7 +68,6 @@ const JOINT_ROWS: [Row; 7] = [
 /// The readouts as two tables (name, value, unit, limit; the value alone in its cell, in
 /// tabular digits), `id="so101-readouts"`: the views' text alternative.
 fn readout_tables() -> String {
-    let limits = crate::so101::model::joint_limits();
     let table = |caption: &str, rows: &[Row]| -> String {
         let mut html = format!(
             "<table class=\"so101-ro\"><caption data-i18n=\"{caption}\"></caption><thead><tr>\
@@ -80,13 +79,9 @@ fn readout_tables() -> String {
             let limit = key
                 .strip_prefix('q')
                 .and_then(|n| n.parse::<usize>().ok())
-                .and_then(|n| limits.get(n.wrapping_sub(1)))
-                .map_or(String::new(), |(lo, hi)| {
-                    format!(
-                        "{} … {}",
-                        crate::view::so101::deg(*lo),
-                        crate::view::so101::deg(*hi)
-                    )
+                .filter(|n| (1..=5).contains(n))
+                .map_or(String::new(), |n| {
+                    crate::view::so101::joint_limits_text(n - 1)
                 });
             html.push_str(&format!(
                 "<tr><th scope=\"row\" data-i18n=\"{label}\"></th>\

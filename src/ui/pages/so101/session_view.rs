@@ -261,7 +261,10 @@ impl SessionView {
             .map(|e| e.metrics.min_manipulability)
             .fold(f64::INFINITY, f64::min);
         if worst.is_finite() {
-            rows.push(("so101-ro-manipulability", format!("{:.2e}", worst)));
+            rows.push((
+                "so101-ro-manipulability",
+                crate::view::so101::manipulability_text(worst),
+            ));
         }
         for (c, n) in s.by_category.iter().filter(|(_, n)| *n > 0) {
             let id = format!("teleop-cat-{}", c.id());

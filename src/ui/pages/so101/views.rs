@@ -27,8 +27,8 @@ use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
 use crate::view::scene3d::{AxisPalette, Scene};
 use crate::view::so101::{
-    deg, ground, handle_at, mm, ring_grips, world, wrist, wrist_view, Handle, Look, VIEW_AZIMUTH,
-    VIEW_RADIUS, VIEW_TARGET,
+    deg, ground, handle_at, manipulability_text, mm, ring_grips, world, wrist, wrist_view, Handle,
+    Look, VIEW_AZIMUTH, VIEW_RADIUS, VIEW_TARGET,
 };
 
 /// The state the views draw: the practice and the devices (the gizmo held).
@@ -398,7 +398,7 @@ pub fn write_readouts(r: &Readouts, p: &Practice, record: &StepRecord) {
     }
     r.set_with_value(
         "manipulability",
-        &format!("{:.2e}", record.manipulability),
+        &manipulability_text(record.manipulability),
         &record.manipulability.to_string(),
     );
     r.set_with_value(
