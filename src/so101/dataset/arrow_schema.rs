@@ -68,9 +68,11 @@ enum Leaf {
     Utf8,
 }
 
-/// The base64 `ARROW:schema` of columns `(name, type)`, all nullable.
-pub fn arrow_schema_base64(columns: &[(&str, ArrowType)]) -> String {
-    let message = schema_message(columns);
+/// The base64 `ARROW:schema` of columns `(name, type)`, all nullable, with the schema's
+/// metadata `(key, value)` (pyarrow takes a file's schema metadata from here when the entry
+/// is present: pandas' metadata must be in it too).
+pub fn arrow_schema_base64(columns: &[(&str, ArrowType)], metadata: &[(&str, &str)]) -> String {
+    let message = schema_message(columns, metadata);
     let mut framed = Vec::with_capacity(message.len() + 8);
     framed.extend_from_slice(&[0xFF; 4]);
     framed.extend_from_slice(&(message.len() as u32).to_le_bytes());
@@ -259,8 +261,8 @@ fn field_slots(type_tag: u8) -> [(u16, Slot); 5] {
     ]
 }
 
-/// The `Message` FlatBuffer holding the `Schema` of `columns`.
-fn schema_message(columns: &[(&str, ArrowType)]) -> Vec<u8> {
+/// The `Message` FlatBuffer holding the `Schema` of `columns` and `metadata`.
+fn schema_message(columns: &[(&str, ArrowType)], metadata: &[(&str, &str)]) -> Vec<u8> {
     let mut b = Builder {
         buf: vec![0; 4], // the root offset, to the message table
     };
@@ -271,10 +273,19 @@ fn schema_message(columns: &[(&str, ArrowType)]) -> Vec<u8> {
         (3, Slot::I64(0)),
     ]);
     b.patch(0, message_at);
-    let schema = b.child(message[0], &[(0, Slot::I16(0)), (1, Slot::Offset)]);
+    let schema = b.child(
+        message[0],
+        &[(0, Slot::I16(0)), (1, Slot::Offset), (2, Slot::Offset)],
+    );
     let slots = b.offsets(schema[0], columns.len());
     for (slot, (name, ty)) in slots.into_iter().zip(columns) {
         b.field(slot, name, *ty);
+    }
+    let pairs = b.offsets(schema[1], metadata.len());
+    for (slot, (key, value)) in pairs.into_iter().zip(metadata) {
+        let at = b.child(slot, &[(0, Slot::Offset), (1, Slot::Offset)]);
+        b.string(at[0], key);
+        b.string(at[1], value);
     }
     b.pad_to(8);
     b.buf

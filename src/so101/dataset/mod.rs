@@ -1,7 +1,7 @@
 //! The labelled SO-101 practice episodes as a LeRobot dataset, format v3.0 (the only one
 //! LeRobot reads since 0.4), so that `LeRobotDataset(repo_id, root=<folder>)` loads it frame
 //! by frame. Plain Rust, no web-sys: the `#/so101` page builds it episode by episode
-//! ([`DatasetBuilder`]) and zips it ([`zip`]); `bsv so101-dataset` writes the same files.
+//! ([`DatasetBuilder`]) and zips it ([`zip()`]); `bsv so101-dataset` writes the same files.
 //!
 //! # Files (paths from the dataset's root)
 //! - `meta/info.json`: `codebase_version` `v3.0`, `robot_type` `so_follower`, `fps`, the

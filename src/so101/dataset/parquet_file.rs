@@ -121,9 +121,10 @@ pub fn parquet_file(
         .iter()
         .map(|(n, v)| (n.as_str(), v.arrow_type()))
         .collect();
+    let pairs: Vec<(&str, &str)> = metadata.iter().map(|(k, v)| (*k, v.as_str())).collect();
     let mut key_values = vec![KeyValue::new(
         "ARROW:schema".to_string(),
-        arrow_schema_base64(&arrow),
+        arrow_schema_base64(&arrow, &pairs),
     )];
     for (k, v) in metadata {
         key_values.push(KeyValue::new((*k).to_string(), v.clone()));
