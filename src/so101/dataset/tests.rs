@@ -247,3 +247,33 @@ fn the_session_fixtures_are_the_scripted_session() {
         );
     }
 }
+
+/// The scripted session's dataset, zipped: the same bytes natively and in wasm (its SHA-256
+/// is fixed here; a change to the format changes it on purpose).
+#[test]
+fn the_zip_is_the_same_bytes_everywhere() {
+    use crate::teleop::session::sha256_hex;
+    let one = crate::so101::parse_episode_csv(include_str!(
+        "../../../tests/so101/session/so101_episode_1.csv"
+    ))
+    .unwrap();
+    let two = crate::so101::parse_episode_csv(include_str!(
+        "../../../tests/so101/session/so101_episode_2.csv"
+    ))
+    .unwrap();
+    let files = dataset_files(&[
+        (&one, Label::Success, None, "scripted pick and place"),
+        (
+            &two,
+            Label::Failure,
+            Some(FailureCategory::GraspMiss),
+            "closed on nothing",
+        ),
+    ])
+    .unwrap();
+    let bytes = zip(&files).unwrap();
+    assert_eq!(
+        sha256_hex(&bytes),
+        "2174f537a0137eeaff2eaad89a8e6c07d7916ac783a8681bfd1582b41a70cc46"
+    );
+}
