@@ -24,6 +24,7 @@ Usage: check_v3.py DATASET_ROOT. Exit 0 and one line when every check passes, ex
 the failures.
 """
 
+import bisect
 import json
 import math
 import re
@@ -103,7 +104,6 @@ def column_stats(values, single):
     std = math.sqrt(max(0.0, math.fsum(v * v for v in values) / n - mean * mean))
     e = edges(lo, hi, single)
     counts = [0.0] * BINS
-    import bisect
     for v in values:
         at = bisect.bisect_right(e, v) - 1
         counts[min(max(at, 0), BINS - 1)] += 1
@@ -328,7 +328,7 @@ class Checker:
 
 def main(argv):
     if len(argv) != 2:
-        print(__doc__.strip().splitlines()[-3], file=sys.stderr)
+        print("usage: check_v3.py DATASET_ROOT", file=sys.stderr)
         return 2
     checker = Checker(argv[1])
     try:
