@@ -4,7 +4,7 @@ SHELL := /bin/bash
 PORT ?= 8000
 export PATH := $(HOME)/.cargo/bin:$(CURDIR)/node_modules/.bin:$(PATH)
 
-.PHONY: serve test setup dist dist-dev bench
+.PHONY: serve test setup dist dist-dev bench check-lerobot
 
 ## Build the release app into dist/ and serve it on http://127.0.0.1:$(PORT)/
 serve: setup dist
@@ -29,3 +29,8 @@ dist-dev:
 bench:
 	scripts/setup.sh --browser
 	scripts/bench.sh
+
+## Not part of `make test`: LeRobot itself (installed with torch into .venv-lerobot, about
+## 8 GB the first time) loads the dataset `bsv so101-dataset` writes, offline, every frame
+check-lerobot:
+	scripts/check-lerobot.sh

@@ -2,7 +2,8 @@
 # Installs what building (and, with --browser, testing) needs, and only what is missing:
 # the Rust wasm32 target, wasm-pack, wasm-bindgen-cli and the wasm splitter (wasm-split-cli of
 # wasm_split_cli_support) at pinned versions (cargo install),
-# wasm-opt, terser, playwright-core and axe-core from npm (package-lock.json pins them), and with --browser
+# wasm-opt, terser, playwright-core and axe-core from npm (package-lock.json pins them), pyarrow
+# in the project's .venv (python3 -m venv, for tests/lerobot/check_v3.py), and with --browser
 # Debian's chromium, chromium-driver and a Japanese font (apt-get).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,6 +11,8 @@ cd "$(dirname "$0")/.."
 WASM_PACK_VERSION=0.15.1
 # The splitter that cuts the app's wasm into a chunk per page (scripts/build-dist.sh).
 WASM_SPLIT_VERSION=0.2.4
+# The LeRobot dataset checker's only package (tests/lerobot/check_v3.py).
+PYARROW_VERSION=26.0.1
 # wasm-bindgen-cli must match the wasm-bindgen in Cargo.lock exactly.
 WASM_BINDGEN_VERSION=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -39,6 +42,19 @@ if [[ ! -x node_modules/.bin/wasm-opt || ! -d node_modules/playwright-core || ! 
   say "installing npm tools (binaryen's wasm-opt, terser, playwright-core, axe-core) from package-lock.json"
   npm ci --no-audit --no-fund --loglevel=error
   cp package-lock.json node_modules/.package-lock.json.copy
+fi
+
+if [[ "$(.venv/bin/python -c 'import pyarrow; print(pyarrow.__version__)' 2>/dev/null)" != "$PYARROW_VERSION" ]]; then
+  if ! python3 -c 'import ensurepip, venv' 2>/dev/null; then
+    say "installing Debian's python3-venv"
+    sudo_cmd=()
+    [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+    "${sudo_cmd[@]}" apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq python3-venv
+  fi
+  say "installing pyarrow $PYARROW_VERSION into .venv (the LeRobot dataset checker)"
+  python3 -m venv .venv
+  .venv/bin/pip install -q --disable-pip-version-check "pyarrow==$PYARROW_VERSION"
 fi
 
 if [[ "${1:-}" == "--browser" ]]; then

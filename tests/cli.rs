@@ -650,3 +650,135 @@ fn teleop_replay_takes_so101_episodes_too() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("step 40: q2 differs"), "{err}");
 }
+
+/// The scripted SO-101 session of `tests/so101/session/`.
+fn session_file(name: &str) -> String {
+    format!("{}/tests/so101/session/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+#[test]
+fn so101_dataset_writes_the_labelled_episodes_as_the_kernel_does() {
+    use bsv_playground::so101::dataset::dataset_files;
+    use bsv_playground::so101::parse_episode_csv;
+    use bsv_playground::teleop::{FailureCategory, Label};
+    let dir = temp_dir("so101-dataset");
+    let out_dir = dir.join("so101-practice");
+    let episodes: Vec<String> = (1..=3)
+        .map(|n| session_file(&format!("so101_episode_{n}.csv")))
+        .collect();
+    // Given out of order: the dataset takes them by number.
+    let mut args = vec!["so101-dataset", &episodes[2], &episodes[1], &episodes[0]];
+    args.extend(["--out", out_dir.to_str().unwrap()]);
+    let out = bsv(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        format!(
+            "wrote a LeRobot v3.0 dataset to {}: 2 episodes (1 SUCCESS, 1 FAILURE, 0 PARTIAL), 167 frames at 25 fps; 1 unlabelled episode left out\n",
+            out_dir.display()
+        )
+    );
+    // The same bytes as the kernel's (the page's zip) for episodes 1 and 2 as labelled.
+    let read =
+        |n: usize| parse_episode_csv(&std::fs::read_to_string(&episodes[n]).unwrap()).unwrap();
+    let (one, two) = (read(0), read(1));
+    let want = dataset_files(&[
+        (&one, Label::Success, None, "scripted pick and place"),
+        (
+            &two,
+            Label::Failure,
+            Some(FailureCategory::GraspMiss),
+            "closed on nothing, \"early\"",
+        ),
+    ])
+    .unwrap();
+    for (name, bytes) in &want {
+        let got = std::fs::read(out_dir.join(name)).unwrap();
+        assert!(got == *bytes, "{name} differs from the kernel's");
+    }
+    let mut written = Vec::new();
+    for dir in ["meta", "meta/episodes/chunk-000", "data/chunk-000"] {
+        for entry in std::fs::read_dir(out_dir.join(dir)).unwrap() {
+            let entry = entry.unwrap();
+            if entry.path().is_file() {
+                written.push(format!("{dir}/{}", entry.file_name().to_string_lossy()));
+            }
+        }
+    }
+    written.sort();
+    let mut names: Vec<String> = want.iter().map(|(n, _)| n.clone()).collect();
+    names.sort();
+    assert_eq!(written, names, "no other file, no partial file left");
+}
+
+#[test]
+fn so101_dataset_refuses_bad_input_naming_the_file() {
+    let dir = temp_dir("so101-dataset-bad");
+    let out_dir = dir.join("out");
+    let out = out_dir.to_str().unwrap();
+    let one = session_file("so101_episode_1.csv");
+    let run = |args: &[&str]| {
+        let o = bsv(args);
+        (
+            o.status.code(),
+            String::from_utf8_lossy(&o.stderr).into_owned(),
+        )
+    };
+    // No --out, no episode, a name without the number.
+    let (code, err) = run(&["so101-dataset", &one]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("--out DIR is needed"), "{err}");
+    let (code, _) = run(&["so101-dataset", "--out", out]);
+    assert_eq!(code, Some(2));
+    let renamed = dir.join("episode.csv");
+    std::fs::copy(&one, &renamed).unwrap();
+    let (code, err) = run(&["so101-dataset", renamed.to_str().unwrap(), "--out", out]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("episode.csv': not named so101_episode_<n>.csv"),
+        "{err}"
+    );
+    // No so101_episodes.csv beside it.
+    let alone = dir.join("so101_episode_1.csv");
+    std::fs::copy(&one, &alone).unwrap();
+    let (code, err) = run(&["so101-dataset", alone.to_str().unwrap(), "--out", out]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("so101_episodes.csv"), "{err}");
+    // Only the unlabelled episode.
+    let labels = session_file("so101_episodes.csv");
+    let three = session_file("so101_episode_3.csv");
+    let (code, err) = run(&["so101-dataset", &three, "--labels", &labels, "--out", out]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("none of the 1 episodes is labelled"), "{err}");
+    // A step that does not replay: exit 1 naming the file and the step.
+    let text = std::fs::read_to_string(&one).unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let row = lines[60].replacen(",0.0,", ",0.5,", 1);
+    assert_ne!(row, lines[60]);
+    lines[60] = row;
+    std::fs::write(&alone, lines.join("\n") + "\n").unwrap();
+    let (code, err) = run(&[
+        "so101-dataset",
+        alone.to_str().unwrap(),
+        "--labels",
+        &labels,
+        "--out",
+        out,
+    ]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        err.contains("so101_episode_1.csv': not reproduced: step 57"),
+        "{err}"
+    );
+    assert!(!out_dir.exists(), "nothing written on failure");
+    // Help, and the listing.
+    let help = bsv(&["so101-dataset", "--help"]);
+    assert!(help.status.success());
+    assert!(String::from_utf8_lossy(&help.stdout).contains("LeRobotDataset(repo_id, root=DIR)"));
+    let listing = String::from_utf8_lossy(&bsv(&["--help"]).stdout).into_owned();
+    assert!(listing.contains("so101-dataset"), "{listing}");
+}

@@ -4,6 +4,7 @@
 //! bsv <recipe-id> [the recipe's positional arguments] [--flag value ...] [--out DIR]
 //! bsv --help | bsv <recipe-id> --help
 //! bsv teleop-replay <episode csv>
+//! bsv so101-dataset <so101_episode_<n>.csv ...> --out DIR [--labels so101_episodes.csv]
 //! ```
 //! Writes the recipe's CSV file(s) into `DIR` (default: the current folder) and prints the
 //! recipe's summary line exactly as the Python recipe does. Bad input: exit code 2 and a
@@ -15,6 +16,10 @@
 //! [`bsv_playground::so101::episode`]) from its start state and commands: exit 0 and its
 //! metrics when every recorded step comes back bit for bit, exit 1 naming the first step and
 //! column that differ, exit 2 for a file that cannot be read as an episode.
+//!
+//! `bsv so101-dataset` writes the labelled SO-101 episodes of a practice session as a LeRobot
+//! v3.0 dataset folder (see [`bsv_playground::so101::dataset`]), the same files the page's
+//! zip holds.
 
 use std::fs;
 use std::io::Write;
@@ -69,6 +74,9 @@ fn cli(raw: &[String]) -> Result<(), Failure> {
     }
     if id == TELEOP_REPLAY {
         return teleop_replay(&raw[1..]);
+    }
+    if id == SO101_DATASET {
+        return so101_dataset(&raw[1..]);
     }
     let recipe = recipes::find(id).ok_or_else(|| {
         Failure::Usage(format!(
@@ -197,6 +205,9 @@ fn general_help() -> String {
     );
     s.push_str(&format!(
         "\nalso:\n  {TELEOP_REPLAY:<18} <episode csv>   replay a Robot Pilot episode exactly and print its metrics\n"
+    ));
+    s.push_str(&format!(
+        "  {SO101_DATASET:<18} <so101_episode_<n>.csv ...> --out DIR   the labelled SO-101 episodes as a LeRobot dataset\n"
     ));
     s
 }
@@ -372,4 +383,201 @@ fn show_default(d: &str) -> &str {
     } else {
         d
     }
+}
+
+/// The dataset subcommand's name.
+const SO101_DATASET: &str = "so101-dataset";
+
+fn so101_dataset_help() -> String {
+    use bsv_playground::so101::dataset::{CODEBASE_VERSION, FPS};
+    format!(
+        "usage: bsv {SO101_DATASET} <so101_episode_<n>.csv ...> --out DIR [--labels FILE]\n\n\
+         Writes the labelled episodes of an SO-101 practice session (the #/so101 page's session\n\
+         download) as a LeRobot dataset, format {CODEBASE_VERSION}, in DIR: meta/info.json,\n\
+         meta/stats.json, meta/tasks.parquet, meta/episodes/chunk-000/file-000.parquet,\n\
+         data/chunk-000/file-000.parquet and meta/bsv_labels.json, the files the page's zip holds.\n\
+         LeRobotDataset(repo_id, root=DIR) loads it. {FPS} frames per second (every 4th step).\n\n\
+         The labels come from so101_episodes.csv beside the first episode file, or from\n\
+         --labels FILE. Only labelled episodes go in, in the order of their numbers (the n\n\
+         of so101_episode_<n>.csv); each is replayed from its start state first.\n\n\
+         exit 0  the dataset written; a summary line on stdout\n\
+         exit 1  an episode does not replay, or a file cannot be written\n\
+         exit 2  bad arguments, or a file that cannot be read (named)\n"
+    )
+}
+
+/// A file's text, refused above `limit` bytes or when it is not UTF-8 text (`what` names the
+/// subcommand in the messages).
+fn read_text(what: &str, path: &str, limit: u64) -> Result<String, Failure> {
+    let fail = |e: std::io::Error| Failure::Usage(format!("{what}: cannot read '{path}': {e}"));
+    let len = fs::metadata(path).map_err(fail)?.len();
+    if len > limit {
+        return Err(Failure::Usage(format!(
+            "{what}: '{path}' is {} bytes; the limit is {} bytes",
+            human(len as f64),
+            human(limit as f64)
+        )));
+    }
+    let bytes = fs::read(path).map_err(fail)?;
+    recipes::decode_input(path, &bytes).map_err(|e| Failure::Usage(format!("{what}: {e}")))
+}
+
+/// The episode number `n` of a path ending in `so101_episode_<n>.csv`.
+fn so101_episode_number(path: &str) -> Option<usize> {
+    let name = Path::new(path).file_name()?.to_str()?;
+    let n = name.strip_prefix("so101_episode_")?.strip_suffix(".csv")?;
+    n.parse().ok().filter(|n| *n >= 1)
+}
+
+/// `bsv so101-dataset <so101_episode_<n>.csv ...> --out DIR [--labels FILE]`.
+fn so101_dataset(args: &[String]) -> Result<(), Failure> {
+    use bsv_playground::so101::dataset::{DatasetBuilder, DatasetError, FPS};
+    use bsv_playground::so101::episode::MAX_EPISODE_BYTES;
+    use bsv_playground::so101::parse_episode_csv;
+    use bsv_playground::teleop::session::{parse_episodes_table, EPISODES_HEADER};
+    use bsv_playground::teleop::Label;
+    const WHAT: &str = SO101_DATASET;
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        print!("{}", so101_dataset_help());
+        return Ok(());
+    }
+    let usage = |msg: String| Failure::Usage(format!("{WHAT}: {msg} (see bsv {WHAT} --help)"));
+    let (mut paths, mut out, mut labels) = (Vec::new(), None, None);
+    let mut iter = args.iter();
+    while let Some(arg) = iter.next() {
+        let mut value = |flag: &str| {
+            iter.next()
+                .cloned()
+                .ok_or_else(|| usage(format!("{flag} needs a value")))
+        };
+        match arg.as_str() {
+            "--out" => out = Some(value("--out")?),
+            "--labels" => labels = Some(value("--labels")?),
+            a if a.starts_with("--out=") => out = Some(a["--out=".len()..].to_string()),
+            a if a.starts_with("--labels=") => labels = Some(a["--labels=".len()..].to_string()),
+            a if a.starts_with("--") => return Err(usage(format!("unknown option '{a}'"))),
+            a => paths.push(a.to_string()),
+        }
+    }
+    let out = out.ok_or_else(|| usage("--out DIR is needed".to_string()))?;
+    if paths.is_empty() {
+        return Err(usage("no episode file given".to_string()));
+    }
+    let mut numbered = Vec::with_capacity(paths.len());
+    for path in &paths {
+        let n = so101_episode_number(path).ok_or_else(|| {
+            Failure::Usage(format!(
+                "{WHAT}: '{path}': not named so101_episode_<n>.csv, so its label cannot be found"
+            ))
+        })?;
+        if numbered.iter().any(|(m, _)| *m == n) {
+            return Err(Failure::Usage(format!(
+                "{WHAT}: '{path}': episode {n} is given twice"
+            )));
+        }
+        numbered.push((n, path.as_str()));
+    }
+    numbered.sort_by_key(|(n, _)| *n);
+    let labels_path = labels.unwrap_or_else(|| {
+        let dir = Path::new(numbered[0].1).parent().unwrap_or(Path::new(""));
+        dir.join("so101_episodes.csv")
+            .to_string_lossy()
+            .into_owned()
+    });
+    let table = read_text(WHAT, &labels_path, MAX_EPISODE_BYTES)?;
+    let rows = parse_episodes_table(&table).map_err(|cell| {
+        Failure::Usage(format!(
+            "{WHAT}: '{labels_path}': row {}, column {} (the header is {EPISODES_HEADER})",
+            cell.row, cell.column
+        ))
+    })?;
+    let mut builder = DatasetBuilder::new();
+    let mut counts = [0usize; 3];
+    let mut left_out = 0;
+    for (n, path) in &numbered {
+        let row = rows.iter().find(|r| r.number == *n).ok_or_else(|| {
+            Failure::Usage(format!(
+                "{WHAT}: '{path}': episode {n} has no row in '{labels_path}'"
+            ))
+        })?;
+        let Some(label) = row.label else {
+            left_out += 1;
+            continue;
+        };
+        let text = read_text(WHAT, path, MAX_EPISODE_BYTES)?;
+        let episode = parse_episode_csv(&text)
+            .map_err(|e| Failure::Usage(format!("{WHAT}: '{path}': {e}")))?;
+        builder
+            .add_episode(&episode, label, row.category, &row.note)
+            .map_err(|e| match e {
+                DatasetError::NotReplayed { .. } => {
+                    Failure::Mismatch(format!("{WHAT}: '{path}': not reproduced: {e}"))
+                }
+                e => Failure::Usage(format!("{WHAT}: '{path}': {e}")),
+            })?;
+        counts[Label::ALL.iter().position(|l| *l == label).unwrap_or(0)] += 1;
+    }
+    if builder.episodes() == 0 {
+        return Err(Failure::Usage(format!(
+            "{WHAT}: none of the {} episodes is labelled in '{labels_path}'",
+            numbered.len()
+        )));
+    }
+    let (episodes, frames) = (builder.episodes(), builder.frames());
+    let files = builder
+        .finish()
+        .map_err(|e| Failure::Io(format!("{WHAT}: {e}")))?;
+    write_tree(Path::new(&out), &files)?;
+    let unlabelled = match left_out {
+        0 => String::new(),
+        1 => "; 1 unlabelled episode left out".to_string(),
+        k => format!("; {k} unlabelled episodes left out"),
+    };
+    println!(
+        "wrote a LeRobot v3.0 dataset to {out}: {episodes} episodes ({} {}, {} {}, {} {}), {frames} frames at {FPS} fps{unlabelled}",
+        counts[0],
+        Label::ALL[0].id(),
+        counts[1],
+        Label::ALL[1].id(),
+        counts[2],
+        Label::ALL[2].id(),
+    );
+    Ok(())
+}
+
+/// Writes `files` (paths relative to `root`, folders made as needed) under temporary names,
+/// then renames them all: nothing half-written.
+fn write_tree(root: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Failure> {
+    let io = |what: &str, path: &Path, e: std::io::Error| {
+        Failure::Io(format!("cannot {what} '{}': {e}", path.display()))
+    };
+    let mut staged = Vec::new();
+    let clean = |staged: &[(PathBuf, PathBuf)]| {
+        for (tmp, _) in staged {
+            let _ = fs::remove_file(tmp);
+        }
+    };
+    for (name, bytes) in files {
+        let final_path = root.join(name);
+        let dir = final_path.parent().unwrap_or(root);
+        let file_name = final_path
+            .file_name()
+            .map(|f| f.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let tmp_path = dir.join(format!(".{file_name}.partial-{}", std::process::id()));
+        let result = fs::create_dir_all(dir).and_then(|_| {
+            fs::File::create(&tmp_path)
+                .and_then(|mut f| f.write_all(bytes).and_then(|_| f.sync_all()))
+        });
+        if let Err(e) = result {
+            let _ = fs::remove_file(&tmp_path);
+            clean(&staged);
+            return Err(io("write", &final_path, e));
+        }
+        staged.push((tmp_path, final_path));
+    }
+    for (tmp, final_path) in &staged {
+        fs::rename(tmp, final_path).map_err(|e| io("write", final_path, e))?;
+    }
+    Ok(())
 }

@@ -8,9 +8,11 @@
 //! manipulability), [`control`] (the four IK methods on the 6×5 Jacobian), [`scene`] (table,
 //! cube, goal, obstacle, [`SceneConfig`]), [`sim`] (one 10 ms [`Sim::step`] and its events, the
 //! planar arm's [`crate::teleop::Event`]s) and [`episode`] (recording, CSV, exact replay, the
-//! session's episode kind), and [`input`] (Isaac Lab's keyboard and gamepad mapping).
+//! session's episode kind), [`input`] (Isaac Lab's keyboard and gamepad mapping), and
+//! [`dataset`] (the labelled episodes as a LeRobot v3.0 dataset).
 
 pub mod control;
+pub mod dataset;
 pub mod episode;
 pub mod input;
 pub mod kinematics;

@@ -211,6 +211,8 @@ pub struct Sim {
     start: State,
     state: State,
     rng: NumpyRng,
+    /// The joint angles the last step commanded ([`Sim::target_q`]), rad.
+    target_q: [f64; 5],
 }
 
 const IDENTITY: Mat3 = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
@@ -257,6 +259,7 @@ impl Sim {
         Ok(Sim {
             rng: NumpyRng::new(config.noise_seed),
             config,
+            target_q: start.q,
             state: start.clone(),
             start,
         })
@@ -281,6 +284,16 @@ impl Sim {
     pub fn reset(&mut self) {
         self.state = self.start.clone();
         self.rng = NumpyRng::new(self.config.noise_seed);
+        self.target_q = self.start.q;
+    }
+
+    /// The joint angles the last step commanded, rad: the angles before it plus the IK's
+    /// joint step after the speed and position limits, before contact could stop the move
+    /// (what a position-controlled arm is told to go to; the start angles before any step, and
+    /// unchanged by steps after the episode ended). The jaw's command is the state's
+    /// `gripper_closed`.
+    pub fn target_q(&self) -> [f64; 5] {
+        self.target_q
     }
 
     /// How the episode ended, once it has.
@@ -428,6 +441,7 @@ impl Steps for Sim {
             events,
         );
 
+        self.target_q = q_new;
         let mut contact = [false; 7];
         if q_new != q {
             let moved = chain(&q_new, jaw_of(&self.state));
@@ -559,7 +573,9 @@ fn carried(c: &Chain, g: &Grasp) -> Obb {
     }
 }
 
-fn jaw_of(s: &State) -> f64 {
+/// The jaw angle drawn for a state, rad: [`JAW_OPEN`], [`JAW_HOLDING`] on the cube or
+/// [`JAW_CLOSED`] on nothing.
+pub fn jaw_of(s: &State) -> f64 {
     match (s.gripper_closed, s.cube.held) {
         (false, _) => JAW_OPEN,
         (true, true) => JAW_HOLDING,

@@ -222,7 +222,13 @@ fn joint_limits_clamp_and_are_reported() {
 }
 
 /// A scripted pilot: fly the tool to `target` (P control on the position, clamped).
-fn fly(sim: &mut Sim, target: [f64; 3], close: bool, steps: usize, out: &mut Vec<Command>) {
+pub(super) fn fly(
+    sim: &mut Sim,
+    target: [f64; 3],
+    close: bool,
+    steps: usize,
+    out: &mut Vec<Command>,
+) {
     for _ in 0..steps {
         let p = sim.snapshot().tool;
         let mut a = [0.0; 6];

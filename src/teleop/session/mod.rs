@@ -34,7 +34,10 @@ pub use stored::{
     run_length, PlanarLoading, SessionLoader, StoredEntry, StoredEpisode, StoredSession,
     STORED_VERSION,
 };
-pub use table::{csv_text, episode_file_name, EPISODES_HEADER, EPISODES_NAME};
+pub use table::{
+    csv_text, episode_file_name, parse_episodes_table, BadCell, TableRow, EPISODES_HEADER,
+    EPISODES_NAME,
+};
 
 #[cfg(test)]
 mod tests;

@@ -133,23 +133,32 @@ fn csv_record(text: &str) -> Option<(Vec<String>, &str)> {
 }
 
 /// One row of `teleop_episodes.csv` as read back: what the pilot said about episode `number`.
-pub(super) struct TableRow {
+#[derive(Debug, Clone, PartialEq)]
+pub struct TableRow {
+    /// The episode's number (from 1): its file is `<prefix>_episode_<number>.csv`.
     pub number: usize,
+    /// The pilot's label, if any.
     pub label: Option<Label>,
+    /// The failure category, if any.
     pub category: Option<FailureCategory>,
+    /// The pilot's note.
     pub note: String,
+    /// Cut off by a reload or a crash of the tab.
     pub interrupted: bool,
 }
 
 /// A cell of `teleop_episodes.csv` that cannot be read: its row (the header is row 1) and
 /// column.
-pub(super) struct BadCell {
+#[derive(Debug, Clone, PartialEq)]
+pub struct BadCell {
+    /// The row, the header row 1.
     pub row: usize,
+    /// The column's name.
     pub column: String,
 }
 
 /// The rows of `teleop_episodes.csv` (a byte order mark and CRLF line ends are read too).
-pub(super) fn parse_episodes_table(text: &str) -> Result<Vec<TableRow>, BadCell> {
+pub fn parse_episodes_table(text: &str) -> Result<Vec<TableRow>, BadCell> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let bad = |row: usize, column: &str| BadCell {
         row,
