@@ -70,54 +70,98 @@ fn follower_units(q: &[f64; 5], jaw_rad: f64) -> [f32; 6] {
 /// config's, and every step must reproduce its record, as [`crate::so101::replay`] checks),
 /// one frame before every [`STEPS_PER_FRAME`]th step, `ceil(steps / STEPS_PER_FRAME)` in all.
 pub fn episode_frames(episode: &Episode) -> Result<Vec<Frame>, DatasetError> {
-    let steps = episode.commands.len();
-    if steps == 0 {
-        return Err(DatasetError::EmptyEpisode);
-    }
-    if episode.records.len() != steps {
-        return Err(DatasetError::NotReplayed { step: 0 });
-    }
-    let mut sim =
-        Sim::new(episode.config.clone()).map_err(|_| DatasetError::NotReplayed { step: 0 })?;
-    if *sim.start_state() != episode.start {
-        return Err(DatasetError::NotReplayed { step: 0 });
-    }
-    let goal = episode.config.goal;
-    let mut frames = Vec::with_capacity(steps.div_ceil(STEPS_PER_FRAME));
-    for (i, (cmd, record)) in episode.commands.iter().zip(&episode.records).enumerate() {
-        let sample = i % STEPS_PER_FRAME == 0;
-        let before = sample.then(|| {
-            let s = sim.state();
-            let cube = &s.cube;
-            let yaw = crate::math::atan2(cube.rot[1][0], cube.rot[0][0]);
-            (
-                follower_units(&s.q, jaw_of(s)),
-                [
-                    cube.pos[0] as f32,
-                    cube.pos[1] as f32,
-                    cube.pos[2] as f32,
-                    yaw as f32,
-                    goal[0] as f32,
-                    goal[1] as f32,
-                ],
-            )
-        });
-        let step = i as u64 + 1;
-        if sim.done().is_some() || sim.step(cmd) != *record {
-            return Err(DatasetError::NotReplayed { step });
+    let mut replay = FrameReplay::new(episode)?;
+    while !replay.advance(episode, usize::MAX)? {}
+    Ok(replay.into_frames())
+}
+
+/// [`episode_frames`] in pieces: a page replays a long episode a few hundred steps per task.
+#[derive(Debug, Clone)]
+pub struct FrameReplay {
+    sim: Sim,
+    next: usize,
+    frames: Vec<Frame>,
+}
+
+impl FrameReplay {
+    /// The replay of `episode` from its start, refused if the episode is empty, has not one
+    /// record a command or does not start from its configuration's start state.
+    pub fn new(episode: &Episode) -> Result<FrameReplay, DatasetError> {
+        let steps = episode.commands.len();
+        if steps == 0 {
+            return Err(DatasetError::EmptyEpisode);
         }
-        if let Some((state, environment)) = before {
-            let jaw = if sim.state().gripper_closed {
-                JAW_CLOSED
-            } else {
-                JAW_OPEN
-            };
-            frames.push(Frame {
-                state,
-                action: follower_units(&sim.target_q(), jaw),
-                environment,
+        if episode.records.len() != steps {
+            return Err(DatasetError::NotReplayed { step: 0 });
+        }
+        let sim =
+            Sim::new(episode.config.clone()).map_err(|_| DatasetError::NotReplayed { step: 0 })?;
+        if *sim.start_state() != episode.start {
+            return Err(DatasetError::NotReplayed { step: 0 });
+        }
+        Ok(FrameReplay {
+            sim,
+            next: 0,
+            frames: Vec::with_capacity(steps.div_ceil(STEPS_PER_FRAME)),
+        })
+    }
+
+    /// Steps replayed so far.
+    pub fn steps_done(&self) -> usize {
+        self.next
+    }
+
+    /// Replays up to `max_steps` more steps of `episode` (the one [`FrameReplay::new`] was
+    /// given); `true` once every step is replayed.
+    pub fn advance(&mut self, episode: &Episode, max_steps: usize) -> Result<bool, DatasetError> {
+        let goal = episode.config.goal;
+        let end = self
+            .next
+            .saturating_add(max_steps)
+            .min(episode.commands.len());
+        for i in self.next..end {
+            let (cmd, record) = (&episode.commands[i], &episode.records[i]);
+            let sim = &mut self.sim;
+            let sample = i % STEPS_PER_FRAME == 0;
+            let before = sample.then(|| {
+                let s = sim.state();
+                let cube = &s.cube;
+                let yaw = crate::math::atan2(cube.rot[1][0], cube.rot[0][0]);
+                (
+                    follower_units(&s.q, jaw_of(s)),
+                    [
+                        cube.pos[0] as f32,
+                        cube.pos[1] as f32,
+                        cube.pos[2] as f32,
+                        yaw as f32,
+                        goal[0] as f32,
+                        goal[1] as f32,
+                    ],
+                )
             });
+            let step = i as u64 + 1;
+            if sim.done().is_some() || sim.step(cmd) != *record {
+                return Err(DatasetError::NotReplayed { step });
+            }
+            if let Some((state, environment)) = before {
+                let jaw = if sim.state().gripper_closed {
+                    JAW_CLOSED
+                } else {
+                    JAW_OPEN
+                };
+                self.frames.push(Frame {
+                    state,
+                    action: follower_units(&sim.target_q(), jaw),
+                    environment,
+                });
+            }
         }
+        self.next = end;
+        Ok(self.next == episode.commands.len())
     }
-    Ok(frames)
+
+    /// The frames replayed.
+    pub fn into_frames(self) -> Vec<Frame> {
+        self.frames
+    }
 }

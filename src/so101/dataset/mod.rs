@@ -51,6 +51,7 @@
 mod archive;
 mod arrow_schema;
 mod error;
+mod export;
 mod frames;
 mod meta;
 mod parquet_file;
@@ -58,8 +59,10 @@ pub mod stats;
 
 pub use archive::zip;
 pub use error::DatasetError;
+pub use export::{ExportJob, LabelledEpisode, ZIP_NAME};
 pub use frames::{
-    episode_frames, gripper_percent, Frame, ENVIRONMENT_NAMES, FPS, JOINT_NAMES, STEPS_PER_FRAME,
+    episode_frames, gripper_percent, Frame, FrameReplay, ENVIRONMENT_NAMES, FPS, JOINT_NAMES,
+    STEPS_PER_FRAME,
 };
 pub use meta::{
     Dtype, Feature, CHUNKS_SIZE, CODEBASE_VERSION, DATA_FILES_SIZE_IN_MB, DATA_PATH, FEATURES,
@@ -154,6 +157,20 @@ impl DatasetBuilder {
         note: &str,
     ) -> Result<(), DatasetError> {
         let frames = episode_frames(episode)?;
+        self.add_frames(episode, frames, label, category, note);
+        Ok(())
+    }
+
+    /// Adds an episode whose frames were replayed beforehand ([`FrameReplay`], a piece at a
+    /// time) as the next `episode_index`.
+    pub fn add_frames(
+        &mut self,
+        episode: &Episode,
+        frames: Vec<Frame>,
+        label: Label,
+        category: Option<FailureCategory>,
+        note: &str,
+    ) {
         let task = if episode.config.obstacle {
             TASK_OBSTACLE
         } else {
@@ -179,7 +196,6 @@ impl DatasetBuilder {
         added.stats = episode_stats(&frames, &added, self.added.len());
         self.frames.extend(frames);
         self.added.push(added);
-        Ok(())
     }
 
     /// Every file of the dataset, `(path from the root, bytes)`: [`INFO_PATH`],

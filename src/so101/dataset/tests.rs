@@ -277,3 +277,48 @@ fn the_zip_is_the_same_bytes_everywhere() {
         "2174f537a0137eeaff2eaad89a8e6c07d7916ac783a8681bfd1582b41a70cc46"
     );
 }
+
+#[test]
+fn the_job_in_pieces_writes_the_same_zip_and_names_a_tampered_step() {
+    let (a, b) = (pick_and_place(), grasp_miss());
+    let labelled = |episode: &Episode, label| LabelledEpisode {
+        episode: episode.clone(),
+        label,
+        category: None,
+        note: "n".to_string(),
+    };
+    let mut job = ExportJob::new(vec![
+        labelled(&a, Label::Success),
+        labelled(&b, Label::Failure),
+    ]);
+    assert_eq!((job.done(), job.total()), (0, 2));
+    let mut pieces = 0;
+    let bytes = loop {
+        pieces += 1;
+        if let Some(done) = job.advance(50) {
+            break done.unwrap();
+        }
+    };
+    assert_eq!(job.done(), 2);
+    // Every 50 steps a piece, one more per episode's end, and the writing.
+    let steps = a.records.len() + b.records.len();
+    assert!(pieces > steps / 50, "{pieces} pieces");
+    let whole = dataset_files(&[
+        (&a, Label::Success, None, "n"),
+        (&b, Label::Failure, None, "n"),
+    ]);
+    assert_eq!(bytes, zip(&whole.unwrap()).unwrap());
+
+    let mut tampered = b.clone();
+    tampered.records[99].q[2] += 1e-9;
+    let mut job = ExportJob::new(vec![
+        labelled(&a, Label::Success),
+        labelled(&tampered, Label::Failure),
+    ]);
+    let result = loop {
+        if let Some(done) = job.advance(1000) {
+            break done;
+        }
+    };
+    assert_eq!(result, Err(DatasetError::NotReplayed { step: 100 }));
+}
