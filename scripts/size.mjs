@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1285 * KB;
+export const CEILING = 1445 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -41,7 +41,7 @@ export const ROUTE_CEILINGS = {
   'traj-resample': 304,
   'rrt-2d': 279,
   teleop: 315,
-  so101: 344,
+  so101: 347,
   drills: 298,
   lesson: 226,
 };

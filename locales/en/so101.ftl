@@ -54,3 +54,14 @@ so101-review-empty = No episode to replay yet: record one in Record ten (or open
 so101-open-note = To continue or review a saved session, choose its files together: teleop_session_evidence.json, so101_episodes.csv and every so101_episode_<n>.csv.
 so101-grasp-rule = Grasp rule: closing the gripper holds the cube only when the tool frame is within 2 cm of the cube's centre and the jaws close square to it (within 25° of a face); any other close is a missed grasp. Turn the tool with C/V (yaw) to line the jaws up with the cube's sides; the wrist camera turns with the wrist.
 so101-files-unloaded = The part of this page that writes and reads session files could not be loaded (offline, or the server did not answer). Your session is kept; check the connection, then download or open again.
+so101-dataset-button = LeRobot dataset (v3.0, zip)
+so101-dataset-note = The LeRobot dataset holds the labelled episodes at 25 frames per second (every 4th step of the 100 Hz simulation): joint positions and the commanded joint targets as LeRobot's SO-101 follower writes them, the cube and the goal, success from your label. Unzipped, LeRobotDataset(repo_id, root=<folder>) loads it as it is; "bsv so101-dataset" writes the same files from the episode CSVs.
+so101-dataset-writing = Writing the LeRobot dataset: { $done } of { $total } labelled episodes…
+so101-dataset-done = { $file } written: { $total ->
+    [one] 1 labelled episode
+   *[other] { $total } labelled episodes
+}, { $kb } KB. The evidence now lists it with its SHA-256.
+so101-dataset-none = Label an episode first: only labelled episodes go into the dataset.
+so101-dataset-failed = The LeRobot dataset could not be written: { $detail }
+so101-dataset-unloaded = The dataset writer could not be fetched (is the connection down?). Click again to retry.
+so101-dataset-failed-replay = The LeRobot dataset could not be written: the { $n }th labelled episode does not replay at step { $step } (it was changed after it was recorded).

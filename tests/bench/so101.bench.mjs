@@ -7,7 +7,8 @@
 // the pilot flying the arm with the wrist view on (x, then y and yaw, then z and pitch held for
 // 1.5 s each), with and without the wall; then a reload of a stored session of ten
 // 60 s episodes (60,000 steps) whose main-thread tasks after the app is ready are counted (the
-// boot's, with the first slice, are listed without a budget).
+// boot's, with the first slice, are listed without a budget); then the LeRobot dataset of those
+// ten episodes written in slices.
 // Budgets: frame work p95 < 4 ms; load slices and main-thread tasks under 50 ms.
 // With SO101_BENCH_STRICT=1 the exit code is 1 when one is missed.
 import { BenchTable, openWatched, runBench, takeLongTasks } from './bench-table.mjs';
@@ -83,6 +84,20 @@ await runBench({ table, strict: 'SO101_BENCH_STRICT' }, async (url) => {
     table.report('load of ten stored 60 s episodes: slices', await page.evaluate(() => window.__so101LoadMs ?? []), { max: 50 });
     table.longTasks('load of ten stored 60 s episodes: main-thread tasks', await takeLongTasks(page), 50);
     table.longTasks('the reload until the app is ready (boot, first slice)', boot);
+
+    // The LeRobot dataset of the ten (15,000 frames): its chunk fetched on the click, the
+    // episodes replayed and the files written in slices, with a progress line.
+    await takeLongTasks(page);
+    const [zip] = await Promise.all([
+      page.waitForEvent('download', { timeout: 120_000 }),
+      page.locator('[data-download="so101_lerobot_v3.zip"]').click(),
+    ]);
+    const state = await page.locator('[data-so101="dataset-progress"]').getAttribute('data-state');
+    if (zip.suggestedFilename() !== 'so101_lerobot_v3.zip' || state !== 'done') {
+      throw new Error(`the dataset export ended ${state} with ${zip.suggestedFilename()}`);
+    }
+    table.report('LeRobot dataset of ten 60 s episodes: slices', await page.evaluate(() => window.__so101DatasetMs ?? []), { max: 50 });
+    table.longTasks('LeRobot dataset of ten 60 s episodes: main-thread tasks', await takeLongTasks(page), 50);
   } finally {
     await close();
   }

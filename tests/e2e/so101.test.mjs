@@ -9,10 +9,10 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createHash } from 'node:crypto';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { openApp, browser, readouts, screenshots, query } from './harness.mjs';
+import { ROOT, openApp, browser, readouts, screenshots, query } from './harness.mjs';
 import { serveAppWithCli, BSV, download } from './cli.mjs';
 import { englishOnPage } from './locales.mjs';
 
@@ -244,6 +244,94 @@ async function recordEpisode(page, key = 'w', ms = 300) {
 }
 
 const stepper = (page) => page.locator('[data-testid="so101-stepper"]');
+
+/** The entries of the zip at `path`, name → bytes (Python's zipfile: no npm package). */
+function unzip(path) {
+  const out = execFileSync('python3', ['-c', `
+import base64, json, sys, zipfile
+z = zipfile.ZipFile(sys.argv[1])
+print(json.dumps({i.filename: base64.b64encode(z.read(i)).decode() for i in z.infolist()}))
+`, path], { encoding: 'utf8', maxBuffer: 64 << 20 });
+  return new Map(Object.entries(JSON.parse(out)).map(([k, v]) => [k, Buffer.from(v, 'base64')]));
+}
+
+/** Every file under `dir`, its path from `dir` → bytes. */
+function tree(dir, prefix = '') {
+  const out = new Map();
+  for (const e of readdirSync(join(dir, prefix), { withFileTypes: true })) {
+    const rel = prefix ? `${prefix}/${e.name}` : e.name;
+    if (e.isDirectory()) for (const [k, v] of tree(dir, rel)) out.set(k, v);
+    else out.set(rel, readFileSync(join(dir, rel)));
+  }
+  return out;
+}
+
+test('the LeRobot dataset: the zip of the page is the files of bsv so101-dataset, listed in the evidence, and passes the v3.0 checker', async () => {
+  const { page, errors, close } = await open();
+  const dir = mkdtempSync(join(tmpdir(), 'bsv-lerobot-'));
+  try {
+    const progress = page.locator('[data-so101="dataset-progress"]');
+    // No labelled episode yet: the page says what to do, nothing is downloaded.
+    await page.locator('[data-download="so101_lerobot_v3.zip"]').click();
+    await page.locator('[data-so101="dataset-progress"][data-state="none"]').waitFor();
+    assert.match(await progress.innerText(), /Label an episode first/);
+    await page.locator('[data-module="record-ten"]').click();
+    await recordEpisode(page, 'w', 300);
+    await recordEpisode(page, 'q', 250);
+    // A third episode left unlabelled stays out of the dataset.
+    await canvas(page).focus();
+    await hold(page, 'a', 200);
+    await page.locator('[data-action="end-episode"]').click();
+    await page.locator('[data-so101="label-panel"]').waitFor({ state: 'visible' });
+
+    const zip = await download(page, 'so101_lerobot_v3.zip');
+    assert.equal(await progress.getAttribute('data-state'), 'done');
+    assert.match(await progress.innerText(), /2 labelled episodes/);
+    writeFileSync(join(dir, 'so101_lerobot_v3.zip'), zip);
+    const entries = unzip(join(dir, 'so101_lerobot_v3.zip'));
+    assert.deepEqual([...entries.keys()].sort(), [
+      'data/chunk-000/file-000.parquet', 'meta/bsv_labels.json', 'meta/episodes/chunk-000/file-000.parquet',
+      'meta/info.json', 'meta/stats.json', 'meta/tasks.parquet',
+    ]);
+    const info = JSON.parse(entries.get('meta/info.json').toString('utf8'));
+    assert.equal(info.codebase_version, 'v3.0');
+    assert.equal(info.robot_type, 'so_follower');
+    assert.equal(info.fps, 25);
+    assert.equal(info.total_episodes, 2);
+
+    // The CLI writes the same bytes from the page's episode CSVs and table.
+    const session = join(dir, 'session');
+    mkdirSync(session);
+    for (const f of ['so101_episode_1.csv', 'so101_episode_2.csv', 'so101_episode_3.csv', 'so101_episodes.csv']) {
+      writeFileSync(join(session, f), await download(page, f));
+    }
+    const out = join(dir, 'cli');
+    execFileSync(BSV, ['so101-dataset', ...[1, 2, 3].map((n) => join(session, `so101_episode_${n}.csv`)), '--out', out], { stdio: 'pipe' });
+    const written = tree(out);
+    assert.deepEqual([...written.keys()].sort(), [...entries.keys()].sort());
+    for (const [name, bytes] of entries) assert.ok(bytes.equals(written.get(name)), `${name} differs from bsv so101-dataset's`);
+    // The project's v3.0 checker (pyarrow), where make test's setup installed it.
+    const python = join(ROOT, '.venv', 'bin', 'python');
+    assert.ok(existsSync(python), 'no .venv with pyarrow: run scripts/setup.sh (make test does)');
+    execFileSync(python, [join(ROOT, 'tests', 'lerobot', 'check_v3.py'), out], { stdio: 'pipe' });
+
+    // The evidence lists the zip with the SHA-256 of the bytes downloaded.
+    const evidence = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
+    const listed = evidence.dataArtifacts.find((a) => a.uriOrRef === 'so101_lerobot_v3.zip');
+    assert.equal(listed.type, 'lerobot-dataset');
+    assert.equal(listed.mediaType, 'application/zip');
+    assert.equal(listed.sha256, createHash('sha256').update(zip).digest('hex'));
+    // Relabelled, the session is no longer the zip's: the evidence stops listing it.
+    await page.locator('[data-label="PARTIAL"]').click();
+    await page.locator('[data-action="confirm-label"]').click();
+    const after = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
+    assert.ok(!after.dataArtifacts.some((a) => a.uriOrRef === 'so101_lerobot_v3.zip'));
+    assert.deepEqual(errors, []);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+    await close();
+  }
+});
 const position = (page) => stepper(page).locator('[data-stepper="position"]').innerText();
 
 test('failure review: a stepper walks the replayed episode, its first failure marked', async () => {

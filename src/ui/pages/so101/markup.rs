@@ -207,9 +207,12 @@ fn episodes() -> String {
          <p class=\"so101-downloads\">\
          <button type=\"button\" class=\"tool-button\" data-download=\"{table}\">{table}</button>\
          <button type=\"button\" class=\"tool-button\" data-download=\"{EVIDENCE_NAME}\">{EVIDENCE_NAME}</button>\
+         <button type=\"button\" class=\"tool-button\" data-download=\"{zip}\" data-i18n=\"so101-dataset-button\"></button>\
          <label class=\"tool-button so101-open\"><span data-i18n=\"teleop-open\"></span>\
          <input type=\"file\" multiple accept=\".json,.csv,application/json,text/csv\" data-so101=\"open\" class=\"kit-visually-hidden\"></label>\
-         </p><p class=\"so101-help\" data-i18n=\"so101-open-note\"></p>\
+         </p><p class=\"so101-help\" data-so101=\"dataset-progress\" data-state=\"idle\" role=\"status\" hidden></p>\
+         <p class=\"so101-help\" data-i18n=\"so101-dataset-note\"></p>\
+         <p class=\"so101-help\" data-i18n=\"so101-open-note\"></p>\
          <p class=\"so101-error\" data-so101=\"open-error\" role=\"alert\" hidden></p>\
          <p class=\"so101-help\" data-so101=\"status\" role=\"status\"></p>\
          <div data-so101=\"summary-block\"><h3 data-i18n=\"so101-summary-title\"></h3>\
@@ -221,6 +224,7 @@ fn episodes() -> String {
          <th scope=\"col\" data-i18n=\"teleop-col-figure\"></th><th scope=\"col\" data-i18n=\"teleop-col-first-session\"></th>\
          <th scope=\"col\" data-i18n=\"teleop-col-second-session\"></th></tr></thead><tbody></tbody></table></div></section>",
         second = button("second-session", "teleop-second-session"),
+        zip = crate::so101::dataset::ZIP_NAME,
     )
 }
 

@@ -14,6 +14,7 @@
 //! the settings in the URL, the saved-files opener, storage (a refused save leaves the
 //! session in memory, said by the storage warning).
 
+mod dataset_export;
 mod devices;
 mod files;
 mod markup;
@@ -34,6 +35,7 @@ use crate::so101::{Episode, SceneConfig};
 use crate::teleop::session::PracticeEpisode;
 use crate::teleop::session::{
     category_from_id, clean_pilot_id, label_from_id, InputDevice, Module, Session, SessionLoader,
+    EVIDENCE_NAME,
 };
 use crate::ui::kit::bench_log::push_ms;
 use crate::ui::kit::chunk_fns::ChunkFns;
@@ -100,6 +102,8 @@ struct Inner {
     restored: Element,
     /// Writing and reading the session's files, once their chunk is here.
     files: ChunkFns<files::Files>,
+    /// The LeRobot dataset's export.
+    dataset: dataset_export::DatasetSlot,
 }
 
 /// Steps simulated again per slice of the load (a few ms of work).
@@ -167,6 +171,7 @@ impl Page for So101Page {
     fn relocalize(&self) {
         self.0.relocalize(|p| {
             p.show_all();
+            p.dataset.relocalize();
             if let Some(v) = p.views.borrow().as_ref() {
                 v.relocalize();
             }
@@ -247,6 +252,7 @@ impl Inner {
         let review = Review::find(&root, markup::REVIEW)?;
         let readouts = Readouts::find(&root)?;
         let session = SessionView::find(&root)?;
+        let dataset = dataset_export::DatasetSlot::find(&root)?;
         let shared = Rc::new(Shared {
             practice: Rc::new(RefCell::new(practice)),
             devices: Rc::new(RefCell::new(Devices::default())),
@@ -273,6 +279,7 @@ impl Inner {
             load_timer: RefCell::new(None),
             restored,
             files: files.map_or_else(ChunkFns::default, ChunkFns::ready),
+            dataset,
         });
         inner.write_settings();
         // The first slice of a stored session's load, then everything shown (`show_all`).
@@ -625,12 +632,25 @@ impl Inner {
 
     /// Downloads `file` of the session (or, for [`EPISODE_CSVS`], every episode's CSV).
     fn download(&self, file: &str) {
+        if file == crate::so101::dataset::ZIP_NAME {
+            ChunkFns::with(
+                self,
+                &self.me,
+                |p| &p.dataset.fns,
+                dataset_export::load,
+                true,
+                |p, failed| p.dataset.show_unloaded(failed),
+                |p, open| p.dataset.ui(open).start(&p.practice.borrow().session),
+            );
+            return;
+        }
         let file = file.to_string();
         self.with_files(true, move |p, f| p.download_with(f, &file));
     }
 
     fn download_with(&self, f: files::Files, file: &str) {
-        let files = (f.write)(&self.practice.borrow().session, &iso_now());
+        let now = iso_now();
+        let files = (f.write)(&self.practice.borrow().session, &now);
         let every = file == EPISODE_CSVS;
         let episodes: Vec<String> = if every {
             let p = self.practice.borrow();
@@ -642,7 +662,20 @@ impl Inner {
         } else {
             vec![file.to_string()]
         };
+        // The evidence lists the LeRobot dataset written from the labels as they are.
+        let dataset = self.dataset.artifact_for(&self.practice.borrow().session);
+        let evidence = dataset.map(|d| {
+            (f.evidence)(
+                &self.practice.borrow().session,
+                &now,
+                std::slice::from_ref(&d),
+            )
+        });
         for (name, text) in files.iter().filter(|(n, _)| episodes.contains(n)) {
+            let text = match &evidence {
+                Some(e) if name == EVIDENCE_NAME => e,
+                _ => text,
+            };
             let mime = if name.ends_with(".json") {
                 "application/json"
             } else {
