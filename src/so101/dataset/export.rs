@@ -1,6 +1,8 @@
 //! The dataset zip written in pieces, so that a page keeps every task short: each labelled
-//! episode replayed a bounded number of steps at a time ([`FrameReplay`]), added, then the
-//! files written and zipped in the last piece.
+//! episode replayed a bounded number of steps at a time ([`FrameReplay`]) and added; then the
+//! data file written in one piece, the other files in the next, the zip in the last
+//! ([`ExportJob::writing_next`] says when the next piece is one of those, the longest, for a
+//! page to start a task with it).
 
 use super::{zip, DatasetBuilder, DatasetError, FrameReplay};
 use crate::so101::Episode;
@@ -48,6 +50,10 @@ pub struct ExportJob {
     builder: Option<DatasetBuilder>,
     replay: Option<FrameReplay>,
     next: usize,
+    /// The data file, once written (the piece after writes the others).
+    data: Option<Vec<u8>>,
+    /// The dataset's files, once written (the last piece zips them).
+    files: Option<Vec<(String, Vec<u8>)>>,
 }
 
 impl ExportJob {
@@ -58,7 +64,14 @@ impl ExportJob {
             builder: Some(DatasetBuilder::new()),
             replay: None,
             next: 0,
+            data: None,
+            files: None,
         }
+    }
+
+    /// Whether the next piece writes the files or zips them (every episode is in).
+    pub fn writing_next(&self) -> bool {
+        self.next >= self.episodes.len()
     }
 
     /// Episodes in the dataset.
@@ -72,8 +85,8 @@ impl ExportJob {
     }
 
     /// Replays up to `max_steps` steps (at least one piece of work), or, once every episode is
-    /// in, writes the files and zips them: `Some` with the zip's bytes (or why it could not be
-    /// written) when the job is over, `None` while there is more to do.
+    /// in, writes the data file, then the others, then zips them: `Some` with the zip's bytes (or why it could not
+    /// be written) when the job is over, `None` while there is more to do.
     pub fn advance(&mut self, max_steps: usize) -> Option<Result<Vec<u8>, DatasetError>> {
         match self.step(max_steps.max(1)) {
             Ok(None) => None,
@@ -88,8 +101,17 @@ impl ExportJob {
 
     fn step(&mut self, max_steps: usize) -> Result<Option<Vec<u8>>, DatasetError> {
         let Some(item) = self.episodes.get(self.next) else {
-            let builder = self.builder.take().ok_or(DatasetError::NoEpisodes)?;
-            return zip(&builder.finish()?).map(Some);
+            if let Some(files) = self.files.take() {
+                return zip(&files).map(Some);
+            }
+            if let Some(data) = self.data.take() {
+                let builder = self.builder.take().ok_or(DatasetError::NoEpisodes)?;
+                self.files = Some(builder.finish_with(data)?);
+                return Ok(None);
+            }
+            let builder = self.builder.as_ref().ok_or(DatasetError::NoEpisodes)?;
+            self.data = Some(builder.data_file()?);
+            return Ok(None);
         };
         let replay = match self.replay.as_mut() {
             Some(r) => r,

@@ -95,6 +95,17 @@ pub const DATA_FILE_PATH: &str = "data/chunk-000/file-000.parquet";
 /// Our labels, categories and notes.
 pub const LABELS_PATH: &str = "meta/bsv_labels.json";
 
+/// A parquet file's bytes, or the writer's refusal naming `file`.
+fn parquet_result(
+    file: &str,
+    bytes: Result<Vec<u8>, ::parquet::errors::ParquetError>,
+) -> Result<Vec<u8>, DatasetError> {
+    bytes.map_err(|e| DatasetError::Parquet {
+        file: file.to_string(),
+        detail: e.to_string(),
+    })
+}
+
 /// An episode added: where its frames are and what the pilot said of it.
 #[derive(Debug, Clone, PartialEq)]
 struct Added {
@@ -202,31 +213,39 @@ impl DatasetBuilder {
     /// [`STATS_PATH`], [`TASKS_PATH`], [`EPISODES_PATH`], [`DATA_FILE_PATH`],
     /// [`LABELS_PATH`].
     pub fn finish(self) -> Result<Vec<(String, Vec<u8>)>, DatasetError> {
+        let data = self.data_file()?;
+        self.finish_with(data)
+    }
+
+    /// The data file, [`DATA_FILE_PATH`] (the largest: one row per frame), written apart
+    /// from the others so that a page can write it in a task of its own.
+    pub fn data_file(&self) -> Result<Vec<u8>, DatasetError> {
         if self.added.is_empty() {
             return Err(DatasetError::NoEpisodes);
         }
-        let parquet = |file: &str, bytes: Result<Vec<u8>, ::parquet::errors::ParquetError>| {
-            bytes.map_err(|e| DatasetError::Parquet {
-                file: file.to_string(),
-                detail: e.to_string(),
-            })
-        };
+        let lengths: Vec<usize> = self.added.iter().map(|a| a.length).collect();
+        parquet_result(
+            DATA_FILE_PATH,
+            parquet_file(&self.data_columns(), &lengths, &[]),
+        )
+    }
+
+    /// [`DatasetBuilder::finish`] given the data file ([`DatasetBuilder::data_file`]).
+    pub fn finish_with(self, data: Vec<u8>) -> Result<Vec<(String, Vec<u8>)>, DatasetError> {
+        if self.added.is_empty() {
+            return Err(DatasetError::NoEpisodes);
+        }
         let dataset_stats: Vec<FeatureStats> = (0..FEATURES.len())
             .filter_map(|k| {
                 let each: Vec<&FeatureStats> = self.added.iter().map(|a| &a.stats[k]).collect();
                 FeatureStats::aggregate(&each)
             })
             .collect();
-        let lengths: Vec<usize> = self.added.iter().map(|a| a.length).collect();
-        let data = parquet(
-            DATA_FILE_PATH,
-            parquet_file(&self.data_columns(), &lengths, &[]),
-        )?;
-        let episodes = parquet(
+        let episodes = parquet_result(
             EPISODES_PATH,
             parquet_file(&self.episode_columns(), &[self.added.len()], &[]),
         )?;
-        let tasks = parquet(TASKS_PATH, self.tasks_file())?;
+        let tasks = parquet_result(TASKS_PATH, self.tasks_file())?;
         let info = info_json(self.added.len(), self.frames.len(), self.tasks.len());
         Ok(vec![
             (INFO_PATH.to_string(), info.into_bytes()),

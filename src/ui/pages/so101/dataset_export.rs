@@ -221,10 +221,14 @@ impl DatasetExport {
         let Some(r) = running.as_mut() else {
             return;
         };
-        let mut ended = None;
-        while ended.is_none() && now_ms() - started < MS_PER_TASK {
-            ended = r.job.advance(STEPS_PER_PIECE);
-        }
+        // Replay pieces for the task's time; writing the files, and zipping them, each start a
+        // task of their own (the longest pieces).
+        let ended = loop {
+            let ended = r.job.advance(STEPS_PER_PIECE);
+            if ended.is_some() || now_ms() - started >= MS_PER_TASK || r.job.writing_next() {
+                break ended;
+            }
+        };
         let (done, total) = (r.job.done(), r.job.total());
         let Some(result) = ended else {
             drop(running);
