@@ -64,4 +64,4 @@ so101-dataset-done = { $file } written: { $total ->
 so101-dataset-none = Label an episode first: only labelled episodes go into the dataset.
 so101-dataset-failed = The LeRobot dataset could not be written: { $detail }
 so101-dataset-unloaded = The dataset writer could not be fetched (is the connection down?). Click again to retry.
-so101-dataset-failed-replay = The LeRobot dataset could not be written: the { $n }th labelled episode does not replay at step { $step } (it was changed after it was recorded).
+so101-dataset-failed-replay = The LeRobot dataset could not be written: labelled episode { $n } (in the order of the table) does not replay at step { $step }; it was changed after it was recorded.

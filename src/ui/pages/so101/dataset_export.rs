@@ -14,6 +14,7 @@ use std::rc::{Rc, Weak};
 use wasm_bindgen::JsValue;
 use web_sys::{Blob, BlobPropertyBag, Element};
 
+use crate::i18n::FluentArg;
 use crate::so101::dataset::{DatasetError, ExportJob, LabelledEpisode, ZIP_NAME};
 use crate::so101::Episode;
 use crate::teleop::session::{label_id, Artifact, ExtraArtifact, Session, DATASET_TYPE};
@@ -142,7 +143,7 @@ fn labelled(session: &Session<Episode>) -> Vec<LabelledEpisode> {
 }
 
 /// The progress line's message: its Fluent id and arguments.
-type Said = (&'static str, Vec<(&'static str, String)>);
+type Said = (&'static str, Vec<(&'static str, FluentArg)>);
 
 /// A job under way.
 struct Running {
@@ -192,8 +193,7 @@ impl ExportUi for DatasetExport {
 
     fn relocalize(&self) {
         if let Some((id, args)) = self.said.borrow().as_ref() {
-            self.progress
-                .set_text_content(Some(&ctx::t_strings(id, args)));
+            self.progress.set_text_content(Some(&ctx::t_args(id, args)));
         }
     }
 }
@@ -248,9 +248,9 @@ impl DatasetExport {
                     (
                         "so101-dataset-done",
                         vec![
-                            ("file", ZIP_NAME.to_string()),
-                            ("total", total.to_string()),
-                            ("kb", format!("{:.0}", bytes.len() as f64 / 1024.0)),
+                            ("file", ZIP_NAME.into()),
+                            ("total", total.into()),
+                            ("kb", (bytes.len() as f64 / 1024.0).round().into()),
                         ],
                     ),
                 );
@@ -263,12 +263,15 @@ impl DatasetExport {
                 "failed",
                 (
                     "so101-dataset-failed-replay",
-                    vec![("n", (done + 1).to_string()), ("step", step.to_string())],
+                    vec![("n", (done + 1).into()), ("step", step.into())],
                 ),
             ),
             Err(e) => self.say(
                 "failed",
-                ("so101-dataset-failed", vec![("detail", e.to_string())]),
+                (
+                    "so101-dataset-failed",
+                    vec![("detail", e.to_string().into())],
+                ),
             ),
         }
         crate::ui::kit::bench_log::push_ms("__so101DatasetMs", now_ms() - started, 5000);
@@ -279,7 +282,7 @@ impl DatasetExport {
             "writing",
             (
                 "so101-dataset-writing",
-                vec![("done", done.to_string()), ("total", total.to_string())],
+                vec![("done", done.into()), ("total", total.into())],
             ),
         );
     }
@@ -287,7 +290,7 @@ impl DatasetExport {
     fn say(&self, state: &str, said: Said) {
         let _ = self.progress.set_attribute("data-state", state);
         self.progress
-            .set_text_content(Some(&ctx::t_strings(said.0, &said.1)));
+            .set_text_content(Some(&ctx::t_args(said.0, &said.1)));
         crate::ui::dom::show(&self.progress, true);
         *self.said.borrow_mut() = Some(said);
     }
