@@ -21,6 +21,13 @@ projector-toggle = Projector
 projector-toggle-title = Projector mode: larger type, thicker lines, high contrast (key: P)
 help-button-label = Keyboard shortcuts (key: ?)
 help-failed = Could not load the list of keyboard shortcuts. Check the connection and press “?” again.
+share-button = Share
+share-button-title = This page's link as a QR code to scan (key: S while presenting)
+share-failed = Could not load the QR code. Check the connection and try again.
+share-title = Scan to open this page
+share-qr-label = QR code of this page's link
+share-link-label = Or type the link:
+share-too-long = This link is too long for a QR code; share the link below.
 
 footer-disclaimer = Research, education and simulation only. Nothing here is a safety-rated controller, a real-hardware authority, or a claim that BSV ran your robot. Real hardware stays with the owner or partner.
 footer-offline = Works offline; no data leaves this page.

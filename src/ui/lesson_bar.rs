@@ -257,7 +257,7 @@ fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
     Ok(requests)
 }
 
-/// A key while presenting: PageDown / → next, PageUp / ← back, Escape ends. `None` if not
+/// A key while presenting: PageDown / → next, PageUp / ← back, Escape ends, S shares. `None` if not
 /// taken, else what the presenter asks of the shell.
 pub(crate) fn on_key(event: &KeyboardEvent) -> Result<Option<Vec<ShellRequest>>, JsValue> {
     if !presenting() || crate::ui::kit::keymap::has_command_modifier(event) {
@@ -271,6 +271,10 @@ pub(crate) fn on_key(event: &KeyboardEvent) -> Result<Option<Vec<ShellRequest>>,
         "PageUp" | "ArrowLeft" => press(false)?,
         "Escape" | "Esc" => {
             stop()?;
+            Vec::new()
+        }
+        "s" | "S" => {
+            crate::ui::share::open();
             Vec::new()
         }
         _ => return Ok(None),

@@ -30,6 +30,8 @@ pub mod pages;
 pub mod router;
 pub mod schedule;
 pub mod section_keys;
+pub mod share;
+pub mod share_dialog;
 pub mod shell;
 pub mod update_banner;
 

@@ -1,6 +1,6 @@
 //! The app shell: a "Skip to content" link, the header (product name and subtitle, navigation
 //! of the page table with the drill pages in a grouped menu ([`nav_menu`]), language switch,
-//! projector toggle, `?` button), the `<main>` that hosts the page the router names, the
+//! projector toggle, "Share" ([`share`]), `?` button), the `<main>` that hosts the page the router names, the
 //! footer with the safety disclaimer, and the keys.
 //!
 //! - Hosting: on every route the shell drops the mounted page and mounts the one the route
@@ -34,6 +34,7 @@ use crate::ui::pages::PAGES;
 use crate::ui::router::{Route, HOME_ID};
 use crate::ui::schedule;
 use crate::ui::section_keys;
+use crate::ui::share;
 use crate::ui::update_banner;
 use crate::ui::{ctx, dom, overlay, page_frame, router};
 
@@ -238,6 +239,7 @@ fn build_header() -> Result<Element, JsValue> {
     dom::set_i18n_attrs(&projector, &[("title", "projector-toggle-title")])?;
     on_click(&projector, || set_projector(!ctx::projector()))?;
     dom::append(&tools, &projector)?;
+    dom::append(&tools, &share::build_button()?)?;
 
     let help = dom::el_text("button", "tool-button help-button", "?")?;
     help.set_attribute("type", "button")?;

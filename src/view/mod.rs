@@ -29,6 +29,7 @@ pub mod pid_step;
 pub mod pilot_picture;
 pub mod plot;
 pub mod progress;
+pub mod qr_code;
 pub mod replay;
 pub mod rrt;
 pub mod scene3d;

@@ -1,5 +1,5 @@
 // Accessibility: axe-core (npm, test only) finds no serious or critical violation on any route,
-// in English and Japanese, with the `?` overlay and the drills menu open too.
+// in English and Japanese, with the `?` overlay, the share dialog and the drills menu open too.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -41,6 +41,10 @@ test('no serious or critical axe violation on any route, in English and Japanese
       await page.click('[data-testid="help-button"]');
       await page.locator('[role="dialog"]').waitFor();
       problems.push(...(await violations(page, `${lang} ? overlay`)));
+      await page.keyboard.press('Escape');
+      await page.click('[data-action="share"]');
+      await page.locator('[data-testid="share-dialog"]').waitFor();
+      problems.push(...(await violations(page, `${lang} share dialog`)));
       await page.keyboard.press('Escape');
       await page.click('[data-testid="nav-menu-button"]');
       problems.push(...(await violations(page, `${lang} drills menu`)));
