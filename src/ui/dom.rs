@@ -202,6 +202,27 @@ impl Listener {
         })
     }
 
+    /// [`Listener::new`] in the capture phase: it runs before the listeners of the elements
+    /// inside `target`, and may keep the event from them (`stopPropagation`).
+    pub fn capture(
+        target: &EventTarget,
+        event: &'static str,
+        handler: impl FnMut(Event) + 'static,
+    ) -> Result<Listener, JsValue> {
+        let closure = Closure::<dyn FnMut(Event)>::new(handler);
+        target.add_event_listener_with_callback_and_bool(
+            event,
+            closure.as_ref().unchecked_ref(),
+            true,
+        )?;
+        Ok(Listener {
+            target: target.clone(),
+            event,
+            closure,
+            capture: true,
+        })
+    }
+
     /// [`Listener::for_page`] in the capture phase: it runs before the listeners of the
     /// elements inside `target`, and may keep the event from them (`stopPropagation`).
     pub fn capture_for_page<P: 'static>(
