@@ -1,7 +1,8 @@
 //! Lessons in the shell: the header's "Add this view to the lesson" button, and presenting a
 //! lesson over every page: full screen, projector styles, a bar at the foot with the step's
-//! title and note, a progress strip, and the keys of presenter remotes (PageDown / → next,
-//! PageUp / ← back; a step that asks for it first steps the page's own stepper). The lesson
+//! title and note, a progress strip, and the keys of presenter remotes, whatever has focus
+//! (PageDown / → next, PageUp / ← back, a step that asks for it first stepping the page's own
+//! stepper; B / . black the screen and bring it back; Escape ends). The lesson
 //! itself is [`crate::view::lesson`]; it is kept in localStorage (`bsv.lesson`) so it survives
 //! a reload; the `#/lesson` page edits it. What presenting needs of the shell (step the page,
 //! mount it again, projector mode) is returned as [`ShellRequest`]s for the shell to carry out.
@@ -197,6 +198,7 @@ pub fn present(lesson: Lesson, index: usize) -> Result<Vec<ShellRequest>, JsValu
 /// Stops presenting.
 pub fn stop() -> Result<(), JsValue> {
     PRESENTING.with(|p| *p.borrow_mut() = None);
+    black_out(false)?;
     let document = dom::document()?;
     if document.fullscreen_element().is_some() {
         document.exit_fullscreen();
@@ -257,29 +259,77 @@ fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
     Ok(requests)
 }
 
-/// A key while presenting: PageDown / → next, PageUp / ← back, Escape ends, S shares. `None` if not
-/// taken, else what the presenter asks of the shell.
+/// A key while presenting, whatever has focus (the shell asks before the page and the focused
+/// control): PageDown / → next, PageUp / ← back, B / . black the screen and bring it back, S
+/// shares the page, Escape brings the screen back or ends. In a text or number field being
+/// edited ← and → (and B, ., S) stay the field's; PageDown / PageUp still go on and back.
+/// `None` if not taken, else what the presenter asks of the shell.
 pub(crate) fn on_key(event: &KeyboardEvent) -> Result<Option<Vec<ShellRequest>>, JsValue> {
     if !presenting() || crate::ui::kit::keymap::has_command_modifier(event) {
         return Ok(None);
     }
-    if crate::ui::kit::keymap::is_typing(event.target()) {
-        return Ok(None);
-    }
-    let requests = match event.key().as_str() {
-        "PageDown" | "ArrowRight" => press(true)?,
-        "PageUp" | "ArrowLeft" => press(false)?,
+    let typing = crate::ui::kit::keymap::is_text_entry(event.target());
+    let key = event.key();
+    let black = blacked_out()?;
+    let requests = match key.as_str() {
+        "PageDown" | "PageUp" | "ArrowRight" | "ArrowLeft" | "b" | "B" | "." if black => {
+            black_out(false)?;
+            Vec::new()
+        }
+        "PageDown" => press(true)?,
+        "PageUp" => press(false)?,
+        "ArrowRight" if !typing => press(true)?,
+        "ArrowLeft" if !typing => press(false)?,
+        "b" | "B" | "." if !typing => {
+            black_out(true)?;
+            Vec::new()
+        }
+        "Escape" | "Esc" if black => {
+            black_out(false)?;
+            Vec::new()
+        }
         "Escape" | "Esc" => {
             stop()?;
             Vec::new()
         }
-        "s" | "S" => {
+        "s" | "S" if !typing => {
             crate::ui::share::open();
             Vec::new()
         }
         _ => return Ok(None),
     };
     Ok(Some(requests))
+}
+
+/// The black screen's element id (`data-testid="blackout"`).
+const BLACKOUT_ID: &str = "lesson-blackout";
+
+/// Whether the screen is blacked out.
+fn blacked_out() -> Result<bool, JsValue> {
+    Ok(dom::document()?
+        .get_element_by_id(BLACKOUT_ID)
+        .is_some_and(|b| !b.has_attribute("hidden")))
+}
+
+/// Blacks the screen out (`on`) or brings it back, as a presentation program's B and . do.
+fn black_out(on: bool) -> Result<(), JsValue> {
+    let document = dom::document()?;
+    let cover = match document.get_element_by_id(BLACKOUT_ID) {
+        Some(cover) => cover,
+        None if !on => return Ok(()),
+        None => {
+            let cover = dom::el_class("div", "lesson-blackout")?;
+            cover.set_id(BLACKOUT_ID);
+            cover.set_attribute("data-testid", "blackout")?;
+            cover.set_attribute("aria-hidden", "true")?;
+            if let Some(body) = document.body() {
+                body.append_child(&cover)?;
+            }
+            cover
+        }
+    };
+    dom::show(&cover, on);
+    Ok(())
 }
 
 /// Redraws the bar: progress strip, step title and note, buttons.
@@ -295,6 +345,8 @@ pub(crate) fn render() -> Result<(), JsValue> {
     };
     dom::clear(&bar);
     dom::show(&bar, true);
+    bar.set_attribute("data-step", &(presenter.index + 1).to_string())?;
+    bar.set_attribute("data-steps", &lesson.steps.len().to_string())?;
     let strip = dom::el_class("ol", "lesson-progress")?;
     strip.set_attribute("data-testid", "lesson-progress")?;
     for (i, step) in lesson.steps.iter().enumerate() {

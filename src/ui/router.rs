@@ -54,10 +54,29 @@ pub fn current_route() -> Route {
     parse_hash(&hash)
 }
 
+thread_local! {
+    /// The page the shell shows (its route's page id), whose state the URL holds.
+    static SHOWN: std::cell::RefCell<String> = const { std::cell::RefCell::new(String::new()) };
+}
+
+/// Says which page the shell shows (`mount_route`): only its state is written to the URL.
+pub(crate) fn set_shown_page(page: &str) {
+    SHOWN.with_borrow_mut(|shown| {
+        shown.clear();
+        shown.push_str(page);
+    });
+}
+
 /// Replaces the query of the current URL with `pairs` (plus `lang` when the URL carries it),
-/// with `history.replaceState`: no reload, no history entry, no re-mount.
+/// with `history.replaceState`: no reload, no history entry, no re-mount. Nothing is written
+/// when the URL already names another page than the one shown (a link was followed and the
+/// shell has not shown its page yet): a leaving page's state never lands on the next route.
 pub fn replace_query<K: AsRef<str>>(pairs: &[(K, String)]) {
-    replace_url(&current_route().page, pairs);
+    let page = current_route().page;
+    if SHOWN.with_borrow(|shown| *shown != page) {
+        return;
+    }
+    replace_url(&page, pairs);
 }
 
 /// Rewrites the current URL to `page` with `pairs` (and `lang` when the URL carries it).

@@ -471,12 +471,33 @@ fn update_title(def: Option<&'static PageDef>) -> Result<(), JsValue> {
 
 fn install_keys() -> Result<(), JsValue> {
     let window = dom::window()?;
+    // A presenter's keys first, before any page or control sees them: a remote always works.
+    dom::Listener::capture(&window, "keydown", |event| {
+        if let Some(key) = event.dyn_ref::<KeyboardEvent>() {
+            report(on_presenter_key(key));
+        }
+    })?
+    .forever();
     dom::Listener::new(&window, "keydown", |event| {
         if let Some(key) = event.dyn_ref::<KeyboardEvent>() {
             report(on_keydown(key));
         }
     })?
     .forever();
+    Ok(())
+}
+
+/// A key while a lesson is presented ([`lesson_bar::on_key`]): taken before the page and the
+/// focused control see it, unless the `?` overlay or a dialog (Share) is open.
+fn on_presenter_key(event: &KeyboardEvent) -> Result<(), JsValue> {
+    if overlay::is_open() || keymap::dialog_open() {
+        return Ok(());
+    }
+    if let Some(requests) = lesson_bar::on_key(event)? {
+        event.prevent_default();
+        event.stop_propagation();
+        return perform_all(requests);
+    }
     Ok(())
 }
 
@@ -494,10 +515,6 @@ fn on_keydown(event: &KeyboardEvent) -> Result<(), JsValue> {
             ShellKey::Projector => set_projector(!ctx::projector()),
             ShellKey::Lang => switch_lang(ctx::lang().other()),
         };
-    }
-    if let Some(requests) = lesson_bar::on_key(event)? {
-        event.prevent_default();
-        return perform_all(requests);
     }
     if keymap::page_may_take(event) && with_page(|page| page.on_key(event)) == Some(true) {
         event.prevent_default();
@@ -635,6 +652,7 @@ pub fn current_page_id() -> Option<&'static str> {
 /// Drops the current page and mounts the one `route` names: at once if its chunk is in, else
 /// after showing the page's frame while the chunk loads.
 fn mount_route(route: &Route) -> Result<(), JsValue> {
+    router::set_shown_page(&route.page);
     if let Some(lang) = route.lang() {
         router::set_lang_in_url(true);
         if lang != ctx::lang() {

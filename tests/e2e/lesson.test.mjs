@@ -165,3 +165,71 @@ test('with no lesson of its own the page opens on a built-in lesson, ready to pr
     }
   }
 });
+
+test('presenting, the remote works whatever has focus: after a check box, a slider, a button, a canvas; a text field keeps ← →; B and . black out', async () => {
+  const lesson = JSON.stringify({
+    format: 'bsv-lesson',
+    version: 1,
+    title: 'Remote',
+    steps: [
+      { route: '#/ik-2r', title: 'Arm', note: '', pageSteps: 0 },
+      { route: '#/pendulum-energy', title: 'Pendulum', note: '', pageSteps: 0 },
+      { route: '#/drills?recipe=jacobian-2r', title: 'Sweep', note: '', pageSteps: 0 },
+      { route: '#/teleop', title: 'Pilot', note: '', pageSteps: 0 },
+    ],
+  });
+  const { page, errors, close } = await openApp(server.url, '#/lesson', { viewport: { width: 1920, height: 1080 }, storage: { 'bsv.lesson': lesson } });
+  const bar = page.locator('[data-testid="lesson-bar"]');
+  const atStep = async (n, hash) => {
+    await page.waitForFunction((n) => document.querySelector('[data-testid="lesson-bar"]')?.dataset.step === String(n), n);
+    if (hash) await page.waitForFunction((h) => location.hash.startsWith(h), hash);
+    await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+  };
+  try {
+    await page.click('[data-action="lesson-present"]');
+    await atStep(1, '#/ik-2r');
+    assert.equal(await bar.getAttribute('data-steps'), '4');
+    // A check box ticked: PageDown goes on (it used to scroll the page).
+    const grid = page.locator('[data-testid="ik-2r-ws-toggle"]');
+    await grid.check();
+    await page.keyboard.press('PageDown');
+    await atStep(2, '#/pendulum-energy');
+    // A slider focused: → goes on (the slider does not take it).
+    const slider = page.locator('main input[type="range"]').first();
+    await slider.focus();
+    await page.keyboard.press('ArrowRight');
+    await atStep(3, '#/drills');
+    // A text or number field being edited keeps ← and →; PageDown still goes on.
+    const field = page.locator('main input[type="number"], main input[type="text"]').first();
+    await field.click();
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('ArrowLeft');
+    assert.equal(await bar.getAttribute('data-step'), '3');
+    await page.keyboard.press('PageDown');
+    await atStep(4, '#/teleop');
+    // A click on a button, then on the canvas: ← goes back, → on again.
+    await page.locator('[data-action="reset"]').first().click();
+    await page.keyboard.press('ArrowLeft');
+    await atStep(3, '#/drills');
+    await page.keyboard.press('PageDown');
+    await atStep(4, '#/teleop');
+    await page.locator('[data-testid="teleop-canvas"]').click();
+    await page.keyboard.press('PageUp');
+    await atStep(3, '#/drills');
+    // B blacks the screen, . brings it back; nothing moves meanwhile.
+    await page.keyboard.press('b');
+    const black = page.locator('[data-testid="blackout"]');
+    await black.waitFor({ state: 'visible' });
+    const box = await black.boundingBox();
+    assert.deepEqual([box.width, box.height], [1920, 1080]);
+    await page.keyboard.press('.');
+    await black.waitFor({ state: 'hidden' });
+    assert.equal(await bar.getAttribute('data-step'), '3');
+    // Esc ends.
+    await page.keyboard.press('Escape');
+    await bar.waitFor({ state: 'hidden' });
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

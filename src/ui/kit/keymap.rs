@@ -7,12 +7,15 @@
 //!   non-control element in it) or a page canvas (`tabindex="0"`, with a visible focus ring).
 //!   Never while a control has focus (button, input, select, textarea, link, summary, an ARIA
 //!   widget role): there Space, Enter and the arrows belong to the control, and a focused Reset
-//!   button must not let the arrow keys move the arm.
+//!   button must not let the arrow keys move the arm. A page whose held keys drive something
+//!   (the pilot pages) also takes those keys over a control that is not a text entry
+//!   ([`page_may_take_over_control`]).
 //! - Keys with Ctrl, Alt or Meta are the browser's (print, find, reload...), never ours.
 //! - Presenter remotes send PageUp/PageDown: a page that steps takes them; elsewhere the shell
 //!   moves to the previous/next section of the page, and past either end to the neighbouring
-//!   drill ([`crate::ui::section_keys`]). Other keys nobody takes (`b`, `.`) keep their
-//!   default.
+//!   drill ([`crate::ui::section_keys`]). While a lesson is presented its keys come first,
+//!   whatever has focus (`crate::ui::lesson_bar`): PageDown / → next, PageUp / ← back, `b` /
+//!   `.` black the screen, Esc ends; in a text field being edited ← and → stay the caret's.
 
 use wasm_bindgen::JsCast;
 use web_sys::{Element, EventTarget, HtmlElement, KeyboardEvent};
@@ -128,7 +131,7 @@ pub fn page_may_take_over_control(event: &KeyboardEvent) -> bool {
 }
 
 /// Whether a modal `<dialog>` or an element with `aria-modal="true"` is open.
-fn dialog_open() -> bool {
+pub fn dialog_open() -> bool {
     web_sys::window()
         .and_then(|w| w.document())
         .and_then(|d| {
