@@ -29,21 +29,21 @@ export function routeBudget(route) {
 /** What `make test` allows each route's first load: its size now plus about 10 KB, and never
  * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
-  home: 196,
-  'ik-2r': 238,
-  'dh-fk': 296,
-  'se3-relative': 300,
-  'umeyama-2d': 314,
-  'pendulum-energy': 297,
-  'pid-step': 284,
-  'cubic-path': 290,
-  'trapezoid-profile': 287,
-  'traj-resample': 304,
-  'rrt-2d': 279,
-  teleop: 315,
-  so101: 347,
-  drills: 298,
-  lesson: 226,
+  home: 197,
+  'ik-2r': 240,
+  'dh-fk': 298,
+  'se3-relative': 301,
+  'umeyama-2d': 315,
+  'pendulum-energy': 299,
+  'pid-step': 285,
+  'cubic-path': 292,
+  'trapezoid-profile': 288,
+  'traj-resample': 306,
+  'rrt-2d': 281,
+  teleop: 317,
+  so101: 349,
+  drills: 300,
+  lesson: 227,
 };
 /** The ceiling of a route (a route not in the table has the largest). */
 export function routeCeiling(route) {
