@@ -142,9 +142,21 @@ test('S while presenting a lesson opens Share; Esc closes it and the lesson goes
   }
 });
 
-test('the dialog on a phone in Japanese and in projector mode: the code fits, dark on white', async () => {
+test('the dialog on a tablet in Japanese and in projector mode: the code fits, dark on white; no Share on a phone', async () => {
+  // A phone keeps its header on one row of tools: no Share there (its browser shares links).
+  {
+    const { page, errors, close } = await openApp(server.url, '#/pendulum-energy?lang=ja', { viewport: { width: 390, height: 844 } });
+    try {
+      assert.ok(!(await page.locator(SHARE).isVisible()), 'Share shows on a 390 px phone');
+      const header = await page.locator('[data-testid="site-header"]').boundingBox();
+      assert.ok(header.height <= 110, `the header takes ${header.height} px`);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  }
   for (const [hash, viewport, storage, shot] of [
-    ['#/pendulum-energy?lang=ja', { width: 390, height: 844 }, {}, 'share-pendulum-ja-390.png'],
+    ['#/pendulum-energy?lang=ja', { width: 768, height: 1024 }, {}, 'share-pendulum-ja-768.png'],
     ['#/ik-2r?q1=0.5&q2=1.2', FULL_HD, { 'bsv.projector': '1' }, 'share-ik2r-projector-1920.png'],
   ]) {
     const { page, context, errors, close } = await openApp(server.url, hash, { viewport, storage });
