@@ -232,21 +232,10 @@ impl Listener {
         handler: impl Fn(&P, &Event) + 'static,
     ) -> Result<Listener, JsValue> {
         let page = page.clone();
-        let closure = Closure::<dyn FnMut(Event)>::new(move |e: Event| {
+        Listener::capture(target, event, move |e: Event| {
             if let Some(page) = page.upgrade() {
                 handler(&page, &e);
             }
-        });
-        target.add_event_listener_with_callback_and_bool(
-            event,
-            closure.as_ref().unchecked_ref(),
-            true,
-        )?;
-        Ok(Listener {
-            target: target.clone(),
-            event,
-            closure,
-            capture: true,
         })
     }
 

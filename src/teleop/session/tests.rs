@@ -538,13 +538,19 @@ mod academy_schema {
     }
 
     fn assert_valid<E: PracticeEpisode>(session: &Session<E>) {
-        let doc: Value = serde_json::from_str(&session.evidence(END)).expect("json");
+        assert_valid_text(&session.evidence(END));
+    }
+
+    /// The evidence `text` as JSON, valid against the schema and our reader's rules.
+    fn assert_valid_text(text: &str) -> Value {
+        let doc: Value = serde_json::from_str(text).expect("json");
         let errors: Vec<String> = validator()
             .iter_errors(&doc)
             .map(|e| format!("{} at {}", e, e.instance_path()))
             .collect();
         assert!(errors.is_empty(), "{}", errors.join("\n"));
         assert_eq!(check_evidence(&doc), Ok(()));
+        doc
     }
 
     #[test]
@@ -617,13 +623,7 @@ mod academy_schema {
             artifact: zip.clone(),
         }];
         let text = s.evidence_with_extra(END, &s.episode_artifacts(), &extra);
-        let doc: Value = serde_json::from_str(&text).expect("json");
-        let errors: Vec<String> = validator()
-            .iter_errors(&doc)
-            .map(|e| format!("{} at {}", e, e.instance_path()))
-            .collect();
-        assert!(errors.is_empty(), "{}", errors.join("\n"));
-        assert_eq!(check_evidence(&doc), Ok(()));
+        let doc = assert_valid_text(&text);
         let listed = doc["dataArtifacts"].as_array().expect("array");
         let last = listed.last().expect("listed");
         assert_eq!(last["type"], DATASET_TYPE);
