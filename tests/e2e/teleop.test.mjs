@@ -645,6 +645,10 @@ test('a second session after an exported first: the comparison keeps the first, 
     const firstCsv = await download(page, 'teleop_episode_1.csv');
     const first = JSON.parse((await download(page, 'teleop_session_evidence.json')).toString('utf8'));
     assert.equal(first.episodes.attempted, 1);
+    // The repeatability table is its module's only.
+    assert.ok(!(await page.locator('[data-tele="repeat"]').isVisible()));
+    await page.locator('[data-module="repeatability"]').click();
+    assert.ok(await page.locator('[data-tele="repeat"]').isVisible());
     // Start the second session: Record ten, no episodes, the first kept for the comparison.
     await page.locator('[data-action="second-session"]').click();
     assert.equal(await page.locator('[data-tele="status"]').innerText(), 'The second session started at Record ten; the first is kept for the comparison.');

@@ -636,6 +636,10 @@ impl Inner {
 
     fn render_modules(&self) {
         self.panel.bar.render_modules(&self.sessions);
+        // The repeatability table is its module's, shown under its tab only.
+        if let Ok(Some(repeat)) = self.root.query_selector("[data-tele=\"repeat\"]") {
+            dom::show(&repeat, self.sessions.module() == Module::Repeatability);
+        }
         self.controls.show_live(!self.in_review());
         self.render_state_readouts();
     }
