@@ -14,7 +14,8 @@
 # needs first, and the main wasm's size.
 # dist/www/app.css is one stylesheet: www/app.css, then every stylesheet that sits beside the
 # Rust of a page or widget (src/ui/**/*.css, in path order); nothing injects <style> at run time,
-# so the app runs under the strict Content-Security-Policy of index.html.
+# so the app runs under the strict Content-Security-Policy of index.html. A `<name>.late.css`
+# styles what only a chunk builds: it is dist/www/<name>.css, linked by that chunk when used.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PWD/node_modules/.bin:$PATH"
@@ -56,11 +57,15 @@ cp -r www "$out"/www
 cp -r locales "$out"/locales
 {
   cat www/app.css
-  find src/ui -name '*.css' -print0 | LC_ALL=C sort -z | while IFS= read -r -d '' css; do
-    printf '\n/* ---- %s ---- */\n' "$css"
-    cat "$css"
-  done
+  find src/ui -name '*.css' ! -name '*.late.css' -print0 | LC_ALL=C sort -z |
+    while IFS= read -r -d '' css; do
+      printf '\n/* ---- %s ---- */\n' "$css"
+      cat "$css"
+    done
 } > "$out"/www/app.css
+find src/ui -name '*.late.css' -print0 | while IFS= read -r -d '' css; do
+  cp "$css" "$out/www/$(basename "$css" .late.css).css"
+done
 cp pkg/bsv_playground.js pkg/bsv_playground_bg.wasm "$out"/pkg/
 node scripts/split-link.mjs target/app/split "$out"/pkg
 # wasm-bindgen `inline_js` / `module` snippets, if any crate uses them.

@@ -6,8 +6,10 @@
 //! itself is [`crate::view::lesson`]; it is kept in localStorage (`bsv.lesson`) so it survives
 //! a reload; the `#/lesson` page edits it. What presenting needs of the shell (step the page,
 //! mount it again, projector mode) is returned as [`ShellRequest`]s for the shell to carry out.
+//! Presenting on two screens ([`crate::ui::present_two`]) walks the lesson here too, with a
+//! [`Relay`] that shows each step in the room's window instead of this one.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -16,6 +18,7 @@ use web_sys::{Element, Event, KeyboardEvent};
 use crate::ui::kit::store::{self, Refused, Stored};
 use crate::ui::page::SplitLoaderError;
 use crate::ui::page::{ShellLink, ShellRequest};
+use crate::ui::present_two::{self, TwoScreens};
 use crate::ui::{ctx, dom, router};
 use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
 use crate::view::lesson_file;
@@ -29,6 +32,42 @@ thread_local! {
     /// The current lesson when the browser refused to store it.
     static UNSAVED: RefCell<Option<Lesson>> = const { RefCell::new(None) };
     static PRESENTING: RefCell<Option<(Lesson, Presenter)>> = const { RefCell::new(None) };
+    /// Set while a lesson is presented on two screens, in both windows.
+    static RELAY: Cell<Option<fn(Relay)>> = const { Cell::new(None) };
+    /// Whether the room's screen is black (the presenter's window of two).
+    static BLACK: Cell<bool> = const { Cell::new(false) };
+}
+
+/// What a two-screen presentation does in place of this window's page and bar: in the
+/// presenter's window every step is shown in the room's window and the presenter view is
+/// redrawn; in the room's window its presenter keys go to the presenter's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Relay<'a> {
+    /// Show this route (a lesson step) in the room's window.
+    Show(&'a str),
+    /// Step the page in the room's window.
+    StepPage,
+    /// Black the room's screen out, or bring it back.
+    Black(bool),
+    /// Open Share in the room's window.
+    Share,
+    /// A presenter key pressed in the room's window.
+    Key(&'a str),
+    /// The lesson or its step changed: redraw the presenter view.
+    Redraw,
+    /// The presentation ended.
+    End,
+}
+
+/// Hands presenting to `relay` (both windows of a two-screen presentation), or takes it back.
+pub(crate) fn set_relay(relay: Option<fn(Relay)>) {
+    RELAY.set(relay);
+    BLACK.set(false);
+}
+
+/// The lesson being presented and where it stands.
+pub(crate) fn current() -> Option<(Lesson, Presenter)> {
+    PRESENTING.with(|p| p.borrow().clone())
 }
 
 /// The current lesson (empty when none, or when the stored text could not be read: that text
@@ -142,6 +181,44 @@ fn add_current_view(shell: ShellLink, route: &Route) -> Option<(usize, bool)> {
     Some((lesson.steps.len(), saved))
 }
 
+/// Presenting on two screens: a wasm chunk of its own, fetched on first use (or when this
+/// window opens as the room's window of a presentation).
+#[cfg(feature = "split")]
+#[wasm_split_helpers::wasm_split(present_two, fallible)]
+fn two_screens() -> Result<TwoScreens, SplitLoaderError> {
+    Ok(present_two::ENTRY)
+}
+
+/// Without the `split` feature presenting on two screens is in the one wasm.
+#[cfg(not(feature = "split"))]
+async fn two_screens() -> Result<TwoScreens, SplitLoaderError> {
+    Ok(present_two::ENTRY)
+}
+
+/// Presents `lesson` on two screens: the room's window opens on its first step and this
+/// window shows the presenter view. `Err` is the localized reason it could not.
+pub(crate) async fn present_two(lesson: Lesson, shell: ShellLink) -> Result<(), String> {
+    let two = two_screens()
+        .await
+        .map_err(|_| ctx::t("present-two-failed"))?;
+    (two.start)(lesson, shell.request)
+}
+
+/// Joins a two-screen presentation if this window was opened as its room's window.
+pub(crate) fn join_if_audience(shell: ShellLink) {
+    let named = web_sys::window().and_then(|w| w.name().ok());
+    if named.as_deref() != Some(present_two::AUDIENCE_NAME) {
+        return;
+    }
+    wasm_bindgen_futures::spawn_local(async move {
+        if let Ok(two) = two_screens().await {
+            if let Err(error) = (two.join)(shell.request) {
+                web_sys::console::error_1(&error);
+            }
+        }
+    });
+}
+
 /// The (hidden) presenter bar the shell places in `#app`.
 pub(crate) fn build_bar() -> Result<Element, JsValue> {
     let bar = dom::el_class("aside", "lesson-bar")?;
@@ -166,6 +243,7 @@ pub(crate) fn on_bar_click(event: &Event) -> Result<Vec<ShellRequest>, JsValue> 
         Some("lesson-next") => press(true),
         Some("lesson-prev") => press(false),
         Some("lesson-end") => stop().map(|()| Vec::new()),
+        Some("lesson-black") => black_out(!blacked_out()?).map(|()| Vec::new()),
         Some("lesson-go") => {
             let i = target
                 .get_attribute("data-index")
@@ -195,9 +273,22 @@ pub fn present(lesson: Lesson, index: usize) -> Result<Vec<ShellRequest>, JsValu
     Ok(requests)
 }
 
-/// Stops presenting.
+/// Starts presenting `lesson` at step `index` in the room's window of a two-screen
+/// presentation ([`set_relay`] first): this window shows the presenter view.
+pub(crate) fn present_on_two(lesson: Lesson, index: usize) -> Result<(), JsValue> {
+    let mut presenter = Presenter::default();
+    let action = presenter.go(&lesson, index);
+    PRESENTING.with(|p| *p.borrow_mut() = Some((lesson, presenter)));
+    apply(action).map(drop)
+}
+
+/// Stops presenting (on two screens: in both windows).
 pub fn stop() -> Result<(), JsValue> {
     PRESENTING.with(|p| *p.borrow_mut() = None);
+    if let Some(relay) = RELAY.take() {
+        BLACK.set(false);
+        relay(Relay::End);
+    }
     black_out(false)?;
     let document = dom::document()?;
     if document.fullscreen_element().is_some() {
@@ -235,16 +326,22 @@ fn press(forward: bool) -> Result<Vec<ShellRequest>, JsValue> {
 /// route again is the shell's to do.
 fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
     let mut requests = Vec::new();
+    let relay = RELAY.get();
     match action {
         PresenterAction::Stay => {}
-        PresenterAction::StepPage => requests.push(ShellRequest::StepPage),
+        PresenterAction::StepPage => match relay {
+            Some(relay) => relay(Relay::StepPage),
+            None => requests.push(ShellRequest::StepPage),
+        },
         PresenterAction::Show(i) => {
             let route = PRESENTING.with(|p| {
                 p.borrow()
                     .as_ref()
                     .and_then(|(l, _)| l.steps.get(i).map(|s| s.route.clone()))
             });
-            if let Some(route) = route {
+            if let (Some(route), Some(relay)) = (&route, relay) {
+                relay(Relay::Show(route));
+            } else if let Some(route) = route {
                 let window = dom::window()?;
                 if window.location().hash()? == route {
                     // Same state: re-mount it from the start.
@@ -265,13 +362,28 @@ fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
 /// edited ← and → (and B, ., S) stay the field's; PageDown / PageUp still go on and back.
 /// `None` if not taken, else what the presenter asks of the shell.
 pub(crate) fn on_key(event: &KeyboardEvent) -> Result<Option<Vec<ShellRequest>>, JsValue> {
-    if !presenting() || crate::ui::kit::keymap::has_command_modifier(event) {
+    if crate::ui::kit::keymap::has_command_modifier(event) {
         return Ok(None);
     }
     let typing = crate::ui::kit::keymap::is_text_entry(event.target());
-    let key = event.key();
+    on_named_key(&event.key(), typing)
+}
+
+/// [`on_key`] for the key named `key` (`typing`: a text field being edited has focus); also a
+/// key pressed in the room's window of a two-screen presentation.
+pub(crate) fn on_named_key(key: &str, typing: bool) -> Result<Option<Vec<ShellRequest>>, JsValue> {
+    if !presenting() {
+        // The room's window of two: its presenter keys go to the presenter's window.
+        return Ok(match RELAY.get() {
+            Some(relay) if is_presenter_key(key, typing) => {
+                relay(Relay::Key(key));
+                Some(Vec::new())
+            }
+            _ => None,
+        });
+    }
     let black = blacked_out()?;
-    let requests = match key.as_str() {
+    let requests = match key {
         "PageDown" | "PageUp" | "ArrowRight" | "ArrowLeft" | "b" | "B" | "." if black => {
             black_out(false)?;
             Vec::new()
@@ -293,7 +405,10 @@ pub(crate) fn on_key(event: &KeyboardEvent) -> Result<Option<Vec<ShellRequest>>,
             Vec::new()
         }
         "s" | "S" if !typing => {
-            crate::ui::share::open();
+            match RELAY.get() {
+                Some(relay) => relay(Relay::Share),
+                None => crate::ui::share::open(),
+            }
             Vec::new()
         }
         _ => return Ok(None),
@@ -301,18 +416,44 @@ pub(crate) fn on_key(event: &KeyboardEvent) -> Result<Option<Vec<ShellRequest>>,
     Ok(Some(requests))
 }
 
+/// Whether `key` is one of the presenter's keys ([`on_named_key`]).
+fn is_presenter_key(key: &str, typing: bool) -> bool {
+    match key {
+        "PageDown" | "PageUp" | "Escape" | "Esc" => true,
+        "ArrowRight" | "ArrowLeft" | "b" | "B" | "." | "s" | "S" => !typing,
+        _ => false,
+    }
+}
+
 /// The black screen's element id (`data-testid="blackout"`).
 const BLACKOUT_ID: &str = "lesson-blackout";
 
-/// Whether the screen is blacked out.
-fn blacked_out() -> Result<bool, JsValue> {
+/// Whether the screen is blacked out (on two screens: the room's).
+pub(crate) fn blacked_out() -> Result<bool, JsValue> {
+    if RELAY.get().is_some() {
+        return Ok(BLACK.get());
+    }
     Ok(dom::document()?
         .get_element_by_id(BLACKOUT_ID)
         .is_some_and(|b| !b.has_attribute("hidden")))
 }
 
-/// Blacks the screen out (`on`) or brings it back, as a presentation program's B and . do.
+/// Blacks the screen out (`on`) or brings it back, as a presentation program's B and . do;
+/// on two screens, the room's.
 fn black_out(on: bool) -> Result<(), JsValue> {
+    match RELAY.get() {
+        Some(relay) if presenting() => {
+            BLACK.set(on);
+            relay(Relay::Black(on));
+            relay(Relay::Redraw);
+            Ok(())
+        }
+        _ => cover(on),
+    }
+}
+
+/// Blacks this window's screen out (`on`) or brings it back.
+pub(crate) fn cover(on: bool) -> Result<(), JsValue> {
     let document = dom::document()?;
     let cover = match document.get_element_by_id(BLACKOUT_ID) {
         Some(cover) => cover,
@@ -343,6 +484,12 @@ pub(crate) fn render() -> Result<(), JsValue> {
         dom::show(&bar, false);
         return Ok(());
     };
+    if let Some(relay) = RELAY.get() {
+        // The presenter view stands for the bar.
+        dom::show(&bar, false);
+        relay(Relay::Redraw);
+        return Ok(());
+    }
     dom::clear(&bar);
     dom::show(&bar, true);
     bar.set_attribute("data-step", &(presenter.index + 1).to_string())?;

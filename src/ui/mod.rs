@@ -27,6 +27,7 @@ pub mod overlay;
 pub mod page;
 pub mod page_frame;
 pub mod pages;
+pub mod present_two;
 pub mod router;
 pub mod schedule;
 pub mod section_keys;

@@ -43,6 +43,9 @@ pub enum ShellRequest {
     Remount,
     /// Projector mode on or off (a lesson being presented turns it on).
     Projector(bool),
+    /// Projector mode on in this window only, not remembered (the room's window of a
+    /// two-screen presentation).
+    ProjectorHere,
     /// The mounted page, which waited for a chunk before it was built, is built (or says that
     /// the chunk could not be fetched): the route is settled.
     Settled,

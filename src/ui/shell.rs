@@ -108,6 +108,7 @@ pub(crate) fn start(lang: Lang) -> Result<bool, JsValue> {
         }
     })?;
     install_load_progress()?;
+    lesson_bar::join_if_audience(SHELL);
     Ok(true)
 }
 
@@ -365,8 +366,13 @@ fn apply_lang_chrome() -> Result<(), JsValue> {
 
 /// Turns projector mode on or off, saves it and tells the page.
 pub(crate) fn set_projector(on: bool) -> Result<(), JsValue> {
-    ctx::set_projector(on);
     dom::storage_set(PROJECTOR_STORAGE_KEY, if on { "1" } else { "0" });
+    show_projector(on)
+}
+
+/// Projector mode on or off in this window, not remembered.
+fn show_projector(on: bool) -> Result<(), JsValue> {
+    ctx::set_projector(on);
     apply_projector_class(on)?;
     with_page(|page| page.set_projector(on));
     Ok(())
@@ -622,6 +628,7 @@ fn perform(request: ShellRequest) -> Result<(), JsValue> {
         ShellRequest::Remount => mount_route(&router::current_route()),
         ShellRequest::Projector(on) if ctx::projector() != on => set_projector(on),
         ShellRequest::Projector(_) => Ok(()),
+        ShellRequest::ProjectorHere => show_projector(true),
         ShellRequest::Settled => mark_ready(),
     }
 }

@@ -22,9 +22,11 @@ async function addedStep(page, n) {
   );
 }
 
-async function goto(page, hash) {
+async function goto(page, hash, { readouts = false } = {}) {
   await page.goto(`${server.url}/${hash}`);
   await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+  // A drill page's first run has written its readouts.
+  if (readouts) await page.waitForFunction(() => [...document.querySelectorAll('#app-main [data-readout]')].some((r) => r.textContent.trim()));
   await page.waitForTimeout(400);
 }
 
@@ -35,7 +37,7 @@ test('a lesson built from three pages is exported, imported and presented with P
     // What each permalink shows on its own.
     const expected = [];
     for (const route of ROUTES) {
-      await goto(page, route);
+      await goto(page, route, { readouts: true });
       expected.push(await pageReadouts(page));
       await page.click('[data-testid="lesson-add"]');
     }

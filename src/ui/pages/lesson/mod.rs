@@ -138,12 +138,14 @@ const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>
 <ol class=\"lesson-steps\" data-testid=\"lesson-steps\"></ol>\
 <div class=\"lesson-actions\">\
 <button type=\"button\" class=\"tool-button lesson-present\" data-action=\"lesson-present\" data-i18n=\"lesson-present\"></button>\
+<button type=\"button\" class=\"tool-button\" data-action=\"lesson-present-two\" data-i18n=\"lesson-present-two\"></button>\
 <button type=\"button\" class=\"tool-button\" data-download=\"lesson.json\" data-i18n=\"lesson-export\"></button>\
 <label class=\"tool-button lesson-import\"><span data-i18n=\"lesson-import\"></span>\
 <input type=\"file\" accept=\".json,application/json\" data-action=\"lesson-import\" class=\"visually-hidden\"></label>\
 <button type=\"button\" class=\"tool-button\" data-action=\"lesson-clear\" data-i18n=\"lesson-clear\"></button>\
 </div>\
 <p class=\"lesson-error\" role=\"alert\" data-field-error=\"lesson-file\" hidden></p>\
+<p class=\"lesson-error\" role=\"alert\" data-field-error=\"lesson-present-two\" hidden></p>\
 <label class=\"lesson-field\"><span data-i18n=\"lesson-link-label\"></span>\
 <input type=\"text\" readonly data-readout=\"lesson-link\"></label>\
 </section></div>";
@@ -172,6 +174,21 @@ impl Editor {
         for request in lesson_bar::present(lesson, index)? {
             (self.shell.request)(request)?;
         }
+        Ok(())
+    }
+
+    /// Presents the lesson on two screens; what stopped it is said under the buttons.
+    fn present_two(&self) -> Result<(), JsValue> {
+        let lesson = self.lesson.borrow().clone();
+        let slot: Element = self.find("[data-field-error=\"lesson-present-two\"]")?;
+        dom::show(&slot, false);
+        let shell = self.shell;
+        wasm_bindgen_futures::spawn_local(async move {
+            if let Err(reason) = lesson_bar::present_two(lesson, shell).await {
+                slot.set_text_content(Some(&reason));
+                dom::show(&slot, true);
+            }
+        });
         Ok(())
     }
 
@@ -329,6 +346,12 @@ impl Editor {
             );
         }
         match target.get_attribute("data-action").as_deref() {
+            Some("lesson-present-two") => {
+                if !self.lesson.borrow().steps.is_empty() {
+                    self.present_two()?;
+                }
+                return Ok(());
+            }
             Some("lesson-present") => {
                 if !self.lesson.borrow().steps.is_empty() {
                     self.present(0)?;
@@ -400,11 +423,13 @@ impl Editor {
         dom::show(&empty, lesson.steps.is_empty());
         let note: Element = self.find("[data-testid=\"lesson-builtin-note\"]")?;
         dom::show(&note, self.builtin_shown.get());
-        let present: Element = self.find("[data-action=\"lesson-present\"]")?;
-        if lesson.steps.is_empty() {
-            present.set_attribute("disabled", "")?;
-        } else {
-            present.remove_attribute("disabled")?;
+        for action in ["lesson-present", "lesson-present-two"] {
+            let present: Element = self.find(&format!("[data-action=\"{action}\"]"))?;
+            if lesson.steps.is_empty() {
+                present.set_attribute("disabled", "")?;
+            } else {
+                present.remove_attribute("disabled")?;
+            }
         }
         for (i, step) in lesson.steps.iter().enumerate() {
             let item = dom::el_class("li", "lesson-step")?;
