@@ -62,3 +62,5 @@ section-session = Episodes and evidence
 section-wrist = Wrist camera
 section-keys = Keys
 section-result = Result
+section-lessons = Built-in lessons
+section-steps = This lesson's steps

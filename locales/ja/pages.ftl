@@ -61,3 +61,5 @@ section-session = エピソードと記録
 section-wrist = 手首カメラ
 section-keys = キー
 section-result = 結果
+section-lessons = 組み込みのレッスン
+section-steps = このレッスンのステップ

@@ -23,6 +23,7 @@ pub const PAGE_SECTIONS: &[(&str, &[&str])] = &[
     ("teleop", &["world", "readouts", "device", "session", "form", "explain"]),
     ("so101", &["arm", "wrist", "device", "readouts", "session", "form", "keys"]),
     ("drills", &["form", "result", "explain"]),
+    ("lesson", &["lessons", "steps"]),
 ];
 
 /// The sections of a signal page (`crate::ui::kit::signal_page`).
@@ -78,6 +79,6 @@ mod tests {
         assert_eq!(main_view("ik-2r"), Some("arm"));
         assert_eq!(main_view("pid-step"), Some("plot"));
         assert!(has("ik-2r", "heatmap") && !has("ik-2r", "world") && !has("nope", "arm"));
-        assert_eq!(of("lesson"), &[] as &[&str]);
+        assert_eq!(of("nope"), &[] as &[&str]);
     }
 }

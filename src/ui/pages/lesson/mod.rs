@@ -138,14 +138,14 @@ const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>
 <button type=\"button\" class=\"tool-button\" data-download=\"lesson-unreadable.json\" data-i18n=\"lesson-unreadable-download\"></button>\
 <button type=\"button\" class=\"tool-button\" data-action=\"lesson-forget-unreadable\" data-i18n=\"lesson-unreadable-forget\"></button>\
 </div>\
-<section class=\"lesson-card\" aria-labelledby=\"lesson-builtin-heading\">\
+<section class=\"lesson-card\" data-section=\"lessons\" aria-labelledby=\"lesson-builtin-heading\">\
 <h2 id=\"lesson-builtin-heading\" data-i18n=\"lesson-builtin-heading\"></h2>\
 <div class=\"lesson-builtins\">\
 <button type=\"button\" class=\"tool-button\" data-builtin=\"ik\" data-i18n=\"lesson-builtin-ik-title\"></button>\
 <button type=\"button\" class=\"tool-button\" data-builtin=\"energy\" data-i18n=\"lesson-builtin-energy-title\"></button>\
 <button type=\"button\" class=\"tool-button\" data-builtin=\"planning\" data-i18n=\"lesson-builtin-planning-title\"></button>\
 </div></section>\
-<section class=\"lesson-card\" aria-labelledby=\"lesson-edit-heading\">\
+<section class=\"lesson-card\" data-section=\"steps\" aria-labelledby=\"lesson-edit-heading\">\
 <h2 id=\"lesson-edit-heading\" data-i18n=\"lesson-edit-heading\"></h2>\
 <label class=\"lesson-field\"><span data-i18n=\"lesson-name-label\"></span>\
 <input type=\"text\" data-field=\"lesson-title\" maxlength=\"120\"></label>\
