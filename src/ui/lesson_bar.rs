@@ -248,13 +248,16 @@ fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
             });
             if let Some(LessonStep { route, focus, .. }) = step {
                 if let Some(bar) = dom::document()?.get_element_by_id(BAR_ID) {
-                    lesson_focus::show(&bar, crate::view::url::parse_hash(&route).page, focus)?;
+                    lesson_focus::show(&bar, crate::view::url::parse_hash(&route).page, focus);
                 }
                 let window = dom::window()?;
                 if window.location().hash()? == route {
                     // Same state: re-mount it from the start.
                     requests.push(ShellRequest::Remount);
                 } else {
+                    // The page shown writes no more of its state to the URL: on the same page
+                    // (a step to another state of it) that write would replace the step's.
+                    router::set_shown_page("");
                     window.location().set_hash(&route)?;
                 }
             }

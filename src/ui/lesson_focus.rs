@@ -2,18 +2,20 @@
 //! [`crate::view::sections`]; without one the page's main view) brought fully into view above
 //! the presenter bar, and the bar kept off it. The page comes in its own time (its chunk, its
 //! second stage), so the section is looked for, and moved back into view when the layout
-//! shifts under it, every [`TICK_MS`] for [`SETTLE_TICKS`] ticks after the step is shown,
+//! shifts under it, every tenth of a second for five seconds after the step is shown,
 //! until the user scrolls, touches or clicks. A section taller than the room above the bar
 //! shrinks the bar to one line (`.lesson-bar-compact`). Once the section has stood in view for
-//! [`STABLE_TICKS`] ticks the bar says so: `data-focus="<id>"`.
+//! three ticks the bar says so: `data-focus="<id>"`. That work is a wasm chunk of
+//! its own, fetched when the first step is shown: no page needs it before its first frame.
 //!
-//! "+ Lesson" records the section nearest the middle of the viewport ([`middle_section`]).
+//! "+ Lesson" records the section nearest the middle of the viewport (`middle_section`).
 
 use std::cell::{Cell, RefCell};
 
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
+use crate::ui::page::SplitLoaderError;
 use crate::ui::{dom, router, schedule};
 use crate::view::sections;
 
@@ -45,10 +47,48 @@ fn let_go() -> u64 {
 
 /// Brings section `focus` of `page` (its main view when `None`, or when the page has no such
 /// section) into view above `bar`, once the page is there.
-pub(crate) fn show(bar: &Element, page: String, focus: Option<String>) -> Result<(), JsValue> {
+pub(crate) fn show(bar: &Element, page: String, focus: Option<String>) {
     let generation = let_go();
+    // Said again once this step's section is in view.
+    let _ = bar.remove_attribute("data-focus");
+    let bar = bar.clone();
+    wasm_bindgen_futures::spawn_local(async move {
+        if let Ok(follow) = follower().await {
+            if let Err(error) = follow(bar, page, focus, generation) {
+                web_sys::console::error_2(&"BSV Playground: lesson focus".into(), &error);
+            }
+        }
+    });
+}
+
+/// What brings a step's section into view ([`follow`]).
+type FollowFn = fn(Element, String, Option<String>, u64) -> Result<(), JsValue>;
+
+/// The chunk that brings a step's section into view.
+#[cfg(feature = "split")]
+#[wasm_split_helpers::wasm_split(lesson_focus, fallible)]
+fn follower() -> Result<FollowFn, SplitLoaderError> {
+    Ok(follow)
+}
+
+/// Without the `split` feature it is in the one wasm.
+#[cfg(not(feature = "split"))]
+async fn follower() -> Result<FollowFn, SplitLoaderError> {
+    Ok(follow)
+}
+
+/// [`show`] for step `generation`, once its chunk is here: looks for the section every tick
+/// and keeps it in view.
+fn follow(
+    bar: Element,
+    page: String,
+    focus: Option<String>,
+    generation: u64,
+) -> Result<(), JsValue> {
+    if SHOWN.with(Cell::get) != generation {
+        return Ok(());
+    }
     bar.class_list().remove_1(COMPACT)?;
-    bar.remove_attribute("data-focus")?;
     let wanted = match focus.filter(|f| sections::has(&page, f)) {
         Some(focus) => focus,
         None => match sections::main_view(&page) {
@@ -68,7 +108,6 @@ pub(crate) fn show(bar: &Element, page: String, focus: Option<String>) -> Result
             .collect::<Result<Vec<_>, _>>()?;
         WATCH.with_borrow_mut(|watch| *watch = listeners);
     }
-    let bar = bar.clone();
     wasm_bindgen_futures::spawn_local(async move {
         let mut stable = 0;
         for _ in 0..SETTLE_TICKS {
@@ -134,8 +173,9 @@ fn bring_into_view(section: &Element, bar: &Element) -> Result<bool, JsValue> {
     Ok(in_view)
 }
 
-/// The page's section nearest the middle of the viewport (the smallest of those that hold
-/// it): what "+ Lesson" records as the step's focus.
+/// The page's section nearest the middle of the viewport: of those across its middle line (else
+/// the nearest to it), the one whose centre is nearest the middle, then the nearest sideways;
+/// what "+ Lesson" records as the step's focus.
 pub(crate) fn middle_section() -> Option<String> {
     let window = dom::window().ok()?;
     let x = window.inner_width().ok()?.as_f64()? / 2.0;
@@ -151,9 +191,16 @@ pub(crate) fn middle_section() -> Option<String> {
             }
             let dx = (r.left() - x).max(x - r.right()).max(0.0);
             let dy = (r.top() - y).max(y - r.bottom()).max(0.0);
+            let centre = ((r.top() + r.bottom()) / 2.0 - y).abs();
             let id = section.get_attribute("data-section")?;
-            Some((dx.hypot(dy), r.width() * r.height(), id))
+            Some(([dy, centre, dx], id))
         })
-        .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)))
-        .map(|(_, _, id)| id)
+        .min_by(|(a, _), (b, _)| {
+            a.iter()
+                .zip(b)
+                .map(|(a, b)| a.total_cmp(b))
+                .find(|o| o.is_ne())
+                .unwrap_or(std::cmp::Ordering::Equal)
+        })
+        .map(|(_, id)| id)
 }

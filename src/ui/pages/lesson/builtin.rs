@@ -4,10 +4,13 @@
 use crate::ui::ctx;
 use crate::view::lesson::{Lesson, LessonStep};
 
-/// (key, [(route, page steps, focus)]): each step's note speaks of its focus only, and the
-/// controls it names are set by its route.
+/// A built-in step: its route, its page steps and its focus (a section of the route's page).
+type BuiltinStep = (&'static str, u32, &'static str);
+
+/// (key, steps): each step's note speaks of its focus only, and the controls it names are set
+/// by its route.
 #[rustfmt::skip]
-pub const BUILTIN: [(&str, &[(&str, u32, &str)]); 3] = [
+pub const BUILTIN: [(&str, &[BuiltinStep]); 3] = [
     (
         "ik",
         &[
