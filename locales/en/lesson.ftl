@@ -4,31 +4,31 @@ lesson-intro = A lesson is a list of page states, each with a title and a note f
 lesson-builtin-heading = Built-in lessons (about 10 minutes each)
 lesson-builtin-ik-title = IK, the Jacobian and singularities
 lesson-builtin-ik-1-title = The IK playground
-lesson-builtin-ik-1-note = Drag the tip around. Ask: which joint angles put it here? Point out the two solutions (elbow up and down).
+lesson-builtin-ik-1-note = The arm on its elbow-down branch (set by this step’s link). Drag the tip around: ask which joint angles put it there, and where the elbow would be on the other branch.
 lesson-builtin-ik-2-title = Near the stretched-out arm
-lesson-builtin-ik-2-note = q2 is almost 0: the arm is nearly straight. Show the manipulability heatmap and |det J| collapsing on the q2 = 0 line.
+lesson-builtin-ik-2-note = q2 = 0.05: the arm is nearly straight. On the heatmap the white circle sits next to the red dashed line q2 = 0, where |det J| falls to zero all along the line.
 lesson-builtin-ik-3-title = The Jacobian sweep
-lesson-builtin-ik-3-note = Run the jacobian-2r recipe: σ_min against σ_max. Ask what a small σ_min means for a controller.
+lesson-builtin-ik-3-note = The same pose, the jacobian-2r sweep over q1: σ_min against σ_max. The lines are flat because they depend on q2 only; at q2 = 0.05 σ_min is almost zero. Ask what a small σ_min means for a controller.
 lesson-builtin-ik-4-title = Teleop near the singularity
-lesson-builtin-ik-4-note = Drive the arm toward full stretch. Switch the IK method from DLS to pinv and watch what damping buys you.
+lesson-builtin-ik-4-note = This step’s link sets the IK method to pinv: no damping. Drive the arm toward full stretch and watch the joints lurch as it nears the singularity; DLS damps exactly that.
 lesson-builtin-energy-title = Integrators and energy
 lesson-builtin-energy-1-title = An undamped pendulum
-lesson-builtin-energy-1-note = No damping: total energy should stay constant. Watch kinetic and potential trade places.
+lesson-builtin-energy-1-note = No damping (set by this step’s link): the pendulum swings back to the same height every time. Ask where its speed peaks.
 lesson-builtin-energy-2-title = Euler against RK4
-lesson-builtin-energy-2-note = Same start, two integrators. Read the drift readouts: which one creates energy?
+lesson-builtin-energy-2-note = The comparison is on: Euler and RK4 from the same start. The error panel plots the energy error on a log axis: which integrator’s error keeps growing?
 lesson-builtin-energy-3-title = A bigger timestep
-lesson-builtin-energy-3-note = h = 0.01 s: five times the default. Ask the class to predict the drift before you show it.
+lesson-builtin-energy-3-note = h = 0.01 s, five times the default (set by this step’s link). Ask the class to predict the energy error before you point at the plot.
 lesson-builtin-energy-4-title = A feedback loop
-lesson-builtin-energy-4-note = PID on a first-order plant. Drag Kp up until it overshoots; the ghost keeps the previous tuning.
+lesson-builtin-energy-4-note = PID on a first-order plant: the output y climbs to the setpoint r, and the lower panel shows the controller output u. Read the overshoot and the settling off the plot.
 lesson-builtin-planning-title = Planning and trajectories
 lesson-builtin-planning-1-title = Stepping the RRT
-lesson-builtin-planning-1-note = Five presses step the tree five times; watch sample, nearest and steer. Ask why every tenth sample is the goal.
+lesson-builtin-planning-1-note = Five presses grow the tree five iterations: each draws a sample, finds the nearest node and steers one step toward it. Every tenth sample is the goal: ask why.
 lesson-builtin-planning-2-title = A cubic path
-lesson-builtin-planning-2-note = Zero end velocities. Drag the end point: where is the peak velocity?
+lesson-builtin-planning-2-note = Zero velocity at both ends: the velocity qd peaks halfway, where the acceleration qdd crosses zero. Ask why a cubic cannot also start with zero acceleration.
 lesson-builtin-planning-3-title = The trapezoid
-lesson-builtin-planning-3-note = Limited velocity and acceleration. Shorten the distance until the profile becomes a triangle.
+lesson-builtin-planning-3-note = Accelerate, cruise, brake: the velocity v is a trapezoid. Ask what a shorter move does to its flat top.
 lesson-builtin-planning-4-title = Resampling a trajectory
-lesson-builtin-planning-4-note = Real logs are not evenly timed. Resample onto a fixed dt and compare the dots with the line.
+lesson-builtin-planning-4-note = Real logs are not evenly timed. The dots are the file’s samples, the line the series resampled at a fixed dt: compare them.
 lesson-edit-heading = This lesson
 lesson-name-label = Lesson title
 lesson-empty = No steps yet. Open any page, set it up and press “+ Lesson” in the header, or load a built-in lesson above.
@@ -51,6 +51,9 @@ lesson-step-delete-label = Delete step { $n }
 lesson-step-title-label = Title
 lesson-step-note-label = Note for the presenter
 lesson-step-page-steps-label = Page steps before moving on
+lesson-step-focus-label = Show on screen
+lesson-step-focus-main = The page's main view
+lesson-focus-unknown = Step { $step }: the page “{ $page }” has no section “{ $focus }”, so this step shows the page's main view.
 lesson-page-steps-invalid = A whole number from 0 to { $max }.
 lesson-error-not-text = This file could not be read as a lesson: { $detail } The current lesson is kept.
 lesson-error-too-big = This file is { $size } ({ $bytes } bytes); a lesson file may be at most { $limit }. It was not read. The current lesson is kept.

@@ -4,31 +4,31 @@ lesson-intro = レッスンは、ページの状態を並べたものです。�
 lesson-builtin-heading = 組み込みのレッスン（各 10 分ほど）
 lesson-builtin-ik-title = IK、ヤコビアン、特異点
 lesson-builtin-ik-1-title = IK プレイグラウンド
-lesson-builtin-ik-1-note = 先端をドラッグして動かします。「どの関節角でここに来るか」を問い、2 つの解（肘上・肘下）を示します。
+lesson-builtin-ik-1-note = ひじ下の枝のアーム（このステップのリンクで設定）。先端をドラッグし、どの関節角度ならそこに届くか、もう一方の枝ならひじはどこに来るかを問いかけます。
 lesson-builtin-ik-2-title = 伸び切ったアームの近く
-lesson-builtin-ik-2-note = q2 がほぼ 0 で、アームはほぼまっすぐです。可操作度のヒートマップと、q2 = 0 の線で |det J| が落ち込む様子を見せます。
-lesson-builtin-ik-3-title = ヤコビアンの掃引
-lesson-builtin-ik-3-note = jacobian-2r のレシピを実行し、σ_min と σ_max を比べます。σ_min が小さいと制御にとって何を意味するかを問います。
+lesson-builtin-ik-2-note = q2 = 0.05：アームはほぼまっすぐです。ヒートマップでは白い円が赤い破線 q2 = 0 のすぐ横にあり、その線上ではどこでも |det J| がゼロに落ちます。
+lesson-builtin-ik-3-title = ヤコビアンのスイープ
+lesson-builtin-ik-3-note = 同じ姿勢で、jacobian-2r の q1 スイープ：σ_min と σ_max。値は q2 だけで決まるので線は平らです。q2 = 0.05 では σ_min がほぼゼロ。小さい σ_min は制御器にとって何を意味するかを問いかけます。
 lesson-builtin-ik-4-title = 特異点の近くでの遠隔操作
-lesson-builtin-ik-4-note = アームを伸び切る方向へ動かします。IK の方式を DLS から pinv に切り替え、減衰の効果を確かめます。
+lesson-builtin-ik-4-note = このステップのリンクで IK 手法を pinv（減衰なし）にしています。アームを伸び切る方向へ動かし、特異点に近づくと関節が急に振れる様子を見せます。DLS が抑えるのはまさにこれです。
 lesson-builtin-energy-title = 積分法とエネルギー
 lesson-builtin-energy-1-title = 減衰のない振り子
-lesson-builtin-energy-1-note = 減衰なしでは全エネルギーは一定のはずです。運動エネルギーと位置エネルギーが入れ替わる様子を見ます。
+lesson-builtin-energy-1-note = 減衰なし（このステップのリンクで設定）：振り子は毎回同じ高さまで戻ります。速さが最大になるのはどこかを問いかけます。
 lesson-builtin-energy-2-title = Euler と RK4
-lesson-builtin-energy-2-note = 同じ初期状態から 2 つの積分法を比べます。ずれの表示を読み、どちらがエネルギーを生み出しているかを考えます。
+lesson-builtin-energy-2-note = 比較がオン：同じ初期状態からのオイラー法と RK4。誤差のパネルはエネルギー誤差を対数軸で描きます。誤差が増え続けるのはどちらの積分法でしょう？
 lesson-builtin-energy-3-title = 大きな時間刻み
-lesson-builtin-energy-3-note = h = 0.01 s、既定の 5 倍です。見せる前に、ずれがどうなるかを予想してもらいます。
+lesson-builtin-energy-3-note = h = 0.01 s、既定の 5 倍（このステップのリンクで設定）。プロットを指す前に、エネルギー誤差を予想してもらいましょう。
 lesson-builtin-energy-4-title = フィードバックループ
-lesson-builtin-energy-4-note = 1 次遅れのプラントに PID をかけます。Kp を上げてオーバーシュートさせます。前のゲインの残像で比べられます。
+lesson-builtin-energy-4-note = 1 次系のプラントに PID：出力 y が目標値 r まで上がり、下のパネルは制御出力 u です。オーバーシュートと整定をプロットから読み取ります。
 lesson-builtin-planning-title = 経路計画と軌道
 lesson-builtin-planning-1-title = RRT を 1 ステップずつ
-lesson-builtin-planning-1-note = 5 回押すと木が 5 回伸びます。サンプル・最近傍・ステアを見ます。10 回に 1 回ゴールをサンプルする理由を問います。
+lesson-builtin-planning-1-note = 5 回押すと木が 5 反復育ちます。各反復でサンプルを引き、最も近いノードを見つけ、そちらへ 1 ステップ伸ばします。10 回に 1 回のサンプルはゴールです。なぜかを問いかけます。
 lesson-builtin-planning-2-title = 3 次軌道
-lesson-builtin-planning-2-note = 両端の速度は 0 です。終点をドラッグし、速度が最大になる場所を確かめます。
+lesson-builtin-planning-2-note = 両端で速度ゼロ：速度 qd は中間で最大になり、そこで加速度 qdd がゼロを横切ります。3 次式ではなぜ加速度ゼロからも始められないのかを問いかけます。
 lesson-builtin-planning-3-title = 台形プロファイル
-lesson-builtin-planning-3-note = 速度と加速度に上限があります。距離を短くして、プロファイルが三角形になるところを見せます。
+lesson-builtin-planning-3-note = 加速、巡航、減速：速度 v は台形です。移動距離を短くすると平らな部分はどうなるかを問いかけます。
 lesson-builtin-planning-4-title = 軌道の再サンプリング
-lesson-builtin-planning-4-note = 実際のログは等間隔ではありません。一定の dt に再サンプリングし、点と線を比べます。
+lesson-builtin-planning-4-note = 実際のログは等間隔ではありません。点はファイルのサンプル、線は一定の dt でリサンプリングした系列です。見比べましょう。
 lesson-edit-heading = このレッスン
 lesson-name-label = レッスンのタイトル
 lesson-empty = まだステップがありません。どれかのページを開いて表示を整え、ヘッダーの「+ レッスン」を押すか、上の組み込みレッスンを読み込んでください。
@@ -51,6 +51,9 @@ lesson-step-delete-label = ステップ { $n } を削除
 lesson-step-title-label = タイトル
 lesson-step-note-label = 発表者用のメモ
 lesson-step-page-steps-label = 次へ進む前にページを進める回数
+lesson-step-focus-label = 画面に出す区画
+lesson-step-focus-main = ページのメインビュー
+lesson-focus-unknown = ステップ { $step }：ページ「{ $page }」には区画「{ $focus }」がないため、このステップではページのメインビューを表示します。
 lesson-page-steps-invalid = 0 から { $max } までの整数を入力してください。
 lesson-error-not-text = このファイルはレッスンとして読めませんでした：{ $detail } 今のレッスンはそのまま残ります。
 lesson-error-too-big = このファイルは { $size }（{ $bytes } バイト）あります。レッスンのファイルは { $limit } までです。ファイルは読み込んでいません。今のレッスンはそのまま残ります。

@@ -1,6 +1,6 @@
 //! Small DOM helpers shared by the shell and the pages: element builders and look-ups, localized
 //! text (`data-i18n="msg-id"` and `data-i18n-attr="title=msg-id;aria-label=msg-id"`,
-//! re-rendered by [`relocalize`]), showing and hiding, localStorage that never throws (private
+//! re-rendered by [`relocalize`], which also names every `data-section`), showing and hiding, localStorage that never throws (private
 //! mode, disabled storage), event listeners that remove themselves when dropped, and
 //! `promise.then` for the browser's promise-returning calls.
 
@@ -68,6 +68,22 @@ pub fn set_i18n_attrs(element: &Element, attrs: &[(&str, &str)]) -> Result<(), J
     Ok(())
 }
 
+/// Marks `element` as section `id` of its page ([`crate::view::sections`]), named in the
+/// current language now and after every language switch.
+pub fn mark_section(element: &Element, id: &str) -> Result<(), JsValue> {
+    element.set_attribute("data-section", id)?;
+    name_section(element)
+}
+
+/// `data-section-name`: the localized name of the element's `data-section`.
+fn name_section(element: &Element) -> Result<(), JsValue> {
+    if let Some(id) = element.get_attribute("data-section") {
+        let name = ctx::t(&crate::view::sections::name_id(&id));
+        element.set_attribute("data-section-name", &name)?;
+    }
+    Ok(())
+}
+
 /// Appends `child` to `parent`.
 pub fn append(parent: &Element, child: &Element) -> Result<(), JsValue> {
     parent.append_child(child).map(|_| ())
@@ -84,6 +100,9 @@ pub fn relocalize(root: &Element) -> Result<(), JsValue> {
                 element.set_text_content(Some(&text));
             }
         }
+    }
+    for element in matching(root, "[data-section]")? {
+        name_section(&element)?;
     }
     for element in matching(root, "[data-i18n-attr]")? {
         let Some(spec) = element.get_attribute("data-i18n-attr") else {

@@ -2,7 +2,8 @@
 //! lesson over every page: full screen, projector styles, a bar at the foot with the step's
 //! title and note, a progress strip, and the keys of presenter remotes, whatever has focus
 //! (PageDown / → next, PageUp / ← back, a step that asks for it first stepping the page's own
-//! stepper; B / . black the screen and bring it back; Escape ends). The lesson
+//! stepper; B / . black the screen and bring it back; Escape ends); each step brings its focus
+//! section into view above the bar ([`crate::ui::lesson_focus`]). The lesson
 //! itself is [`crate::view::lesson`]; it is kept in localStorage (`bsv.lesson`) so it survives
 //! a reload; the `#/lesson` page edits it. What presenting needs of the shell (step the page,
 //! mount it again, projector mode) is returned as [`ShellRequest`]s for the shell to carry out.
@@ -19,7 +20,7 @@ use crate::ui::kit::store::{self, Refused, Stored};
 use crate::ui::page::SplitLoaderError;
 use crate::ui::page::{ShellLink, ShellRequest};
 use crate::ui::present_two::{self, TwoScreens};
-use crate::ui::{ctx, dom, router};
+use crate::ui::{ctx, dom, lesson_focus, router};
 use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
 use crate::view::lesson_file;
 use crate::view::url::Route;
@@ -43,8 +44,8 @@ thread_local! {
 /// redrawn; in the room's window its presenter keys go to the presenter's.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Relay<'a> {
-    /// Show this route (a lesson step) in the room's window.
-    Show(&'a str),
+    /// Show this route (a lesson step) in the room's window, with its focus section.
+    Show(&'a str, Option<&'a str>),
     /// Step the page in the room's window.
     StepPage,
     /// Black the room's screen out, or bring it back.
@@ -173,9 +174,9 @@ fn add_current_view(shell: ShellLink, route: &Route) -> Option<(usize, bool)> {
     if lesson.title.is_empty() {
         lesson.title = ctx::t("lesson-untitled");
     }
-    lesson
-        .steps
-        .push(LessonStep::of_route(&hash, &ctx::t(def.title_id)));
+    let mut step = LessonStep::of_route(&hash, &ctx::t(def.title_id));
+    step.focus = lesson_focus::middle_section();
+    lesson.steps.push(step);
     lesson.validate(is_page).ok()?;
     let saved = store(&lesson).is_ok();
     Some((lesson.steps.len(), saved))
@@ -285,6 +286,7 @@ pub(crate) fn present_on_two(lesson: Lesson, index: usize) -> Result<(), JsValue
 /// Stops presenting (on two screens: in both windows).
 pub fn stop() -> Result<(), JsValue> {
     PRESENTING.with(|p| *p.borrow_mut() = None);
+    lesson_focus::stop();
     if let Some(relay) = RELAY.take() {
         BLACK.set(false);
         relay(Relay::End);
@@ -334,19 +336,25 @@ fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
             None => requests.push(ShellRequest::StepPage),
         },
         PresenterAction::Show(i) => {
-            let route = PRESENTING.with(|p| {
+            let step = PRESENTING.with(|p| {
                 p.borrow()
                     .as_ref()
-                    .and_then(|(l, _)| l.steps.get(i).map(|s| s.route.clone()))
+                    .and_then(|(l, _)| l.steps.get(i).cloned())
             });
-            if let (Some(route), Some(relay)) = (&route, relay) {
-                relay(Relay::Show(route));
-            } else if let Some(route) = route {
+            if let (Some(step), Some(relay)) = (&step, relay) {
+                relay(Relay::Show(&step.route, step.focus.as_deref()));
+            } else if let Some(LessonStep { route, focus, .. }) = step {
+                if let Some(bar) = dom::document()?.get_element_by_id(BAR_ID) {
+                    lesson_focus::show(&bar, crate::view::url::parse_hash(&route).page, focus);
+                }
                 let window = dom::window()?;
                 if window.location().hash()? == route {
                     // Same state: re-mount it from the start.
                     requests.push(ShellRequest::Remount);
                 } else {
+                    // The page shown writes no more of its state to the URL: on the same page
+                    // (a step to another state of it) that write would replace the step's.
+                    router::set_shown_page("");
                     window.location().set_hash(&route)?;
                 }
             }

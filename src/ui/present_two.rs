@@ -16,7 +16,7 @@ use web_sys::{BroadcastChannel, Element, Event, MessageEvent, Window};
 use crate::i18n::Lang;
 use crate::ui::lesson_bar::{self, Relay};
 use crate::ui::page::ShellRequest;
-use crate::ui::{ctx, dom, schedule};
+use crate::ui::{ctx, dom, lesson_focus, router, schedule};
 use crate::view::lesson::Lesson;
 
 /// The channel both windows of a presentation share.
@@ -173,9 +173,10 @@ fn open_presenter(lesson: Lesson, audience: Window, perform: Perform) -> Result<
 /// What the lesson walk asks of the presenter's window.
 fn presenter_relay(relay: Relay) {
     let sent = match relay {
-        Relay::Show(route) => post(&[
+        Relay::Show(route, focus) => post(&[
             ("kind", "show".into()),
             ("route", route.into()),
+            ("focus", focus.map_or(JsValue::NULL, JsValue::from_str)),
             ("lang", ctx::lang().code().into()),
         ]),
         Relay::StepPage => post(&[("kind", "step".into())]),
@@ -212,10 +213,10 @@ fn on_presenter_message(data: &JsValue) -> Result<(), JsValue> {
     match field(data, "kind").as_deref() {
         // The room's window (re)opened: what it should show.
         Some("hello") => {
-            let route = lesson_bar::current()
-                .and_then(|(lesson, p)| lesson.steps.get(p.index).map(|s| s.route.clone()));
-            if let Some(route) = route {
-                presenter_relay(Relay::Show(&route));
+            let step =
+                lesson_bar::current().and_then(|(lesson, p)| lesson.steps.get(p.index).cloned());
+            if let Some(step) = step {
+                presenter_relay(Relay::Show(&step.route, step.focus.as_deref()));
             }
             if lesson_bar::blacked_out()? {
                 post(&[("kind", "black".into()), ("on", true.into())])?;
@@ -615,8 +616,16 @@ fn on_audience_message(data: &JsValue) -> Result<(), JsValue> {
                     crate::ui::shell::switch_lang(lang)?;
                 }
             }
+            let document = dom::document()?;
+            if let Some(bar) = document.get_element_by_id("lesson-bar") {
+                // Its focus section in view, as in one window.
+                let page = crate::view::url::parse_hash(&route).page;
+                lesson_focus::show(&bar, page, field(data, "focus"));
+            }
             let location = dom::window()?.location();
             if !same_route(&location.hash()?, &route) {
+                // The page shown writes no more of its state to the URL (see lesson_bar).
+                router::set_shown_page("");
                 location.set_hash(&route)?;
             } else if !first {
                 // The same step again: its page state from the start.
@@ -633,7 +642,10 @@ fn on_audience_message(data: &JsValue) -> Result<(), JsValue> {
             crate::ui::share::open();
             Ok(())
         }
-        Some("end") => leave_audience(true),
+        Some("end") => {
+            lesson_focus::stop();
+            leave_audience(true)
+        }
         _ => Ok(()),
     }
 }

@@ -159,6 +159,11 @@ pub async fn next_task() {
     resolved_by(|resolve| timeout(resolve, 0)).await;
 }
 
+/// Resolves `ms` milliseconds later (a `setTimeout`).
+pub async fn sleep_ms(ms: i32) {
+    resolved_by(|resolve| timeout(resolve, ms)).await;
+}
+
 /// Resolves once the browser has painted what is on the page now ([`after_paint`]).
 pub async fn painted() {
     resolved_by(|resolve| {

@@ -2,11 +2,16 @@
 //! page keeps, `#/<page>?...`) with a title, a short note, and how many times the page's own
 //! stepper steps (PageDown) before the lesson moves on ("step the RRT 5 times").
 //!
+//! A step may name a section of its page as its focus ([`crate::view::sections`]): presenting
+//! the step brings that section into view (without one, the page's main view).
+//!
 //! A lesson travels three ways, all checked here: as the `#/lesson?...` URL (indexed keys:
-//! `title`, then `r1`, `t1`, `n1`, `k1` for step 1's route, title, note and page steps...), as a
-//! `.json` file (format `bsv-lesson` version 1, read and written by [`crate::view::lesson_file`]),
-//! and in the browser's storage (the same JSON). A bad file or URL gets a message naming what is
-//! wrong ([`LessonError`]); nothing half-read replaces the current lesson.
+//! `title`, then `r1`, `t1`, `n1`, `k1`, `f1` for step 1's route, title, note, page steps and
+//! focus...), as a `.json` file (format `bsv-lesson` version 2, version 1 read too; read and
+//! written by [`crate::view::lesson_file`]), and in the browser's storage (the same JSON). A bad
+//! file or URL gets a message naming what is wrong ([`LessonError`]); nothing half-read replaces
+//! the current lesson. A focus its page does not have is no error: [`Lesson::take_unknown_focuses`]
+//! removes it and names it for the page's notice.
 //!
 //! [`Presenter`] walks a lesson: `next` first steps the page as often as the step says, then
 //! goes to the next step; `back` goes to the previous step.
@@ -15,12 +20,15 @@ use serde::Serialize;
 
 use crate::error::RecipeError;
 use crate::pyfmt::{group_u64, size_text};
+use crate::view::sections;
 use crate::view::url::{self, IgnoredKey};
 
 /// The `format` field of a lesson file.
 pub const FORMAT: &str = "bsv-lesson";
-/// The lesson file version this build reads and writes.
-pub const VERSION: u32 = 1;
+/// The lesson file version this build writes (it reads this one and [`FIRST_VERSION`]).
+pub const VERSION: u32 = 2;
+/// The first lesson file version, without `focus`: read as before.
+pub const FIRST_VERSION: u32 = 1;
 /// A lesson file larger than this is refused unread (60 steps with notes of 1,000 Japanese
 /// characters are about 200 KiB).
 pub const MAX_FILE_BYTES: u64 = 512 * 1024;
@@ -46,6 +54,10 @@ pub struct LessonStep {
     /// How many times the page's stepper steps (PageDown) on this step before "next" moves to
     /// the following step.
     pub page_steps: u32,
+    /// The section of the page the step is about (`data-section` id); `None`: the page's main
+    /// view.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub focus: Option<String>,
 }
 
 /// A lesson: a title and its steps.
@@ -259,6 +271,7 @@ impl LessonStep {
             title: title.to_owned(),
             note: String::new(),
             page_steps: 0,
+            focus: None,
         }
     }
 
@@ -323,6 +336,9 @@ impl Lesson {
             if step.page_steps > 0 {
                 q.push((format!("k{n}"), step.page_steps.to_string()));
             }
+            if let Some(focus) = &step.focus {
+                q.push((format!("f{n}"), focus.clone()));
+            }
         }
         q
     }
@@ -363,6 +379,7 @@ impl Lesson {
                 title: get(&format!("t{n}")).unwrap_or("").to_owned(),
                 note: get(&format!("n{n}")).unwrap_or("").to_owned(),
                 page_steps,
+                focus: get(&format!("f{n}")).map(str::to_owned),
             });
         }
         lesson.validate(is_page)?;
@@ -370,13 +387,13 @@ impl Lesson {
     }
 
     /// The keys of a `#/lesson` query that hold no part of the lesson (not `title`, nor `r`,
-    /// `t`, `n` or `k` of a step whose route `r<n>` is there), for the page's notice.
+    /// `t`, `n`, `k` or `f` of a step whose route `r<n>` is there), for the page's notice.
     pub fn ignored_keys(query: &[(String, String)]) -> Vec<IgnoredKey> {
         let has_route = |n: &str| query.iter().any(|(k, _)| *k == format!("r{n}"));
         let mut ignored: Vec<IgnoredKey> = Vec::new();
         for (key, _) in query {
             let step_key = key
-                .strip_prefix(['r', 't', 'n', 'k'])
+                .strip_prefix(['r', 't', 'n', 'k', 'f'])
                 .filter(|n| n.parse::<usize>().is_ok_and(|n| n >= 1) && !n.starts_with('0'))
                 .is_some_and(has_route);
             if key != "title" && !step_key && !ignored.iter().any(|k| &k.key == key) {
@@ -386,6 +403,23 @@ impl Lesson {
         ignored
     }
 
+    /// Removes every focus that names no section of its step's page, and names them (for the
+    /// page's notice, as ignored keys of a link are).
+    pub fn take_unknown_focuses(&mut self) -> Vec<UnknownFocus> {
+        let mut unknown = Vec::new();
+        for (i, step) in self.steps.iter_mut().enumerate() {
+            let page = step.page();
+            if let Some(focus) = step.focus.take_if(|f| !sections::has(&page, f)) {
+                unknown.push(UnknownFocus {
+                    step: i + 1,
+                    page,
+                    focus: quoted(&focus),
+                });
+            }
+        }
+        unknown
+    }
+
     /// Moves step `from` to position `to` (both clamped).
     pub fn move_step(&mut self, from: usize, to: usize) {
         if from < self.steps.len() {
@@ -393,6 +427,29 @@ impl Lesson {
             let to = to.min(self.steps.len());
             self.steps.insert(to, step);
         }
+    }
+}
+
+/// A step's focus that its page does not have (removed from the lesson; see
+/// [`Lesson::take_unknown_focuses`]). `step` counts from 1; `focus` is quoted for a message.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UnknownFocus {
+    pub step: usize,
+    pub page: String,
+    pub focus: String,
+}
+
+impl UnknownFocus {
+    /// The Fluent id of the notice's line.
+    pub const MESSAGE_ID: &'static str = "lesson-focus-unknown";
+
+    /// The line's arguments (name, value).
+    pub fn args(&self) -> Vec<(&'static str, String)> {
+        vec![
+            ("step", self.step.to_string()),
+            ("page", self.page.clone()),
+            ("focus", self.focus.clone()),
+        ]
     }
 }
 
@@ -475,6 +532,7 @@ mod tests {
                     title: "Step the RRT".into(),
                     note: "Watch the goal bias: every tenth sample, say why.".into(),
                     page_steps: 5,
+                    focus: Some("world".into()),
                 },
                 LessonStep::of_route("#/pid-step?Kp=2&lang=ja", "PID, hotter gains"),
             ],
@@ -521,13 +579,16 @@ mod tests {
             ("t9", "x"),
             ("r01", "#/ik-2r"),
             ("zz", "2"),
+            ("f1", "arm"),
+            ("f2", "arm"),
         ]);
         assert_eq!(
             Lesson::ignored_keys(&query),
             vec![
                 IgnoredKey::unknown("zz"),
                 IgnoredKey::unknown("t9"),
-                IgnoredKey::unknown("r01")
+                IgnoredKey::unknown("r01"),
+                IgnoredKey::unknown("f2")
             ]
         );
         assert!(Lesson::ignored_keys(&sample().to_query()).is_empty());

@@ -1,5 +1,8 @@
-//! The lesson `.json` file (format `bsv-lesson`, version 1), written and read; what can be
-//! wrong with one is a [`LessonError`] naming the place (step n, field f).
+//! The lesson `.json` file (format `bsv-lesson`), written as version 2 and read as version 2 or
+//! 1 (version 2 adds a step's `focus`, the section of its page it brings into view; a version 1
+//! file reads as it always did, every step without a focus); what can be wrong with one is a
+//! [`LessonError`] naming the place (step n, field f). A focus its page does not have is no
+//! error: the page names it ([`Lesson::take_unknown_focuses`]).
 //!
 //! Reading checks, in order: the size ([`MAX_FILE_BYTES`]; the page refuses a bigger file
 //! from its size alone, before reading it), text at all, nesting (at most [`MAX_DEPTH`] levels,
@@ -15,13 +18,14 @@ use serde::Serialize;
 use serde_json::{Map, Value};
 
 use crate::view::lesson::{
-    without_lang, Expected, Lesson, LessonError, LessonStep, FORMAT, MAX_DEPTH, MAX_FILE_BYTES,
-    MAX_PAGE_STEPS, MAX_STEPS, VERSION,
+    without_lang, Expected, Lesson, LessonError, LessonStep, FIRST_VERSION, FORMAT, MAX_DEPTH,
+    MAX_FILE_BYTES, MAX_PAGE_STEPS, MAX_STEPS, VERSION,
 };
 
-/// The fields of the file, then of a step.
+/// The fields of the file, then of a step (version 1 has no `focus`).
 const FILE_FIELDS: [&str; 4] = ["format", "version", "title", "steps"];
-const STEP_FIELDS: [&str; 4] = ["route", "title", "note", "pageSteps"];
+const STEP_FIELDS: [&str; 5] = ["route", "title", "note", "pageSteps", "focus"];
+const STEP_FIELDS_V1: [&str; 4] = ["route", "title", "note", "pageSteps"];
 
 /// The file form: the lesson with its format and version (field order as written).
 #[derive(Serialize)]
@@ -85,15 +89,20 @@ fn read(
         Some(Value::String(f)) => return Err(LessonError::WrongFormat { found: f.clone() }),
         Some(_) => return Err(wrong_type(None, "format", Expected::Text)),
     }
-    match file.get("version") {
+    let version = match file.get("version") {
         None => return Err(missing(None, "version")),
         Some(Value::Number(n)) => match n.as_u64() {
-            Some(v) if v == u64::from(VERSION) => {}
+            Some(v) if v == u64::from(VERSION) || v == u64::from(FIRST_VERSION) => v,
             Some(v) => return Err(LessonError::WrongVersion { found: v }),
             None => return Err(wrong_type(None, "version", Expected::WholeNumber)),
         },
         Some(_) => return Err(wrong_type(None, "version", Expected::WholeNumber)),
-    }
+    };
+    let step_fields: &[&str] = if version == u64::from(FIRST_VERSION) {
+        &STEP_FIELDS_V1
+    } else {
+        &STEP_FIELDS
+    };
     known_fields(file, &FILE_FIELDS, None)?;
     let title = text_field(file, "title", None)?.ok_or(missing(None, "title"))?;
     let steps = match file.get("steps") {
@@ -110,23 +119,24 @@ fn read(
     let steps = steps
         .iter()
         .enumerate()
-        .map(|(i, step)| read_step(step, i + 1))
+        .map(|(i, step)| read_step(step, i + 1, step_fields))
         .collect::<Result<Vec<_>, _>>()?;
     let lesson = Lesson { title, steps };
     lesson.validate(is_page)?;
     Ok(lesson)
 }
 
-/// Step `n` of a file.
-fn read_step(value: &Value, n: usize) -> Result<LessonStep, LessonError> {
+/// Step `n` of a file whose steps may hold `fields`.
+fn read_step(value: &Value, n: usize, fields: &[&str]) -> Result<LessonStep, LessonError> {
     let Value::Object(step) = value else {
         return Err(LessonError::StepNotAnObject { step: n });
     };
     let at = Some(n);
-    known_fields(step, &STEP_FIELDS, at)?;
+    known_fields(step, fields, at)?;
     let route = text_field(step, "route", at)?.ok_or(missing(at, "route"))?;
     let title = text_field(step, "title", at)?.ok_or(missing(at, "title"))?;
     let note = text_field(step, "note", at)?.unwrap_or_default();
+    let focus = text_field(step, "focus", at)?;
     let page_steps = match step.get("pageSteps") {
         None => 0,
         Some(Value::Number(k)) => match k.as_u64() {
@@ -143,6 +153,7 @@ fn read_step(value: &Value, n: usize) -> Result<LessonStep, LessonError> {
         title,
         note,
         page_steps,
+        focus,
     })
 }
 
@@ -239,7 +250,7 @@ mod tests {
     use super::*;
     use crate::error::RecipeError;
     use crate::i18n::{I18n, Lang};
-    use crate::view::lesson::{MAX_NOTE_CHARS, MAX_QUOTED_CHARS};
+    use crate::view::lesson::{UnknownFocus, MAX_NOTE_CHARS, MAX_QUOTED_CHARS};
 
     fn is_page(p: &str) -> bool {
         matches!(p, "rrt-2d" | "ik-2r" | "pid-step" | "lesson")
@@ -249,9 +260,9 @@ mod tests {
         from_json(text, is_page)
     }
 
-    /// A lesson file with `steps` (JSON text of the array).
+    /// A lesson file of the current version with `steps` (JSON text of the array).
     fn with_steps(steps: &str) -> String {
-        format!(r#"{{"format":"bsv-lesson","version":1,"title":"T","steps":{steps}}}"#)
+        format!(r#"{{"format":"bsv-lesson","version":2,"title":"T","steps":{steps}}}"#)
     }
 
     #[test]
@@ -264,13 +275,78 @@ mod tests {
                     title: "Step the RRT".into(),
                     note: "Watch the goal bias.".into(),
                     page_steps: 5,
+                    focus: Some("world".into()),
                 },
                 LessonStep::of_route("#/pid-step?Kp=2&lang=ja", "PID, hotter gains"),
             ],
         };
         let text = to_json(&lesson);
         assert!(text.contains("\"format\": \"bsv-lesson\"") && text.contains("\"pageSteps\": 5"));
+        assert!(text.contains("\"version\": 2") && text.contains("\"focus\": \"world\""));
+        // A step without a focus writes none.
+        assert_eq!(text.matches("\"focus\"").count(), 1);
         assert_eq!(from_json(&text, is_page), Ok(lesson));
+    }
+
+    #[test]
+    fn a_version_1_file_reads_as_before() {
+        let v1 = r##"{"format":"bsv-lesson","version":1,"title":"T","steps":[{"route":"#/ik-2r?q2=0.05","title":"a","note":"n","pageSteps":2}]}"##;
+        let lesson = import(v1).unwrap_or_default();
+        assert_eq!(lesson.steps.len(), 1);
+        assert_eq!(lesson.steps[0].route, "#/ik-2r?q2=0.05");
+        assert_eq!(
+            (lesson.steps[0].page_steps, &lesson.steps[0].focus),
+            (2, &None)
+        );
+        // Version 1 has no focus: a step with one is a field it does not know.
+        let v1_focus = v1.replace("\"pageSteps\":2", "\"focus\":\"heatmap\"");
+        assert_eq!(
+            import(&v1_focus),
+            Err(LessonError::UnknownField {
+                step: Some(1),
+                field: "focus".into()
+            })
+        );
+        // Version 2 without focus reads too.
+        let v2 = v1.replace("\"version\":1", "\"version\":2");
+        assert_eq!(import(&v2), Ok(lesson));
+    }
+
+    #[test]
+    fn a_focus_the_page_does_not_have_is_named_and_dropped() {
+        let text = r##"{"format":"bsv-lesson","version":2,"title":"T","steps":[
+            {"route":"#/ik-2r","title":"a","focus":"heatmap"},
+            {"route":"#/rrt-2d","title":"b","focus":"heatmap"},
+            {"route":"#/pid-step","title":"c","focus":"<b>plot\u0000</b>"}]}"##;
+        let mut lesson = import(text).unwrap_or_default();
+        assert_eq!(lesson.steps.len(), 3);
+        let unknown = lesson.take_unknown_focuses();
+        assert_eq!(
+            unknown,
+            vec![
+                UnknownFocus {
+                    step: 2,
+                    page: "rrt-2d".into(),
+                    focus: "heatmap".into()
+                },
+                UnknownFocus {
+                    step: 3,
+                    page: "pid-step".into(),
+                    focus: "<b>plot\u{fffd}</b>".into()
+                },
+            ]
+        );
+        assert_eq!(lesson.steps[0].focus.as_deref(), Some("heatmap"));
+        assert!(lesson.steps[1].focus.is_none() && lesson.steps[2].focus.is_none());
+        assert!(lesson.take_unknown_focuses().is_empty());
+        assert_eq!(unknown[0].args()[2], ("focus", "heatmap".to_owned()));
+        // A focus that is not text is a wrong type.
+        assert_eq!(
+            import(&with_steps(
+                r##"[{"route":"#/ik-2r","title":"a","focus":3}]"##
+            )),
+            Err(wrong_type(Some(1), "focus", Expected::Text))
+        );
     }
 
     #[test]
@@ -349,8 +425,8 @@ mod tests {
             })
         );
         assert_eq!(
-            import(r#"{"format":"bsv-lesson","version":2,"title":"","steps":[]}"#),
-            Err(LessonError::WrongVersion { found: 2 })
+            import(r#"{"format":"bsv-lesson","version":3,"title":"","steps":[]}"#),
+            Err(LessonError::WrongVersion { found: 3 })
         );
         assert_eq!(
             import(r#"{"format":"bsv-lesson","version":"1"}"#),
@@ -550,6 +626,7 @@ mod tests {
         for e in &errors {
             for lang in Lang::ALL {
                 assert!(i18n.has_message(lang, e.message_id()), "{lang:?} {e:?}");
+                assert!(i18n.has_message(lang, UnknownFocus::MESSAGE_ID));
             }
             assert!(e.message_id().starts_with("lesson-error-"));
         }

@@ -34,6 +34,7 @@ pub mod replay;
 pub mod rrt;
 pub mod scene3d;
 pub mod se3_relative;
+pub mod sections;
 pub mod signal;
 pub mod so101;
 pub mod stepper;

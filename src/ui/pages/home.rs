@@ -42,6 +42,7 @@ impl Page for HomePage {
 
 fn build(root: &Element, shell: ShellLink) -> Result<Rc<HomeArm>, JsValue> {
     let hero = el_class("section", "hero")?;
+    crate::ui::dom::mark_section(&hero, "arm")?;
     let text = el_class("div", "hero-text")?;
     let headline = el_i18n("h1", "headline", "home-headline")?;
     headline.set_attribute("data-testid", "home-headline")?;

@@ -25,6 +25,7 @@ pub fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
     let tiles = el_class("ul", "tile-grid")?;
     tiles.set_attribute("data-testid", "home-tiles")?;
     crate::ui::dom::set_i18n_attrs(&tiles, &[("aria-label", "home-tiles-label")])?;
+    crate::ui::dom::mark_section(&tiles, "drills")?;
     for def in shell.pages.iter().filter(|d| d.id != HOME_ID) {
         let item = el("li")?;
         append(&item, &featured_card(def)?)?;
@@ -34,6 +35,7 @@ pub fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
 
     let recipes = el_class("section", "recipes")?;
     recipes.set_attribute("aria-labelledby", "recipes-heading")?;
+    crate::ui::dom::mark_section(&recipes, "recipes")?;
     let heading = el_i18n("h2", "", "home-recipes-heading")?;
     heading.set_id("recipes-heading");
     append(&recipes, &heading)?;
@@ -69,6 +71,7 @@ fn tools_section() -> Result<Element, JsValue> {
     let section = el_class("section", "tools")?;
     section.set_attribute("aria-labelledby", "tools-heading")?;
     section.set_attribute("data-testid", "tools")?;
+    crate::ui::dom::mark_section(&section, "tools")?;
     let heading = el_i18n("h2", "", "home-tools-title")?;
     heading.set_id("tools-heading");
     append(&section, &heading)?;

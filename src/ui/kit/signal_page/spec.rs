@@ -165,15 +165,15 @@ pub fn markup<P, R>(spec: &SignalSpec<P, R>, cursor: [&str; 4]) -> String {
         "<div class=\"sig\"><header class=\"sig-head\"><h1 data-i18n=\"{p}-title\"></h1>\
          <p class=\"sig-lede\" data-i18n=\"recipe-{id}-blurb\"></p>{notice}</header>\
          <div class=\"sig-top\"><section class=\"sig-card sig-plot-card\"><h2 data-i18n=\"{p}-plots-title\"></h2>\
-         <div class=\"sig-stage\" data-{p}=\"stage\">{under}<canvas class=\"sig-layer\" \
+         <div class=\"sig-stage\" data-{p}=\"stage\" data-section=\"plot\">{under}<canvas class=\"sig-layer\" \
          data-testid=\"{id}-canvas\" role=\"img\" tabindex=\"0\" data-i18n-attr=\"aria-label={p}-canvas-label\" \
          aria-describedby=\"{p}-readouts\"></canvas></div>\
          <p class=\"sig-computing\" data-{p}=\"computing\" data-testid=\"{id}-computing\" hidden></p>\
          {overlays}{under_plot}</section>\
-         <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}{under_readouts}</section></div></div>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-exports-title\"></h2>{exports}</section>\
-         <section class=\"sig-card sig-explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
+         <div class=\"sig-side\"><section class=\"sig-card\" data-section=\"form\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section>\
+         <section class=\"sig-card\" data-section=\"readouts\"><h2 data-i18n=\"signals-readouts-title\"></h2>{ro}{live}{under_readouts}</section></div></div>\
+         <section class=\"sig-card\" data-section=\"exports\"><h2 data-i18n=\"signals-exports-title\"></h2>{exports}</section>\
+         <section class=\"sig-card sig-explain\" data-section=\"explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
          <h3 data-i18n=\"signals-quirks-title\"></h3><p data-i18n=\"{quirks}\"></p></section></div>",
         under_plot = spec.under_plot,
         ro = readouts::markup(p, &ro),

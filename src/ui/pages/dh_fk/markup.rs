@@ -130,7 +130,7 @@ pub fn page() -> String {
          <p class=\"dh-lede\" data-i18n=\"recipe-dh-fk-blurb\"></p>{notice}</header>\
          <div class=\"dh-top\">\
          <section class=\"dh-card\"><h2 data-i18n=\"dh-view-title\"></h2>\
-         <div data-dh=\"view\"></div>\
+         <div data-dh=\"view\" data-section=\"arm\"></div>\
          <div class=\"dh-legend\" data-dh=\"legend\" data-palette=\"classic\">\
          <span class=\"dh-key\"><span class=\"dh-swatch dh-swatch-x\"></span><span data-i18n=\"dh-legend-x\"></span></span>\
          <span class=\"dh-key\"><span class=\"dh-swatch dh-swatch-y\"></span><span data-i18n=\"dh-legend-y\"></span></span>\
@@ -139,18 +139,18 @@ pub fn page() -> String {
          <label class=\"dh-check\"><input type=\"checkbox\" data-option=\"cb-axes\">\
          <span data-i18n=\"dh-cb-axes\"></span></label></div></section>\
          <div class=\"dh-side\">\
-         <section class=\"dh-card\"><h2 data-i18n=\"dh-readouts-title\"></h2>{ro}{live}</section>\
-         <section class=\"dh-card\"><h2 data-i18n=\"dh-joints-title\"></h2>{joints}{form}</section>\
+         <section class=\"dh-card\" data-section=\"readouts\"><h2 data-i18n=\"dh-readouts-title\"></h2>{ro}{live}</section>\
+         <section class=\"dh-card\" data-section=\"joints\"><h2 data-i18n=\"dh-joints-title\"></h2>{joints}{form}</section>\
          </div></div>\
          <div class=\"dh-mid\">\
-         <section class=\"dh-card\"><h2 data-i18n=\"dh-table-title\"></h2>{dh}\
+         <section class=\"dh-card\" data-section=\"table\"><h2 data-i18n=\"dh-table-title\"></h2>{dh}\
          <p class=\"dh-note\" data-i18n=\"dh-table-note\"></p></section>\
-         <section class=\"dh-card\"><h2 data-i18n=\"dh-walk-title\"></h2>{walk}</section>\
+         <section class=\"dh-card\" data-section=\"row\"><h2 data-i18n=\"dh-walk-title\"></h2>{walk}</section>\
          </div>\
-         <section class=\"dh-card\"><h2 data-i18n=\"dh-pose-title\"></h2>{pose}\
+         <section class=\"dh-card\" data-section=\"poses\"><h2 data-i18n=\"dh-pose-title\"></h2>{pose}\
          <p class=\"dh-note\" data-i18n=\"dh-pose-note\"></p></section>\
-         <section class=\"dh-card\"><h2 data-i18n=\"dh-exports-title\"></h2>{exports}</section>\
-         <section class=\"dh-card dh-explain\"><h2 data-i18n=\"dh-explain-title\"></h2>\
+         <section class=\"dh-card\" data-section=\"exports\"><h2 data-i18n=\"dh-exports-title\"></h2>{exports}</section>\
+         <section class=\"dh-card dh-explain\" data-section=\"explain\"><h2 data-i18n=\"dh-explain-title\"></h2>\
          <h3 data-i18n=\"dh-convention-title\"></h3><p data-i18n=\"dh-convention\"></p>\
          <p data-i18n=\"dh-convention-standard\"></p>{explain}\
          <h3 data-i18n=\"dh-quirks-title\"></h3><p data-i18n=\"recipe-dh-fk-quirks\"></p></section>\

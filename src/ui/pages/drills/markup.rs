@@ -30,7 +30,7 @@ pub fn page() -> String {
 <p class=\"drills-lede\" data-i18n=\"drills-lede\"></p>\
 <p class=\"drills-notice\" data-drills=\"url-notice\" data-testid=\"drills-url-notice\" role=\"status\" hidden></p></header>\
 <div class=\"drills-layout\">\
-<section class=\"drills-card drills-setup\" aria-labelledby=\"drills-recipe-title\">\
+<section class=\"drills-card drills-setup\" data-section=\"form\" aria-labelledby=\"drills-recipe-title\">\
 <div class=\"drills-picker\"><label for=\"drills-recipe\" data-i18n=\"drills-picker-label\"></label>\
 <select id=\"drills-recipe\" data-drills=\"recipe\" data-testid=\"drills-recipe\">{options}</select></div>\
 <h2 id=\"drills-recipe-title\" data-drills=\"recipe-title\"></h2>\
@@ -42,7 +42,7 @@ pub fn page() -> String {
 <p class=\"drills-status\" data-drills=\"status\" data-testid=\"drills-status\" role=\"status\" aria-live=\"polite\"></p>\
 <p class=\"drills-error drills-general-error\" data-drills=\"error\" data-testid=\"drills-error\" role=\"alert\" hidden></p>\
 </section>\
-<section class=\"drills-card drills-output\" data-drills=\"output\" data-testid=\"drills-output\" data-run=\"0\" \
+<section class=\"drills-card drills-output\" data-section=\"result\" data-drills=\"output\" data-testid=\"drills-output\" data-run=\"0\" \
 aria-labelledby=\"drills-output-title\">\
 <h2 id=\"drills-output-title\" data-i18n=\"drills-output-title\"></h2>\
 <p class=\"drills-stale\" data-drills=\"stale\" data-testid=\"drills-stale\" role=\"status\" data-i18n=\"drills-stale\" hidden></p>\
@@ -56,7 +56,7 @@ aria-labelledby=\"drills-output-title\">\
 <p class=\"drills-hint\" data-drills=\"rounded-note\" data-i18n=\"drills-table-rounded\"></p></div>\
 <div class=\"drills-files\" data-drills=\"files\"></div>\
 {exports}</div></section>\
-<section class=\"drills-card drills-about\" data-testid=\"drills-about\" aria-labelledby=\"drills-about-title\">\
+<section class=\"drills-card drills-about\" data-section=\"explain\" data-testid=\"drills-about\" aria-labelledby=\"drills-about-title\">\
 <h2 id=\"drills-about-title\" data-i18n=\"drills-about-title\"></h2>\
 <p data-drills=\"about\"></p>\
 <div class=\"drills-quirks\"><h3 data-i18n=\"drills-quirks-title\"></h3>\

@@ -21,7 +21,7 @@ const RECIPES: [(&str, usize); 3] = [("ik", 3), ("jac", 3), ("manip", 3)];
 /// The panel's markup.
 pub fn markup() -> String {
     let mut html = String::from(
-        "<section class=\"ik2r-explain\" data-testid=\"ik-2r-explain\">\
+        "<section class=\"ik2r-explain\" data-testid=\"ik-2r-explain\" data-section=\"explain\">\
          <h2 data-i18n=\"ik2r-explain-title\"></h2><div class=\"ik2r-concepts\">",
     );
     for (title, paragraphs) in CONCEPTS {

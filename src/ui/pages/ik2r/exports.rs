@@ -29,7 +29,7 @@ pub fn markup() -> String {
         })
         .collect();
     format!(
-        "<section class=\"ik2r-card ik2r-downloads ik2r-later\" hidden><h2 data-i18n=\"ik2r-downloads-title\"></h2>\
+        "<section class=\"ik2r-card ik2r-downloads ik2r-later\" data-section=\"exports\" hidden><h2 data-i18n=\"ik2r-downloads-title\"></h2>\
          <p class=\"ik2r-hint\" data-i18n=\"ik2r-downloads-hint\"></p><div class=\"ik2r-dl-grid\">{runs}\
          <div class=\"kit-run ik2r-run\"><button type=\"button\" class=\"button kit-download ik2r-download\" \
          data-download=\"{ARM_PNG}\" data-i18n=\"ik2r-dl-png\"></button>\

@@ -44,7 +44,7 @@ pub fn page(readouts: &str, strip: &str) -> String {
 <option value=\"err\" data-i18n=\"ik2r-ws-color-err\"></option></select></label>\
 <button type=\"button\" class=\"ik2r-btn\" data-ik2r=\"reset\" data-i18n=\"ik2r-reset\"></button>\
 </div>\
-{strip}<div class=\"ik2r-stage ik2r-stage-arm\" data-ik2r=\"arm-stage\">\
+{strip}<div class=\"ik2r-stage ik2r-stage-arm\" data-ik2r=\"arm-stage\" data-section=\"arm\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"arm-bg\" aria-hidden=\"true\"></canvas>\
 <canvas class=\"ik2r-layer ik2r-interactive\" data-ik2r=\"arm-fg\" data-testid=\"ik-2r-canvas\" role=\"img\" tabindex=\"0\" \
 data-i18n-attr=\"aria-label=ik2r-canvas-label\" aria-describedby=\"ik2r-readouts-list\"></canvas>\
@@ -57,7 +57,7 @@ data-i18n-attr=\"aria-label=ik2r-canvas-label\" aria-describedby=\"ik2r-readouts
 </section>\
 <div class=\"ik2r-side\">{readouts}\
 <section class=\"ik2r-card ik2r-heat ik2r-later\" hidden><h2 data-i18n=\"ik2r-heatmap-title\"></h2>\
-<div class=\"ik2r-stage ik2r-stage-heat\" data-ik2r=\"heat-stage\">\
+<div class=\"ik2r-stage ik2r-stage-heat\" data-ik2r=\"heat-stage\" data-section=\"heatmap\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"heat-bg\" aria-hidden=\"true\"></canvas>\
 <canvas class=\"ik2r-layer ik2r-interactive\" data-ik2r=\"heat-fg\" data-testid=\"ik-2r-heatmap\" role=\"img\" tabindex=\"0\" \
 data-i18n-attr=\"aria-label=ik2r-heatmap-label\" aria-describedby=\"ik2r-heat-hint ik2r-readouts-list\"></canvas></div>\
@@ -68,12 +68,12 @@ data-i18n-attr=\"aria-label=ik2r-heatmap-label\" aria-describedby=\"ik2r-heat-hi
 <div class=\"ik2r-mid ik2r-later\" hidden>\
 <section class=\"ik2r-card ik2r-plots\"><h2 data-i18n=\"ik2r-plot-title\"></h2>\
 <p class=\"ik2r-hint\" id=\"ik2r-plot-hint\" data-i18n=\"ik2r-plot-hint\"></p>\
-<div class=\"ik2r-stage ik2r-stage-plot\" data-ik2r=\"plot-stage\">\
+<div class=\"ik2r-stage ik2r-stage-plot\" data-ik2r=\"plot-stage\" data-section=\"sweep\">\
 <canvas class=\"ik2r-layer\" data-ik2r=\"plot-bg\" aria-hidden=\"true\"></canvas>\
 <canvas class=\"ik2r-layer\" data-ik2r=\"plot-fg\" data-testid=\"ik-2r-plot\" role=\"img\" \
 data-i18n-attr=\"aria-label=ik2r-plot-label\" aria-describedby=\"ik2r-plot-hint ik2r-readouts-list\"></canvas>\
 <canvas class=\"ik2r-layer\" data-ik2r=\"plot-cursor\" aria-hidden=\"true\"></canvas></div></section>\
-<section class=\"ik2r-card ik2r-params\"><h2 data-i18n=\"ik2r-params-title\"></h2>\
+<section class=\"ik2r-card ik2r-params\" data-section=\"form\"><h2 data-i18n=\"ik2r-params-title\"></h2>\
 <p class=\"ik2r-hint\" data-i18n=\"ik2r-params-hint\"></p>\
 <form class=\"ik2r-form\" data-ik2r=\"form\" novalidate></form></section>\
 </div>\

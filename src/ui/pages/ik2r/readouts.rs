@@ -61,7 +61,7 @@ const ROWS: [ReadoutRow<'static>; 6] = [
 /// The readouts panel's markup.
 pub fn markup() -> String {
     format!(
-        "<section class=\"ik2r-card ik2r-readouts\" aria-live=\"off\">\
+        "<section class=\"ik2r-card ik2r-readouts\" data-section=\"readouts\" aria-live=\"off\">\
          <h2 data-i18n=\"ik2r-readouts-title\"></h2>{rows}\
          <div class=\"ik2r-jac\"><span class=\"ik2r-jac-label\" id=\"ik2r-jac-label\" data-i18n=\"ik2r-ro-jac\"></span>\
          <div class=\"ik2r-matrix\" role=\"table\" aria-labelledby=\"ik2r-jac-label\">\

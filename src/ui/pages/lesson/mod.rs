@@ -1,6 +1,6 @@
 //! The lesson page (`#/lesson`): the lesson being built (steps added from any page with the
 //! header's "Add this view"), edited here (title, each step's title, note and page steps,
-//! reorder, delete), presented, exported and imported as `.json`, and shared as a link (the
+//! focus, reorder, delete), presented, exported and imported as `.json`, and shared as a link (the
 //! page's own URL is the lesson). The three built-in lessons load from here; while the user
 //! has no lesson of their own, the first one is shown ready to present (not stored until edited).
 //!
@@ -8,7 +8,10 @@
 //! by [`crate::view::lesson_file`]; a refusal names what and where, and the current lesson is
 //! kept. The lines under the intro say what the browser's storage did: the lesson is not saved
 //! (storage full: it stays in memory), or the stored text could not be read and is kept aside
-//! (download, discard); a notice names the keys of the link that hold no part of the lesson.
+//! (download, discard); a notice names the keys of the link that hold no part of the lesson,
+//! and another each step's focus that its page does not have (dropped: the step shows the
+//! page's main view). A step's focus is chosen among its page's sections
+//! ([`crate::view::sections`]), known without the page being open.
 //!
 //! Components: `builtin` (the built-in lessons); this file holds the page, its markup and the
 //! editor's actions. The lesson model is [`crate::view::lesson`]; storage and presenting are the
@@ -21,7 +24,7 @@ use std::rc::Rc;
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
-use web_sys::{Element, Event, HtmlInputElement, HtmlTextAreaElement};
+use web_sys::{Element, Event, HtmlInputElement, HtmlSelectElement, HtmlTextAreaElement};
 
 use crate::ui::dom::{self, Listener};
 use crate::ui::kit::input_file;
@@ -31,8 +34,9 @@ use crate::ui::lesson_bar::{self, LESSON_STORAGE_KEY};
 use crate::ui::page::{MountCtx, Page, ShellLink};
 use crate::ui::page_frame;
 use crate::ui::{ctx, download, router};
-use crate::view::lesson::{Lesson, LessonError, MAX_FILE_BYTES, MAX_PAGE_STEPS};
+use crate::view::lesson::{Lesson, LessonError, UnknownFocus, MAX_FILE_BYTES, MAX_PAGE_STEPS};
 use crate::view::lesson_file;
+use crate::view::sections;
 
 /// The download of the stored text that could not be read.
 const UNREADABLE_FILE: &str = "lesson-unreadable.json";
@@ -52,6 +56,8 @@ struct Editor {
     url_notice: UrlNotice,
     /// The problem of the last file or link refused (said again on a language switch).
     error: RefCell<Option<LessonError>>,
+    /// The focuses of the last lesson read that its steps' pages do not have.
+    unknown_focuses: RefCell<Vec<UnknownFocus>>,
     listeners: RefCell<Vec<Listener>>,
     steps_listeners: RefCell<Vec<Listener>>,
 }
@@ -67,6 +73,7 @@ impl Page for LessonPage {
         }
         let _ = self.0.render_steps();
         let _ = self.0.render_store_notes();
+        let _ = self.0.render_focus_notice();
         self.0.url_notice.relocalize();
         let error = self.0.error.borrow().clone();
         if let Some(error) = error {
@@ -91,6 +98,7 @@ fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
         lesson: RefCell::new(lesson_bar::stored(is_page)),
         builtin_shown: Cell::new(false),
         error: RefCell::new(None),
+        unknown_focuses: RefCell::new(Vec::new()),
         listeners: RefCell::new(Vec::new()),
         steps_listeners: RefCell::new(Vec::new()),
     });
@@ -104,32 +112,40 @@ fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
         Ok(None) => {}
         Err(error) => page.show_error(&error)?,
     }
+    let unknown = page.lesson.borrow_mut().take_unknown_focuses();
+    if !unknown.is_empty() {
+        // Stored without them (refused by the browser: said by the store notes).
+        let _ = lesson_bar::store(&page.lesson.borrow());
+    }
+    *page.unknown_focuses.borrow_mut() = unknown;
     if page.lesson.borrow().steps.is_empty() {
         page.show_first_builtin()?;
     }
     page.wire()?;
     page.render_steps()?;
     page.render_store_notes()?;
+    page.render_focus_notice()?;
     Ok(page)
 }
 
 const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>\
 <p class=\"lesson-intro\" data-i18n=\"lesson-intro\"></p>\
 <p class=\"lesson-store-note lesson-url-notice\" data-testid=\"lesson-url-notice\" hidden></p>\
+<ul class=\"lesson-store-note\" role=\"status\" data-testid=\"lesson-focus-notice\" hidden></ul>\
 <p class=\"lesson-store-note\" role=\"status\" data-testid=\"lesson-unsaved\" data-i18n=\"lesson-unsaved\" hidden></p>\
 <div class=\"lesson-store-note\" role=\"status\" data-testid=\"lesson-unreadable\" hidden>\
 <p data-testid=\"lesson-unreadable-text\"></p>\
 <button type=\"button\" class=\"tool-button\" data-download=\"lesson-unreadable.json\" data-i18n=\"lesson-unreadable-download\"></button>\
 <button type=\"button\" class=\"tool-button\" data-action=\"lesson-forget-unreadable\" data-i18n=\"lesson-unreadable-forget\"></button>\
 </div>\
-<section class=\"lesson-card\" aria-labelledby=\"lesson-builtin-heading\">\
+<section class=\"lesson-card\" data-section=\"lessons\" aria-labelledby=\"lesson-builtin-heading\">\
 <h2 id=\"lesson-builtin-heading\" data-i18n=\"lesson-builtin-heading\"></h2>\
 <div class=\"lesson-builtins\">\
 <button type=\"button\" class=\"tool-button\" data-builtin=\"ik\" data-i18n=\"lesson-builtin-ik-title\"></button>\
 <button type=\"button\" class=\"tool-button\" data-builtin=\"energy\" data-i18n=\"lesson-builtin-energy-title\"></button>\
 <button type=\"button\" class=\"tool-button\" data-builtin=\"planning\" data-i18n=\"lesson-builtin-planning-title\"></button>\
 </div></section>\
-<section class=\"lesson-card\" aria-labelledby=\"lesson-edit-heading\">\
+<section class=\"lesson-card\" data-section=\"steps\" aria-labelledby=\"lesson-edit-heading\">\
 <h2 id=\"lesson-edit-heading\" data-i18n=\"lesson-edit-heading\"></h2>\
 <label class=\"lesson-field\"><span data-i18n=\"lesson-name-label\"></span>\
 <input type=\"text\" data-field=\"lesson-title\" maxlength=\"120\"></label>\
@@ -303,9 +319,12 @@ impl Editor {
         Ok(())
     }
 
-    /// A whole new lesson (imported or built in): its title in the field, no error shown.
-    fn replace(self: &Rc<Self>, lesson: Lesson) -> Result<(), JsValue> {
+    /// A whole new lesson (imported or built in): its title in the field, no error shown, the
+    /// focuses its pages do not have named.
+    fn replace(self: &Rc<Self>, mut lesson: Lesson) -> Result<(), JsValue> {
         self.clear_error()?;
+        *self.unknown_focuses.borrow_mut() = lesson.take_unknown_focuses();
+        self.render_focus_notice()?;
         *self.lesson.borrow_mut() = lesson;
         let title: HtmlInputElement = self.find("[data-field=\"lesson-title\"]")?;
         title.set_value(&self.lesson.borrow().title);
@@ -412,6 +431,19 @@ impl Editor {
         Ok(())
     }
 
+    /// The notice naming each step's focus that its page does not have.
+    fn render_focus_notice(&self) -> Result<(), JsValue> {
+        let notice: Element = self.find("[data-testid=\"lesson-focus-notice\"]")?;
+        dom::clear(&notice);
+        let unknown = self.unknown_focuses.borrow();
+        for focus in unknown.iter() {
+            let line = ctx::t_strings(UnknownFocus::MESSAGE_ID, &focus.args());
+            dom::append(&notice, &dom::el_text("li", "", &line)?)?;
+        }
+        dom::show(&notice, !unknown.is_empty());
+        Ok(())
+    }
+
     /// The list of steps, each with its fields and buttons.
     fn render_steps(self: &Rc<Self>) -> Result<(), JsValue> {
         let list: Element = self.find("[data-testid=\"lesson-steps\"]")?;
@@ -475,6 +507,7 @@ impl Editor {
             let steps: HtmlInputElement = steps.dyn_into()?;
             steps.set_attribute("inputmode", "numeric")?;
             steps.set_value(&step.page_steps.to_string());
+            let focus = focus_field(&item, &step.page(), step.focus.as_deref())?;
             let error = dom::el_class("p", "lesson-step-error")?;
             error.set_attribute("data-field-error", &format!("step-page-steps-{}", i + 1))?;
             dom::show(&error, false);
@@ -496,6 +529,17 @@ impl Editor {
                 if let Some(page) = weak.upgrade() {
                     if let Some(s) = page.lesson.borrow_mut().steps.get_mut(i) {
                         s.note = input.value();
+                    }
+                    let _ = page.changed(false);
+                }
+            })?);
+            let weak = Rc::downgrade(self);
+            let select = focus.clone();
+            listeners.push(Listener::new(&focus, "change", move |_| {
+                if let Some(page) = weak.upgrade() {
+                    if let Some(s) = page.lesson.borrow_mut().steps.get_mut(i) {
+                        let value = select.value();
+                        s.focus = (!value.is_empty()).then_some(value);
                     }
                     let _ = page.changed(false);
                 }
@@ -526,6 +570,34 @@ impl Editor {
         drop(listeners);
         self.write_link()
     }
+}
+
+/// The step's focus (`data-field="focus"`): the main view, or one of the sections of `page`,
+/// each by its name; appended to `item`.
+fn focus_field(
+    item: &Element,
+    page: &str,
+    focus: Option<&str>,
+) -> Result<HtmlSelectElement, JsValue> {
+    let label = dom::el_class("label", "lesson-field")?;
+    dom::append(
+        &label,
+        &dom::el_i18n("span", "", "lesson-step-focus-label")?,
+    )?;
+    let select: HtmlSelectElement = dom::el("select")?.dyn_into()?;
+    select.set_attribute("data-field", "focus")?;
+    let main = dom::el_i18n("option", "", "lesson-step-focus-main")?;
+    main.set_attribute("value", "")?;
+    dom::append(&select, &main)?;
+    for section in sections::of(page) {
+        let option = dom::el_i18n("option", "", &sections::name_id(section))?;
+        option.set_attribute("value", section)?;
+        dom::append(&select, &option)?;
+    }
+    select.set_value(focus.unwrap_or(""));
+    dom::append(&label, &select)?;
+    dom::append(item, &label)?;
+    Ok(select)
 }
 
 /// A labelled field `name`-`n` of step `n` (`tag`: input or textarea), appended to `item`.

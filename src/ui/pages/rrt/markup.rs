@@ -39,9 +39,9 @@ pub fn page() -> String {
          <p class=\"rrt-notice\" data-rrt=\"url-notice\" hidden></p></header>\
          <div class=\"rrt-top\">\
          <section class=\"rrt-card rrt-world\"><h2 data-i18n=\"rrt-world-title\"></h2>\
-         <div data-rrt=\"stepper\"></div>\
+         <div data-rrt=\"stepper\" data-section=\"stepper\"></div>\
          <p class=\"rrt-note rrt-finishing\" data-rrt=\"finishing\" data-testid=\"rrt-2d-finishing\" role=\"status\" hidden></p>\
-         <div class=\"rrt-stage\" data-rrt=\"stage\">\
+         <div class=\"rrt-stage\" data-rrt=\"stage\" data-section=\"world\">\
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"rrt-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"rrt-layer\" data-testid=\"rrt-2d-canvas\" tabindex=\"0\" role=\"img\" \
@@ -56,17 +56,17 @@ pub fn page() -> String {
          <p class=\"rrt-note\" data-rrt=\"key-target\" data-testid=\"rrt-2d-key-target\" role=\"status\" hidden></p>\
          <p class=\"rrt-note\" data-i18n=\"rrt-world-note\"></p></section>\
          <div class=\"rrt-side\">\
-         <section class=\"rrt-card\"><h2 data-i18n=\"rrt-sub-title\"></h2>\
+         <section class=\"rrt-card\" data-section=\"substeps\"><h2 data-i18n=\"rrt-sub-title\"></h2>\
          <ol class=\"rrt-subs\" data-rrt=\"subs\" data-testid=\"rrt-2d-substeps\"></ol>\
          <p class=\"rrt-note\" data-rrt=\"sub-none\" data-i18n=\"rrt-sub-none\"></p>\
          <p class=\"rrt-note\" data-testid=\"rrt-2d-sub-help\" data-i18n=\"rrt-sub-help\"></p>\
          <h3 data-i18n=\"rrt-code-title\"></h3>{code}</section>\
-         <section class=\"rrt-card\"><h2 data-i18n=\"rrt-counters-title\"></h2>{readouts}{live}</section>\
+         <section class=\"rrt-card\" data-section=\"readouts\"><h2 data-i18n=\"rrt-counters-title\"></h2>{readouts}{live}</section>\
          </div></div>\
          <div class=\"rrt-mid\">\
-         <section class=\"rrt-card\"><h2 data-i18n=\"rrt-params-title\"></h2>\
+         <section class=\"rrt-card\" data-section=\"form\"><h2 data-i18n=\"rrt-params-title\"></h2>\
          <form data-rrt=\"form\" novalidate></form></section>\
-         <section class=\"rrt-card\"><h2 data-i18n=\"rrt-exports-title\"></h2>\
+         <section class=\"rrt-card\" data-section=\"exports\"><h2 data-i18n=\"rrt-exports-title\"></h2>\
          <p class=\"rrt-note\" data-i18n=\"rrt-exports-note\"></p>\
          <div class=\"rrt-buttons\">\
          <button type=\"button\" class=\"button primary\" data-download=\"rrt_nodes.csv\" data-i18n=\"rrt-download-nodes\"></button>\
@@ -76,7 +76,7 @@ pub fn page() -> String {
          {commands}\
          <p class=\"rrt-note\" data-rrt=\"python-none\" data-i18n=\"rrt-python-none\" hidden></p>\
          </section></div>\
-         <section class=\"rrt-card rrt-explain\"><h2 data-i18n=\"rrt-explain-title\"></h2>\
+         <section class=\"rrt-card rrt-explain\" data-section=\"explain\"><h2 data-i18n=\"rrt-explain-title\"></h2>\
          <h3 data-i18n=\"rrt-explain-what-title\"></h3><p data-i18n=\"rrt-explain-what\"></p>\
          <h3 data-i18n=\"rrt-explain-bias-title\"></h3><p data-i18n=\"rrt-explain-bias\"></p>\
          <h3 data-i18n=\"rrt-explain-corner-title\"></h3><p data-i18n=\"rrt-explain-corner\"></p>\

@@ -62,13 +62,13 @@ pub fn page() -> String {
          <p class=\"se3-notice\" data-{P}=\"url-notice\" hidden></p></header>\
          <div class=\"se3-top\">\
          <section class=\"se3-card\"><h2 data-i18n=\"se3-view-title\"></h2>\
-         <div class=\"se3-view\" data-{P}=\"view\"></div>\
+         <div class=\"se3-view\" data-{P}=\"view\" data-section=\"frames\"></div>\
          <p class=\"se3-note\" data-i18n=\"se3-view-note\"></p></section>\
          <div class=\"se3-side\">\
-         <section class=\"se3-card\"><h2 data-i18n=\"se3-result-title\"></h2>{readouts}{live}\
+         <section class=\"se3-card\" data-section=\"readouts\"><h2 data-i18n=\"se3-result-title\"></h2>{readouts}{live}\
          <p class=\"se3-check\"><span data-i18n=\"se3-check-label\"></span> \
          <strong data-readout=\"check-error\"></strong></p></section>\
-         <section class=\"se3-card\"><h2 data-i18n=\"se3-poses-title\"></h2>\
+         <section class=\"se3-card\" data-section=\"poses\"><h2 data-i18n=\"se3-poses-title\"></h2>\
          <fieldset class=\"se3-unit\" data-{P}=\"unit\"><legend data-i18n=\"se3-unit-legend\"></legend>\
          <label class=\"se3-radio\"><input type=\"radio\" name=\"se3-unit\" value=\"rad\" data-angle-unit=\"rad\">\
          <span data-i18n=\"se3-unit-rad\"></span></label>\
@@ -77,12 +77,12 @@ pub fn page() -> String {
          <p class=\"se3-note\" data-i18n=\"se3-unit-note\"></p></fieldset>\
          <form class=\"se3-form\" data-{P}=\"form\" novalidate></form></section>\
          </div></div>\
-         <section class=\"se3-card\"><h2 data-i18n=\"se3-matrices-title\"></h2>\
+         <section class=\"se3-card\" data-section=\"matrices\"><h2 data-i18n=\"se3-matrices-title\"></h2>\
          <div class=\"se3-matrices\">{ma}{mb}{mrel}</div>\
          <h3 data-i18n=\"se3-row-title\"></h3>\
          <pre class=\"se3-row\" data-{P}=\"csv-row\" data-testid=\"se3-relative-row\"></pre>\
          <p class=\"se3-note\" data-i18n=\"se3-check-note\"></p></section>\
-         <section class=\"se3-card\"><h2 data-i18n=\"se3-rot-title\"></h2>\
+         <section class=\"se3-card\" data-section=\"rotations\"><h2 data-i18n=\"se3-rot-title\"></h2>\
          <p class=\"se3-note\" id=\"se3-rot-lede\" data-i18n=\"se3-rot-lede\"></p>\
          <label class=\"se3-select\"><span data-i18n=\"se3-rot-source\"></span> \
          <select data-{P}=\"rot-source\"><option value=\"b\" data-i18n=\"se3-rot-source-b\"></option>\
@@ -94,11 +94,11 @@ pub fn page() -> String {
          <div class=\"se3-matrices\" id=\"se3-rot-matrices\">{rrec}{rint}</div>\
          <p class=\"se3-check\"><span data-i18n=\"se3-rot-diff\"></span> \
          <strong data-readout=\"rot-diff\"></strong></p></section>\
-         <section class=\"se3-card\"><h2 data-i18n=\"se3-exports-title\"></h2>\
+         <section class=\"se3-card\" data-section=\"exports\"><h2 data-i18n=\"se3-exports-title\"></h2>\
          <div class=\"se3-buttons\">{csv}\
          <button type=\"button\" class=\"button\" data-download=\"{PNG}\" data-i18n=\"se3-download-png\"></button></div>\
          {commands}</section>\
-         <section class=\"se3-card se3-explain\"><h2 data-i18n=\"se3-explain-title\"></h2>\
+         <section class=\"se3-card se3-explain\" data-section=\"explain\"><h2 data-i18n=\"se3-explain-title\"></h2>\
          <p data-i18n=\"recipe-se3-relative-blurb\"></p>{explain}\
          <h3 data-i18n=\"se3-explain-quirks-title\"></h3><p data-i18n=\"recipe-se3-relative-quirks\"></p></section>\
          </div>",

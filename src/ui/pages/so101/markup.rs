@@ -124,7 +124,7 @@ fn modules() -> String {
     format!(
         "<div class=\"so101-modules\" role=\"group\" data-i18n-attr=\"aria-label=teleop-modules-label\">\
          {modules}</div><p class=\"so101-help\" data-so101=\"module-help\"></p>\
-         <div class=\"so101-devices\" role=\"group\" data-so101=\"devices\" data-i18n-attr=\"aria-label=teleop-device-label\">\
+         <div class=\"so101-devices\" role=\"group\" data-so101=\"devices\" data-section=\"device\" data-i18n-attr=\"aria-label=teleop-device-label\">\
          <span data-i18n=\"teleop-device-label\"></span>{devices}</div>\
          <ul class=\"so101-checks\" data-so101=\"preflight\">\
          <li data-check=\"moved\" data-state=\"todo\"><span data-i18n=\"teleop-check-moved\"></span></li>\
@@ -137,12 +137,12 @@ fn modules() -> String {
 fn views() -> String {
     format!(
         "<div class=\"so101-views\">\
-         <div class=\"so101-world\" data-so101=\"world\">{control}\
+         <div class=\"so101-world\" data-so101=\"world\" data-section=\"arm\">{control}\
          <div class=\"so101-offer\" data-testid=\"gamepad-offer\" hidden>\
          <p data-so101=\"offer-text\"></p>{use_pad}{dismiss}</div>\
          <p class=\"so101-ended\" data-testid=\"episode-outcome\" data-so101=\"ended\" hidden></p>\
          </div>\
-         <div class=\"so101-side\"><figure class=\"so101-wrist\"><div class=\"so101-wrist-stage\" data-so101=\"wrist-stage\">\
+         <div class=\"so101-side\"><figure class=\"so101-wrist\" data-section=\"wrist\"><div class=\"so101-wrist-stage\" data-so101=\"wrist-stage\">\
          <canvas data-testid=\"so101-wrist\" role=\"img\" aria-describedby=\"so101-readouts\" data-i18n-attr=\"aria-label=so101-wrist-label\"></canvas>\
          </div><figcaption data-i18n=\"so101-wrist-caption\"></figcaption></figure>\
          <p class=\"so101-lede\" data-i18n=\"so101-lede\"></p></div>\
@@ -200,7 +200,7 @@ fn episodes() -> String {
     .collect();
     let table = Episode::episodes_name();
     format!(
-        "<section class=\"so101-episodes\"><h2 data-i18n=\"teleop-episodes-title\"></h2>\
+        "<section class=\"so101-episodes\" data-section=\"session\"><h2 data-i18n=\"teleop-episodes-title\"></h2>\
          <p data-so101=\"session-line\"></p>\
          <div class=\"so101-scroll\"><table class=\"so101-table\"><thead><tr>{cols}</tr></thead>\
          <tbody data-so101=\"episodes\"></tbody></table></div>\
@@ -234,7 +234,7 @@ fn settings() -> String {
         .map(|id| format!("<option value=\"{id}\" data-i18n=\"teleop-ik-{id}\"></option>"))
         .collect();
     format!(
-        "<details class=\"so101-settings\"><summary data-i18n=\"teleop-settings-title\"></summary>\
+        "<details class=\"so101-settings\" data-section=\"form\"><summary data-i18n=\"teleop-settings-title\"></summary>\
          <form data-so101=\"settings\" novalidate>\
          <label><span data-i18n=\"teleop-field-pilot\"></span><input type=\"text\" data-field=\"pilot\" maxlength=\"64\"></label>\
          <label><span data-i18n=\"teleop-field-ik\"></span><select data-field=\"ik\">{methods}</select></label>\
@@ -259,7 +259,7 @@ fn keys() -> String {
         })
         .collect();
     format!(
-        "<section class=\"so101-keys\"><h2 data-i18n=\"teleop-keys-title\"></h2><ul>{items}</ul>\
+        "<section class=\"so101-keys\" data-section=\"keys\"><h2 data-i18n=\"teleop-keys-title\"></h2><ul>{items}</ul>\
          <p data-i18n=\"so101-pad-map\"></p><p data-i18n=\"so101-pointer-map\"></p>\
          <p data-i18n=\"so101-source\"></p></section>"
     )
@@ -272,7 +272,7 @@ pub fn page() -> String {
          <p class=\"so101-notice\" data-so101=\"restored\" data-i18n=\"teleop-restored\" hidden></p>\
          {storage}{views}\
          <p class=\"so101-disclaimer\" data-i18n=\"teleop-disclaimer\"></p>{modules}\
-         <section class=\"so101-readouts\"><h2 data-i18n=\"teleop-readouts-title\"></h2>{ro}\
+         <section class=\"so101-readouts\" data-section=\"readouts\"><h2 data-i18n=\"teleop-readouts-title\"></h2>{ro}\
          <p class=\"so101-why\" data-so101=\"orientation-why\" data-i18n=\"so101-orientation-why\"></p>\
          <p class=\"so101-why\" data-so101=\"grasp-rule\" data-i18n=\"so101-grasp-rule\"></p></section>\
          {labels}{episodes}{settings}{keys}{live}</div>",

@@ -269,7 +269,7 @@ pub fn page() -> String {
          <p class=\"tele-module-help\" data-tele=\"module-help\"></p>\
          <div class=\"tele-top\">\
          <section class=\"tele-card tele-view\">\
-         <div class=\"tele-stage\" data-tele=\"stage\">\
+         <div class=\"tele-stage\" data-tele=\"stage\" data-section=\"world\">\
          <canvas class=\"tele-canvas\" data-testid=\"teleop-canvas\" tabindex=\"0\" role=\"img\" aria-describedby=\"tele-readouts-list tele-readouts\" \
          data-i18n-attr=\"aria-label=teleop-canvas-label\"></canvas>\
          <div class=\"tele-overlay\">{control}\
@@ -285,8 +285,8 @@ pub fn page() -> String {
          <p class=\"tele-device\" data-tele=\"device-status\" role=\"status\"></p>\
          {review}\
          </section>\
-         <section class=\"tele-card\"><h2 data-i18n=\"teleop-readouts-title\"></h2>{readouts}{live}\
-         <section class=\"tele-preflight\" data-tele=\"preflight\"><h3 data-i18n=\"teleop-preflight-title\"></h3>\
+         <section class=\"tele-card\" data-section=\"readouts\"><h2 data-i18n=\"teleop-readouts-title\"></h2>{readouts}{live}\
+         <section class=\"tele-preflight\" data-tele=\"preflight\" data-section=\"device\"><h3 data-i18n=\"teleop-preflight-title\"></h3>\
          <div class=\"tele-choice\" role=\"radiogroup\" data-i18n-attr=\"aria-label=teleop-device-label\">\
          <button type=\"button\" class=\"button tele-pick\" role=\"radio\" data-device=\"keyboard\" aria-checked=\"true\" data-i18n=\"teleop-device-keyboard\"></button>\
          <button type=\"button\" class=\"button tele-pick\" role=\"radio\" data-device=\"gamepad\" aria-checked=\"false\" data-i18n=\"teleop-device-gamepad\"></button>\
@@ -301,7 +301,7 @@ pub fn page() -> String {
          <div class=\"tele-intro\"><p class=\"tele-lede\" data-i18n=\"teleop-lede\"></p>\
          <p class=\"tele-disclaimer\" data-testid=\"teleop-disclaimer\" data-i18n=\"teleop-disclaimer\"></p></div>\
          {labels}\
-         <section class=\"tele-card\"><h2 data-i18n=\"teleop-episodes-title\"></h2>\
+         <section class=\"tele-card\" data-section=\"session\"><h2 data-i18n=\"teleop-episodes-title\"></h2>\
          <p class=\"tele-note\" data-tele=\"session-line\"></p>\
          <div class=\"tele-table-wrap\"><table class=\"tele-table\" data-tele=\"episodes\"><thead><tr>\
          <th data-i18n=\"teleop-col-n\"></th><th data-i18n=\"teleop-col-label\"></th><th data-i18n=\"teleop-col-category\"></th>\
@@ -325,8 +325,8 @@ pub fn page() -> String {
          <div class=\"tele-table-wrap\"><table class=\"tele-table\" data-tele=\"compare\"><thead><tr>\
          <th data-i18n=\"teleop-col-figure\"></th><th data-i18n=\"teleop-col-first-session\"></th>\
          <th data-i18n=\"teleop-col-second-session\"></th></tr></thead><tbody></tbody></table></div></section>\
-         <section class=\"tele-card\"><h2 data-i18n=\"teleop-settings-title\"></h2>{settings}</section>\
-         <section class=\"tele-card\"><h2 data-i18n=\"teleop-about-title\"></h2>\
+         <section class=\"tele-card\" data-section=\"form\"><h2 data-i18n=\"teleop-settings-title\"></h2>{settings}</section>\
+         <section class=\"tele-card\" data-section=\"explain\"><h2 data-i18n=\"teleop-about-title\"></h2>\
          <p data-i18n=\"teleop-about-control\"></p><p data-i18n=\"teleop-about-session\"></p>\
          <p data-i18n=\"teleop-about-not\"></p></section>\
          </div>",

@@ -26,23 +26,23 @@ pub fn page() -> String {
          <p class=\"traj-notice\" data-traj=\"url-notice\" data-testid=\"traj-url-notice\" hidden></p></header>\
          <div class=\"traj-top\">\
          <section class=\"traj-card traj-plot-card\"><h2 data-i18n=\"traj-plot-title\"></h2>\
-         <div class=\"traj-stage\" data-traj=\"stage\">\
+         <div class=\"traj-stage\" data-traj=\"stage\" data-section=\"plot\">\
          <canvas class=\"traj-layer\" aria-hidden=\"true\"></canvas><canvas class=\"traj-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"traj-layer\" role=\"img\" tabindex=\"0\" data-testid=\"traj-resample-canvas\" \
          data-i18n-attr=\"aria-label=traj-canvas-label\" aria-describedby=\"traj-readouts\"></canvas></div>\
          <p class=\"traj-note\" data-i18n=\"traj-plot-note\"></p></section>\
-         <section class=\"traj-card\"><h2 data-i18n=\"traj-readouts-title\"></h2>{readouts}\
+         <section class=\"traj-card\" data-section=\"readouts\"><h2 data-i18n=\"traj-readouts-title\"></h2>{readouts}\
          <p class=\"traj-note\" data-i18n=\"traj-drop-note\"></p></section>\
          </div>\
          <div class=\"traj-mid\">\
-         <section class=\"traj-card\"><h2 data-i18n=\"traj-input-title\"></h2>\
+         <section class=\"traj-card\" data-section=\"form\"><h2 data-i18n=\"traj-input-title\"></h2>\
          <form class=\"traj-form\" data-traj=\"form\" novalidate></form>\
          <p class=\"traj-status\" data-traj=\"status\" data-testid=\"traj-status\" role=\"status\" aria-live=\"polite\"></p>\
          </section>\
-         <section class=\"traj-card\" data-traj=\"output\" data-testid=\"traj-output\"><h2 data-i18n=\"traj-exports-title\"></h2>\
+         <section class=\"traj-card\" data-section=\"exports\" data-traj=\"output\" data-testid=\"traj-output\"><h2 data-i18n=\"traj-exports-title\"></h2>\
          <div class=\"traj-files\" data-traj=\"files\"></div>{exports}</section>\
          </div>\
-         <section class=\"traj-card traj-explain\"><h2 data-i18n=\"traj-explain-title\"></h2>\
+         <section class=\"traj-card traj-explain\" data-section=\"explain\"><h2 data-i18n=\"traj-explain-title\"></h2>\
          <h3 data-i18n=\"recipe-traj-resample-title\"></h3>\
          <p data-i18n=\"recipe-traj-resample-blurb\"></p>\
          <dl class=\"traj-recipe\">\

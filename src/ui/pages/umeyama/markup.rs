@@ -76,7 +76,7 @@ pub fn page() -> String {
          <p class=\"sig-notice ume-edited\" data-{P}=\"edited\" data-testid=\"umeyama-2d-edited\" \
          data-i18n=\"umeyama-edited\" hidden></p></header>\
          <div class=\"sig-top\"><section class=\"sig-card\"><h2 data-i18n=\"umeyama-view-title\"></h2>\
-         <div class=\"sig-stage ume-stage\" data-{P}=\"stage\">\
+         <div class=\"sig-stage ume-stage\" data-{P}=\"stage\" data-section=\"points\">\
          <canvas class=\"sig-layer\" aria-hidden=\"true\"></canvas>\
          <canvas class=\"sig-layer\" data-testid=\"umeyama-2d-canvas\" role=\"img\" tabindex=\"0\" \
          data-i18n-attr=\"aria-label=umeyama-canvas-label\" aria-describedby=\"ume-readouts\"></canvas></div>{legend}\
@@ -85,17 +85,17 @@ pub fn page() -> String {
          role=\"status\" aria-live=\"polite\"></p>\
          <p class=\"ume-message\" data-{P}=\"message\" data-testid=\"umeyama-2d-message\" role=\"status\" hidden></p>\
          <p class=\"sig-note\" data-i18n=\"umeyama-view-note\"></p>\
-         <div data-{P}=\"stepper\"></div>\
+         <div data-{P}=\"stepper\" data-section=\"stepper\"></div>\
          <div class=\"ume-step\" data-testid=\"umeyama-2d-step\">\
          <h3 data-{P}=\"step-title\" aria-live=\"polite\"></h3><p data-{P}=\"step-text\"></p>\
          <div class=\"ume-mats\" data-{P}=\"step-mats\"></div></div></section>\
-         <div class=\"sig-side\"><section class=\"sig-card\"><h2 data-i18n=\"umeyama-ro-title\"></h2>{table}{live}\
+         <div class=\"sig-side\"><section class=\"sig-card\" data-section=\"readouts\"><h2 data-i18n=\"umeyama-ro-title\"></h2>{table}{live}\
          <p class=\"sig-note\" data-i18n=\"umeyama-ro-note\"></p></section>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\
-         <section class=\"sig-card\"><h2 data-i18n=\"signals-exports-title\"></h2>\
+         <section class=\"sig-card\" data-section=\"form\"><h2 data-i18n=\"signals-params-title\"></h2>{form}</section></div></div>\
+         <section class=\"sig-card\" data-section=\"exports\"><h2 data-i18n=\"signals-exports-title\"></h2>\
          <p class=\"ume-more\" data-{P}=\"more\" data-testid=\"umeyama-2d-more\"></p>\
          <div data-{P}=\"later\" hidden>{exports}</div></section>\
-         <section class=\"sig-card sig-explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
+         <section class=\"sig-card sig-explain\" data-section=\"explain\"><h2 data-i18n=\"signals-explain-title\"></h2>{explain}\
          <pre class=\"ume-code\"><code data-i18n=\"umeyama-code\"></code></pre>\
          <h3 data-i18n=\"signals-quirks-title\"></h3><p data-i18n=\"recipe-umeyama-2d-quirks\"></p></section></div>",
         legend = legend(),
