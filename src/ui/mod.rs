@@ -4,8 +4,9 @@
 //! (kernel tests, `runRecipe`) where there is no DOM to build.
 //!
 //! - [`shell`] hosts the page the [`router`] names, with the header ([`nav_menu`]), the
-//!   [`lesson_bar`] (with [`lesson_focus`]), the [`drill_chain`], [`section_keys`], the [`overlay`] and the
-//!   [`update_banner`]; it alone imports the page table, [`pages`].
+//!   [`lesson_bar`] (presenting in [`lesson_present`], with [`lesson_focus`]), the
+//!   [`drill_chain`], [`section_keys`], the [`overlay`] and the [`update_banner`]; it alone
+//!   imports the page table, [`pages`].
 //! - [`page`] is the contract between the shell and a page; pages are built from the [`kit`],
 //!   [`dom`], [`ctx`] (language, projector mode) and [`schedule`] (timers, after paint).
 //! - [`download`], [`clipboard`], [`command_line`]: files, copies and shell quoting.
@@ -22,6 +23,7 @@ pub mod kit;
 pub mod lang_files;
 pub mod lesson_bar;
 pub mod lesson_focus;
+pub mod lesson_present;
 pub mod nav_cue;
 pub mod nav_menu;
 pub mod overlay;

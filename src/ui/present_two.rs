@@ -5,7 +5,7 @@
 //! lesson is walked in this window ([`lesson_bar`] with a [`Relay`]); the two windows keep in
 //! step over a `BroadcastChannel` (same origin, works offline): each step is shown in the
 //! room's window, and keys pressed there come here. Closing either window, or Escape in either,
-//! ends the presentation in both. A wasm chunk of its own, fetched on first use.
+//! ends the presentation in both. In the presenting chunk, fetched on first use.
 
 use std::cell::{Cell, RefCell};
 
@@ -14,7 +14,8 @@ use wasm_bindgen::JsCast;
 use web_sys::{BroadcastChannel, Element, Event, MessageEvent, Window};
 
 use crate::i18n::Lang;
-use crate::ui::lesson_bar::{self, Relay};
+use crate::ui::lesson_bar::Perform;
+use crate::ui::lesson_present::{self, Relay};
 use crate::ui::page::ShellRequest;
 use crate::ui::{ctx, dom, lesson_focus, router, schedule};
 use crate::view::lesson::Lesson;
@@ -28,9 +29,6 @@ const VIEW_ID: &str = "presenter-window";
 /// How long the room's window waits for the presenter's answer before it is a plain window
 /// again (its presenter's window was closed while it reloaded).
 const ANSWER_WAIT_MS: i32 = 3000;
-
-/// What the shell does for a request (its `perform`).
-type Perform = fn(ShellRequest) -> Result<(), JsValue>;
 
 /// The presenter's window of a presentation.
 struct PresenterSide {
@@ -86,27 +84,16 @@ impl Drop for Ticker {
     }
 }
 
-/// The entry points of this chunk.
-#[derive(Clone, Copy)]
-pub(crate) struct TwoScreens {
-    /// Opens the room's window and presents `lesson` from its first step; `Err` is the
-    /// localized reason it could not (the browser blocked the window).
-    pub start: fn(Lesson, Perform) -> Result<(), String>,
-    /// This window is the room's window of a presentation: joins it.
-    pub join: fn(Perform) -> Result<(), JsValue>,
-}
-
-/// This chunk's entry points.
-pub(crate) const ENTRY: TwoScreens = TwoScreens { start, join };
-
-fn start(lesson: Lesson, perform: Perform) -> Result<(), String> {
+/// Opens the room's window and presents `lesson` from its first step; `Err` is the localized
+/// reason it could not (the browser blocked the window).
+pub(crate) fn start(lesson: Lesson, perform: Perform) -> Result<(), String> {
     let blocked = || ctx::t("present-two-blocked");
     let Some(first) = lesson.steps.first() else {
         return Ok(());
     };
     let window = dom::window().map_err(|_| blocked())?;
-    if lesson_bar::presenting() {
-        lesson_bar::stop().map_err(|_| blocked())?;
+    if lesson_present::presenting() {
+        lesson_present::stop().map_err(|_| blocked())?;
     }
     // The room's window speaks the presenter's language.
     let url = format!(
@@ -140,7 +127,7 @@ fn open_presenter(lesson: Lesson, audience: Window, perform: Perform) -> Result<
             }
         })?,
         // Closing or reloading this window ends the presentation in the room's too.
-        dom::Listener::new(&window, "pagehide", |_| report(lesson_bar::stop()))?,
+        dom::Listener::new(&window, "pagehide", |_| report(lesson_present::stop()))?,
     ];
     let view = build_view()?;
     reveal_when_styled(&view)?;
@@ -166,8 +153,9 @@ fn open_presenter(lesson: Lesson, audience: Window, perform: Perform) -> Result<
             p.ticker = Some(ticker);
         }
     });
-    lesson_bar::set_relay(Some(presenter_relay));
-    lesson_bar::present_on_two(lesson, 0)
+    lesson_present::hook();
+    lesson_present::set_relay(Some(presenter_relay));
+    lesson_present::present_on_two(lesson, 0)
 }
 
 /// What the lesson walk asks of the presenter's window.
@@ -213,12 +201,12 @@ fn on_presenter_message(data: &JsValue) -> Result<(), JsValue> {
     match field(data, "kind").as_deref() {
         // The room's window (re)opened: what it should show.
         Some("hello") => {
-            let step =
-                lesson_bar::current().and_then(|(lesson, p)| lesson.steps.get(p.index).cloned());
+            let step = lesson_present::current()
+                .and_then(|(lesson, p)| lesson.steps.get(p.index).cloned());
             if let Some(step) = step {
                 presenter_relay(Relay::Show(&step.route, step.focus.as_deref()));
             }
-            if lesson_bar::blacked_out()? {
+            if lesson_present::blacked_out()? {
                 post(&[("kind", "black".into()), ("on", true.into())])?;
             }
             Ok(())
@@ -227,7 +215,7 @@ fn on_presenter_message(data: &JsValue) -> Result<(), JsValue> {
             let Some(key) = field(data, "key") else {
                 return Ok(());
             };
-            let requests = lesson_bar::on_named_key(&key, false)?.unwrap_or_default();
+            let requests = lesson_present::on_named_key(&key, false)?.unwrap_or_default();
             let perform = SIDE.with_borrow(|side| match side {
                 Some(Side::Presenter(p)) => Some(p.perform),
                 _ => None,
@@ -237,7 +225,7 @@ fn on_presenter_message(data: &JsValue) -> Result<(), JsValue> {
                 None => Ok(()),
             }
         }
-        Some("end") => lesson_bar::stop(),
+        Some("end") => lesson_present::stop(),
         _ => Ok(()),
     }
 }
@@ -252,7 +240,7 @@ fn tick() -> Result<(), JsValue> {
         return Ok(());
     };
     if closed {
-        return lesson_bar::stop();
+        return lesson_present::stop();
     }
     if let Some(clock) = dom::document()?.get_element_by_id("presenter-elapsed") {
         clock.set_text_content(Some(&elapsed_text(schedule::now_ms() - started_ms)));
@@ -333,7 +321,7 @@ fn build_view() -> Result<Element, JsValue> {
         });
         if let Some(perform) = perform {
             report(
-                lesson_bar::on_bar_click(&event)
+                lesson_present::on_bar_click(&event)
                     .and_then(|requests| requests.into_iter().try_for_each(perform)),
             );
         }
@@ -346,16 +334,17 @@ fn build_view() -> Result<Element, JsValue> {
 /// note, the next step's title and picture, the step list and the buttons.
 fn render() -> Result<(), JsValue> {
     let document = dom::document()?;
-    let (Some(view), Some((lesson, presenter))) =
-        (document.get_element_by_id(VIEW_ID), lesson_bar::current())
-    else {
+    let (Some(view), Some((lesson, presenter))) = (
+        document.get_element_by_id(VIEW_ID),
+        lesson_present::current(),
+    ) else {
         return Ok(());
     };
     let started_ms = SIDE.with_borrow(|side| match side {
         Some(Side::Presenter(p)) => p.started_ms,
         _ => schedule::now_ms(),
     });
-    let black = lesson_bar::blacked_out()?;
+    let black = lesson_present::blacked_out()?;
     let picture = document
         .get_element_by_id("presenter-picture")
         .filter(|p| p.parent_element().is_some());
@@ -533,7 +522,7 @@ fn show_in_picture(picture: &Element, route: &str, title: &str) -> Result<(), Js
 
 /// Joins the presentation as the room's window: projector styles, presenter keys sent to the
 /// presenter's window, each step shown as it says; full screen at the first click or key.
-fn join(perform: Perform) -> Result<(), JsValue> {
+pub(crate) fn join(perform: Perform) -> Result<(), JsValue> {
     let channel = BroadcastChannel::new(CHANNEL)?;
     let window = dom::window()?;
     let listeners = vec![
@@ -556,7 +545,8 @@ fn join(perform: Perform) -> Result<(), JsValue> {
             _listeners: listeners,
         }));
     });
-    lesson_bar::set_relay(Some(audience_relay));
+    lesson_present::hook();
+    lesson_present::set_relay(Some(audience_relay));
     perform(ShellRequest::ProjectorHere)?;
     post(&[("kind", "hello".into())])?;
     // No answer: the presenter's window is gone; this is a plain window again.
@@ -636,7 +626,7 @@ fn on_audience_message(data: &JsValue) -> Result<(), JsValue> {
         Some("step") => perform(ShellRequest::StepPage),
         Some("black") => {
             let on = js_sys::Reflect::get(data, &JsValue::from_str("on"))?.is_truthy();
-            lesson_bar::cover(on)
+            lesson_present::cover(on)
         }
         Some("share") => {
             crate::ui::share::open();
@@ -662,8 +652,8 @@ fn same_route(hash: &str, route: &str) -> bool {
 /// This window is no longer the room's: projector styles off, and closed if `close` (a window
 /// a script opened closes when asked).
 fn leave_audience(close: bool) -> Result<(), JsValue> {
-    lesson_bar::set_relay(None);
-    lesson_bar::cover(false)?;
+    lesson_present::set_relay(None);
+    lesson_present::cover(false)?;
     let side = SIDE.with_borrow_mut(Option::take);
     wasm_bindgen_futures::spawn_local(async move { drop(side) });
     let window = dom::window()?;

@@ -161,7 +161,7 @@ const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>
 <button type=\"button\" class=\"tool-button\" data-action=\"lesson-clear\" data-i18n=\"lesson-clear\"></button>\
 </div>\
 <p class=\"lesson-error\" role=\"alert\" data-field-error=\"lesson-file\" hidden></p>\
-<p class=\"lesson-error\" role=\"alert\" data-field-error=\"lesson-present-two\" hidden></p>\
+<p class=\"lesson-error\" role=\"alert\" data-field-error=\"lesson-present\" hidden></p>\
 <label class=\"lesson-field\"><span data-i18n=\"lesson-link-label\"></span>\
 <input type=\"text\" readonly data-readout=\"lesson-link\"></label>\
 </section></div>";
@@ -184,19 +184,26 @@ impl Editor {
         Ok(())
     }
 
-    /// Presents the lesson from step `index`, with what that asks of the shell.
+    /// Presents the lesson from step `index`, once presenting's code is here; what stopped
+    /// it is said under the buttons.
     fn present(&self, index: usize) -> Result<(), JsValue> {
         let lesson = self.lesson.borrow().clone();
-        for request in lesson_bar::present(lesson, index)? {
-            (self.shell.request)(request)?;
-        }
+        let slot: Element = self.find("[data-field-error=\"lesson-present\"]")?;
+        dom::show(&slot, false);
+        let shell = self.shell;
+        wasm_bindgen_futures::spawn_local(async move {
+            if let Err(reason) = lesson_bar::present(lesson, index, shell).await {
+                slot.set_text_content(Some(&reason));
+                dom::show(&slot, true);
+            }
+        });
         Ok(())
     }
 
     /// Presents the lesson on two screens; what stopped it is said under the buttons.
     fn present_two(&self) -> Result<(), JsValue> {
         let lesson = self.lesson.borrow().clone();
-        let slot: Element = self.find("[data-field-error=\"lesson-present-two\"]")?;
+        let slot: Element = self.find("[data-field-error=\"lesson-present\"]")?;
         dom::show(&slot, false);
         let shell = self.shell;
         wasm_bindgen_futures::spawn_local(async move {

@@ -1,0 +1,413 @@
+//! Presenting a lesson (a wasm chunk of its own, fetched when presenting starts: no page's
+//! first load needs it): full screen, projector styles, a bar at the foot with the step's
+//! title and note, a progress strip, and the keys of presenter remotes, whatever has focus
+//! (PageDown / → next, PageUp / ← back, a step that asks for it first stepping the page's own
+//! stepper; B / . black the screen and bring it back; S shares; Escape ends); each step brings
+//! its focus section into view above the bar ([`crate::ui::lesson_focus`]). What presenting
+//! needs of the shell (step the page, mount it again, projector mode) is returned as
+//! [`ShellRequest`]s for the shell to carry out. The shell reaches this chunk through
+//! [`lesson_bar`]'s hooks. Presenting on two screens ([`crate::ui::present_two`], in this
+//! chunk too) walks the lesson here, with a [`Relay`] that shows each step in the room's
+//! window instead of this one.
+
+use std::cell::{Cell, RefCell};
+
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use web_sys::{Element, Event};
+
+use crate::ui::lesson_bar::{self, Hooks, PresentEntry};
+use crate::ui::page::ShellRequest;
+use crate::ui::{ctx, dom, lesson_focus, present_two, router};
+use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
+
+const BAR_ID: &str = "lesson-bar";
+
+thread_local! {
+    static PRESENTING: RefCell<Option<(Lesson, Presenter)>> = const { RefCell::new(None) };
+    /// Set while a lesson is presented on two screens, in both windows.
+    static RELAY: Cell<Option<fn(Relay)>> = const { Cell::new(None) };
+    /// Whether the room's screen is black (the presenter's window of two).
+    static BLACK: Cell<bool> = const { Cell::new(false) };
+}
+
+/// This chunk's entry points.
+pub(crate) const ENTRY: PresentEntry = PresentEntry {
+    present: start,
+    start_two: present_two::start,
+    join: present_two::join,
+};
+
+/// What the shell calls while this chunk is here.
+const HOOKS: Hooks = Hooks {
+    on_key: on_named_key,
+    on_bar_click,
+    render,
+};
+
+/// Starts presenting `lesson` at step `index`; what the shell should do first.
+fn start(lesson: Lesson, index: usize) -> Result<Vec<ShellRequest>, JsValue> {
+    lesson_bar::set_hooks(HOOKS);
+    present(lesson, index)
+}
+
+/// The shell's hooks into this chunk, for the windows of a two-screen presentation.
+pub(crate) fn hook() {
+    lesson_bar::set_hooks(HOOKS);
+}
+
+/// What a two-screen presentation does in place of this window's page and bar: in the
+/// presenter's window every step is shown in the room's window and the presenter view is
+/// redrawn; in the room's window its presenter keys go to the presenter's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Relay<'a> {
+    /// Show this route (a lesson step) in the room's window, with its focus section.
+    Show(&'a str, Option<&'a str>),
+    /// Step the page in the room's window.
+    StepPage,
+    /// Black the room's screen out, or bring it back.
+    Black(bool),
+    /// Open Share in the room's window.
+    Share,
+    /// A presenter key pressed in the room's window.
+    Key(&'a str),
+    /// The lesson or its step changed: redraw the presenter view.
+    Redraw,
+    /// The presentation ended.
+    End,
+}
+
+/// Hands presenting to `relay` (both windows of a two-screen presentation), or takes it back.
+pub(crate) fn set_relay(relay: Option<fn(Relay)>) {
+    RELAY.set(relay);
+    BLACK.set(false);
+}
+
+/// The lesson being presented and where it stands.
+pub(crate) fn current() -> Option<(Lesson, Presenter)> {
+    PRESENTING.with(|p| p.borrow().clone())
+}
+
+/// A click in the bar (its buttons are redrawn at every step, so the shell listens on the
+/// bar): what the presenter asks of the shell.
+pub(crate) fn on_bar_click(event: &Event) -> Result<Vec<ShellRequest>, JsValue> {
+    let target = event
+        .target()
+        .and_then(|t| t.dyn_into::<Element>().ok())
+        .and_then(|e| e.closest("[data-action]").ok().flatten());
+    let Some(target) = target else {
+        return Ok(Vec::new());
+    };
+    match target.get_attribute("data-action").as_deref() {
+        Some("lesson-next") => press(true),
+        Some("lesson-prev") => press(false),
+        Some("lesson-end") => stop().map(|()| Vec::new()),
+        Some("lesson-black") => black_out(!blacked_out()?).map(|()| Vec::new()),
+        Some("lesson-go") => {
+            let i = target
+                .get_attribute("data-index")
+                .and_then(|i| i.parse::<usize>().ok())
+                .unwrap_or(0);
+            let action = PRESENTING.with(|p| {
+                let mut p = p.borrow_mut();
+                p.as_mut().map(|(l, pr)| pr.go(l, i))
+            });
+            action.map_or(Ok(Vec::new()), apply)
+        }
+        _ => Ok(Vec::new()),
+    }
+}
+
+/// Starts presenting `lesson` at step `index`; projector mode on, then what the step asks.
+fn present(lesson: Lesson, index: usize) -> Result<Vec<ShellRequest>, JsValue> {
+    let mut presenter = Presenter::default();
+    let action = presenter.go(&lesson, index);
+    PRESENTING.with(|p| *p.borrow_mut() = Some((lesson, presenter)));
+    if let Some(root) = dom::document()?.document_element() {
+        // Full screen needs a user gesture; without one the lesson still runs in the window.
+        let _ = root.request_fullscreen();
+    }
+    let mut requests = vec![ShellRequest::Projector(true)];
+    requests.extend(apply(action)?);
+    Ok(requests)
+}
+
+/// Starts presenting `lesson` at step `index` in the room's window of a two-screen
+/// presentation ([`set_relay`] first): this window shows the presenter view.
+pub(crate) fn present_on_two(lesson: Lesson, index: usize) -> Result<(), JsValue> {
+    let mut presenter = Presenter::default();
+    let action = presenter.go(&lesson, index);
+    PRESENTING.with(|p| *p.borrow_mut() = Some((lesson, presenter)));
+    apply(action).map(drop)
+}
+
+/// Stops presenting (on two screens: in both windows).
+pub fn stop() -> Result<(), JsValue> {
+    PRESENTING.with(|p| *p.borrow_mut() = None);
+    lesson_focus::stop();
+    if let Some(relay) = RELAY.take() {
+        BLACK.set(false);
+        relay(Relay::End);
+    }
+    black_out(false)?;
+    let document = dom::document()?;
+    if document.fullscreen_element().is_some() {
+        document.exit_fullscreen();
+    }
+    if let Some(bar) = document.get_element_by_id(BAR_ID) {
+        dom::show(&bar, false);
+    }
+    Ok(())
+}
+
+/// Whether a lesson is being presented.
+pub fn presenting() -> bool {
+    PRESENTING.with(|p| p.borrow().is_some())
+}
+
+/// Next / back while presenting (buttons and keys).
+fn press(forward: bool) -> Result<Vec<ShellRequest>, JsValue> {
+    let action = PRESENTING.with(|p| {
+        let mut p = p.borrow_mut();
+        let (lesson, presenter) = p.as_mut()?;
+        Some(if forward {
+            presenter.next(lesson)
+        } else {
+            presenter.back()
+        })
+    });
+    match action {
+        Some(action) => apply(action),
+        None => Ok(Vec::new()),
+    }
+}
+
+/// Shows what the presenter moved to; a step of the page's stepper or showing the current
+/// route again is the shell's to do.
+fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
+    let mut requests = Vec::new();
+    let relay = RELAY.get();
+    match action {
+        PresenterAction::Stay => {}
+        PresenterAction::StepPage => match relay {
+            Some(relay) => relay(Relay::StepPage),
+            None => requests.push(ShellRequest::StepPage),
+        },
+        PresenterAction::Show(i) => {
+            let step = PRESENTING.with(|p| {
+                p.borrow()
+                    .as_ref()
+                    .and_then(|(l, _)| l.steps.get(i).cloned())
+            });
+            if let (Some(step), Some(relay)) = (&step, relay) {
+                relay(Relay::Show(&step.route, step.focus.as_deref()));
+            } else if let Some(LessonStep { route, focus, .. }) = step {
+                if let Some(bar) = dom::document()?.get_element_by_id(BAR_ID) {
+                    lesson_focus::show(&bar, crate::view::url::parse_hash(&route).page, focus);
+                }
+                let window = dom::window()?;
+                if window.location().hash()? == route {
+                    // Same state: re-mount it from the start.
+                    requests.push(ShellRequest::Remount);
+                } else {
+                    // The page shown writes no more of its state to the URL: on the same page
+                    // (a step to another state of it) that write would replace the step's.
+                    router::set_shown_page("");
+                    window.location().set_hash(&route)?;
+                }
+            }
+        }
+    }
+    render()?;
+    Ok(requests)
+}
+
+/// A key while presenting, whatever has focus (the shell asks before the page and the focused
+/// control): PageDown / → next, PageUp / ← back, B / . black the screen and bring it back, S
+/// shares the page, Escape brings the screen back or ends. In a text or number field being
+/// edited ← and → (and B, ., S) stay the field's; PageDown / PageUp still go on and back.
+/// The key is named `key` (`typing`: a text field being edited has focus); also a key pressed
+/// in the room's window of a two-screen presentation. `None` if not taken, else what the
+/// presenter asks of the shell.
+pub(crate) fn on_named_key(key: &str, typing: bool) -> Result<Option<Vec<ShellRequest>>, JsValue> {
+    if !presenting() {
+        // The room's window of two: its presenter keys go to the presenter's window.
+        return Ok(match RELAY.get() {
+            Some(relay) if is_presenter_key(key, typing) => {
+                relay(Relay::Key(key));
+                Some(Vec::new())
+            }
+            _ => None,
+        });
+    }
+    let black = blacked_out()?;
+    let requests = match key {
+        "PageDown" | "PageUp" | "ArrowRight" | "ArrowLeft" | "b" | "B" | "." if black => {
+            black_out(false)?;
+            Vec::new()
+        }
+        "PageDown" => press(true)?,
+        "PageUp" => press(false)?,
+        "ArrowRight" if !typing => press(true)?,
+        "ArrowLeft" if !typing => press(false)?,
+        "b" | "B" | "." if !typing => {
+            black_out(true)?;
+            Vec::new()
+        }
+        "Escape" | "Esc" if black => {
+            black_out(false)?;
+            Vec::new()
+        }
+        "Escape" | "Esc" => {
+            stop()?;
+            Vec::new()
+        }
+        "s" | "S" if !typing => {
+            match RELAY.get() {
+                Some(relay) => relay(Relay::Share),
+                None => crate::ui::share::open(),
+            }
+            Vec::new()
+        }
+        _ => return Ok(None),
+    };
+    Ok(Some(requests))
+}
+
+/// Whether `key` is one of the presenter's keys ([`on_named_key`]).
+fn is_presenter_key(key: &str, typing: bool) -> bool {
+    match key {
+        "PageDown" | "PageUp" | "Escape" | "Esc" => true,
+        "ArrowRight" | "ArrowLeft" | "b" | "B" | "." | "s" | "S" => !typing,
+        _ => false,
+    }
+}
+
+/// The black screen's element id (`data-testid="blackout"`).
+const BLACKOUT_ID: &str = "lesson-blackout";
+
+/// Whether the screen is blacked out (on two screens: the room's).
+pub(crate) fn blacked_out() -> Result<bool, JsValue> {
+    if RELAY.get().is_some() {
+        return Ok(BLACK.get());
+    }
+    Ok(dom::document()?
+        .get_element_by_id(BLACKOUT_ID)
+        .is_some_and(|b| !b.has_attribute("hidden")))
+}
+
+/// Blacks the screen out (`on`) or brings it back, as a presentation program's B and . do;
+/// on two screens, the room's.
+fn black_out(on: bool) -> Result<(), JsValue> {
+    match RELAY.get() {
+        Some(relay) if presenting() => {
+            BLACK.set(on);
+            relay(Relay::Black(on));
+            relay(Relay::Redraw);
+            Ok(())
+        }
+        _ => cover(on),
+    }
+}
+
+/// Blacks this window's screen out (`on`) or brings it back.
+pub(crate) fn cover(on: bool) -> Result<(), JsValue> {
+    let document = dom::document()?;
+    let cover = match document.get_element_by_id(BLACKOUT_ID) {
+        Some(cover) => cover,
+        None if !on => return Ok(()),
+        None => {
+            let cover = dom::el_class("div", "lesson-blackout")?;
+            cover.set_id(BLACKOUT_ID);
+            cover.set_attribute("data-testid", "blackout")?;
+            cover.set_attribute("aria-hidden", "true")?;
+            if let Some(body) = document.body() {
+                body.append_child(&cover)?;
+            }
+            cover
+        }
+    };
+    dom::show(&cover, on);
+    Ok(())
+}
+
+/// Redraws the bar: progress strip, step title and note, buttons.
+pub(crate) fn render() -> Result<(), JsValue> {
+    let document = dom::document()?;
+    let Some(bar) = document.get_element_by_id(BAR_ID) else {
+        return Ok(());
+    };
+    let state = PRESENTING.with(|p| p.borrow().clone());
+    let Some((lesson, presenter)) = state else {
+        dom::show(&bar, false);
+        return Ok(());
+    };
+    if let Some(relay) = RELAY.get() {
+        // The presenter view stands for the bar.
+        dom::show(&bar, false);
+        relay(Relay::Redraw);
+        return Ok(());
+    }
+    dom::clear(&bar);
+    dom::show(&bar, true);
+    bar.set_attribute("data-step", &(presenter.index + 1).to_string())?;
+    bar.set_attribute("data-steps", &lesson.steps.len().to_string())?;
+    let strip = dom::el_class("ol", "lesson-progress")?;
+    strip.set_attribute("data-testid", "lesson-progress")?;
+    for (i, step) in lesson.steps.iter().enumerate() {
+        let item = dom::el("li")?;
+        let dot = dom::el_class("button", "lesson-dot")?;
+        dot.set_attribute("type", "button")?;
+        dot.set_attribute(
+            "aria-label",
+            &format!("{} {}: {}", ctx::t("lesson-step"), i + 1, step.title),
+        )?;
+        if i == presenter.index {
+            dot.set_attribute("aria-current", "step")?;
+        }
+        dot.set_attribute("data-action", "lesson-go")?;
+        dot.set_attribute("data-index", &i.to_string())?;
+        dom::append(&item, &dot)?;
+        dom::append(&strip, &item)?;
+    }
+    dom::append(&bar, &strip)?;
+    if let Some(step) = lesson.steps.get(presenter.index) {
+        let text = dom::el_class("div", "lesson-text")?;
+        let title = dom::el_text(
+            "p",
+            "lesson-step-title",
+            &format!(
+                "{} / {} · {}",
+                presenter.index + 1,
+                lesson.steps.len(),
+                step.title
+            ),
+        )?;
+        title.set_attribute("data-testid", "lesson-step-title")?;
+        dom::append(&text, &title)?;
+        if !step.note.is_empty() {
+            let note = dom::el_text("p", "lesson-note", &step.note)?;
+            note.set_attribute("data-testid", "lesson-note")?;
+            dom::append(&text, &note)?;
+        }
+        if step.page_steps > 0 {
+            let left = step.page_steps.saturating_sub(presenter.page_steps_done);
+            let steps = dom::el_text(
+                "p",
+                "lesson-page-steps",
+                &ctx::t_strings("lesson-page-steps-left", &[("count", left.to_string())]),
+            )?;
+            dom::append(&text, &steps)?;
+        }
+        dom::append(&bar, &text)?;
+    }
+    let buttons = dom::el_class("div", "lesson-buttons")?;
+    for action in ["lesson-prev", "lesson-next", "lesson-end"] {
+        let b = dom::el_i18n("button", "tool-button", action)?;
+        b.set_attribute("type", "button")?;
+        b.set_attribute("data-action", action)?;
+        dom::append(&buttons, &b)?;
+    }
+    dom::append(&bar, &buttons)?;
+    Ok(())
+}
