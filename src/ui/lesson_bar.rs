@@ -1,7 +1,7 @@
 //! Lessons in the shell: the header's "Add this view to the lesson" button, the presenter
 //! bar's place, and the shell's way into presenting ([`crate::ui::lesson_present`], a chunk
 //! fetched when presenting starts, in one window or on two screens): once it is here, the
-//! shell's keys, bar clicks and redraws go to it through [`Hooks`]. The lesson itself is
+//! shell's keys, bar clicks and redraws go to it through `Hooks`. The lesson itself is
 //! [`crate::view::lesson`]; it is kept in localStorage (`bsv.lesson`) so it survives a reload;
 //! the `#/lesson` page edits it.
 

@@ -7,7 +7,7 @@
 //! needs of the shell (step the page, mount it again, projector mode) is returned as
 //! [`ShellRequest`]s for the shell to carry out. The shell reaches this chunk through
 //! [`lesson_bar`]'s hooks. Presenting on two screens ([`crate::ui::present_two`], in this
-//! chunk too) walks the lesson here, with a [`Relay`] that shows each step in the room's
+//! chunk too) walks the lesson here, with a `Relay` that shows each step in the room's
 //! window instead of this one.
 
 use std::cell::{Cell, RefCell};

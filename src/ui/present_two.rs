@@ -2,7 +2,7 @@
 //! page, projector styles, no notes; the teacher moves it to the projector, where a click or a
 //! key makes it full screen) and turns this window into the presenter view: this step's note,
 //! the next step's title and a live picture of it, the step list and the elapsed time. The
-//! lesson is walked in this window ([`lesson_bar`] with a [`Relay`]); the two windows keep in
+//! lesson is walked in this window ([`crate::ui::lesson_present`] with a `Relay`); the two windows keep in
 //! step over a `BroadcastChannel` (same origin, works offline): each step is shown in the
 //! room's window, and keys pressed there come here. Closing either window, or Escape in either,
 //! ends the presentation in both. In the presenting chunk, fetched on first use.
