@@ -20,6 +20,7 @@ use serde::Serialize;
 
 use crate::error::RecipeError;
 use crate::pyfmt::{group_u64, size_text};
+use crate::view::json_file;
 use crate::view::sections;
 use crate::view::url::{self, IgnoredKey};
 
@@ -249,18 +250,9 @@ impl LessonError {
     }
 }
 
-/// Text from a file for a message: at most [`MAX_QUOTED_CHARS`] characters, control
-/// characters shown as `�`.
+/// Text from a file for a message ([`json_file::quoted`] to [`MAX_QUOTED_CHARS`]).
 fn quoted(text: &str) -> String {
-    let mut out: String = text
-        .chars()
-        .take(MAX_QUOTED_CHARS)
-        .map(|c| if c.is_control() { '\u{fffd}' } else { c })
-        .collect();
-    if text.chars().nth(MAX_QUOTED_CHARS).is_some() {
-        out.push('…');
-    }
-    out
+    json_file::quoted(text, MAX_QUOTED_CHARS)
 }
 
 impl LessonStep {

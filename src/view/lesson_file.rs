@@ -17,6 +17,7 @@
 use serde::Serialize;
 use serde_json::{Map, Value};
 
+use crate::view::json_file::{kind_of, too_deep_at, unknown_field};
 use crate::view::lesson::{
     without_lang, Expected, Lesson, LessonError, LessonStep, FIRST_VERSION, FORMAT, MAX_DEPTH,
     MAX_FILE_BYTES, MAX_PAGE_STEPS, MAX_STEPS, VERSION,
@@ -73,7 +74,9 @@ fn read(
     if body.trim().is_empty() {
         return Err(LessonError::EmptyFile);
     }
-    check_depth(body)?;
+    if let Some((line, column)) = too_deep_at(body, MAX_DEPTH) {
+        return Err(LessonError::TooDeep { line, column });
+    }
     let value: Value = serde_json::from_str(body).map_err(|e| LessonError::NotJson {
         line: e.line(),
         column: e.column(),
@@ -175,7 +178,7 @@ fn known_fields(
     known: &[&str],
     step: Option<usize>,
 ) -> Result<(), LessonError> {
-    match object.keys().find(|k| !known.contains(&k.as_str())) {
+    match unknown_field(object, known) {
         Some(field) => Err(LessonError::UnknownField {
             step,
             field: field.clone(),
@@ -195,54 +198,6 @@ fn text_field(
         Some(Value::String(s)) => Ok(Some(s.clone())),
         Some(_) => Err(wrong_type(step, field, Expected::Text)),
     }
-}
-
-/// What a JSON value is, for the message (`lesson-error-not-an-object`'s `kind`).
-fn kind_of(value: &Value) -> &'static str {
-    match value {
-        Value::Array(_) => "array",
-        Value::String(_) => "text",
-        Value::Number(_) => "number",
-        Value::Bool(_) => "boolean",
-        Value::Null => "null",
-        Value::Object(_) => "object",
-    }
-}
-
-/// Refuses arrays and objects nested deeper than [`MAX_DEPTH`] (strings skipped), naming the
-/// line and column (from 1) of the bracket that passes the limit.
-fn check_depth(text: &str) -> Result<(), LessonError> {
-    let (mut depth, mut line, mut column) = (0usize, 1usize, 0usize);
-    let (mut in_string, mut escaped) = (false, false);
-    for c in text.chars() {
-        if c == '\n' {
-            line += 1;
-            column = 0;
-        } else {
-            column += 1;
-        }
-        if in_string {
-            match c {
-                _ if escaped => escaped = false,
-                '\\' => escaped = true,
-                '"' => in_string = false,
-                _ => {}
-            }
-            continue;
-        }
-        match c {
-            '"' => in_string = true,
-            '[' | '{' => {
-                depth += 1;
-                if depth > MAX_DEPTH {
-                    return Err(LessonError::TooDeep { line, column });
-                }
-            }
-            ']' | '}' => depth = depth.saturating_sub(1),
-            _ => {}
-        }
-    }
-    Ok(())
 }
 
 #[cfg(test)]

@@ -1,0 +1,140 @@
+//! The catalog as a whole: ids, pages, kinds and the checks' refusals.
+
+use super::*;
+use crate::recipes::RECIPE_PAGES;
+use crate::view::pilot_picture;
+#[cfg(target_family = "wasm")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+#[test]
+fn ids_are_unique_kebab_case_and_pages_are_the_apps() {
+    let mut seen = std::collections::BTreeSet::new();
+    for e in catalog() {
+        assert!(seen.insert(e.id), "duplicate id {}", e.id);
+        assert!(
+            e.id.split('-').all(|w| !w.is_empty()
+                && w.chars()
+                    .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit())),
+            "{}",
+            e.id
+        );
+        assert!(
+            RECIPE_PAGES.iter().any(|(_, page)| *page == Some(e.page))
+                || pilot_picture::PAGES.contains(&e.page),
+            "{} on {}",
+            e.id,
+            e.page
+        );
+        assert!(e.prompt_id().starts_with("ex-") && e.message_ids().len() >= 3);
+    }
+    for id in [
+        "ik-singular",
+        "pendulum-euler-dt",
+        "pid-tune",
+        "trap-triangle",
+        "rrt-300",
+    ] {
+        assert!(find(id).is_some(), "{id}");
+    }
+    assert_eq!(find("nope").map(|e| e.id), None);
+    assert_eq!(
+        of_page("pid-step").map(|e| e.id).collect::<Vec<_>>(),
+        ["pid-tune", "pid-final-y", "pid-p-only", "pid-overshoot"]
+    );
+}
+
+#[test]
+fn the_required_exercises_have_their_kinds() {
+    let kind = |id| find(id).map(|e| e.kind);
+    assert_eq!(kind("ik-singular"), Some(Kind::Goal));
+    assert!(matches!(
+        kind("pendulum-euler-dt"),
+        Some(Kind::Predict {
+            tolerance: Tolerance::Relative(r),
+            ..
+        }) if r == 0.25
+    ));
+    for id in ["pid-tune", "trap-triangle", "rrt-300"] {
+        assert_eq!(kind(id), Some(Kind::Goal), "{id}");
+    }
+}
+
+#[test]
+fn choices_are_in_range_and_each_has_its_messages() {
+    for e in catalog() {
+        if let Kind::Choose { choices, right } = e.kind {
+            assert!(right < choices && (2..=6).contains(&choices), "{}", e.id);
+            assert_eq!(e.choice_ids().len(), choices);
+            assert_eq!(
+                e.choice_ids()[0],
+                (
+                    format!("ex-{}-choice-1", e.id),
+                    format!("ex-{}-why-1", e.id)
+                )
+            );
+        } else {
+            assert!(e.choice_ids().is_empty());
+        }
+    }
+}
+
+#[test]
+fn tolerances_include_their_bounds_and_refuse_what_is_not_finite() {
+    assert!(Tolerance::Relative(0.25).accepts(1.25, 1.0));
+    assert!(!Tolerance::Relative(0.25).accepts(1.2500001, 1.0));
+    assert!(Tolerance::Relative(0.25).accepts(-0.8, -1.0));
+    assert!(!Tolerance::Relative(0.25).accepts(0.8, -1.0));
+    assert!(Tolerance::Absolute(0.5).accepts(2.5, 3.0));
+    assert!(!Tolerance::Absolute(0.5).accepts(f64::NAN, 3.0));
+    assert!(!Tolerance::Absolute(0.5).accepts(3.0, f64::INFINITY));
+}
+
+#[test]
+fn checks_refuse_another_pages_model_and_answers_that_do_not_fit() {
+    let pid = crate::recipes::pid_step::PidParams::default();
+    let model = PageModel::PidStep(&pid);
+    let ik = find("ik-singular").unwrap();
+    assert_eq!(
+        ik.check(&model, Answer::PageState),
+        Err(CheckError::OtherPage {
+            exercise: "ik-singular",
+            page: "pid-step"
+        })
+    );
+    let tune = find("pid-tune").unwrap();
+    assert_eq!(
+        tune.check(&model, Answer::Number(1.0)),
+        Err(CheckError::AnswerDoesNotFit {
+            exercise: "pid-tune"
+        })
+    );
+    let p_only = find("pid-p-only").unwrap();
+    assert_eq!(
+        p_only.check(&model, Answer::Choice(4)),
+        Err(CheckError::NoSuchChoice {
+            choice: 4,
+            choices: 4
+        })
+    );
+    assert!(p_only.check(&model, Answer::PageState).is_err());
+    let final_y = find("pid-final-y").unwrap();
+    assert!(final_y.check(&model, Answer::Choice(0)).is_err());
+    assert!(final_y.truth(&model).is_some_and(|t| t.is_ok()));
+    assert!(tune.truth(&model).is_none());
+    // A prediction that is not a number is wrong, not an error.
+    assert_eq!(
+        final_y
+            .check(&model, Answer::Number(f64::NAN))
+            .map(|v| v.right()),
+        Ok(false)
+    );
+    // The kernel's refusal of the page's state.
+    let bad = crate::recipes::pid_step::PidParams {
+        kp: f64::NAN,
+        ..pid
+    };
+    assert!(matches!(
+        tune.check(&PageModel::PidStep(&bad), Answer::PageState),
+        Err(CheckError::Kernel(_))
+    ));
+}
