@@ -23,6 +23,7 @@ pub mod form;
 pub mod heatmap;
 pub mod ik2r;
 pub mod json_file;
+pub mod learner_progress;
 pub mod lesson;
 pub mod lesson_file;
 pub mod palette;
