@@ -3,10 +3,11 @@
 //!
 //! Shared by the pages: the URL codec ([`url`]), the parameter form ([`field`], [`form`]) and
 //! its command lines ([`command_line`]), CSV previews and envelopes ([`table`], [`envelope`]),
-//! the stepper, plots, heatmaps, colours, 3D scenes and drag handles, progress, lessons and
-//! the drill chain, the exercises and their checks ([`exercises`]), a learner's progress
-//! ([`learner_progress`]) and a class's ([`class_summary`]). One module per page holds that page's state, URL keys, readouts and hit
-//! tests ([`ik2r`], [`rrt`], [`pendulum`], [`se3_relative`], [`umeyama_2d`], [`teleop`], ...).
+//! the stepper, plots, heatmaps, colours, 3D scenes and drag handles, progress, lessons, the
+//! drill chain, the exercises and their checks ([`exercises`]), a learner's progress on them
+//! ([`learner_progress`]) and a class's ([`class_summary`]). One module per page holds that
+//! page's state, URL keys, readouts and hit tests ([`ik2r`], [`rrt`], [`pendulum`],
+//! [`se3_relative`], [`umeyama_2d`], [`teleop`], ...).
 //! Each module's first line says what it owns.
 
 pub use crate::camera3d;
