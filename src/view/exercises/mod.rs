@@ -19,11 +19,15 @@
 //! page shows a goal whose check fails as not met).
 
 use crate::error::RecipeError;
+use crate::recipes::cubic_path::CubicParams;
+use crate::recipes::dh_fk::DhParams;
 use crate::recipes::pendulum_energy::PendulumParams;
 use crate::recipes::pid_step::PidParams;
 use crate::recipes::rrt_2d::RrtSetup;
 use crate::recipes::trapezoid_profile::TrapParams;
 
+pub mod cubic_path;
+pub mod dh_fk;
 pub mod ik2r;
 pub mod pendulum;
 pub mod pid_step;
@@ -82,6 +86,10 @@ pub enum PageModel<'a> {
     Trapezoid(&'a TrapParams),
     /// `#/rrt-2d`: the run's parameters and world (`PageState::setup`).
     Rrt(&'a RrtSetup),
+    /// `#/cubic-path`: the move and its sampling.
+    CubicPath(&'a CubicParams),
+    /// `#/dh-fk`: the demo chain's joint angles.
+    DhFk(&'a DhParams),
 }
 
 impl PageModel<'_> {
@@ -93,6 +101,8 @@ impl PageModel<'_> {
             PageModel::PidStep(_) => pid_step::PAGE,
             PageModel::Trapezoid(_) => trapezoid_profile::PAGE,
             PageModel::Rrt(_) => rrt::PAGE,
+            PageModel::CubicPath(_) => cubic_path::PAGE,
+            PageModel::DhFk(_) => dh_fk::PAGE,
         }
     }
 }
@@ -315,10 +325,12 @@ impl Exercise {
 }
 
 /// Every page's exercises, page by page.
-const PAGES: [&[Exercise]; 5] = [
+const PAGES: [&[Exercise]; 7] = [
     &ik2r::EXERCISES,
+    &dh_fk::EXERCISES,
     &pendulum::EXERCISES,
     &pid_step::EXERCISES,
+    &cubic_path::EXERCISES,
     &trapezoid_profile::EXERCISES,
     &rrt::EXERCISES,
 ];
