@@ -24,6 +24,7 @@ use crate::recipes::dh_fk::DhParams;
 use crate::recipes::pendulum_energy::PendulumParams;
 use crate::recipes::pid_step::PidParams;
 use crate::recipes::rrt_2d::RrtSetup;
+use crate::recipes::se3_relative::Se3Params;
 use crate::recipes::trapezoid_profile::TrapParams;
 
 pub mod cubic_path;
@@ -32,6 +33,7 @@ pub mod ik2r;
 pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
+pub mod se3_relative;
 pub mod trapezoid_profile;
 
 /// How far a prediction may be from the truth and still be right (bounds included).
@@ -90,6 +92,8 @@ pub enum PageModel<'a> {
     CubicPath(&'a CubicParams),
     /// `#/dh-fk`: the demo chain's joint angles.
     DhFk(&'a DhParams),
+    /// `#/se3-relative`: the two poses.
+    Se3(&'a Se3Params),
 }
 
 impl PageModel<'_> {
@@ -103,6 +107,7 @@ impl PageModel<'_> {
             PageModel::Rrt(_) => rrt::PAGE,
             PageModel::CubicPath(_) => cubic_path::PAGE,
             PageModel::DhFk(_) => dh_fk::PAGE,
+            PageModel::Se3(_) => se3_relative::PAGE,
         }
     }
 }
@@ -325,9 +330,10 @@ impl Exercise {
 }
 
 /// Every page's exercises, page by page.
-const PAGES: [&[Exercise]; 7] = [
+const PAGES: [&[Exercise]; 8] = [
     &ik2r::EXERCISES,
     &dh_fk::EXERCISES,
+    &se3_relative::EXERCISES,
     &pendulum::EXERCISES,
     &pid_step::EXERCISES,
     &cubic_path::EXERCISES,
