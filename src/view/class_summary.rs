@@ -86,6 +86,35 @@ pub enum FileProblem {
     },
 }
 
+impl FileProblem {
+    /// The Fluent id of the message (the page puts the file's name before it).
+    pub fn message_id(&self) -> &'static str {
+        match self {
+            FileProblem::Unreadable(e) => e.message_id(),
+            FileProblem::Duplicate { .. } => "class-duplicate",
+        }
+    }
+
+    /// The message's arguments (name, value).
+    pub fn args(&self) -> Vec<(&'static str, String)> {
+        match self {
+            FileProblem::Unreadable(e) => e.args(),
+            FileProblem::Duplicate {
+                learner,
+                first_file,
+                same_record,
+            } => vec![
+                ("learner", learner.clone()),
+                ("first", first_file.clone()),
+                (
+                    "same",
+                    if *same_record { "same" } else { "different" }.to_owned(),
+                ),
+            ],
+        }
+    }
+}
+
 /// A file left out, by name.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RejectedFile {
@@ -418,6 +447,38 @@ mod tests {
                 ),
             ]
         );
+    }
+
+    #[test]
+    fn problems_have_messages_in_both_languages() {
+        use crate::i18n::{fluent_args, I18n, Lang};
+        let i18n = I18n::from_sources(&crate::view::exercises::MESSAGE_SOURCES);
+        let s = summarize(
+            &files(&[
+                ("a.json", file_of(Some("A"), &[])),
+                ("a2.json", file_of(Some("A"), &[("pid-tune", &[true])])),
+                ("b.json", "[]".to_owned()),
+            ]),
+            &IDS,
+        );
+        assert_eq!(s.rejected.len(), 2);
+        for r in &s.rejected {
+            for lang in Lang::ALL {
+                let text =
+                    i18n.t_args(lang, r.problem.message_id(), &fluent_args(r.problem.args()));
+                assert!(!text.contains('{'), "{text}");
+            }
+        }
+        let en = i18n.t_args(
+            Lang::En,
+            s.rejected[0].problem.message_id(),
+            &fluent_args(s.rejected[0].problem.args()),
+        );
+        assert_eq!(
+            en,
+            "A second file of A (the first is a.json) with different progress: left out; the first file's progress is shown."
+        );
+        assert_eq!(i18n.take_warnings(), Vec::<String>::new());
     }
 
     #[test]

@@ -329,6 +329,26 @@ impl Exercise {
     }
 }
 
+/// The file of the exercises' messages (and of the progress file's and the class summary's):
+/// `locales/<lang>/exercises.ftl`. The app's bundles do not hold it yet
+/// ([`crate::i18n::FILE_NAMES`]); the pages that show exercises add it.
+pub const MESSAGE_FILE: &str = "exercises.ftl";
+
+/// [`MESSAGE_FILE`] of both languages, for the tests.
+#[cfg(test)]
+pub(crate) const MESSAGE_SOURCES: [(crate::i18n::Lang, &str, &str); 2] = [
+    (
+        crate::i18n::Lang::En,
+        MESSAGE_FILE,
+        include_str!("../../../locales/en/exercises.ftl"),
+    ),
+    (
+        crate::i18n::Lang::Ja,
+        MESSAGE_FILE,
+        include_str!("../../../locales/ja/exercises.ftl"),
+    ),
+];
+
 /// Every page's exercises, page by page.
 const PAGES: [&[Exercise]; 8] = [
     &ik2r::EXERCISES,

@@ -138,3 +138,44 @@ fn checks_refuse_another_pages_model_and_answers_that_do_not_fit() {
         Err(CheckError::Kernel(_))
     ));
 }
+
+#[test]
+fn every_message_exists_in_both_languages_and_formats_cleanly() {
+    use crate::i18n::{FluentArg, I18n, Lang};
+    let i18n = I18n::from_sources(&MESSAGE_SOURCES);
+    for e in catalog() {
+        for id in e.message_ids() {
+            for lang in Lang::ALL {
+                assert!(i18n.has_message(lang, &id), "{lang:?} {id}");
+                let text = i18n.t_args(lang, &id, &[("truth", FluentArg::from("1.5 s"))]);
+                assert!(
+                    !text.is_empty() && !text.contains('{'),
+                    "{lang:?} {id}: {text}"
+                );
+            }
+        }
+        // A prediction's explanation shows the truth.
+        if matches!(e.kind, Kind::Predict { .. }) {
+            for lang in Lang::ALL {
+                let text = i18n.t_args(lang, &e.explain_id(), &[("truth", FluentArg::from("<T>"))]);
+                assert!(text.contains("<T>"), "{lang:?} {}", e.id);
+            }
+        }
+    }
+    assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+}
+
+#[test]
+fn both_message_files_hold_the_same_ids_and_not_in_the_apps_bundles() {
+    let ids = |text: &str| -> Vec<String> {
+        text.lines()
+            .filter_map(|line| line.split_once(" = ").map(|(id, _)| id))
+            .filter(|id| !id.starts_with(['#', ' ']) && !id.is_empty())
+            .map(str::to_owned)
+            .collect()
+    };
+    let (en, ja) = (ids(MESSAGE_SOURCES[0].2), ids(MESSAGE_SOURCES[1].2));
+    assert_eq!(en, ja);
+    assert!(en.len() > 100);
+    assert!(!crate::i18n::FILE_NAMES.contains(&MESSAGE_FILE));
+}

@@ -353,3 +353,53 @@ fn errors_have_message_ids_and_quoted_arguments() {
         vec![("field", "done".to_owned()), ("exercise", "3".to_owned())]
     );
 }
+
+#[test]
+fn every_error_has_a_message_in_both_languages() {
+    use crate::i18n::{fluent_args, I18n, Lang};
+    let i18n = I18n::from_sources(&exercises::MESSAGE_SOURCES);
+    let errors = [
+        ProgressError::NotText { detail: "x".into() },
+        ProgressError::Decode(RecipeError::InputUtf16 { name: "x".into() }),
+        ProgressError::TooBig { bytes: 1 },
+        ProgressError::EmptyFile,
+        ProgressError::TooDeep { line: 1, column: 9 },
+        ProgressError::NotJson { line: 1, column: 1 },
+        ProgressError::NotAnObject { kind: "array" },
+        ProgressError::NoFormat,
+        ProgressError::WrongFormat { found: "x".into() },
+        ProgressError::WrongVersion { found: 2 },
+        ProgressError::UnknownField {
+            exercise: None,
+            field: "x".into(),
+        },
+        ProgressError::UnknownField {
+            exercise: Some(1),
+            field: "x".into(),
+        },
+        missing(None, "build"),
+        missing(Some(1), "done"),
+        wrong_type(None, "exercises", Expected::List),
+        wrong_type(Some(1), "done", Expected::TrueFalse),
+        ProgressError::ExerciseNotAnObject { exercise: 1 },
+        ProgressError::TooManyExercises { count: 1001 },
+        ProgressError::BadId {
+            exercise: 1,
+            id: "X".into(),
+        },
+        ProgressError::DuplicateId { id: "x".into() },
+        ProgressError::TooManyAttempts { exercise: 1 },
+        ProgressError::Inconsistent { id: "x".into() },
+        ProgressError::NameTooLong,
+        ProgressError::BuildTooLong,
+    ];
+    for e in &errors {
+        assert!(e.message_id().starts_with("progress-error-"));
+        for lang in Lang::ALL {
+            assert!(i18n.has_message(lang, e.message_id()), "{lang:?} {e:?}");
+            let text = i18n.t_args(lang, e.message_id(), &fluent_args(e.args()));
+            assert!(!text.contains('{'), "{text}");
+        }
+    }
+    assert_eq!(i18n.take_warnings(), Vec::<String>::new());
+}
