@@ -62,6 +62,25 @@ ex-se3-swap-why-3 = The inverse of [R p] is [Rᵀ −Rᵀp]: the position is tur
 ex-se3-swap-choice-4 = The identity
 ex-se3-swap-why-4 = Only when A and B are the same pose.
 
+## #/umeyama-2d
+ex-umeyama-angle-prompt = Predict the rotation angle the fit estimates, in degrees.
+ex-umeyama-angle-hint = The targets are the points turned by the true angle, scaled and shifted, plus a little noise.
+ex-umeyama-angle-explain = The fit estimates { $truth }: close to the true 35°, off only by what the noise moves.
+ex-umeyama-exact-prompt = Goal: make the fit exact, its RMSE below 1e-9.
+ex-umeyama-exact-hint = What makes the targets differ from a perfect similarity of the points?
+ex-umeyama-exact-explain = Without noise (σ = 0) and without a mirror, the targets are exactly a scaled, turned and shifted copy of the points, and the fit recovers it up to rounding.
+ex-umeyama-mirror-prompt = Mirror the targets (y → −y before the similarity). What does the fit give?
+ex-umeyama-mirror-hint = Umeyama's method looks for s·R with R a rotation, det R = +1.
+ex-umeyama-mirror-explain = Mirrored targets would need det R = −1, which no rotation has: the method keeps R a rotation (it flips the last singular direction when det C < 0) and returns the best proper fit, with a large RMSE.
+ex-umeyama-mirror-choice-1 = The mirror as well
+ex-umeyama-mirror-why-1 = The method removes a reflection on purpose: R stays a rotation.
+ex-umeyama-mirror-choice-2 = The best rotation it can find, with a large RMSE
+ex-umeyama-mirror-why-2 = Right: a mirror is not a rotation, so the fit returns the closest proper similarity, and the RMSE shows what it cannot explain.
+ex-umeyama-mirror-choice-3 = An error: no fit exists
+ex-umeyama-mirror-why-3 = A fit always exists; this one is just poor.
+ex-umeyama-mirror-choice-4 = A negative scale
+ex-umeyama-mirror-why-4 = The scale stays positive: the reflection is handled in R's last singular direction, not by the scale.
+
 ## #/pendulum-energy
 ex-pendulum-euler-dt-prompt = With Euler at the page's step h, predict the relative energy drift over the whole run: the energy error at the end, in % of E(0).
 ex-pendulum-euler-dt-hint = Semi-implicit Euler does not keep the energy exactly; its error shrinks with the step about as h². Try a run with a larger h, then scale.

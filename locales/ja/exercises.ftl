@@ -62,6 +62,25 @@ ex-se3-swap-why-3 = [R p] の逆は [Rᵀ −Rᵀp] で、位置も回転され�
 ex-se3-swap-choice-4 = 単位行列になる
 ex-se3-swap-why-4 = A と B が同じ姿勢のときだけです。
 
+## #/umeyama-2d
+ex-umeyama-angle-prompt = 当てはめが推定する回転角を度で予想してください。
+ex-umeyama-angle-hint = 目標点は、点を真の角度だけ回し、拡大して平行移動し、少しの雑音を加えたものです。
+ex-umeyama-angle-explain = 当てはめの推定は { $truth } です。真の 35° に近く、ずれは雑音の分だけです。
+ex-umeyama-exact-prompt = 目標：当てはめを厳密にしてください（RMSE が 1e-9 未満）。
+ex-umeyama-exact-hint = 目標点が点の完全な相似変換と違ってしまう原因は何でしょう。
+ex-umeyama-exact-explain = 雑音がなく（σ = 0）鏡映もなければ、目標点は点を拡大・回転・平行移動した正確な写しなので、当てはめは丸め誤差の範囲でそれを復元します。
+ex-umeyama-mirror-prompt = 目標点を鏡映します（相似変換の前に y → −y）。当てはめは何を返すでしょう。
+ex-umeyama-mirror-hint = Umeyama の方法は R を回転（det R = +1）として s·R を探します。
+ex-umeyama-mirror-explain = 鏡映された目標点には det R = −1 が必要ですが、そんな回転はありません。この方法は R を回転のまま保ち（det C < 0 なら最後の特異方向を反転）、回転で表せる最良の当てはめを、大きな RMSE とともに返します。
+ex-umeyama-mirror-choice-1 = 鏡映も含めて返す
+ex-umeyama-mirror-why-1 = この方法は鏡映をわざと取り除くので、R は回転のままです。
+ex-umeyama-mirror-choice-2 = 見つけられる最良の回転を、大きな RMSE とともに返す
+ex-umeyama-mirror-why-2 = 正解：鏡映は回転ではないので、当てはめは最も近い（鏡映なしの）相似変換を返し、説明できない分が RMSE に表れます。
+ex-umeyama-mirror-choice-3 = エラー：当てはめは存在しない
+ex-umeyama-mirror-why-3 = 当てはめは必ず存在します。ただ、良くないだけです。
+ex-umeyama-mirror-choice-4 = 負の倍率を返す
+ex-umeyama-mirror-why-4 = 倍率は正のままです。鏡映は倍率ではなく、R の最後の特異方向で処理されます。
+
 ## #/pendulum-energy
 ex-pendulum-euler-dt-prompt = ページの時間刻み h でオイラー法を使うとき、実行全体でのエネルギーの相対的なずれ（終了時のエネルギー誤差、E(0) に対する %）を予想してください。
 ex-pendulum-euler-dt-hint = 半陰的オイラー法はエネルギーを厳密には保ちません。誤差はおよそ h² に比例して小さくなります。大きな h で一度走らせてから、比で見積もってみましょう。

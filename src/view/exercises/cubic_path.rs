@@ -5,7 +5,7 @@
 //! For the cubic from `q0` to `q1` in `T` with zero end velocities: `qd` peaks at `T/2` at
 //! `1.5 Δ / T`, `|qdd|` is largest at both ends, `6 |Δ| / T²`.
 
-use super::{model_of, CheckError, Exercise, PageModel, Tolerance};
+use super::exercise::{model_of, CheckError, Exercise, PageModel, Tolerance};
 use crate::recipes::cubic_path::{compute, CubicParams};
 use crate::view::cubic_path::readouts;
 
@@ -62,9 +62,13 @@ fn speed_limit_met(model: &PageModel) -> Result<bool, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::{find, Answer, Verdict};
+    use crate::view::exercises::exercise::{Answer, Verdict};
     #[cfg(target_family = "wasm")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    fn find(id: &str) -> Option<&'static Exercise> {
+        EXERCISES.iter().find(|e| e.id == id)
+    }
 
     fn check(id: &str, p: &CubicParams, answer: Answer) -> Verdict {
         find(id)

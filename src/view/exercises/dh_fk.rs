@@ -6,7 +6,7 @@
 //! joint 2 pitches the 0.25 m link, so frame 3's origin is at height `0.10 − 0.25 sin q2`;
 //! joint 3 turns frame 3 about its own z axis at that origin (`a2` comes before the joint).
 
-use super::{model_of, CheckError, Exercise, PageModel, Tolerance};
+use super::exercise::{model_of, CheckError, Exercise, PageModel, Tolerance};
 use crate::recipes::dh_fk::DhParams;
 
 /// The page's route id.
@@ -56,9 +56,13 @@ fn raise_met(model: &PageModel) -> Result<bool, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::{find, Answer, Verdict};
+    use crate::view::exercises::exercise::{Answer, Verdict};
     #[cfg(target_family = "wasm")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    fn find(id: &str) -> Option<&'static Exercise> {
+        EXERCISES.iter().find(|e| e.id == id)
+    }
 
     fn check(id: &str, p: &DhParams, answer: Answer) -> Verdict {
         find(id)

@@ -9,7 +9,7 @@
 
 use std::f64::consts::PI;
 
-use super::{model_of, CheckError, Exercise, PageModel, Tolerance};
+use super::exercise::{model_of, CheckError, Exercise, PageModel, Tolerance};
 use crate::planar2r::Arm;
 use crate::view::ik2r::State;
 
@@ -104,9 +104,13 @@ fn best_elbow_truth(model: &PageModel) -> Result<f64, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::{find, Answer, Verdict};
+    use crate::view::exercises::exercise::{Answer, Verdict};
     #[cfg(target_family = "wasm")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    fn find(id: &str) -> Option<&'static Exercise> {
+        EXERCISES.iter().find(|e| e.id == id)
+    }
 
     fn check(id: &str, state: &State, answer: Answer) -> Verdict {
         let exercise = find(id).unwrap();

@@ -6,7 +6,7 @@
 //! [`crate::view::pendulum`]): `e(T) = (E(T) + W(T) − E(0)) / E(0)`, the capsule's true
 //! energy plus the work the damper took out, against the start, here in % of `E(0)`.
 
-use super::{model_of, CheckError, Exercise, PageModel, Tolerance};
+use super::exercise::{model_of, CheckError, Exercise, PageModel, Tolerance};
 use crate::recipes::pendulum_energy::{simulate, Integrator, PendulumParams};
 use crate::view::pendulum::Track;
 
@@ -92,9 +92,13 @@ fn over_top_met(model: &PageModel) -> Result<bool, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::{find, Answer, Verdict};
+    use crate::view::exercises::exercise::{Answer, Verdict};
     #[cfg(target_family = "wasm")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    fn find(id: &str) -> Option<&'static Exercise> {
+        EXERCISES.iter().find(|e| e.id == id)
+    }
 
     fn check(id: &str, params: &PendulumParams, answer: Answer) -> Verdict {
         let exercise = find(id).unwrap();

@@ -3,7 +3,7 @@
 //! overshoot of the page's gains. Every figure is the page's own
 //! ([`crate::view::pid_step::figures`]: overshoot in %, settling in the 2 % band).
 
-use super::{model_of, CheckError, Exercise, PageModel, Tolerance};
+use super::exercise::{model_of, CheckError, Exercise, PageModel, Tolerance};
 use crate::recipes::pid_step::{simulate, PidParams};
 use crate::view::pid_step::{figures, StepFigures};
 
@@ -86,10 +86,14 @@ fn overshoot_truth(model: &PageModel) -> Result<f64, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::{find, Answer, Verdict};
+    use crate::view::exercises::exercise::{Answer, Verdict};
     use crate::view::pid_step::TUNED_GAINS;
     #[cfg(target_family = "wasm")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    fn find(id: &str) -> Option<&'static Exercise> {
+        EXERCISES.iter().find(|e| e.id == id)
+    }
 
     fn check(id: &str, p: &PidParams, answer: Answer) -> Verdict {
         find(id)

@@ -2,7 +2,7 @@
 //! iterations, wall the goal off, predict the found path's length, and why an edge may cut
 //! a box's corner. The checks run the kernel ([`rrt_2d::run_setup`]) on the page's setup.
 
-use super::{model_of, CheckError, Exercise, PageModel, Tolerance};
+use super::exercise::{model_of, CheckError, Exercise, PageModel, Tolerance};
 use crate::recipes::kernel::Progress;
 use crate::recipes::rrt_2d::{self, Rrt, RrtSetup, DEFAULT_MAX_ITER};
 
@@ -83,9 +83,13 @@ fn wall_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::rrt_2d::{check_points, segment_clear, Obstacle, OBSTACLE};
-    use crate::view::exercises::{find, Answer, Verdict};
+    use crate::view::exercises::exercise::{Answer, Verdict};
     #[cfg(target_family = "wasm")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    fn find(id: &str) -> Option<&'static Exercise> {
+        EXERCISES.iter().find(|e| e.id == id)
+    }
 
     fn check(id: &str, setup: &RrtSetup, answer: Answer) -> Verdict {
         find(id)

@@ -4,7 +4,7 @@
 
 use nalgebra::Matrix3;
 
-use super::{model_of, CheckError, Exercise, PageModel, Tolerance};
+use super::exercise::{model_of, CheckError, Exercise, PageModel, Tolerance};
 use crate::recipes::se3_relative::{rpy_to_rotation, Pose, Se3Params};
 
 /// The page's route id.
@@ -70,9 +70,13 @@ fn ahead_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::se3_relative::relative_transform;
-    use crate::view::exercises::{find, Answer, Verdict};
+    use crate::view::exercises::exercise::{Answer, Verdict};
     #[cfg(target_family = "wasm")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    fn find(id: &str) -> Option<&'static Exercise> {
+        EXERCISES.iter().find(|e| e.id == id)
+    }
 
     fn check(id: &str, p: &Se3Params, answer: Answer) -> Verdict {
         find(id).unwrap().check(&PageModel::Se3(p), answer).unwrap()

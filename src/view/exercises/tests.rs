@@ -179,3 +179,77 @@ fn both_message_files_hold_the_same_ids_and_not_in_the_apps_bundles() {
     assert!(en.len() > 100);
     assert!(!crate::i18n::FILE_NAMES.contains(&MESSAGE_FILE));
 }
+
+#[test]
+fn each_page_module_lists_its_own_exercises_and_model() {
+    use crate::recipes::{
+        cubic_path::CubicParams, dh_fk::DhParams, pendulum_energy::PendulumParams,
+        pid_step::PidParams, rrt_2d::RrtSetup, se3_relative::Se3Params,
+        trapezoid_profile::TrapParams, umeyama_2d::UmeyamaSetup,
+    };
+    let ik = crate::view::ik2r::State::default();
+    let (pendulum, pid, trap) = (
+        PendulumParams::default(),
+        PidParams::default(),
+        TrapParams::default(),
+    );
+    let (rrt, cubic, dh) = (
+        RrtSetup::default(),
+        CubicParams::default(),
+        DhParams::default(),
+    );
+    let (se3, umeyama) = (Se3Params::default(), UmeyamaSetup::default());
+    let pages: [(&str, &[Exercise], PageModel); 9] = [
+        (ik2r::PAGE, &ik2r::EXERCISES, PageModel::Ik2r(&ik)),
+        (dh_fk::PAGE, &dh_fk::EXERCISES, PageModel::DhFk(&dh)),
+        (
+            se3_relative::PAGE,
+            &se3_relative::EXERCISES,
+            PageModel::Se3(&se3),
+        ),
+        (
+            umeyama_2d::PAGE,
+            &umeyama_2d::EXERCISES,
+            PageModel::Umeyama(&umeyama),
+        ),
+        (
+            pendulum::PAGE,
+            &pendulum::EXERCISES,
+            PageModel::Pendulum(&pendulum),
+        ),
+        (
+            pid_step::PAGE,
+            &pid_step::EXERCISES,
+            PageModel::PidStep(&pid),
+        ),
+        (
+            cubic_path::PAGE,
+            &cubic_path::EXERCISES,
+            PageModel::CubicPath(&cubic),
+        ),
+        (
+            trapezoid_profile::PAGE,
+            &trapezoid_profile::EXERCISES,
+            PageModel::Trapezoid(&trap),
+        ),
+        (rrt::PAGE, &rrt::EXERCISES, PageModel::Rrt(&rrt)),
+    ];
+    for (page, exercises, model) in pages {
+        assert_eq!(model.page(), page);
+        assert!(exercises.len() >= 3, "{page}");
+        for e in exercises {
+            assert_eq!(e.page, page, "{}", e.id);
+            // Every check runs on its page's default state without an error.
+            let answer = match e.kind {
+                Kind::Predict { .. } => Answer::Number(0.0),
+                Kind::Goal => Answer::PageState,
+                Kind::Choose { .. } => Answer::Choice(0),
+            };
+            assert!(e.check(&model, answer).is_ok(), "{}", e.id);
+        }
+    }
+    assert_eq!(
+        catalog().count(),
+        pages.iter().map(|(_, list, _)| list.len()).sum::<usize>()
+    );
+}

@@ -3,7 +3,7 @@
 //! move. The phases are the page's ([`crate::view::trapezoid_profile::phases`], the kernel's
 //! operations).
 
-use super::{model_of, CheckError, Exercise, PageModel, Tolerance};
+use super::exercise::{model_of, CheckError, Exercise, PageModel, Tolerance};
 use crate::recipes::trapezoid_profile::TrapParams;
 use crate::view::trapezoid_profile::{phases, Phases};
 
@@ -69,9 +69,13 @@ fn total_time_truth(model: &PageModel) -> Result<f64, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::trapezoid_profile::compute;
-    use crate::view::exercises::{find, Answer, Verdict};
+    use crate::view::exercises::exercise::{Answer, Verdict};
     #[cfg(target_family = "wasm")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    fn find(id: &str) -> Option<&'static Exercise> {
+        EXERCISES.iter().find(|e| e.id == id)
+    }
 
     fn check(id: &str, p: &TrapParams, answer: Answer) -> Verdict {
         find(id)
