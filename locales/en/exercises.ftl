@@ -164,6 +164,23 @@ ex-trap-short-peak-why-3 = Half of vmax has no reason here: the peak comes from 
 ex-trap-short-peak-choice-4 = 0.2 m/s
 ex-trap-short-peak-why-4 = That is the distance, not a speed.
 
+## #/traj-resample
+ex-traj-rows-prompt = Predict how many rows (without the header) the resampled table has at the page's dt.
+ex-traj-rows-hint = The new grid runs from the first sample's time in steps of dt while it stays at or before the last sample's time.
+ex-traj-rows-explain = The table has { $truth } rows: one per grid time from the first sample to the last, the end included when a step lands on it.
+ex-traj-miss-peak-prompt = Goal: choose a dt at which the resampled q1 misses the trajectory's highest q1 by at least 0.05 rad.
+ex-traj-miss-peak-hint = The peak sits at one sample time. Which grids step over that time?
+ex-traj-miss-peak-explain = Linear interpolation only reproduces a sample when a grid time lands on it: a coarse grid that steps over the peak cuts the corner, and the resampled curve never gets as high.
+ex-traj-between-prompt = Can the resampled values go above the largest original sample (or below the smallest)?
+ex-traj-between-hint = Each new value is computed from the two samples around its time.
+ex-traj-between-explain = Linear interpolation puts every new value on the straight line between the two samples around it: it never leaves their range. A cubic spline could.
+ex-traj-between-choice-1 = Yes: interpolation overshoots between samples
+ex-traj-between-why-1 = That is what a spline can do; a straight line between two samples stays between them.
+ex-traj-between-choice-2 = No: every new value lies between the two samples around it
+ex-traj-between-why-2 = Right: np.interp draws straight lines between neighbouring samples.
+ex-traj-between-choice-3 = Only when dt is smaller than the spacing of the samples
+ex-traj-between-why-3 = The step does not matter: any grid time falls on one of the straight segments.
+
 ## #/rrt-2d
 ex-rrt-300-prompt = Goal: move or resize the boxes so that with seed 7 the tree reaches the goal, but only after more than 300 iterations.
 ex-rrt-300-hint = The recipe's world takes 120 iterations. Make the way around longer without closing it.

@@ -9,6 +9,7 @@ use crate::recipes::pendulum_energy::PendulumParams;
 use crate::recipes::pid_step::PidParams;
 use crate::recipes::rrt_2d::RrtSetup;
 use crate::recipes::se3_relative::Se3Params;
+use crate::recipes::traj_resample::Trajectory;
 use crate::recipes::trapezoid_profile::TrapParams;
 use crate::recipes::umeyama_2d::UmeyamaSetup;
 
@@ -72,6 +73,9 @@ pub enum PageModel<'a> {
     Se3(&'a Se3Params),
     /// `#/umeyama-2d`: the run's arguments, true similarity and points.
     Umeyama(&'a UmeyamaSetup),
+    /// `#/traj-resample`: the trajectory read (the sample or the opened file) and the step
+    /// `dt`, s.
+    TrajResample(&'a Trajectory, f64),
 }
 
 impl PageModel<'_> {
@@ -87,6 +91,7 @@ impl PageModel<'_> {
             PageModel::DhFk(_) => "dh-fk",
             PageModel::Se3(_) => "se3-relative",
             PageModel::Umeyama(_) => "umeyama-2d",
+            PageModel::TrajResample(..) => "traj-resample",
         }
     }
 }

@@ -26,6 +26,7 @@ pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
 pub mod se3_relative;
+pub mod traj_resample;
 pub mod trapezoid_profile;
 pub mod umeyama_2d;
 
@@ -52,7 +53,7 @@ pub(crate) const MESSAGE_SOURCES: [(crate::i18n::Lang, &str, &str); 2] = [
 ];
 
 /// Every page's exercises, page by page.
-const PAGES: [&[Exercise]; 9] = [
+const PAGES: [&[Exercise]; 10] = [
     &ik2r::EXERCISES,
     &dh_fk::EXERCISES,
     &se3_relative::EXERCISES,
@@ -61,6 +62,7 @@ const PAGES: [&[Exercise]; 9] = [
     &pid_step::EXERCISES,
     &cubic_path::EXERCISES,
     &trapezoid_profile::EXERCISES,
+    &traj_resample::EXERCISES,
     &rrt::EXERCISES,
 ];
 

@@ -199,7 +199,10 @@ fn each_page_module_lists_its_own_exercises_and_model() {
         DhParams::default(),
     );
     let (se3, umeyama) = (Se3Params::default(), UmeyamaSetup::default());
-    let pages: [(&str, &[Exercise], PageModel); 9] = [
+    let sample =
+        crate::recipes::traj_resample::parse_trajectory(crate::recipes::traj_resample::SAMPLE)
+            .unwrap();
+    let pages: [(&str, &[Exercise], PageModel); 10] = [
         (ik2r::PAGE, &ik2r::EXERCISES, PageModel::Ik2r(&ik)),
         (dh_fk::PAGE, &dh_fk::EXERCISES, PageModel::DhFk(&dh)),
         (
@@ -231,6 +234,11 @@ fn each_page_module_lists_its_own_exercises_and_model() {
             trapezoid_profile::PAGE,
             &trapezoid_profile::EXERCISES,
             PageModel::Trapezoid(&trap),
+        ),
+        (
+            traj_resample::PAGE,
+            &traj_resample::EXERCISES,
+            PageModel::TrajResample(&sample, 0.02),
         ),
         (rrt::PAGE, &rrt::EXERCISES, PageModel::Rrt(&rrt)),
     ];
