@@ -203,6 +203,29 @@ ex-rrt-wall-prompt = Goal: place the boxes so that the tree cannot reach the goa
 ex-rrt-wall-hint = The boxes can touch the square's edges. What does the tree need to get past?
 ex-rrt-wall-explain = A closed wall leaves no free path: a complete planner would say so, but an RRT just spends its whole budget. Running out of iterations never proves that no path exists.
 
+## #/teleop
+ex-teleop-near-singular-prompt = Goal: drive the arm into a pose whose manipulability w is below 0.001 m², within the joints' limits.
+ex-teleop-near-singular-hint = Only the elbow angle q2 changes w = l1·l2·|sin q2|. Stretch the arm out (or fold it) slowly.
+ex-teleop-near-singular-explain = Near q2 = 0 the arm is almost straight: w falls toward zero, and a hand command along the arm needs ever larger joint speeds.
+ex-teleop-which-joint-prompt = Which joint's angle decides whether the 3R arm is singular?
+ex-teleop-which-joint-hint = Subtract neighbouring columns of J: det J = l1·l2·sin q2.
+ex-teleop-which-joint-explain = det J = l1·l2·sin q2: the elbow alone decides it. The shoulder turns the whole arm, and the wrist's column can be subtracted from the others, which removes it from the determinant.
+ex-teleop-which-joint-choice-1 = The shoulder, q1
+ex-teleop-which-joint-why-1 = q1 turns the whole arm: w is the same at every q1.
+ex-teleop-which-joint-choice-2 = The elbow, q2
+ex-teleop-which-joint-why-2 = Right: det J = l1·l2·sin q2 vanishes at q2 = 0 and q2 = ±π.
+ex-teleop-which-joint-choice-3 = The wrist, q3
+ex-teleop-which-joint-why-3 = Subtracting the wrist's column from the others removes l3 from the determinant: q3 never changes it.
+ex-teleop-calm-method-prompt = With the arm nearly straight, the same small hand command goes to pinv and to DLS. Which gives the smaller joint step?
+ex-teleop-calm-method-hint = pinv inverts J exactly; DLS adds λ² to J Jᵀ before inverting.
+ex-teleop-calm-method-explain = Near a singularity J⁻¹ grows like 1/σ_min, so pinv asks for huge joint steps; DLS's λ² keeps J Jᵀ + λ² I away from singular, trading a little tracking error for calm joints.
+ex-teleop-calm-method-choice-1 = pinv
+ex-teleop-calm-method-why-1 = Its step grows like 1/σ_min: without damping nothing limits it near the singularity.
+ex-teleop-calm-method-choice-2 = DLS
+ex-teleop-calm-method-why-2 = Right: the damping λ² bounds the step, at the cost of a small error in the hand's motion.
+ex-teleop-calm-method-choice-3 = Both the same
+ex-teleop-calm-method-why-3 = They agree far from singularities, where λ² is tiny beside J Jᵀ; near one they differ by orders of magnitude.
+
 ## The learner's progress file (bsv_progress.json)
 progress-error-not-text = This file could not be read as progress: { $detail }
 progress-error-too-big = This file is { $size } ({ $bytes } bytes); a progress file may be at most { $limit }. It was not read.

@@ -203,6 +203,29 @@ ex-rrt-wall-prompt = 目標：木が実行中にゴールへ届けないよう�
 ex-rrt-wall-hint = 箱は正方形の縁に接してもかまいません。木は何を越えられなければよいでしょう。
 ex-rrt-wall-explain = 閉じた壁があれば通れる経路はありません。完全なプランナーならそう答えますが、RRT は予算を使い切るだけです。反復が尽きても、経路がないことの証明にはなりません。
 
+## #/teleop
+ex-teleop-near-singular-prompt = 目標：関節の可動範囲の中で、可操作度 w が 0.001 m² 未満になる姿勢まで腕を動かしてください。
+ex-teleop-near-singular-hint = w = l1·l2·|sin q2| を変えるのは肘の角度 q2 だけです。腕をゆっくり伸ばして（または折りたたんで）みましょう。
+ex-teleop-near-singular-explain = q2 = 0 の近くでは腕はほぼまっすぐで、w は 0 に近づき、腕に沿った向きの手先の指令にはどんどん大きな関節速度が必要になります。
+ex-teleop-which-joint-prompt = 3R アームが特異かどうかを決めるのは、どの関節の角度でしょう。
+ex-teleop-which-joint-hint = J の隣り合う列を引き算してみましょう：det J = l1·l2·sin q2 です。
+ex-teleop-which-joint-explain = det J = l1·l2·sin q2 なので、決めるのは肘だけです。肩は腕全体を回し、手首の列は他の列から引き算で消せるので行列式に残りません。
+ex-teleop-which-joint-choice-1 = 肩（q1）
+ex-teleop-which-joint-why-1 = q1 は腕全体を回すだけで、w はどの q1 でも同じです。
+ex-teleop-which-joint-choice-2 = 肘（q2）
+ex-teleop-which-joint-why-2 = 正解：det J = l1·l2·sin q2 は q2 = 0 と q2 = ±π で 0 になります。
+ex-teleop-which-joint-choice-3 = 手首（q3）
+ex-teleop-which-joint-why-3 = 手首の列を他の列から引くと行列式から l3 が消えるので、q3 は行列式を変えません。
+ex-teleop-calm-method-prompt = 腕がほぼまっすぐなとき、同じ小さな手先の指令を pinv と DLS に与えます。関節の動きが小さいのはどちらでしょう。
+ex-teleop-calm-method-hint = pinv は J をそのまま逆行列にし、DLS は逆行列を取る前に J Jᵀ に λ² を足します。
+ex-teleop-calm-method-explain = 特異点の近くでは J⁻¹ が 1/σ_min のように大きくなるので、pinv は巨大な関節の動きを求めます。DLS の λ² は J Jᵀ + λ² I を特異から遠ざけ、手先のわずかな追従誤差と引き換えに関節を落ち着かせます。
+ex-teleop-calm-method-choice-1 = pinv
+ex-teleop-calm-method-why-1 = 動きは 1/σ_min のように大きくなります。減衰がないので、特異点の近くでそれを抑えるものがありません。
+ex-teleop-calm-method-choice-2 = DLS
+ex-teleop-calm-method-why-2 = 正解：減衰 λ² が関節の動きを抑えます。代わりに手先の動きにわずかな誤差が出ます。
+ex-teleop-calm-method-choice-3 = どちらも同じ
+ex-teleop-calm-method-why-3 = 特異点から遠く、λ² が J Jᵀ に比べて小さいところでは一致しますが、特異点の近くでは何桁も違います。
+
 ## 学習者の進み具合のファイル（bsv_progress.json）
 progress-error-not-text = このファイルは進み具合として読めませんでした：{ $detail }
 progress-error-too-big = このファイルは { $size }（{ $bytes } バイト）あります。進み具合のファイルは { $limit } までです。ファイルは読み込んでいません。

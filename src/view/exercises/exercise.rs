@@ -12,6 +12,7 @@ use crate::recipes::se3_relative::Se3Params;
 use crate::recipes::traj_resample::Trajectory;
 use crate::recipes::trapezoid_profile::TrapParams;
 use crate::recipes::umeyama_2d::UmeyamaSetup;
+use crate::teleop::ArmParams;
 
 /// How far a prediction may be from the truth and still be right (bounds included).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -76,6 +77,8 @@ pub enum PageModel<'a> {
     /// `#/traj-resample`: the trajectory read (the sample or the opened file) and the step
     /// `dt`, s.
     TrajResample(&'a Trajectory, f64),
+    /// `#/teleop`: the Robot Pilot's arm and its joint angles, rad.
+    Teleop { arm: &'a ArmParams, q: [f64; 3] },
 }
 
 impl PageModel<'_> {
@@ -92,6 +95,7 @@ impl PageModel<'_> {
             PageModel::Se3(_) => "se3-relative",
             PageModel::Umeyama(_) => "umeyama-2d",
             PageModel::TrajResample(..) => "traj-resample",
+            PageModel::Teleop { .. } => "teleop",
         }
     }
 }

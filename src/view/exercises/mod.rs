@@ -26,6 +26,7 @@ pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
 pub mod se3_relative;
+pub mod teleop;
 pub mod traj_resample;
 pub mod trapezoid_profile;
 pub mod umeyama_2d;
@@ -53,7 +54,7 @@ pub(crate) const MESSAGE_SOURCES: [(crate::i18n::Lang, &str, &str); 2] = [
 ];
 
 /// Every page's exercises, page by page.
-const PAGES: [&[Exercise]; 10] = [
+const PAGES: [&[Exercise]; 11] = [
     &ik2r::EXERCISES,
     &dh_fk::EXERCISES,
     &se3_relative::EXERCISES,
@@ -64,6 +65,7 @@ const PAGES: [&[Exercise]; 10] = [
     &trapezoid_profile::EXERCISES,
     &traj_resample::EXERCISES,
     &rrt::EXERCISES,
+    &teleop::EXERCISES,
 ];
 
 /// Every exercise, page by page in the order each page lists them.

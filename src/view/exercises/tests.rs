@@ -202,7 +202,8 @@ fn each_page_module_lists_its_own_exercises_and_model() {
     let sample =
         crate::recipes::traj_resample::parse_trajectory(crate::recipes::traj_resample::SAMPLE)
             .unwrap();
-    let pages: [(&str, &[Exercise], PageModel); 10] = [
+    let arm = crate::teleop::ArmParams::DEFAULT;
+    let pages: [(&str, &[Exercise], PageModel); 11] = [
         (ik2r::PAGE, &ik2r::EXERCISES, PageModel::Ik2r(&ik)),
         (dh_fk::PAGE, &dh_fk::EXERCISES, PageModel::DhFk(&dh)),
         (
@@ -241,6 +242,14 @@ fn each_page_module_lists_its_own_exercises_and_model() {
             PageModel::TrajResample(&sample, 0.02),
         ),
         (rrt::PAGE, &rrt::EXERCISES, PageModel::Rrt(&rrt)),
+        (
+            teleop::PAGE,
+            &teleop::EXERCISES,
+            PageModel::Teleop {
+                arm: &arm,
+                q: [0.3, 0.8, 0.0],
+            },
+        ),
     ];
     for (page, exercises, model) in pages {
         assert_eq!(model.page(), page);
