@@ -226,6 +226,29 @@ ex-teleop-calm-method-why-2 = Right: the damping λ² bounds the step, at the co
 ex-teleop-calm-method-choice-3 = Both the same
 ex-teleop-calm-method-why-3 = They agree far from singularities, where λ² is tiny beside J Jᵀ; near one they differ by orders of magnitude.
 
+## #/so101
+ex-so101-low-w-prompt = Goal: bring the SO-101 to a pose whose manipulability w is below 0.001 m³, with every joint within its range.
+ex-so101-low-w-hint = w falls where the arm is stretched out or folded up. Try bending the elbow far.
+ex-so101-low-w-explain = With the elbow folded the tool's possible motions flatten: one direction of the velocity ellipsoid shrinks, and so does its volume w.
+ex-so101-pan-prompt = Turn the shoulder pan (joint 1) and keep the other joints. What happens to w?
+ex-so101-pan-hint = The pan joint turns the whole arm about the vertical axis.
+ex-so101-pan-explain = Turning the whole arm about the vertical turns its velocity ellipsoid with it, without changing its shape: w stays the same.
+ex-so101-pan-choice-1 = It stays the same
+ex-so101-pan-why-1 = Right: the pan turns the arm rigidly, and a turned ellipsoid has the same volume.
+ex-so101-pan-choice-2 = It grows as the arm turns toward the side
+ex-so101-pan-why-2 = Nothing about the arm's shape changes with the pan; only its heading does.
+ex-so101-pan-choice-3 = It falls to zero at ±90°
+ex-so101-pan-why-3 = Singular poses come from the shape of the arm (stretched, folded), not from where it points.
+ex-so101-five-joints-prompt = The SO-101 has five joints; the tool's pose has six numbers (x, y, z and three angles). What follows?
+ex-so101-five-joints-hint = Count the columns of the 6×5 Jacobian: how many independent tool motions can five joint speeds make?
+ex-so101-five-joints-explain = Five joint speeds make at most five independent tool motions out of six: J Jᵀ (6×6) is singular at every pose, so at each position some orientations are out of reach, and the IK can only come as close to a commanded motion as those five allow.
+ex-so101-five-joints-choice-1 = It can take any position with any orientation within its reach
+ex-so101-five-joints-why-1 = That needs six independent motions; five joints give at most five.
+ex-so101-five-joints-choice-2 = Not every orientation at every position: one direction of the tool's motion is always missing
+ex-so101-five-joints-why-2 = Right: the 6×5 Jacobian has rank five at most.
+ex-so101-five-joints-choice-3 = It has a joint to spare (it is redundant)
+ex-so101-five-joints-why-3 = A redundant arm has more joints than the task has numbers; this one has fewer.
+
 ## The learner's progress file (bsv_progress.json)
 progress-error-not-text = This file could not be read as progress: { $detail }
 progress-error-too-big = This file is { $size } ({ $bytes } bytes); a progress file may be at most { $limit }. It was not read.

@@ -79,6 +79,8 @@ pub enum PageModel<'a> {
     TrajResample(&'a Trajectory, f64),
     /// `#/teleop`: the Robot Pilot's arm and its joint angles, rad.
     Teleop { arm: &'a ArmParams, q: [f64; 3] },
+    /// `#/so101`: the SO-101's five joint angles, rad.
+    So101 { q: [f64; 5] },
 }
 
 impl PageModel<'_> {
@@ -96,6 +98,7 @@ impl PageModel<'_> {
             PageModel::Umeyama(_) => "umeyama-2d",
             PageModel::TrajResample(..) => "traj-resample",
             PageModel::Teleop { .. } => "teleop",
+            PageModel::So101 { .. } => "so101",
         }
     }
 }

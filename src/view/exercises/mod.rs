@@ -26,6 +26,7 @@ pub mod pendulum;
 pub mod pid_step;
 pub mod rrt;
 pub mod se3_relative;
+pub mod so101;
 pub mod teleop;
 pub mod traj_resample;
 pub mod trapezoid_profile;
@@ -54,7 +55,7 @@ pub(crate) const MESSAGE_SOURCES: [(crate::i18n::Lang, &str, &str); 2] = [
 ];
 
 /// Every page's exercises, page by page.
-const PAGES: [&[Exercise]; 11] = [
+const PAGES: [&[Exercise]; 12] = [
     &ik2r::EXERCISES,
     &dh_fk::EXERCISES,
     &se3_relative::EXERCISES,
@@ -66,6 +67,7 @@ const PAGES: [&[Exercise]; 11] = [
     &traj_resample::EXERCISES,
     &rrt::EXERCISES,
     &teleop::EXERCISES,
+    &so101::EXERCISES,
 ];
 
 /// Every exercise, page by page in the order each page lists them.

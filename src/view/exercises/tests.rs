@@ -203,7 +203,7 @@ fn each_page_module_lists_its_own_exercises_and_model() {
         crate::recipes::traj_resample::parse_trajectory(crate::recipes::traj_resample::SAMPLE)
             .unwrap();
     let arm = crate::teleop::ArmParams::DEFAULT;
-    let pages: [(&str, &[Exercise], PageModel); 11] = [
+    let pages: [(&str, &[Exercise], PageModel); 12] = [
         (ik2r::PAGE, &ik2r::EXERCISES, PageModel::Ik2r(&ik)),
         (dh_fk::PAGE, &dh_fk::EXERCISES, PageModel::DhFk(&dh)),
         (
@@ -249,6 +249,11 @@ fn each_page_module_lists_its_own_exercises_and_model() {
                 arm: &arm,
                 q: [0.3, 0.8, 0.0],
             },
+        ),
+        (
+            so101::PAGE,
+            &so101::EXERCISES,
+            PageModel::So101 { q: [0.0; 5] },
         ),
     ];
     for (page, exercises, model) in pages {
