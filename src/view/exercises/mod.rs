@@ -1,6 +1,8 @@
-//! The exercises of the drill pages: what each asks (its kind, its page, the ids of its
-//! messages) and its check, a pure function of the page's view model and the kernels' outputs
-//! (never of text on the page). One file per page holds that page's exercises and checks.
+//! The exercises of the drill and pilot pages: what each asks (its kind, its page, the ids of
+//! its messages) and its check, a pure function of the page's view model and the kernels'
+//! outputs (never of text on the page). [`exercise`] holds what an exercise is made of; one
+//! file per page holds that page's exercises and checks; this module lists them all
+//! ([`catalog`]).
 //!
 //! Three kinds:
 //! - **predict**: the learner commits a number in the exercise's unit; it is right when it lies
@@ -17,6 +19,10 @@
 //! [`Verdict`] (with the truth beside a prediction), or a [`CheckError`] when the model is
 //! another page's, the answer does not fit the exercise, or the kernel refuses the state (the
 //! page shows a goal whose check fails as not met).
+//!
+//! A goal is met by the state the page shows, however it got there (a teacher's link may set
+//! it up); recording it done is the page's part ([`crate::view::learner_progress`]), when the
+//! learner uses the page.
 
 pub mod cubic_path;
 pub mod dh_fk;
