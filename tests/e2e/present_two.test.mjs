@@ -6,6 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { serveApp, OUT, openApp } from './harness.mjs';
+import { violations } from './axe.mjs';
 
 const server = serveApp();
 
@@ -71,6 +72,7 @@ test('two windows: the presenter view and the room\'s window keep in step, keys 
     await picture.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
     await picture.locator('[data-readout="iteration"]').waitFor();
     await presenter.screenshot({ path: join(OUT, 'present-two-presenter-en.png') });
+    assert.deepEqual([...(await violations(presenter, 'presenter')), ...(await violations(audience, 'room'))], []);
     await audience.screenshot({ path: join(OUT, 'present-two-audience-en.png') });
 
     // PageDown in the presenter's window: the room's window shows step 2.
@@ -128,6 +130,7 @@ test('closing either window ends the presentation in the other (the presenter vi
       assert.equal(await presenter.locator('[data-testid="presenter-window"] .presenter-label').first().innerText(), '現在');
       assert.equal(await presenter.locator('[data-action="lesson-black"]').innerText(), '画面を黒くする');
       await presenter.screenshot({ path: join(OUT, 'present-two-presenter-ja.png') });
+      assert.deepEqual(await violations(presenter, 'presenter ja'), []);
       // The room's window speaks the presenter's language; projector mode stays its own.
       assert.equal(await audience.evaluate(() => document.documentElement.lang), 'ja');
       assert.equal(await presenter.evaluate(() => localStorage.getItem('bsv.projector')), null);
