@@ -6,6 +6,7 @@
 //! - [`replace_query`] rewrites the query of the current URL with `history.replaceState` (no
 //!   reload, no new history entry, no re-mount): pages call it with their whole state whenever
 //!   it changes, so the address is always a link to what is on screen.
+//! - `embed=1`: the shell's too; kept in the address of an embedded tab.
 //! - `lang`: the shell's, not the page's. It is written into the URL only when the language
 //!   came from the URL or the user switched it (then a copied link opens in the language on
 //!   screen); otherwise the address stays free of it, so a shared link opens in each visitor's
@@ -15,10 +16,11 @@ use std::cell::Cell;
 
 use wasm_bindgen::prelude::*;
 
-use crate::ui::{ctx, dom};
+use crate::ui::{ctx, dom, embed};
 use crate::view::drills::RECIPE_KEY;
 pub use crate::view::url::{
-    build_hash, parse_hash, percent_decode, percent_encode, with_lang, Route, HOME_ID, LANG_KEY,
+    build_hash, parse_hash, percent_decode, percent_encode, with_embed, with_lang, Route, HOME_ID,
+    LANG_KEY,
 };
 
 /// Route id of the drills page, where every recipe runs (`#/drills?recipe=<id>`).
@@ -82,7 +84,10 @@ pub fn replace_query<K: AsRef<str>>(pairs: &[(K, String)]) {
 /// Rewrites the current URL to `page` with `pairs` (and `lang` when the URL carries it).
 fn replace_url<K: AsRef<str>>(page: &str, pairs: &[(K, String)]) {
     let lang = lang_in_url().then(ctx::lang);
-    let hash = build_hash(page, &with_lang(pairs, lang));
+    let hash = build_hash(
+        page,
+        &with_lang(&with_embed(pairs, embed::embedded()), lang),
+    );
     let Some(window) = web_sys::window() else {
         return;
     };
@@ -95,6 +100,7 @@ fn replace_url<K: AsRef<str>>(page: &str, pairs: &[(K, String)]) {
     if let Ok(history) = window.history() {
         let _ = history.replace_state_with_url(&JsValue::NULL, "", Some(&format!("{base}{hash}")));
     }
+    embed::state_written();
 }
 
 /// Rewrites the current URL so that its `lang` matches the shell (after a language switch).

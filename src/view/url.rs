@@ -17,6 +17,10 @@ pub const HOME_ID: &str = "home";
 /// The query key the shell uses for the language.
 pub const LANG_KEY: &str = "lang";
 
+/// The query key that shows a page embedded (`embed=1`): no site chrome, the page's main view
+/// filling the frame, the postMessage API (`crate::view::embed`). Like `lang`, the shell's.
+pub const EMBED_KEY: &str = "embed";
+
 /// A parsed hash route.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Route {
@@ -35,11 +39,16 @@ impl Route {
             .and_then(|(_, v)| Lang::parse(v))
     }
 
-    /// The query without `lang`.
+    /// Whether the query asks for the page embedded (`embed=1`).
+    pub fn embedded(&self) -> bool {
+        self.query.iter().any(|(k, v)| k == EMBED_KEY && v == "1")
+    }
+
+    /// The query without the shell's keys (`lang`, `embed`).
     pub fn page_query(&self) -> Vec<(String, String)> {
         self.query
             .iter()
-            .filter(|(k, _)| k != LANG_KEY)
+            .filter(|(k, _)| k != LANG_KEY && k != EMBED_KEY)
             .cloned()
             .collect()
     }
@@ -105,6 +114,19 @@ pub fn with_lang<K: AsRef<str>>(
         .collect();
     if let Some(lang) = lang {
         query.push((LANG_KEY.to_string(), lang.code().to_string()));
+    }
+    query
+}
+
+/// A page's pairs with `embed=1` last when `embedded` (any `embed` the page passed dropped).
+pub fn with_embed<K: AsRef<str>>(pairs: &[(K, String)], embedded: bool) -> Vec<(String, String)> {
+    let mut query: Vec<(String, String)> = pairs
+        .iter()
+        .filter(|(k, _)| k.as_ref() != EMBED_KEY)
+        .map(|(k, v)| (k.as_ref().to_string(), v.clone()))
+        .collect();
+    if embedded {
+        query.push((EMBED_KEY.to_string(), "1".to_string()));
     }
     query
 }
@@ -381,6 +403,19 @@ mod tests {
         assert_eq!(parse_hash(&hash).page_query(), q(&[("L1", "0.2")]));
         assert_eq!(parse_hash(&hash).lang(), Some(Lang::Ja));
     }
+
+    #[test]
+    fn embed_is_the_shells_and_written_before_lang() {
+        let pairs = vec![("embed", "0".to_string()), ("q1", "0.5".to_string())];
+        let query = with_lang(&with_embed(&pairs, true), Some(Lang::Ja));
+        assert_eq!(query, q(&[("q1", "0.5"), ("embed", "1"), ("lang", "ja")]));
+        let route = parse_hash(&build_hash("ik-2r", &query));
+        assert!(route.embedded());
+        assert_eq!(route.page_query(), q(&[("q1", "0.5")]));
+        assert_eq!(with_embed(&pairs, false), q(&[("q1", "0.5")]));
+        assert!(!parse_hash("#/ik-2r?embed=0").embedded());
+        assert!(!parse_hash("#/ik-2r").embedded());
+    }
 }
 
 #[cfg(all(test, not(target_arch = "wasm32")))]
@@ -389,8 +424,8 @@ mod properties {
     use proptest::prelude::*;
 
     fn key() -> impl Strategy<Value = String> {
-        // Any text but `lang`, which the router takes out of a page's query.
-        any::<String>().prop_filter("not lang", |k| k != LANG_KEY)
+        // Any text but `lang` and `embed`, which the router takes out of a page's query.
+        any::<String>().prop_filter("not the shell's", |k| k != LANG_KEY && k != EMBED_KEY)
     }
 
     proptest! {
