@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1458 * KB;
+export const CEILING = 1487 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -29,21 +29,21 @@ export function routeBudget(route) {
 /** What `make test` allows each route's first load: its size now plus about 10 KB, and never
  * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
-  home: 197,
-  'ik-2r': 240,
-  'dh-fk': 298,
-  'se3-relative': 301,
-  'umeyama-2d': 315,
-  'pendulum-energy': 299,
-  'pid-step': 285,
-  'cubic-path': 292,
-  'trapezoid-profile': 288,
-  'traj-resample': 306,
-  'rrt-2d': 281,
-  teleop: 317,
-  so101: 349,
-  drills: 300,
-  lesson: 227,
+  home: 198,
+  'ik-2r': 242,
+  'dh-fk': 299,
+  'se3-relative': 303,
+  'umeyama-2d': 317,
+  'pendulum-energy': 300,
+  'pid-step': 287,
+  'cubic-path': 293,
+  'trapezoid-profile': 290,
+  'traj-resample': 308,
+  'rrt-2d': 283,
+  teleop: 319,
+  so101: 350,
+  drills: 302,
+  lesson: 229,
 };
 /** The ceiling of a route (a route not in the table has the largest). */
 export function routeCeiling(route) {

@@ -5,7 +5,6 @@
 //! ([`crate::ui::embed_api`]), fetched on the first such message, or at once when embedded.
 
 use std::cell::{Cell, RefCell};
-use std::collections::VecDeque;
 
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -31,32 +30,31 @@ pub(crate) struct ApiFns {
 }
 
 thread_local! {
-    static QUEUE: RefCell<VecDeque<MessageEvent>> = const { RefCell::new(VecDeque::new()) };
+    static QUEUE: RefCell<Vec<MessageEvent>> = const { RefCell::new(Vec::new()) };
     static API: Cell<Option<ApiFns>> = const { Cell::new(None) };
     static LOADING: Cell<bool> = const { Cell::new(false) };
+    static EMBEDDED: Cell<bool> = const { Cell::new(false) };
 }
 
 /// Whether the tab shows its page embedded.
 pub(crate) fn embedded() -> bool {
-    dom::document()
-        .ok()
-        .and_then(|d| d.document_element())
-        .is_some_and(|html| html.class_list().contains(EMBED_CLASS))
+    EMBEDDED.get()
 }
 
 /// Marks the tab embedded if the address asks for it, and listens for the API's messages.
 pub(crate) fn install() -> Result<(), JsValue> {
     let window = dom::window()?;
     if router::current_route().embedded() {
+        EMBEDDED.set(true);
         if let Some(html) = dom::document()?.document_element() {
-            html.class_list().add_1(EMBED_CLASS)?;
+            html.class_list().toggle_with_force(EMBED_CLASS, true)?;
         }
         answer();
     }
     dom::Listener::new(&window, "message", |event| {
         if let Ok(event) = event.dyn_into::<MessageEvent>() {
             if may_be_request(&event.data()) {
-                QUEUE.with_borrow_mut(|queue| queue.push_back(event));
+                QUEUE.with_borrow_mut(|queue| queue.push(event));
                 answer();
             }
         }
@@ -69,7 +67,7 @@ pub(crate) fn install() -> Result<(), JsValue> {
 /// object (the chunk reads it); the rest is for someone else.
 fn may_be_request(data: &JsValue) -> bool {
     match data.as_string() {
-        Some(text) => text.trim_start().starts_with('{'),
+        Some(text) => text.as_bytes().first() == Some(&b'{'),
         None => {
             data.is_object()
                 && js_sys::Reflect::get(data, &JsValue::from_str("namespace"))
@@ -82,7 +80,7 @@ fn may_be_request(data: &JsValue) -> bool {
 
 /// The next queued message.
 pub(crate) fn next_message() -> Option<MessageEvent> {
-    QUEUE.with_borrow_mut(VecDeque::pop_front)
+    QUEUE.with_borrow_mut(|queue| (!queue.is_empty()).then(|| queue.remove(0)))
 }
 
 /// Tells the API (if it is here) that the page wrote its state.

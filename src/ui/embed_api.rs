@@ -28,7 +28,7 @@ use web_sys::{Element, HtmlElement, HtmlInputElement, MessageEvent};
 use crate::ui::embed::{self, ApiFns};
 use crate::ui::kit::url_state;
 use crate::ui::schedule::{now_ms, Timer};
-use crate::ui::{dom, router, schedule, shell};
+use crate::ui::{dom, router, shell};
 use crate::view::embed::{self as protocol, Message, Method, Request};
 use crate::view::url::{build_hash, IgnoredKey, EMBED_KEY};
 
@@ -77,6 +77,8 @@ struct Api {
     waiting_since: Cell<Option<f64>>,
     state_timer: Timer,
     readouts_timer: Timer,
+    /// Fits the main view once the page is laid out.
+    fit_timer: Timer,
     answer_timer: Timer,
     /// "Open in BSV Playground ↗" (embedded tabs only).
     link: Option<Element>,
@@ -114,6 +116,7 @@ fn install() -> Result<(), JsValue> {
         waiting_since: Cell::new(None),
         state_timer: Timer::default(),
         readouts_timer: Timer::default(),
+        fit_timer: Timer::default(),
         answer_timer: Timer::default(),
         link,
         in_use: Cell::new(false),
@@ -123,6 +126,7 @@ fn install() -> Result<(), JsValue> {
     api.state_timer.set_callback(&weak, Api::tell_state);
     api.readouts_timer.set_callback(&weak, Api::tell_readouts);
     api.answer_timer.set_callback(&weak, |_| answer());
+    api.fit_timer.set_callback(&weak, |_| fit_view());
     if embedded {
         api.observe_readouts()?;
         install_frame_listeners()?;
@@ -281,10 +285,10 @@ fn mounted() {
         if let (Some(link), Ok(href)) = (&api.link, open_href()) {
             let _ = link.set_attribute("href", &href);
         }
+        if embed::embedded() {
+            api.fit_timer.schedule(0);
+        }
     });
-    if embed::embedded() {
-        let _ = schedule::after_paint(fit_view);
-    }
     answer();
 }
 
@@ -396,7 +400,9 @@ fn answer() {
 
 fn answer_queue(api: &Api) {
     loop {
-        if !shell::page_settled() {
+        if shell::page_settled() {
+            api.waiting_since.set(None);
+        } else {
             let since = api.waiting_since.get().unwrap_or_else(now_ms);
             api.waiting_since.set(Some(since));
             if now_ms() - since < SETTLE_WAIT_MS {
@@ -404,7 +410,6 @@ fn answer_queue(api: &Api) {
                 return;
             }
         }
-        api.waiting_since.set(None);
         if !api.ready_told.get() {
             api.ready_told.set(true);
             let now = page_state();

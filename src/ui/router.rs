@@ -19,7 +19,7 @@ use wasm_bindgen::prelude::*;
 use crate::ui::{ctx, dom, embed};
 use crate::view::drills::RECIPE_KEY;
 pub use crate::view::url::{
-    build_hash, parse_hash, percent_decode, percent_encode, with_embed, with_lang, Route, HOME_ID,
+    build_hash, parse_hash, percent_decode, percent_encode, with_shell_keys, Route, HOME_ID,
     LANG_KEY,
 };
 
@@ -84,10 +84,7 @@ pub fn replace_query<K: AsRef<str>>(pairs: &[(K, String)]) {
 /// Rewrites the current URL to `page` with `pairs` (and `lang` when the URL carries it).
 fn replace_url<K: AsRef<str>>(page: &str, pairs: &[(K, String)]) {
     let lang = lang_in_url().then(ctx::lang);
-    let hash = build_hash(
-        page,
-        &with_lang(&with_embed(pairs, embed::embedded()), lang),
-    );
+    let hash = build_hash(page, &with_shell_keys(pairs, embed::embedded(), lang));
     let Some(window) = web_sys::window() else {
         return;
     };

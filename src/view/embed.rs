@@ -68,7 +68,7 @@ pub enum Message {
 /// Reads a message given as JSON text: text that does not start with `{` is not for this API;
 /// text that does but is not JSON is malformed.
 pub fn parse_text(text: &str) -> Message {
-    if !text.trim_start().starts_with('{') {
+    if !text.starts_with('{') {
         return Message::NotForUs;
     }
     match serde_json::from_str::<Value>(text) {

@@ -144,6 +144,22 @@ test('a drag inside the frame sends statechange; malformed messages get error re
     await page.mouse.move(box.x + tip.x - 40, box.y + tip.y + 30, { steps: 6 });
     await page.mouse.up();
     await page.waitForFunction(() => window.stateChanges.length > 0, null, { timeout: 5000 });
+
+    // A wheel turn over the canvas in use (pressed since the pointer came in) scrolls neither
+    // the frame nor the host; once the pointer has left the frame and come back, one does.
+    const scrolled = async () => (await page.evaluate(() => scrollY)) + (await frame.evaluate(() => scrollY));
+    const over = { x: box.x + tip.x - 120, y: box.y + tip.y + 60 };
+    await page.mouse.move(over.x, over.y);
+    await page.mouse.wheel(0, 200);
+    await page.mouse.move(2, 2);
+    await page.mouse.move(over.x, over.y);
+    await page.mouse.wheel(0, 200);
+    let total = 0;
+    for (let i = 0; i < 40 && total === 0; i += 1) {
+      total = await scrolled();
+      if (total === 0) await page.waitForTimeout(50);
+    }
+    assert.ok(total > 0 && total <= 201, `scrolled ${total} px for two turns of 200 px, one over the canvas in use`);
     const changed = await page.evaluate(() => window.stateChanges.at(-1));
     assert.notEqual(changed.q1, '0.6');
     assert.deepEqual((await call(page, 'ik', 'getState')).result, changed);
@@ -260,14 +276,19 @@ test('embedded layout: no chrome, the main view in the frame at 800×500, usable
 });
 
 test('screenshot: the course page with both drills (English)', async () => {
-  const { page, errors, close } = await openCoursePage({ width: 900, height: 1300 });
+  const { page, errors, close } = await openCoursePage({ width: 900, height: 2150 });
   try {
     await page.locator('#ik [data-pose="0.6,1.1"]').click();
     await page.locator('#pendulum [data-start="90"]').click();
     await page.locator('#pendulum [data-step="10"]').click();
     await page.waitForFunction(() => document.querySelectorAll('#pendulum .log').length
       && document.querySelector('#pendulum .log').textContent.includes('→ 10'), null, { timeout: 5000 });
-    await page.screenshot({ path: join(OUT, 'embed-course-page-en.png'), fullPage: true });
+    // The readouts event after the tenth step has come.
+    const t = String((await readouts(page, 'pendulum')).values.t);
+    await page.waitForFunction((t) => [...document.querySelectorAll('#pendulum .readouts tr')]
+      .some((row) => row.cells[0].textContent === 't' && row.cells[1].textContent === t), t, { timeout: 5000 });
+    // The viewport, not `fullPage`: a full-page capture leaves the first frame blank.
+    await page.screenshot({ path: join(OUT, 'embed-course-page-en.png') });
     assert.deepEqual(errors, []);
   } finally {
     await close();
