@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1487 * KB;
+export const CEILING = 1488 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -31,18 +31,18 @@ export function routeBudget(route) {
 export const ROUTE_CEILINGS = {
   home: 198,
   'ik-2r': 242,
-  'dh-fk': 299,
-  'se3-relative': 303,
+  'dh-fk': 300,
+  'se3-relative': 304,
   'umeyama-2d': 317,
-  'pendulum-energy': 300,
+  'pendulum-energy': 301,
   'pid-step': 287,
-  'cubic-path': 293,
+  'cubic-path': 294,
   'trapezoid-profile': 290,
-  'traj-resample': 308,
+  'traj-resample': 309,
   'rrt-2d': 283,
   teleop: 319,
   so101: 350,
-  drills: 302,
+  drills: 303,
   lesson: 229,
 };
 /** The ceiling of a route (a route not in the table has the largest). */

@@ -1,8 +1,8 @@
-//! Embedding, the part every route loads: whether the tab shows its page embedded (the first
-//! route had `embed=1`: class `embed` on `<html>` hides the site's chrome, and the router
-//! keeps `embed=1` in the address), and the door of the postMessage API, a `message` listener
-//! that queues what may be a request and hands it to the API's chunk
-//! ([`crate::ui::embed_api`]), fetched on the first such message, or at once when embedded.
+//! Embedding, the part every route loads: the tab is marked embedded when its first route has
+//! `embed=1` (class `embed` on `<html>` hides the site's chrome; the router keeps `embed=1` in
+//! the address), and the door of the postMessage API: a `message` listener that queues what
+//! may be a request and hands the queue to the API's chunk ([`crate::ui::embed_api`]),
+//! fetched on the first such message, or at once when embedded, with what the shell lends it.
 
 use std::cell::{Cell, RefCell};
 
@@ -10,42 +10,28 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::MessageEvent;
 
+use crate::ui::embed_api::{self, ApiFns, ShellFns};
 use crate::ui::page::SplitLoaderError;
-use crate::ui::{dom, embed_api, router};
+use crate::ui::{dom, router};
 
 /// The class on `<html>` of an embedded tab.
 const EMBED_CLASS: &str = "embed";
 
-/// What the API's chunk gives the shell.
-#[derive(Clone, Copy)]
-pub(crate) struct ApiFns {
-    /// Sets the API up (once, when its chunk has come).
-    pub start: fn(),
-    /// Answers the queued messages (now, or once the page is settled).
-    pub answer: fn(),
-    /// The page wrote its state to the address.
-    pub state_written: fn(),
-    /// A page was mounted.
-    pub mounted: fn(),
-}
-
 thread_local! {
     static QUEUE: RefCell<Vec<MessageEvent>> = const { RefCell::new(Vec::new()) };
     static API: Cell<Option<ApiFns>> = const { Cell::new(None) };
+    static SHELL: Cell<Option<ShellFns>> = const { Cell::new(None) };
     static LOADING: Cell<bool> = const { Cell::new(false) };
-    static EMBEDDED: Cell<bool> = const { Cell::new(false) };
 }
 
-/// Whether the tab shows its page embedded.
-pub(crate) fn embedded() -> bool {
-    EMBEDDED.get()
-}
-
-/// Marks the tab embedded if the address asks for it, and listens for the API's messages.
-pub(crate) fn install() -> Result<(), JsValue> {
+/// Marks the tab embedded if the address asks for it, and listens for the API's messages;
+/// `shell` is what the API may ask of the shell.
+pub(crate) fn install(shell: ShellFns) -> Result<(), JsValue> {
+    SHELL.set(Some(shell));
     let window = dom::window()?;
+    router::on_write(state_written);
     if router::current_route().embedded() {
-        EMBEDDED.set(true);
+        router::set_embedded();
         if let Some(html) = dom::document()?.document_element() {
             html.class_list().toggle_with_force(EMBED_CLASS, true)?;
         }
@@ -78,13 +64,8 @@ fn may_be_request(data: &JsValue) -> bool {
     }
 }
 
-/// The next queued message.
-pub(crate) fn next_message() -> Option<MessageEvent> {
-    QUEUE.with_borrow_mut(|queue| (!queue.is_empty()).then(|| queue.remove(0)))
-}
-
 /// Tells the API (if it is here) that the page wrote its state.
-pub(crate) fn state_written() {
+fn state_written() {
     if let Some(api) = API.get() {
         (api.state_written)();
     }
@@ -101,7 +82,7 @@ pub(crate) fn mounted() {
 /// come (fetched on the first call; a failed fetch is tried again on the next).
 fn answer() {
     if let Some(api) = API.get() {
-        (api.answer)();
+        (api.answer)(QUEUE.take());
         return;
     }
     if LOADING.replace(true) {
@@ -110,10 +91,10 @@ fn answer() {
     wasm_bindgen_futures::spawn_local(async {
         let loaded = api_fns().await;
         LOADING.set(false);
-        if let Ok(api) = loaded {
+        if let (Ok(api), Some(shell)) = (loaded, SHELL.get()) {
             API.set(Some(api));
-            (api.start)();
-            (api.answer)();
+            (api.start)(shell);
+            (api.answer)(QUEUE.take());
         }
     });
 }

@@ -18,6 +18,7 @@
 //!   host, and then neither do touches (`html.embed-in-use`).
 
 use std::cell::{Cell, RefCell};
+use std::collections::VecDeque;
 use std::rc::Rc;
 
 use serde_json::Value;
@@ -25,12 +26,35 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, HtmlElement, HtmlInputElement, MessageEvent};
 
-use crate::ui::embed::{self, ApiFns};
 use crate::ui::kit::url_state;
 use crate::ui::schedule::{now_ms, Timer};
-use crate::ui::{dom, router, shell};
+use crate::ui::{dom, router};
 use crate::view::embed::{self as protocol, Message, Method, Request};
 use crate::view::url::{build_hash, IgnoredKey, EMBED_KEY};
+
+/// What the API's chunk gives the shell.
+#[derive(Clone, Copy)]
+pub(crate) struct ApiFns {
+    /// Sets the API up (once, when its chunk has come) with what the shell lends it.
+    pub start: fn(ShellFns),
+    /// Answers these messages after the ones still waiting (now, or once the page is settled).
+    pub answer: fn(Vec<MessageEvent>),
+    /// The page wrote its state to the address.
+    pub state_written: fn(),
+    /// A page was mounted.
+    pub mounted: fn(),
+}
+
+/// What the shell lends the API.
+#[derive(Clone, Copy)]
+pub(crate) struct ShellFns {
+    /// The `<main>` element pages mount into.
+    pub main: fn() -> Result<Element, JsValue>,
+    /// Whether the route is settled (its page built and answering input, or no page).
+    pub settled: fn() -> bool,
+    /// Mounts the route of the address again.
+    pub remount: fn() -> Result<(), JsValue>,
+}
 
 /// What the shell calls.
 pub(crate) const FNS: ApiFns = ApiFns {
@@ -65,6 +89,9 @@ type PageState = (String, Vec<(String, String)>);
 type Observer = (web_sys::MutationObserver, Closure<dyn FnMut()>);
 
 struct Api {
+    shell: ShellFns,
+    /// Messages waiting for the page to settle, in the order they came.
+    pending: RefCell<VecDeque<MessageEvent>>,
     /// The page and state the host was last told of (`ready`, `statechange`, `setState`).
     told_state: RefCell<Option<PageState>>,
     /// The readouts the host was last told of, as JSON text.
@@ -98,16 +125,18 @@ fn with_api(f: impl FnOnce(&Rc<Api>)) {
     }
 }
 
-fn start() {
-    if let Err(error) = install() {
+fn start(shell: ShellFns) {
+    if let Err(error) = install(shell) {
         web_sys::console::warn_2(&"BSV Playground: embedding:".into(), &error);
     }
 }
 
-fn install() -> Result<(), JsValue> {
-    let embedded = embed::embedded();
+fn install(shell: ShellFns) -> Result<(), JsValue> {
+    let embedded = router::embedded();
     let link = if embedded { Some(build_link()?) } else { None };
     let api = Rc::new(Api {
+        shell,
+        pending: RefCell::new(VecDeque::new()),
         told_state: RefCell::new(None),
         told_readouts: RefCell::new(String::new()),
         told_readouts_ms: Cell::new(f64::NEG_INFINITY),
@@ -125,13 +154,13 @@ fn install() -> Result<(), JsValue> {
     let weak = Rc::downgrade(&api);
     api.state_timer.set_callback(&weak, Api::tell_state);
     api.readouts_timer.set_callback(&weak, Api::tell_readouts);
-    api.answer_timer.set_callback(&weak, |_| answer());
+    api.answer_timer.set_callback(&weak, |_| answer_pending());
     api.fit_timer.set_callback(&weak, |_| fit_view());
+    API.with_borrow_mut(|slot| *slot = Some(api.clone()));
     if embedded {
         api.observe_readouts()?;
         install_frame_listeners()?;
     }
-    API.with_borrow_mut(|slot| *slot = Some(api));
     mounted();
     Ok(())
 }
@@ -177,7 +206,8 @@ fn page_state() -> PageState {
 }
 
 fn main_element() -> Option<Element> {
-    shell::main_element().ok()
+    let shell = API.with_borrow(|api| api.as_ref().map(|api| api.shell))?;
+    (shell.main)().ok()
 }
 
 /// The parent window of an embedded tab (`None` at the top).
@@ -204,7 +234,7 @@ fn post(target: &JsValue, message: &Value, as_text: bool, origin: &str) {
 
 /// Posts an event to the parent window.
 fn tell(event: Value) {
-    if embed::embedded() {
+    if router::embedded() {
         if let Some(parent) = parent_window() {
             post(&parent, &event, false, "*");
         }
@@ -285,11 +315,11 @@ fn mounted() {
         if let (Some(link), Ok(href)) = (&api.link, open_href()) {
             let _ = link.set_attribute("href", &href);
         }
-        if embed::embedded() {
+        if router::embedded() {
             api.fit_timer.schedule(0);
         }
     });
-    answer();
+    answer_pending();
 }
 
 /// Sizes the page's main view (the box of its first canvas) to fill the frame under what
@@ -384,10 +414,16 @@ fn is_canvas_area(element: &Element) -> bool {
 
 // ---------- Requests ----------
 
-/// Answers the queued messages in order, once the page is settled (or has not settled for
+/// Answers `messages` after the ones still waiting.
+fn answer(messages: Vec<MessageEvent>) {
+    with_api(|api| api.pending.borrow_mut().extend(messages));
+    answer_pending();
+}
+
+/// Answers the waiting messages in order, once the page is settled (or has not settled for
 /// [`SETTLE_WAIT_MS`]); a request that mounts the page again waits for it to settle before
 /// the next is answered.
-fn answer() {
+fn answer_pending() {
     let Some(api) = API.with_borrow(Clone::clone) else {
         return;
     };
@@ -400,7 +436,7 @@ fn answer() {
 
 fn answer_queue(api: &Api) {
     loop {
-        if shell::page_settled() {
+        if (api.shell.settled)() {
             api.waiting_since.set(None);
         } else {
             let since = api.waiting_since.get().unwrap_or_else(now_ms);
@@ -423,7 +459,8 @@ fn answer_queue(api: &Api) {
             *api.told_state.borrow_mut() = Some(now);
             tell(ready);
         }
-        let Some(event) = embed::next_message() else {
+        let next = api.pending.borrow_mut().pop_front();
+        let Some(event) = next else {
             return;
         };
         answer_one(api, &event);
@@ -480,10 +517,10 @@ fn carry_out(api: &Api, request: Request) -> Value {
 }
 
 /// Mounts the page from `query` (the shell's keys kept); the keys it did not use.
-fn mount_with(query: &[(String, String)]) -> Result<Vec<IgnoredKey>, String> {
+fn mount_with(api: &Api, query: &[(String, String)]) -> Result<Vec<IgnoredKey>, String> {
     router::replace_query(query);
     url_state::forget_shown_keys();
-    shell::remount().map_err(|e| format!("the page could not be mounted: {e:?}"))?;
+    (api.shell.remount)().map_err(|e| format!("the page could not be mounted: {e:?}"))?;
     Ok(url_state::shown_keys())
 }
 
@@ -503,7 +540,7 @@ fn set_state(
     let mounted = if changes.is_empty() {
         Ok(Vec::new())
     } else {
-        mount_with(&protocol::apply_changes(&before, &changes))
+        mount_with(api, &protocol::apply_changes(&before, &changes))
     };
     let mut ignored = match mounted {
         Ok(ignored) => ignored,
@@ -523,7 +560,7 @@ fn set_state(
             .filter(|(k, _)| !is_ignored(k))
             .cloned()
             .collect();
-        if let Err(error) = mount_with(&protocol::apply_changes(&base, &taken)) {
+        if let Err(error) = mount_with(api, &protocol::apply_changes(&base, &taken)) {
             return protocol::error_reply(id, &error, Vec::new());
         }
         ignored.retain(|k| is_host_key(&k.key));

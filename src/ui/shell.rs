@@ -25,6 +25,7 @@ use web_sys::{Element, KeyboardEvent};
 use crate::i18n::{self, Lang};
 use crate::ui::drill_chain;
 use crate::ui::embed;
+use crate::ui::embed_api::ShellFns;
 use crate::ui::kit::keymap::{self, ShellKey};
 use crate::ui::lang_files;
 use crate::ui::lesson_bar;
@@ -50,6 +51,13 @@ const SHELL: ShellLink = ShellLink {
     request: perform,
 };
 
+/// What the shell lends the embedding API.
+const EMBED_SHELL: ShellFns = ShellFns {
+    main: main_element,
+    settled: page_settled,
+    remount,
+};
+
 const APP_ID: &str = "app";
 const MAIN_ID: &str = "app-main";
 /// The status line under "?" (the shortcuts overlay could not be loaded).
@@ -66,7 +74,7 @@ pub(crate) fn start(lang: Lang) -> Result<bool, JsValue> {
     }
     ctx::set_lang(lang);
     ctx::set_projector(dom::storage_get(PROJECTOR_STORAGE_KEY).as_deref() == Some("1"));
-    embed::install()?;
+    embed::install(EMBED_SHELL)?;
 
     let app = match document.get_element_by_id(APP_ID) {
         Some(app) => app,
@@ -647,13 +655,13 @@ fn step_page() -> Result<(), JsValue> {
 }
 
 /// Mounts the route of the address again (its state read afresh from the address).
-pub(crate) fn remount() -> Result<(), JsValue> {
+fn remount() -> Result<(), JsValue> {
     mount_route(&router::current_route())
 }
 
 /// Whether the route is settled: its page built and answering input, or no page (not
 /// found).
-pub(crate) fn page_settled() -> bool {
+fn page_settled() -> bool {
     routed_def().is_none() || with_page(|page| page.settled()).unwrap_or(false)
 }
 
