@@ -16,6 +16,7 @@ pub mod dh_fk;
 pub mod drag;
 pub mod drill_chain;
 pub mod drills;
+pub mod embed;
 pub mod envelope;
 pub mod field;
 pub mod form;

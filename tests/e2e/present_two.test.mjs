@@ -71,6 +71,15 @@ test('two windows: the presenter view and the room\'s window keep in step, keys 
     const picture = presenter.frames().find((f) => f.url().includes('embed=1'));
     await picture.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
     await picture.locator('[data-readout="iteration"]').waitFor();
+    // The picture tells its host it is ready (the embedding API's events); the presenter's
+    // window does not answer an event, so the two stay quiet.
+    await presenter.evaluate(() => {
+      window.__messages = 0;
+      window.addEventListener('message', () => { window.__messages += 1; });
+    });
+    await picture.evaluate(() => window.parent.postMessage({ namespace: 'bsv', event: 'ready', page: 'rrt-2d' }, '*'));
+    await presenter.waitForTimeout(1000);
+    assert.ok(await presenter.evaluate(() => window.__messages) <= 2, 'no exchange of messages with the picture');
     await presenter.screenshot({ path: join(OUT, 'present-two-presenter-en.png') });
     assert.deepEqual([...(await violations(presenter, 'presenter')), ...(await violations(audience, 'room'))], []);
     await audience.screenshot({ path: join(OUT, 'present-two-audience-en.png') });
