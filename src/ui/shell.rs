@@ -639,6 +639,8 @@ fn perform(request: ShellRequest) -> Result<(), JsValue> {
         ShellRequest::Projector(on) if ctx::projector() != on => set_projector(on),
         ShellRequest::Projector(_) => Ok(()),
         ShellRequest::ProjectorHere => show_projector(true),
+        ShellRequest::Lang(lang) if lang != ctx::lang() => switch_lang(lang),
+        ShellRequest::Lang(_) => Ok(()),
         ShellRequest::Settled => {
             embed::mounted();
             mark_ready()
