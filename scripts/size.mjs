@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1468 * KB;
+export const CEILING = 1520 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -30,20 +30,20 @@ export function routeBudget(route) {
  * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
   home: 198,
-  'ik-2r': 241,
-  'dh-fk': 299,
-  'se3-relative': 302,
-  'umeyama-2d': 316,
-  'pendulum-energy': 300,
-  'pid-step': 286,
-  'cubic-path': 293,
-  'trapezoid-profile': 289,
-  'traj-resample': 307,
-  'rrt-2d': 282,
-  teleop: 318,
+  'ik-2r': 242,
+  'dh-fk': 300,
+  'se3-relative': 304,
+  'umeyama-2d': 317,
+  'pendulum-energy': 301,
+  'pid-step': 287,
+  'cubic-path': 294,
+  'trapezoid-profile': 290,
+  'traj-resample': 309,
+  'rrt-2d': 283,
+  teleop: 319,
   so101: 350,
-  drills: 302,
-  lesson: 231,
+  drills: 303,
+  lesson: 232,
 };
 /** The ceiling of a route (a route not in the table has the largest). */
 export function routeCeiling(route) {

@@ -106,3 +106,7 @@ lesson-page-steps-left = { $count } page steps before the next lesson step
 lesson-prev = ← Back
 lesson-step = Step
 lesson-untitled = My lesson
+
+# An embedded page (`embed=1`): the link to the same page and state in a tab of its own.
+embed-open = Open in BSV Playground ↗
+embed-open-title = Opens this drill, as it is now, in a new tab

@@ -106,3 +106,7 @@ lesson-page-steps-left = 次のレッスンステップまで、ページをあ�
 lesson-prev = ← 前へ
 lesson-step = ステップ
 lesson-untitled = 私のレッスン
+
+# 埋め込み表示（`embed=1`）: 同じページと状態を新しいタブで開くリンク。
+embed-open = BSV Playground で開く ↗
+embed-open-title = このドリルを今の状態のまま新しいタブで開きます

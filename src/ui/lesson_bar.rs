@@ -11,9 +11,11 @@ use wasm_bindgen::prelude::*;
 use web_sys::{Element, Event, KeyboardEvent};
 
 use crate::ui::kit::store::{self, Refused, Stored};
+use crate::ui::lesson_present::{Hooks, KeyTaken};
 use crate::ui::page::SplitLoaderError;
 use crate::ui::page::{ShellLink, ShellRequest};
-use crate::ui::{ctx, dom, lesson_focus, lesson_present, present_two, router};
+use crate::ui::present_two::{self, PresentEntry};
+use crate::ui::{ctx, dom, lesson_focus, router};
 use crate::view::lesson::{Lesson, LessonStep};
 use crate::view::lesson_file;
 use crate::view::url::Route;
@@ -29,57 +31,30 @@ thread_local! {
     static HOOKS: Cell<Option<Hooks>> = const { Cell::new(None) };
 }
 
-/// What a request to the shell does (the shell's `perform`).
-pub(crate) type Perform = fn(ShellRequest) -> Result<(), JsValue>;
-
-/// What a presenter key asks of the shell: `None` if the key is not taken.
-pub(crate) type KeyTaken = Result<Option<Vec<ShellRequest>>, JsValue>;
-
-/// What the shell calls in the presenting chunk once it is here.
-#[derive(Clone, Copy)]
-pub(crate) struct Hooks {
-    /// A key, named, and whether a text field being edited has focus: `None` if not taken.
-    pub on_key: fn(&str, bool) -> KeyTaken,
-    /// A click in the presenter bar.
-    pub on_bar_click: fn(&Event) -> Result<Vec<ShellRequest>, JsValue>,
-    /// Redraws the bar (a page mounted, the language switched).
-    pub render: fn() -> Result<(), JsValue>,
-}
-
-/// The presenting chunk's entry points.
-#[derive(Clone, Copy)]
-pub(crate) struct PresentEntry {
-    /// Presents a lesson from step `index` in this window: what the shell should do first.
-    pub present: fn(Lesson, usize) -> Result<Vec<ShellRequest>, JsValue>,
-    /// Opens the room's window and presents a lesson on two screens; `Err` is the localized
-    /// reason it could not.
-    pub start_two: fn(Lesson, Perform) -> Result<(), String>,
-    /// This window is the room's window of a presentation: joins it.
-    pub join: fn(Perform) -> Result<(), JsValue>,
-}
-
-/// Hands the shell's keys, bar clicks and redraws to the presenting chunk.
-pub(crate) fn set_hooks(hooks: Hooks) {
-    HOOKS.set(Some(hooks));
-}
-
 /// Presenting: a wasm chunk of its own, fetched when it starts.
 #[cfg(feature = "split")]
 #[wasm_split_helpers::wasm_split(lesson_present, fallible)]
 fn presenting_chunk() -> Result<PresentEntry, SplitLoaderError> {
-    Ok(lesson_present::ENTRY)
+    Ok(present_two::ENTRY)
 }
 
 /// Without the `split` feature presenting is in the one wasm.
 #[cfg(not(feature = "split"))]
 async fn presenting_chunk() -> Result<PresentEntry, SplitLoaderError> {
-    Ok(lesson_present::ENTRY)
+    Ok(present_two::ENTRY)
+}
+
+/// Presenting's code, its hooks handed the shell's keys, bar clicks and redraws.
+async fn presenting() -> Result<PresentEntry, SplitLoaderError> {
+    let entry = presenting_chunk().await?;
+    HOOKS.set(Some(entry.hooks));
+    Ok(entry)
 }
 
 /// Presents `lesson` from step `index` in this window, once presenting's code is here; `Err`
 /// is the localized reason it could not be fetched.
 pub(crate) async fn present(lesson: Lesson, index: usize, shell: ShellLink) -> Result<(), String> {
-    let entry = presenting_chunk()
+    let entry = presenting()
         .await
         .map_err(|_| ctx::t("lesson-present-failed"))?;
     let requests = (entry.present)(lesson, index).map_err(|_| ctx::t("lesson-present-failed"))?;
@@ -94,7 +69,7 @@ pub(crate) async fn present(lesson: Lesson, index: usize, shell: ShellLink) -> R
 /// Presents `lesson` on two screens: the room's window opens on its first step and this
 /// window shows the presenter view. `Err` is the localized reason it could not.
 pub(crate) async fn present_two(lesson: Lesson, shell: ShellLink) -> Result<(), String> {
-    let entry = presenting_chunk()
+    let entry = presenting()
         .await
         .map_err(|_| ctx::t("lesson-present-failed"))?;
     (entry.start_two)(lesson, shell.request)
@@ -107,7 +82,7 @@ pub(crate) fn join_if_audience(shell: ShellLink) {
         return;
     }
     wasm_bindgen_futures::spawn_local(async move {
-        if let Ok(entry) = presenting_chunk().await {
+        if let Ok(entry) = presenting().await {
             if let Err(error) = (entry.join)(shell.request) {
                 web_sys::console::error_1(&error);
             }

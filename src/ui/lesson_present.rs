@@ -5,10 +5,10 @@
 //! stepper; B / . black the screen and bring it back; S shares; Escape ends); each step brings
 //! its focus section into view above the bar ([`crate::ui::lesson_focus`]). What presenting
 //! needs of the shell (step the page, mount it again, projector mode) is returned as
-//! [`ShellRequest`]s for the shell to carry out. The shell reaches this chunk through
-//! [`lesson_bar`]'s hooks. Presenting on two screens ([`crate::ui::present_two`], in this
-//! chunk too) walks the lesson here, with a `Relay` that shows each step in the room's
-//! window instead of this one.
+//! [`ShellRequest`]s for the shell to carry out. The shell reaches this chunk through its
+//! `Hooks`. Presenting on two screens ([`crate::ui::present_two`], in this chunk too) walks
+//! the lesson here, with a `Relay` that shows each step in the room's window instead of this
+//! one.
 
 use std::cell::{Cell, RefCell};
 
@@ -16,9 +16,8 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event};
 
-use crate::ui::lesson_bar::{self, Hooks, PresentEntry};
 use crate::ui::page::ShellRequest;
-use crate::ui::{ctx, dom, lesson_focus, present_two, router};
+use crate::ui::{ctx, dom, lesson_focus, router};
 use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
 
 const BAR_ID: &str = "lesson-bar";
@@ -31,30 +30,29 @@ thread_local! {
     static BLACK: Cell<bool> = const { Cell::new(false) };
 }
 
-/// This chunk's entry points.
-pub(crate) const ENTRY: PresentEntry = PresentEntry {
-    present: start,
-    start_two: present_two::start,
-    join: present_two::join,
-};
+/// What a request to the shell does (the shell's `perform`).
+pub(crate) type Perform = fn(ShellRequest) -> Result<(), JsValue>;
 
-/// What the shell calls while this chunk is here.
-const HOOKS: Hooks = Hooks {
+/// What a presenter key asks of the shell: `None` if the key is not taken.
+pub(crate) type KeyTaken = Result<Option<Vec<ShellRequest>>, JsValue>;
+
+/// What the shell calls in this chunk once it is here.
+#[derive(Clone, Copy)]
+pub(crate) struct Hooks {
+    /// A key, named, and whether a text field being edited has focus: `None` if not taken.
+    pub on_key: fn(&str, bool) -> KeyTaken,
+    /// A click in the presenter bar.
+    pub on_bar_click: fn(&Event) -> Result<Vec<ShellRequest>, JsValue>,
+    /// Redraws the bar (a page mounted, the language switched).
+    pub render: fn() -> Result<(), JsValue>,
+}
+
+/// The shell's hooks into this chunk.
+pub(crate) const HOOKS: Hooks = Hooks {
     on_key: on_named_key,
     on_bar_click,
     render,
 };
-
-/// Starts presenting `lesson` at step `index`; what the shell should do first.
-fn start(lesson: Lesson, index: usize) -> Result<Vec<ShellRequest>, JsValue> {
-    lesson_bar::set_hooks(HOOKS);
-    present(lesson, index)
-}
-
-/// The shell's hooks into this chunk, for the windows of a two-screen presentation.
-pub(crate) fn hook() {
-    lesson_bar::set_hooks(HOOKS);
-}
 
 /// What a two-screen presentation does in place of this window's page and bar: in the
 /// presenter's window every step is shown in the room's window and the presenter view is
@@ -119,7 +117,7 @@ pub(crate) fn on_bar_click(event: &Event) -> Result<Vec<ShellRequest>, JsValue> 
 }
 
 /// Starts presenting `lesson` at step `index`; projector mode on, then what the step asks.
-fn present(lesson: Lesson, index: usize) -> Result<Vec<ShellRequest>, JsValue> {
+pub(crate) fn present(lesson: Lesson, index: usize) -> Result<Vec<ShellRequest>, JsValue> {
     let mut presenter = Presenter::default();
     let action = presenter.go(&lesson, index);
     PRESENTING.with(|p| *p.borrow_mut() = Some((lesson, presenter)));

@@ -9,6 +9,8 @@
 //!   imports the page table, [`pages`].
 //! - [`page`] is the contract between the shell and a page; pages are built from the [`kit`],
 //!   [`dom`], [`ctx`] (language, projector mode) and [`schedule`] (timers, after paint).
+//! - [`embed`] and [`embed_api`]: a page embedded in another site (`embed=1`) and its
+//!   postMessage API.
 //! - [`download`], [`clipboard`], [`command_line`]: files, copies and shell quoting.
 
 use wasm_bindgen::prelude::*;
@@ -19,6 +21,8 @@ pub mod ctx;
 pub mod dom;
 pub mod download;
 pub mod drill_chain;
+pub mod embed;
+pub mod embed_api;
 pub mod kit;
 pub mod lang_files;
 pub mod lesson_bar;

@@ -46,6 +46,8 @@ pub enum ShellRequest {
     /// Projector mode on in this window only, not remembered (the room's window of a
     /// two-screen presentation).
     ProjectorHere,
+    /// Switch to this language, as the language button does.
+    Lang(crate::i18n::Lang),
     /// The mounted page, which waited for a chunk before it was built, is built (or says that
     /// the chunk could not be fetched): the route is settled.
     Settled,

@@ -14,8 +14,7 @@ use wasm_bindgen::JsCast;
 use web_sys::{BroadcastChannel, Element, Event, MessageEvent, Window};
 
 use crate::i18n::Lang;
-use crate::ui::lesson_bar::Perform;
-use crate::ui::lesson_present::{self, Relay};
+use crate::ui::lesson_present::{self, Hooks, Perform, Relay};
 use crate::ui::page::ShellRequest;
 use crate::ui::{ctx, dom, lesson_focus, router, schedule};
 use crate::view::lesson::Lesson;
@@ -84,9 +83,31 @@ impl Drop for Ticker {
     }
 }
 
+/// The presenting chunk's entry points (this module and [`crate::ui::lesson_present`]).
+#[derive(Clone, Copy)]
+pub(crate) struct PresentEntry {
+    /// Presents a lesson from step `index` in this window: what the shell should do first.
+    pub present: fn(Lesson, usize) -> Result<Vec<ShellRequest>, JsValue>,
+    /// Opens the room's window and presents a lesson on two screens; `Err` is the localized
+    /// reason it could not.
+    pub start_two: fn(Lesson, Perform) -> Result<(), String>,
+    /// This window is the room's window of a presentation: joins it.
+    pub join: fn(Perform) -> Result<(), JsValue>,
+    /// What the shell calls while presenting.
+    pub hooks: Hooks,
+}
+
+/// The presenting chunk's entry points.
+pub(crate) const ENTRY: PresentEntry = PresentEntry {
+    present: lesson_present::present,
+    start_two: start,
+    join,
+    hooks: lesson_present::HOOKS,
+};
+
 /// Opens the room's window and presents `lesson` from its first step; `Err` is the localized
 /// reason it could not (the browser blocked the window).
-pub(crate) fn start(lesson: Lesson, perform: Perform) -> Result<(), String> {
+fn start(lesson: Lesson, perform: Perform) -> Result<(), String> {
     let blocked = || ctx::t("present-two-blocked");
     let Some(first) = lesson.steps.first() else {
         return Ok(());
@@ -153,7 +174,6 @@ fn open_presenter(lesson: Lesson, audience: Window, perform: Perform) -> Result<
             p.ticker = Some(ticker);
         }
     });
-    lesson_present::hook();
     lesson_present::set_relay(Some(presenter_relay));
     lesson_present::present_on_two(lesson, 0)
 }
@@ -522,7 +542,7 @@ fn show_in_picture(picture: &Element, route: &str, title: &str) -> Result<(), Js
 
 /// Joins the presentation as the room's window: projector styles, presenter keys sent to the
 /// presenter's window, each step shown as it says; full screen at the first click or key.
-pub(crate) fn join(perform: Perform) -> Result<(), JsValue> {
+fn join(perform: Perform) -> Result<(), JsValue> {
     let channel = BroadcastChannel::new(CHANNEL)?;
     let window = dom::window()?;
     let listeners = vec![
@@ -545,7 +565,6 @@ pub(crate) fn join(perform: Perform) -> Result<(), JsValue> {
             _listeners: listeners,
         }));
     });
-    lesson_present::hook();
     lesson_present::set_relay(Some(audience_relay));
     perform(ShellRequest::ProjectorHere)?;
     post(&[("kind", "hello".into())])?;
@@ -603,7 +622,7 @@ fn on_audience_message(data: &JsValue) -> Result<(), JsValue> {
             });
             if let Some(lang) = field(data, "lang").as_deref().and_then(Lang::parse) {
                 if lang != ctx::lang() {
-                    crate::ui::shell::switch_lang(lang)?;
+                    perform(ShellRequest::Lang(lang))?;
                 }
             }
             let document = dom::document()?;

@@ -6,6 +6,7 @@
 //! - [`replace_query`] rewrites the query of the current URL with `history.replaceState` (no
 //!   reload, no new history entry, no re-mount): pages call it with their whole state whenever
 //!   it changes, so the address is always a link to what is on screen.
+//! - `embed=1`: the shell's too; kept in the address of an embedded tab.
 //! - `lang`: the shell's, not the page's. It is written into the URL only when the language
 //!   came from the URL or the user switched it (then a copied link opens in the language on
 //!   screen); otherwise the address stays free of it, so a shared link opens in each visitor's
@@ -18,7 +19,8 @@ use wasm_bindgen::prelude::*;
 use crate::ui::{ctx, dom};
 use crate::view::drills::RECIPE_KEY;
 pub use crate::view::url::{
-    build_hash, parse_hash, percent_decode, percent_encode, with_lang, Route, HOME_ID, LANG_KEY,
+    build_hash, parse_hash, percent_decode, percent_encode, with_shell_keys, Route, HOME_ID,
+    LANG_KEY,
 };
 
 /// Route id of the drills page, where every recipe runs (`#/drills?recipe=<id>`).
@@ -34,6 +36,23 @@ pub fn drill_hash(recipe_id: &str) -> String {
 
 thread_local! {
     static LANG_IN_URL: Cell<bool> = const { Cell::new(false) };
+    static EMBEDDED: Cell<bool> = const { Cell::new(false) };
+    static ON_WRITE: Cell<Option<fn()>> = const { Cell::new(None) };
+}
+
+/// Whether the tab is embedded: the address keeps `embed=1`.
+pub fn embedded() -> bool {
+    EMBEDDED.get()
+}
+
+/// Marks the tab embedded (its first route had `embed=1`).
+pub(crate) fn set_embedded() {
+    EMBEDDED.set(true);
+}
+
+/// Calls `hook` after every write of the address ([`replace_query`], the language).
+pub(crate) fn on_write(hook: fn()) {
+    ON_WRITE.set(Some(hook));
 }
 
 /// Whether the URL carries `lang=` (it came from the URL, or the user switched language).
@@ -82,7 +101,7 @@ pub fn replace_query<K: AsRef<str>>(pairs: &[(K, String)]) {
 /// Rewrites the current URL to `page` with `pairs` (and `lang` when the URL carries it).
 fn replace_url<K: AsRef<str>>(page: &str, pairs: &[(K, String)]) {
     let lang = lang_in_url().then(ctx::lang);
-    let hash = build_hash(page, &with_lang(pairs, lang));
+    let hash = build_hash(page, &with_shell_keys(pairs, embedded(), lang));
     let Some(window) = web_sys::window() else {
         return;
     };
@@ -94,6 +113,9 @@ fn replace_url<K: AsRef<str>>(page: &str, pairs: &[(K, String)]) {
     );
     if let Ok(history) = window.history() {
         let _ = history.replace_state_with_url(&JsValue::NULL, "", Some(&format!("{base}{hash}")));
+    }
+    if let Some(hook) = ON_WRITE.get() {
+        hook();
     }
 }
 

@@ -24,6 +24,8 @@ use web_sys::{Element, KeyboardEvent};
 
 use crate::i18n::{self, Lang};
 use crate::ui::drill_chain;
+use crate::ui::embed;
+use crate::ui::embed_api::ShellFns;
 use crate::ui::kit::keymap::{self, ShellKey};
 use crate::ui::lang_files;
 use crate::ui::lesson_bar;
@@ -49,6 +51,13 @@ const SHELL: ShellLink = ShellLink {
     request: perform,
 };
 
+/// What the shell lends the embedding API.
+const EMBED_SHELL: ShellFns = ShellFns {
+    main: main_element,
+    settled: page_settled,
+    remount,
+};
+
 const APP_ID: &str = "app";
 const MAIN_ID: &str = "app-main";
 /// The status line under "?" (the shortcuts overlay could not be loaded).
@@ -65,6 +74,7 @@ pub(crate) fn start(lang: Lang) -> Result<bool, JsValue> {
     }
     ctx::set_lang(lang);
     ctx::set_projector(dom::storage_get(PROJECTOR_STORAGE_KEY).as_deref() == Some("1"));
+    embed::install(EMBED_SHELL)?;
 
     let app = match document.get_element_by_id(APP_ID) {
         Some(app) => app,
@@ -629,7 +639,12 @@ fn perform(request: ShellRequest) -> Result<(), JsValue> {
         ShellRequest::Projector(on) if ctx::projector() != on => set_projector(on),
         ShellRequest::Projector(_) => Ok(()),
         ShellRequest::ProjectorHere => show_projector(true),
-        ShellRequest::Settled => mark_ready(),
+        ShellRequest::Lang(lang) if lang != ctx::lang() => switch_lang(lang),
+        ShellRequest::Lang(_) => Ok(()),
+        ShellRequest::Settled => {
+            embed::mounted();
+            mark_ready()
+        }
     }
 }
 
@@ -646,6 +661,17 @@ fn step_page() -> Result<(), JsValue> {
     let event = KeyboardEvent::new_with_keyboard_event_init_dict("keydown", &init)?;
     with_page(|page| page.on_key(&event));
     Ok(())
+}
+
+/// Mounts the route of the address again (its state read afresh from the address).
+fn remount() -> Result<(), JsValue> {
+    mount_route(&router::current_route())
+}
+
+/// Whether the route is settled: its page built and answering input, or no page (not
+/// found).
+fn page_settled() -> bool {
+    routed_def().is_none() || with_page(|page| page.settled()).unwrap_or(false)
 }
 
 /// The id of the mounted page (`None` on the not-found page).
@@ -851,6 +877,7 @@ fn loaded(
             // left over from a page that builds otherwise goes.
             mount_page(def, mount, &main, query)?;
             page_frame::remove_leftover(&main)?;
+            embed::mounted();
             warm_after_paint(Some(def))?;
             if with_page(|page| page.settled()).unwrap_or(true) {
                 mark_ready()?;

@@ -438,14 +438,17 @@ pub fn elbow_of(q2: f64) -> Elbow {
 }
 
 impl UrlState for State {
-    /// [`State::from_query`]: keys of other pages are left alone, values that fail are
-    /// reported as invalid.
+    /// [`State::from_query`]: values that fail are reported as invalid, keys the page does
+    /// not have as unknown.
     fn read(query: &[(String, String)]) -> (State, Vec<IgnoredKey>) {
         let (state, ignored) = State::from_query(query);
-        (
-            state,
-            ignored.into_iter().map(IgnoredKey::invalid).collect(),
-        )
+        let known = state.query_pairs();
+        let unknown = query
+            .iter()
+            .filter(|(key, _)| !known.iter().any(|(k, _)| k == key))
+            .map(|(key, _)| IgnoredKey::unknown(key.clone()));
+        let ignored = ignored.into_iter().map(IgnoredKey::invalid).chain(unknown);
+        (state, ignored.collect())
     }
 
     fn write(&self) -> Vec<(String, String)> {

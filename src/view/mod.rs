@@ -19,6 +19,7 @@ pub mod dh_fk;
 pub mod drag;
 pub mod drill_chain;
 pub mod drills;
+pub mod embed;
 pub mod envelope;
 pub mod exercises;
 pub mod field;

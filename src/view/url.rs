@@ -7,7 +7,8 @@
 //! - Percent-encoding: keys and values are encoded as in `encodeURIComponent` (except that `,`
 //!   stays readable); decoding also accepts `+` for a space, and invalid escapes stay as typed.
 //! - `lang`: the shell's, not the page's. [`Route::page_query`] removes it from the query a page
-//!   sees; [`with_lang`] writes it (last) when the URL should carry it.
+//!   sees; [`with_shell_keys`] writes it (last) when the URL should carry it. `embed=1`
+//!   ([`EMBED_KEY`]) is the shell's too, and written before it.
 
 use crate::i18n::Lang;
 
@@ -16,6 +17,10 @@ pub const HOME_ID: &str = "home";
 
 /// The query key the shell uses for the language.
 pub const LANG_KEY: &str = "lang";
+
+/// The query key that shows a page embedded (`embed=1`): no site chrome, the page's main view
+/// filling the frame, the postMessage API (`crate::view::embed`). Like `lang`, the shell's.
+pub const EMBED_KEY: &str = "embed";
 
 /// A parsed hash route.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -35,11 +40,16 @@ impl Route {
             .and_then(|(_, v)| Lang::parse(v))
     }
 
-    /// The query without `lang`.
+    /// Whether the query asks for the page embedded (`embed=1`).
+    pub fn embedded(&self) -> bool {
+        self.query.iter().any(|(k, v)| k == EMBED_KEY && v == "1")
+    }
+
+    /// The query without the shell's keys (`lang`, `embed`).
     pub fn page_query(&self) -> Vec<(String, String)> {
         self.query
             .iter()
-            .filter(|(k, _)| k != LANG_KEY)
+            .filter(|(k, _)| k != LANG_KEY && k != EMBED_KEY)
             .cloned()
             .collect()
     }
@@ -92,17 +102,22 @@ pub fn build_hash(page: &str, query: &[(String, String)]) -> String {
     hash
 }
 
-/// A page's pairs as the URL writes them: any `lang` the page passed is dropped, and
-/// `lang=<code>` is appended when `lang` is `Some` (the URL carries the language).
-pub fn with_lang<K: AsRef<str>>(
+/// A page's pairs as the URL writes them: any `lang` or `embed` the page passed is dropped,
+/// then `embed=1` is appended when `embedded` (the tab is embedded) and `lang=<code>` when
+/// `lang` is `Some` (the URL carries the language).
+pub fn with_shell_keys<K: AsRef<str>>(
     pairs: &[(K, String)],
+    embedded: bool,
     lang: Option<Lang>,
 ) -> Vec<(String, String)> {
     let mut query: Vec<(String, String)> = pairs
         .iter()
-        .filter(|(k, _)| k.as_ref() != LANG_KEY)
+        .filter(|(k, _)| k.as_ref() != LANG_KEY && k.as_ref() != EMBED_KEY)
         .map(|(k, v)| (k.as_ref().to_string(), v.clone()))
         .collect();
+    if embedded {
+        query.push((EMBED_KEY.to_string(), "1".to_string()));
+    }
     if let Some(lang) = lang {
         query.push((LANG_KEY.to_string(), lang.code().to_string()));
     }
@@ -357,7 +372,10 @@ mod tests {
             steps: 42,
             label: "a&b c".into(),
         };
-        let hash = build_hash("demo", &with_lang(&demo.write(), Some(Lang::En)));
+        let hash = build_hash(
+            "demo",
+            &with_shell_keys(&demo.write(), false, Some(Lang::En)),
+        );
         let (back, ignored) = Demo::read(&parse_hash(&hash).page_query());
         assert_eq!(back, demo);
         assert!(ignored.is_empty());
@@ -372,14 +390,27 @@ mod tests {
     #[test]
     fn lang_is_written_last_and_only_once() {
         let pairs = vec![("lang", "en".to_string()), ("L1", "0.2".to_string())];
-        assert_eq!(with_lang(&pairs, None), q(&[("L1", "0.2")]));
+        assert_eq!(with_shell_keys(&pairs, false, None), q(&[("L1", "0.2")]));
         assert_eq!(
-            with_lang(&pairs, Some(Lang::Ja)),
+            with_shell_keys(&pairs, false, Some(Lang::Ja)),
             q(&[("L1", "0.2"), ("lang", "ja")])
         );
-        let hash = build_hash("drills", &with_lang(&pairs, Some(Lang::Ja)));
+        let hash = build_hash("drills", &with_shell_keys(&pairs, false, Some(Lang::Ja)));
         assert_eq!(parse_hash(&hash).page_query(), q(&[("L1", "0.2")]));
         assert_eq!(parse_hash(&hash).lang(), Some(Lang::Ja));
+    }
+
+    #[test]
+    fn embed_is_the_shells_and_written_before_lang() {
+        let pairs = vec![("embed", "0".to_string()), ("q1", "0.5".to_string())];
+        let query = with_shell_keys(&pairs, true, Some(Lang::Ja));
+        assert_eq!(query, q(&[("q1", "0.5"), ("embed", "1"), ("lang", "ja")]));
+        let route = parse_hash(&build_hash("ik-2r", &query));
+        assert!(route.embedded());
+        assert_eq!(route.page_query(), q(&[("q1", "0.5")]));
+        assert_eq!(with_shell_keys(&pairs, false, None), q(&[("q1", "0.5")]));
+        assert!(!parse_hash("#/ik-2r?embed=0").embedded());
+        assert!(!parse_hash("#/ik-2r").embedded());
     }
 }
 
@@ -389,8 +420,8 @@ mod properties {
     use proptest::prelude::*;
 
     fn key() -> impl Strategy<Value = String> {
-        // Any text but `lang`, which the router takes out of a page's query.
-        any::<String>().prop_filter("not lang", |k| k != LANG_KEY)
+        // Any text but `lang` and `embed`, which the router takes out of a page's query.
+        any::<String>().prop_filter("not the shell's", |k| k != LANG_KEY && k != EMBED_KEY)
     }
 
     proptest! {
@@ -412,7 +443,7 @@ mod properties {
             query in proptest::collection::vec((key(), any::<String>()), 0..6),
             lang in proptest::option::of(prop_oneof![Just(Lang::En), Just(Lang::Ja)]),
         ) {
-            let written = with_lang(&query, lang);
+            let written = with_shell_keys(&query, false, lang);
             let route = parse_hash(&build_hash(&page, &written));
             prop_assert_eq!(&route.page, &page);
             prop_assert_eq!(route.page_query(), query);

@@ -2,29 +2,10 @@
 // in English and Japanese, with the `?` overlay, the share dialog and the drills menu open too.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
 import { serveApp, openApp } from './harness.mjs';
-
-const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+import { violations } from './axe.mjs';
 
 const server = serveApp();
-
-/** Serious and critical violations on the page as it stands, one line each. */
-async function violations(page, what) {
-  // Evaluated through the DevTools protocol, so the page's CSP (no inline scripts) is kept.
-  if (!(await page.evaluate(() => typeof window.axe === 'object'))) await page.evaluate(AXE);
-  const found = await page.evaluate(async () => {
-    const result = await window.axe.run(document, {
-      runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa', 'best-practice'] },
-      resultTypes: ['violations'],
-    });
-    return result.violations
-      .filter((v) => v.impact === 'serious' || v.impact === 'critical')
-      .map((v) => `${v.id} (${v.impact}): ${v.nodes.slice(0, 4).map((n) => n.target.join(' ')).join(' | ')}`);
-  });
-  return found.map((line) => `${what}: ${line}`);
-}
 
 test('no serious or critical axe violation on any route, in English and Japanese, with overlays open', async () => {
   const { page, errors, close } = await openApp(server.url, '#/');

@@ -6,6 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { serveApp, OUT, openApp } from './harness.mjs';
+import { violations } from './axe.mjs';
 
 const server = serveApp();
 
@@ -70,7 +71,17 @@ test('two windows: the presenter view and the room\'s window keep in step, keys 
     const picture = presenter.frames().find((f) => f.url().includes('embed=1'));
     await picture.waitForFunction(() => document.documentElement.dataset.appReady === '1', null, { timeout: 20000 });
     await picture.locator('[data-readout="iteration"]').waitFor();
+    // The picture tells its host it is ready (the embedding API's events); the presenter's
+    // window does not answer an event, so the two stay quiet.
+    await presenter.evaluate(() => {
+      window.__messages = 0;
+      window.addEventListener('message', () => { window.__messages += 1; });
+    });
+    await picture.evaluate(() => window.parent.postMessage({ namespace: 'bsv', event: 'ready', page: 'rrt-2d' }, '*'));
+    await presenter.waitForTimeout(1000);
+    assert.ok(await presenter.evaluate(() => window.__messages) <= 2, 'no exchange of messages with the picture');
     await presenter.screenshot({ path: join(OUT, 'present-two-presenter-en.png') });
+    assert.deepEqual([...(await violations(presenter, 'presenter')), ...(await violations(audience, 'room'))], []);
     await audience.screenshot({ path: join(OUT, 'present-two-audience-en.png') });
 
     // PageDown in the presenter's window: the room's window shows step 2.
@@ -128,6 +139,7 @@ test('closing either window ends the presentation in the other (the presenter vi
       assert.equal(await presenter.locator('[data-testid="presenter-window"] .presenter-label').first().innerText(), '現在');
       assert.equal(await presenter.locator('[data-action="lesson-black"]').innerText(), '画面を黒くする');
       await presenter.screenshot({ path: join(OUT, 'present-two-presenter-ja.png') });
+      assert.deepEqual(await violations(presenter, 'presenter ja'), []);
       // The room's window speaks the presenter's language; projector mode stays its own.
       assert.equal(await audience.evaluate(() => document.documentElement.lang), 'ja');
       assert.equal(await presenter.evaluate(() => localStorage.getItem('bsv.projector')), null);

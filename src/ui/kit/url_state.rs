@@ -89,6 +89,23 @@ impl UrlWriter {
     }
 }
 
+thread_local! {
+    /// The keys the notice rendered last names (the mounted page's).
+    static SHOWN_KEYS: RefCell<Vec<IgnoredKey>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The keys of its link the page mounted last did not use, as its notice names them (none
+/// if it has no notice): the embedding API's check of a `setState`. Cleared by
+/// [`forget_shown_keys`] before a mount.
+pub fn shown_keys() -> Vec<IgnoredKey> {
+    SHOWN_KEYS.with_borrow(Vec::clone)
+}
+
+/// Forgets the keys [`shown_keys`] gives (a page is about to be mounted).
+pub fn forget_shown_keys() {
+    SHOWN_KEYS.with_borrow_mut(Vec::clear);
+}
+
 /// A page's own first sentence of the notice, formatted in the current language on each
 /// render (e.g. the drills page's "This link names a drill that does not exist").
 pub type NoticeLead = Box<dyn Fn() -> String>;
@@ -146,6 +163,7 @@ impl UrlNotice {
 
     /// Re-renders the text in the current language.
     pub fn relocalize(&self) {
+        SHOWN_KEYS.with_borrow_mut(|shown| shown.clone_from(&self.keys.borrow()));
         let lead = self.lead.borrow().as_ref().map(|lead| lead());
         let keys = notice_text(&self.keys.borrow());
         let text = match (lead, keys) {

@@ -27,6 +27,12 @@ fn url_round_trip_restores_every_bit() {
     assert_eq!(<State as UrlState>::read(&st.write()), (st, Vec::new()));
     let (_, bad) = <State as UrlState>::read(&q(&[("q1", "zz")]));
     assert_eq!(bad, vec![IgnoredKey::invalid("q1")]);
+    let (back, bad) = <State as UrlState>::read(&q(&[("q1", "0.5"), ("q2", "x"), ("zoom", "2")]));
+    assert_eq!(back.q1, 0.5);
+    assert_eq!(
+        bad,
+        vec![IgnoredKey::invalid("q2"), IgnoredKey::unknown("zoom")]
+    );
 }
 
 #[test]
