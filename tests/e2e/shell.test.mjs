@@ -555,8 +555,14 @@ test('a presenter remote\'s PageDown / PageUp go section by section on pages tha
     // drill of the chain: the IK page (IK workspace) is followed by trajectory resampling.
     await page.goto(`${server.url}/#/ik-2r`);
     await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
+    // Its second stage (the panels below the arm) is there before the walk starts.
+    await page.locator('[data-section="explain"]').waitFor();
     await page.locator('#app-main').click({ position: { x: 5, y: 5 } });
-    for (let i = 0; i < 30 && !page.url().includes('#/traj-resample'); i += 1) await page.keyboard.press('PageDown');
+    const sections = await page.locator('#app-main h2').count();
+    for (let i = 0; i < sections + 10 && !page.url().includes('#/traj-resample'); i += 1) {
+      await page.keyboard.press('PageDown');
+      await page.waitForTimeout(30);
+    }
     await page.waitForFunction(() => location.hash.startsWith('#/traj-resample'));
     // The overlay lists the keys.
     await page.keyboard.press('?');
