@@ -329,6 +329,12 @@ pub(crate) fn cover(on: bool) -> Result<(), JsValue> {
     Ok(())
 }
 
+/// Step `index`'s heading: its place in the lesson and its title (`2 / 4 · Title`).
+pub(crate) fn step_heading(lesson: &Lesson, index: usize) -> String {
+    let title = lesson.steps.get(index).map_or("", |s| s.title.as_str());
+    format!("{} / {} · {}", index + 1, lesson.steps.len(), title)
+}
+
 /// Redraws the bar: progress strip, step title and note, buttons.
 pub(crate) fn render() -> Result<(), JsValue> {
     let document = dom::document()?;
@@ -374,12 +380,7 @@ pub(crate) fn render() -> Result<(), JsValue> {
         let title = dom::el_text(
             "p",
             "lesson-step-title",
-            &format!(
-                "{} / {} · {}",
-                presenter.index + 1,
-                lesson.steps.len(),
-                step.title
-            ),
+            &step_heading(&lesson, presenter.index),
         )?;
         title.set_attribute("data-testid", "lesson-step-title")?;
         dom::append(&text, &title)?;

@@ -18,6 +18,7 @@ use crate::ui::lesson_present::{self, Hooks, Perform, Relay};
 use crate::ui::page::ShellRequest;
 use crate::ui::{ctx, dom, lesson_focus, router, schedule};
 use crate::view::lesson::Lesson;
+use crate::view::url;
 
 /// The channel both windows of a presentation share.
 const CHANNEL: &str = "bsv-present";
@@ -118,11 +119,9 @@ fn start(lesson: Lesson, perform: Perform) -> Result<(), String> {
     }
     // The room's window speaks the presenter's language.
     let url = format!(
-        "{}{}{}lang={}",
+        "{}{}",
         page_base(&window),
-        first.route,
-        if first.route.contains('?') { '&' } else { '?' },
-        ctx::lang().code()
+        with_shell_keys(&first.route, false, Some(ctx::lang()))
     );
     let audience = window
         .open_with_url_and_target_and_features(&url, AUDIENCE_NAME, "popup,width=1280,height=800")
@@ -130,6 +129,16 @@ fn start(lesson: Lesson, perform: Perform) -> Result<(), String> {
         .flatten()
         .ok_or_else(blocked)?;
     open_presenter(lesson, audience, perform).map_err(|_| blocked())
+}
+
+/// `route` as the app writes its links, with the shell's keys it should carry (`embed=1`,
+/// `lang`) in place of any it had.
+fn with_shell_keys(route: &str, embedded: bool, lang: Option<Lang>) -> String {
+    let parsed = url::parse_hash(route);
+    url::build_hash(
+        &parsed.page,
+        &url::with_shell_keys(&parsed.query, embedded, lang),
+    )
 }
 
 /// The address of this app without its route.
@@ -401,12 +410,7 @@ fn render() -> Result<(), JsValue> {
         let title = dom::el_text(
             "h2",
             "presenter-step-title",
-            &format!(
-                "{} / {} · {}",
-                presenter.index + 1,
-                lesson.steps.len(),
-                step.title
-            ),
+            &lesson_present::step_heading(&lesson, presenter.index),
         )?;
         title.set_attribute("data-testid", "presenter-step-title")?;
         dom::append(&now, &title)?;
@@ -521,11 +525,7 @@ fn show_in_picture(picture: &Element, route: &str, title: &str) -> Result<(), Js
         "title",
         &ctx::t_strings("present-two-picture", &[("title", title.to_owned())]),
     )?;
-    let embedded = if route.contains('?') {
-        format!("{route}&embed=1")
-    } else {
-        format!("{route}?embed=1")
-    };
+    let embedded = with_shell_keys(route, true, None);
     let changed = SIDE.with_borrow(|side| match side {
         Some(Side::Presenter(p)) if *p.picture.borrow() != embedded => {
             *p.picture.borrow_mut() = embedded.clone();
@@ -628,7 +628,7 @@ fn on_audience_message(data: &JsValue) -> Result<(), JsValue> {
             let document = dom::document()?;
             if let Some(bar) = document.get_element_by_id("lesson-bar") {
                 // Its focus section in view, as in one window.
-                let page = crate::view::url::parse_hash(&route).page;
+                let page = url::parse_hash(&route).page;
                 lesson_focus::show(&bar, page, field(data, "focus"));
             }
             let location = dom::window()?.location();
@@ -659,13 +659,11 @@ fn on_audience_message(data: &JsValue) -> Result<(), JsValue> {
     }
 }
 
-/// Whether the address's route `hash` is `route`, but for a language the room's window was
-/// opened with.
+/// Whether the address's route `hash` is `route`, whatever shell keys (the language the room's
+/// window was opened with) either carries.
 fn same_route(hash: &str, route: &str) -> bool {
-    hash == route
-        || hash
-            .strip_prefix(route)
-            .is_some_and(|rest| matches!(rest, "?lang=en" | "?lang=ja" | "&lang=en" | "&lang=ja"))
+    let (shown, asked) = (url::parse_hash(hash), url::parse_hash(route));
+    shown.page == asked.page && shown.page_query() == asked.page_query()
 }
 
 /// This window is no longer the room's: projector styles off, and closed if `close` (a window
