@@ -124,9 +124,10 @@ function u32(n) {
   return b;
 }
 
-/** Route id → `{ split, strings }` (its split point and the Fluent files it needs beyond the
- * first ones), from the page table's `page!(split, Type, id, title, blurb, nav, [files])`
- * lines. */
+/** Route id → `{ split, head, strings }` (its split point, the markup of its head with the ids
+ * of its heading's and lede's messages, and the Fluent files it needs beyond the first ones),
+ * from the page table's `page!(split, Type, id, title, head, nav, [files])` lines and its
+ * `const …_HEAD: &str` lines. */
 export function routesOfPageTable() {
   const table = readFileSync(join(ROOT, 'src/ui/pages/mod.rs'), 'utf8');
   const router = ['src/ui/router.rs', 'src/view/url.rs']
@@ -135,11 +136,16 @@ export function routesOfPageTable() {
   const consts = Object.fromEntries(
     [...router.matchAll(/pub const (\w+): &str = "([^"]*)";/g)].map((m) => [m[1], m[2]]),
   );
+  const heads = Object.fromEntries(
+    [...table.matchAll(/^const (\w+_HEAD): &str = "((?:[^"\\]|\\.)*)";$/gm)].map((m) => [m[1], m[2].replace(/\\(.)/g, '$1')]),
+  );
   const routes = {};
-  for (const m of table.matchAll(/^\s*page!\((\w+),\s*[^,]+?,\s*("([^"]*)"|(\w+)),.*\[([^\]]*)\]\),\s*$/gm)) {
+  for (const m of table.matchAll(/^\s*page!\((\w+),\s*[^,]+?,\s*("([^"]*)"|(\w+)),\s*"[^"]*",\s*(\w+),.*\[([^\]]*)\]\),\s*$/gm)) {
     const id = m[3] ?? consts[m[4]];
     if (id === undefined) throw new Error(`page table: cannot resolve ${m[2]}`);
-    routes[id] = { split: m[1], strings: [...m[5].matchAll(/"([^"]+)"/g)].map((f) => f[1]) };
+    const head = heads[m[5]];
+    if (head === undefined) throw new Error(`page table: cannot resolve ${m[5]}`);
+    routes[id] = { split: m[1], head, strings: [...m[6].matchAll(/"([^"]+)"/g)].map((f) => f[1]) };
   }
   if (Object.keys(routes).length === 0) throw new Error('page table: no page! line found');
   return routes;
@@ -267,6 +273,8 @@ async function fetchModules(split, add) {
     let loaded = 0;
     const counter = (total) => (n) => { loaded += n; progress(split, loaded, total); };
     if (instantiated.size === 0) {
+        // After www/boot.js's frame of the route is painted (in a worker, at once).
+        await globalThis.bsvFramePainted;
         progress(split, 0, PACKS[split]);
         const ids = await fetchPack('pack_' + split + '.bin', counter(PACKS[split]), add);
         return { ids, first: true };
@@ -411,6 +419,7 @@ function main() {
       first: firstStrings(),
       routes: Object.fromEntries(Object.entries(routes).map(([r, { strings }]) => [r, strings])),
     },
+    heads: Object.fromEntries(Object.entries(routes).map(([r, { head }]) => [r, head])),
   };
   const splitsOf = Object.fromEntries(Object.entries(routes).map(([r, { split }]) => [r, split]));
   writeFileSync(join(pkgDir, 'routes.json'), JSON.stringify({ ...table, splits: splitsOf }, null, 2) + '\n');

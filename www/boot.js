@@ -65,6 +65,103 @@
     window.bsvBootError('old-browser');
   }
 
+  // Runs `fn` once the document's body is parsed.
+  var whenParsed = function (fn) {
+    if (document.readyState !== 'loading') return fn();
+    document.addEventListener('DOMContentLoaded', fn);
+  };
+
+  // The value of message `id` in Fluent file `text`: its lines, the continuation lines without
+  // their common indent; null if absent or if it has placeables, attributes or variants (the
+  // app's own Fluent reader then writes the text).
+  var message = function (text, id) {
+    var lines = text.split('\n');
+    for (var i = 0; i < lines.length; i++) {
+      if (lines[i].indexOf(id) !== 0 || !/^\s*=/.test(lines[i].slice(id.length))) continue;
+      var first = lines[i].slice(lines[i].indexOf('=') + 1).replace(/^ +/, '');
+      var more = [];
+      for (var j = i + 1; j < lines.length && /^[ \t]+[^\s.]/.test(lines[j]); j++) more.push(lines[j]);
+      var indent = Infinity;
+      for (var m = 0; m < more.length; m++) indent = Math.min(indent, /^[ \t]*/.exec(more[m])[0].length);
+      var value = [first].concat(more.map(function (line) { return line.slice(indent); })).join('\n');
+      value = value.replace(/^\n+/, '').replace(/\s+$/, '');
+      if (/[{}]/.test(value)) return null;
+      return value;
+    }
+    return null;
+  };
+
+  // The route's frame, as the app shows it while the page's code loads (src/ui/page_frame.rs):
+  // a bar where the header goes, the page's heading and lede in the page's own classes, and the
+  // loading line; painted before the app's code is in, so that what a phone paints first is
+  // the page's head, where the page will have it. The app replaces it with its own frame.
+  // Whether it was shown (not when the app has started or failed, or a message is missing).
+  var showFrame = function (head, list) {
+    var box = document.getElementById('boot-status');
+    if (!box || box.getAttribute('data-testid') === 'boot-error') return false;
+    var find = function (id) {
+      for (var i = 0; i < list.length; i++) {
+        var value = message(list[i], id);
+        if (value !== null) return value;
+      }
+      return null;
+    };
+    var loading = find('page-loading');
+    var template = document.createElement('template');
+    template.innerHTML = head;
+    var named = template.content.querySelectorAll('[data-i18n]');
+    for (var n = 0; n < named.length; n++) {
+      var value = find(named[n].getAttribute('data-i18n'));
+      if (value === null || loading === null) return false;
+      named[n].textContent = value;
+      named[n].setAttribute('elementtiming', 'bsv-frame');
+    }
+    var outer = template.content.firstElementChild;
+    var line = document.createElement('p');
+    line.className = 'page-loading-line';
+    var words = document.createElement('span');
+    words.textContent = loading;
+    var progress = document.createElement('progress');
+    progress.className = 'page-loading-progress';
+    progress.setAttribute('aria-hidden', 'true');
+    line.appendChild(words);
+    line.appendChild(progress);
+    outer.appendChild(line);
+    var bar = document.createElement('div');
+    bar.className = 'boot-bar';
+    var main = document.createElement('div');
+    main.className = 'site-main';
+    main.appendChild(template.content);
+    line.setAttribute('role', 'status');
+    box.removeAttribute('role');
+    box.className = 'boot-frame';
+    box.setAttribute('data-testid', 'boot-frame');
+    box.innerHTML = '';
+    box.appendChild(bar);
+    box.appendChild(main);
+    if (window.performance && performance.mark) performance.mark('bsv-boot-frame');
+    return true;
+  };
+
+  // Calls `done` once the frame's text is on screen (Element Timing), at the latest after a
+  // second (a browser without Element Timing, a tab in the background: it never paints).
+  var onScreen = function (done) {
+    var called = false;
+    var once = function () {
+      if (!called) done();
+      called = true;
+    };
+    setTimeout(once, document.visibilityState === 'hidden' ? 0 : 1000);
+    try {
+      new PerformanceObserver(function (list, observer) {
+        observer.disconnect();
+        once();
+      }).observe({ type: 'element', buffered: true });
+    } catch (e) {
+      once();
+    }
+  };
+
   // Fetches the main wasm (the HTML's preload of it) and preloads the Fluent files the route
   // needs in the visitor's language at once, and the route's pack once most of the main wasm
   // is in (the route table at the head of this file in dist/, written by the build). On a slow
@@ -100,6 +197,15 @@
     }
     var preferred = navigator.languages || [navigator.language];
     for (var i = 0; !lang && i < preferred.length; i++) lang = pick(preferred[i]);
+    lang = lang || 'en';
+    document.documentElement.lang = lang;
+    // Projector mode sizes the header by the viewport: its frame waits for the app.
+    var projector = false;
+    try {
+      projector = localStorage.getItem('bsv.projector') === '1';
+    } catch (e) {
+      projector = false;
+    }
     var preload = function (file) {
       var link = document.createElement('link');
       link.rel = 'preload';
@@ -109,11 +215,57 @@
       document.head.appendChild(link);
     };
     var strings = table.strings.first.concat(table.strings.routes[route] || []);
-    for (var k = 0; k < strings.length; k++) preload('locales/' + (lang || 'en') + '/' + strings[k]);
+    // The strings are fetched here, once (a failed request once more): the app takes each
+    // response from `bsvTexts` (src/ui/lang_files.rs), and the frame below is written from
+    // copies of them.
+    var texts = {};
+    window.bsvTexts = texts;
+    var again = function (url) {
+      return function (response) {
+        return response && response.ok ? response : fetch(url);
+      };
+    };
+    var textOf = function (response) {
+      if (!response.ok) throw new Error(response.url + ': HTTP ' + response.status);
+      return response.clone().text();
+    };
+    var files = [];
+    for (var k = 0; k < strings.length; k++) {
+      var url = 'locales/' + lang + '/' + strings[k];
+      if (typeof fetch === 'function') {
+        texts[url] = fetch(url).then(again(url), again(url));
+        files.push(texts[url].then(textOf));
+      } else {
+        preload(url);
+      }
+    }
+    // Resolves once the route's frame is painted, or at once when there is none to paint. The
+    // route's pack is asked for after it (here, and by the app's loader: scripts/split-link.mjs)
+    // so that the pack never holds up what a phone paints first.
+    var painted = { then: function (fn) { fn(); } };
+    if (typeof fetch === 'function') {
+      var framePainted;
+      painted = new Promise(function (resolve) {
+        framePainted = resolve;
+      });
+      window.bsvFramePainted = painted;
+      if (table.heads && table.heads[route] && !projector && !/(?:^|&)embed=1(?:&|$)/.test(query)) {
+        Promise.all(files).then(function (list) {
+          whenParsed(function () {
+            if (!showFrame(table.heads[route], list)) return framePainted();
+            onScreen(framePainted);
+          });
+        }, framePainted);
+      } else {
+        framePainted();
+      }
+    }
     var packAsked = false;
     var askPack = function () {
-      if (!packAsked && table.routes[route]) preload('pkg/' + table.routes[route]);
-      packAsked = true;
+      painted.then(function () {
+        if (!packAsked && table.routes[route]) preload('pkg/' + table.routes[route]);
+        packAsked = true;
+      });
     };
     if (typeof fetch === 'function' && typeof ReadableStream === 'function') {
       var wasm = fetch(table.main.file);

@@ -32,7 +32,9 @@ async fn add(lang: Lang, _files: &[&str]) -> Result<(), JsValue> {
     Ok(())
 }
 
-/// Fetches `files` of `lang` together and adds them once all have come.
+/// Fetches `files` of `lang` together and adds them once all have come. A file `www/boot.js`
+/// asked for already (its response's promise in `window.bsvTexts`, by URL) is taken from
+/// there, once.
 #[cfg(feature = "split")]
 async fn add(lang: Lang, files: &[&str]) -> Result<(), JsValue> {
     use wasm_bindgen::JsCast;
@@ -43,7 +45,17 @@ async fn add(lang: Lang, files: &[&str]) -> Result<(), JsValue> {
         .iter()
         .map(|file| {
             let url = format!("locales/{}/{file}", lang.code());
-            (*file, window.fetch_with_str(&url))
+            let asked = js_sys::Reflect::get(&window, &"bsvTexts".into())
+                .ok()
+                .filter(JsValue::is_object)
+                .and_then(|texts| {
+                    let key = JsValue::from_str(&url);
+                    let asked = js_sys::Reflect::get(&texts, &key).ok()?.dyn_into().ok()?;
+                    js_sys::Reflect::delete_property(texts.unchecked_ref::<js_sys::Object>(), &key)
+                        .ok()?;
+                    Some(asked)
+                });
+            (*file, asked.unwrap_or_else(|| window.fetch_with_str(&url)))
         })
         .collect();
     let mut texts = Vec::with_capacity(requests.len());
