@@ -124,6 +124,16 @@ function u32(n) {
   return b;
 }
 
+/** The split points a page loads by itself once it is shown (its later part), by the page's
+ * split point: each gets a pack of the modules it adds to the page's, for a first visit. */
+export const FOLLOW_ON = {
+  home_page: ['home_cards'],
+  ik2r_page: ['ik2r_more'],
+  umeyama_page: ['umeyama_more'],
+  teleop_page: ['teleop_files'],
+  so101_page: ['so101_files'],
+};
+
 /** Route id → `{ split, head, strings }` (its split point, the markup of its head with the ids
  * of its heading's and lede's messages, and the Fluent files it needs beyond the first ones),
  * from the page table's `page!(split, Type, id, title, head, nav, [files])` lines and its
@@ -168,8 +178,13 @@ const LOADER = `
 // chunks of split point s as ranges ("19-27,29"), before its own module split_<s>, SPLITS[s].own
 // bytes): the first split point of a tab needs none of it (every module is missing, and the pack
 // names its modules), so the table is fetched once that first split point is in, not before.
+// AFTER[s]: the split points after which a pack of s's other modules stands,
+// pack_<s>-after-<first>.bin: the part a page loads by itself once it is shown, after the
+// tab's first split point (its page), in one request where the service worker is not there yet.
 const PACKS = __PACKS__;
+const AFTER = __AFTER__;
 const instantiated = new Map();
+let firstSplit;
 let table;
 function splitTable() {
     if (table === undefined) {
@@ -273,6 +288,7 @@ async function fetchModules(split, add) {
     let loaded = 0;
     const counter = (total) => (n) => { loaded += n; progress(split, loaded, total); };
     if (instantiated.size === 0) {
+        firstSplit = split;
         // After www/boot.js's frame of the route is painted (in a worker, at once).
         await globalThis.bsvFramePainted;
         progress(split, 0, PACKS[split]);
@@ -294,6 +310,15 @@ async function fetchModules(split, add) {
     if (missing.length > 1 && globalThis.navigator?.serviceWorker?.controller) {
         await fetchPack('pack_' + split + '.bin?only=' + missing.map(([id]) => id).join(','), count, add);
         return { ids, first: false };
+    }
+    // The pack of what this split point adds to the tab's first one, if it holds every missing
+    // module (it may hold some that came since: add() skips them).
+    if (missing.length > 1 && (AFTER[split] ?? []).includes(firstSplit)) {
+        const theirs = new Set((await modulesOf(firstSplit)).map(([id]) => id));
+        if (missing.every(([id]) => !theirs.has(id))) {
+            await fetchPack('pack_' + split + '-after-' + firstSplit + '.bin', count, add);
+            return { ids, first: false };
+        }
     }
     await Promise.all(missing.map(([id]) => {
         const bytes = fetchBytes('chunks/' + id + '.wasm', count);
@@ -391,6 +416,19 @@ function main() {
     packs[name] = { file, bytes: bytes.length };
     splits[name] = listOf(name, modules, sizes);
   }
+  // The part each page loads by itself once it is shown, after its page's own modules.
+  const after = {};
+  for (const [first, laters] of Object.entries(FOLLOW_ON)) {
+    for (const later of laters) {
+      if (!packs[first] || !packs[later]) throw new Error(`FOLLOW_ON: no split point ${packs[first] ? later : first}`);
+      const theirs = new Set(modulesOf(loader, first));
+      const modules = modulesOf(loader, later)
+        .filter((file) => !theirs.has(file))
+        .map((file) => ({ name: file, bytes: slimmed(file) }));
+      writeFileSync(join(pkgDir, `pack_${later}-after-${first}.bin`), pack(modules));
+      (after[later] ??= []).push(first);
+    }
+  }
   const header = loader.header.replace(
     'console.error(e);',
     "console.warn('BSV Playground: a part of the app could not be loaded:', e);",
@@ -401,7 +439,8 @@ function main() {
   writeFileSync(
     join(pkgDir, '__wasm_split.js'),
     header +
-      LOADER.replace('__PACKS__', JSON.stringify(Object.fromEntries(Object.entries(packs).map(([n, p]) => [n, p.bytes])))) +
+      LOADER.replace('__PACKS__', JSON.stringify(Object.fromEntries(Object.entries(packs).map(([n, p]) => [n, p.bytes]))))
+        .replace('__AFTER__', JSON.stringify(after)) +
       exports +
       '\n',
   );

@@ -8,6 +8,8 @@
 
   window.bsvBootError = function (kind, detail) {
     var show = function () {
+      var frame = document.getElementById('boot-frame');
+      if (frame) frame.parentNode.removeChild(frame);
       var box = document.getElementById('boot-status');
       if (!box) {
         box = document.createElement('div');
@@ -71,34 +73,25 @@
     document.addEventListener('DOMContentLoaded', fn);
   };
 
-  // The value of message `id` in Fluent file `text`: its lines, the continuation lines without
-  // their common indent; null if absent or if it has placeables, attributes or variants (the
-  // app's own Fluent reader then writes the text).
+  // The value of message `id` in Fluent file `text` when it is one line of plain text (as every
+  // page's heading and lede is: tests/e2e/boot_frame.test.mjs), else null.
   var message = function (text, id) {
-    var lines = text.split('\n');
-    for (var i = 0; i < lines.length; i++) {
-      if (lines[i].indexOf(id) !== 0 || !/^\s*=/.test(lines[i].slice(id.length))) continue;
-      var first = lines[i].slice(lines[i].indexOf('=') + 1).replace(/^ +/, '');
-      var more = [];
-      for (var j = i + 1; j < lines.length && /^[ \t]+[^\s.]/.test(lines[j]); j++) more.push(lines[j]);
-      var indent = Infinity;
-      for (var m = 0; m < more.length; m++) indent = Math.min(indent, /^[ \t]*/.exec(more[m])[0].length);
-      var value = [first].concat(more.map(function (line) { return line.slice(indent); })).join('\n');
-      value = value.replace(/^\n+/, '').replace(/\s+$/, '');
-      if (/[{}]/.test(value)) return null;
-      return value;
-    }
-    return null;
+    var found = new RegExp('^' + id + ' *= *(.*)$', 'm').exec(text);
+    if (!found || /[{}]/.test(found[1])) return null;
+    var next = text.slice(found.index + found[0].length + 1).split('\n')[0];
+    return /^[ \t]+[^\s.]/.test(next) ? null : found[1];
   };
 
   // The route's frame, as the app shows it while the page's code loads (src/ui/page_frame.rs):
   // a bar where the header goes, the page's heading and lede in the page's own classes, and the
   // loading line; painted before the app's code is in, so that what a phone paints first is
-  // the page's head, where the page will have it. The app replaces it with its own frame.
+  // the page's head, where the page will have it. It stands before #app, which it hides
+  // (app.css) until the app's own frame replaces it (src/ui/shell.rs).
   // Whether it was shown (not when the app has started or failed, or a message is missing).
   var showFrame = function (head, list) {
     var box = document.getElementById('boot-status');
-    if (!box || box.getAttribute('data-testid') === 'boot-error') return false;
+    var app = document.getElementById('app');
+    if (!box || !app || box.getAttribute('data-testid') === 'boot-error') return false;
     var find = function (id) {
       for (var i = 0; i < list.length; i++) {
         var value = message(list[i], id);
@@ -133,12 +126,14 @@
     main.className = 'site-main';
     main.appendChild(template.content);
     line.setAttribute('role', 'status');
-    box.removeAttribute('role');
-    box.className = 'boot-frame';
-    box.setAttribute('data-testid', 'boot-frame');
-    box.innerHTML = '';
-    box.appendChild(bar);
-    box.appendChild(main);
+    var frame = document.createElement('div');
+    frame.id = 'boot-frame';
+    frame.className = 'boot-frame';
+    frame.setAttribute('data-testid', 'boot-frame');
+    frame.appendChild(bar);
+    frame.appendChild(main);
+    box.parentNode.removeChild(box);
+    app.parentNode.insertBefore(frame, app);
     if (window.performance && performance.mark) performance.mark('bsv-boot-frame');
     return true;
   };

@@ -59,8 +59,6 @@ const EMBED_SHELL: ShellFns = ShellFns {
 };
 
 const APP_ID: &str = "app";
-/// index.html's "Loading…" lines, or the route's frame www/boot.js put in their place.
-const BOOT_STATUS_ID: &str = "boot-status";
 const MAIN_ID: &str = "app-main";
 /// The status line under "?" (the shortcuts overlay could not be loaded).
 const HELP_STATUS_ID: &str = "help-status";
@@ -90,19 +88,7 @@ pub(crate) fn start(lang: Lang) -> Result<bool, JsValue> {
             app
         }
     };
-    // The route's frame that www/boot.js painted stays in front (and the shell after it hidden,
-    // app.css) until the route's own frame or page replaces it ([`mount_route`]).
-    let boot_frame = boot_frame();
-    let list = app.child_nodes();
-    let children: Vec<web_sys::Node> = (0..list.length()).filter_map(|i| list.item(i)).collect();
-    for child in children {
-        if !boot_frame
-            .as_ref()
-            .is_some_and(|frame| child.is_same_node(Some(frame)))
-        {
-            app.remove_child(&child)?;
-        }
-    }
+    dom::clear(&app);
     dom::append(&app, &build_skip_link()?)?;
     dom::append(&app, &build_header()?)?;
     let main = dom::el_class("main", "site-main")?;
@@ -118,10 +104,8 @@ pub(crate) fn start(lang: Lang) -> Result<bool, JsValue> {
     })?
     .forever();
     dom::append(&app, &bar)?;
-    if let Some(status) = document.get_element_by_id(BOOT_STATUS_ID) {
-        if boot_frame.is_none() {
-            status.remove();
-        }
+    if let Some(status) = document.get_element_by_id("boot-status") {
+        status.remove();
     }
 
     apply_projector_class(ctx::projector())?;
@@ -698,20 +682,12 @@ pub fn current_page_id() -> Option<&'static str> {
         .flatten()
 }
 
-/// The route's frame www/boot.js painted, while it stands.
-fn boot_frame() -> Option<Element> {
-    dom::document()
-        .ok()?
-        .get_element_by_id(BOOT_STATUS_ID)
-        .filter(|status| status.get_attribute("data-testid").as_deref() == Some("boot-frame"))
-}
-
 /// Drops the current page and mounts the one `route` names: at once if its chunk is in, else
 /// after showing the page's frame while the chunk loads. The frame www/boot.js painted goes in
 /// the same task.
 fn mount_route(route: &Route) -> Result<(), JsValue> {
     let result = mount_route_in_main(route);
-    if let Some(frame) = boot_frame() {
+    if let Some(frame) = dom::document()?.get_element_by_id("boot-frame") {
         frame.remove();
     }
     result

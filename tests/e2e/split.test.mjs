@@ -25,7 +25,7 @@ const appErrors = (errors) => errors.filter((e) => !/Failed to load resource/.te
 /** Blocks (404) every file of the split point of `route`: its pack and its own module. */
 async function block(context, route) {
   const split = table.splits[route];
-  const pattern = new RegExp(`/pkg/(pack_${split}\\.bin|chunks/split_${split}\\.wasm)$`);
+  const pattern = new RegExp(`/pkg/(pack_${split}(-after-\\w+)?\\.bin|chunks/split_${split}\\.wasm)$`);
   await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
   return pattern;
 }
@@ -106,7 +106,7 @@ for (const lang of ['en', 'ja']) {
   test(`the home page's arm is live before its tiles and cards; if their code cannot be fetched, a line says so with Retry (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`);
     try {
-      const pattern = /\/pkg\/(pack_home_cards\.bin|chunks\/split_home_cards\.wasm)$/;
+      const pattern = /\/pkg\/(pack_home_cards(-after-\w+)?\.bin|chunks\/split_home_cards\.wasm)$/;
       await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
       await page.evaluate((l) => { location.hash = `#/?lang=${l}`; }, lang);
       await page.reload();
@@ -139,7 +139,7 @@ for (const lang of ['en', 'ja']) {
   test(`the IK page's arm is live before its heatmap, plot and downloads; if their code cannot be fetched, a line says so with Retry (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`, { viewport: { width: 1280, height: 900 } });
     try {
-      const pattern = /\/pkg\/(pack_ik2r_more\.bin|chunks\/split_ik2r_more\.wasm)$/;
+      const pattern = /\/pkg\/(pack_ik2r_more(-after-\w+)?\.bin|chunks\/split_ik2r_more\.wasm)$/;
       await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
       await page.evaluate((l) => { location.hash = `#/ik-2r?lang=${l}`; }, lang);
       await page.reload();
@@ -231,7 +231,7 @@ for (const lang of ['en', 'ja']) {
   test(`the Umeyama page's points, fit and steps are live before its exports; if their code cannot be fetched, a line says so with Retry (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`, { viewport: { width: 1280, height: 900 } });
     try {
-      const pattern = /\/pkg\/(pack_umeyama_more\.bin|chunks\/split_umeyama_more\.wasm)$/;
+      const pattern = /\/pkg\/(pack_umeyama_more(-after-\w+)?\.bin|chunks\/split_umeyama_more\.wasm)$/;
       await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
       await page.evaluate((l) => { location.hash = `#/umeyama-2d?lang=${l}`; }, lang);
       await page.reload();
@@ -302,7 +302,7 @@ for (const lang of ['en', 'ja']) {
   test(`the SO-101 arm flies before the session files' code is here; a download says so if it cannot be fetched, and works once it can (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`, { viewport: { width: 1280, height: 900 } });
     try {
-      const pattern = /\/pkg\/(pack_so101_files\.bin|chunks\/split_so101_files\.wasm)$/;
+      const pattern = /\/pkg\/(pack_so101_files(-after-\w+)?\.bin|chunks\/split_so101_files\.wasm)$/;
       await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
       await page.evaluate((l) => { location.hash = `#/so101?lang=${l}`; }, lang);
       await page.reload();
@@ -339,7 +339,7 @@ for (const lang of ['en', 'ja']) {
 test('#/teleop: a download says so if the session files\' code cannot be fetched, and works once it can', async () => {
   const { page, context, errors, close } = await openApp(server.url, '#/lesson?lang=ja', { viewport: { width: 1280, height: 900 } });
   try {
-    const pattern = /\/pkg\/(pack_teleop_files\.bin|chunks\/split_teleop_files\.wasm)$/;
+    const pattern = /\/pkg\/(pack_teleop_files(-after-\w+)?\.bin|chunks\/split_teleop_files\.wasm)$/;
     await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
     await page.evaluate(() => { location.hash = '#/teleop?lang=ja'; });
     await page.reload();
@@ -364,7 +364,7 @@ for (const lang of ['en', 'ja']) {
   test(`"+ Lesson" says so when its code cannot be fetched, and adds the view once it can (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/pid-step?Kp=2&lang=${lang}`);
     try {
-      const pattern = /\/pkg\/(pack_lesson_add\.bin|chunks\/split_lesson_add\.wasm)$/;
+      const pattern = /\/pkg\/(pack_lesson_add(-after-\w+)?\.bin|chunks\/split_lesson_add\.wasm)$/;
       await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
       await page.reload();
       await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
@@ -394,7 +394,7 @@ for (const lang of ['en', 'ja']) {
   test(`"?" says so when the shortcuts' code cannot be fetched, and opens them once it can (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/rrt-2d?lang=${lang}`);
     try {
-      const pattern = /\/pkg\/(pack_shortcuts_overlay\.bin|chunks\/split_shortcuts_overlay\.wasm)$/;
+      const pattern = /\/pkg\/(pack_shortcuts_overlay(-after-\w+)?\.bin|chunks\/split_shortcuts_overlay\.wasm)$/;
       await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
       await page.reload();
       await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');
@@ -421,7 +421,7 @@ for (const lang of ['en', 'ja']) {
   test(`the drills page says so when its kernels cannot be fetched, and Run works once they can (${lang})`, async () => {
     const { page, context, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`);
     try {
-      const pattern = /\/pkg\/(pack_worker\.bin|chunks\/split_worker\.wasm)$/;
+      const pattern = /\/pkg\/(pack_worker(-after-\w+)?\.bin|chunks\/split_worker\.wasm)$/;
       await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
       await page.evaluate(() => { location.hash = '#/drills?recipe=pid-step'; });
       const error = page.locator('[data-testid="drills-error"]');
