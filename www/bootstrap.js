@@ -11,12 +11,28 @@ try {
   performance.mark('bsv-wasm-ready');
   await startApp();
   performance.mark('bsv-app-ready');
-  registerServiceWorker();
+  whenQuiet(registerServiceWorker);
 } catch (error) {
   console.error('BSV Playground could not start:', error);
   if (typeof window.bsvBootError === 'function') {
     window.bsvBootError('wasm', error);
   }
+}
+
+// Calls `fn` once the main thread has had two whole idle periods in a row (the page's later
+// parts and its idle-time work are done), at the latest after 5 s (a page that animates is
+// never wholly idle): the service worker's install, which fetches and stores every file of the
+// build, then does not compete with the page's first seconds.
+function whenQuiet(fn) {
+  if (typeof requestIdleCallback !== 'function') return setTimeout(fn, 2000);
+  const started = performance.now();
+  let quiet = 0;
+  const check = (deadline) => {
+    quiet = deadline.timeRemaining() >= 45 ? quiet + 1 : 0;
+    if (quiet >= 2 || performance.now() - started > 5000) fn();
+    else requestIdleCallback(check, { timeout: 1000 });
+  };
+  requestIdleCallback(check, { timeout: 1000 });
 }
 
 // Offline install: the service worker (dist/sw.js, written per build by scripts/sw-build.mjs)

@@ -65,7 +65,7 @@ fn build(root: &Element, shell: ShellLink) -> Result<Rc<HomeArm>, JsValue> {
 }
 
 /// Builds the tiles, recipe cards and tools table (`home_cards`).
-type CardsFn = fn(&Element, ShellLink) -> Result<(), JsValue>;
+type CardsFn = fn(&Element, &Element, ShellLink) -> Result<(), JsValue>;
 
 /// The tiles, recipe cards and tools table: a wasm chunk of their own (drawing the pictures
 /// runs every recipe's kernel), fetched once the arm is live.
@@ -91,7 +91,7 @@ fn load_cards(root: Element, status: Element, shell: ShellLink) {
                 if !root.contains(Some(&status)) {
                     return;
                 }
-                build(&root, shell).map(|()| status.remove())
+                build(&root, &status, shell)
             }
             Err(_) => show_failed(&root, &status, shell),
         };

@@ -20,8 +20,11 @@ use crate::ui::dom::{append, el, el_class, el_i18n, el_text};
 use crate::ui::page::{PageDef, ShellLink};
 use crate::ui::router::{self, HOME_ID};
 
-/// Builds the tiles, the recipe cards and the tools table into `root` and draws the pictures.
-pub fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
+/// Builds the tiles, the recipe cards and the tools table into `root`, before `status` (the
+/// line that stood in for them, removed once they are all in), one part per task so that no
+/// task is long on a phone, then draws the pictures. Each part goes below the ones before it:
+/// nothing shown moves.
+pub fn build(root: &Element, status: &Element, shell: ShellLink) -> Result<(), JsValue> {
     let tiles = el_class("ul", "tile-grid")?;
     tiles.set_attribute("data-testid", "home-tiles")?;
     crate::ui::dom::set_i18n_attrs(&tiles, &[("aria-label", "home-tiles-label")])?;
@@ -31,8 +34,24 @@ pub fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
         append(&item, &featured_card(def)?)?;
         append(&tiles, &item)?;
     }
-    append(root, &tiles)?;
+    root.insert_before(&tiles, Some(status))?;
+    let (root, status) = (root.clone(), status.clone());
+    wasm_bindgen_futures::spawn_local(async move {
+        if let Err(error) = build_rest(&root, &status, shell).await {
+            web_sys::console::error_1(&error);
+        }
+    });
+    Ok(())
+}
 
+/// The recipe cards (in two parts) and the tools table, each in a later task while the home
+/// page stands (`status` still in `root`), then the pictures.
+async fn build_rest(root: &Element, status: &Element, shell: ShellLink) -> Result<(), JsValue> {
+    let here = || root.contains(Some(status));
+    crate::ui::schedule::next_task().await;
+    if !here() {
+        return Ok(());
+    }
     let recipes = el_class("section", "recipes")?;
     recipes.set_attribute("aria-labelledby", "recipes-heading")?;
     crate::ui::dom::mark_section(&recipes, "recipes")?;
@@ -44,12 +63,26 @@ pub fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
         &el_i18n("p", "section-intro", "home-recipes-intro")?,
     )?;
     let grid = el_class("ol", "recipe-grid")?;
-    for recipe in RECIPES.iter() {
+    append(&recipes, &grid)?;
+    let (first, second) = RECIPES.split_at(RECIPES.len() / 2);
+    for recipe in first {
         append(&grid, &recipe_card(recipe.info, shell)?)?;
     }
-    append(&recipes, &grid)?;
-    append(root, &recipes)?;
-    append(root, &tools_section()?)?;
+    root.insert_before(&recipes, Some(status))?;
+    crate::ui::schedule::next_task().await;
+    if !here() {
+        return Ok(());
+    }
+    for recipe in second {
+        append(&grid, &recipe_card(recipe.info, shell)?)?;
+    }
+    crate::ui::schedule::next_task().await;
+    if !here() {
+        return Ok(());
+    }
+    let tools = tools_section()?;
+    root.insert_before(&tools, Some(status))?;
+    status.remove();
     home_picture::draw_all(root)
 }
 
