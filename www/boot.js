@@ -87,11 +87,12 @@
   // loading line; painted before the app's code is in, so that what a phone paints first is
   // the page's head, where the page will have it. It stands before #app, which it hides
   // (app.css) until the app's own frame replaces it (src/ui/shell.rs).
-  // Whether it was shown (not when the app has started or failed, or a message is missing).
+  // The frame, or null when it is not shown (the app has started or failed, a message is
+  // missing).
   var showFrame = function (head, list) {
     var box = document.getElementById('boot-status');
     var app = document.getElementById('app');
-    if (!box || !app || box.getAttribute('data-testid') === 'boot-error') return false;
+    if (!box || !app || box.getAttribute('data-testid') === 'boot-error') return null;
     var find = function (id) {
       for (var i = 0; i < list.length; i++) {
         var value = message(list[i], id);
@@ -105,7 +106,7 @@
     var named = template.content.querySelectorAll('[data-i18n]');
     for (var n = 0; n < named.length; n++) {
       var value = find(named[n].getAttribute('data-i18n'));
-      if (value === null || loading === null) return false;
+      if (value === null || loading === null) return null;
       named[n].textContent = value;
       named[n].setAttribute('elementtiming', 'bsv-frame');
     }
@@ -135,18 +136,24 @@
     box.parentNode.removeChild(box);
     app.parentNode.insertBefore(frame, app);
     if (window.performance && performance.mark) performance.mark('bsv-boot-frame');
-    return true;
+    return frame;
   };
 
-  // Calls `done` once the frame's text is on screen (Element Timing), at the latest after a
-  // second (a browser without Element Timing, a tab in the background: it never paints).
-  var onScreen = function (done) {
+  // Calls `done` once the frame's text is on screen (Element Timing), or once the app's own
+  // frame has replaced it, at the latest after a second (a browser without Element Timing, a tab
+  // in the background: it never paints).
+  var onScreen = function (frame, done) {
     var called = false;
     var once = function () {
       if (!called) done();
       called = true;
     };
     setTimeout(once, document.visibilityState === 'hidden' ? 0 : 1000);
+    new MutationObserver(function (changes, observer) {
+      if (frame.parentNode) return;
+      observer.disconnect();
+      once();
+    }).observe(frame.parentNode, { childList: true });
     try {
       new PerformanceObserver(function (list, observer) {
         observer.disconnect();
@@ -247,8 +254,9 @@
       if (table.heads && table.heads[route] && !projector && !/(?:^|&)embed=1(?:&|$)/.test(query)) {
         Promise.all(files).then(function (list) {
           whenParsed(function () {
-            if (!showFrame(table.heads[route], list)) return framePainted();
-            onScreen(framePainted);
+            var frame = showFrame(table.heads[route], list);
+            if (!frame) return framePainted();
+            onScreen(frame, framePainted);
           });
         }, framePainted);
       } else {
