@@ -15,7 +15,7 @@ mod sliced;
 mod spec;
 mod thinned;
 
-use std::cell::{Ref, RefCell};
+use std::cell::{Cell, Ref, RefCell};
 use std::rc::{Rc, Weak};
 
 use glam::DVec2;
@@ -39,7 +39,7 @@ use crate::ui::kit::readouts::Readouts;
 use crate::ui::kit::recipe_controls::{record_frame_ms, RecipeControls};
 use crate::ui::kit::scope::Scope;
 use crate::ui::kit::url_state::UrlWriter;
-use crate::ui::page::{MountCtx, Page, Shortcut};
+use crate::ui::page::{MountCtx, Page, ShellLink, ShellRequest, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
 use crate::view::signal::sig;
@@ -231,9 +231,28 @@ struct Live<S: SignalPage> {
     pending: RefCell<Option<Job<S>>>,
     slices: FrameLoop,
     computing: Element,
+    /// The first drawing, in an animation frame after the mount's task (which builds the
+    /// page) and the page's first layout: three shorter tasks on a phone instead of one long
+    /// one. The page is settled once it has drawn.
+    first: FrameLoop,
+    drawn: Cell<bool>,
+    shell: ShellLink,
 }
 
 impl<S: SignalPage> Live<S> {
+    /// The first drawing (see [`Live::first`]); the shell is told the page is settled.
+    fn first_draw(&self) {
+        if self.drawn.replace(true) {
+            return;
+        }
+        let t0 = now_ms();
+        self.redraw_all();
+        record_frame_ms(now_ms() - t0);
+        if let Err(error) = (self.shell.request)(ShellRequest::Settled) {
+            web_sys::console::error_1(&error);
+        }
+    }
+
     fn show(&self, fit: Fit, resized: bool, run: Option<RunFrom>) {
         self.page.show(&self.kit, Draw { fit, resized, run });
     }
@@ -568,6 +587,7 @@ impl<S: SignalPage> Page for Signal<S> {
             let mut scope = Scope::new();
             let url = UrlWriter::new(&mut scope, me, Live::query);
             let slices = scope.frame_loop(me, |l: &Live<S>, _| l.compute_slice());
+            let first = scope.frame_loop(me, |l: &Live<S>, _| l.first_draw());
             Live {
                 kit,
                 page,
@@ -576,16 +596,30 @@ impl<S: SignalPage> Page for Signal<S> {
                 pending: RefCell::new(None),
                 slices,
                 computing,
+                first,
+                drawn: Cell::new(false),
+                shell: ctx.shell,
             }
         });
         live.listen(&Rc::downgrade(&live))?;
-        let t0 = now_ms();
-        live.redraw_all();
-        record_frame_ms(now_ms() - t0);
+        // The page's first layout (a fresh tab's costliest: its fonts, its styles) in a task of
+        // its own, then the first drawing in the next animation frame.
+        let weak = Rc::downgrade(&live);
+        wasm_bindgen_futures::spawn_local(async move {
+            crate::ui::schedule::next_task().await;
+            if let Some(live) = weak.upgrade() {
+                live.kit.root.get_bounding_client_rect();
+                live.first.request();
+            }
+        });
         if let Some(rows) = big {
             live.run(params, rows, RunFrom::Mount);
         }
         Ok(Signal(live))
+    }
+
+    fn settled(&self) -> bool {
+        self.0.drawn.get()
     }
 
     fn relocalize(&self) {
