@@ -243,9 +243,11 @@
     }
     // Resolves once the route's frame is painted, or at once when there is none to paint. The
     // route's pack is asked for after it (here, and by the app's loader: scripts/split-link.mjs)
-    // so that the pack never holds up what a phone paints first.
+    // so that on a first visit the pack never holds up what a phone paints first. A visit the
+    // service worker serves does not wait: its files are here.
     var painted = { then: function (fn) { fn(); } };
-    if (typeof fetch === 'function') {
+    var served = navigator.serviceWorker && navigator.serviceWorker.controller;
+    if (typeof fetch === 'function' && !served) {
       var framePainted;
       painted = new Promise(function (resolve) {
         framePainted = resolve;
@@ -265,6 +267,10 @@
     }
     var packAsked = false;
     var askPack = function () {
+      // On a slow link (most of the main wasm in only after a second) the pack is asked for at
+      // once: the frame is painted by then, or the main thread is busy, and the network must
+      // not idle. On a fast one it waits for the frame's paint.
+      if (framePainted && performance.now() > 1000) framePainted();
       painted.then(function () {
         if (!packAsked && table.routes[route]) preload('pkg/' + table.routes[route]);
         packAsked = true;
