@@ -4,12 +4,9 @@
 //! kernel's [`SceneConfig`]; the readout texts; the world ↔ screen transform of the arm view;
 //! the repeatability table's cells. No web-sys: `cargo test` runs all of it.
 
+use crate::teleop::input::{GAMEPAD_DEAD_ZONE, GAMEPAD_SENSITIVITIES, KEYBOARD_SENSITIVITIES};
 use crate::teleop::session::{clean_pilot_id, InputDevice, PILOT_ID_MAX};
 use crate::teleop::{ControlParams, IkMethod, SceneConfig, Task};
-use crate::view::teleop_input::{
-    GAMEPAD_DEAD_ZONE, GAMEPAD_POS_SENSITIVITY, GAMEPAD_ROT_SENSITIVITY, KEYBOARD_POS_SENSITIVITY,
-    KEYBOARD_ROT_SENSITIVITY,
-};
 
 /// The settings fields, in the form's order (`data-field` names).
 pub const FIELDS: [&str; 10] = [
@@ -100,12 +97,11 @@ impl SettingsTexts {
 /// Isaac Lab's `(pos_sensitivity, rot_sensitivity)` of a device (the pointer's clutch uses the
 /// keyboard's).
 pub fn sensitivity_defaults(device: InputDevice) -> (f64, f64) {
-    match device {
-        InputDevice::Gamepad => (GAMEPAD_POS_SENSITIVITY, GAMEPAD_ROT_SENSITIVITY),
-        InputDevice::Keyboard | InputDevice::Pointer => {
-            (KEYBOARD_POS_SENSITIVITY, KEYBOARD_ROT_SENSITIVITY)
-        }
-    }
+    let defaults = match device {
+        InputDevice::Gamepad => GAMEPAD_SENSITIVITIES,
+        InputDevice::Keyboard | InputDevice::Pointer => KEYBOARD_SENSITIVITIES,
+    };
+    (defaults.pos, defaults.rot)
 }
 
 /// A field's problem: its name, the Fluent id of the message and the message's arguments.
