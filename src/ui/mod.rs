@@ -28,6 +28,7 @@ pub mod lang_files;
 pub mod lesson_bar;
 pub mod lesson_focus;
 pub mod lesson_present;
+pub mod modal;
 pub mod nav_cue;
 pub mod nav_menu;
 pub mod overlay;
@@ -41,6 +42,7 @@ pub mod section_keys;
 pub mod share;
 pub mod share_dialog;
 pub mod shell;
+pub mod split_point;
 pub mod update_banner;
 
 /// Builds the app into `#app` and routes to the page the URL names. Installs a panic hook
