@@ -23,10 +23,10 @@
 //! `umeyama_points.csv`: X, Y and the aligned points `s R X + t`, one row per point.
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{plan_of, Kernel, Progress, RunResult};
 use super::output::{CsvFile, RecipeOutput};
 use super::picture::{series, Mark, Picture, UnitFrame};
-use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound, Plan};
+use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound};
 use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, CsvText};
 use crate::rng::NumpyRng;
@@ -638,17 +638,11 @@ impl Kernel for Entry {
         setup_from_args(args)
     }
 
-    fn plan(setup: &UmeyamaSetup, _args: &Args) -> Result<Plan, RecipeError> {
-        Ok(Plan {
-            rows: setup.params.n as u64,
-        })
+    fn rows(setup: &UmeyamaSetup, _args: &Args) -> Result<u64, RecipeError> {
+        Ok(setup.params.n as u64)
     }
 
-    fn run(
-        setup: &UmeyamaSetup,
-        _args: &Args,
-        _progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(setup: &UmeyamaSetup, _args: &Args, _progress: &mut Progress) -> RunResult {
         run_setup(setup)
     }
 }
