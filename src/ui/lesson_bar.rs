@@ -209,10 +209,5 @@ fn add_current_view(shell: ShellLink, route: &Route) -> Option<(usize, bool)> {
 
 /// The (hidden) presenter bar the shell places in `#app`.
 pub(crate) fn build_bar() -> Result<Element, JsValue> {
-    let bar = dom::el_class("aside", "lesson-bar")?;
-    bar.set_id(BAR_ID);
-    bar.set_attribute("data-testid", "lesson-bar")?;
-    dom::set_i18n_attrs(&bar, &[("aria-label", "lesson-bar-label")])?;
-    dom::show(&bar, false);
-    Ok(bar)
+    dom::hidden_landmark("aside", BAR_ID, "lesson-bar-label")
 }

@@ -16,12 +16,6 @@ thread_local! {
     static OPEN: RefCell<Option<Modal>> = const { RefCell::new(None) };
 }
 
-const NAMES: Names = Names {
-    dialog: ("overlay-dialog", "shortcut-overlay"),
-    title: ("overlay-title", "overlay-title"),
-    close: ("tool-button overlay-close", "overlay-close"),
-};
-
 /// Whether the overlay is showing.
 pub fn is_open() -> bool {
     modal::is_open(&OPEN)
@@ -32,7 +26,11 @@ pub(crate) fn open(shell_keys: &[Shortcut], page_keys: &[Shortcut]) -> Result<()
     if is_open() {
         return Ok(());
     }
-    let draft = Draft::new(&NAMES)?;
+    let draft = Draft::new(&Names {
+        dialog: ("overlay-dialog", "shortcut-overlay"),
+        title: ("overlay-title", "overlay-title"),
+        close: ("tool-button overlay-close", "overlay-close"),
+    })?;
     let dialog = &draft.dialog;
     dom::append(dialog, &dom::el_i18n("h3", "", "overlay-shell-heading")?)?;
     dom::append(dialog, &key_list(shell_keys, "shell-keys")?)?;

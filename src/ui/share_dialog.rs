@@ -27,19 +27,17 @@ thread_local! {
     static OPEN: RefCell<Option<Modal>> = const { RefCell::new(None) };
 }
 
-const NAMES: Names = Names {
-    dialog: ("overlay-dialog share-dialog", "share-dialog"),
-    title: ("share-title", ""),
-    close: ("tool-button", "share-close"),
-};
-
 /// Opens the dialog on `link`, the page's address (does nothing if it is open).
 pub(crate) fn open(link: &str) -> Result<(), JsValue> {
     if modal::is_open(&OPEN) {
         return Ok(());
     }
     let window = dom::window()?;
-    let draft = Draft::new(&NAMES)?;
+    let draft = Draft::new(&Names {
+        dialog: ("overlay-dialog share-dialog", "share-dialog"),
+        title: ("share-title", ""),
+        close: ("tool-button", "share-close"),
+    })?;
     let body = dom::el_class("div", "share-body")?;
     show_link(&body, link)?;
     dom::append(&draft.dialog, &body)?;

@@ -21,9 +21,19 @@ pub struct Preview {
     pub total_columns: usize,
 }
 
-/// Splits one CSV line into cells (quoted cells may hold commas and `""`).
-fn cells(line: &str) -> Vec<String> {
-    let mut out = Vec::new();
+/// Where a `"` opens a quoted part of a cell.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quotes {
+    /// Only at the start of a cell, as `csv.reader` reads it (elsewhere it is text).
+    AtCellStart,
+    /// Anywhere (the plot's reader, which only needs the numbers).
+    Anywhere,
+}
+
+/// Splits one CSV line into `out`'s cells: quoted parts may hold commas and `""` (one quote);
+/// the quotes themselves are dropped.
+pub fn split_cells(line: &str, quotes: Quotes, out: &mut Vec<String>) {
+    out.clear();
     let mut cell = String::new();
     let mut quoted = false;
     let mut chars = line.chars().peekable();
@@ -34,12 +44,18 @@ fn cells(line: &str) -> Vec<String> {
                 chars.next();
             }
             ('"', true) => quoted = false,
-            ('"', false) if cell.is_empty() => quoted = true,
+            ('"', false) if cell.is_empty() || quotes == Quotes::Anywhere => quoted = true,
             (',', false) => out.push(std::mem::take(&mut cell)),
             (c, _) => cell.push(c),
         }
     }
     out.push(cell);
+}
+
+/// The cells of one CSV line, as `csv.reader` splits it.
+fn cells(line: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    split_cells(line, Quotes::AtCellStart, &mut out);
     out
 }
 

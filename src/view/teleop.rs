@@ -185,21 +185,19 @@ pub fn check(texts: &SettingsTexts) -> Result<Settings, Vec<FieldProblem>> {
             args: vec![("max", PILOT_ID_MAX.to_string())],
         });
     }
+    // A choice that is none of the list's.
+    let unknown = |field| FieldProblem {
+        field,
+        message_id: "teleop-err-choice",
+        args: Vec::new(),
+    };
     let task = Task::from_id(&texts.task);
     if task.is_none() {
-        problems.push(FieldProblem {
-            field: "task",
-            message_id: "teleop-err-choice",
-            args: Vec::new(),
-        });
+        problems.push(unknown("task"));
     }
     let method = IkMethod::from_id(&texts.ik);
     if method.is_none() {
-        problems.push(FieldProblem {
-            field: "ik",
-            message_id: "teleop-err-choice",
-            args: Vec::new(),
-        });
+        problems.push(unknown("ik"));
     }
     let mut values = [0.0; 7];
     for (i, (field, _, _)) in LIMITS.iter().enumerate() {
