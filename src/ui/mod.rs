@@ -12,6 +12,8 @@
 //! - [`embed`] and [`embed_api`]: a page embedded in another site (`embed=1`) and its
 //!   postMessage API.
 //! - [`download`], [`clipboard`], [`command_line`]: files, copies and shell quoting.
+//! - [`modal`]: the modal dialog of the `?` overlay and the share dialog; [`split_point`]: the
+//!   shell's parts cut into wasm chunks of their own, fetched on first use.
 
 use wasm_bindgen::prelude::*;
 
