@@ -437,12 +437,16 @@ mod tests {
 
     #[test]
     fn tick_labels_have_the_step_s_decimals() {
-        assert_eq!(tick_label(0.6000000000000001, 0.2), "0.6");
-        assert_eq!(tick_label(-0.005, 0.005), "-0.005");
-        assert_eq!(tick_label(0.25, 0.25), "0.25");
-        assert_eq!(tick_label(200.0, 200.0), "200");
-        assert_eq!(tick_label(0.0, 0.1), "0");
-        assert_eq!(tick_label(2.0e7, 1.0e7), "2.0e7");
+        for (value, step, shown) in [
+            (0.6000000000000001, 0.2, "0.6"),
+            (-0.005, 0.005, "-0.005"),
+            (0.25, 0.25, "0.25"),
+            (200.0, 200.0, "200"),
+            (0.0, 0.1, "0"),
+            (2.0e7, 1.0e7, "2.0e7"),
+        ] {
+            assert_eq!(tick_label(value, step), shown, "{value} by {step}");
+        }
     }
 
     #[test]

@@ -205,22 +205,26 @@ mod tests {
 
     #[test]
     fn rounded_cells_read_like_a_person_writes_them() {
-        assert_eq!(rounded("0.018000000000000002"), "0.018");
-        assert_eq!(rounded("0.30000000000000004"), "0.3");
-        assert_eq!(rounded("-3.141592653589793"), "-3.14159");
-        assert_eq!(rounded("1.0"), "1.0");
-        assert_eq!(rounded("-0.0"), "0.0");
-        assert_eq!(rounded("-0.05"), "-0.05");
-        assert_eq!(rounded("0.05"), "0.05");
-        assert_eq!(rounded("800"), "800");
-        assert_eq!(rounded("123456789012"), "123456789012");
-        assert_eq!(rounded("1234.56789012"), "1234.57");
-        assert_eq!(rounded("0.9999999999999999"), "1.0");
-        assert_eq!(rounded("1.2345678901e-10"), "1.23457e-10");
-        assert_eq!(rounded("0.0000012345678901"), "1.23457e-6");
-        assert_eq!(rounded("nan"), "nan");
-        assert_eq!(rounded("example-row"), "example-row");
-        assert_eq!(rounded(""), "");
+        for (cell, shown) in [
+            ("0.018000000000000002", "0.018"),
+            ("0.30000000000000004", "0.3"),
+            ("-3.141592653589793", "-3.14159"),
+            ("1.0", "1.0"),
+            ("-0.0", "0.0"),
+            ("-0.05", "-0.05"),
+            ("0.05", "0.05"),
+            ("800", "800"),
+            ("123456789012", "123456789012"),
+            ("1234.56789012", "1234.57"),
+            ("0.9999999999999999", "1.0"),
+            ("1.2345678901e-10", "1.23457e-10"),
+            ("0.0000012345678901", "1.23457e-6"),
+            ("nan", "nan"),
+            ("example-row", "example-row"),
+            ("", ""),
+        ] {
+            assert_eq!(rounded(cell), shown, "{cell}");
+        }
         // Rounding never changes a value by more than half a unit of its sixth digit.
         for text in [
             "0.018000000000000002",
