@@ -8,7 +8,7 @@ use std::fmt;
 use crate::pyfmt::{human, py_float};
 
 /// Everything a kernel, the argument parser or the CSV reader can reject. Serializable, so a
-/// run in a Web Worker hands the page the error itself (`crate::ui::kit::worker`), which the
+/// run in a Web Worker hands the page the error itself (the kit's worker runs), which the
 /// page then shows exactly as an error of a run of its own.
 #[non_exhaustive]
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]

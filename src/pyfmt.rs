@@ -130,14 +130,20 @@ pub fn py_float(x: f64) -> String {
     out
 }
 
-/// Appends `repr(x)` to `out` without allocating (the CSV writers' hot path).
-pub fn push_py_float(out: &mut String, x: f64) {
+/// Appends `nan`, `inf` or `-inf` (as Python writes them) when `x` is not finite; whether it
+/// did.
+fn push_non_finite(out: &mut String, x: f64) -> bool {
     if x.is_nan() {
         out.push_str("nan");
-        return;
-    }
-    if x.is_infinite() {
+    } else if x.is_infinite() {
         out.push_str(if x > 0.0 { "inf" } else { "-inf" });
+    }
+    !x.is_finite()
+}
+
+/// Appends `repr(x)` to `out` without allocating (the CSV writers' hot path).
+pub fn push_py_float(out: &mut String, x: f64) {
+    if push_non_finite(out, x) {
         return;
     }
     if x == 0.0 {
@@ -275,12 +281,7 @@ pub fn fixed(x: f64, digits: usize) -> String {
 pub fn push_fixed(out: &mut String, x: f64, digits: usize) {
     use std::fmt::Write;
     const POW10: [f64; 10] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9];
-    if x.is_nan() {
-        out.push_str("nan");
-        return;
-    }
-    if x.is_infinite() {
-        out.push_str(if x > 0.0 { "inf" } else { "-inf" });
+    if push_non_finite(out, x) {
         return;
     }
     if let Some(&scale) = POW10.get(digits) {

@@ -1,5 +1,10 @@
-//! The shape of `src/`, checked as text: no import circle between its files, no function over
-//! 150 lines outside tests, no `.rs` file over 1,200 lines.
+//! The shape of `src/`, checked as text: the layers in one direction, no import circle between
+//! its files, no function over 150 lines outside tests, no `.rs` file over 1,200 lines.
+//!
+//! The layers, bottom up: the kernels and the pieces they share (every module but `view` and
+//! `ui`), the view models (`view`), the browser's code (`ui`), in which the kit (`ui::kit`) sits
+//! below the pages (`ui::pages`). A kernel names no view or ui module, a view model no ui module,
+//! the kit no page.
 //!
 //! The import graph has a node per `.rs` file of `src/` (the command line in `src/bin` aside)
 //! and an edge from A to B when code in A (comments left out, test modules included) names
@@ -392,6 +397,100 @@ fn show(module: &Module) -> String {
     } else {
         module.join("::")
     }
+}
+
+/// A module's layer (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Layer {
+    Kernel,
+    View,
+    Kit,
+    Pages,
+    /// The rest of `ui`: the shell, the router, the DOM helpers (above view, beside the kit).
+    Ui,
+}
+
+fn layer(module: &Module) -> Layer {
+    match (
+        module.first().map(String::as_str),
+        module.get(1).map(String::as_str),
+    ) {
+        (Some("view"), _) => Layer::View,
+        (Some("ui"), Some("kit")) => Layer::Kit,
+        (Some("ui"), Some("pages")) => Layer::Pages,
+        (Some("ui"), _) => Layer::Ui,
+        _ => Layer::Kernel,
+    }
+}
+
+/// Whether code of layer `from` may name a module of layer `to`.
+fn may_name(from: Layer, to: Layer) -> bool {
+    match from {
+        Layer::Kernel => to == Layer::Kernel,
+        Layer::View => matches!(to, Layer::Kernel | Layer::View),
+        Layer::Kit => to != Layer::Pages,
+        Layer::Pages | Layer::Ui => true,
+    }
+}
+
+/// Every edge of the graph that names a layer above its own, as `from -> to`.
+fn layer_breaches(graph: &BTreeMap<Module, BTreeSet<Module>>) -> Vec<String> {
+    let mut out = Vec::new();
+    for (from, edges) in graph {
+        for to in edges {
+            if !may_name(layer(from), layer(to)) {
+                out.push(format!(
+                    "{} ({:?}) -> {} ({:?})",
+                    show(from),
+                    layer(from),
+                    show(to),
+                    layer(to)
+                ));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn layers_point_one_way() {
+    let breaches = layer_breaches(&import_graph(&sources()));
+    assert!(
+        breaches.is_empty(),
+        "a module names a layer above its own:\n    {}",
+        breaches.join("\n    ")
+    );
+}
+
+#[test]
+fn the_checker_sees_a_layer_breach() {
+    let module = |s: &str| -> Module { s.split("::").map(String::from).collect() };
+    let source = |m: &str, code: &str| Source {
+        module: module(m),
+        name: m.to_string(),
+        code: code_only(code),
+    };
+    let sources = [
+        source("teleop", "use crate::view::keys::Held;\n"),
+        source(
+            "view::keys",
+            "use crate::teleop::Command;\n// crate::ui::dom\n",
+        ),
+        source("view::plot", "fn f() { crate::ui::dom::el(); }\n"),
+        source("ui::dom", "use crate::view::plot;\n"),
+        source("ui::kit::form", "use crate::ui::pages::home;\n"),
+        source("ui::pages::home", "use crate::ui::kit::form;\n"),
+        source("ui::shell", "use crate::ui::pages::home;\n"),
+    ];
+    let breaches = layer_breaches(&import_graph(&sources));
+    assert_eq!(
+        breaches,
+        [
+            "teleop (Kernel) -> view::keys (View)",
+            "ui::kit::form (Kit) -> ui::pages::home (Pages)",
+            "view::plot (View) -> ui::dom (Ui)",
+        ]
+    );
 }
 
 #[test]

@@ -26,7 +26,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use bsv_playground::args::ArgKind;
+use bsv_playground::args::{ArgKind, ArgSpec};
 use bsv_playground::pyfmt::human;
 use bsv_playground::recipes::{self, Recipe, RecipeOutput};
 
@@ -241,19 +241,7 @@ fn teleop_replay(args: &[String]) -> Result<(), Failure> {
             args.len()
         )));
     };
-    let fail =
-        |e: std::io::Error| Failure::Usage(format!("{TELEOP_REPLAY}: cannot read '{path}': {e}"));
-    let len = fs::metadata(path).map_err(fail)?.len();
-    if len > MAX_EPISODE_BYTES {
-        return Err(Failure::Usage(format!(
-            "{TELEOP_REPLAY}: '{path}' is {} bytes; the limit is {} bytes",
-            human(len as f64),
-            human(MAX_EPISODE_BYTES as f64)
-        )));
-    }
-    let bytes = fs::read(path).map_err(fail)?;
-    let text = recipes::decode_input(path, &bytes)
-        .map_err(|e| Failure::Usage(format!("{TELEOP_REPLAY}: {e}")))?;
+    let text = read_text(TELEOP_REPLAY, path, MAX_EPISODE_BYTES)?;
     let unread = |e: teleop::TeleopError| Failure::Usage(format!("{TELEOP_REPLAY}: '{path}': {e}"));
     let differs = |m: teleop::ReplayMismatch| {
         Failure::Mismatch(format!("{TELEOP_REPLAY}: '{path}': not reproduced: {m}"))
@@ -353,28 +341,26 @@ fn recipe_help(recipe: &Recipe) -> String {
         info.writes.join(", "),
     );
     for a in info.args {
-        s.push_str(&format!(
-            "  {:<14} {} (default {}; {})\n",
-            a.name,
-            a.help,
-            show_default(a.default),
-            a.limits_text()
-        ));
+        s.push_str(&spec_line(a.name, a));
     }
     if !info.flags.is_empty() {
         s.push_str("\noptions (beyond the Python recipe):\n");
         for f in info.flags {
-            s.push_str(&format!(
-                "  --{:<12} {} (default {}; {})\n",
-                f.name,
-                f.help,
-                show_default(f.default),
-                f.limits_text()
-            ));
+            s.push_str(&spec_line(&format!("--{}", f.name), f));
         }
     }
     s.push_str("  --out DIR      folder for the CSV files (default: current folder)\n");
     s
+}
+
+/// The help's line of an argument or option called `name`: what it is, its default and limits.
+fn spec_line(name: &str, spec: &ArgSpec) -> String {
+    format!(
+        "  {name:<14} {} (default {}; {})\n",
+        spec.help,
+        show_default(spec.default),
+        spec.limits_text()
+    )
 }
 
 fn show_default(d: &str) -> &str {

@@ -16,14 +16,14 @@
 //! - at most [`MAX_ROWS`] samples.
 
 use super::info::RecipeInfo;
-use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress, RunResult};
 use super::output::RecipeOutput;
 use super::picture::{
     lines,
     series::{BLUE, ORANGE},
     Picture, Table,
 };
-use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound, Plan};
+use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::pyfmt::py_float;
@@ -241,17 +241,11 @@ impl Kernel for Entry {
         params_from_args(args)
     }
 
-    fn plan(params: &CubicParams, _args: &Args) -> Result<Plan, RecipeError> {
-        Ok(Plan {
-            rows: params.rows() as u64,
-        })
+    fn rows(params: &CubicParams, _args: &Args) -> Result<u64, RecipeError> {
+        Ok(params.rows() as u64)
     }
 
-    fn run(
-        params: &CubicParams,
-        _args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &CubicParams, _args: &Args, progress: &mut Progress) -> RunResult {
         let path = compute_with(params, progress)?;
         let csv = path.to_csv_with(progress);
         Ok(RecipeOutput::single(FILE_NAME, csv, path.summary()))

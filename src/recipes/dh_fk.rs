@@ -23,13 +23,13 @@ use glam::{DVec2, DVec3};
 use nalgebra::{Matrix3, Matrix4};
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{plan_of, Kernel, Progress, RunResult};
 use super::output::RecipeOutput;
 use super::picture::{
     series::{BLUE, GREY, ORANGE},
     Mark, Picture, Table, UnitFrame,
 };
-use crate::args::{finite, parse_f64, ArgKind, ArgSpec, Args, Plan};
+use crate::args::{finite, parse_f64, ArgKind, ArgSpec, Args};
 use crate::camera3d::{ground_grid, Camera, Preset};
 use crate::error::RecipeError;
 use crate::numpy::matmul;
@@ -292,17 +292,11 @@ impl Kernel for Entry {
         params_from_args(args)
     }
 
-    fn plan(_params: &DhParams, _args: &Args) -> Result<Plan, RecipeError> {
-        Ok(Plan {
-            rows: JOINTS as u64 + 1,
-        })
+    fn rows(_params: &DhParams, _args: &Args) -> Result<u64, RecipeError> {
+        Ok(JOINTS as u64 + 1)
     }
 
-    fn run(
-        params: &DhParams,
-        _args: &Args,
-        _progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &DhParams, _args: &Args, _progress: &mut Progress) -> RunResult {
         run(params)
     }
 }

@@ -19,14 +19,14 @@
 //!   hold at most [`MAX_AXIS_SAMPLES`] × [`MAX_AXIS_SAMPLES`] cells.
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{plan_of, Kernel, Progress, RunResult};
 use super::output::RecipeOutput;
 use super::picture::{
     pairs,
     series::{BLUE, GREY},
     Mark, Picture, Table, UnitFrame,
 };
-use crate::args::{finite, in_range, positive, within_limit, ArgSpec, Args, Bound, Plan};
+use crate::args::{finite, in_range, positive, within_limit, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{Arm, Elbow};
@@ -321,17 +321,11 @@ impl Kernel for Entry {
         params_from_args(args)
     }
 
-    fn plan(params: &WorkspaceParams, _args: &Args) -> Result<Plan, RecipeError> {
-        Ok(Plan {
-            rows: params.cells()?,
-        })
+    fn rows(params: &WorkspaceParams, _args: &Args) -> Result<u64, RecipeError> {
+        params.cells()
     }
 
-    fn run(
-        params: &WorkspaceParams,
-        _args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &WorkspaceParams, _args: &Args, progress: &mut Progress) -> RunResult {
         let ws = compute_with(params, progress)?;
         let csv = ws.to_csv_with(progress);
         Ok(RecipeOutput::single(FILE_NAME, csv, ws.summary()))

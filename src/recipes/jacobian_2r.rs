@@ -22,14 +22,14 @@
 
 use super::ik_workspace::{check_link_m, LINK_ARGS};
 use super::info::RecipeInfo;
-use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress, RunResult};
 use super::output::RecipeOutput;
 use super::picture::{
     pairs,
     series::{BLUE, GREY, ORANGE},
     Mark, Picture, Table, UnitFrame,
 };
-use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound, Plan};
+use crate::args::{finite, in_range, positive, rows_within, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::numpy;
 use crate::planar2r::{self, Arm};
@@ -313,16 +313,12 @@ impl Kernel for Entry {
         params_from_args(args)
     }
 
-    fn plan(params: &SweepParams, _args: &Args) -> Result<Plan, RecipeError> {
+    fn rows(params: &SweepParams, _args: &Args) -> Result<u64, RecipeError> {
         let rows = numpy::arange_len(params.q1_start, params.q1_stop + 1e-12, params.q1_step);
-        Ok(Plan { rows: rows as u64 })
+        Ok(rows as u64)
     }
 
-    fn run(
-        params: &SweepParams,
-        _args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &SweepParams, _args: &Args, progress: &mut Progress) -> RunResult {
         let samples = sweep_with(params, progress)?;
         let csv = to_csv_with(&samples, progress);
         Ok(RecipeOutput::single(FILE_NAME, csv, summary(&samples)))

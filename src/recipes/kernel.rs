@@ -86,18 +86,18 @@ pub trait Kernel {
     /// Parses and validates: every argument error a run would give, before any work.
     fn params(args: &Args) -> Result<Self::Params, RecipeError>;
     /// Rows of work of a run with `params` (`args` holds attached inputs).
-    fn plan(params: &Self::Params, args: &Args) -> Result<Plan, RecipeError>;
-    /// Runs, reporting rows done to `progress` (total = `plan`'s rows).
-    fn run(
-        params: &Self::Params,
-        args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError>;
+    fn rows(params: &Self::Params, args: &Args) -> Result<u64, RecipeError>;
+    /// Runs, reporting rows done to `progress` (total = [`Kernel::rows`]).
+    fn run(params: &Self::Params, args: &Args, progress: &mut Progress) -> RunResult;
 }
 
-/// [`Kernel::params`] then [`Kernel::plan`].
+/// What a run gives: the recipe's files and summary, or why it could not run.
+pub type RunResult = Result<RecipeOutput, RecipeError>;
+
+/// [`Kernel::params`] then [`Kernel::rows`].
 pub fn plan_of<K: Kernel>(args: &Args) -> Result<Plan, RecipeError> {
-    K::plan(&K::params(args)?, args)
+    let rows = K::rows(&K::params(args)?, args)?;
+    Ok(Plan { rows })
 }
 
 /// A run without progress.
@@ -105,14 +105,14 @@ pub fn run_of<K: Kernel>(args: &Args) -> Result<RecipeOutput, RecipeError> {
     K::run(&K::params(args)?, args, &mut Progress::silent())
 }
 
-/// A run reporting `progress(done, total)` rows (total from [`Kernel::plan`]).
+/// A run reporting `progress(done, total)` rows (total from [`Kernel::rows`]).
 pub fn run_progress_of<K: Kernel>(
     args: &Args,
     progress: &mut dyn FnMut(u64, u64),
 ) -> Result<RecipeOutput, RecipeError> {
     let params = K::params(args)?;
-    let plan = K::plan(&params, args)?;
-    let mut tracker = Progress::new(progress, plan.rows.max(1));
+    let rows = K::rows(&params, args)?;
+    let mut tracker = Progress::new(progress, rows.max(1));
     let out = K::run(&params, args, &mut tracker)?;
     tracker.finish();
     Ok(out)

@@ -18,10 +18,10 @@
 
 use super::ik_workspace::{check_link_m, LINK_ARGS};
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{plan_of, Kernel, Progress, RunResult};
 use super::output::RecipeOutput;
 use super::picture::{Mark, Picture, Table};
-use crate::args::{check_count, parse_count, ArgKind, ArgSpec, Args, Bound, Plan};
+use crate::args::{check_count, parse_count, ArgKind, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::planar2r::Arm;
 use crate::pyfmt::{fixed, CsvText};
@@ -251,16 +251,12 @@ impl Kernel for Entry {
         params_from_args(args)
     }
 
-    fn plan(params: &GridParams, _args: &Args) -> Result<Plan, RecipeError> {
+    fn rows(params: &GridParams, _args: &Args) -> Result<u64, RecipeError> {
         let n = params.side()? as u64;
-        Ok(Plan { rows: n * n })
+        Ok(n * n)
     }
 
-    fn run(
-        params: &GridParams,
-        _args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &GridParams, _args: &Args, progress: &mut Progress) -> RunResult {
         let g = grid_with(params, progress)?;
         let csv = g.to_csv_with(progress);
         Ok(RecipeOutput::single(FILE_NAME, csv, g.summary()))

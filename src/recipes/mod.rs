@@ -4,8 +4,8 @@
 //! Each module states its facts once, in its `INFO` ([`RecipeInfo`]): arguments with kind,
 //! unit, limits and hint ([`ArgSpec`](crate::args::ArgSpec)), the files it writes, its quirks
 //! text, its cost estimate and its home-card picture ([`picture`]). Each implements
-//! [`Kernel`], the one shape of every recipe: `params` (parse → validate) → `plan` (rows of
-//! work, without running) → `run` (with progress) → CSV. The CLI, `runRecipe`, the pages and
+//! [`Kernel`], the one shape of every recipe: `params` (parse → validate) → `rows` (rows of
+//! work, without running; `INFO.plan`) → `run` (with progress) → CSV. The CLI, `runRecipe`, the pages and
 //! the tests reach them all the same way: [`run`] / [`run_with_progress`] with the recipe id
 //! and command-line style arguments.
 

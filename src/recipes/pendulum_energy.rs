@@ -28,14 +28,14 @@
 //! figure is not an energy of this body at all.
 
 use super::info::RecipeInfo;
-use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress, RunResult};
 use super::output::RecipeOutput;
 use super::picture::{
     lines,
     series::{BLUE, GREEN, ORANGE},
     Picture, Table,
 };
-use crate::args::{finite, in_range, positive, rows_within, ArgKind, ArgSpec, Args, Bound, Plan};
+use crate::args::{finite, in_range, positive, rows_within, ArgKind, ArgSpec, Args, Bound};
 use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::fixed;
 
@@ -537,17 +537,11 @@ impl Kernel for Entry {
         params_from_args(args)
     }
 
-    fn plan(params: &PendulumParams, _args: &Args) -> Result<Plan, RecipeError> {
-        Ok(Plan {
-            rows: params.validate()?,
-        })
+    fn rows(params: &PendulumParams, _args: &Args) -> Result<u64, RecipeError> {
+        params.validate()
     }
 
-    fn run(
-        params: &PendulumParams,
-        _args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &PendulumParams, _args: &Args, progress: &mut Progress) -> RunResult {
         run_with(params, progress)
     }
 }

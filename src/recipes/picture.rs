@@ -51,6 +51,23 @@ pub struct Picture {
     pub marks: Vec<Mark>,
 }
 
+impl Picture {
+    /// Every point its marks place (a grid of cells places none).
+    pub fn points(&self) -> Vec<DVec2> {
+        self.marks
+            .iter()
+            .flat_map(|m| match m {
+                Mark::Line { points, .. }
+                | Mark::Dots { points, .. }
+                | Mark::Fill { points, .. }
+                | Mark::Region { points, .. } => points.clone(),
+                Mark::Segments { pairs, .. } => pairs.iter().flat_map(|(a, b)| [*a, *b]).collect(),
+                Mark::Cells { .. } => Vec::new(),
+            })
+            .collect()
+    }
+}
+
 /// Palette slots the page maps to colours (Okabe–Ito, safe for colour-blind readers).
 pub mod series {
     pub const BLUE: u8 = 0;

@@ -19,16 +19,14 @@
 //!   then `nan`, and the table shows that exactly as Python prints it.
 
 use super::info::RecipeInfo;
-use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress, RunResult};
 use super::output::RecipeOutput;
 use super::picture::{
     lines,
     series::{BLUE, ORANGE},
     Picture, Table,
 };
-use crate::args::{
-    check_count, finite, in_range, parse_count, ArgKind, ArgSpec, Args, Bound, Plan,
-};
+use crate::args::{check_count, finite, in_range, parse_count, ArgKind, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::error::RecipeWarning;
 use crate::pyfmt::{fixed, py_round};
@@ -300,17 +298,11 @@ impl Kernel for Entry {
         params_from_args(args)
     }
 
-    fn plan(params: &PidParams, _args: &Args) -> Result<Plan, RecipeError> {
-        Ok(Plan {
-            rows: params.steps.unsigned_abs(),
-        })
+    fn rows(params: &PidParams, _args: &Args) -> Result<u64, RecipeError> {
+        Ok(params.steps.unsigned_abs())
     }
 
-    fn run(
-        params: &PidParams,
-        _args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &PidParams, _args: &Args, progress: &mut Progress) -> RunResult {
         let rows = simulate_with(params, progress)?;
         let csv = to_csv_with(&rows, progress);
         Ok(RecipeOutput::single(FILE_NAME, csv, summary(&rows)).with_warnings(warnings(&rows)))

@@ -18,14 +18,14 @@
 use glam::DVec2;
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{plan_of, Kernel, Progress, RunResult};
 use super::output::{CsvFile, RecipeOutput};
 use super::picture::{
     pairs,
     series::{GREY, ORANGE},
     Mark, Picture, Table, UnitFrame,
 };
-use crate::args::{parse_i64, parse_seed, ArgSpec, Args, Bound, Plan};
+use crate::args::{parse_i64, parse_seed, ArgSpec, Args, Bound};
 use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, Cell, CsvText};
 
@@ -317,17 +317,11 @@ impl Kernel for Entry {
 
     /// Rows of work: the iteration budget times [`ROWS_PER_ITERATION`] (each iteration
     /// costs about the same with the quadtree search). A run may stop earlier, at the goal.
-    fn plan(setup: &RrtSetup, _args: &Args) -> Result<Plan, RecipeError> {
-        Ok(Plan {
-            rows: (setup.params.max_iter as u64 * ROWS_PER_ITERATION).max(1),
-        })
+    fn rows(setup: &RrtSetup, _args: &Args) -> Result<u64, RecipeError> {
+        Ok((setup.params.max_iter as u64 * ROWS_PER_ITERATION).max(1))
     }
 
-    fn run(
-        setup: &RrtSetup,
-        _args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(setup: &RrtSetup, _args: &Args, progress: &mut Progress) -> RunResult {
         Ok(output(&run_setup(setup, progress)?))
     }
 }

@@ -24,10 +24,10 @@ use glam::{DVec2, DVec3};
 use nalgebra::{Matrix3, Matrix4, SMatrix, Vector3};
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{plan_of, Kernel, Progress, RunResult};
 use super::output::RecipeOutput;
 use super::picture::{series, Mark, Picture, UnitFrame};
-use crate::args::{finite, ArgSpec, Args, Plan};
+use crate::args::{finite, ArgSpec, Args};
 use crate::camera3d::{Camera, Preset};
 use crate::error::RecipeError;
 use crate::numpy::matmul;
@@ -286,15 +286,11 @@ impl Kernel for Entry {
         params_from_args(args)
     }
 
-    fn plan(_params: &Se3Params, _args: &Args) -> Result<Plan, RecipeError> {
-        Ok(Plan { rows: 1 })
+    fn rows(_params: &Se3Params, _args: &Args) -> Result<u64, RecipeError> {
+        Ok(1)
     }
 
-    fn run(
-        params: &Se3Params,
-        _args: &Args,
-        _progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &Se3Params, _args: &Args, _progress: &mut Progress) -> RunResult {
         run(params)
     }
 }

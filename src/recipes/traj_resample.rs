@@ -30,14 +30,14 @@ use std::borrow::Cow;
 use std::collections::{HashMap, HashSet};
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{plan_of, Kernel, Progress, RunResult};
 use super::output::{CsvFile, RecipeOutput};
 use super::picture::{
     pairs,
     series::{BLUE, ORANGE},
     Mark, Picture, Table, UnitFrame,
 };
-use crate::args::{finite, positive, rows_within, ArgKind, ArgSpec, Args, Bound, Plan};
+use crate::args::{finite, positive, rows_within, ArgKind, ArgSpec, Args, Bound};
 use crate::error::RecipeError;
 use crate::numpy::{arange, arange_len};
 use crate::pyfmt::{push_fixed, py_float, CsvText};
@@ -871,7 +871,7 @@ impl Kernel for Entry {
 
     /// From the attached input's [`Shape`] (read cheaply): the larger of the input and output
     /// rows; too many output cells is an error naming `dt` and `csv_path`.
-    fn plan(params: &ResampleParams, args: &Args) -> Result<Plan, RecipeError> {
+    fn rows(params: &ResampleParams, args: &Args) -> Result<u64, RecipeError> {
         let shape = shape_of(input_text(params, args)?)?;
         let out_rows = shape.out_rows(params.dt);
         rows_within(
@@ -880,16 +880,10 @@ impl Kernel for Entry {
             out_rows * shape.joints as f64,
             MAX_OUTPUT_CELLS,
         )?;
-        Ok(Plan {
-            rows: (out_rows as u64).max(shape.rows),
-        })
+        Ok((out_rows as u64).max(shape.rows))
     }
 
-    fn run(
-        params: &ResampleParams,
-        args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &ResampleParams, args: &Args, progress: &mut Progress) -> RunResult {
         run_text_with(params, input_text(params, args)?, progress)
     }
 }

@@ -26,7 +26,7 @@
 //!   recipe (`abs()`), so the range applies to the magnitude.
 
 use super::info::RecipeInfo;
-use super::kernel::{float_csv_with, plan_of, Kernel, Progress};
+use super::kernel::{float_csv_with, plan_of, Kernel, Progress, RunResult};
 use super::output::RecipeOutput;
 use super::picture::{lines, series::BLUE, Picture, Table};
 use crate::args::{finite, positive, ArgSpec, Args, Bound};
@@ -364,17 +364,11 @@ impl Kernel for Entry {
         params_from_args(args)
     }
 
-    fn plan(params: &TrapParams, _args: &Args) -> Result<crate::args::Plan, RecipeError> {
-        Ok(crate::args::Plan {
-            rows: params.rows_estimate(),
-        })
+    fn rows(params: &TrapParams, _args: &Args) -> Result<u64, RecipeError> {
+        Ok(params.rows_estimate())
     }
 
-    fn run(
-        params: &TrapParams,
-        _args: &Args,
-        progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(params: &TrapParams, _args: &Args, progress: &mut Progress) -> RunResult {
         let profile = compute_with(params, progress)?;
         let csv = profile.to_csv_with(progress);
         Ok(RecipeOutput::single(FILE_NAME, csv, profile.summary()))

@@ -23,10 +23,10 @@
 //! `umeyama_points.csv`: X, Y and the aligned points `s R X + t`, one row per point.
 
 use super::info::RecipeInfo;
-use super::kernel::{plan_of, Kernel, Progress};
+use super::kernel::{plan_of, Kernel, Progress, RunResult};
 use super::output::{CsvFile, RecipeOutput};
 use super::picture::{series, Mark, Picture, UnitFrame};
-use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound, Plan};
+use crate::args::{finite, in_range, parse_i64, parse_seed, ArgKind, ArgSpec, Args, Bound};
 use crate::error::{RecipeError, RecipeWarning};
 use crate::pyfmt::{fixed, CsvText};
 use crate::rng::NumpyRng;
@@ -638,17 +638,11 @@ impl Kernel for Entry {
         setup_from_args(args)
     }
 
-    fn plan(setup: &UmeyamaSetup, _args: &Args) -> Result<Plan, RecipeError> {
-        Ok(Plan {
-            rows: setup.params.n as u64,
-        })
+    fn rows(setup: &UmeyamaSetup, _args: &Args) -> Result<u64, RecipeError> {
+        Ok(setup.params.n as u64)
     }
 
-    fn run(
-        setup: &UmeyamaSetup,
-        _args: &Args,
-        _progress: &mut Progress,
-    ) -> Result<RecipeOutput, RecipeError> {
+    fn run(setup: &UmeyamaSetup, _args: &Args, _progress: &mut Progress) -> RunResult {
         run_setup(setup)
     }
 }
@@ -736,6 +730,11 @@ mod tests {
         let y = transform(x, scale, angle_deg, t);
         let fit = umeyama(x, &y);
         let what = format!("s={scale} angle={angle_deg} t={t:?} n={}", x.len());
+        assert_fit(&fit, scale, angle_deg, t, &what);
+    }
+
+    /// `fit` is the similarity (`scale`, `angle_deg`, `t`) with no residual, to 1e-12.
+    fn assert_fit(fit: &Alignment, scale: f64, angle_deg: f64, t: [f64; 2], what: &str) {
         assert!((fit.scale - scale).abs() < 1e-12, "{what}: {fit:?}");
         assert!(
             angle_error(fit.rotation_deg, angle_deg).abs() < 1e-12,
@@ -776,14 +775,8 @@ mod tests {
                 n,
             })
             .unwrap();
-            assert!((fit.scale - SCALE_TRUE).abs() < 1e-12, "{fit:?}");
-            assert!(
-                (fit.rotation_deg - ROTATION_TRUE_DEG).abs() < 1e-12,
-                "{fit:?}"
-            );
-            assert!((fit.tx - TRANSLATION_TRUE[0]).abs() < 1e-12, "{fit:?}");
-            assert!((fit.ty - TRANSLATION_TRUE[1]).abs() < 1e-12, "{fit:?}");
-            assert!(fit.rmse < 1e-12, "{fit:?}");
+            let what = format!("seed {seed}, n {n}");
+            assert_fit(&fit, SCALE_TRUE, ROTATION_TRUE_DEG, TRANSLATION_TRUE, &what);
         }
     }
 
@@ -808,20 +801,12 @@ mod tests {
     #[test]
     fn rejects_bad_arguments() {
         let err = |v: &[&str]| run_strs::<Entry>(v).unwrap_err();
-        assert!(matches!(err(&["-0.1"]), RecipeError::OutOfRange { .. }));
+        let out_of_range = |v: &[&str]| matches!(err(v), RecipeError::OutOfRange { .. });
+        assert!(out_of_range(&["-0.1"]));
         assert!(matches!(err(&["inf"]), RecipeError::NotFinite { .. }));
-        assert!(matches!(
-            err(&["0.02", "-1"]),
-            RecipeError::OutOfRange { .. }
-        ));
-        assert!(matches!(
-            err(&["0.02", "3", "1"]),
-            RecipeError::OutOfRange { .. }
-        ));
-        assert!(matches!(
-            err(&["0.02", "3", "-5"]),
-            RecipeError::OutOfRange { .. }
-        ));
+        assert!(out_of_range(&["0.02", "-1"]), "a negative seed");
+        assert!(out_of_range(&["0.02", "3", "1"]), "one point");
+        assert!(out_of_range(&["0.02", "3", "-5"]), "fewer than none");
         assert!(matches!(
             err(&["0.02", "3", "100001"]),
             RecipeError::TooLarge { .. }

@@ -268,16 +268,11 @@ mod tests {
             .collect()
     }
 
-    fn u64s(case: &Value, key: &str) -> Vec<u64> {
-        case[key]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|v| v.as_str().unwrap().parse().unwrap())
-            .collect()
-    }
-
-    fn f64s(case: &Value, key: &str) -> Vec<f64> {
+    /// The numbers (written as strings) of array `key` of `case`.
+    fn parsed<T: std::str::FromStr>(case: &Value, key: &str) -> Vec<T>
+    where
+        T::Err: std::fmt::Debug,
+    {
         case[key]
             .as_array()
             .unwrap()
@@ -289,7 +284,7 @@ mod tests {
     #[test]
     fn seed_sequence_state_matches_numpy() {
         for (seed, case) in cases() {
-            let want = u64s(&case, "seedsequence_state_u64x4");
+            let want = parsed::<u64>(&case, "seedsequence_state_u64x4");
             assert_eq!(seed_sequence_state(seed).to_vec(), want, "seed {seed}");
         }
     }
@@ -297,7 +292,7 @@ mod tests {
     #[test]
     fn raw_u64_matches_numpy() {
         for (seed, case) in cases() {
-            let want = u64s(&case, "pcg64_raw_u64_first4");
+            let want = parsed::<u64>(&case, "pcg64_raw_u64_first4");
             let mut rng = NumpyRng::new(seed);
             let got: Vec<u64> = (0..want.len()).map(|_| rng.next_u64()).collect();
             assert_eq!(got, want, "seed {seed}");
@@ -307,7 +302,7 @@ mod tests {
     /// For every seed, the first 8 values of `draw` are numpy's `key` values bit for bit.
     fn assert_first8_bits(key: &str, draw: fn(&mut NumpyRng) -> f64) {
         for (seed, case) in cases() {
-            let want = f64s(&case, key);
+            let want = parsed::<f64>(&case, key);
             assert_eq!(want.len(), 8);
             let mut rng = NumpyRng::new(seed);
             for (k, w) in want.iter().enumerate() {
@@ -331,7 +326,7 @@ mod tests {
         assert_first8_bits("normal_first8", NumpyRng::standard_normal);
         // normal(0, 1) is the same stream.
         for (seed, case) in cases() {
-            let want = f64s(&case, "normal_first8");
+            let want = parsed::<f64>(&case, "normal_first8");
             assert_eq!(NumpyRng::new(seed).normal(0.0, 1.0), want[0]);
         }
     }

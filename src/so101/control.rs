@@ -17,7 +17,7 @@
 
 use super::kinematics::{jt_j, Jacobian};
 use crate::teleop::control::{
-    damping_sq_for_sigma, smallest_eigenvalue, solve, ControlParams, IkMethod,
+    buss_step, damping_sq_for_sigma, smallest_eigenvalue, solve, ControlParams, IkMethod,
 };
 
 /// The joint step for the task step `dx` (see the module docs), or `None` when the method's
@@ -77,11 +77,7 @@ fn transpose_step(j: &Jacobian, dx: &[f64; 6]) -> [f64; 5] {
     let img = apply(j, &jt_dx);
     let num: f64 = dx.iter().zip(&img).map(|(a, b)| a * b).sum();
     let den: f64 = img.iter().map(|v| v * v).sum();
-    if den > 0.0 {
-        scale(jt_dx, num / den)
-    } else {
-        [0.0; 5]
-    }
+    buss_step(jt_dx, num, den)
 }
 
 /// `λ(σ)²` of `adaptive-dls` for Jacobian `j`.

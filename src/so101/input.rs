@@ -11,23 +11,8 @@
 //! (`axes[2]`), D-pad down/up ±pitch and left/right ±roll at 0.8 (buttons 13/12, 14/15), X
 //! (button 2) toggles the gripper on its press; values under the dead zone (0.01) count as 0.
 
-pub use crate::view::teleop_input::HeldKeys;
-use crate::view::teleop_input::{
-    self, dead_zoned, PadSnapshot, DPAD_SCALE, PAD_DPAD_DOWN, PAD_DPAD_UP, PAD_PRESS,
-};
-
-/// Standard-mapping indices besides the planar page's.
-pub const PAD_LEFT_STICK_X: usize = 0;
-/// Left stick vertical.
-pub const PAD_LEFT_STICK_Y: usize = 1;
-/// Right stick horizontal.
-pub const PAD_RIGHT_STICK_X: usize = 2;
-/// Right stick vertical.
-pub const PAD_RIGHT_STICK_Y: usize = 3;
-/// D-pad left.
-pub const PAD_DPAD_LEFT: usize = 14;
-/// D-pad right.
-pub const PAD_DPAD_RIGHT: usize = 15;
+pub use crate::teleop::input::HeldKeys;
+use crate::teleop::input::{self, Button, PadSnapshot, Stick};
 
 /// What a key does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -47,22 +32,26 @@ pub enum KeyAction {
     Engage,
 }
 
+/// The keys that hold an axis, in the axes' order (x, y, z, roll, pitch, yaw): the first of
+/// each pair holds +1, the second −1.
+pub const AXIS_KEYS: [(&str, &str); 6] = [
+    ("KeyW", "KeyS"),
+    ("KeyA", "KeyD"),
+    ("KeyQ", "KeyE"),
+    ("KeyZ", "KeyX"),
+    ("KeyT", "KeyG"),
+    ("KeyC", "KeyV"),
+];
+
 /// The action of the key at physical position `code`.
 pub fn key_action(code: &str) -> Option<KeyAction> {
-    let hold = |axis, sign| Some(KeyAction::Hold { axis, sign });
+    for (axis, (plus, minus)) in AXIS_KEYS.into_iter().enumerate() {
+        if code == plus || code == minus {
+            let sign = if code == plus { 1 } else { -1 };
+            return Some(KeyAction::Hold { axis, sign });
+        }
+    }
     match code {
-        "KeyW" => hold(0, 1),
-        "KeyS" => hold(0, -1),
-        "KeyA" => hold(1, 1),
-        "KeyD" => hold(1, -1),
-        "KeyQ" => hold(2, 1),
-        "KeyE" => hold(2, -1),
-        "KeyZ" => hold(3, 1),
-        "KeyX" => hold(3, -1),
-        "KeyT" => hold(4, 1),
-        "KeyG" => hold(4, -1),
-        "KeyC" => hold(5, 1),
-        "KeyV" => hold(5, -1),
         "KeyK" => Some(KeyAction::ToggleGripper),
         "KeyR" => Some(KeyAction::Reset),
         "Space" => Some(KeyAction::Engage),
@@ -94,28 +83,21 @@ pub struct PadOutput {
 /// its press).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct PadMapper {
-    buttons: teleop_input::PadMapper,
+    buttons: input::PadMapper,
 }
 
 impl PadMapper {
     /// Maps one poll with `dead_zone`.
     pub fn map(&mut self, pad: &PadSnapshot, dead_zone: f64) -> PadOutput {
-        let axis = |i: usize| dead_zoned(pad.axes.get(i).copied().unwrap_or(0.0), dead_zone);
-        let button = |i: usize| pad.buttons.get(i).copied().unwrap_or(0.0) > PAD_PRESS;
-        let pair = |plus: usize, minus: usize| match (button(plus), button(minus)) {
-            (true, false) => DPAD_SCALE,
-            (false, true) => -DPAD_SCALE,
-            _ => 0.0,
-        };
         let (toggle_gripper, active) = self.buttons.buttons(pad, dead_zone);
         PadOutput {
             axes: [
-                -axis(PAD_LEFT_STICK_Y) + 0.0,
-                axis(PAD_LEFT_STICK_X),
-                -axis(PAD_RIGHT_STICK_Y) + 0.0,
-                pair(PAD_DPAD_LEFT, PAD_DPAD_RIGHT),
-                pair(PAD_DPAD_DOWN, PAD_DPAD_UP),
-                axis(PAD_RIGHT_STICK_X),
+                -pad.stick(Stick::LeftY, dead_zone) + 0.0,
+                pad.stick(Stick::LeftX, dead_zone),
+                -pad.stick(Stick::RightY, dead_zone) + 0.0,
+                pad.dpad_axis(Button::DpadLeft, Button::DpadRight),
+                pad.dpad_axis(Button::DpadDown, Button::DpadUp),
+                pad.stick(Stick::RightX, dead_zone),
             ],
             toggle_gripper,
             active,
@@ -132,21 +114,13 @@ mod tests {
 
     #[test]
     fn every_isaac_lab_key_holds_its_axis() {
+        // Isaac Lab's Se3Keyboard: +/- x, y, z, roll, pitch, yaw.
         let keys = [
-            ("KeyW", 0, 1.0),
-            ("KeyS", 0, -1.0),
-            ("KeyA", 1, 1.0),
-            ("KeyD", 1, -1.0),
-            ("KeyQ", 2, 1.0),
-            ("KeyE", 2, -1.0),
-            ("KeyZ", 3, 1.0),
-            ("KeyX", 3, -1.0),
-            ("KeyT", 4, 1.0),
-            ("KeyG", 4, -1.0),
-            ("KeyC", 5, 1.0),
-            ("KeyV", 5, -1.0),
+            "KeyW", "KeyS", "KeyA", "KeyD", "KeyQ", "KeyE", "KeyZ", "KeyX", "KeyT", "KeyG", "KeyC",
+            "KeyV",
         ];
-        for (code, axis, sign) in keys {
+        for (i, code) in keys.into_iter().enumerate() {
+            let (axis, sign) = (i / 2, if i % 2 == 0 { 1.0 } else { -1.0 });
             let mut held = HeldKeys::default();
             assert!(press(&mut held, code));
             assert!(!press(&mut held, code), "auto-repeat is not a new press");

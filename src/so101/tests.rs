@@ -199,16 +199,19 @@ fn each_axis_moves_the_tool_its_way() {
     }
 }
 
+/// The default scene after `steps` steps of the open gripper driven by `axes`, and the
+/// events of those steps.
+fn driven(axes: [f64; 6], steps: usize) -> (Sim, Vec<Event>) {
+    let mut sim = Sim::new(SceneConfig::default_for(false)).unwrap();
+    let events = (0..steps)
+        .flat_map(|_| sim.step(&Command::with_axes(axes, false)).events)
+        .collect();
+    (sim, events)
+}
+
 #[test]
 fn joint_limits_clamp_and_are_reported() {
-    let mut sim = Sim::new(SceneConfig::default_for(false)).unwrap();
-    let mut events = Vec::new();
-    for _ in 0..1500 {
-        events.extend(
-            sim.step(&Command::with_axes([0.0, 1.0, 0.0, 0.0, 0.0, 0.0], false))
-                .events,
-        );
-    }
+    let (sim, events) = driven([0.0, 1.0, 0.0, 0.0, 0.0, 0.0], 1500);
     let q = sim.state().q;
     for (v, (lo, hi)) in q.iter().zip(joint_limits()) {
         assert!(*v >= lo && *v <= hi);
@@ -359,14 +362,7 @@ fn closing_far_from_the_cube_is_a_miss_and_dropping_it_is_a_drop() {
 
 #[test]
 fn going_down_into_the_table_is_a_collision_that_stops_the_arm() {
-    let mut sim = Sim::new(SceneConfig::default_for(false)).unwrap();
-    let mut events = Vec::new();
-    for _ in 0..300 {
-        events.extend(
-            sim.step(&Command::with_axes([0.0, 0.0, -1.0, 0.0, 0.0, 0.0], false))
-                .events,
-        );
-    }
+    let (mut sim, events) = driven([0.0, 0.0, -1.0, 0.0, 0.0, 0.0], 300);
     assert!(
         events.iter().any(|e| matches!(e, Event::Collision { .. })),
         "{events:?}"

@@ -146,10 +146,17 @@ fn transpose_step(j: &Mat3, dx: &[f64; 3]) -> [f64; 3] {
     }
     let num = dx[0] * j_jt_dx[0] + dx[1] * j_jt_dx[1] + dx[2] * j_jt_dx[2];
     let den = j_jt_dx[0] * j_jt_dx[0] + j_jt_dx[1] * j_jt_dx[1] + j_jt_dx[2] * j_jt_dx[2];
+    buss_step(jt_dx, num, den)
+}
+
+/// Buss's `α Jᵀ dx` from `Jᵀ dx` and α's numerator `dx · J Jᵀ dx` and denominator
+/// `|J Jᵀ dx|²`: zero when the denominator is (any arm's).
+pub fn buss_step<const N: usize>(jt_dx: [f64; N], num: f64, den: f64) -> [f64; N] {
     if den > 0.0 {
-        scale(jt_dx, num / den)
+        let alpha = num / den;
+        jt_dx.map(|v| v * alpha)
     } else {
-        [0.0; 3]
+        [0.0; N]
     }
 }
 

@@ -611,24 +611,15 @@ pub fn replay_steps<S: ArmSim>(
 
 fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismatch> {
     same_f64(step, "t_s", e.t_s, g.t_s)?;
-    same_f64(step, "dx", e.cmd.dx, g.cmd.dx)?;
-    same_f64(step, "dz", e.cmd.dz, g.cmd.dz)?;
-    same_f64(step, "dphi", e.cmd.dphi, g.cmd.dphi)?;
-    same_bool(
-        step,
-        "gripper_cmd",
-        e.cmd.gripper_closed,
-        g.cmd.gripper_closed,
-    )?;
-    same_f64(step, "applied_dx", e.applied.dx, g.applied.dx)?;
-    same_f64(step, "applied_dz", e.applied.dz, g.applied.dz)?;
-    same_f64(step, "applied_dphi", e.applied.dphi, g.applied.dphi)?;
-    same_bool(
-        step,
+    let commanded = ["dx", "dz", "dphi", "gripper_cmd"];
+    same_command(step, commanded, &e.cmd, &g.cmd)?;
+    let applied = [
+        "applied_dx",
+        "applied_dz",
+        "applied_dphi",
         "applied_gripper",
-        e.applied.gripper_closed,
-        g.applied.gripper_closed,
-    )?;
+    ];
+    same_command(step, applied, &e.applied, &g.applied)?;
     for (i, name) in ["q1", "q2", "q3"].iter().enumerate() {
         same_f64(step, name, e.q[i], g.q[i])?;
     }
@@ -641,6 +632,19 @@ fn compare(step: u64, e: &StepRecord, g: &StepRecord) -> Result<(), ReplayMismat
     same_f64(step, "block_z", e.block_z, g.block_z)?;
     same_f64(step, "manipulability", e.manipulability, g.manipulability)?;
     same_events(step, &e.events, &g.events)
+}
+
+/// Checks a command of step `step`, its columns named `[dx, dz, dphi, gripper]`.
+fn same_command(
+    step: u64,
+    [dx, dz, dphi, gripper]: [&'static str; 4],
+    e: &Command,
+    g: &Command,
+) -> Result<(), ReplayMismatch> {
+    same_f64(step, dx, e.dx, g.dx)?;
+    same_f64(step, dz, e.dz, g.dz)?;
+    same_f64(step, dphi, e.dphi, g.dphi)?;
+    same_bool(step, gripper, e.gripper_closed, g.gripper_closed)
 }
 
 /// Checks that step `step` made the recorded events, in order.

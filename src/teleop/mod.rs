@@ -7,7 +7,8 @@
 //! methods), [`scene`] (tasks, layout, [`SceneConfig`]), [`sim`] (one 10 ms [`Sim::step`] and
 //! its [`Event`]s), [`metrics`](mod@metrics) (an episode's figures from its records),
 //! [`episode`] (recording, CSV, exact [`replay`], the proposed [`Label`]), [`pilot`] (a scripted
-//! pilot) and [`session`] (the page's practice session and its files).
+//! pilot) and [`session`] (the page's practice session and its files); [`input`] maps the
+//! pilot's keyboard, gamepad and pointer to commands as Isaac Lab's devices do.
 //!
 //! Every number comes from `+ − × ÷`, `sqrt` and the correctly rounded functions of
 //! [`crate::math`], and input noise from the seeded [`crate::rng::NumpyRng`]; nothing reads a
@@ -19,6 +20,7 @@ pub mod arm;
 pub mod control;
 pub mod episode;
 pub mod events;
+pub mod input;
 pub mod metrics;
 pub mod pilot;
 pub mod recording;

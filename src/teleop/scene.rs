@@ -145,6 +145,18 @@ pub struct Box2 {
     pub z1: f64,
 }
 
+impl Box2 {
+    /// A box standing on the table from `x0` to `x1`, its top at `z1`.
+    pub fn on_table(x0: f64, x1: f64, z1: f64) -> Box2 {
+        Box2 {
+            x0,
+            z0: TABLE_Z,
+            x1,
+            z1,
+        }
+    }
+}
+
 /// A line segment.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Segment {
@@ -190,28 +202,13 @@ impl Layout {
             },
             Task::PickPlace => Layout {
                 block_start: (0.08, on_table),
-                goal: Some(Box2 {
-                    x0: 0.16,
-                    z0: TABLE_Z,
-                    x1: 0.22,
-                    z1: TABLE_Z + 0.04,
-                }),
+                goal: Some(Box2::on_table(0.16, 0.22, TABLE_Z + 0.04)),
                 obstacles: Vec::new(),
             },
             Task::PickPlaceObstacle => Layout {
                 block_start: (0.05, on_table),
-                goal: Some(Box2 {
-                    x0: 0.14,
-                    z0: TABLE_Z,
-                    x1: 0.19,
-                    z1: TABLE_Z + 0.04,
-                }),
-                obstacles: vec![Box2 {
-                    x0: 0.095,
-                    z0: TABLE_Z,
-                    x1: 0.11,
-                    z1: 0.02,
-                }],
+                goal: Some(Box2::on_table(0.14, 0.19, TABLE_Z + 0.04)),
+                obstacles: vec![Box2::on_table(0.095, 0.11, 0.02)],
             },
         }
     }
@@ -330,6 +327,14 @@ pub fn check(field: &str, value: f64, min: f64, max: f64) -> Result<(), TeleopEr
 }
 
 impl SceneConfig {
+    /// The default scene and controller with task `task`.
+    pub fn with_task(task: Task) -> SceneConfig {
+        SceneConfig {
+            task,
+            ..SceneConfig::default()
+        }
+    }
+
     /// Checks every field; the error names the first bad one (field names as in the struct,
     /// `links` for `arm.links`, `lambda` for `control.lambda` and so on).
     pub fn validate(&self) -> Result<(), TeleopError> {
@@ -624,26 +629,12 @@ mod tests {
             x1: 1.0,
             z1: 1.0,
         };
-        let crossing = Segment {
-            x0: -1.0,
-            z0: 0.5,
-            x1: 2.0,
-            z1: 0.5,
+        let distance = |(x0, z0): (f64, f64), (x1, z1): (f64, f64)| {
+            segment_box_distance(&Segment { x0, z0, x1, z1 }, &b)
         };
-        assert_eq!(segment_box_distance(&crossing, &b), 0.0);
-        let above = Segment {
-            x0: -1.0,
-            z0: 1.5,
-            x1: 2.0,
-            z1: 1.5,
-        };
-        assert_eq!(segment_box_distance(&above, &b), 0.5);
-        let diagonal = Segment {
-            x0: 2.0,
-            z0: 1.0,
-            x1: 1.0,
-            z1: 2.0,
-        };
-        assert!((segment_box_distance(&diagonal, &b) - 0.5f64.sqrt()).abs() < 1e-15);
+        assert_eq!(distance((-1.0, 0.5), (2.0, 0.5)), 0.0, "crossing");
+        assert_eq!(distance((-1.0, 1.5), (2.0, 1.5)), 0.5, "above");
+        let diagonal = distance((2.0, 1.0), (1.0, 2.0));
+        assert!((diagonal - 0.5f64.sqrt()).abs() < 1e-15);
     }
 }

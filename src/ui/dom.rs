@@ -50,6 +50,35 @@ pub fn el_i18n(tag: &str, class: &str, id: &str) -> Result<Element, JsValue> {
     Ok(element)
 }
 
+/// The height of `window`'s viewport in CSS pixels (0 when the browser does not say).
+pub fn viewport_height(window: &Window) -> f64 {
+    window
+        .inner_height()
+        .ok()
+        .and_then(|h| h.as_f64())
+        .unwrap_or(0.0)
+}
+
+/// A tool button (`type="button"`) whose text is message `label_id`, marked
+/// `data-action="<action>"` for the click handler of the bar it is in.
+pub fn action_button(action: &str, label_id: &str) -> Result<Element, JsValue> {
+    let button = el_i18n("button", "tool-button", label_id)?;
+    button.set_attribute("type", "button")?;
+    button.set_attribute("data-action", action)?;
+    Ok(button)
+}
+
+/// A landmark the shell places hidden (`<nav>`, `<aside>`): `name` is its class, its id and
+/// its `data-testid`; its `aria-label` is message `label_id`.
+pub fn hidden_landmark(tag: &str, name: &str, label_id: &str) -> Result<Element, JsValue> {
+    let element = el_class(tag, name)?;
+    element.set_id(name);
+    element.set_attribute("data-testid", name)?;
+    set_i18n_attrs(&element, &[("aria-label", label_id)])?;
+    show(&element, false);
+    Ok(element)
+}
+
 /// Makes `element`'s text message `id`, now and after every language switch.
 pub fn set_i18n(element: &Element, id: &str) -> Result<(), JsValue> {
     element.set_attribute("data-i18n", id)?;
@@ -211,14 +240,7 @@ impl Listener {
         event: &'static str,
         handler: impl FnMut(Event) + 'static,
     ) -> Result<Listener, JsValue> {
-        let closure = Closure::<dyn FnMut(Event)>::new(handler);
-        target.add_event_listener_with_callback(event, closure.as_ref().unchecked_ref())?;
-        Ok(Listener {
-            target: target.clone(),
-            event,
-            closure,
-            capture: false,
-        })
+        Listener::attach(target, event, Closure::new(handler), false)
     }
 
     /// [`Listener::new`] in the capture phase: it runs before the listeners of the elements
@@ -228,17 +250,25 @@ impl Listener {
         event: &'static str,
         handler: impl FnMut(Event) + 'static,
     ) -> Result<Listener, JsValue> {
-        let closure = Closure::<dyn FnMut(Event)>::new(handler);
+        Listener::attach(target, event, Closure::new(handler), true)
+    }
+
+    fn attach(
+        target: &EventTarget,
+        event: &'static str,
+        closure: Closure<dyn FnMut(Event)>,
+        capture: bool,
+    ) -> Result<Listener, JsValue> {
         target.add_event_listener_with_callback_and_bool(
             event,
             closure.as_ref().unchecked_ref(),
-            true,
+            capture,
         )?;
         Ok(Listener {
             target: target.clone(),
             event,
             closure,
-            capture: true,
+            capture,
         })
     }
 
@@ -250,12 +280,7 @@ impl Listener {
         page: &Weak<P>,
         handler: impl Fn(&P, &Event) + 'static,
     ) -> Result<Listener, JsValue> {
-        let page = page.clone();
-        Listener::capture(target, event, move |e: Event| {
-            if let Some(page) = page.upgrade() {
-                handler(&page, &e);
-            }
-        })
+        Listener::capture(target, event, while_mounted(page, handler))
     }
 
     /// Attaches `handler` for `event` on `target`, called with the page behind `page` while it
@@ -266,17 +291,25 @@ impl Listener {
         page: &Weak<P>,
         handler: impl Fn(&P, &Event) + 'static,
     ) -> Result<Listener, JsValue> {
-        let page = page.clone();
-        Listener::new(target, event, move |e| {
-            if let Some(page) = page.upgrade() {
-                handler(&page, &e);
-            }
-        })
+        Listener::new(target, event, while_mounted(page, handler))
     }
 
     /// Keeps the listener for the life of the page (shell listeners).
     pub fn forever(self) {
         std::mem::forget(self);
+    }
+}
+
+/// `handler` called with the page behind `page` while it is mounted.
+fn while_mounted<P: 'static>(
+    page: &Weak<P>,
+    handler: impl Fn(&P, &Event) + 'static,
+) -> impl FnMut(Event) + 'static {
+    let page = page.clone();
+    move |e: Event| {
+        if let Some(page) = page.upgrade() {
+            handler(&page, &e);
+        }
     }
 }
 

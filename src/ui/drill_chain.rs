@@ -23,12 +23,7 @@ fn href(step: &str, exists: impl Fn(&str) -> bool) -> Option<String> {
 
 /// The (empty, hidden) element the shell places between `<main>` and the footer.
 pub(crate) fn build() -> Result<Element, JsValue> {
-    let nav = dom::el_class("nav", "drill-chain")?;
-    nav.set_id(CHAIN_ID);
-    nav.set_attribute("data-testid", "drill-chain")?;
-    dom::set_i18n_attrs(&nav, &[("aria-label", "chain-label")])?;
-    dom::show(&nav, false);
-    Ok(nav)
+    dom::hidden_landmark("nav", CHAIN_ID, "chain-label")
 }
 
 /// Fills the chain for page `current` (or hides it off the chain).

@@ -11,7 +11,7 @@ use wasm_bindgen::JsCast;
 use web_sys::MessageEvent;
 
 use crate::ui::embed_api::{self, ApiFns, ShellFns};
-use crate::ui::page::SplitLoaderError;
+use crate::ui::split_point::split_point;
 use crate::ui::{dom, router};
 
 /// The class on `<html>` of an embedded tab.
@@ -99,15 +99,5 @@ fn answer() {
     });
 }
 
-/// The API: a wasm chunk of its own, fetched on the first message or when embedded.
-#[cfg(feature = "split")]
-#[wasm_split_helpers::wasm_split(embed_api, fallible)]
-fn api_fns() -> Result<ApiFns, SplitLoaderError> {
-    Ok(embed_api::FNS)
-}
-
-/// Without the `split` feature the API is in the one wasm.
-#[cfg(not(feature = "split"))]
-async fn api_fns() -> Result<ApiFns, SplitLoaderError> {
-    Ok(embed_api::FNS)
-}
+// The API: a wasm chunk of its own, fetched on the first message or when embedded.
+split_point!(embed_api, fn api_fns() -> ApiFns = embed_api::FNS);

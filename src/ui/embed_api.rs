@@ -335,11 +335,7 @@ fn fit_view() {
     else {
         return;
     };
-    let height = window
-        .inner_height()
-        .ok()
-        .and_then(|h| h.as_f64())
-        .unwrap_or(0.0);
+    let height = dom::viewport_height(&window);
     let scrolled = window.scroll_y().unwrap_or(0.0);
     let top = view.get_bounding_client_rect().top() + scrolled;
     let fill = (height - top - VIEW_MARGIN_PX).floor().max(MIN_VIEW_PX);

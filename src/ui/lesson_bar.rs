@@ -15,6 +15,7 @@ use crate::ui::lesson_present::{Hooks, KeyTaken};
 use crate::ui::page::SplitLoaderError;
 use crate::ui::page::{ShellLink, ShellRequest};
 use crate::ui::present_two::{self, PresentEntry};
+use crate::ui::split_point::split_point;
 use crate::ui::{ctx, dom, lesson_focus, router};
 use crate::view::lesson::{Lesson, LessonStep};
 use crate::view::lesson_file;
@@ -31,18 +32,8 @@ thread_local! {
     static HOOKS: Cell<Option<Hooks>> = const { Cell::new(None) };
 }
 
-/// Presenting: a wasm chunk of its own, fetched when it starts.
-#[cfg(feature = "split")]
-#[wasm_split_helpers::wasm_split(lesson_present, fallible)]
-fn presenting_chunk() -> Result<PresentEntry, SplitLoaderError> {
-    Ok(present_two::ENTRY)
-}
-
-/// Without the `split` feature presenting is in the one wasm.
-#[cfg(not(feature = "split"))]
-async fn presenting_chunk() -> Result<PresentEntry, SplitLoaderError> {
-    Ok(present_two::ENTRY)
-}
+// Presenting: a wasm chunk of its own, fetched when it starts.
+split_point!(lesson_present, fn presenting_chunk() -> PresentEntry = present_two::ENTRY);
 
 /// Presenting's code, its hooks handed the shell's keys, bar clicks and redraws.
 async fn presenting() -> Result<PresentEntry, SplitLoaderError> {
@@ -191,19 +182,9 @@ pub(crate) fn build_add_button(shell: ShellLink) -> Result<Element, JsValue> {
 /// What "+ Lesson" does ([`add_current_view`]).
 type AddFn = fn(ShellLink, &Route) -> Option<(usize, bool)>;
 
-/// "+ Lesson": a wasm chunk of its own (it reads and writes the lesson file's JSON, which no
-/// page needs before its first frame), fetched on the first click.
-#[cfg(feature = "split")]
-#[wasm_split_helpers::wasm_split(lesson_add, fallible)]
-fn adder() -> Result<AddFn, SplitLoaderError> {
-    Ok(add_current_view)
-}
-
-/// Without the `split` feature "+ Lesson" is in the one wasm.
-#[cfg(not(feature = "split"))]
-async fn adder() -> Result<AddFn, SplitLoaderError> {
-    Ok(add_current_view)
-}
+// "+ Lesson": a wasm chunk of its own (it reads and writes the lesson file's JSON, which no
+// page needs before its first frame), fetched on the first click.
+split_point!(lesson_add, fn adder() -> AddFn = add_current_view);
 
 /// Appends the view of `route` to the current lesson; the number of steps after it, and
 /// whether the browser stored it.
@@ -228,10 +209,5 @@ fn add_current_view(shell: ShellLink, route: &Route) -> Option<(usize, bool)> {
 
 /// The (hidden) presenter bar the shell places in `#app`.
 pub(crate) fn build_bar() -> Result<Element, JsValue> {
-    let bar = dom::el_class("aside", "lesson-bar")?;
-    bar.set_id(BAR_ID);
-    bar.set_attribute("data-testid", "lesson-bar")?;
-    dom::set_i18n_attrs(&bar, &[("aria-label", "lesson-bar-label")])?;
-    dom::show(&bar, false);
-    Ok(bar)
+    dom::hidden_landmark("aside", BAR_ID, "lesson-bar-label")
 }

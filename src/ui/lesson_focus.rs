@@ -15,7 +15,7 @@ use std::cell::{Cell, RefCell};
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
-use crate::ui::page::SplitLoaderError;
+use crate::ui::split_point::split_point;
 use crate::ui::{dom, router, schedule};
 use crate::view::sections;
 
@@ -64,18 +64,8 @@ pub(crate) fn show(bar: &Element, page: String, focus: Option<String>) {
 /// What brings a step's section into view ([`follow`]).
 type FollowFn = fn(Element, String, Option<String>, u64) -> Result<(), JsValue>;
 
-/// The chunk that brings a step's section into view.
-#[cfg(feature = "split")]
-#[wasm_split_helpers::wasm_split(lesson_focus, fallible)]
-fn follower() -> Result<FollowFn, SplitLoaderError> {
-    Ok(follow)
-}
-
-/// Without the `split` feature it is in the one wasm.
-#[cfg(not(feature = "split"))]
-async fn follower() -> Result<FollowFn, SplitLoaderError> {
-    Ok(follow)
-}
+// The chunk that brings a step's section into view.
+split_point!(lesson_focus, fn follower() -> FollowFn = follow);
 
 /// [`show`] for step `generation`, once its chunk is here: looks for the section every tick
 /// and keeps it in view.

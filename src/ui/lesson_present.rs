@@ -402,10 +402,7 @@ pub(crate) fn render() -> Result<(), JsValue> {
     }
     let buttons = dom::el_class("div", "lesson-buttons")?;
     for action in ["lesson-prev", "lesson-next", "lesson-end"] {
-        let b = dom::el_i18n("button", "tool-button", action)?;
-        b.set_attribute("type", "button")?;
-        b.set_attribute("data-action", action)?;
-        dom::append(&buttons, &b)?;
+        dom::append(&buttons, &dom::action_button(action, action)?)?;
     }
     dom::append(&bar, &buttons)?;
     Ok(())

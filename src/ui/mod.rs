@@ -12,6 +12,8 @@
 //! - [`embed`] and [`embed_api`]: a page embedded in another site (`embed=1`) and its
 //!   postMessage API.
 //! - [`download`], [`clipboard`], [`command_line`]: files, copies and shell quoting.
+//! - [`modal`]: the modal dialog of the `?` overlay and the share dialog; [`split_point`]: the
+//!   shell's parts cut into wasm chunks of their own, fetched on first use.
 
 use wasm_bindgen::prelude::*;
 
@@ -28,6 +30,7 @@ pub mod lang_files;
 pub mod lesson_bar;
 pub mod lesson_focus;
 pub mod lesson_present;
+pub mod modal;
 pub mod nav_cue;
 pub mod nav_menu;
 pub mod overlay;
@@ -41,6 +44,7 @@ pub mod section_keys;
 pub mod share;
 pub mod share_dialog;
 pub mod shell;
+pub mod split_point;
 pub mod update_banner;
 
 /// Builds the app into `#app` and routes to the page the URL names. Installs a panic hook

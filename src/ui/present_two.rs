@@ -147,15 +147,23 @@ fn page_base(window: &Window) -> String {
     href.split('#').next().unwrap_or_default().to_owned()
 }
 
+/// Hands each message of `channel` to `handle`, reporting what fails.
+fn on_messages(
+    channel: &BroadcastChannel,
+    handle: fn(&JsValue) -> Result<(), JsValue>,
+) -> Result<dom::Listener, JsValue> {
+    dom::Listener::new(channel, "message", move |event| {
+        if let Some(message) = event.dyn_ref::<MessageEvent>() {
+            report(handle(&message.data()));
+        }
+    })
+}
+
 fn open_presenter(lesson: Lesson, audience: Window, perform: Perform) -> Result<(), JsValue> {
     let channel = BroadcastChannel::new(CHANNEL)?;
     let window = dom::window()?;
     let listeners = vec![
-        dom::Listener::new(&channel, "message", |event| {
-            if let Some(message) = event.dyn_ref::<MessageEvent>() {
-                report(on_presenter_message(&message.data()));
-            }
-        })?,
+        on_messages(&channel, on_presenter_message)?,
         // Closing or reloading this window ends the presentation in the room's too.
         dom::Listener::new(&window, "pagehide", |_| report(lesson_present::stop()))?,
     ];
@@ -495,10 +503,7 @@ fn render() -> Result<(), JsValue> {
         ),
         ("lesson-end", "lesson-end"),
     ] {
-        let b = dom::el_i18n("button", "tool-button", label)?;
-        b.set_attribute("type", "button")?;
-        b.set_attribute("data-action", action)?;
-        dom::append(&buttons, &b)?;
+        dom::append(&buttons, &dom::action_button(action, label)?)?;
     }
     dom::append(&view, &buttons)?;
     Ok(())
@@ -546,11 +551,7 @@ fn join(perform: Perform) -> Result<(), JsValue> {
     let channel = BroadcastChannel::new(CHANNEL)?;
     let window = dom::window()?;
     let listeners = vec![
-        dom::Listener::new(&channel, "message", |event| {
-            if let Some(message) = event.dyn_ref::<MessageEvent>() {
-                report(on_audience_message(&message.data()));
-            }
-        })?,
+        on_messages(&channel, on_audience_message)?,
         dom::Listener::capture(&window, "pointerdown", |_| full_screen())?,
         dom::Listener::capture(&window, "keydown", |_| full_screen())?,
     ];

@@ -5,7 +5,7 @@
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
-use crate::ui::page::SplitLoaderError;
+use crate::ui::split_point::split_point;
 use crate::ui::{ctx, dom, share_dialog};
 
 const STATUS_ID: &str = "share-status";
@@ -31,18 +31,8 @@ pub(crate) fn build_button() -> Result<Element, JsValue> {
 /// What opens the dialog on an address ([`share_dialog::open`]).
 type OpenDialog = fn(&str) -> Result<(), JsValue>;
 
-/// The share dialog: a wasm chunk of its own, fetched on the first "Share".
-#[cfg(feature = "split")]
-#[wasm_split_helpers::wasm_split(share_dialog, fallible)]
-fn dialog_opener() -> Result<OpenDialog, SplitLoaderError> {
-    Ok(share_dialog::open)
-}
-
-/// Without the `split` feature the dialog is in the one wasm.
-#[cfg(not(feature = "split"))]
-async fn dialog_opener() -> Result<OpenDialog, SplitLoaderError> {
-    Ok(share_dialog::open)
-}
+// The share dialog: a wasm chunk of its own, fetched on the first "Share".
+split_point!(share_dialog, fn dialog_opener() -> OpenDialog = share_dialog::open);
 
 /// Opens the share dialog on the address as it is now, once the dialog's code is here; if it
 /// cannot be fetched, says so under the button (the next press tries again).

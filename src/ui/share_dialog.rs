@@ -18,97 +18,35 @@ use wasm_bindgen::JsCast;
 use web_sys::{Element, KeyboardEvent};
 
 use crate::ui::dom;
+use crate::ui::modal::{self, Draft, Modal, Names};
 use crate::view::qr_code::{qr_picture, QrPicture};
 
 const SVG_NS: &str = "http://www.w3.org/2000/svg";
 
-struct Open {
-    backdrop: Element,
-    dialog: Element,
-    previous_focus: Option<Element>,
-    _listeners: Vec<dom::Listener>,
-}
-
 thread_local! {
-    static OPEN: RefCell<Option<Open>> = const { RefCell::new(None) };
-}
-
-fn is_open() -> bool {
-    OPEN.with(|open| open.try_borrow().map(|o| o.is_some()).unwrap_or(false))
+    static OPEN: RefCell<Option<Modal>> = const { RefCell::new(None) };
 }
 
 /// Opens the dialog on `link`, the page's address (does nothing if it is open).
 pub(crate) fn open(link: &str) -> Result<(), JsValue> {
-    if is_open() {
+    if modal::is_open(&OPEN) {
         return Ok(());
     }
     let window = dom::window()?;
-    let document = dom::document()?;
-    let previous_focus = document.active_element();
-
-    let backdrop = dom::el_class("div", "overlay-backdrop")?;
-    let dialog = dom::el_class("div", "overlay-dialog share-dialog")?;
-    dialog.set_attribute("role", "dialog")?;
-    dialog.set_attribute("aria-modal", "true")?;
-    dialog.set_attribute("aria-labelledby", "share-title")?;
-    dialog.set_attribute("data-testid", "share-dialog")?;
-    dialog.set_attribute("tabindex", "-1")?;
-
-    let head = dom::el_class("div", "overlay-head")?;
-    let title = dom::el_i18n("h2", "", "share-title")?;
-    title.set_id("share-title");
-    dom::append(&head, &title)?;
-    let close_button = dom::el_i18n("button", "tool-button", "overlay-close")?;
-    close_button.set_attribute("type", "button")?;
-    close_button.set_attribute("data-testid", "share-close")?;
-    dom::append(&head, &close_button)?;
-    dom::append(&dialog, &head)?;
-
+    let draft = Draft::new(&Names {
+        dialog: ("overlay-dialog share-dialog", "share-dialog"),
+        title: ("share-title", ""),
+        close: ("tool-button", "share-close"),
+    })?;
     let body = dom::el_class("div", "share-body")?;
     show_link(&body, link)?;
-    dom::append(&dialog, &body)?;
-    dom::append(&backdrop, &dialog)?;
-
-    document
-        .body()
-        .ok_or_else(|| JsValue::from_str("no body"))?
-        .append_child(&backdrop)?;
-    if let Some(app) = document.get_element_by_id("app") {
-        app.set_attribute("inert", "")?;
-        app.set_attribute("aria-hidden", "true")?;
-    }
-
-    let listeners = vec![
-        dom::Listener::new(&close_button, "click", |_| close())?,
-        dom::Listener::new(&backdrop, "click", {
-            let backdrop = backdrop.clone();
-            move |event| {
-                let on_backdrop = event
-                    .target()
-                    .and_then(|t| t.dyn_into::<Element>().ok())
-                    .is_some_and(|t| t == backdrop);
-                if on_backdrop {
-                    close();
-                }
-            }
-        })?,
-        dom::Listener::capture(&window, "keydown", |event| {
-            if let Some(key) = event.dyn_ref::<KeyboardEvent>() {
-                on_key(key);
-            }
-        })?,
-    ];
-    dom::focus(&close_button);
-    OPEN.with(|open| {
-        if let Ok(mut open) = open.try_borrow_mut() {
-            *open = Some(Open {
-                backdrop,
-                dialog,
-                previous_focus,
-                _listeners: listeners,
-            });
+    dom::append(&draft.dialog, &body)?;
+    let keys = dom::Listener::capture(&window, "keydown", |event| {
+        if let Some(key) = event.dyn_ref::<KeyboardEvent>() {
+            on_key(key);
         }
-    });
+    })?;
+    modal::keep(&OPEN, draft.show(close, vec![keys])?);
     Ok(())
 }
 
@@ -159,20 +97,7 @@ fn qr_svg(picture: &QrPicture) -> Result<Element, JsValue> {
 
 /// Closes the dialog and gives focus back.
 fn close() {
-    let Some(open) = OPEN.with(|open| open.try_borrow_mut().ok().and_then(|mut o| o.take())) else {
-        return;
-    };
-    open.backdrop.remove();
-    if let Some(app) = dom::document()
-        .ok()
-        .and_then(|d| d.get_element_by_id("app"))
-    {
-        let _ = app.remove_attribute("inert");
-        let _ = app.remove_attribute("aria-hidden");
-    }
-    if let Some(previous) = open.previous_focus {
-        dom::focus(&previous);
-    }
+    modal::close(&OPEN);
 }
 
 /// Every key while the dialog is open: `Escape` closes it, Tab stays inside it, and no key
@@ -185,36 +110,7 @@ fn on_key(event: &KeyboardEvent) {
             event.prevent_default();
             close();
         }
-        "Tab" => trap_tab(event),
+        "Tab" => modal::trap_tab(&OPEN, event),
         _ => {}
-    }
-}
-
-/// Keeps Tab / Shift+Tab cycling through the dialog's focusable elements.
-fn trap_tab(event: &KeyboardEvent) {
-    let Some(dialog) = OPEN.with(|open| {
-        open.try_borrow()
-            .ok()
-            .and_then(|o| o.as_ref().map(|o| o.dialog.clone()))
-    }) else {
-        return;
-    };
-    let focusable = dom::matching(&dialog, "button, a[href], [tabindex]:not([tabindex='-1'])")
-        .unwrap_or_default();
-    let (Some(first), Some(last)) = (focusable.first(), focusable.last()) else {
-        event.prevent_default();
-        dom::focus(&dialog);
-        return;
-    };
-    let active = dom::document().ok().and_then(|d| d.active_element());
-    let inside = active.as_ref().is_some_and(|a| dialog.contains(Some(a)));
-    if event.shift_key() {
-        if !inside || active.as_ref() == Some(first) {
-            event.prevent_default();
-            dom::focus(last);
-        }
-    } else if !inside || active.as_ref() == Some(last) {
-        event.prevent_default();
-        dom::focus(first);
     }
 }

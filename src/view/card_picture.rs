@@ -20,23 +20,7 @@ pub fn default_picture(id: &str, aspect: f64) -> Option<Picture> {
 
 #[cfg(test)]
 mod tests {
-    use glam::DVec2;
-
     use super::*;
-
-    fn points(p: &Picture) -> Vec<DVec2> {
-        p.marks
-            .iter()
-            .flat_map(|m| match m {
-                Mark::Line { points, .. }
-                | Mark::Dots { points, .. }
-                | Mark::Fill { points, .. }
-                | Mark::Region { points, .. } => points.clone(),
-                Mark::Segments { pairs, .. } => pairs.iter().flat_map(|(a, b)| [*a, *b]).collect(),
-                Mark::Cells { .. } => Vec::new(),
-            })
-            .collect()
-    }
 
     #[test]
     fn every_recipe_has_a_picture_inside_the_unit_square() {
@@ -44,7 +28,7 @@ mod tests {
             let id = recipe.info.id;
             let picture = default_picture(id, 2.8).unwrap_or_else(|| panic!("{id}: no picture"));
             assert!(!picture.marks.is_empty(), "{id}");
-            for p in points(&picture) {
+            for p in picture.points() {
                 assert!(
                     p.is_finite()
                         && (-1e-9..=1.0 + 1e-9).contains(&p.x)

@@ -123,22 +123,13 @@ impl RunArgs {
 
 #[cfg(test)]
 mod tests {
-    use super::super::field::recipe_fields;
+    use super::super::field::{recipe_fields, texts_by_name};
     use super::*;
     use crate::recipes::{self, RECIPES};
 
     fn run_args(id: &'static str, texts: &[(&str, &str)]) -> RunArgs {
         let fields = recipe_fields(recipes::find(id).unwrap().info);
-        let texts: Vec<Option<String>> = fields
-            .iter()
-            .map(|f| {
-                texts
-                    .iter()
-                    .find(|(n, _)| *n == f.name())
-                    .map(|(_, v)| v.to_string())
-            })
-            .collect();
-        RunArgs::new(id, &fields, &texts)
+        RunArgs::new(id, &fields, &texts_by_name(&fields, texts))
     }
 
     /// Splits a shown line back into words as a POSIX shell would (single quotes and

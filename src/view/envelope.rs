@@ -11,6 +11,7 @@
 //! column (a `note` column gives no points).
 
 use crate::view::plot::{decimate, LinearScale};
+use crate::view::table::{split_cells, Quotes};
 
 /// Buckets of an envelope: enough for a 4K-wide plot at one bucket per device pixel column.
 pub const BUCKETS: usize = 4096;
@@ -48,26 +49,6 @@ impl Envelope {
     }
 }
 
-/// Splits one CSV line into cells (quotes removed, `""` kept as one quote).
-fn cells(line: &str, out: &mut Vec<String>) {
-    out.clear();
-    let mut cell = String::new();
-    let mut quoted = false;
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        match (c, quoted) {
-            ('"', true) if chars.peek() == Some(&'"') => {
-                cell.push('"');
-                chars.next();
-            }
-            ('"', _) => quoted = !quoted,
-            (',', false) => out.push(std::mem::take(&mut cell)),
-            (c, _) => cell.push(c),
-        }
-    }
-    out.push(cell);
-}
-
 /// A cell as a finite number.
 fn number(cell: &str) -> Option<f64> {
     cell.trim().parse::<f64>().ok().filter(|v| v.is_finite())
@@ -83,7 +64,7 @@ pub fn csv_envelope(text: &str, buckets: usize) -> Envelope {
     let Some(header) = lines.next() else {
         return Envelope::default();
     };
-    cells(header, &mut row);
+    split_cells(header, Quotes::Anywhere, &mut row);
     let header: Vec<String> = row.iter().map(|c| c.trim().to_string()).collect();
     let width = header.len();
     let mut columns: Vec<Vec<(f64, f64)>> = vec![Vec::new(); width.saturating_sub(1)];
@@ -103,7 +84,7 @@ pub fn csv_envelope(text: &str, buckets: usize) -> Envelope {
             }
             x
         } else {
-            cells(line, &mut row);
+            split_cells(line, Quotes::Anywhere, &mut row);
             let Some(x) = row.first().and_then(|c| number(c)) else {
                 continue;
             };

@@ -69,6 +69,20 @@ pub fn recipe_fields(info: &RecipeInfo) -> Vec<FieldDef> {
         .collect()
 }
 
+/// The texts of a form of `fields`: the value `values` names for each field, `None` for the
+/// fields it does not name.
+pub fn texts_by_name(fields: &[FieldDef], values: &[(&str, &str)]) -> Vec<Option<String>> {
+    fields
+        .iter()
+        .map(|f| {
+            values
+                .iter()
+                .find(|(n, _)| *n == f.name())
+                .map(|(_, v)| v.to_string())
+        })
+        .collect()
+}
+
 /// The text typed in each field, trimmed, `None` where it is blank (blank = the default).
 pub fn typed(texts: &[Option<String>], index: usize) -> Option<&str> {
     texts

@@ -184,7 +184,7 @@ mod tests {
     use crate::args::Args;
     use crate::i18n::{I18n, Lang};
     use crate::recipes::{self, RECIPES};
-    use crate::view::field::missing_messages;
+    use crate::view::field::{missing_messages, texts_by_name};
 
     /// The recipe's own plan (parse + validate) on the form's texts, as the drills page runs it.
     fn checker(id: &'static str) -> impl Fn(&[Option<String>]) -> Result<u64, RecipeError> {
@@ -198,15 +198,7 @@ mod tests {
     }
 
     fn texts(id: &str, values: &[(&str, &str)]) -> Vec<Option<String>> {
-        recipe_fields(recipes::find(id).unwrap().info)
-            .iter()
-            .map(|f| {
-                values
-                    .iter()
-                    .find(|(n, _)| *n == f.name())
-                    .map(|(_, v)| v.to_string())
-            })
-            .collect()
+        texts_by_name(&recipe_fields(recipes::find(id).unwrap().info), values)
     }
 
     fn check(id: &'static str, values: &[(&str, &str)], changed: Option<&str>) -> Checked<u64> {

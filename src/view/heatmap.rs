@@ -265,10 +265,14 @@ mod tests {
 
     #[test]
     fn legend_values_read_like_numbers() {
-        assert_eq!(legend_value(0.012), "0.0120");
-        assert_eq!(legend_value(0.006), "0.00600");
-        assert_eq!(legend_value(150.0), "150");
-        assert_eq!(legend_value(0.0), "0");
-        assert_eq!(legend_value(2.5e-6), "2.50e-6");
+        for (value, shown) in [
+            (0.012, "0.0120"),
+            (0.006, "0.00600"),
+            (150.0, "150"),
+            (0.0, "0"),
+            (2.5e-6, "2.50e-6"),
+        ] {
+            assert_eq!(legend_value(value), shown);
+        }
     }
 }

@@ -876,29 +876,28 @@ pub struct Export {
     pub follows_q2: bool,
 }
 
+impl Export {
+    /// The export of kernel `K`'s file `file`.
+    const fn of<K: crate::recipes::Kernel>(
+        file: &'static str,
+        label_id: &'static str,
+        follows_q2: bool,
+    ) -> Export {
+        Export {
+            file,
+            recipe: K::INFO,
+            run: crate::recipes::run_raw_of::<K>,
+            label_id,
+            follows_q2,
+        }
+    }
+}
+
 /// The page's CSVs, in the order of the panel.
 pub const EXPORTS: [Export; 3] = [
-    Export {
-        file: "ik_workspace.csv",
-        recipe: &crate::recipes::ik_workspace::INFO,
-        run: crate::recipes::run_raw_of::<crate::recipes::ik_workspace::Entry>,
-        label_id: "ik2r-dl-ik",
-        follows_q2: false,
-    },
-    Export {
-        file: "jacobian_2r.csv",
-        recipe: &crate::recipes::jacobian_2r::INFO,
-        run: crate::recipes::run_raw_of::<crate::recipes::jacobian_2r::Entry>,
-        label_id: "ik2r-dl-jac",
-        follows_q2: true,
-    },
-    Export {
-        file: "manip_ellipse.csv",
-        recipe: &crate::recipes::manip_grid::INFO,
-        run: crate::recipes::run_raw_of::<crate::recipes::manip_grid::Entry>,
-        label_id: "ik2r-dl-manip",
-        follows_q2: false,
-    },
+    Export::of::<crate::recipes::ik_workspace::Entry>("ik_workspace.csv", "ik2r-dl-ik", false),
+    Export::of::<crate::recipes::jacobian_2r::Entry>("jacobian_2r.csv", "ik2r-dl-jac", true),
+    Export::of::<crate::recipes::manip_grid::Entry>("manip_ellipse.csv", "ik2r-dl-manip", false),
 ];
 
 /// File name of the arm view PNG.

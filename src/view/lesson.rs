@@ -508,14 +508,16 @@ impl Presenter {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    fn is_page(p: &str) -> bool {
+    /// The pages the tests' lessons may name.
+    pub(crate) fn is_page(p: &str) -> bool {
         matches!(p, "rrt-2d" | "ik-2r" | "pid-step" | "lesson")
     }
 
-    fn sample() -> Lesson {
+    /// A lesson of two steps, the first with every field set, the second a plain route.
+    pub(crate) fn sample() -> Lesson {
         Lesson {
             title: "Planning & trajectories".into(),
             steps: vec![

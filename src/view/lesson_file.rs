@@ -205,11 +205,8 @@ mod tests {
     use super::*;
     use crate::error::RecipeError;
     use crate::i18n::{I18n, Lang};
+    use crate::view::lesson::tests::{is_page, sample};
     use crate::view::lesson::{UnknownFocus, MAX_NOTE_CHARS, MAX_QUOTED_CHARS};
-
-    fn is_page(p: &str) -> bool {
-        matches!(p, "rrt-2d" | "ik-2r" | "pid-step" | "lesson")
-    }
 
     fn import(text: &str) -> Result<Lesson, LessonError> {
         from_json(text, is_page)
@@ -222,19 +219,7 @@ mod tests {
 
     #[test]
     fn json_round_trips_and_states_its_format() {
-        let lesson = Lesson {
-            title: "Planning & trajectories".into(),
-            steps: vec![
-                LessonStep {
-                    route: "#/rrt-2d?seed=7&it=0".into(),
-                    title: "Step the RRT".into(),
-                    note: "Watch the goal bias.".into(),
-                    page_steps: 5,
-                    focus: Some("world".into()),
-                },
-                LessonStep::of_route("#/pid-step?Kp=2&lang=ja", "PID, hotter gains"),
-            ],
-        };
+        let lesson = sample();
         let text = to_json(&lesson);
         assert!(text.contains("\"format\": \"bsv-lesson\"") && text.contains("\"pageSteps\": 5"));
         assert!(text.contains("\"version\": 2") && text.contains("\"focus\": \"world\""));

@@ -17,6 +17,11 @@ pub struct Colour {
 }
 
 impl Colour {
+    /// The colour of CSS hex text `hex` and components `rgb`.
+    pub const fn new(hex: &'static str, rgb: (u8, u8, u8)) -> Colour {
+        Colour { hex, rgb }
+    }
+
     /// `rgba(r,g,b,alpha)` for a canvas style.
     pub fn rgba(self, alpha: f64) -> String {
         let (r, g, b) = self.rgb;
@@ -24,38 +29,14 @@ impl Colour {
     }
 }
 
-pub const BLACK: Colour = Colour {
-    hex: "#000000",
-    rgb: (0, 0, 0),
-};
-pub const ORANGE: Colour = Colour {
-    hex: "#E69F00",
-    rgb: (230, 159, 0),
-};
-pub const SKY_BLUE: Colour = Colour {
-    hex: "#56B4E9",
-    rgb: (86, 180, 233),
-};
-pub const BLUISH_GREEN: Colour = Colour {
-    hex: "#009E73",
-    rgb: (0, 158, 115),
-};
-pub const YELLOW: Colour = Colour {
-    hex: "#F0E442",
-    rgb: (240, 228, 66),
-};
-pub const BLUE: Colour = Colour {
-    hex: "#0072B2",
-    rgb: (0, 114, 178),
-};
-pub const VERMILION: Colour = Colour {
-    hex: "#D55E00",
-    rgb: (213, 94, 0),
-};
-pub const REDDISH_PURPLE: Colour = Colour {
-    hex: "#CC79A7",
-    rgb: (204, 121, 167),
-};
+pub const BLACK: Colour = Colour::new("#000000", (0, 0, 0));
+pub const ORANGE: Colour = Colour::new("#E69F00", (230, 159, 0));
+pub const SKY_BLUE: Colour = Colour::new("#56B4E9", (86, 180, 233));
+pub const BLUISH_GREEN: Colour = Colour::new("#009E73", (0, 158, 115));
+pub const YELLOW: Colour = Colour::new("#F0E442", (240, 228, 66));
+pub const BLUE: Colour = Colour::new("#0072B2", (0, 114, 178));
+pub const VERMILION: Colour = Colour::new("#D55E00", (213, 94, 0));
+pub const REDDISH_PURPLE: Colour = Colour::new("#CC79A7", (204, 121, 167));
 
 /// The eight, in Okabe & Ito's order.
 pub const OKABE_ITO: [Colour; 8] = [

@@ -247,14 +247,15 @@ mod tests {
 
     #[test]
     fn diverged_and_empty_runs_have_no_response_figures() {
-        let wild = simulate(&PidParams {
+        // A proportional gain so high that the response overflows.
+        let gains = PidParams {
             kp: 100.0,
             ki: 0.0,
             kd: 0.0,
-            tau: 0.8,
             steps: 600,
-        })
-        .unwrap();
+            ..PidParams::default()
+        };
+        let wild = simulate(&gains).unwrap();
         let f = figures(&wild);
         assert_eq!(
             (f.rise_time, f.overshoot_pct, f.final_y),

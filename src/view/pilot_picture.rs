@@ -301,22 +301,8 @@ mod tests {
         points.iter().copied().sum::<DVec2>() / points.len() as f64
     }
 
-    fn all_points(p: &Picture) -> Vec<DVec2> {
-        p.marks
-            .iter()
-            .flat_map(|m| match m {
-                Mark::Line { points, .. }
-                | Mark::Dots { points, .. }
-                | Mark::Fill { points, .. }
-                | Mark::Region { points, .. } => points.clone(),
-                Mark::Segments { pairs, .. } => pairs.iter().flat_map(|(a, b)| [*a, *b]).collect(),
-                Mark::Cells { .. } => Vec::new(),
-            })
-            .collect()
-    }
-
     fn inside_unit_square(p: &Picture) -> bool {
-        all_points(p).iter().all(|q| {
+        p.points().iter().all(|q| {
             q.is_finite()
                 && (-1e-9..=1.0 + 1e-9).contains(&q.x)
                 && (-1e-9..=1.0 + 1e-9).contains(&q.y)

@@ -437,12 +437,16 @@ mod tests {
 
     #[test]
     fn tick_labels_have_the_step_s_decimals() {
-        assert_eq!(tick_label(0.6000000000000001, 0.2), "0.6");
-        assert_eq!(tick_label(-0.005, 0.005), "-0.005");
-        assert_eq!(tick_label(0.25, 0.25), "0.25");
-        assert_eq!(tick_label(200.0, 200.0), "200");
-        assert_eq!(tick_label(0.0, 0.1), "0");
-        assert_eq!(tick_label(2.0e7, 1.0e7), "2.0e7");
+        for (value, step, shown) in [
+            (0.6000000000000001, 0.2, "0.6"),
+            (-0.005, 0.005, "-0.005"),
+            (0.25, 0.25, "0.25"),
+            (200.0, 200.0, "200"),
+            (0.0, 0.1, "0"),
+            (2.0e7, 1.0e7, "2.0e7"),
+        ] {
+            assert_eq!(tick_label(value, step), shown, "{value} by {step}");
+        }
     }
 
     #[test]
@@ -492,29 +496,17 @@ mod tests {
         assert_eq!(d.first(), pts.first());
         assert_eq!(d.last(), pts.last());
         assert!(d.windows(2).all(|w| w[0].0 <= w[1].0));
+        // The highest and lowest y of `points` in pixel column `col`.
+        let extremes = |points: &[(f64, f64)], col: usize| {
+            let ys = points
+                .iter()
+                .filter(|p| x.map(p.0).floor() == col as f64)
+                .map(|p| p.1);
+            let max = ys.clone().fold(f64::MIN, f64::max);
+            (max, ys.fold(f64::MAX, f64::min))
+        };
         for col in 0..10 {
-            let in_col = |p: &&(f64, f64)| x.map(p.0).floor() == col as f64;
-            let max_all = pts
-                .iter()
-                .filter(in_col)
-                .map(|p| p.1)
-                .fold(f64::MIN, f64::max);
-            let max_kept = d
-                .iter()
-                .filter(in_col)
-                .map(|p| p.1)
-                .fold(f64::MIN, f64::max);
-            let min_all = pts
-                .iter()
-                .filter(in_col)
-                .map(|p| p.1)
-                .fold(f64::MAX, f64::min);
-            let min_kept = d
-                .iter()
-                .filter(in_col)
-                .map(|p| p.1)
-                .fold(f64::MAX, f64::min);
-            assert_eq!((max_all, min_all), (max_kept, min_kept), "column {col}");
+            assert_eq!(extremes(&pts, col), extremes(&d, col), "column {col}");
         }
         // Few points: unchanged.
         let few = [(0.0, 1.0), (0.5, 2.0), (1.0, 0.0)];

@@ -21,9 +21,19 @@ pub struct Preview {
     pub total_columns: usize,
 }
 
-/// Splits one CSV line into cells (quoted cells may hold commas and `""`).
-fn cells(line: &str) -> Vec<String> {
-    let mut out = Vec::new();
+/// Where a `"` opens a quoted part of a cell.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quotes {
+    /// Only at the start of a cell, as `csv.reader` reads it (elsewhere it is text).
+    AtCellStart,
+    /// Anywhere (the plot's reader, which only needs the numbers).
+    Anywhere,
+}
+
+/// Splits one CSV line into `out`'s cells: quoted parts may hold commas and `""` (one quote);
+/// the quotes themselves are dropped.
+pub fn split_cells(line: &str, quotes: Quotes, out: &mut Vec<String>) {
+    out.clear();
     let mut cell = String::new();
     let mut quoted = false;
     let mut chars = line.chars().peekable();
@@ -34,12 +44,18 @@ fn cells(line: &str) -> Vec<String> {
                 chars.next();
             }
             ('"', true) => quoted = false,
-            ('"', false) if cell.is_empty() => quoted = true,
+            ('"', false) if cell.is_empty() || quotes == Quotes::Anywhere => quoted = true,
             (',', false) => out.push(std::mem::take(&mut cell)),
             (c, _) => cell.push(c),
         }
     }
     out.push(cell);
+}
+
+/// The cells of one CSV line, as `csv.reader` splits it.
+fn cells(line: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    split_cells(line, Quotes::AtCellStart, &mut out);
     out
 }
 
@@ -189,22 +205,26 @@ mod tests {
 
     #[test]
     fn rounded_cells_read_like_a_person_writes_them() {
-        assert_eq!(rounded("0.018000000000000002"), "0.018");
-        assert_eq!(rounded("0.30000000000000004"), "0.3");
-        assert_eq!(rounded("-3.141592653589793"), "-3.14159");
-        assert_eq!(rounded("1.0"), "1.0");
-        assert_eq!(rounded("-0.0"), "0.0");
-        assert_eq!(rounded("-0.05"), "-0.05");
-        assert_eq!(rounded("0.05"), "0.05");
-        assert_eq!(rounded("800"), "800");
-        assert_eq!(rounded("123456789012"), "123456789012");
-        assert_eq!(rounded("1234.56789012"), "1234.57");
-        assert_eq!(rounded("0.9999999999999999"), "1.0");
-        assert_eq!(rounded("1.2345678901e-10"), "1.23457e-10");
-        assert_eq!(rounded("0.0000012345678901"), "1.23457e-6");
-        assert_eq!(rounded("nan"), "nan");
-        assert_eq!(rounded("example-row"), "example-row");
-        assert_eq!(rounded(""), "");
+        for (cell, shown) in [
+            ("0.018000000000000002", "0.018"),
+            ("0.30000000000000004", "0.3"),
+            ("-3.141592653589793", "-3.14159"),
+            ("1.0", "1.0"),
+            ("-0.0", "0.0"),
+            ("-0.05", "-0.05"),
+            ("0.05", "0.05"),
+            ("800", "800"),
+            ("123456789012", "123456789012"),
+            ("1234.56789012", "1234.57"),
+            ("0.9999999999999999", "1.0"),
+            ("1.2345678901e-10", "1.23457e-10"),
+            ("0.0000012345678901", "1.23457e-6"),
+            ("nan", "nan"),
+            ("example-row", "example-row"),
+            ("", ""),
+        ] {
+            assert_eq!(rounded(cell), shown, "{cell}");
+        }
         // Rounding never changes a value by more than half a unit of its sixth digit.
         for text in [
             "0.018000000000000002",

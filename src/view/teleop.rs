@@ -4,12 +4,9 @@
 //! kernel's [`SceneConfig`]; the readout texts; the world ↔ screen transform of the arm view;
 //! the repeatability table's cells. No web-sys: `cargo test` runs all of it.
 
+use crate::teleop::input::{GAMEPAD_DEAD_ZONE, GAMEPAD_SENSITIVITIES, KEYBOARD_SENSITIVITIES};
 use crate::teleop::session::{clean_pilot_id, InputDevice, PILOT_ID_MAX};
 use crate::teleop::{ControlParams, IkMethod, SceneConfig, Task};
-use crate::view::teleop_input::{
-    GAMEPAD_DEAD_ZONE, GAMEPAD_POS_SENSITIVITY, GAMEPAD_ROT_SENSITIVITY, KEYBOARD_POS_SENSITIVITY,
-    KEYBOARD_ROT_SENSITIVITY,
-};
 
 /// The settings fields, in the form's order (`data-field` names).
 pub const FIELDS: [&str; 10] = [
@@ -100,12 +97,11 @@ impl SettingsTexts {
 /// Isaac Lab's `(pos_sensitivity, rot_sensitivity)` of a device (the pointer's clutch uses the
 /// keyboard's).
 pub fn sensitivity_defaults(device: InputDevice) -> (f64, f64) {
-    match device {
-        InputDevice::Gamepad => (GAMEPAD_POS_SENSITIVITY, GAMEPAD_ROT_SENSITIVITY),
-        InputDevice::Keyboard | InputDevice::Pointer => {
-            (KEYBOARD_POS_SENSITIVITY, KEYBOARD_ROT_SENSITIVITY)
-        }
-    }
+    let defaults = match device {
+        InputDevice::Gamepad => GAMEPAD_SENSITIVITIES,
+        InputDevice::Keyboard | InputDevice::Pointer => KEYBOARD_SENSITIVITIES,
+    };
+    (defaults.pos, defaults.rot)
 }
 
 /// A field's problem: its name, the Fluent id of the message and the message's arguments.
@@ -189,21 +185,19 @@ pub fn check(texts: &SettingsTexts) -> Result<Settings, Vec<FieldProblem>> {
             args: vec![("max", PILOT_ID_MAX.to_string())],
         });
     }
+    // A choice that is none of the list's.
+    let unknown = |field| FieldProblem {
+        field,
+        message_id: "teleop-err-choice",
+        args: Vec::new(),
+    };
     let task = Task::from_id(&texts.task);
     if task.is_none() {
-        problems.push(FieldProblem {
-            field: "task",
-            message_id: "teleop-err-choice",
-            args: Vec::new(),
-        });
+        problems.push(unknown("task"));
     }
     let method = IkMethod::from_id(&texts.ik);
     if method.is_none() {
-        problems.push(FieldProblem {
-            field: "ik",
-            message_id: "teleop-err-choice",
-            args: Vec::new(),
-        });
+        problems.push(unknown("ik"));
     }
     let mut values = [0.0; 7];
     for (i, (field, _, _)) in LIMITS.iter().enumerate() {

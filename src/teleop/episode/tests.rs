@@ -192,44 +192,32 @@ fn proposed_labels() {
     // A clean scripted pick and place.
     let ok = flown(SceneConfig::default());
     assert_eq!(proposed_label(&ok), (Label::Success, None));
+    // The steps recorded and the proposed label of an episode that failed.
+    let failed = |config: SceneConfig, commands: &[Command]| {
+        let episode = Episode::record(config, commands).unwrap();
+        let (label, category) = proposed_label(&episode);
+        assert_eq!(label, Label::Failure);
+        (episode.records.len(), category)
+    };
     // Timed out without progress.
-    let idle = Episode::record(
-        SceneConfig {
-            time_box_s: 1.0,
-            ..SceneConfig::default()
-        },
-        &[Command::default(); 150],
-    )
-    .unwrap();
-    assert_eq!(idle.records.len(), 100);
-    assert_eq!(
-        proposed_label(&idle),
-        (Label::Failure, Some(FailureCategory::Timeout))
-    );
+    let short = SceneConfig {
+        time_box_s: 1.0,
+        ..SceneConfig::default()
+    };
+    let timeout = Some(FailureCategory::Timeout);
+    assert_eq!(failed(short, &[Command::default(); 150]), (100, timeout));
     // A grasp miss first, then nothing: ended by the pilot.
-    let miss = Episode::record(SceneConfig::default(), &[Command::idle(true); 20]).unwrap();
-    assert_eq!(
-        proposed_label(&miss),
-        (Label::Failure, Some(FailureCategory::GraspMiss))
-    );
+    let miss = failed(SceneConfig::default(), &[Command::idle(true); 20]);
+    assert_eq!(miss.1, Some(FailureCategory::GraspMiss));
     // Ended by the pilot with no failure event, with high latency: input lag.
-    let laggy = Episode::record(
-        SceneConfig {
-            latency_steps: 30,
-            ..SceneConfig::default()
-        },
-        &[Command::default(); 20],
-    )
-    .unwrap();
-    assert_eq!(
-        proposed_label(&laggy),
-        (Label::Failure, Some(FailureCategory::InputLag))
-    );
-    let plain = Episode::record(SceneConfig::default(), &[Command::default(); 20]).unwrap();
-    assert_eq!(
-        proposed_label(&plain),
-        (Label::Failure, Some(FailureCategory::OperatorAbort))
-    );
+    let laggy = SceneConfig {
+        latency_steps: 30,
+        ..SceneConfig::default()
+    };
+    let lag = failed(laggy, &[Command::default(); 20]);
+    assert_eq!(lag.1, Some(FailureCategory::InputLag));
+    let plain = failed(SceneConfig::default(), &[Command::default(); 20]);
+    assert_eq!(plain.1, Some(FailureCategory::OperatorAbort));
     for c in FailureCategory::ALL {
         assert_eq!(FailureCategory::from_id(c.id()), Some(c));
     }

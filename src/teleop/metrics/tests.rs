@@ -8,10 +8,7 @@ use crate::teleop::scene::SceneConfig;
 
 #[test]
 fn reach_metrics_and_fitts() {
-    let config = SceneConfig {
-        task: Task::from_id("reach").unwrap(),
-        ..SceneConfig::default()
-    };
+    let config = SceneConfig::with_task(Task::from_id("reach").unwrap());
     let episode = fly(config.clone(), plan(&config), 6000).unwrap();
     let m = metrics(&episode);
     assert_eq!(m.outcome, Some(Outcome::Success));

@@ -330,11 +330,12 @@ pub fn check_evidence(doc: &Value) -> Result<(), EvidenceProblem> {
             field: name.to_string(),
         })
     };
-    let string = |name: &str| -> Result<&str, EvidenceProblem> {
-        field(name)?.as_str().ok_or_else(|| EvidenceProblem::Type {
-            field: name.to_string(),
-        })
+    let type_err = |name: &str| EvidenceProblem::Type {
+        field: name.to_string(),
     };
+    let string = |name: &str| field(name)?.as_str().ok_or_else(|| type_err(name));
+    let array = |name: &str| field(name)?.as_array().ok_or_else(|| type_err(name));
+    let object = |name: &str| field(name)?.as_object().ok_or_else(|| type_err(name));
     let value_err = |name: &str| EvidenceProblem::Value {
         field: name.to_string(),
     };
@@ -370,11 +371,7 @@ pub fn check_evidence(doc: &Value) -> Result<(), EvidenceProblem> {
             return Err(value_err(name));
         }
     }
-    let episodes = field("episodes")?
-        .as_object()
-        .ok_or_else(|| EvidenceProblem::Type {
-            field: "episodes".into(),
-        })?;
+    let episodes = object("episodes")?;
     let mut counts = [0u64; 4];
     for (i, name) in ["attempted", "successful", "failed", "recoveryEpisodes"]
         .iter()
@@ -386,28 +383,16 @@ pub fn check_evidence(doc: &Value) -> Result<(), EvidenceProblem> {
             .ok_or_else(|| EvidenceProblem::Missing {
                 field: full.clone(),
             })?;
-        counts[i] = v.as_u64().ok_or(EvidenceProblem::Type {
-            field: full.clone(),
-        })?;
+        counts[i] = v.as_u64().ok_or_else(|| type_err(&full))?;
     }
     if counts[1] + counts[2] != counts[0] || counts[3] > counts[1] {
         return Err(value_err("episodes"));
     }
-    let events = field("safetyEvents")?
-        .as_array()
-        .ok_or_else(|| EvidenceProblem::Type {
-            field: "safetyEvents".into(),
-        })?;
+    let events = array("safetyEvents")?;
     if let Some(i) = events.iter().position(|e| !e.is_string()) {
-        return Err(EvidenceProblem::Type {
-            field: format!("safetyEvents[{i}]"),
-        });
+        return Err(type_err(&format!("safetyEvents[{i}]")));
     }
-    let artifacts = field("dataArtifacts")?
-        .as_array()
-        .ok_or_else(|| EvidenceProblem::Type {
-            field: "dataArtifacts".into(),
-        })?;
+    let artifacts = array("dataArtifacts")?;
     for (i, a) in artifacts.iter().enumerate() {
         for key in ["type", "uriOrRef"] {
             if a[key].as_str().is_none_or(str::is_empty) {
@@ -425,23 +410,13 @@ pub fn check_evidence(doc: &Value) -> Result<(), EvidenceProblem> {
             return Err(value_err(&format!("dataArtifacts[{i}].sha256")));
         }
     }
-    let metrics = field("metrics")?
-        .as_object()
-        .ok_or_else(|| EvidenceProblem::Type {
-            field: "metrics".into(),
-        })?;
+    let metrics = object("metrics")?;
     for (k, v) in metrics {
         if v.is_array() || v.is_object() {
-            return Err(EvidenceProblem::Type {
-                field: format!("metrics.{k}"),
-            });
+            return Err(type_err(&format!("metrics.{k}")));
         }
     }
-    let review = field("review")?
-        .as_object()
-        .ok_or_else(|| EvidenceProblem::Type {
-            field: "review".into(),
-        })?;
+    let review = object("review")?;
     if review.get("status").and_then(Value::as_str) != Some("UNREVIEWED") {
         return Err(value_err("review.status"));
     }

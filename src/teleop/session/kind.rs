@@ -65,8 +65,8 @@ pub trait PracticeEpisode: Clone + PartialEq + std::fmt::Debug + Sized {
     }
 }
 
-/// An episode that can be simulated again step by step (the failure review's replay,
-/// [`crate::view::replay::Replay`]): the arm's simulation at the episode's start state,
+/// An episode that can be simulated again step by step (the failure review's replay, a view
+/// model of the pages): the arm's simulation at the episode's start state,
 /// stepped with the episode's own commands.
 pub trait Replayable: PracticeEpisode {
     /// The arm's simulation.

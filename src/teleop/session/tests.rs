@@ -358,11 +358,18 @@ fn episodes_table_rows_and_category_counts() {
     assert_eq!(counts.iter().map(|(_, n)| n).sum::<usize>(), 3);
 }
 
-#[test]
-fn stored_session_round_trips_and_keeps_an_interrupted_episode() {
+/// The test session, an episode interrupted while it was recorded, and the JSON stored of
+/// both.
+fn stored_with_interrupted() -> (Session, Episode, String) {
     let s = session();
     let in_progress = episode(&push(25, 0.5, 0.5, false));
     let json = s.to_json(Some(&in_progress));
+    (s, in_progress, json)
+}
+
+#[test]
+fn stored_session_round_trips_and_keeps_an_interrupted_episode() {
+    let (s, in_progress, json) = stored_with_interrupted();
     let back = Session::<Episode>::from_json(&json).expect("back");
     assert_eq!(back.episodes.len(), 4, "the interrupted episode is kept");
     assert_eq!(back.episodes[..3], s.episodes[..]);
@@ -385,9 +392,7 @@ fn stored_session_round_trips_and_keeps_an_interrupted_episode() {
 
 #[test]
 fn a_session_loaded_in_slices_is_the_one_loaded_at_once() {
-    let s = session();
-    let in_progress = episode(&push(25, 0.5, 0.5, false));
-    let json = s.to_json(Some(&in_progress));
+    let (_, _, json) = stored_with_interrupted();
     let whole = Session::<Episode>::from_json(&json).expect("whole");
     for slice in [0, 1, 7, 1000] {
         let mut loader = SessionLoader::<Episode>::new(&json).expect("loader");

@@ -61,15 +61,16 @@ fn grasp_plan(config: &SceneConfig) -> Vec<Waypoint> {
     plan(config).into_iter().take(3).collect()
 }
 
+/// `grasp` lifted to 5 cm above the table.
+fn lifted(grasp: &Waypoint) -> Waypoint {
+    Waypoint { z: 0.05, ..*grasp }
+}
+
 #[test]
 fn closing_on_the_block_grasps_it_and_it_moves_with_the_gripper() {
     let config = SceneConfig::default();
     let mut waypoints = grasp_plan(&config);
-    let lift = Waypoint {
-        z: 0.05,
-        ..waypoints[2]
-    };
-    waypoints.push(lift);
+    waypoints.push(lifted(&waypoints[2]));
     let episode = fly(config, waypoints, 2000).unwrap();
     let ev = events(&episode);
     assert_eq!(ev.iter().filter(|(_, e)| *e == Event::Grasp).count(), 1);
@@ -102,9 +103,8 @@ fn opening_high_above_the_table_drops_the_block_and_it_falls_to_the_table() {
     let config = SceneConfig::default();
     let mut waypoints = grasp_plan(&config);
     let lift = Waypoint {
-        z: 0.05,
         hold_steps: 0,
-        ..waypoints[2]
+        ..lifted(&waypoints[2])
     };
     let open = Waypoint {
         gripper_closed: false,
@@ -288,10 +288,7 @@ fn success_after_the_goal_condition_held_success_steps_steps() {
 
 #[test]
 fn reach_targets_in_order_then_success() {
-    let config = SceneConfig {
-        task: Task::from_id("reach").unwrap(),
-        ..SceneConfig::default()
-    };
+    let config = SceneConfig::with_task(Task::from_id("reach").unwrap());
     let episode = fly(config.clone(), plan(&config), 6000).unwrap();
     let reached: Vec<usize> = events(&episode)
         .iter()
@@ -483,10 +480,7 @@ fn event_texts_round_trip() {
 
 #[test]
 fn geometry_draws_the_arm_where_fk_puts_it() {
-    let s = sim(SceneConfig {
-        task: Task::from_id("reach").unwrap(),
-        ..SceneConfig::default()
-    });
+    let s = sim(SceneConfig::with_task(Task::from_id("reach").unwrap()));
     let g = s.geometry();
     assert!((g.tip.x - 0.10).abs() < 1e-12 && (g.tip.z - 0.06).abs() < 1e-12);
     assert_eq!(g.links[0].segment.x0, 0.0);
