@@ -64,3 +64,5 @@ section-keys = Keys
 section-result = Result
 section-lessons = Built-in lessons
 section-steps = This lesson's steps
+section-exercises = Exercises
+exercises-load-failed = The exercises could not be loaded: check the connection, then try again.

@@ -63,3 +63,5 @@ section-keys = キー
 section-result = 結果
 section-lessons = 組み込みのレッスン
 section-steps = このレッスンのステップ
+section-exercises = 演習
+exercises-load-failed = 演習を読み込めませんでした。接続を確かめてから、もう一度どうぞ。

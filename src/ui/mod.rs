@@ -11,6 +11,8 @@
 //!   [`dom`], [`ctx`] (language, projector mode) and [`schedule`] (timers, after paint).
 //! - [`embed`] and [`embed_api`]: a page embedded in another site (`embed=1`) and its
 //!   postMessage API.
+//! - [`exercises`]: a page's exercises list, the chunk its section fetches
+//!   ([`kit::exercise_slot`]).
 //! - [`download`], [`clipboard`], [`command_line`]: files, copies and shell quoting.
 
 use wasm_bindgen::prelude::*;
@@ -23,6 +25,7 @@ pub mod download;
 pub mod drill_chain;
 pub mod embed;
 pub mod embed_api;
+pub mod exercises;
 pub mod kit;
 pub mod lang_files;
 pub mod lesson_bar;

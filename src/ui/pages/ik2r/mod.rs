@@ -51,11 +51,13 @@ use crate::planar2r::{wrap_angle, Elbow, Kinematics};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::{DragEvent, PointerKind};
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{self, MountCtx, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::{now_ms, Timer};
+use crate::view::exercises::PageModel;
 use crate::view::ik2r::{elbow_of, Grab, Params, State, WsColor};
 use crate::view::url::UrlState;
 
@@ -652,20 +654,38 @@ impl Page {
     }
 }
 
-/// The IK playground.
-pub struct Ik2rPage(Rc<Page>);
+/// The IK playground and its exercises.
+pub struct Ik2rPage {
+    page: Rc<Page>,
+    _exercises: ExerciseSlot,
+}
 
 impl page::Page for Ik2rPage {
     fn mount(ctx: MountCtx) -> Result<Ik2rPage, JsValue> {
-        mount(ctx).map(Ik2rPage)
+        let root = ctx.root.clone();
+        let page = mount(ctx)?;
+        let me = Rc::downgrade(&page);
+        let exercises = ExerciseSlot::new(
+            &root,
+            "ik-2r",
+            Box::new(move |use_model| {
+                if let Some(page) = me.upgrade() {
+                    use_model(&PageModel::Ik2r(&page.state.borrow()));
+                }
+            }),
+        )?;
+        Ok(Ik2rPage {
+            page,
+            _exercises: exercises,
+        })
     }
 
     fn relocalize(&self) {
-        self.0.relocalize();
+        self.page.relocalize();
     }
 
     fn set_projector(&self, _on: bool) {
-        self.0.invalidate(dirty::ALL);
+        self.page.invalidate(dirty::ALL);
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
@@ -673,7 +693,7 @@ impl page::Page for Ik2rPage {
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        self.0.on_key(event)
+        self.page.on_key(event)
     }
 }
 
@@ -730,6 +750,6 @@ impl BenchHost for Page {
 
 impl Drop for Ik2rPage {
     fn drop(&mut self) {
-        self.0.unmount();
+        self.page.unmount();
     }
 }
