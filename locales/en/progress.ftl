@@ -65,3 +65,9 @@ progress-imported-unknown = { $file }: { $count ->
 progress-file-problem = { $file }: { $problem }
 progress-not-saved = This browser does not keep your progress (its storage is off): export it before you leave.
 progress-not-saved-full = This browser's storage is full, so your progress is not kept: export it before you leave.
+
+## The home page's progress
+home-progress-heading = Your exercises
+home-progress-intro = Each drill page ends with exercises: predict, then check against the page's own numbers. Your progress stays in this browser; export it for your teacher, or import it on another device.
+home-progress-page = { $done } / { $total }
+home-progress-page-label = { $page }: { $done } of { $total } exercises done

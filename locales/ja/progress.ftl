@@ -59,3 +59,9 @@ progress-imported-unknown = { $file }：{ $count } 問の記録をあなたの�
 progress-file-problem = { $file }：{ $problem }
 progress-not-saved = このブラウザーは進み具合を保存しません（ストレージがオフです）。ページを離れる前に書き出してください。
 progress-not-saved-full = このブラウザーのストレージがいっぱいで、進み具合を保存できません。ページを離れる前に書き出してください。
+
+## ホームの進み具合
+home-progress-heading = あなたの演習
+home-progress-intro = どのドリルのページも最後に演習があります。まず予想し、ページ自身の数値で確かめましょう。進み具合はこのブラウザーに保存されます。先生に出すときは書き出し、別の端末では読み込んでください。
+home-progress-page = { $done } / { $total }
+home-progress-page-label = { $page }：{ $total } 問中 { $done } 問完了

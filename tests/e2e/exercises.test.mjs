@@ -3,7 +3,8 @@
 // field and a far-off prediction is marked wrong, then the hint shows; the five required goals
 // (ik-singular, pendulum-euler-dt, pid-tune, trap-triangle, rrt-300) are met by driving the
 // pages and stay done after a reload; a goal the page's link alone meets is not recorded until
-// the learner changes the page; bsv_progress.json exported and imported back round-trips.
+// the learner changes the page; bsv_progress.json exported and imported back round-trips; the
+// home page shows each page's progress.
 // Pages load in parallel (one context each) to keep the file under about a minute.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -250,6 +251,34 @@ test('bsv_progress.json exported with the learner\'s name and imported back roun
     // Another program's file is named with its problem; nothing changes.
     await page.locator('[data-action="progress-import"]').setInputFiles({ name: 'lesson.json', mimeType: 'application/json', buffer: Buffer.from('{"format": "bsv-lesson", "version": 2}') });
     await page.waitForFunction(() => /lesson\.json: .*not a BSV progress file/.test(document.querySelector('[data-testid="progress-status"]').textContent));
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('the home page shows each page\'s progress, on its tiles and in a list at its foot', async () => {
+  const record = {
+    format: 'bsv-progress', version: 1, build: 'test',
+    exercises: ['trap-triangle', 'trap-accel-end', 'trap-total-time', 'trap-short-peak', 'pid-tune']
+      .map((id) => ({ id, attempts: 1, firstTryRight: true, done: true })),
+  };
+  const { page, errors, close } = await openApp(server.url, '#/?lang=ja', { viewport: { width: 412, height: 823 }, storage: { 'bsv.progress': JSON.stringify(record) } });
+  try {
+    const list = page.locator('[data-testid="home-progress"]');
+    await list.waitFor({ timeout: 20000 });
+    const counts = Object.fromEntries(await list.locator('li[data-page]').evaluateAll((items) => items.map((li) => [li.dataset.page, li.querySelector('.count').textContent])));
+    assert.equal(Object.keys(counts).length, Object.keys(PAGES).length);
+    assert.equal(counts['trapezoid-profile'], '4 / 4');
+    assert.equal(counts['pid-step'], '1 / 4');
+    assert.equal(counts['ik-2r'], '0 / 4');
+    assert.equal(await page.locator('[data-testid="featured-pid-step"] .featured-progress').innerText(), '1 / 4');
+    assert.equal(await page.locator('[data-testid="featured-ik-2r"] .featured-progress').isVisible(), false);
+    assert.ok(await list.locator('[data-download="bsv_progress.json"]').isVisible());
+    assert.ok((await list.innerText()).includes('あなたの演習'));
+    await list.scrollIntoViewIfNeeded();
+    await page.screenshot({ path: join(OUT, 'exercises-home-ja-412.png') });
+    assert.deepEqual(await violations(page, 'home'), []);
     assert.deepEqual(errors, []);
   } finally {
     await close();

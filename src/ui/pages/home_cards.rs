@@ -5,13 +5,15 @@
 //! `bsv` and `python` command lines; links to run it in the browser), then the seed's "Compare
 //! the tools" table with the official links (outbound only). Drawing the pictures runs every
 //! recipe's kernel, so this part is a wasm chunk of its own, fetched once the arm is live
-//! (`home.rs`). Everything about a recipe (labels, defaults, limits, the live page that pairs
+//! (`home.rs`), and the learner's progress on the exercises at the foot (`home_progress`).
+//! Everything about a recipe (labels, defaults, limits, the live page that pairs
 //! with it) comes from its facts (`RecipeInfo`, `ArgSpec`).
 
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
 use super::home_picture;
+use super::home_progress::{self, Keep};
 use crate::args::ArgSpec;
 use crate::recipes::{RecipeInfo, RECIPES};
 use crate::ui::command_line::shell_word;
@@ -20,8 +22,9 @@ use crate::ui::dom::{append, el, el_class, el_i18n, el_text};
 use crate::ui::page::{PageDef, ShellLink};
 use crate::ui::router::{self, HOME_ID};
 
-/// Builds the tiles, the recipe cards and the tools table into `root` and draws the pictures.
-pub fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
+/// Builds the tiles, the recipe cards and the tools table into `root` and draws the pictures;
+/// then the learner's progress comes at the foot (`home_progress`), held by `keep`.
+pub fn build(root: &Element, shell: ShellLink, keep: &Keep) -> Result<(), JsValue> {
     let tiles = el_class("ul", "tile-grid")?;
     tiles.set_attribute("data-testid", "home-tiles")?;
     crate::ui::dom::set_i18n_attrs(&tiles, &[("aria-label", "home-tiles-label")])?;
@@ -50,7 +53,9 @@ pub fn build(root: &Element, shell: ShellLink) -> Result<(), JsValue> {
     append(&recipes, &grid)?;
     append(root, &recipes)?;
     append(root, &tools_section()?)?;
-    home_picture::draw_all(root)
+    home_picture::draw_all(root)?;
+    home_progress::build(root, shell, keep);
+    Ok(())
 }
 
 /// The seed's "Compare the tools" table: each tool's key (its Fluent ids are

@@ -15,6 +15,7 @@ mod home;
 mod home_arm;
 mod home_cards;
 mod home_picture;
+mod home_progress;
 mod ik2r;
 mod lesson;
 mod pendulum;
