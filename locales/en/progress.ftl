@@ -71,3 +71,39 @@ home-progress-heading = Your exercises
 home-progress-intro = Each drill page ends with exercises: predict, then check against the page's own numbers. Your progress stays in this browser; export it for your teacher, or import it on another device.
 home-progress-page = { $done } / { $total }
 home-progress-page-label = { $page }: { $done } of { $total } exercises done
+
+## The class page (#/class)
+class-title = Class progress
+class-lede = Open your learners' bsv_progress.json files, as many as you like at once, or drop them here: a table of who has done what, and each exercise's success rate. Nothing leaves this browser.
+class-files-label = Progress files
+class-pick = Open progress files
+class-clear = Clear
+class-drop = Drop progress files here
+class-empty = No progress file opened yet.
+class-counts = { $learners ->
+    [one] One learner
+   *[other] { $learners } learners
+}, { $files ->
+    [one] one file left out
+    [0] no file left out
+   *[other] { $files } files left out
+}.
+class-rejected-heading = Files left out
+class-table-heading = Learners by exercise
+class-table-caption = ✓ right at the first try, ◐ right later, · not yet.
+class-learner = Learner
+class-file = File
+class-standing-first-try = right at the first try
+class-standing-later = right later
+class-standing-not-yet = not yet
+class-unknown-ids = { $count ->
+    [one] one more exercise
+   *[other] { $count } more exercises
+} of a newer version
+class-rates-heading = Exercises, hardest first
+class-rate-exercise = Exercise
+class-rate-page = Page
+class-rate-success = Done
+class-rate-first-try = Right at the first try
+class-rate-value = { $rate } %
+class-download = Download the summary (CSV)

@@ -31,6 +31,7 @@ drills-title = すべてのドリル
 drills-blurb = 12 のドリルのどれでも、好きな値で実行し、Python のレシピと同じ CSV ファイルをダウンロードできます。
 lesson-title = レッスン
 lesson-blurb = ページの状態を並べてレッスンを作り、プレゼンター用リモコンで発表します。
+class-nav = クラス
 
 ## ページの区画（`data-section`）の名前：レッスンのステップが画面に出せるもの。
 section-arm = アームのビュー

@@ -4,7 +4,8 @@
 // (ik-singular, pendulum-euler-dt, pid-tune, trap-triangle, rrt-300) are met by driving the
 // pages and stay done after a reload; a goal the page's link alone meets is not recorded until
 // the learner changes the page; bsv_progress.json exported and imported back round-trips; the
-// home page shows each page's progress.
+// home page shows each page's progress; #/class with three learners' files and a broken one
+// shows three rows and names the broken file.
 // Pages load in parallel (one context each) to keep the file under about a minute.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -284,3 +285,44 @@ test('the home page shows each page\'s progress, on its tiles and in a list at i
     await close();
   }
 });
+
+/** A learner's progress file. */
+const progressFile = (name, learner, exercises) => ({
+  name, mimeType: 'application/json',
+  buffer: Buffer.from(JSON.stringify({ format: 'bsv-progress', version: 1, learner, build: 'test', exercises })),
+});
+
+for (const lang of ['en', 'ja']) {
+  test(`#/class: three learners' files and a broken one give three rows and name the broken file (${lang})`, async () => {
+    const { page, errors, close } = await openApp(server.url, `#/class?lang=${lang}`, { viewport: { width: 1280, height: 800 } });
+    try {
+      await page.locator('[data-field="class-files"]').setInputFiles([
+        progressFile('aiko.json', 'Aiko', [{ id: 'pid-tune', attempts: 1, firstTryRight: true, done: true }]),
+        progressFile('ken.json', 'Ken', [{ id: 'pid-tune', attempts: 2, firstTryRight: false, done: true }, { id: 'rrt-300', attempts: 1, firstTryRight: true, done: true }]),
+        progressFile('sato.json', 'Sato', []),
+        { name: 'broken.json', mimeType: 'application/json', buffer: Buffer.from('{"format": "bsv-progress",\n  "version": 1,,\n}') },
+      ]);
+      const table = page.locator('[data-testid="class-table"]');
+      await table.waitFor();
+      const learners = await table.locator('tbody tr').evaluateAll((rows) => rows.map((r) => r.dataset.learner));
+      assert.deepEqual(learners, ['Aiko', 'Ken', 'Sato']);
+      const rejected = await page.locator('[data-testid="class-rejected"] li').allInnerTexts();
+      assert.equal(rejected.length, 1);
+      assert.match(rejected[0], lang === 'en' ? /^broken\.json: .*line 2, column 16/ : /^broken\.json：.*2 行目、16 文字目/);
+      // The hardest first: pid-tune (done by two of three) is the last column.
+      const columns = await table.locator('thead th[data-exercise]').evaluateAll((ths) => ths.map((t) => t.dataset.exercise));
+      assert.equal(columns.at(-1), 'pid-tune');
+      assert.equal(await table.locator('tr[data-learner="Ken"] td[data-exercise="pid-tune"]').getAttribute('data-standing'), 'later');
+      const [download] = await Promise.all([page.waitForEvent('download'), page.click('[data-download="class_summary.csv"]')]);
+      assert.equal(download.suggestedFilename(), 'class_summary.csv');
+      const csv = readFileSync(await download.path(), 'utf8').trim().split('\r\n');
+      assert.equal(csv.filter((l) => l.startsWith('learner,')).length, 3);
+      assert.match(csv.at(-1), /^success_rate,,,.*,66\.7$/);
+      await page.screenshot({ path: join(OUT, `exercises-class-${lang}-1280.png`), fullPage: true });
+      assert.deepEqual(await violations(page, 'class'), []);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  });
+}
