@@ -92,7 +92,7 @@ test('every page with exercises lists them, with their state, in its own section
   await Promise.all([one('en'), one('ja')]);
 });
 
-for (const [lang, route, id] of [['en', 'pid-step', 'pid-final-y'], ['ja', 'pendulum-energy', 'pendulum-euler-dt']]) {
+for (const [lang, route, id, readout] of [['en', 'pid-step', 'pid-final-y', 'final-y'], ['ja', 'pendulum-energy', 'pendulum-euler-dt', 'drift']]) {
   test(`a bad number is refused beside its field; a far-off prediction is wrong, then the hint shows (${lang})`, async () => {
     const { page, errors, close } = await openWithExercises(`#/${route}?lang=${lang}`, { viewport: { width: 412, height: 823 } });
     try {
@@ -112,12 +112,17 @@ for (const [lang, route, id] of [['en', 'pid-step', 'pid-final-y'], ['ja', 'pend
       await commit.click();
       await waitState(page, id, 'wrong');
       assert.ok(await hint.isVisible(), 'the hint shows after a wrong try');
+      // The readout that shows the answer is blurred while the learner predicts.
+      const answer = page.locator(`[data-readout="${readout}"]`).first();
+      assert.equal(await answer.getAttribute('data-ex-hidden'), '');
+      assert.equal(await answer.getAttribute('aria-hidden'), 'true');
       assert.match(await card(page, id).locator('[data-part="verdict"]').innerText(), lang === 'en' ? /too high/ : /大きすぎます/);
       // The second wrong try reveals the answer and its explanation.
       await field.fill('-1e9');
       await commit.click();
       await waitState(page, id, 'revealed');
       assert.ok(await card(page, id).locator('[data-part="explain"]').isVisible());
+      assert.equal(await answer.getAttribute('data-ex-hidden'), null, 'shown again with the answer');
       const record = await stored(page);
       assert.deepEqual(record.exercises.find((e) => e.id === id), { id, attempts: 2, firstTryRight: false, done: false });
       await page.screenshot({ path: join(OUT, `exercises-wrong-${lang}-412.png`) });

@@ -15,9 +15,12 @@
 //! since the list came, or its address changed from the one it opened with (a change made
 //! before the list came).
 //!
-//! The list's strings ([`FILES`]) and style ([`STYLES`]) come with it, before it is drawn.
+//! While the learner predicts, the page's readouts that show the answer are blurred (the
+//! `hidden` module). The list's strings ([`FILES`]) and style ([`STYLES`]) come with it,
+//! before it is drawn.
 
 mod card;
+mod hidden;
 
 use std::cell::{Cell, RefCell};
 use std::rc::{Rc, Weak};
@@ -61,6 +64,8 @@ struct List {
     check: Timer,
     /// Whether the learner has used the page since the list came.
     used: Cell<bool>,
+    /// The card whose prediction field has focus (its answer's readouts are blurred).
+    aiming: Cell<Option<usize>>,
     /// When the goals were last checked during a drag, ms.
     live_at: Cell<f64>,
     listeners: RefCell<Vec<Listener>>,
@@ -86,6 +91,7 @@ fn mount(link: Rc<PageLink>) -> Result<Box<dyn ExerciseList>, JsValue> {
         panel: RefCell::new(None),
         check: Timer::default(),
         used: Cell::new(false),
+        aiming: Cell::new(None),
         live_at: Cell::new(0.0),
         listeners: RefCell::new(Vec::new()),
         follow: RefCell::new(None),
@@ -203,6 +209,24 @@ impl List {
                 list.typed(i);
             }
         })?);
+        for (kind, entering) in [("focusin", true), ("focusout", false)] {
+            listeners.push(Listener::for_page(
+                section,
+                kind,
+                me,
+                move |list, event| {
+                    let on_field = event
+                        .target()
+                        .and_then(|t| t.dyn_into::<Element>().ok())
+                        .is_some_and(|e| e.has_attribute("data-field"));
+                    if on_field {
+                        list.aiming
+                            .set(entering.then(|| list.card_of(event.target())).flatten());
+                        list.hide_answers();
+                    }
+                },
+            )?);
+        }
         let root = self.link.root.clone();
         for kind in ["input", "change", "pointerup", "click"] {
             listeners.push(Listener::capture_for_page(
@@ -477,6 +501,25 @@ impl List {
         if let Some(card) = self.cards.borrow().get(i) {
             card.draw();
         }
+        self.hide_answers();
+    }
+
+    /// Blurs the readouts that show the answer of a prediction being made (its field in use,
+    /// or typed in, or a wrong try), and only those.
+    fn hide_answers(&self) {
+        let cards = self.cards.borrow();
+        let keys: Vec<&str> = cards
+            .iter()
+            .enumerate()
+            .filter(|(i, c)| {
+                let aiming = self.aiming.get() == Some(*i) && c.state.takes_answer();
+                aiming || matches!(c.state.phase, Phase::Predicting | Phase::Wrong)
+            })
+            .flat_map(|(_, c)| hidden::answer_readouts(c.exercise.id).iter().copied())
+            .collect();
+        if let Err(error) = hidden::hide_only(&self.link.root, &self.link.section, &keys) {
+            web_sys::console::error_2(&"BSV Playground: exercises".into(), &error);
+        }
     }
 
     fn draw_lede(&self) {
@@ -503,5 +546,6 @@ impl List {
             card.draw();
         }
         self.draw_lede();
+        self.hide_answers();
     }
 }
