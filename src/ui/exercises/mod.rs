@@ -1,7 +1,7 @@
 //! A page's exercises list: the `exercises` wasm chunk its section
-//! ([`crate::ui::kit::exercise_slot`]) fetches. One card per exercise of the page
-//! ([`of_page`], drawn by its `card` module), the page's progress, and the progress file's panel
-//! ([`ProgressPanel`]).
+//! ([`crate::ui::kit::exercise_slot`]) fetches. One card per exercise the page lends
+//! ([`PageLink::exercises`], drawn by its `card` module), the page's progress, and the progress
+//! file's panel ([`ProgressPanel`]).
 //!
 //! Every verdict is the kernel's ([`Exercise::check`] on the model the page lends), never a
 //! reading of the page's text. A prediction's answer is read with
@@ -40,7 +40,7 @@ use crate::ui::kit::progress_store;
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, lang_files, router};
 use crate::view::exercise_state::{Committed, ExerciseState, Phase};
-use crate::view::exercises::{of_page, Answer, CheckError, Exercise, Kind, Verdict};
+use crate::view::exercises::{Answer, CheckError, Exercise, Kind, Verdict};
 use crate::view::prediction_text::parse_prediction;
 
 /// What the chunk hands the page's slot.
@@ -138,7 +138,10 @@ impl List {
             dom::show(&status, false);
         }
         let record = progress_store::load();
-        let cards = of_page(self.link.page)
+        let cards = self
+            .link
+            .exercises
+            .iter()
             .map(|e| Card::new(e, record.get(e.id)))
             .collect::<Result<Vec<_>, _>>()?;
         dom::append(section, &self.lede)?;

@@ -1,22 +1,23 @@
 //! What a page and its exercises list share ([`crate::ui::kit::exercise_slot`] builds the
-//! page's side, the exercises' chunk [`crate::ui::exercises`] the list's): the page's route
-//! id, its section, a loan of its model, and the list's answer to the page's changes.
+//! page's side, the exercises' chunk [`crate::ui::exercises`] the list's): the page's
+//! exercises, its section, a loan of its model, and the list's answer to the page's changes.
 //!
-//! The checks are the list's (its chunk holds the catalog), not the page's: a page's first
-//! load carries none of them (the IK page's would bring the accurate `sin` and `atan2` its
-//! first stage does without).
+//! The page hands over its own exercises (`crate::view::exercises::<page>::EXERCISES`), not
+//! the catalog: their checks, and the kernels they run, are the page's, in its chunk beside
+//! its own use of those kernels, and the list's chunk holds no kernel (with the catalog, a
+//! list on one page would fetch every page's kernels).
 
 use web_sys::Element;
 
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{Exercise, PageModel};
 
 /// Lends the page's model to `use_model` (nothing once the page is gone).
 pub type WithModel = Box<dyn Fn(&mut dyn FnMut(&PageModel))>;
 
 /// A page's side of its exercises list.
 pub struct PageLink {
-    /// The page's route id (its exercises are [`crate::view::exercises::of_page`]).
-    pub page: &'static str,
+    /// The page's exercises, in the order it lists them.
+    pub exercises: &'static [Exercise],
     /// The page's element the list listens to for the learner's input (`<main>`).
     pub root: Element,
     /// The section (`data-section="exercises"`); the list fills it after its heading.

@@ -1,10 +1,10 @@
 //! A page's exercises section as the page builds it: a heading (`data-section="exercises"`,
 //! `data-testid="exercises"`) that costs the page's first load next to nothing. The list
-//! itself ([`crate::ui::exercises`]: its cards and checks, the progress, their strings and
-//! style) is a wasm chunk of its own, fetched when the section comes within 400 px of the
+//! itself ([`crate::ui::exercises`]: its cards, the progress, their strings and style) is a
+//! wasm chunk of its own, fetched when the section comes within 400 px of the
 //! viewport (an `IntersectionObserver`); if the chunk cannot be fetched the section says so,
-//! and asks again when it next comes into view. The page lends the list its model
-//! ([`PageLink`]) and owns the slot: dropping the page drops the list and its listeners.
+//! and asks again when it next comes into view. The page lends the list its exercises and
+//! model ([`PageLink`]) and owns the slot: dropping the page drops the list and its listeners.
 //!
 //! Every call here is made without a `Result` chain and the observer is made and driven
 //! through `Reflect` (as [`crate::ui::kit::input_file`] reads files): this code is in every
@@ -21,6 +21,7 @@ use web_sys::Element;
 use crate::ui::dom;
 use crate::ui::kit::exercise_link::{ExerciseList, ListChunk, PageLink, WithModel};
 use crate::ui::page::SplitLoaderError;
+use crate::view::exercises::Exercise;
 
 /// The section: its heading, then the line that says the list could not be loaded.
 const MARKUP: &str = "<section class=\"exercises\" data-testid=\"exercises\" \
@@ -44,11 +45,11 @@ struct Slot {
 pub struct ExerciseSlot(Rc<Slot>);
 
 impl ExerciseSlot {
-    /// The exercises section of page `page`, last in the page's outer element under `root`
+    /// The section of `exercises` (a page's), last in the page's outer element under `root`
     /// (`<main>`), the list lent the page's model by `with_model` (see [`WithModel`]).
     pub fn new(
         root: &Element,
-        page: &'static str,
+        exercises: &'static [Exercise],
         with_model: WithModel,
     ) -> Result<ExerciseSlot, JsValue> {
         let outer = root.first_element_child().unwrap_or_else(|| root.clone());
@@ -59,7 +60,7 @@ impl ExerciseSlot {
         dom::relocalize(&section)?;
         let slot = Rc::new(Slot {
             link: Rc::new(PageLink {
-                page,
+                exercises,
                 root: root.clone(),
                 section,
                 with_model,

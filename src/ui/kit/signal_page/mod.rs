@@ -43,7 +43,7 @@ use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{Exercise, PageModel};
 use crate::view::signal::sig;
 pub use crate::view::signal::ColumnsThin;
 pub use crate::view::signal::SignalRow;
@@ -111,7 +111,8 @@ pub trait SignalPage: Sized + 'static {
     fn action(&self, _kit: &Kit<Self>, _action: &str) -> Option<Self::Params> {
         None
     }
-    /// The model the page's exercises check ([`crate::view::exercises`]).
+    /// The page's exercises ([`crate::view::exercises`]) and the model they check.
+    const EXERCISES: &'static [Exercise];
     fn exercise_model(params: &Self::Params) -> PageModel<'_>;
     /// Where the cursor stands before any hover: mid-run.
     fn cursor_start(_params: &Self::Params, rows: &[Self::Row]) -> f64 {
@@ -593,10 +594,9 @@ impl<S: SignalPage> Page for Signal<S> {
             live.run(params, rows, RunFrom::Mount);
         }
         let me = Rc::downgrade(&live);
-        let page = S::SPEC.info.page.unwrap_or("");
         let exercises = ExerciseSlot::new(
             &live.kit.root,
-            page,
+            S::EXERCISES,
             Box::new(move |use_model| {
                 if let Some(live) = me.upgrade() {
                     use_model(&S::exercise_model(&live.kit.run().params));

@@ -41,7 +41,7 @@ use crate::view::dh_fk::{
     cell, csv_rows, draw_frames, set_joint_text, DrawFrame, PageQuery, RowWalk, OWN_KEYS,
     WALK_STEPS,
 };
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{self, PageModel};
 use crate::view::scene3d::AxisPalette;
 use markup::P;
 
@@ -171,7 +171,7 @@ impl Page for DhPage {
         let me = Rc::downgrade(&inner);
         let exercises = ExerciseSlot::new(
             &exercises_root,
-            "dh-fk",
+            &exercises::dh_fk::EXERCISES,
             Box::new(move |use_model| {
                 if let Some(inner) = me.upgrade() {
                     use_model(&PageModel::DhFk(&inner.posed.borrow().params));

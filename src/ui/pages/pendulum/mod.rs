@@ -37,7 +37,7 @@ use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{self, PageModel};
 use crate::view::pendulum::{cli_args, other, PageQuery, Track};
 
 /// Speeds, multiples of real time.
@@ -251,7 +251,7 @@ impl Page for PendulumPage {
         let me = Rc::downgrade(&inner);
         let exercises = ExerciseSlot::new(
             &exercises_root,
-            "pendulum-energy",
+            &exercises::pendulum::EXERCISES,
             Box::new(move |use_model| {
                 if let Some(inner) = me.upgrade() {
                     use_model(&PageModel::Pendulum(&inner.sim.borrow().params));

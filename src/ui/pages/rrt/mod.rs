@@ -42,7 +42,7 @@ use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{self, PageModel};
 use crate::view::rrt::{
     add_box, delete_box, drag, hit_test, phases, Grab, PageState, Phase, Refusal, IT_KEY,
 };
@@ -216,7 +216,7 @@ impl Page for RrtPage {
         let me = Rc::downgrade(&inner);
         let exercises = ExerciseSlot::new(
             &exercises_root,
-            "rrt-2d",
+            &exercises::rrt::EXERCISES,
             Box::new(move |use_model| {
                 if let Some(inner) = me.upgrade() {
                     if let Ok(setup) = inner.state.borrow().setup() {

@@ -44,7 +44,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{self, PageModel};
 use crate::view::se3_relative::{
     dragged_origin, hit_gizmo, position_texts, ring_radius, scene_frame, solve, wrap_angle, yaw_at,
     yaw_text, AngleUnit, Grab, PoseFields, Solved, VIEW_KEY,
@@ -172,7 +172,7 @@ impl Page for Se3Page {
         let me = Rc::downgrade(&inner);
         let exercises = ExerciseSlot::new(
             &exercises_root,
-            "se3-relative",
+            &exercises::se3_relative::EXERCISES,
             Box::new(move |use_model| {
                 if let Some(inner) = me.upgrade() {
                     use_model(&PageModel::Se3(&inner.poses.borrow().params()));

@@ -53,7 +53,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{self, PageModel};
 use crate::view::so101::{apply_settings, drag_axes, settings_texts, Handle, SETTING_KEYS};
 use crate::view::teleop_input::{Accumulator, GAMEPAD_DEAD_ZONE};
 use glam::DVec3;
@@ -314,7 +314,7 @@ impl Inner {
         let me = inner.me.clone();
         let exercises = ExerciseSlot::new(
             &root,
-            "so101",
+            &exercises::so101::EXERCISES,
             Box::new(move |use_model| {
                 if let Some(p) = me.upgrade() {
                     let q = p.practice.borrow().recorder.sim().state().q;

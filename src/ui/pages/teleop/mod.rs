@@ -53,7 +53,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{self, PageModel};
 use crate::view::teleop_input::{key_action, KeyAction};
 
 use controls::{Controls, Ended};
@@ -230,7 +230,7 @@ impl Inner {
         let me = inner.me.clone();
         let exercises = ExerciseSlot::new(
             &root,
-            "teleop",
+            &exercises::teleop::EXERCISES,
             Box::new(move |use_model| {
                 if let Some(p) = me.upgrade() {
                     let live = p.live.borrow();

@@ -46,7 +46,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{after_paint, now_ms, Timer};
 use crate::view::command_line::RunArgs;
 use crate::view::envelope::{csv_envelope, Envelope, BUCKETS};
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{self, PageModel};
 use crate::view::form::{recipe_fields, runs_while_typing, validate};
 use crate::view::traj_resample::{file_too_large, readings, PageQuery};
 use markup::PREFIX;
@@ -229,7 +229,7 @@ impl Page for TrajResample {
         let me = Rc::downgrade(&inner);
         let exercises = ExerciseSlot::new(
             &exercises_root,
-            "traj-resample",
+            &exercises::traj_resample::EXERCISES,
             Box::new(move |use_model| {
                 if let Some(inner) = me.upgrade() {
                     if let Some((trajectory, dt)) = inner.exercise_model() {

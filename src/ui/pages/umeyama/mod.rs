@@ -52,7 +52,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::drag::HandleShape;
-use crate::view::exercises::PageModel;
+use crate::view::exercises::{self, PageModel};
 use crate::view::signal::{sig, Slider};
 use crate::view::umeyama_2d::{
     add_point, editable, hit_test, key_step_target, move_point, new_point_spot, next_selection,
@@ -268,7 +268,7 @@ impl Page for UmeyamaPage {
         let me = Rc::downgrade(&inner);
         let exercises = ExerciseSlot::new(
             &exercises_root,
-            "umeyama-2d",
+            &exercises::umeyama_2d::EXERCISES,
             Box::new(move |use_model| {
                 if let Some(inner) = me.upgrade() {
                     use_model(&PageModel::Umeyama(&inner.scene.borrow().setup));
