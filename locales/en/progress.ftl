@@ -71,6 +71,7 @@ home-progress-heading = Your exercises
 home-progress-intro = Each drill page ends with exercises: predict, then check against the page's own numbers. Your progress stays in this browser; export it for your teacher, or import it on another device.
 home-progress-page = { $done } / { $total }
 home-progress-page-label = { $page }: { $done } of { $total } exercises done
+home-progress-class = Teachers: open your class's progress files on the class page →
 
 ## The class page (#/class)
 class-title = Class progress

@@ -65,6 +65,7 @@ home-progress-heading = あなたの演習
 home-progress-intro = どのドリルのページも最後に演習があります。まず予想し、ページ自身の数値で確かめましょう。進み具合はこのブラウザーに保存されます。先生に出すときは書き出し、別の端末では読み込んでください。
 home-progress-page = { $done } / { $total }
 home-progress-page-label = { $page }：{ $total } 問中 { $done } 問完了
+home-progress-class = 先生へ：クラスの進み具合のファイルは「クラス」のページでまとめて開けます →
 
 ## クラスのページ（#/class）
 class-title = クラスの進み具合

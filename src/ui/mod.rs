@@ -69,9 +69,10 @@ pub async fn start_app() -> Result<(), JsValue> {
     Ok(())
 }
 
-/// The page table, in navigation order: `[{ id, group }]`, `group` being the Drills menu's
-/// group (`"kinematics"`, `"dynamics"`, `"trajectories"`, `"planning"`) or `null` for a
-/// top-level link. The browser tests check the navigation and the drill chain against it.
+/// The page table, in navigation order: `[{ id, group, tool }]`, `group` being the Drills
+/// menu's group (`"kinematics"`, `"dynamics"`, `"trajectories"`, `"planning"`) or `null` for a
+/// top-level link, `tool` whether it is a tool page with no link in the header. The browser
+/// tests check the navigation and the drill chain against it.
 #[wasm_bindgen(js_name = pageTable)]
 pub fn page_table() -> Result<js_sys::Array, JsValue> {
     let table = js_sys::Array::new();
@@ -80,6 +81,8 @@ pub fn page_table() -> Result<js_sys::Array, JsValue> {
         js_sys::Reflect::set(&entry, &"id".into(), &def.id.into())?;
         let group = def.nav.group().map_or(JsValue::NULL, JsValue::from);
         js_sys::Reflect::set(&entry, &"group".into(), &group)?;
+        let tool = def.nav == page::Nav::Tool;
+        js_sys::Reflect::set(&entry, &"tool".into(), &tool.into())?;
         table.push(&entry);
     }
     Ok(table)

@@ -1,7 +1,8 @@
 //! The home page's progress on the exercises, at its foot: each page's count of exercises done
 //! (`data-testid="home-progress"`, a row per page with `data-page`), the same count on the
-//! tiles of pages where the learner has done some, and the progress file's panel (name,
-//! export, import: [`ProgressPanel`]). It comes with the tiles' chunk, once its strings
+//! tiles of pages where the learner has done some, the progress file's panel (name, export,
+//! import: [`ProgressPanel`]) and, for teachers, the link to the class page (which has no
+//! link in the header). It comes with the tiles' chunk, once its strings
 //! (`progress.ftl`) and style are in: below everything, so nothing moves when it comes.
 
 use std::rc::{Rc, Weak};
@@ -66,6 +67,12 @@ impl HomeProgress {
         append(&section, &intro)?;
         let list = el_class("ul", "home-progress-list")?;
         append(&section, &list)?;
+        let class = el_class("p", "home-progress-class")?;
+        let link = el("a")?;
+        link.set_attribute("href", &router::build_hash("class", &[]))?;
+        link.set_attribute("data-l10n", "home-progress-class")?;
+        append(&class, &link)?;
+        append(&section, &class)?;
         let me = std::cell::RefCell::new(Weak::<HomeProgress>::new());
         let me = Rc::new(me);
         let imported = me.clone();

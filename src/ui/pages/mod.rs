@@ -66,5 +66,5 @@ pub const PAGES: &[PageDef] = &[
     page!(so101_page, so101::So101Page, "so101", "so101-nav", SO101_HEAD, Nav::Top, ["so101.ftl", "teleop.ftl"]),
     page!(drills_page, drills::DrillsPage, DRILLS_ID, "drills-title", DRILLS_HEAD, Nav::Top, ["drills.ftl", "traj.ftl", "recipes.ftl"]),
     page!(lesson_page, lesson::LessonPage, "lesson", "lesson-title", LESSON_HEAD, Nav::Top, ["lesson.ftl", "recipes.ftl"]),
-    page!(class_page, class::ClassPage, "class", "class-nav", CLASS_HEAD, Nav::Top, ["progress.ftl"]),
+    page!(class_page, class::ClassPage, "class", "class-nav", CLASS_HEAD, Nav::Tool, ["progress.ftl"]),
 ];
