@@ -32,6 +32,10 @@ if [[ "$profile" == --release ]]; then
 else
   cargo_profile=(); built=debug
 fi
+# The build a learner's progress file names (`build`, src/ui/kit/progress_store.rs): the
+# version and the commit it was built from.
+version=$(sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -n 1)
+export BSV_BUILD="bsv-playground $version+$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)"
 # Its own target dir: the relocation flag would otherwise rebuild the checks' artifacts.
 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-Clink-args=--emit-relocs" \
   cargo build --lib --target wasm32-unknown-unknown --no-default-features --locked \

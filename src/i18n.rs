@@ -95,6 +95,8 @@ pub const EN_FILES: &[(&str, &str)] = &[
     ("umeyama.ftl", include_str!("../locales/en/umeyama.ftl")),
     ("teleop.ftl", include_str!("../locales/en/teleop.ftl")),
     ("so101.ftl", include_str!("../locales/en/so101.ftl")),
+    ("exercises.ftl", include_str!("../locales/en/exercises.ftl")),
+    ("progress.ftl", include_str!("../locales/en/progress.ftl")),
 ];
 
 /// The Fluent files of Japanese: file name, text.
@@ -118,6 +120,8 @@ pub const JA_FILES: &[(&str, &str)] = &[
     ("umeyama.ftl", include_str!("../locales/ja/umeyama.ftl")),
     ("teleop.ftl", include_str!("../locales/ja/teleop.ftl")),
     ("so101.ftl", include_str!("../locales/ja/so101.ftl")),
+    ("exercises.ftl", include_str!("../locales/ja/exercises.ftl")),
+    ("progress.ftl", include_str!("../locales/ja/progress.ftl")),
 ];
 
 /// The name of every Fluent file (each language has the same files).
@@ -140,6 +144,8 @@ pub const FILE_NAMES: &[&str] = &[
     "umeyama.ftl",
     "teleop.ftl",
     "so101.ftl",
+    "exercises.ftl",
+    "progress.ftl",
 ];
 
 /// The kernels' errors and warnings in both languages (what the Web Worker formats).

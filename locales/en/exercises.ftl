@@ -1,6 +1,8 @@
 # Exercises (src/view/exercises): ex-<id>-prompt, -hint, -explain; a choice exercise also has
 # ex-<id>-choice-<n> and ex-<id>-why-<n> (n from 1). A prediction's explanation gets $truth,
-# the kernel's value with its unit. The learner's progress file and the class summary follow.
+# the kernel's value with its unit. Then the words of a page's exercises section
+# (src/ui/exercises). Loaded with the section's code, in no page's first load; the progress
+# file's and the class page's strings are in progress.ftl.
 
 ## #/ik-2r
 ex-ik-singular-prompt = Goal: put the arm in a pose whose manipulability w is below 0.001 m², with the tip inside the workspace (not on its edge).
@@ -249,49 +251,39 @@ ex-so101-five-joints-why-2 = Right: the 6×5 Jacobian has rank five at most.
 ex-so101-five-joints-choice-3 = It has a joint to spare (it is redundant)
 ex-so101-five-joints-why-3 = A redundant arm has more joints than the task has numbers; this one has fewer.
 
-## The learner's progress file (bsv_progress.json)
-progress-error-not-text = This file could not be read as progress: { $detail }
-progress-error-too-big = This file is { $size } ({ $bytes } bytes); a progress file may be at most { $limit }. It was not read.
-progress-error-empty-file = This file is empty.
-progress-error-too-deep = This file nests lists or objects more than { $max } deep (line { $line }, column { $column }); a progress file nests 3 deep.
-progress-error-not-json = This file is not JSON: the text stops making sense at line { $line }, column { $column }.
-progress-error-not-an-object = This JSON file holds { $kind ->
-    [array] a list
-    [text] a piece of text
-    [number] a number
-    [boolean] true or false
-    *[other] null
-}, not a progress record.
-progress-error-no-format = This JSON file is not a BSV progress file: it has no “format” field (a progress file says "format": "bsv-progress").
-progress-error-format = This file is not a BSV progress file (format “{ $found }”, expected “bsv-progress”).
-progress-error-version = This progress file was written by another version (version { $found }; this app reads version { $version }).
-progress-error-unknown-field = The progress file has a field this app does not know: “{ $field }”.
-progress-error-exercise-unknown-field = Exercise { $exercise } has a field this app does not know: “{ $field }”.
-progress-error-missing-field = The progress file has no “{ $field }” field.
-progress-error-exercise-missing-field = Exercise { $exercise } has no “{ $field }” field.
-progress-error-wrong-type = The progress file's field “{ $field }” must be { $expected ->
-    [text] text
-    [number] a whole number
-    [boolean] true or false
-    *[list] a list of exercises
-}.
-progress-error-exercise-wrong-type = Exercise { $exercise }, field “{ $field }”: must be { $expected ->
-    [text] text
-    [number] a whole number
-    [boolean] true or false
-    *[list] a list
-}.
-progress-error-exercise-not-an-object = Exercise { $exercise } is not an object with an id and its attempts.
-progress-error-too-many-exercises = A progress file holds at most { $max } exercises; this one has { $count }.
-progress-error-bad-id = Exercise { $exercise }: “{ $id }” is not an exercise id.
-progress-error-duplicate-id = The exercise “{ $id }” appears twice.
-progress-error-attempts = Exercise { $exercise }: more attempts than this app counts.
-progress-error-inconsistent = The exercise “{ $id }” does not add up: done needs an attempt, and right at the first try needs done.
-progress-error-name-too-long = A learner's name may be at most { $max } characters.
-progress-error-build-too-long = The field “build” is longer than { $max } characters.
-
-## The class summary (#/class)
-class-duplicate = A second file of { $learner } (the first is { $first }) { $same ->
-    [same] with the same progress: left out.
-    *[different] with different progress: left out; the first file's progress is shown.
-}
+## A page's exercises section (src/ui/exercises)
+exercises-lede = Predict first, then check: the page's own kernel judges every answer. { $done } of { $total } done.
+exercise-kind-predict = Predict
+exercise-kind-goal = Goal
+exercise-kind-choose = Choose
+exercise-state-open = To do
+exercise-state-predicting = Predicting
+exercise-state-wrong = One more try
+exercise-state-right = Right
+exercise-state-revealed = Answer shown
+exercise-state-done = Done
+exercise-prediction-label = Your prediction
+exercise-commit = Check
+exercise-hint = Hint
+exercise-reveal = Show the answer
+exercise-again = Try again
+exercise-prediction-empty = Type a number first.
+exercise-prediction-comma = Write decimals with a point (0.5), without commas.
+exercise-prediction-not-a-number = This is not a number: type one such as 0.25, −3 or 1e-3.
+exercise-verdict-wrong = Your { $value } is too { $direction ->
+    [high] high
+   *[low] low
+}: not within { $tolerance } of the page's value. Read the hint, then try once more.
+exercise-verdict-right = Right: your { $value } against the page's { $truth } (within { $tolerance }).
+exercise-verdict-revealed = The page's value is { $truth }; your { $value } is not within { $tolerance } of it.
+exercise-verdict-shown = The page's value is { $truth }.
+exercise-no-truth = The page as it stands has no value to check this against (a run too short, a goal not reached): change it, then try again.
+exercise-check-failed = This cannot be checked on the page as it stands: { $detail }
+exercise-choice-right = Right. { $why }
+exercise-choice-wrong = Not this one. { $why }
+exercise-choice-revealed = The answer is “{ $choice }”. { $why }
+exercise-goal-open = Not met yet: use the page above until it is.
+exercise-goal-met-by-link = The page already meets this goal as its link opened it: change something on the page, keeping the goal met, to count it.
+exercise-goal-done = Met: done.
+exercise-done-first-try = Done, right at the first try.
+exercise-done-later = Done.

@@ -24,6 +24,7 @@ home-featured-label-teleop = Teleop practice · drive an arm, record ten demos
 home-featured-label-so101 = Teleop in 3D · fly the SO-101 as Isaac Lab does
 home-featured-label-drills = Every recipe · your own values, the same CSV files
 home-featured-label-lesson = Teaching · chain views into a lesson and present it
+home-featured-label-class = Teaching · collect your class's progress files
 
 home-featured-open = Open the playground
 home-recipes-heading = Build recipes

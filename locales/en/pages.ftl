@@ -32,6 +32,7 @@ drills-title = All drills
 drills-blurb = Run any of the twelve drills with your own values and download the same CSV files as the Python recipe.
 lesson-title = Lesson
 lesson-blurb = Build a lesson from page states and present it with a presenter remote.
+class-nav = Class
 
 ## The names of the pages' sections (`data-section`): what a lesson step can bring into view.
 section-arm = Arm view
@@ -64,3 +65,5 @@ section-keys = Keys
 section-result = Result
 section-lessons = Built-in lessons
 section-steps = This lesson's steps
+section-exercises = Exercises
+exercises-load-failed = The exercises could not be loaded: check the connection, then try again.

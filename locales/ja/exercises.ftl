@@ -1,6 +1,7 @@
 # 演習（src/view/exercises）：ex-<id>-prompt、-hint、-explain。選択式は ex-<id>-choice-<n> と
 # ex-<id>-why-<n>（n は 1 から）も持つ。予想の解説には $truth（カーネルの値と単位）が渡される。
-# そのあとに学習者の進み具合のファイルとクラスのまとめ。
+# そのあとにページの演習セクション（src/ui/exercises）の文言。セクションのコードと一緒に読み込まれ、
+# どのページの最初の読み込みにも入らない。進み具合のファイルとクラスのページの文言は progress.ftl。
 
 ## #/ik-2r
 ex-ik-singular-prompt = 目標：可操作度 w が 0.001 m² 未満になる姿勢に腕を置いてください。ただし先端は作業領域の内側（縁の上ではなく）に置きます。
@@ -249,49 +250,39 @@ ex-so101-five-joints-why-2 = 正解：6×5 のヤコビアンの階数は多く�
 ex-so101-five-joints-choice-3 = 関節が 1 つ余っている（冗長である）
 ex-so101-five-joints-why-3 = 冗長な腕とは、タスクの数より関節が多い腕のことです。この腕は少ないほうです。
 
-## 学習者の進み具合のファイル（bsv_progress.json）
-progress-error-not-text = このファイルは進み具合として読めませんでした：{ $detail }
-progress-error-too-big = このファイルは { $size }（{ $bytes } バイト）あります。進み具合のファイルは { $limit } までです。ファイルは読み込んでいません。
-progress-error-empty-file = このファイルは空です。
-progress-error-too-deep = このファイルはリストやオブジェクトの入れ子が { $max } 段を超えています（{ $line } 行目、{ $column } 文字目）。進み具合のファイルの入れ子は 3 段です。
-progress-error-not-json = このファイルは JSON ではありません：{ $line } 行目、{ $column } 文字目で読めなくなります。
-progress-error-not-an-object = この JSON ファイルの中身は{ $kind ->
-    [array] リスト
-    [text] 文字列
-    [number] 数値
-    [boolean] true か false
-    *[other] null
-}で、進み具合の記録ではありません。
-progress-error-no-format = この JSON ファイルは BSV の進み具合のファイルではありません：「format」フィールドがありません（進み具合のファイルには "format": "bsv-progress" があります）。
-progress-error-format = このファイルは BSV の進み具合のファイルではありません（形式「{ $found }」、期待される形式は「bsv-progress」）。
-progress-error-version = この進み具合のファイルは別のバージョン（バージョン { $found }）で作られています。このアプリが読めるのはバージョン { $version } です。
-progress-error-unknown-field = 進み具合のファイルに、このアプリが知らないフィールド「{ $field }」があります。
-progress-error-exercise-unknown-field = 演習 { $exercise } に、このアプリが知らないフィールド「{ $field }」があります。
-progress-error-missing-field = 進み具合のファイルに「{ $field }」フィールドがありません。
-progress-error-exercise-missing-field = 演習 { $exercise } に「{ $field }」フィールドがありません。
-progress-error-wrong-type = 進み具合のファイルのフィールド「{ $field }」は{ $expected ->
-    [text] 文字列
-    [number] 整数
-    [boolean] true か false
-    *[list] 演習のリスト
-}でなければなりません。
-progress-error-exercise-wrong-type = 演習 { $exercise }、フィールド「{ $field }」：{ $expected ->
-    [text] 文字列
-    [number] 整数
-    [boolean] true か false
-    *[list] リスト
-}でなければなりません。
-progress-error-exercise-not-an-object = 演習 { $exercise } が、id と試行回数を持つオブジェクトではありません。
-progress-error-too-many-exercises = 進み具合のファイルに入る演習は { $max } 個までです。このファイルには { $count } 個あります。
-progress-error-bad-id = 演習 { $exercise }：「{ $id }」は演習の id ではありません。
-progress-error-duplicate-id = 演習「{ $id }」が 2 回出てきます。
-progress-error-attempts = 演習 { $exercise }：試行回数がこのアプリの数えられる範囲を超えています。
-progress-error-inconsistent = 演習「{ $id }」の記録のつじつまが合いません：完了には 1 回以上の試行が、初回正解には完了が必要です。
-progress-error-name-too-long = 学習者の名前は { $max } 文字までです。
-progress-error-build-too-long = フィールド「build」が { $max } 文字を超えています。
-
-## クラスのまとめ（#/class）
-class-duplicate = { $learner } さんの 2 つ目のファイルです（1 つ目は { $first }）。{ $same ->
-    [same] 進み具合が同じなので、表には入れていません。
-    *[different] 進み具合が違います。表には入れず、1 つ目のファイルの進み具合を表示しています。
-}
+## ページの演習セクション（src/ui/exercises）
+exercises-lede = まず予想し、それから確かめます。答えを判定するのはこのページ自身のカーネルです。{ $total } 問中 { $done } 問完了。
+exercise-kind-predict = 予想
+exercise-kind-goal = 目標
+exercise-kind-choose = 選択
+exercise-state-open = 未着手
+exercise-state-predicting = 予想中
+exercise-state-wrong = もう一度
+exercise-state-right = 正解
+exercise-state-revealed = 答えを表示
+exercise-state-done = 完了
+exercise-prediction-label = あなたの予想
+exercise-commit = 確かめる
+exercise-hint = ヒント
+exercise-reveal = 答えを見る
+exercise-again = もう一度挑戦
+exercise-prediction-empty = まず数値を入力してください。
+exercise-prediction-comma = 小数は点で書いてください（0.5）。コンマは使えません。
+exercise-prediction-not-a-number = 数値ではありません。0.25、−3、1e-3 のように入力してください。
+exercise-verdict-wrong = あなたの { $value } は{ $direction ->
+    [high] 大きすぎます
+   *[low] 小さすぎます
+}。ページの値の { $tolerance } の範囲に入っていません。ヒントを読んで、もう一度どうぞ。
+exercise-verdict-right = 正解です。あなたの { $value } に対してページの値は { $truth }（{ $tolerance } の範囲内）。
+exercise-verdict-revealed = ページの値は { $truth } です。あなたの { $value } は { $tolerance } の範囲に入っていません。
+exercise-verdict-shown = ページの値は { $truth } です。
+exercise-no-truth = いまのページの状態には、この問題で比べる値がありません（実行が短すぎる、ゴールに届いていないなど）。状態を変えてから、もう一度どうぞ。
+exercise-check-failed = いまのページの状態では確かめられません：{ $detail }
+exercise-choice-right = 正解です。{ $why }
+exercise-choice-wrong = これではありません。{ $why }
+exercise-choice-revealed = 答えは「{ $choice }」です。{ $why }
+exercise-goal-open = まだ達成していません。上のページを操作して達成してください。
+exercise-goal-met-by-link = このページはリンクで開いた時点でこの目標を満たしています。目標を満たしたまま、ページのどこかを変えると達成として記録されます。
+exercise-goal-done = 達成しました。
+exercise-done-first-try = 完了（1 回目で正解）。
+exercise-done-later = 完了。

@@ -24,6 +24,7 @@ home-featured-label-teleop = 遠隔操作の練習・アームを操作して 10
 home-featured-label-so101 = 3D の遠隔操作・SO-101 を Isaac Lab と同じ操作で動かす
 home-featured-label-drills = 全レシピ・自分の値で、同じ CSV ファイルを
 home-featured-label-lesson = 授業・画面をつないでレッスンにし、発表する
+home-featured-label-class = 授業・クラスの進み具合のファイルを集める
 
 home-featured-open = プレイグラウンドを開く
 home-recipes-heading = 演習レシピ

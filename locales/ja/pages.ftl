@@ -31,6 +31,7 @@ drills-title = すべてのドリル
 drills-blurb = 12 のドリルのどれでも、好きな値で実行し、Python のレシピと同じ CSV ファイルをダウンロードできます。
 lesson-title = レッスン
 lesson-blurb = ページの状態を並べてレッスンを作り、プレゼンター用リモコンで発表します。
+class-nav = クラス
 
 ## ページの区画（`data-section`）の名前：レッスンのステップが画面に出せるもの。
 section-arm = アームのビュー
@@ -63,3 +64,5 @@ section-keys = キー
 section-result = 結果
 section-lessons = 組み込みのレッスン
 section-steps = このレッスンのステップ
+section-exercises = 演習
+exercises-load-failed = 演習を読み込めませんでした。接続を確かめてから、もう一度どうぞ。

@@ -11,6 +11,8 @@
 //!   [`dom`], [`ctx`] (language, projector mode) and [`schedule`] (timers, after paint).
 //! - [`embed`] and [`embed_api`]: a page embedded in another site (`embed=1`) and its
 //!   postMessage API.
+//! - [`exercises`]: a page's exercises list, the chunk its section fetches
+//!   ([`kit::exercise_slot`]).
 //! - [`download`], [`clipboard`], [`command_line`]: files, copies and shell quoting.
 //! - [`modal`]: the modal dialog of the `?` overlay and the share dialog; [`split_point`]: the
 //!   shell's parts cut into wasm chunks of their own, fetched on first use.
@@ -25,6 +27,7 @@ pub mod download;
 pub mod drill_chain;
 pub mod embed;
 pub mod embed_api;
+pub mod exercises;
 pub mod kit;
 pub mod lang_files;
 pub mod lesson_bar;
@@ -70,9 +73,10 @@ pub async fn start_app() -> Result<(), JsValue> {
     Ok(())
 }
 
-/// The page table, in navigation order: `[{ id, group }]`, `group` being the Drills menu's
-/// group (`"kinematics"`, `"dynamics"`, `"trajectories"`, `"planning"`) or `null` for a
-/// top-level link. The browser tests check the navigation and the drill chain against it.
+/// The page table, in navigation order: `[{ id, group, tool }]`, `group` being the Drills
+/// menu's group (`"kinematics"`, `"dynamics"`, `"trajectories"`, `"planning"`) or `null` for a
+/// top-level link, `tool` whether it is a tool page with no link in the header. The browser
+/// tests check the navigation and the drill chain against it.
 #[wasm_bindgen(js_name = pageTable)]
 pub fn page_table() -> Result<js_sys::Array, JsValue> {
     let table = js_sys::Array::new();
@@ -81,6 +85,8 @@ pub fn page_table() -> Result<js_sys::Array, JsValue> {
         js_sys::Reflect::set(&entry, &"id".into(), &def.id.into())?;
         let group = def.nav.group().map_or(JsValue::NULL, JsValue::from);
         js_sys::Reflect::set(&entry, &"group".into(), &group)?;
+        let tool = def.nav == page::Nav::Tool;
+        js_sys::Reflect::set(&entry, &"tool".into(), &tool.into())?;
         table.push(&entry);
     }
     Ok(table)

@@ -152,6 +152,10 @@ pub fn mount_boxed<P: Page>(ctx: MountCtx) -> Result<Box<dyn Page>, JsValue> {
 pub enum Nav {
     /// A top-level link of the header.
     Top,
+    /// A teacher's tool with no link in the header (one more would wrap the header to a
+    /// second row at 1366 px): reached from its home-page tile and from the pages that use
+    /// it (the home page's progress links the class page).
+    Tool,
     /// The groups of the Drills menu (in the order the page table first names them).
     Kinematics,
     Dynamics,
@@ -163,7 +167,7 @@ impl Nav {
     /// The group's key (`None` for a top-level link).
     pub fn group(self) -> Option<&'static str> {
         match self {
-            Nav::Top => None,
+            Nav::Top | Nav::Tool => None,
             Nav::Kinematics => Some("kinematics"),
             Nav::Dynamics => Some("dynamics"),
             Nav::Trajectories => Some("trajectories"),

@@ -452,7 +452,7 @@ mod tests {
     #[test]
     fn problems_have_messages_in_both_languages() {
         use crate::i18n::{fluent_args, I18n, Lang};
-        let i18n = I18n::from_sources(&crate::view::exercises::MESSAGE_SOURCES);
+        let i18n = I18n::from_sources(&crate::view::learner_progress::MESSAGE_SOURCES);
         let s = summarize(
             &files(&[
                 ("a.json", file_of(Some("A"), &[])),

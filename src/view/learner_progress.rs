@@ -40,6 +40,25 @@ use crate::error::RecipeError;
 use crate::pyfmt::{group_u64, size_text};
 use crate::view::json_file::{kind_of, quoted, too_deep_at, unknown_field};
 
+/// The file of the progress file's messages (its problems, the panel that exports and imports
+/// it, the home page's progress and the class page): `locales/<lang>/progress.ftl`.
+pub const MESSAGE_FILE: &str = "progress.ftl";
+
+/// [`MESSAGE_FILE`] of both languages, for the tests.
+#[cfg(test)]
+pub(crate) const MESSAGE_SOURCES: [(crate::i18n::Lang, &str, &str); 2] = [
+    (
+        crate::i18n::Lang::En,
+        MESSAGE_FILE,
+        include_str!("../../locales/en/progress.ftl"),
+    ),
+    (
+        crate::i18n::Lang::Ja,
+        MESSAGE_FILE,
+        include_str!("../../locales/ja/progress.ftl"),
+    ),
+];
+
 /// The `format` field of a progress file.
 pub const FORMAT: &str = "bsv-progress";
 /// The version this build writes and reads.

@@ -4,8 +4,9 @@
 //! Shared by the pages: the URL codec ([`url`]), the parameter form ([`field`], [`form`]) and
 //! its command lines ([`command_line`]), CSV previews and envelopes ([`table`], [`envelope`]),
 //! the stepper, plots, heatmaps, colours, 3D scenes and drag handles, progress, lessons, the
-//! drill chain, the exercises and their checks ([`exercises`]), a learner's progress on them
-//! ([`learner_progress`]) and a class's ([`class_summary`]). One module per page holds that
+//! drill chain, the exercises and their checks ([`exercises`]), one exercise's state on its
+//! page ([`exercise_state`]) and its typed prediction ([`prediction_text`]), a learner's
+//! progress on them ([`learner_progress`]) and a class's ([`class_summary`]). One module per page holds that
 //! page's state, URL keys, readouts and hit tests ([`ik2r`], [`rrt`], [`pendulum`],
 //! [`se3_relative`], [`umeyama_2d`], [`teleop`], ...).
 //! Each module's first line says what it owns.
@@ -21,6 +22,7 @@ pub mod drill_chain;
 pub mod drills;
 pub mod embed;
 pub mod envelope;
+pub mod exercise_state;
 pub mod exercises;
 pub mod field;
 pub mod form;
@@ -35,6 +37,7 @@ pub mod pendulum;
 pub mod pid_step;
 pub mod pilot_picture;
 pub mod plot;
+pub mod prediction_text;
 pub mod progress;
 pub mod qr_code;
 pub mod replay;

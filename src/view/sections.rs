@@ -5,29 +5,38 @@
 //! name as `data-section-name`). The table is known without the page being open: the lesson
 //! editor offers a step's sections from it, and a lesson's focus is checked against it. A
 //! page's first section is its main live view: what a step without a focus brings into view.
+//! Every page with exercises ends with its `exercises` section
+//! ([`crate::view::exercises::PAGE_IDS`]).
 
 /// Route id → its sections, the main live view first, then in the page's order.
 #[rustfmt::skip]
 pub const PAGE_SECTIONS: &[(&str, &[&str])] = &[
     ("home", &["arm", "drills", "recipes", "tools"]),
-    ("ik-2r", &["arm", "readouts", "heatmap", "sweep", "form", "exports", "explain"]),
-    ("dh-fk", &["arm", "readouts", "joints", "table", "row", "poses", "exports", "explain"]),
-    ("se3-relative", &["frames", "readouts", "poses", "matrices", "rotations", "exports", "explain"]),
-    ("umeyama-2d", &["points", "stepper", "readouts", "form", "exports", "explain"]),
-    ("pendulum-energy", &["pendulum", "stepper", "readouts", "plot", "form", "exports", "explain"]),
+    ("ik-2r", &["arm", "readouts", "heatmap", "sweep", "form", "exports", "explain", "exercises"]),
+    ("dh-fk", &["arm", "readouts", "joints", "table", "row", "poses", "exports", "explain", "exercises"]),
+    ("se3-relative", &["frames", "readouts", "poses", "matrices", "rotations", "exports", "explain", "exercises"]),
+    ("umeyama-2d", &["points", "stepper", "readouts", "form", "exports", "explain", "exercises"]),
+    ("pendulum-energy", &["pendulum", "stepper", "readouts", "plot", "form", "exports", "explain", "exercises"]),
     ("pid-step", SIGNAL),
     ("cubic-path", SIGNAL),
     ("trapezoid-profile", SIGNAL),
-    ("traj-resample", &["plot", "readouts", "form", "exports", "explain"]),
-    ("rrt-2d", &["world", "stepper", "substeps", "readouts", "form", "exports", "explain"]),
-    ("teleop", &["world", "readouts", "device", "session", "form", "explain"]),
-    ("so101", &["arm", "wrist", "device", "readouts", "session", "form", "keys"]),
+    ("traj-resample", &["plot", "readouts", "form", "exports", "explain", "exercises"]),
+    ("rrt-2d", &["world", "stepper", "substeps", "readouts", "form", "exports", "explain", "exercises"]),
+    ("teleop", &["world", "readouts", "device", "session", "form", "explain", "exercises"]),
+    ("so101", &["arm", "wrist", "device", "readouts", "session", "form", "keys", "exercises"]),
     ("drills", &["form", "result", "explain"]),
     ("lesson", &["lessons", "steps"]),
 ];
 
 /// The sections of a signal page (`crate::ui::kit::signal_page`).
-const SIGNAL: &[&str] = &["plot", "form", "readouts", "exports", "explain"];
+const SIGNAL: &[&str] = &[
+    "plot",
+    "form",
+    "readouts",
+    "exports",
+    "explain",
+    "exercises",
+];
 
 /// The sections of page `page` (none for a page without sections or an unknown page).
 pub fn of(page: &str) -> &'static [&'static str] {
@@ -72,6 +81,14 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn every_page_with_exercises_ends_with_their_section() {
+        for (page, _) in crate::view::exercises::PAGE_IDS {
+            assert_eq!(of(page).last(), Some(&"exercises"), "{page}");
+        }
+        assert!(!has("drills", "exercises") && !has("lesson", "exercises"));
     }
 
     #[test]

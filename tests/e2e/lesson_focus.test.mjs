@@ -150,7 +150,7 @@ test('"+ Lesson" records the section in the middle of the screen; the editor off
     await page.waitForSelector('[data-testid="lesson-step-1"] [data-field="focus"]');
     const [step] = await editorSteps(page);
     assert.equal(step.focus, 'heatmap');
-    assert.deepEqual(Object.keys(step.choices), ['', 'arm', 'readouts', 'heatmap', 'sweep', 'form', 'exports', 'explain']);
+    assert.deepEqual(Object.keys(step.choices), ['', 'arm', 'readouts', 'heatmap', 'sweep', 'form', 'exports', 'explain', 'exercises']);
     assert.equal(step.choices.heatmap, 'Manipulability heatmap');
     await page.selectOption('[data-testid="lesson-step-1"] [data-field="focus"]', 'sweep');
     await page.waitForFunction(() => JSON.parse(localStorage.getItem('bsv.lesson')).steps[0].focus === 'sweep');

@@ -22,7 +22,8 @@ const pageTable = (page) =>
 
 /** The navigation the page table asks for: top-level ids, and the menu's groups in order. */
 function navFromTable(table) {
-  const top = table.filter((p) => p.group === null).map((p) => p.id);
+  // A teacher's tool page (#/class) has no link in the header.
+  const top = table.filter((p) => p.group === null && !p.tool).map((p) => p.id);
   const groups = [...new Set(table.filter((p) => p.group !== null).map((p) => p.group))].map((group) => ({
     heading: `nav-group-${group}-heading`,
     ids: table.filter((p) => p.group === group).map((p) => p.id),

@@ -1,5 +1,5 @@
-//! An input file the user opens (a trajectory CSV): the file chosen in an `<input
-//! type="file">` or dropped on the page, its name and size (checked against the kernel's limit
+//! An input file the user opens (a trajectory CSV, or several progress files): the file (or
+//! files) chosen in an `<input type="file">` or dropped on the page, its name and size (checked against the kernel's limit
 //! before anything is read), then its bytes decoded by the kernels' one policy,
 //! [`crate::recipes::decode_input`] (UTF-8, a byte-order mark allowed, anything else refused
 //! with the byte offset), exactly as `bsv` decodes the file it reads from disk. Only `Blob` of
@@ -35,10 +35,15 @@ pub enum ReadProblem {
 }
 
 fn first_file(files: &JsValue) -> Option<Picked> {
+    nth_file(files, 0)
+}
+
+/// File `n` of a `FileList` (`None` past its end).
+fn nth_file(files: &JsValue, n: u32) -> Option<Picked> {
     if files.is_null() || files.is_undefined() {
         return None;
     }
-    let file = Reflect::get_u32(files, 0).ok()?;
+    let file = Reflect::get_u32(files, n).ok()?;
     if file.is_null() || file.is_undefined() {
         return None;
     }
@@ -64,12 +69,35 @@ pub fn chosen(input: &HtmlInputElement) -> Option<Picked> {
 
 /// The first file of a `drop` event (`None` for dropped text or links).
 pub fn dropped(event: &Event) -> Option<Picked> {
+    first_file(&dropped_files(event)?)
+}
+
+/// The `FileList` of a `drop` event.
+fn dropped_files(event: &Event) -> Option<JsValue> {
     let transfer = Reflect::get(event, &JsValue::from_str("dataTransfer")).ok()?;
     if transfer.is_null() || transfer.is_undefined() {
         return None;
     }
-    let files = Reflect::get(&transfer, &JsValue::from_str("files")).ok()?;
-    first_file(&files)
+    Reflect::get(&transfer, &JsValue::from_str("files")).ok()
+}
+
+/// Every file of a `FileList`, in order.
+fn every_file(files: &JsValue) -> Vec<Picked> {
+    (0..).map_while(|n| nth_file(files, n)).collect()
+}
+
+/// Every file chosen in `input` (an `<input type="file" multiple>`), in order.
+pub fn all_chosen(input: &HtmlInputElement) -> Vec<Picked> {
+    Reflect::get(input, &JsValue::from_str("files"))
+        .map(|files| every_file(&files))
+        .unwrap_or_default()
+}
+
+/// Every file of a `drop` event, in order (none for dropped text or links).
+pub fn all_dropped(event: &Event) -> Vec<Picked> {
+    dropped_files(event)
+        .map(|files| every_file(&files))
+        .unwrap_or_default()
 }
 
 /// Whether a drag carries files (for `dragover`: only then is the drop taken).

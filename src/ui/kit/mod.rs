@@ -27,7 +27,12 @@
 //!   it needs has come (a pilot page whose stored session needs the code that reads it).
 //! - [`store`]: a page's work in localStorage: unreadable text moved aside, refused saves
 //!   reported.
-//! - [`input_file`]: a file the user opens or drops, decoded as the CLI decodes it.
+//! - [`input_file`]: a file the user opens or drops (or several), decoded as the CLI decodes it.
+//! - [`exercise_slot`]: a page's exercises section, whose list is a chunk of its own
+//!   ([`crate::ui::exercises`]) it shares [`exercise_link`] with; the learner's progress in
+//!   the browser ([`progress_store`]) and its file's panel ([`progress_panel`]); a part with
+//!   Fluent files of its own that follows the language ([`lang_follow`]); a chunk's own
+//!   stylesheet, linked on first use ([`late_style`]).
 //! - [`worker`]: long recipe runs in a Web Worker (same wasm), with progress and cancel.
 //! - [`progress`]: the progress panel of such a run (bar, rows, time left, Cancel).
 //! - [`orbit`]: a 3D view: orbit by drag, zoom by wheel/pinch/keys, preset views, a page's
@@ -37,13 +42,17 @@ pub mod bench_log;
 pub mod canvas;
 pub mod chunk_fns;
 pub mod drag;
+pub mod exercise_link;
+pub mod exercise_slot;
 pub mod exports;
 pub mod form;
 pub mod frame;
 pub mod heatmap;
 pub mod input_file;
 pub mod keymap;
+pub mod lang_follow;
 pub mod late_page;
+pub mod late_style;
 pub mod message_line;
 pub mod orbit;
 pub mod page_root;
@@ -52,6 +61,8 @@ pub mod pilot_session;
 pub mod plot;
 pub mod png;
 pub mod progress;
+pub mod progress_panel;
+pub mod progress_store;
 pub mod readouts;
 pub mod recipe_controls;
 pub mod review;

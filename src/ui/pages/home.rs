@@ -12,19 +12,23 @@ use web_sys::{Element, KeyboardEvent};
 
 use super::home_arm::{self, HomeArm};
 use super::home_cards;
+use super::home_progress::Keep;
 use crate::ui::dom::{append, el_class, el_i18n};
 use crate::ui::page::{MountCtx, Page, ShellLink, Shortcut, SplitLoaderError};
 use crate::ui::page_frame;
 
-/// The home page (`#/`): markup, every text a `data-i18n` message, and the live arm.
+/// The home page (`#/`): markup, every text a `data-i18n` message, the live arm, and what
+/// the chunk of its tiles keeps while the page is shown (the progress' listeners).
 pub struct HomePage {
     arm: Rc<HomeArm>,
+    _keep: Keep,
 }
 
 impl Page for HomePage {
     fn mount(ctx: MountCtx) -> Result<HomePage, JsValue> {
-        let arm = build(&ctx.root, ctx.shell)?;
-        Ok(HomePage { arm })
+        let keep = Keep::default();
+        let arm = build(&ctx.root, ctx.shell, &keep)?;
+        Ok(HomePage { arm, _keep: keep })
     }
 
     fn set_projector(&self, _on: bool) {
@@ -40,7 +44,7 @@ impl Page for HomePage {
     }
 }
 
-fn build(root: &Element, shell: ShellLink) -> Result<Rc<HomeArm>, JsValue> {
+fn build(root: &Element, shell: ShellLink, keep: &Keep) -> Result<Rc<HomeArm>, JsValue> {
     let hero = el_class("section", "hero")?;
     crate::ui::dom::mark_section(&hero, "arm")?;
     let text = el_class("div", "hero-text")?;
@@ -59,13 +63,13 @@ fn build(root: &Element, shell: ShellLink) -> Result<Rc<HomeArm>, JsValue> {
     show_loading(&status)?;
     append(root, &status)?;
     // Fetched once the arm is painted, so that the first frame does not wait on its requests.
-    let root = root.clone();
-    crate::ui::schedule::after_paint(move || load_cards(root, status, shell))?;
+    let (root, keep) = (root.clone(), keep.clone());
+    crate::ui::schedule::after_paint(move || load_cards(root, status, shell, keep))?;
     Ok(arm)
 }
 
 /// Builds the tiles, recipe cards and tools table (`home_cards`).
-type CardsFn = fn(&Element, &Element, ShellLink) -> Result<(), JsValue>;
+type CardsFn = fn(&Element, &Element, ShellLink, &Keep) -> Result<(), JsValue>;
 
 /// The tiles, recipe cards and tools table: a wasm chunk of their own (drawing the pictures
 /// runs every recipe's kernel), fetched once the arm is live.
@@ -83,7 +87,7 @@ async fn cards() -> Result<CardsFn, SplitLoaderError> {
 
 /// Loads the cards' chunk and builds them into `root` in place of `status`; if the chunk
 /// cannot be fetched, `status` says so with a Retry button.
-fn load_cards(root: Element, status: Element, shell: ShellLink) {
+fn load_cards(root: Element, status: Element, shell: ShellLink, keep: Keep) {
     wasm_bindgen_futures::spawn_local(async move {
         let built = match cards().await {
             Ok(build) => {
@@ -91,9 +95,9 @@ fn load_cards(root: Element, status: Element, shell: ShellLink) {
                 if !root.contains(Some(&status)) {
                     return;
                 }
-                build(&root, &status, shell)
+                build(&root, &status, shell, &keep)
             }
-            Err(_) => show_failed(&root, &status, shell),
+            Err(_) => show_failed(&root, &status, shell, keep),
         };
         if let Err(error) = built {
             web_sys::console::error_1(&error);
@@ -101,10 +105,15 @@ fn load_cards(root: Element, status: Element, shell: ShellLink) {
     });
 }
 
-fn show_failed(root: &Element, status: &Element, shell: ShellLink) -> Result<(), JsValue> {
+fn show_failed(
+    root: &Element,
+    status: &Element,
+    shell: ShellLink,
+    keep: Keep,
+) -> Result<(), JsValue> {
     let (root, again) = (root.clone(), status.clone());
     page_frame::show_part_failed(status, "home-more-failed", "home-more-loading", move || {
-        load_cards(root.clone(), again.clone(), shell)
+        load_cards(root.clone(), again.clone(), shell, keep.clone())
     })
 }
 

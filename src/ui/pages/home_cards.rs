@@ -5,13 +5,15 @@
 //! `bsv` and `python` command lines; links to run it in the browser), then the seed's "Compare
 //! the tools" table with the official links (outbound only). Drawing the pictures runs every
 //! recipe's kernel, so this part is a wasm chunk of its own, fetched once the arm is live
-//! (`home.rs`). Everything about a recipe (labels, defaults, limits, the live page that pairs
+//! (`home.rs`), and the learner's progress on the exercises at the foot (`home_progress`).
+//! Everything about a recipe (labels, defaults, limits, the live page that pairs
 //! with it) comes from its facts (`RecipeInfo`, `ArgSpec`).
 
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
 use super::home_picture;
+use super::home_progress::{self, Keep};
 use crate::args::ArgSpec;
 use crate::recipes::{RecipeInfo, RECIPES};
 use crate::ui::command_line::shell_word;
@@ -22,9 +24,15 @@ use crate::ui::router::{self, HOME_ID};
 
 /// Builds the tiles, the recipe cards and the tools table into `root`, before `status` (the
 /// line that stood in for them, removed once they are all in), one part per task so that no
-/// task is long on a phone, then draws the pictures. Each part goes below the ones before it:
-/// nothing shown moves.
-pub fn build(root: &Element, status: &Element, shell: ShellLink) -> Result<(), JsValue> {
+/// task is long on a phone, then draws the pictures; the learner's progress comes last, at the
+/// foot (`home_progress`), held by `keep`. Each part goes below the ones before it: nothing
+/// shown moves.
+pub fn build(
+    root: &Element,
+    status: &Element,
+    shell: ShellLink,
+    keep: &Keep,
+) -> Result<(), JsValue> {
     let tiles = el_class("ul", "tile-grid")?;
     tiles.set_attribute("data-testid", "home-tiles")?;
     crate::ui::dom::set_i18n_attrs(&tiles, &[("aria-label", "home-tiles-label")])?;
@@ -35,9 +43,9 @@ pub fn build(root: &Element, status: &Element, shell: ShellLink) -> Result<(), J
         append(&tiles, &item)?;
     }
     root.insert_before(&tiles, Some(status))?;
-    let (root, status) = (root.clone(), status.clone());
+    let (root, status, keep) = (root.clone(), status.clone(), keep.clone());
     wasm_bindgen_futures::spawn_local(async move {
-        if let Err(error) = build_rest(&root, &status, shell).await {
+        if let Err(error) = build_rest(&root, &status, shell, &keep).await {
             web_sys::console::error_1(&error);
         }
     });
@@ -46,7 +54,12 @@ pub fn build(root: &Element, status: &Element, shell: ShellLink) -> Result<(), J
 
 /// The recipe cards (in two parts) and the tools table, each in a later task while the home
 /// page stands (`status` still in `root`), then the pictures.
-async fn build_rest(root: &Element, status: &Element, shell: ShellLink) -> Result<(), JsValue> {
+async fn build_rest(
+    root: &Element,
+    status: &Element,
+    shell: ShellLink,
+    keep: &Keep,
+) -> Result<(), JsValue> {
     let here = || root.contains(Some(status));
     crate::ui::schedule::next_task().await;
     if !here() {
@@ -83,7 +96,9 @@ async fn build_rest(root: &Element, status: &Element, shell: ShellLink) -> Resul
     let tools = tools_section()?;
     root.insert_before(&tools, Some(status))?;
     status.remove();
-    home_picture::draw_all(root)
+    home_picture::draw_all(root)?;
+    home_progress::build(root, shell, keep);
+    Ok(())
 }
 
 /// The seed's "Compare the tools" table: each tool's key (its Fluent ids are

@@ -8,6 +8,7 @@ use crate::ui::kit::signal_page::Signal;
 use crate::ui::page::{page, Nav, PageDef};
 use crate::ui::router::{DRILLS_ID, HOME_ID};
 
+mod class;
 mod cubic_path;
 mod dh_fk;
 mod drills;
@@ -15,6 +16,7 @@ mod home;
 mod home_arm;
 mod home_cards;
 mod home_picture;
+mod home_progress;
 mod ik2r;
 mod lesson;
 mod pendulum;
@@ -42,6 +44,7 @@ const RRT_HEAD: &str = "<div class=\"kit-page rrt\"><header class=\"rrt-head\"><
 const TELEOP_HEAD: &str = "<div class=\"tele\"><header class=\"tele-head\"><h1 data-i18n=\"teleop-title\"></h1></header></div>";
 const SO101_HEAD: &str = "<div class=\"so101-page\"><h1 data-i18n=\"so101-title\"></h1></div>";
 const DRILLS_HEAD: &str = "<div class=\"drills\"><header class=\"drills-head\"><h1 data-i18n=\"drills-title\"></h1><p class=\"drills-lede\" data-i18n=\"drills-lede\"></p></header></div>";
+const CLASS_HEAD: &str = "<div class=\"lesson class-page\"><h1 data-i18n=\"class-title\"></h1><p class=\"lesson-intro\" data-i18n=\"class-lede\"></p></div>";
 const LESSON_HEAD: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1><p class=\"lesson-intro\" data-i18n=\"lesson-intro\"></p></div>";
 
 /// All pages, in navigation order (the Drills menu lists its groups' pages in this order), each
@@ -63,4 +66,5 @@ pub const PAGES: &[PageDef] = &[
     page!(so101_page, so101::So101Page, "so101", "so101-nav", SO101_HEAD, Nav::Top, ["so101.ftl", "teleop.ftl"]),
     page!(drills_page, drills::DrillsPage, DRILLS_ID, "drills-title", DRILLS_HEAD, Nav::Top, ["drills.ftl", "traj.ftl", "recipes.ftl"]),
     page!(lesson_page, lesson::LessonPage, "lesson", "lesson-title", LESSON_HEAD, Nav::Top, ["lesson.ftl", "recipes.ftl"]),
+    page!(class_page, class::ClassPage, "class", "class-nav", CLASS_HEAD, Nav::Tool, ["progress.ftl"]),
 ];

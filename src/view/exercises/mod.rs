@@ -40,9 +40,10 @@ pub mod umeyama_2d;
 
 pub use exercise::{Answer, CheckError, Exercise, Kind, PageModel, Tolerance, Verdict};
 
-/// The file of the exercises' messages (and of the progress file's and the class summary's):
-/// `locales/<lang>/exercises.ftl`. The app's bundles do not hold it yet
-/// ([`crate::i18n::FILE_NAMES`]); the pages that show exercises add it.
+/// The file of the exercises' messages and of a page's exercises section:
+/// `locales/<lang>/exercises.ftl`. No page's first load holds it: a page's exercises section
+/// fetches it with its code (the progress file's messages are
+/// [`crate::view::learner_progress::MESSAGE_FILE`]'s).
 pub const MESSAGE_FILE: &str = "exercises.ftl";
 
 /// [`MESSAGE_FILE`] of both languages, for the tests.
@@ -75,6 +76,62 @@ const PAGES: [&[Exercise]; 12] = [
     &teleop::EXERCISES,
     &so101::EXERCISES,
 ];
+
+/// The ids of `list`, in order (evaluated when the crate is compiled: the table built from
+/// them holds no check).
+const fn ids<const N: usize>(list: [Exercise; N]) -> [&'static str; N] {
+    let mut out = [""; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = list[i].id;
+        i += 1;
+    }
+    out
+}
+
+const IK2R_IDS: [&str; ik2r::EXERCISES.len()] = ids(ik2r::EXERCISES);
+const DH_FK_IDS: [&str; dh_fk::EXERCISES.len()] = ids(dh_fk::EXERCISES);
+const SE3_IDS: [&str; se3_relative::EXERCISES.len()] = ids(se3_relative::EXERCISES);
+const UMEYAMA_IDS: [&str; umeyama_2d::EXERCISES.len()] = ids(umeyama_2d::EXERCISES);
+const PENDULUM_IDS: [&str; pendulum::EXERCISES.len()] = ids(pendulum::EXERCISES);
+const PID_IDS: [&str; pid_step::EXERCISES.len()] = ids(pid_step::EXERCISES);
+const CUBIC_IDS: [&str; cubic_path::EXERCISES.len()] = ids(cubic_path::EXERCISES);
+const TRAP_IDS: [&str; trapezoid_profile::EXERCISES.len()] = ids(trapezoid_profile::EXERCISES);
+const TRAJ_IDS: [&str; traj_resample::EXERCISES.len()] = ids(traj_resample::EXERCISES);
+const RRT_IDS: [&str; rrt::EXERCISES.len()] = ids(rrt::EXERCISES);
+const TELEOP_IDS: [&str; teleop::EXERCISES.len()] = ids(teleop::EXERCISES);
+const SO101_IDS: [&str; so101::EXERCISES.len()] = ids(so101::EXERCISES);
+
+/// Each page's route id and its exercises' ids in the order it lists them, without their
+/// checks: for code that counts progress and must not hold every kernel (the home page's
+/// tiles, the class table's columns).
+pub const PAGE_IDS: [(&str, &[&str]); 12] = [
+    (ik2r::PAGE, &IK2R_IDS),
+    (dh_fk::PAGE, &DH_FK_IDS),
+    (se3_relative::PAGE, &SE3_IDS),
+    (umeyama_2d::PAGE, &UMEYAMA_IDS),
+    (pendulum::PAGE, &PENDULUM_IDS),
+    (pid_step::PAGE, &PID_IDS),
+    (cubic_path::PAGE, &CUBIC_IDS),
+    (trapezoid_profile::PAGE, &TRAP_IDS),
+    (traj_resample::PAGE, &TRAJ_IDS),
+    (rrt::PAGE, &RRT_IDS),
+    (teleop::PAGE, &TELEOP_IDS),
+    (so101::PAGE, &SO101_IDS),
+];
+
+/// The exercise ids of page `page` ([`PAGE_IDS`]; none for a page without exercises).
+pub fn ids_of_page(page: &str) -> &'static [&'static str] {
+    PAGE_IDS
+        .iter()
+        .find(|(p, _)| *p == page)
+        .map_or(&[], |(_, ids)| ids)
+}
+
+/// Every exercise id in catalog order ([`PAGE_IDS`], without the checks).
+pub fn all_ids() -> impl Iterator<Item = &'static str> {
+    PAGE_IDS.iter().flat_map(|(_, ids)| ids.iter().copied())
+}
 
 /// Every exercise, page by page in the order each page lists them.
 pub fn catalog() -> impl Iterator<Item = &'static Exercise> {

@@ -357,7 +357,7 @@ fn errors_have_message_ids_and_quoted_arguments() {
 #[test]
 fn every_error_has_a_message_in_both_languages() {
     use crate::i18n::{fluent_args, I18n, Lang};
-    let i18n = I18n::from_sources(&exercises::MESSAGE_SOURCES);
+    let i18n = I18n::from_sources(&super::MESSAGE_SOURCES);
     let errors = [
         ProgressError::NotText { detail: "x".into() },
         ProgressError::Decode(RecipeError::InputUtf16 { name: "x".into() }),

@@ -33,6 +33,7 @@ use crate::recipes::PageRecipe;
 use crate::ui::dom;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::frame::FrameLoop;
 use crate::ui::kit::plot::Plot;
 use crate::ui::kit::readouts::Readouts;
@@ -42,6 +43,7 @@ use crate::ui::kit::url_state::UrlWriter;
 use crate::ui::page::{MountCtx, Page, ShellLink, ShellRequest, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
+use crate::view::exercises::{Exercise, PageModel};
 use crate::view::signal::sig;
 pub use crate::view::signal::ColumnsThin;
 pub use crate::view::signal::SignalRow;
@@ -109,6 +111,9 @@ pub trait SignalPage: Sized + 'static {
     fn action(&self, _kit: &Kit<Self>, _action: &str) -> Option<Self::Params> {
         None
     }
+    /// The page's exercises ([`crate::view::exercises`]) and the model they check.
+    const EXERCISES: &'static [Exercise];
+    fn exercise_model(params: &Self::Params) -> PageModel<'_>;
     /// Where the cursor stands before any hover: mid-run.
     fn cursor_start(_params: &Self::Params, rows: &[Self::Row]) -> f64 {
         rows.last().map_or(0.0, |r| r.t() / 2.0)
@@ -527,8 +532,11 @@ fn overlay_input(root: &Element, name: &str) -> Result<HtmlInputElement, JsValue
     dom::find(root, &format!("[data-overlay=\"{name}\"]"), name)
 }
 
-/// A mounted signal page.
-pub struct Signal<S: SignalPage>(Rc<Live<S>>);
+/// A mounted signal page and its exercises.
+pub struct Signal<S: SignalPage> {
+    live: Rc<Live<S>>,
+    _exercises: ExerciseSlot,
+}
 
 impl<S: SignalPage> Page for Signal<S> {
     fn mount(ctx: MountCtx) -> Result<Signal<S>, JsValue> {
@@ -615,20 +623,33 @@ impl<S: SignalPage> Page for Signal<S> {
         if let Some(rows) = big {
             live.run(params, rows, RunFrom::Mount);
         }
-        Ok(Signal(live))
+        let me = Rc::downgrade(&live);
+        let exercises = ExerciseSlot::new(
+            &live.kit.root,
+            S::EXERCISES,
+            Box::new(move |use_model| {
+                if let Some(live) = me.upgrade() {
+                    use_model(&S::exercise_model(&live.kit.run().params));
+                }
+            }),
+        )?;
+        Ok(Signal {
+            live,
+            _exercises: exercises,
+        })
     }
 
     fn settled(&self) -> bool {
-        self.0.drawn.get()
+        self.live.drawn.get()
     }
 
     fn relocalize(&self) {
-        self.0.kit.controls.relocalize();
-        self.0.redraw_all();
+        self.live.kit.controls.relocalize();
+        self.live.redraw_all();
     }
 
     fn set_projector(&self, _on: bool) {
-        self.0.redraw_all();
+        self.live.redraw_all();
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
@@ -637,7 +658,7 @@ impl<S: SignalPage> Page for Signal<S> {
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
         let t0 = now_ms();
-        let took = self.0.on_key(event);
+        let took = self.live.on_key(event);
         if took {
             record_frame_ms(now_ms() - t0);
         }

@@ -1,6 +1,7 @@
 //! The cubic-path drill: its sliders, readouts, keys and overlays; the path's readouts and
 //! announcement; the end point's drag.
 
+use crate::view::exercises::{self, Exercise, PageModel};
 use glam::DVec2;
 use wasm_bindgen::JsValue;
 
@@ -58,6 +59,12 @@ impl SignalPage for CubicPage {
     };
 
     /// The peaks, coefficients and row count.
+    const EXERCISES: &'static [Exercise] = &exercises::cubic_path::EXERCISES;
+
+    fn exercise_model(params: &Self::Params) -> PageModel<'_> {
+        PageModel::CubicPath(params)
+    }
+
     fn summarize(params: &CubicParams, rows: &[CubicSample]) -> Readouts {
         numbers(params, rows)
     }

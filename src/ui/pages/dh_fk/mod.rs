@@ -24,6 +24,7 @@ use web_sys::{Element, HtmlInputElement, KeyboardEvent};
 use crate::recipes::dh_fk::{self, params_from_args, run, DhParams, CSV_NAME, JOINTS};
 use crate::recipes::PageRecipe;
 use crate::ui::kit::canvas::{Ink, LayeredCanvas};
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::frame;
 use crate::ui::kit::keymap;
 use crate::ui::kit::page_root::PageRoot;
@@ -40,6 +41,7 @@ use crate::view::dh_fk::{
     cell, csv_rows, draw_frames, set_joint_text, DrawFrame, PageQuery, RowWalk, OWN_KEYS,
     WALK_STEPS,
 };
+use crate::view::exercises::{self, PageModel};
 use crate::view::scene3d::AxisPalette;
 use markup::P;
 
@@ -77,7 +79,10 @@ impl Posed {
 type Tween = (usize, usize, f64);
 
 /// The mounted page.
-pub struct DhPage(Rc<Inner>);
+pub struct DhPage {
+    inner: Rc<Inner>,
+    _exercises: ExerciseSlot,
+}
 
 struct Inner {
     me: Weak<Inner>,
@@ -102,6 +107,7 @@ struct Inner {
 
 impl Page for DhPage {
     fn mount(ctx: MountCtx) -> Result<DhPage, JsValue> {
+        let exercises_root = ctx.root.clone();
         let root = PageRoot::fill(&ctx.root, &markup::page(), P, P)?;
         let controls = RecipeControls::mount(
             &root,
@@ -162,11 +168,24 @@ impl Page for DhPage {
         }
         inner.animate.set(true);
         inner.redraw_now();
-        Ok(DhPage(inner))
+        let me = Rc::downgrade(&inner);
+        let exercises = ExerciseSlot::new(
+            &exercises_root,
+            &exercises::dh_fk::EXERCISES,
+            Box::new(move |use_model| {
+                if let Some(inner) = me.upgrade() {
+                    use_model(&PageModel::DhFk(&inner.posed.borrow().params));
+                }
+            }),
+        )?;
+        Ok(DhPage {
+            inner,
+            _exercises: exercises,
+        })
     }
 
     fn relocalize(&self) {
-        let p = &self.0;
+        let p = &self.inner;
         p.controls.relocalize();
         if let Some(v) = p.view.borrow().as_ref() {
             v.orbit.relocalize();
@@ -179,7 +198,7 @@ impl Page for DhPage {
     }
 
     fn set_projector(&self, _on: bool) {
-        if let Some(v) = self.0.view.borrow().as_ref() {
+        if let Some(v) = self.inner.view.borrow().as_ref() {
             v.orbit.relayout();
         }
     }
@@ -192,7 +211,7 @@ impl Page for DhPage {
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        let p = &self.0;
+        let p = &self.inner;
         if p.view
             .borrow()
             .as_ref()

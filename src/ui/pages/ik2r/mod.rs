@@ -51,11 +51,14 @@ use crate::planar2r::{wrap_angle, Elbow, Kinematics};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::{DragEvent, PointerKind};
+use crate::ui::kit::exercise_link::WithModel;
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::scope::{FrameLoop, Scope};
 use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{self, MountCtx, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::{now_ms, Timer};
+use crate::view::exercises::PageModel;
 use crate::view::ik2r::{elbow_of, Grab, Params, State, WsColor};
 use crate::view::url::UrlState;
 
@@ -74,6 +77,7 @@ mod dirty {
 
 /// The mounted page.
 pub(crate) struct Page {
+    me: Weak<Page>,
     root: Element,
     state: RefCell<State>,
     /// The pose of the heatmap cell under the pointer (a ghost arm in the arm view).
@@ -85,6 +89,9 @@ pub(crate) struct Page {
     readouts: RefCell<readouts::Readouts>,
     /// The second stage (heatmap, sweep plot, form, downloads), once its chunk is in.
     panels: RefCell<Option<Rc<dyn Panels>>>,
+    /// The exercises section, made with the second stage (their checks are the correctly
+    /// rounded numbers it brings).
+    exercises: RefCell<Option<ExerciseSlot>>,
     /// The tip target of the last IK, while the pose it gave came from the platform's
     /// functions (before the second stage brings the correctly rounded ones): the pose is
     /// solved again from it when they arrive.
@@ -113,6 +120,8 @@ fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
     let page = Rc::new_cyclic(|weak: &Weak<Page>| {
         let mut scope = Scope::new();
         Page {
+            me: weak.clone(),
+            exercises: RefCell::new(None),
             frames: scope.dirty_frame_loop(weak, |p: &Page, bits, _| p.frame(bits)),
             heat_timer: scope.timer(weak, Page::recompute_heatmap),
             ws_timer: scope.timer(weak, Page::recompute_workspace),
@@ -241,6 +250,16 @@ impl Page {
     /// is solved again with the correctly rounded functions, and it draws from the state now.
     fn panels_arrived(&self, panels: Rc<dyn Panels>) {
         *self.panels.borrow_mut() = Some(panels.clone());
+        let me = self.me.clone();
+        let model: WithModel = Box::new(move |use_model| {
+            if let Some(page) = me.upgrade() {
+                use_model(&PageModel::Ik2r(&page.state.borrow()));
+            }
+        });
+        match ExerciseSlot::new(&self.root, panels.exercises(), model) {
+            Ok(slot) => *self.exercises.borrow_mut() = Some(slot),
+            Err(error) => web_sys::console::error_2(&"BSV Playground: exercises".into(), &error),
+        }
         if let Some((x, y)) = self.fast_tip.take() {
             let solved = {
                 let mut st = self.state.borrow_mut();

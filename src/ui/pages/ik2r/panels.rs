@@ -23,6 +23,7 @@ use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
 use crate::ui::kit::drag::{DragEvent, PointerKind};
 use crate::ui::kit::scope::Scope;
+use crate::view::exercises::Exercise;
 use crate::view::heatmap::Rgb;
 use crate::view::ik2r::{Params, State, WsColor};
 
@@ -30,6 +31,8 @@ use crate::view::ik2r::{Params, State, WsColor};
 pub(super) trait Panels {
     /// The correctly rounded numbers of the arm (the first stage has the platform's).
     fn kinematics(&self) -> &'static dyn Kinematics;
+    /// The page's exercises: their checks use the correctly rounded numbers.
+    fn exercises(&self) -> &'static [Exercise];
     /// The canvases changed size.
     fn layout(&self, ink: Ink);
     /// The heatmap's painted grid, axes and legend.
@@ -218,6 +221,10 @@ impl HeatHost for LoadedPanels {
 impl Panels for LoadedPanels {
     fn kinematics(&self) -> &'static dyn Kinematics {
         crate::planar2r::EXACT
+    }
+
+    fn exercises(&self) -> &'static [Exercise] {
+        &crate::view::exercises::ik2r::EXERCISES
     }
 
     fn layout(&self, ink: Ink) {

@@ -27,6 +27,7 @@ use web_sys::{Element, HtmlCanvasElement, HtmlInputElement, KeyboardEvent};
 
 use crate::recipes::pendulum_energy::{Integrator, PendulumParams};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::frame::reduced_motion;
 use crate::ui::kit::keymap;
 use crate::ui::kit::page_root::PageRoot;
@@ -36,6 +37,7 @@ use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
+use crate::view::exercises::{self, PageModel};
 use crate::view::pendulum::{cli_args, other, PageQuery, Track};
 
 /// Speeds, multiples of real time.
@@ -118,7 +120,10 @@ enum EndNotice {
 }
 
 /// The mounted page.
-pub struct PendulumPage(Rc<Inner>);
+pub struct PendulumPage {
+    inner: Rc<Inner>,
+    _exercises: ExerciseSlot,
+}
 
 struct Inner {
     me: Weak<Inner>,
@@ -160,6 +165,7 @@ struct Inner {
 
 impl Page for PendulumPage {
     fn mount(ctx: MountCtx) -> Result<PendulumPage, JsValue> {
+        let exercises_root = ctx.root.clone();
         let root = PageRoot::fill(&ctx.root, &markup::page(), "pend", "pendulum")?;
         let (query, ignored) = PageQuery::read(&ctx.query);
         let url_notice = UrlNotice::new(root.role("url-notice")?, ignored)?;
@@ -242,15 +248,28 @@ impl Page for PendulumPage {
             }
             None => {}
         }
-        Ok(PendulumPage(inner))
+        let me = Rc::downgrade(&inner);
+        let exercises = ExerciseSlot::new(
+            &exercises_root,
+            &exercises::pendulum::EXERCISES,
+            Box::new(move |use_model| {
+                if let Some(inner) = me.upgrade() {
+                    use_model(&PageModel::Pendulum(&inner.sim.borrow().params));
+                }
+            }),
+        )?;
+        Ok(PendulumPage {
+            inner,
+            _exercises: exercises,
+        })
     }
 
     fn relocalize(&self) {
-        self.0.relocalize();
+        self.inner.relocalize();
     }
 
     fn set_projector(&self, _on: bool) {
-        self.0.relayout();
+        self.inner.relayout();
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
@@ -258,8 +277,8 @@ impl Page for PendulumPage {
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        self.0.stop_looping();
-        self.0
+        self.inner.stop_looping();
+        self.inner
             .stepper
             .borrow()
             .as_ref()

@@ -1,6 +1,7 @@
 //! The PID step drill: its sliders, readouts and key; the runs (the one shown, the last
 //! committed, the ghost), their figures, warnings and announcement.
 
+use crate::view::exercises::{self, Exercise, PageModel};
 use std::cell::{Cell, RefCell};
 
 use wasm_bindgen::JsValue;
@@ -101,6 +102,12 @@ impl SignalPage for PidPage {
                      <p class=\"sig-note\" data-i18n=\"pid-ghost-note\"></p>",
         under_readouts: "<p class=\"sig-note\" data-i18n=\"pid-ro-note\"></p>",
     };
+
+    const EXERCISES: &'static [Exercise] = &exercises::pid_step::EXERCISES;
+
+    fn exercise_model(params: &Self::Params) -> PageModel<'_> {
+        PageModel::PidStep(params)
+    }
 
     fn summarize(_: &PidParams, rows: &[PidSample]) -> Summary {
         Summary {

@@ -32,6 +32,7 @@ use crate::i18n::FluentArg;
 use crate::recipes::rrt_2d::RrtOutcome;
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::keymap;
 use crate::ui::kit::message_line::MessageLine;
 use crate::ui::kit::page_root::PageRoot;
@@ -41,6 +42,7 @@ use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
+use crate::view::exercises::{self, PageModel};
 use crate::view::rrt::{
     add_box, delete_box, drag, hit_test, phases, Grab, PageState, Phase, Refusal, IT_KEY,
 };
@@ -72,7 +74,10 @@ const MOUNT_SLICE_MS: f64 = 4.0;
 type DragStart = (Grab, [f64; 2], PageState);
 
 /// The mounted page.
-pub struct RrtPage(Rc<Inner>);
+pub struct RrtPage {
+    inner: Rc<Inner>,
+    _exercises: ExerciseSlot,
+}
 
 struct Inner {
     me: Weak<Inner>,
@@ -133,6 +138,7 @@ fn js_error(e: &RecipeError) -> JsValue {
 
 impl Page for RrtPage {
     fn mount(ctx: MountCtx) -> Result<RrtPage, JsValue> {
+        let exercises_root = ctx.root.clone();
         let root = PageRoot::fill(&ctx.root, &markup::page(), "rrt", "rrt")?;
         let (state, ignored) = PageState::read(&ctx.query);
         let url_notice = UrlNotice::new(root.role("url-notice")?, ignored)?;
@@ -207,15 +213,30 @@ impl Page for RrtPage {
         // The canvases are sized and drawn by the stage's first ResizeObserver callback, in
         // the first frame after its layout and before its paint: measuring them here would
         // force the whole page's first layout inside the mount's task.
-        Ok(RrtPage(inner))
+        let me = Rc::downgrade(&inner);
+        let exercises = ExerciseSlot::new(
+            &exercises_root,
+            &exercises::rrt::EXERCISES,
+            Box::new(move |use_model| {
+                if let Some(inner) = me.upgrade() {
+                    if let Ok(setup) = inner.state.borrow().setup() {
+                        use_model(&PageModel::Rrt(&setup));
+                    }
+                }
+            }),
+        )?;
+        Ok(RrtPage {
+            inner,
+            _exercises: exercises,
+        })
     }
 
     fn relocalize(&self) {
-        self.0.relocalize();
+        self.inner.relocalize();
     }
 
     fn set_projector(&self, _on: bool) {
-        self.0.relayout();
+        self.inner.relayout();
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
@@ -223,7 +244,7 @@ impl Page for RrtPage {
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        self.0.on_key(event)
+        self.inner.on_key(event)
     }
 }
 

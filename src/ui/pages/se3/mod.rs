@@ -32,6 +32,7 @@ use crate::recipes::run_raw_of;
 use crate::recipes::se3_relative::{self, Se3Params, CSV_NAME, INFO};
 use crate::ui::kit::canvas::{Ink, LayeredCanvas};
 use crate::ui::kit::drag::{DragEvent, PointerKind};
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::exports::Exports;
 use crate::ui::kit::keymap;
 use crate::ui::kit::orbit::{self, OrbitOptions, OrbitView};
@@ -43,6 +44,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
+use crate::view::exercises::{self, PageModel};
 use crate::view::se3_relative::{
     dragged_origin, hit_gizmo, position_texts, ring_radius, scene_frame, solve, wrap_angle, yaw_at,
     yaw_text, AngleUnit, Grab, PoseFields, Solved, VIEW_KEY,
@@ -73,7 +75,10 @@ struct DragStart {
 }
 
 /// The mounted page.
-pub struct Se3Page(Rc<Inner>);
+pub struct Se3Page {
+    inner: Rc<Inner>,
+    _exercises: ExerciseSlot,
+}
 
 struct Inner {
     me: Weak<Inner>,
@@ -109,6 +114,7 @@ fn js_error(e: &crate::error::RecipeError) -> JsValue {
 
 impl Page for Se3Page {
     fn mount(ctx: MountCtx) -> Result<Se3Page, JsValue> {
+        let exercises_root = ctx.root.clone();
         let root = PageRoot::fill(&ctx.root, &markup::page(), P, P)?;
         let (fields, ignored) = PoseFields::read(&ctx.query);
         let preset = ctx.get(VIEW_KEY).and_then(Preset::from_id);
@@ -163,11 +169,24 @@ impl Page for Se3Page {
         inner.show_commands();
         inner.show_numbers();
         inner.redraw();
-        Ok(Se3Page(inner))
+        let me = Rc::downgrade(&inner);
+        let exercises = ExerciseSlot::new(
+            &exercises_root,
+            &exercises::se3_relative::EXERCISES,
+            Box::new(move |use_model| {
+                if let Some(inner) = me.upgrade() {
+                    use_model(&PageModel::Se3(&inner.poses.borrow().params()));
+                }
+            }),
+        )?;
+        Ok(Se3Page {
+            inner,
+            _exercises: exercises,
+        })
     }
 
     fn relocalize(&self) {
-        let p = &self.0;
+        let p = &self.inner;
         p.poses.borrow_mut().relocalize();
         p.exports.relocalize();
         p.notice.relocalize();
@@ -187,7 +206,7 @@ impl Page for Se3Page {
     }
 
     fn set_projector(&self, _on: bool) {
-        self.0.relayout();
+        self.inner.relayout();
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
@@ -195,7 +214,7 @@ impl Page for Se3Page {
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        self.0.on_key(event)
+        self.inner.on_key(event)
     }
 }
 

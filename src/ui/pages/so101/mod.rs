@@ -40,6 +40,7 @@ use crate::teleop::session::{
 use crate::ui::kit::bench_log::push_ms;
 use crate::ui::kit::chunk_fns::ChunkFns;
 use crate::ui::kit::drag::DragEvent;
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::frame::FrameLoop;
 use crate::ui::kit::late_page::LatePage;
 use crate::ui::kit::pilot_session::{clear_files, read_files, EPISODE_CSVS, RESTORE_TEXTS};
@@ -52,6 +53,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
+use crate::view::exercises::{self, PageModel};
 use crate::view::so101::{apply_settings, drag_axes, settings_texts, Handle, SETTING_KEYS};
 use crate::view::teleop_input::{Accumulator, GAMEPAD_DEAD_ZONE};
 use glam::DVec3;
@@ -104,6 +106,8 @@ struct Inner {
     files: ChunkFns<files::Files>,
     /// The LeRobot dataset's export.
     dataset: dataset_export::DatasetSlot,
+    /// The exercises section, made once the page is.
+    exercises: RefCell<Option<ExerciseSlot>>,
 }
 
 /// Steps simulated again per slice of the load (a few ms of work).
@@ -280,6 +284,7 @@ impl Inner {
             restored,
             files: files.map_or_else(ChunkFns::default, ChunkFns::ready),
             dataset,
+            exercises: RefCell::new(None),
         });
         inner.write_settings();
         // The first slice of a stored session's load, then everything shown (`show_all`).
@@ -306,6 +311,18 @@ impl Inner {
         // frame does not wait on its requests; a failure is said only when the pilot asks for
         // a file.
         crate::ui::schedule::after_paint_for(&inner.me, |p| p.with_files(false, |_, _| {}))?;
+        let me = inner.me.clone();
+        let exercises = ExerciseSlot::new(
+            &root,
+            &exercises::so101::EXERCISES,
+            Box::new(move |use_model| {
+                if let Some(p) = me.upgrade() {
+                    let q = p.practice.borrow().recorder.sim().state().q;
+                    use_model(&PageModel::So101 { q });
+                }
+            }),
+        )?;
+        *inner.exercises.borrow_mut() = Some(exercises);
         Ok(inner)
     }
 
@@ -917,6 +934,9 @@ impl Inner {
         let ended = self.run_steps(n);
         if n > 0 {
             self.announce_pose();
+            if let Some(exercises) = self.exercises.borrow().as_ref() {
+                exercises.changed();
+            }
         }
         if self.practice.borrow().session.preflight != preflight {
             self.show_all();

@@ -43,6 +43,7 @@ use web_sys::{Element, Event as DomEvent, HtmlCanvasElement, KeyboardEvent, Poin
 use crate::teleop::session::{episode_file_name, InputDevice, Module};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::chunk_fns::ChunkFns;
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::late_page::LatePage;
 use crate::ui::kit::pilot_session::{open_error_text, StorageWarning, RESTORE_TEXTS};
 use crate::ui::kit::review::{Review, SharedReplay};
@@ -52,6 +53,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::page_frame;
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
+use crate::view::exercises::{self, PageModel};
 use crate::view::teleop_input::{key_action, KeyAction};
 
 use controls::{Controls, Ended};
@@ -94,6 +96,8 @@ struct Inner {
     loader: Rc<Loader>,
     frame: RefCell<Option<FrameLoop>>,
     scope: RefCell<Scope>,
+    /// The exercises section, made once the page is.
+    exercises: RefCell<Option<ExerciseSlot>>,
 }
 
 /// The Robot Pilot page: built at once, or, when the browser holds a stored session, once
@@ -206,6 +210,7 @@ impl Inner {
             loader,
             frame: RefCell::new(None),
             scope: RefCell::new(Scope::new()),
+            exercises: RefCell::new(None),
         });
         inner.install()?;
         inner.view.borrow_mut().fit();
@@ -222,6 +227,19 @@ impl Inner {
         // frame does not wait on its requests; a failure is said only when the pilot asks for
         // a file.
         crate::ui::schedule::after_paint_for(&inner.me, |p| p.with_files(false, |_, _| {}))?;
+        let me = inner.me.clone();
+        let exercises = ExerciseSlot::new(
+            &root,
+            &exercises::teleop::EXERCISES,
+            Box::new(move |use_model| {
+                if let Some(p) = me.upgrade() {
+                    let live = p.live.borrow();
+                    let (arm, q) = (&live.sim.config().arm, live.sim.state().q);
+                    use_model(&PageModel::Teleop { arm, q });
+                }
+            }),
+        )?;
+        *inner.exercises.borrow_mut() = Some(exercises);
         Ok(inner)
     }
 
@@ -451,6 +469,9 @@ impl Inner {
         }
         if stepped.ended {
             self.finish_episode();
+        }
+        if let Some(exercises) = self.exercises.borrow().as_ref() {
+            exercises.changed();
         }
         self.draw_live(t_ms);
         bench::record(now_ms() - started_ms);

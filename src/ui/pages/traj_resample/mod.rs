@@ -31,6 +31,7 @@ use crate::recipes::{CsvFile, Plan};
 use crate::ui::ctx::{self, t_strings};
 use crate::ui::dom;
 use crate::ui::kit::canvas::Ink;
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::exports::Exports;
 use crate::ui::kit::form::{recipe_messages, Form, Message, RECIPE_GROUPS};
 use crate::ui::kit::input_file::{self, Picked, ReadProblem};
@@ -45,6 +46,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{after_paint, now_ms, Timer};
 use crate::view::command_line::RunArgs;
 use crate::view::envelope::{csv_envelope, Envelope, BUCKETS};
+use crate::view::exercises::{self, PageModel};
 use crate::view::form::{recipe_fields, runs_while_typing, validate};
 use crate::view::traj_resample::{file_too_large, readings, PageQuery};
 use markup::PREFIX;
@@ -120,7 +122,10 @@ enum Status {
 }
 
 /// The mounted page.
-pub struct TrajResample(Rc<Inner>);
+pub struct TrajResample {
+    inner: Rc<Inner>,
+    _exercises: ExerciseSlot,
+}
 
 struct Inner {
     me: Weak<Inner>,
@@ -156,6 +161,7 @@ fn target(event: &Event) -> Option<Element> {
 
 impl Page for TrajResample {
     fn mount(mount: MountCtx) -> Result<TrajResample, JsValue> {
+        let exercises_root = mount.root.clone();
         let root = PageRoot::fill(&mount.root, &markup::page(), "traj", "traj-resample")?;
         let (query, ignored) = PageQuery::read(&mount.query);
         let url_notice = UrlNotice::new(root.role("url-notice")?, ignored)?;
@@ -220,16 +226,31 @@ impl Page for TrajResample {
         inner.run();
         inner.render_result();
         inner.render_status();
-        Ok(TrajResample(inner))
+        let me = Rc::downgrade(&inner);
+        let exercises = ExerciseSlot::new(
+            &exercises_root,
+            &exercises::traj_resample::EXERCISES,
+            Box::new(move |use_model| {
+                if let Some(inner) = me.upgrade() {
+                    if let Some((trajectory, dt)) = inner.exercise_model() {
+                        use_model(&PageModel::TrajResample(&trajectory, dt));
+                    }
+                }
+            }),
+        )?;
+        Ok(TrajResample {
+            inner,
+            _exercises: exercises,
+        })
     }
 
     fn relocalize(&self) {
-        self.0.relocalize();
+        self.inner.relocalize();
     }
 
     fn set_projector(&self, _on: bool) {
-        self.0.joints.borrow_mut().relayout();
-        self.0.draw();
+        self.inner.joints.borrow_mut().relayout();
+        self.inner.draw();
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
@@ -246,17 +267,17 @@ impl Page for TrajResample {
         }
         match event.key().as_str() {
             "o" => {
-                if let Some(input) = self.0.form.borrow().file_input() {
+                if let Some(input) = self.inner.form.borrow().file_input() {
                     input.click();
                 }
                 true
             }
             "s" => {
-                self.0.use_sample();
+                self.inner.use_sample();
                 true
             }
             "d" => {
-                self.0.download(RESAMPLED_NAME);
+                self.inner.download(RESAMPLED_NAME);
                 true
             }
             _ => false,
@@ -265,6 +286,25 @@ impl Page for TrajResample {
 }
 
 impl Inner {
+    /// What the exercises check: the trajectory read (the sample or a file read on the page;
+    /// none for a big file the worker reads, or one that does not read) and the step `dt`
+    /// (the recipe's default while the field is empty).
+    fn exercise_model(&self) -> Option<(traj_resample::Trajectory, f64)> {
+        let trajectory = match &*self.source.borrow() {
+            Source::Sample => traj_resample::parse_trajectory(SAMPLE),
+            Source::Text { text, .. } => traj_resample::parse_trajectory(text),
+            Source::File { .. } | Source::Missing(_) => return None,
+        }
+        .ok()?;
+        let dt_text = self.dt_text();
+        let dt = if dt_text.is_empty() {
+            traj_resample::ResampleParams::default().dt
+        } else {
+            dt_text.parse().ok()?
+        };
+        Some((trajectory, dt))
+    }
+
     /// The URL pairs now.
     fn url_pairs(&self) -> Vec<(String, String)> {
         let dt = self.dt_text();

@@ -1,6 +1,7 @@
 //! The trapezoid-profile drill: its sliders, readouts and keys; the phases' readouts, the
 //! triangle note and the announcement of a run; the handles' drags.
 
+use crate::view::exercises::{self, Exercise, PageModel};
 use std::cell::RefCell;
 
 use glam::DVec2;
@@ -64,6 +65,12 @@ impl SignalPage for TrapPage {
                      <p class=\"sig-note\" data-i18n=\"trap-drag-hint\"></p>",
         under_readouts: "",
     };
+
+    const EXERCISES: &'static [Exercise] = &exercises::trapezoid_profile::EXERCISES;
+
+    fn exercise_model(params: &Self::Params) -> PageModel<'_> {
+        PageModel::Trapezoid(params)
+    }
 
     fn summarize(_: &TrapParams, _: &[TrapSample]) {}
 

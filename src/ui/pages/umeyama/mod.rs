@@ -39,6 +39,7 @@ use crate::pyfmt::py_float;
 use crate::recipes::umeyama_2d::{setup_from_args, UmeyamaSetup, INFO, POINTS_CSV};
 use crate::ui::kit::canvas::{focus_without_scroll, Ink};
 use crate::ui::kit::drag::{Drag, DragEvent, PointerKind};
+use crate::ui::kit::exercise_slot::ExerciseSlot;
 use crate::ui::kit::keymap;
 use crate::ui::kit::message_line::MessageLine;
 use crate::ui::kit::page_root::PageRoot;
@@ -51,6 +52,7 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::drag::HandleShape;
+use crate::view::exercises::{self, PageModel};
 use crate::view::signal::{sig, Slider};
 use crate::view::umeyama_2d::{
     add_point, editable, hit_test, key_step_target, move_point, new_point_spot, next_selection,
@@ -118,7 +120,10 @@ const SLIDERS: [Slider; 6] = [
 ];
 
 /// The mounted page.
-pub struct UmeyamaPage(Rc<Inner>);
+pub struct UmeyamaPage {
+    inner: Rc<Inner>,
+    _exercises: ExerciseSlot,
+}
 
 struct Inner {
     me: Weak<Inner>,
@@ -171,6 +176,7 @@ fn refusal_text(r: Refusal) -> String {
 
 impl Page for UmeyamaPage {
     fn mount(ctx: MountCtx) -> Result<UmeyamaPage, JsValue> {
+        let exercises_root = ctx.root.clone();
         let root = PageRoot::fill(&ctx.root, &markup::page(), P, P)?;
         let controls = RecipeControls::mount_later(
             &root,
@@ -259,22 +265,35 @@ impl Page for UmeyamaPage {
                 }),
             )
         })?;
-        Ok(UmeyamaPage(inner))
+        let me = Rc::downgrade(&inner);
+        let exercises = ExerciseSlot::new(
+            &exercises_root,
+            &exercises::umeyama_2d::EXERCISES,
+            Box::new(move |use_model| {
+                if let Some(inner) = me.upgrade() {
+                    use_model(&PageModel::Umeyama(&inner.scene.borrow().setup));
+                }
+            }),
+        )?;
+        Ok(UmeyamaPage {
+            inner,
+            _exercises: exercises,
+        })
     }
 
     fn relocalize(&self) {
-        self.0.controls.relocalize();
-        if let Some(s) = self.0.stepper.borrow().as_ref() {
+        self.inner.controls.relocalize();
+        if let Some(s) = self.inner.stepper.borrow().as_ref() {
             s.relocalize();
         }
-        self.0.refusal.relocalize();
-        self.0.selection.forget();
-        self.0.show_selection();
-        self.0.redraw();
+        self.inner.refusal.relocalize();
+        self.inner.selection.forget();
+        self.inner.show_selection();
+        self.inner.redraw();
     }
 
     fn set_projector(&self, _on: bool) {
-        self.0.relayout();
+        self.inner.relayout();
     }
 
     fn shortcuts(&self) -> Vec<Shortcut> {
@@ -282,7 +301,7 @@ impl Page for UmeyamaPage {
     }
 
     fn on_key(&self, event: &KeyboardEvent) -> bool {
-        let p = &self.0;
+        let p = &self.inner;
         if !keymap::has_command_modifier(event) {
             match (event.key().as_str(), event.shift_key()) {
                 ("Delete" | "Backspace", _) => p.remove_point(),
