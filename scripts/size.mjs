@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1540 * KB;
+export const CEILING = 1640 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -29,21 +29,21 @@ export function routeBudget(route) {
 /** What `make test` allows each route's first load: its size now plus about 10 KB, and never
  * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
-  home: 198,
-  'ik-2r': 242,
-  'dh-fk': 300,
-  'se3-relative': 304,
-  'umeyama-2d': 317,
-  'pendulum-energy': 301,
-  'pid-step': 287,
-  'cubic-path': 294,
-  'trapezoid-profile': 290,
-  'traj-resample': 309,
-  'rrt-2d': 283,
-  teleop: 320,
+  home: 200,
+  'ik-2r': 247,
+  'dh-fk': 306,
+  'se3-relative': 312,
+  'umeyama-2d': 323,
+  'pendulum-energy': 306,
+  'pid-step': 293,
+  'cubic-path': 300,
+  'trapezoid-profile': 296,
+  'traj-resample': 315,
+  'rrt-2d': 289,
+  teleop: 325,
   so101: 350,
-  drills: 303,
-  lesson: 234,
+  drills: 306,
+  lesson: 236,
 };
 /** The ceiling of a route (a route not in the table has the largest). */
 export function routeCeiling(route) {

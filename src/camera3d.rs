@@ -5,7 +5,11 @@
 //! Plain Rust so `cargo test` covers it; the pages draw the projected points with the
 //! canvas 2D API (no WebGL, no JS framework).
 
+use crate::math;
 use glam::{DVec2, DVec3};
+
+/// ln 1.15: the log of one wheel notch's zoom.
+const LN_ZOOM_STEP: f64 = 0.139_761_942_375_158_63;
 
 /// The named views a page offers as buttons.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -93,8 +97,9 @@ impl Camera {
         let r = radius.max(1e-6);
         let aspect = if height > 0.0 { width / height } else { 1.0 };
         // Fit the sphere in the narrower of the two fields of view.
-        let half = (fov_y / 2.0).tan() * aspect.min(1.0);
-        let distance = r / half.atan().sin();
+        let half = math::tan(fov_y / 2.0) * aspect.min(1.0);
+        // sin(atan h) = h / √(1 + h²)
+        let distance = r * (1.0 + half * half).sqrt() / half;
         Camera {
             target,
             azimuth,
@@ -115,8 +120,8 @@ impl Camera {
 
     /// The eye position.
     pub fn eye(&self) -> DVec3 {
-        let (se, ce) = self.elevation.sin_cos();
-        let (sa, ca) = self.azimuth.sin_cos();
+        let (se, ce) = math::sincos(self.elevation);
+        let (sa, ca) = math::sincos(self.azimuth);
         self.target + self.distance * DVec3::new(ce * ca, ce * sa, se)
     }
 
@@ -130,7 +135,7 @@ impl Camera {
 
     /// Pixels per metre at unit depth.
     fn focal_px(&self) -> f64 {
-        (self.height / 2.0) / (self.fov_y / 2.0).tan()
+        (self.height / 2.0) / math::tan(self.fov_y / 2.0)
     }
 
     /// Where a world point lands on the canvas, or `None` when it is behind the eye.
@@ -193,10 +198,11 @@ impl Camera {
             .clamp(Self::MIN_DISTANCE_FACTOR * r, Self::MAX_DISTANCE_FACTOR * r);
     }
 
-    /// The zoom factor of a wheel event's `deltaY` (pixels): one notch (100 px) is ×1.15.
+    /// The zoom factor of a wheel event's `deltaY` (pixels): one notch (100 px) is ×1.15
+    /// (`exp(ln 1.15 · notches)`).
     pub fn wheel_factor(delta_y: f64) -> f64 {
         if delta_y.is_finite() {
-            1.15f64.powf(-delta_y.clamp(-500.0, 500.0) / 100.0)
+            math::exp(LN_ZOOM_STEP * -delta_y.clamp(-500.0, 500.0) / 100.0)
         } else {
             1.0
         }

@@ -8,6 +8,19 @@
 //! Kernels therefore call these functions, never the `f64` methods. `sqrt` is exact in IEEE
 //! arithmetic everywhere and stays `f64::sqrt`.
 
+/// tan x, as sin x / cos x (within an ulp or two; for views, not for kernels' output).
+#[inline]
+pub fn tan(x: f64) -> f64 {
+    let (s, c) = sincos(x);
+    s / c
+}
+
+/// atan x, as atan2(x, 1).
+#[inline]
+pub fn atan(x: f64) -> f64 {
+    atan2(x, 1.0)
+}
+
 /// sin x.
 #[inline]
 pub fn sin(x: f64) -> f64 {

@@ -287,5 +287,5 @@ pub fn jaw_aligned(chain: &Chain, cube_rot: &Mat3) -> bool {
                 .abs()
         })
         .fold(0.0, f64::max);
-    best >= GRASP_ALIGN_DEG.to_radians().cos()
+    best >= crate::math::sincos(GRASP_ALIGN_DEG.to_radians()).1
 }

@@ -10,6 +10,7 @@
 //! screen pixels. The kit's `orbit` widget paints the marks with the canvas 2D API; this
 //! module is pure so `cargo test` covers the projection, clipping and ordering.
 
+use crate::math;
 use glam::{DMat3, DVec2, DVec3};
 
 use crate::camera3d::{ground_grid, Camera};
@@ -407,7 +408,7 @@ pub fn arrow_wings(from: DVec2, to: DVec2, width_px: f64) -> [DVec2; 2] {
     }
     let head = (HEAD_BASE_PX + HEAD_PER_WIDTH * width_px).min(HEAD_MAX_FRACTION * len);
     let back = -v / len * head;
-    let (s, c) = HEAD_HALF_ANGLE.sin_cos();
+    let (s, c) = math::sincos(HEAD_HALF_ANGLE);
     let rot = |w: DVec2, s: f64| DVec2::new(w.x * c - w.y * s, w.x * s + w.y * c);
     [to + rot(back, s), to + rot(back, -s)]
 }

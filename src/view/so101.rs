@@ -7,6 +7,7 @@
 //! dragging it commands motion along or about that axis only while held) and the readout
 //! texts.
 
+use crate::math;
 use glam::{DMat3, DVec2, DVec3};
 
 use crate::camera3d::{hit_point, Camera};
@@ -317,7 +318,8 @@ pub fn ring_points(at: DVec3, k: usize) -> Vec<DVec3> {
     (0..RING_POINTS)
         .map(|i| {
             let a = std::f64::consts::TAU * i as f64 / RING_POINTS as f64;
-            at + (u * a.cos() + v * a.sin()) * RING_M
+            let (sin, cos) = math::sincos(a);
+            at + (u * cos + v * sin) * RING_M
         })
         .collect()
 }
@@ -430,7 +432,7 @@ pub fn drag_axes(
                 return out;
             }
             // Screen y points down: a clockwise turn on screen is a positive angle here.
-            let turn = (a.x * b.y - a.y * b.x).atan2(a.dot(b));
+            let turn = math::atan2(a.x * b.y - a.y * b.x, a.dot(b));
             let from_plus = (camera.eye() - tool).dot(axis(k)) >= 0.0;
             let sign = if from_plus { -1.0 } else { 1.0 };
             out[3 + k.min(2)] = (sign * turn / 0.5).clamp(-1.0, 1.0);
@@ -475,12 +477,9 @@ pub fn wrist_camera(chain: &Chain, width: f64, height: f64) -> Camera {
     let back = eye - target;
     let distance = back.length();
     let back = back / distance;
-    let elevation = back
-        .z
-        .clamp(-1.0, 1.0)
-        .asin()
-        .clamp(-Camera::MAX_ELEVATION, Camera::MAX_ELEVATION);
-    let azimuth = back.y.atan2(back.x);
+    let elevation =
+        math::asin(back.z.clamp(-1.0, 1.0)).clamp(-Camera::MAX_ELEVATION, Camera::MAX_ELEVATION);
+    let azimuth = math::atan2(back.y, back.x);
     Camera {
         target,
         azimuth,
@@ -574,8 +573,8 @@ pub fn settings_texts(config: &SceneConfig) -> Vec<(&'static str, String)> {
 /// image rolls with the tool, wrist_roll included, as a camera on the wrist does.
 pub fn wrist_view(chain: &Chain, width: f64, height: f64) -> (Camera, f64) {
     let base = wrist_camera(chain, width, height);
-    let side = width.hypot(height);
-    let fov_y = 2.0 * ((base.fov_y / 2.0).tan() * side / height.max(1.0)).atan();
+    let side = (width * width + height * height).sqrt();
+    let fov_y = 2.0 * math::atan(math::tan(base.fov_y / 2.0) * side / height.max(1.0));
     let camera = Camera {
         fov_y,
         width: side,
@@ -585,7 +584,7 @@ pub fn wrist_view(chain: &Chain, width: f64, height: f64) -> (Camera, f64) {
     let t = &chain.tool;
     let ahead_up = DVec3::new(t.rot[0][2], t.rot[1][2], t.rot[2][2]);
     let (right, up, _) = camera.basis();
-    let roll = ahead_up.dot(right).atan2(ahead_up.dot(up));
+    let roll = math::atan2(ahead_up.dot(right), ahead_up.dot(up));
     (camera, roll)
 }
 
