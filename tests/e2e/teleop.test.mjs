@@ -1025,7 +1025,7 @@ for (const lang of ['en', 'ja']) {
       const stored = await page.evaluate(() => localStorage.getItem('bsv.teleop.session'));
       assert.ok(stored, 'the episode is stored');
       // The code that reads the stored session (the files' chunk) cannot be fetched.
-      const pattern = /\/pkg\/(pack_teleop_files\.bin|chunks\/split_teleop_files\.wasm)$/;
+      const pattern = /\/pkg\/(pack_teleop_files(-after-\w+)?\.bin|chunks\/split_teleop_files\.wasm)$/;
       await context.route(pattern, (r) => r.fulfill({ status: 404, body: 'not found' }));
       await page.reload();
       await page.waitForFunction(() => document.documentElement.dataset.appReady === '1');

@@ -121,6 +121,13 @@ fn load(list: Weak<List>) {
     });
 }
 
+/// Whether the list's strings are here in the language shown: right after a switch of
+/// language they are not until [`LangFollow`] has fetched them, and the list is drawn then;
+/// a goal checked meanwhile (a pilot page's frame) draws nothing.
+fn strings_here() -> bool {
+    FILES.iter().all(|file| ctx::has_file(ctx::lang(), file))
+}
+
 /// Whether `target` is inside `element`.
 fn inside(element: &Element, target: Option<web_sys::EventTarget>) -> bool {
     target
@@ -501,7 +508,7 @@ impl List {
     }
 
     fn draw_card(&self, i: usize) {
-        if let Some(card) = self.cards.borrow().get(i) {
+        if let Some(card) = self.cards.borrow().get(i).filter(|_| strings_here()) {
             card.draw();
         }
         self.hide_answers();
@@ -526,6 +533,9 @@ impl List {
     }
 
     fn draw_lede(&self) {
+        if !strings_here() {
+            return;
+        }
         let record = progress_store::load();
         let cards = self.cards.borrow();
         let done = cards
@@ -545,10 +555,12 @@ impl List {
     }
 
     fn draw_all(&self) {
-        for card in self.cards.borrow().iter() {
-            card.draw();
+        if strings_here() {
+            for card in self.cards.borrow().iter() {
+                card.draw();
+            }
+            self.draw_lede();
         }
-        self.draw_lede();
         self.hide_answers();
     }
 }
