@@ -15,6 +15,7 @@ use std::cell::{Cell, RefCell};
 use wasm_bindgen::prelude::*;
 use web_sys::Element;
 
+use crate::ui::kit::exercise_link::{EXERCISES_SECTION, PRESENT_EXERCISE_ATTR};
 use crate::ui::split_point::split_point;
 use crate::ui::{dom, router, schedule};
 use crate::view::sections;
@@ -124,11 +125,24 @@ pub(crate) fn stop() {
     WATCH.with_borrow_mut(Vec::clear);
 }
 
-/// The shown section `id` of the page (`None` while it is absent or hidden).
+/// The shown section `id` of the page (`None` while it is absent or hidden); for the exercises
+/// section of a step about one exercise, that exercise's card once it is there.
 fn find(id: &str) -> Option<Element> {
-    let selector = format!("#app-main [data-section=\"{id}\"]");
-    let section = dom::document().ok()?.query_selector(&selector).ok()??;
-    (section.get_bounding_client_rect().height() > 0.0).then_some(section)
+    let document = dom::document().ok()?;
+    let shown = |selector: String| {
+        document
+            .query_selector(&selector)
+            .ok()
+            .flatten()
+            .filter(|e| e.get_bounding_client_rect().height() > 0.0)
+    };
+    let presented = document
+        .document_element()
+        .and_then(|root| root.get_attribute(PRESENT_EXERCISE_ATTR))
+        .filter(|_| id == EXERCISES_SECTION);
+    presented
+        .and_then(|exercise| shown(format!("#app-main [data-exercise=\"{exercise}\"]")))
+        .or_else(|| shown(format!("#app-main [data-section=\"{id}\"]")))
 }
 
 /// Scrolls `section` into the room between the viewport's top and `bar` (the least that

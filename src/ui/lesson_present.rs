@@ -16,6 +16,9 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 use web_sys::{Element, Event};
 
+use crate::ui::kit::exercise_link::{
+    EXERCISES_SECTION, PRESENT_EXERCISE_ATTR, PRESENT_EXERCISE_EVENT,
+};
 use crate::ui::page::ShellRequest;
 use crate::ui::{ctx, dom, lesson_focus, router};
 use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
@@ -59,8 +62,11 @@ pub(crate) const HOOKS: Hooks = Hooks {
 /// redrawn; in the room's window its presenter keys go to the presenter's.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Relay<'a> {
-    /// Show this route (a lesson step) in the room's window, with its focus section.
-    Show(&'a str, Option<&'a str>),
+    /// Show this route (a lesson step) in the room's window, with its focus section and its
+    /// exercise.
+    Show(&'a str, Option<&'a str>, Option<&'a str>),
+    /// Reveal this exercise's answer in the room's window.
+    Reveal(&'a str),
     /// Step the page in the room's window.
     StepPage,
     /// Black the room's screen out, or bring it back.
@@ -143,6 +149,7 @@ pub(crate) fn present_on_two(lesson: Lesson, index: usize) -> Result<(), JsValue
 pub fn stop() -> Result<(), JsValue> {
     PRESENTING.with(|p| *p.borrow_mut() = None);
     lesson_focus::stop();
+    set_presented_exercise(None)?;
     if let Some(relay) = RELAY.take() {
         BLACK.set(false);
         relay(Relay::End);
@@ -187,6 +194,21 @@ fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
     let relay = RELAY.get();
     match action {
         PresenterAction::Stay => {}
+        PresenterAction::RevealExercise => {
+            let exercise = PRESENTING.with(|p| {
+                p.borrow()
+                    .as_ref()
+                    .and_then(|(l, pr)| l.steps.get(pr.index)?.exercise.clone())
+            });
+            if let Some(exercise) = exercise {
+                match relay {
+                    Some(relay) => relay(Relay::Reveal(&exercise)),
+                    // Nothing to reveal (a goal, an answer on screen): "next" goes on.
+                    None if !reveal_exercise(&exercise)? => return press(true),
+                    None => {}
+                }
+            }
+        }
         PresenterAction::StepPage => match relay {
             Some(relay) => relay(Relay::StepPage),
             None => requests.push(ShellRequest::StepPage),
@@ -198,10 +220,22 @@ fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
                     .and_then(|(l, _)| l.steps.get(i).cloned())
             });
             if let (Some(step), Some(relay)) = (&step, relay) {
-                relay(Relay::Show(&step.route, step.focus.as_deref()));
-            } else if let Some(LessonStep { route, focus, .. }) = step {
+                relay(Relay::Show(
+                    &step.route,
+                    step.focus.as_deref(),
+                    step.exercise.as_deref(),
+                ));
+            } else if let Some(LessonStep {
+                route,
+                focus,
+                exercise,
+                ..
+            }) = step
+            {
+                set_presented_exercise(exercise.as_deref())?;
                 if let Some(bar) = dom::document()?.get_element_by_id(BAR_ID) {
-                    lesson_focus::show(&bar, crate::view::url::parse_hash(&route).page, focus);
+                    let page = crate::view::url::parse_hash(&route).page;
+                    lesson_focus::show(&bar, page, focus_of(focus, exercise.as_deref()));
                 }
                 let window = dom::window()?;
                 if window.location().hash()? == route {
@@ -218,6 +252,47 @@ fn apply(action: PresenterAction) -> Result<Vec<ShellRequest>, JsValue> {
     }
     render()?;
     Ok(requests)
+}
+
+/// What a step brings into view: its exercise's card when it has an exercise, else its focus
+/// section.
+pub(crate) fn focus_of(focus: Option<String>, exercise: Option<&str>) -> Option<String> {
+    match exercise {
+        Some(_) => Some(EXERCISES_SECTION.to_owned()),
+        None => focus,
+    }
+}
+
+/// Marks `exercise` as the one presented (its answer hidden until revealed, its card brought
+/// into view: [`PRESENT_EXERCISE_ATTR`] on the document element), or none, and tells the
+/// page's exercises list ([`PRESENT_EXERCISE_EVENT`]).
+pub(crate) fn set_presented_exercise(exercise: Option<&str>) -> Result<(), JsValue> {
+    let document = dom::document()?;
+    let Some(root) = document.document_element() else {
+        return Ok(());
+    };
+    match exercise {
+        Some(id) => root.set_attribute(PRESENT_EXERCISE_ATTR, id)?,
+        None => root.remove_attribute(PRESENT_EXERCISE_ATTR)?,
+    }
+    dom::window()?.dispatch_event(&Event::new(PRESENT_EXERCISE_EVENT)?)?;
+    Ok(())
+}
+
+/// Reveals exercise `id`'s answer on its card ("Show the answer"); whether there was one to
+/// reveal (not for a goal, nor for an answer already shown, nor before the list is here).
+pub(crate) fn reveal_exercise(id: &str) -> Result<bool, JsValue> {
+    let selector = format!("#app-main [data-exercise=\"{id}\"] [data-action=\"reveal\"]");
+    let button = dom::document()?
+        .query_selector(&selector)?
+        .and_then(|b| b.dyn_into::<web_sys::HtmlElement>().ok());
+    match button {
+        Some(button) if !button.hidden() => {
+            button.click();
+            Ok(true)
+        }
+        _ => Ok(false),
+    }
 }
 
 /// A key while presenting, whatever has focus (the shell asks before the page and the focused

@@ -198,12 +198,19 @@ fn open_presenter(lesson: Lesson, audience: Window, perform: Perform) -> Result<
 /// What the lesson walk asks of the presenter's window.
 fn presenter_relay(relay: Relay) {
     let sent = match relay {
-        Relay::Show(route, focus) => post(&[
+        Relay::Show(route, focus, exercise) => post(&[
             ("kind", "show".into()),
             ("route", route.into()),
             ("focus", focus.map_or(JsValue::NULL, JsValue::from_str)),
+            (
+                "exercise",
+                exercise.map_or(JsValue::NULL, JsValue::from_str),
+            ),
             ("lang", ctx::lang().code().into()),
         ]),
+        Relay::Reveal(exercise) => {
+            post(&[("kind", "reveal".into()), ("exercise", exercise.into())])
+        }
         Relay::StepPage => post(&[("kind", "step".into())]),
         Relay::Black(on) => post(&[("kind", "black".into()), ("on", on.into())]),
         Relay::Share => post(&[("kind", "share".into())]),
@@ -241,7 +248,11 @@ fn on_presenter_message(data: &JsValue) -> Result<(), JsValue> {
             let step = lesson_present::current()
                 .and_then(|(lesson, p)| lesson.steps.get(p.index).cloned());
             if let Some(step) = step {
-                presenter_relay(Relay::Show(&step.route, step.focus.as_deref()));
+                presenter_relay(Relay::Show(
+                    &step.route,
+                    step.focus.as_deref(),
+                    step.exercise.as_deref(),
+                ));
             }
             if lesson_present::blacked_out()? {
                 post(&[("kind", "black".into()), ("on", true.into())])?;
@@ -627,10 +638,13 @@ fn on_audience_message(data: &JsValue) -> Result<(), JsValue> {
                 }
             }
             let document = dom::document()?;
+            let exercise = field(data, "exercise");
+            lesson_present::set_presented_exercise(exercise.as_deref())?;
             if let Some(bar) = document.get_element_by_id("lesson-bar") {
-                // Its focus section in view, as in one window.
+                // Its focus section (or exercise) in view, as in one window.
                 let page = url::parse_hash(&route).page;
-                lesson_focus::show(&bar, page, field(data, "focus"));
+                let focus = lesson_present::focus_of(field(data, "focus"), exercise.as_deref());
+                lesson_focus::show(&bar, page, focus);
             }
             let location = dom::window()?.location();
             if !same_route(&location.hash()?, &route) {
@@ -644,6 +658,12 @@ fn on_audience_message(data: &JsValue) -> Result<(), JsValue> {
             Ok(())
         }
         Some("step") => perform(ShellRequest::StepPage),
+        Some("reveal") => {
+            if let Some(exercise) = field(data, "exercise") {
+                lesson_present::reveal_exercise(&exercise)?;
+            }
+            Ok(())
+        }
         Some("black") => {
             let on = js_sys::Reflect::get(data, &JsValue::from_str("on"))?.is_truthy();
             lesson_present::cover(on)
@@ -654,6 +674,7 @@ fn on_audience_message(data: &JsValue) -> Result<(), JsValue> {
         }
         Some("end") => {
             lesson_focus::stop();
+            lesson_present::set_presented_exercise(None)?;
             leave_audience(true)
         }
         _ => Ok(()),

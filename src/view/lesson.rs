@@ -3,23 +3,28 @@
 //! stepper steps (PageDown) before the lesson moves on ("step the RRT 5 times").
 //!
 //! A step may name a section of its page as its focus ([`crate::view::sections`]): presenting
-//! the step brings that section into view (without one, the page's main view).
+//! the step brings that section into view (without one, the page's main view). A step may also
+//! be one of its page's exercises ([`crate::view::exercises::PAGE_IDS`]): presented, the step
+//! brings the page's exercises into view with that exercise's answer hidden until "next"
+//! reveals it (a goal shows live whether it is met).
 //!
 //! A lesson travels three ways, all checked here: as the `#/lesson?...` URL (indexed keys:
-//! `title`, then `r1`, `t1`, `n1`, `k1`, `f1` for step 1's route, title, note, page steps and
-//! focus...), as a `.json` file (format `bsv-lesson` version 2, version 1 read too; read and
+//! `title`, then `r1`, `t1`, `n1`, `k1`, `f1`, `x1` for step 1's route, title, note, page
+//! steps, focus and exercise...), as a `.json` file (format `bsv-lesson` version 3, versions 2
+//! and 1 read too; read and
 //! written by [`crate::view::lesson_file`]), and in the browser's storage (the same JSON). A bad
 //! file or URL gets a message naming what is wrong ([`LessonError`]); nothing half-read replaces
 //! the current lesson. A focus its page does not have is no error: [`Lesson::take_unknown_focuses`]
 //! removes it and names it for the page's notice.
 //!
-//! [`Presenter`] walks a lesson: `next` first steps the page as often as the step says, then
-//! goes to the next step; `back` goes to the previous step.
+//! [`Presenter`] walks a lesson: `next` first reveals the step's exercise, then steps the page
+//! as often as the step says, then goes to the next step; `back` goes to the previous step.
 
 use serde::Serialize;
 
 use crate::error::RecipeError;
 use crate::pyfmt::{group_u64, size_text};
+use crate::view::exercises::ids_of_page;
 use crate::view::json_file;
 use crate::view::sections;
 use crate::view::url::{self, IgnoredKey};
@@ -27,7 +32,7 @@ use crate::view::url::{self, IgnoredKey};
 /// The `format` field of a lesson file.
 pub const FORMAT: &str = "bsv-lesson";
 /// The lesson file version this build writes (it reads this one and [`FIRST_VERSION`]).
-pub const VERSION: u32 = 2;
+pub const VERSION: u32 = 3;
 /// The first lesson file version, without `focus`: read as before.
 pub const FIRST_VERSION: u32 = 1;
 /// A lesson file larger than this is refused unread (60 steps with notes of 1,000 Japanese
@@ -59,6 +64,10 @@ pub struct LessonStep {
     /// view.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub focus: Option<String>,
+    /// The id of one of the page's exercises the step is about (`data-exercise`); `None`:
+    /// none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exercise: Option<String>,
 }
 
 /// A lesson: a title and its steps.
@@ -135,6 +144,12 @@ pub enum LessonError {
     TooLong { step: usize, field: &'static str },
     /// Step `step`: more page steps than [`MAX_PAGE_STEPS`].
     TooManyPageSteps { step: usize },
+    /// Step `step`: its exercise is none of its page's.
+    UnknownExercise {
+        step: usize,
+        page: String,
+        exercise: String,
+    },
     /// The lesson's own title is longer than [`MAX_TITLE_CHARS`].
     TitleTooLong,
 }
@@ -167,6 +182,7 @@ impl LessonError {
             UnknownPage { .. } => "lesson-error-unknown-page",
             TooLong { .. } => "lesson-error-too-long",
             TooManyPageSteps { .. } => "lesson-error-page-steps",
+            UnknownExercise { .. } => "lesson-error-unknown-exercise",
         }
     }
 
@@ -246,6 +262,15 @@ impl LessonError {
                 ("max", MAX_PAGE_STEPS.to_string()),
             ],
             TitleTooLong => vec![("max", MAX_TITLE_CHARS.to_string())],
+            UnknownExercise {
+                step,
+                page,
+                exercise,
+            } => vec![
+                ("step", step.to_string()),
+                ("page", quoted(page)),
+                ("exercise", quoted(exercise)),
+            ],
         }
     }
 }
@@ -264,6 +289,7 @@ impl LessonStep {
             note: String::new(),
             page_steps: 0,
             focus: None,
+            exercise: None,
         }
     }
 
@@ -311,6 +337,15 @@ impl Lesson {
             if step.page_steps > MAX_PAGE_STEPS {
                 return Err(LessonError::TooManyPageSteps { step: n });
             }
+            if let Some(exercise) = &step.exercise {
+                if !ids_of_page(&page).contains(&exercise.as_str()) {
+                    return Err(LessonError::UnknownExercise {
+                        step: n,
+                        page,
+                        exercise: exercise.clone(),
+                    });
+                }
+            }
         }
         Ok(())
     }
@@ -330,6 +365,9 @@ impl Lesson {
             }
             if let Some(focus) = &step.focus {
                 q.push((format!("f{n}"), focus.clone()));
+            }
+            if let Some(exercise) = &step.exercise {
+                q.push((format!("x{n}"), exercise.clone()));
             }
         }
         q
@@ -372,6 +410,7 @@ impl Lesson {
                 note: get(&format!("n{n}")).unwrap_or("").to_owned(),
                 page_steps,
                 focus: get(&format!("f{n}")).map(str::to_owned),
+                exercise: get(&format!("x{n}")).map(str::to_owned),
             });
         }
         lesson.validate(is_page)?;
@@ -379,13 +418,13 @@ impl Lesson {
     }
 
     /// The keys of a `#/lesson` query that hold no part of the lesson (not `title`, nor `r`,
-    /// `t`, `n`, `k` or `f` of a step whose route `r<n>` is there), for the page's notice.
+    /// `t`, `n`, `k`, `f` or `x` of a step whose route `r<n>` is there), for the page's notice.
     pub fn ignored_keys(query: &[(String, String)]) -> Vec<IgnoredKey> {
         let has_route = |n: &str| query.iter().any(|(k, _)| *k == format!("r{n}"));
         let mut ignored: Vec<IgnoredKey> = Vec::new();
         for (key, _) in query {
             let step_key = key
-                .strip_prefix(['r', 't', 'n', 'k', 'f'])
+                .strip_prefix(['r', 't', 'n', 'k', 'f', 'x'])
                 .filter(|n| n.parse::<usize>().is_ok_and(|n| n >= 1) && !n.starts_with('0'))
                 .is_some_and(has_route);
             if key != "title" && !step_key && !ignored.iter().any(|k| &k.key == key) {
@@ -448,6 +487,9 @@ impl UnknownFocus {
 /// What a press of "next" or "back" does while presenting.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PresenterAction {
+    /// Reveal the answer of the step's exercise (its card's "Show the answer"; a goal, or an
+    /// exercise already answered, has nothing to reveal: then "next" again).
+    RevealExercise,
     /// Step the page's own stepper once (PageDown to the page).
     StepPage,
     /// Show lesson step `index` (from 0).
@@ -456,19 +498,26 @@ pub enum PresenterAction {
     Stay,
 }
 
-/// Where a presentation stands: the step shown and how many page steps it has done.
+/// Where a presentation stands: the step shown, whether its exercise was revealed and how many
+/// page steps it has done.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Presenter {
     pub index: usize,
+    pub revealed: bool,
     pub page_steps_done: u32,
 }
 
 impl Presenter {
-    /// "Next": step the page while the step asks for it, then the following lesson step.
+    /// "Next": reveal the step's exercise, step the page while the step asks for it, then the
+    /// following lesson step.
     pub fn next(&mut self, lesson: &Lesson) -> PresenterAction {
         let Some(step) = lesson.steps.get(self.index) else {
             return PresenterAction::Stay;
         };
+        if step.exercise.is_some() && !self.revealed {
+            self.revealed = true;
+            return PresenterAction::RevealExercise;
+        }
         if self.page_steps_done < step.page_steps {
             self.page_steps_done += 1;
             return PresenterAction::StepPage;
@@ -476,6 +525,7 @@ impl Presenter {
         if self.index + 1 < lesson.steps.len() {
             self.index += 1;
             self.page_steps_done = 0;
+            self.revealed = false;
             PresenterAction::Show(self.index)
         } else {
             PresenterAction::Stay
@@ -487,12 +537,14 @@ impl Presenter {
         if self.index == 0 {
             if self.page_steps_done > 0 {
                 self.page_steps_done = 0;
+                self.revealed = false;
                 return PresenterAction::Show(0);
             }
             return PresenterAction::Stay;
         }
         self.index -= 1;
         self.page_steps_done = 0;
+        self.revealed = false;
         PresenterAction::Show(self.index)
     }
 
@@ -503,6 +555,7 @@ impl Presenter {
         }
         self.index = index.min(lesson.steps.len() - 1);
         self.page_steps_done = 0;
+        self.revealed = false;
         PresenterAction::Show(self.index)
     }
 }
@@ -527,6 +580,7 @@ pub(crate) mod tests {
                     note: "Watch the goal bias: every tenth sample, say why.".into(),
                     page_steps: 5,
                     focus: Some("world".into()),
+                    exercise: None,
                 },
                 LessonStep::of_route("#/pid-step?Kp=2&lang=ja", "PID, hotter gains"),
             ],
@@ -604,6 +658,45 @@ pub(crate) mod tests {
         assert_eq!(p.back(), PresenterAction::Stay);
         assert_eq!(p.go(&lesson, 9), PresenterAction::Show(1));
         assert_eq!(p.go(&Lesson::default(), 0), PresenterAction::Stay);
+    }
+
+    #[test]
+    fn the_presenter_reveals_a_steps_exercise_before_stepping_the_page() {
+        let mut lesson = sample();
+        lesson.steps[0].exercise = Some("rrt-300".into());
+        lesson.steps[0].page_steps = 1;
+        let mut p = Presenter::default();
+        assert_eq!(p.next(&lesson), PresenterAction::RevealExercise);
+        assert_eq!(p.next(&lesson), PresenterAction::StepPage);
+        assert_eq!(p.next(&lesson), PresenterAction::Show(1));
+        assert!(!p.revealed);
+        // Back to the step: its exercise is hidden again.
+        assert_eq!(p.back(), PresenterAction::Show(0));
+        assert_eq!(p.next(&lesson), PresenterAction::RevealExercise);
+        assert_eq!(p.back(), PresenterAction::Show(0));
+        assert_eq!(p.next(&lesson), PresenterAction::RevealExercise);
+    }
+
+    #[test]
+    fn an_exercise_travels_in_the_url_and_must_be_its_pages() {
+        let mut lesson = sample();
+        lesson.steps[1].exercise = Some("pid-tune".into());
+        let query = lesson.to_query();
+        assert!(query.contains(&("x2".to_owned(), "pid-tune".to_owned())));
+        assert!(Lesson::ignored_keys(&query).is_empty());
+        assert_eq!(
+            Lesson::from_query(&query, is_page),
+            Ok(Some(lesson.clone()))
+        );
+        lesson.steps[1].exercise = Some("rrt-300".into());
+        assert_eq!(
+            Lesson::from_query(&lesson.to_query(), is_page),
+            Err(LessonError::UnknownExercise {
+                step: 2,
+                page: "pid-step".into(),
+                exercise: "rrt-300".into()
+            })
+        );
     }
 
     #[test]

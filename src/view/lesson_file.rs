@@ -1,6 +1,7 @@
-//! The lesson `.json` file (format `bsv-lesson`), written as version 2 and read as version 2 or
-//! 1 (version 2 adds a step's `focus`, the section of its page it brings into view; a version 1
-//! file reads as it always did, every step without a focus); what can be wrong with one is a
+//! The lesson `.json` file (format `bsv-lesson`), written as version 3 and read as version 3, 2
+//! or 1 (version 2 adds a step's `focus`, the section of its page it brings into view, version
+//! 3 a step's `exercise`, one of its page's exercises; an older file reads as it always did,
+//! its steps without those fields); what can be wrong with one is a
 //! [`LessonError`] naming the place (step n, field f). A focus its page does not have is no
 //! error: the page names it ([`Lesson::take_unknown_focuses`]).
 //!
@@ -23,10 +24,14 @@ use crate::view::lesson::{
     MAX_FILE_BYTES, MAX_PAGE_STEPS, MAX_STEPS, VERSION,
 };
 
-/// The fields of the file, then of a step (version 1 has no `focus`).
+/// The fields of the file, then of a step (version 2 has no `exercise`, version 1 no `focus`
+/// either).
 const FILE_FIELDS: [&str; 4] = ["format", "version", "title", "steps"];
-const STEP_FIELDS: [&str; 5] = ["route", "title", "note", "pageSteps", "focus"];
+const STEP_FIELDS: [&str; 6] = ["route", "title", "note", "pageSteps", "focus", "exercise"];
+const STEP_FIELDS_V2: [&str; 5] = ["route", "title", "note", "pageSteps", "focus"];
 const STEP_FIELDS_V1: [&str; 4] = ["route", "title", "note", "pageSteps"];
+/// The version that added `focus`.
+const FOCUS_VERSION: u64 = 2;
 
 /// The file form: the lesson with its format and version (field order as written).
 #[derive(Serialize)]
@@ -95,16 +100,16 @@ fn read(
     let version = match file.get("version") {
         None => return Err(missing(None, "version")),
         Some(Value::Number(n)) => match n.as_u64() {
-            Some(v) if v == u64::from(VERSION) || v == u64::from(FIRST_VERSION) => v,
+            Some(v) if (u64::from(FIRST_VERSION)..=u64::from(VERSION)).contains(&v) => v,
             Some(v) => return Err(LessonError::WrongVersion { found: v }),
             None => return Err(wrong_type(None, "version", Expected::WholeNumber)),
         },
         Some(_) => return Err(wrong_type(None, "version", Expected::WholeNumber)),
     };
-    let step_fields: &[&str] = if version == u64::from(FIRST_VERSION) {
-        &STEP_FIELDS_V1
-    } else {
-        &STEP_FIELDS
+    let step_fields: &[&str] = match version {
+        v if v == u64::from(FIRST_VERSION) => &STEP_FIELDS_V1,
+        FOCUS_VERSION => &STEP_FIELDS_V2,
+        _ => &STEP_FIELDS,
     };
     known_fields(file, &FILE_FIELDS, None)?;
     let title = text_field(file, "title", None)?.ok_or(missing(None, "title"))?;
@@ -140,6 +145,7 @@ fn read_step(value: &Value, n: usize, fields: &[&str]) -> Result<LessonStep, Les
     let title = text_field(step, "title", at)?.ok_or(missing(at, "title"))?;
     let note = text_field(step, "note", at)?.unwrap_or_default();
     let focus = text_field(step, "focus", at)?;
+    let exercise = text_field(step, "exercise", at)?;
     let page_steps = match step.get("pageSteps") {
         None => 0,
         Some(Value::Number(k)) => match k.as_u64() {
@@ -157,6 +163,7 @@ fn read_step(value: &Value, n: usize, fields: &[&str]) -> Result<LessonStep, Les
         note,
         page_steps,
         focus,
+        exercise,
     })
 }
 
@@ -222,10 +229,46 @@ mod tests {
         let lesson = sample();
         let text = to_json(&lesson);
         assert!(text.contains("\"format\": \"bsv-lesson\"") && text.contains("\"pageSteps\": 5"));
-        assert!(text.contains("\"version\": 2") && text.contains("\"focus\": \"world\""));
+        assert!(text.contains("\"version\": 3") && text.contains("\"focus\": \"world\""));
         // A step without a focus writes none.
         assert_eq!(text.matches("\"focus\"").count(), 1);
         assert_eq!(from_json(&text, is_page), Ok(lesson));
+    }
+
+    #[test]
+    fn a_step_exercise_round_trips_and_must_be_its_pages() {
+        let mut lesson = sample();
+        lesson.steps[0].exercise = Some("rrt-300".into());
+        let text = to_json(&lesson);
+        assert_eq!(text.matches("\"exercise\": \"rrt-300\"").count(), 1);
+        assert_eq!(from_json(&text, is_page), Ok(lesson.clone()));
+        // Another page's exercise, or none of the app's, is named with its step.
+        let other = text.replace("rrt-300", "ik-singular");
+        assert_eq!(
+            from_json(&other, is_page),
+            Err(LessonError::UnknownExercise {
+                step: 1,
+                page: "rrt-2d".into(),
+                exercise: "ik-singular".into()
+            })
+        );
+        let err = from_json(&text.replace("rrt-300", "no-such"), is_page).unwrap_err();
+        assert_eq!(err.message_id(), "lesson-error-unknown-exercise");
+        // Version 2 has no exercise: a step with one is a field it does not know.
+        let v2 = text.replace("\"version\": 3", "\"version\": 2");
+        assert_eq!(
+            from_json(&v2, is_page),
+            Err(LessonError::UnknownField {
+                step: Some(1),
+                field: "exercise".into()
+            })
+        );
+        // Version 4 is not read.
+        let v4 = text.replace("\"version\": 3", "\"version\": 4");
+        assert_eq!(
+            from_json(&v4, is_page),
+            Err(LessonError::WrongVersion { found: 4 })
+        );
     }
 
     #[test]

@@ -24,6 +24,7 @@ function editorSteps(page) {
     const select = step.querySelector('[data-field="focus"]');
     return {
       route: step.querySelector('.lesson-step-route').textContent,
+      exercise: step.querySelector('[data-field="exercise"]')?.value ?? '',
       title: step.querySelector('[data-field^="step-title-"]').value,
       focus: select.value,
       choices: Object.fromEntries([...select.options].map((o) => [o.value, o.textContent])),
@@ -31,17 +32,20 @@ function editorSteps(page) {
   }));
 }
 
-/** The shown step's focus section and the bar, as the presenter sees them. */
-function focusBoxes(page, focus) {
-  return page.evaluate((focus) => {
+/** The shown step's focus section (its exercise's card, for a step about one) and the bar, as
+ * the presenter sees them. */
+function focusBoxes(page, focus, exercise) {
+  return page.evaluate(([focus, exercise]) => {
     const box = (el) => {
       const r = el.getBoundingClientRect();
       return { top: r.top, bottom: r.bottom, left: r.left, right: r.right, height: r.height };
     };
-    const section = document.querySelector(`#app-main [data-section="${focus}"]`);
+    const section = exercise
+      ? document.querySelector(`#app-main [data-exercise="${exercise}"]`)
+      : document.querySelector(`#app-main [data-section="${focus}"]`);
     const bar = document.querySelector('[data-testid="lesson-bar"]');
     return { section: section && box(section), bar: box(bar), width: innerWidth, height: innerHeight };
-  }, focus);
+  }, [focus, exercise]);
 }
 
 /** Waits until the bar shows step `n` with its focus `focus` in view. */
@@ -76,7 +80,16 @@ for (const [key, viewport, lang] of [
       for (const [i, step] of steps.entries()) {
         await page.waitForFunction((path) => location.hash.startsWith(path), step.route.split('?')[0]);
         await shownStep(page, i + 1, step.focus);
-        const { section, bar, width, height } = await focusBoxes(page, step.focus);
+        if (step.exercise) {
+          await page.waitForFunction((id) => {
+            const card = document.querySelector(`#app-main [data-exercise="${id}"]`);
+            if (!card) return false;
+            const r = card.getBoundingClientRect();
+            const bar = document.querySelector('[data-testid="lesson-bar"]').getBoundingClientRect();
+            return r.top >= 0 && r.bottom <= bar.top;
+          }, step.exercise, { timeout: 15000 });
+        }
+        const { section, bar, width, height } = await focusBoxes(page, step.focus, step.exercise);
         const where = `${key} step ${i + 1} (${step.route}, ${step.focus})`;
         assert.ok(section && section.height > 0, `${where}: shown`);
         assert.ok(section.top >= 0 && section.left >= 0 && section.right <= width && section.bottom <= height, `${where}: inside the viewport ${JSON.stringify(section)}`);
@@ -86,8 +99,9 @@ for (const [key, viewport, lang] of [
         const shown = new URLSearchParams(await page.evaluate(() => location.hash.split('?')[1] ?? ''));
         for (const [k, v] of query) assert.equal(Number(shown.get(k)) === Number(v) ? v : shown.get(k), v, `${where}: ${k}=${v} applied`);
         if (i === 1) await page.screenshot({ path: join(OUT, `lesson-focus-${key}-${viewport.width}-${lang}.png`) });
-        // The step's page steps, then the next step.
-        for (let k = 0; k <= pageSteps[i] && i + 1 < steps.length; k += 1) await page.keyboard.press('PageDown');
+        // A prediction's answer first, then the step's page steps, then the next step.
+        const reveals = step.exercise && (await page.evaluate((id) => !document.querySelector(`[data-exercise="${id}"] [data-action="reveal"]`).hidden, step.exercise));
+        for (let k = reveals ? -1 : 0; k <= pageSteps[i] && i + 1 < steps.length; k += 1) await page.keyboard.press('PageDown');
       }
       await page.keyboard.press('Escape');
       assert.deepEqual(errors, []);
@@ -201,3 +215,44 @@ test('a version 1 file loads as before; a focus the page does not have is named,
     await close();
   }
 });
+
+for (const lang of ['en', 'ja']) {
+  test(`a step about an exercise (${lang}): its card in view, its answer hidden from the class until PageDown reveals it`, async () => {
+    const viewport = { width: 1280, height: 720 };
+    const { page, errors, close } = await openApp(server.url, `#/lesson?lang=${lang}`, { viewport, storage: PROJECTOR });
+    try {
+      await page.click('[data-builtin="energy"]');
+      // The editor names the step's exercise by its prompt, once the prompts are here.
+      const select = '.lesson-step:nth-child(3) [data-field="exercise"]';
+      await page.waitForFunction((sel) => {
+        const s = document.querySelector(sel);
+        return s?.value === 'pendulum-euler-dt' && s.selectedOptions[0].textContent !== 'pendulum-euler-dt';
+      }, select, { timeout: 15000 });
+      await page.click('[data-action="lesson-present"]');
+      await page.keyboard.press('PageDown');
+      await page.keyboard.press('PageDown');
+      await page.waitForFunction(() => location.hash.includes('timestep=0.01'));
+      const card = '#app-main [data-exercise="pendulum-euler-dt"]';
+      await page.waitForSelector(`${card}[data-exercise-state="open"]`, { timeout: 15000 });
+      await shownStep(page, 3, 'exercises');
+      const hidden = () => page.evaluate(() => [...document.querySelectorAll('#app-main [data-readout][data-ex-hidden]')].map((r) => r.dataset.readout));
+      await page.waitForFunction(() => document.querySelector('#app-main [data-readout][data-ex-hidden]'));
+      assert.ok((await hidden()).some((k) => k === 'drift' || k === 'drift-euler'), `the drift is hidden: ${await hidden()}`);
+      await page.screenshot({ path: join(OUT, `lesson-exercise-predict-${lang}.png`) });
+      // PageDown reveals the answer beside nothing predicted, and shows the readouts again.
+      await page.keyboard.press('PageDown');
+      await page.waitForSelector(`${card}[data-exercise-state="revealed"]`, { timeout: 5000 });
+      assert.deepEqual(await hidden(), []);
+      assert.match(await page.evaluate(() => location.hash), /timestep=0\.01/, 'still on the step');
+      await page.screenshot({ path: join(OUT, `lesson-exercise-revealed-${lang}.png`) });
+      // The next PageDown goes on to the next step; Escape ends and nothing stays hidden.
+      await page.keyboard.press('PageDown');
+      await page.waitForFunction(() => location.hash.startsWith('#/pid-step'));
+      await page.keyboard.press('Escape');
+      assert.equal(await page.evaluate(() => document.documentElement.hasAttribute('data-present-exercise')), false);
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  });
+}

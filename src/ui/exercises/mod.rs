@@ -16,7 +16,9 @@
 //! before the list came).
 //!
 //! While the learner predicts, the page's readouts that show the answer are blurred (the
-//! `hidden` module). The list's strings ([`FILES`]) and style ([`STYLES`]) come with it,
+//! `hidden` module), and so are those of the exercise a presented lesson step is about
+//! ([`PRESENT_EXERCISE_ATTR`]) until the presenter reveals it: the class predicts first. Its
+//! card opens for an answer even if this browser's learner answered it before. The list's strings ([`FILES`]) and style ([`STYLES`]) come with it,
 //! before it is drawn.
 
 mod card;
@@ -32,7 +34,9 @@ use web_sys::{Element, Event};
 use self::card::{note_of, Card, Note};
 use crate::i18n::FluentArg;
 use crate::ui::dom::{self, Listener};
-use crate::ui::kit::exercise_link::{ExerciseList, ListChunk, PageLink};
+use crate::ui::kit::exercise_link::{
+    ExerciseList, ListChunk, PageLink, PRESENT_EXERCISE_ATTR, PRESENT_EXERCISE_EVENT,
+};
 use crate::ui::kit::lang_follow::LangFollow;
 use crate::ui::kit::late_style;
 use crate::ui::kit::progress_panel::ProgressPanel;
@@ -167,6 +171,7 @@ impl List {
         dom::append(section, panel.element())?;
         *self.panel.borrow_mut() = Some(panel);
         self.listen(me)?;
+        self.open_presented();
         let redraw = me.clone();
         *self.follow.borrow_mut() = Some(LangFollow::new(&FILES, move || {
             if let Some(list) = redraw.upgrade() {
@@ -265,6 +270,15 @@ impl List {
             },
         )?);
         let window = dom::window()?;
+        listeners.push(Listener::for_page(
+            &window,
+            PRESENT_EXERCISE_EVENT,
+            me,
+            |list, _| {
+                list.open_presented();
+                list.draw_all();
+            },
+        )?);
         listeners.push(Listener::for_page(&window, "keyup", me, |list, event| {
             if list.used_page(event) {
                 list.check.schedule(AFTER_INPUT_MS);
@@ -514,16 +528,39 @@ impl List {
         self.hide_answers();
     }
 
+    /// The exercise a presented lesson step is about, if any.
+    fn presented() -> Option<String> {
+        dom::document()
+            .ok()?
+            .document_element()?
+            .get_attribute(PRESENT_EXERCISE_ATTR)
+    }
+
+    /// Opens the presented exercise's card for an answer (the class's), if it shows one.
+    fn open_presented(&self) {
+        let Some(id) = Self::presented() else { return };
+        for card in self.cards.borrow_mut().iter_mut() {
+            if card.exercise.id == id && !card.state.takes_answer() {
+                card.state.again(card.exercise.kind);
+                card.note = None;
+                card.shown_truth = None;
+            }
+        }
+    }
+
     /// Blurs the readouts that show the answer of a prediction being made (its field in use,
-    /// or typed in, or a wrong try), and only those.
+    /// or typed in, or a wrong try, or the presented exercise's before it is revealed), and
+    /// only those.
     fn hide_answers(&self) {
         let cards = self.cards.borrow();
+        let presented = Self::presented();
         let keys: Vec<&str> = cards
             .iter()
             .enumerate()
             .filter(|(i, c)| {
                 let aiming = self.aiming.get() == Some(*i) && c.state.takes_answer();
-                aiming || matches!(c.state.phase, Phase::Predicting | Phase::Wrong)
+                let shown = presented.as_deref() == Some(c.exercise.id) && c.state.takes_answer();
+                aiming || shown || matches!(c.state.phase, Phase::Predicting | Phase::Wrong)
             })
             .flat_map(|(_, c)| hidden::answer_readouts(c.exercise.id).iter().copied())
             .collect();

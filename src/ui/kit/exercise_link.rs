@@ -11,6 +11,14 @@ use web_sys::Element;
 
 use crate::view::exercises::{Exercise, PageModel};
 
+/// The `data-section` of a page's exercises.
+pub const EXERCISES_SECTION: &str = "exercises";
+/// The attribute of the document element naming the exercise a presented lesson step is about:
+/// its answer stays hidden until the presenter reveals it.
+pub const PRESENT_EXERCISE_ATTR: &str = "data-present-exercise";
+/// The window event told when that attribute changes.
+pub const PRESENT_EXERCISE_EVENT: &str = "bsv-present-exercise";
+
 /// Lends the page's model to `use_model` (nothing once the page is gone).
 pub type WithModel = Box<dyn Fn(&mut dyn FnMut(&PageModel))>;
 

@@ -4,8 +4,9 @@
 use crate::ui::ctx;
 use crate::view::lesson::{Lesson, LessonStep};
 
-/// A built-in step: its route, its page steps and its focus (a section of the route's page).
-type BuiltinStep = (&'static str, u32, &'static str);
+/// A built-in step: its route, its page steps, its focus (a section of the route's page) and
+/// its exercise (one of the page's, or "").
+type BuiltinStep = (&'static str, u32, &'static str, &'static str);
 
 /// (key, steps): each step's note speaks of its focus only, and the controls it names are set
 /// by its route.
@@ -14,28 +15,28 @@ pub const BUILTIN: [(&str, &[BuiltinStep]); 3] = [
     (
         "ik",
         &[
-            ("#/ik-2r?elbow=down", 0, "arm"),
-            ("#/ik-2r?q1=0.3&q2=0.05", 0, "heatmap"),
-            ("#/ik-2r?q1=0.3&q2=0.05", 0, "sweep"),
-            ("#/teleop?ik=pinv", 0, "world"),
+            ("#/ik-2r?elbow=down", 0, "arm", ""),
+            ("#/ik-2r?q1=0.3&q2=0.05", 0, "heatmap", ""),
+            ("#/ik-2r?q1=0.3&q2=0.05", 0, "sweep", ""),
+            ("#/teleop?ik=pinv", 0, "world", ""),
         ],
     ),
     (
         "energy",
         &[
-            ("#/pendulum-energy?damping=0", 0, "pendulum"),
-            ("#/pendulum-energy?damping=0&compare=1", 0, "plot"),
-            ("#/pendulum-energy?damping=0&timestep=0.01&compare=1", 0, "plot"),
-            ("#/pid-step", 0, "plot"),
+            ("#/pendulum-energy?damping=0", 0, "pendulum", ""),
+            ("#/pendulum-energy?damping=0&compare=1", 0, "plot", ""),
+            ("#/pendulum-energy?damping=0&timestep=0.01&compare=1", 0, "exercises", "pendulum-euler-dt"),
+            ("#/pid-step", 0, "plot", ""),
         ],
     ),
     (
         "planning",
         &[
-            ("#/rrt-2d?it=0", 5, "world"),
-            ("#/cubic-path", 0, "plot"),
-            ("#/trapezoid-profile", 0, "plot"),
-            ("#/traj-resample", 0, "plot"),
+            ("#/rrt-2d?it=0", 5, "world", ""),
+            ("#/cubic-path", 0, "plot", ""),
+            ("#/trapezoid-profile", 0, "exercises", "trap-triangle"),
+            ("#/traj-resample", 0, "plot", ""),
         ],
     ),
 ];
@@ -49,12 +50,13 @@ pub fn lesson(key: &str, is_page: impl Fn(&str) -> bool) -> Option<Lesson> {
     let steps = steps
         .iter()
         .enumerate()
-        .map(|(i, (route, page_steps, focus))| LessonStep {
+        .map(|(i, (route, page_steps, focus, exercise))| LessonStep {
             route: (*route).to_owned(),
             title: ctx::t(&format!("lesson-builtin-{key}-{}-title", i + 1)),
             note: ctx::t(&format!("lesson-builtin-{key}-{}-note", i + 1)),
             page_steps: *page_steps,
             focus: Some((*focus).to_owned()),
+            exercise: (!exercise.is_empty()).then(|| (*exercise).to_owned()),
         })
         .filter(|s| is_page(&s.page()))
         .collect();

@@ -33,7 +33,8 @@ use crate::ui::kit::url_state::UrlNotice;
 use crate::ui::lesson_bar::{self, LESSON_STORAGE_KEY};
 use crate::ui::page::{MountCtx, Page, ShellLink};
 use crate::ui::page_frame;
-use crate::ui::{ctx, download, router};
+use crate::ui::{ctx, download, lang_files, router};
+use crate::view::exercises::ids_of_page;
 use crate::view::lesson::{Lesson, LessonError, UnknownFocus, MAX_FILE_BYTES, MAX_PAGE_STEPS};
 use crate::view::lesson_file;
 use crate::view::sections;
@@ -125,8 +126,23 @@ fn mount(ctx: MountCtx) -> Result<Rc<Editor>, JsValue> {
     page.render_steps()?;
     page.render_store_notes()?;
     page.render_focus_notice()?;
+    // The exercises' prompts name them in the steps' exercise fields (the ids until then).
+    let weak = Rc::downgrade(&page);
+    wasm_bindgen_futures::spawn_local(async move {
+        if lang_files::load(ctx::lang(), &[EXERCISE_STRINGS])
+            .await
+            .is_ok()
+        {
+            if let Some(page) = weak.upgrade() {
+                let _ = page.render_steps();
+            }
+        }
+    });
     Ok(page)
 }
+
+/// The Fluent file of the exercises' prompts.
+const EXERCISE_STRINGS: &str = "exercises.ftl";
 
 const MARKUP: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1>\
 <p class=\"lesson-intro\" data-i18n=\"lesson-intro\"></p>\
@@ -515,6 +531,7 @@ impl Editor {
             steps.set_attribute("inputmode", "numeric")?;
             steps.set_value(&step.page_steps.to_string());
             let focus = focus_field(&item, &step.page(), step.focus.as_deref())?;
+            let exercise = exercise_field(&item, &step.page(), step.exercise.as_deref())?;
             let error = dom::el_class("p", "lesson-step-error")?;
             error.set_attribute("data-field-error", &format!("step-page-steps-{}", i + 1))?;
             dom::show(&error, false);
@@ -551,6 +568,19 @@ impl Editor {
                     let _ = page.changed(false);
                 }
             })?);
+            if let Some(exercise) = exercise {
+                let weak = Rc::downgrade(self);
+                let select = exercise.clone();
+                listeners.push(Listener::new(&exercise, "change", move |_| {
+                    if let Some(page) = weak.upgrade() {
+                        if let Some(s) = page.lesson.borrow_mut().steps.get_mut(i) {
+                            let value = select.value();
+                            s.exercise = (!value.is_empty()).then_some(value);
+                        }
+                        let _ = page.changed(false);
+                    }
+                })?);
+            }
             let weak = Rc::downgrade(self);
             let input = steps.clone();
             listeners.push(Listener::new(&steps, "input", move |_| {
@@ -605,6 +635,45 @@ fn focus_field(
     dom::append(&label, &select)?;
     dom::append(item, &label)?;
     Ok(select)
+}
+
+/// The step's exercise (`data-field="exercise"`): none, or one of the exercises of `page`,
+/// each by its prompt (by its id until the prompts are here); appended to `item`. `None` for a
+/// page without exercises.
+fn exercise_field(
+    item: &Element,
+    page: &str,
+    exercise: Option<&str>,
+) -> Result<Option<HtmlSelectElement>, JsValue> {
+    let ids = ids_of_page(page);
+    if ids.is_empty() {
+        return Ok(None);
+    }
+    let label = dom::el_class("label", "lesson-field")?;
+    dom::append(
+        &label,
+        &dom::el_i18n("span", "", "lesson-step-exercise-label")?,
+    )?;
+    let select: HtmlSelectElement = dom::el("select")?.dyn_into()?;
+    select.set_attribute("data-field", "exercise")?;
+    let none = dom::el_i18n("option", "", "lesson-step-exercise-none")?;
+    none.set_attribute("value", "")?;
+    dom::append(&select, &none)?;
+    for id in ids {
+        let prompt = format!("ex-{id}-prompt");
+        let text = if ctx::has_message(&prompt) {
+            ctx::t(&prompt)
+        } else {
+            (*id).to_owned()
+        };
+        let option = dom::el_text("option", "", &text)?;
+        option.set_attribute("value", id)?;
+        dom::append(&select, &option)?;
+    }
+    select.set_value(exercise.unwrap_or(""));
+    dom::append(&label, &select)?;
+    dom::append(item, &label)?;
+    Ok(Some(select))
 }
 
 /// A labelled field `name`-`n` of step `n` (`tag`: input or textarea), appended to `item`.
