@@ -535,7 +535,7 @@ impl Presenter {
     /// "Back": the previous lesson step (its page state from the start).
     pub fn back(&mut self) -> PresenterAction {
         if self.index == 0 {
-            if self.page_steps_done > 0 {
+            if self.page_steps_done > 0 || self.revealed {
                 self.page_steps_done = 0;
                 self.revealed = false;
                 return PresenterAction::Show(0);

@@ -408,8 +408,8 @@ mod tests {
             })
         );
         assert_eq!(
-            import(r#"{"format":"bsv-lesson","version":3,"title":"","steps":[]}"#),
-            Err(LessonError::WrongVersion { found: 3 })
+            import(r#"{"format":"bsv-lesson","version":4,"title":"","steps":[]}"#),
+            Err(LessonError::WrongVersion { found: 4 })
         );
         assert_eq!(
             import(r#"{"format":"bsv-lesson","version":"1"}"#),
