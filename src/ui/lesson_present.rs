@@ -279,8 +279,9 @@ pub(crate) fn set_presented_exercise(exercise: Option<&str>) -> Result<(), JsVal
     Ok(())
 }
 
-/// Reveals exercise `id`'s answer on its card ("Show the answer"); whether there was one to
-/// reveal (not for a goal, nor for an answer already shown, nor before the list is here).
+/// Reveals exercise `id`'s answer on its card ("Show the answer") and brings the card into
+/// view again; whether there was one to reveal (not for a goal, nor for an answer already
+/// shown, nor before the list is here).
 pub(crate) fn reveal_exercise(id: &str) -> Result<bool, JsValue> {
     let selector = format!("#app-main [data-exercise=\"{id}\"] [data-action=\"reveal\"]");
     let button = dom::document()?
@@ -289,6 +290,11 @@ pub(crate) fn reveal_exercise(id: &str) -> Result<bool, JsValue> {
     match button {
         Some(button) if !button.hidden() => {
             button.click();
+            // The card has grown by its answer: brought into view again, whole.
+            if let Some(bar) = dom::document()?.get_element_by_id(BAR_ID) {
+                let page = router::current_route().page;
+                lesson_focus::show(&bar, page, Some(EXERCISES_SECTION.to_owned()));
+            }
             Ok(true)
         }
         _ => Ok(false),

@@ -157,7 +157,7 @@ test('"+ Lesson" records the section in the middle of the screen; the editor off
     await page.evaluate(() => document.querySelector('[data-testid="lesson-add"]').click());
     await page.waitForFunction(() => document.querySelector('[data-testid="lesson-add-status"]').textContent.includes('step 1 '));
     const stored = await page.evaluate(() => JSON.parse(localStorage.getItem('bsv.lesson')));
-    assert.equal(stored.version, 2);
+    assert.equal(stored.version, 3);
     assert.equal(stored.steps[0].focus, 'heatmap');
 
     await page.evaluate(() => { location.hash = '#/lesson'; });
@@ -229,7 +229,9 @@ for (const lang of ['en', 'ja']) {
         return s?.value === 'pendulum-euler-dt' && s.selectedOptions[0].textContent !== 'pendulum-euler-dt';
       }, select, { timeout: 15000 });
       await page.click('[data-action="lesson-present"]');
+      await shownStep(page, 1, 'pendulum');
       await page.keyboard.press('PageDown');
+      await shownStep(page, 2, 'plot');
       await page.keyboard.press('PageDown');
       await page.waitForFunction(() => location.hash.includes('timestep=0.01'));
       const card = '#app-main [data-exercise="pendulum-euler-dt"]';
@@ -244,6 +246,12 @@ for (const lang of ['en', 'ja']) {
       await page.waitForSelector(`${card}[data-exercise-state="revealed"]`, { timeout: 5000 });
       assert.deepEqual(await hidden(), []);
       assert.match(await page.evaluate(() => location.hash), /timestep=0\.01/, 'still on the step');
+      // The card, grown by its answer, is brought into view again above the bar.
+      await page.waitForFunction((sel) => {
+        const r = document.querySelector(sel).getBoundingClientRect();
+        const bar = document.querySelector('[data-testid="lesson-bar"]').getBoundingClientRect();
+        return r.top >= 0 && (r.bottom <= bar.top || (r.height > bar.top && r.top <= 10));
+      }, card, { timeout: 5000 });
       await page.screenshot({ path: join(OUT, `lesson-exercise-revealed-${lang}.png`) });
       // The next PageDown goes on to the next step; Escape ends and nothing stays hidden.
       await page.keyboard.press('PageDown');
