@@ -120,6 +120,8 @@ test('the language switch re-renders everything in Japanese and back, without a 
   try {
     await page.evaluate(() => { window.__noReload = true; });
     await page.click('[data-testid="lang-switch"]');
+    // The switch is done once the page's strings are in Japanese (fetched first if need be).
+    await page.waitForFunction(() => document.querySelector('[data-testid="nav-home"]')?.textContent === 'ホーム');
     const ja = await shellTexts(page);
     assert.equal(ja.htmlLang, 'ja');
     assert.equal(ja.langButton, 'English');
