@@ -44,7 +44,27 @@ struct Slot {
 /// A page's exercises section; dropping it drops its list.
 pub struct ExerciseSlot(Rc<Slot>);
 
+/// Lends a page's model (made from its live part `T`) to the exercises' `use_model`.
+pub type Lend<T> = fn(&T, &mut dyn FnMut(&crate::view::exercises::PageModel));
+
 impl ExerciseSlot {
+    /// [`ExerciseSlot::new`] for a page whose live part `page` (held weakly: no model once the
+    /// page is gone) makes its model with `lend`.
+    pub fn lending<T: 'static>(
+        root: &Element,
+        exercises: &'static [Exercise],
+        page: &Rc<T>,
+        lend: Lend<T>,
+    ) -> Result<ExerciseSlot, JsValue> {
+        let page = Rc::downgrade(page);
+        let with_model: WithModel = Box::new(move |use_model| {
+            if let Some(page) = page.upgrade() {
+                lend(&page, use_model);
+            }
+        });
+        ExerciseSlot::new(root, exercises, with_model)
+    }
+
     /// The section of `exercises` (a page's), last in the page's outer element under `root`
     /// (`<main>`), the list lent the page's model by `with_model` (see [`WithModel`]).
     pub fn new(

@@ -16,14 +16,9 @@ pub const PAGE: &str = "cubic-path";
 pub const SPEED_LIMIT_RAD_S: f64 = 1.0;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 3] = [
-    Exercise::predict(
-        "cubic-peak-velocity",
-        PAGE,
-        "rad/s",
-        Tolerance::Relative(0.05),
-        peak_velocity_truth,
-    ),
+    Exercise::predict("cubic-peak-velocity", PAGE, "rad/s", Tolerance::Relative(0.05), peak_velocity_truth),
     Exercise::goal("cubic-speed-limit", PAGE, speed_limit_met),
     // 1: at the start and at the end.
     Exercise::choose("cubic-peak-accel", PAGE, 4, 1),
@@ -62,20 +57,7 @@ fn speed_limit_met(model: &PageModel) -> Result<bool, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, p: &CubicParams, answer: Answer) -> Verdict {
-        find(id)
-            .unwrap()
-            .check(&PageModel::CubicPath(p), answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|p: &CubicParams| PageModel::CubicPath(p));
 
     #[test]
     fn cubic_peak_velocity_is_one_and_a_half_times_the_mean() {

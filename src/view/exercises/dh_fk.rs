@@ -16,14 +16,9 @@ pub const PAGE: &str = "dh-fk";
 pub const RAISE_TO_M: f64 = 0.3;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 3] = [
-    Exercise::predict(
-        "dh-tip-height",
-        PAGE,
-        "m",
-        Tolerance::Absolute(0.01),
-        tip_height_truth,
-    ),
+    Exercise::predict("dh-tip-height", PAGE, "m", Tolerance::Absolute(0.01), tip_height_truth),
     Exercise::goal("dh-raise", PAGE, raise_met),
     // 0: it stays where it is.
     Exercise::choose("dh-q3-origin", PAGE, 4, 0),
@@ -56,20 +51,7 @@ fn raise_met(model: &PageModel) -> Result<bool, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, p: &DhParams, answer: Answer) -> Verdict {
-        find(id)
-            .unwrap()
-            .check(&PageModel::DhFk(p), answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|p: &DhParams| PageModel::DhFk(p));
 
     #[test]
     fn dh_tip_height_follows_the_second_joint() {

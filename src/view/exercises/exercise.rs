@@ -336,3 +336,25 @@ macro_rules! model_of {
     };
 }
 pub(crate) use model_of;
+
+/// In a page's test module: `check(id, <the argument>, answer)`, the verdict of the page's
+/// exercise `id` (`EXERCISES`) on the page model `$model` made of the argument, and `find`.
+#[cfg(test)]
+macro_rules! page_check {
+    (|$arg:ident: $ty:ty| $model:expr) => {
+        use crate::view::exercises::exercise::{Answer, Verdict};
+        #[cfg(target_family = "wasm")]
+        use wasm_bindgen_test::wasm_bindgen_test as test;
+
+        fn find(id: &str) -> Option<&'static Exercise> {
+            EXERCISES.iter().find(|e| e.id == id)
+        }
+
+        fn check(id: &str, $arg: $ty, answer: Answer) -> Verdict {
+            let exercise = find(id).expect("an exercise of the page");
+            exercise.check(&$model, answer).unwrap()
+        }
+    };
+}
+#[cfg(test)]
+pub(crate) use page_check;

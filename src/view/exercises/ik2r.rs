@@ -25,22 +25,11 @@ pub const SINGULAR_W_M2: f64 = 0.001;
 pub const WORKSPACE_MARGIN_M: f64 = 1e-6;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 4] = [
     Exercise::goal("ik-singular", PAGE, singular_met),
-    Exercise::predict(
-        "ik-w-pose",
-        PAGE,
-        "m²",
-        Tolerance::Relative(0.1),
-        w_pose_truth,
-    ),
-    Exercise::predict(
-        "ik-best-elbow",
-        PAGE,
-        "deg",
-        Tolerance::Absolute(5.0),
-        best_elbow_truth,
-    ),
+    Exercise::predict("ik-w-pose", PAGE, "m²", Tolerance::Relative(0.1), w_pose_truth),
+    Exercise::predict("ik-best-elbow", PAGE, "deg", Tolerance::Absolute(5.0), best_elbow_truth),
     // 1: on the outer and the inner circle of the workspace.
     Exercise::choose("ik-singular-where", PAGE, 4, 1),
 ];
@@ -104,18 +93,7 @@ fn best_elbow_truth(model: &PageModel) -> Result<f64, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, state: &State, answer: Answer) -> Verdict {
-        let exercise = find(id).unwrap();
-        exercise.check(&PageModel::Ik2r(state), answer).unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|state: &State| PageModel::Ik2r(state));
 
     fn pose(q1: f64, q2: f64) -> State {
         State {

@@ -14,21 +14,10 @@ use crate::view::pendulum::Track;
 pub const PAGE: &str = "pendulum-energy";
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 4] = [
-    Exercise::predict(
-        "pendulum-euler-dt",
-        PAGE,
-        "%",
-        Tolerance::Relative(0.25),
-        euler_drift_truth,
-    ),
-    Exercise::predict(
-        "pendulum-period",
-        PAGE,
-        "s",
-        Tolerance::Relative(0.1),
-        period_truth,
-    ),
+    Exercise::predict("pendulum-euler-dt", PAGE, "%", Tolerance::Relative(0.25), euler_drift_truth),
+    Exercise::predict("pendulum-period", PAGE, "s", Tolerance::Relative(0.1), period_truth),
     // 1: RK4.
     Exercise::choose("pendulum-integrator", PAGE, 3, 1),
     Exercise::goal("pendulum-over-top", PAGE, over_top_met),
@@ -92,20 +81,7 @@ fn over_top_met(model: &PageModel) -> Result<bool, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, params: &PendulumParams, answer: Answer) -> Verdict {
-        let exercise = find(id).unwrap();
-        exercise
-            .check(&PageModel::Pendulum(params), answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|params: &PendulumParams| PageModel::Pendulum(params));
 
     #[test]
     fn pendulum_euler_dt_is_within_a_quarter_of_the_kernel_drift() {

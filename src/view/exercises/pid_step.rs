@@ -16,24 +16,13 @@ pub const TUNE_OVERSHOOT_PCT: f64 = 5.0;
 pub const TUNE_SETTLING_S: f64 = 1.5;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 4] = [
     Exercise::goal("pid-tune", PAGE, tune_met),
-    Exercise::predict(
-        "pid-final-y",
-        PAGE,
-        "",
-        Tolerance::Absolute(0.05),
-        final_y_truth,
-    ),
+    Exercise::predict("pid-final-y", PAGE, "", Tolerance::Absolute(0.05), final_y_truth),
     // 1: below r, at Kp / (1 + Kp) of it.
     Exercise::choose("pid-p-only", PAGE, 4, 1),
-    Exercise::predict(
-        "pid-overshoot",
-        PAGE,
-        "%",
-        Tolerance::Absolute(3.0),
-        overshoot_truth,
-    ),
+    Exercise::predict("pid-overshoot", PAGE, "%", Tolerance::Absolute(3.0), overshoot_truth),
 ];
 
 /// The page's figures of the run of `p`.
@@ -86,21 +75,7 @@ fn overshoot_truth(model: &PageModel) -> Result<f64, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    use crate::view::pid_step::TUNED_GAINS;
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, p: &PidParams, answer: Answer) -> Verdict {
-        find(id)
-            .unwrap()
-            .check(&PageModel::PidStep(p), answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|p: &PidParams| PageModel::PidStep(p));
 
     fn gains(kp: f64, ki: f64, kd: f64) -> PidParams {
         PidParams {

@@ -15,15 +15,10 @@ pub const HARD_SEED: u64 = 7;
 pub const HARD_ITERATIONS: usize = 300;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 4] = [
     Exercise::goal("rrt-300", PAGE, hard_met),
-    Exercise::predict(
-        "rrt-path-length",
-        PAGE,
-        "",
-        Tolerance::Relative(0.15),
-        path_length_truth,
-    ),
+    Exercise::predict("rrt-path-length", PAGE, "", Tolerance::Relative(0.15), path_length_truth),
     // 0: only 12 points of each edge are checked.
     Exercise::choose("rrt-corner", PAGE, 4, 0),
     Exercise::goal("rrt-wall", PAGE, wall_met),
@@ -83,20 +78,7 @@ fn wall_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::rrt_2d::{check_points, segment_clear, Obstacle, OBSTACLE};
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, setup: &RrtSetup, answer: Answer) -> Verdict {
-        find(id)
-            .unwrap()
-            .check(&PageModel::Rrt(setup), answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|setup: &RrtSetup| PageModel::Rrt(setup));
 
     fn with_boxes(boxes: &[[f64; 4]]) -> RrtSetup {
         let mut setup = RrtSetup::default();

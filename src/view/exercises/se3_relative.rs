@@ -20,14 +20,9 @@ pub const AHEAD_TOL_RAD: f64 = 0.01;
 pub const A_TURNED_RAD: f64 = 0.1;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 3] = [
-    Exercise::predict(
-        "se3-distance",
-        PAGE,
-        "m",
-        Tolerance::Relative(0.05),
-        distance_truth,
-    ),
+    Exercise::predict("se3-distance", PAGE, "m", Tolerance::Relative(0.05), distance_truth),
     Exercise::goal("se3-ahead", PAGE, ahead_met),
     // 1: the inverse of the relative pose.
     Exercise::choose("se3-swap", PAGE, 4, 1),
@@ -70,17 +65,7 @@ fn ahead_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::se3_relative::relative_transform;
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, p: &Se3Params, answer: Answer) -> Verdict {
-        find(id).unwrap().check(&PageModel::Se3(p), answer).unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|p: &Se3Params| PageModel::Se3(p));
 
     #[test]
     fn se3_distance_is_the_length_of_the_offset() {

@@ -14,6 +14,7 @@ pub const PAGE: &str = "so101";
 pub const LOW_W_M3: f64 = 0.001;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 3] = [
     Exercise::goal("so101-low-w", PAGE, low_w_met),
     // 0: it stays the same.
@@ -51,20 +52,7 @@ mod tests {
     use super::*;
     use crate::so101::kinematics::jt_j;
     use crate::teleop::control::smallest_eigenvalue;
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, q: [f64; 5], answer: Answer) -> Verdict {
-        find(id)
-            .unwrap()
-            .check(&PageModel::So101 { q }, answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|q: [f64; 5]| PageModel::So101 { q });
 
     #[test]
     fn so101_low_w_needs_a_folded_elbow() {

@@ -15,6 +15,7 @@ pub const PAGE: &str = "teleop";
 pub const NEAR_SINGULAR_W_M2: f64 = 0.001;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 3] = [
     Exercise::goal("teleop-near-singular", PAGE, near_singular_met),
     // 1: the elbow, q2.
@@ -44,21 +45,7 @@ fn near_singular_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::teleop::{ik_step, jacobian, ControlParams, IkMethod};
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, q: [f64; 3], answer: Answer) -> Verdict {
-        let arm = ArmParams::DEFAULT;
-        find(id)
-            .unwrap()
-            .check(&PageModel::Teleop { arm: &arm, q }, answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|q: [f64; 3]| PageModel::Teleop { arm: &ArmParams::DEFAULT, q });
 
     #[test]
     fn teleop_near_singular_needs_the_elbow_almost_straight() {

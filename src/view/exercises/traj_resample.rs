@@ -12,6 +12,7 @@ pub const PAGE: &str = "traj-resample";
 pub const MISS_PEAK_BY: f64 = 0.05;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 3] = [
     Exercise::predict("traj-rows", PAGE, "", Tolerance::Absolute(0.0), rows_truth),
     Exercise::goal("traj-miss-peak", PAGE, miss_peak_met),
@@ -70,21 +71,7 @@ fn miss_peak_met(m: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::traj_resample::{parse_trajectory, SAMPLE};
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, dt: f64, answer: Answer) -> Verdict {
-        let sample = parse_trajectory(SAMPLE).unwrap();
-        find(id)
-            .unwrap()
-            .check(&PageModel::TrajResample(&sample, dt), answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|dt: f64| PageModel::TrajResample(&parse_trajectory(SAMPLE).unwrap(), dt));
 
     #[test]
     fn traj_rows_counts_the_new_grid() {

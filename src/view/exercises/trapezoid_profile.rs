@@ -11,22 +11,11 @@ use crate::view::trapezoid_profile::{phases, Phases};
 pub const PAGE: &str = "trapezoid-profile";
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 4] = [
     Exercise::goal("trap-triangle", PAGE, triangle_met),
-    Exercise::predict(
-        "trap-accel-end",
-        PAGE,
-        "s",
-        Tolerance::Relative(0.05),
-        accel_end_truth,
-    ),
-    Exercise::predict(
-        "trap-total-time",
-        PAGE,
-        "s",
-        Tolerance::Relative(0.05),
-        total_time_truth,
-    ),
+    Exercise::predict("trap-accel-end", PAGE, "s", Tolerance::Relative(0.05), accel_end_truth),
+    Exercise::predict("trap-total-time", PAGE, "s", Tolerance::Relative(0.05), total_time_truth),
     // 1: sqrt(D · amax) = 0.447 m/s (a triangle, below vmax).
     Exercise::choose("trap-short-peak", PAGE, 4, 1),
 ];
@@ -69,20 +58,7 @@ fn total_time_truth(model: &PageModel) -> Result<f64, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::trapezoid_profile::compute;
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, p: &TrapParams, answer: Answer) -> Verdict {
-        find(id)
-            .unwrap()
-            .check(&PageModel::Trapezoid(p), answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|p: &TrapParams| PageModel::Trapezoid(p));
 
     fn with_distance(distance: f64) -> TrapParams {
         TrapParams {

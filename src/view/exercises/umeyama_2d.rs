@@ -13,14 +13,9 @@ pub const PAGE: &str = "umeyama-2d";
 pub const EXACT_RMSE: f64 = 1e-9;
 
 /// The page's exercises, in the order it lists them.
+#[rustfmt::skip]
 pub const EXERCISES: [Exercise; 3] = [
-    Exercise::predict(
-        "umeyama-angle",
-        PAGE,
-        "deg",
-        Tolerance::Absolute(2.0),
-        angle_truth,
-    ),
+    Exercise::predict("umeyama-angle", PAGE, "deg", Tolerance::Absolute(2.0), angle_truth),
     Exercise::goal("umeyama-exact", PAGE, exact_met),
     // 1: the best rotation, with a large error.
     Exercise::choose("umeyama-mirror", PAGE, 4, 1),
@@ -58,20 +53,7 @@ fn exact_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::umeyama_2d::UmeyamaParams;
-    use crate::view::exercises::exercise::{Answer, Verdict};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
-
-    fn find(id: &str) -> Option<&'static Exercise> {
-        EXERCISES.iter().find(|e| e.id == id)
-    }
-
-    fn check(id: &str, setup: &UmeyamaSetup, answer: Answer) -> Verdict {
-        find(id)
-            .unwrap()
-            .check(&PageModel::Umeyama(setup), answer)
-            .unwrap()
-    }
+    crate::view::exercises::exercise::page_check!(|setup: &UmeyamaSetup| PageModel::Umeyama(setup));
 
     fn noise(sigma: f64) -> UmeyamaSetup {
         UmeyamaSetup::recipe(UmeyamaParams {

@@ -623,16 +623,9 @@ impl<S: SignalPage> Page for Signal<S> {
         if let Some(rows) = big {
             live.run(params, rows, RunFrom::Mount);
         }
-        let me = Rc::downgrade(&live);
-        let exercises = ExerciseSlot::new(
-            &live.kit.root,
-            S::EXERCISES,
-            Box::new(move |use_model| {
-                if let Some(live) = me.upgrade() {
-                    use_model(&S::exercise_model(&live.kit.run().params));
-                }
-            }),
-        )?;
+        let exercises = ExerciseSlot::lending(&live.kit.root, S::EXERCISES, &live, |live, lend| {
+            lend(&S::exercise_model(&live.kit.run().params))
+        })?;
         Ok(Signal {
             live,
             _exercises: exercises,

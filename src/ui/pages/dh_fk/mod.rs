@@ -41,7 +41,8 @@ use crate::view::dh_fk::{
     cell, csv_rows, draw_frames, set_joint_text, DrawFrame, PageQuery, RowWalk, OWN_KEYS,
     WALK_STEPS,
 };
-use crate::view::exercises::{self, PageModel};
+use crate::view::exercises::dh_fk::EXERCISES;
+use crate::view::exercises::PageModel;
 use crate::view::scene3d::AxisPalette;
 use markup::P;
 
@@ -168,16 +169,7 @@ impl Page for DhPage {
         }
         inner.animate.set(true);
         inner.redraw_now();
-        let me = Rc::downgrade(&inner);
-        let exercises = ExerciseSlot::new(
-            &exercises_root,
-            &exercises::dh_fk::EXERCISES,
-            Box::new(move |use_model| {
-                if let Some(inner) = me.upgrade() {
-                    use_model(&PageModel::DhFk(&inner.posed.borrow().params));
-                }
-            }),
-        )?;
+        let exercises = ExerciseSlot::lending(&exercises_root, &EXERCISES, &inner, lend_model)?;
         Ok(DhPage {
             inner,
             _exercises: exercises,
@@ -512,4 +504,9 @@ impl Inner {
 /// (`__dhFrameMs`, `__dhChangeMs`; `tests/bench/dh_fk.bench.mjs` reads them).
 fn bench_record(name: &str, ms: f64) {
     crate::ui::kit::bench_log::push_ms(name, ms, crate::ui::kit::bench_log::KEEP_ALL);
+}
+
+/// The page's model for its exercises.
+fn lend_model(inner: &Inner, lend: &mut dyn FnMut(&PageModel)) {
+    lend(&PageModel::DhFk(&inner.posed.borrow().params))
 }

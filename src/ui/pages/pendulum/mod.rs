@@ -37,7 +37,8 @@ use crate::ui::kit::url_state::{UrlNotice, UrlWriter};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
-use crate::view::exercises::{self, PageModel};
+use crate::view::exercises::pendulum::EXERCISES;
+use crate::view::exercises::PageModel;
 use crate::view::pendulum::{cli_args, other, PageQuery, Track};
 
 /// Speeds, multiples of real time.
@@ -248,16 +249,7 @@ impl Page for PendulumPage {
             }
             None => {}
         }
-        let me = Rc::downgrade(&inner);
-        let exercises = ExerciseSlot::new(
-            &exercises_root,
-            &exercises::pendulum::EXERCISES,
-            Box::new(move |use_model| {
-                if let Some(inner) = me.upgrade() {
-                    use_model(&PageModel::Pendulum(&inner.sim.borrow().params));
-                }
-            }),
-        )?;
+        let exercises = ExerciseSlot::lending(&exercises_root, &EXERCISES, &inner, lend_model)?;
         Ok(PendulumPage {
             inner,
             _exercises: exercises,
@@ -699,4 +691,9 @@ impl Inner {
             url.write_at_most_every(URL_EVERY_MS);
         }
     }
+}
+
+/// The page's model for its exercises.
+fn lend_model(inner: &Inner, lend: &mut dyn FnMut(&PageModel)) {
+    lend(&PageModel::Pendulum(&inner.sim.borrow().params))
 }

@@ -42,7 +42,8 @@ use crate::ui::kit::url_state::{UrlNotice, UrlState, UrlWriter};
 use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
-use crate::view::exercises::{self, PageModel};
+use crate::view::exercises::rrt::EXERCISES;
+use crate::view::exercises::PageModel;
 use crate::view::rrt::{
     add_box, delete_box, drag, hit_test, phases, Grab, PageState, Phase, Refusal, IT_KEY,
 };
@@ -213,18 +214,7 @@ impl Page for RrtPage {
         // The canvases are sized and drawn by the stage's first ResizeObserver callback, in
         // the first frame after its layout and before its paint: measuring them here would
         // force the whole page's first layout inside the mount's task.
-        let me = Rc::downgrade(&inner);
-        let exercises = ExerciseSlot::new(
-            &exercises_root,
-            &exercises::rrt::EXERCISES,
-            Box::new(move |use_model| {
-                if let Some(inner) = me.upgrade() {
-                    if let Ok(setup) = inner.state.borrow().setup() {
-                        use_model(&PageModel::Rrt(&setup));
-                    }
-                }
-            }),
-        )?;
+        let exercises = ExerciseSlot::lending(&exercises_root, &EXERCISES, &inner, lend_model)?;
         Ok(RrtPage {
             inner,
             _exercises: exercises,
@@ -926,4 +916,11 @@ fn bench_record(work_ms: f64, draw_ms: f64) {
     use crate::ui::kit::bench_log::{push_ms, KEEP_ALL};
     push_ms("__rrtFrameMs", work_ms, KEEP_ALL);
     push_ms("__rrtDrawMs", draw_ms, KEEP_ALL);
+}
+
+/// The page's model for its exercises (none while its state holds none).
+fn lend_model(inner: &Inner, lend: &mut dyn FnMut(&PageModel)) {
+    if let Ok(setup) = inner.state.borrow().setup() {
+        lend(&PageModel::Rrt(&setup));
+    }
 }

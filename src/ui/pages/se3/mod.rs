@@ -44,7 +44,8 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::now_ms;
 use crate::ui::{ctx, dom};
 use crate::view::camera3d::{Camera, Preset};
-use crate::view::exercises::{self, PageModel};
+use crate::view::exercises::se3_relative::EXERCISES;
+use crate::view::exercises::PageModel;
 use crate::view::se3_relative::{
     dragged_origin, hit_gizmo, position_texts, ring_radius, scene_frame, solve, wrap_angle, yaw_at,
     yaw_text, AngleUnit, Grab, PoseFields, Solved, VIEW_KEY,
@@ -169,16 +170,7 @@ impl Page for Se3Page {
         inner.show_commands();
         inner.show_numbers();
         inner.redraw();
-        let me = Rc::downgrade(&inner);
-        let exercises = ExerciseSlot::new(
-            &exercises_root,
-            &exercises::se3_relative::EXERCISES,
-            Box::new(move |use_model| {
-                if let Some(inner) = me.upgrade() {
-                    use_model(&PageModel::Se3(&inner.poses.borrow().params()));
-                }
-            }),
-        )?;
+        let exercises = ExerciseSlot::lending(&exercises_root, &EXERCISES, &inner, lend_model)?;
         Ok(Se3Page {
             inner,
             _exercises: exercises,
@@ -671,4 +663,9 @@ impl Inner {
         }
         true
     }
+}
+
+/// The page's model for its exercises.
+fn lend_model(inner: &Inner, lend: &mut dyn FnMut(&PageModel)) {
+    lend(&PageModel::Se3(&inner.poses.borrow().params()))
 }

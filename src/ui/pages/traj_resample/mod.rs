@@ -46,7 +46,8 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{after_paint, now_ms, Timer};
 use crate::view::command_line::RunArgs;
 use crate::view::envelope::{csv_envelope, Envelope, BUCKETS};
-use crate::view::exercises::{self, PageModel};
+use crate::view::exercises::traj_resample::EXERCISES;
+use crate::view::exercises::PageModel;
 use crate::view::form::{recipe_fields, runs_while_typing, validate};
 use crate::view::traj_resample::{file_too_large, readings, PageQuery};
 use markup::PREFIX;
@@ -226,18 +227,7 @@ impl Page for TrajResample {
         inner.run();
         inner.render_result();
         inner.render_status();
-        let me = Rc::downgrade(&inner);
-        let exercises = ExerciseSlot::new(
-            &exercises_root,
-            &exercises::traj_resample::EXERCISES,
-            Box::new(move |use_model| {
-                if let Some(inner) = me.upgrade() {
-                    if let Some((trajectory, dt)) = inner.exercise_model() {
-                        use_model(&PageModel::TrajResample(&trajectory, dt));
-                    }
-                }
-            }),
-        )?;
+        let exercises = ExerciseSlot::lending(&exercises_root, &EXERCISES, &inner, lend_model)?;
         Ok(TrajResample {
             inner,
             _exercises: exercises,
@@ -942,5 +932,12 @@ impl Drop for Inner {
         if let Some(job) = self.job.get_mut().take() {
             job.cancel();
         }
+    }
+}
+
+/// The page's model for its exercises (none while its state holds none).
+fn lend_model(inner: &Inner, lend: &mut dyn FnMut(&PageModel)) {
+    if let Some((trajectory, dt)) = inner.exercise_model() {
+        lend(&PageModel::TrajResample(&trajectory, dt));
     }
 }

@@ -52,7 +52,8 @@ use crate::ui::page::{MountCtx, Page, Shortcut};
 use crate::ui::schedule::{now_ms, Timer};
 use crate::ui::{ctx, dom};
 use crate::view::drag::HandleShape;
-use crate::view::exercises::{self, PageModel};
+use crate::view::exercises::umeyama_2d::EXERCISES;
+use crate::view::exercises::PageModel;
 use crate::view::signal::{sig, Slider};
 use crate::view::umeyama_2d::{
     add_point, editable, hit_test, key_step_target, move_point, new_point_spot, next_selection,
@@ -265,16 +266,7 @@ impl Page for UmeyamaPage {
                 }),
             )
         })?;
-        let me = Rc::downgrade(&inner);
-        let exercises = ExerciseSlot::new(
-            &exercises_root,
-            &exercises::umeyama_2d::EXERCISES,
-            Box::new(move |use_model| {
-                if let Some(inner) = me.upgrade() {
-                    use_model(&PageModel::Umeyama(&inner.scene.borrow().setup));
-                }
-            }),
-        )?;
+        let exercises = ExerciseSlot::lending(&exercises_root, &EXERCISES, &inner, lend_model)?;
         Ok(UmeyamaPage {
             inner,
             _exercises: exercises,
@@ -881,4 +873,9 @@ mod bench {
     pub fn record_to(name: &str, ms: f64) {
         crate::ui::kit::bench_log::push_ms(name, ms, crate::ui::kit::bench_log::KEEP_ALL);
     }
+}
+
+/// The page's model for its exercises.
+fn lend_model(inner: &Inner, lend: &mut dyn FnMut(&PageModel)) {
+    lend(&PageModel::Umeyama(&inner.scene.borrow().setup))
 }
