@@ -21,7 +21,9 @@ use crate::ui::kit::exercise_link::{
 };
 use crate::ui::page::ShellRequest;
 use crate::ui::{ctx, dom, lesson_focus, router};
+use crate::view::embed;
 use crate::view::lesson::{Lesson, LessonStep, Presenter, PresenterAction};
+use crate::view::lesson_goal::{self, GoalCondition, GoalOp};
 
 const BAR_ID: &str = "lesson-bar";
 
@@ -148,6 +150,7 @@ pub(crate) fn present_on_two(lesson: Lesson, index: usize) -> Result<(), JsValue
 /// Stops presenting (on two screens: in both windows).
 pub fn stop() -> Result<(), JsValue> {
     PRESENTING.with(|p| *p.borrow_mut() = None);
+    check_goals_live(false)?;
     lesson_focus::stop();
     set_presented_exercise(None)?;
     if let Some(relay) = RELAY.take() {
@@ -298,6 +301,112 @@ pub(crate) fn reveal_exercise(id: &str) -> Result<bool, JsValue> {
             Ok(true)
         }
         _ => Ok(false),
+    }
+}
+
+/// The teacher's goal of the shown step (`data-testid="lesson-goals"`): each condition
+/// (`data-goal="<n>"`, `data-goal-met`), checked live on the page's readouts ([`draw_goals`]).
+fn goals_list(page: &str, goals: &[GoalCondition]) -> Result<Element, JsValue> {
+    let list = dom::el_class("ul", "lesson-goals")?;
+    list.set_attribute("data-testid", "lesson-goals")?;
+    list.set_attribute("aria-label", &ctx::t("lesson-goals-label"))?;
+    for (j, goal) in goals.iter().enumerate() {
+        let item = dom::el("li")?;
+        item.set_attribute("data-goal", &(j + 1).to_string())?;
+        let unit = lesson_goal::unit_of(page, &goal.readout);
+        let mut args = vec![
+            ("readout", goal.readout.clone()),
+            ("value", lesson_goal::number_text(goal.value)),
+            ("unit", unit.to_owned()),
+        ];
+        let id = match goal.op {
+            GoalOp::Below => "lesson-goal-below",
+            GoalOp::Above => "lesson-goal-above",
+            GoalOp::Within => {
+                let tolerance = goal.tolerance.unwrap_or(0.0);
+                args.push(("tolerance", lesson_goal::number_text(tolerance)));
+                "lesson-goal-within"
+            }
+        };
+        dom::append(&item, &dom::el_text("span", "lesson-goal-text", &ctx::t_strings(id, &args))?)?;
+        dom::append(&item, &dom::el_class("span", "lesson-goal-state")?)?;
+        dom::append(&list, &item)?;
+    }
+    Ok(list)
+}
+
+thread_local! {
+    /// The live check of the shown step's goal: its interval and callback.
+    static GOALS_CHECK: RefCell<Option<(i32, Closure<dyn FnMut()>)>> = const { RefCell::new(None) };
+}
+
+/// How often the shown step's goal is checked, ms.
+const GOALS_CHECK_MS: i32 = 250;
+
+/// Checks the shown step's goal now and every [`GOALS_CHECK_MS`] (`on`), or no more.
+fn check_goals_live(on: bool) -> Result<(), JsValue> {
+    let window = dom::window()?;
+    if let Some((id, _)) = GOALS_CHECK.take() {
+        window.clear_interval_with_handle(id);
+    }
+    if on {
+        draw_goals()?;
+        let callback = Closure::<dyn FnMut()>::new(|| {
+            if let Err(error) = draw_goals() {
+                web_sys::console::error_2(&"BSV Playground: lesson goal".into(), &error);
+            }
+        });
+        let id = window.set_interval_with_callback_and_timeout_and_arguments_0(
+            callback.as_ref().unchecked_ref(),
+            GOALS_CHECK_MS,
+        )?;
+        GOALS_CHECK.set(Some((id, callback)));
+    }
+    Ok(())
+}
+
+/// Marks each condition of the shown step's goal met or not on the numbers its page shows
+/// now (none while another page is shown), and the goal met when all are.
+fn draw_goals() -> Result<(), JsValue> {
+    let document = dom::document()?;
+    let Some(list) = document.query_selector("[data-testid=\"lesson-goals\"]")? else {
+        return Ok(());
+    };
+    let Some((lesson, presenter)) = current() else {
+        return Ok(());
+    };
+    let Some(step) = lesson.steps.get(presenter.index) else {
+        return Ok(());
+    };
+    let on_page = router::current_route().page == step.page();
+    let mut all = true;
+    for (j, goal) in step.goals.iter().enumerate() {
+        let reading = on_page.then(|| readout_value(&document, &goal.readout)).flatten();
+        let met = goal.met(reading);
+        all &= met;
+        let selector = format!("[data-goal=\"{}\"]", j + 1);
+        if let Some(item) = list.query_selector(&selector)? {
+            let word = if met { "true" } else { "false" };
+            if item.get_attribute("data-goal-met").as_deref() != Some(word) {
+                item.set_attribute("data-goal-met", word)?;
+                if let Some(state) = item.query_selector(".lesson-goal-state")? {
+                    let id = if met { "lesson-goal-met" } else { "lesson-goal-open" };
+                    state.set_text_content(Some(&ctx::t(id)));
+                }
+            }
+        }
+    }
+    list.set_attribute("data-goals-met", if all { "true" } else { "false" })
+}
+
+/// The number readout `key` of the page shows: its `data-value`, else the number its text
+/// starts with (as the embedding API reads readouts).
+fn readout_value(document: &web_sys::Document, key: &str) -> Option<f64> {
+    let selector = format!("#app-main [data-readout=\"{key}\"]");
+    let readout = document.query_selector(&selector).ok()??;
+    match readout.get_attribute("data-value") {
+        Some(value) => embed::parse_number(&value),
+        None => embed::split_number(&readout.text_content()?).0,
     }
 }
 
@@ -479,8 +588,16 @@ pub(crate) fn render() -> Result<(), JsValue> {
             )?;
             dom::append(&text, &steps)?;
         }
+        if !step.goals.is_empty() {
+            dom::append(&text, &goals_list(&step.page(), &step.goals)?)?;
+        }
         dom::append(&bar, &text)?;
     }
+    let has_goals = lesson
+        .steps
+        .get(presenter.index)
+        .is_some_and(|s| !s.goals.is_empty());
+    check_goals_live(has_goals)?;
     let buttons = dom::el_class("div", "lesson-buttons")?;
     for action in ["lesson-prev", "lesson-next", "lesson-end"] {
         dom::append(&buttons, &dom::action_button(action, action)?)?;

@@ -6,12 +6,13 @@
 //! the step brings that section into view (without one, the page's main view). A step may also
 //! be one of its page's exercises ([`crate::view::exercises::PAGE_IDS`]): presented, the step
 //! brings the page's exercises into view with that exercise's answer hidden until "next"
-//! reveals it (a goal shows live whether it is met).
+//! reveals it (a goal shows live whether it is met). And a step may hold the teacher's own goal
+//! ([`crate::view::lesson_goal`]): conditions on the page's readouts, checked live.
 //!
 //! A lesson travels three ways, all checked here: as the `#/lesson?...` URL (indexed keys:
-//! `title`, then `r1`, `t1`, `n1`, `k1`, `f1`, `x1` for step 1's route, title, note, page
-//! steps, focus and exercise...), as a `.json` file (format `bsv-lesson` version 3, versions 2
-//! and 1 read too; read and
+//! `title`, then `r1`, `t1`, `n1`, `k1`, `f1`, `x1`, `g1` for step 1's route, title, note, page
+//! steps, focus, exercise and goal...), as a `.json` file (format `bsv-lesson` version 3,
+//! versions 2 and 1 read too; read and
 //! written by [`crate::view::lesson_file`]), and in the browser's storage (the same JSON). A bad
 //! file or URL gets a message naming what is wrong ([`LessonError`]); nothing half-read replaces
 //! the current lesson. A focus its page does not have is no error: [`Lesson::take_unknown_focuses`]
@@ -26,6 +27,7 @@ use crate::error::RecipeError;
 use crate::pyfmt::{group_u64, size_text};
 use crate::view::exercises::ids_of_page;
 use crate::view::json_file;
+use crate::view::lesson_goal::{GoalCondition, MAX_GOALS};
 use crate::view::sections;
 use crate::view::url::{self, IgnoredKey};
 
@@ -49,7 +51,7 @@ pub const MAX_NOTE_CHARS: usize = 1000;
 pub const MAX_PAGE_STEPS: u32 = 1000;
 
 /// One step: a page state, its title and note, and page steps before moving on.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct LessonStep {
     /// The permalink of the page state, `#/<page>?...` (no `lang`: the presenter's language
@@ -68,10 +70,14 @@ pub struct LessonStep {
     /// none.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exercise: Option<String>,
+    /// The teacher's own goal: conditions on the page's readouts, checked live while the step
+    /// is presented.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub goals: Vec<GoalCondition>,
 }
 
 /// A lesson: a title and its steps.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Lesson {
     pub title: String,
     pub steps: Vec<LessonStep>,
@@ -144,6 +150,10 @@ pub enum LessonError {
     TooLong { step: usize, field: &'static str },
     /// Step `step`: more page steps than [`MAX_PAGE_STEPS`].
     TooManyPageSteps { step: usize },
+    /// Step `step`: its goal `goal` (from 1) is not a readout, an op and a value (with a
+    /// tolerance for within), or there are more than [`MAX_GOALS`] (`goal` is then the first
+    /// too many).
+    BadGoal { step: usize, goal: usize },
     /// Step `step`: its exercise is none of its page's.
     UnknownExercise {
         step: usize,
@@ -183,6 +193,7 @@ impl LessonError {
             TooLong { .. } => "lesson-error-too-long",
             TooManyPageSteps { .. } => "lesson-error-page-steps",
             UnknownExercise { .. } => "lesson-error-unknown-exercise",
+            BadGoal { .. } => "lesson-error-goal",
         }
     }
 
@@ -262,6 +273,11 @@ impl LessonError {
                 ("max", MAX_PAGE_STEPS.to_string()),
             ],
             TitleTooLong => vec![("max", MAX_TITLE_CHARS.to_string())],
+            BadGoal { step, goal } => vec![
+                ("step", step.to_string()),
+                ("goal", goal.to_string()),
+                ("max", MAX_GOALS.to_string()),
+            ],
             UnknownExercise {
                 step,
                 page,
@@ -290,6 +306,7 @@ impl LessonStep {
             page_steps: 0,
             focus: None,
             exercise: None,
+            goals: Vec::new(),
         }
     }
 
@@ -337,6 +354,15 @@ impl Lesson {
             if step.page_steps > MAX_PAGE_STEPS {
                 return Err(LessonError::TooManyPageSteps { step: n });
             }
+            if step.goals.len() > MAX_GOALS {
+                return Err(LessonError::BadGoal {
+                    step: n,
+                    goal: MAX_GOALS + 1,
+                });
+            }
+            if let Some(j) = step.goals.iter().position(|g| !g.is_valid()) {
+                return Err(LessonError::BadGoal { step: n, goal: j + 1 });
+            }
             if let Some(exercise) = &step.exercise {
                 if !ids_of_page(&page).contains(&exercise.as_str()) {
                     return Err(LessonError::UnknownExercise {
@@ -368,6 +394,9 @@ impl Lesson {
             }
             if let Some(exercise) = &step.exercise {
                 q.push((format!("x{n}"), exercise.clone()));
+            }
+            if !step.goals.is_empty() {
+                q.push((format!("g{n}"), GoalCondition::list_to_link(&step.goals)));
             }
         }
         q
@@ -404,6 +433,11 @@ impl Lesson {
                     .parse::<u32>()
                     .map_err(|_| LessonError::TooManyPageSteps { step: n })?,
             };
+            let goals = match get(&format!("g{n}")) {
+                None => Vec::new(),
+                Some(g) => GoalCondition::list_from_link(g)
+                    .ok_or(LessonError::BadGoal { step: n, goal: 1 })?,
+            };
             lesson.steps.push(LessonStep {
                 route: without_lang(route),
                 title: get(&format!("t{n}")).unwrap_or("").to_owned(),
@@ -411,6 +445,7 @@ impl Lesson {
                 page_steps,
                 focus: get(&format!("f{n}")).map(str::to_owned),
                 exercise: get(&format!("x{n}")).map(str::to_owned),
+                goals,
             });
         }
         lesson.validate(is_page)?;
@@ -418,13 +453,14 @@ impl Lesson {
     }
 
     /// The keys of a `#/lesson` query that hold no part of the lesson (not `title`, nor `r`,
-    /// `t`, `n`, `k`, `f` or `x` of a step whose route `r<n>` is there), for the page's notice.
+    /// `t`, `n`, `k`, `f`, `x` or `g` of a step whose route `r<n>` is there), for the page's
+    /// notice.
     pub fn ignored_keys(query: &[(String, String)]) -> Vec<IgnoredKey> {
         let has_route = |n: &str| query.iter().any(|(k, _)| *k == format!("r{n}"));
         let mut ignored: Vec<IgnoredKey> = Vec::new();
         for (key, _) in query {
             let step_key = key
-                .strip_prefix(['r', 't', 'n', 'k', 'f', 'x'])
+                .strip_prefix(['r', 't', 'n', 'k', 'f', 'x', 'g'])
                 .filter(|n| n.parse::<usize>().is_ok_and(|n| n >= 1) && !n.starts_with('0'))
                 .is_some_and(has_route);
             if key != "title" && !step_key && !ignored.iter().any(|k| &k.key == key) {
@@ -581,6 +617,7 @@ pub(crate) mod tests {
                     page_steps: 5,
                     focus: Some("world".into()),
                     exercise: None,
+                    goals: Vec::new(),
                 },
                 LessonStep::of_route("#/pid-step?Kp=2&lang=ja", "PID, hotter gains"),
             ],

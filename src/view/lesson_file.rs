@@ -1,6 +1,7 @@
 //! The lesson `.json` file (format `bsv-lesson`), written as version 3 and read as version 3, 2
 //! or 1 (version 2 adds a step's `focus`, the section of its page it brings into view, version
-//! 3 a step's `exercise`, one of its page's exercises; an older file reads as it always did,
+//! 3 a step's `exercise`, one of its page's exercises, and `goals`, the teacher's own goal
+//! ([`crate::view::lesson_goal`]); an older file reads as it always did,
 //! its steps without those fields); what can be wrong with one is a
 //! [`LessonError`] naming the place (step n, field f). A focus its page does not have is no
 //! error: the page names it ([`Lesson::take_unknown_focuses`]).
@@ -19,6 +20,7 @@ use serde::Serialize;
 use serde_json::{Map, Value};
 
 use crate::view::json_file::{kind_of, too_deep_at, unknown_field};
+use crate::view::lesson_goal::{GoalCondition, GoalOp, MAX_GOALS};
 use crate::view::lesson::{
     without_lang, Expected, Lesson, LessonError, LessonStep, FIRST_VERSION, FORMAT, MAX_DEPTH,
     MAX_FILE_BYTES, MAX_PAGE_STEPS, MAX_STEPS, VERSION,
@@ -27,7 +29,11 @@ use crate::view::lesson::{
 /// The fields of the file, then of a step (version 2 has no `exercise`, version 1 no `focus`
 /// either).
 const FILE_FIELDS: [&str; 4] = ["format", "version", "title", "steps"];
-const STEP_FIELDS: [&str; 6] = ["route", "title", "note", "pageSteps", "focus", "exercise"];
+const STEP_FIELDS: [&str; 7] = [
+    "route", "title", "note", "pageSteps", "focus", "exercise", "goals",
+];
+/// The fields of a goal's condition.
+const GOAL_FIELDS: [&str; 4] = ["readout", "op", "value", "tolerance"];
 const STEP_FIELDS_V2: [&str; 5] = ["route", "title", "note", "pageSteps", "focus"];
 const STEP_FIELDS_V1: [&str; 4] = ["route", "title", "note", "pageSteps"];
 /// The version that added `focus`.
@@ -146,6 +152,23 @@ fn read_step(value: &Value, n: usize, fields: &[&str]) -> Result<LessonStep, Les
     let note = text_field(step, "note", at)?.unwrap_or_default();
     let focus = text_field(step, "focus", at)?;
     let exercise = text_field(step, "exercise", at)?;
+    let goals = match step.get("goals") {
+        None => Vec::new(),
+        Some(Value::Array(goals)) if goals.len() <= MAX_GOALS => goals
+            .iter()
+            .enumerate()
+            .map(|(j, goal)| {
+                read_goal(goal).ok_or(LessonError::BadGoal { step: n, goal: j + 1 })
+            })
+            .collect::<Result<Vec<_>, _>>()?,
+        Some(Value::Array(_)) => {
+            return Err(LessonError::BadGoal {
+                step: n,
+                goal: MAX_GOALS + 1,
+            })
+        }
+        Some(_) => return Err(wrong_type(at, "goals", Expected::List)),
+    };
     let page_steps = match step.get("pageSteps") {
         None => 0,
         Some(Value::Number(k)) => match k.as_u64() {
@@ -164,7 +187,29 @@ fn read_step(value: &Value, n: usize, fields: &[&str]) -> Result<LessonStep, Les
         page_steps,
         focus,
         exercise,
+        goals,
     })
+}
+
+/// A goal's condition (`None` unless it is an object of [`GOAL_FIELDS`] that makes a
+/// well-formed condition).
+fn read_goal(value: &Value) -> Option<GoalCondition> {
+    let Value::Object(goal) = value else {
+        return None;
+    };
+    if goal.keys().any(|k| !GOAL_FIELDS.contains(&k.as_str())) {
+        return None;
+    }
+    let condition = GoalCondition {
+        readout: goal.get("readout")?.as_str()?.to_owned(),
+        op: GoalOp::of_word(goal.get("op")?.as_str()?)?,
+        value: goal.get("value")?.as_f64()?,
+        tolerance: match goal.get("tolerance") {
+            None => None,
+            Some(t) => Some(t.as_f64()?),
+        },
+    };
+    condition.is_valid().then_some(condition)
 }
 
 fn missing(step: Option<usize>, field: &'static str) -> LessonError {
@@ -268,6 +313,53 @@ mod tests {
         assert_eq!(
             from_json(&v4, is_page),
             Err(LessonError::WrongVersion { found: 4 })
+        );
+    }
+
+    #[test]
+    fn a_steps_goal_round_trips_and_is_checked() {
+        let mut lesson = sample();
+        lesson.steps[1].goals = vec![
+            GoalCondition {
+                readout: "overshoot".into(),
+                op: GoalOp::Below,
+                value: 5.0,
+                tolerance: None,
+            },
+            GoalCondition {
+                readout: "settling-time".into(),
+                op: GoalOp::Within,
+                value: 1.0,
+                tolerance: Some(0.5),
+            },
+        ];
+        let text = to_json(&lesson);
+        assert!(text.contains("\"op\": \"within\"") && text.contains("\"tolerance\": 0.5"));
+        assert_eq!(from_json(&text, is_page), Ok(lesson.clone()));
+        let bad_goal = |text: &str| from_json(text, is_page).unwrap_err();
+        let err = LessonError::BadGoal { step: 2, goal: 2 };
+        assert_eq!(bad_goal(&text.replace("\"within\"", "\"about\"")), err);
+        assert_eq!(bad_goal(&text.replace("\"tolerance\": 0.5", "\"tolerance\": -1")), err);
+        assert_eq!(bad_goal(&text.replace("\"tolerance\": 0.5", "\"tol\": 0.5")), err);
+        let err = LessonError::BadGoal { step: 2, goal: 1 };
+        assert_eq!(bad_goal(&text.replace("\"value\": 5.0", "\"value\": \"5\"")), err);
+        assert_eq!(bad_goal(&text.replace("\"overshoot\"", "\"Over shoot\"")), err);
+        assert_eq!(err.message_id(), "lesson-error-goal");
+        // More than three: the fourth is named.
+        lesson.steps[1].goals = vec![lesson.steps[1].goals[0].clone(); 4];
+        assert_eq!(
+            bad_goal(&to_json(&lesson)),
+            LessonError::BadGoal { step: 2, goal: 4 }
+        );
+        // Version 2 has no goals.
+        lesson.steps[1].goals.truncate(1);
+        let v2 = to_json(&lesson).replace("\"version\": 3", "\"version\": 2");
+        assert_eq!(
+            bad_goal(&v2),
+            LessonError::UnknownField {
+                step: Some(2),
+                field: "goals".into()
+            }
         );
     }
 

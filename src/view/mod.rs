@@ -32,6 +32,7 @@ pub mod json_file;
 pub mod learner_progress;
 pub mod lesson;
 pub mod lesson_file;
+pub mod lesson_goal;
 pub mod palette;
 pub mod pendulum;
 pub mod pid_step;

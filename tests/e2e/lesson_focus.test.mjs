@@ -264,3 +264,57 @@ for (const lang of ['en', 'ja']) {
     }
   });
 }
+
+for (const lang of ['en', 'ja']) {
+  test(`a teacher's own goal (${lang}): edited on the step, kept in the link and the file, checked live while presenting`, async () => {
+    const viewport = { width: 1280, height: 720 };
+    const link = `#/lesson?lang=${lang}&title=PID&r1=${encodeURIComponent('#/pid-step')}&t1=Tune&g1=${encodeURIComponent('final-y~0.8±0.01')}`;
+    const { page, errors, close } = await openApp(server.url, link, { viewport, storage: PROJECTOR });
+    try {
+      const row = (n) => `[data-testid="lesson-step-1"] [data-goal-row="${n}"]`;
+      await page.waitForSelector(row(1));
+      assert.equal(await page.locator(`${row(1)} [data-field="goal-readout"]`).inputValue(), 'final-y');
+      assert.equal(await page.locator(`${row(1)} [data-field="goal-op"]`).inputValue(), 'within');
+      assert.equal(await page.locator(`${row(1)} [data-field="goal-value"]`).inputValue(), '0.8');
+      assert.equal(await page.locator(`${row(1)} [data-field="goal-tolerance"]`).inputValue(), '0.01');
+      // A second condition: added, a bad value named beside it (the last good one kept), then set.
+      await page.click('[data-testid="lesson-step-1"] [data-action="goal-add"]');
+      await page.waitForSelector(row(2));
+      await page.selectOption(`${row(2)} [data-field="goal-readout"]`, 'overshoot');
+      await page.fill(`${row(2)} [data-field="goal-value"]`, 'abc');
+      assert.equal(await page.locator(`${row(2)} .lesson-step-error`).isVisible(), true);
+      const stored = () => page.evaluate(() => JSON.parse(localStorage.getItem('bsv.lesson')).steps[0].goals);
+      assert.deepEqual((await stored())[1], { readout: 'overshoot', op: '<', value: 0 });
+      await page.fill(`${row(2)} [data-field="goal-value"]`, '5');
+      assert.equal(await page.locator(`${row(2)} .lesson-step-error`).isVisible(), false);
+      assert.deepEqual(await stored(), [
+        { readout: 'final-y', op: 'within', value: 0.8, tolerance: 0.01 },
+        { readout: 'overshoot', op: '<', value: 5 },
+      ]);
+      assert.match(decodeURIComponent(page.url()), /g1=final-y~0\.8±0\.01;overshoot<5/);
+      // Three at most: the third hides "Add a goal"; Remove takes one away.
+      await page.click('[data-testid="lesson-step-1"] [data-action="goal-add"]');
+      await page.waitForSelector(row(3));
+      assert.equal(await page.locator('[data-testid="lesson-step-1"] [data-action="goal-add"]').count(), 0);
+      await page.click(`${row(3)} [data-action="goal-remove"]`);
+      await page.waitForFunction(async () => JSON.parse(localStorage.getItem('bsv.lesson')).steps[0].goals.length === 2);
+      // Presented: each condition on the page's numbers, live.
+      await page.click('[data-action="lesson-present"]');
+      await page.waitForFunction(() => location.hash.startsWith('#/pid-step'));
+      const goals = '[data-testid="lesson-goals"]';
+      await page.waitForSelector(`${goals}[data-goals-met="true"]`, { timeout: 15000 });
+      assert.equal(await page.locator(`${goals} [data-goal="1"]`).getAttribute('data-goal-met'), 'true');
+      await page.screenshot({ path: join(OUT, `lesson-goal-met-${lang}.png`) });
+      // No integral action: y settles lower, the first condition is no longer met.
+      await page.locator('[data-field="Ki"]').fill('0');
+      await page.waitForSelector(`${goals} [data-goal="1"][data-goal-met="false"]`, { timeout: 5000 });
+      assert.equal(await page.locator(goals).getAttribute('data-goals-met'), 'false');
+      await page.locator('[data-field="Ki"]').fill('0.4');
+      await page.waitForSelector(`${goals}[data-goals-met="true"]`, { timeout: 5000 });
+      await page.keyboard.press('Escape');
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
+    }
+  });
+}

@@ -57,6 +57,7 @@ pub fn lesson(key: &str, is_page: impl Fn(&str) -> bool) -> Option<Lesson> {
             page_steps: *page_steps,
             focus: Some((*focus).to_owned()),
             exercise: (!exercise.is_empty()).then(|| (*exercise).to_owned()),
+            goals: Vec::new(),
         })
         .filter(|s| is_page(&s.page()))
         .collect();

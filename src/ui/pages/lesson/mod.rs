@@ -35,6 +35,7 @@ use crate::ui::page::{MountCtx, Page, ShellLink};
 use crate::ui::page_frame;
 use crate::ui::{ctx, download, lang_files, router};
 use crate::view::exercises::ids_of_page;
+use crate::view::lesson_goal::{self, GoalCondition, GoalOp, MAX_GOALS};
 use crate::view::lesson::{Lesson, LessonError, UnknownFocus, MAX_FILE_BYTES, MAX_PAGE_STEPS};
 use crate::view::lesson_file;
 use crate::view::sections;
@@ -532,6 +533,9 @@ impl Editor {
             steps.set_value(&step.page_steps.to_string());
             let focus = focus_field(&item, &step.page(), step.focus.as_deref())?;
             let exercise = exercise_field(&item, &step.page(), step.exercise.as_deref())?;
+            if let Some(goals) = goals_field(&item, &step.page(), &step.goals)? {
+                self.listen_goals(&goals, i, &mut listeners)?;
+            }
             let error = dom::el_class("p", "lesson-step-error")?;
             error.set_attribute("data-field-error", &format!("step-page-steps-{}", i + 1))?;
             dom::show(&error, false);
@@ -635,6 +639,216 @@ fn focus_field(
     dom::append(&label, &select)?;
     dom::append(item, &label)?;
     Ok(select)
+}
+
+impl Editor {
+    /// The acts on step `i`'s goal: add a condition, remove one, edit one (kept once it is
+    /// well formed; until then the row says what is wrong and the last good one stays).
+    fn listen_goals(
+        self: &Rc<Self>,
+        goals: &Element,
+        i: usize,
+        listeners: &mut Vec<Listener>,
+    ) -> Result<(), JsValue> {
+        let weak = Rc::downgrade(self);
+        listeners.push(Listener::new(goals, "click", move |event| {
+            let Some(page) = weak.upgrade() else { return };
+            let Some(button) = event
+                .target()
+                .and_then(|t| t.dyn_into::<Element>().ok())
+                .and_then(|t| t.closest("button[data-action]").ok().flatten())
+            else {
+                return;
+            };
+            let row = goal_row_index(&button);
+            {
+                let mut lesson = page.lesson.borrow_mut();
+                let Some(step) = lesson.steps.get_mut(i) else { return };
+                match button.get_attribute("data-action").as_deref() {
+                    Some("goal-add") if step.goals.len() < MAX_GOALS => {
+                        let page_id = step.page();
+                        let Some((readout, _)) = lesson_goal::readouts_of(&page_id).first() else {
+                            return;
+                        };
+                        step.goals.push(GoalCondition {
+                            readout: (*readout).to_owned(),
+                            op: GoalOp::Below,
+                            value: 0.0,
+                            tolerance: None,
+                        });
+                    }
+                    Some("goal-remove") => {
+                        if let Some(j) = row.filter(|j| *j < step.goals.len()) {
+                            step.goals.remove(j);
+                        }
+                    }
+                    _ => return,
+                }
+            }
+            let _ = page.changed(true);
+        })?);
+        let weak = Rc::downgrade(self);
+        for kind in ["change", "input"] {
+            let weak = weak.clone();
+            listeners.push(Listener::new(goals, kind, move |event| {
+                let Some(page) = weak.upgrade() else { return };
+                let Some(row) = event
+                    .target()
+                    .and_then(|t| t.dyn_into::<Element>().ok())
+                    .and_then(|t| t.closest("[data-goal-row]").ok().flatten())
+                else {
+                    return;
+                };
+                let Some(j) = goal_row_index(&row) else { return };
+                let read = read_goal_row(&row);
+                show_goal_row(&row, read.as_ref());
+                if let Some(goal) = read {
+                    if let Some(step) = page.lesson.borrow_mut().steps.get_mut(i) {
+                        if let Some(old) = step.goals.get_mut(j) {
+                            *old = goal;
+                        }
+                    }
+                    let _ = page.changed(false);
+                }
+            })?);
+        }
+        Ok(())
+    }
+}
+
+/// The index (from 0) of the goal row `element` is in.
+fn goal_row_index(element: &Element) -> Option<usize> {
+    element
+        .closest("[data-goal-row]")
+        .ok()??
+        .get_attribute("data-goal-row")?
+        .parse::<usize>()
+        .ok()?
+        .checked_sub(1)
+}
+
+/// The condition a goal row holds, if it is well formed.
+fn read_goal_row(row: &Element) -> Option<GoalCondition> {
+    let value_of = |field: &str| -> Option<String> {
+        let element = row.query_selector(&format!("[data-field=\"{field}\"]")).ok()??;
+        if let Some(select) = element.dyn_ref::<HtmlSelectElement>() {
+            return Some(select.value());
+        }
+        Some(element.dyn_ref::<HtmlInputElement>()?.value())
+    };
+    let op = GoalOp::of_word(&value_of("goal-op")?)?;
+    let goal = GoalCondition {
+        readout: value_of("goal-readout")?,
+        op,
+        value: lesson_goal::parse_number(&value_of("goal-value")?)?,
+        tolerance: match op {
+            GoalOp::Within => Some(lesson_goal::parse_number(&value_of("goal-tolerance")?)?),
+            _ => None,
+        },
+    };
+    goal.is_valid().then_some(goal)
+}
+
+/// Shows the row's tolerance only for within, its unit, and its error while it is not a
+/// condition.
+fn show_goal_row(row: &Element, read: Option<&GoalCondition>) {
+    let within = row
+        .query_selector("[data-field=\"goal-op\"]")
+        .ok()
+        .flatten()
+        .and_then(|e| e.dyn_into::<HtmlSelectElement>().ok())
+        .is_some_and(|s| s.value() == GoalOp::Within.word());
+    if let Ok(Some(tolerance)) = row.query_selector(".lesson-goal-tolerance") {
+        dom::show(&tolerance, within);
+    }
+    if let Ok(Some(error)) = row.query_selector(".lesson-step-error") {
+        dom::show(&error, read.is_none());
+    }
+}
+
+/// The step's goal (`data-field="goals"`): its conditions, one row each (`data-goal-row`: the
+/// readout, `<`, `>` or within, the value and, for within, the tolerance, in the readout's
+/// unit; Remove), and "Add a goal" up to [`MAX_GOALS`]; appended to `item`. `None` for a page
+/// without readouts.
+fn goals_field(
+    item: &Element,
+    page: &str,
+    goals: &[GoalCondition],
+) -> Result<Option<Element>, JsValue> {
+    let readouts = lesson_goal::readouts_of(page);
+    if readouts.is_empty() {
+        return Ok(None);
+    }
+    let field = dom::el_class("fieldset", "lesson-goals-edit")?;
+    field.set_attribute("data-field", "goals")?;
+    dom::append(&field, &dom::el_i18n("legend", "", "lesson-step-goals-label")?)?;
+    for (j, goal) in goals.iter().enumerate() {
+        let row = dom::el_class("div", "lesson-goal-row")?;
+        row.set_attribute("data-goal-row", &(j + 1).to_string())?;
+        let readout: HtmlSelectElement = dom::el("select")?.dyn_into()?;
+        readout.set_attribute("data-field", "goal-readout")?;
+        readout.set_attribute("aria-label", &ctx::t("lesson-goal-readout-label"))?;
+        for (key, unit) in readouts {
+            let text = if unit.is_empty() {
+                (*key).to_owned()
+            } else {
+                format!("{key} ({unit})")
+            };
+            let option = dom::el_text("option", "", &text)?;
+            option.set_attribute("value", key)?;
+            dom::append(&readout, &option)?;
+        }
+        readout.set_value(&goal.readout);
+        dom::append(&row, &readout)?;
+        let op: HtmlSelectElement = dom::el("select")?.dyn_into()?;
+        op.set_attribute("data-field", "goal-op")?;
+        op.set_attribute("aria-label", &ctx::t("lesson-goal-op-label"))?;
+        for (value, id) in [
+            (GoalOp::Below, "lesson-goal-op-below"),
+            (GoalOp::Above, "lesson-goal-op-above"),
+            (GoalOp::Within, "lesson-goal-op-within"),
+        ] {
+            let option = dom::el_i18n("option", "", id)?;
+            option.set_attribute("value", value.word())?;
+            dom::append(&op, &option)?;
+        }
+        op.set_value(goal.op.word());
+        dom::append(&row, &op)?;
+        let value: HtmlInputElement = dom::el("input")?.dyn_into()?;
+        value.set_attribute("data-field", "goal-value")?;
+        value.set_attribute("inputmode", "decimal")?;
+        value.set_attribute("aria-label", &ctx::t("lesson-goal-value-label"))?;
+        value.set_value(&lesson_goal::number_text(goal.value));
+        dom::append(&row, &value)?;
+        let tolerance = dom::el_class("span", "lesson-goal-tolerance")?;
+        dom::append(&tolerance, &dom::el_text("span", "", "±")?)?;
+        let tol: HtmlInputElement = dom::el("input")?.dyn_into()?;
+        tol.set_attribute("data-field", "goal-tolerance")?;
+        tol.set_attribute("inputmode", "decimal")?;
+        tol.set_attribute("aria-label", &ctx::t("lesson-goal-tolerance-label"))?;
+        tol.set_value(&lesson_goal::number_text(goal.tolerance.unwrap_or(0.0)));
+        dom::append(&tolerance, &tol)?;
+        dom::append(&row, &tolerance)?;
+        let unit = lesson_goal::unit_of(page, &goal.readout);
+        dom::append(&row, &dom::el_text("span", "lesson-goal-unit", unit)?)?;
+        let remove = dom::el_i18n("button", "tool-button", "lesson-goal-remove")?;
+        remove.set_attribute("type", "button")?;
+        remove.set_attribute("data-action", "goal-remove")?;
+        dom::append(&row, &remove)?;
+        let error = dom::el_i18n("p", "lesson-step-error", "lesson-goal-invalid")?;
+        error.set_attribute("role", "alert")?;
+        dom::append(&row, &error)?;
+        show_goal_row(&row, Some(goal));
+        dom::append(&field, &row)?;
+    }
+    if goals.len() < MAX_GOALS {
+        let add = dom::el_i18n("button", "tool-button", "lesson-goal-add")?;
+        add.set_attribute("type", "button")?;
+        add.set_attribute("data-action", "goal-add")?;
+        dom::append(&field, &add)?;
+    }
+    dom::append(item, &field)?;
+    Ok(Some(field))
 }
 
 /// The step's exercise (`data-field="exercise"`): none, or one of the exercises of `page`,
