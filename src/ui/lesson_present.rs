@@ -328,16 +328,22 @@ fn goals_list(page: &str, goals: &[GoalCondition]) -> Result<Element, JsValue> {
                 "lesson-goal-within"
             }
         };
-        dom::append(&item, &dom::el_text("span", "lesson-goal-text", &ctx::t_strings(id, &args))?)?;
+        dom::append(
+            &item,
+            &dom::el_text("span", "lesson-goal-text", &ctx::t_strings(id, &args))?,
+        )?;
         dom::append(&item, &dom::el_class("span", "lesson-goal-state")?)?;
         dom::append(&list, &item)?;
     }
     Ok(list)
 }
 
+/// A repeating check: its interval's handle and its callback.
+type Interval = (i32, Closure<dyn FnMut()>);
+
 thread_local! {
-    /// The live check of the shown step's goal: its interval and callback.
-    static GOALS_CHECK: RefCell<Option<(i32, Closure<dyn FnMut()>)>> = const { RefCell::new(None) };
+    /// The live check of the shown step's goal.
+    static GOALS_CHECK: RefCell<Option<Interval>> = const { RefCell::new(None) };
 }
 
 /// How often the shown step's goal is checked, ms.
@@ -381,7 +387,9 @@ fn draw_goals() -> Result<(), JsValue> {
     let on_page = router::current_route().page == step.page();
     let mut all = true;
     for (j, goal) in step.goals.iter().enumerate() {
-        let reading = on_page.then(|| readout_value(&document, &goal.readout)).flatten();
+        let reading = on_page
+            .then(|| readout_value(&document, &goal.readout))
+            .flatten();
         let met = goal.met(reading);
         all &= met;
         let selector = format!("[data-goal=\"{}\"]", j + 1);
@@ -390,7 +398,11 @@ fn draw_goals() -> Result<(), JsValue> {
             if item.get_attribute("data-goal-met").as_deref() != Some(word) {
                 item.set_attribute("data-goal-met", word)?;
                 if let Some(state) = item.query_selector(".lesson-goal-state")? {
-                    let id = if met { "lesson-goal-met" } else { "lesson-goal-open" };
+                    let id = if met {
+                        "lesson-goal-met"
+                    } else {
+                        "lesson-goal-open"
+                    };
                     state.set_text_content(Some(&ctx::t(id)));
                 }
             }

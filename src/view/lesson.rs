@@ -361,7 +361,10 @@ impl Lesson {
                 });
             }
             if let Some(j) = step.goals.iter().position(|g| !g.is_valid()) {
-                return Err(LessonError::BadGoal { step: n, goal: j + 1 });
+                return Err(LessonError::BadGoal {
+                    step: n,
+                    goal: j + 1,
+                });
             }
             if let Some(exercise) = &step.exercise {
                 if !ids_of_page(&page).contains(&exercise.as_str()) {

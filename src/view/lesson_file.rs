@@ -20,17 +20,23 @@ use serde::Serialize;
 use serde_json::{Map, Value};
 
 use crate::view::json_file::{kind_of, too_deep_at, unknown_field};
-use crate::view::lesson_goal::{GoalCondition, GoalOp, MAX_GOALS};
 use crate::view::lesson::{
     without_lang, Expected, Lesson, LessonError, LessonStep, FIRST_VERSION, FORMAT, MAX_DEPTH,
     MAX_FILE_BYTES, MAX_PAGE_STEPS, MAX_STEPS, VERSION,
 };
+use crate::view::lesson_goal::{GoalCondition, GoalOp, MAX_GOALS};
 
 /// The fields of the file, then of a step (version 2 has no `exercise`, version 1 no `focus`
 /// either).
 const FILE_FIELDS: [&str; 4] = ["format", "version", "title", "steps"];
 const STEP_FIELDS: [&str; 7] = [
-    "route", "title", "note", "pageSteps", "focus", "exercise", "goals",
+    "route",
+    "title",
+    "note",
+    "pageSteps",
+    "focus",
+    "exercise",
+    "goals",
 ];
 /// The fields of a goal's condition.
 const GOAL_FIELDS: [&str; 4] = ["readout", "op", "value", "tolerance"];
@@ -158,7 +164,10 @@ fn read_step(value: &Value, n: usize, fields: &[&str]) -> Result<LessonStep, Les
             .iter()
             .enumerate()
             .map(|(j, goal)| {
-                read_goal(goal).ok_or(LessonError::BadGoal { step: n, goal: j + 1 })
+                read_goal(goal).ok_or(LessonError::BadGoal {
+                    step: n,
+                    goal: j + 1,
+                })
             })
             .collect::<Result<Vec<_>, _>>()?,
         Some(Value::Array(_)) => {
@@ -339,11 +348,23 @@ mod tests {
         let bad_goal = |text: &str| from_json(text, is_page).unwrap_err();
         let err = LessonError::BadGoal { step: 2, goal: 2 };
         assert_eq!(bad_goal(&text.replace("\"within\"", "\"about\"")), err);
-        assert_eq!(bad_goal(&text.replace("\"tolerance\": 0.5", "\"tolerance\": -1")), err);
-        assert_eq!(bad_goal(&text.replace("\"tolerance\": 0.5", "\"tol\": 0.5")), err);
+        assert_eq!(
+            bad_goal(&text.replace("\"tolerance\": 0.5", "\"tolerance\": -1")),
+            err
+        );
+        assert_eq!(
+            bad_goal(&text.replace("\"tolerance\": 0.5", "\"tol\": 0.5")),
+            err
+        );
         let err = LessonError::BadGoal { step: 2, goal: 1 };
-        assert_eq!(bad_goal(&text.replace("\"value\": 5.0", "\"value\": \"5\"")), err);
-        assert_eq!(bad_goal(&text.replace("\"overshoot\"", "\"Over shoot\"")), err);
+        assert_eq!(
+            bad_goal(&text.replace("\"value\": 5.0", "\"value\": \"5\"")),
+            err
+        );
+        assert_eq!(
+            bad_goal(&text.replace("\"overshoot\"", "\"Over shoot\"")),
+            err
+        );
         assert_eq!(err.message_id(), "lesson-error-goal");
         // More than three: the fourth is named.
         lesson.steps[1].goals = vec![lesson.steps[1].goals[0].clone(); 4];

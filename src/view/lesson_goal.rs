@@ -158,7 +158,11 @@ pub fn number_text(x: f64) -> String {
 /// A number typed by a teacher: decimal, with `-` or the minus sign, `e` exponents.
 pub fn parse_number(text: &str) -> Option<f64> {
     let text = text.trim().replace('−', "-");
-    if text.is_empty() || !text.chars().all(|c| c.is_ascii_digit() || "+-.eE".contains(c)) {
+    if text.is_empty()
+        || !text
+            .chars()
+            .all(|c| c.is_ascii_digit() || "+-.eE".contains(c))
+    {
         return None;
     }
     text.parse::<f64>().ok().filter(|x| x.is_finite())
@@ -184,7 +188,13 @@ const PAGE_READOUTS: &[(&str, &[(&str, &str)])] = &[
     ("se3-relative", &[("x", "m"), ("y", "m"), ("z", "m")]),
     (
         "umeyama-2d",
-        &[("scale", ""), ("angle", "°"), ("tx", ""), ("ty", ""), ("rmse", "")],
+        &[
+            ("scale", ""),
+            ("angle", "°"),
+            ("tx", ""),
+            ("ty", ""),
+            ("rmse", ""),
+        ],
     ),
     (
         "pendulum-energy",
@@ -220,7 +230,12 @@ const PAGE_READOUTS: &[(&str, &[(&str, &str)])] = &[
     ("traj-resample", &[("rows_out", ""), ("duration", "s")]),
     (
         "rrt-2d",
-        &[("iteration", ""), ("nodes", ""), ("path_points", ""), ("length", "")],
+        &[
+            ("iteration", ""),
+            ("nodes", ""),
+            ("path_points", ""),
+            ("length", ""),
+        ],
     ),
     (
         "teleop",
@@ -320,7 +335,17 @@ mod tests {
         assert_eq!(GoalCondition::list_from_link(&link), Some(goals.clone()));
         let four = format!("{link};t<1");
         assert_eq!(GoalCondition::list_from_link(&four), None);
-        for bad in ["", "q2", "q2<", "q2<x", "q2~90", "q2~90±-1", "Q2<1", "q2<1e999", "<1"] {
+        for bad in [
+            "",
+            "q2",
+            "q2<",
+            "q2<x",
+            "q2~90",
+            "q2~90±-1",
+            "Q2<1",
+            "q2<1e999",
+            "<1",
+        ] {
             assert_eq!(GoalCondition::from_link(bad), None, "{bad}");
         }
     }

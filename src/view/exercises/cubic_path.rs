@@ -57,6 +57,8 @@ fn speed_limit_met(model: &PageModel) -> Result<bool, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[cfg(target_family = "wasm")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
     crate::view::exercises::exercise::page_check!(|p: &CubicParams| PageModel::CubicPath(p));
 
     #[test]

@@ -343,8 +343,6 @@ pub(crate) use model_of;
 macro_rules! page_check {
     (|$arg:ident: $ty:ty| $model:expr) => {
         use crate::view::exercises::exercise::{Answer, Verdict};
-        #[cfg(target_family = "wasm")]
-        use wasm_bindgen_test::wasm_bindgen_test as test;
 
         fn find(id: &str) -> Option<&'static Exercise> {
             EXERCISES.iter().find(|e| e.id == id)

@@ -81,7 +81,11 @@ fn over_top_met(model: &PageModel) -> Result<bool, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    crate::view::exercises::exercise::page_check!(|params: &PendulumParams| PageModel::Pendulum(params));
+    #[cfg(target_family = "wasm")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+    crate::view::exercises::exercise::page_check!(|params: &PendulumParams| PageModel::Pendulum(
+        params
+    ));
 
     #[test]
     fn pendulum_euler_dt_is_within_a_quarter_of_the_kernel_drift() {

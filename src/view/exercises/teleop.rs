@@ -45,7 +45,12 @@ fn near_singular_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::teleop::{ik_step, jacobian, ControlParams, IkMethod};
-    crate::view::exercises::exercise::page_check!(|q: [f64; 3]| PageModel::Teleop { arm: &ArmParams::DEFAULT, q });
+    #[cfg(target_family = "wasm")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+    crate::view::exercises::exercise::page_check!(|q: [f64; 3]| PageModel::Teleop {
+        arm: &ArmParams::DEFAULT,
+        q
+    });
 
     #[test]
     fn teleop_near_singular_needs_the_elbow_almost_straight() {

@@ -71,7 +71,12 @@ fn miss_peak_met(m: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::traj_resample::{parse_trajectory, SAMPLE};
-    crate::view::exercises::exercise::page_check!(|dt: f64| PageModel::TrajResample(&parse_trajectory(SAMPLE).unwrap(), dt));
+    #[cfg(target_family = "wasm")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+    crate::view::exercises::exercise::page_check!(|dt: f64| PageModel::TrajResample(
+        &parse_trajectory(SAMPLE).unwrap(),
+        dt
+    ));
 
     #[test]
     fn traj_rows_counts_the_new_grid() {

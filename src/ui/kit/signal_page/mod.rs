@@ -623,9 +623,10 @@ impl<S: SignalPage> Page for Signal<S> {
         if let Some(rows) = big {
             live.run(params, rows, RunFrom::Mount);
         }
-        let exercises = ExerciseSlot::lending(&live.kit.root, S::EXERCISES, &live, |live, lend| {
-            lend(&S::exercise_model(&live.kit.run().params))
-        })?;
+        let exercises =
+            ExerciseSlot::lending(&live.kit.root, S::EXERCISES, &live, |live, lend| {
+                lend(&S::exercise_model(&live.kit.run().params))
+            })?;
         Ok(Signal {
             live,
             _exercises: exercises,

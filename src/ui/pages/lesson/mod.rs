@@ -35,9 +35,9 @@ use crate::ui::page::{MountCtx, Page, ShellLink};
 use crate::ui::page_frame;
 use crate::ui::{ctx, download, lang_files, router};
 use crate::view::exercises::ids_of_page;
-use crate::view::lesson_goal::{self, GoalCondition, GoalOp, MAX_GOALS};
 use crate::view::lesson::{Lesson, LessonError, UnknownFocus, MAX_FILE_BYTES, MAX_PAGE_STEPS};
 use crate::view::lesson_file;
+use crate::view::lesson_goal::{self, GoalCondition, GoalOp, MAX_GOALS};
 use crate::view::sections;
 
 /// The download of the stored text that could not be read.
@@ -663,7 +663,9 @@ impl Editor {
             let row = goal_row_index(&button);
             {
                 let mut lesson = page.lesson.borrow_mut();
-                let Some(step) = lesson.steps.get_mut(i) else { return };
+                let Some(step) = lesson.steps.get_mut(i) else {
+                    return;
+                };
                 match button.get_attribute("data-action").as_deref() {
                     Some("goal-add") if step.goals.len() < MAX_GOALS => {
                         let page_id = step.page();
@@ -699,7 +701,9 @@ impl Editor {
                 else {
                     return;
                 };
-                let Some(j) = goal_row_index(&row) else { return };
+                let Some(j) = goal_row_index(&row) else {
+                    return;
+                };
                 let read = read_goal_row(&row);
                 show_goal_row(&row, read.as_ref());
                 if let Some(goal) = read {
@@ -730,7 +734,9 @@ fn goal_row_index(element: &Element) -> Option<usize> {
 /// The condition a goal row holds, if it is well formed.
 fn read_goal_row(row: &Element) -> Option<GoalCondition> {
     let value_of = |field: &str| -> Option<String> {
-        let element = row.query_selector(&format!("[data-field=\"{field}\"]")).ok()??;
+        let element = row
+            .query_selector(&format!("[data-field=\"{field}\"]"))
+            .ok()??;
         if let Some(select) = element.dyn_ref::<HtmlSelectElement>() {
             return Some(select.value());
         }
@@ -781,7 +787,10 @@ fn goals_field(
     }
     let field = dom::el_class("fieldset", "lesson-goals-edit")?;
     field.set_attribute("data-field", "goals")?;
-    dom::append(&field, &dom::el_i18n("legend", "", "lesson-step-goals-label")?)?;
+    dom::append(
+        &field,
+        &dom::el_i18n("legend", "", "lesson-step-goals-label")?,
+    )?;
     for (j, goal) in goals.iter().enumerate() {
         let row = dom::el_class("div", "lesson-goal-row")?;
         row.set_attribute("data-goal-row", &(j + 1).to_string())?;
