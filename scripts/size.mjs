@@ -20,7 +20,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1640 * KB;
+export const CEILING = 1660 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -43,7 +43,7 @@ export const ROUTE_CEILINGS = {
   teleop: 325,
   so101: 350,
   drills: 306,
-  lesson: 239,
+  lesson: 252,
 };
 /** The ceiling of a route (a route not in the table has the largest). */
 export function routeCeiling(route) {

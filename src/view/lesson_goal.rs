@@ -9,6 +9,8 @@
 
 use serde::Serialize;
 
+use crate::pyfmt::py_float;
+
 /// The most conditions a step holds.
 pub const MAX_GOALS: usize = 3;
 /// The longest readout key.
@@ -150,9 +152,14 @@ impl GoalCondition {
     }
 }
 
-/// A number as a field or a link shows it: the shortest text that reads back the same.
+/// A number as a field or a link shows it: Python's `repr` (the shortest text that reads back
+/// the same), without a trailing `.0`.
 pub fn number_text(x: f64) -> String {
-    format!("{x}")
+    let text = py_float(x);
+    match text.strip_suffix(".0") {
+        Some(whole) => whole.to_owned(),
+        None => text,
+    }
 }
 
 /// A number typed by a teacher: decimal, with `-` or the minus sign, `e` exponents.
@@ -332,6 +339,11 @@ mod tests {
         ];
         let link = GoalCondition::list_to_link(&goals);
         assert_eq!(link, "manipulability<0.001;overshoot>-2.5;q2_deg~90±5");
+        assert_eq!(number_text(1e-5), "1e-05");
+        assert_eq!(
+            GoalCondition::from_link("t<1e-05").map(|g| g.value),
+            Some(1e-5)
+        );
         assert_eq!(GoalCondition::list_from_link(&link), Some(goals.clone()));
         let four = format!("{link};t<1");
         assert_eq!(GoalCondition::list_from_link(&four), None);
