@@ -57,8 +57,7 @@ fn speed_limit_met(model: &PageModel) -> Result<bool, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::view::exercises::exercise::test_attribute::test;
     crate::view::exercises::exercise::page_check!(|p: &CubicParams| PageModel::CubicPath(p));
 
     #[test]

@@ -356,3 +356,13 @@ macro_rules! page_check {
 }
 #[cfg(test)]
 pub(crate) use page_check;
+
+/// The exercise modules' test attribute (their tests import it): wasm-bindgen-test's in wasm,
+/// the standard one natively.
+#[cfg(test)]
+pub(crate) mod test_attribute {
+    #[cfg(not(target_family = "wasm"))]
+    pub(crate) use core::prelude::v1::test;
+    #[cfg(target_family = "wasm")]
+    pub(crate) use wasm_bindgen_test::wasm_bindgen_test as test;
+}

@@ -93,8 +93,7 @@ fn best_elbow_truth(model: &PageModel) -> Result<f64, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::view::exercises::exercise::test_attribute::test;
     crate::view::exercises::exercise::page_check!(|state: &State| PageModel::Ik2r(state));
 
     fn pose(q1: f64, q2: f64) -> State {

@@ -75,9 +75,8 @@ fn overshoot_truth(model: &PageModel) -> Result<f64, CheckError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::view::exercises::exercise::test_attribute::test;
     use crate::view::pid_step::TUNED_GAINS;
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
     crate::view::exercises::exercise::page_check!(|p: &PidParams| PageModel::PidStep(p));
 
     fn gains(kp: f64, ki: f64, kd: f64) -> PidParams {

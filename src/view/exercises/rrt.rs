@@ -78,8 +78,7 @@ fn wall_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::rrt_2d::{check_points, segment_clear, Obstacle, OBSTACLE};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::view::exercises::exercise::test_attribute::test;
     crate::view::exercises::exercise::page_check!(|setup: &RrtSetup| PageModel::Rrt(setup));
 
     fn with_boxes(boxes: &[[f64; 4]]) -> RrtSetup {

@@ -65,8 +65,7 @@ fn ahead_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::se3_relative::relative_transform;
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::view::exercises::exercise::test_attribute::test;
     crate::view::exercises::exercise::page_check!(|p: &Se3Params| PageModel::Se3(p));
 
     #[test]

@@ -52,8 +52,7 @@ mod tests {
     use super::*;
     use crate::so101::kinematics::jt_j;
     use crate::teleop::control::smallest_eigenvalue;
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::view::exercises::exercise::test_attribute::test;
     crate::view::exercises::exercise::page_check!(|q: [f64; 5]| PageModel::So101 { q });
 
     #[test]

@@ -45,8 +45,7 @@ fn near_singular_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::teleop::{ik_step, jacobian, ControlParams, IkMethod};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::view::exercises::exercise::test_attribute::test;
     crate::view::exercises::exercise::page_check!(|q: [f64; 3]| PageModel::Teleop {
         arm: &ArmParams::DEFAULT,
         q

@@ -71,8 +71,7 @@ fn miss_peak_met(m: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::traj_resample::{parse_trajectory, SAMPLE};
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::view::exercises::exercise::test_attribute::test;
     crate::view::exercises::exercise::page_check!(|dt: f64| PageModel::TrajResample(
         &parse_trajectory(SAMPLE).unwrap(),
         dt

@@ -58,8 +58,7 @@ fn total_time_truth(model: &PageModel) -> Result<f64, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::trapezoid_profile::compute;
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::view::exercises::exercise::test_attribute::test;
     crate::view::exercises::exercise::page_check!(|p: &TrapParams| PageModel::Trapezoid(p));
 
     fn with_distance(distance: f64) -> TrapParams {

@@ -53,8 +53,7 @@ fn exact_met(model: &PageModel) -> Result<bool, CheckError> {
 mod tests {
     use super::*;
     use crate::recipes::umeyama_2d::UmeyamaParams;
-    #[cfg(target_family = "wasm")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::view::exercises::exercise::test_attribute::test;
     crate::view::exercises::exercise::page_check!(|setup: &UmeyamaSetup| PageModel::Umeyama(setup));
 
     fn noise(sigma: f64) -> UmeyamaSetup {
