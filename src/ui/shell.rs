@@ -320,23 +320,32 @@ fn report(result: Result<(), JsValue>) {
     }
 }
 
-/// The user switched language: apply it, save it, and put it in the URL.
+/// The user switched language: apply it, save it, and put it in the URL once it is shown (its
+/// strings may have to come first: until then the URL keeps the language shown).
 pub(crate) fn switch_lang(lang: Lang) -> Result<(), JsValue> {
     dom::storage_set(LANG_STORAGE_KEY, lang.code());
     router::set_lang_in_url(true);
-    apply_lang(lang)?;
-    router::sync_lang_in_url();
-    Ok(())
+    show_lang_then(lang, router::sync_lang_in_url)
 }
 
 /// Makes `lang` current and re-renders every visible string, once its strings are loaded.
 pub(crate) fn apply_lang(lang: Lang) -> Result<(), JsValue> {
+    show_lang_then(lang, || {})
+}
+
+/// [`apply_lang`], then `then` once `lang` is shown.
+fn show_lang_then(lang: Lang, then: fn()) -> Result<(), JsValue> {
     if has_strings(lang, routed_def()) {
-        return show_lang(lang);
+        show_lang(lang)?;
+        then();
+        return Ok(());
     }
     wasm_bindgen_futures::spawn_local(async move {
         match lang_files::load(lang, page_strings(routed_def())).await {
-            Ok(()) => report(show_lang(lang)),
+            Ok(()) => {
+                report(show_lang(lang));
+                then();
+            }
             Err(_) => report(Err(JsValue::from_str(&format!(
                 "the {} strings could not be loaded",
                 lang.code()
