@@ -584,14 +584,11 @@ fn readouts() -> Value {
             continue;
         };
         let text = element.text_content().unwrap_or_default();
-        let (number, text_unit) = protocol::split_number(&text);
-        let value = element
-            .get_attribute("data-value")
-            .and_then(|v| protocol::parse_number(&v))
-            .or(number);
+        let data_value = element.get_attribute("data-value");
+        let value = protocol::readout_number(data_value.as_deref(), &text);
         let unit = element
             .get_attribute("data-unit")
-            .or_else(|| (!text_unit.is_empty()).then_some(text_unit))
+            .or_else(|| Some(protocol::split_number(&text).1).filter(|u| !u.is_empty()))
             .or_else(|| unit_beside(&element))
             .unwrap_or_default();
         out.insert(key, protocol::readout(value, &unit));

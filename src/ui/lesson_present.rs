@@ -378,15 +378,19 @@ fn draw_goals() -> Result<(), JsValue> {
     let Some(list) = document.query_selector("[data-testid=\"lesson-goals\"]")? else {
         return Ok(());
     };
-    let Some((lesson, presenter)) = current() else {
+    // The shown step's page and goal only: this runs every tick.
+    let shown = PRESENTING.with(|p| {
+        let p = p.borrow();
+        let (lesson, presenter) = p.as_ref()?;
+        let step = lesson.steps.get(presenter.index)?;
+        Some((step.page(), step.goals.clone()))
+    });
+    let Some((page, goals)) = shown else {
         return Ok(());
     };
-    let Some(step) = lesson.steps.get(presenter.index) else {
-        return Ok(());
-    };
-    let on_page = router::current_route().page == step.page();
+    let on_page = router::current_route().page == page;
     let mut all = true;
-    for (j, goal) in step.goals.iter().enumerate() {
+    for (j, goal) in goals.iter().enumerate() {
         let reading = on_page
             .then(|| readout_value(&document, &goal.readout))
             .flatten();
@@ -411,15 +415,12 @@ fn draw_goals() -> Result<(), JsValue> {
     list.set_attribute("data-goals-met", if all { "true" } else { "false" })
 }
 
-/// The number readout `key` of the page shows: its `data-value`, else the number its text
-/// starts with (as the embedding API reads readouts).
+/// The number readout `key` of the page shows, read as the embedding API reads readouts.
 fn readout_value(document: &web_sys::Document, key: &str) -> Option<f64> {
     let selector = format!("#app-main [data-readout=\"{key}\"]");
     let readout = document.query_selector(&selector).ok()??;
-    match readout.get_attribute("data-value") {
-        Some(value) => embed::parse_number(&value),
-        None => embed::split_number(&readout.text_content()?).0,
-    }
+    let text = readout.text_content().unwrap_or_default();
+    embed::readout_number(readout.get_attribute("data-value").as_deref(), &text)
 }
 
 /// A key while presenting, whatever has focus (the shell asks before the page and the focused

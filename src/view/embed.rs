@@ -288,6 +288,14 @@ pub fn split_number(text: &str) -> (Option<f64>, String) {
     }
 }
 
+/// A readout's number: its `data-value` when that reads as one, else the number its text
+/// starts with.
+pub fn readout_number(data_value: Option<&str>, text: &str) -> Option<f64> {
+    data_value
+        .and_then(parse_number)
+        .or_else(|| split_number(text).0)
+}
+
 /// A finite number written as the page writes one (`data-value`, a readout's text).
 pub fn parse_number(text: &str) -> Option<f64> {
     text.trim()

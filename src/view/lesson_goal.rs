@@ -10,6 +10,7 @@
 use serde::Serialize;
 
 use crate::pyfmt::py_float;
+use crate::view::embed::parse_number;
 
 /// The most conditions a step holds.
 pub const MAX_GOALS: usize = 3;
@@ -160,19 +161,6 @@ pub fn number_text(x: f64) -> String {
         Some(whole) => whole.to_owned(),
         None => text,
     }
-}
-
-/// A number typed by a teacher: decimal, with `-` or the minus sign, `e` exponents.
-pub fn parse_number(text: &str) -> Option<f64> {
-    let text = text.trim().replace('−', "-");
-    if text.is_empty()
-        || !text
-            .chars()
-            .all(|c| c.is_ascii_digit() || "+-.eE".contains(c))
-    {
-        return None;
-    }
-    text.parse::<f64>().ok().filter(|x| x.is_finite())
 }
 
 /// Each page's readouts a goal may name, with the units of the numbers they hold (their

@@ -34,6 +34,7 @@ use crate::ui::lesson_bar::{self, LESSON_STORAGE_KEY};
 use crate::ui::page::{MountCtx, Page, ShellLink};
 use crate::ui::page_frame;
 use crate::ui::{ctx, download, lang_files, router};
+use crate::view::embed::parse_number;
 use crate::view::exercises::ids_of_page;
 use crate::view::lesson::{Lesson, LessonError, UnknownFocus, MAX_FILE_BYTES, MAX_PAGE_STEPS};
 use crate::view::lesson_file;
@@ -746,9 +747,9 @@ fn read_goal_row(row: &Element) -> Option<GoalCondition> {
     let goal = GoalCondition {
         readout: value_of("goal-readout")?,
         op,
-        value: lesson_goal::parse_number(&value_of("goal-value")?)?,
+        value: parse_number(&value_of("goal-value")?)?,
         tolerance: match op {
-            GoalOp::Within => Some(lesson_goal::parse_number(&value_of("goal-tolerance")?)?),
+            GoalOp::Within => Some(parse_number(&value_of("goal-tolerance")?)?),
             _ => None,
         },
     };
@@ -794,9 +795,8 @@ fn goals_field(
     for (j, goal) in goals.iter().enumerate() {
         let row = dom::el_class("div", "lesson-goal-row")?;
         row.set_attribute("data-goal-row", &(j + 1).to_string())?;
-        let readout: HtmlSelectElement = dom::el("select")?.dyn_into()?;
-        readout.set_attribute("data-field", "goal-readout")?;
-        readout.set_attribute("aria-label", &ctx::t("lesson-goal-readout-label"))?;
+        let readout: HtmlSelectElement =
+            goal_control("select", "goal-readout", "lesson-goal-readout-label")?.dyn_into()?;
         for (key, unit) in readouts {
             let text = if unit.is_empty() {
                 (*key).to_owned()
@@ -809,9 +809,8 @@ fn goals_field(
         }
         readout.set_value(&goal.readout);
         dom::append(&row, &readout)?;
-        let op: HtmlSelectElement = dom::el("select")?.dyn_into()?;
-        op.set_attribute("data-field", "goal-op")?;
-        op.set_attribute("aria-label", &ctx::t("lesson-goal-op-label"))?;
+        let op: HtmlSelectElement =
+            goal_control("select", "goal-op", "lesson-goal-op-label")?.dyn_into()?;
         for (value, id) in [
             (GoalOp::Below, "lesson-goal-op-below"),
             (GoalOp::Above, "lesson-goal-op-above"),
@@ -823,19 +822,12 @@ fn goals_field(
         }
         op.set_value(goal.op.word());
         dom::append(&row, &op)?;
-        let value: HtmlInputElement = dom::el("input")?.dyn_into()?;
-        value.set_attribute("data-field", "goal-value")?;
-        value.set_attribute("inputmode", "decimal")?;
-        value.set_attribute("aria-label", &ctx::t("lesson-goal-value-label"))?;
-        value.set_value(&lesson_goal::number_text(goal.value));
+        let value = goal_number("goal-value", "lesson-goal-value-label", goal.value)?;
         dom::append(&row, &value)?;
         let tolerance = dom::el_class("span", "lesson-goal-tolerance")?;
         dom::append(&tolerance, &dom::el_text("span", "", "±")?)?;
-        let tol: HtmlInputElement = dom::el("input")?.dyn_into()?;
-        tol.set_attribute("data-field", "goal-tolerance")?;
-        tol.set_attribute("inputmode", "decimal")?;
-        tol.set_attribute("aria-label", &ctx::t("lesson-goal-tolerance-label"))?;
-        tol.set_value(&lesson_goal::number_text(goal.tolerance.unwrap_or(0.0)));
+        let tol = goal.tolerance.unwrap_or(0.0);
+        let tol = goal_number("goal-tolerance", "lesson-goal-tolerance-label", tol)?;
         dom::append(&tolerance, &tol)?;
         dom::append(&row, &tolerance)?;
         let unit = lesson_goal::unit_of(page, &goal.readout);
@@ -858,6 +850,23 @@ fn goals_field(
     }
     dom::append(item, &field)?;
     Ok(Some(field))
+}
+
+/// A control of a goal row: a `tag` element marked `data-field="<field>"`, named by the
+/// message `label_id`.
+fn goal_control(tag: &str, field: &str, label_id: &str) -> Result<Element, JsValue> {
+    let control = dom::el(tag)?;
+    control.set_attribute("data-field", field)?;
+    control.set_attribute("aria-label", &ctx::t(label_id))?;
+    Ok(control)
+}
+
+/// A number field of a goal row ([`goal_control`]) holding `value`.
+fn goal_number(field: &str, label_id: &str, value: f64) -> Result<Element, JsValue> {
+    let input: HtmlInputElement = goal_control("input", field, label_id)?.dyn_into()?;
+    input.set_attribute("inputmode", "decimal")?;
+    input.set_value(&lesson_goal::number_text(value));
+    Ok(input.into())
 }
 
 /// The step's exercise (`data-field="exercise"`): none, or one of the exercises of `page`,
