@@ -462,14 +462,22 @@ fn layers_point_one_way() {
     );
 }
 
-#[test]
-fn the_checker_sees_a_layer_breach() {
-    let module = |s: &str| -> Module { s.split("::").map(String::from).collect() };
-    let source = |m: &str, code: &str| Source {
+/// A fixture's module path, `a::b`.
+fn module(m: &str) -> Module {
+    m.split("::").map(String::from).collect()
+}
+
+/// A fixture's source file: module `m` holding `code`.
+fn source(m: &str, code: &str) -> Source {
+    Source {
         module: module(m),
         name: m.to_string(),
         code: code_only(code),
-    };
+    }
+}
+
+#[test]
+fn the_checker_sees_a_layer_breach() {
     let sources = [
         source("teleop", "use crate::view::keys::Held;\n"),
         source(
@@ -520,12 +528,6 @@ fn no_import_circle_in_src() {
 
 #[test]
 fn the_checker_sees_a_circle() {
-    let module = |s: &str| -> Module { s.split("::").map(String::from).collect() };
-    let source = |m: &str, code: &str| Source {
-        module: module(m),
-        name: m.to_string(),
-        code: code_only(code),
-    };
     let sources = [
         source("a", "mod b; use b::Thing; // crate::c::x\n"),
         source(
