@@ -4,13 +4,18 @@
 // (it is made to catch injected ones here).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
+import { readFileSync, readdirSync } from 'node:fs';
+import { basename, join } from 'node:path';
 import { serveApp, openApp, takeProblems, seenProblems, assertNoProblems, ROOT } from './harness.mjs';
 
 const POLICY = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self'; object-src 'none'; base-uri 'none'";
 
 const server = serveApp();
+
+/** The chunks' own stylesheets: `<name>.late.css` anywhere under src/ui. */
+const LATE_SHEETS = readdirSync(join(ROOT, 'src', 'ui'), { recursive: true })
+  .filter((f) => f.endsWith('.late.css'))
+  .map((f) => basename(f, '.late.css'));
 
 /** Waits until the harness has seen at least `n` problems (they stay). */
 async function problemsAtLeast(n, timeout = 5000) {
@@ -41,23 +46,33 @@ test('index.html states the strict policy first in <head>, with no inline script
 });
 
 for (const hash of ['#/', '#/drills?recipe=pid-step', '#/ik-2r', '#/drills?recipe=manip-grid&n=40&lang=ja']) {
-  test(`${hash} runs under the policy: no violation, styles from the one bundled stylesheet`, async () => {
+  test(`${hash} runs under the policy: no violation, styles only from the build's stylesheets`, async () => {
     const { page, errors, close } = await openApp(server.url, hash);
     try {
       const meta = await page.evaluate(
         () => document.querySelector('meta[http-equiv="Content-Security-Policy"]')?.getAttribute('content'),
       );
       assert.equal(meta, POLICY);
-      // Styles come from www/app.css only: no <style> element, one stylesheet, and it holds
-      // the page CSS that sits beside the Rust (src/ui/pages/*/style.css).
+      // Styles come from files only: no <style> element; the first stylesheet is www/app.css and
+      // holds the page CSS that sits beside the Rust (src/ui/pages/*/style.css); any other is a
+      // chunk's own sheet (`<name>.late.css` in src/ui, www/<name>.css in dist/), linked by the
+      // kit with the id late-css-<name> when that part is first drawn.
       const sheets = await page.evaluate(() => ({
         styles: document.querySelectorAll('style').length,
-        links: [...document.styleSheets].map((s) => new URL(s.href).pathname),
+        links: [...document.styleSheets].map((s) => ({
+          path: new URL(s.href).pathname,
+          id: s.ownerNode?.id ?? '',
+        })),
         pageRules: [...document.styleSheets].flatMap((s) => [...s.cssRules])
           .filter((r) => /^\.(drills|ik2r)\b/.test(r.selectorText ?? '')).length,
       }));
       assert.equal(sheets.styles, 0);
-      assert.deepEqual(sheets.links, ['/www/app.css']);
+      assert.equal(sheets.links[0]?.path, '/www/app.css');
+      for (const { path, id } of sheets.links.slice(1)) {
+        const name = path.match(/^\/www\/([a-z_]+)\.css$/)?.[1];
+        assert.ok(name && LATE_SHEETS.includes(name), `a stylesheet that is no chunk's: ${path}`);
+        assert.equal(id, `late-css-${name}`, `${path} linked by the kit`);
+      }
       assert.ok(sheets.pageRules > 20, `page rules in app.css: ${sheets.pageRules}`);
       if (hash.startsWith('#/drills')) {
         // The drills stylesheet is in effect (its layout grid), not only present.
