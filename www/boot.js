@@ -139,9 +139,10 @@
     return frame;
   };
 
-  // Calls `done` once the frame's text is on screen (Element Timing), or once the app's own
-  // frame has replaced it, at the latest after a second (a browser without Element Timing, a tab
-  // in the background: it never paints).
+  // Calls `done` once the frame's text is on screen: Element Timing says so; a browser without
+  // it (Safari, Firefox) has painted once a task after the next animation frame has run. Also
+  // once the app's own frame has replaced it, and at the latest after a second (a tab in the
+  // background never paints).
   var onScreen = function (frame, done) {
     var called = false;
     var once = function () {
@@ -154,14 +155,18 @@
       observer.disconnect();
       once();
     }).observe(frame.parentNode, { childList: true });
-    try {
-      new PerformanceObserver(function (list, observer) {
-        observer.disconnect();
-        once();
-      }).observe({ type: 'element', buffered: true });
-    } catch (e) {
-      once();
+    var types = (window.PerformanceObserver && PerformanceObserver.supportedEntryTypes) || [];
+    if (types.indexOf('element') < 0) {
+      if (typeof requestAnimationFrame !== 'function') return once();
+      requestAnimationFrame(function () {
+        setTimeout(once, 0);
+      });
+      return;
     }
+    new PerformanceObserver(function (list, observer) {
+      observer.disconnect();
+      once();
+    }).observe({ type: 'element', buffered: true });
   };
 
   // Fetches the main wasm (the HTML's preload of it) and preloads the Fluent files the route

@@ -68,7 +68,9 @@ kit-orbit-view-iso = Iso
 kit-orbit-view-top = Top
 kit-orbit-view-front = Front
 kit-orbit-view-side = Side
-kit-orbit-hint = Drag the view to orbit; wheel or pinch to zoom. On a touch screen, drag sideways to orbit; a swipe up or down scrolls the page. With the view focused, the arrow keys orbit and + / − zoom.
+kit-orbit-hint-mouse = Mouse: drag to orbit, wheel to zoom.
+kit-orbit-hint-touch = Touch: drag sideways to orbit, pinch to zoom.
+kit-orbit-hint-keys = Keys, the view focused: arrows orbit, + / − zoom.
 kit-orbit-key-orbit = Orbit the 3D view (when it has focus; Shift for bigger steps)
 kit-orbit-key-zoom = Zoom the 3D view in / out (when it has focus)
 

@@ -70,7 +70,9 @@ kit-orbit-view-iso = 斜め
 kit-orbit-view-top = 上
 kit-orbit-view-front = 正面
 kit-orbit-view-side = 側面
-kit-orbit-hint = ビューをドラッグすると視点が回ります。ホイールやピンチで拡大・縮小。タッチ画面では横にドラッグすると視点が回り、上下にスワイプするとページがスクロールします。ビューにフォーカスがあるときは矢印キーで回転、+ / − で拡大・縮小します。
+kit-orbit-hint-mouse = マウス：ドラッグで回転、ホイールで拡大縮小。
+kit-orbit-hint-touch = タッチ：横にドラッグで回転、ピンチで拡大縮小。
+kit-orbit-hint-keys = キー（ビュー選択中）：矢印で回転、+ / − で拡大縮小。
 kit-orbit-key-orbit = 3D ビューの視点を回す（ビューにフォーカスがあるとき。Shift で大きく）
 kit-orbit-key-zoom = 3D ビューの拡大・縮小（ビューにフォーカスがあるとき）
 

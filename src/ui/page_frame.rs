@@ -176,7 +176,7 @@ fn path_from(top: &Node, leaf: &Element) -> Option<Vec<Element>> {
 }
 
 /// The element after `element` among its siblings, if it is a `<p>`: a head's lede.
-fn lede_of(element: &Element) -> Option<Element> {
+pub fn lede_of(element: &Element) -> Option<Element> {
     element
         .next_element_sibling()
         .filter(|next| next.tag_name().eq_ignore_ascii_case("p"))

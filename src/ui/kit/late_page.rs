@@ -1,8 +1,8 @@
 //! A page built only once a wasm chunk it needs has come: a pilot page whose browser storage
 //! holds a session needs the code that reads the session (in its files' chunk) before its
 //! parts can be built. When nothing is stored the page is built at once and the chunk comes
-//! later. Meanwhile the page's markup stands inert (`aria-busy`) under a line saying what is
-//! loading (`role="status"`); if the chunk cannot be fetched, the line says so with a Retry
+//! later. Meanwhile the page's markup stands inert (`aria-busy`), its heading and lede over a
+//! line saying what is loading (`role="status"`); if the chunk cannot be fetched, the line says so with a Retry
 //! button (`role="alert"`), and the stored session stays stored.
 
 use std::cell::RefCell;
@@ -94,10 +94,8 @@ impl<P: 'static> LatePage<P> {
     {
         let status = dom::el_class("p", "late-page")?;
         status.set_attribute("data-testid", "late-page")?;
-        for part in dom::matching(root, ":scope > *")? {
-            part.set_attribute("inert", "")?;
-        }
-        root.prepend_with_node_1(&status)?;
+        place_line(root, &status)?;
+        inert_but(root, &status)?;
         root.set_attribute("aria-busy", "true")?;
         page_frame::show_part_loading(&status, texts.loading)?;
         let built = Rc::new(RefCell::new(None));
@@ -136,6 +134,34 @@ impl<P: 'static> LatePage<P> {
             }
         }
     }
+}
+
+/// Puts the line under the page's heading and its lede (where the page's frame had its loading
+/// line), so that nothing painted moves; above the markup if it has no heading.
+fn place_line(root: &Element, status: &Element) -> Result<(), JsValue> {
+    match root.query_selector("h1")? {
+        Some(heading) => page_frame::lede_of(&heading)
+            .unwrap_or(heading)
+            .after_with_node_1(status),
+        None => root.prepend_with_node_1(status),
+    }
+}
+
+/// Makes `root`'s markup inert but for `line` (its Retry is live) and the elements holding it.
+fn inert_but(root: &Element, line: &Element) -> Result<(), JsValue> {
+    let mut keep = line.clone();
+    while let Some(parent) = keep.parent_element() {
+        for part in dom::matching(&parent, ":scope > *")? {
+            if !part.is_same_node(Some(&keep)) {
+                part.set_attribute("inert", "")?;
+            }
+        }
+        if parent.is_same_node(Some(root)) {
+            break;
+        }
+        keep = parent;
+    }
+    Ok(())
 }
 
 /// Fetches the chunk; builds the page into `slot` (unless the page was left meanwhile), or

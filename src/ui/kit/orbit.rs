@@ -209,7 +209,10 @@ fn markup<H>(options: &OrbitOptions<H>) -> String {
             ));
         }
     }
-    html.push_str("</div><p class=\"kit-orbit-hint\" data-i18n=\"kit-orbit-hint\"></p>");
+    html.push_str(
+        "</div><ul class=\"kit-orbit-hint\"><li data-i18n=\"kit-orbit-hint-mouse\"></li>\
+         <li data-i18n=\"kit-orbit-hint-touch\"></li><li data-i18n=\"kit-orbit-hint-keys\"></li></ul>",
+    );
     html
 }
 
