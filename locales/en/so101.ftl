@@ -1,6 +1,6 @@
 # Robot Pilot on the SO-101 (#/so101).
 so101-title = Robot Pilot: SO-101
-so101-task = The Academy's own arm, live as the page opens: fly the tool to the blue cube, close the gripper on it and carry the cube into the green square.
+so101-head-lede = Live as the page opens: fly the tool to the blue cube, grip it and carry it into the green square.
 so101-lede = The Academy's own arm: TheRobotStudio's SO-101, five joints and a gripper, its kinematics taken from the public SO-ARM100 description and checked against MuJoCo. Each 10 ms step turns your six-axis command into joint motion as Isaac Lab's differential IK controller does in relative pose mode. Fly the tool with W/S, A/D and Q/E, close and open the gripper with K; Space pauses and resumes.
 so101-canvas-label = The SO-101 over the table, with the cube, the goal square and, when set, the wall. W/S move the tool along x, A/D along y, Q/E along z; Z/X, T/G, C/V turn it about x, y, z; K opens or closes the gripper, R resets, Space engages or pauses. Drag an arrow or a ring on the tool to move or turn it while you hold it; drag elsewhere to orbit.
 so101-wrist-label = The wrist camera: the scene seen from the gripper, looking along it.

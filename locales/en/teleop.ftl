@@ -1,6 +1,6 @@
 # The Robot Pilot practice page (#/teleop).
 teleop-title = Robot Pilot practice
-teleop-task = Practise for the Academy on a simulated arm: fly the gripper to the orange block, grip it and set it down in the green square, module by module.
+teleop-head-lede = Practise the Academy's modules on a simulated arm: fly it with the keys, a gamepad or a drag; every attempt is kept.
 teleop-lede = Drive a simulated three-joint arm with a gripper with the keys and gamepad mapping of Isaac Lab's teleop devices, through the Academy's five modules: preflight, basic control, ten recorded demonstrations, failure review and repeatability. Every attempt is kept, labelled and replayable; the session's evidence file is yours to download.
 teleop-disclaimer = A practice simulator for learning, running only in your browser: not a safety-rated controller, not connected to any robot, and not NVIDIA software (no Isaac code is used or redistributed).
 teleop-restored = Your session was restored from this browser. An episode cut off by the reload is kept and marked interrupted.

@@ -140,8 +140,11 @@ test('on a touch-only phone the view comes first and touch is the device', async
     const { page, errors, close } = await open(`#/${route}?lang=ja`, { viewport: { width: 390, height: 844 }, touch: true });
     try {
       const view = await page.locator(`[data-testid="${testid}"]`).boundingBox();
-      // Under the heading (and the SO-101's camera buttons), before the modules and the rest.
-      assert.ok(view.y < 300 && view.y + view.height <= 844, `${route}: view at ${view.y}–${view.y + view.height}`);
+      // Right under the head, its heading and lede (and the SO-101's camera buttons), in the
+      // first screen's upper half and whole on it, before the modules and the rest.
+      const head = await page.locator(route === 'so101' ? '.so101-task' : '.tele-task').boundingBox();
+      assert.ok(view.y >= head.y + head.height && view.y < 844 / 2 && view.y + view.height <= 844,
+        `${route}: view at ${view.y}–${view.y + view.height}, the head's lede ending at ${head.y + head.height}`);
       const modules = await page.locator('[data-module="preflight"]').boundingBox();
       assert.ok(modules.y > view.y + view.height, `${route}: the modules (${modules.y}) come before the view`);
       const pointer = page.locator('[data-device="pointer"]');

@@ -41,8 +41,8 @@ const CUBIC_HEAD: &str = "<div class=\"sig\"><header class=\"sig-head\"><h1 data
 const TRAP_HEAD: &str = "<div class=\"sig\"><header class=\"sig-head\"><h1 data-i18n=\"trap-title\"></h1><p class=\"sig-lede\" data-i18n=\"recipe-trapezoid-profile-blurb\"></p></header></div>";
 const TRAJ_HEAD: &str = "<div class=\"kit-page traj\"><header class=\"traj-head\"><h1 data-i18n=\"traj-title\"></h1><p class=\"traj-lede\" data-i18n=\"traj-lede\"></p></header></div>";
 const RRT_HEAD: &str = "<div class=\"kit-page rrt\"><header class=\"rrt-head\"><h1 data-i18n=\"rrt-title\"></h1><p class=\"rrt-lede\" data-i18n=\"rrt-lede\"></p></header></div>";
-const TELEOP_HEAD: &str = "<div class=\"tele\"><header class=\"tele-head\"><h1 data-i18n=\"teleop-title\"></h1><p class=\"tele-task\" data-i18n=\"teleop-task\"></p></header></div>";
-const SO101_HEAD: &str = "<div class=\"so101-page\"><h1 data-i18n=\"so101-title\"></h1><p class=\"so101-task\" data-i18n=\"so101-task\"></p></div>";
+const TELEOP_HEAD: &str = "<div class=\"tele\"><header class=\"tele-head\"><h1 data-i18n=\"teleop-title\"></h1><p class=\"tele-task\" data-i18n=\"teleop-head-lede\"></p></header></div>";
+const SO101_HEAD: &str = "<div class=\"so101-page\"><h1 data-i18n=\"so101-title\"></h1><p class=\"so101-task\" data-i18n=\"so101-head-lede\"></p></div>";
 const DRILLS_HEAD: &str = "<div class=\"drills\"><header class=\"drills-head\"><h1 data-i18n=\"drills-title\"></h1><p class=\"drills-lede\" data-i18n=\"drills-lede\"></p></header></div>";
 const CLASS_HEAD: &str = "<div class=\"lesson class-page\"><h1 data-i18n=\"class-title\"></h1><p class=\"lesson-intro\" data-i18n=\"class-lede\"></p></div>";
 const LESSON_HEAD: &str = "<div class=\"lesson\"><h1 data-i18n=\"lesson-title\"></h1><p class=\"lesson-intro\" data-i18n=\"lesson-intro\"></p></div>";

@@ -268,7 +268,7 @@ fn keys() -> String {
 /// The whole page.
 pub fn page() -> String {
     format!(
-        "<div class=\"so101-page\"><h1 data-i18n=\"so101-title\"></h1><p class=\"so101-task\" data-i18n=\"so101-task\"></p>\
+        "<div class=\"so101-page\"><h1 data-i18n=\"so101-title\"></h1><p class=\"so101-task\" data-i18n=\"so101-head-lede\"></p>\
          <p class=\"so101-notice\" data-so101=\"restored\" data-i18n=\"teleop-restored\" hidden></p>\
          {storage}{views}\
          <p class=\"so101-disclaimer\" data-i18n=\"teleop-disclaimer\"></p>{modules}\

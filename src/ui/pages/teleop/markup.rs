@@ -262,7 +262,7 @@ fn gamepad_offer() -> String {
 pub fn page() -> String {
     format!(
         "<div class=\"tele\">\
-         <header class=\"tele-head\"><h1 data-i18n=\"teleop-title\"></h1><p class=\"tele-task\" data-i18n=\"teleop-task\"></p>\
+         <header class=\"tele-head\"><h1 data-i18n=\"teleop-title\"></h1><p class=\"tele-task\" data-i18n=\"teleop-head-lede\"></p>\
          <p class=\"tele-notice\" data-tele=\"loading\" role=\"status\" hidden></p>\
          <p class=\"tele-notice\" data-tele=\"restored\" role=\"status\" hidden></p>{storage}</header>\
          {modules}\
