@@ -2,8 +2,8 @@
 //! holds a session needs the code that reads the session (in its files' chunk) before its
 //! parts can be built. When nothing is stored the page is built at once and the chunk comes
 //! later. Meanwhile the page's markup stands inert (`aria-busy`), its heading and lede over a
-//! line saying what is loading (`role="status"`); if the chunk cannot be fetched, the line says so with a Retry
-//! button (`role="alert"`), and the stored session stays stored.
+//! line saying what is loading (`role="status"`); if the chunk cannot be fetched, the line says
+//! so with a Retry button (`role="alert"`), and the stored session stays stored.
 
 use std::cell::RefCell;
 use std::future::Future;
