@@ -5,7 +5,8 @@
 // - each route's first load: what the browser fetches before the route's first frame, from the
 //   build's own lists (pkg/routes.json): index.html, the stylesheet, the boot scripts and the
 //   route table, the glue and the loader, the main wasm, the Fluent files the route needs in
-//   one language (English; locales/en/, each file gzipped on its own) and the route's pack.
+//   one language (English; locales/en/, each file gzipped on its own), the page's own
+//   stylesheet if it has one, and the route's pack.
 //
 //   node scripts/size.mjs [dist]           prints the tables (make bench)
 //   node scripts/size.mjs [dist] --check   also exits 1 when a sum is over its ceiling (make test)
@@ -20,7 +21,7 @@ import { gzipSync } from 'node:zlib';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
-export const CEILING = 1660 * KB;
+export const CEILING = 1665 * KB;
 
 /** The first-load goal of a route: 250 KB for the IK playground and home, 350 KB elsewhere. */
 export function routeBudget(route) {
@@ -30,7 +31,7 @@ export function routeBudget(route) {
  * more than its budget once it is within it. */
 export const ROUTE_CEILINGS = {
   home: 200,
-  'ik-2r': 247,
+  'ik-2r': 249,
   'dh-fk': 306,
   'se3-relative': 312,
   'umeyama-2d': 323,
@@ -40,7 +41,7 @@ export const ROUTE_CEILINGS = {
   'trapezoid-profile': 296,
   'traj-resample': 315,
   'rrt-2d': 289,
-  teleop: 325,
+  teleop: 327,
   so101: 350,
   drills: 306,
   lesson: 252,
@@ -69,7 +70,8 @@ export function firstLoads(dist) {
   const size = (file) => (sizes.has(file) ? sizes.get(file) : sizes.set(file, gz(file)).get(file));
   return Object.entries(table.routes).map(([route, pack]) => {
     const strings = [...table.strings.first, ...table.strings.routes[route]];
-    const files = [...SHELL_FILES, ...strings.map((f) => `locales/en/${f}`), `pkg/${pack}`];
+    const sheet = table.sheets?.[route];
+    const files = [...SHELL_FILES, ...strings.map((f) => `locales/en/${f}`), ...(sheet ? [sheet] : []), `pkg/${pack}`];
     return { route, files, gzip: files.reduce((sum, f) => sum + size(f), 0) };
   });
 }

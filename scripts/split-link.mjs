@@ -150,12 +150,12 @@ export function routesOfPageTable() {
     [...table.matchAll(/^const (\w+_HEAD): &str = "((?:[^"\\]|\\.)*)";$/gm)].map((m) => [m[1], m[2].replace(/\\(.)/g, '$1')]),
   );
   const routes = {};
-  for (const m of table.matchAll(/^\s*page!\((\w+),\s*[^,]+?,\s*("([^"]*)"|(\w+)),\s*"[^"]*",\s*(\w+),.*\[([^\]]*)\]\),\s*$/gm)) {
+  for (const m of table.matchAll(/^\s*page!\((\w+),\s*[^,]+?,\s*("([^"]*)"|(\w+)),\s*"[^"]*",\s*(\w+),.*\[([^\]]*)\](?:,\s*"([^"]+)")?\),\s*$/gm)) {
     const id = m[3] ?? consts[m[4]];
     if (id === undefined) throw new Error(`page table: cannot resolve ${m[2]}`);
     const head = heads[m[5]];
     if (head === undefined) throw new Error(`page table: cannot resolve ${m[5]}`);
-    routes[id] = { split: m[1], head, strings: [...m[6].matchAll(/"([^"]+)"/g)].map((f) => f[1]) };
+    routes[id] = { split: m[1], head, strings: [...m[6].matchAll(/"([^"]+)"/g)].map((f) => f[1]), sheet: m[7] ?? null };
   }
   if (Object.keys(routes).length === 0) throw new Error('page table: no page! line found');
   return routes;
@@ -459,6 +459,11 @@ function main() {
       routes: Object.fromEntries(Object.entries(routes).map(([r, { strings }]) => [r, strings])),
     },
     heads: Object.fromEntries(Object.entries(routes).map(([r, { head }]) => [r, head])),
+    sheets: Object.fromEntries(
+      Object.entries(routes)
+        .filter(([, { sheet }]) => sheet)
+        .map(([r, { sheet }]) => [r, `www/${sheet}.css`]),
+    ),
   };
   const splitsOf = Object.fromEntries(Object.entries(routes).map(([r, { split }]) => [r, split]));
   writeFileSync(join(pkgDir, 'routes.json'), JSON.stringify({ ...table, splits: splitsOf }, null, 2) + '\n');

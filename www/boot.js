@@ -73,32 +73,21 @@
     document.addEventListener('DOMContentLoaded', fn);
   };
 
-  // The value of message `id` in Fluent file `text` when it is one line of plain text (as every
-  // page's heading and lede is: tests/e2e/boot_frame.test.mjs), else null.
-  var message = function (text, id) {
-    var found = new RegExp('^' + id + ' *= *(.*)$', 'm').exec(text);
-    if (!found || /[{}]/.test(found[1])) return null;
-    var next = text.slice(found.index + found[0].length + 1).split('\n')[0];
-    return /^[ \t]+[^\s.]/.test(next) ? null : found[1];
-  };
-
   // The route's frame, as the app shows it while the page's code loads (src/ui/page_frame.rs):
   // a bar where the header goes, the page's heading and lede in the page's own classes, and the
   // loading line; painted before the app's code is in, so that what a phone paints first is
   // the page's head, where the page will have it. It stands before #app, which it hides
-  // (app.css) until the app's own frame replaces it (src/ui/shell.rs).
+  // (app.css) until the app's own frame replaces it (src/ui/shell.rs). Its words are the
+  // route table's (`texts`: the heads' messages in each language, copied from the Fluent files
+  // by the build), so that nothing is fetched before this paint.
   // The frame, or null when it is not shown (the app has started or failed, a message is
   // missing).
-  var showFrame = function (head, list) {
+  var showFrame = function (head, texts) {
     var box = document.getElementById('boot-status');
     var app = document.getElementById('app');
     if (!box || !app || box.getAttribute('data-testid') === 'boot-error') return null;
     var find = function (id) {
-      for (var i = 0; i < list.length; i++) {
-        var value = message(list[i], id);
-        if (value !== null) return value;
-      }
-      return null;
+      return texts && typeof texts[id] === 'string' ? texts[id] : null;
     };
     var loading = find('page-loading');
     var template = document.createElement('template');
@@ -169,15 +158,17 @@
     }).observe({ type: 'element', buffered: true });
   };
 
-  // Fetches the main wasm (the HTML's preload of it) and preloads the Fluent files the route
-  // needs in the visitor's language at once, and the route's pack once most of the main wasm
-  // is in (the route table at the head of this file in dist/, written by the build). On a slow
-  // network every file in flight shares the bandwidth: asked for together, the main wasm ends
-  // last and the shell is built only after every byte is in. Asked for in this order, the
-  // shell is built while the pack arrives; the pack is asked for one round trip or so before
-  // the main wasm ends (a quarter of it left), so the network never idles. bootstrap.js hands
-  // `bsvMainWasm` (the response's promise) to the glue's init(). The language is chosen as the
-  // app chooses it: `?lang=`, the saved choice, the browser's languages, English.
+  // Fetches the main wasm (the HTML's preload of it), paints the route's frame, then asks for
+  // the Fluent files the route needs in the visitor's language and the web app manifest, and
+  // the route's pack (with its stylesheet) once most of the main wasm is in (the route table at
+  // the head of this file in dist/, written by the build). On a slow network every file in
+  // flight shares the bandwidth: asked for together, the main wasm ends last and the shell is
+  // built only after every byte is in. Asked for in this order, the first paint waits for no
+  // request of this script's, the shell is built while the pack arrives, and the pack is asked
+  // for one round trip or so before the main wasm ends (a quarter of it left), so the network
+  // never idles. bootstrap.js hands `bsvMainWasm` (the response's promise) to the glue's init().
+  // The language is chosen as the app chooses it: `?lang=`, the saved choice, the browser's
+  // languages, English.
   var table = window.bsvRoutes;
   if (table && location.protocol !== 'file:') {
     var hash = location.hash.replace(/^#\/?/, '');
@@ -213,18 +204,17 @@
     } catch (e) {
       projector = false;
     }
-    var preload = function (file) {
+    var preload = function (file, as) {
       var link = document.createElement('link');
       link.rel = 'preload';
-      link.as = 'fetch';
-      link.crossOrigin = 'anonymous';
+      link.as = as || 'fetch';
+      if (!as) link.crossOrigin = 'anonymous';
       link.href = file;
       document.head.appendChild(link);
     };
     var strings = table.strings.first.concat(table.strings.routes[route] || []);
-    // The strings are fetched here, once (a failed request once more): the app takes each
-    // response from `bsvTexts` (src/ui/lang_files.rs), and the frame below is written from
-    // copies of them.
+    // The strings are fetched here, once (a failed request once more), after the frame's paint:
+    // the app takes each response from `bsvTexts` (src/ui/lang_files.rs).
     var texts = {};
     window.bsvTexts = texts;
     var again = function (url) {
@@ -232,20 +222,22 @@
         return response && response.ok ? response : fetch(url);
       };
     };
-    var textOf = function (response) {
-      if (!response.ok) throw new Error(response.url + ': HTTP ' + response.status);
-      return response.clone().text();
-    };
-    var files = [];
-    for (var k = 0; k < strings.length; k++) {
-      var url = 'locales/' + lang + '/' + strings[k];
-      if (typeof fetch === 'function') {
-        texts[url] = fetch(url).then(again(url), again(url));
-        files.push(texts[url].then(textOf));
-      } else {
-        preload(url);
+    var askStrings = function () {
+      for (var k = 0; k < strings.length; k++) {
+        var url = 'locales/' + lang + '/' + strings[k];
+        if (typeof fetch === 'function') {
+          texts[url] = fetch(url).then(again(url), again(url));
+        } else {
+          preload(url);
+        }
       }
-    }
+      // The manifest only matters to an install, later: asked for in the head, it would take
+      // one of the six connections a browser opens to a server that the stylesheet needs.
+      var manifest = document.createElement('link');
+      manifest.rel = 'manifest';
+      manifest.href = 'www/manifest.webmanifest';
+      document.head.appendChild(manifest);
+    };
     // Resolves once the route's frame is painted, or at once when there is none to paint. The
     // route's pack is asked for after it (here, and by the app's loader: scripts/split-link.mjs)
     // so that on a first visit the pack never holds up what a phone paints first. A visit the
@@ -259,17 +251,16 @@
       });
       window.bsvFramePainted = painted;
       if (table.heads && table.heads[route] && !projector && !/(?:^|&)embed=1(?:&|$)/.test(query)) {
-        Promise.all(files).then(function (list) {
-          whenParsed(function () {
-            var frame = showFrame(table.heads[route], list);
-            if (!frame) return framePainted();
-            onScreen(frame, framePainted);
-          });
-        }, framePainted);
+        whenParsed(function () {
+          var frame = showFrame(table.heads[route], table.texts && table.texts[lang]);
+          if (!frame) return framePainted();
+          onScreen(frame, framePainted);
+        });
       } else {
         framePainted();
       }
     }
+    painted.then(askStrings);
     var packAsked = false;
     var askPack = function () {
       // On a slow link (most of the main wasm in only after a second) the pack is asked for at
@@ -278,6 +269,7 @@
       if (framePainted && performance.now() > 1000) framePainted();
       painted.then(function () {
         if (!packAsked && table.routes[route]) preload('pkg/' + table.routes[route]);
+        if (!packAsked && table.sheets && table.sheets[route]) preload(table.sheets[route], 'style');
         packAsked = true;
       });
     };

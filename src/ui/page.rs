@@ -192,6 +192,10 @@ pub struct PageDef {
     pub nav: Nav,
     /// The Fluent files it needs beyond [`crate::i18n::FIRST_FILES`] (fetched with its code).
     pub strings: &'static [&'static str],
+    /// Its own stylesheet, if its body's rules are not in `app.css`: `<name>.late.css` beside
+    /// its Rust, `www/<name>.css` in dist/, fetched with its code and loaded before it mounts.
+    /// The rules of its head (which the frame shows first) stay in its `style.css`.
+    pub sheet: Option<&'static str>,
     /// Loads the page's chunk (at once if it is in) and gives its mount function.
     pub load: fn() -> PageLoad,
 }
@@ -199,17 +203,29 @@ pub struct PageDef {
 /// One line of the page table: `page!(chunk, PageType, id, title_id, head, nav, [files])`
 /// registers `PageType` under route `#/<id>` with its code split off into the wasm chunk
 /// `chunk` and the Fluent files it needs beyond the first ones, both fetched when the page is
-/// first opened.
+/// first opened; `page!(..., [files], "sheet")` also names its own stylesheet
+/// ([`PageDef::sheet`]).
 macro_rules! page {
-    ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $head:expr, $nav:expr, [$($file:expr),* $(,)?]) => {
+    ($chunk:ident, $page:ty, $id:expr, $title_id:expr, $head:expr, $nav:expr, [$($file:expr),* $(,)?] $(, $sheet:literal)?) => {
         $crate::ui::page::PageDef {
             id: $id,
             title_id: $title_id,
             head: $head,
             nav: $nav,
             strings: &[$($file),*],
+            sheet: $crate::ui::page::page_sheet!($($sheet)?),
             load: $crate::ui::page::page_load!($chunk, $page),
         }
+    };
+}
+
+/// The `sheet` of a page: `None`, or `Some` of the name given.
+macro_rules! page_sheet {
+    () => {
+        None
+    };
+    ($sheet:literal) => {
+        Some($sheet)
     };
 }
 
@@ -238,3 +254,4 @@ macro_rules! page_load {
 }
 pub(crate) use page;
 pub(crate) use page_load;
+pub(crate) use page_sheet;

@@ -27,6 +27,7 @@ use crate::ui::drill_chain;
 use crate::ui::embed;
 use crate::ui::embed_api::ShellFns;
 use crate::ui::kit::keymap::{self, ShellKey};
+use crate::ui::kit::late_style;
 use crate::ui::lang_files;
 use crate::ui::lesson_bar;
 use crate::ui::nav_cue;
@@ -769,6 +770,11 @@ fn load_page(
     query: Vec<(String, String)>,
 ) -> Result<(), JsValue> {
     let mut load = (def.load)();
+    // The page's stylesheet is asked for with its code, and the page mounts once it is in.
+    let styled = def.sheet.is_none_or(|sheet| {
+        late_style::link(sheet);
+        late_style::is_settled(sheet)
+    });
     // The chunk's request is made on the loader's first poll.
     let mut poll = Context::from_waker(Waker::noop());
     let landed = match load.as_mut().poll(&mut poll) {
@@ -782,7 +788,7 @@ fn load_page(
     // task of its own after that paint.
     let first = generation == 1;
     let landed = match landed {
-        Some(result) if framed && !first => {
+        Some(result) if framed && styled && !first => {
             return loaded(def, generation, query, result.map_err(|e| e.to_string()));
         }
         other => other,
@@ -815,6 +821,9 @@ fn load_page(
         // for that paint.
         if !painted.get() {
             schedule::painted().await;
+        }
+        if let Some(sheet) = def.sheet {
+            late_style::linked(sheet).await;
         }
         let result = match (chunk, strings) {
             (Ok(mount), Ok(())) => Ok(mount),

@@ -55,8 +55,8 @@ for (const hash of ['#/', '#/drills?recipe=pid-step', '#/ik-2r', '#/drills?recip
       assert.equal(meta, POLICY);
       // Styles come from files only: no <style> element; the first stylesheet is www/app.css and
       // holds the page CSS that sits beside the Rust (src/ui/pages/*/style.css); any other is a
-      // chunk's own sheet (`<name>.late.css` in src/ui, www/<name>.css in dist/), linked by the
-      // kit with the id late-css-<name> when that part is first drawn.
+      // chunk's or a page's own sheet (`<name>.late.css` in src/ui, www/<name>.css in dist/),
+      // linked by the kit with the id late-css-<name> when that part is first drawn.
       const sheets = await page.evaluate(() => ({
         styles: document.querySelectorAll('style').length,
         links: [...document.styleSheets].map((s) => ({
@@ -64,12 +64,12 @@ for (const hash of ['#/', '#/drills?recipe=pid-step', '#/ik-2r', '#/drills?recip
           id: s.ownerNode?.id ?? '',
         })),
         pageRules: [...document.styleSheets].flatMap((s) => [...s.cssRules])
-          .filter((r) => /^\.(drills|ik2r)\b/.test(r.selectorText ?? '')).length,
+          .filter((r) => /^\.(drills|ik2r|rrt|sig|pendulum)\b/.test(r.selectorText ?? '')).length,
       }));
       assert.equal(sheets.styles, 0);
       assert.equal(sheets.links[0]?.path, '/www/app.css');
       for (const { path, id } of sheets.links.slice(1)) {
-        const name = path.match(/^\/www\/([a-z_]+)\.css$/)?.[1];
+        const name = path.match(/^\/www\/([a-z0-9_]+)\.css$/)?.[1];
         assert.ok(name && LATE_SHEETS.includes(name), `a stylesheet that is no chunk's: ${path}`);
         assert.equal(id, `late-css-${name}`, `${path} linked by the kit`);
       }

@@ -1,41 +1,68 @@
 //! The stylesheet of what only a chunk builds: `<name>.late.css` beside its Rust is
 //! `www/<name>.css` in dist/ (`scripts/build-dist.sh`), in no page's first load, linked on first
 //! use. [`linked`] resolves once it has loaded, or failed to (the part then shows unstyled,
-//! still working), so that a part is never drawn before its style.
+//! still working), so that a part is never drawn before its style. A page's own stylesheet
+//! ([`crate::ui::page::PageDef::sheet`]) is one: the shell links it ([`link`]) when it asks for
+//! the page's code, and mounts the page once both are in.
 
 use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
 use crate::ui::dom;
 
-/// Links `www/<name>.css` unless it is linked already, and waits until it has loaded.
-pub async fn linked(name: &str) {
-    let Ok(document) = dom::document() else {
-        return;
-    };
+/// The property of a link this module made: a promise that resolves once its sheet has loaded
+/// or failed to.
+const SETTLED: &str = "bsvSettled";
+
+/// Links `www/<name>.css` unless it is linked already: its `<link>`.
+pub fn link(name: &str) -> Option<web_sys::Element> {
+    let document = dom::document().ok()?;
     let id = format!("late-css-{name}");
-    let link = match document.get_element_by_id(&id) {
-        Some(link) if link.has_attribute("data-loaded") || has_sheet(&link) => return,
-        Some(link) => link,
-        None => {
-            let Ok(link) = dom::el("link") else { return };
-            link.set_id(&id);
-            let _ = link.set_attribute("rel", "stylesheet");
-            let _ = link.set_attribute("href", &format!("www/{name}.css"));
-            let head = document.query_selector("head").ok().flatten();
-            if head.and_then(|h| h.append_child(&link).ok()).is_none() {
-                return;
-            }
-            link
-        }
-    };
-    let done = js_sys::Promise::new(&mut |resolve, _| {
+    if let Some(link) = document.get_element_by_id(&id) {
+        return Some(link);
+    }
+    let link = dom::el("link").ok()?;
+    link.set_id(&id);
+    let _ = link.set_attribute("rel", "stylesheet");
+    let _ = link.set_attribute("href", &format!("www/{name}.css"));
+    let settled = js_sys::Promise::new(&mut |resolve, _| {
         for event in ["load", "error"] {
             let _ = link.add_event_listener_with_callback(event, &resolve);
         }
     });
-    let _ = JsFuture::from(done).await;
-    let _ = link.set_attribute("data-loaded", "");
+    let _ = js_sys::Reflect::set(&link, &JsValue::from_str(SETTLED), &settled);
+    document
+        .query_selector("head")
+        .ok()
+        .flatten()?
+        .append_child(&link)
+        .ok()?;
+    Some(link)
+}
+
+/// Whether `www/<name>.css` is linked and has loaded.
+pub fn is_settled(name: &str) -> bool {
+    dom::document()
+        .ok()
+        .and_then(|document| document.get_element_by_id(&format!("late-css-{name}")))
+        .is_some_and(|link| has_sheet(&link))
+}
+
+/// Links `www/<name>.css` unless it is linked already, and waits until it has loaded.
+pub async fn linked(name: &str) {
+    let Some(link) = link(name) else {
+        return;
+    };
+    if has_sheet(&link) {
+        return;
+    }
+    let settled = js_sys::Reflect::get(&link, &JsValue::from_str(SETTLED))
+        .ok()
+        .and_then(|promise| promise.dyn_into::<js_sys::Promise>().ok());
+    if let Some(settled) = settled {
+        let _ = JsFuture::from(settled).await;
+    }
 }
 
 /// Whether `link`'s stylesheet has loaded (`link.sheet` is set once it has).
