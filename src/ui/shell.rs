@@ -772,8 +772,7 @@ fn load_page(
     let mut load = (def.load)();
     // The page's stylesheet is asked for with its code, and the page mounts once it is in.
     let styled = def.sheet.is_none_or(|sheet| {
-        late_style::link(sheet);
-        late_style::is_settled(sheet)
+        late_style::link(sheet).is_some_and(|link| late_style::has_sheet(&link))
     });
     // The chunk's request is made on the loader's first poll.
     let mut poll = Context::from_waker(Waker::noop());

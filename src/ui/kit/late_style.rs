@@ -1,7 +1,7 @@
 //! The stylesheet of what only a chunk builds: `<name>.late.css` beside its Rust is
-//! `www/<name>.css` in dist/ (`scripts/build-dist.sh`), in no page's first load, linked on first
-//! use. [`linked`] resolves once it has loaded, or failed to (the part then shows unstyled,
-//! still working), so that a part is never drawn before its style. A page's own stylesheet
+//! `www/<name>.css` in dist/ (`scripts/build-dist.sh`), not in app.css, linked on first use.
+//! [`linked`] resolves once it has loaded, or failed to (the part then shows unstyled, still
+//! working), so that a part is never drawn before its style. A page's own stylesheet
 //! ([`crate::ui::page::PageDef::sheet`]) is one: the shell links it ([`link`]) when it asks for
 //! the page's code, and mounts the page once both are in.
 
@@ -41,14 +41,6 @@ pub fn link(name: &str) -> Option<web_sys::Element> {
     Some(link)
 }
 
-/// Whether `www/<name>.css` is linked and has loaded.
-pub fn is_settled(name: &str) -> bool {
-    dom::document()
-        .ok()
-        .and_then(|document| document.get_element_by_id(&format!("late-css-{name}")))
-        .is_some_and(|link| has_sheet(&link))
-}
-
 /// Links `www/<name>.css` unless it is linked already, and waits until it has loaded.
 pub async fn linked(name: &str) {
     let Some(link) = link(name) else {
@@ -66,6 +58,6 @@ pub async fn linked(name: &str) {
 }
 
 /// Whether `link`'s stylesheet has loaded (`link.sheet` is set once it has).
-fn has_sheet(link: &web_sys::Element) -> bool {
+pub fn has_sheet(link: &web_sys::Element) -> bool {
     js_sys::Reflect::get(link, &JsValue::from_str("sheet")).is_ok_and(|s| s.is_object())
 }
