@@ -222,6 +222,36 @@ impl FluentArg {
     }
 }
 
+/// How many bytes of a Fluent file [`I18n::build_next`] parses at most in one call (a file is
+/// cut into pieces of about this size where an entry starts; an entry is never cut): a few
+/// milliseconds on a slow phone.
+const PIECE_BYTES: usize = 4096;
+
+/// `text` cut where a line starts an entry (a message or a term: an identifier at the start of
+/// a line; what continues an entry is indented or closes a placeable), into pieces of at least
+/// `max` bytes but the last. The pieces, parsed one after the other into one bundle, give the
+/// messages and terms of the whole.
+fn pieces(text: &str, max: usize) -> Vec<&str> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    let mut at = 0;
+    while let Some(newline) = text[at..].find('\n') {
+        at += newline + 1;
+        let starts_entry = match text.as_bytes()[at..] {
+            [b'-', c, ..] | [c, ..] => c.is_ascii_alphabetic(),
+            [] => false,
+        };
+        if at - start >= max && starts_entry {
+            out.push(&text[start..at]);
+            start = at;
+        }
+    }
+    if start < text.len() || out.is_empty() {
+        out.push(&text[start..]);
+    }
+    out
+}
+
 /// The Fluent bundles of the languages added so far, plus the notes about missing messages
 /// and formatting errors not yet handed out.
 pub struct I18n {
@@ -294,7 +324,9 @@ impl I18n {
         };
         for (file, text) in files {
             if added.insert((lang, file.to_string())) {
-                sources.push((lang, file.to_string(), text.to_string()));
+                for piece in pieces(text, PIECE_BYTES) {
+                    sources.push((lang, file.to_string(), piece.to_string()));
+                }
             }
         }
     }
@@ -319,9 +351,9 @@ impl I18n {
         self.bundle(lang);
     }
 
-    /// Parses one of `lang`'s added files that is not in its bundle yet, if there is one, and
-    /// says whether there are more: a caller that parses files ahead of their use (in the
-    /// browser's idle time) takes them one at a time.
+    /// Parses one piece (about [`PIECE_BYTES`]) of `lang`'s added files that is not in its
+    /// bundle yet, if there is one, and says whether there are more: a caller that parses
+    /// files ahead of their use (in the browser's idle time) takes them a piece at a time.
     pub fn build_next(&self, lang: Lang) -> bool {
         if !self.has_language(lang) {
             return false;
@@ -545,6 +577,71 @@ mod tests {
     }
 
     #[test]
+    fn files_cut_into_pieces_keep_every_entry() {
+        let shown = |bundle: &FluentBundle<FluentResource>, id: &str| -> Option<Vec<String>> {
+            let message = bundle.get_message(id)?;
+            let mut errors = Vec::new();
+            let mut out: Vec<String> = message
+                .value()
+                .map(|v| bundle.format_pattern(v, None, &mut errors).to_string())
+                .into_iter()
+                .collect();
+            for attribute in message.attributes() {
+                let text = bundle.format_pattern(attribute.value(), None, &mut errors);
+                out.push(format!("{}={text}", attribute.id()));
+            }
+            Some(out)
+        };
+        for lang in Lang::ALL {
+            for (name, text) in locale_files(lang) {
+                let cut = pieces(text, PIECE_BYTES);
+                assert_eq!(cut.concat(), *text, "{name}: the pieces are the file");
+                for piece in &cut[..cut.len() - 1] {
+                    assert!(
+                        piece.len() >= PIECE_BYTES,
+                        "{name}: a short piece before the last"
+                    );
+                }
+                let mut whole = new_bundle(lang);
+                let _ = whole.add_resource(FluentResource::try_new(text.to_string()).unwrap());
+                let mut parts = new_bundle(lang);
+                for piece in &cut {
+                    let _ = parts.add_resource(FluentResource::try_new(piece.to_string()).unwrap());
+                }
+                let ids = text.lines().filter_map(|line| {
+                    let id = line.split('=').next()?.trim_end();
+                    let ok = line.starts_with(|c: char| c.is_ascii_alphabetic())
+                        && line.contains('=')
+                        && id
+                            .chars()
+                            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_');
+                    ok.then_some(id)
+                });
+                let mut count = 0;
+                for id in ids {
+                    let expected = shown(&whole, id);
+                    assert!(expected.is_some(), "{}/{name}: {id}", lang.code());
+                    assert_eq!(shown(&parts, id), expected, "{}/{name}: {id}", lang.code());
+                    count += 1;
+                }
+                assert!(count > 0, "{}/{name}: messages", lang.code());
+            }
+        }
+        let select =
+            "a = { $n ->\n    [one] one\n   *[other] many\n}\nb = B\n-t = T\n    .x = X\nc = C\n";
+        assert_eq!(
+            pieces(select, 1),
+            [
+                "a = { $n ->\n    [one] one\n   *[other] many\n}\n",
+                "b = B\n",
+                "-t = T\n    .x = X\n",
+                "c = C\n"
+            ]
+        );
+        assert_eq!(pieces("", 8), [""]);
+    }
+
+    #[test]
     fn added_files_are_parsed_one_at_a_time_ahead_of_their_use() {
         let i18n = I18n::empty();
         assert!(
@@ -565,18 +662,25 @@ mod tests {
                 .filter(|(l, _, _)| *l == lang)
                 .count()
         };
-        assert!(i18n.build_next(Lang::Ja));
-        assert_eq!(waiting(Lang::Ja), 2);
-        assert!(i18n.build_next(Lang::Ja));
-        assert_eq!(waiting(Lang::Ja), 1);
+        let english = waiting(Lang::En);
+        assert!(english > 0);
+        let pieces = waiting(Lang::Ja);
+        assert!(
+            pieces > 3,
+            "shell.ftl in Japanese is more than one piece: {pieces}"
+        );
+        for parsed in 1..pieces {
+            assert!(i18n.build_next(Lang::Ja));
+            assert_eq!(waiting(Lang::Ja), pieces - parsed);
+        }
         assert!(
             !i18n.build_next(Lang::Ja),
-            "the last file parsed: none waits"
+            "the last piece parsed: none waits"
         );
         assert_eq!(waiting(Lang::Ja), 0);
         assert_eq!(
             waiting(Lang::En),
-            1,
+            english,
             "the other language's file is left to its own use"
         );
         assert!(i18n.has_message(Lang::Ja, "rrt-lede"));

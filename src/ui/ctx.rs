@@ -50,9 +50,9 @@ pub(crate) fn add_files(lang: Lang, files: &[(&str, &str)]) {
     let _ = I18N.try_with(|i18n| i18n.add_files(lang, files));
 }
 
-/// Parses one of `lang`'s added Fluent files that no message has needed yet; whether more
-/// are waiting ([`crate::i18n::I18n::build_next`]).
-pub(crate) fn build_next_file(lang: Lang) -> bool {
+/// Parses a piece (a few KB) of `lang`'s added Fluent files that no message has needed yet;
+/// whether more are waiting ([`crate::i18n::I18n::build_next`]).
+pub(crate) fn build_next_piece(lang: Lang) -> bool {
     I18N.try_with(|i18n| i18n.build_next(lang)).unwrap_or(false)
 }
 

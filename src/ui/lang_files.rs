@@ -25,6 +25,15 @@ pub async fn load(lang: Lang, page_files: &[&str]) -> Result<(), JsValue> {
     add(lang, &wanted).await
 }
 
+/// Parses `lang`'s loaded files that are not parsed yet, a piece (a few KB) per task, so that
+/// no task parses much and the page that follows builds with its strings ready. A message asked
+/// for meanwhile parses what is left at once (the bundle never misses a file).
+pub async fn parse_in_tasks(lang: Lang) {
+    while ctx::build_next_piece(lang) {
+        crate::ui::schedule::yield_now().await;
+    }
+}
+
 /// Without the `split` feature every file is in the wasm.
 #[cfg(not(feature = "split"))]
 async fn add(lang: Lang, _files: &[&str]) -> Result<(), JsValue> {

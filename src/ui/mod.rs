@@ -65,6 +65,7 @@ pub async fn start_app() -> Result<(), JsValue> {
             let reason = error.as_string().unwrap_or_default();
             JsValue::from_str(&format!("{} strings: {reason}", lang.code()))
         })?;
+    lang_files::parse_in_tasks(lang).await;
     // The shell and the first route's frame in two tasks, each short on a slow phone.
     if shell::start(lang)? {
         schedule::next_task().await;

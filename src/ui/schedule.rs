@@ -159,6 +159,32 @@ pub async fn next_task() {
     resolved_by(|resolve| timeout(resolve, 0)).await;
 }
 
+/// Resolves in a later task as [`next_task`] does, but without the clamp browsers put on
+/// timers set from timers (4 ms after five): `scheduler.yield()` where the browser has it (what
+/// follows goes before other waiting tasks, after input and rendering), else a zero
+/// `setTimeout`. For work cut into many short tasks in a row.
+pub async fn yield_now() {
+    let promise = web_sys::window().and_then(|window| {
+        let scheduler = js_sys::Reflect::get(&window, &JsValue::from_str("scheduler"))
+            .ok()
+            .filter(JsValue::is_object)?;
+        let call = js_sys::Reflect::get(&scheduler, &JsValue::from_str("yield"))
+            .ok()?
+            .dyn_into::<js_sys::Function>()
+            .ok()?;
+        call.call0(&scheduler)
+            .ok()?
+            .dyn_into::<js_sys::Promise>()
+            .ok()
+    });
+    match promise {
+        Some(promise) => {
+            let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+        }
+        None => next_task().await,
+    }
+}
+
 /// Resolves `ms` milliseconds later (a `setTimeout`).
 pub async fn sleep_ms(ms: i32) {
     resolved_by(|resolve| timeout(resolve, ms)).await;

@@ -133,7 +133,7 @@ pub(crate) fn mount_first_route() -> Result<(), JsValue> {
 }
 
 /// Once a page is shown and painted: its strings in the other language, fetched and then
-/// parsed one file per idle slice, so that a switch of language is immediate. Nothing else is
+/// parsed a piece (a few KB) per idle slice, so that a switch of language is immediate. Nothing else is
 /// loaded ahead: a page's code and strings come when it is opened (its chunk compiled as its
 /// bytes land), and the service worker caches the rest of the build on its own thread, so the
 /// main thread does no work the visitor did not ask for. A part that fails to load is loaded
@@ -146,7 +146,7 @@ async fn warm_other_lang(def: Option<&'static PageDef>) {
     }
     loop {
         schedule::idle().await;
-        if !ctx::build_next_file(other) {
+        if !ctx::build_next_piece(other) {
             break;
         }
     }
@@ -811,6 +811,7 @@ fn load_page(
         if !framed && strings.is_ok() && is_current(generation) {
             report(show_frame());
         }
+        lang_files::parse_in_tasks(lang).await;
         let chunk = match landed {
             Some(result) => result,
             None => load.await,

@@ -134,11 +134,20 @@ impl Page {
         let weak = self.weak.borrow().clone();
         wasm_bindgen_futures::spawn_local(async move {
             let loaded = worker::kernels().await;
+            // The kernels' code is set up in a task of its own, the run in the next one.
+            crate::ui::schedule::next_task().await;
+            let Some(page) = weak.upgrade() else {
+                return;
+            };
+            let run = match loaded {
+                Ok(kernels) => page.run_with(kernels.on_page),
+                Err(_) => return page.runner_failed(asked),
+            };
+            drop(page);
+            // The run in one task, what it shows in the next.
+            crate::ui::schedule::next_task().await;
             if let Some(page) = weak.upgrade() {
-                match loaded {
-                    Ok(kernels) => page.run_with(kernels.on_page, asked),
-                    Err(_) => page.runner_failed(asked),
-                }
+                page.show_run(run, asked);
             }
         });
     }
@@ -158,8 +167,8 @@ impl Page {
         }
     }
 
-    /// Runs the form's arguments with `run` and shows the result (or the error).
-    fn run_with(&self, run: worker::OnPage, asked: bool) {
+    /// Runs the form's arguments with `run`.
+    fn run_with(&self, run: worker::OnPage) -> PageRun {
         let args = self.current_args();
         let t0 = now_ms();
         let (result, input_name) = {
@@ -176,7 +185,22 @@ impl Page {
                 file.map(|f| f.name.clone()),
             )
         };
-        let ms = now_ms() - t0;
+        PageRun {
+            args,
+            input_name,
+            result,
+            ms: now_ms() - t0,
+        }
+    }
+
+    /// Shows a run's result (or its error).
+    fn show_run(&self, run: PageRun, asked: bool) {
+        let PageRun {
+            args,
+            input_name,
+            result,
+            ms,
+        } = run;
         let ok = result.is_ok();
         match result {
             Ok(out) => {
@@ -403,4 +427,14 @@ impl Page {
             }
         }
     }
+}
+
+/// A run on the page, made and not yet shown.
+struct PageRun {
+    args: crate::view::command_line::RunArgs,
+    /// The input file the run was given, if any.
+    input_name: Option<String>,
+    result: Result<crate::recipes::RecipeOutput, crate::error::RecipeError>,
+    /// How long the run took.
+    ms: f64,
 }
