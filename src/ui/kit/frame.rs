@@ -19,6 +19,10 @@ use wasm_bindgen::JsCast;
 type FrameCallback = Closure<dyn FnMut(f64)>;
 
 struct Shared {
+    /// The next frame asked for follows a large change of the page's markup (the loop's
+    /// first frame, made with its page; [`FrameLoop::invalidate_after_layout`]): the page is
+    /// laid out in a task of its own ([`Shared::lay_out_before_frame`]).
+    lay_out_first: Cell<bool>,
     dirty: Cell<u32>,
     /// A call was asked for with [`FrameLoop::request`] (no bit needed).
     requested: Cell<bool>,
@@ -28,7 +32,7 @@ struct Shared {
 }
 
 impl Shared {
-    fn schedule(&self) {
+    fn schedule(self: &Rc<Self>) {
         if self.raf_id.get().is_some() {
             return;
         }
@@ -42,6 +46,24 @@ impl Shared {
                 }
             }
         }
+        if self.raf_id.get().is_some() && self.lay_out_first.replace(false) {
+            self.lay_out_before_frame();
+        }
+    }
+
+    /// A task that brings the document's layout up to date before the asked-for frame runs,
+    /// if it runs first (as it mostly does: it is queued ahead of other tasks): the frame then
+    /// draws on a laid-out page instead of laying out the whole page inside its callback, one
+    /// long task on a phone made two short ones. If the frame comes first, it lays the page
+    /// out itself, as it would anyway; nothing is painted in between either way.
+    fn lay_out_before_frame(self: &Rc<Self>) {
+        let weak = Rc::downgrade(self);
+        wasm_bindgen_futures::spawn_local(async move {
+            crate::ui::schedule::yield_now().await;
+            if weak.upgrade().is_some_and(|s| s.raf_id.get().is_some()) {
+                lay_out();
+            }
+        });
     }
 
     fn cancel(&self) {
@@ -72,6 +94,7 @@ impl FrameLoop {
     /// when the page unmounts.
     pub fn new<P: 'static>(page: &Weak<P>, draw: impl Fn(&P, u32, f64) + 'static) -> FrameLoop {
         let shared = Rc::new(Shared {
+            lay_out_first: Cell::new(true),
             dirty: Cell::new(0),
             requested: Cell::new(false),
             raf_id: Cell::new(None),
@@ -105,6 +128,19 @@ impl FrameLoop {
         self.shared.schedule();
     }
 
+    /// Marks `bits` dirty and asks for a frame, with the document laid out in a task of its own
+    /// before it as for a loop's first frame: for the frame after a large change of the page's
+    /// markup (a part of the page built late).
+    pub fn invalidate_after_layout(&self, bits: u32) {
+        self.shared.dirty.set(self.shared.dirty.get() | bits);
+        if self.shared.raf_id.get().is_some() {
+            self.shared.lay_out_before_frame();
+        } else {
+            self.shared.lay_out_first.set(true);
+            self.shared.schedule();
+        }
+    }
+
     /// Asks for one call on the next animation frame, with or without dirty bits (requests in
     /// between coalesce).
     pub fn request(&self) {
@@ -133,6 +169,16 @@ impl FrameLoop {
     /// Cancels the pending frame and forgets the dirty bits and requests.
     pub fn cancel(&self) {
         self.shared.cancel();
+    }
+}
+
+/// Brings the document's style and layout up to date (a layout query on the root element).
+fn lay_out() {
+    if let Some(root) = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.document_element())
+    {
+        let _ = root.get_bounding_client_rect();
     }
 }
 

@@ -96,6 +96,8 @@ pub(crate) struct Page {
     /// functions (before the second stage brings the correctly rounded ones): the pose is
     /// solved again from it when they arrive.
     fast_tip: Cell<Option<(f64, f64)>>,
+    /// The plot waits one frame (the frame after the second stage came draws the rest).
+    plot_next_frame: Cell<bool>,
     /// The page's frame loop (its scope's).
     frames: FrameLoop,
     /// Listeners, timers, the frame loop and the resize observer; dropped on unmount.
@@ -133,6 +135,7 @@ fn mount(ctx: MountCtx) -> Result<Rc<Page>, JsValue> {
             readouts: RefCell::new(readouts),
             panels: RefCell::new(None),
             fast_tip: Cell::new(None),
+            plot_next_frame: Cell::new(false),
             root,
             state: RefCell::new(state),
             ghost: RefCell::new(None),
@@ -281,7 +284,10 @@ impl Page {
         if st.show_ws {
             self.recompute_workspace();
         }
-        self.invalidate(dirty::ALL);
+        // The panels' markup is laid out in a task of its own, and their plot is drawn a
+        // frame after the rest: three short tasks on a phone instead of one long one.
+        self.plot_next_frame.set(true);
+        self.frames.invalidate_after_layout(dirty::ALL);
     }
 
     /// Marks parts dirty for the next animation frame.
@@ -316,6 +322,10 @@ impl Page {
             self.timings.push("frame", now_ms() - t0);
         }
         let plot = dirty::PLOT_DATA | dirty::PLOT_AXES | dirty::LAYOUT;
+        if bits & plot != 0 && self.plot_next_frame.take() {
+            self.invalidate(dirty::PLOT_DATA);
+            return;
+        }
         if let (true, Some(panels)) = (bits & plot != 0, &panels) {
             let t0 = now_ms();
             panels.draw_plot(&st, ink);
