@@ -348,6 +348,13 @@ impl Plot {
     /// The layers changed size or the language or the mode changed: redraw everything.
     pub fn invalidate_all(&mut self) {
         self.canvas.fit();
+        self.redraw_all();
+    }
+
+    /// New data and axes at the same size: redraw everything at the next [`Plot::draw`] (which
+    /// sizes the layers first if they never were, so a plot made while its page is being built
+    /// does not lay the page out then).
+    pub fn redraw_all(&mut self) {
         self.axes_dirty = true;
         self.data_dirty = true;
         self.cursor_dirty = true;
@@ -395,6 +402,9 @@ impl Plot {
     pub fn draw(&mut self, ink: Ink) -> Result<(), String> {
         if self.spec.is_none() {
             return Ok(());
+        }
+        if self.canvas.size().0 <= 0.0 {
+            self.canvas.fit();
         }
         if self.axes_dirty {
             self.draw_axes(ink)?;

@@ -156,6 +156,9 @@ struct Inner {
     /// Set while the page opens: the plots are first drawn once the pendulum is painted
     /// (their axes and grids cost more than the pendulum and its readouts).
     plots_after_paint: Cell<bool>,
+    /// The pendulum's canvas has been sized to its box (in the page's first animation frame,
+    /// which its frame loop lays out beforehand, then on resizes): not drawn before.
+    view_fitted: Cell<bool>,
     params: RefCell<params::Params>,
     readouts: RefCell<readouts::Readouts>,
     exports: exports::Exports,
@@ -217,6 +220,7 @@ impl Page for PendulumPage {
                 view: RefCell::new(view),
                 plots: RefCell::new(plots),
                 plots_after_paint: Cell::new(true),
+                view_fitted: Cell::new(false),
                 params: RefCell::new(form),
                 readouts: RefCell::new(readouts),
                 exports,
@@ -234,8 +238,12 @@ impl Page for PendulumPage {
                 weak.upgrade().map_or(f64::NAN, |p| p.bench_frame(steps))
             });
         }
-        inner.view.borrow_mut().canvas.fit();
         inner.rebuild(DEFAULT_SPEED)?;
+        let first_frame = inner
+            .scope
+            .borrow_mut()
+            .frame_loop(&inner.me, |p: &Inner, _| p.relayout_once());
+        first_frame.request();
         crate::ui::schedule::after_paint_for(&inner.me, |p| {
             p.plots_after_paint.set(false);
             p.update();
@@ -536,9 +544,17 @@ impl Inner {
         }
     }
 
+    /// The page's first frame: the pendulum sized and drawn (unless a resize did it).
+    fn relayout_once(&self) {
+        if !self.view_fitted.get() {
+            self.relayout();
+        }
+    }
+
     /// Sizes changed: refit and redraw everything.
     fn relayout(&self) {
         self.view.borrow_mut().canvas.fit();
+        self.view_fitted.set(true);
         {
             let mut plots = self.plots.borrow_mut();
             plots.time.invalidate_all();
@@ -627,8 +643,9 @@ impl Inner {
         let started = sim.work_started.take().unwrap_or_else(now_ms);
         let index = sim.index as usize;
         let ink = Ink::current();
-        {
-            // Sized on mount and on resizes only (a layout read per frame costs milliseconds).
+        if self.view_fitted.get() {
+            // Sized in the first frame and on resizes only (a layout read per frame costs
+            // milliseconds).
             self.view.borrow_mut().draw(&sim.tracks, index, ink);
         }
         if !self.plots_after_paint.get() {

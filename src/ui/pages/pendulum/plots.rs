@@ -188,8 +188,8 @@ impl Plots {
         self.phase.set_series(0, 0, both);
         self.appended = vec![0; tracks.len()];
         self.stride = (steps / PHASE_POINTS).max(1) as usize;
-        self.time.invalidate_all();
-        self.phase.invalidate_all();
+        self.time.redraw_all();
+        self.phase.redraw_all();
     }
 
     /// Appends the rows stepped since the last call and moves the cursor to `index`.
