@@ -351,7 +351,7 @@ impl I18n {
         self.bundle(lang);
     }
 
-    /// Parses one piece (about [`PIECE_BYTES`]) of `lang`'s added files that is not in its
+    /// Parses one piece (about `PIECE_BYTES`, 4 KB) of `lang`'s added files that is not in its
     /// bundle yet, if there is one, and says whether there are more: a caller that parses
     /// files ahead of their use (in the browser's idle time) takes them a piece at a time.
     pub fn build_next(&self, lang: Lang) -> bool {
