@@ -664,14 +664,14 @@ mod tests {
         };
         let english = waiting(Lang::En);
         assert!(english > 0);
-        let pieces = waiting(Lang::Ja);
+        let japanese = waiting(Lang::Ja);
         assert!(
-            pieces > 3,
-            "shell.ftl in Japanese is more than one piece: {pieces}"
+            japanese > 3,
+            "shell.ftl in Japanese is more than one piece: {japanese}"
         );
-        for parsed in 1..pieces {
+        for parsed in 1..japanese {
             assert!(i18n.build_next(Lang::Ja));
-            assert_eq!(waiting(Lang::Ja), pieces - parsed);
+            assert_eq!(waiting(Lang::Ja), japanese - parsed);
         }
         assert!(
             !i18n.build_next(Lang::Ja),

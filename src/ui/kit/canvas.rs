@@ -148,6 +148,11 @@ impl LayeredCanvas {
         changed
     }
 
+    /// Whether [`LayeredCanvas::fit`] has sized the layers yet.
+    pub fn is_fitted(&self) -> bool {
+        self.top().css_w > 0.0
+    }
+
     /// CSS size of the layers.
     pub fn size(&self) -> (f64, f64) {
         let top = self.top();

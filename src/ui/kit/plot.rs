@@ -403,7 +403,7 @@ impl Plot {
         if self.spec.is_none() {
             return Ok(());
         }
-        if self.canvas.size().0 <= 0.0 {
+        if !self.canvas.is_fitted() {
             self.canvas.fit();
         }
         if self.axes_dirty {

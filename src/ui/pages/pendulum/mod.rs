@@ -156,9 +156,6 @@ struct Inner {
     /// Set while the page opens: the plots are first drawn once the pendulum is painted
     /// (their axes and grids cost more than the pendulum and its readouts).
     plots_after_paint: Cell<bool>,
-    /// The pendulum's canvas has been sized to its box (in the page's first animation frame,
-    /// which its frame loop lays out beforehand, then on resizes): not drawn before.
-    view_fitted: Cell<bool>,
     params: RefCell<params::Params>,
     readouts: RefCell<readouts::Readouts>,
     exports: exports::Exports,
@@ -220,7 +217,6 @@ impl Page for PendulumPage {
                 view: RefCell::new(view),
                 plots: RefCell::new(plots),
                 plots_after_paint: Cell::new(true),
-                view_fitted: Cell::new(false),
                 params: RefCell::new(form),
                 readouts: RefCell::new(readouts),
                 exports,
@@ -546,7 +542,7 @@ impl Inner {
 
     /// The page's first frame: the pendulum sized and drawn (unless a resize did it).
     fn relayout_once(&self) {
-        if !self.view_fitted.get() {
+        if !self.view.borrow().canvas.is_fitted() {
             self.relayout();
         }
     }
@@ -554,7 +550,6 @@ impl Inner {
     /// Sizes changed: refit and redraw everything.
     fn relayout(&self) {
         self.view.borrow_mut().canvas.fit();
-        self.view_fitted.set(true);
         {
             let mut plots = self.plots.borrow_mut();
             plots.time.invalidate_all();
@@ -643,10 +638,13 @@ impl Inner {
         let started = sim.work_started.take().unwrap_or_else(now_ms);
         let index = sim.index as usize;
         let ink = Ink::current();
-        if self.view_fitted.get() {
-            // Sized in the first frame and on resizes only (a layout read per frame costs
-            // milliseconds).
-            self.view.borrow_mut().draw(&sim.tracks, index, ink);
+        {
+            // Sized in the page's first frame (its loop lays the page out first) and on
+            // resizes only (a layout read per frame costs milliseconds): not drawn before.
+            let mut view = self.view.borrow_mut();
+            if view.canvas.is_fitted() {
+                view.draw(&sim.tracks, index, ink);
+            }
         }
         if !self.plots_after_paint.get() {
             let mut plots = self.plots.borrow_mut();
