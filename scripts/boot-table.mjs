@@ -6,6 +6,10 @@
 // file and size, which boot.js watches to ask for the route's pack as the main wasm nears its
 // end. Run once the main wasm is final (after scripts/short-imports.mjs): one script, fetched
 // with the wasm, instead of two run one after the other.
+// Beside it, per route and language, the route's strings pack (`stringsPack`): the Fluent files
+// the route needs first in one JSON object, file name → text, that boot.js asks for on a first
+// visit in one request instead of one per file. A phone's browser opens six connections to a
+// server; the six or seven files would take them all while the route's wasm pack waits for one.
 //
 //   node scripts/boot-table.mjs DIST
 import { readdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
@@ -48,6 +52,31 @@ export function headTexts(dist, heads) {
   return texts;
 }
 
+/** DIST-relative path of the strings pack of `route` in `lang` (read by www/boot.js). */
+export function stringsPack(lang, route) {
+  return `locales/${lang}/pack_${route}.json`;
+}
+
+/** Whether DIST-relative `file` is a strings pack: a first visit's file, which the service
+ * worker does not cache (it holds the route's files of locales/, which it does). */
+export function isStringsPack(file) {
+  return /^locales\/[^/]+\/pack_[^/]*\.json$/.test(file);
+}
+
+/** Writes every route's strings pack in each language; returns how many. */
+export function writeStringsPacks(dist, strings) {
+  let count = 0;
+  for (const lang of LANGS) {
+    for (const [route, own] of Object.entries(strings.routes)) {
+      const files = [...strings.first, ...own];
+      const pack = Object.fromEntries(files.map((f) => [f, readFileSync(join(dist, 'locales', lang, f), 'utf8')]));
+      writeFileSync(join(dist, stringsPack(lang, route)), JSON.stringify(pack));
+      count += 1;
+    }
+  }
+  return count;
+}
+
 function main() {
   const dist = process.argv[2];
   if (!dist) throw new Error('usage: node scripts/boot-table.mjs DIST');
@@ -62,7 +91,8 @@ function main() {
       `self.bsvRoutes=${JSON.stringify(table)};\n` +
       readFileSync(boot, 'utf8'),
   );
-  console.log(`boot-table: ${Object.keys(routes).length} routes, main wasm ${table.main.bytes} B`);
+  const packs = writeStringsPacks(dist, strings);
+  console.log(`boot-table: ${Object.keys(routes).length} routes, ${packs} strings packs, main wasm ${table.main.bytes} B`);
 }
 
 if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) main();

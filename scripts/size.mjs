@@ -1,11 +1,12 @@
 // The app's size, each file gzipped at level 9 as a static host would send it:
 // - the whole app: every file of a built dist/ (wasm chunks, js, css, html, service worker,
 //   manifest, icon) but the first-visit packs, which hold the same modules as pkg/chunks/
-//   (scripts/split-link.mjs), so each module counts once;
+//   (scripts/split-link.mjs) and the same text as locales/ (scripts/boot-table.mjs), so each
+//   module and file counts once;
 // - each route's first load: what the browser fetches before the route's first frame, from the
 //   build's own lists (pkg/routes.json): index.html, the stylesheet, the boot scripts and the
-//   route table, the glue and the loader, the main wasm, the Fluent files the route needs in
-//   one language (English; locales/en/, each file gzipped on its own), the page's own
+//   route table, the glue and the loader, the main wasm, the route's strings pack in one
+//   language (English: the Fluent files the route needs, in one file), the page's own
 //   stylesheet if it has one, and the route's pack.
 //
 //   node scripts/size.mjs [dist]           prints the tables (make bench)
@@ -16,8 +17,10 @@
 // bigger unnoticed. Lower a ceiling as the app shrinks; never raise it without saying why in
 // the commit.
 import { readFileSync, readdirSync, statSync } from 'node:fs';
-import { join, relative } from 'node:path';
+import { join, relative, sep } from 'node:path';
 import { gzipSync } from 'node:zlib';
+import { isStringsPack, stringsPack } from './boot-table.mjs';
+import { isPack } from './sw-build.mjs';
 
 export const KB = 1024;
 export const BUDGET = 350 * KB;
@@ -69,9 +72,8 @@ export function firstLoads(dist) {
   const sizes = new Map();
   const size = (file) => (sizes.has(file) ? sizes.get(file) : sizes.set(file, gz(file)).get(file));
   return Object.entries(table.routes).map(([route, pack]) => {
-    const strings = [...table.strings.first, ...table.strings.routes[route]];
     const sheet = table.sheets?.[route];
-    const files = [...SHELL_FILES, ...strings.map((f) => `locales/en/${f}`), ...(sheet ? [sheet] : []), `pkg/${pack}`];
+    const files = [...SHELL_FILES, stringsPack('en', route), ...(sheet ? [sheet] : []), `pkg/${pack}`];
     return { route, files, gzip: files.reduce((sum, f) => sum + size(f), 0) };
   });
 }
@@ -88,10 +90,14 @@ function files(dir) {
 
 /** Raw and gzip-9 bytes of every file of `dist`, and their sums. */
 export function measure(dist) {
-  const rows = files(dist).filter((path) => !/\/pkg\/pack_[^/]*\.bin$/.test(path)).map((path) => {
-    const bytes = readFileSync(path);
-    return { file: relative(dist, path), raw: bytes.length, gzip: gzipSync(bytes, { level: 9 }).length };
-  });
+  const firstVisit = (file) => isPack(file) || isStringsPack(file);
+  const rows = files(dist)
+    .map((path) => ({ path, file: relative(dist, path).split(sep).join('/') }))
+    .filter(({ file }) => !firstVisit(file))
+    .map(({ path, file }) => {
+      const bytes = readFileSync(path);
+      return { file, raw: bytes.length, gzip: gzipSync(bytes, { level: 9 }).length };
+    });
   const sum = (k) => rows.reduce((s, r) => s + r[k], 0);
   return { rows, raw: sum('raw'), gzip: sum('gzip') };
 }

@@ -1,8 +1,9 @@
 #!/usr/bin/env node
 // Writes DIR/sw.js (default dist/) from the template www/sw.js: the build id is the sha256 of
 // every file of the build (path and bytes, in path order) and the file list is every file in
-// DIR but the first-visit packs (`pkg/pack_*.bin`: the same modules as `pkg/chunks/`), so the
-// service worker caches exactly one build and each module once; it makes a pack from its
+// DIR but the first-visit packs (`pkg/pack_*.bin`: the same modules as `pkg/chunks/`; the
+// strings packs `locales/<lang>/pack_*.json`: the same text as the Fluent files), so the
+// service worker caches exactly one build and each module and file once; it makes a pack from its
 // modules when one is asked for (each pack's module names are written into sw.js). Prints the
 // build id.
 // `node scripts/sw-build.mjs [DIR]`; also imported by the offline e2e test.
@@ -10,6 +11,7 @@ import { createHash } from 'node:crypto';
 import { readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { dirname, join, relative, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { isStringsPack } from './boot-table.mjs';
 
 const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..');
 
@@ -52,7 +54,7 @@ export function writeServiceWorker(dir) {
     hash.update(file).update('\0').update(readFileSync(join(root, file))).update('\0');
   }
   const build = hash.digest('hex').slice(0, 16);
-  const list = ['./', ...files.filter((file) => !isPack(file))];
+  const list = ['./', ...files.filter((file) => !isPack(file) && !isStringsPack(file))];
   const packs = Object.fromEntries(
     files.filter(isPack).map((file) => [file.slice(file.lastIndexOf('/') + 1), packModules(readFileSync(join(root, file)))]),
   );

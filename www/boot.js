@@ -212,9 +212,14 @@
       link.href = file;
       document.head.appendChild(link);
     };
-    var strings = table.strings.first.concat(table.strings.routes[route] || []);
+    var own = table.strings.routes[route];
+    var strings = table.strings.first.concat(own || []);
     // The strings are fetched here, once (a failed request once more), after the frame's paint:
-    // the app takes each response from `bsvTexts` (src/ui/lang_files.rs).
+    // the app takes each response from `bsvTexts` (src/ui/lang_files.rs). On a first visit they
+    // come in one request, the route's strings pack (scripts/boot-table.mjs), each file's text
+    // given to the app as a response of its own; a file the pack lacks, or every file when the
+    // pack fails, is fetched by itself. A visit the service worker serves fetches the files,
+    // which it holds.
     var texts = {};
     window.bsvTexts = texts;
     var again = function (url) {
@@ -222,11 +227,33 @@
         return response && response.ok ? response : fetch(url);
       };
     };
+    var single = function (url) {
+      return fetch(url).then(again(url), again(url));
+    };
+    var fromPack = function (pack, file, url) {
+      return pack.then(function (files) {
+        return files && typeof files[file] === 'string'
+          ? new Response(files[file], { headers: { 'Content-Type': 'text/plain; charset=utf-8' } })
+          : single(url);
+      });
+    };
     var askStrings = function () {
+      var pack = null;
+      if (typeof fetch === 'function' && typeof Response === 'function' && own && !served) {
+        pack = fetch('locales/' + lang + '/pack_' + route + '.json')
+          .then(function (response) {
+            return response.ok ? response.json() : null;
+          })
+          .then(null, function () {
+            return null;
+          });
+      }
       for (var k = 0; k < strings.length; k++) {
         var url = 'locales/' + lang + '/' + strings[k];
-        if (typeof fetch === 'function') {
-          texts[url] = fetch(url).then(again(url), again(url));
+        if (pack) {
+          texts[url] = fromPack(pack, strings[k], url);
+        } else if (typeof fetch === 'function') {
+          texts[url] = single(url);
         } else {
           preload(url);
         }

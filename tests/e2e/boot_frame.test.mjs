@@ -103,16 +103,23 @@ test('projector mode and an embedded page keep the loading lines; the app starts
     await embedded.waitForTimeout(300);
     assert.equal(await embedded.locator('[data-testid="boot-frame"]').count(), 0, 'embedded: no frame');
 
-    // The page's own strings file refused to boot.js once: no frame, and the app fetches it again.
+    // The route's strings pack refused: boot.js fetches each file by itself; the page's own file
+    // refused once too: it is fetched again, and the page comes whole.
     const refused = await context.newPage();
+    let packRefusals = 0;
     let refusals = 0;
+    await refused.route('**/locales/en/pack_pid-step.json', (route) => {
+      packRefusals++;
+      return route.fulfill({ status: 503, body: '' });
+    });
     await refused.route('**/locales/en/signals.ftl', (route) => (refusals++ === 0 ? route.fulfill({ status: 503, body: '' }) : route.continue()));
     await refused.goto(`${app.url}/#/pid-step?lang=en`);
     await refused.waitForSelector('html[data-app-ready]');
     await refused.waitForFunction(() => !document.querySelector('[data-testid="page-frame"]'));
-    assert.equal(await refused.locator('[data-testid="boot-frame"]').count(), 0, 'no frame without its strings');
+    assert.equal(await refused.locator('[data-testid="boot-frame"]').count(), 0, 'the frame replaced');
     assert.equal(await refused.locator('h1').first().textContent(), 'PID step response');
-    assert.equal(refusals, 2, 'the app fetched the refused file again');
+    assert.equal(packRefusals, 1, 'the strings pack asked once');
+    assert.equal(refusals, 2, 'the refused file fetched again');
   } finally {
     await context.close();
   }

@@ -44,20 +44,31 @@ test('every page of the page table has a pack, and the build lists what each rou
       for (const file of new Set([...table.strings.first, ...Object.values(table.strings.routes).flat()])) {
         assert.deepEqual(readFileSync(join(DIST, 'locales', lang, file)), readFileSync(join(DIST, '..', 'locales', lang, file)), `${lang}/${file}`);
       }
+      // A route's strings pack holds the files it needs first, each whole.
+      for (const [route, own] of Object.entries(table.strings.routes)) {
+        const pack = JSON.parse(readFileSync(join(DIST, 'locales', lang, `pack_${route}.json`), 'utf8'));
+        assert.deepEqual(Object.keys(pack), [...table.strings.first, ...own], `${lang} ${route}`);
+        for (const [file, text] of Object.entries(pack)) {
+          assert.equal(text, readFileSync(join(DIST, '..', 'locales', lang, file), 'utf8'), `${lang} ${route} ${file}`);
+        }
+      }
     }
   } finally {
     await close();
   }
 });
 
-test('a first visit fetches the strings its page needs in its language only', async () => {
+test('a first visit fetches the strings its page needs in its language only, in one request', async () => {
   const { page, close } = await openApp(server.url, '#/ik-2r?lang=ja');
   try {
     const fetched = await page.evaluate(() =>
       performance.getEntriesByType('resource').map((e) => new URL(e.name).pathname).filter((p) => p.includes('/locales/')));
+    assert.equal(fetched[0], '/locales/ja/pack_ik-2r.json');
+    // What the pack holds is not fetched again (the other language's files come later).
     const own = table.strings.routes['ik-2r'];
-    const first = fetched.slice(0, table.strings.first.length + own.length).sort();
-    assert.deepEqual(first, [...table.strings.first, ...own].map((f) => `/locales/ja/${f}`).sort());
+    for (const file of [...table.strings.first, ...own]) {
+      assert.ok(!fetched.includes(`/locales/ja/${file}`), `${file} fetched besides the pack`);
+    }
     assert.match(await page.locator('h1').first().textContent(), /IK/);
   } finally {
     await close();
