@@ -229,10 +229,10 @@ impl<H: Copy + PartialEq + 'static> OrbitView<H> {
         dom::append(parent, &root)?;
         dom::relocalize(&root)?;
         let stage: Element = dom::find(&root, "[data-orbit=\"stage\"]", "kit-orbit")?;
-        let mut canvas = LayeredCanvas::from_stage(&stage)?;
-        canvas.fit();
-        let (w, h) = canvas.size();
-        let mut camera = Camera::framing(options.target, options.radius, options.preset, w, h);
+        // Sized on its first draw (`fit_first`): measuring here would lay the page out inside
+        // its build. The camera frames a square until then.
+        let canvas = LayeredCanvas::from_stage(&stage)?;
+        let mut camera = Camera::framing(options.target, options.radius, options.preset, 1.0, 1.0);
         turn_iso(&mut camera, options.preset, options.iso_azimuth);
         let mut presets = Vec::new();
         for p in Preset::ALL {
@@ -422,6 +422,7 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
     }
 
     fn draw_now(&self) {
+        self.fit_first();
         let Ok(canvas) = self.canvas.try_borrow() else {
             return;
         };
@@ -433,7 +434,29 @@ impl<H: Copy + PartialEq + 'static> Inner<H> {
         }
     }
 
+    /// Sizes the canvas if it never was, and frames the camera for that size, keeping its zoom
+    /// (the distance scaled as the framing of the scene's sphere scales with the aspect).
+    fn fit_first(&self) {
+        let size = {
+            let Ok(mut canvas) = self.canvas.try_borrow_mut() else {
+                return;
+            };
+            if canvas.is_fitted() {
+                return;
+            }
+            canvas.fit();
+            canvas.size()
+        };
+        let mut camera = self.camera.get();
+        let radius = self.radius.get();
+        let framed = |w, h| Camera::framing(camera.target, radius, Preset::Iso, w, h).distance;
+        camera.distance *= framed(size.0, size.1) / framed(camera.width, camera.height);
+        camera.resize(size.0, size.1);
+        self.camera.set(camera);
+    }
+
     fn relayout(&self) {
+        self.fit_first();
         let size = {
             let Ok(mut canvas) = self.canvas.try_borrow_mut() else {
                 return;

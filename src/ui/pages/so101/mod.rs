@@ -292,8 +292,8 @@ impl Inner {
         if inner.loader.borrow().is_none() {
             inner.show_module();
         }
-        // The views last: sizing their canvases lays the page out, once, with all of the
-        // above in it (the first frame then lays out only what it changes).
+        // The views: their canvases are sized in their first frame, which comes after the
+        // frame loop's layout task (kit::frame), so that the build lays nothing out.
         let me = inner.me.clone();
         let views = Views::new(&root, &shared, move |e, tool| {
             if let Some(p) = me.upgrade() {

@@ -257,8 +257,8 @@ impl Views {
             .canvas_element()
             .set_attribute("aria-describedby", "so101-readouts")?;
         let stage: Element = dom::find(root, "[data-so101=\"wrist-stage\"]", "so101")?;
-        let mut wrist = LayeredCanvas::from_stage(&stage)?;
-        wrist.fit();
+        // Sized on its first draw, as the world view is (not while the page is built).
+        let wrist = LayeredCanvas::from_stage(&stage)?;
         Ok(Views {
             orbit,
             wrist: RefCell::new(wrist),
@@ -309,6 +309,11 @@ impl Views {
     }
 
     fn draw_wrist(&self) {
+        if let Ok(mut canvas) = self.wrist.try_borrow_mut() {
+            if !canvas.is_fitted() {
+                canvas.fit();
+            }
+        }
         let Some(shared) = self.shared.upgrade() else {
             return;
         };
