@@ -106,13 +106,17 @@ fn replace_url<K: AsRef<str>>(page: &str, pairs: &[(K, String)]) {
         return;
     };
     let location = window.location();
-    let base = format!(
-        "{}{}",
-        location.pathname().unwrap_or_default(),
-        location.search().unwrap_or_default()
-    );
-    if let Ok(history) = window.history() {
-        let _ = history.replace_state_with_url(&JsValue::NULL, "", Some(&format!("{base}{hash}")));
+    // The same address is not written again (a page writes its settings as it opens).
+    if location.hash().ok().as_deref() != Some(hash.as_str()) {
+        let base = format!(
+            "{}{}",
+            location.pathname().unwrap_or_default(),
+            location.search().unwrap_or_default()
+        );
+        if let Ok(history) = window.history() {
+            let _ =
+                history.replace_state_with_url(&JsValue::NULL, "", Some(&format!("{base}{hash}")));
+        }
     }
     if let Some(hook) = ON_WRITE.get() {
         hook();
