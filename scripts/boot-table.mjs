@@ -58,7 +58,7 @@ export function stringsPack(lang, route) {
 }
 
 /** Whether DIST-relative `file` is a strings pack: a first visit's file, which the service
- * worker does not cache (it holds the route's files of locales/, which it does). */
+ * worker does not cache (it caches the Fluent files the pack holds). */
 export function isStringsPack(file) {
   return /^locales\/[^/]+\/pack_[^/]*\.json$/.test(file);
 }
@@ -69,7 +69,8 @@ export function writeStringsPacks(dist, strings) {
   for (const lang of LANGS) {
     for (const [route, own] of Object.entries(strings.routes)) {
       const files = [...strings.first, ...own];
-      const pack = Object.fromEntries(files.map((f) => [f, readFileSync(join(dist, 'locales', lang, f), 'utf8')]));
+      const text = (f) => readFileSync(join(dist, 'locales', lang, f), 'utf8');
+      const pack = Object.fromEntries(files.map((f) => [f, text(f)]));
       writeFileSync(join(dist, stringsPack(lang, route)), JSON.stringify(pack));
       count += 1;
     }
@@ -92,7 +93,9 @@ function main() {
       readFileSync(boot, 'utf8'),
   );
   const packs = writeStringsPacks(dist, strings);
-  console.log(`boot-table: ${Object.keys(routes).length} routes, ${packs} strings packs, main wasm ${table.main.bytes} B`);
+  console.log(
+    `boot-table: ${Object.keys(routes).length} routes, ${packs} strings packs, main wasm ${table.main.bytes} B`,
+  );
 }
 
 if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) main();

@@ -3,9 +3,9 @@
 // every file of the build (path and bytes, in path order) and the file list is every file in
 // DIR but the first-visit packs (`pkg/pack_*.bin`: the same modules as `pkg/chunks/`; the
 // strings packs `locales/<lang>/pack_*.json`: the same text as the Fluent files), so the
-// service worker caches exactly one build and each module and file once; it makes a pack from its
-// modules when one is asked for (each pack's module names are written into sw.js). Prints the
-// build id.
+// service worker caches exactly one build and each module and file once; it makes a pack from
+// its modules when one is asked for (each pack's module names are written into sw.js). Prints
+// the build id.
 // `node scripts/sw-build.mjs [DIR]`; also imported by the offline e2e test.
 import { createHash } from 'node:crypto';
 import { readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
