@@ -136,8 +136,8 @@ pub(crate) fn mount_first_route() -> Result<(), JsValue> {
 /// parsed a piece (a few KB) per idle slice, so that a switch of language is immediate.
 /// Nothing else is loaded ahead: a page's code and strings come when it is opened (its chunk
 /// compiled as its bytes land), and the service worker caches the rest of the build on its
-/// own thread, so the main thread does no work the visitor did not ask for. A part that fails to load is loaded
-/// again when it is needed.
+/// own thread, so the main thread does no work the visitor did not ask for. A part that fails
+/// to load is loaded again when it is needed.
 async fn warm_other_lang(def: Option<&'static PageDef>) {
     let other = ctx::lang().other();
     schedule::idle().await;
